@@ -1,0 +1,43 @@
+#pragma once
+// libhexc's entry point: a validated Material in, shader sources, SPIR-V and a manifest out.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "hexc/diagnostics.h"
+#include "hexc/material.h"
+
+namespace hexc {
+
+enum class Target { Spirv, Hlsl, Glsl, Msl };
+std::string_view toString(Target target);
+
+struct CompileOptions {
+    std::vector<Target> targets{Target::Spirv, Target::Hlsl, Target::Glsl, Target::Msl};
+    std::filesystem::path templateFile;  // overrides the material's template when set (--template)
+    uint32_t hlslShaderModel = 50;       // 50, 51, 60 ... 66
+    uint32_t glslVersion = 450;          // 330, 450 (desktop) or 310 with glslEs
+    bool glslEs = false;
+    uint32_t mslMajor = 2, mslMinor = 0;
+};
+
+struct OutputFile {
+    std::string name;      // file name only, e.g. "rock.frag.hlsl"
+    std::string contents;  // bytes (SPIR-V is binary)
+};
+
+struct CompileResult {
+    std::vector<OutputFile> files;  // every requested target plus "<name>.manifest.json"
+    Diagnostics diagnostics;        // warnings, or the errors that stopped compilation
+    std::string glsl;               // the generated Vulkan GLSL fed to glslang (for debugging)
+    std::vector<uint32_t> spirv;    // optimised SPIR-V
+    bool ok() const { return !hasErrors(diagnostics); }
+};
+
+// Never throws on bad input: problems (template errors included) come back as diagnostics.
+CompileResult compile(const Material& material, const CompileOptions& options = {});
+
+const char* version();
+
+}  // namespace hexc

@@ -1,0 +1,35 @@
+#pragma once
+// Images in and out of hexc: textures as the GPU receives them, float renders as they come back.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace hexc {
+
+// A texture as uploaded: 8-bit RGBA (missing channels filled as stb does: grey -> rgb, alpha = 255),
+// or 32-bit float RGBA. Row 0 is the top row of the file, which is v = 0 (texel centre v = 0.5/height).
+struct Texture {
+    int width = 0, height = 0;
+    bool srgb = false;               // 8-bit only: decode sRGB to linear when sampling
+    std::vector<uint8_t> rgba8;      // width*height*4, when 8-bit
+    std::vector<float> rgba32f;      // width*height*4, when float
+    bool isFloat() const { return !rgba32f.empty(); }
+};
+
+// A float RGBA image; row 0 is the top row.
+struct Image {
+    int width = 0, height = 0;
+    std::vector<float> rgba;  // width*height*4
+    float* at(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
+    const float* at(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+};
+
+// Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...). HDR files load as float.
+// Throws std::runtime_error with the file name and stb's reason on failure.
+Texture loadTexture(const std::filesystem::path& file, bool srgb);
+
+// Writes by extension: .pfm (float, exact), .png (8-bit, values clamped to [0,1], no sRGB encoding).
+// Written to a temporary file and renamed. Throws std::runtime_error on failure.
+void writeImage(const Image& image, const std::filesystem::path& file);
+
+}  // namespace hexc

@@ -1,0 +1,65 @@
+#pragma once
+// The material model: what a material JSON file means once parsed, validated and defaulted.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hexc/diagnostics.h"
+
+namespace hexc {
+
+enum class SlotKind { Color, Scalar, Normal };
+enum class ColorSpace { Srgb, Linear };
+// How tile offsets and rotations are derived from the lattice ids. `Paper` is exactly Listings 2 and 6.
+enum class HashMode { Paper };
+
+// Hex-tiling settings. Names follow MaterialX <hextiledimage> where the meaning is the same;
+// the paper's symbol is given for each.
+struct HexTiling {
+    bool enabled = true;                  // false: plain tiling (one fetch), for comparison or cheap slots
+    std::array<double, 2> tiling{1, 1};   // UV scale applied before the lattice (MaterialX `tiling`)
+    double rotation = 1.0;                // rotStrength of Listings 3, 4, 6 (MaterialX `rotation`)
+    double falloff = 0.5;                 // r of Eq. 5 / Listing 8 gain; 0.5 = off (MaterialX `falloff`)
+    double falloffcontrast = 0.6;         // beta of Eq. 3-4 (MaterialX `falloffcontrast`)
+    double exponent = 7.0;                // gamma, exponent on the barycentric weights (Eq. 1)
+    HashMode mode = HashMode::Paper;
+};
+
+struct Slot {
+    std::string name;                // GLSL identifier; used in generated function and resource names
+    std::string texture;             // as written in the JSON
+    std::filesystem::path texturePath;  // resolved against the material file's folder
+    SlotKind kind = SlotKind::Color;
+    int channel = 0;                 // scalar slots: 0..3 for r, g, b, a
+    ColorSpace colorSpace = ColorSpace::Srgb;
+    bool flipY = false;              // normal slots: green channel points down (DirectX convention)
+    HexTiling hex;                   // material settings with this slot's overrides applied
+    int width = 0, height = 0;       // of the texture file
+};
+
+struct Material {
+    std::string name;                // output file stem
+    std::string templateName;        // a built-in template name, or a path to a .glsl file
+    std::filesystem::path sourceFile;
+    HexTiling hex;                   // material-level settings (slots may override)
+    std::vector<Slot> slots;         // in declaration order; binding order follows it
+};
+
+struct ParseResult {
+    std::optional<Material> material;  // set only when there are no errors
+    Diagnostics diagnostics;
+};
+
+// Parses and validates a material. `file` names the document in diagnostics and anchors relative
+// texture and template paths. Never throws on bad input.
+ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file);
+ParseResult parseMaterialFile(const std::filesystem::path& file);
+
+std::string_view toString(SlotKind kind);
+std::string_view toString(ColorSpace space);
+std::string_view toString(HashMode mode);
+
+}  // namespace hexc

@@ -1,0 +1,44 @@
+#include "backends/backends.h"
+
+namespace hexc {
+
+nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets) {
+    nlohmann::json slots = nlohmann::json::array();
+    for (const SlotPlan& sp : plan.slots) {
+        const Slot& s = *sp.slot;
+        const HexTiling& h = s.hex;
+        nlohmann::json slot = {
+            {"name", s.name},
+            {"kind", toString(s.kind)},
+            {"texture", s.texture},
+            {"size", {s.width, s.height}},
+            {"colorspace", toString(s.colorSpace)},
+            {"hextiling",
+             {{"enabled", h.enabled},
+              {"tiling", {h.tiling[0], h.tiling[1]}},
+              {"rotation", h.rotation},
+              {"falloff", h.falloff},
+              {"falloffcontrast", h.falloffcontrast},
+              {"exponent", h.exponent},
+              {"mode", toString(h.mode)}}},
+        };
+        if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
+        if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
+        slots.push_back(std::move(slot));
+    }
+    nlohmann::json members = nlohmann::json::array();
+    for (const ParamMember& p : plan.params) {
+        nlohmann::json value = p.value.size() == 1 ? nlohmann::json(p.value[0]) : nlohmann::json(p.value);
+        members.push_back({{"name", p.name}, {"type", p.type}, {"offset", p.offset}, {"value", value}});
+    }
+    return {
+        {"hexc_version", version()},
+        {"material", material.name},
+        {"template", plan.templateName},
+        {"slots", slots},
+        {"parameters", {{"block", "HexcParams"}, {"layout", "std140"}, {"size", plan.paramBlockSize}, {"members", members}}},
+        {"targets", targets},
+    };
+}
+
+}  // namespace hexc

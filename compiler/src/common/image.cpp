@@ -1,0 +1,155 @@
+// Texture loading (stb_image, plus PFM so that float renders written by writeImage load back exactly) and
+// image writing (.pfm, .png), always through a temporary file and a rename.
+#include "hexc/image.h"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace hexc {
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& reason) {
+    throw std::runtime_error(file.string() + ": " + reason);
+}
+
+[[noreturn]] void failStb(const std::filesystem::path& file) {
+    const char* reason = stbi_failure_reason();
+    fail(file, reason ? reason : "cannot load image");
+}
+
+std::string lowerExtension(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+// Portable Float Map: "PF" (RGB) or "Pf" (grey), width, height, then a scale whose sign gives the byte order
+// (negative: little-endian), each followed by whitespace; then rows of floats from the bottom row up.
+Texture loadPfm(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) fail(file, "cannot open for reading");
+    std::string magic;
+    int width = 0, height = 0;
+    double scale = 0;
+    in >> magic >> width >> height >> scale;
+    in.get();  // the single whitespace character that ends the header
+    if (!in || (magic != "PF" && magic != "Pf") || width <= 0 || height <= 0 || scale == 0)
+        fail(file, "not a PFM file (bad header)");
+    const int channels = magic == "PF" ? 3 : 1;
+    std::vector<uint32_t> words(size_t(width) * height * channels);
+    in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
+    if (in.gcount() != std::streamsize(words.size() * 4)) fail(file, "PFM file is truncated");
+    const bool fileLittle = scale < 0;
+    if (fileLittle != (std::endian::native == std::endian::little))
+        for (uint32_t& w : words)
+            w = (w >> 24) | ((w >> 8) & 0xff00u) | ((w << 8) & 0xff0000u) | (w << 24);  // std::byteswap is C++23
+
+    Texture t;
+    t.width = width;
+    t.height = height;
+    t.rgba32f.resize(size_t(width) * height * 4);
+    for (int y = 0; y < height; ++y) {
+        const uint32_t* row = &words[size_t(height - 1 - y) * width * channels];
+        for (int x = 0; x < width; ++x) {
+            float* dst = &t.rgba32f[(size_t(y) * width + x) * 4];
+            for (int c = 0; c < 3; ++c) dst[c] = std::bit_cast<float>(row[x * channels + (channels == 3 ? c : 0)]);
+            dst[3] = 1.0f;
+        }
+    }
+    return t;
+}
+
+// Writes "<file>.tmp" with `write`, then renames it over `file`, so a reader never sees a half-written image.
+template <class WriteFn>
+void writeAtomically(const std::filesystem::path& file, WriteFn write) {
+    std::filesystem::path tmp = file;
+    tmp += ".tmp";
+    if (!write(tmp)) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        fail(file, "cannot write " + tmp.string());
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, file, ec);
+    if (ec) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        fail(file, "cannot rename " + tmp.string() + ": " + ec.message());
+    }
+}
+
+bool writePfm(const Image& image, const std::filesystem::path& file) {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    if (!out) return false;
+    out << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
+    std::vector<unsigned char> row(size_t(image.width) * 3 * 4);
+    for (int y = image.height - 1; y >= 0; --y) {  // PFM stores the bottom row first
+        unsigned char* p = row.data();
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const uint32_t bits = std::bit_cast<uint32_t>(image.at(x, y)[c]);
+                for (int b = 0; b < 4; ++b) *p++ = (unsigned char)(bits >> (8 * b));  // little-endian
+            }
+        out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size()));
+    }
+    out.close();
+    return bool(out);
+}
+
+bool writePng(const Image& image, const std::filesystem::path& file) {
+    std::vector<unsigned char> bytes(image.rgba.size());
+    for (size_t i = 0; i < bytes.size(); ++i) {
+        const float v = image.rgba[i];
+        // NaN fails both comparisons inside clamp and would survive it; write it as 0.
+        bytes[i] = std::isnan(v) ? 0 : (unsigned char)std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
+    }
+    return stbi_write_png(file.string().c_str(), image.width, image.height, 4, bytes.data(), image.width * 4) != 0;
+}
+
+}  // namespace
+
+Texture loadTexture(const std::filesystem::path& file, bool srgb) {
+    if (lowerExtension(file) == ".pfm") return loadPfm(file);
+
+    const std::string name = file.string();
+    Texture t;
+    int channelsInFile = 0;
+    if (stbi_is_hdr(name.c_str())) {
+        std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(name.c_str(), &t.width, &t.height, &channelsInFile, 4),
+                                                     stbi_image_free);
+        if (!data) failStb(file);
+        t.rgba32f.assign(data.get(), data.get() + size_t(t.width) * t.height * 4);
+    } else {
+        std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(name.c_str(), &t.width, &t.height, &channelsInFile, 4),
+                                                       stbi_image_free);
+        if (!data) failStb(file);
+        t.rgba8.assign(data.get(), data.get() + size_t(t.width) * t.height * 4);
+        t.srgb = srgb;
+    }
+    return t;
+}
+
+void writeImage(const Image& image, const std::filesystem::path& file) {
+    if (image.width <= 0 || image.height <= 0 || image.rgba.size() != size_t(image.width) * image.height * 4)
+        fail(file, "image has no pixels or the wrong number of values");
+    const std::string ext = lowerExtension(file);
+    if (ext == ".pfm")
+        writeAtomically(file, [&](const std::filesystem::path& tmp) { return writePfm(image, tmp); });
+    else if (ext == ".png")
+        writeAtomically(file, [&](const std::filesystem::path& tmp) { return writePng(image, tmp); });
+    else
+        fail(file, "unsupported image extension '" + file.extension().string() + "' (supported: .pfm, .png)");
+}
+
+}  // namespace hexc

@@ -1,0 +1,95 @@
+// The one place the stages are chained: plan -> codegen -> glslang -> spirv-opt -> SPIRV-Cross -> manifest.
+#include <spirv_cross_error_handling.hpp>
+
+#include <algorithm>
+#include <cstring>
+
+#include "backends/backends.h"
+#include "codegen/codegen.h"
+#include "hexc/compiler.h"
+#include "plan/plan.h"
+#include "spirv/spirv.h"
+
+namespace hexc {
+
+const char* version() { return HEXC_VERSION; }
+
+std::string_view toString(Target target) {
+    static const char* names[] = {"spirv", "hlsl", "glsl", "msl"};
+    return names[int(target)];
+}
+
+namespace {
+
+void append(Diagnostics& to, const Diagnostics& from) { to.insert(to.end(), from.begin(), from.end()); }
+
+std::string spirvBytes(const std::vector<uint32_t>& words) {
+    std::string bytes(words.size() * 4, '\0');
+    std::memcpy(bytes.data(), words.data(), bytes.size());
+    return bytes;
+}
+
+void run(const Material& material, const CompileOptions& options, CompileResult& result) {
+    ShaderPlan plan = planShader(material, options.templateFile);
+    append(result.diagnostics, plan.diagnostics);
+    if (hasErrors(plan.diagnostics)) return;
+
+    result.glsl = generateGlsl(plan);
+    SpirvResult front = compileToSpirv(result.glsl, ShaderStage::Fragment, plan.templateName);
+    append(result.diagnostics, front.diagnostics);
+    if (front.words.empty()) return;
+    SpirvResult optimized = optimizeSpirv(front.words);
+    append(result.diagnostics, optimized.diagnostics);
+    if (optimized.words.empty()) return;
+    result.spirv = std::move(optimized.words);
+
+    std::vector<Target> targets = options.targets;
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    nlohmann::json described = nlohmann::json::object();
+    const std::string stem = material.name + ".frag.";
+    for (Target t : targets) {
+        TargetOutput out;
+        OutputFile file;
+        switch (t) {
+        case Target::Spirv:
+            out = describeSpirv(result.spirv, plan);
+            file = {stem + "spv", spirvBytes(result.spirv)};
+            break;
+        case Target::Hlsl:
+            out = emitHlsl(result.spirv, plan, options);
+            file = {stem + "hlsl", out.source};
+            break;
+        case Target::Glsl:
+            out = emitGlsl(result.spirv, plan, options);
+            file = {stem + "glsl", out.source};
+            break;
+        case Target::Msl:
+            out = emitMsl(result.spirv, plan, options);
+            file = {stem + "metal", out.source};
+            break;
+        }
+        out.target["file"] = file.name;
+        described[std::string(toString(t))] = std::move(out.target);
+        result.files.push_back(std::move(file));
+    }
+    result.files.push_back({material.name + ".manifest.json", buildManifest(material, plan, described).dump(2) + "\n"});
+    std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+}
+
+}  // namespace
+
+CompileResult compile(const Material& material, const CompileOptions& options) {
+    CompileResult result;
+    try {
+        run(material, options, result);
+    } catch (const CompileError& e) {
+        append(result.diagnostics, e.diagnostics);
+    } catch (const spirv_cross::CompilerError& e) {
+        result.diagnostics.push_back({Diagnostic::Severity::Error, {material.sourceFile.string(), 0, 0}, "", std::string("SPIRV-Cross: ") + e.what(), {}});
+    }
+    if (!result.ok()) result.files.clear();
+    return result;
+}
+
+}  // namespace hexc

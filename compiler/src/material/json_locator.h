@@ -1,0 +1,51 @@
+#pragma once
+// nlohmann::json keeps no source positions, so this scanner re-reads a document that nlohmann has
+// already accepted and records where every value and every object key starts, keyed by JSON pointer.
+// It also finds duplicate keys, which nlohmann silently merges.
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hexc {
+
+struct TextPos {
+    int line = 1, col = 1;
+};
+
+class JsonLocator {
+public:
+    explicit JsonLocator(std::string_view text);
+
+    // Start of the value at `pointer`; of the nearest located ancestor when the pointer is not in the text.
+    TextPos value(const std::string& pointer) const;
+    // Start of the key that names the member at `pointer` (the value's position for array elements).
+    TextPos key(const std::string& pointer) const;
+
+    struct Duplicate {
+        std::string pointer;
+        TextPos first, second;
+    };
+    const std::vector<Duplicate>& duplicates() const { return duplicates_; }
+
+private:
+    void parseValue(const std::string& pointer);
+    void parseString();
+    void skipSpace();
+    TextPos here() const;
+
+    std::string_view text_;  // must outlive the locator
+    size_t pos_ = 0;
+    std::vector<size_t> lineStarts_;
+    std::map<std::string, TextPos> values_, keys_;
+    std::vector<Duplicate> duplicates_;
+};
+
+// 1-based line and column (in characters) of a byte offset; works on any text, valid JSON or not.
+TextPos textPosition(std::string_view text, size_t offset);
+
+// "/a/b" + "c~d/e" -> "/a/b/c~0d~1e"
+std::string pointerAppend(const std::string& pointer, std::string_view token);
+std::string pointerAppend(const std::string& pointer, size_t index);
+
+}  // namespace hexc

@@ -1,0 +1,342 @@
+// JSON -> Material: parse, validate and fill defaults. Every problem becomes a located diagnostic and
+// validation goes on after an error, so a user sees all problems in one run.
+#include <stb_image.h>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/suggest.h"
+#include "common/templates.h"
+#include "hexc/material.h"
+#include "material/json_locator.h"
+
+namespace hexc {
+namespace {
+
+using nlohmann::json;
+
+const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "slots"};
+const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling"};
+const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "falloff", "falloffcontrast", "exponent", "mode"};
+const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
+const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
+const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
+const std::vector<std::string> kModes = {"paper"};
+// 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
+constexpr size_t kMaxSlots = 16;
+
+std::string typeName(const json& v) {
+    switch (v.type()) {
+    case json::value_t::object: return "an object";
+    case json::value_t::array: return "an array";
+    case json::value_t::string: return "a string";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::null: return "null";
+    default: return "a number";
+    }
+}
+
+std::string ticked(const std::string& s) { return "`" + s + "`"; }
+
+std::string joinQuoted(const std::vector<std::string>& items) {
+    std::string out;
+    for (size_t i = 0; i < items.size(); ++i) {
+        if (i) out += i + 1 == items.size() ? " or " : ", ";
+        out += ticked(items[i]);
+    }
+    return out;
+}
+
+class Validator {
+public:
+    Validator(std::string_view text, const std::filesystem::path& file)
+        : locator_(text), file_(file), dir_(file.parent_path()) {}
+
+    Diagnostics diags;
+
+    void error(const std::string& pointer, std::string message, std::string hint = {}, bool atKey = false) {
+        TextPos p = atKey ? locator_.key(pointer) : locator_.value(pointer);
+        diags.push_back({Diagnostic::Severity::Error, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)});
+    }
+
+    Material run(const json& doc) {
+        Material m;
+        m.sourceFile = file_;
+        for (const auto& d : locator_.duplicates())
+            error(d.pointer, "duplicate key " + ticked(d.pointer.substr(d.pointer.rfind('/') + 1)) +
+                                 " (first at line " + std::to_string(d.first.line) + ")", {}, true);
+        if (!doc.is_object()) {
+            error("", "expected a material object, got " + typeName(doc));
+            return m;
+        }
+        checkKeys(doc, "", kMaterialKeys);
+        if (requireKey(doc, "", "name", "a string")) {
+            m.name = string(doc["name"], "/name");
+            static const std::regex re("[A-Za-z0-9_-]{1,64}");
+            if (doc["name"].is_string() && !std::regex_match(m.name, re))
+                error("/name", "expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"" + m.name + "\"");
+        }
+        m.templateName = "lit";
+        if (doc.contains("template")) m.templateName = templateRef(doc["template"], "/template");
+        if (doc.contains("$schema")) string(doc["$schema"], "/$schema");
+        if (doc.contains("hextiling")) hexSettings(doc["hextiling"], "/hextiling", m.hex);
+        if (requireKey(doc, "", "slots", "an array of slots")) slots(doc["slots"], "/slots", m);
+        return m;
+    }
+
+private:
+    void checkKeys(const json& obj, const std::string& pointer, const std::vector<std::string>& known) {
+        for (const auto& [key, value] : obj.items()) {
+            if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+            std::string hint;
+            if (auto best = closestMatch(key, known)) hint = "did you mean " + ticked(*best) + "?";
+            error(pointerAppend(pointer, key), "unknown key " + ticked(key) + "; expected " + joinQuoted(known), hint, true);
+        }
+    }
+
+    bool requireKey(const json& obj, const std::string& pointer, const std::string& key, const std::string& what) {
+        if (obj.contains(key)) return true;
+        error(pointer, "missing required key " + ticked(key) + " (" + what + ")");
+        return false;
+    }
+
+    std::string string(const json& v, const std::string& pointer) {
+        if (v.is_string()) return v.get<std::string>();
+        error(pointer, "expected a string, got " + typeName(v));
+        return {};
+    }
+
+    bool boolean(const json& v, const std::string& pointer, bool fallback) {
+        if (v.is_boolean()) return v.get<bool>();
+        error(pointer, "expected true or false, got " + typeName(v));
+        return fallback;
+    }
+
+    // A choice among fixed strings; returns the index, or -1 after reporting.
+    int choice(const json& v, const std::string& pointer, const std::vector<std::string>& options) {
+        if (!v.is_string()) {
+            error(pointer, "expected one of " + joinQuoted(options) + ", got " + typeName(v));
+            return -1;
+        }
+        std::string s = v.get<std::string>();
+        for (size_t i = 0; i < options.size(); ++i)
+            if (options[i] == s) return int(i);
+        std::string hint;
+        if (auto best = closestMatch(s, options)) hint = "did you mean " + ticked(*best) + "?";
+        error(pointer, "expected one of " + joinQuoted(options) + ", got \"" + s + "\"", hint);
+        return -1;
+    }
+
+    struct Range {
+        double lo, hi;
+        bool loOpen, hiOpen;
+        std::string text;  // as shown to the user, e.g. "in (0, 1)"
+        bool contains(double x) const {
+            return (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi);
+        }
+    };
+
+    double number(const json& v, const std::string& pointer, const Range& range, double fallback) {
+        if (!v.is_number()) {
+            error(pointer, "expected a number " + range.text + ", got " + typeName(v));
+            return fallback;
+        }
+        double x = v.get<double>();
+        if (!std::isfinite(x) || !range.contains(x)) {
+            std::ostringstream s;
+            s << "expected a number " << range.text << ", got " << v.dump();
+            error(pointer, s.str());
+            return fallback;
+        }
+        return x;
+    }
+
+    std::string templateRef(const json& v, const std::string& pointer) {
+        std::string name = string(v, pointer);
+        if (!v.is_string()) return "lit";
+        if (name.size() > 5 && name.ends_with(".glsl")) {
+            std::filesystem::path p = dir_ / name;
+            if (!std::ifstream(p)) error(pointer, "cannot read template file " + p.string());
+            return p.string();
+        }
+        std::vector<std::string> names = builtinTemplateNames();
+        if (std::find(names.begin(), names.end(), name) != names.end()) return name;
+        std::string hint;
+        if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
+        error(pointer, "unknown template \"" + name + "\"; expected " + joinQuoted(names) + " or a path to a .glsl file", hint);
+        return "lit";
+    }
+
+    void hexSettings(const json& v, const std::string& pointer, HexTiling& hex) {
+        if (!v.is_object()) {
+            error(pointer, "expected an object of hex-tiling settings, got " + typeName(v));
+            return;
+        }
+        checkKeys(v, pointer, kHexKeys);
+        const Range positive{0, INFINITY, true, true, "> 0"};
+        if (v.contains("enabled")) hex.enabled = boolean(v["enabled"], pointer + "/enabled", hex.enabled);
+        if (v.contains("tiling")) {
+            const json& t = v["tiling"];
+            std::string p = pointer + "/tiling";
+            if (t.is_array() && t.size() == 2) {
+                hex.tiling[0] = number(t[0], p + "/0", positive, hex.tiling[0]);
+                hex.tiling[1] = number(t[1], p + "/1", positive, hex.tiling[1]);
+            } else if (t.is_number()) {
+                hex.tiling[0] = hex.tiling[1] = number(t, p, positive, hex.tiling[0]);
+            } else {
+                error(p, "expected a number > 0 or an array [u, v] of two numbers > 0, got " +
+                             (t.is_array() ? "an array of " + std::to_string(t.size()) : typeName(t)));
+            }
+        }
+        if (v.contains("rotation")) hex.rotation = number(v["rotation"], pointer + "/rotation", {0, INFINITY, false, true, ">= 0"}, hex.rotation);
+        if (v.contains("falloff")) hex.falloff = number(v["falloff"], pointer + "/falloff", {0, 1, true, true, "in (0, 1) (0.5 = off)"}, hex.falloff);
+        if (v.contains("falloffcontrast"))
+            hex.falloffcontrast = number(v["falloffcontrast"], pointer + "/falloffcontrast", {0, 1, false, false, "in [0, 1]"}, hex.falloffcontrast);
+        // Above 64, (1/3)^gamma at a triangle centre underflows float32 and the weights become 0/0.
+        if (v.contains("exponent")) hex.exponent = number(v["exponent"], pointer + "/exponent", {1, 64, false, false, "in [1, 64]"}, hex.exponent);
+        if (v.contains("mode")) {
+            if (int i = choice(v["mode"], pointer + "/mode", kModes); i >= 0) hex.mode = HashMode(i);
+        }
+    }
+
+    void slots(const json& v, const std::string& pointer, Material& m) {
+        if (!v.is_array()) {
+            error(pointer, "expected an array of slots, got " + typeName(v));
+            return;
+        }
+        if (v.empty() || v.size() > kMaxSlots) {
+            error(pointer, "expected 1 to " + std::to_string(kMaxSlots) + " slots, got " + std::to_string(v.size()));
+            if (v.empty()) return;
+        }
+        std::map<std::string, std::string> seen;  // name -> pointer of first use
+        for (size_t i = 0; i < v.size(); ++i) {
+            std::string p = pointerAppend(pointer, i);
+            Slot s = slot(v[i], p, m.hex);
+            if (!s.name.empty()) {
+                if (auto [it, fresh] = seen.emplace(s.name, p); !fresh) {
+                    TextPos first = locator_.value(it->second + "/name");
+                    error(p + "/name", "duplicate slot name \"" + s.name + "\" (first at line " + std::to_string(first.line) + ")");
+                }
+            }
+            m.slots.push_back(std::move(s));
+        }
+    }
+
+    Slot slot(const json& v, const std::string& pointer, const HexTiling& defaults) {
+        Slot s;
+        s.hex = defaults;
+        if (!v.is_object()) {
+            error(pointer, "expected a slot object, got " + typeName(v));
+            return s;
+        }
+        checkKeys(v, pointer, kSlotKeys);
+        if (requireKey(v, pointer, "name", "a string")) {
+            s.name = string(v["name"], pointer + "/name");
+            static const std::regex re("[a-z][a-z0-9_]{0,31}");
+            if (v["name"].is_string() && (!std::regex_match(s.name, re) || s.name.find("__") != std::string::npos)) {
+                error(pointer + "/name", "expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`), got \"" + s.name + "\"",
+                      "it becomes the GLSL function hexc_<name>");
+                s.name.clear();
+            }
+        }
+        bool kindKnown = false;
+        if (requireKey(v, pointer, "kind", "one of " + joinQuoted(kKinds))) {
+            if (int i = choice(v["kind"], pointer + "/kind", kKinds); i >= 0) {
+                s.kind = SlotKind(i);
+                kindKnown = true;
+            }
+        }
+        s.colorSpace = s.kind == SlotKind::Color ? ColorSpace::Srgb : ColorSpace::Linear;
+        if (v.contains("channel")) {
+            if (kindKnown && s.kind != SlotKind::Scalar)
+                error(pointer + "/channel", "`channel` applies only to slots of kind `scalar`", {}, true);
+            else if (int i = choice(v["channel"], pointer + "/channel", kChannels); i >= 0)
+                s.channel = i;
+        }
+        if (v.contains("flip_y")) {
+            if (kindKnown && s.kind != SlotKind::Normal)
+                error(pointer + "/flip_y", "`flip_y` applies only to slots of kind `normal`", {}, true);
+            else
+                s.flipY = boolean(v["flip_y"], pointer + "/flip_y", false);
+        }
+        if (v.contains("colorspace")) {
+            if (int i = choice(v["colorspace"], pointer + "/colorspace", kColorSpaces); i >= 0) {
+                if (kindKnown && s.kind == SlotKind::Normal && ColorSpace(i) == ColorSpace::Srgb)
+                    error(pointer + "/colorspace", "a normal map holds vectors and must be `linear`, got \"srgb\"");
+                else
+                    s.colorSpace = ColorSpace(i);
+            }
+        }
+        if (v.contains("hextiling")) hexSettings(v["hextiling"], pointer + "/hextiling", s.hex);
+        if (requireKey(v, pointer, "texture", "a path to an image file")) {
+            s.texture = string(v["texture"], pointer + "/texture");
+            if (v["texture"].is_string()) texture(s, pointer + "/texture");
+        }
+        return s;
+    }
+
+    void texture(Slot& s, const std::string& pointer) {
+        s.texturePath = dir_ / s.texture;
+        std::error_code ec;
+        if (s.texture.empty() || !std::filesystem::is_regular_file(s.texturePath, ec)) {
+            error(pointer, "texture file not found: " + s.texturePath.string());
+            return;
+        }
+        int channels = 0;
+        if (!stbi_info(s.texturePath.string().c_str(), &s.width, &s.height, &channels)) {
+            error(pointer, "cannot read texture " + s.texturePath.string() + ": " + stbi_failure_reason() +
+                               " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR or PNM)");
+            return;
+        }
+        if (s.kind == SlotKind::Normal && channels < 3)
+            error(pointer, "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(channels));
+    }
+
+    JsonLocator locator_;
+    std::filesystem::path file_, dir_;
+};
+
+}  // namespace
+
+ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
+    ParseResult result;
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::parse_error& e) {
+        // nlohmann's message carries its own "[json.exception...] parse error at line L, column C: " prefix.
+        std::string what = e.what();
+        if (auto colon = what.find(": ", what.find("column")); colon != std::string::npos) what = what.substr(colon + 2);
+        // nlohmann's byte is one past the offending character.
+        TextPos p = textPosition(text, e.byte > 0 ? e.byte - 1 : 0);
+        result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), p.line, p.col}, "", "invalid JSON: " + what, {}});
+        return result;
+    }
+    Validator v(text, file);
+    Material m = v.run(doc);
+    result.diagnostics = std::move(v.diags);
+    if (!hasErrors(result.diagnostics)) result.material = std::move(m);
+    return result;
+}
+
+ParseResult parseMaterialFile(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        ParseResult r;
+        r.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot open material file", {}});
+        return r;
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return parseMaterial(ss.str(), file);
+}
+
+std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }
+std::string_view toString(ColorSpace space) { return kColorSpaces[size_t(space)]; }
+std::string_view toString(HashMode mode) { return kModes[size_t(mode)]; }
+
+}  // namespace hexc

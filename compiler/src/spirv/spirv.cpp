@@ -1,0 +1,127 @@
+#include "spirv/spirv.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+
+#include <mutex>
+#include <regex>
+#include <sstream>
+
+#include "plan/plan.h"
+
+namespace hexc {
+namespace {
+
+void initializeGlslang() {
+    // glslang's process-wide tables; never finalised, the OS reclaims them at exit.
+    static std::once_flag once;
+    std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+// glslang writes "ERROR: file:line: message" (or "0:line" for unnamed sources) one per line.
+void appendGlslangLog(const std::string& log, const std::string& fallbackName, Diagnostics& out) {
+    static const std::regex located("^(ERROR|WARNING): (.*?):([0-9]+): (.*)$");
+    std::istringstream in(log);
+    std::string line;
+    std::smatch m;
+    while (std::getline(in, line)) {
+        if (std::regex_match(line, m, located)) {
+            std::string file = m[2].str() == "0" ? fallbackName : m[2].str();
+            auto severity = m[1] == "ERROR" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
+            out.push_back({severity, {file, std::stoi(m[3]), 0}, "", m[4].str(), {}});
+        } else if (line.rfind("ERROR: ", 0) == 0 && line.find("compilation errors") == std::string::npos) {
+            out.push_back({Diagnostic::Severity::Error, {fallbackName, 0, 0}, "", line.substr(7), {}});
+        }
+    }
+}
+
+spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_0;
+
+}  // namespace
+
+SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name, SourceLanguage language,
+                           const std::string& entryPoint) {
+    initializeGlslang();
+    SpirvResult result;
+    EShLanguage lang = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+    glslang::TShader shader(lang);
+    const char* text = source.c_str();
+    const char* names = name.c_str();
+    shader.setStringsWithLengthsAndNames(&text, nullptr, &names, 1);
+    bool hlsl = language == SourceLanguage::Hlsl;
+    shader.setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    shader.setEntryPoint(entryPoint.c_str());
+    if (hlsl) {
+        shader.setShiftBinding(glslang::EResUbo, kParamsBinding);
+        shader.setShiftBinding(glslang::EResSampler, kSamplerBinding);
+        shader.setShiftBinding(glslang::EResTexture, kFirstTextureBinding);
+    }
+    auto messages = EShMessages(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl | EShMsgHlslOffsets : 0));
+    if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
+        appendGlslangLog(shader.getInfoLog(), name, result.diagnostics);
+        return result;
+    }
+    glslang::TProgram program;
+    program.addShader(&shader);
+    if (!program.link(messages) || !program.mapIO()) {
+        appendGlslangLog(program.getInfoLog(), name, result.diagnostics);
+        return result;
+    }
+    appendGlslangLog(shader.getInfoLog(), name, result.diagnostics);  // warnings
+    glslang::SpvOptions options;
+    options.disableOptimizer = true;  // SPIRV-Tools runs next, with passes chosen in optimizeSpirv
+    options.validate = false;
+    spv::SpvBuildLogger logger;
+    glslang::GlslangToSpv(*program.getIntermediate(lang), result.words, &logger, &options);
+    if (std::string log = logger.getAllMessages(); log.find("error") != std::string::npos) {
+        result.diagnostics.push_back({Diagnostic::Severity::Error, {name, 0, 0}, "", "SPIR-V generation failed: " + log, {}});
+        result.words.clear();
+    }
+    return result;
+}
+
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& words) {
+    SpirvResult result;
+    std::string messages;
+    auto consumer = [&messages](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
+        messages += "word " + std::to_string(pos.index) + ": " + message + "\n";
+    };
+    auto fail = [&](const std::string& what) {
+        result.words.clear();
+        result.diagnostics.push_back({Diagnostic::Severity::Error, {"hexc", 0, 0}, "", what + ":\n" + messages, {}});
+        return result;
+    };
+    spvtools::SpirvTools tools(kTargetEnv);
+    tools.SetMessageConsumer(consumer);
+    if (!tools.Validate(words)) return fail("glslang produced invalid SPIR-V");
+
+    spvtools::Optimizer optimizer(kTargetEnv);
+    optimizer.SetMessageConsumer(consumer);
+    // Legalisation first: glslang's HLSL front end passes opaque handles through locals and
+    // parameters, which Vulkan only accepts once they are inlined and forwarded. It is a no-op
+    // cost for GLSL input and keeps one path for both.
+    optimizer.RegisterLegalizationPasses();
+    // Then the performance recipe (spirv-opt -O): inlines the per-slot functions and the library,
+    // breaks the HexcTiles struct into scalars, folds constants and removes library code the
+    // material never reaches, which is what keeps the emitted HLSL/GLSL/MSL short.
+    optimizer.RegisterPerformancePasses();
+    std::vector<uint32_t> optimized;
+    if (!optimizer.Run(words.data(), words.size(), &optimized)) return fail("spirv-opt failed");
+    if (!tools.Validate(optimized)) return fail("optimised SPIR-V failed validation");
+    result.words = std::move(optimized);
+    return result;
+}
+
+std::string disassemble(const std::vector<uint32_t>& words) {
+    spvtools::SpirvTools tools(kTargetEnv);
+    std::string text;
+    tools.Disassemble(words, &text, SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES);
+    return text;
+}
+
+}  // namespace hexc

@@ -1,0 +1,32 @@
+#pragma once
+// The SPIR-V stage: glslang front ends (GLSL and HLSL, in process) and SPIRV-Tools validation and
+// optimisation. Errors come back as diagnostics located at the file and line glslang reports.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hexc/diagnostics.h"
+
+namespace hexc {
+
+enum class ShaderStage { Vertex, Fragment };
+enum class SourceLanguage { Glsl, Hlsl };
+
+struct SpirvResult {
+    std::vector<uint32_t> words;  // empty on error
+    Diagnostics diagnostics;
+};
+
+// Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
+// the source in diagnostics when it has no #line names. HLSL registers map to hexc's Vulkan layout:
+// b0 -> binding 0, s0 -> binding 1, t<i> -> binding 2+i (see plan.h).
+SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
+                           SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main");
+
+// Validates, optimises for performance and validates again. Diagnostics only on failure (a hexc bug).
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& words);
+
+// Human-readable SPIR-V, for tests and debugging.
+std::string disassemble(const std::vector<uint32_t>& words);
+
+}  // namespace hexc

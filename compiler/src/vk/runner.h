@@ -1,0 +1,64 @@
+#pragma once
+// Runs a vertex + fragment shader pair over a UV rectangle on Vulkan (Mesa lavapipe in tests and CI) into an
+// RGBA32F image and reads it back; optionally times the draw. Used by the execution tests, preview and bench.
+//
+// Resource interface the shaders see (descriptor set 0):
+//   binding 0       uniform buffer, fragment stage: RenderRequest::uniformData (std140)
+//   binding 1       one sampler for every texture: linear min/mag/mip, REPEAT on u/v/w, lod 0..all, no anisotropy
+//   binding 2 + i   sampled image (texture2D): RenderRequest::textures[i], with a full mip chain
+//   push constant   16 bytes, vertex stage: RenderRequest::uvRect (see templates/fullscreen.vert.glsl)
+// The fragment shader writes location 0; the render target is VK_FORMAT_R32G32B32A32_SFLOAT, no blending.
+//
+// Mip chain: level 0 is the texture; level n+1 is vkCmdBlitImage of level n with VK_FILTER_LINEAR (an exact 2x2
+// average when level n has even sizes; 8-bit levels are rounded to 8 bits each step, sRGB ones averaged in linear).
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hexc/image.h"
+
+namespace hexc::vk {
+
+struct VulkanContext;  // instance, device and long-lived objects; defined in runner.cpp
+
+struct RenderRequest {
+    std::vector<uint32_t> vertexSpirv, fragmentSpirv;  // entry point "main" for both
+    std::vector<uint8_t> uniformData;                  // may be empty: a zeroed 16-byte buffer is bound instead
+    std::vector<const Texture*> textures;              // not owned; must outlive render()
+    int width = 0, height = 0;
+    std::array<float, 4> uvRect{0, 0, 1, 1};           // u0, v0, u1, v1
+    int timedFrames = 0;                                // > 0: draw this many extra frames, timing each one
+};
+
+struct RenderResult {
+    Image image;                 // row 0 is the top row
+    std::vector<double> frameMs;  // one GPU duration per timed frame, in milliseconds
+};
+
+// Owns one Vulkan instance and device, reused across renders because creating a device is slow.
+// Not thread-safe: use one Runner per thread.
+class Runner {
+public:
+    // Returns nullptr and sets *whyNot (if given) when no usable Vulkan device exists. Prefers a CPU device
+    // (lavapipe), whose results are the same on every machine. With HEXC_VK_VALIDATION=1 in the environment,
+    // enables VK_LAYER_KHRONOS_validation when it is installed.
+    static std::unique_ptr<Runner> create(std::string* whyNot);
+
+    // Draws 3 vertices once, reads the image back, then draws timedFrames more times, each its own submission
+    // bracketed by timestamps. Throws std::runtime_error naming the failed call and its VkResult.
+    RenderResult render(const RenderRequest& request);
+
+    std::string deviceName() const;
+
+    ~Runner();
+    Runner(const Runner&) = delete;
+    Runner& operator=(const Runner&) = delete;
+
+private:
+    explicit Runner(std::unique_ptr<VulkanContext> context);
+    std::unique_ptr<VulkanContext> ctx_;
+};
+
+}  // namespace hexc::vk

@@ -1,0 +1,184 @@
+// hexc hex-tiling library: Mikkelsen 2022, "Practical Real-Time Hex-Tiling" (JCGT 11(3)), Listings 1-10.
+// Injected by hexc at the template's `#include <hexc>` line. Every name here starts with `hexc` followed
+// by an upper-case letter, so it never collides with the generated per-slot functions `hexc_<slot>`.
+//
+// Conventions: the paper's HLSL `mul(v, R)` with R = float2x2(cs, -si, si, cs) (rows) is written out
+// as hexcRotateToTile (rotation by -angle) and `mul(R, d)` as hexcRotateFromTile (rotation by +angle),
+// so no matrix layout convention can flip them between targets.
+
+const float hexcPi = 3.14159265358979;
+// Listing 4, Eq. 4: Rec. 601 luminance weights.
+const vec4 hexcLuma = vec4(0.299, 0.587, 0.114, 0.0);
+
+// The per-pixel lattice data every slot with the same coordinate shares: Listing 1's weights and tile
+// ids, and per tile the sample coordinate, its screen-space gradients and the tile rotation.
+struct HexcTiles {
+    vec3 w;                      // barycentric weights of the three hex tiles, sum 1
+    ivec2 v1, v2, v3;            // integer lattice ids of the three tile centres
+    vec2 st1, st2, st3;          // per-tile sample coordinates (rotated and offset)
+    vec2 dx1, dx2, dx3;          // per-tile d(st)/dx, rotated with the tile
+    vec2 dy1, dy2, dy3;          // per-tile d(st)/dy
+    vec2 rot1, rot2, rot3;       // (cos, sin) of each tile's rotation angle
+};
+
+// Listing 1: snap st to the triangle lattice; barycentric weights and the three tile centres.
+void hexcTriangleGrid(vec2 st, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2 v3) {
+    st *= 2.0 * sqrt(3.0);
+    // Skew into the simplex grid: rows (1, -1/sqrt(3)) and (0, 2/sqrt(3)).
+    vec2 skewed = vec2(st.x - 0.57735027 * st.y, 1.15470054 * st.y);
+    ivec2 baseId = ivec2(floor(skewed));
+    vec3 temp = vec3(fract(skewed), 0.0);
+    temp.z = 1.0 - temp.x - temp.y;
+    float s = step(0.0, -temp.z);
+    float s2 = 2.0 * s - 1.0;
+    w = vec3(-temp.z * s2, s - temp.y * s2, s - temp.x * s2);
+    int si = int(s);
+    v1 = baseId + ivec2(si, si);
+    v2 = baseId + ivec2(si, 1 - si);
+    v3 = baseId + ivec2(1 - si, si);
+}
+
+// Listing 2: the paper's per-tile offset, fract(sin(M p) * 43758.5453) with M rows (127.1, 311.7), (269.5, 183.3).
+vec2 hexcHashPaper(ivec2 id) {
+    vec2 p = vec2(id);
+    vec2 r = vec2(dot(vec2(127.1, 311.7), p), dot(vec2(269.5, 183.3), p));
+    return fract(sin(r) * 43758.5453);
+}
+
+// Listing 5: tile centre in st space; the inverse skew has rows (1, 1/2) and (0, sqrt(3)/2).
+vec2 hexcTileCentre(ivec2 id) {
+    return vec2(float(id.x) + 0.5 * float(id.y), float(id.y) / 1.15470054) / (2.0 * sqrt(3.0));
+}
+
+// Listing 6: the paper's per-tile rotation angle in (-pi, pi], scaled by rotStrength; returns (cos, sin).
+vec2 hexcRotationPaper(ivec2 id, float rotStrength) {
+    float angle = float(abs(id.x * id.y) + abs(id.x + id.y)) + hexcPi;
+    // The angle is positive, so HLSL fmod and GLSL mod agree here; the paper's `< 0` branch never runs.
+    angle = mod(angle, 2.0 * hexcPi);
+    if (angle > hexcPi) angle -= 2.0 * hexcPi;
+    angle *= rotStrength;
+    return vec2(cos(angle), sin(angle));
+}
+
+// mul(v, R): into the tile's rotated frame (by -angle).
+vec2 hexcRotateToTile(vec2 v, vec2 cs) {
+    return vec2(v.x * cs.x + v.y * cs.y, -v.x * cs.y + v.y * cs.x);
+}
+
+// mul(R, d): a derivative sampled in the tile's frame back to st space (by +angle), Listing 3.
+vec2 hexcRotateFromTile(vec2 d, vec2 cs) {
+    return vec2(cs.x * d.x - cs.y * d.y, cs.y * d.x + cs.x * d.y);
+}
+
+// Listings 3-4, shared part: st_i = (st - c_i) R_i + c_i + hash(v_i), gradients rotated with the tile.
+// Derivatives of the continuous st are taken once, before the lattice.
+HexcTiles hexcTiles(vec2 st, float rotStrength) {
+    HexcTiles t;
+    vec2 dSTdx = dFdx(st), dSTdy = dFdy(st);
+    hexcTriangleGrid(st, t.w, t.v1, t.v2, t.v3);
+    t.rot1 = hexcRotationPaper(t.v1, rotStrength);
+    t.rot2 = hexcRotationPaper(t.v2, rotStrength);
+    t.rot3 = hexcRotationPaper(t.v3, rotStrength);
+    vec2 c1 = hexcTileCentre(t.v1), c2 = hexcTileCentre(t.v2), c3 = hexcTileCentre(t.v3);
+    t.st1 = hexcRotateToTile(st - c1, t.rot1) + c1 + hexcHashPaper(t.v1);
+    t.st2 = hexcRotateToTile(st - c2, t.rot2) + c2 + hexcHashPaper(t.v2);
+    t.st3 = hexcRotateToTile(st - c3, t.rot3) + c3 + hexcHashPaper(t.v3);
+    t.dx1 = hexcRotateToTile(dSTdx, t.rot1); t.dy1 = hexcRotateToTile(dSTdy, t.rot1);
+    t.dx2 = hexcRotateToTile(dSTdx, t.rot2); t.dy2 = hexcRotateToTile(dSTdy, t.rot2);
+    t.dx3 = hexcRotateToTile(dSTdx, t.rot3); t.dy3 = hexcRotateToTile(dSTdy, t.rot3);
+    return t;
+}
+
+// Listing 8 / Eq. 5: Perlin's gain with k = log(1 - r) / log(1/2), then renormalised.
+vec3 hexcGain3(vec3 x, float r) {
+    float k = log(1.0 - r) / log(0.5);
+    vec3 s = 2.0 * step(0.5, x);
+    vec3 m = 2.0 * (1.0 - s);
+    vec3 res = 0.5 * s + 0.25 * m * pow(max(vec3(0.0), s + x * m), vec3(k));
+    return res / (res.x + res.y + res.z);
+}
+
+// Eq. 1 with the falloff metric delta already evaluated per tile (Dw), then the optional gain.
+vec3 hexcBlendWeights(vec3 w, vec3 Dw, float falloffContrast, float exponent, float falloff) {
+    Dw = mix(vec3(1.0), Dw, falloffContrast);
+    vec3 W = Dw * pow(w, vec3(exponent));
+    W /= (W.x + W.y + W.z);
+    if (falloff != 0.5) W = hexcGain3(W, falloff);
+    return W;
+}
+
+// Listing 7: weights swizzled so each hex tile keeps one colour across triangles (for visualisation).
+// `%` on negative integers is undefined in GLSL and target-dependent elsewhere, so the remainder is
+// taken of a non-negative value.
+vec3 hexcHexWeights(vec3 W, ivec2 v1, ivec2 v3) {
+    int d = v1.x - v1.y;
+    int a = abs(d) % 3;
+    int i1 = (d < 0 && a != 0) ? 3 - a : a;
+    int vh = i1 < 2 ? i1 + 1 : 0;
+    int vl = i1 > 0 ? i1 - 1 : 2;
+    int i2 = v1.x < v3.x ? vl : vh;
+    int i3 = v1.x < v3.x ? vh : vl;
+    vec3 res;
+    res.x = i3 == 0 ? W.z : (i2 == 0 ? W.y : W.x);
+    res.y = i3 == 1 ? W.z : (i2 == 1 ? W.y : W.x);
+    res.z = i3 == 2 ? W.z : (i2 == 2 ? W.y : W.x);
+    return res;
+}
+
+// Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
+// a unit vector picking the channel for scalar maps.
+vec4 hexcColor(texture2D tex, sampler samp, vec2 st, float rotStrength, float falloff, float falloffContrast,
+               float exponent, vec4 luma, out vec3 weights) {
+    HexcTiles t = hexcTiles(st, rotStrength);
+    vec4 c1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1);
+    vec4 c2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2);
+    vec4 c3 = textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3);
+    vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
+    vec3 W = hexcBlendWeights(t.w, Dw, falloffContrast, exponent, falloff);
+    weights = hexcHexWeights(W, t.v1, t.v3);
+    return W.x * c1 + W.y * c2 + W.z * c3;
+}
+
+// Listing 9: tangent-space normal in [-1, 1] to the height derivative dH/duv, |z| kept >= max(|x|,|y|)/128.
+// flipY: the map's green axis points down (DirectX convention).
+vec2 hexcNormalToDeriv(vec3 vM, bool flipY) {
+    vec3 vMa = abs(vM);
+    float zMa = max(vMa.z, (1.0 / 128.0) * max(vMa.x, vMa.y));
+    return -vec2(vM.x, flipY ? -vM.y : vM.y) / zMa;
+}
+
+// Listing 10: sample a normal map with explicit gradients, return its derivative.
+vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, bool flipY) {
+    vec3 vM = 2.0 * textureGrad(sampler2D(tex, samp), st, dx, dy).xyz - 1.0;
+    return hexcNormalToDeriv(vM, flipY);
+}
+
+// Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
+// rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
+vec2 hexcDeriv(texture2D tex, sampler samp, vec2 st, float rotStrength, float falloff, float falloffContrast,
+               float exponent, bool flipY, out vec3 weights) {
+    HexcTiles t = hexcTiles(st, rotStrength);
+    vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1);
+    vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2);
+    vec2 d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3);
+    vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
+    vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), falloffContrast, exponent, falloff);
+    weights = hexcHexWeights(W, t.v1, t.v3);
+    return W.x * d1 + W.y * d2 + W.z * d3;
+}
+
+// Plain tiling, for slots with hex-tiling disabled: one fetch, hardware gradients.
+vec4 hexcPlainColor(texture2D tex, sampler samp, vec2 st, out vec3 weights) {
+    weights = vec3(1.0, 0.0, 0.0);
+    return texture(sampler2D(tex, samp), st);
+}
+
+vec2 hexcPlainDeriv(texture2D tex, sampler samp, vec2 st, bool flipY, out vec3 weights) {
+    weights = vec3(1.0, 0.0, 0.0);
+    return hexcNormalToDeriv(2.0 * texture(sampler2D(tex, samp), st).xyz - 1.0, flipY);
+}
+
+// The paper's conversion of a blended derivative back to a tangent-space normal (Section 3).
+vec3 hexcDerivToNormal(vec2 deriv) {
+    return normalize(vec3(-deriv, 1.0));
+}

@@ -1,0 +1,55 @@
+// hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|plain>`) and the resource
+// sections, and replaces the $placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff,
+// $falloffcontrast, $exponent (uniform members or literals), $luma, $channel, $flipy, $members.
+// Each slot gets `hexc_$name(vec2 uv)` and an overload with `out vec3 weights` (Listing 7 hex weights).
+
+//@ params
+layout(set = 0, binding = 0, std140) uniform HexcParams {
+$members
+} hexcParams;
+
+//@ sampler
+layout(set = 0, binding = $binding) uniform sampler hexcSampler;
+
+//@ first
+#define HEXC_FIRST_SLOT hexc_$name
+
+//@ texture
+layout(set = 0, binding = $binding) uniform texture2D hexcTex_$name;
+#define HEXC_HAS_$name 1
+
+//@ color.hex
+vec4 hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcColor(hexcTex_$name, hexcSampler, uv * $tiling, $rotation, $falloff, $falloffcontrast, $exponent, $luma, weights);
+}
+vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ color.plain
+vec4 hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcPlainColor(hexcTex_$name, hexcSampler, uv * $tiling, weights);
+}
+vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ scalar.hex
+float hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcColor(hexcTex_$name, hexcSampler, uv * $tiling, $rotation, $falloff, $falloffcontrast, $exponent, $luma, weights).$channel;
+}
+float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ scalar.plain
+float hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcPlainColor(hexcTex_$name, hexcSampler, uv * $tiling, weights).$channel;
+}
+float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ normal.hex
+vec2 hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcDeriv(hexcTex_$name, hexcSampler, uv * $tiling, $rotation, $falloff, $falloffcontrast, $exponent, $flipy, weights);
+}
+vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ normal.plain
+vec2 hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcPlainDeriv(hexcTex_$name, hexcSampler, uv * $tiling, $flipy, weights);
+}
+vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
