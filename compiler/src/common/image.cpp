@@ -47,6 +47,11 @@ Texture loadPfm(const std::filesystem::path& file) {
     if (!in || (magic != "PF" && magic != "Pf") || width <= 0 || height <= 0 || scale == 0)
         fail(file, "not a PFM file (bad header)");
     const int channels = magic == "PF" ? 3 : 1;
+    // Check the size before allocating, so a corrupt header cannot ask for gigabytes.
+    const uint64_t dataBytes = uint64_t(width) * uint64_t(height) * channels * 4;
+    std::error_code ec;
+    const uint64_t fileBytes = std::filesystem::file_size(file, ec);
+    if (ec || dataBytes > fileBytes - uint64_t(in.tellg())) fail(file, "PFM file is truncated");
     std::vector<uint32_t> words(size_t(width) * height * channels);
     in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
     if (in.gcount() != std::streamsize(words.size() * 4)) fail(file, "PFM file is truncated");

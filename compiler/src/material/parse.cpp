@@ -59,7 +59,10 @@ public:
     Diagnostics diags;
 
     void error(const std::string& pointer, std::string message, std::string hint = {}, bool atKey = false) {
-        TextPos p = atKey ? locator_.key(pointer) : locator_.value(pointer);
+        error(pointer, atKey ? locator_.key(pointer) : locator_.value(pointer), std::move(message), std::move(hint));
+    }
+
+    void error(const std::string& pointer, TextPos p, std::string message, std::string hint = {}) {
         diags.push_back({Diagnostic::Severity::Error, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)});
     }
 
@@ -67,8 +70,8 @@ public:
         Material m;
         m.sourceFile = file_;
         for (const auto& d : locator_.duplicates())
-            error(d.pointer, "duplicate key " + ticked(d.pointer.substr(d.pointer.rfind('/') + 1)) +
-                                 " (first at line " + std::to_string(d.first.line) + ")", {}, true);
+            error(d.pointer, d.second,
+                  "duplicate key " + ticked(d.pointer.substr(d.pointer.rfind('/') + 1)) + " (first at line " + std::to_string(d.first.line) + ")");
         if (!doc.is_object()) {
             error("", "expected a material object, got " + typeName(doc));
             return m;
@@ -167,7 +170,9 @@ private:
         if (std::find(names.begin(), names.end(), name) != names.end()) return name;
         std::string hint;
         if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
-        error(pointer, "unknown template \"" + name + "\"; expected " + joinQuoted(names) + " or a path to a .glsl file", hint);
+        std::string list;
+        for (const std::string& n : names) list += (list.empty() ? "" : ", ") + ticked(n);
+        error(pointer, "unknown template \"" + name + "\"; expected a built-in template (" + list + ") or a path to a .glsl file", hint);
         return "lit";
     }
 
@@ -305,16 +310,27 @@ private:
 ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
     ParseResult result;
     json doc;
+    auto syntaxError = [&](size_t offset, std::string message) {
+        TextPos p = textPosition(text, offset);
+        result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), p.line, p.col}, "", std::move(message), {}});
+        return result;
+    };
     try {
         doc = json::parse(text);
     } catch (const json::parse_error& e) {
-        // nlohmann's message carries its own "[json.exception...] parse error at line L, column C: " prefix.
+        // nlohmann's message carries its own "[json.exception...] parse error at line L, column C: " prefix;
+        // the position is recomputed from the byte offset (one past the offending character).
         std::string what = e.what();
         if (auto colon = what.find(": ", what.find("column")); colon != std::string::npos) what = what.substr(colon + 2);
-        // nlohmann's byte is one past the offending character.
-        TextPos p = textPosition(text, e.byte > 0 ? e.byte - 1 : 0);
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), p.line, p.col}, "", "invalid JSON: " + what, {}});
-        return result;
+        return syntaxError(e.byte > 0 ? e.byte - 1 : 0, "invalid JSON: " + what);
+    } catch (const json::out_of_range& e) {
+        // The only range error the parser raises: a number literal beyond double, e.g. 1e999.
+        // nlohmann gives no offset here, so the literal is found in the text.
+        std::string what = e.what();
+        size_t q = what.find('\'');
+        std::string literal = q == std::string::npos ? "" : what.substr(q + 1, what.rfind('\'') - q - 1);
+        size_t at = literal.empty() ? 0 : text.find(literal);
+        return syntaxError(at == std::string_view::npos ? 0 : at, "number " + literal + " is out of range (expected a finite number)");
     }
     Validator v(text, file);
     Material m = v.run(doc);

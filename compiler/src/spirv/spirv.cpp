@@ -60,6 +60,12 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
         shader.setShiftBinding(glslang::EResUbo, kParamsBinding);
         shader.setShiftBinding(glslang::EResSampler, kSamplerBinding);
         shader.setShiftBinding(glslang::EResTexture, kFirstTextureBinding);
+    } else if (language == SourceLanguage::OpenGlGlsl) {
+        // GLSL 330 carries no binding or varying location qualifiers (OpenGL matches by name): let
+        // glslang number what is missing, in declaration order, then shift textures into hexc's layout.
+        shader.setAutoMapBindings(true);
+        shader.setAutoMapLocations(true);
+        shader.setShiftBinding(glslang::EResTexture, kFirstTextureBinding);
     }
     auto messages = EShMessages(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl | EShMsgHlslOffsets : 0));
     if (!shader.parse(GetDefaultResources(), 450, false, messages)) {

@@ -10,7 +10,9 @@
 namespace hexc {
 
 enum class ShaderStage { Vertex, Fragment };
-enum class SourceLanguage { Glsl, Hlsl };
+// Glsl: Vulkan GLSL (what codegen writes). OpenGlGlsl: GLSL as emitted for OpenGL (combined samplers
+// on texture units 0..N-1), brought into hexc's Vulkan layout so it can be executed and checked.
+enum class SourceLanguage { Glsl, OpenGlGlsl, Hlsl };
 
 struct SpirvResult {
     std::vector<uint32_t> words;  // empty on error
@@ -19,7 +21,7 @@ struct SpirvResult {
 
 // Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
 // the source in diagnostics when it has no #line names. HLSL registers map to hexc's Vulkan layout:
-// b0 -> binding 0, s0 -> binding 1, t<i> -> binding 2+i (see plan.h).
+// b0 -> binding 0, s0 -> binding 1, t<i> -> binding 2+i (see plan.h); OpenGL texture unit i -> 2+i.
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
                            SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main");
 

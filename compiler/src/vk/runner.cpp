@@ -133,8 +133,8 @@ HostBuffer createHostBuffer(VulkanContext& ctx, VkDeviceSize size, VkBufferUsage
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(ctx.device, b.buffer, &req);
     // Cached memory makes the read-back fast where the device offers it.
-    VkDeviceMemory memory = allocate(ctx, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                                     VK_MEMORY_PROPERTY_HOST_CACHED_BIT, cleanup);
+    const VkMemoryPropertyFlags required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    VkDeviceMemory memory = allocate(ctx, req, required, VK_MEMORY_PROPERTY_HOST_CACHED_BIT, cleanup);
     VK_CHECK(vkBindBufferMemory, ctx.device, b.buffer, memory, 0);
     VK_CHECK(vkMapMemory, ctx.device, memory, 0, VK_WHOLE_SIZE, 0, &b.mapped);  // vkFreeMemory unmaps
     return b;
@@ -305,7 +305,6 @@ VkRenderPass createRenderPass(VulkanContext& ctx, Cleanup& cleanup) {
     toCopy.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
 
     VkRenderPassCreateInfo info{};
-
     info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
     info.attachmentCount = 2;
     info.pAttachments = attachments;
@@ -331,7 +330,6 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     stages[1].module = createShaderModule(ctx, req.fragmentSpirv, cleanup);
 
     VkPipelineVertexInputStateCreateInfo vertexInput{};
-
     vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
     VkPipelineInputAssemblyStateCreateInfo assembly{};
     assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
@@ -347,7 +345,6 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     viewportState.pScissors = &scissor;
 
     VkPipelineRasterizationStateCreateInfo raster{};
-
     raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = VK_CULL_MODE_NONE;
@@ -355,7 +352,6 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     raster.lineWidth = 1;
 
     VkPipelineMultisampleStateCreateInfo multisample{};
-
     multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
 
@@ -376,7 +372,6 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     blend.pAttachments = &blendAttachment;
 
     VkGraphicsPipelineCreateInfo info{};
-
     info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
     info.stageCount = 2;
     info.pStages = stages;
@@ -428,8 +423,9 @@ void validate(const VulkanContext& ctx, const RenderRequest& req) {
     if (req.textures.size() > limits.maxPerStageDescriptorSampledImages) fail("too many textures for the device");
     for (const Texture* t : req.textures) {
         const size_t values = t ? size_t(t->width) * t->height * 4 : 0;
-        if (!t || t->width <= 0 || t->height <= 0 || uint32_t(std::max(t->width, t->height)) > limits.maxImageDimension2D ||
-            (t->isFloat() ? t->rgba32f.size() != values : t->rgba8.size() != values))
+        if (!t || t->width <= 0 || t->height <= 0 ||
+            uint32_t(std::max(t->width, t->height)) > limits.maxImageDimension2D ||
+            (t->isFloat() ? t->rgba32f.size() : t->rgba8.size()) != values)
             fail("a texture is missing, empty, too large or has the wrong number of values");
     }
     if (req.timedFrames < 0) fail("timedFrames is negative");
@@ -459,7 +455,6 @@ std::unique_ptr<VulkanContext> openContext() {
     }
 
     VkApplicationInfo app{};
-
     app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
     app.pApplicationName = "hexc";
     app.apiVersion = VK_API_VERSION_1_0;
@@ -522,7 +517,6 @@ std::unique_ptr<VulkanContext> openContext() {
     vkGetDeviceQueue(dev, ctx->queueFamily, 0, &ctx->queue);
 
     VkCommandPoolCreateInfo poolInfo{};
-
     poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     poolInfo.queueFamilyIndex = ctx->queueFamily;
@@ -530,13 +524,11 @@ std::unique_ptr<VulkanContext> openContext() {
     cleanup.defer([dev, pool = ctx->commandPool] { vkDestroyCommandPool(dev, pool, nullptr); });
 
     VkPipelineCacheCreateInfo cacheInfo{};
-
     cacheInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO;
     VK_CHECK(vkCreatePipelineCache, dev, &cacheInfo, nullptr, &ctx->pipelineCache);
     cleanup.defer([dev, cache = ctx->pipelineCache] { vkDestroyPipelineCache(dev, cache, nullptr); });
 
     VkSamplerCreateInfo samplerInfo{};
-
     samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
     samplerInfo.magFilter = VK_FILTER_LINEAR;
     samplerInfo.minFilter = VK_FILTER_LINEAR;
@@ -552,7 +544,6 @@ std::unique_ptr<VulkanContext> openContext() {
     cleanup.defer([dev, sampler = ctx->sampler] { vkDestroySampler(dev, sampler, nullptr); });
 
     VkFenceCreateInfo fenceInfo{};
-
     fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
     VK_CHECK(vkCreateFence, dev, &fenceInfo, nullptr, &ctx->fence);
     cleanup.defer([dev, fence = ctx->fence] { vkDestroyFence(dev, fence, nullptr); });

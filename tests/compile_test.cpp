@@ -1,0 +1,243 @@
+// The compiler end to end: every example to every target, golden outputs, determinism, the emitted
+// HLSL and GLSL re-compiled by glslang, template errors located in the template, and the CLI contract.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <spirv_cross.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "hexc/compiler.h"
+#include "spirv/spirv.h"
+
+using namespace hexc;
+
+namespace {
+
+const char* kExamples[] = {"rock", "tiles", "rock_normal"};
+
+std::string readFile(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+Material load(const std::string& path) {
+    ParseResult r = parseMaterialFile(path);
+    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
+    return *r.material;
+}
+
+CompileResult compileExample(const std::string& name, const CompileOptions& options = {}) {
+    CompileResult r = compile(load("materials/" + name + ".json"), options);
+    EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    return r;
+}
+
+const OutputFile& file(const CompileResult& r, const std::string& suffix) {
+    for (const OutputFile& f : r.files)
+        if (f.name.ends_with(suffix)) return f;
+    throw std::runtime_error("no output ending in " + suffix);
+}
+
+class Example : public testing::TestWithParam<const char*> {};
+
+TEST_P(Example, WritesEveryTargetAndAManifest) {
+    CompileResult r = compileExample(GetParam());
+    std::string n = GetParam();
+    std::vector<std::string> names;
+    for (const OutputFile& f : r.files) names.push_back(f.name);
+    EXPECT_EQ(names, (std::vector<std::string>{n + ".frag.glsl", n + ".frag.hlsl", n + ".frag.metal", n + ".frag.spv", n + ".manifest.json"}));
+    for (const OutputFile& f : r.files) EXPECT_GT(f.contents.size(), 500u) << f.name;
+    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    EXPECT_EQ(manifest["material"], n);
+    for (const char* t : {"spirv", "hlsl", "glsl", "msl"}) EXPECT_TRUE(manifest["targets"].contains(t)) << t;
+    EXPECT_EQ(manifest["targets"]["msl"]["entry_point"], "main0");
+    EXPECT_EQ(manifest["targets"]["hlsl"]["params"]["register"], "b0");
+}
+
+TEST_P(Example, MatchesGoldenOutputs) {
+    // Regenerate with tests/update_golden.sh after an intended change, and review the diff.
+    CompileResult r = compileExample(GetParam());
+    for (const OutputFile& f : r.files) {
+        std::filesystem::path golden = std::filesystem::path("tests/golden") / GetParam() / f.name;
+        ASSERT_TRUE(std::filesystem::exists(golden)) << golden;
+        EXPECT_TRUE(readFile(golden) == f.contents) << f.name << " differs from " << golden << " (run tests/update_golden.sh and review)";
+    }
+}
+
+TEST_P(Example, IsDeterministic) {
+    CompileResult a = compileExample(GetParam());
+    CompileResult b = compileExample(GetParam());
+    ASSERT_EQ(a.files.size(), b.files.size());
+    for (size_t i = 0; i < a.files.size(); ++i) EXPECT_TRUE(a.files[i].contents == b.files[i].contents) << a.files[i].name;
+}
+
+TEST_P(Example, EmittedHlslCompilesWithGlslangHlslFrontEnd) {
+    for (uint32_t sm : {50u, 60u}) {
+        CompileOptions options;
+        options.hlslShaderModel = sm;
+        CompileResult r = compileExample(GetParam(), options);
+        SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl, "main");
+        ASSERT_FALSE(back.words.empty()) << "SM " << sm << "\n" << formatAll(back.diagnostics);
+        EXPECT_FALSE(optimizeSpirv(back.words).words.empty());
+    }
+}
+
+TEST_P(Example, EmittedGlslCompilesWithGlslang) {
+    struct Version {
+        uint32_t number;
+        bool es;
+    };
+    for (Version v : {Version{450, false}, Version{330, false}, Version{310, true}}) {
+        CompileOptions options;
+        options.glslVersion = v.number;
+        options.glslEs = v.es;
+        CompileResult r = compileExample(GetParam(), options);
+        const std::string& source = file(r, ".glsl").contents;
+        EXPECT_EQ(source.substr(0, source.find('\n')), "#version " + std::to_string(v.number) + (v.es ? " es" : ""));
+        SpirvResult back = compileToSpirv(source, ShaderStage::Fragment, "emitted.glsl", SourceLanguage::OpenGlGlsl);
+        EXPECT_FALSE(back.words.empty()) << v.number << "\n" << formatAll(back.diagnostics) << source;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Materials, Example, testing::ValuesIn(kExamples));
+
+TEST(Compile, HlslPackOffsetsMatchTheManifest) {
+    // An engine fills the block by the manifest's offsets; the HLSL cbuffer must agree byte for byte.
+    CompileResult r = compileExample("rock");
+    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl, "main");
+    ASSERT_FALSE(back.words.empty());
+    spirv_cross::Compiler c(back.words);
+    auto ubos = c.get_shader_resources().uniform_buffers;
+    ASSERT_EQ(ubos.size(), 1u);
+    EXPECT_EQ(c.get_decoration(ubos[0].id, spv::DecorationBinding), 0u);
+    const auto& type = c.get_type(ubos[0].base_type_id);
+    const auto& members = manifest["parameters"]["members"];
+    ASSERT_EQ(type.member_types.size(), members.size());
+    for (uint32_t i = 0; i < members.size(); ++i) EXPECT_EQ(c.type_struct_member_offset(type, i), members[i]["offset"].get<uint32_t>());
+    EXPECT_EQ(manifest["parameters"]["size"], 80);
+}
+
+TEST(Compile, OneSamplerServesEverySlot) {
+    CompileResult r = compileExample("rock");
+    spirv_cross::Compiler c(r.spirv);
+    auto res = c.get_shader_resources();
+    EXPECT_EQ(res.separate_samplers.size(), 1u);
+    EXPECT_EQ(res.separate_images.size(), 3u);
+    for (const auto& img : res.separate_images) EXPECT_GE(c.get_decoration(img.id, spv::DecorationBinding), 2u);
+}
+
+TEST(Compile, TemplateErrorsPointIntoTheTemplate) {
+    std::filesystem::path t = std::filesystem::temp_directory_path() / "hexc_bad_template.glsl";
+    std::ofstream(t) << "#version 450\nlayout(location = 0) in vec2 v_uv;\nlayout(location = 0) out vec4 o;\n#include <hexc>\n"
+                        "void main() {\n    o = hexc_albedo(v_uv) + undefined_thing;\n}\n";
+    CompileOptions options;
+    options.templateFile = t;
+    CompileResult r = compile(load("materials/tiles.json"), options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_TRUE(r.files.empty());
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].loc.file, t.string());
+    EXPECT_EQ(r.diagnostics[0].loc.line, 6);
+    EXPECT_NE(r.diagnostics[0].message.find("undefined_thing"), std::string::npos) << r.diagnostics[0].message;
+}
+
+TEST(Compile, TemplateWithoutInjectionPointIsRejected) {
+    std::filesystem::path t = std::filesystem::temp_directory_path() / "hexc_no_include.glsl";
+    std::ofstream(t) << "#version 450\nlayout(location = 0) out vec4 o;\nvoid main() { o = vec4(1.0); }\n";
+    CompileOptions options;
+    options.templateFile = t;
+    CompileResult r = compile(load("materials/tiles.json"), options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.diagnostics[0].format(), t.string() + ": error: a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+}
+
+TEST(Compile, SlotsTheTemplateDoesNotReadAreLeftOutWithAWarning) {
+    Material m = load("materials/rock.json");
+    m.templateName = "unlit";
+    CompileResult r = compile(m);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    ASSERT_EQ(r.diagnostics.size(), 2u);
+    EXPECT_EQ(r.diagnostics[0].format(), "materials/rock.json: warning: slot `normal` is not read by template templates/unlit.glsl; it is left out");
+    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    EXPECT_EQ(manifest["slots"].size(), 1u);
+    EXPECT_EQ(manifest["targets"]["spirv"]["textures"].size(), 1u);
+}
+
+TEST(Compile, WeightsTemplateUsesTheFirstSlot) {
+    Material m = load("materials/rock.json");
+    m.templateName = "weights";
+    CompileResult r = compile(m);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    ASSERT_EQ(manifest["slots"].size(), 1u);
+    EXPECT_EQ(manifest["slots"][0]["name"], "albedo");
+}
+
+TEST(Compile, TargetSubset) {
+    CompileOptions options;
+    options.targets = {Target::Msl, Target::Spirv};
+    CompileResult r = compileExample("tiles", options);
+    ASSERT_EQ(r.files.size(), 3u);
+    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    EXPECT_EQ(manifest["targets"].size(), 2u);
+}
+
+// The command line, run as a user would.
+int run(const std::string& args, std::string* err = nullptr) {
+    std::filesystem::path log = std::filesystem::temp_directory_path() / "hexc_cli_stderr.txt";
+    int status = std::system((std::string(HEXC_EXE) + " " + args + " 2> " + log.string() + " > /dev/null").c_str());
+    if (err) *err = readFile(log);
+    return WEXITSTATUS(status);
+}
+
+std::filesystem::path freshDir(const std::string& name) {
+    std::filesystem::path d = std::filesystem::temp_directory_path() / name;
+    std::filesystem::remove_all(d);
+    return d;
+}
+
+TEST(Cli, WritesAllOutputsAndRunsAreByteIdentical) {
+    auto a = freshDir("hexc_cli_a"), b = freshDir("hexc_cli_b");
+    ASSERT_EQ(run("materials/rock.json materials/tiles.json -o " + a.string()), 0);
+    ASSERT_EQ(run("materials/rock.json materials/tiles.json -o " + b.string()), 0);
+    size_t files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(a)) {
+        ++files;
+        EXPECT_TRUE(readFile(e.path()) == readFile(b / e.path().filename())) << e.path();
+    }
+    EXPECT_EQ(files, 10u);
+}
+
+TEST(Cli, BrokenMaterialWritesNothing) {
+    auto out = freshDir("hexc_cli_broken");
+    std::string err;
+    EXPECT_EQ(run("materials/rock.json materials/invalid/falloff_zero.json -o " + out.string(), &err), 1);
+    EXPECT_FALSE(std::filesystem::exists(out));
+    EXPECT_NE(err.find("materials/invalid/falloff_zero.json:6:16: error: /hextiling/falloff:"), std::string::npos) << err;
+    EXPECT_NE(err.find("nothing written"), std::string::npos);
+}
+
+TEST(Cli, UsageErrors) {
+    std::string err;
+    EXPECT_EQ(run("materials/rock.json", &err), 2);
+    EXPECT_EQ(err, "hexc: no output folder given: use -o DIR\n");
+    EXPECT_EQ(run("materials/rock.json -o x --targets hlsl,dxil", &err), 2);
+    EXPECT_EQ(err, "hexc: unknown target `dxil` in --targets; expected spirv, hlsl, glsl or msl\n");
+    EXPECT_EQ(run("--frobnicate", &err), 2);
+    EXPECT_EQ(run("--help"), 0);
+    EXPECT_EQ(run("--version"), 0);
+}
+
+TEST(Cli, MissingMaterialFile) {
+    std::string err;
+    EXPECT_EQ(run("materials/nope.json -o " + freshDir("hexc_cli_none").string(), &err), 1);
+    EXPECT_EQ(err, "materials/nope.json: error: cannot open material file\nhexc: nothing written\n");
+}
+
+}  // namespace

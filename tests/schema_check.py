@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Checks material files against materials/material.schema.json.
+
+    schema_check.py SCHEMA GOOD... [--bad BAD...]
+
+Every GOOD file must be a valid material and every BAD file (after --bad) an invalid one. A directory
+argument stands for the *.json files directly in it, except *.schema.json. Prints one line per file and a
+closing "N passed, M failed" line; exits 1 if any expectation fails, 2 on usage errors.
+
+Besides the schema, this applies the two format rules JSON Schema cannot express: slot names are unique
+within a material, and numbers are finite (Python's json module would otherwise accept NaN, Infinity
+and 1e999). Run it with the Debian interpreter (/usr/bin/python3), which has python3-jsonschema.
+"""
+import json
+import math
+import sys
+from pathlib import Path
+
+try:
+    import jsonschema
+except ImportError:
+    sys.exit(f"schema_check.py: the jsonschema module is missing for {sys.executable}; "
+             "run /usr/bin/python3 with Debian's python3-jsonschema installed")
+
+
+DRAFT_2020_12 = "https://json-schema.org/draft/2020-12/schema"
+
+
+class NotFinite(ValueError):
+    pass
+
+
+def _reject_constant(name):
+    raise NotFinite(f"{name} is not a JSON number")
+
+
+def _parse_float(text):
+    value = float(text)
+    if not math.isfinite(value):
+        raise NotFinite(f"{text} is not a finite number")
+    return value
+
+
+def load_json(path):
+    """Strict JSON: NaN/Infinity and overflowing numbers are errors, not floats."""
+    with open(path, encoding="utf-8") as f:
+        return json.load(f, parse_constant=_reject_constant, parse_float=_parse_float)
+
+
+def pointer(parts):
+    """JSON pointer of an error location, e.g. /slots/0/hextiling/falloff."""
+    return "/" + "/".join(str(p).replace("~", "~0").replace("/", "~1") for p in parts)
+
+
+def describe(error):
+    """jsonschema's message, made shorter and plainer where it is not."""
+    if error.schema is False:
+        # The schema forbids keys with `false` only in the slot rules that depend on "kind".
+        return f"{error.absolute_path[-1]!r} is not allowed on a slot of this kind"
+    message = error.message
+    instance = repr(error.instance)
+    if len(instance) > 60:  # e.g. a whole slots array
+        kind = f"array of {len(error.instance)} items" if isinstance(error.instance, list) else "value"
+        message = message.replace(instance, kind)
+    return message
+
+
+def problems(validator, path):
+    """Every reason the file is not a valid material, as readable lines; empty when it is valid."""
+    try:
+        doc = load_json(path)
+    except (OSError, UnicodeDecodeError) as e:
+        return [f"cannot read: {e}"]
+    except (NotFinite, json.JSONDecodeError) as e:
+        return [f"not valid JSON: {e}"]
+
+    found = []
+    for error in sorted(validator.iter_errors(doc), key=lambda e: list(map(str, e.absolute_path))):
+        # For anyOf/oneOf the top-level message is vague; the closest sub-error says what was wrong.
+        best = jsonschema.exceptions.best_match([error])
+        found.append(f"{pointer(best.absolute_path)}: {describe(best)}")
+
+    slots = doc.get("slots") if isinstance(doc, dict) else None
+    if isinstance(slots, list):
+        seen = {}
+        for i, slot in enumerate(slots):
+            name = slot.get("name") if isinstance(slot, dict) else None
+            if isinstance(name, str):
+                if name in seen:
+                    found.append(f"/slots/{i}/name: duplicate slot name {name!r} (first at /slots/{seen[name]})")
+                seen.setdefault(name, i)
+    return found
+
+
+def expand(args):
+    files = []
+    for arg in args:
+        p = Path(arg)
+        if p.is_dir():
+            files += sorted(f for f in p.glob("*.json") if not f.name.endswith(".schema.json"))
+        else:
+            files.append(p)
+    return files
+
+
+def main(argv):
+    if len(argv) < 2 or argv[1] in ("-h", "--help"):
+        print(__doc__.strip(), file=sys.stderr)
+        return 2
+    schema_path, rest = argv[1], argv[2:]
+    if "--bad" in rest:
+        i = rest.index("--bad")
+        good_args, bad_args = rest[:i], rest[i + 1:]
+    else:
+        good_args, bad_args = rest, []
+    good, bad = expand(good_args), expand(bad_args)
+    if not good and not bad:
+        print("schema_check.py: no material files given", file=sys.stderr)
+        return 2
+
+    try:
+        schema = load_json(schema_path)
+        if not isinstance(schema, dict) or schema.get("$schema") != DRAFT_2020_12:
+            raise ValueError(f'"$schema" is not "{DRAFT_2020_12}" (arguments in the wrong order?)')
+        jsonschema.Draft202012Validator.check_schema(schema)
+    except Exception as e:  # a broken schema makes every other result meaningless
+        print(f"schema_check.py: {schema_path}: not a usable draft 2020-12 schema: {e}", file=sys.stderr)
+        return 2
+    validator = jsonschema.Draft202012Validator(schema)
+
+    passed = failed = 0
+    for path in good:
+        found = problems(validator, path)
+        if found:
+            failed += 1
+            print(f"FAIL {path}: expected valid, but:")
+            for line in found:
+                print(f"       {line}")
+        else:
+            passed += 1
+            print(f"ok   {path}: valid")
+    for path in bad:
+        found = problems(validator, path)
+        if found:
+            passed += 1
+            print(f"ok   {path}: invalid as expected: {found[0]}" + (f" (+{len(found) - 1} more)" if len(found) > 1 else ""))
+        else:
+            failed += 1
+            print(f"FAIL {path}: expected invalid, but it passes the schema")
+    print(f"{passed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

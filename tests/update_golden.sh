@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Regenerates tests/golden/<material>/ from the example materials with the built hexc.
+# Run after an intended change to codegen or templates, then review the diff like any other change.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+hexc=${HEXC:-build/hexc}
+for m in rock tiles rock_normal; do
+  rm -rf "tests/golden/$m"
+  "$hexc" -q "materials/$m.json" -o "tests/golden/$m"
+done
+echo "golden outputs regenerated in tests/golden/"
