@@ -24,7 +24,7 @@ struct Image {
     const float* at(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
 
-// Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...). HDR files load as float.
+// Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...) and PFM. HDR and PFM load as float.
 // Throws std::runtime_error with the file name and stb's reason on failure.
 Texture loadTexture(const std::filesystem::path& file, bool srgb);
 
