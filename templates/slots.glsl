@@ -1,6 +1,6 @@
 // hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|plain>`) and the resource
 // sections, and replaces the $placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff,
-// $falloffcontrast, $exponent (uniform members or literals), $luma, $channel, $flipy, $members.
+// $falloffcontrast, $exponent (uniform members or literals), $luma, $channel, $flipy, $kind, $members.
 // Each slot gets `hexc_$name(vec2 uv)` and an overload with `out vec3 weights` (Listing 7 hex weights).
 
 //@ params
@@ -13,6 +13,7 @@ layout(set = 0, binding = $binding) uniform sampler hexcSampler;
 
 //@ first
 #define HEXC_FIRST_SLOT hexc_$name
+#define HEXC_FIRST_KIND_$kind 1
 
 //@ texture
 layout(set = 0, binding = $binding) uniform texture2D hexcTex_$name;

@@ -33,7 +33,8 @@ std::string injectedCode(const ShaderPlan& plan) {
     members.pop_back();
     out += replaceAll(sections.at("params"), {{"$members", members}}) + "\n";
     out += replaceAll(sections.at("sampler"), {{"$binding", std::to_string(kSamplerBinding)}}) + "\n";
-    out += replaceAll(sections.at("first"), {{"$name", plan.slots.front().slot->name}}) + "\n";
+    const Slot& first = *plan.slots.front().slot;
+    out += replaceAll(sections.at("first"), {{"$name", first.name}, {"$kind", std::string(toString(first.kind))}}) + "\n";
     for (const SlotPlan& sp : plan.slots) {
         const Slot& s = *sp.slot;
         auto param = [&](const char* setting) { return "hexcParams." + s.name + "_" + setting; };

@@ -582,9 +582,10 @@ RenderResult Runner::render(const RenderRequest& req) {
     std::vector<VkDescriptorSetLayoutBinding> bindings(kFirstTextureBinding + req.textures.size());
     for (uint32_t i = 0; i < bindings.size(); ++i) {
         bindings[i].binding = i;
-        bindings[i].descriptorType = i == 0   ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                     : i == 1 ? VK_DESCRIPTOR_TYPE_SAMPLER
-                                              : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+        bindings[i].descriptorType = i == 0                 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                     : i == 1               ? VK_DESCRIPTOR_TYPE_SAMPLER
+                                     : req.combinedSamplers ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                                                            : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
         bindings[i].descriptorCount = 1;
         bindings[i].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
     }
@@ -650,7 +651,7 @@ RenderResult Runner::render(const RenderRequest& req) {
     std::vector<VkDescriptorPoolSize> poolSizes = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                                    {VK_DESCRIPTOR_TYPE_SAMPLER, 1}};
     if (!textureViews.empty())
-        poolSizes.push_back({VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, uint32_t(textureViews.size())});
+        poolSizes.push_back({bindings[kFirstTextureBinding].descriptorType, uint32_t(textureViews.size())});
     VkDescriptorPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     poolInfo.maxSets = 1;
@@ -671,7 +672,7 @@ RenderResult Runner::render(const RenderRequest& req) {
     const VkDescriptorImageInfo samplerInfo{ctx.sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
     std::vector<VkDescriptorImageInfo> imageInfos;
     for (VkImageView view : textureViews)
-        imageInfos.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+        imageInfos.push_back({req.combinedSamplers ? ctx.sampler : VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
     std::vector<VkWriteDescriptorSet> writes(bindings.size());
     for (uint32_t i = 0; i < writes.size(); ++i) {
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;

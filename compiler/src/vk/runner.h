@@ -5,7 +5,9 @@
 // Resource interface the shaders see (descriptor set 0):
 //   binding 0       uniform buffer, fragment stage: RenderRequest::uniformData (std140)
 //   binding 1       one sampler for every texture: linear min/mag/mip, REPEAT on u/v/w, lod 0..all, no anisotropy
-//   binding 2 + i   sampled image (texture2D): RenderRequest::textures[i], with a full mip chain
+//   binding 2 + i   sampled image (texture2D): RenderRequest::textures[i], with a full mip chain; or, with
+//                   RenderRequest::combinedSamplers, a sampler2D combining it with the binding-1 sampler
+//                   (how GLSL emitted for OpenGL binds textures once brought back to Vulkan)
 //   push constant   16 bytes, vertex stage: RenderRequest::uvRect (see templates/fullscreen.vert.glsl)
 // The fragment shader writes location 0; the render target is VK_FORMAT_R32G32B32A32_SFLOAT, no blending.
 //
@@ -30,6 +32,7 @@ struct RenderRequest {
     int width = 0, height = 0;
     std::array<float, 4> uvRect{0, 0, 1, 1};           // u0, v0, u1, v1
     int timedFrames = 0;                                // > 0: draw this many extra frames, timing each one
+    bool combinedSamplers = false;                      // textures as COMBINED_IMAGE_SAMPLER (see above)
 };
 
 struct RenderResult {

@@ -1,0 +1,131 @@
+#include "vk/render.h"
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "common/templates.h"
+#include "spirv/spirv.h"
+
+namespace hexc::vk {
+namespace {
+
+std::vector<uint32_t> spirvOrThrow(SpirvResult r) {
+    if (r.words.empty()) throw CompileError{std::move(r.diagnostics)};
+    return r.words;
+}
+
+const std::vector<uint32_t>& vertexShader() {
+    static const std::vector<uint32_t> words =
+        spirvOrThrow(compileToSpirv(embeddedText("fullscreen.vert.glsl"), ShaderStage::Vertex, "templates/fullscreen.vert.glsl"));
+    return words;
+}
+
+const std::string& outputFile(const CompileResult& r, const std::string& suffix) {
+    for (const OutputFile& f : r.files)
+        if (f.name.ends_with(suffix)) return f.contents;
+    throw std::logic_error("compile produced no " + suffix);
+}
+
+}  // namespace
+
+const Slot& slotForOutput(const Material& material, RenderOutput output, const std::string& slotName) {
+    auto fits = [&](const Slot& s) {
+        switch (output) {
+        case RenderOutput::Albedo: return s.kind != SlotKind::Normal;
+        case RenderOutput::Normal:
+        case RenderOutput::Derivative: return s.kind == SlotKind::Normal;
+        default: return true;
+        }
+    };
+    const char* what = output == RenderOutput::Albedo ? "a color or scalar slot" : output == RenderOutput::Weights ? "a slot" : "a normal slot";
+    if (!slotName.empty()) {
+        for (const Slot& s : material.slots) {
+            if (s.name != slotName) continue;
+            if (!fits(s)) throw std::invalid_argument("slot `" + slotName + "` is of kind " + std::string(toString(s.kind)) + "; this output needs " + what);
+            return s;
+        }
+        throw std::invalid_argument("material `" + material.name + "` has no slot `" + slotName + "`");
+    }
+    std::string preferred = output == RenderOutput::Albedo ? "albedo" : output == RenderOutput::Weights ? "" : "normal";
+    for (const Slot& s : material.slots)
+        if (s.name == preferred && fits(s)) return s;
+    for (const Slot& s : material.slots)
+        if (fits(s)) return s;
+    throw std::invalid_argument("material `" + material.name + "` has no " + what);
+}
+
+Material renderedMaterial(const Material& material, RenderOutput output, const std::string& slotName) {
+    if (output == RenderOutput::Shaded) return material;
+    Material m = material;
+    m.slots = {slotForOutput(material, output, slotName)};
+    m.templateName = output == RenderOutput::Weights ? "weights" : "value";
+    return m;
+}
+
+std::vector<uint8_t> packParameters(const nlohmann::json& manifest) {
+    const auto& params = manifest["parameters"];
+    std::vector<uint8_t> bytes(params["size"].get<size_t>(), 0);
+    for (const auto& m : params["members"]) {
+        std::vector<float> values;
+        if (m["value"].is_array())
+            for (const auto& v : m["value"]) values.push_back(v.get<float>());
+        else
+            values.push_back(m["value"].get<float>());
+        std::memcpy(bytes.data() + m["offset"].get<size_t>(), values.data(), values.size() * sizeof(float));
+    }
+    return bytes;
+}
+
+Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const RenderView& view,
+             ExecutedTarget target, int timedFrames, std::vector<double>* frameMs) {
+    Material m = renderedMaterial(material, output, slotName);
+    CompileOptions options;
+    options.targets = {Target::Spirv, target == ExecutedTarget::Hlsl ? Target::Hlsl : Target::Glsl};
+    CompileResult compiled = compile(m, options);
+    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
+    nlohmann::json manifest = nlohmann::json::parse(outputFile(compiled, ".manifest.json"));
+
+    RenderRequest request;
+    request.vertexSpirv = vertexShader();
+    switch (target) {
+    case ExecutedTarget::Spirv: request.fragmentSpirv = compiled.spirv; break;
+    case ExecutedTarget::Hlsl:
+        request.fragmentSpirv = spirvOrThrow(optimizeSpirv(spirvOrThrow(compileToSpirv(
+            outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl", SourceLanguage::Hlsl, manifest["targets"]["hlsl"]["entry_point"]))));
+        break;
+    case ExecutedTarget::Glsl:
+        request.fragmentSpirv = spirvOrThrow(optimizeSpirv(
+            spirvOrThrow(compileToSpirv(outputFile(compiled, ".glsl"), ShaderStage::Fragment, m.name + ".frag.glsl", SourceLanguage::OpenGlGlsl))));
+        request.combinedSamplers = true;
+        break;
+    }
+    request.uniformData = packParameters(manifest);
+    // Textures in manifest order, which is binding order.
+    std::vector<Texture> textures;
+    for (const auto& s : manifest["slots"]) {
+        for (const Slot& slot : m.slots)
+            if (slot.name == s["name"]) textures.push_back(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
+    }
+    for (const Texture& t : textures) request.textures.push_back(&t);
+    request.width = view.width;
+    request.height = view.height;
+    request.uvRect = {float(view.uvRect[0]), float(view.uvRect[1]), float(view.uvRect[2]), float(view.uvRect[3])};
+    request.timedFrames = timedFrames;
+    RenderResult result = runner.render(request);
+    if (frameMs) *frameMs = result.frameMs;
+
+    if (output == RenderOutput::Normal) {
+        for (size_t i = 0; i < result.image.rgba.size(); i += 4) {
+            float* p = &result.image.rgba[i];
+            float len = std::sqrt(p[0] * p[0] + p[1] * p[1] + 1.0f);
+            p[0] = -p[0] / len * 0.5f + 0.5f;
+            p[1] = -p[1] / len * 0.5f + 0.5f;
+            p[2] = 1.0f / len * 0.5f + 0.5f;
+            p[3] = 1.0f;
+        }
+    }
+    return std::move(result.image);
+}
+
+}  // namespace hexc::vk

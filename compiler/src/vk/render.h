@@ -1,0 +1,50 @@
+#pragma once
+// Renders a material on the Vulkan runner: what `hexc render`, `hexc preview`, the execution tests and
+// the benchmark share. A render shows one output of a material over a UV rectangle (see runner.h and
+// templates/fullscreen.vert.glsl for the pixel-to-UV mapping).
+#include <array>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hexc/compiler.h"
+#include "hexc/image.h"
+#include "vk/runner.h"
+
+namespace hexc::vk {
+
+enum class RenderOutput {
+    Albedo,      // a colour (or scalar) slot's blended value
+    Normal,      // a normal slot's tangent-space normal, encoded n * 0.5 + 0.5 like a normal map
+    Derivative,  // a normal slot's blended height derivative (dH/du, dH/dv, 0, 1)
+    Weights,     // a slot's hex-tile weights (Listing 7), (w1, w2, w3, 1)
+    Shaded,      // the material's own template
+};
+
+// Which emitted source is executed: the SPIR-V, or the HLSL / GLSL re-compiled to SPIR-V by glslang.
+enum class ExecutedTarget { Spirv, Hlsl, Glsl };
+
+struct RenderView {
+    int width = 0, height = 0;
+    std::array<double, 4> uvRect{0, 0, 1, 1};  // u0, v0, u1, v1
+};
+
+// The slot an output shows: `slotName` if given, else the slot named "albedo" (Albedo) or "normal"
+// (Normal, Derivative), else the first slot of a fitting kind; Weights: the first slot.
+// Throws std::invalid_argument naming what is missing.
+const Slot& slotForOutput(const Material& material, RenderOutput output, const std::string& slotName);
+
+// The material a render compiles: for a slot output, only that slot under the `value` or `weights`
+// template; for Shaded, the material itself.
+Material renderedMaterial(const Material& material, RenderOutput output, const std::string& slotName);
+
+// Compiles (throws CompileError on failure), uploads and draws. `frameMs`, if given, receives one GPU
+// time per timed frame (`timedFrames` after one untimed warm-up frame).
+Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const RenderView& view,
+             ExecutedTarget target = ExecutedTarget::Spirv, int timedFrames = 0, std::vector<double>* frameMs = nullptr);
+
+// The parameter block as the manifest lays it out, filled with the material's values (float32).
+std::vector<uint8_t> packParameters(const nlohmann::json& manifest);
+
+}  // namespace hexc::vk
