@@ -5,12 +5,15 @@
 
 #include "cli/options.h"
 #include "cli/outputs.h"
+#include "cli/render.h"
 #include "hexc/compiler.h"
 
 using namespace hexc;
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
+    if (!args.empty() && args[0] == "render") return cli::renderCommand({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "preview") return cli::previewCommand({args.begin() + 1, args.end()});
     if (args.size() == 1 && (args[0] == "-h" || args[0] == "--help")) return std::cout << cli::kHelp, cli::kOk;
     if (args.size() == 1 && args[0] == "--version") return std::cout << "hexc " << version() << "\n", cli::kOk;
     cli::Arguments a;

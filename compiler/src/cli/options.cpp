@@ -9,6 +9,8 @@ const char* const kHelp = R"(hexc - compile hex-tiled materials to SPIR-V, HLSL,
 
 Usage:
   hexc MATERIAL.json [MORE.json ...] -o DIR [options]
+  hexc render MATERIAL.json -o IMAGE.{pfm,png} [options]   (hexc render --help)
+  hexc preview MATERIAL.json -o PREVIEW.png [--cell N]     (hexc preview --help)
   hexc --help | --version
 
 Reads each material (JSON, see docs/material-format.md), injects hex-tiling into every texture slot of

@@ -1,0 +1,100 @@
+#pragma once
+// The CPU oracle: what one texture slot of a material should return at a pixel, computed in double precision
+// from the paper's equations (Mikkelsen 2022, "Practical Real-Time Hex-Tiling", Eq. 1-5 and Listings 1-10),
+// not from the project's GLSL, so that each can catch the other's mistakes. The execution tests and the bench
+// compare lavapipe's renders against render() below.
+//
+// Everything is double except the tile offset hash of Listing 2, fract(sin(M v) * 43758.5453). That hash is
+// chaotic: sin() of an argument in the thousands, scaled by 43758, turns one float32 rounding into a different
+// offset, so it is defined by its float32 evaluation and tileOffset() evaluates it the way a GPU does.
+//
+// Texture sampling follows the Vulkan specification for a sampler with linear min/mag/mip filters, REPEAT
+// addressing, no anisotropy, minLod 0 and no lod clamp below the last level:
+//   - 8-bit sRGB texels are decoded to linear before filtering; mip level k+1 is the 2x2 box average of level k;
+//   - texel centres at (i + 0.5) / size, bilinear within a level;
+//   - lambda = log2(max(|(ds/dx, dt/dx) * size|, |(ds/dy, dt/dy) * size|)), Euclidean lengths, clamped to
+//     [0, levels - 1]; lambda <= 0 samples level 0, otherwise levels floor(lambda) and the next are lerped.
+// Where lavapipe may differ (tests choose views and tolerances with this in mind):
+//   - it computes lambda with a piecewise-linear log2 (exact only where rho is a power of two);
+//   - it stores each 8-bit mip level rounded to 8 bits (sRGB levels re-encoded), and builds levels of odd size
+//     with a linear blit rather than a box average;
+//   - sin() in the hash is its own approximation, not the C library's.
+#include <array>
+
+#include "hexc/image.h"
+#include "hexc/material.h"
+
+namespace hexc::reference {
+
+using Vec2 = std::array<double, 2>;
+using Rgba = std::array<double, 4>;
+using TileId = std::array<int, 2>;  // integer lattice coordinates of a hex tile centre (Listing 1's vertex)
+
+// A texture as a Vulkan sampler sees it: linear texels in double, with the full mip chain.
+class SampledTexture {
+public:
+    explicit SampledTexture(const Texture& texture);
+
+    // Filtered RGBA at normalised coordinates (s, t) (t = 0 is the top row) for the given screen-space gradients
+    // of (s, t), like textureGrad().
+    Rgba sample(double s, double t, double dsdx, double dtdx, double dsdy, double dtdy) const;
+
+    int levels() const { return int(levels_.size()); }
+    int width(int level) const { return levels_[size_t(level)].width; }
+    int height(int level) const { return levels_[size_t(level)].height; }
+    // Texel (x, y) of a level, 0 <= x < width(level), 0 <= y < height(level).
+    const Rgba& texel(int level, int x, int y) const;
+
+private:
+    struct Level {
+        int width = 0, height = 0;
+        std::vector<Rgba> texels;  // row-major, row 0 at the top
+    };
+    static Rgba bilinear(const Level& level, double s, double t);
+
+    std::vector<Level> levels_;
+};
+
+// Listing 1: the lattice triangle holding st, its three tile ids and st's barycentric weights in it.
+struct Triangle {
+    std::array<TileId, 3> id;
+    std::array<double, 3> weight;  // non-negative, sum to 1; weight[i] belongs to id[i]
+};
+Triangle triangleGrid(Vec2 st);
+
+// Listing 2: the tile's random offset in st, in [0, 1)^2, evaluated in float32 (see the top of this file).
+Vec2 tileOffset(TileId id);
+
+// Eq. 5 (Perlin and Hoffert's gain) with k = log(1 - r) / log(0.5); the identity when r = 0.5.
+double gain(double x, double r);
+
+// Eq. 1, then Eq. 5 and renormalisation when falloff != 0.5: the blend weights of the three tiles, from their
+// barycentric weights and the metric delta(x_i) of their samples. hex supplies exponent (gamma) and falloff (r).
+std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, const std::array<double, 3>& delta,
+                                   const HexTiling& hex);
+
+struct SlotResult {
+    Rgba value;                    // colour/scalar slots: blended RGBA; normal slots: (dH/ds, dH/dt, 0, 1)
+    std::array<double, 3> weights; // blend weights shown as Listing 7 colours; (1, 0, 0) without hex-tiling
+};
+
+// The slot at uv with screen-space uv gradients: st = uv * slot.hex.tiling, then hex-tiling (Listings 3 and 4) or,
+// when slot.hex.enabled is false, one sample at st. Colour slots weigh tiles by luminance (Eq. 4), scalar slots by
+// their channel's value, normal slots by slope (Eq. 3) of the derivative (Listing 9, flipped with slot.flipY).
+// The texture's own srgb flag decides decoding; the slot's colour space is the caller's to apply when loading.
+SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
+                    double dudy, double dvdy);
+
+// A view of width x height pixels over uvRect = (u0, v0, u1, v1): pixel (i, j) (row 0 at the top) is centred on
+// uv = (u0 + (i + 0.5) / width * (u1 - u0), v0 + (j + 0.5) / height * (v1 - v0)), with du/dx = (u1 - u0) / width,
+// dv/dy = (v1 - v0) / height and no cross terms.
+struct View {
+    int width = 0, height = 0;
+    std::array<double, 4> uvRect{0, 0, 1, 1};
+};
+
+enum class Output { Value, Weights };  // Weights: (w.x, w.y, w.z, 1) per pixel
+
+Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output);
+
+}  // namespace hexc::reference
