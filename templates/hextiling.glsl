@@ -21,13 +21,10 @@ struct HexcTiles {
     vec2 rot1, rot2, rot3;       // (cos, sin) of each tile's rotation angle
 };
 
-// Listing 1: snap st to the triangle lattice; barycentric weights and the three tile centres.
-void hexcTriangleGrid(vec2 st, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2 v3) {
-    st *= 2.0 * sqrt(3.0);
-    // Skew into the simplex grid: rows (1, -1/sqrt(3)) and (0, 2/sqrt(3)).
-    vec2 skewed = vec2(st.x - 0.57735027 * st.y, 1.15470054 * st.y);
+// Listing 1, from skewed lattice coordinates: barycentric weights and the three tile ids.
+void hexcTriangle(vec2 skewed, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2 v3) {
     ivec2 baseId = ivec2(floor(skewed));
-    vec3 temp = vec3(fract(skewed), 0.0);
+    vec3 temp = vec3(skewed - floor(skewed), 0.0);
     temp.z = 1.0 - temp.x - temp.y;
     float s = step(0.0, -temp.z);
     float s2 = 2.0 * s - 1.0;
@@ -36,6 +33,12 @@ void hexcTriangleGrid(vec2 st, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2
     v1 = baseId + ivec2(si, si);
     v2 = baseId + ivec2(si, 1 - si);
     v3 = baseId + ivec2(1 - si, si);
+}
+
+// Listing 1: st *= 2 sqrt(3), then skew into the simplex grid with rows (1, -1/sqrt(3)) and (0, 2/sqrt(3)).
+void hexcTriangleGrid(vec2 st, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2 v3) {
+    st *= 2.0 * sqrt(3.0);
+    hexcTriangle(vec2(st.x - 0.57735027 * st.y, 1.15470054 * st.y), w, v1, v2, v3);
 }
 
 // Listing 2: the paper's per-tile offset, fract(sin(M p) * 43758.5453) with M rows (127.1, 311.7), (269.5, 183.3).
@@ -70,9 +73,9 @@ vec2 hexcRotateFromTile(vec2 d, vec2 cs) {
     return vec2(cs.x * d.x - cs.y * d.y, cs.y * d.x + cs.x * d.y);
 }
 
-// Listings 3-4, shared part: st_i = (st - c_i) R_i + c_i + hash(v_i), gradients rotated with the tile.
-// Derivatives of the continuous st are taken once, before the lattice.
-HexcTiles hexcTiles(vec2 st, float rotStrength) {
+// Listings 3-4, shared part, `paper` mode: st_i = (st - c_i) R_i + c_i + hash(v_i), gradients rotated
+// with the tile. Derivatives of the continuous st are taken once, before the lattice.
+HexcTiles hexcTilesPaper(vec2 st, float rotStrength) {
     HexcTiles t;
     vec2 dSTdx = dFdx(st), dSTdy = dFdy(st);
     hexcTriangleGrid(st, t.w, t.v1, t.v2, t.v3);
@@ -83,6 +86,68 @@ HexcTiles hexcTiles(vec2 st, float rotStrength) {
     t.st1 = hexcRotateToTile(st - c1, t.rot1) + c1 + hexcHashPaper(t.v1);
     t.st2 = hexcRotateToTile(st - c2, t.rot2) + c2 + hexcHashPaper(t.v2);
     t.st3 = hexcRotateToTile(st - c3, t.rot3) + c3 + hexcHashPaper(t.v3);
+    t.dx1 = hexcRotateToTile(dSTdx, t.rot1); t.dy1 = hexcRotateToTile(dSTdy, t.rot1);
+    t.dx2 = hexcRotateToTile(dSTdx, t.rot2); t.dy2 = hexcRotateToTile(dSTdy, t.rot2);
+    t.dx3 = hexcRotateToTile(dSTdx, t.rot3); t.dy3 = hexcRotateToTile(dSTdy, t.rot3);
+    return t;
+}
+
+// `stable` mode (docs/material-format.md#mode). Three changes to the paper, none visible, that make the
+// result exact and identical on every target and at any distance from the origin:
+// 1. The lattice scale 2 sqrt(3) becomes 97/28 (relative difference 4.4e-6). Then the lattice repeats
+//    exactly every 28 st units in u (97 ids) and every 1 in v (ids (-2, 4)), so st is reduced to
+//    [0, 28) x [0, 1) by exact subtractions before any product, and the ids come back as exact integers.
+// 2. Offset and rotation come from pcg3d (Jarzynski and Olano 2020) of the integer tile id: 32-bit
+//    integer arithmetic, the same bits everywhere, where the paper's fract(sin(x) * 43758.5453) is not.
+// 3. The sample point is taken relative to the tile centre, st_i = (st - c_i) R_i + offset_i, so the
+//    texture coordinate stays below 2 in magnitude whatever st is.
+const float hexcStableScale = 97.0 / 28.0;
+
+uvec3 hexcPcg3d(uvec3 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v ^= v >> 16u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    return v;
+}
+
+// A tile's offset in [0, 1)^2 and rotation (cos, sin) of an angle in [-pi, pi) * rotStrength, from
+// the top 24 bits of each hash word (exact in float32).
+void hexcStableTile(ivec2 id, float rotStrength, out vec2 offset, out vec2 rot) {
+    uvec3 h = hexcPcg3d(uvec3(uvec2(id), 0u)) >> 8u;
+    offset = vec2(h.xy) * (1.0 / 16777216.0);
+    float angle = (float(h.z) * (2.0 / 16777216.0) - 1.0) * hexcPi * rotStrength;
+    rot = vec2(cos(angle), sin(angle));
+}
+
+// Tile centre of local (reduced) ids: the inverse of skewed = (s x - 2 y, 4 y).
+vec2 hexcStableCentre(ivec2 local) {
+    return vec2((float(local.x) + 0.5 * float(local.y)) / hexcStableScale, 0.25 * float(local.y));
+}
+
+HexcTiles hexcTilesStable(vec2 st, float rotStrength) {
+    HexcTiles t;
+    vec2 dSTdx = dFdx(st), dSTdy = dFdy(st);
+    // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small.
+    float kx = floor(st.x / 28.0), ky = floor(st.y);
+    vec2 r = vec2(st.x - 28.0 * kx, st.y - ky);
+    ivec2 l1, l2, l3;
+    hexcTriangle(vec2(hexcStableScale * r.x - 2.0 * r.y, 4.0 * r.y), t.w, l1, l2, l3);
+    ivec2 shift = ivec2(97 * int(kx) - 2 * int(ky), 4 * int(ky));
+    t.v1 = l1 + shift;
+    t.v2 = l2 + shift;
+    t.v3 = l3 + shift;
+    vec2 o1, o2, o3;
+    hexcStableTile(t.v1, rotStrength, o1, t.rot1);
+    hexcStableTile(t.v2, rotStrength, o2, t.rot2);
+    hexcStableTile(t.v3, rotStrength, o3, t.rot3);
+    t.st1 = hexcRotateToTile(r - hexcStableCentre(l1), t.rot1) + o1;
+    t.st2 = hexcRotateToTile(r - hexcStableCentre(l2), t.rot2) + o2;
+    t.st3 = hexcRotateToTile(r - hexcStableCentre(l3), t.rot3) + o3;
     t.dx1 = hexcRotateToTile(dSTdx, t.rot1); t.dy1 = hexcRotateToTile(dSTdy, t.rot1);
     t.dx2 = hexcRotateToTile(dSTdx, t.rot2); t.dy2 = hexcRotateToTile(dSTdy, t.rot2);
     t.dx3 = hexcRotateToTile(dSTdx, t.rot3); t.dy3 = hexcRotateToTile(dSTdy, t.rot3);
@@ -127,9 +192,8 @@ vec3 hexcHexWeights(vec3 W, ivec2 v1, ivec2 v3) {
 
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
 // a unit vector picking the channel for scalar maps.
-vec4 hexcColor(texture2D tex, sampler samp, vec2 st, float rotStrength, float falloff, float falloffContrast,
-               float exponent, vec4 luma, out vec3 weights) {
-    HexcTiles t = hexcTiles(st, rotStrength);
+vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, vec4 luma,
+               out vec3 weights) {
     vec4 c1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1);
     vec4 c2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2);
     vec4 c3 = textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3);
@@ -155,9 +219,8 @@ vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, boo
 
 // Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
-vec2 hexcDeriv(texture2D tex, sampler samp, vec2 st, float rotStrength, float falloff, float falloffContrast,
-               float exponent, bool flipY, out vec3 weights) {
-    HexcTiles t = hexcTiles(st, rotStrength);
+vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, bool flipY,
+               out vec3 weights) {
     vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1);
     vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2);
     vec2 d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3);

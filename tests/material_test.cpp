@@ -36,7 +36,7 @@ const InvalidFile kInvalidFiles[] = {
     {"material_name_invalid",
      "3:11: error: /name: expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"rock stone\""},
     {"missing_name", "1:1: error: missing required key `name` (a string)"},
-    {"mode_unknown", "6:13: error: /hextiling/mode: expected one of `paper`, got \"fast\""},
+    {"mode_unknown", "6:13: error: /hextiling/mode: expected one of `stable` or `paper`, got \"fast\""},
     {"rotation_negative", "6:17: error: /hextiling/rotation: expected a number >= 0, got -1"},
     {"rotation_not_finite", "6:17: error: number 1e999 is out of range (expected a finite number)"},
     {"scalar_channel_invalid", "10:18: error: /slots/0/channel: expected one of `r`, `g`, `b` or `a`, got \"rgb\""},

@@ -13,8 +13,10 @@ namespace hexc {
 
 enum class SlotKind { Color, Scalar, Normal };
 enum class ColorSpace { Srgb, Linear };
-// How tile offsets and rotations are derived from the lattice ids. `Paper` is exactly Listings 2 and 6.
-enum class HashMode { Paper };
+// How tile offsets and rotations are derived from the lattice ids. `Stable` (the default): an integer
+// hash of exactly reduced lattice ids, identical on every target and precise far from the origin
+// (templates/hextiling.glsl, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
+enum class HashMode { Stable, Paper };
 
 // Hex-tiling settings. Names follow MaterialX <hextiledimage> where the meaning is the same;
 // the paper's symbol is given for each.
@@ -25,7 +27,7 @@ struct HexTiling {
     double falloff = 0.5;                 // r of Eq. 5 / Listing 8 gain; 0.5 = off (MaterialX `falloff`)
     double falloffcontrast = 0.6;         // beta of Eq. 3-4 (MaterialX `falloffcontrast`)
     double exponent = 7.0;                // gamma, exponent on the barycentric weights (Eq. 1)
-    HashMode mode = HashMode::Paper;
+    HashMode mode = HashMode::Stable;
 };
 
 struct Slot {

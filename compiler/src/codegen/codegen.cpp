@@ -49,6 +49,7 @@ std::string injectedCode(const ShaderPlan& plan) {
             {"$falloff", param("falloff")},
             {"$falloffcontrast", param("falloffcontrast")},
             {"$exponent", param("exponent")},
+            {"$tiles", s.hex.mode == HashMode::Paper ? "hexcTilesPaper" : "hexcTilesStable"},
             // Scalar maps weight tiles by their own channel; colour by luminance (Eq. 4).
             {"$luma", s.kind == SlotKind::Scalar ? kChannelVectors[s.channel] : "hexcLuma"},
             {"$channel", kChannels[s.channel]},

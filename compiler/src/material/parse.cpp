@@ -25,7 +25,7 @@ const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "fal
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
 const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
-const std::vector<std::string> kModes = {"paper"};
+const std::vector<std::string> kModes = {"stable", "paper"};
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
 constexpr size_t kMaxSlots = 16;
 

@@ -14,12 +14,18 @@
 //   - texel centres at (i + 0.5) / size, bilinear within a level;
 //   - lambda = log2(max(|(ds/dx, dt/dx) * size|, |(ds/dy, dt/dy) * size|)), Euclidean lengths, clamped to
 //     [0, levels - 1]; lambda <= 0 samples level 0, otherwise levels floor(lambda) and the next are lerped.
-// Where lavapipe may differ (tests choose views and tolerances with this in mind):
-//   - it computes lambda with a piecewise-linear log2 (exact only where rho is a power of two);
-//   - it stores each 8-bit mip level rounded to 8 bits (sRGB levels re-encoded), and builds levels of odd size
-//     with a linear blit rather than a box average;
-//   - sin() in the hash is its own approximation, not the C library's.
+// Where lavapipe (Mesa llvmpipe's sampler, default settings) may differ; choose views and tolerances with this in
+// mind:
+//   - lambda = 0.5 * log2(rho^2) with a piecewise-linear log2: exact when rho^2 is a power of two, otherwise up
+//     to 0.043 lower, which moves the trilinear blend;
+//   - one lambda per 2x2 pixel quad, from its first pixel (GALLIVM_PERF=no_quad_lod gives one per pixel). Rotating
+//     gradients leaves rho unchanged on square textures, so this shows only where gradients vary within a quad;
+//   - the runner stores each 8-bit mip level rounded to 8 bits (sRGB levels re-encoded), and builds levels of odd
+//     size with a linear blit rather than a box average;
+//   - sin() in the hash is the GPU's own approximation, not the C library's: an error of 1e-7 in sin moves the
+//     tile offset by about 0.004 in st.
 #include <array>
+#include <vector>
 
 #include "hexc/image.h"
 #include "hexc/material.h"
@@ -61,6 +67,8 @@ struct Triangle {
     std::array<double, 3> weight;  // non-negative, sum to 1; weight[i] belongs to id[i]
 };
 Triangle triangleGrid(Vec2 st);
+// The same from lattice ("skewed") coordinates, where each unit square holds two triangles.
+Triangle triangleInSkewed(double kx, double ky);
 
 // Listing 2: the tile's random offset in st, in [0, 1)^2, evaluated in float32 (see the top of this file).
 Vec2 tileOffset(TileId id);
@@ -82,6 +90,7 @@ struct SlotResult {
 // when slot.hex.enabled is false, one sample at st. Colour slots weigh tiles by luminance (Eq. 4), scalar slots by
 // their channel's value, normal slots by slope (Eq. 3) of the derivative (Listing 9, flipped with slot.flipY).
 // The texture's own srgb flag decides decoding; the slot's colour space is the caller's to apply when loading.
+// HashMode::Paper follows Listings 1, 2, 5 and 6; HashMode::Stable its specification in docs/material-format.md.
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
                     double dudy, double dvdy);
 
