@@ -1,5 +1,6 @@
 #pragma once
 // Images in and out of hexc: textures as the GPU receives them, float renders as they come back.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
@@ -22,6 +23,14 @@ struct Image {
     std::vector<float> rgba;  // width*height*4
     float* at(int x, int y) { return &rgba[(size_t(y) * width + x) * 4]; }
     const float* at(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+};
+
+// A render of width x height pixels over uvRect = (u0, v0, u1, v1): pixel (i, j), row 0 at the top, is
+// centred on uv = (u0 + (i + 0.5) / width * (u1 - u0), v0 + (j + 0.5) / height * (v1 - v0)), with
+// du/dx = (u1 - u0) / width, dv/dy = (v1 - v0) / height and no cross terms.
+struct View {
+    int width = 0, height = 0;
+    std::array<double, 4> uvRect{0, 0, 1, 1};
 };
 
 // Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...) and PFM. HDR and PFM load as float.

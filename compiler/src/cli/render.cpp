@@ -123,7 +123,7 @@ void drawLabel(Image& image, int x0, int y0, const std::string& text, int scale)
 int renderCommand(const std::vector<std::string>& args) {
     return guarded([&] {
         std::string materialPath, out, slot;
-        vk::RenderView view{512, 512, {0, 0, 1, 1}};
+        View view{512, 512, {0, 0, 1, 1}};
         vk::RenderOutput output = vk::RenderOutput::Shaded;
         vk::ExecutedTarget target = vk::ExecutedTarget::Spirv;
         static const std::map<std::string, vk::RenderOutput> outputs = {
@@ -222,7 +222,7 @@ int previewCommand(const std::vector<std::string>& args) {
         for (size_t i = 3; i < sheet.rgba.size(); i += 4) sheet.rgba[i] = 1.0f;
         for (int r = 0; r < 2; ++r) {
             for (int c = 0; c < 3; ++c) {
-                vk::RenderView view{cell, cell, {0, 0, rows[r].extent, rows[r].extent}};
+                View view{cell, cell, {0, 0, rows[r].extent, rows[r].extent}};
                 Image img = vk::render(*runner, *columns[c].material, columns[c].output, "", view);
                 int y0 = r * (cell + band) + band;
                 for (int y = 0; y < cell; ++y)

@@ -79,25 +79,14 @@ std::array<uint32_t, 3> pcg3d(std::array<uint32_t, 3> v) {
     return v;
 }
 
-struct StableTile {
-    Vec2 offset;
-    double angle;
-};
 
-StableTile stableTile(TileId id, double strength) {
-    const auto h = pcg3d({uint32_t(id[0]), uint32_t(id[1]), 0u});
-    const double scale = 1.0 / 16777216.0;  // the top 24 bits of each word, as fractions in [0, 1)
-    return {{(h[0] >> 8) * scale, (h[1] >> 8) * scale}, ((h[2] >> 8) * 2 * scale - 1) * pi * strength};
-}
-
-Rotation tileRotation(TileId id, double strength) {
+double paperAngle(TileId id, double strength) {
     // In double: an int product could overflow for far-away tiles, and the sum is exact here for |id| < 2^26.
     const double x = id[0], y = id[1];
     double angle = std::abs(x * y) + std::abs(x + y) + pi;  // positive, so fmod needs no correction below 0
     angle = std::fmod(angle, 2 * pi);
     if (angle > pi) angle -= 2 * pi;
-    angle *= strength;
-    return {std::cos(angle), std::sin(angle)};
+    return angle * strength;
 }
 
 // Listing 9: a tangent-space normal texel (in [0, 1], 0.5 = zero) to the height derivative dH/dst. The third
@@ -247,19 +236,19 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
     }
 
     const bool paper = hex.mode == HashMode::Paper;
-    const Triangle tri = paper ? triangleGrid(st) : triangleInSkewed(kStableScale * st[0] - 2 * st[1], 4 * st[1]);
+    const Triangle tri = lattice(st, hex.mode);
     std::array<Rgba, 3> samples;
     std::array<double, 3> delta;
     for (size_t i = 0; i < 3; ++i) {
         const TileId id = tri.id[i];
-        const StableTile stable = stableTile(id, hex.rotation);
-        const Rotation rot = paper ? tileRotation(id, hex.rotation) : Rotation{std::cos(stable.angle), std::sin(stable.angle)};
+        const TileTransform tile = tileTransform(id, hex);
+        const Rotation rot{std::cos(tile.angle), std::sin(tile.angle)};
         const Vec2 c = paper ? tileCentre(id) : stableCentre(id);
         // Rotate st about the tile centre into the tile's frame, then shift by the tile's offset (paper: and
         // back by the centre); the gradients rotate with it (Listings 3 and 4).
         const Vec2 local = rot.toTile({st[0] - c[0], st[1] - c[1]});
-        const Vec2 offset = paper ? Vec2{c[0] + tileOffset(id)[0], c[1] + tileOffset(id)[1]} : stable.offset;
-        const Vec2 p{local[0] + offset[0], local[1] + offset[1]};
+        const Vec2 p = paper ? Vec2{local[0] + c[0] + tile.offset[0], local[1] + c[1] + tile.offset[1]}
+                             : Vec2{local[0] + tile.offset[0], local[1] + tile.offset[1]};
         const Vec2 px = rot.toTile(dx), py = rot.toTile(dy);
         const Rgba x = texture.sample(p[0], p[1], px[0], px[1], py[0], py[1]);
 
@@ -283,6 +272,17 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
     for (size_t c = 0; c < 4; ++c) value[c] = w[0] * samples[0][c] + w[1] * samples[1][c] + w[2] * samples[2][c];
     if (normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
     return {value, hexColours(w, tri)};
+}
+
+Triangle lattice(Vec2 st, HashMode mode) {
+    return mode == HashMode::Paper ? triangleGrid(st) : triangleInSkewed(kStableScale * st[0] - 2 * st[1], 4 * st[1]);
+}
+
+TileTransform tileTransform(TileId id, const HexTiling& hex) {
+    if (hex.mode == HashMode::Paper) return {tileOffset(id), paperAngle(id, hex.rotation)};
+    const auto h = pcg3d({uint32_t(id[0]), uint32_t(id[1]), 0u});
+    const double scale = 1.0 / 16777216.0;  // the top 24 bits of each word, as fractions in [0, 1)
+    return {{(h[0] >> 8) * scale, (h[1] >> 8) * scale}, ((h[2] >> 8) * 2 * scale - 1) * pi * hex.rotation};
 }
 
 Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output) {

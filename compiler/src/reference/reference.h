@@ -73,6 +73,17 @@ Triangle triangleInSkewed(double kx, double ky);
 // Listing 2: the tile's random offset in st, in [0, 1)^2, evaluated in float32 (see the top of this file).
 Vec2 tileOffset(TileId id);
 
+// The lattice triangle of st in the given mode (paper: Listing 1; stable: docs/material-format.md#mode).
+Triangle lattice(Vec2 st, HashMode mode);
+
+// A tile's random transform: the offset added to its sample point and its rotation angle (radians, already
+// scaled by hex.rotation). Paper: Listings 2 and 6; stable: pcg3d of the id.
+struct TileTransform {
+    Vec2 offset;
+    double angle;
+};
+TileTransform tileTransform(TileId id, const HexTiling& hex);
+
 // Eq. 5 (Perlin and Hoffert's gain) with k = log(1 - r) / log(0.5); the identity when r = 0.5.
 double gain(double x, double r);
 
@@ -93,14 +104,6 @@ struct SlotResult {
 // HashMode::Paper follows Listings 1, 2, 5 and 6; HashMode::Stable its specification in docs/material-format.md.
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
                     double dudy, double dvdy);
-
-// A view of width x height pixels over uvRect = (u0, v0, u1, v1): pixel (i, j) (row 0 at the top) is centred on
-// uv = (u0 + (i + 0.5) / width * (u1 - u0), v0 + (j + 0.5) / height * (v1 - v0)), with du/dx = (u1 - u0) / width,
-// dv/dy = (v1 - v0) / height and no cross terms.
-struct View {
-    int width = 0, height = 0;
-    std::array<double, 4> uvRect{0, 0, 1, 1};
-};
 
 enum class Output { Value, Weights };  // Weights: (w.x, w.y, w.z, 1) per pixel
 

@@ -77,7 +77,7 @@ std::vector<uint8_t> packParameters(const nlohmann::json& manifest) {
     return bytes;
 }
 
-Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const RenderView& view,
+Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
              ExecutedTarget target, int timedFrames, std::vector<double>* frameMs) {
     Material m = renderedMaterial(material, output, slotName);
     CompileOptions options;

@@ -25,11 +25,6 @@ enum class RenderOutput {
 // Which emitted source is executed: the SPIR-V, or the HLSL / GLSL re-compiled to SPIR-V by glslang.
 enum class ExecutedTarget { Spirv, Hlsl, Glsl };
 
-struct RenderView {
-    int width = 0, height = 0;
-    std::array<double, 4> uvRect{0, 0, 1, 1};  // u0, v0, u1, v1
-};
-
 // The slot an output shows: `slotName` if given, else the slot named "albedo" (Albedo) or "normal"
 // (Normal, Derivative), else the first slot of a fitting kind; Weights: the first slot.
 // Throws std::invalid_argument naming what is missing.
@@ -41,7 +36,7 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
 
 // Compiles (throws CompileError on failure), uploads and draws. `frameMs`, if given, receives one GPU
 // time per timed frame (`timedFrames` after one untimed warm-up frame).
-Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const RenderView& view,
+Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
              ExecutedTarget target = ExecutedTarget::Spirv, int timedFrames = 0, std::vector<double>* frameMs = nullptr);
 
 // The parameter block as the manifest lays it out, filled with the material's values (float32).
