@@ -120,7 +120,7 @@ TEST(Validation, MissingTexture) {
 TEST(Validation, TextureThatIsNotAnImage) {
     EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "rock.json"}]})"),
               std::vector<std::string>{"materials/t.json:1:67: error: /slots/0/texture: cannot read texture materials/rock.json: "
-                                       "unknown image type (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR or PNM)"});
+                                       "unknown image type (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM or PFM)"});
 }
 
 TEST(Validation, NormalMapNeedsThreeChannels) {

@@ -3,6 +3,8 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace hexc {
@@ -32,6 +34,14 @@ struct View {
     int width = 0, height = 0;
     std::array<double, 4> uvRect{0, 0, 1, 1};
 };
+
+struct TextureInfo {
+    int width = 0, height = 0, channels = 0;
+};
+
+// Size and channel count of an image file without decoding it (the formats loadTexture reads);
+// nullopt with the reason in *error when the file is not a readable image.
+std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::string* error);
 
 // Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...) and PFM. HDR and PFM load as float.
 // Throws std::runtime_error with the file name and stb's reason on failure.

@@ -1,29 +1,18 @@
 #include "cli/outputs.h"
 
 #include <fstream>
-#include <stdexcept>
+
+#include "common/atomic_file.h"
 
 namespace hexc::cli {
 
 void writeAtomically(const std::filesystem::path& dir, const std::string& name, const std::string& contents) {
-    std::filesystem::path target = dir / name;
-    std::filesystem::path temp = dir / ("." + name + ".tmp");
-    {
+    writeFileAtomically(dir / name, [&](const std::filesystem::path& temp) {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
         out.write(contents.data(), std::streamsize(contents.size()));
         out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temp, ignored);
-            throw std::runtime_error("cannot write " + target.string());
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, target, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        throw std::runtime_error("cannot write " + target.string() + ": " + ec.message());
-    }
+        return bool(out);
+    });
 }
 
 }  // namespace hexc::cli

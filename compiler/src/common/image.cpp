@@ -2,6 +2,8 @@
 // image writing (.pfm, .png), always through a temporary file and a rename.
 #include "hexc/image.h"
 
+#include "common/atomic_file.h"
+
 #include <stb_image.h>
 #include <stb_image_write.h>
 
@@ -36,17 +38,30 @@ std::string lowerExtension(const std::filesystem::path& file) {
 
 // Portable Float Map: "PF" (RGB) or "Pf" (grey), width, height, then a scale whose sign gives the byte order
 // (negative: little-endian), each followed by whitespace; then rows of floats from the bottom row up.
-Texture loadPfm(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
+struct PfmHeader {
+    int width = 0, height = 0, channels = 0;
+    bool littleEndian = true;
+};
+
+PfmHeader readPfmHeader(std::ifstream& in, const std::filesystem::path& file) {
     if (!in) fail(file, "cannot open for reading");
     std::string magic;
-    int width = 0, height = 0;
+    PfmHeader h;
     double scale = 0;
-    in >> magic >> width >> height >> scale;
+    in >> magic >> h.width >> h.height >> scale;
     in.get();  // the single whitespace character that ends the header
-    if (!in || (magic != "PF" && magic != "Pf") || width <= 0 || height <= 0 || scale == 0)
+    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || scale == 0)
         fail(file, "not a PFM file (bad header)");
-    const int channels = magic == "PF" ? 3 : 1;
+    h.channels = magic == "PF" ? 3 : 1;
+    h.littleEndian = scale < 0;
+    return h;
+}
+
+Texture loadPfm(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    const PfmHeader header = readPfmHeader(in, file);
+    const int width = header.width, height = header.height;
+    const int channels = header.channels;
     // Check the size before allocating, so a corrupt header cannot ask for gigabytes.
     const uint64_t dataBytes = uint64_t(width) * uint64_t(height) * channels * 4;
     std::error_code ec;
@@ -55,8 +70,7 @@ Texture loadPfm(const std::filesystem::path& file) {
     std::vector<uint32_t> words(size_t(width) * height * channels);
     in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
     if (in.gcount() != std::streamsize(words.size() * 4)) fail(file, "PFM file is truncated");
-    const bool fileLittle = scale < 0;
-    if (fileLittle != (std::endian::native == std::endian::little))
+    if (header.littleEndian != (std::endian::native == std::endian::little))
         for (uint32_t& w : words)
             w = (w >> 24) | ((w >> 8) & 0xff00u) | ((w << 8) & 0xff0000u) | (w << 24);  // std::byteswap is C++23
 
@@ -73,25 +87,6 @@ Texture loadPfm(const std::filesystem::path& file) {
         }
     }
     return t;
-}
-
-// Writes "<file>.tmp" with `write`, then renames it over `file`, so a reader never sees a half-written image.
-template <class WriteFn>
-void writeAtomically(const std::filesystem::path& file, WriteFn write) {
-    std::filesystem::path tmp = file;
-    tmp += ".tmp";
-    if (!write(tmp)) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        fail(file, "cannot write " + tmp.string());
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        fail(file, "cannot rename " + tmp.string() + ": " + ec.message());
-    }
 }
 
 bool writePfm(const Image& image, const std::filesystem::path& file) {
@@ -124,6 +119,26 @@ bool writePng(const Image& image, const std::filesystem::path& file) {
 
 }  // namespace
 
+std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::string* error) {
+    TextureInfo info;
+    if (lowerExtension(file) == ".pfm") {
+        try {
+            std::ifstream in(file, std::ios::binary);
+            PfmHeader h = readPfmHeader(in, file);
+            return TextureInfo{h.width, h.height, h.channels};
+        } catch (const std::runtime_error&) {
+            *error = "not a PFM file (bad header)";
+            return std::nullopt;
+        }
+    }
+    if (!stbi_info(file.string().c_str(), &info.width, &info.height, &info.channels)) {
+        const char* reason = stbi_failure_reason();
+        *error = reason ? reason : "cannot read image";
+        return std::nullopt;
+    }
+    return info;
+}
+
 Texture loadTexture(const std::filesystem::path& file, bool srgb) {
     if (lowerExtension(file) == ".pfm") return loadPfm(file);
 
@@ -150,9 +165,9 @@ void writeImage(const Image& image, const std::filesystem::path& file) {
         fail(file, "image has no pixels or the wrong number of values");
     const std::string ext = lowerExtension(file);
     if (ext == ".pfm")
-        writeAtomically(file, [&](const std::filesystem::path& tmp) { return writePfm(image, tmp); });
+        writeFileAtomically(file, [&](const std::filesystem::path& tmp) { return writePfm(image, tmp); });
     else if (ext == ".png")
-        writeAtomically(file, [&](const std::filesystem::path& tmp) { return writePng(image, tmp); });
+        writeFileAtomically(file, [&](const std::filesystem::path& tmp) { return writePng(image, tmp); });
     else
         fail(file, "unsupported image extension '" + file.extension().string() + "' (supported: .pfm, .png)");
 }

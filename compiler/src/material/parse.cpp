@@ -1,7 +1,5 @@
 // JSON -> Material: parse, validate and fill defaults. Every problem becomes a located diagnostic and
 // validation goes on after an error, so a user sees all problems in one run.
-#include <stb_image.h>
-
 #include <cmath>
 #include <fstream>
 #include <regex>
@@ -11,6 +9,7 @@
 
 #include "common/suggest.h"
 #include "common/templates.h"
+#include "hexc/image.h"
 #include "hexc/material.h"
 #include "material/json_locator.h"
 
@@ -291,14 +290,16 @@ private:
             error(pointer, "texture file not found: " + s.texturePath.string());
             return;
         }
-        int channels = 0;
-        if (!stbi_info(s.texturePath.string().c_str(), &s.width, &s.height, &channels)) {
-            error(pointer, "cannot read texture " + s.texturePath.string() + ": " + stbi_failure_reason() +
-                               " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR or PNM)");
+        std::string why;
+        std::optional<TextureInfo> info = textureInfo(s.texturePath, &why);
+        if (!info) {
+            error(pointer, "cannot read texture " + s.texturePath.string() + ": " + why + " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM or PFM)");
             return;
         }
-        if (s.kind == SlotKind::Normal && channels < 3)
-            error(pointer, "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(channels));
+        s.width = info->width;
+        s.height = info->height;
+        if (s.kind == SlotKind::Normal && info->channels < 3)
+            error(pointer, "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));
     }
 
     JsonLocator locator_;

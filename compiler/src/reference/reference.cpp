@@ -232,7 +232,8 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
 
     if (!hex.enabled) {
         const Rgba x = texture.sample(st[0], st[1], dx[0], dx[1], dy[0], dy[1]);
-        return {normal ? asValue(normalToDerivative(x, slot.flipY)) : x, {1, 0, 0}};
+        const Rgba value = normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
+        return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
     }
 
     const bool paper = hex.mode == HashMode::Paper;
@@ -271,7 +272,7 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
     Rgba value{};
     for (size_t c = 0; c < 4; ++c) value[c] = w[0] * samples[0][c] + w[1] * samples[1][c] + w[2] * samples[2][c];
     if (normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
-    return {value, hexColours(w, tri)};
+    return {value, hexColours(w, tri), samples, w};
 }
 
 Triangle lattice(Vec2 st, HashMode mode) {
@@ -285,21 +286,30 @@ TileTransform tileTransform(TileId id, const HexTiling& hex) {
     return {{(h[0] >> 8) * scale, (h[1] >> 8) * scale}, ((h[2] >> 8) * 2 * scale - 1) * pi * hex.rotation};
 }
 
-Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output) {
-    Image image;
-    image.width = view.width;
-    image.height = view.height;
-    image.rgba.resize(size_t(view.width) * size_t(view.height) * 4);
+std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view) {
+    std::vector<SlotResult> out;
+    out.reserve(size_t(view.width) * size_t(view.height));
     const auto [u0, v0, u1, v1] = view.uvRect;
     const double dudx = (u1 - u0) / view.width, dvdy = (v1 - v0) / view.height;
     for (int j = 0; j < view.height; ++j)
         for (int i = 0; i < view.width; ++i) {
             const double u = u0 + (i + 0.5) / view.width * (u1 - u0), v = v0 + (j + 0.5) / view.height * (v1 - v0);
-            const SlotResult r = evaluate(slot, texture, u, v, dudx, 0, 0, dvdy);
-            const Rgba out = output == Output::Value ? r.value : Rgba{r.weights[0], r.weights[1], r.weights[2], 1};
-            float* px = image.at(i, j);
-            for (size_t c = 0; c < 4; ++c) px[c] = float(out[c]);
+            out.push_back(evaluate(slot, texture, u, v, dudx, 0, 0, dvdy));
         }
+    return out;
+}
+
+Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output) {
+    Image image;
+    image.width = view.width;
+    image.height = view.height;
+    image.rgba.resize(size_t(view.width) * size_t(view.height) * 4);
+    const std::vector<SlotResult> results = evaluateView(slot, texture, view);
+    for (size_t p = 0; p < results.size(); ++p) {
+        const SlotResult& r = results[p];
+        const Rgba out = output == Output::Value ? r.value : Rgba{r.weights[0], r.weights[1], r.weights[2], 1};
+        for (size_t c = 0; c < 4; ++c) image.rgba[p * 4 + c] = float(out[c]);
+    }
     return image;
 }
 

@@ -95,6 +95,8 @@ std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, con
 struct SlotResult {
     Rgba value;                    // colour/scalar slots: blended RGBA; normal slots: (dH/ds, dH/dt, 0, 1)
     std::array<double, 3> weights; // blend weights shown as Listing 7 colours; (1, 0, 0) without hex-tiling
+    std::array<Rgba, 3> samples;   // each tile's sample, in value's form (derivatives rotated back)
+    std::array<double, 3> blend;   // each tile's final weight (Eq. 1 and the gain), in the order of samples
 };
 
 // The slot at uv with screen-space uv gradients: st = uv * slot.hex.tiling, then hex-tiling (Listings 3 and 4) or,
@@ -108,5 +110,8 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
 enum class Output { Value, Weights };  // Weights: (w.x, w.y, w.z, 1) per pixel
 
 Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output);
+
+// Every pixel of a view, row by row (row 0 at the top), with its details.
+std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view);
 
 }  // namespace hexc::reference

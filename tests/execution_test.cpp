@@ -1,0 +1,425 @@
+// Execution tests: what hexc emits, run on Vulkan (Mesa lavapipe), against the fp64 CPU reference.
+// Every comparison prints its measured error beside the tolerance it is held to.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include "hexc/material.h"
+#include "reference/reference.h"
+#include "vk/render.h"
+
+using namespace hexc;
+
+namespace {
+
+// ---- Tolerances -------------------------------------------------------------------------------------------
+// Lavapipe samples an 8-bit texture with 8-bit bilinear weights: against exact bilinear filtering a sample is
+// off by up to half a weight step (0.5/256) per axis on a full-range step, plus the rounding of the result:
+// 1.2/255 in all. Each mip level is made by a blit of the level above and stored in 8 bits, which puts it up
+// to 1/255 off the exact box average per level (an sRGB level is stored encoded, and the sRGB curve is at
+// most 2.4/1.055 = 2.27 times steeper in linear terms). A view whose deepest level is L therefore samples
+// within e_s = (1.2 + L * m) / 255, m = 1 (linear) or 2.27 (sRGB).
+double sampleError(int deepestLevel, bool srgb) { return (1.2 + deepestLevel * (srgb ? 2.27 : 1.0)) / 255.0; }
+
+// The blend R = sum W_j x_j moves with its samples, and also through its weights: W_j is proportional to
+// delta_j * w_j^gamma with delta = (1 - beta) + beta * metric >= 1 - beta, so dR/d(delta_j) = W_j (x_j - R) / delta_j
+// and a metric error e_m moves R by at most e_m * beta / (1 - beta) * sum_j W_j |x_j - R|. The gain of Eq. 5
+// multiplies weight changes by at most its steepest slope, k = log2(1 / (1 - r)) (1 when r <= 0.5). Per pixel,
+// with W_j, x_j and R from the reference:
+//     |R_gpu - R_ref| <= e_x + e_m * k * beta / (1 - beta) * max_c sum_j W_j |x_jc - R_c|.
+double pixelTolerance(const reference::SlotResult& r, double ex, double em, const HexTiling& hex, int channels) {
+    if (!hex.enabled) return ex;
+    double k = std::max(1.0, std::log2(1.0 / (1.0 - hex.falloff)));
+    double spread = 0;
+    for (int c = 0; c < channels; ++c) {
+        double sum = 0;
+        for (size_t j = 0; j < 3; ++j) sum += r.blend[j] * std::fabs(r.samples[j][size_t(c)] - r.value[size_t(c)]);
+        spread = std::max(spread, sum);
+    }
+    return ex + em * k * hex.falloffcontrast / (1.0 - hex.falloffcontrast) * spread;
+}
+
+// ---- Fixtures ---------------------------------------------------------------------------------------------
+vk::Runner* runner(std::string* why) {
+    static std::string reason;
+    static std::unique_ptr<vk::Runner> r = vk::Runner::create(&reason);
+    *why = reason;
+    return r.get();
+}
+
+#define REQUIRE_VULKAN()                                                                        \
+    std::string whyNoVulkan;                                                                    \
+    if (!runner(&whyNoVulkan)) {                                                                \
+        if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << "no Vulkan device: " << whyNoVulkan; \
+        GTEST_SKIP() << "no Vulkan device: " << whyNoVulkan;                                    \
+    }
+
+Material material(const std::string& slotJson) {
+    ParseResult r = parseMaterial(R"({"name": "exec", "slots": [)" + slotJson + "]}", "materials/exec.json");
+    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
+    return *r.material;
+}
+
+struct Errors {
+    double max = 0, mean = 0, overOne255 = 0;
+};
+
+// Per-channel absolute differences over the first `channels` channels of every pixel.
+Errors compare(const Image& a, const Image& b, int channels) {
+    Errors e;
+    size_t n = 0, over = 0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4)
+        for (int c = 0; c < channels; ++c) {
+            double d = std::fabs(double(a.rgba[i + c]) - double(b.rgba[i + c]));
+            if (!(d == d)) d = INFINITY;  // NaN on one side only is an error, not a pass
+            e.max = std::max(e.max, d);
+            e.mean += d;
+            over += d > 1.0 / 255;
+            ++n;
+        }
+    e.mean /= double(n);
+    e.overOne255 = double(over) / double(n);
+    return e;
+}
+
+reference::SampledTexture sampled(const Slot& slot) {
+    return reference::SampledTexture(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
+}
+
+Image cpuRender(const Slot& slot, const View& view, reference::Output output) {
+    return reference::render(slot, sampled(slot), view, output);
+}
+
+// What a texture's own content allows, measured on its level 0 (in linear values, as sampled).
+struct TextureBounds {
+    double spread = 0;     // largest max - min of a channel: bounds |x_j - R| for a blend of samples
+    double step = 0;       // largest difference between horizontally or vertically adjacent texels
+    double minZ = 1;       // normal maps: smallest z = 2 b - 1
+    double maxDeriv = 0;   // normal maps: largest |dH/du| or |dH/dv| of a texel (Listing 9)
+};
+
+TextureBounds bounds(const reference::SampledTexture& t) {
+    TextureBounds b;
+    const int w = t.width(0), h = t.height(0);
+    for (int c = 0; c < 3; ++c) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                double v = t.texel(0, x, y)[size_t(c)];
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+                b.step = std::max({b.step, std::fabs(v - t.texel(0, (x + 1) % w, y)[size_t(c)]), std::fabs(v - t.texel(0, x, (y + 1) % h)[size_t(c)])});
+            }
+        b.spread = std::max(b.spread, hi - lo);
+    }
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const auto& p = t.texel(0, x, y);
+            double z = 2 * p[2] - 1;
+            b.minZ = std::min(b.minZ, z);
+            b.maxDeriv = std::max({b.maxDeriv, std::fabs(2 * p[0] - 1) / z, std::fabs(2 * p[1] - 1) / z});
+        }
+    return b;
+}
+
+// The views: magnified reads mip level 0 only; minified reads exactly level 2 (4 texels per pixel, a power of
+// two, so lavapipe's piecewise-linear log2 is exact and no level blend is involved).
+// Textures are 256^2 and tiling 4: one uv unit is 1024 texels.
+const View kMagnified{96, 96, {0.3, 0.45, 0.3 + 96.0 / 1024 / 2, 0.45 + 96.0 / 1024 / 2}};  // 0.5 texel per pixel
+const View kMinified{96, 96, {0.3, 0.45, 0.3 + 96.0 * 4 / 1024, 0.45 + 96.0 * 4 / 1024}};  // 4 texels per pixel
+
+struct Case {
+    const char* name;
+    const char* slot;  // slot JSON
+    bool minified;
+};
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+// Colour and scalar slots. Colour spread: the largest difference between two texels of a channel bounds
+// |x_j - R|; 1 is the safe bound for 8-bit data.
+const Case kColorCases[] = {
+    {"color_rotation_on", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4}})", false},
+    {"color_rotation_off", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotation": 0}})", false},
+    {"color_gain_07", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", false},
+    {"color_gain_09", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.9}})", false},
+    {"color_beta_0", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})", false},
+    {"color_beta_03_gamma_3", R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0.3, "exponent": 3}})", false},
+    {"color_gamma_1", R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 1}})", false},
+    {"color_gamma_20", R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 20}})", false},
+    {"color_linear_minified", R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", true},
+    {"color_srgb_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", true},
+    {"color_paper_mode_near_origin", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
+    {"color_plain_tiling", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "enabled": false}})", true},
+    {"scalar_roughness", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})", false},
+    {"scalar_roughness_minified", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})", true},
+};
+
+struct Check {
+    Errors errors;
+    double worstRatio = 0;     // max over pixels of error / tolerance: <= 1 passes
+    double toleranceAtMax = 0; // the tolerance of the pixel with the largest error
+    double maxTolerance = 0;
+};
+
+// Runs a one-slot material on the GPU and compares `channels` channels of every pixel with the reference,
+// each pixel against its own tolerance (pixelTolerance).
+Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, vk::ExecutedTarget target, double ex,
+                            double em, int channels) {
+    std::string why;
+    const Slot& slot = m.slots[0];
+    Image gpu = vk::render(*runner(&why), m, output, "", view, target);
+    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view);
+    Check check;
+    Image cpu = gpu;
+    for (size_t p = 0; p < ref.size(); ++p) {
+        // Scalar slots show (s, s, s, 1) of the channel they read.
+        for (int c = 0; c < channels; ++c)
+            cpu.rgba[p * 4 + size_t(c)] = float(ref[p].value[slot.kind == SlotKind::Scalar ? size_t(slot.channel) : size_t(c)]);
+        double tolerance = pixelTolerance(ref[p], ex, em, slot.hex, slot.kind == SlotKind::Scalar ? 1 : channels);
+        check.maxTolerance = std::max(check.maxTolerance, tolerance);
+        for (int c = 0; c < channels; ++c) {
+            double e = std::fabs(double(gpu.rgba[p * 4 + size_t(c)]) - double(cpu.rgba[p * 4 + size_t(c)]));
+            if (!(e == e)) e = INFINITY;
+            if (e > check.errors.max) check.toleranceAtMax = tolerance;
+            check.worstRatio = std::max(check.worstRatio, e / tolerance);
+        }
+    }
+    check.errors = compare(gpu, cpu, channels);
+    return check;
+}
+
+void report(const char* name, const Check& c) {
+    std::printf("  %-30s max %.5f (%.2f/255)  mean %.6f  >1/255 %.4f  tolerance there %.5f  worst error/tolerance %.2f\n", name,
+                c.errors.max, c.errors.max * 255, c.errors.mean, c.errors.overOne255, c.toleranceAtMax, c.worstRatio);
+}
+
+class ColorPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
+
+TEST_P(ColorPath, MatchesReference) {
+    REQUIRE_VULKAN();
+    const auto& [c, target] = GetParam();
+    Material m = material(c.slot);
+    const Slot& slot = m.slots[0];
+    View view = c.minified ? kMinified : kMagnified;
+    // The paper's hash is fract(sin(x) * 43758.5453): lavapipe's sin and the C library's disagree in the last
+    // bits, which the factor 43758 turns into different tiles away from the origin (see docs/precision.md).
+    // Near the origin, where the ids are 0 and 1, both agree.
+    if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};
+    double es = sampleError(c.minified ? 2 : 0, slot.colorSpace == ColorSpace::Srgb);
+    // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
+    Check check = checkAgainstReference(m, vk::RenderOutput::Albedo, view, target, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
+    report(c.name, check);
+    EXPECT_LE(check.worstRatio, 1.0);
+}
+
+std::string targetName(vk::ExecutedTarget t) { return t == vk::ExecutedTarget::Spirv ? "spirv" : t == vk::ExecutedTarget::Hlsl ? "hlsl" : "glsl"; }
+
+INSTANTIATE_TEST_SUITE_P(Exec, ColorPath,
+                         testing::Combine(testing::ValuesIn(kColorCases),
+                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
+                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+
+// ---- Normal path --------------------------------------------------------------------------------------------
+const Case kNormalCases[] = {
+    {"normal_rotation_on", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", false},
+    {"normal_rotation_off", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "rotation": 0}})", false},
+    {"normal_gain_07", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", false},
+    {"normal_beta_1_gamma_3", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloffcontrast": 0.9, "exponent": 3}})", false},
+    {"normal_flip_y", R"({"name": "normal", "kind": "normal", "flip_y": true, "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", false},
+    {"normal_minified", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", true},
+    {"normal_paper_mode_near_origin", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
+};
+
+class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
+
+TEST_P(NormalPath, MatchesReference) {
+    REQUIRE_VULKAN();
+    const auto& [c, target] = GetParam();
+    Material m = material(c.slot);
+    const Slot& slot = m.slots[0];
+    View view = c.minified ? kMinified : kMagnified;
+    if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};  // see ColorPath
+    TextureBounds b = bounds(sampled(slot));
+    // Listing 9: d = -xy / z with x, y, z = 2 * texel - 1, each off by 2 e_s, so to first order
+    // |dd| <= 2 e_s (1 + max|d|) / min z. The slope metric sin(theta) = sqrt(|d|^2 / (1 + |d|^2)) moves by at
+    // most the error of |d| (its slope is <= 1), which is <= sqrt(2) |dd|.
+    double ed = 2 * sampleError(c.minified ? 2 : 0, false) * (1 + b.maxDeriv) / b.minZ;
+    Check check = checkAgainstReference(m, vk::RenderOutput::Derivative, view, target, ed, std::sqrt(2.0) * ed, 2);
+    report(c.name, check);
+    EXPECT_LE(check.worstRatio, 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, NormalPath,
+                         testing::Combine(testing::ValuesIn(kNormalCases),
+                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
+                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+
+// ---- Weights ----------------------------------------------------------------------------------------------
+// With falloffcontrast 0 the weights depend on the lattice alone. The GPU evaluates it in float32 on a uv that
+// the rasteriser interpolated, so st and the skewed coordinates carry a few ulps of their size (|skewed| <= 4 |st|):
+// the barycentrics are off by dw <= 4 * 4 ulp(|st|), and W_i = w_i^gamma / sum_j w_j^gamma moves by
+// |dW_i| <= gamma * sum_j W_i |delta_ij - W_j| |dw_j| / w_j <= 2 gamma dw max_j(W_j / w_j), where W_j / w_j <= 2 for
+// the three barycentrics of a triangle (largest at w = (1/2, 1/4, 1/4) for gamma = 7; 1 for gamma = 1).
+// With falloffcontrast beta > 0 the metric's error e_m adds |dW_i| <= k * beta / (1 - beta) * e_m * 2 W_i (1 - W_i)
+// <= k * beta / (1 - beta) * e_m / 2 (see pixelTolerance).
+struct WeightsCase {
+    const char* name;
+    const char* slot;
+    std::array<double, 4> uvRect;
+};
+void PrintTo(const WeightsCase& c, std::ostream* os) { *os << c.name; }
+
+const WeightsCase kWeightsCases[] = {
+    {"lattice_stable", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})", {0.3, 0.45, 0.55, 0.7}},
+    {"lattice_stable_far", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})", {40.3, 17.45, 40.55, 17.7}},
+    {"lattice_paper_far", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "mode": "paper"}})", {40.3, 17.45, 40.55, 17.7}},
+    {"lattice_gamma_1", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "exponent": 1}})", {0.3, 0.45, 0.55, 0.7}},
+    {"lattice_gain_09", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "falloff": 0.9}})", {0.3, 0.45, 0.55, 0.7}},
+    {"luminance_weighted", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", {0.3, 0.45, 0.3 + 96.0 / 2048, 0.45 + 96.0 / 2048}},
+};
+
+class Weights : public testing::TestWithParam<std::tuple<WeightsCase, vk::ExecutedTarget>> {};
+
+TEST_P(Weights, MatchReference) {
+    REQUIRE_VULKAN();
+    const auto& [c, target] = GetParam();
+    Material m = material(c.slot);
+    const Slot& slot = m.slots[0];
+    const View view{96, 96, c.uvRect};
+    double stMax = std::max(std::fabs(c.uvRect[2]), std::fabs(c.uvRect[3])) * std::max(slot.hex.tiling[0], slot.hex.tiling[1]);
+    double ulp = std::ldexp(1.0, std::ilogb(stMax) - 23);
+    double dw = 4 * 4 * ulp;
+    double k = std::max(1.0, std::log2(1.0 / (1.0 - slot.hex.falloff)));
+    double em = sampleError(0, slot.colorSpace == ColorSpace::Srgb);
+    double tolerance = k * (2 * slot.hex.exponent * dw * 2) + k * slot.hex.falloffcontrast / (1 - slot.hex.falloffcontrast) * em / 2;
+    Image gpu = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view, target);
+    Image cpu = cpuRender(slot, view, reference::Output::Weights);
+    Errors e = compare(gpu, cpu, 3);
+    std::printf("  %-30s max %.2e  mean %.2e  tolerance %.2e\n", c.name, e.max, e.mean, tolerance);
+    EXPECT_LE(e.max, tolerance);
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, Weights,
+                         testing::Combine(testing::ValuesIn(kWeightsCases),
+                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
+                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+
+// ---- Properties of the GPU output ----------------------------------------------------------------------------
+// The final weights are a normalisation W_i = a_i / (a_1 + a_2 + a_3): the sum and the division each round once
+// (2^-24 relative), so |sum_i W_i - 1| <= 3 * 2 * 2^-24 for the three quotients plus 2 * 2^-24 for adding them up.
+// Lavapipe divides with a reciprocal refined to full precision; 8 * 2^-24 = 4.8e-7 is the bound.
+TEST(Properties, WeightsAreFiniteNonNegativeAndSumToOne) {
+    REQUIRE_VULKAN();
+    const char* settings[] = {R"({"tiling": 4})", R"({"tiling": 4, "falloff": 0.01})", R"({"tiling": 4, "falloff": 0.99})",
+                              R"({"tiling": 4, "exponent": 1})", R"({"tiling": 4, "exponent": 64})", R"({"tiling": 4, "falloffcontrast": 0.9})",
+                              R"({"tiling": 4, "rotation": 25})", R"({"tiling": 4, "mode": "paper", "falloff": 0.8})"};
+    const double bound = 8 * std::ldexp(1.0, -24);
+    double worst = 0;
+    for (const char* h : settings) {
+        Material m = material(std::string(R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": )") + h + "}");
+        Image w = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", {128, 128, {0.1, 0.2, 0.6, 0.7}});
+        for (size_t i = 0; i < w.rgba.size(); i += 4) {
+            const float* p = &w.rgba[i];
+            ASSERT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) << h;
+            ASSERT_TRUE(p[0] >= 0 && p[1] >= 0 && p[2] >= 0) << h;
+            worst = std::max(worst, std::fabs(double(p[0]) + p[1] + p[2] - 1.0));
+        }
+    }
+    std::printf("  weights: largest |sum - 1| %.2e, bound %.2e\n", worst, bound);
+    EXPECT_LE(worst, bound);
+}
+
+// No seams: between neighbouring pixels the colour may change only as much as the texture's own content and the
+// weights allow. Each tile's sample moves by s texels (s = texels per pixel; rotation keeps lengths), which
+// changes a bilinear sample by at most step * s * sqrt(2) (step: the largest difference of adjacent texels). The
+// weights change by dW (measured on the GPU's weights output of the same view), which moves the blend by at most
+// sum_j |dW_j| / 2 * spread (the dW sum to 0). Each pixel also carries its own filtering error e_s.
+// A seam (a wrong mip level or offset at a tile border) breaks this.
+TEST(Properties, NoSeamsBetweenNeighbouringPixels) {
+    REQUIRE_VULKAN();
+    for (const char* tex : {"textures/rock_albedo.png", "textures/tiles_albedo.png"}) {
+        Material m = material(std::string(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": ")") + tex +
+                              R"(", "hextiling": {"tiling": 4, "falloff": 0.8}})");
+        const View view{128, 128, {0.2, 0.3, 0.2 + 128.0 / 1024, 0.3 + 128.0 / 1024}};  // s = 1 texel per pixel
+        Image c = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Albedo, "", view);
+        Image w = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view);
+        TextureBounds b = bounds(sampled(m.slots[0]));
+        double es = sampleError(0, false), worstRatio = 0;
+        for (int y = 0; y < view.height; ++y)
+            for (int x = 0; x < view.width; ++x)
+                for (auto [nx, ny] : {std::pair{x + 1, y}, std::pair{x, y + 1}}) {
+                    if (nx >= view.width || ny >= view.height) continue;
+                    double dW = 0, dC = 0;
+                    for (int i = 0; i < 3; ++i) {
+                        dW += std::fabs(double(w.at(x, y)[i]) - w.at(nx, ny)[i]);
+                        dC = std::max(dC, std::fabs(double(c.at(x, y)[i]) - c.at(nx, ny)[i]));
+                    }
+                    double allowed = b.step * 1.0 * std::sqrt(2.0) + dW / 2 * b.spread + 2 * es;
+                    worstRatio = std::max(worstRatio, dC / allowed);
+                }
+        std::printf("  %s: largest neighbour difference / allowed %.2f (step %.3f, spread %.3f)\n", tex, worstRatio, b.step, b.spread);
+        EXPECT_LE(worstRatio, 1.0) << tex;
+    }
+}
+
+// r = 0.5 is the gain's identity. Against r = 0.5 + 2^-20: k - 1 = log2(1 / (1 - r)) - 1 ~ 2^-20 * 2 / ln 2 = 2.8e-6,
+// and |d g / d k| = |0.5 (2x)^k ln(2x)| <= 0.5 / e, so each weight moves by <= 0.18 * 2.8e-6 = 5e-7, doubled by the
+// renormalisation, and the blend of values in [0, 1] by <= 3e-6. The gain's own float32 rounding (pow, division)
+// adds a few ulps of 1; 1e-5 bounds both.
+TEST(Properties, GainAtOneHalfChangesNothing) {
+    REQUIRE_VULKAN();
+    const View view{96, 96, {0.3, 0.45, 0.4, 0.55}};
+    auto albedo = [&](double r) {
+        char slot[256];
+        std::snprintf(slot, sizeof slot, R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": %.17g}})", r);
+        return vk::render(*runner(&whyNoVulkan), material(slot), vk::RenderOutput::Albedo, "", view);
+    };
+    Errors e = compare(albedo(0.5), albedo(0.5 + std::ldexp(1.0, -20)), 4);
+    std::printf("  r = 0.5 against r = 0.5 + 2^-20: max %.2e, bound 1e-5\n", e.max);
+    EXPECT_LE(e.max, 1e-5);
+    EXPECT_GT(compare(albedo(0.5), albedo(0.75), 4).max, 1.0 / 255);  // and the gain does act when asked
+}
+
+// A ramp normal map: every texel encodes the same slope (a, b), the height field H = a s + b t. Inside a tile
+// rotated by theta (sample point (st - c) R + offset), the height seen in st is H((st - c) R), whose gradient is
+// R (a, b): the blended derivative must be (a, b) rotated by the tile's angle. Checked where one tile's weight
+// exceeds 0.999 (the others can move the result by at most 2 * 0.001 * |(a, b)|), with theta from the mode's
+// definition (reference::tileTransform). Stored as float texels: sampling adds no error.
+TEST(Properties, RampNormalMapRotatesWithEachTile) {
+    REQUIRE_VULKAN();
+    const double a = 0.5, b = -0.25;
+    std::filesystem::path file = std::filesystem::temp_directory_path() / "hexc_ramp_normal.pfm";
+    Image ramp;
+    ramp.width = ramp.height = 16;
+    ramp.rgba.clear();
+    for (int i = 0; i < 16 * 16; ++i) ramp.rgba.insert(ramp.rgba.end(), {float(0.5 - 0.25 * a), float(0.5 - 0.25 * b), 0.75f, 1.0f});
+    writeImage(ramp, file);  // n = (-a, -b, 1) / 2 encoded n * 0.5 + 0.5: Listing 9 reads back d = (a, b)
+    for (const char* mode : {"stable", "paper"}) {
+        Material m = material(std::string(R"({"name": "normal", "kind": "normal", "texture": ")") + file.string() +
+                              R"(", "hextiling": {"tiling": 1, "mode": ")" + mode + R"("}})");
+        const View view{128, 128, {0.0, 0.0, 1.0, 1.0}};
+        Image d = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Derivative, "", view);
+        std::vector<reference::SlotResult> ref = reference::evaluateView(m.slots[0], sampled(m.slots[0]), view);
+        double worst = 0;
+        size_t checked = 0;
+        for (int j = 0; j < view.height; ++j)
+            for (int i = 0; i < view.width; ++i) {
+                const reference::SlotResult& r = ref[size_t(j) * view.width + i];
+                reference::Triangle tri = reference::lattice({(i + 0.5) / view.width, (j + 0.5) / view.height}, m.slots[0].hex.mode);
+                size_t dominant = std::max_element(r.blend.begin(), r.blend.end()) - r.blend.begin();
+                if (r.blend[dominant] < 0.999) continue;
+                double theta = reference::tileTransform(tri.id[dominant], m.slots[0].hex).angle;
+                double ex = std::cos(theta) * a - std::sin(theta) * b, ey = std::sin(theta) * a + std::cos(theta) * b;
+                worst = std::max({worst, std::fabs(d.at(i, j)[0] - ex), std::fabs(d.at(i, j)[1] - ey)});
+                ++checked;
+            }
+        double bound = 2 * 0.001 * std::hypot(a, b) + 1e-5;  // 1e-5: float32 sin/cos and products
+        std::printf("  ramp (%s): %zu pixels inside tiles, largest |d - R(theta)(a, b)| %.2e, bound %.2e\n", mode, checked, worst, bound);
+        EXPECT_GT(checked, size_t(view.width * view.height / 4));
+        EXPECT_LE(worst, bound) << mode;
+    }
+}
+
+}  // namespace
