@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 #include "hexc/material.h"
 #include "reference/reference.h"
@@ -420,6 +421,60 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
         EXPECT_GT(checked, size_t(view.width * view.height / 4));
         EXPECT_LE(worst, bound) << mode;
     }
+}
+
+// ---- hexc render and hexc preview, run as a user would ------------------------------------------------------
+int hexc(const std::string& args, std::string* err = nullptr) {
+    std::filesystem::path log = std::filesystem::temp_directory_path() / "hexc_render_stderr.txt";
+    int status = std::system((std::string(HEXC_EXE) + " " + args + " 2> " + log.string() + " > /dev/null").c_str());
+    if (err) {
+        std::ifstream in(log);
+        err->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    return WEXITSTATUS(status);
+}
+
+TEST(RenderCommand, WritesWhatTheLibraryRenders) {
+    REQUIRE_VULKAN();
+    std::filesystem::path dir = std::filesystem::temp_directory_path();
+    ASSERT_EQ(hexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 -o " + (dir / "r.pfm").string()), 0);
+    ASSERT_EQ(hexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 --reference -o " + (dir / "c.pfm").string()), 0);
+    Material rock = *parseMaterialFile("materials/rock.json").material;
+    const View view{40, 24, {0.1, 0.2, 0.3, 0.35}};
+    Image lib = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Derivative, "", view);
+    Texture gpu = loadTexture(dir / "r.pfm", false), cpu = loadTexture(dir / "c.pfm", false);
+    ASSERT_EQ(gpu.width, 40);
+    ASSERT_EQ(gpu.height, 24);
+    Image ref = reference::render(rock.slots[1], sampled(rock.slots[1]), view, reference::Output::Value);
+    for (size_t i = 0; i < lib.rgba.size(); i += 4)
+        for (size_t c = 0; c < 3; ++c) {  // PFM holds RGB
+            ASSERT_EQ(gpu.rgba32f[i + c], lib.rgba[i + c]) << i;
+            ASSERT_EQ(cpu.rgba32f[i + c], ref.rgba[i + c]) << i;
+        }
+}
+
+TEST(RenderCommand, Errors) {
+    std::string err;
+    EXPECT_EQ(hexc("render materials/rock.json --slot bark -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(hexc("render materials/rock.json --output albedo --slot bark -o /tmp/x.png", &err), 1);
+    EXPECT_EQ(err, "hexc: material `rock` has no slot `bark`\n");
+    EXPECT_EQ(hexc("render materials/rock.json --output derivative --slot albedo -o /tmp/x.png", &err), 1);
+    EXPECT_EQ(err, "hexc: slot `albedo` is of kind color; this output needs a normal slot\n");
+    EXPECT_EQ(hexc("render materials/rock.json --size 0x5 -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(hexc("render materials/rock.json --uv-rect 0,0,1 -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(err, "hexc: --uv-rect expects 4 numbers, got `0,0,1`\n");
+    EXPECT_EQ(hexc("render materials/rock.json -o /tmp/x.tiff", &err), 3);
+    EXPECT_EQ(hexc("render materials/invalid/falloff_zero.json -o /tmp/x.png", &err), 1);
+}
+
+TEST(PreviewCommand, WritesALabelledSheet) {
+    REQUIRE_VULKAN();
+    std::filesystem::path out = std::filesystem::temp_directory_path() / "hexc_preview.png";
+    std::filesystem::remove(out);
+    ASSERT_EQ(hexc("preview materials/rock.json --cell 64 -o " + out.string()), 0);
+    Texture sheet = loadTexture(out, false);
+    EXPECT_EQ(sheet.width, 3 * 64);
+    EXPECT_EQ(sheet.height, 2 * (64 + 28));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "cli/options.h"
 #include "hexc/material.h"
+#include "reference/reference.h"
 #include "vk/render.h"
 
 namespace hexc::cli {
@@ -24,6 +25,8 @@ Options:
   --size WxH         image size in pixels (default 512x512)
   --uv-rect U0,V0,U1,V1  the UV rectangle the image covers (default 0,0,1,1)
   --target T         execute the emitted spirv (default), hlsl or glsl (re-compiled to SPIR-V by glslang)
+  --reference        write the fp64 CPU reference instead (albedo, normal, derivative, weights; no Vulkan
+                     needed): what the GPU image should be, up to texture filtering precision
 
 Pixel (i, j), row j = 0 at the top, shows the material at its centre
   uv = (U0 + (i + 0.5) / W * (U1 - U0),  V0 + (j + 0.5) / H * (V1 - V0))
@@ -126,6 +129,7 @@ int renderCommand(const std::vector<std::string>& args) {
         View view{512, 512, {0, 0, 1, 1}};
         vk::RenderOutput output = vk::RenderOutput::Shaded;
         vk::ExecutedTarget target = vk::ExecutedTarget::Spirv;
+        bool useReference = false;
         static const std::map<std::string, vk::RenderOutput> outputs = {
             {"shaded", vk::RenderOutput::Shaded}, {"albedo", vk::RenderOutput::Albedo}, {"normal", vk::RenderOutput::Normal},
             {"derivative", vk::RenderOutput::Derivative}, {"weights", vk::RenderOutput::Weights}};
@@ -157,14 +161,29 @@ int renderCommand(const std::vector<std::string>& args) {
                 auto it = targets.find(value());
                 if (it == targets.end()) throw UsageError{"--target expects spirv, hlsl or glsl, got " + args[i]};
                 target = it->second;
-            } else if (!a.empty() && a[0] == '-') throw UsageError{"unknown option " + a + " (see hexc render --help)"};
+            } else if (a == "--reference") useReference = true;
+            else if (!a.empty() && a[0] == '-') throw UsageError{"unknown option " + a + " (see hexc render --help)"};
             else if (materialPath.empty()) materialPath = a;
             else throw UsageError{"hexc render takes one material, got a second: " + a};
         }
         if (materialPath.empty()) throw UsageError{"no material given (see hexc render --help)"};
         if (out.empty()) throw UsageError{"no output image given: use -o IMAGE.pfm or IMAGE.png"};
+        if (!slot.empty() && output == vk::RenderOutput::Shaded)
+            throw UsageError{"--slot picks the slot of --output albedo, normal, derivative or weights; shaded shows the whole material"};
+        if (useReference && output == vk::RenderOutput::Shaded)
+            throw UsageError{"--reference covers the hex-tiled slots (albedo, normal, derivative, weights), not a template's shading"};
         auto material = loadMaterial(materialPath);
         if (!material) return int(kInvalidInput);
+        if (useReference) {
+            const Slot& s = vk::slotForOutput(*material, output, slot);
+            reference::SampledTexture texture(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb));
+            Image image = reference::render(s, texture, view, output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value);
+            if (s.kind == SlotKind::Scalar)  // as the GPU shows it: (s, s, s, 1)
+                for (size_t i = 0; i < image.rgba.size(); i += 4) image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];
+            if (output == vk::RenderOutput::Normal) vk::derivativeToNormalMap(image);
+            writeImage(image, out);
+            return int(kOk);
+        }
         auto runner = makeRunner();
         if (!runner) return int(kInvalidInput);
         writeImage(vk::render(*runner, *material, output, slot, view, target), out);

@@ -115,17 +115,19 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     RenderResult result = runner.render(request);
     if (frameMs) *frameMs = result.frameMs;
 
-    if (output == RenderOutput::Normal) {
-        for (size_t i = 0; i < result.image.rgba.size(); i += 4) {
-            float* p = &result.image.rgba[i];
-            float len = std::sqrt(p[0] * p[0] + p[1] * p[1] + 1.0f);
-            p[0] = -p[0] / len * 0.5f + 0.5f;
-            p[1] = -p[1] / len * 0.5f + 0.5f;
-            p[2] = 1.0f / len * 0.5f + 0.5f;
-            p[3] = 1.0f;
-        }
-    }
+    if (output == RenderOutput::Normal) derivativeToNormalMap(result.image);
     return std::move(result.image);
+}
+
+void derivativeToNormalMap(Image& image) {
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+        float* p = &image.rgba[i];
+        float len = std::sqrt(p[0] * p[0] + p[1] * p[1] + 1.0f);
+        p[0] = -p[0] / len * 0.5f + 0.5f;
+        p[1] = -p[1] / len * 0.5f + 0.5f;
+        p[2] = 1.0f / len * 0.5f + 0.5f;
+        p[3] = 1.0f;
+    }
 }
 
 }  // namespace hexc::vk

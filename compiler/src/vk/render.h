@@ -39,6 +39,9 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
              ExecutedTarget target = ExecutedTarget::Spirv, int timedFrames = 0, std::vector<double>* frameMs = nullptr);
 
+// Derivative images (dH/du, dH/dv, ., .) to tangent-space normals encoded n * 0.5 + 0.5, in place (Eq. 2).
+void derivativeToNormalMap(Image& image);
+
 // The parameter block as the manifest lays it out, filled with the material's values (float32).
 std::vector<uint8_t> packParameters(const nlohmann::json& manifest);
 
