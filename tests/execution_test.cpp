@@ -126,9 +126,10 @@ TextureBounds bounds(const reference::SampledTexture& t) {
 }
 
 // The views: magnified reads mip level 0 only; minified reads exactly level 2 (4 texels per pixel, a power of
-// two, so lavapipe's piecewise-linear log2 is exact and no level blend is involved).
-// Textures are 256^2 and tiling 4: one uv unit is 1024 texels.
-const View kMagnified{96, 96, {0.3, 0.45, 0.3 + 96.0 / 1024 / 2, 0.45 + 96.0 / 1024 / 2}};  // 0.5 texel per pixel
+// two, so lavapipe's piecewise-linear log2 is exact and no level blend is involved). Textures are 256^2 and
+// tiling 4: one uv unit is 1024 texels, tiles are 1 / (2 sqrt 3) = 0.29 st apart, so the magnified view spans
+// about 2 x 2 tiles and the minified one 5 x 5, borders included.
+const View kMagnified{192, 192, {0.3, 0.45, 0.3 + 192 * 0.75 / 1024, 0.45 + 192 * 0.75 / 1024}};  // 0.75 texel per pixel
 const View kMinified{96, 96, {0.3, 0.45, 0.3 + 96.0 * 4 / 1024, 0.45 + 96.0 * 4 / 1024}};  // 4 texels per pixel
 
 struct Case {
