@@ -129,18 +129,19 @@ vec2 hexcStableCentre(ivec2 local) {
     return vec2((float(local.x) + 0.5 * float(local.y)) / hexcStableScale, 0.25 * float(local.y));
 }
 
-HexcTiles hexcTilesStable(vec2 st, float rotStrength) {
+// st = period * cell + st_local, with the lattice shift of `cell` periods added to the ids in 32-bit
+// unsigned arithmetic (ids are only hashed, so they may wrap). dSTdx/dSTdy: the gradients of st.
+HexcTiles hexcTilesStableAt(vec2 st, vec2 dSTdx, vec2 dSTdy, uvec2 idShift, float rotStrength) {
     HexcTiles t;
-    vec2 dSTdx = dFdx(st), dSTdy = dFdy(st);
     // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small.
     float kx = floor(st.x / 28.0), ky = floor(st.y);
     vec2 r = vec2(st.x - 28.0 * kx, st.y - ky);
     ivec2 l1, l2, l3;
     hexcTriangle(vec2(hexcStableScale * r.x - 2.0 * r.y, 4.0 * r.y), t.w, l1, l2, l3);
-    ivec2 shift = ivec2(97 * int(kx) - 2 * int(ky), 4 * int(ky));
-    t.v1 = l1 + shift;
-    t.v2 = l2 + shift;
-    t.v3 = l3 + shift;
+    uvec2 shift = idShift + uvec2(97u * uint(int(kx)) - 2u * uint(int(ky)), 4u * uint(int(ky)));
+    t.v1 = ivec2(uvec2(l1) + shift);
+    t.v2 = ivec2(uvec2(l2) + shift);
+    t.v3 = ivec2(uvec2(l3) + shift);
     vec2 o1, o2, o3;
     hexcStableTile(t.v1, rotStrength, o1, t.rot1);
     hexcStableTile(t.v2, rotStrength, o2, t.rot2);
@@ -154,6 +155,19 @@ HexcTiles hexcTilesStable(vec2 st, float rotStrength) {
     return t;
 }
 
+HexcTiles hexcTilesStable(vec2 st, float rotStrength) {
+    return hexcTilesStableAt(st, dFdx(st), dFdy(st), uvec2(0u), rotStrength);
+}
+
+// Split coordinates for large worlds: st = originOffset + st_rel + (28, 1) * originCell, where the engine
+// computes the cell and offset from a double origin each frame (docs/precision.md) and the mesh supplies a
+// small st_rel, whose gradients are precise.
+HexcTiles hexcTilesStableSplit(vec2 stRel, ivec2 originCell, vec2 originOffset, float rotStrength) {
+    uvec2 cell = uvec2(originCell);
+    uvec2 shift = uvec2(97u * cell.x - 2u * cell.y, 4u * cell.y);
+    return hexcTilesStableAt(originOffset + stRel, dFdx(stRel), dFdy(stRel), shift, rotStrength);
+}
+
 // Listing 8 / Eq. 5: Perlin's gain with k = log(1 - r) / log(1/2), then renormalised.
 vec3 hexcGain3(vec3 x, float r) {
     float k = log(1.0 - r) / log(0.5);
@@ -164,10 +178,14 @@ vec3 hexcGain3(vec3 x, float r) {
 }
 
 // Eq. 1 with the falloff metric delta already evaluated per tile (Dw), then the optional gain.
+// Two guards keep the weights finite, non-negative and normalised outside the paper's domain, and change
+// nothing inside it: a negative metric (HDR texels with negative values) counts as 0, and when every
+// weighted term is 0 (falloffcontrast 1 over three black samples) the metric is ignored.
 vec3 hexcBlendWeights(vec3 w, vec3 Dw, float falloffContrast, float exponent, float falloff) {
-    Dw = mix(vec3(1.0), Dw, falloffContrast);
-    vec3 W = Dw * pow(w, vec3(exponent));
-    W /= (W.x + W.y + W.z);
+    vec3 wg = pow(w, vec3(exponent));
+    vec3 W = mix(vec3(1.0), max(Dw, vec3(0.0)), falloffContrast) * wg;
+    float sum = W.x + W.y + W.z;
+    W = sum > 0.0 ? W / sum : wg / (wg.x + wg.y + wg.z);
     if (falloff != 0.5) W = hexcGain3(W, falloff);
     return W;
 }
@@ -204,10 +222,10 @@ vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, float falloff, float fa
 }
 
 // Listing 9: tangent-space normal in [-1, 1] to the height derivative dH/duv, |z| kept >= max(|x|,|y|)/128.
-// flipY: the map's green axis points down (DirectX convention).
+// flipY: the map's green axis points down (DirectX convention). Guard: a zero vector gives 0, not 0/0.
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY) {
     vec3 vMa = abs(vM);
-    float zMa = max(vMa.z, (1.0 / 128.0) * max(vMa.x, vMa.y));
+    float zMa = max(max(vMa.z, (1.0 / 128.0) * max(vMa.x, vMa.y)), 1e-20);
     return -vec2(vM.x, flipY ? -vM.y : vM.y) / zMa;
 }
 

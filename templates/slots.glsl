@@ -1,6 +1,6 @@
 // hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|plain>`) and the resource
 // sections, and replaces the $placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff,
-// $falloffcontrast, $exponent (uniform members or literals), $tiles (the lattice function of the slot's mode), $luma, $channel, $flipy, $kind, $members.
+// $falloffcontrast, $exponent (uniform members or literals), $lattice (a `lattice.*` section), $luma, $channel, $flipy, $kind, $members.
 // Each slot gets `hexc_$name(vec2 uv)` and an overload with `out vec3 weights` (Listing 7 hex weights).
 
 //@ params
@@ -19,9 +19,18 @@ layout(set = 0, binding = $binding) uniform sampler hexcSampler;
 layout(set = 0, binding = $binding) uniform texture2D hexcTex_$name;
 #define HEXC_HAS_$name 1
 
+//@ lattice.paper
+hexcTilesPaper(uv * $tiling, $rotation)
+
+//@ lattice.stable
+hexcTilesStable(uv * $tiling, $rotation)
+
+//@ lattice.split
+hexcTilesStableSplit(uv * $tiling, $origincell, $originoffset, $rotation)
+
 //@ color.hex
 vec4 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $tiles(uv * $tiling, $rotation), $falloff, $falloffcontrast, $exponent, $luma, weights);
+    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, weights);
 }
 vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
@@ -33,7 +42,7 @@ vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ scalar.hex
 float hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $tiles(uv * $tiling, $rotation), $falloff, $falloffcontrast, $exponent, $luma, weights).$channel;
+    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, weights).$channel;
 }
 float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
@@ -45,7 +54,7 @@ float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ normal.hex
 vec2 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcDeriv(hexcTex_$name, hexcSampler, $tiles(uv * $tiling, $rotation), $falloff, $falloffcontrast, $exponent, $flipy, weights);
+    return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, weights);
 }
 vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 

@@ -27,8 +27,8 @@ const InvalidFile kInvalidFiles[] = {
     {"enabled_not_boolean", "6:16: error: /hextiling/enabled: expected true or false, got a string"},
     {"exponent_above_64", "6:17: error: /hextiling/exponent: expected a number in [1, 64], got 80"},
     {"exponent_below_one", "6:17: error: /hextiling/exponent: expected a number in [1, 64], got 0.5"},
-    {"falloff_out_of_range", "6:16: error: /hextiling/falloff: expected a number in (0, 1) (0.5 = off), got 1.0"},
-    {"falloff_zero", "6:16: error: /hextiling/falloff: expected a number in (0, 1) (0.5 = off), got 0"},
+    {"falloff_out_of_range", "6:16: error: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 1.0"},
+    {"falloff_zero", "6:16: error: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 0"},
     {"falloffcontrast_out_of_range", "6:24: error: /hextiling/falloffcontrast: expected a number in [0, 1], got 1.5"},
     {"flip_y_on_color_slot", "10:7: error: /slots/0/flip_y: `flip_y` applies only to slots of kind `normal`"},
     {"kind_misspelled",
@@ -64,7 +64,7 @@ const InvalidFile kInvalidFiles[] = {
      "`colorspace`, `flip_y` or `hextiling` (did you mean `colorspace`?)"},
     {"unknown_key_misspelled",
      "6:5: error: /hextiling/rotaton: unknown key `rotaton`; expected `enabled`, `tiling`, `rotation`, `falloff`, "
-     "`falloffcontrast`, `exponent` or `mode` (did you mean `rotation`?)"},
+     "`falloffcontrast`, `exponent`, `mode` or `split_coordinates` (did you mean `rotation`?)"},
     {"unknown_key_top_level",
      "12:3: error: /description: unknown key `description`; expected `$schema`, `name`, `template`, `hextiling` or `slots`"},
 };
@@ -153,7 +153,7 @@ TEST(Validation, AllProblemsInAFileAreReported) {
     auto d = diagnose(R"({"name": "m", "hextiling": {"falloff": 2, "exponent": 0},
   "slots": [{"name": "A", "kind": "colour", "texture": "textures/rock_albedo.png", "chanel": "r"}]})");
     EXPECT_EQ(d, (std::vector<std::string>{
-                     "materials/t.json:1:40: error: /hextiling/falloff: expected a number in (0, 1) (0.5 = off), got 2",
+                     "materials/t.json:1:40: error: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 2",
                      "materials/t.json:1:55: error: /hextiling/exponent: expected a number in [1, 64], got 0",
                      "materials/t.json:2:84: error: /slots/0/chanel: unknown key `chanel`; expected `name`, `texture`, `kind`, "
                      "`channel`, `colorspace`, `flip_y` or `hextiling` (did you mean `channel`?)",
@@ -162,6 +162,13 @@ TEST(Validation, AllProblemsInAFileAreReported) {
                      "materials/t.json:2:35: error: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got "
                      "\"colour\" (did you mean `color`?)",
                  }));
+}
+
+TEST(Validation, SplitCoordinatesNeedStableMode) {
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"split_coordinates": true, "mode": "paper"},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
+              std::vector<std::string>{"materials/t.json:2:13: error: /slots/0: `split_coordinates` needs mode `stable`; the "
+                                       "paper's lattice has no exact period to split at"});
 }
 
 TEST(Validation, ColumnsCountCharactersNotBytes) {

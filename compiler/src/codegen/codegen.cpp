@@ -49,12 +49,16 @@ std::string injectedCode(const ShaderPlan& plan) {
             {"$falloff", param("falloff")},
             {"$falloffcontrast", param("falloffcontrast")},
             {"$exponent", param("exponent")},
-            {"$tiles", s.hex.mode == HashMode::Paper ? "hexcTilesPaper" : "hexcTilesStable"},
+            {"$origincell", param("origin_cell")},
+            {"$originoffset", param("origin_offset")},
             // Scalar maps weight tiles by their own channel; colour by luminance (Eq. 4).
             {"$luma", s.kind == SlotKind::Scalar ? kChannelVectors[s.channel] : "hexcLuma"},
             {"$channel", kChannels[s.channel]},
             {"$flipy", s.flipY ? "true" : "false"},
         };
+        const char* lattice = s.hex.mode == HashMode::Paper ? "lattice.paper" : s.hex.splitCoordinates ? "lattice.split" : "lattice.stable";
+        values["$lattice"] = replaceAll(sections.at(lattice), values);
+        values["$lattice"].pop_back();  // the section's final newline
         out += replaceAll(sections.at("texture"), values) + "\n";
         out += replaceAll(sections.at(sp.section), values) + "\n";
     }

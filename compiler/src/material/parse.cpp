@@ -20,7 +20,7 @@ using nlohmann::json;
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "slots"};
 const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling"};
-const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "falloff", "falloffcontrast", "exponent", "mode"};
+const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "falloff", "falloffcontrast", "exponent", "mode", "split_coordinates"};
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
 const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
@@ -197,7 +197,9 @@ private:
             }
         }
         if (v.contains("rotation")) hex.rotation = number(v["rotation"], pointer + "/rotation", {0, INFINITY, false, true, ">= 0"}, hex.rotation);
-        if (v.contains("falloff")) hex.falloff = number(v["falloff"], pointer + "/falloff", {0, 1, true, true, "in (0, 1) (0.5 = off)"}, hex.falloff);
+        // 1e-6 from either end: float32 must still tell 1 - r from 0 and from 1 for the gain's exponent.
+        if (v.contains("falloff"))
+            hex.falloff = number(v["falloff"], pointer + "/falloff", {1e-6, 1 - 1e-6, false, false, "in [0.000001, 0.999999] (0.5 = off)"}, hex.falloff);
         if (v.contains("falloffcontrast"))
             hex.falloffcontrast = number(v["falloffcontrast"], pointer + "/falloffcontrast", {0, 1, false, false, "in [0, 1]"}, hex.falloffcontrast);
         // Above 64, (1/3)^gamma at a triangle centre underflows float32 and the weights become 0/0.
@@ -205,6 +207,8 @@ private:
         if (v.contains("mode")) {
             if (int i = choice(v["mode"], pointer + "/mode", kModes); i >= 0) hex.mode = HashMode(i);
         }
+        if (v.contains("split_coordinates"))
+            hex.splitCoordinates = boolean(v["split_coordinates"], pointer + "/split_coordinates", hex.splitCoordinates);
     }
 
     void slots(const json& v, const std::string& pointer, Material& m) {
@@ -276,6 +280,9 @@ private:
             }
         }
         if (v.contains("hextiling")) hexSettings(v["hextiling"], pointer + "/hextiling", s.hex);
+        // Checked on the merged settings: the paper's lattice has no exact period to split at.
+        if (s.hex.splitCoordinates && s.hex.mode == HashMode::Paper)
+            error(v.contains("hextiling") ? pointer + "/hextiling" : pointer, "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
             s.texture = string(v["texture"], pointer + "/texture");
             if (v["texture"].is_string()) texture(s, pointer + "/texture");

@@ -13,11 +13,12 @@ bool readsIdentifier(const std::string& source, const std::string& identifier) {
     return std::regex_search(source, std::regex("\\b" + identifier + "\\b"));
 }
 
-// Appends a member with std140 alignment (float: 4, vec2: 8).
-void addParam(ShaderPlan& plan, const std::string& name, std::vector<double> value) {
+// Appends a member with std140 alignment (scalars: 4, two-component vectors: 8).
+void addParam(ShaderPlan& plan, const std::string& name, std::vector<double> value, bool integer = false) {
     uint32_t size = uint32_t(value.size()) * 4;
     uint32_t offset = (plan.paramBlockSize + size - 1) / size * size;
-    plan.params.push_back({name, value.size() == 2 ? "vec2" : "float", offset, std::move(value)});
+    std::string type = value.size() == 2 ? (integer ? "ivec2" : "vec2") : (integer ? "int" : "float");
+    plan.params.push_back({name, type, offset, std::move(value)});
     plan.paramBlockSize = offset + size;
 }
 
@@ -68,6 +69,11 @@ ShaderPlan planShader(const Material& material, const std::filesystem::path& tem
             addParam(plan, slot.name + "_falloff", {h.falloff});
             addParam(plan, slot.name + "_falloffcontrast", {h.falloffcontrast});
             addParam(plan, slot.name + "_exponent", {h.exponent});
+            if (h.splitCoordinates) {
+                // Filled per frame by the engine from its double-precision origin (docs/precision.md).
+                addParam(plan, slot.name + "_origin_cell", {0, 0}, true);
+                addParam(plan, slot.name + "_origin_offset", {0, 0});
+            }
         }
     }
     plan.paramBlockSize = (plan.paramBlockSize + 15) / 16 * 16;

@@ -19,7 +19,7 @@ constexpr uint32_t kFirstTextureBinding = 2;
 
 struct ParamMember {
     std::string name;            // member of the HexcParams block, "<slot>_<setting>"
-    std::string type;            // "float" or "vec2"
+    std::string type;            // "float", "vec2", "int" or "ivec2"
     uint32_t offset = 0;         // std140 byte offset
     std::vector<double> value;   // the material's value, what an engine writes by default
 };

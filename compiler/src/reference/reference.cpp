@@ -93,7 +93,8 @@ double paperAngle(TileId id, double strength) {
 // component is kept away from 0 so that the derivative stays within [-128, 128]. flipY: green points down.
 Vec2 normalToDerivative(const Rgba& texel, bool flipY) {
     const double x = 2 * texel[0] - 1, y = 2 * texel[1] - 1, z = 2 * texel[2] - 1;
-    const double zm = std::max(std::abs(z), std::max(std::abs(x), std::abs(y)) / 128);
+    // 1e-20: hexc's guard for a zero vector, which Listing 9 would turn into 0/0.
+    const double zm = std::max({std::abs(z), std::max(std::abs(x), std::abs(y)) / 128, 1e-20});
     return {-x / zm, -(flipY ? -y : y) / zm};
 }
 
@@ -104,7 +105,8 @@ Vec2 normalToDerivative(const Rgba& texel, bool flipY) {
 // exactly these indices.
 std::array<double, 3> hexColours(const std::array<double, 3>& w, const Triangle& tri) {
     std::array<double, 3> out{};
-    for (int i = 0; i < 3; ++i) out[size_t(floorMod3(tri.id[i][0] - tri.id[i][1]))] = w[i];
+    // The difference of the 32-bit ids the shader keeps (exact while |id| < 2^31).
+    for (int i = 0; i < 3; ++i) out[size_t(floorMod3(int32_t(uint32_t(tri.id[i][0]) - uint32_t(tri.id[i][1]))))] = w[i];
     return out;
 }
 
@@ -185,7 +187,7 @@ Triangle triangleGrid(Vec2 st) {
 Triangle triangleInSkewed(double kx, double ky) {
     const double bx = std::floor(kx), by = std::floor(ky);
     const double fx = kx - bx, fy = ky - by;
-    const int baseX = int(bx), baseY = int(by);
+    const int64_t baseX = int64_t(bx), baseY = int64_t(by);
     const double z = 1 - fx - fy;
     if (z > 0)  // lower triangle: corners base, base + (0, 1), base + (1, 0)
         return {{TileId{baseX, baseY}, TileId{baseX, baseY + 1}, TileId{baseX + 1, baseY}}, {z, fy, fx}};
@@ -208,9 +210,18 @@ double gain(double x, double r) {
 
 std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, const std::array<double, 3>& delta,
                                    const HexTiling& hex) {
-    std::array<double, 3> w;
-    for (size_t i = 0; i < 3; ++i) w[i] = delta[i] * std::pow(barycentric[i], hex.exponent);
-    double sum = w[0] + w[1] + w[2];  // > 0 unless every delta is 0 (falloffcontrast 1 on black): NaN, as on a GPU
+    std::array<double, 3> w, plain;
+    for (size_t i = 0; i < 3; ++i) {
+        plain[i] = std::pow(barycentric[i], hex.exponent);
+        w[i] = delta[i] * plain[i];
+    }
+    double sum = w[0] + w[1] + w[2];
+    // hexc's guard: when every delta is 0 (falloffcontrast 1 on three black samples, 0/0 in the paper), the
+    // metric is ignored.
+    if (!(sum > 0)) {
+        w = plain;
+        sum = w[0] + w[1] + w[2];
+    }
     for (double& x : w) x /= sum;
     // As in Listing 3, the gain is skipped at its identity rather than evaluated, so r = 0.5 changes nothing.
     if (hex.falloff != 0.5) {
@@ -265,7 +276,8 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
                                                   : x[size_t(slot.channel)];
             samples[i] = x;
         }
-        delta[i] = (1 - hex.falloffcontrast) + hex.falloffcontrast * metric;
+        // hexc's guard: a negative metric (HDR texels below 0) counts as 0, so no weight turns negative.
+        delta[i] = (1 - hex.falloffcontrast) + hex.falloffcontrast * std::max(metric, 0.0);
     }
 
     const std::array<double, 3> w = blendWeights(tri.weight, delta, hex);

@@ -25,6 +25,7 @@
 //   - sin() in the hash is the GPU's own approximation, not the C library's: an error of 1e-7 in sin moves the
 //     tile offset by about 0.004 in st.
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "hexc/image.h"
@@ -34,7 +35,9 @@ namespace hexc::reference {
 
 using Vec2 = std::array<double, 2>;
 using Rgba = std::array<double, 4>;
-using TileId = std::array<int, 2>;  // integer lattice coordinates of a hex tile centre (Listing 1's vertex)
+// Integer lattice coordinates of a hex tile centre (Listing 1's vertex). Exact here; the shader keeps them
+// in 32 bits, which only the hash and Listing 7's colour index see (both defined on the low 32 bits).
+using TileId = std::array<int64_t, 2>;
 
 // A texture as a Vulkan sampler sees it: linear texels in double, with the full mip chain.
 class SampledTexture {

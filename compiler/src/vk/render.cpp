@@ -67,12 +67,20 @@ std::vector<uint8_t> packParameters(const nlohmann::json& manifest) {
     const auto& params = manifest["parameters"];
     std::vector<uint8_t> bytes(params["size"].get<size_t>(), 0);
     for (const auto& m : params["members"]) {
-        std::vector<float> values;
-        if (m["value"].is_array())
-            for (const auto& v : m["value"]) values.push_back(v.get<float>());
-        else
-            values.push_back(m["value"].get<float>());
-        std::memcpy(bytes.data() + m["offset"].get<size_t>(), values.data(), values.size() * sizeof(float));
+        const bool integer = m["type"].get<std::string>()[0] == 'i';
+        nlohmann::json values = m["value"].is_array() ? m["value"] : nlohmann::json::array({m["value"]});
+        uint8_t* at = bytes.data() + m["offset"].get<size_t>();
+        for (const auto& v : values) {
+            // int32 and float32 are both 4 bytes in std140.
+            if (integer) {
+                int32_t i = v.get<int32_t>();
+                std::memcpy(at, &i, 4);
+            } else {
+                float f = v.get<float>();
+                std::memcpy(at, &f, 4);
+            }
+            at += 4;
+        }
     }
     return bytes;
 }
