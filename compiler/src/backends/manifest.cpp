@@ -20,7 +20,8 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
               {"falloff", h.falloff},
               {"falloffcontrast", h.falloffcontrast},
               {"exponent", h.exponent},
-              {"mode", toString(h.mode)}}},
+              {"mode", toString(h.mode)},
+              {"split_coordinates", h.splitCoordinates}}},
         };
         if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
         if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
@@ -29,7 +30,9 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
     nlohmann::json members = nlohmann::json::array();
     for (const ParamMember& p : plan.params) {
         nlohmann::json value = p.value.size() == 1 ? nlohmann::json(p.value[0]) : nlohmann::json(p.value);
-        members.push_back({{"name", p.name}, {"type", p.type}, {"offset", p.offset}, {"value", value}});
+        nlohmann::json member = {{"name", p.name}, {"type", p.type}, {"offset", p.offset}, {"value", value}};
+        if (!p.perFrame.empty()) member["per_frame"] = p.perFrame;
+        members.push_back(std::move(member));
     }
     return {
         {"hexc_version", version()},

@@ -14,11 +14,11 @@ bool readsIdentifier(const std::string& source, const std::string& identifier) {
 }
 
 // Appends a member with std140 alignment (scalars: 4, two-component vectors: 8).
-void addParam(ShaderPlan& plan, const std::string& name, std::vector<double> value, bool integer = false) {
+void addParam(ShaderPlan& plan, const std::string& name, std::vector<double> value, bool integer = false, std::string perFrame = {}) {
     uint32_t size = uint32_t(value.size()) * 4;
     uint32_t offset = (plan.paramBlockSize + size - 1) / size * size;
     std::string type = value.size() == 2 ? (integer ? "ivec2" : "vec2") : (integer ? "int" : "float");
-    plan.params.push_back({name, type, offset, std::move(value)});
+    plan.params.push_back({name, type, offset, std::move(value), std::move(perFrame)});
     plan.paramBlockSize = offset + size;
 }
 
@@ -71,8 +71,9 @@ ShaderPlan planShader(const Material& material, const std::filesystem::path& tem
             addParam(plan, slot.name + "_exponent", {h.exponent});
             if (h.splitCoordinates) {
                 // Filled per frame by the engine from its double-precision origin (docs/precision.md).
-                addParam(plan, slot.name + "_origin_cell", {0, 0}, true);
-                addParam(plan, slot.name + "_origin_offset", {0, 0});
+                addParam(plan, slot.name + "_origin_cell", {0, 0}, true,
+                         "floor(st / (28, 1)) with st = origin_uv * tiling in double, stored modulo 2^32 (hexc/origin.h)");
+                addParam(plan, slot.name + "_origin_offset", {0, 0}, false, "st - cell * (28, 1), as float (hexc/origin.h)");
             }
         }
     }

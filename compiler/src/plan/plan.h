@@ -22,6 +22,7 @@ struct ParamMember {
     std::string type;            // "float", "vec2", "int" or "ivec2"
     uint32_t offset = 0;         // std140 byte offset
     std::vector<double> value;   // the material's value, what an engine writes by default
+    std::string perFrame;        // set for values the engine computes each frame: how (the manifest says it)
 };
 
 struct SlotPlan {

@@ -27,7 +27,22 @@ const std::string& outputFile(const CompileResult& r, const std::string& suffix)
     throw std::logic_error("compile produced no " + suffix);
 }
 
+void setView(RenderRequest& request, const View& view) {
+    request.width = view.width;
+    request.height = view.height;
+    request.uvRect = {float(view.uvRect[0]), float(view.uvRect[1]), float(view.uvRect[2]), float(view.uvRect[3])};
+}
+
 }  // namespace
+
+Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view) {
+    RenderRequest request;
+    request.vertexSpirv = vertexShader();
+    request.fragmentSpirv = spirvOrThrow(compileToSpirv(embeddedText(templateFile), ShaderStage::Fragment, "templates/" + templateFile));
+    request.uniformData = uniforms;
+    setView(request, view);
+    return std::move(runner.render(request).image);
+}
 
 const Slot& slotForOutput(const Material& material, RenderOutput output, const std::string& slotName) {
     auto fits = [&](const Slot& s) {
@@ -63,12 +78,13 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
     return m;
 }
 
-std::vector<uint8_t> packParameters(const nlohmann::json& manifest) {
+std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const ParameterValues& parameters) {
     const auto& params = manifest["parameters"];
     std::vector<uint8_t> bytes(params["size"].get<size_t>(), 0);
     for (const auto& m : params["members"]) {
         const bool integer = m["type"].get<std::string>()[0] == 'i';
         nlohmann::json values = m["value"].is_array() ? m["value"] : nlohmann::json::array({m["value"]});
+        if (auto it = parameters.find(m["name"]); it != parameters.end()) values = it->second;
         uint8_t* at = bytes.data() + m["offset"].get<size_t>();
         for (const auto& v : values) {
             // int32 and float32 are both 4 bytes in std140.
@@ -86,7 +102,7 @@ std::vector<uint8_t> packParameters(const nlohmann::json& manifest) {
 }
 
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
-             ExecutedTarget target, int timedFrames, std::vector<double>* frameMs) {
+             ExecutedTarget target, int timedFrames, std::vector<double>* frameMs, const ParameterValues& parameters) {
     Material m = renderedMaterial(material, output, slotName);
     CompileOptions options;
     options.targets = {Target::Spirv, target == ExecutedTarget::Hlsl ? Target::Hlsl : Target::Glsl};
@@ -108,7 +124,7 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
         request.combinedSamplers = true;
         break;
     }
-    request.uniformData = packParameters(manifest);
+    request.uniformData = packParameters(manifest, parameters);
     // Textures in manifest order, which is binding order.
     std::vector<Texture> textures;
     for (const auto& s : manifest["slots"]) {
@@ -116,9 +132,7 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
             if (slot.name == s["name"]) textures.push_back(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
     }
     for (const Texture& t : textures) request.textures.push_back(&t);
-    request.width = view.width;
-    request.height = view.height;
-    request.uvRect = {float(view.uvRect[0]), float(view.uvRect[1]), float(view.uvRect[2]), float(view.uvRect[3])};
+    setView(request, view);
     request.timedFrames = timedFrames;
     RenderResult result = runner.render(request);
     if (frameMs) *frameMs = result.frameMs;

@@ -3,6 +3,7 @@
 // the benchmark share. A render shows one output of a material over a UV rectangle (see runner.h and
 // templates/fullscreen.vert.glsl for the pixel-to-UV mapping).
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -34,15 +35,22 @@ const Slot& slotForOutput(const Material& material, RenderOutput output, const s
 // template; for Shaded, the material itself.
 Material renderedMaterial(const Material& material, RenderOutput output, const std::string& slotName);
 
+// Parameter values by member name, replacing the material's (e.g. a split-coordinates origin).
+using ParameterValues = std::map<std::string, std::vector<double>>;
+
 // Compiles (throws CompileError on failure), uploads and draws. `frameMs`, if given, receives one GPU
 // time per timed frame (`timedFrames` after one untimed warm-up frame).
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
-             ExecutedTarget target = ExecutedTarget::Spirv, int timedFrames = 0, std::vector<double>* frameMs = nullptr);
+             ExecutedTarget target = ExecutedTarget::Spirv, int timedFrames = 0, std::vector<double>* frameMs = nullptr,
+             const ParameterValues& parameters = {});
+
+// Draws a fragment shader of the embedded templates (no material) with the given uniform block.
+Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view);
 
 // Derivative images (dH/du, dH/dv, ., .) to tangent-space normals encoded n * 0.5 + 0.5, in place (Eq. 2).
 void derivativeToNormalMap(Image& image);
 
-// The parameter block as the manifest lays it out, filled with the material's values (float32).
-std::vector<uint8_t> packParameters(const nlohmann::json& manifest);
+// The parameter block as the manifest lays it out, filled with the material's values or `parameters`.
+std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const ParameterValues& parameters = {});
 
 }  // namespace hexc::vk

@@ -1,0 +1,33 @@
+#pragma once
+// The precision stress measurement shared by the stress tests and the benchmark report: hex-tiling on the
+// GPU far from the origin against the fp64 reference evaluated at the GPU's own float32 inputs.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "hexc/material.h"
+#include "vk/runner.h"
+
+namespace hexc::vk {
+
+struct PrecisionRow {
+    std::string mode;   // "stable", "paper" or "stable, split"
+    std::string path;   // "color" or "normal"
+    double magnitude;   // |uv| of the view (split: of the origin)
+    double maxError, meanError, overOne255;
+};
+
+// Renders the example rock albedo (colour path) and normal map (normal path, compared as the encoded normal
+// n * 0.5 + 0.5) at tiling 4 in a 64 x 64 view at uv ~ (X, X) for each X in `magnitudes`, and compares every
+// pixel with the reference evaluated at the uv and derivatives the rasteriser gave that pixel (read back with
+// templates/probe.frag.glsl). The textures are converted to float, so 8-bit filtering does not hide or add
+// error; the view keeps a texel per pixel where float32 resolves it, else half an ulp of X per pixel.
+// split: the view is near 0 and X is the origin, passed as split coordinates (hexc/origin.h).
+// `workDir` receives the float textures. Throws on a render failure.
+std::vector<PrecisionRow> measurePrecision(Runner& runner, const std::filesystem::path& workDir, HashMode mode, bool split,
+                                           const std::vector<double>& magnitudes);
+
+// A Markdown table of rows: mode, path, |uv|, max, mean, share over 1/255.
+std::string precisionTable(const std::vector<PrecisionRow>& rows);
+
+}  // namespace hexc::vk
