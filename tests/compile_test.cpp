@@ -11,8 +11,10 @@
 
 #include "hexc/compiler.h"
 #include "spirv/spirv.h"
+#include "support.h"
 
 using namespace hexc;
+using hexc::test::runHexc;
 
 namespace {
 
@@ -189,13 +191,6 @@ TEST(Compile, TargetSubset) {
 }
 
 // The command line, run as a user would.
-int run(const std::string& args, std::string* err = nullptr) {
-    std::filesystem::path log = std::filesystem::temp_directory_path() / "hexc_cli_stderr.txt";
-    int status = std::system((std::string(HEXC_EXE) + " " + args + " 2> " + log.string() + " > /dev/null").c_str());
-    if (err) *err = readFile(log);
-    return WEXITSTATUS(status);
-}
-
 std::filesystem::path freshDir(const std::string& name) {
     std::filesystem::path d = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(d);
@@ -204,8 +199,8 @@ std::filesystem::path freshDir(const std::string& name) {
 
 TEST(Cli, WritesAllOutputsAndRunsAreByteIdentical) {
     auto a = freshDir("hexc_cli_a"), b = freshDir("hexc_cli_b");
-    ASSERT_EQ(run("materials/rock.json materials/tiles.json -o " + a.string()), 0);
-    ASSERT_EQ(run("materials/rock.json materials/tiles.json -o " + b.string()), 0);
+    ASSERT_EQ(runHexc("materials/rock.json materials/tiles.json -o " + a.string()), 0);
+    ASSERT_EQ(runHexc("materials/rock.json materials/tiles.json -o " + b.string()), 0);
     size_t files = 0;
     for (const auto& e : std::filesystem::directory_iterator(a)) {
         ++files;
@@ -217,7 +212,7 @@ TEST(Cli, WritesAllOutputsAndRunsAreByteIdentical) {
 TEST(Cli, BrokenMaterialWritesNothing) {
     auto out = freshDir("hexc_cli_broken");
     std::string err;
-    EXPECT_EQ(run("materials/rock.json materials/invalid/falloff_zero.json -o " + out.string(), &err), 1);
+    EXPECT_EQ(runHexc("materials/rock.json materials/invalid/falloff_zero.json -o " + out.string(), &err), 1);
     EXPECT_FALSE(std::filesystem::exists(out));
     EXPECT_NE(err.find("materials/invalid/falloff_zero.json:6:16: error: /hextiling/falloff:"), std::string::npos) << err;
     EXPECT_NE(err.find("nothing written"), std::string::npos);
@@ -225,18 +220,18 @@ TEST(Cli, BrokenMaterialWritesNothing) {
 
 TEST(Cli, UsageErrors) {
     std::string err;
-    EXPECT_EQ(run("materials/rock.json", &err), 2);
+    EXPECT_EQ(runHexc("materials/rock.json", &err), 2);
     EXPECT_EQ(err, "hexc: no output folder given: use -o DIR\n");
-    EXPECT_EQ(run("materials/rock.json -o x --targets hlsl,dxil", &err), 2);
+    EXPECT_EQ(runHexc("materials/rock.json -o x --targets hlsl,dxil", &err), 2);
     EXPECT_EQ(err, "hexc: unknown target `dxil` in --targets; expected spirv, hlsl, glsl or msl\n");
-    EXPECT_EQ(run("--frobnicate", &err), 2);
-    EXPECT_EQ(run("--help"), 0);
-    EXPECT_EQ(run("--version"), 0);
+    EXPECT_EQ(runHexc("--frobnicate", &err), 2);
+    EXPECT_EQ(runHexc("--help"), 0);
+    EXPECT_EQ(runHexc("--version"), 0);
 }
 
 TEST(Cli, MissingMaterialFile) {
     std::string err;
-    EXPECT_EQ(run("materials/nope.json -o " + freshDir("hexc_cli_none").string(), &err), 1);
+    EXPECT_EQ(runHexc("materials/nope.json -o " + freshDir("hexc_cli_none").string(), &err), 1);
     EXPECT_EQ(err, "materials/nope.json: error: cannot open material file\nhexc: nothing written\n");
 }
 

@@ -10,8 +10,11 @@
 #include "hexc/material.h"
 #include "reference/reference.h"
 #include "vk/render.h"
+#include "support.h"
 
 using namespace hexc;
+using hexc::test::runHexc;
+using hexc::test::runner;
 
 namespace {
 
@@ -43,19 +46,6 @@ double pixelTolerance(const reference::SlotResult& r, double ex, double em, cons
 }
 
 // ---- Fixtures ---------------------------------------------------------------------------------------------
-vk::Runner* runner(std::string* why) {
-    static std::string reason;
-    static std::unique_ptr<vk::Runner> r = vk::Runner::create(&reason);
-    *why = reason;
-    return r.get();
-}
-
-#define REQUIRE_VULKAN()                                                                        \
-    std::string whyNoVulkan;                                                                    \
-    if (!runner(&whyNoVulkan)) {                                                                \
-        if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << "no Vulkan device: " << whyNoVulkan; \
-        GTEST_SKIP() << "no Vulkan device: " << whyNoVulkan;                                    \
-    }
 
 Material material(const std::string& slotJson) {
     ParseResult r = parseMaterial(R"({"name": "exec", "slots": [)" + slotJson + "]}", "materials/exec.json");
@@ -425,21 +415,12 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
 }
 
 // ---- hexc render and hexc preview, run as a user would ------------------------------------------------------
-int hexc(const std::string& args, std::string* err = nullptr) {
-    std::filesystem::path log = std::filesystem::temp_directory_path() / "hexc_render_stderr.txt";
-    int status = std::system((std::string(HEXC_EXE) + " " + args + " 2> " + log.string() + " > /dev/null").c_str());
-    if (err) {
-        std::ifstream in(log);
-        err->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    return WEXITSTATUS(status);
-}
 
 TEST(RenderCommand, WritesWhatTheLibraryRenders) {
     REQUIRE_VULKAN();
     std::filesystem::path dir = std::filesystem::temp_directory_path();
-    ASSERT_EQ(hexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 -o " + (dir / "r.pfm").string()), 0);
-    ASSERT_EQ(hexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 --reference -o " + (dir / "c.pfm").string()), 0);
+    ASSERT_EQ(runHexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 -o " + (dir / "r.pfm").string()), 0);
+    ASSERT_EQ(runHexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 --reference -o " + (dir / "c.pfm").string()), 0);
     Material rock = *parseMaterialFile("materials/rock.json").material;
     const View view{40, 24, {0.1, 0.2, 0.3, 0.35}};
     Image lib = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Derivative, "", view);
@@ -456,23 +437,23 @@ TEST(RenderCommand, WritesWhatTheLibraryRenders) {
 
 TEST(RenderCommand, Errors) {
     std::string err;
-    EXPECT_EQ(hexc("render materials/rock.json --slot bark -o /tmp/x.png", &err), 2);
-    EXPECT_EQ(hexc("render materials/rock.json --output albedo --slot bark -o /tmp/x.png", &err), 1);
+    EXPECT_EQ(runHexc("render materials/rock.json --slot bark -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(runHexc("render materials/rock.json --output albedo --slot bark -o /tmp/x.png", &err), 1);
     EXPECT_EQ(err, "hexc: material `rock` has no slot `bark`\n");
-    EXPECT_EQ(hexc("render materials/rock.json --output derivative --slot albedo -o /tmp/x.png", &err), 1);
+    EXPECT_EQ(runHexc("render materials/rock.json --output derivative --slot albedo -o /tmp/x.png", &err), 1);
     EXPECT_EQ(err, "hexc: slot `albedo` is of kind color; this output needs a normal slot\n");
-    EXPECT_EQ(hexc("render materials/rock.json --size 0x5 -o /tmp/x.png", &err), 2);
-    EXPECT_EQ(hexc("render materials/rock.json --uv-rect 0,0,1 -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(runHexc("render materials/rock.json --size 0x5 -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(runHexc("render materials/rock.json --uv-rect 0,0,1 -o /tmp/x.png", &err), 2);
     EXPECT_EQ(err, "hexc: --uv-rect expects 4 numbers, got `0,0,1`\n");
-    EXPECT_EQ(hexc("render materials/rock.json -o /tmp/x.tiff", &err), 3);
-    EXPECT_EQ(hexc("render materials/invalid/falloff_zero.json -o /tmp/x.png", &err), 1);
+    EXPECT_EQ(runHexc("render materials/rock.json -o /tmp/x.tiff", &err), 3);
+    EXPECT_EQ(runHexc("render materials/invalid/falloff_zero.json -o /tmp/x.png", &err), 1);
 }
 
 TEST(PreviewCommand, WritesALabelledSheet) {
     REQUIRE_VULKAN();
     std::filesystem::path out = std::filesystem::temp_directory_path() / "hexc_preview.png";
     std::filesystem::remove(out);
-    ASSERT_EQ(hexc("preview materials/rock.json --cell 64 -o " + out.string()), 0);
+    ASSERT_EQ(runHexc("preview materials/rock.json --cell 64 -o " + out.string()), 0);
     Texture sheet = loadTexture(out, false);
     EXPECT_EQ(sheet.width, 3 * 64);
     EXPECT_EQ(sheet.height, 2 * (64 + 28));

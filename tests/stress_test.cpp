@@ -10,24 +10,14 @@
 #include "reference/reference.h"
 #include "vk/precision.h"
 #include "vk/render.h"
+#include "support.h"
 
 using namespace hexc;
+using hexc::test::runHexc;
+using hexc::test::runner;
 
 namespace {
 
-vk::Runner* runner(std::string* why) {
-    static std::string reason;
-    static std::unique_ptr<vk::Runner> r = vk::Runner::create(&reason);
-    *why = reason;
-    return r.get();
-}
-
-#define REQUIRE_VULKAN()                                                                        \
-    std::string whyNoVulkan;                                                                    \
-    if (!runner(&whyNoVulkan)) {                                                                \
-        if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << "no Vulkan device: " << whyNoVulkan; \
-        GTEST_SKIP() << "no Vulkan device: " << whyNoVulkan;                                    \
-    }
 
 const std::filesystem::path kWork = std::filesystem::temp_directory_path() / "hexc_stress";
 

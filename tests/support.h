@@ -1,0 +1,45 @@
+#pragma once
+// What several test files share: the one Vulkan runner per test binary, the skip-or-fail rule without a
+// device, and running the hexc command line as a user would.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "vk/runner.h"
+
+namespace hexc::test {
+
+// Created once per binary (creating a Vulkan device is slow); nullptr with the reason when there is none.
+inline vk::Runner* runner(std::string* why) {
+    static std::string reason;
+    static std::unique_ptr<vk::Runner> r = vk::Runner::create(&reason);
+    *why = reason;
+    return r.get();
+}
+
+// Runs the hexc executable with `args`; returns its exit code and, if asked, what it wrote to stderr.
+// The log is named after the running test, so tests may run in parallel.
+inline int runHexc(const std::string& args, std::string* err = nullptr) {
+    std::filesystem::path log = std::filesystem::temp_directory_path() /
+                                (std::string("hexc_stderr_") + testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt");
+    int status = std::system((std::string(HEXC_EXE) + " " + args + " 2> " + log.string() + " > /dev/null").c_str());
+    if (err) {
+        std::ifstream in(log);
+        err->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    return WEXITSTATUS(status);
+}
+
+}  // namespace hexc::test
+
+// Without a Vulkan device a test skips with the reason, unless HEXC_REQUIRE_VULKAN is set (CI), where it fails.
+#define REQUIRE_VULKAN()                                                                        \
+    std::string whyNoVulkan;                                                                    \
+    if (!hexc::test::runner(&whyNoVulkan)) {                                                    \
+        if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << "no Vulkan device: " << whyNoVulkan; \
+        GTEST_SKIP() << "no Vulkan device: " << whyNoVulkan;                                    \
+    }
