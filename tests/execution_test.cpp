@@ -9,6 +9,7 @@
 
 #include "hexc/material.h"
 #include "reference/reference.h"
+#include "vk/precision.h"
 #include "vk/render.h"
 #include "support.h"
 
@@ -53,27 +54,8 @@ Material material(const std::string& slotJson) {
     return *r.material;
 }
 
-struct Errors {
-    double max = 0, mean = 0, overOne255 = 0;
-};
-
-// Per-channel absolute differences over the first `channels` channels of every pixel.
-Errors compare(const Image& a, const Image& b, int channels) {
-    Errors e;
-    size_t n = 0, over = 0;
-    for (size_t i = 0; i < a.rgba.size(); i += 4)
-        for (int c = 0; c < channels; ++c) {
-            double d = std::fabs(double(a.rgba[i + c]) - double(b.rgba[i + c]));
-            if (!(d == d)) d = INFINITY;  // NaN on one side only is an error, not a pass
-            e.max = std::max(e.max, d);
-            e.mean += d;
-            over += d > 1.0 / 255;
-            ++n;
-        }
-    e.mean /= double(n);
-    e.overOne255 = double(over) / double(n);
-    return e;
-}
+using Errors = vk::ImageErrors;
+const auto compare = vk::compareImages;
 
 reference::SampledTexture sampled(const Slot& slot) {
     return reference::SampledTexture(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));

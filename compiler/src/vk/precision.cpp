@@ -33,6 +33,23 @@ const char* modeName(HashMode mode, bool split) { return mode == HashMode::Paper
 
 }  // namespace
 
+ImageErrors compareImages(const Image& a, const Image& b, int channels) {
+    ImageErrors e;
+    size_t n = 0, over = 0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4)
+        for (int c = 0; c < channels; ++c) {
+            double d = std::fabs(double(a.rgba[i + size_t(c)]) - double(b.rgba[i + size_t(c)]));
+            if (!(d == d)) d = INFINITY;  // NaN on one side only is an error, not a pass
+            e.max = std::max(e.max, d);
+            e.mean += d;
+            over += d > 1.0 / 255;
+            ++n;
+        }
+    e.mean /= double(n);
+    e.overOne255 = double(over) / double(n);
+    return e;
+}
+
 std::vector<PrecisionRow> measurePrecision(Runner& runner, const std::filesystem::path& workDir, HashMode mode, bool split,
                                            const std::vector<double>& magnitudes) {
     std::filesystem::create_directories(workDir);
@@ -74,20 +91,7 @@ std::vector<PrecisionRow> measurePrecision(Runner& runner, const std::filesystem
                 derivativeToNormalMap(gpu);
                 derivativeToNormalMap(cpu);
             }
-            PrecisionRow row{modeName(mode, split), path ? "normal" : "color", x, 0, 0, 0};
-            size_t n = 0, over = 0;
-            for (size_t p = 0; p < gpu.rgba.size(); p += 4)
-                for (size_t c = 0; c < 3; ++c) {
-                    double e = std::fabs(double(gpu.rgba[p + c]) - double(cpu.rgba[p + c]));
-                    if (!(e == e)) e = INFINITY;
-                    row.maxError = std::max(row.maxError, e);
-                    row.meanError += e;
-                    over += e > 1.0 / 255;
-                    ++n;
-                }
-            row.meanError /= double(n);
-            row.overOne255 = double(over) / double(n);
-            rows.push_back(row);
+            rows.push_back({modeName(mode, split), path ? "normal" : "color", x, compareImages(gpu, cpu, 3)});
         }
     }
     return rows;
@@ -99,7 +103,7 @@ std::string precisionTable(const std::vector<PrecisionRow>& rows) {
     char line[256];
     for (const PrecisionRow& r : rows) {
         std::snprintf(line, sizeof line, "| %s | %s | %.0e | %.2e (%.2f/255) | %.2e | %.1f%% |\n", r.mode.c_str(), r.path.c_str(), r.magnitude,
-                      r.maxError, r.maxError * 255, r.meanError, r.overOne255 * 100);
+                      r.errors.max, r.errors.max * 255, r.errors.mean, r.errors.overOne255 * 100);
         out << line;
     }
     return out.str();

@@ -10,11 +10,17 @@
 
 namespace hexc::vk {
 
+// Absolute differences over the first `channels` channels of every pixel; NaN on one side counts as infinite.
+struct ImageErrors {
+    double max = 0, mean = 0, overOne255 = 0;  // overOne255: the share of values off by more than 1/255
+};
+ImageErrors compareImages(const Image& a, const Image& b, int channels);
+
 struct PrecisionRow {
     std::string mode;   // "stable", "paper" or "stable, split"
     std::string path;   // "color" or "normal"
     double magnitude;   // |uv| of the view (split: of the origin)
-    double maxError, meanError, overOne255;
+    ImageErrors errors;
 };
 
 // Renders the example rock albedo (colour path) and normal map (normal path, compared as the encoded normal
