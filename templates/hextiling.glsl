@@ -75,13 +75,15 @@ vec2 hexcRotateFromTile(vec2 d, vec2 cs) {
 
 // Listings 3-4, shared part, `paper` mode: st_i = (st - c_i) R_i + c_i + hash(v_i), gradients rotated
 // with the tile. Derivatives of the continuous st are taken once, before the lattice.
-HexcTiles hexcTilesPaper(vec2 st, float rotStrength) {
+// `rotate`, here and below, is a literal chosen by hexc: false when the material turns rotation off, so the
+// optimiser removes the rotation code entirely rather than rotating by a zero angle at run time.
+HexcTiles hexcTilesPaper(vec2 st, float rotStrength, bool rotate) {
     HexcTiles t;
     vec2 dSTdx = dFdx(st), dSTdy = dFdy(st);
     hexcTriangleGrid(st, t.w, t.v1, t.v2, t.v3);
-    t.rot1 = hexcRotationPaper(t.v1, rotStrength);
-    t.rot2 = hexcRotationPaper(t.v2, rotStrength);
-    t.rot3 = hexcRotationPaper(t.v3, rotStrength);
+    t.rot1 = rotate ? hexcRotationPaper(t.v1, rotStrength) : vec2(1.0, 0.0);
+    t.rot2 = rotate ? hexcRotationPaper(t.v2, rotStrength) : vec2(1.0, 0.0);
+    t.rot3 = rotate ? hexcRotationPaper(t.v3, rotStrength) : vec2(1.0, 0.0);
     vec2 c1 = hexcTileCentre(t.v1), c2 = hexcTileCentre(t.v2), c3 = hexcTileCentre(t.v3);
     t.st1 = hexcRotateToTile(st - c1, t.rot1) + c1 + hexcHashPaper(t.v1);
     t.st2 = hexcRotateToTile(st - c2, t.rot2) + c2 + hexcHashPaper(t.v2);
@@ -117,11 +119,11 @@ uvec3 hexcPcg3d(uvec3 v) {
 
 // A tile's offset in [0, 1)^2 and rotation (cos, sin) of an angle in [-pi, pi) * rotStrength, from
 // the top 24 bits of each hash word (exact in float32).
-void hexcStableTile(ivec2 id, float rotStrength, out vec2 offset, out vec2 rot) {
+void hexcStableTile(ivec2 id, float rotStrength, bool rotate, out vec2 offset, out vec2 rot) {
     uvec3 h = hexcPcg3d(uvec3(uvec2(id), 0u)) >> 8u;
     offset = vec2(h.xy) * (1.0 / 16777216.0);
     float angle = (float(h.z) * (2.0 / 16777216.0) - 1.0) * hexcPi * rotStrength;
-    rot = vec2(cos(angle), sin(angle));
+    rot = rotate ? vec2(cos(angle), sin(angle)) : vec2(1.0, 0.0);
 }
 
 // Tile centre of local (reduced) ids: the inverse of skewed = (s x - 2 y, 4 y).
@@ -131,7 +133,7 @@ vec2 hexcStableCentre(ivec2 local) {
 
 // st = period * cell + st_local, with the lattice shift of `cell` periods added to the ids in 32-bit
 // unsigned arithmetic (ids are only hashed, so they may wrap). dSTdx/dSTdy: the gradients of st.
-HexcTiles hexcTilesStableAt(vec2 st, vec2 dSTdx, vec2 dSTdy, uvec2 idShift, float rotStrength) {
+HexcTiles hexcTilesStableAt(vec2 st, vec2 dSTdx, vec2 dSTdy, uvec2 idShift, float rotStrength, bool rotate) {
     HexcTiles t;
     // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small.
     float kx = floor(st.x / 28.0), ky = floor(st.y);
@@ -143,29 +145,30 @@ HexcTiles hexcTilesStableAt(vec2 st, vec2 dSTdx, vec2 dSTdy, uvec2 idShift, floa
     t.v2 = ivec2(uvec2(l2) + shift);
     t.v3 = ivec2(uvec2(l3) + shift);
     vec2 o1, o2, o3;
-    hexcStableTile(t.v1, rotStrength, o1, t.rot1);
-    hexcStableTile(t.v2, rotStrength, o2, t.rot2);
-    hexcStableTile(t.v3, rotStrength, o3, t.rot3);
-    t.st1 = hexcRotateToTile(r - hexcStableCentre(l1), t.rot1) + o1;
-    t.st2 = hexcRotateToTile(r - hexcStableCentre(l2), t.rot2) + o2;
-    t.st3 = hexcRotateToTile(r - hexcStableCentre(l3), t.rot3) + o3;
-    t.dx1 = hexcRotateToTile(dSTdx, t.rot1); t.dy1 = hexcRotateToTile(dSTdy, t.rot1);
-    t.dx2 = hexcRotateToTile(dSTdx, t.rot2); t.dy2 = hexcRotateToTile(dSTdy, t.rot2);
-    t.dx3 = hexcRotateToTile(dSTdx, t.rot3); t.dy3 = hexcRotateToTile(dSTdy, t.rot3);
+    hexcStableTile(t.v1, rotStrength, rotate, o1, t.rot1);
+    hexcStableTile(t.v2, rotStrength, rotate, o2, t.rot2);
+    hexcStableTile(t.v3, rotStrength, rotate, o3, t.rot3);
+    vec2 d1 = r - hexcStableCentre(l1), d2 = r - hexcStableCentre(l2), d3 = r - hexcStableCentre(l3);
+    t.st1 = (rotate ? hexcRotateToTile(d1, t.rot1) : d1) + o1;
+    t.st2 = (rotate ? hexcRotateToTile(d2, t.rot2) : d2) + o2;
+    t.st3 = (rotate ? hexcRotateToTile(d3, t.rot3) : d3) + o3;
+    t.dx1 = rotate ? hexcRotateToTile(dSTdx, t.rot1) : dSTdx; t.dy1 = rotate ? hexcRotateToTile(dSTdy, t.rot1) : dSTdy;
+    t.dx2 = rotate ? hexcRotateToTile(dSTdx, t.rot2) : dSTdx; t.dy2 = rotate ? hexcRotateToTile(dSTdy, t.rot2) : dSTdy;
+    t.dx3 = rotate ? hexcRotateToTile(dSTdx, t.rot3) : dSTdx; t.dy3 = rotate ? hexcRotateToTile(dSTdy, t.rot3) : dSTdy;
     return t;
 }
 
-HexcTiles hexcTilesStable(vec2 st, float rotStrength) {
-    return hexcTilesStableAt(st, dFdx(st), dFdy(st), uvec2(0u), rotStrength);
+HexcTiles hexcTilesStable(vec2 st, float rotStrength, bool rotate) {
+    return hexcTilesStableAt(st, dFdx(st), dFdy(st), uvec2(0u), rotStrength, rotate);
 }
 
 // Split coordinates for large worlds: st = originOffset + st_rel + (28, 1) * originCell, where the engine
 // computes the cell and offset from a double origin each frame (docs/precision.md) and the mesh supplies a
 // small st_rel, whose gradients are precise.
-HexcTiles hexcTilesStableSplit(vec2 stRel, ivec2 originCell, vec2 originOffset, float rotStrength) {
+HexcTiles hexcTilesStableSplit(vec2 stRel, ivec2 originCell, vec2 originOffset, float rotStrength, bool rotate) {
     uvec2 cell = uvec2(originCell);
     uvec2 shift = uvec2(97u * cell.x - 2u * cell.y, 4u * cell.y);
-    return hexcTilesStableAt(originOffset + stRel, dFdx(stRel), dFdy(stRel), shift, rotStrength);
+    return hexcTilesStableAt(originOffset + stRel, dFdx(stRel), dFdy(stRel), shift, rotStrength, rotate);
 }
 
 // Listing 8 / Eq. 5: Perlin's gain with k = log(1 - r) / log(1/2), then renormalised.
@@ -181,12 +184,14 @@ vec3 hexcGain3(vec3 x, float r) {
 // Two guards keep the weights finite, non-negative and normalised outside the paper's domain, and change
 // nothing inside it: a negative metric (HDR texels with negative values) counts as 0, and when every
 // weighted term is 0 (falloffcontrast 1 over three black samples) the metric is ignored.
-vec3 hexcBlendWeights(vec3 w, vec3 Dw, float falloffContrast, float exponent, float falloff) {
+// `metric` and `gain` are literals chosen by hexc: false when falloffcontrast is 0 or falloff is 0.5, so
+// the optimiser removes the metric (and the samples' luminance) or the gain instead of computing a no-op.
+vec3 hexcBlendWeights(vec3 w, vec3 Dw, float falloffContrast, float exponent, float falloff, bool metric, bool gain) {
     vec3 wg = pow(w, vec3(exponent));
-    vec3 W = mix(vec3(1.0), max(Dw, vec3(0.0)), falloffContrast) * wg;
+    vec3 W = metric ? mix(vec3(1.0), max(Dw, vec3(0.0)), falloffContrast) * wg : wg;
     float sum = W.x + W.y + W.z;
     W = sum > 0.0 ? W / sum : wg / (wg.x + wg.y + wg.z);
-    if (falloff != 0.5) W = hexcGain3(W, falloff);
+    if (gain && falloff != 0.5) W = hexcGain3(W, falloff);
     return W;
 }
 
@@ -211,12 +216,12 @@ vec3 hexcHexWeights(vec3 W, ivec2 v1, ivec2 v3) {
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
 // a unit vector picking the channel for scalar maps.
 vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, vec4 luma,
-               out vec3 weights) {
+               bool metric, bool gain, out vec3 weights) {
     vec4 c1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1);
     vec4 c2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2);
     vec4 c3 = textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3);
     vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
-    vec3 W = hexcBlendWeights(t.w, Dw, falloffContrast, exponent, falloff);
+    vec3 W = hexcBlendWeights(t.w, Dw, falloffContrast, exponent, falloff, metric, gain);
     weights = hexcHexWeights(W, t.v1, t.v3);
     return W.x * c1 + W.y * c2 + W.z * c3;
 }
@@ -238,12 +243,12 @@ vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, boo
 // Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, bool flipY,
-               out vec3 weights) {
+               bool metric, bool gain, out vec3 weights) {
     vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1);
     vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2);
     vec2 d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-    vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), falloffContrast, exponent, falloff);
+    vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), falloffContrast, exponent, falloff, metric, gain);
     weights = hexcHexWeights(W, t.v1, t.v3);
     return W.x * d1 + W.y * d2 + W.z * d3;
 }

@@ -1,12 +1,22 @@
 // hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|plain>`) and the resource
 // sections, and replaces the $placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff,
-// $falloffcontrast, $exponent (uniform members or literals), $lattice (a `lattice.*` section), $luma, $channel, $flipy, $kind, $members.
+// $falloffcontrast, $exponent, $origincell, $originoffset (uniform members, constants or literals),
+// $lattice (a `lattice.*` section), $rotate, $metric, $gain (literal feature switches), $luma, $channel,
+// $flipy, $kind, $members, $constants.
 // Each slot gets `hexc_$name(vec2 uv)` and an overload with `out vec3 weights` (Listing 7 hex weights).
 
 //@ params
 layout(set = 0, binding = 0, std140) uniform HexcParams {
 $members
 } hexcParams;
+
+//@ constant
+layout(constant_id = $id) const $type $name = $value;
+
+//@ constant.vec2
+layout(constant_id = $id) const float $name_x = $x;
+layout(constant_id = $idy) const float $name_y = $y;
+const vec2 $name = vec2($name_x, $name_y);
 
 //@ sampler
 layout(set = 0, binding = $binding) uniform sampler hexcSampler;
@@ -20,17 +30,17 @@ layout(set = 0, binding = $binding) uniform texture2D hexcTex_$name;
 #define HEXC_HAS_$name 1
 
 //@ lattice.paper
-hexcTilesPaper(uv * $tiling, $rotation)
+hexcTilesPaper(uv * $tiling, $rotation, $rotate)
 
 //@ lattice.stable
-hexcTilesStable(uv * $tiling, $rotation)
+hexcTilesStable(uv * $tiling, $rotation, $rotate)
 
 //@ lattice.split
-hexcTilesStableSplit(uv * $tiling, $origincell, $originoffset, $rotation)
+hexcTilesStableSplit(uv * $tiling, $origincell, $originoffset, $rotation, $rotate)
 
 //@ color.hex
 vec4 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, weights);
+    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, weights);
 }
 vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
@@ -42,7 +52,7 @@ vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ scalar.hex
 float hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, weights).$channel;
+    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, weights).$channel;
 }
 float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
@@ -54,7 +64,7 @@ float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ normal.hex
 vec2 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, weights);
+    return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, $metric, $gain, weights);
 }
 vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 

@@ -30,7 +30,7 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
 }
 
 void run(const Material& material, const CompileOptions& options, CompileResult& result) {
-    ShaderPlan plan = planShader(material, options.templateFile);
+    ShaderPlan plan = planShader(material, options);
     append(result.diagnostics, plan.diagnostics);
     if (hasErrors(plan.diagnostics)) return;
 
@@ -38,7 +38,7 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     SpirvResult front = compileToSpirv(result.glsl, ShaderStage::Fragment, plan.templateName);
     append(result.diagnostics, front.diagnostics);
     if (front.words.empty()) return;
-    SpirvResult optimized = optimizeSpirv(front.words);
+    SpirvResult optimized = optimizeSpirv(front.words, options.bake);
     append(result.diagnostics, optimized.diagnostics);
     if (optimized.words.empty()) return;
     result.spirv = std::move(optimized.words);

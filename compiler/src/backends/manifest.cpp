@@ -27,19 +27,28 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
         if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
         slots.push_back(std::move(slot));
     }
-    nlohmann::json members = nlohmann::json::array();
+    nlohmann::json members = nlohmann::json::array(), constants = nlohmann::json::array();
     for (const ParamMember& p : plan.params) {
         nlohmann::json value = p.value.size() == 1 ? nlohmann::json(p.value[0]) : nlohmann::json(p.value);
-        nlohmann::json member = {{"name", p.name}, {"type", p.type}, {"offset", p.offset}, {"value", value}};
-        if (!p.perFrame.empty()) member["per_frame"] = p.perFrame;
-        members.push_back(std::move(member));
+        nlohmann::json entry = {{"name", p.name}, {"type", p.type}, {"value", value}, {"slots", p.slots}};
+        if (!p.perFrame.empty()) entry["per_frame"] = p.perFrame;
+        if (p.constantId) {
+            entry["constant_id"] = *p.constantId;
+            constants.push_back(std::move(entry));
+        } else {
+            entry["offset"] = p.offset;
+            members.push_back(std::move(entry));
+        }
     }
     return {
         {"hexc_version", version()},
         {"material", material.name},
         {"template", plan.templateName},
         {"slots", slots},
+        // Uniforms are run-time parameters; baked constants were folded into the code (--bake) and are listed
+        // for reference only.
         {"parameters", {{"block", "HexcParams"}, {"layout", "std140"}, {"size", plan.paramBlockSize}, {"members", members}}},
+        {"baked_constants", constants},
         {"targets", targets},
     };
 }

@@ -38,11 +38,11 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
         for (const auto& ubo : res.uniform_buffers) {
             const auto& type = c.get_type(ubo.base_type_id);
             for (uint32_t i = 0; i < type.member_types.size(); ++i) {
-                if (c.type_struct_member_offset(type, i) != plan.params[i].offset)
+                if (plan.params[i].constantId || c.type_struct_member_offset(type, i) != plan.params[i].offset)
                     throw CompileError{{{Diagnostic::Severity::Error, {"hexc", 0, 0}, "", "internal: parameter block layout differs from the plan", {}}}};
             }
         }
-        t["params"] = locate(ResourceKind::Params, 0);
+        if (!res.uniform_buffers.empty()) t["params"] = locate(ResourceKind::Params, 0);
         t["sampler"] = locate(ResourceKind::Sampler, 0);
         nlohmann::json textures = nlohmann::json::object();
         for (size_t i = 0; i < plan.slots.size(); ++i) textures[plan.slots[i].slot->name] = locate(ResourceKind::Texture, uint32_t(i));

@@ -22,6 +22,15 @@ std::string lineDirective(int line, const std::string& file) {
     return "#line " + std::to_string(line) + " \"" + file + "\"\n";
 }
 
+// A GLSL float literal that reads back as the same float32.
+std::string literal(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    std::string s = buf;
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
+
 std::string injectedCode(const ShaderPlan& plan) {
     const auto sections = snippetSections("slots.glsl");
     std::string out = lineDirective(1, "hexc/hextiling.glsl") + embeddedText("hextiling.glsl");
@@ -29,35 +38,57 @@ std::string injectedCode(const ShaderPlan& plan) {
     if (plan.slots.empty()) return out;
 
     std::string members;
-    for (const ParamMember& p : plan.params) members += "    " + p.type + " " + p.name + ";\n";
-    members.pop_back();
-    out += replaceAll(sections.at("params"), {{"$members", members}}) + "\n";
+    for (const ParamMember& p : plan.params) {
+        if (p.constantId) {
+            if (p.type == "vec2")
+                out += replaceAll(sections.at("constant.vec2"), {{"$id", std::to_string(*p.constantId)}, {"$idy", std::to_string(*p.constantId + 1)},
+                                                                  {"$name", p.name}, {"$x", literal(p.value[0])}, {"$y", literal(p.value[1])}});
+            else
+                out += replaceAll(sections.at("constant"), {{"$id", std::to_string(*p.constantId)}, {"$type", p.type}, {"$name", p.name},
+                                                             {"$value", literal(p.value[0])}});
+        } else {
+            members += "    " + p.type + " " + p.name + ";\n";
+        }
+    }
+    if (!members.empty()) {
+        members.pop_back();
+        out += replaceAll(sections.at("params"), {{"$members", members}}) + "\n";
+    }
     out += replaceAll(sections.at("sampler"), {{"$binding", std::to_string(kSamplerBinding)}}) + "\n";
     const Slot& first = *plan.slots.front().slot;
     out += replaceAll(sections.at("first"), {{"$name", first.name}, {"$kind", std::string(toString(first.kind))}}) + "\n";
     for (const SlotPlan& sp : plan.slots) {
         const Slot& s = *sp.slot;
-        auto param = [&](const char* setting) { return "hexcParams." + s.name + "_" + setting; };
+        const LatticePlan& lattice = plan.lattices[sp.lattice];
+        // A setting reads as its block member or its constant; a feature left out reads as its neutral value.
+        auto param = [&](const std::string& name, const char* neutral) -> std::string {
+            const ParamMember* p = plan.param(name);
+            if (!p) return neutral;
+            return p->constantId ? name : "hexcParams." + name;
+        };
         static const char* kChannels[] = {"r", "g", "b", "a"};
         static const char* kChannelVectors[] = {"vec4(1.0, 0.0, 0.0, 0.0)", "vec4(0.0, 1.0, 0.0, 0.0)",
                                                 "vec4(0.0, 0.0, 1.0, 0.0)", "vec4(0.0, 0.0, 0.0, 1.0)"};
         std::map<std::string, std::string> values = {
             {"$name", s.name},
             {"$binding", std::to_string(sp.binding)},
-            {"$tiling", param("tiling")},
-            {"$rotation", param("rotation")},
-            {"$falloff", param("falloff")},
-            {"$falloffcontrast", param("falloffcontrast")},
-            {"$exponent", param("exponent")},
-            {"$origincell", param("origin_cell")},
-            {"$originoffset", param("origin_offset")},
+            {"$tiling", param(lattice.name + "_tiling", "")},
+            {"$rotation", param(lattice.name + "_rotation", "0.0")},
+            {"$origincell", param(lattice.name + "_origin_cell", "ivec2(0)")},
+            {"$originoffset", param(lattice.name + "_origin_offset", "vec2(0.0)")},
+            {"$falloff", param(s.name + "_falloff", "0.5")},
+            {"$falloffcontrast", param(s.name + "_falloffcontrast", "0.0")},
+            {"$exponent", param(s.name + "_exponent", "7.0")},
+            {"$rotate", lattice.rotate ? "true" : "false"},
+            {"$metric", sp.metric ? "true" : "false"},
+            {"$gain", sp.gain ? "true" : "false"},
             // Scalar maps weight tiles by their own channel; colour by luminance (Eq. 4).
             {"$luma", s.kind == SlotKind::Scalar ? kChannelVectors[s.channel] : "hexcLuma"},
             {"$channel", kChannels[s.channel]},
             {"$flipy", s.flipY ? "true" : "false"},
         };
-        const char* lattice = s.hex.mode == HashMode::Paper ? "lattice.paper" : s.hex.splitCoordinates ? "lattice.split" : "lattice.stable";
-        values["$lattice"] = replaceAll(sections.at(lattice), values);
+        const char* latticeSection = s.hex.mode == HashMode::Paper ? "lattice.paper" : s.hex.splitCoordinates ? "lattice.split" : "lattice.stable";
+        values["$lattice"] = replaceAll(sections.at(latticeSection), values);
         values["$lattice"].pop_back();  // the section's final newline
         out += replaceAll(sections.at("texture"), values) + "\n";
         out += replaceAll(sections.at(sp.section), values) + "\n";

@@ -13,25 +13,62 @@ bool readsIdentifier(const std::string& source, const std::string& identifier) {
     return std::regex_search(source, std::regex("\\b" + identifier + "\\b"));
 }
 
-// Appends a member with std140 alignment (scalars: 4, two-component vectors: 8).
-void addParam(ShaderPlan& plan, const std::string& name, std::vector<double> value, bool integer = false, std::string perFrame = {}) {
-    uint32_t size = uint32_t(value.size()) * 4;
-    uint32_t offset = (plan.paramBlockSize + size - 1) / size * size;
-    std::string type = value.size() == 2 ? (integer ? "ivec2" : "vec2") : (integer ? "int" : "float");
-    plan.params.push_back({name, type, offset, std::move(value), std::move(perFrame)});
-    plan.paramBlockSize = offset + size;
+// Slots share a lattice when everything the lattice computes from is the same.
+bool sameLattice(const HexTiling& a, const HexTiling& b) {
+    return a.enabled == b.enabled && a.mode == b.mode && a.splitCoordinates == b.splitCoordinates && a.tiling == b.tiling &&
+           a.rotation == b.rotation;
 }
+
+class ParamBuilder {
+public:
+    ParamBuilder(ShaderPlan& plan, bool bake) : plan_(plan), bake_(bake) {}
+
+    // A setting of `slots`; per-frame values are always block members, others are baked on request.
+    void add(const std::string& name, std::vector<double> value, std::vector<std::string> slots, bool integer = false,
+             std::string perFrame = {}) {
+        std::string type = value.size() == 2 ? (integer ? "ivec2" : "vec2") : (integer ? "int" : "float");
+        ParamMember m{name, type, std::move(value), std::move(slots), std::move(perFrame)};
+        if (bake_ && m.perFrame.empty()) {
+            m.constantId = nextConstant_;
+            nextConstant_ += uint32_t(m.value.size());
+            constants_.push_back(std::move(m));
+            return;
+        }
+        // std140: scalars align to 4, two-component vectors to 8.
+        uint32_t size = uint32_t(m.value.size()) * 4;
+        m.offset = (plan_.paramBlockSize + size - 1) / size * size;
+        plan_.paramBlockSize = m.offset + size;
+        plan_.params.push_back(std::move(m));
+    }
+
+    void finish() {
+        plan_.paramBlockSize = (plan_.paramBlockSize + 15) / 16 * 16;
+        plan_.params.insert(plan_.params.end(), constants_.begin(), constants_.end());
+    }
+
+private:
+    ShaderPlan& plan_;
+    bool bake_;
+    uint32_t nextConstant_ = 0;
+    std::vector<ParamMember> constants_;
+};
 
 }  // namespace
 
-ShaderPlan planShader(const Material& material, const std::filesystem::path& templateOverride) {
+const ParamMember* ShaderPlan::param(const std::string& name) const {
+    for (const ParamMember& p : params)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     ShaderPlan plan;
     plan.materialName = material.name;
     auto error = [&](std::string message) {
         plan.diagnostics.push_back({Diagnostic::Severity::Error, {plan.templateName, 0, 0}, "", std::move(message), {}});
     };
 
-    std::string ref = templateOverride.empty() ? material.templateName : templateOverride.string();
+    std::string ref = options.templateFile.empty() ? material.templateName : options.templateFile.string();
     if (ref.ends_with(".glsl")) {
         plan.templateName = ref;
         std::ifstream in(ref, std::ios::binary);
@@ -61,23 +98,45 @@ ShaderPlan planShader(const Material& material, const std::filesystem::path& tem
                                         "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out", {}});
             continue;
         }
-        plan.slots.push_back({&slot, std::string(toString(slot.kind)) + (slot.hex.enabled ? ".hex" : ".plain"), binding++});
         const HexTiling& h = slot.hex;
-        addParam(plan, slot.name + "_tiling", {h.tiling[0], h.tiling[1]});
-        if (h.enabled) {
-            addParam(plan, slot.name + "_rotation", {h.rotation});
-            addParam(plan, slot.name + "_falloff", {h.falloff});
-            addParam(plan, slot.name + "_falloffcontrast", {h.falloffcontrast});
-            addParam(plan, slot.name + "_exponent", {h.exponent});
-            if (h.splitCoordinates) {
-                // Filled per frame by the engine from its double-precision origin (docs/precision.md).
-                addParam(plan, slot.name + "_origin_cell", {0, 0}, true,
-                         "floor(st / (28, 1)) with st = origin_uv * tiling in double, stored modulo 2^32 (hexc/origin.h)");
-                addParam(plan, slot.name + "_origin_offset", {0, 0}, false, "st - cell * (28, 1), as float (hexc/origin.h)");
-            }
+        // Without specialisation every feature is emitted, and the values decide at run time.
+        bool all = !options.specialize;
+        SlotPlan sp{&slot, std::string(toString(slot.kind)) + (h.enabled ? ".hex" : ".plain"), binding++, 0,
+                    all || h.falloffcontrast != 0, all || h.falloff != 0.5};
+        size_t lattice = 0;
+        while (lattice < plan.lattices.size() && !(options.shareLattice && sameLattice(plan.lattices[lattice].settings, h))) ++lattice;
+        if (lattice == plan.lattices.size()) plan.lattices.push_back({slot.name, h, all || h.rotation != 0});
+        sp.lattice = lattice;
+        plan.slots.push_back(sp);
+    }
+
+    // Parameters: each lattice's, then each slot's, only for the features emitted.
+    ParamBuilder params(plan, options.bake);
+    for (size_t i = 0; i < plan.lattices.size(); ++i) {
+        const LatticePlan& l = plan.lattices[i];
+        std::vector<std::string> users;
+        for (const SlotPlan& sp : plan.slots)
+            if (sp.lattice == i) users.push_back(sp.slot->name);
+        const HexTiling& h = l.settings;
+        params.add(l.name + "_tiling", {h.tiling[0], h.tiling[1]}, users);
+        if (!h.enabled) continue;
+        if (l.rotate) params.add(l.name + "_rotation", {h.rotation}, users);
+        if (h.splitCoordinates) {
+            // Filled per frame by the engine from its double-precision origin (docs/precision.md).
+            params.add(l.name + "_origin_cell", {0, 0}, users, true,
+                       "floor(st / (28, 1)) with st = origin_uv * tiling in double, stored modulo 2^32 (hexc/origin.h)");
+            params.add(l.name + "_origin_offset", {0, 0}, users, false, "st - cell * (28, 1), as float (hexc/origin.h)");
         }
     }
-    plan.paramBlockSize = (plan.paramBlockSize + 15) / 16 * 16;
+    for (const SlotPlan& sp : plan.slots) {
+        const HexTiling& h = sp.slot->hex;
+        if (!h.enabled) continue;
+        const std::string& n = sp.slot->name;
+        if (sp.gain) params.add(n + "_falloff", {h.falloff}, {n});
+        if (sp.metric) params.add(n + "_falloffcontrast", {h.falloffcontrast}, {n});
+        params.add(n + "_exponent", {h.exponent}, {n});
+    }
+    params.finish();
     return plan;
 }
 

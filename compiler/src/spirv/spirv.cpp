@@ -91,7 +91,7 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     return result;
 }
 
-SpirvResult optimizeSpirv(const std::vector<uint32_t>& words) {
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants) {
     SpirvResult result;
     std::string messages;
     auto consumer = [&messages](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
@@ -111,6 +111,9 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words) {
     // Legalisation first: glslang's HLSL front end passes opaque handles through locals and
     // parameters, which Vulkan only accepts once they are inlined and forwarded. It is a no-op
     // cost for GLSL input and keeps one path for both.
+    // Baked settings arrive as specialisation constants; freezing turns them into constants at their
+    // default values, which the passes below fold like literals.
+    if (freezeConstants) optimizer.RegisterPass(spvtools::CreateFreezeSpecConstantValuePass());
     optimizer.RegisterLegalizationPasses();
     // Then the performance recipe (spirv-opt -O): inlines the per-slot functions and the library,
     // breaks the HexcTiles struct into scalars, folds constants and removes library code the

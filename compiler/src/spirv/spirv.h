@@ -26,7 +26,8 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
                            SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main");
 
 // Validates, optimises for performance and validates again. Diagnostics only on failure (a hexc bug).
-SpirvResult optimizeSpirv(const std::vector<uint32_t>& words);
+// freezeConstants: specialisation constants become constants first, so the optimiser folds them.
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants = false);
 
 // Human-readable SPIR-V, for tests and debugging.
 std::string disassemble(const std::vector<uint32_t>& words);

@@ -53,11 +53,11 @@ const Slot& slotForOutput(const Material& material, RenderOutput output, const s
         default: return true;
         }
     };
-    const char* what = output == RenderOutput::Albedo ? "a color or scalar slot" : output == RenderOutput::Weights ? "a slot" : "a normal slot";
+    const char* what = output == RenderOutput::Albedo ? "color or scalar slot" : output == RenderOutput::Weights ? "slot" : "normal slot";
     if (!slotName.empty()) {
         for (const Slot& s : material.slots) {
             if (s.name != slotName) continue;
-            if (!fits(s)) throw std::invalid_argument("slot `" + slotName + "` is of kind " + std::string(toString(s.kind)) + "; this output needs " + what);
+            if (!fits(s)) throw std::invalid_argument("slot `" + slotName + "` is of kind " + std::string(toString(s.kind)) + "; this output needs a " + what);
             return s;
         }
         throw std::invalid_argument("material `" + material.name + "` has no slot `" + slotName + "`");
@@ -102,9 +102,10 @@ std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const Parame
 }
 
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
-             ExecutedTarget target, int timedFrames, std::vector<double>* frameMs, const ParameterValues& parameters) {
+             ExecutedTarget target, int timedFrames, std::vector<double>* frameMs, const ParameterValues& parameters,
+             const CompileOptions& compileOptions) {
     Material m = renderedMaterial(material, output, slotName);
-    CompileOptions options;
+    CompileOptions options = compileOptions;
     options.targets = {Target::Spirv, target == ExecutedTarget::Hlsl ? Target::Hlsl : Target::Glsl};
     CompileResult compiled = compile(m, options);
     if (!compiled.ok()) throw CompileError{compiled.diagnostics};

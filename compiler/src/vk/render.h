@@ -38,11 +38,12 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
 // Parameter values by member name, replacing the material's (e.g. a split-coordinates origin).
 using ParameterValues = std::map<std::string, std::vector<double>>;
 
-// Compiles (throws CompileError on failure), uploads and draws. `frameMs`, if given, receives one GPU
-// time per timed frame (`timedFrames` after one untimed warm-up frame).
+// Compiles (throws CompileError on failure; `compileOptions` apart from its targets apply), uploads and
+// draws. `frameMs`, if given, receives one GPU time per timed frame (`timedFrames` after one untimed
+// warm-up frame).
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
              ExecutedTarget target = ExecutedTarget::Spirv, int timedFrames = 0, std::vector<double>* frameMs = nullptr,
-             const ParameterValues& parameters = {});
+             const ParameterValues& parameters = {}, const CompileOptions& compileOptions = {});
 
 // Draws a fragment shader of the embedded templates (no material) with the given uniform block.
 Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view);

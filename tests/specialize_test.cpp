@@ -1,0 +1,182 @@
+// Skipping what a material does not need: the SPIR-V holds only the code each slot's settings use, slots
+// with the same lattice share it, baked settings fold away, and none of it changes a pixel.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "hexc/compiler.h"
+#include "spirv/spirv.h"
+#include "support.h"
+#include "vk/precision.h"
+#include "vk/render.h"
+
+using namespace hexc;
+using hexc::test::runner;
+
+namespace {
+
+Material oneSlot(const std::string& kind, const std::string& texture, const std::string& hextiling, const std::string& templ = "value") {
+    ParseResult r = parseMaterial(R"({"name": "m", "template": ")" + templ + R"(", "slots": [{"name": "s", "kind": ")" + kind +
+                                      R"(", "texture": ")" + texture + R"(", "hextiling": {)" + hextiling + "}}]}",
+                                  "materials/m.json");
+    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
+    return *r.material;
+}
+
+// How often an instruction (e.g. "OpImageSampleExplicitLod", or "Sin" for GLSL.std.450 Sin) appears.
+size_t count(const std::vector<uint32_t>& spirv, const std::string& op) {
+    std::string text = disassemble(spirv);
+    std::string needle = op.rfind("Op", 0) == 0 ? " " + op + " " : " " + op + " ";
+    size_t n = 0;
+    for (size_t p = 0; (p = text.find(needle, p)) != std::string::npos; ++p) ++n;
+    return n;
+}
+
+std::vector<uint32_t> spirv(const Material& m, const CompileOptions& options = {}) {
+    CompileResult r = compile(m, options);
+    EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    return r.spirv;
+}
+
+CompileOptions general() {
+    CompileOptions o;
+    o.specialize = false;
+    return o;
+}
+
+const std::string kAlbedo = "textures/rock_albedo.png", kNormal = "textures/rock_normal.png";
+
+TEST(Specialize, RotationOffHasNoTrigonometry) {
+    auto on = spirv(oneSlot("color", kAlbedo, R"("rotation": 1)")), off = spirv(oneSlot("color", kAlbedo, R"("rotation": 0)"));
+    EXPECT_EQ(count(on, "Sin"), 3u);  // one per tile
+    EXPECT_EQ(count(on, "Cos"), 3u);
+    EXPECT_EQ(count(off, "Sin") + count(off, "Cos"), 0u);
+    EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, R"("rotation": 0)"), general()), "Sin"), 3u);  // the general shader keeps it
+}
+
+TEST(Specialize, GainAtOneHalfIsLeftOut) {
+    // Eq. 5's exponent k = log(1 - r) / log(1/2) is the only Log; the gain adds three Pow to the weights' three.
+    auto gain = spirv(oneSlot("color", kAlbedo, R"("falloff": 0.75)")), none = spirv(oneSlot("color", kAlbedo, R"("falloff": 0.5)"));
+    EXPECT_EQ(count(gain, "Log"), 1u);  // log(1 - r); log(1/2) folds
+    EXPECT_EQ(count(none, "Log"), 0u);
+    EXPECT_LT(count(none, "Pow"), count(gain, "Pow"));
+}
+
+TEST(Specialize, NoFalloffMetricAtFalloffContrastZero) {
+    // The normal path's metric is sqrt(|d|^2 / (1 + |d|^2)) of the three tiles.
+    auto metric = spirv(oneSlot("normal", kNormal, R"("falloffcontrast": 0.6)")), none = spirv(oneSlot("normal", kNormal, R"("falloffcontrast": 0)"));
+    EXPECT_EQ(count(metric, "Sqrt"), 1u);  // one vec3 Sqrt for the three tiles
+    EXPECT_EQ(count(none, "Sqrt"), 0u);
+}
+
+TEST(Specialize, PlainSlotSamplesOnce) {
+    EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, R"("enabled": false)")), "OpImageSampleImplicitLod"), 1u);
+    EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, R"("enabled": false)")), "OpImageSampleExplicitLod"), 0u);
+    EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, "")), "OpImageSampleExplicitLod"), 3u);
+}
+
+TEST(Specialize, WeightsOnlyWhenAsked) {
+    // Listing 7's colour index is the shader's only integer remainder.
+    EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, "", "value")), "OpSMod") + count(spirv(oneSlot("color", kAlbedo, "", "value")), "OpSRem"), 0u);
+    EXPECT_GT(count(spirv(oneSlot("color", kAlbedo, "", "weights")), "OpSMod") + count(spirv(oneSlot("color", kAlbedo, "", "weights")), "OpSRem"), 0u);
+}
+
+TEST(Specialize, UnusedSettingsAreNotParameters) {
+    CompileResult r = compile(oneSlot("color", kAlbedo, R"("rotation": 0, "falloff": 0.5, "falloffcontrast": 0)"));
+    ASSERT_TRUE(r.ok());
+    std::string manifest;
+    for (const auto& f : r.files)
+        if (f.name.ends_with(".manifest.json")) manifest = f.contents;
+    auto members = nlohmann::json::parse(manifest)["parameters"]["members"];
+    std::vector<std::string> names;
+    for (const auto& m : members) names.push_back(m["name"]);
+    EXPECT_EQ(names, (std::vector<std::string>{"s_tiling", "s_exponent"}));
+}
+
+TEST(SharedLattice, OneLatticeForSlotsWithTheSameTilingAndRotation) {
+    Material rock = *parseMaterialFile("materials/rock.json").material;
+    CompileOptions perSlot;
+    perSlot.shareLattice = false;
+    auto shared = spirv(rock), separate = spirv(rock, perSlot);
+    std::printf("  rock.json: %zu SPIR-V words with a shared lattice, %zu with one per slot; Sin %zu vs %zu\n", shared.size(),
+                separate.size(), count(shared, "Sin"), count(separate, "Sin"));
+    EXPECT_EQ(count(shared, "Sin"), 3u);    // three tiles, once
+    EXPECT_EQ(count(separate, "Sin"), 9u);  // three tiles for each of three slots
+    EXPECT_EQ(count(shared, "OpImageSampleExplicitLod"), 9u);  // the fetches stay per slot
+    EXPECT_LT(shared.size(), separate.size());
+}
+
+TEST(Bake, SettingsFoldIntoTheCode) {
+    Material rock = *parseMaterialFile("materials/rock.json").material;
+    CompileOptions baked;
+    baked.bake = true;
+    CompileResult r = compile(rock, baked);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    EXPECT_EQ(count(r.spirv, "OpSpecConstant"), 0u);  // frozen
+    EXPECT_EQ(count(r.spirv, "Log"), 0u);            // the gain's exponent is a constant now
+    std::string manifest;
+    for (const auto& f : r.files)
+        if (f.name.ends_with(".manifest.json")) manifest = f.contents;
+    auto m = nlohmann::json::parse(manifest);
+    EXPECT_EQ(m["parameters"]["members"].size(), 0u);
+    EXPECT_EQ(m["baked_constants"].size(), 10u);
+    EXPECT_LT(r.spirv.size(), spirv(rock).size());
+}
+
+// ---- The skips change no pixel ---------------------------------------------------------------------------
+struct Variant {
+    const char* name;
+    const char* kind;
+    const char* hextiling;
+};
+
+TEST(Specialize, SpecialisedAndGeneralShadersRenderTheSameImage) {
+    REQUIRE_VULKAN();
+    const Variant variants[] = {
+        {"rotation off", "color", R"("tiling": 4, "rotation": 0)"},
+        {"gain off", "color", R"("tiling": 4, "falloff": 0.5)"},
+        {"metric off", "color", R"("tiling": 4, "falloffcontrast": 0)"},
+        {"all off", "color", R"("tiling": 4, "rotation": 0, "falloff": 0.5, "falloffcontrast": 0)"},
+        {"normal, rotation and metric off", "normal", R"("tiling": 4, "rotation": 0, "falloffcontrast": 0)"},
+        {"paper, rotation off", "color", R"("tiling": 4, "rotation": 0, "mode": "paper")"},
+        {"plain tiling", "color", R"("tiling": 4, "enabled": false)"},
+    };
+    const View view{96, 96, {0.2, 0.3, 0.6, 0.7}};
+    for (const Variant& v : variants) {
+        Material m = oneSlot(v.kind, std::string(v.kind) == "normal" ? kNormal : kAlbedo, v.hextiling);
+        auto value = std::string(v.kind) == "normal" ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
+        for (auto output : {value, vk::RenderOutput::Weights}) {
+            Image specialised = vk::render(*runner(&whyNoVulkan), m, output, "", view);
+            Image all = vk::render(*runner(&whyNoVulkan), m, output, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, general());
+            auto e = vk::compareImages(specialised, all, 4);
+            std::printf("  %-32s %-7s specialised against general: max difference %.2e\n", v.name,
+                        output == vk::RenderOutput::Weights ? "weights" : "value", e.max);
+            // A skipped feature is an exact no-op: rotating by cos 0 = 1, sin 0 = 0, mixing with weight 0,
+            // skipping the gain at r = 0.5 all leave the float bits as they were. One exception: without the
+            // rotation, the paper's sample point (st - c) + c + hash lets the driver (llvmpipe compiles with
+            // fast-math) simplify (st - c) + c to st, an ulp of st (2^-22 here, st < 4) off, which moves a
+            // bilinear sample by at most that times 256 texels times the largest texel step (1).
+            double bound = std::string(v.hextiling).find("paper") != std::string::npos ? std::ldexp(1.0, -22) * 256 : 0.0;
+            EXPECT_LE(e.max, bound) << v.name;
+        }
+    }
+}
+
+TEST(SharedLattice, SharingAndBakingChangeNoPixel) {
+    REQUIRE_VULKAN();
+    Material rock = *parseMaterialFile("materials/rock.json").material;
+    const View view{128, 128, {0.2, 0.3, 0.6, 0.7}};
+    CompileOptions perSlot, baked;
+    perSlot.shareLattice = false;
+    baked.bake = true;
+    Image shared = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Shaded, "", view);
+    Image separate = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, perSlot);
+    Image folded = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, baked);
+    EXPECT_EQ(vk::compareImages(shared, separate, 4).max, 0.0);  // the same arithmetic, done once
+    // Folding constants may reassociate a few float operations: a handful of roundings of values near 1.
+    double e = vk::compareImages(shared, folded, 4).max;
+    std::printf("  baked against uniform settings: max difference %.2e\n", e);
+    EXPECT_LE(e, 16 * std::ldexp(1.0, -24));
+}
+
+}  // namespace
