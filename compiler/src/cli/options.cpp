@@ -25,6 +25,11 @@ Options:
   --hlsl-sm N              HLSL shader model: 50 (default), 51, 60, 61, 62, 63, 64, 65, 66
   --glsl-version V         450 (default), 330 or 310es
   --msl-version V          2.0 (default), 2.1, 2.2, 2.3 or 2.4
+  --bake                   numeric settings become constants folded into the code (one shader per
+                           material) instead of uniforms (one shader serves many materials)
+  --no-specialize          emit every feature (rotation, gain, falloff metric) even when a setting
+                           turns it off; the uniforms decide at run time
+  --no-shared-lattice      evaluate the lattice per slot even where slots could share it
   -q, --quiet              print errors only
   -h, --help               this text
   --version                print the version
@@ -86,6 +91,12 @@ Arguments parseArguments(const std::vector<std::string>& args) {
             if (v.size() != 3 || v[0] != '2' || v[1] != '.' || v[2] < '0' || v[2] > '4') throw UsageError{"--msl-version expects 2.0 to 2.4, got " + v};
             a.options.mslMajor = 2;
             a.options.mslMinor = uint32_t(v[2] - '0');
+        } else if (arg == "--bake") {
+            a.options.bake = true;
+        } else if (arg == "--no-specialize") {
+            a.options.specialize = false;
+        } else if (arg == "--no-shared-lattice") {
+            a.options.shareLattice = false;
         } else if (arg == "-q" || arg == "--quiet") {
             a.quiet = true;
         } else if (!arg.empty() && arg[0] == '-') {
