@@ -53,7 +53,7 @@ const InvalidFile kInvalidFiles[] = {
     {"slots_empty", "5:12: error: /slots: expected 1 to 16 slots, got 0"},
     {"srgb_normal", "10:21: error: /slots/0/colorspace: a normal map holds vectors and must be `linear`, got \"srgb\""},
     {"template_unknown",
-     "4:15: error: /template: unknown template \"pbr\"; expected a built-in template (`lit`, `unlit`, `weights`, `value`) or a path "
+     "4:15: error: /template: unknown template \"pbr\"; expected a built-in template (`lit`, `unlit`, `weights`, `value`, `depth`, `shadow`) or a path "
      "to a .glsl file"},
     {"tiling_wrong_length",
      "6:15: error: /hextiling/tiling: expected a number > 0 or an array [u, v] of two numbers > 0, got an array of 1"},
@@ -132,7 +132,7 @@ TEST(Validation, NormalMapNeedsThreeChannels) {
 TEST(Validation, TemplateTypoSuggestsTheBuiltin) {
     EXPECT_EQ(diagnose(std::string(R"({"name": "m", "template": "litt", "slots": [)") + kSlot + "]}"),
               std::vector<std::string>{"materials/t.json:1:27: error: /template: unknown template \"litt\"; expected a built-in "
-                                       "template (`lit`, `unlit`, `weights`, `value`) or a path to a .glsl file (did you mean `lit`?)"});
+                                       "template (`lit`, `unlit`, `weights`, `value`, `depth`, `shadow`) or a path to a .glsl file (did you mean `lit`?)"});
 }
 
 TEST(Validation, MissingTemplateFile) {

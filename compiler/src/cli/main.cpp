@@ -1,10 +1,8 @@
-// hexc: a thin command line over libhexc. Parses every material, compiles all of them, and writes
-// outputs only when everything succeeded.
+// hexc: a thin command line over libhexc: compile (cli/build), render and preview (cli/render).
 #include <iostream>
-#include <set>
 
+#include "cli/build.h"
 #include "cli/options.h"
-#include "cli/outputs.h"
 #include "cli/render.h"
 #include "hexc/compiler.h"
 
@@ -24,37 +22,5 @@ int main(int argc, char** argv) {
         return cli::kUsage;
     }
 
-    std::vector<OutputFile> outputs;
-    std::set<std::string> names;
-    bool failed = false;
-    for (const auto& path : a.materials) {
-        ParseResult parsed = parseMaterialFile(path);
-        CompileResult compiled = parsed.material ? compile(*parsed.material, a.options) : CompileResult{};
-        for (const Diagnostics* diags : {&parsed.diagnostics, &compiled.diagnostics})
-            for (const Diagnostic& d : *diags)
-                if (!a.quiet || d.severity == Diagnostic::Severity::Error) std::cerr << d.format() << "\n";
-        if (!parsed.material || !compiled.ok()) {
-            failed = true;
-            continue;
-        }
-        if (!names.insert(parsed.material->name).second) {
-            std::cerr << path.string() << ": error: another material on the command line is also named `" << parsed.material->name
-                      << "`; their outputs would overwrite each other\n";
-            failed = true;
-        }
-        outputs.insert(outputs.end(), compiled.files.begin(), compiled.files.end());
-    }
-    if (failed) {
-        std::cerr << "hexc: nothing written\n";
-        return cli::kInvalidInput;
-    }
-    try {
-        std::filesystem::create_directories(a.outDir);
-        for (const OutputFile& f : outputs) cli::writeAtomically(a.outDir, f.name, f.contents);
-    } catch (const std::exception& e) {
-        std::cerr << "hexc: " << e.what() << "\n";
-        return cli::kWriteFailed;
-    }
-    if (!a.quiet) std::cerr << "hexc: wrote " << outputs.size() << " files to " << a.outDir.string() << "\n";
-    return cli::kOk;
+    return cli::buildCommand(a);
 }

@@ -8,7 +8,7 @@ namespace hexc::cli {
 const char* const kHelp = R"(hexc - compile hex-tiled materials to SPIR-V, HLSL, GLSL and MSL
 
 Usage:
-  hexc MATERIAL.json [MORE.json ...] -o DIR [options]
+  hexc MATERIAL.json|SCENE.json [MORE.json ...] -o DIR [options]
   hexc render MATERIAL.json -o IMAGE.{pfm,png} [options]   (hexc render --help)
   hexc preview MATERIAL.json -o PREVIEW.png [--cell N]     (hexc preview --help)
   hexc --help | --version
@@ -16,7 +16,10 @@ Usage:
 Reads each material (JSON, see docs/material-format.md), injects hex-tiling into every texture slot of
 its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:
   DIR/<name>.frag.spv  .frag.hlsl  .frag.glsl  .frag.metal  and  DIR/<name>.manifest.json
-Nothing is written unless every material compiles; each file is written atomically.
+A scene (a JSON file with a "scene" key, see docs/scenes.md) compiles each (material, pass) variant it
+uses, and writes shaders that several variants share once. Inputs unchanged since the last run (material,
+textures, template, options, hexc version) are not compiled again. Nothing is written unless everything
+compiles; each file is written atomically.
 
 Options:
   -o, --out DIR            output folder (created if missing)
@@ -30,6 +33,9 @@ Options:
   --no-specialize          emit every feature (rotation, gain, falloff metric) even when a setting
                            turns it off; the uniforms decide at run time
   --no-shared-lattice      evaluate the lattice per slot even where slots could share it
+  --depfile FILE           write a make-style dependency file (outputs: inputs) for Make and Ninja
+  --variant M.PASS         compile only this scene variant (repeatable); one the scene does not have is
+                           an error
   -q, --quiet              print errors only
   -h, --help               this text
   --version                print the version
@@ -91,6 +97,10 @@ Arguments parseArguments(const std::vector<std::string>& args) {
             if (v.size() != 3 || v[0] != '2' || v[1] != '.' || v[2] < '0' || v[2] > '4') throw UsageError{"--msl-version expects 2.0 to 2.4, got " + v};
             a.options.mslMajor = 2;
             a.options.mslMinor = uint32_t(v[2] - '0');
+        } else if (arg == "--depfile") {
+            a.depfile = value(i);
+        } else if (arg == "--variant") {
+            a.variants.push_back(value(i));
         } else if (arg == "--bake") {
             a.options.bake = true;
         } else if (arg == "--no-specialize") {
@@ -105,7 +115,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
             a.materials.emplace_back(arg);
         }
     }
-    if (a.materials.empty()) throw UsageError{"no material given (see hexc --help)"};
+    if (a.materials.empty()) throw UsageError{"no material or scene given (see hexc --help)"};
     if (a.outDir.empty()) throw UsageError{"no output folder given: use -o DIR"};
     return a;
 }

@@ -11,6 +11,7 @@
 #include "common/templates.h"
 #include "hexc/image.h"
 #include "hexc/material.h"
+#include "hexc/scene.h"
 #include "material/json_locator.h"
 
 namespace hexc {
@@ -90,7 +91,95 @@ public:
         return m;
     }
 
+    // A scene: its own keys, then each material file it lists, parsed on its own (their diagnostics name
+    // their own files).
+    Scene runScene(const json& doc) {
+        Scene scene;
+        scene.sourceFile = file_;
+        static const std::vector<std::string> kSceneKeys = {"$schema", "scene", "materials", "passes"};
+        static const std::vector<std::string> kPassKeys = {"name", "template", "slots", "materials"};
+        static const std::regex identifier("[A-Za-z0-9_-]{1,64}");
+        if (!doc.is_object()) {
+            error("", "expected a scene object, got " + typeName(doc));
+            return scene;
+        }
+        checkKeys(doc, "", kSceneKeys);
+        scene.name = string(doc["scene"], "/scene");
+        if (doc["scene"].is_string() && !std::regex_match(scene.name, identifier))
+            error("/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
+        if (requireKey(doc, "", "materials", "an array of material files")) {
+            const json& list = doc["materials"];
+            if (!list.is_array() || list.empty()) error("/materials", "expected a non-empty array of material file paths");
+            for (size_t i = 0; list.is_array() && i < list.size(); ++i) {
+                std::string p = pointerAppend("/materials", i);
+                std::string path = string(list[i], p);
+                if (path.empty()) continue;
+                ParseResult r = parseMaterialFile(dir_ / path);
+                diags.insert(diags.end(), r.diagnostics.begin(), r.diagnostics.end());
+                if (!r.material) {
+                    error(p, "material " + (dir_ / path).string() + " is invalid (see above)");
+                    continue;
+                }
+                for (const Material& other : scene.materials)
+                    if (other.name == r.material->name) error(p, "two materials are named `" + other.name + "`; variant files would collide");
+                scene.materials.push_back(std::move(*r.material));
+            }
+        }
+        if (requireKey(doc, "", "passes", "an array of passes")) {
+            const json& passes = doc["passes"];
+            if (!passes.is_array() || passes.empty()) error("/passes", "expected a non-empty array of passes");
+            for (size_t i = 0; passes.is_array() && i < passes.size(); ++i) {
+                std::string p = pointerAppend("/passes", i);
+                const json& v = passes[i];
+                if (!v.is_object()) {
+                    error(p, "expected a pass object, got " + typeName(v));
+                    continue;
+                }
+                checkKeys(v, p, kPassKeys);
+                ScenePass pass;
+                if (requireKey(v, p, "name", "a string")) {
+                    pass.name = string(v["name"], p + "/name");
+                    if (v["name"].is_string() && !std::regex_match(pass.name, identifier))
+                        error(p + "/name", "expected 1-64 letters, digits, `_` or `-`, got \"" + pass.name + "\"");
+                    for (const ScenePass& other : scene.passes)
+                        if (other.name == pass.name) error(p + "/name", "duplicate pass name \"" + pass.name + "\"");
+                }
+                if (v.contains("template")) pass.templateName = templateRef(v["template"], p + "/template");
+                pass.slots = names(v, p, "slots");
+                pass.materials = names(v, p, "materials");
+                if (pass.materials)
+                    for (size_t j = 0; j < pass.materials->size(); ++j) {
+                        const std::string& name = (*pass.materials)[j];
+                        bool known = false;
+                        for (const Material& m : scene.materials) known |= m.name == name;
+                        if (!known) {
+                            std::vector<std::string> all;
+                            for (const Material& m : scene.materials) all.push_back(m.name);
+                            std::string hint;
+                            if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
+                            error(pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
+                        }
+                    }
+                scene.passes.push_back(std::move(pass));
+            }
+        }
+        return scene;
+    }
+
 private:
+    // An optional array of names under `key`.
+    std::optional<std::vector<std::string>> names(const json& obj, const std::string& pointer, const std::string& key) {
+        if (!obj.contains(key)) return std::nullopt;
+        std::vector<std::string> out;
+        const json& v = obj[key];
+        if (!v.is_array()) {
+            error(pointer + "/" + key, "expected an array of names, got " + typeName(v));
+            return out;
+        }
+        for (size_t i = 0; i < v.size(); ++i) out.push_back(string(v[i], pointerAppend(pointer + "/" + key, i)));
+        return out;
+    }
+
     void checkKeys(const json& obj, const std::string& pointer, const std::vector<std::string>& known) {
         for (const auto& [key, value] : obj.items()) {
             if (std::find(known.begin(), known.end(), key) != known.end()) continue;
@@ -313,18 +402,15 @@ private:
     std::filesystem::path file_, dir_;
 };
 
-}  // namespace
-
-ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
-    ParseResult result;
-    json doc;
+// Parses JSON text; on a syntax error returns nullopt with the located diagnostic in *diags.
+std::optional<json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags) {
     auto syntaxError = [&](size_t offset, std::string message) {
         TextPos p = textPosition(text, offset);
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), p.line, p.col}, "", std::move(message), {}});
-        return result;
+        diags->push_back({Diagnostic::Severity::Error, {file.string(), p.line, p.col}, "", std::move(message), {}});
+        return std::nullopt;
     };
     try {
-        doc = json::parse(text);
+        return json::parse(text);
     } catch (const json::parse_error& e) {
         // nlohmann's message carries its own "[json.exception...] parse error at line L, column C: " prefix;
         // the position is recomputed from the byte offset (one past the offending character).
@@ -340,23 +426,59 @@ ParseResult parseMaterial(std::string_view text, const std::filesystem::path& fi
         size_t at = literal.empty() ? 0 : text.find(literal);
         return syntaxError(at == std::string_view::npos ? 0 : at, "number " + literal + " is out of range (expected a finite number)");
     }
+}
+
+std::optional<std::string> readFile(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
+    ParseResult result;
+    std::optional<json> doc = parseJson(text, file, &result.diagnostics);
+    if (!doc) return result;
     Validator v(text, file);
-    Material m = v.run(doc);
+    Material m = v.run(*doc);
     result.diagnostics = std::move(v.diags);
     if (!hasErrors(result.diagnostics)) result.material = std::move(m);
     return result;
 }
 
 ParseResult parseMaterialFile(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
+    std::optional<std::string> text = readFile(file);
+    if (!text) {
         ParseResult r;
         r.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot open material file", {}});
         return r;
     }
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return parseMaterial(ss.str(), file);
+    return parseMaterial(*text, file);
+}
+
+bool isSceneDocument(std::string_view text) {
+    Diagnostics ignored;
+    std::optional<json> doc = parseJson(text, {}, &ignored);
+    return doc && doc->is_object() && doc->contains("scene");
+}
+
+SceneParseResult parseSceneFile(const std::filesystem::path& file) {
+    SceneParseResult result;
+    std::optional<std::string> text = readFile(file);
+    if (!text) {
+        result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot open scene file", {}});
+        return result;
+    }
+    std::optional<json> doc = parseJson(*text, file, &result.diagnostics);
+    if (!doc) return result;
+    Validator v(*text, file);
+    Scene scene = v.runScene(*doc);
+    result.diagnostics = std::move(v.diags);
+    if (!hasErrors(result.diagnostics)) result.scene = std::move(scene);
+    return result;
 }
 
 std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }

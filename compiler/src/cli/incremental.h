@@ -1,0 +1,26 @@
+#pragma once
+// Incremental builds: a material (or scene variant) whose inputs have not changed since its outputs were
+// written is not compiled again. Its inputs are hashed: the material file, the scene file, every texture's
+// bytes, the template's text, the compile options and the hexc version.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "hexc/compiler.h"
+#include "hexc/material.h"
+
+namespace hexc::cli {
+
+// The files a compile reads (for the depfile): the material file, its textures, a user template.
+std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options);
+
+// FNV-1a (64 bit) of everything a compile depends on, as 16 hex digits; `extra` adds e.g. a scene file.
+std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::filesystem::path>& extra);
+
+// The stamp `dir/.<name>.hexc-stamp` records the hash and the outputs of the last successful compile.
+bool upToDate(const std::filesystem::path& dir, const std::string& name, const std::string& hash);
+std::string stampText(const std::string& hash, const std::vector<std::string>& outputs);
+std::string stampName(const std::string& name);
+
+}  // namespace hexc::cli

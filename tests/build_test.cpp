@@ -1,0 +1,140 @@
+// Scenes, incremental builds and depfiles, through the command line as a build system runs it.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "hexc/scene.h"
+#include "support.h"
+
+using namespace hexc;
+using hexc::test::runHexc;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// A private copy of materials/ (examples, scene, textures) that a test may change.
+fs::path copyOfMaterials(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / name;
+    fs::remove_all(dir);
+    fs::copy("materials", dir, fs::copy_options::recursive);
+    return dir;
+}
+
+size_t countFiles(const fs::path& dir, const std::string& suffix) {
+    size_t n = 0;
+    for (const auto& e : fs::directory_iterator(dir)) n += e.path().string().ends_with(suffix);
+    return n;
+}
+
+TEST(Scene, CompilesOnlyTheVariantsItUsesAndSharesEqualShaders) {
+    fs::path out = fs::temp_directory_path() / "hexc_scene_out";
+    fs::remove_all(out);
+    std::string err;
+    ASSERT_EQ(runHexc("materials/scenes/forest.json -o " + out.string(), &err), 0) << err;
+    // 3 materials x 4 passes = 12 possible; the shadow pass renders 2 materials, weights 1: 9 used.
+    EXPECT_NE(err.find("hexc: scene forest: 12 variants possible, 9 used"), std::string::npos) << err;
+    // The depth pass reads no slot, so its three variants are one shader.
+    EXPECT_NE(err.find("9 compiled, 0 up to date, 2 scene shaders deduplicated"), std::string::npos) << err;
+    EXPECT_EQ(countFiles(out, ".manifest.json"), 9u);
+    EXPECT_EQ(countFiles(out, ".frag.spv"), 7u);
+    auto depth = [&](const std::string& m) { return nlohmann::json::parse(read(out / (m + ".depth.manifest.json"))); };
+    EXPECT_EQ(depth("rock")["targets"]["spirv"]["file"], depth("tiles")["targets"]["spirv"]["file"]);
+    EXPECT_EQ(depth("rock")["slots"].size(), 0u);
+    auto shadow = nlohmann::json::parse(read(out / "rock.shadow.manifest.json"));
+    ASSERT_EQ(shadow["slots"].size(), 1u);  // the pass reads albedo only
+    EXPECT_EQ(shadow["slots"][0]["name"], "albedo");
+    auto index = nlohmann::json::parse(read(out / "forest.scene.json"));
+    EXPECT_EQ(index["variants"].size(), 9u);
+    EXPECT_TRUE(fs::exists(out / index["variants"]["rock.main"]["manifest"].get<std::string>()));
+}
+
+TEST(Scene, AVariantTheSceneFiltersOutIsAnError) {
+    std::string err;
+    fs::path out = fs::temp_directory_path() / "hexc_scene_variant";
+    fs::remove_all(out);
+    EXPECT_EQ(runHexc("materials/scenes/forest.json -o " + out.string() + " --variant rock.main --variant rock_normal.shadow", &err), 1);
+    EXPECT_EQ(err, "hexc: error: --variant rock_normal.shadow: pass `shadow` of scene `forest` renders only rock, tiles, not "
+                   "`rock_normal`\nhexc: nothing written\n");
+    EXPECT_FALSE(fs::exists(out));
+    ASSERT_EQ(runHexc("materials/scenes/forest.json -o " + out.string() + " --variant rock.main", &err), 0);
+    EXPECT_EQ(countFiles(out, ".manifest.json"), 1u);
+}
+
+TEST(Scene, DiagnosticsAreLocated) {
+    fs::path dir = copyOfMaterials("hexc_scene_bad");
+    std::ofstream(dir / "scenes" / "bad.json") << R"({
+  "scene": "bad",
+  "materials": ["../rock.json"],
+  "passes": [
+    { "name": "main", "materials": ["rocks"] },
+    { "name": "main", "colour": 1 }
+  ]
+})";
+    SceneParseResult r = parseSceneFile(dir / "scenes" / "bad.json");
+    ASSERT_FALSE(r.scene);
+    std::vector<std::string> got;
+    for (const auto& d : r.diagnostics) got.push_back(d.format().substr(d.format().find("bad.json:")));
+    EXPECT_EQ(got, (std::vector<std::string>{
+                       "bad.json:5:37: error: /passes/0/materials/0: no material named `rocks` in the scene (did you mean `rock`?)",
+                       "bad.json:6:23: error: /passes/1/colour: unknown key `colour`; expected `name`, `template`, `slots` or `materials`",
+                       "bad.json:6:15: error: /passes/1/name: duplicate pass name \"main\"",
+                   }));
+}
+
+TEST(Incremental, UnchangedInputsAreSkippedAndAChangedTextureRebuildsWhatUsesIt) {
+    fs::path dir = copyOfMaterials("hexc_incremental");
+    fs::path out = dir / "out";
+    std::string err;
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string(), &err), 0) << err;
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string(), &err), 0) << err;
+    EXPECT_NE(err.find("0 compiled, 9 up to date"), std::string::npos) << err;
+    // A texture only tiles.json reads: its main and shadow variants compile again (depth reads no slot).
+    { std::ofstream(dir / "textures" / "tiles_albedo.png", std::ios::app) << ' '; }
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string(), &err), 0) << err;
+    EXPECT_NE(err.find("2 compiled, 7 up to date"), std::string::npos) << err;
+    // Other options change every output.
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string() + " --bake", &err), 0) << err;
+    EXPECT_NE(err.find("9 compiled, 0 up to date"), std::string::npos) << err;
+    // A deleted output is written again.
+    fs::remove(out / "rock.main.manifest.json");
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string() + " --bake", &err), 0) << err;
+    EXPECT_NE(err.find("1 compiled, 8 up to date"), std::string::npos) << err;
+}
+
+TEST(Depfile, ListsEveryInputWithMakeEscapes) {
+    // A folder name with the characters Make and Ninja treat specially.
+    fs::path dir = fs::temp_directory_path() / "hexc dep$#";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "textures");
+    fs::copy("materials/tiles.json", dir / "tiles.json");
+    fs::copy("materials/textures/tiles_albedo.png", dir / "textures" / "tiles_albedo.png");
+    fs::path out = fs::temp_directory_path() / "hexc_dep_out";
+    fs::remove_all(out);
+    std::string err;
+    ASSERT_EQ(runHexc("'" + (dir / "tiles.json").string() + "' -o " + out.string() + " --depfile " + (out / "tiles.d").string(), &err), 0)
+        << err;
+    auto esc = [](std::string s) {
+        std::string o;
+        for (char c : s) {
+            if (c == ' ' || c == '#') o += '\\';
+            if (c == '$') o += '$';
+            o += c;
+        }
+        return o;
+    };
+    EXPECT_EQ(read(out / "tiles.d"), esc((out / "tiles.manifest.json").string()) + ": " + esc((dir / "tiles.json").string()) + " " +
+                                         esc((dir / "textures" / "tiles_albedo.png").string()) + "\n");
+}
+
+}  // namespace
