@@ -12,6 +12,7 @@
 #include "cli/depfile.h"
 #include "cli/incremental.h"
 #include "cli/outputs.h"
+#include "common/files.h"
 #include "hexc/scene.h"
 
 namespace hexc::cli {
@@ -52,14 +53,6 @@ bool printDiagnostics(const Diagnostics& diags, bool quiet) {
     return !hasErrors(diags);
 }
 
-std::optional<std::string> readText(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 // FNV-1a of a shader's target sources: variants with equal hashes share one set of files.
 std::string shaderHash(const CompileResult& r) {
     uint64_t h = 0xcbf29ce484222325ull;
@@ -79,7 +72,7 @@ int buildCommand(const Arguments& a) {
     std::set<std::string> requested(a.variants.begin(), a.variants.end()), found;
     bool failed = false;
     for (const auto& path : a.materials) {
-        std::optional<std::string> text = readText(path);
+        std::optional<std::string> text = readFile(path);
         if (text && isSceneDocument(*text)) {
             SceneParseResult parsed = parseSceneFile(path);
             if (!printDiagnostics(parsed.diagnostics, a.quiet) || !parsed.scene) {

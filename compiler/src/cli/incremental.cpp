@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/files.h"
 #include "common/templates.h"
 
 namespace hexc::cli {
@@ -15,12 +16,7 @@ public:
         // A separator, so ("ab", "c") and ("a", "bc") differ.
         hash_ = (hash_ ^ 0xff) * 0x100000001b3ull;
     }
-    void addFile(const std::filesystem::path& file) {
-        std::ifstream in(file, std::ios::binary);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        add(ss.str());
-    }
+    void addFile(const std::filesystem::path& file) { add(readFile(file).value_or("")); }
     std::string hex() const {
         char buf[17];
         std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash_));

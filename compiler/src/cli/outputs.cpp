@@ -2,7 +2,7 @@
 
 #include <fstream>
 
-#include "common/atomic_file.h"
+#include "common/files.h"
 
 namespace hexc::cli {
 

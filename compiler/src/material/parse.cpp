@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/files.h"
 #include "common/suggest.h"
 #include "common/templates.h"
 #include "hexc/image.h"
@@ -426,14 +427,6 @@ std::optional<json> parseJson(std::string_view text, const std::filesystem::path
         size_t at = literal.empty() ? 0 : text.find(literal);
         return syntaxError(at == std::string_view::npos ? 0 : at, "number " + literal + " is out of range (expected a finite number)");
     }
-}
-
-std::optional<std::string> readFile(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
 }
 
 }  // namespace

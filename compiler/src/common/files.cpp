@@ -1,8 +1,18 @@
-#include "common/atomic_file.h"
+#include "common/files.h"
 
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace hexc {
+
+std::optional<std::string> readFile(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
 
 void writeFileAtomically(const std::filesystem::path& file, const std::function<bool(const std::filesystem::path&)>& write) {
     // A hidden name in the target folder: the rename stays on one file system, so it is atomic.

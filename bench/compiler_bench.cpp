@@ -1,0 +1,240 @@
+// hexc-bench-compiler [RESULTS_DIR] [--benchmark_* flags]: how fast hexc compiles, stage by stage.
+//
+// Google Benchmark times each stage on materials/rock.json (parse, plan, codegen, glslang, spirv-opt, each
+// target's emit, manifest), the whole compile to all four targets, and a batch of the three example materials
+// twice: in process (hexc::compile) and as the chain of external tools a user would otherwise script
+// (glslangValidator, spirv-opt, spirv-cross three times, on the GLSL hexc generates). Writes the figures and the
+// ratio external / in-process to RESULTS_DIR (default build/bench-results): compiler.md, compiler.csv.
+// Run it from the source root (the materials' paths are relative). It reports, it does not judge: the exit
+// code is 0 whatever the numbers.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "backends/backends.h"
+#include "codegen/codegen.h"
+#include "hexc/compiler.h"
+#include "hexc/material.h"
+#include "plan/plan.h"
+#include "machine.h"
+#include "spirv/spirv.h"
+
+namespace hexc::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kStageMaterial = "materials/rock.json";
+const std::vector<std::string> kBatch = {"materials/rock.json", "materials/tiles.json", "materials/rock_normal.json"};
+constexpr double kTargetSpeedup = 5.0;  // in process against the external chain
+
+std::string readFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+Material parsedOrExit(const std::string& file) {
+    ParseResult parsed = parseMaterialFile(file);
+    if (!parsed.material) {
+        std::cerr << formatAll(parsed.diagnostics);
+        std::exit(1);
+    }
+    return *parsed.material;
+}
+
+// Each stage's input for kStageMaterial, made once by running the stages before it. Not copyable: the plan points
+// into the material.
+struct Stages {
+    std::string json = readFile(kStageMaterial);
+    Material material = parsedOrExit(kStageMaterial);
+    ShaderPlan plan = planShader(material, {});
+    std::string glsl = generateGlsl(plan);
+    std::vector<uint32_t> spirv = compileToSpirv(glsl, ShaderStage::Fragment, plan.templateName).words;
+    std::vector<uint32_t> optimized = optimizeSpirv(spirv).words;
+    CompileOptions options;
+    nlohmann::json targets = {{"spirv", describeSpirv(optimized, plan).target},
+                              {"hlsl", emitHlsl(optimized, plan, options).target},
+                              {"glsl", emitGlsl(optimized, plan, options).target},
+                              {"msl", emitMsl(optimized, plan, options).target}};
+    Stages() {
+        if (optimized.empty()) {
+            std::cerr << kStageMaterial << " does not compile\n";
+            std::exit(1);
+        }
+    }
+    Stages(const Stages&) = delete;
+};
+
+const Stages& stages() {
+    static const Stages s;
+    return s;
+}
+
+void Parse(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(parseMaterial(stages().json, kStageMaterial));
+}
+void Plan(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(planShader(stages().material, {}));
+}
+void Codegen(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(generateGlsl(stages().plan));
+}
+void Glslang(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(compileToSpirv(stages().glsl, ShaderStage::Fragment, stages().plan.templateName));
+}
+void SpirvOpt(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(optimizeSpirv(stages().spirv));
+}
+void EmitSpirv(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(describeSpirv(stages().optimized, stages().plan));
+}
+void EmitHlsl(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(emitHlsl(stages().optimized, stages().plan, stages().options));
+}
+void EmitGlsl(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(emitGlsl(stages().optimized, stages().plan, stages().options));
+}
+void EmitMsl(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(emitMsl(stages().optimized, stages().plan, stages().options));
+}
+void Manifest(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(buildManifest(stages().material, stages().plan, stages().targets));
+}
+void CompileAllTargets(benchmark::State& state) {
+    for (auto _ : state) benchmark::DoNotOptimize(compile(stages().material));
+}
+
+// What `hexc A.json B.json C.json -o DIR` does, less writing the files: read, parse, compile to all four targets.
+void BatchInProcess(benchmark::State& state) {
+    for (auto _ : state)
+        for (const std::string& file : kBatch) benchmark::DoNotOptimize(compile(parsedOrExit(file)));
+    state.SetItemsProcessed(state.iterations() * int64_t(kBatch.size()));
+}
+
+// The same batch as a script would do it from hexc's generated GLSL, one process per tool. Parsing, planning
+// and code generation are not counted: the script starts from the GLSL.
+void BatchExternalTools(benchmark::State& state) {
+    const fs::path dir = fs::temp_directory_path() / "hexc-bench-compiler";
+    fs::create_directories(dir);
+    std::vector<std::pair<fs::path, std::string>> sources;
+    for (const std::string& file : kBatch) {
+        const Material m = parsedOrExit(file);
+        sources.emplace_back(dir / (m.name + ".frag"), compile(m).glsl);
+    }
+    for (auto _ : state) {
+        for (const auto& [frag, glsl] : sources) {
+            std::ofstream(frag, std::ios::binary) << glsl;
+            const std::string stem = (dir / frag.stem()).string();
+            const std::string chain =
+                "glslangValidator -V --target-env vulkan1.0 -o " + stem + ".spv " + frag.string() + " >/dev/null" +
+                " && spirv-opt -O " + stem + ".spv -o " + stem + ".opt.spv" +
+                " && spirv-cross " + stem + ".opt.spv --hlsl --shader-model 50 --output " + stem + ".hlsl" +
+                " && spirv-cross " + stem + ".opt.spv --version 450 --output " + stem + ".glsl" +
+                " && spirv-cross " + stem + ".opt.spv --msl --output " + stem + ".metal";
+            if (const int status = std::system(chain.c_str()); status != 0) {
+                state.SkipWithError(("external chain failed with status " + std::to_string(status) + ": " + chain).c_str());
+                break;
+            }
+        }
+    }
+    state.SetItemsProcessed(state.iterations() * int64_t(kBatch.size()));
+    fs::remove_all(dir);
+}
+
+BENCHMARK(Parse)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Plan)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Codegen)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Glslang)->Unit(benchmark::kMicrosecond);
+BENCHMARK(SpirvOpt)->Unit(benchmark::kMicrosecond);
+BENCHMARK(EmitSpirv)->Unit(benchmark::kMicrosecond);
+BENCHMARK(EmitHlsl)->Unit(benchmark::kMicrosecond);
+BENCHMARK(EmitGlsl)->Unit(benchmark::kMicrosecond);
+BENCHMARK(EmitMsl)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Manifest)->Unit(benchmark::kMicrosecond);
+BENCHMARK(CompileAllTargets)->Unit(benchmark::kMillisecond);
+// Wall-clock time: the external chain's work happens in child processes, which the CPU timer does not see.
+BENCHMARK(BatchInProcess)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK(BatchExternalTools)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+// Prints as usual and keeps each benchmark's wall-clock time per iteration, in milliseconds, for the report.
+class Recorder : public benchmark::ConsoleReporter {
+public:
+    std::map<std::string, double> ms;
+    std::map<std::string, std::string> errors;
+    void ReportRuns(const std::vector<Run>& runs) override {
+        for (const Run& run : runs) {
+            const std::string& name = run.run_name.function_name;  // without the /min_time:... suffixes
+            if (run.error_occurred) errors[name] = run.error_message;
+            // With repetitions, the median over them (reported after the repetitions themselves) is kept.
+            else if (run.run_type == Run::RT_Iteration || run.aggregate_name == "median")
+                ms[name] = run.GetAdjustedRealTime() * 1000.0 / benchmark::GetTimeUnitMultiplier(run.time_unit);
+        }
+        ConsoleReporter::ReportRuns(runs);
+    }
+    double get(const std::string& name) const { return ms.count(name) ? ms.at(name) : NAN; }
+};
+
+std::string fixed(double v, int decimals) {
+    if (std::isnan(v)) return "n/a";
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(decimals);
+    out << v;
+    return out.str();
+}
+
+void report(const Recorder& r, const fs::path& dir, const std::string& machine) {
+    const char* const stageNames[] = {"Parse", "Plan", "Codegen", "Glslang", "SpirvOpt", "EmitSpirv", "EmitHlsl", "EmitGlsl", "EmitMsl", "Manifest"};
+    std::string md = "Machine: " + machine + ". Wall-clock time per call, Google Benchmark, median of 3 repetitions in random order.\n\n| stage (materials/rock.json) | ms | share of the stages |\n|---|---|---|\n", csv = "benchmark,ms_per_iteration\n";
+    double sum = 0;
+    for (const char* name : stageNames) sum += r.get(name);
+    for (const char* name : stageNames) md += "| " + std::string(name) + " | " + fixed(r.get(name), 3) + " | " + fixed(r.get(name) / sum * 100, 0) + "% |\n";
+    md += "| sum of the stages | " + fixed(sum, 3) + " | |\n| whole compile, four targets (CompileAllTargets) | " + fixed(r.get("CompileAllTargets"), 3) + " | |\n";
+    for (const auto& [name, ms] : r.ms) csv += name + "," + fixed(ms, 4) + "\n";
+
+    const double inProcess = r.get("BatchInProcess"), external = r.get("BatchExternalTools"), speedup = external / inProcess;
+    const std::string batch = std::to_string(kBatch.size()) + " example materials";
+    md += "\n| batch of " + batch + " | ms per batch | materials/s |\n|---|---|---|\n";
+    md += "| in process (read, parse, compile to four targets) | " + fixed(inProcess, 1) + " | " + fixed(kBatch.size() / inProcess * 1000, 1) + " |\n";
+    md += "| external tools (glslangValidator, spirv-opt, spirv-cross x3 per material) | " + fixed(external, 1) + " | " +
+          fixed(kBatch.size() / external * 1000, 1) + " |\n";
+    const std::string verdict = "in process is " + fixed(speedup, 1) + "x faster than the external chain; target >= " + fixed(kTargetSpeedup, 0) +
+                                "x: " + (std::isnan(speedup) ? "not measured" : speedup >= kTargetSpeedup ? "MET" : "NOT MET");
+    md += "\n- " + verdict + "\n";
+    for (const auto& [name, error] : r.errors) md += "- " + name + " failed: " + error + "\n";
+
+    std::ofstream(dir / "compiler.md") << md;
+    std::ofstream(dir / "compiler.csv") << csv;
+    std::cout << "\n" << md << "\nWrote " << (dir / "compiler.md").string() << ", compiler.csv\n";
+}
+
+}  // namespace
+}  // namespace hexc::bench
+
+int main(int argc, char** argv) {
+    // Defaults that the user's own --benchmark_* flags override (the last one given wins): three repetitions in
+    // random order, so that load from elsewhere on the machine spreads over all benchmarks; reported: the median.
+    std::string defaults[] = {"--benchmark_repetitions=3", "--benchmark_enable_random_interleaving=true", "--benchmark_display_aggregates_only=true"};
+    std::vector<char*> args{argv[0]};
+    for (std::string& flag : defaults) args.push_back(flag.data());
+    args.insert(args.end(), argv + 1, argv + argc);
+    int count = int(args.size());
+    benchmark::Initialize(&count, args.data());  // takes the --benchmark_* flags out of args
+    const std::filesystem::path dir = count > 1 ? args[1] : "build/bench-results";
+    std::filesystem::create_directories(dir);
+    hexc::bench::stages();  // compile the stages' inputs before anything is timed
+    const std::string machine = hexc::bench::cpuSummary();
+    hexc::bench::Recorder recorder;
+    benchmark::RunSpecifiedBenchmarks(&recorder);
+    hexc::bench::report(recorder, dir, machine);
+    benchmark::Shutdown();
+    return 0;
+}

@@ -1,0 +1,505 @@
+// hexc-bench-shaders [RESULTS_DIR]: run time against error of hex-tiling methods, on Mesa lavapipe.
+//
+// One representative material (albedo + normal map + roughness, 512x512 textures, template `lit`) is compiled
+// once per method (a row of methods(): how the method is written in the material JSON) and rendered at
+// 1024x1024 in a magnified and a minified view. Per method and view: median GPU time per frame and its ratio
+// to plain tiling, texture samples and SPIR-V size, the albedo's error against the fp64 reference of the
+// full-quality method, and how much of the texture's contrast survives the blend. Then op costs: what one pow,
+// sin, texture sample... costs on this device, from the templates in bench/op-cost/, to say where the time of
+// the full-quality shader goes.
+//
+// Writes RESULTS_DIR (default build/bench-results): results.csv, results.md, runtime-vs-error.svg and, under
+// materials/, the textures and material files it measured (each renders with `hexc render`). Run it from the
+// source root. It measures, it does not judge: targets are reported as met or not, and the exit code is 0
+// whatever the numbers (1 only when it cannot run at all).
+#include <stb_image_resize.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <future>
+#include <iostream>
+#include <limits>
+#include <map>
+
+#include "hexc/compiler.h"
+#include "hexc/material.h"
+#include "machine.h"
+#include "measures.h"
+#include "plot.h"
+#include "reference/reference.h"
+#include "spirv/spirv.h"
+#include "strf.h"
+#include "vk/render.h"
+
+namespace hexc::bench {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kTextureSize = 512;
+constexpr int kFrameSize = 1024;
+constexpr int kRounds = 3, kFramesPerRound = 5;  // 15 timed frames per shader and view
+constexpr double kTiling = 4;
+constexpr double kTargetRatio = 3.0;  // full-quality 3-slot material against plain tiling
+
+// A method is what a user writes in the material's "hextiling" object (on top of "tiling": kTiling), applied
+// to every slot. "rot": rotation on (1) instead of off (0); "gain": falloff 0.75 (the paper's choice for
+// colour) instead of 0.5 (the gain's identity).
+struct Method {
+    std::string name;
+    json hextiling;
+};
+
+// The best the material JSON can express in a hash mode: rotation and gain on.
+json fullQuality(HashMode mode) { return {{"mode", toString(mode)}, {"rotation", 1}, {"falloff", 0.75}}; }
+
+// A function, not a global: fullQuality() needs libhexc's globals, which may not be initialised before ours.
+const std::vector<Method>& methods() {
+    static const std::vector<Method> table = {
+        {"plain", {{"enabled", false}}},
+        {"paper", {{"mode", "paper"}, {"rotation", 0}, {"falloff", 0.5}}},
+        {"paper-rot", {{"mode", "paper"}, {"rotation", 1}, {"falloff", 0.5}}},
+        {"paper-gain", {{"mode", "paper"}, {"rotation", 0}, {"falloff", 0.75}}},
+        {"paper-rot-gain", fullQuality(HashMode::Paper)},
+        {"stable", {{"mode", "stable"}, {"rotation", 0}, {"falloff", 0.5}}},
+        {"stable-rot", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.5}}},
+        {"stable-gain", {{"mode", "stable"}, {"rotation", 0}, {"falloff", 0.75}}},
+        {"stable-rot-gain", fullQuality(HashMode::Stable)},
+    };
+    return table;
+}
+
+// Texels per pixel: 512 * 4 * 0.375 / 1024 = 0.75 (magnified: level 0 only, as in the execution tests) and
+// 512 * 4 * 8 / 1024 = 16 (minified: exactly mip level 4, where lavapipe's approximate log2 is exact).
+struct NamedView {
+    std::string name;
+    View view;
+};
+const std::vector<NamedView> kViews = {
+    {"magnified", {kFrameSize, kFrameSize, {0, 0, 0.375, 0.375}}},
+    {"minified", {kFrameSize, kFrameSize, {0, 0, 8, 8}}},
+};
+
+// The example textures, upscaled to kTextureSize so that they are the size a real material's would be.
+struct SourceTexture {
+    std::string slot, kind, file;
+    bool srgb;
+};
+const std::vector<SourceTexture> kTextures = {
+    {"albedo", "color", "rock_albedo.png", true},
+    {"normal", "normal", "rock_normal.png", false},
+    {"roughness", "scalar", "rock_roughness.png", false},
+};
+
+// What one operation costs, measured with bench/op-cost/<name>.glsl against baseline.glsl, and which of the
+// shader's SPIR-V instructions it prices (exp and log are exp2 and log2 with a scale; a normalisation is one
+// inverse square root). No instructions: texture samples.
+struct OpCost {
+    std::string name;
+    int perPixel;  // operations the template adds per pixel
+    std::vector<std::string> spirvOps;
+};
+const std::vector<OpCost> kOpCosts = {
+    {"sample", 16, {}},
+    {"pow", 64, {"Pow"}},
+    {"exp2", 64, {"Exp2", "Exp"}},
+    {"log2", 64, {"Log2", "Log"}},
+    {"sin", 64, {"Sin"}},
+    {"cos", 64, {"Cos"}},
+    {"sqrt", 64, {"Sqrt", "InverseSqrt", "Normalize", "Length", "Distance"}},
+};
+
+// Shown in the op-count table: the GLSL.std.450 instructions that cost more than a multiply on a CPU.
+const std::vector<std::string> kTranscendentals = {"Pow", "Exp", "Exp2", "Log", "Log2", "Sin", "Cos", "Tan", "Atan",
+                                                   "Sqrt", "InverseSqrt", "Normalize", "Length", "Distance"};
+
+// A shader timed on one view. Timings interleave: each round times every shader once, so a burst of load from
+// elsewhere on the machine lands on all of them rather than on one.
+struct Timed {
+    std::string name;  // the method, or the op-cost template
+    size_t view = 0;
+    Material material;
+    std::vector<double> frameMs;  // from every round
+    std::string failure;          // why there are no numbers
+};
+
+struct Row : Timed {
+    const Method* method = nullptr;  // the row of methods() whose name this is
+    double medianMs = kNaN, ratio = kNaN;
+    ShaderOps ops;
+    HashMode errorReference = HashMode::Stable;
+    ErrorStats error{kNaN, kNaN, kNaN};
+    Contrast contrast{kNaN, kNaN};
+};
+
+struct Results {
+    std::string machine, settings;
+    std::vector<Row> rows;
+    std::vector<Timed> opTimings;  // bench/op-cost/<name>.glsl
+    double referenceSeconds = 0, totalSeconds = 0;
+};
+
+double median(std::vector<double> v) {
+    if (v.empty()) return kNaN;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
+}
+
+// A number for a table: "n/a" when it could not be measured.
+std::string num(double v, const char* format = "%.3g") {
+    if (std::isnan(v)) return "n/a";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    return strf(format, v);
+}
+
+void writeFile(const fs::path& file, const std::string& contents) {
+    std::ofstream out(file, std::ios::binary);
+    out << contents;
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+// Upscales each example texture with wrap-around edges (so it still tiles), sRGB-aware for colour.
+void makeTextures(const fs::path& dir) {
+    fs::create_directories(dir);
+    for (const SourceTexture& t : kTextures) {
+        const Texture in = loadTexture(fs::path("materials/textures") / t.file, t.srgb);
+        std::vector<uint8_t> out(size_t(kTextureSize) * kTextureSize * 4);
+        if (!stbir_resize_uint8_generic(in.rgba8.data(), in.width, in.height, 0, out.data(), kTextureSize, kTextureSize, 0, 4, 3, 0,
+                                        STBIR_EDGE_WRAP, STBIR_FILTER_DEFAULT, t.srgb ? STBIR_COLORSPACE_SRGB : STBIR_COLORSPACE_LINEAR,
+                                        nullptr))
+            throw std::runtime_error("cannot resize " + t.file);
+        // writeImage stores round(v * 255), which gives back every byte exactly.
+        Image image{kTextureSize, kTextureSize, std::vector<float>(out.begin(), out.end())};
+        for (float& v : image.rgba) v /= 255.0f;
+        writeImage(image, dir / t.file);
+    }
+}
+
+// The bench material with the given hex-tiling settings, written to `dir` (so `hexc render` can show it) and parsed.
+Material material(const fs::path& dir, const std::string& name, const json& hextiling, const std::string& templ = "lit") {
+    json hex = {{"tiling", kTiling}};
+    hex.update(hextiling);
+    json doc = {{"name", name}, {"template", templ}, {"hextiling", hex}, {"slots", json::array()}};
+    for (const SourceTexture& t : kTextures) doc["slots"].push_back({{"name", t.slot}, {"texture", "textures/" + t.file}, {"kind", t.kind}});
+    const fs::path file = dir / (name + ".json");
+    const std::string text = doc.dump(2) + "\n";  // parsed as written, so diagnostics point into the file
+    writeFile(file, text);
+    ParseResult parsed = parseMaterial(text, file);
+    if (!parsed.material) throw CompileError{parsed.diagnostics};
+    return *parsed.material;
+}
+
+const Slot& albedoSlot(const Material& m) { return vk::slotForOutput(m, vk::RenderOutput::Albedo, "albedo"); }
+
+ShaderOps shaderOps(const Material& m) {
+    CompileOptions options;
+    options.targets = {Target::Spirv};
+    CompileResult compiled = compile(m, options);
+    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
+    return countOps(disassemble(compiled.spirv));
+}
+
+double texelsPerPixel(const View& view, int textureWidth) { return (view.uvRect[2] - view.uvRect[0]) * kTiling * textureWidth / view.width; }
+
+// The mip level a view samples: log2 of texels per pixel, as the sampler computes it for these exact powers of two.
+int viewLevel(const View& view, const reference::SampledTexture& texture) {
+    return std::clamp(int(std::floor(std::log2(texelsPerPixel(view, texture.width(0))))), 0, texture.levels() - 1);
+}
+
+std::vector<double> levelLuminances(const reference::SampledTexture& texture, int level) {
+    std::vector<double> out;
+    for (int y = 0; y < texture.height(level); ++y)
+        for (int x = 0; x < texture.width(level); ++x) {
+            const reference::Rgba& t = texture.texel(level, x, y);
+            out.push_back(luminance(t[0], t[1], t[2]));
+        }
+    return out;
+}
+
+// Runs f, turning an exception into the reason a measurement is missing: one broken method must not stop the bench.
+template <class F>
+void attempt(std::string& failure, F f) {
+    try {
+        f();
+    } catch (const CompileError& e) {
+        failure = formatAll(e.diagnostics);
+    } catch (const std::exception& e) {
+        failure = e.what();
+    }
+}
+
+// Median ms per frame of an op-cost template, NaN if it failed.
+double opTemplateMs(const Results& results, const std::string& name, size_t view) {
+    for (const Timed& t : results.opTimings)
+        if (t.name == name && t.view == view) return median(t.frameMs);
+    return kNaN;
+}
+
+// What one operation per pixel adds to a frame, in ms: the template's time above the baseline's, per operation.
+double opCostMs(const Results& results, const OpCost& op, size_t view) {
+    return (opTemplateMs(results, op.name, view) - opTemplateMs(results, "baseline", view)) / op.perPixel;
+}
+
+struct References {
+    std::map<std::pair<HashMode, size_t>, Image> albedo;  // per hash mode and view
+    std::vector<std::vector<double>> sourceLuminance;     // per view, at the mip level the view samples
+};
+
+// The fp64 references of the full-quality albedo in each mode and view, on all cores (the GPU is idle meanwhile).
+References references(const fs::path& materialDir) {
+    std::map<HashMode, Material> best;
+    for (HashMode mode : {HashMode::Stable, HashMode::Paper})
+        best.emplace(mode, material(materialDir, "reference-" + std::string(toString(mode)), fullQuality(mode)));
+    const Slot& albedo = albedoSlot(best.at(HashMode::Stable));
+    const reference::SampledTexture texture(loadTexture(albedo.texturePath, albedo.colorSpace == ColorSpace::Srgb));
+    std::map<std::pair<HashMode, size_t>, std::future<Image>> pending;
+    for (const auto& [mode, m] : best)
+        for (size_t v = 0; v < kViews.size(); ++v)
+            pending[{mode, v}] = std::async(std::launch::async, [&, v, &m = m] {
+                return reference::render(albedoSlot(m), texture, kViews[v].view, reference::Output::Value);
+            });
+    References refs;
+    for (auto& [key, f] : pending) refs.albedo[key] = f.get();
+    for (const NamedView& v : kViews) refs.sourceLuminance.push_back(levelLuminances(texture, viewLevel(v.view, texture)));
+    return refs;
+}
+
+void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) {
+    const auto start = std::chrono::steady_clock::now();
+    const References refs = references(materialDir);
+    results.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    for (const Method& method : methods())
+        for (size_t v = 0; v < kViews.size(); ++v) {
+            Row& row = results.rows.emplace_back();
+            row.name = method.name;
+            row.method = &method;
+            row.view = v;
+            attempt(row.failure, [&] {
+                row.material = material(materialDir, method.name, method.hextiling);
+                const Slot& slot = albedoSlot(row.material);
+                row.errorReference = slot.hex.enabled ? slot.hex.mode : HashMode::Stable;
+                row.ops = shaderOps(row.material);
+            });
+        }
+    // The op-cost templates read one plain-tiled slot; the material's other slots are left out with a warning.
+    std::vector<std::string> opTemplates{"baseline"};
+    for (const OpCost& op : kOpCosts) opTemplates.push_back(op.name);
+    for (const std::string& name : opTemplates) {
+        const std::string templ = (fs::current_path() / "bench/op-cost" / (name + ".glsl")).string();
+        const Material m = material(materialDir, "op-cost-" + name, {{"enabled", false}}, templ);
+        for (size_t v = 0; v < kViews.size(); ++v) results.opTimings.push_back({name, v, m, {}, {}});
+    }
+
+    std::vector<Timed*> timed;
+    for (Row& row : results.rows) timed.push_back(&row);
+    for (Timed& t : results.opTimings) timed.push_back(&t);
+    for (int round = 1; round <= kRounds; ++round) {
+        std::cout << "  timing round " << round << "/" << kRounds << std::endl;
+        for (Timed* t : timed) {
+            if (!t->failure.empty()) continue;
+            attempt(t->failure, [&] {
+                std::vector<double> frameMs;
+                vk::render(runner, t->material, vk::RenderOutput::Shaded, "", kViews[t->view].view, vk::ExecutedTarget::Spirv, kFramesPerRound, &frameMs);
+                t->frameMs.insert(t->frameMs.end(), frameMs.begin(), frameMs.end());
+            });
+        }
+    }
+
+    std::cout << "  albedo error and contrast" << std::endl;
+    for (Row& row : results.rows) {
+        if (!row.failure.empty()) continue;
+        row.medianMs = median(row.frameMs);
+        attempt(row.failure, [&] {
+            const Image image = vk::render(runner, row.material, vk::RenderOutput::Albedo, "albedo", kViews[row.view].view);
+            row.error = compareRgb(image, refs.albedo.at({row.errorReference, row.view}));
+            row.contrast = contrast(luminances(image), refs.sourceLuminance[row.view]);
+        });
+    }
+    for (Row& row : results.rows)
+        for (const Row& plain : results.rows)
+            if (plain.name == "plain" && plain.view == row.view) row.ratio = row.medianMs / plain.medianMs;
+    for (const Timed* t : timed)
+        if (!t->failure.empty()) std::cout << "  failed: " << t->name << ", " << kViews[t->view].name << ": " << t->failure << "\n";
+}
+
+int opCount(const ShaderOps& ops, const std::string& name) { return ops.extended.count(name) ? ops.extended.at(name) : 0; }
+
+const Row* fullQualityRow(const Results& results, size_t view) {
+    for (const Row& row : results.rows)
+        if (row.view == view && row.method->hextiling == fullQuality(HashMode::Stable)) return &row;
+    return nullptr;
+}
+
+std::string targetLine(const Results& results, size_t view) {
+    const Row* row = fullQualityRow(results, view);
+    const double ratio = row ? row->ratio : kNaN;
+    return strf("full quality (stable-rot-gain), 3 slots, %s: %sx plain tiling, target <= %.1fx: %s", kViews[view].name.c_str(),
+                num(ratio, "%.2f").c_str(), kTargetRatio, std::isnan(ratio) ? "not measured" : ratio <= kTargetRatio ? "MET" : "NOT MET");
+}
+
+std::string mainTable(const Results& results) {
+    std::string md =
+        "| view | method | ms/frame (median) | x plain | samples/px | SPIR-V instr. | error vs | max err | mean err | PSNR dB | "
+        "variance ratio | histogram EMD |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : results.rows)
+        md += strf("| %s | %s | %s | %s | %d | %d | %s | %s | %s | %s | %s | %s |\n", kViews[r.view].name.c_str(), r.name.c_str(),
+                   num(r.medianMs, "%.2f").c_str(), num(r.ratio, "%.2f").c_str(), r.ops.textureSamples, r.ops.instructions,
+                   std::string(toString(r.errorReference)).c_str(), num(r.error.max, "%.4f").c_str(), num(r.error.mean, "%.5f").c_str(),
+                   num(r.error.psnrDb, "%.1f").c_str(), num(r.contrast.varianceRatio, "%.3f").c_str(), num(r.contrast.histogramEmd, "%.4f").c_str());
+    return md;
+}
+
+// Scalar operations per pixel by instruction, one line per method (the same SPIR-V in both views).
+std::string opCountTable(const Results& results) {
+    std::vector<std::string> shown;
+    for (const std::string& name : kTranscendentals)
+        for (const Row& r : results.rows)
+            if (opCount(r.ops, name) && std::find(shown.begin(), shown.end(), name) == shown.end()) shown.push_back(name);
+    std::string md = "| method | samples |", rule = "|---|---|";
+    for (const std::string& name : shown) md += " " + name + " |", rule += "---|";
+    md += "\n" + rule + "\n";
+    for (const Row& r : results.rows) {
+        if (r.view != 0) continue;
+        md += "| " + r.name + " | " + std::to_string(r.ops.textureSamples) + " |";
+        for (const std::string& name : shown) md += " " + std::to_string(opCount(r.ops, name)) + " |";
+        md += "\n";
+    }
+    return md;
+}
+
+// Where the full-quality shader's time goes: each op's count times its measured cost, per view; what is left is
+// the work no op-cost template prices (integer hash, lattice, blend weights, lighting).
+std::string breakdownTable(const Results& results) {
+    std::vector<const Row*> rows;
+    std::vector<double> baseline, measured, rest;
+    std::string md = "| | per px | one op/px, ms/frame |", rule = "|---|---|---|";
+    for (size_t v = 0; v < kViews.size(); ++v) {
+        rows.push_back(fullQualityRow(results, v));
+        baseline.push_back(opTemplateMs(results, "baseline", v));
+        measured.push_back(rows[v] ? rows[v]->medianMs : kNaN);
+        rest.push_back(measured[v] - baseline[v]);
+        md += " " + kViews[v].name + " ms | share |", rule += "---|---|";
+    }
+    md += "\n" + rule + "\n";
+    auto line = [&](const std::string& what, const std::string& count, const std::string& unit, const std::vector<double>& ms) {
+        md += "| " + what + " | " + count + " | " + unit + " |";
+        for (size_t v = 0; v < kViews.size(); ++v) md += " " + num(ms[v], "%.1f") + " | " + num(ms[v] / measured[v] * 100, "%.0f%%") + " |";
+        md += "\n";
+    };
+    line("draw, 1 sample, 16 multiply-adds (baseline.glsl)", "", "", baseline);
+    for (const OpCost& op : kOpCosts) {
+        const ShaderOps ops = rows[0] ? rows[0]->ops : ShaderOps{};  // the same SPIR-V in every view
+        int count = op.spirvOps.empty() ? ops.textureSamples : 0;
+        for (const std::string& name : op.spirvOps) count += opCount(ops, name);
+        std::vector<double> ms;
+        std::string unit;
+        for (size_t v = 0; v < kViews.size(); ++v) {
+            ms.push_back(count * opCostMs(results, op, v));
+            rest[v] -= ms[v];
+            unit += (v ? " / " : "") + num(opCostMs(results, op, v), "%.3f");
+        }
+        line(op.name, std::to_string(count), unit, ms);
+    }
+    line("everything else (integer hash, lattice, blend weights, lighting)", "", "", rest);
+    line("measured, stable-rot-gain", "", "", measured);
+    return md;
+}
+
+std::string markdown(const Results& r) {
+    std::string md = "# hexc shader benchmark\n\n" + r.machine + "\n" + r.settings + "\n## Run time, error, contrast\n\n" + mainTable(r) + "\n";
+    for (size_t v = 0; v < kViews.size(); ++v) md += "- " + targetLine(r, v) + "\n";
+    md += "\n## Operations per pixel\n\nScalar operations counted in the SPIR-V (a vec3 pow counts 3; there are no loops, so each runs at most once per pixel).\n\n" + opCountTable(r);
+    md += "\n## Where the full-quality shader's time goes\n\nOne operation per pixel costs the time of its bench/op-cost/*.glsl "
+          "template above baseline.glsl's, per operation (magnified / minified); times how often stable-rot-gain does it.\n\n" +
+          breakdownTable(r);
+    return md;
+}
+
+std::string csv(const Results& r) {
+    std::string out = "view,method,median_ms,min_ms,max_ms,frames,ratio_to_plain,samples_per_px,spirv_instructions,error_reference,max_error,mean_error,"
+                      "psnr_db,variance_ratio,histogram_emd,failure\n";
+    for (const Row& row : r.rows) {
+        std::string failure = row.failure;
+        std::replace(failure.begin(), failure.end(), '\n', ' ');
+        std::replace(failure.begin(), failure.end(), ',', ';');
+        const auto [fastest, slowest] = std::minmax_element(row.frameMs.begin(), row.frameMs.end());
+        out += strf("%s,%s,%s,%s,%s,%zu,%s,%d,%d,%s,%s,%s,%s,%s,%s,%s\n", kViews[row.view].name.c_str(), row.name.c_str(),
+                    num(row.medianMs, "%.4f").c_str(), num(row.frameMs.empty() ? kNaN : *fastest, "%.4f").c_str(),
+                    num(row.frameMs.empty() ? kNaN : *slowest, "%.4f").c_str(), row.frameMs.size(), num(row.ratio, "%.4f").c_str(),
+                    row.ops.textureSamples, row.ops.instructions, std::string(toString(row.errorReference)).c_str(), num(row.error.max, "%.6g").c_str(),
+                    num(row.error.mean, "%.6g").c_str(), num(row.error.psnrDb, "%.4g").c_str(), num(row.contrast.varianceRatio, "%.6g").c_str(),
+                    num(row.contrast.histogramEmd, "%.6g").c_str(), failure.c_str());
+    }
+    return out;
+}
+
+std::string plot(const Results& r) {
+    std::vector<std::string> series;
+    for (const NamedView& v : kViews) series.push_back(v.name);
+    std::vector<PlotPoint> points;
+    // Only errors measured against the same (stable) reference are comparable, so only those form the front.
+    for (const Row& row : r.rows) points.push_back({row.name, row.view, row.ratio, row.error.mean, row.errorReference == HashMode::Stable});
+    return scatterSvg("hexc on lavapipe: run time against error (albedo, 1024x1024)", "run time / plain tiling (same view)",
+                      "mean abs error vs full-quality fp64 reference", series, points,
+                      {{kTargetRatio, strf("target: full quality <= %gx", kTargetRatio)}},
+                      {"filled: vs stable-rot-gain reference", "hollow: paper mode, vs paper-rot-gain", "reference (hash differs from", "the GPU's sin beyond the origin)"});
+}
+
+int run(const fs::path& resultsDir) {
+    const auto start = std::chrono::steady_clock::now();
+    if (!fs::exists("materials/textures")) throw std::runtime_error("run from the source root (materials/textures not found)");
+    std::string why;
+    std::unique_ptr<vk::Runner> runner = vk::Runner::create(&why);
+    if (!runner) throw std::runtime_error("no Vulkan device: " + why);
+
+    const fs::path materialDir = resultsDir / "materials";
+    makeTextures(materialDir / "textures");
+    Results results;
+    const char* threads = std::getenv("LP_NUM_THREADS");
+    results.machine = strf("Machine: %s on %s%s.\n", runner->deviceName().c_str(), cpuSummary().c_str(),
+                           threads ? (std::string(", LP_NUM_THREADS=") + threads).c_str() : "");
+    std::string views;
+    for (const NamedView& v : kViews)
+        views += strf("%s uv %g..%g (%g texels/px); ", v.name.c_str(), v.view.uvRect[0], v.view.uvRect[2], texelsPerPixel(v.view, kTextureSize));
+    results.settings = strf(
+        "Settings: material albedo (sRGB colour) + normal map + roughness (scalar), %dx%d textures (the examples upscaled), template "
+        "`lit`, tiling %g, every slot with the method's settings; %dx%d frames; %sGPU time from timestamps, median of %d frames (%d "
+        "rounds over all shaders of %d frames, each after one warm-up frame). Methods: rot = rotation 1 (else 0), gain = falloff 0.75 (else 0.5); other settings the defaults. Error: the "
+        "albedo output against the fp64 reference of the full-quality method of the same hash mode (stable-rot-gain for plain and "
+        "stable rows, paper-rot-gain for paper rows), RGB, linear. Contrast: luminance of the albedo against the source texture's "
+        "at the mip level the view samples (so plain tiling scores about 1 and 0).\n",
+        kTextureSize, kTextureSize, kTiling, kFrameSize, kFrameSize, views.c_str(), kRounds * kFramesPerRound, kRounds, kFramesPerRound);
+
+    std::cout << results.machine << "Measuring\n";
+    measure(*runner, materialDir, results);
+    results.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    results.settings += strf("Bench run time %.0f s, of which %.0f s for the four fp64 reference images; load average %s at the end.\n",
+                             results.totalSeconds, results.referenceSeconds, loadAverage().c_str());
+
+    writeFile(resultsDir / "results.csv", csv(results));
+    writeFile(resultsDir / "results.md", markdown(results));
+    writeFile(resultsDir / "runtime-vs-error.svg", plot(results));
+    std::cout << "\n" << mainTable(results) << "\n";
+    for (size_t v = 0; v < kViews.size(); ++v) std::cout << targetLine(results, v) << "\n";
+    std::cout << "\nWrote " << (resultsDir / "results.md").string() << ", results.csv, runtime-vs-error.svg\n";
+    return 0;
+}
+
+}  // namespace
+}  // namespace hexc::bench
+
+int main(int argc, char** argv) {
+    try {
+        return hexc::bench::run(argc > 1 ? argv[1] : "build/bench-results");
+    } catch (const hexc::CompileError& e) {
+        std::cerr << "hexc-bench-shaders:\n" << hexc::formatAll(e.diagnostics);
+    } catch (const std::exception& e) {
+        std::cerr << "hexc-bench-shaders: " << e.what() << "\n";
+    }
+    return 1;
+}
