@@ -171,27 +171,46 @@ HexcTiles hexcTilesStableSplit(vec2 stRel, ivec2 originCell, vec2 originOffset, 
     return hexcTilesStableAt(originOffset + stRel, dFdx(stRel), dFdy(stRel), shift, rotStrength, rotate);
 }
 
-// Listing 8 / Eq. 5: Perlin's gain with k = log(1 - r) / log(1/2), then renormalised.
-vec3 hexcGain3(vec3 x, float r) {
-    float k = log(1.0 - r) / log(0.5);
+// x^n for a literal n in 1..16 by repeated squaring: hexc passes n when an exponent is a whole number, the
+// optimiser folds the branches, and gamma = 7 costs four multiplications instead of a pow (exp2 and log2).
+vec3 hexcPowInt(vec3 x, int n) {
+    vec3 r = vec3(1.0);
+    if ((n & 1) != 0) r *= x;
+    x *= x;
+    if ((n & 2) != 0) r *= x;
+    x *= x;
+    if ((n & 4) != 0) r *= x;
+    x *= x;
+    if ((n & 8) != 0) r *= x;
+    x *= x;
+    if ((n & 16) != 0) r *= x;
+    return r;
+}
+
+// Listing 8 / Eq. 5: Perlin's gain with k = log(1 - r) / log(1/2), then renormalised. kInt > 0: k is that
+// whole number (r = 1 - 2^-k, e.g. the paper's 0.75 gives k = 2), a literal chosen by hexc.
+vec3 hexcGain3(vec3 x, float r, int kInt) {
+    float k = kInt > 0 ? float(kInt) : log(1.0 - r) / log(0.5);
     vec3 s = 2.0 * step(0.5, x);
     vec3 m = 2.0 * (1.0 - s);
-    vec3 res = 0.5 * s + 0.25 * m * pow(max(vec3(0.0), s + x * m), vec3(k));
+    vec3 base = max(vec3(0.0), s + x * m);
+    vec3 res = 0.5 * s + 0.25 * m * (kInt > 0 ? hexcPowInt(base, kInt) : pow(base, vec3(k)));
     return res / (res.x + res.y + res.z);
 }
 
-// Eq. 1 with the falloff metric delta already evaluated per tile (Dw), then the optional gain.
 // Two guards keep the weights finite, non-negative and normalised outside the paper's domain, and change
 // nothing inside it: a negative metric (HDR texels with negative values) counts as 0, and when every
 // weighted term is 0 (falloffcontrast 1 over three black samples) the metric is ignored.
-// `metric` and `gain` are literals chosen by hexc: false when falloffcontrast is 0 or falloff is 0.5, so
-// the optimiser removes the metric (and the samples' luminance) or the gain instead of computing a no-op.
-vec3 hexcBlendWeights(vec3 w, vec3 Dw, float falloffContrast, float exponent, float falloff, bool metric, bool gain) {
-    vec3 wg = pow(w, vec3(exponent));
+// `metric`, `gain`, `exponentInt` and `gainInt` are literals chosen by hexc: metric and gain are false when
+// falloffcontrast is 0 or falloff is 0.5, so the optimiser removes the metric (and the samples' luminance)
+// or the gain instead of computing a no-op; a whole-number exponent or gain exponent (> 0) replaces a pow.
+vec3 hexcBlendWeights(vec3 w, vec3 Dw, float falloffContrast, float exponent, float falloff, bool metric, bool gain,
+                      int exponentInt, int gainInt) {
+    vec3 wg = exponentInt > 0 ? hexcPowInt(w, exponentInt) : pow(w, vec3(exponent));
     vec3 W = metric ? mix(vec3(1.0), max(Dw, vec3(0.0)), falloffContrast) * wg : wg;
     float sum = W.x + W.y + W.z;
     W = sum > 0.0 ? W / sum : wg / (wg.x + wg.y + wg.z);
-    if (gain && falloff != 0.5) W = hexcGain3(W, falloff);
+    if (gain && (gainInt > 0 || falloff != 0.5)) W = hexcGain3(W, falloff, gainInt);
     return W;
 }
 
@@ -216,12 +235,12 @@ vec3 hexcHexWeights(vec3 W, ivec2 v1, ivec2 v3) {
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
 // a unit vector picking the channel for scalar maps.
 vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, vec4 luma,
-               bool metric, bool gain, out vec3 weights) {
+               bool metric, bool gain, int exponentInt, int gainInt, out vec3 weights) {
     vec4 c1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1);
     vec4 c2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2);
     vec4 c3 = textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3);
     vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
-    vec3 W = hexcBlendWeights(t.w, Dw, falloffContrast, exponent, falloff, metric, gain);
+    vec3 W = hexcBlendWeights(t.w, Dw, falloffContrast, exponent, falloff, metric, gain, exponentInt, gainInt);
     weights = hexcHexWeights(W, t.v1, t.v3);
     return W.x * c1 + W.y * c2 + W.z * c3;
 }
@@ -243,12 +262,12 @@ vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, boo
 // Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, bool flipY,
-               bool metric, bool gain, out vec3 weights) {
+               bool metric, bool gain, int exponentInt, int gainInt, out vec3 weights) {
     vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1);
     vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2);
     vec2 d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-    vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), falloffContrast, exponent, falloff, metric, gain);
+    vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), falloffContrast, exponent, falloff, metric, gain, exponentInt, gainInt);
     weights = hexcHexWeights(W, t.v1, t.v3);
     return W.x * d1 + W.y * d2 + W.z * d3;
 }

@@ -1,7 +1,8 @@
 // hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|plain>`) and the resource
 // sections, and replaces the $placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff,
 // $falloffcontrast, $exponent, $origincell, $originoffset (uniform members, constants or literals),
-// $lattice (a `lattice.*` section), $rotate, $metric, $gain (literal feature switches), $luma, $channel,
+// $lattice (a `lattice.*` section), $rotate, $metric, $gain, $exponentint, $gainint (literal feature
+// switches and whole-number exponents, 0 = none), $luma, $channel,
 // $flipy, $kind, $members, $constants.
 // Each slot gets `hexc_$name(vec2 uv)` and an overload with `out vec3 weights` (Listing 7 hex weights).
 
@@ -40,7 +41,7 @@ hexcTilesStableSplit(uv * $tiling, $origincell, $originoffset, $rotation, $rotat
 
 //@ color.hex
 vec4 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, weights);
+    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, $exponentint, $gainint, weights);
 }
 vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
@@ -52,7 +53,7 @@ vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ scalar.hex
 float hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, weights).$channel;
+    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, $exponentint, $gainint, weights).$channel;
 }
 float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
@@ -64,7 +65,7 @@ float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ normal.hex
 vec2 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, $metric, $gain, weights);
+    return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, $metric, $gain, $exponentint, $gainint, weights);
 }
 vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 

@@ -122,7 +122,9 @@ TEST(Compile, HlslPackOffsetsMatchTheManifest) {
     const auto& members = manifest["parameters"]["members"];
     ASSERT_EQ(type.member_types.size(), members.size());
     for (uint32_t i = 0; i < members.size(); ++i) EXPECT_EQ(c.type_struct_member_offset(type, i), members[i]["offset"].get<uint32_t>());
-    EXPECT_EQ(manifest["parameters"]["size"], 48);  // 10 members: a vec2 and 9 floats, rounded up to 16
+    // tiling (vec2) and rotation of the shared lattice; albedo falloffcontrast; normal falloffcontrast; roughness
+    // falloffcontrast (falloff 0.75 and exponent 7 are multiplied out): 24 bytes, rounded up to 16.
+    EXPECT_EQ(manifest["parameters"]["size"], 32);
 }
 
 TEST(Compile, OneSamplerServesEverySlot) {

@@ -27,7 +27,8 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
         if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
         slots.push_back(std::move(slot));
     }
-    nlohmann::json members = nlohmann::json::array(), constants = nlohmann::json::array();
+    nlohmann::json members = nlohmann::json::array(), constants = nlohmann::json::array(), specialised = nlohmann::json::array();
+    for (const ParamMember& p : plan.specialised) specialised.push_back({{"name", p.name}, {"value", p.value[0]}, {"slots", p.slots}});
     for (const ParamMember& p : plan.params) {
         nlohmann::json value = p.value.size() == 1 ? nlohmann::json(p.value[0]) : nlohmann::json(p.value);
         nlohmann::json entry = {{"name", p.name}, {"type", p.type}, {"value", value}, {"slots", p.slots}};
@@ -45,10 +46,11 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
         {"material", material.name},
         {"template", plan.templateName},
         {"slots", slots},
-        // Uniforms are run-time parameters; baked constants were folded into the code (--bake) and are listed
-        // for reference only.
+        // Uniforms are run-time parameters; baked constants (--bake) and specialised settings (whole-number
+        // exponents, multiplied out) are fixed in the code and listed for reference only.
         {"parameters", {{"block", "HexcParams"}, {"layout", "std140"}, {"size", plan.paramBlockSize}, {"members", members}}},
         {"baked_constants", constants},
+        {"specialised", specialised},
         {"targets", targets},
     };
 }

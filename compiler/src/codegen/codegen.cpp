@@ -82,6 +82,8 @@ std::string injectedCode(const ShaderPlan& plan) {
             {"$rotate", lattice.rotate ? "true" : "false"},
             {"$metric", sp.metric ? "true" : "false"},
             {"$gain", sp.gain ? "true" : "false"},
+            {"$exponentint", std::to_string(sp.exponentInt)},
+            {"$gainint", std::to_string(sp.gainInt)},
             // Scalar maps weight tiles by their own channel; colour by luminance (Eq. 4).
             {"$luma", s.kind == SlotKind::Scalar ? kChannelVectors[s.channel] : "hexcLuma"},
             {"$channel", kChannels[s.channel]},

@@ -1,5 +1,6 @@
 #include "plan/plan.h"
 
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -103,6 +104,11 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         bool all = !options.specialize;
         SlotPlan sp{&slot, std::string(toString(slot.kind)) + (h.enabled ? ".hex" : ".plain"), binding++, 0,
                     all || h.falloffcontrast != 0, all || h.falloff != 0.5};
+        // Whole-number exponents become multiplications: gamma = 7 (the paper's) and the gain at r = 1 - 2^-k
+        // (the paper's 0.75 is k = 2) then cost no pow. Like the feature switches, they fix the value in the code.
+        if (!all && h.exponent == std::floor(h.exponent) && h.exponent <= 16) sp.exponentInt = int(h.exponent);
+        double k = std::log2(1.0 / (1.0 - h.falloff));
+        if (!all && sp.gain && std::fabs(k - std::round(k)) < 1e-12 && k >= 2 && k <= 16) sp.gainInt = int(std::round(k));
         size_t lattice = 0;
         while (lattice < plan.lattices.size() && !(options.shareLattice && sameLattice(plan.lattices[lattice].settings, h))) ++lattice;
         if (lattice == plan.lattices.size()) plan.lattices.push_back({slot.name, h, all || h.rotation != 0});
@@ -132,9 +138,12 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         const HexTiling& h = sp.slot->hex;
         if (!h.enabled) continue;
         const std::string& n = sp.slot->name;
-        if (sp.gain) params.add(n + "_falloff", {h.falloff}, {n});
+        auto fixed = [&](const std::string& name, double value) { plan.specialised.push_back({name, "float", {value}, {n}}); };
+        if (sp.gainInt) fixed(n + "_falloff", h.falloff);
+        else if (sp.gain) params.add(n + "_falloff", {h.falloff}, {n});
         if (sp.metric) params.add(n + "_falloffcontrast", {h.falloffcontrast}, {n});
-        params.add(n + "_exponent", {h.exponent}, {n});
+        if (sp.exponentInt) fixed(n + "_exponent", h.exponent);
+        else params.add(n + "_exponent", {h.exponent}, {n});
     }
     params.finish();
     return plan;

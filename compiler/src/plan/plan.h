@@ -46,6 +46,8 @@ struct SlotPlan {
     size_t lattice = 0;          // index into ShaderPlan::lattices
     bool metric = true;          // the falloff metric code is emitted (falloffcontrast != 0)
     bool gain = true;            // the gain code is emitted (falloff != 0.5)
+    int exponentInt = 0;         // > 0: the exponent is this whole number, multiplied out (no pow, no uniform)
+    int gainInt = 0;             // > 0: the gain's k = log2(1 / (1 - falloff)) is this whole number, likewise
 };
 
 struct ShaderPlan {
@@ -55,6 +57,7 @@ struct ShaderPlan {
     std::vector<SlotPlan> slots; // only the slots the template reads
     std::vector<LatticePlan> lattices;
     std::vector<ParamMember> params;  // block members first, in block order, then baked constants
+    std::vector<ParamMember> specialised;  // settings fixed in the code as whole-number exponents
     uint32_t paramBlockSize = 0; // std140 size, rounded up to 16
     Diagnostics diagnostics;     // warnings (e.g. a slot the template never reads) or errors
 
