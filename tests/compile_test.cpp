@@ -85,7 +85,7 @@ TEST_P(Example, EmittedHlslCompilesWithGlslangHlslFrontEnd) {
         CompileResult r = compileExample(GetParam(), options);
         SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl, "main");
         ASSERT_FALSE(back.words.empty()) << "SM " << sm << "\n" << formatAll(back.diagnostics);
-        EXPECT_FALSE(optimizeSpirv(back.words).words.empty());
+        EXPECT_FALSE(optimizeSpirv(back.words, false, true).words.empty());
     }
 }
 

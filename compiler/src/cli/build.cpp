@@ -1,6 +1,8 @@
 #include "cli/build.h"
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -108,19 +110,25 @@ int buildCommand(const Arguments& a) {
             failed = true;
         }
 
-    // Compile what is not up to date.
+    // Compile what is not up to date, on every core: jobs are independent, and each keeps its own
+    // results, so the outputs do not depend on the order they finish in.
     size_t upToDateCount = 0;
+    std::vector<Job*> pending;
     for (Job& j : jobs) {
         if (failed) break;
         j.hash = inputHash(j.material, a.options, j.extraInputs);
-        if (upToDate(a.outDir, j.material.name, j.hash)) {
-            j.upToDate = true;
-            ++upToDateCount;
-            continue;
-        }
-        j.result = compile(j.material, a.options);
-        failed |= !printDiagnostics(j.result.diagnostics, a.quiet);
+        j.upToDate = upToDate(a.outDir, j.material.name, j.hash);
+        if (j.upToDate) ++upToDateCount;
+        else pending.push_back(&j);
     }
+    std::atomic<size_t> next = 0;
+    auto worker = [&] {
+        for (size_t i; (i = next++) < pending.size();) pending[i]->result = compile(pending[i]->material, a.options);
+    };
+    std::vector<std::thread> threads(std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size()));
+    for (auto& t : threads) t = std::thread(worker);
+    for (auto& t : threads) t.join();
+    for (Job* j : pending) failed |= !printDiagnostics(j->result.diagnostics, a.quiet);
     if (failed) {
         std::cerr << "hexc: nothing written\n";
         return kInvalidInput;

@@ -91,7 +91,7 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     return result;
 }
 
-SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants) {
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants, bool legalize) {
     SpirvResult result;
     std::string messages;
     auto consumer = [&messages](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {

@@ -27,7 +27,8 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
 
 // Validates, optimises for performance and validates again. Diagnostics only on failure (a hexc bug).
 // freezeConstants: specialisation constants become constants first, so the optimiser folds them.
-SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants = false);
+// legalize: run the legalisation recipe first, which SPIR-V from glslang's HLSL front end needs.
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants = false, bool legalize = false);
 
 // Human-readable SPIR-V, for tests and debugging.
 std::string disassemble(const std::vector<uint32_t>& words);

@@ -117,7 +117,8 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     case ExecutedTarget::Spirv: request.fragmentSpirv = compiled.spirv; break;
     case ExecutedTarget::Hlsl:
         request.fragmentSpirv = spirvOrThrow(optimizeSpirv(spirvOrThrow(compileToSpirv(
-            outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl", SourceLanguage::Hlsl, manifest["targets"]["hlsl"]["entry_point"]))));
+            outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl", SourceLanguage::Hlsl, manifest["targets"]["hlsl"]["entry_point"])),
+            false, true));
         break;
     case ExecutedTarget::Glsl:
         request.fragmentSpirv = spirvOrThrow(optimizeSpirv(
