@@ -100,7 +100,8 @@ std::string scatterSvg(const std::string& title, const std::string& xLabel, cons
     std::vector<Box> labels;
     for (size_t s = 0; s < seriesNames.size(); ++s) {
         const char* colour = kColours[s % std::size(kColours)];
-        // Pareto front: walking from the fastest point, keep each point more accurate than all faster ones.
+        // Pareto front: walking from the fastest point, keep each point more accurate than all faster ones
+        // (by more than float noise: equal images compiled differently are not an improvement).
         std::vector<PlotPoint> series;
         for (const PlotPoint& p : shown)
             if (p.series == s && p.onFront) series.push_back(p);
@@ -108,7 +109,7 @@ std::string scatterSvg(const std::string& title, const std::string& xLabel, cons
         std::string front;
         double best = INFINITY;
         for (const PlotPoint& p : series)
-            if (p.y < best) {
+            if (p.y < best * (1 - 1e-6)) {
                 best = p.y;
                 front += strf("%.1f,%.1f ", px(p.x), py(p.y));
             }

@@ -31,6 +31,7 @@
 #include "reference/reference.h"
 #include "spirv/spirv.h"
 #include "strf.h"
+#include "vk/precision.h"
 #include "vk/render.h"
 
 namespace hexc::bench {
@@ -52,7 +53,14 @@ constexpr double kTargetRatio = 3.0;  // full-quality 3-slot material against pl
 struct Method {
     std::string name;
     json hextiling;
+    CompileOptions compile = {};  // how hexc compiles it: specialised and with a shared lattice by default
 };
+
+CompileOptions withOption(bool CompileOptions::*option, bool value) {
+    CompileOptions o;
+    o.*option = value;
+    return o;
+}
 
 // The best the material JSON can express in a hash mode: rotation and gain on.
 json fullQuality(HashMode mode) { return {{"mode", toString(mode)}, {"rotation", 1}, {"falloff", 0.75}}; }
@@ -69,6 +77,11 @@ const std::vector<Method>& methods() {
         {"stable-rot", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.5}}},
         {"stable-gain", {{"mode", "stable"}, {"rotation", 0}, {"falloff", 0.75}}},
         {"stable-rot-gain", fullQuality(HashMode::Stable)},
+        // What the compiler's skipping buys, on the full-quality material: every feature emitted with the
+        // uniforms deciding (--no-specialize), one lattice per slot (--no-shared-lattice), settings baked.
+        {"stable-rot-gain-general", fullQuality(HashMode::Stable), withOption(&CompileOptions::specialize, false)},
+        {"stable-rot-gain-per-slot", fullQuality(HashMode::Stable), withOption(&CompileOptions::shareLattice, false)},
+        {"stable-rot-gain-baked", fullQuality(HashMode::Stable), withOption(&CompileOptions::bake, true)},
     };
     return table;
 }
@@ -125,6 +138,7 @@ struct Timed {
     Material material;
     std::vector<double> frameMs;  // from every round
     std::string failure;          // why there are no numbers
+    CompileOptions compile = {};  // how the shader is compiled
 };
 
 struct Row : Timed {
@@ -195,8 +209,7 @@ Material material(const fs::path& dir, const std::string& name, const json& hext
 
 const Slot& albedoSlot(const Material& m) { return vk::slotForOutput(m, vk::RenderOutput::Albedo, "albedo"); }
 
-ShaderOps shaderOps(const Material& m) {
-    CompileOptions options;
+ShaderOps shaderOps(const Material& m, CompileOptions options) {
     options.targets = {Target::Spirv};
     CompileResult compiled = compile(m, options);
     if (!compiled.ok()) throw CompileError{compiled.diagnostics};
@@ -278,12 +291,13 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
             Row& row = results.rows.emplace_back();
             row.name = method.name;
             row.method = &method;
+            row.compile = method.compile;
             row.view = v;
             attempt(row.failure, [&] {
                 row.material = material(materialDir, method.name, method.hextiling);
                 const Slot& slot = albedoSlot(row.material);
                 row.errorReference = slot.hex.enabled ? slot.hex.mode : HashMode::Stable;
-                row.ops = shaderOps(row.material);
+                row.ops = shaderOps(row.material, method.compile);
             });
         }
     // The op-cost templates read one plain-tiled slot; the material's other slots are left out with a warning.
@@ -304,7 +318,8 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
             if (!t->failure.empty()) continue;
             attempt(t->failure, [&] {
                 std::vector<double> frameMs;
-                vk::render(runner, t->material, vk::RenderOutput::Shaded, "", kViews[t->view].view, vk::ExecutedTarget::Spirv, kFramesPerRound, &frameMs);
+                vk::render(runner, t->material, vk::RenderOutput::Shaded, "", kViews[t->view].view, vk::ExecutedTarget::Spirv, kFramesPerRound,
+                           &frameMs, {}, t->compile);
                 t->frameMs.insert(t->frameMs.end(), frameMs.begin(), frameMs.end());
             });
         }
@@ -315,7 +330,8 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
         if (!row.failure.empty()) continue;
         row.medianMs = median(row.frameMs);
         attempt(row.failure, [&] {
-            const Image image = vk::render(runner, row.material, vk::RenderOutput::Albedo, "albedo", kViews[row.view].view);
+            const Image image = vk::render(runner, row.material, vk::RenderOutput::Albedo, "albedo", kViews[row.view].view,
+                                           vk::ExecutedTarget::Spirv, 0, nullptr, {}, row.method->compile);
             row.error = compareRgb(image, refs.albedo.at({row.errorReference, row.view}));
             row.contrast = contrast(luminances(image), refs.sourceLuminance[row.view]);
         });
@@ -480,6 +496,18 @@ int run(const fs::path& resultsDir) {
     results.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     results.settings += strf("Bench run time %.0f s, of which %.0f s for the four fp64 reference images; load average %s at the end.\n",
                              results.totalSeconds, results.referenceSeconds, loadAverage().c_str());
+
+    // The precision stress report (the same measurement as tests/stress_test.cpp).
+    std::cout << "  precision far from the origin" << std::endl;
+    std::vector<vk::PrecisionRow> precision;
+    for (auto [mode, split] : {std::pair{HashMode::Stable, false}, std::pair{HashMode::Paper, false}}) {
+        auto rows = vk::measurePrecision(*runner, resultsDir / "precision", mode, split, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
+        precision.insert(precision.end(), rows.begin(), rows.end());
+    }
+    auto split = vk::measurePrecision(*runner, resultsDir / "precision", HashMode::Stable, true, {0, 1e3, 1e6, 1e9});
+    precision.insert(precision.end(), split.begin(), split.end());
+    writeFile(resultsDir / "precision.md", vk::precisionTable(precision));
+    std::cout << "\n" << vk::precisionTable(precision);
 
     writeFile(resultsDir / "results.csv", csv(results));
     writeFile(resultsDir / "results.md", markdown(results));
