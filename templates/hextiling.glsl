@@ -14,6 +14,7 @@ const vec4 hexcLuma = vec4(0.299, 0.587, 0.114, 0.0);
 // ids, and per tile the sample coordinate, its screen-space gradients and the tile rotation.
 struct HexcTiles {
     vec3 w;                      // barycentric weights of the three hex tiles, sum 1
+    vec3 invScale;               // 1 / each tile's texture scale (1 without per-tile transforms)
     ivec2 v1, v2, v3;            // integer lattice ids of the three tile centres
     vec2 st1, st2, st3;          // per-tile sample coordinates (rotated and offset)
     vec2 dx1, dx2, dx3;          // per-tile d(st)/dx, rotated with the tile
@@ -79,6 +80,7 @@ vec2 hexcRotateFromTile(vec2 d, vec2 cs) {
 // optimiser removes the rotation code entirely rather than rotating by a zero angle at run time.
 HexcTiles hexcTilesPaper(vec2 st, float rotStrength, bool rotate) {
     HexcTiles t;
+    t.invScale = vec3(1.0);
     vec2 dSTdx = dFdx(st), dSTdy = dFdy(st);
     hexcTriangleGrid(st, t.w, t.v1, t.v2, t.v3);
     t.rot1 = rotate ? hexcRotationPaper(t.v1, rotStrength) : vec2(1.0, 0.0);
@@ -117,12 +119,34 @@ uvec3 hexcPcg3d(uvec3 v) {
     return v;
 }
 
-// A tile's offset in [0, 1)^2 and rotation (cos, sin) of an angle in [-pi, pi) * rotStrength, from
-// the top 24 bits of each hash word (exact in float32).
-void hexcStableTile(ivec2 id, float rotStrength, bool rotate, out vec2 offset, out vec2 rot) {
-    uvec3 h = hexcPcg3d(uvec3(uvec2(id), 0u)) >> 8u;
-    offset = vec2(h.xy) * (1.0 / 16777216.0);
-    float angle = (float(h.z) * (2.0 / 16777216.0) - 1.0) * hexcPi * rotStrength;
+// Per-tile transforms (stable mode, docs/material-format.md#per-tile-transforms): the angle drawn from
+// rotationRange (degrees), in rotationSteps steps when > 0; the texture scaled by a factor drawn from
+// scaleRange; the offset times `offset`, snapped to an offsetSteps grid when > 0.
+struct HexcTransform {
+    vec2 rotationRange;
+    int rotationSteps;
+    vec2 scaleRange;
+    float offset;
+    ivec2 offsetSteps;
+};
+
+// A tile's offset in [0, 1)^2, rotation (cos, sin) of an angle in [-pi, pi) * rotStrength and 1 / scale,
+// from the top 24 bits of each hash word (exact in float32). `transform` is a literal: false keeps the
+// defaults (no range, steps or scale) without their code.
+void hexcStableTile(ivec2 id, float rotStrength, bool rotate, bool transform, HexcTransform tf, out vec2 offset, out vec2 rot,
+                    out float invScale) {
+    vec3 u = vec3(hexcPcg3d(uvec3(uvec2(id), 0u)) >> 8u) * (1.0 / 16777216.0);
+    offset = u.xy;
+    float angle = (u.z * 2.0 - 1.0) * hexcPi * rotStrength;
+    invScale = 1.0;
+    if (transform) {
+        vec2 steps = vec2(tf.offsetSteps);
+        offset = mix(offset, floor(offset * steps) / steps, greaterThan(steps, vec2(0.0))) * tf.offset;
+        float a = tf.rotationSteps > 0 ? floor(u.z * float(tf.rotationSteps)) / float(tf.rotationSteps) : u.z;
+        angle = radians(mix(tf.rotationRange.x, tf.rotationRange.y, a)) * rotStrength;
+        float v = float(hexcPcg3d(uvec3(uvec2(id), 1u)).x >> 8u) * (1.0 / 16777216.0);
+        invScale = 1.0 / mix(tf.scaleRange.x, tf.scaleRange.y, v);
+    }
     rot = rotate ? vec2(cos(angle), sin(angle)) : vec2(1.0, 0.0);
 }
 
@@ -133,7 +157,8 @@ vec2 hexcStableCentre(ivec2 local) {
 
 // st = period * cell + st_local, with the lattice shift of `cell` periods added to the ids in 32-bit
 // unsigned arithmetic (ids are only hashed, so they may wrap). dSTdx/dSTdy: the gradients of st.
-HexcTiles hexcTilesStableAt(vec2 st, vec2 dSTdx, vec2 dSTdy, uvec2 idShift, float rotStrength, bool rotate) {
+HexcTiles hexcTilesStableAt(vec2 st, vec2 dSTdx, vec2 dSTdy, uvec2 idShift, float rotStrength, bool rotate, bool transform,
+                            HexcTransform tf) {
     HexcTiles t;
     // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small.
     float kx = floor(st.x / 28.0), ky = floor(st.y);
@@ -145,30 +170,31 @@ HexcTiles hexcTilesStableAt(vec2 st, vec2 dSTdx, vec2 dSTdy, uvec2 idShift, floa
     t.v2 = ivec2(uvec2(l2) + shift);
     t.v3 = ivec2(uvec2(l3) + shift);
     vec2 o1, o2, o3;
-    hexcStableTile(t.v1, rotStrength, rotate, o1, t.rot1);
-    hexcStableTile(t.v2, rotStrength, rotate, o2, t.rot2);
-    hexcStableTile(t.v3, rotStrength, rotate, o3, t.rot3);
+    hexcStableTile(t.v1, rotStrength, rotate, transform, tf, o1, t.rot1, t.invScale.x);
+    hexcStableTile(t.v2, rotStrength, rotate, transform, tf, o2, t.rot2, t.invScale.y);
+    hexcStableTile(t.v3, rotStrength, rotate, transform, tf, o3, t.rot3, t.invScale.z);
     vec2 d1 = r - hexcStableCentre(l1), d2 = r - hexcStableCentre(l2), d3 = r - hexcStableCentre(l3);
-    t.st1 = (rotate ? hexcRotateToTile(d1, t.rot1) : d1) + o1;
-    t.st2 = (rotate ? hexcRotateToTile(d2, t.rot2) : d2) + o2;
-    t.st3 = (rotate ? hexcRotateToTile(d3, t.rot3) : d3) + o3;
-    t.dx1 = rotate ? hexcRotateToTile(dSTdx, t.rot1) : dSTdx; t.dy1 = rotate ? hexcRotateToTile(dSTdy, t.rot1) : dSTdy;
-    t.dx2 = rotate ? hexcRotateToTile(dSTdx, t.rot2) : dSTdx; t.dy2 = rotate ? hexcRotateToTile(dSTdy, t.rot2) : dSTdy;
-    t.dx3 = rotate ? hexcRotateToTile(dSTdx, t.rot3) : dSTdx; t.dy3 = rotate ? hexcRotateToTile(dSTdy, t.rot3) : dSTdy;
+    t.st1 = (rotate ? hexcRotateToTile(d1, t.rot1) : d1) * t.invScale.x + o1;
+    t.st2 = (rotate ? hexcRotateToTile(d2, t.rot2) : d2) * t.invScale.y + o2;
+    t.st3 = (rotate ? hexcRotateToTile(d3, t.rot3) : d3) * t.invScale.z + o3;
+    t.dx1 = (rotate ? hexcRotateToTile(dSTdx, t.rot1) : dSTdx) * t.invScale.x; t.dy1 = (rotate ? hexcRotateToTile(dSTdy, t.rot1) : dSTdy) * t.invScale.x;
+    t.dx2 = (rotate ? hexcRotateToTile(dSTdx, t.rot2) : dSTdx) * t.invScale.y; t.dy2 = (rotate ? hexcRotateToTile(dSTdy, t.rot2) : dSTdy) * t.invScale.y;
+    t.dx3 = (rotate ? hexcRotateToTile(dSTdx, t.rot3) : dSTdx) * t.invScale.z; t.dy3 = (rotate ? hexcRotateToTile(dSTdy, t.rot3) : dSTdy) * t.invScale.z;
     return t;
 }
 
-HexcTiles hexcTilesStable(vec2 st, float rotStrength, bool rotate) {
-    return hexcTilesStableAt(st, dFdx(st), dFdy(st), uvec2(0u), rotStrength, rotate);
+HexcTiles hexcTilesStable(vec2 st, float rotStrength, bool rotate, bool transform, HexcTransform tf) {
+    return hexcTilesStableAt(st, dFdx(st), dFdy(st), uvec2(0u), rotStrength, rotate, transform, tf);
 }
 
 // Split coordinates for large worlds: st = originOffset + st_rel + (28, 1) * originCell, where the engine
 // computes the cell and offset from a double origin each frame (docs/precision.md) and the mesh supplies a
 // small st_rel, whose gradients are precise.
-HexcTiles hexcTilesStableSplit(vec2 stRel, ivec2 originCell, vec2 originOffset, float rotStrength, bool rotate) {
+HexcTiles hexcTilesStableSplit(vec2 stRel, ivec2 originCell, vec2 originOffset, float rotStrength, bool rotate, bool transform,
+                               HexcTransform tf) {
     uvec2 cell = uvec2(originCell);
     uvec2 shift = uvec2(97u * cell.x - 2u * cell.y, 4u * cell.y);
-    return hexcTilesStableAt(originOffset + stRel, dFdx(stRel), dFdy(stRel), shift, rotStrength, rotate);
+    return hexcTilesStableAt(originOffset + stRel, dFdx(stRel), dFdy(stRel), shift, rotStrength, rotate, transform, tf);
 }
 
 // x^n for a literal n in 1..16 by repeated squaring: hexc passes n when an exponent is a whole number, the
@@ -263,9 +289,10 @@ vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, boo
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, bool flipY,
                bool metric, bool gain, int exponentInt, int gainInt, out vec3 weights) {
-    vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1);
-    vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2);
-    vec2 d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3);
+    // A tile scaled by s shows H(p / s), whose slope is the sampled one over s.
+    vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1) * t.invScale.x;
+    vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2) * t.invScale.y;
+    vec2 d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3) * t.invScale.z;
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), falloffContrast, exponent, falloff, metric, gain, exponentInt, gainInt);
     weights = hexcHexWeights(W, t.v1, t.v3);

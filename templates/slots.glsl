@@ -1,7 +1,7 @@
 // hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|plain>`) and the resource
 // sections, and replaces the $placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff,
 // $falloffcontrast, $exponent, $origincell, $originoffset (uniform members, constants or literals),
-// $lattice (a `lattice.*` section), $rotate, $metric, $gain, $exponentint, $gainint (literal feature
+// $lattice (a `lattice.*` section), $tf (a HexcTransform), $transform, $rotate, $metric, $gain, $exponentint, $gainint (literal feature
 // switches and whole-number exponents, 0 = none), $luma, $channel,
 // $flipy, $kind, $members, $constants.
 // Each slot gets `hexc_$name(vec2 uv)` and an overload with `out vec3 weights` (Listing 7 hex weights).
@@ -30,14 +30,17 @@ layout(set = 0, binding = $binding) uniform sampler hexcSampler;
 layout(set = 0, binding = $binding) uniform texture2D hexcTex_$name;
 #define HEXC_HAS_$name 1
 
+//@ transform
+HexcTransform($rotationrange, $rotationsteps, $scalerange, $offset, ivec2($offsetstepsx, $offsetstepsy))
+
 //@ lattice.paper
 hexcTilesPaper(uv * $tiling, $rotation, $rotate)
 
 //@ lattice.stable
-hexcTilesStable(uv * $tiling, $rotation, $rotate)
+hexcTilesStable(uv * $tiling, $rotation, $rotate, $transform, $tf)
 
 //@ lattice.split
-hexcTilesStableSplit(uv * $tiling, $origincell, $originoffset, $rotation, $rotate)
+hexcTilesStableSplit(uv * $tiling, $origincell, $originoffset, $rotation, $rotate, $transform, $tf)
 
 //@ color.hex
 vec4 hexc_$name(vec2 uv, out vec3 weights) {

@@ -126,6 +126,9 @@ const Case kColorCases[] = {
     {"color_srgb_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", true},
     {"color_paper_mode_near_origin", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
     {"color_plain_tiling", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "enabled": false}})", true},
+    {"color_transforms", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotationrange": [0, 360], "rotationsteps": 4, "scalerange": [0.5, 2], "offset": 0.5, "offsetsteps": [4, 4]}})", false},
+    // Minified with transforms but no scale: a scaled tile would read other mip levels than the view's exact level 2.
+    {"color_transforms_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotationrange": [-45, 45], "offset": 0.25}})", true},
     {"scalar_roughness", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})", false},
     {"scalar_roughness_minified", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})", true},
 };
@@ -203,6 +206,7 @@ const Case kNormalCases[] = {
     {"normal_beta_1_gamma_3", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloffcontrast": 0.9, "exponent": 3}})", false},
     {"normal_flip_y", R"({"name": "normal", "kind": "normal", "flip_y": true, "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", false},
     {"normal_minified", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", true},
+    {"normal_transforms", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "rotationrange": [0, 360], "rotationsteps": 8, "scalerange": [0.5, 2], "offsetsteps": [2, 2]}})", false},
     {"normal_paper_mode_near_origin", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
 };
 
@@ -370,9 +374,10 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
     ramp.rgba.clear();
     for (int i = 0; i < 16 * 16; ++i) ramp.rgba.insert(ramp.rgba.end(), {float(0.5 - 0.25 * a), float(0.5 - 0.25 * b), 0.75f, 1.0f});
     writeImage(ramp, file);  // n = (-a, -b, 1) / 2 encoded n * 0.5 + 0.5: Listing 9 reads back d = (a, b)
-    for (const char* mode : {"stable", "paper"}) {
+    // Per-tile scale s: the tile shows H(p / s), so its slope is R(theta)(a, b) / s.
+    for (const char* mode : {R"("mode": "stable")", R"("mode": "paper")", R"("scalerange": [0.5, 2], "rotationrange": [0, 360], "rotationsteps": 6)"}) {
         Material m = material(std::string(R"({"name": "normal", "kind": "normal", "texture": ")") + file.string() +
-                              R"(", "hextiling": {"tiling": 1, "mode": ")" + mode + R"("}})");
+                              R"(", "hextiling": {"tiling": 1, )" + mode + "}}");
         const View view{128, 128, {0.0, 0.0, 1.0, 1.0}};
         Image d = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Derivative, "", view);
         std::vector<reference::SlotResult> ref = reference::evaluateView(m.slots[0], sampled(m.slots[0]), view);
@@ -384,12 +389,15 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
                 reference::Triangle tri = reference::lattice({(i + 0.5) / view.width, (j + 0.5) / view.height}, m.slots[0].hex.mode);
                 size_t dominant = std::max_element(r.blend.begin(), r.blend.end()) - r.blend.begin();
                 if (r.blend[dominant] < 0.999) continue;
-                double theta = reference::tileTransform(tri.id[dominant], m.slots[0].hex).angle;
-                double ex = std::cos(theta) * a - std::sin(theta) * b, ey = std::sin(theta) * a + std::cos(theta) * b;
+                reference::TileTransform tile = reference::tileTransform(tri.id[dominant], m.slots[0].hex);
+                double theta = tile.angle;
+                double ex = (std::cos(theta) * a - std::sin(theta) * b) / tile.scale, ey = (std::sin(theta) * a + std::cos(theta) * b) / tile.scale;
                 worst = std::max({worst, std::fabs(d.at(i, j)[0] - ex), std::fabs(d.at(i, j)[1] - ey)});
                 ++checked;
             }
-        double bound = 2 * 0.001 * std::hypot(a, b) + 1e-5;  // 1e-5: float32 sin/cos and products
+        // The other tiles' share (< 0.001) moves the result by at most 0.001 times the largest difference of two
+        // tiles' slopes, 2 |(a, b)| / min scale; 1e-5: float32 sin/cos and products.
+        double bound = 2 * 0.001 * std::hypot(a, b) / m.slots[0].hex.scaleRange[0] + 1e-5;
         std::printf("  ramp (%s): %zu pixels inside tiles, largest |d - R(theta)(a, b)| %.2e, bound %.2e\n", mode, checked, worst, bound);
         EXPECT_GT(checked, size_t(view.width * view.height / 4));
         EXPECT_LE(worst, bound) << mode;

@@ -64,7 +64,7 @@ const InvalidFile kInvalidFiles[] = {
      "`colorspace`, `flip_y` or `hextiling` (did you mean `colorspace`?)"},
     {"unknown_key_misspelled",
      "6:5: error: /hextiling/rotaton: unknown key `rotaton`; expected `enabled`, `tiling`, `rotation`, `falloff`, "
-     "`falloffcontrast`, `exponent`, `mode` or `split_coordinates` (did you mean `rotation`?)"},
+     "`falloffcontrast`, `exponent`, `mode`, `split_coordinates`, `rotationrange`, `rotationsteps`, `scalerange`, `offset` or `offsetsteps` (did you mean `rotation`?)"},
     {"unknown_key_top_level",
      "12:3: error: /description: unknown key `description`; expected `$schema`, `name`, `template`, `hextiling` or `slots`"},
 };
@@ -169,6 +169,28 @@ TEST(Validation, SplitCoordinatesNeedStableMode) {
   "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
               std::vector<std::string>{"materials/t.json:2:13: error: /slots/0: `split_coordinates` needs mode `stable`; the "
                                        "paper's lattice has no exact period to split at"});
+}
+
+TEST(Validation, PerTileTransforms) {
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"rotationsteps": 2.5, "scalerange": [0, 2], "offsetsteps": 4, "offset": 2},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
+              (std::vector<std::string>{
+                  "materials/t.json:1:66: error: /hextiling/scalerange/0: expected a number in [0.01, 100], got 0",
+                  "materials/t.json:1:101: error: /hextiling/offset: expected a number in [0, 1], got 2",
+                  "materials/t.json:1:46: error: /hextiling/rotationsteps: expected a whole number in 0..360 (0: continuous), got 2.5",
+                  "materials/t.json:1:88: error: /hextiling/offsetsteps: expected an array of two numbers in 0..4096 (0: continuous), got a number",
+              }));
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"mode": "paper", "rotationsteps": 4},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
+              std::vector<std::string>{"materials/t.json:2:13: error: /slots/0: per-tile transforms (rotationrange, rotationsteps, "
+                                       "scalerange, offset, offsetsteps) need mode `stable`; mode `paper` is exactly the paper's "
+                                       "Listings 2 and 6"});
+    ParseResult ok = parseMaterial(R"({"name": "m", "hextiling": {"rotationrange": [0, 360], "rotationsteps": 4, "offsetsteps": [4, 2]},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})", "materials/t.json");
+    ASSERT_TRUE(ok.material);
+    EXPECT_EQ(ok.material->slots[0].hex.rotationSteps, 4);
+    EXPECT_EQ(ok.material->slots[0].hex.offsetSteps, (std::array<int, 2>{4, 2}));
+    EXPECT_TRUE(ok.material->slots[0].hex.hasTransforms());
 }
 
 TEST(Validation, ColumnsCountCharactersNotBytes) {

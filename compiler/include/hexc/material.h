@@ -31,6 +31,16 @@ struct HexTiling {
     // Stable mode only: the slot also reads an origin (cell, offset) that the engine fills each frame from a
     // double-precision origin, for worlds whose uv exceed what float32 resolves (docs/precision.md).
     bool splitCoordinates = false;
+    // Per-tile transforms (stable mode; docs/material-format.md#per-tile-transforms).
+    std::array<double, 2> rotationRange{-180, 180};  // degrees the tile angle is drawn from (times `rotation`)
+    int rotationSteps = 0;                            // > 0: that many evenly spaced angles in the range
+    std::array<double, 2> scaleRange{1, 1};           // texture scale drawn per tile
+    double offset = 1.0;                              // amount of the random offset
+    std::array<int, 2> offsetSteps{0, 0};             // > 0: offsets snapped to a grid of that many cells
+    bool hasTransforms() const {
+        return rotationRange != std::array<double, 2>{-180, 180} || rotationSteps != 0 || scaleRange != std::array<double, 2>{1, 1} ||
+               offset != 1.0 || offsetSteps != std::array<int, 2>{0, 0};
+    }
 };
 
 struct Slot {

@@ -80,6 +80,13 @@ std::string injectedCode(const ShaderPlan& plan) {
             {"$falloffcontrast", param(s.name + "_falloffcontrast", "0.0")},
             {"$exponent", param(s.name + "_exponent", "7.0")},
             {"$rotate", lattice.rotate ? "true" : "false"},
+            {"$transform", lattice.transform ? "true" : "false"},
+            {"$rotationrange", param(lattice.name + "_rotationrange", "vec2(-180.0, 180.0)")},
+            {"$scalerange", param(lattice.name + "_scalerange", "vec2(1.0)")},
+            {"$offset", param(lattice.name + "_offset", "1.0")},
+            {"$rotationsteps", std::to_string(lattice.settings.rotationSteps)},
+            {"$offsetstepsx", std::to_string(lattice.settings.offsetSteps[0])},
+            {"$offsetstepsy", std::to_string(lattice.settings.offsetSteps[1])},
             {"$metric", sp.metric ? "true" : "false"},
             {"$gain", sp.gain ? "true" : "false"},
             {"$exponentint", std::to_string(sp.exponentInt)},
@@ -90,6 +97,8 @@ std::string injectedCode(const ShaderPlan& plan) {
             {"$flipy", s.flipY ? "true" : "false"},
         };
         const char* latticeSection = s.hex.mode == HashMode::Paper ? "lattice.paper" : s.hex.splitCoordinates ? "lattice.split" : "lattice.stable";
+        values["$tf"] = replaceAll(sections.at("transform"), values);
+        values["$tf"].pop_back();  // the section's final newline
         values["$lattice"] = replaceAll(sections.at(latticeSection), values);
         values["$lattice"].pop_back();  // the section's final newline
         out += replaceAll(sections.at("texture"), values) + "\n";

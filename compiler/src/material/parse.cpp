@@ -22,7 +22,8 @@ using nlohmann::json;
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "slots"};
 const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling"};
-const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "falloff", "falloffcontrast", "exponent", "mode", "split_coordinates"};
+const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "falloff", "falloffcontrast", "exponent", "mode",
+                                           "split_coordinates", "rotationrange", "rotationsteps", "scalerange", "offset", "offsetsteps"};
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
 const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
@@ -247,6 +248,25 @@ private:
         return x;
     }
 
+    // A whole number in `range`.
+    double whole(const json& v, const std::string& pointer, const Range& range, double fallback) {
+        if (v.is_number() && v.get<double>() != std::floor(v.get<double>())) {
+            error(pointer, "expected a whole number " + range.text + ", got " + v.dump());
+            return fallback;
+        }
+        return number(v, pointer, range, fallback);
+    }
+
+    // An array of two numbers in `range` (whole numbers when `integer`).
+    void pair(const json& v, const std::string& pointer, const Range& range, std::array<double, 2>& out, bool integer = false) {
+        if (!v.is_array() || v.size() != 2) {
+            error(pointer, "expected an array of two numbers " + range.text + ", got " + (v.is_array() ? "an array of " + std::to_string(v.size()) : typeName(v)));
+            return;
+        }
+        for (size_t i = 0; i < 2; ++i)
+            out[i] = integer ? whole(v[i], pointerAppend(pointer, i), range, out[i]) : number(v[i], pointerAppend(pointer, i), range, out[i]);
+    }
+
     std::string templateRef(const json& v, const std::string& pointer) {
         std::string name = string(v, pointer);
         if (!v.is_string()) return "lit";
@@ -299,6 +319,17 @@ private:
         }
         if (v.contains("split_coordinates"))
             hex.splitCoordinates = boolean(v["split_coordinates"], pointer + "/split_coordinates", hex.splitCoordinates);
+        if (v.contains("rotationrange"))
+            pair(v["rotationrange"], pointer + "/rotationrange", {-3600, 3600, false, false, "in [-3600, 3600] (degrees)"}, hex.rotationRange);
+        if (v.contains("scalerange")) pair(v["scalerange"], pointer + "/scalerange", {0.01, 100, false, false, "in [0.01, 100]"}, hex.scaleRange);
+        if (v.contains("offset")) hex.offset = number(v["offset"], pointer + "/offset", {0, 1, false, false, "in [0, 1]"}, hex.offset);
+        if (v.contains("rotationsteps"))
+            hex.rotationSteps = int(whole(v["rotationsteps"], pointer + "/rotationsteps", {0, 360, false, false, "in 0..360 (0: continuous)"}, 0));
+        if (v.contains("offsetsteps")) {
+            std::array<double, 2> steps{0, 0};
+            pair(v["offsetsteps"], pointer + "/offsetsteps", {0, 4096, false, false, "in 0..4096 (0: continuous)"}, steps, true);
+            hex.offsetSteps = {int(steps[0]), int(steps[1])};
+        }
     }
 
     void slots(const json& v, const std::string& pointer, Material& m) {
@@ -370,9 +401,14 @@ private:
             }
         }
         if (v.contains("hextiling")) hexSettings(v["hextiling"], pointer + "/hextiling", s.hex);
-        // Checked on the merged settings: the paper's lattice has no exact period to split at.
+        // Checked on the merged settings: the paper's lattice has no exact period to split at, and its tile
+        // transforms are Listings 2 and 6 exactly.
+        std::string at = v.contains("hextiling") ? pointer + "/hextiling" : pointer;
         if (s.hex.splitCoordinates && s.hex.mode == HashMode::Paper)
-            error(v.contains("hextiling") ? pointer + "/hextiling" : pointer, "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
+            error(at, "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
+        if (s.hex.hasTransforms() && s.hex.mode == HashMode::Paper)
+            error(at, "per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode `stable`; "
+                      "mode `paper` is exactly the paper's Listings 2 and 6");
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
             s.texture = string(v["texture"], pointer + "/texture");
             if (v["texture"].is_string()) texture(s, pointer + "/texture");

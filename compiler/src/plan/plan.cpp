@@ -17,7 +17,8 @@ bool readsIdentifier(const std::string& source, const std::string& identifier) {
 // Slots share a lattice when everything the lattice computes from is the same.
 bool sameLattice(const HexTiling& a, const HexTiling& b) {
     return a.enabled == b.enabled && a.mode == b.mode && a.splitCoordinates == b.splitCoordinates && a.tiling == b.tiling &&
-           a.rotation == b.rotation;
+           a.rotation == b.rotation && a.rotationRange == b.rotationRange && a.rotationSteps == b.rotationSteps &&
+           a.scaleRange == b.scaleRange && a.offset == b.offset && a.offsetSteps == b.offsetSteps;
 }
 
 class ParamBuilder {
@@ -111,7 +112,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         if (!all && sp.gain && std::fabs(k - std::round(k)) < 1e-12 && k >= 2 && k <= 16) sp.gainInt = int(std::round(k));
         size_t lattice = 0;
         while (lattice < plan.lattices.size() && !(options.shareLattice && sameLattice(plan.lattices[lattice].settings, h))) ++lattice;
-        if (lattice == plan.lattices.size()) plan.lattices.push_back({slot.name, h, all || h.rotation != 0});
+        if (lattice == plan.lattices.size()) plan.lattices.push_back({slot.name, h, all || h.rotation != 0, h.hasTransforms()});
         sp.lattice = lattice;
         plan.slots.push_back(sp);
     }
@@ -127,6 +128,11 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         params.add(l.name + "_tiling", {h.tiling[0], h.tiling[1]}, users);
         if (!h.enabled) continue;
         if (l.rotate) params.add(l.name + "_rotation", {h.rotation}, users);
+        if (l.transform) {
+            params.add(l.name + "_rotationrange", {h.rotationRange[0], h.rotationRange[1]}, users);
+            params.add(l.name + "_scalerange", {h.scaleRange[0], h.scaleRange[1]}, users);
+            params.add(l.name + "_offset", {h.offset}, users);
+        }
         if (h.splitCoordinates) {
             // Filled per frame by the engine from its double-precision origin (docs/precision.md).
             params.add(l.name + "_origin_cell", {0, 0}, users, true,

@@ -37,6 +37,7 @@ struct LatticePlan {
     std::string name;            // the first slot's name; names the lattice's parameters
     HexTiling settings;          // enabled, mode, split, tiling, rotation
     bool rotate = true;          // the rotation code is emitted
+    bool transform = false;      // per-tile transforms (ranges, steps, scale, offset amount) are emitted
 };
 
 struct SlotPlan {

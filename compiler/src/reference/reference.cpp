@@ -258,16 +258,21 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
         const Vec2 c = paper ? tileCentre(id) : stableCentre(id);
         // Rotate st about the tile centre into the tile's frame, then shift by the tile's offset (paper: and
         // back by the centre); the gradients rotate with it (Listings 3 and 4).
-        const Vec2 local = rot.toTile({st[0] - c[0], st[1] - c[1]});
+        // The texture is scaled by the tile's scale about the tile centre: sample at the local point / scale.
+        const Vec2 rotated = rot.toTile({st[0] - c[0], st[1] - c[1]});
+        const Vec2 local{rotated[0] / tile.scale, rotated[1] / tile.scale};
         const Vec2 p = paper ? Vec2{local[0] + c[0] + tile.offset[0], local[1] + c[1] + tile.offset[1]}
                              : Vec2{local[0] + tile.offset[0], local[1] + tile.offset[1]};
-        const Vec2 px = rot.toTile(dx), py = rot.toTile(dy);
+        Vec2 px = rot.toTile(dx), py = rot.toTile(dy);
+        for (Vec2* g : {&px, &py}) *g = {(*g)[0] / tile.scale, (*g)[1] / tile.scale};
         const Rgba x = texture.sample(p[0], p[1], px[0], px[1], py[0], py[1]);
 
         double metric;
         if (normal) {
             // The sampled slope is in the tile's frame: rotate it back before weighing and blending (Listing 3).
-            const Vec2 d = rot.fromTile(normalToDerivative(x, slot.flipY));
+            // Rotated back to st, and over the scale: a tile scaled by s shows H(p / s), of slope dH / s.
+            const Vec2 r = rot.fromTile(normalToDerivative(x, slot.flipY));
+            const Vec2 d{r[0] / tile.scale, r[1] / tile.scale};
             const double d2 = d[0] * d[0] + d[1] * d[1];
             metric = std::sqrt(d2 / (1 + d2));  // Eq. 3: sine of the normal's angle to +Z
             samples[i] = asValue(d);
@@ -293,9 +298,17 @@ Triangle lattice(Vec2 st, HashMode mode) {
 
 TileTransform tileTransform(TileId id, const HexTiling& hex) {
     if (hex.mode == HashMode::Paper) return {tileOffset(id), paperAngle(id, hex.rotation)};
+    // Three numbers in [0, 1) from the top 24 bits of pcg3d(id, 0), a fourth from pcg3d(id, 1).
     const auto h = pcg3d({uint32_t(id[0]), uint32_t(id[1]), 0u});
-    const double scale = 1.0 / 16777216.0;  // the top 24 bits of each word, as fractions in [0, 1)
-    return {{(h[0] >> 8) * scale, (h[1] >> 8) * scale}, ((h[2] >> 8) * 2 * scale - 1) * pi * hex.rotation};
+    const double unit = 1.0 / 16777216.0;
+    const double ux = (h[0] >> 8) * unit, uy = (h[1] >> 8) * unit, uz = (h[2] >> 8) * unit;
+    if (!hex.hasTransforms()) return {{ux, uy}, (uz * 2 - 1) * pi * hex.rotation};
+    auto snap = [](double u, int steps) { return steps > 0 ? std::floor(u * steps) / steps : u; };
+    const Vec2 offset{snap(ux, hex.offsetSteps[0]) * hex.offset, snap(uy, hex.offsetSteps[1]) * hex.offset};
+    const double a = snap(uz, hex.rotationSteps);
+    const double degrees = hex.rotationRange[0] + (hex.rotationRange[1] - hex.rotationRange[0]) * a;
+    const double v = (pcg3d({uint32_t(id[0]), uint32_t(id[1]), 1u})[0] >> 8) * unit;
+    return {offset, degrees * pi / 180 * hex.rotation, hex.scaleRange[0] + (hex.scaleRange[1] - hex.scaleRange[0]) * v};
 }
 
 std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view) {

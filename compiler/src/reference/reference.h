@@ -79,11 +79,13 @@ Vec2 tileOffset(TileId id);
 // The lattice triangle of st in the given mode (paper: Listing 1; stable: docs/material-format.md#mode).
 Triangle lattice(Vec2 st, HashMode mode);
 
-// A tile's random transform: the offset added to its sample point and its rotation angle (radians, already
-// scaled by hex.rotation). Paper: Listings 2 and 6; stable: pcg3d of the id.
+// A tile's random transform: the offset added to its sample point, its rotation angle (radians, already
+// scaled by hex.rotation) and the texture's scale in it. Paper: Listings 2 and 6; stable: pcg3d of the id,
+// with the per-tile transform settings (docs/material-format.md#per-tile-transforms).
 struct TileTransform {
     Vec2 offset;
     double angle;
+    double scale = 1;
 };
 TileTransform tileTransform(TileId id, const HexTiling& hex);
 
