@@ -82,6 +82,8 @@ const std::vector<Method>& methods() {
         {"stable-rot-gain-general", fullQuality(HashMode::Stable), withOption(&CompileOptions::specialize, false)},
         {"stable-rot-gain-per-slot", fullQuality(HashMode::Stable), withOption(&CompileOptions::shareLattice, false)},
         {"stable-rot-gain-baked", fullQuality(HashMode::Stable), withOption(&CompileOptions::bake, true)},
+        // The seeds' variants.
+        {"stable-rot-gain-1tap", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.75}, {"taps", 1}}},
     };
     return table;
 }

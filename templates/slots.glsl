@@ -1,4 +1,4 @@
-// hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|plain>`) and the resource
+// hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|hex1|plain>`) and the resource
 // sections, and replaces the $placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff,
 // $falloffcontrast, $exponent, $origincell, $originoffset (uniform members, constants or literals),
 // $lattice (a `lattice.*` section), $tf (a HexcTransform), $transform, $rotate, $metric, $gain, $exponentint, $gainint (literal feature
@@ -48,6 +48,12 @@ vec4 hexc_$name(vec2 uv, out vec3 weights) {
 }
 vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
+//@ color.hex1
+vec4 hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcColor1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $gain, $exponentint, $gainint, weights);
+}
+vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
 //@ color.plain
 vec4 hexc_$name(vec2 uv, out vec3 weights) {
     return hexcPlainColor(hexcTex_$name, hexcSampler, uv * $tiling, weights);
@@ -60,6 +66,12 @@ float hexc_$name(vec2 uv, out vec3 weights) {
 }
 float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
+//@ scalar.hex1
+float hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcColor1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $gain, $exponentint, $gainint, weights).$channel;
+}
+float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
 //@ scalar.plain
 float hexc_$name(vec2 uv, out vec3 weights) {
     return hexcPlainColor(hexcTex_$name, hexcSampler, uv * $tiling, weights).$channel;
@@ -69,6 +81,12 @@ float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 //@ normal.hex
 vec2 hexc_$name(vec2 uv, out vec3 weights) {
     return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, $metric, $gain, $exponentint, $gainint, weights);
+}
+vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ normal.hex1
+vec2 hexc_$name(vec2 uv, out vec3 weights) {
+    return hexcDeriv1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $flipy, $gain, $exponentint, $gainint, weights);
 }
 vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 

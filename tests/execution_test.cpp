@@ -9,6 +9,7 @@
 
 #include "hexc/material.h"
 #include "reference/reference.h"
+#include "spirv/spirv.h"
 #include "vk/precision.h"
 #include "vk/render.h"
 #include "support.h"
@@ -283,6 +284,75 @@ INSTANTIATE_TEST_SUITE_P(Exec, Weights,
                          testing::Combine(testing::ValuesIn(kWeightsCases),
                                           testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
                          [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+
+// ---- 1-tap dithered hex tiling ---------------------------------------------------------------------------
+// Each pixel samples one tile, picked by comparing its dither value u with the cumulative weights. Where u
+// lies within the weights' own float32 error of a boundary (see Weights), GPU and reference may pick
+// different tiles; those pixels are counted and left out. Everywhere else the same tile must be picked and
+// its sample match within the single sample's filtering error.
+TEST(OneTap, PicksTheSameTileAndSampleAsTheReference) {
+    REQUIRE_VULKAN();
+    struct OneTapCase {
+        const char* name;
+        const char* slot;
+    };
+    const OneTapCase cases[] = {
+        {"color", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "taps": 1, "falloff": 0.7}})"},
+        {"normal", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "taps": 1, "exponent": 3}})"},
+    };
+    for (const OneTapCase& c : cases)
+        for (auto target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl}) {
+            Material m = material(c.slot);
+            const Slot& slot = m.slots[0];
+            const bool normal = slot.kind == SlotKind::Normal;
+            const View view = kMagnified;
+            Image value = vk::render(*runner(&whyNoVulkan), m, normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo, "", view, target);
+            Image weights = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view, target);
+            reference::SampledTexture tex = sampled(slot);
+            std::vector<reference::SlotResult> ref = reference::evaluateView(slot, tex, view);
+            TextureBounds b = bounds(tex);
+            double es = sampleError(0, slot.colorSpace == ColorSpace::Srgb);
+            double tolerance = normal ? 2 * sampleError(0, false) * (1 + b.maxDeriv) / b.minZ : es;
+            double stMax = std::max(view.uvRect[2], view.uvRect[3]) * slot.hex.tiling[0];
+            double k = std::max(1.0, std::log2(1.0 / (1.0 - slot.hex.falloff)));
+            double epsilon = k * 2 * slot.hex.exponent * 16 * std::ldexp(1.0, std::ilogb(stMax) - 23) * 2;
+            size_t ambiguous = 0, compared = 0;
+            double worst = 0;
+            for (int j = 0; j < view.height; ++j)
+                for (int i = 0; i < view.width; ++i) {
+                    size_t p = size_t(j) * view.width + i;
+                    double u = view.uvRect[0] + (i + 0.5) / view.width * (view.uvRect[2] - view.uvRect[0]);
+                    double v = view.uvRect[1] + (j + 0.5) / view.height * (view.uvRect[3] - view.uvRect[1]);
+                    reference::Triangle tri = reference::lattice({u * slot.hex.tiling[0], v * slot.hex.tiling[1]}, slot.hex.mode);
+                    auto W = reference::blendWeights(tri.weight, {1, 1, 1}, slot.hex);
+                    double d = reference::ditherValue({uint32_t(i), uint32_t(j)});
+                    if (std::min(std::fabs(d - W[0]), std::fabs(d - W[0] - W[1])) < epsilon) {
+                        ++ambiguous;
+                        continue;
+                    }
+                    ++compared;
+                    for (int ch = 0; ch < 3; ++ch)
+                        ASSERT_EQ(weights.rgba[p * 4 + ch], float(ref[p].weights[size_t(ch)])) << c.name << " pixel " << i << "," << j;
+                    for (int ch = 0; ch < (normal ? 2 : 3); ++ch)
+                        worst = std::max(worst, std::fabs(value.rgba[p * 4 + ch] - ref[p].value[size_t(ch)]) / tolerance);
+                }
+            std::printf("  1-tap %-6s %-5s: %zu pixels compared, %zu at a dither boundary left out; worst error/tolerance %.2f\n", c.name,
+                        targetName(target).c_str(), compared, ambiguous, worst);
+            EXPECT_LE(worst, 1.0);
+            EXPECT_LT(ambiguous, compared / 100);
+        }
+}
+
+TEST(OneTap, SamplesOncePerSlot) {
+    Material m = material(R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"taps": 1}})");
+    m.templateName = "value";
+    CompileResult r = compile(m);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    std::string text = disassemble(r.spirv);
+    size_t samples = 0;
+    for (size_t p = 0; (p = text.find("OpImageSample", p)) != std::string::npos; ++p) ++samples;
+    EXPECT_EQ(samples, 1u);
+}
 
 // ---- Properties of the GPU output ----------------------------------------------------------------------------
 // The final weights are a normalisation W_i = a_i / (a_1 + a_2 + a_3): the sum and the division each round once

@@ -64,7 +64,7 @@ const InvalidFile kInvalidFiles[] = {
      "`colorspace`, `flip_y` or `hextiling` (did you mean `colorspace`?)"},
     {"unknown_key_misspelled",
      "6:5: error: /hextiling/rotaton: unknown key `rotaton`; expected `enabled`, `tiling`, `rotation`, `falloff`, "
-     "`falloffcontrast`, `exponent`, `mode`, `split_coordinates`, `rotationrange`, `rotationsteps`, `scalerange`, `offset` or `offsetsteps` (did you mean `rotation`?)"},
+     "`falloffcontrast`, `exponent`, `mode`, `split_coordinates`, `rotationrange`, `rotationsteps`, `scalerange`, `offset`, `offsetsteps` or `taps` (did you mean `rotation`?)"},
     {"unknown_key_top_level",
      "12:3: error: /description: unknown key `description`; expected `$schema`, `name`, `template`, `hextiling` or `slots`"},
 };
@@ -191,6 +191,11 @@ TEST(Validation, PerTileTransforms) {
     EXPECT_EQ(ok.material->slots[0].hex.rotationSteps, 4);
     EXPECT_EQ(ok.material->slots[0].hex.offsetSteps, (std::array<int, 2>{4, 2}));
     EXPECT_TRUE(ok.material->slots[0].hex.hasTransforms());
+}
+
+TEST(Validation, TapsAreOneOrThree) {
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"taps": 2}, "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
+              std::vector<std::string>{"materials/t.json:1:37: error: /hextiling/taps: expected 1 or 3, got 2"});
 }
 
 TEST(Validation, ColumnsCountCharactersNotBytes) {

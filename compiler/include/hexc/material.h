@@ -28,6 +28,7 @@ struct HexTiling {
     double falloffcontrast = 0.6;         // beta of Eq. 3-4 (MaterialX `falloffcontrast`)
     double exponent = 7.0;                // gamma, exponent on the barycentric weights (Eq. 1)
     HashMode mode = HashMode::Stable;
+    int taps = 3;                         // 3: the paper's blend of three fetches; 1: one dithered fetch
     // Stable mode only: the slot also reads an origin (cell, offset) that the engine fills each frame from a
     // double-precision origin, for worlds whose uv exceed what float32 resolves (docs/precision.md).
     bool splitCoordinates = false;

@@ -23,7 +23,7 @@ using nlohmann::json;
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "slots"};
 const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling"};
 const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "falloff", "falloffcontrast", "exponent", "mode",
-                                           "split_coordinates", "rotationrange", "rotationsteps", "scalerange", "offset", "offsetsteps"};
+                                           "split_coordinates", "rotationrange", "rotationsteps", "scalerange", "offset", "offsetsteps", "taps"};
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
 const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
@@ -325,6 +325,11 @@ private:
         if (v.contains("offset")) hex.offset = number(v["offset"], pointer + "/offset", {0, 1, false, false, "in [0, 1]"}, hex.offset);
         if (v.contains("rotationsteps"))
             hex.rotationSteps = int(whole(v["rotationsteps"], pointer + "/rotationsteps", {0, 360, false, false, "in 0..360 (0: continuous)"}, 0));
+        if (v.contains("taps")) {
+            double taps = whole(v["taps"], pointer + "/taps", {1, 3, false, false, "1 or 3"}, hex.taps);
+            if (taps == 2) error(pointer + "/taps", "expected 1 or 3, got 2");
+            else hex.taps = int(taps);
+        }
         if (v.contains("offsetsteps")) {
             std::array<double, 2> steps{0, 0};
             pair(v["offsetsteps"], pointer + "/offsetsteps", {0, 4096, false, false, "in 0..4096 (0: continuous)"}, steps, true);

@@ -103,8 +103,9 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         const HexTiling& h = slot.hex;
         // Without specialisation every feature is emitted, and the values decide at run time.
         bool all = !options.specialize;
-        SlotPlan sp{&slot, std::string(toString(slot.kind)) + (h.enabled ? ".hex" : ".plain"), binding++, 0,
-                    all || h.falloffcontrast != 0, all || h.falloff != 0.5};
+        // One tap needs no falloff metric: it has a single sample to weigh.
+        SlotPlan sp{&slot, std::string(toString(slot.kind)) + (!h.enabled ? ".plain" : h.taps == 1 ? ".hex1" : ".hex"), binding++, 0,
+                    h.taps == 3 && (all || h.falloffcontrast != 0), all || h.falloff != 0.5};
         // Whole-number exponents become multiplications: gamma = 7 (the paper's) and the gain at r = 1 - 2^-k
         // (the paper's 0.75 is k = 2) then cost no pow. Like the feature switches, they fix the value in the code.
         if (!all && h.exponent == std::floor(h.exponent) && h.exponent <= 16) sp.exponentInt = int(h.exponent);

@@ -233,7 +233,7 @@ std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, con
 }
 
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
-                    double dudy, double dvdy) {
+                    double dudy, double dvdy, std::array<uint32_t, 2> pixel) {
     const HexTiling& hex = slot.hex;
     const Vec2 st{u * hex.tiling[0], v * hex.tiling[1]};
     const Vec2 dx{dudx * hex.tiling[0], dvdx * hex.tiling[1]};
@@ -285,12 +285,24 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
         delta[i] = (1 - hex.falloffcontrast) + hex.falloffcontrast * std::max(metric, 0.0);
     }
 
+    if (hex.taps == 1) {
+        // One dithered tap: the pixel's hash u in [0, 1) picks the tile whose share of Eq. 1's weights (without
+        // the metric, which one sample cannot weigh) covers it; that tile's sample is the result.
+        const std::array<double, 3> w = blendWeights(tri.weight, {1, 1, 1}, hex);
+        const double u = ditherValue(pixel);
+        const size_t pick = u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2;
+        std::array<double, 3> oneHot{};
+        oneHot[pick] = 1;
+        return {samples[pick], hexColours(oneHot, tri), {samples[pick], samples[pick], samples[pick]}, oneHot};
+    }
     const std::array<double, 3> w = blendWeights(tri.weight, delta, hex);
     Rgba value{};
     for (size_t c = 0; c < 4; ++c) value[c] = w[0] * samples[0][c] + w[1] * samples[1][c] + w[2] * samples[2][c];
     if (normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
     return {value, hexColours(w, tri), samples, w};
 }
+
+double ditherValue(std::array<uint32_t, 2> pixel) { return (pcg3d({pixel[0], pixel[1], 2u})[0] >> 8) / 16777216.0; }
 
 Triangle lattice(Vec2 st, HashMode mode) {
     return mode == HashMode::Paper ? triangleGrid(st) : triangleInSkewed(kStableScale * st[0] - 2 * st[1], 4 * st[1]);
@@ -319,7 +331,7 @@ std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& tex
     for (int j = 0; j < view.height; ++j)
         for (int i = 0; i < view.width; ++i) {
             const double u = u0 + (i + 0.5) / view.width * (u1 - u0), v = v0 + (j + 0.5) / view.height * (v1 - v0);
-            out.push_back(evaluate(slot, texture, u, v, dudx, 0, 0, dvdy));
+            out.push_back(evaluate(slot, texture, u, v, dudx, 0, 0, dvdy, {uint32_t(i), uint32_t(j)}));
         }
     return out;
 }

@@ -89,6 +89,9 @@ struct TileTransform {
 };
 TileTransform tileTransform(TileId id, const HexTiling& hex);
 
+// The 1-tap variant's per-pixel dither value in [0, 1): pcg3d of (column, row, 2), top 24 bits.
+double ditherValue(std::array<uint32_t, 2> pixel);
+
 // Eq. 5 (Perlin and Hoffert's gain) with k = log(1 - r) / log(0.5); the identity when r = 0.5.
 double gain(double x, double r);
 
@@ -109,8 +112,9 @@ struct SlotResult {
 // their channel's value, normal slots by slope (Eq. 3) of the derivative (Listing 9, flipped with slot.flipY).
 // The texture's own srgb flag decides decoding; the slot's colour space is the caller's to apply when loading.
 // HashMode::Paper follows Listings 1, 2, 5 and 6; HashMode::Stable its specification in docs/material-format.md.
+// `pixel`: the pixel's integer position (column, row), which the 1-tap variant's dither hashes.
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
-                    double dudy, double dvdy);
+                    double dudy, double dvdy, std::array<uint32_t, 2> pixel = {0, 0});
 
 enum class Output { Value, Weights };  // Weights: (w.x, w.y, w.z, 1) per pixel
 
