@@ -303,36 +303,38 @@ vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, float falloff, float fa
 // three tiles with probability equal to its blend weight, by an integer hash of the pixel position (the
 // same on every target), and samples only that tile, with the tile's own rotated gradients so the mip
 // level stays right. The falloff metric would need all three samples, so the weights are Eq. 1 without it.
-// Returns the picked tile, 0, 1 or 2, and its one-hot weights.
-int hexcDitherTile(HexcTiles t, float exponent, float falloff, bool gain, int exponentInt, int gainInt, out vec3 pick) {
+struct HexcTap {
+    vec2 st, dx, dy, rot;        // the picked tile's sample point, gradients and rotation
+    float invScale;
+    vec3 pick;                   // one-hot: which of the three tiles
+};
+
+HexcTap hexcDitherTile(HexcTiles t, float exponent, float falloff, bool gain, int exponentInt, int gainInt) {
     vec3 W = hexcBlendWeights(t.w, vec3(1.0), 0.0, exponent, falloff, false, gain, exponentInt, gainInt);
     float u = float(hexcPcg3d(uvec3(uvec2(gl_FragCoord.xy), 2u)).x >> 8u) * (1.0 / 16777216.0);
     int i = u < W.x ? 0 : (u < W.x + W.y ? 1 : 2);
-    pick = vec3(equal(ivec3(0, 1, 2), ivec3(i)));
-    return i;
+    HexcTap tap;
+    tap.pick = vec3(equal(ivec3(0, 1, 2), ivec3(i)));
+    tap.st = i == 0 ? t.st1 : (i == 1 ? t.st2 : t.st3);
+    tap.dx = i == 0 ? t.dx1 : (i == 1 ? t.dx2 : t.dx3);
+    tap.dy = i == 0 ? t.dy1 : (i == 1 ? t.dy2 : t.dy3);
+    tap.rot = i == 0 ? t.rot1 : (i == 1 ? t.rot2 : t.rot3);
+    tap.invScale = dot(tap.pick, t.invScale);
+    return tap;
 }
 
 vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, float falloff, float exponent, bool gain, int exponentInt, int gainInt,
                 out vec3 weights) {
-    vec3 pick;
-    int i = hexcDitherTile(t, exponent, falloff, gain, exponentInt, gainInt, pick);
-    weights = hexcHexWeights(pick, t.v1, t.v3);
-    vec2 st = i == 0 ? t.st1 : (i == 1 ? t.st2 : t.st3);
-    vec2 dx = i == 0 ? t.dx1 : (i == 1 ? t.dx2 : t.dx3);
-    vec2 dy = i == 0 ? t.dy1 : (i == 1 ? t.dy2 : t.dy3);
-    return textureGrad(sampler2D(tex, samp), st, dx, dy);
+    HexcTap tap = hexcDitherTile(t, exponent, falloff, gain, exponentInt, gainInt);
+    weights = hexcHexWeights(tap.pick, t.v1, t.v3);
+    return textureGrad(sampler2D(tex, samp), tap.st, tap.dx, tap.dy);
 }
 
 vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, float falloff, float exponent, bool flipY, bool gain, int exponentInt,
                 int gainInt, out vec3 weights) {
-    vec3 pick;
-    int i = hexcDitherTile(t, exponent, falloff, gain, exponentInt, gainInt, pick);
-    weights = hexcHexWeights(pick, t.v1, t.v3);
-    vec2 st = i == 0 ? t.st1 : (i == 1 ? t.st2 : t.st3);
-    vec2 dx = i == 0 ? t.dx1 : (i == 1 ? t.dx2 : t.dx3);
-    vec2 dy = i == 0 ? t.dy1 : (i == 1 ? t.dy2 : t.dy3);
-    vec2 rot = i == 0 ? t.rot1 : (i == 1 ? t.rot2 : t.rot3);
-    return hexcRotateFromTile(hexcSampleDeriv(tex, samp, st, dx, dy, flipY), rot) * dot(pick, t.invScale);
+    HexcTap tap = hexcDitherTile(t, exponent, falloff, gain, exponentInt, gainInt);
+    weights = hexcHexWeights(tap.pick, t.v1, t.v3);
+    return hexcRotateFromTile(hexcSampleDeriv(tex, samp, tap.st, tap.dx, tap.dy, flipY), tap.rot) * tap.invScale;
 }
 
 // Plain tiling, for slots with hex-tiling disabled: one fetch, hardware gradients.

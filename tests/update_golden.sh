@@ -7,5 +7,6 @@ hexc=${HEXC:-build/hexc}
 for m in rock tiles rock_normal; do
   rm -rf "tests/golden/$m"
   "$hexc" -q "materials/$m.json" -o "tests/golden/$m"
+  rm -f "tests/golden/$m/.$m.hexc-stamp"  # the incremental-build stamp is not an output
 done
 echo "golden outputs regenerated in tests/golden/"

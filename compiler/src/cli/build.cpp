@@ -15,6 +15,7 @@
 #include "cli/incremental.h"
 #include "cli/outputs.h"
 #include "common/files.h"
+#include "common/hash.h"
 #include "hexc/scene.h"
 
 namespace hexc::cli {
@@ -55,15 +56,12 @@ bool printDiagnostics(const Diagnostics& diags, bool quiet) {
     return !hasErrors(diags);
 }
 
-// FNV-1a of a shader's target sources: variants with equal hashes share one set of files.
+// A hash of a shader's target sources: variants with equal hashes share one set of files.
 std::string shaderHash(const CompileResult& r) {
-    uint64_t h = 0xcbf29ce484222325ull;
+    Fnv1a h;
     for (const OutputFile& f : r.files)
-        if (!f.name.ends_with(".manifest.json"))
-            for (unsigned char c : f.contents) h = (h ^ c) * 0x100000001b3ull;
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return std::string(buf, 12);
+        if (!f.name.ends_with(".manifest.json")) h.add(f.contents);
+    return h.hex(12);
 }
 
 }  // namespace

@@ -4,28 +4,14 @@
 #include <sstream>
 
 #include "common/files.h"
+#include "common/hash.h"
 #include "common/templates.h"
 
 namespace hexc::cli {
 namespace {
 
-class Fnv1a {
-public:
-    void add(std::string_view bytes) {
-        for (unsigned char c : bytes) hash_ = (hash_ ^ c) * 0x100000001b3ull;
-        // A separator, so ("ab", "c") and ("a", "bc") differ.
-        hash_ = (hash_ ^ 0xff) * 0x100000001b3ull;
-    }
-    void addFile(const std::filesystem::path& file) { add(readFile(file).value_or("")); }
-    std::string hex() const {
-        char buf[17];
-        std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash_));
-        return buf;
-    }
-
-private:
-    uint64_t hash_ = 0xcbf29ce484222325ull;
-};
+// Adds a file's bytes (nothing when it cannot be read: the compile will report it).
+void addFile(Fnv1a& h, const std::filesystem::path& file) { h.add(readFile(file).value_or("")); }
 
 }  // namespace
 
@@ -50,8 +36,8 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).
     h.add(material.name + "|" + material.templateName);
     for (const Slot& s : material.slots) h.add(s.name);
-    for (const auto& f : inputFiles(material, options)) h.addFile(f);
-    for (const auto& f : extra) h.addFile(f);
+    for (const auto& f : inputFiles(material, options)) addFile(h, f);
+    for (const auto& f : extra) addFile(h, f);
     // Built-in templates are part of the binary; hash their text too, not only the version.
     for (const char* f : {"hextiling.glsl", "slots.glsl"}) h.add(embeddedText(f));
     if (!material.templateName.ends_with(".glsl") && options.templateFile.empty()) h.add(embeddedText(material.templateName + ".glsl"));
