@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <atomic>
 #include <thread>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -24,10 +22,10 @@ namespace {
 // One compile: a material given on the command line, or one variant of a scene.
 struct Job {
     Material material;
-    std::vector<std::filesystem::path> extraInputs;  // the scene file, for variants
-    std::string scene;                               // set for scene variants (their shaders are deduplicated)
-    std::string hash;
-    CompileResult result;
+    std::vector<std::filesystem::path> extraInputs = {};  // the scene file, for variants
+    std::string scene = {};                               // set for scene variants (their shaders are deduplicated)
+    std::string hash = {};
+    CompileResult result = {};
     bool upToDate = false;
 };
 

@@ -1,7 +1,6 @@
 #include "cli/incremental.h"
 
 #include <fstream>
-#include <sstream>
 
 #include "common/files.h"
 #include "common/hash.h"

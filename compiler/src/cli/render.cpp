@@ -48,10 +48,6 @@ Each cell is N x N pixels (default 256). Shaded with the material's template.
 
 namespace {
 
-struct ParsedCommon {
-    std::string material, out;
-};
-
 std::vector<double> numbers(const std::string& text, char sep, size_t count, const std::string& option) {
     std::vector<double> out;
     std::stringstream in(text);

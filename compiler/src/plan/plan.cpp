@@ -1,10 +1,9 @@
 #include "plan/plan.h"
 
 #include <cmath>
-#include <fstream>
 #include <regex>
-#include <sstream>
 
+#include "common/files.h"
 #include "common/templates.h"
 
 namespace hexc {
@@ -29,7 +28,7 @@ public:
     void add(const std::string& name, std::vector<double> value, std::vector<std::string> slots, bool integer = false,
              std::string perFrame = {}) {
         std::string type = value.size() == 2 ? (integer ? "ivec2" : "vec2") : (integer ? "int" : "float");
-        ParamMember m{name, type, std::move(value), std::move(slots), std::move(perFrame)};
+        ParamMember m{name, type, std::move(value), std::move(slots), std::move(perFrame), 0, std::nullopt};
         if (bake_ && m.perFrame.empty()) {
             m.constantId = nextConstant_;
             nextConstant_ += uint32_t(m.value.size());
@@ -73,14 +72,12 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     std::string ref = options.templateFile.empty() ? material.templateName : options.templateFile.string();
     if (ref.ends_with(".glsl")) {
         plan.templateName = ref;
-        std::ifstream in(ref, std::ios::binary);
-        if (!in) {
+        std::optional<std::string> text = readFile(ref);
+        if (!text) {
             error("cannot read template file");
             return plan;
         }
-        std::stringstream ss;
-        ss << in.rdbuf();
-        plan.templateSource = ss.str();
+        plan.templateSource = std::move(*text);
     } else {
         plan.templateName = "templates/" + ref + ".glsl";
         plan.templateSource = embeddedText(ref + ".glsl");
@@ -145,7 +142,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         const HexTiling& h = sp.slot->hex;
         if (!h.enabled) continue;
         const std::string& n = sp.slot->name;
-        auto fixed = [&](const std::string& name, double value) { plan.specialised.push_back({name, "float", {value}, {n}}); };
+        auto fixed = [&](const std::string& name, double value) { plan.specialised.push_back({name, "float", {value}, {n}, {}, 0, std::nullopt}); };
         if (sp.gainInt) fixed(n + "_falloff", h.falloff);
         else if (sp.gain) params.add(n + "_falloff", {h.falloff}, {n});
         if (sp.metric) params.add(n + "_falloffcontrast", {h.falloffcontrast}, {n});

@@ -108,13 +108,13 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstan
 
     spvtools::Optimizer optimizer(kTargetEnv);
     optimizer.SetMessageConsumer(consumer);
-    // Legalisation first: glslang's HLSL front end passes opaque handles through locals and
-    // parameters, which Vulkan only accepts once they are inlined and forwarded. It is a no-op
-    // cost for GLSL input and keeps one path for both.
     // Baked settings arrive as specialisation constants; freezing turns them into constants at their
     // default values, which the passes below fold like literals.
     if (freezeConstants) optimizer.RegisterPass(spvtools::CreateFreezeSpecConstantValuePass());
-    optimizer.RegisterLegalizationPasses();
+    // Legalisation, for HLSL input only: glslang's HLSL front end passes opaque handles through locals
+    // and parameters, which Vulkan only accepts once they are inlined and forwarded. GLSL from glslang
+    // is legal already, and the recipe would add about a tenth to the compile.
+    if (legalize) optimizer.RegisterLegalizationPasses();
     // Then the performance recipe (spirv-opt -O): inlines the per-slot functions and the library,
     // breaks the HexcTiles struct into scalars, folds constants and removes library code the
     // material never reaches, which is what keeps the emitted HLSL/GLSL/MSL short.

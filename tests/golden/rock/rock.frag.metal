@@ -59,8 +59,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     uint _2305 = _2301.z;
     uint _2309 = _2301.x + (_2303 * _2305);
     uint _2318 = _2303 + (_2305 * _2309);
-    uint3 _9080 = uint3(_2309, _2318, _2305 + (_2309 * _2318));
-    uint3 _2333 = _9080 ^ (_9080 >> uint3(16u));
+    uint3 _9544 = uint3(_2309, _2318, _2305 + (_2309 * _2318));
+    uint3 _2333 = _9544 ^ (_9544 >> uint3(16u));
     uint _2335 = _2333.y;
     uint _2337 = _2333.z;
     uint _2341 = _2333.x + (_2335 * _2337);
@@ -74,8 +74,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     uint _2543 = _2539.z;
     uint _2547 = _2539.x + (_2541 * _2543);
     uint _2556 = _2541 + (_2543 * _2547);
-    uint3 _9082 = uint3(_2547, _2556, _2543 + (_2547 * _2556));
-    uint3 _2571 = _9082 ^ (_9082 >> uint3(16u));
+    uint3 _9547 = uint3(_2547, _2556, _2543 + (_2547 * _2556));
+    uint3 _2571 = _9547 ^ (_9547 >> uint3(16u));
     uint _2573 = _2571.y;
     uint _2575 = _2571.z;
     uint _2579 = _2571.x + (_2573 * _2575);
@@ -89,8 +89,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     uint _2781 = _2777.z;
     uint _2785 = _2777.x + (_2779 * _2781);
     uint _2794 = _2779 + (_2781 * _2785);
-    uint3 _9084 = uint3(_2785, _2794, _2781 + (_2785 * _2794));
-    uint3 _2809 = _9084 ^ (_9084 >> uint3(16u));
+    uint3 _9550 = uint3(_2785, _2794, _2781 + (_2785 * _2794));
+    uint3 _2809 = _9550 ^ (_9550 >> uint3(16u));
     uint _2811 = _2809.y;
     uint _2813 = _2809.z;
     uint _2817 = _2809.x + (_2811 * _2813);
@@ -127,18 +127,18 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     float3 _3392 = (_2171 * _3374) * (_3374 * _3374);
     float3 _3311 = mix(float3(1.0), fast::max(float3(dot(_3215, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0)), dot(_3225, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0)), dot(_3235, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0))), float3(0.0)), float3(hexcParams.albedo_falloffcontrast)) * _3392;
     float _3323 = (_3311.x + _3311.y) + _3311.z;
-    float3 _8182;
+    float3 _9221;
     if (_3323 > 0.0)
     {
-        _8182 = _3311 / float3(_3323);
+        _9221 = _3311 / float3(_3323);
     }
     else
     {
-        _8182 = _3392 / float3((_3392.x + _3392.y) + _3392.z);
+        _9221 = _3392 / float3((_3392.x + _3392.y) + _3392.z);
     }
-    float3 _3443 = step(float3(0.5), _8182) * 2.0;
+    float3 _3443 = step(float3(0.5), _9221) * 2.0;
     float3 _3447 = (float3(1.0) - _3443) * 2.0;
-    float3 _3453 = fast::max(float3(0.0), fma(_8182, _3447, _3443));
+    float3 _3453 = fast::max(float3(0.0), fma(_9221, _3447, _3443));
     float3 _3472 = fma(_3447 * 0.25, _3453 * _3453, _3443 * 0.5);
     float3 _3483 = _3472 / float3((_3472.x + _3472.y) + _3472.z);
     float2 _3717 = dfdx(_1772);
@@ -154,18 +154,18 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     float4 _5161 = hexcTex_roughness.sample(hexcSampler, _2037, gradient2d(float2(fma(_4960, _2764, _4965 * _2766), fma(_4972, _2766, _4965 * _2764)) * 1.0, float2(fma(_4986, _2764, _4991 * _2766), fma(_4998, _2766, _4991 * _2764)) * 1.0));
     float3 _5237 = mix(float3(1.0), fast::max(float3(_5141.x, _5151.x, _5161.x), float3(0.0)), float3(hexcParams.roughness_falloffcontrast)) * _3392;
     float _5249 = (_5237.x + _5237.y) + _5237.z;
-    float3 _8238;
+    float3 _9332;
     if (_5249 > 0.0)
     {
-        _8238 = _5237 / float3(_5249);
+        _9332 = _5237 / float3(_5249);
     }
     else
     {
-        _8238 = _3392 / float3((_3392.x + _3392.y) + _3392.z);
+        _9332 = _3392 / float3((_3392.x + _3392.y) + _3392.z);
     }
-    float3 _5369 = step(float3(0.5), _8238) * 2.0;
+    float3 _5369 = step(float3(0.5), _9332) * 2.0;
     float3 _5373 = (float3(1.0) - _5369) * 2.0;
-    float3 _5379 = fast::max(float3(0.0), fma(_8238, _5373, _5369));
+    float3 _5379 = fast::max(float3(0.0), fma(_9332, _5373, _5369));
     float3 _5398 = fma(_5373 * 0.25, _5379 * _5379, _5369 * 0.5);
     float3 _5409 = _5398 / float3((_5398.x + _5398.y) + _5398.z);
     float _1642 = fast::clamp((((_5141 * _5409.x) + (_5151 * _5409.y)) + (_5161 * _5409.z)).x, 0.0199999995529651641845703125, 1.0);
@@ -200,16 +200,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     float3 _7126 = float3(dot(_7088, _7088), dot(_7102, _7102), dot(_7116, _7116));
     float3 _7431 = mix(float3(1.0), fast::max(sqrt(_7126 / (float3(1.0) + _7126)), float3(0.0)), float3(hexcParams.normal_falloffcontrast)) * _3392;
     float _7443 = (_7431.x + _7431.y) + _7431.z;
-    float3 _8297;
+    float3 _9481;
     if (_7443 > 0.0)
     {
-        _8297 = _7431 / float3(_7443);
+        _9481 = _7431 / float3(_7443);
     }
     else
     {
-        _8297 = _3392 / float3((_3392.x + _3392.y) + _3392.z);
+        _9481 = _3392 / float3((_3392.x + _3392.y) + _3392.z);
     }
-    float3 _7796 = fast::normalize(float3(-(((_7088 * _8297.x) + (_7102 * _8297.y)) + (_7116 * _8297.z)), 1.0));
+    float3 _7796 = fast::normalize(float3(-(((_7088 * _9481.x) + (_7102 * _9481.y)) + (_7116 * _9481.z)), 1.0));
     float3 _1690 = fast::normalize(((_1660 * _7796.x) + ((cross(_1647, _1660) * in.v_tangent.w) * _7796.y)) + (_1647 * _7796.z));
     float _1697 = fast::max(dot(_1690, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
     float _1710 = 2.0 / (((_1642 * _1642) * _1642) * _1642);

@@ -9,7 +9,7 @@ struct HexcParams
     float albedo_falloffcontrast;
 };
 
-constant uint _3549 = {};
+constant uint _3749 = {};
 
 struct main0_out
 {
@@ -56,8 +56,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     uint _1850 = _1846.z;
     uint _1854 = _1846.x + (_1848 * _1850);
     uint _1863 = _1848 + (_1850 * _1854);
-    uint3 _3542 = uint3(_1854, _1863, _1850 + (_1854 * _1863));
-    uint3 _1878 = _3542 ^ (_3542 >> uint3(16u));
+    uint3 _3738 = uint3(_1854, _1863, _1850 + (_1854 * _1863));
+    uint3 _1878 = _3738 ^ (_3738 >> uint3(16u));
     uint _1880 = _1878.y;
     uint _1882 = _1878.z;
     uint _1886 = _1878.x + (_1880 * _1882);
@@ -66,8 +66,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     uint _2088 = _2084.z;
     uint _2092 = _2084.x + (_2086 * _2088);
     uint _2101 = _2086 + (_2088 * _2092);
-    uint3 _3544 = uint3(_2092, _2101, _2088 + (_2092 * _2101));
-    uint3 _2116 = _3544 ^ (_3544 >> uint3(16u));
+    uint3 _3740 = uint3(_2092, _2101, _2088 + (_2092 * _2101));
+    uint3 _2116 = _3740 ^ (_3740 >> uint3(16u));
     uint _2118 = _2116.y;
     uint _2120 = _2116.z;
     uint _2124 = _2116.x + (_2118 * _2120);
@@ -76,8 +76,8 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     uint _2326 = _2322.z;
     uint _2330 = _2322.x + (_2324 * _2326);
     uint _2339 = _2324 + (_2326 * _2330);
-    uint3 _3546 = uint3(_2330, _2339, _2326 + (_2330 * _2339));
-    uint3 _2354 = _3546 ^ (_3546 >> uint3(16u));
+    uint3 _3742 = uint3(_2330, _2339, _2326 + (_2330 * _2339));
+    uint3 _2354 = _3742 ^ (_3742 >> uint3(16u));
     uint _2356 = _2354.y;
     uint _2358 = _2354.z;
     uint _2362 = _2354.x + (_2356 * _2358);
@@ -86,25 +86,25 @@ fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcPara
     float _2489 = float(_1735.y);
     float2 _1596 = _1336 * 1.0;
     float2 _1610 = _1338 * 1.0;
-    float4 _2760 = hexcTex_albedo.sample(hexcSampler, (((_1436 - float2(fma(0.5, _2457, float(_1723.x)) * 0.2886598110198974609375, 0.25 * _2457)) * 1.0) + (float3(uint3(_1886, _1880 + (_1882 * _1886), _3549) >> uint3(8u)) * 5.9604644775390625e-08).xy), gradient2d(_1596, _1610));
-    float4 _2770 = hexcTex_albedo.sample(hexcSampler, (((_1436 - float2(fma(0.5, _2473, float(_1729.x)) * 0.2886598110198974609375, 0.25 * _2473)) * 1.0) + (float3(uint3(_2124, _2118 + (_2120 * _2124), _3549) >> uint3(8u)) * 5.9604644775390625e-08).xy), gradient2d(_1596, _1610));
-    float4 _2780 = hexcTex_albedo.sample(hexcSampler, (((_1436 - float2(fma(0.5, _2489, float(_1735.x)) * 0.2886598110198974609375, 0.25 * _2489)) * 1.0) + (float3(uint3(_2362, _2356 + (_2358 * _2362), _3549) >> uint3(8u)) * 5.9604644775390625e-08).xy), gradient2d(_1596, _1610));
+    float4 _2760 = hexcTex_albedo.sample(hexcSampler, (((_1436 - float2(fma(0.5, _2457, float(_1723.x)) * 0.2886598110198974609375, 0.25 * _2457)) * 1.0) + (float3(uint3(_1886, _1880 + (_1882 * _1886), _3749) >> uint3(8u)) * 5.9604644775390625e-08).xy), gradient2d(_1596, _1610));
+    float4 _2770 = hexcTex_albedo.sample(hexcSampler, (((_1436 - float2(fma(0.5, _2473, float(_1729.x)) * 0.2886598110198974609375, 0.25 * _2473)) * 1.0) + (float3(uint3(_2124, _2118 + (_2120 * _2124), _3749) >> uint3(8u)) * 5.9604644775390625e-08).xy), gradient2d(_1596, _1610));
+    float4 _2780 = hexcTex_albedo.sample(hexcSampler, (((_1436 - float2(fma(0.5, _2489, float(_1735.x)) * 0.2886598110198974609375, 0.25 * _2489)) * 1.0) + (float3(uint3(_2362, _2356 + (_2358 * _2362), _3749) >> uint3(8u)) * 5.9604644775390625e-08).xy), gradient2d(_1596, _1610));
     float3 _2919 = _1716 * _1716;
     float3 _2937 = (_1716 * _2919) * (_2919 * _2919);
     float3 _2856 = mix(float3(1.0), fast::max(float3(dot(_2760, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0)), dot(_2770, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0)), dot(_2780, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0))), float3(0.0)), float3(hexcParams.albedo_falloffcontrast)) * _2937;
     float _2868 = (_2856.x + _2856.y) + _2856.z;
-    float3 _3370;
+    float3 _3713;
     if (_2868 > 0.0)
     {
-        _3370 = _2856 / float3(_2868);
+        _3713 = _2856 / float3(_2868);
     }
     else
     {
-        _3370 = _2937 / float3((_2937.x + _2937.y) + _2937.z);
+        _3713 = _2937 / float3((_2937.x + _2937.y) + _2937.z);
     }
-    float3 _2988 = step(float3(0.5), _3370) * 2.0;
+    float3 _2988 = step(float3(0.5), _3713) * 2.0;
     float3 _2992 = (float3(1.0) - _2988) * 2.0;
-    float3 _2998 = fast::max(float3(0.0), fma(_3370, _2992, _2988));
+    float3 _2998 = fast::max(float3(0.0), fma(_3713, _2992, _2988));
     float3 _3017 = fma(_2992 * 0.25, _2998 * _2998, _2988 * 0.5);
     float3 _3028 = _3017 / float3((_3017.x + _3017.y) + _3017.z);
     out.o_color = ((_2760 * _3028.x) + (_2770 * _3028.y)) + (_2780 * _3028.z);
