@@ -54,7 +54,14 @@ struct Method {
     std::string name;
     json hextiling;
     CompileOptions compile = {};  // how hexc compiles it: specialised and with a shared lattice by default
+    json colourAndNormal = json::object();  // slot keys added to the albedo and normal slots (height_blend)
+    std::string templ = "lit";    // a path (from the source root) for a bench template
 };
+
+json with(json settings, const json& more) {
+    settings.update(more);
+    return settings;
+}
 
 CompileOptions withOption(bool CompileOptions::*option, bool value) {
     CompileOptions o;
@@ -84,6 +91,16 @@ const std::vector<Method>& methods() {
         {"stable-rot-gain-baked", fullQuality(HashMode::Stable), withOption(&CompileOptions::bake, true)},
         // The seeds' variants.
         {"stable-rot-gain-1tap", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.75}, {"taps", 1}}},
+        {"stable-rot-gain-checker", with(fullQuality(HashMode::Stable), {{"mask", "checker"}})},
+        {"stable-rot-gain-noise", with(fullQuality(HashMode::Stable), {{"mask", "noise"}, {"maskscale", 4}})},
+        {"stable-rot-gain-noise3", with(fullQuality(HashMode::Stable), {{"mask", "noise3"}, {"maskscale", 4}})},
+        // Albedo and normal blended by the roughness map's values as heights.
+        {"stable-rot-gain-height", fullQuality(HashMode::Stable), {}, {{"height_blend", {{"slot", "roughness"}, {"width", 0.2}}}}},
+        // Triplanar on the bench's plane z = 0 facing +z: one plane is evaluated, and it shows what uv hex-tiling
+        // shows. The oblique template gives every pixel a normal that weighs all three planes (its error is not
+        // comparable and not measured).
+        {"triplanar-face-on", with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}})},
+        {"triplanar-3-planes", with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}}), {}, {}, "bench/triplanar-oblique.glsl"},
     };
     return table;
 }
@@ -196,11 +213,16 @@ void makeTextures(const fs::path& dir) {
 }
 
 // The bench material with the given hex-tiling settings, written to `dir` (so `hexc render` can show it) and parsed.
-Material material(const fs::path& dir, const std::string& name, const json& hextiling, const std::string& templ = "lit") {
+Material material(const fs::path& dir, const std::string& name, const json& hextiling, const std::string& templ = "lit",
+                  const json& colourAndNormal = json::object()) {
     json hex = {{"tiling", kTiling}};
     hex.update(hextiling);
     json doc = {{"name", name}, {"template", templ}, {"hextiling", hex}, {"slots", json::array()}};
-    for (const SourceTexture& t : kTextures) doc["slots"].push_back({{"name", t.slot}, {"texture", "textures/" + t.file}, {"kind", t.kind}});
+    for (const SourceTexture& t : kTextures) {
+        json slot = {{"name", t.slot}, {"texture", "textures/" + t.file}, {"kind", t.kind}};
+        if (t.kind != "scalar") slot.update(colourAndNormal);
+        doc["slots"].push_back(slot);
+    }
     const fs::path file = dir / (name + ".json");
     const std::string text = doc.dump(2) + "\n";  // parsed as written, so diagnostics point into the file
     writeFile(file, text);
@@ -296,7 +318,8 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
             row.compile = method.compile;
             row.view = v;
             attempt(row.failure, [&] {
-                row.material = material(materialDir, method.name, method.hextiling);
+                const std::string templ = method.templ == "lit" ? "lit" : (fs::current_path() / method.templ).string();
+                row.material = material(materialDir, method.name, method.hextiling, templ, method.colourAndNormal);
                 const Slot& slot = albedoSlot(row.material);
                 row.errorReference = slot.hex.enabled ? slot.hex.mode : HashMode::Stable;
                 row.ops = shaderOps(row.material, method.compile);
@@ -331,6 +354,8 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
     for (Row& row : results.rows) {
         if (!row.failure.empty()) continue;
         row.medianMs = median(row.frameMs);
+        // Triplanar renders its albedo on the preview sphere, not the uv plane the reference shows.
+        if (albedoSlot(row.material).hex.projection == Projection::Triplanar) continue;
         attempt(row.failure, [&] {
             const Image image = vk::render(runner, row.material, vk::RenderOutput::Albedo, "albedo", kViews[row.view].view,
                                            vk::ExecutedTarget::Spirv, 0, nullptr, {}, row.method->compile);

@@ -15,6 +15,7 @@ layout(push_constant) uniform View {
 layout(location = 0) out vec2 v_uv;
 layout(location = 1) out vec3 v_normal;
 layout(location = 2) out vec4 v_tangent;
+layout(location = 3) out vec3 v_position;  // (u, v, 0): the plane z = 0, for triplanar materials
 
 void main() {
     // t = (0,0), (2,0), (0,2): 0 at NDC -1, 1 at NDC +1 on each axis.
@@ -23,4 +24,5 @@ void main() {
     v_uv = view.uvRect.xy + t * (view.uvRect.zw - view.uvRect.xy);
     v_normal = vec3(0.0, 0.0, 1.0);
     v_tangent = vec4(1.0, 0.0, 0.0, 1.0);
+    v_position = vec3(v_uv, 0.0);
 }

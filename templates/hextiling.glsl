@@ -20,6 +20,7 @@ struct HexcTiles {
     vec2 dx1, dx2, dx3;          // per-tile d(st)/dx, rotated with the tile
     vec2 dy1, dy2, dy3;          // per-tile d(st)/dy
     vec2 rot1, rot2, rot3;       // (cos, sin) of each tile's rotation angle
+    ivec3 channel;               // the weights output's channel of each tile (Listing 7 for the hex mask)
 };
 
 // Listing 1, from skewed lattice coordinates: barycentric weights and the three tile ids.
@@ -64,6 +65,24 @@ vec2 hexcRotationPaper(ivec2 id, float rotStrength) {
     return vec2(cos(angle), sin(angle));
 }
 
+// Listing 7: the channel each hex tile keeps across triangles, so the weights output shows one colour per tile.
+// `%` on negative integers is undefined in GLSL and target-dependent elsewhere, so the remainder is
+// taken of a non-negative value.
+ivec3 hexcHexChannels(ivec2 v1, ivec2 v3) {
+    int d = v1.x - v1.y;
+    int a = abs(d) % 3;
+    int i1 = (d < 0 && a != 0) ? 3 - a : a;
+    int vh = i1 < 2 ? i1 + 1 : 0;
+    int vl = i1 > 0 ? i1 - 1 : 2;
+    return ivec3(i1, v1.x < v3.x ? vl : vh, v1.x < v3.x ? vh : vl);
+}
+
+// The weights output: tile i's weight in channel t.channel[i].
+vec3 hexcShowWeights(vec3 W, ivec3 channel) {
+    return W.x * vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) + W.y * vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) +
+           W.z * vec3(equal(ivec3(0, 1, 2), ivec3(channel.z)));
+}
+
 // mul(v, R): into the tile's rotated frame (by -angle).
 vec2 hexcRotateToTile(vec2 v, vec2 cs) {
     return vec2(v.x * cs.x + v.y * cs.y, -v.x * cs.y + v.y * cs.x);
@@ -78,11 +97,11 @@ vec2 hexcRotateFromTile(vec2 d, vec2 cs) {
 // with the tile. Derivatives of the continuous st are taken once, before the lattice.
 // `rotate`, here and below, is a literal chosen by hexc: false when the material turns rotation off, so the
 // optimiser removes the rotation code entirely rather than rotating by a zero angle at run time.
-HexcTiles hexcTilesPaper(vec2 st, float rotStrength, bool rotate) {
+HexcTiles hexcTilesPaper(vec2 st, vec2 dSTdx, vec2 dSTdy, float rotStrength, bool rotate) {
     HexcTiles t;
     t.invScale = vec3(1.0);
-    vec2 dSTdx = dFdx(st), dSTdy = dFdy(st);
     hexcTriangleGrid(st, t.w, t.v1, t.v2, t.v3);
+    t.channel = hexcHexChannels(t.v1, t.v3);
     t.rot1 = rotate ? hexcRotationPaper(t.v1, rotStrength) : vec2(1.0, 0.0);
     t.rot2 = rotate ? hexcRotationPaper(t.v2, rotStrength) : vec2(1.0, 0.0);
     t.rot3 = rotate ? hexcRotationPaper(t.v3, rotStrength) : vec2(1.0, 0.0);
@@ -155,46 +174,103 @@ vec2 hexcStableCentre(ivec2 local) {
     return vec2((float(local.x) + 0.5 * float(local.y)) / hexcStableScale, 0.25 * float(local.y));
 }
 
-// st = period * cell + st_local, with the lattice shift of `cell` periods added to the ids in 32-bit
-// unsigned arithmetic (ids are only hashed, so they may wrap). dSTdx/dSTdy: the gradients of st.
-HexcTiles hexcTilesStableAt(vec2 st, vec2 dSTdx, vec2 dSTdy, uvec2 idShift, float rotStrength, bool rotate, bool transform,
-                            HexcTransform tf) {
+// Places tile i: its transform from the hash of `id`, the sample point from `d` (st relative to the point the
+// tile rotates and scales about) and the gradients, rotated and scaled with the tile.
+void hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, float rotStrength, bool rotate, bool transform, HexcTransform tf,
+                   out vec2 st, out vec2 dx, out vec2 dy, out vec2 rot, out float invScale) {
+    vec2 offset;
+    hexcStableTile(id, rotStrength, rotate, transform, tf, offset, rot, invScale);
+    st = (rotate ? hexcRotateToTile(d, rot) : d) * invScale + offset;
+    dx = (rotate ? hexcRotateToTile(dSTdx, rot) : dSTdx) * invScale;
+    dy = (rotate ? hexcRotateToTile(dSTdy, rot) : dSTdy) * invScale;
+}
+
+// st = (28, 1) * cell + st_local: `cell` is a split-coordinates origin (0 otherwise), whose lattice shift is
+// added to the ids in 32-bit unsigned arithmetic (ids are only hashed, so they may wrap). With split coordinates
+// the engine computes the cell and the offset in st from a double origin each frame (docs/precision.md) and the
+// mesh supplies a small st relative to it, whose gradients are precise.
+HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, float rotStrength, bool rotate, bool transform, HexcTransform tf) {
     HexcTiles t;
     // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small.
     float kx = floor(st.x / 28.0), ky = floor(st.y);
     vec2 r = vec2(st.x - 28.0 * kx, st.y - ky);
     ivec2 l1, l2, l3;
     hexcTriangle(vec2(hexcStableScale * r.x - 2.0 * r.y, 4.0 * r.y), t.w, l1, l2, l3);
-    uvec2 shift = idShift + uvec2(97u * uint(int(kx)) - 2u * uint(int(ky)), 4u * uint(int(ky)));
+    uvec2 c = uvec2(cell) + uvec2(ivec2(kx, ky));
+    uvec2 shift = uvec2(97u * c.x - 2u * c.y, 4u * c.y);
     t.v1 = ivec2(uvec2(l1) + shift);
     t.v2 = ivec2(uvec2(l2) + shift);
     t.v3 = ivec2(uvec2(l3) + shift);
-    vec2 o1, o2, o3;
-    hexcStableTile(t.v1, rotStrength, rotate, transform, tf, o1, t.rot1, t.invScale.x);
-    hexcStableTile(t.v2, rotStrength, rotate, transform, tf, o2, t.rot2, t.invScale.y);
-    hexcStableTile(t.v3, rotStrength, rotate, transform, tf, o3, t.rot3, t.invScale.z);
-    vec2 d1 = r - hexcStableCentre(l1), d2 = r - hexcStableCentre(l2), d3 = r - hexcStableCentre(l3);
-    t.st1 = (rotate ? hexcRotateToTile(d1, t.rot1) : d1) * t.invScale.x + o1;
-    t.st2 = (rotate ? hexcRotateToTile(d2, t.rot2) : d2) * t.invScale.y + o2;
-    t.st3 = (rotate ? hexcRotateToTile(d3, t.rot3) : d3) * t.invScale.z + o3;
-    t.dx1 = (rotate ? hexcRotateToTile(dSTdx, t.rot1) : dSTdx) * t.invScale.x; t.dy1 = (rotate ? hexcRotateToTile(dSTdy, t.rot1) : dSTdy) * t.invScale.x;
-    t.dx2 = (rotate ? hexcRotateToTile(dSTdx, t.rot2) : dSTdx) * t.invScale.y; t.dy2 = (rotate ? hexcRotateToTile(dSTdy, t.rot2) : dSTdy) * t.invScale.y;
-    t.dx3 = (rotate ? hexcRotateToTile(dSTdx, t.rot3) : dSTdx) * t.invScale.z; t.dy3 = (rotate ? hexcRotateToTile(dSTdy, t.rot3) : dSTdy) * t.invScale.z;
+    t.channel = hexcHexChannels(t.v1, t.v3);
+    hexcPlaceTile(t.v1, r - hexcStableCentre(l1), dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
+    hexcPlaceTile(t.v2, r - hexcStableCentre(l2), dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
+    hexcPlaceTile(t.v3, r - hexcStableCentre(l3), dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st3, t.dx3, t.dy3, t.rot3, t.invScale.z);
     return t;
 }
 
-HexcTiles hexcTilesStable(vec2 st, float rotStrength, bool rotate, bool transform, HexcTransform tf) {
-    return hexcTilesStableAt(st, dFdx(st), dFdy(st), uvec2(0u), rotStrength, rotate, transform, tf);
+// The checker mask (docs/material-format.md#mask): two square grids of `scale` cells per unit of st, the second
+// shifted by half a cell, each cell a tile with its own transform. Two taps: tile 3 repeats tile 2 with weight 0.
+float hexcTaper(vec2 f) {
+    return min(min(f.x, 1.0 - f.x), min(f.y, 1.0 - f.y));
 }
 
-// Split coordinates for large worlds: st = originOffset + st_rel + (28, 1) * originCell, where the engine
-// computes the cell and offset from a double origin each frame (docs/precision.md) and the mesh supplies a
-// small st_rel, whose gradients are precise.
-HexcTiles hexcTilesStableSplit(vec2 stRel, ivec2 originCell, vec2 originOffset, float rotStrength, bool rotate, bool transform,
-                               HexcTransform tf) {
-    uvec2 cell = uvec2(originCell);
-    uvec2 shift = uvec2(97u * cell.x - 2u * cell.y, 4u * cell.y);
-    return hexcTilesStableAt(originOffset + stRel, dFdx(stRel), dFdy(stRel), shift, rotStrength, rotate, transform, tf);
+HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, int scale, float rotStrength, bool rotate, bool transform,
+                           HexcTransform tf) {
+    HexcTiles t;
+    vec2 k = floor(st);
+    vec2 q = (st - k) * float(scale);
+    uvec2 base = uint(scale) * (uvec2(ivec2(k)) + uvec2(28u * uint(cell.x), uint(cell.y)));
+    vec2 a = floor(q), b = floor(q + 0.5);
+    vec2 fa = q - a, fb = q + 0.5 - b;
+    // 2^-24 keeps the weights above 0 where both tapers vanish (a border of one grid crossing the other's), and
+    // dividing by the larger keeps w^exponent from underflowing there.
+    vec2 m = vec2(hexcTaper(fa), hexcTaper(fb)) + 1.0 / 16777216.0;
+    t.w = vec3(m / max(m.x, m.y), 0.0);
+    t.v1 = ivec2(2u * (base + uvec2(ivec2(a))));
+    t.v2 = ivec2(2u * (base + uvec2(ivec2(b))) + 1u);
+    t.v3 = t.v2;
+    t.channel = ivec3(0, 1, 1);
+    float s = 1.0 / float(scale);
+    hexcPlaceTile(t.v1, (fa - 0.5) * s, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
+    hexcPlaceTile(t.v2, (fb - 0.5) * s, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
+    t.st3 = t.st2; t.dx3 = t.dx2; t.dy3 = t.dy2; t.rot3 = t.rot2; t.invScale.z = t.invScale.y;
+    return t;
+}
+
+// Value noise over integer cells `c` (32-bit wrapping), fraction f, corner values from pcg3d(corner, salt).
+float hexcValueNoise(uvec2 c, vec2 f, uint salt) {
+    vec2 s = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+    vec4 h = vec4(hexcPcg3d(uvec3(c, salt)).x, hexcPcg3d(uvec3(c + uvec2(1u, 0u), salt)).x,
+                  hexcPcg3d(uvec3(c + uvec2(0u, 1u), salt)).x, hexcPcg3d(uvec3(c + uvec2(1u, 1u), salt)).x);
+    h = vec4(uvec4(h) >> 8u) * (1.0 / 16777216.0);
+    return mix(mix(h.x, h.y, s.x), mix(h.z, h.w, s.x), s.y);
+}
+
+// The noise masks: three copies of the texture, each with one transform (ids (0,0), (1,0), (2,0)) about the st
+// origin, weighed by three bands of one value noise or by three noises (`triple`, a literal).
+HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, int scale, bool triple, float rotStrength, bool rotate, bool transform,
+                         HexcTransform tf) {
+    HexcTiles t;
+    vec2 k = floor(st);
+    vec2 q = (st - k) * float(scale);
+    vec2 fl = floor(q);
+    uvec2 c = uint(scale) * uvec2(ivec2(k)) + uvec2(ivec2(fl));
+    vec2 f = q - fl;
+    if (triple) {
+        vec3 n = vec3(hexcValueNoise(c, f, 4u), hexcValueNoise(c, f, 5u), hexcValueNoise(c, f, 6u));
+        t.w = n / max(max(n.x, n.y), max(n.z, 1.0 / 16777216.0));
+    } else {
+        float p = clamp(4.0 * hexcValueNoise(c, f, 3u) - 1.0, 0.0, 2.0);
+        t.w = max(vec3(0.0), 1.0 - abs(p - vec3(0.0, 1.0, 2.0)));
+    }
+    t.v1 = ivec2(0, 0);
+    t.v2 = ivec2(1, 0);
+    t.v3 = ivec2(2, 0);
+    t.channel = ivec3(0, 1, 2);
+    hexcPlaceTile(t.v1, st, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
+    hexcPlaceTile(t.v2, st, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
+    hexcPlaceTile(t.v3, st, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st3, t.dx3, t.dy3, t.rot3, t.invScale.z);
+    return t;
 }
 
 // x^n for a literal n in 1..16 by repeated squaring: hexc passes n when an exponent is a whole number, the
@@ -240,34 +316,35 @@ vec3 hexcBlendWeights(vec3 w, vec3 Dw, float falloffContrast, float exponent, fl
     return W;
 }
 
-// Listing 7: weights swizzled so each hex tile keeps one colour across triangles (for visualisation).
-// `%` on negative integers is undefined in GLSL and target-dependent elsewhere, so the remainder is
-// taken of a non-negative value.
-vec3 hexcHexWeights(vec3 W, ivec2 v1, ivec2 v3) {
-    int d = v1.x - v1.y;
-    int a = abs(d) % 3;
-    int i1 = (d < 0 && a != 0) ? 3 - a : a;
-    int vh = i1 < 2 ? i1 + 1 : 0;
-    int vl = i1 > 0 ? i1 - 1 : 2;
-    int i2 = v1.x < v3.x ? vl : vh;
-    int i3 = v1.x < v3.x ? vh : vl;
-    vec3 res;
-    res.x = i3 == 0 ? W.z : (i2 == 0 ? W.y : W.x);
-    res.y = i3 == 1 ? W.z : (i2 == 1 ? W.y : W.x);
-    res.z = i3 == 2 ? W.z : (i2 == 2 ? W.y : W.x);
-    return res;
+// Height blending (docs/material-format.md#height-blending): weights W reshaped by the tiles' heights h, so the
+// highest tile shows and others only within `width` of it. A tile's weight stays 0 where W is 0 (no seams), and
+// the highest tile keeps width * W > 0, so the sum never vanishes.
+vec3 hexcHeightBlend(vec3 W, vec3 h, float width) {
+    vec3 a = max(h, vec3(0.0)) * W;
+    vec3 Wh = W * max(a - max(max(a.x, a.y), a.z) + width, vec3(0.0));
+    return Wh / (Wh.x + Wh.y + Wh.z);
+}
+
+// The heights of the tiles' samples from the height slot's texture (`luma` picks its channel); `taps` = 2 (the
+// checker) leaves the third, weightless tile unsampled. `height`, `taps`: literals chosen by hexc.
+vec3 hexcTileHeights(texture2D tex, sampler samp, HexcTiles t, vec4 luma, int taps) {
+    return vec3(dot(textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1), luma), dot(textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2), luma),
+                taps > 2 ? dot(textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3), luma) : 0.0);
 }
 
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
-// a unit vector picking the channel for scalar maps.
+// a unit vector picking the channel for scalar maps. `taps`: 3, or 2 for the checker mask (no third fetch).
+// `height` (a literal): blend by the heights in channel `heightLuma` of `heightTex`.
 vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, vec4 luma,
-               bool metric, bool gain, int exponentInt, int gainInt, out vec3 weights) {
+               bool metric, bool gain, int exponentInt, int gainInt, int taps, bool height, texture2D heightTex, vec4 heightLuma,
+               float heightWidth, out vec3 weights) {
     vec4 c1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1);
     vec4 c2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2);
-    vec4 c3 = textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3);
+    vec4 c3 = taps > 2 ? textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3) : vec4(0.0);
     vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
     vec3 W = hexcBlendWeights(t.w, Dw, falloffContrast, exponent, falloff, metric, gain, exponentInt, gainInt);
-    weights = hexcHexWeights(W, t.v1, t.v3);
+    if (height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, heightLuma, taps), heightWidth);
+    weights = hexcShowWeights(W, t.channel);
     return W.x * c1 + W.y * c2 + W.z * c3;
 }
 
@@ -288,14 +365,16 @@ vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, boo
 // Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, bool flipY,
-               bool metric, bool gain, int exponentInt, int gainInt, out vec3 weights) {
+               bool metric, bool gain, int exponentInt, int gainInt, int taps, bool height, texture2D heightTex, vec4 heightLuma,
+               float heightWidth, out vec3 weights) {
     // A tile scaled by s shows H(p / s), whose slope is the sampled one over s.
     vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1) * t.invScale.x;
     vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2) * t.invScale.y;
-    vec2 d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3) * t.invScale.z;
+    vec2 d3 = taps > 2 ? hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3) * t.invScale.z : vec2(0.0);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), falloffContrast, exponent, falloff, metric, gain, exponentInt, gainInt);
-    weights = hexcHexWeights(W, t.v1, t.v3);
+    if (height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, heightLuma, taps), heightWidth);
+    weights = hexcShowWeights(W, t.channel);
     return W.x * d1 + W.y * d2 + W.z * d3;
 }
 
@@ -326,29 +405,77 @@ HexcTap hexcDitherTile(HexcTiles t, float exponent, float falloff, bool gain, in
 vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, float falloff, float exponent, bool gain, int exponentInt, int gainInt,
                 out vec3 weights) {
     HexcTap tap = hexcDitherTile(t, exponent, falloff, gain, exponentInt, gainInt);
-    weights = hexcHexWeights(tap.pick, t.v1, t.v3);
+    weights = hexcShowWeights(tap.pick, t.channel);
     return textureGrad(sampler2D(tex, samp), tap.st, tap.dx, tap.dy);
 }
 
 vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, float falloff, float exponent, bool flipY, bool gain, int exponentInt,
                 int gainInt, out vec3 weights) {
     HexcTap tap = hexcDitherTile(t, exponent, falloff, gain, exponentInt, gainInt);
-    weights = hexcHexWeights(tap.pick, t.v1, t.v3);
+    weights = hexcShowWeights(tap.pick, t.channel);
     return hexcRotateFromTile(hexcSampleDeriv(tex, samp, tap.st, tap.dx, tap.dy, flipY), tap.rot) * tap.invScale;
 }
 
-// Plain tiling, for slots with hex-tiling disabled: one fetch, hardware gradients.
-vec4 hexcPlainColor(texture2D tex, sampler samp, vec2 st, out vec3 weights) {
+// Plain tiling, for slots with hex-tiling disabled: one fetch, hardware gradients, or the given ones where
+// the call may sit in non-uniform control flow (`explicitGrad`, a literal: the triplanar planes).
+vec4 hexcPlainColor(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, bool explicitGrad, out vec3 weights) {
     weights = vec3(1.0, 0.0, 0.0);
-    return texture(sampler2D(tex, samp), st);
+    return explicitGrad ? textureGrad(sampler2D(tex, samp), st, dx, dy) : texture(sampler2D(tex, samp), st);
 }
 
-vec2 hexcPlainDeriv(texture2D tex, sampler samp, vec2 st, bool flipY, out vec3 weights) {
-    weights = vec3(1.0, 0.0, 0.0);
-    return hexcNormalToDeriv(2.0 * texture(sampler2D(tex, samp), st).xyz - 1.0, flipY);
+vec2 hexcPlainDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, bool explicitGrad, bool flipY, out vec3 weights) {
+    return hexcNormalToDeriv(2.0 * hexcPlainColor(tex, samp, st, dx, dy, explicitGrad, weights).xyz - 1.0, flipY);
 }
 
 // The paper's conversion of a blended derivative back to a tangent-space normal (Section 3).
 vec3 hexcDerivToNormal(vec2 deriv) {
     return normalize(vec3(-deriv, 1.0));
+}
+
+// Triplanar projection (docs/material-format.md#triplanar-projection): the unit normal, each plane's weight
+// and each plane's st with its gradients. Planes x, y, z read (y, z), (z, x), (x, y) of the position.
+struct HexcPlanes {
+    vec3 n, b;
+    vec2 st[3], dx[3], dy[3];
+};
+
+HexcPlanes hexcPlanes(vec3 position, vec3 normal, float sharpness, vec2 tiling) {
+    HexcPlanes p;
+    // Derivatives here, in uniform control flow: the planes are then sampled with explicit gradients.
+    vec3 dPdx = dFdx(position), dPdy = dFdy(position);
+    float len = length(normal);
+    p.n = len > 0.0 ? normal / len : vec3(0.0);
+    vec3 b = pow(abs(p.n), vec3(sharpness));
+    float sum = b.x + b.y + b.z;
+    p.b = sum > 0.0 ? b / sum : vec3(1.0 / 3.0);
+    p.st[0] = position.yz * tiling; p.dx[0] = dPdx.yz * tiling; p.dy[0] = dPdy.yz * tiling;
+    p.st[1] = position.zx * tiling; p.dx[1] = dPdx.zx * tiling; p.dy[1] = dPdy.zx * tiling;
+    p.st[2] = position.xy * tiling; p.dx[2] = dPdx.xy * tiling; p.dy[2] = dPdy.xy * tiling;
+    return p;
+}
+
+// A plane's value in the blend: colour and scalar as they are; a normal slot's derivative (dH/ds, dH/dt) as the
+// world-space gradient it implies on plane k.
+vec4 hexcLift(int k, vec4 v) { return v; }
+float hexcLift(int k, float v) { return v; }
+vec3 hexcLift(int k, vec2 d) {
+    return k == 0 ? vec3(0.0, d.x, d.y) : (k == 1 ? vec3(d.y, 0.0, d.x) : vec3(d.x, d.y, 0.0));
+}
+
+// The blended planes' result: colour and scalar as they are; gradients projected onto the surface (the surface
+// gradient of Mikkelsen 2020).
+vec4 hexcFinish(vec4 v, vec3 n) { return v; }
+float hexcFinish(float v, vec3 n) { return v; }
+vec3 hexcFinish(vec3 g, vec3 n) { return g - dot(g, n) * n; }
+
+// The bumped normal from a surface gradient (a triplanar normal slot's result).
+vec3 hexcPerturbNormal(vec3 normal, vec3 surfaceGradient) {
+    return normalize(normalize(normal) - surfaceGradient);
+}
+
+// The value and weights templates' preview surface for triplanar materials: the unit sphere, uv as longitude
+// and latitude in radians.
+void hexcPreviewSphere(vec2 uv, out vec3 position, out vec3 normal) {
+    position = vec3(cos(uv.y) * sin(uv.x), sin(uv.y), cos(uv.y) * cos(uv.x));
+    normal = position;
 }

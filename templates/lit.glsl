@@ -2,13 +2,21 @@
 // hexc template `lit`: albedo + tangent-space normal + roughness under one directional light.
 // Slots read (all optional): `albedo` (color), `normal` (normal), `roughness` (scalar).
 // Stage inputs: location 0 = texture coordinate, 1 = surface normal, 2 = tangent (w = bitangent sign),
-// all in the same (world or view) space as the light direction below.
+// all in the same (world or view) space as the light direction below. With the triplanar projection:
+// 1 = surface normal and 3 = position, in world space.
+#include <hexc>
+
+#ifdef HEXC_PROJECTION_triplanar
+layout(location = 1) in vec3 v_normal;
+layout(location = 3) in vec3 v_position;
+#define HEXC_INPUTS v_position, v_normal
+#else
 layout(location = 0) in vec2 v_uv;
 layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec4 v_tangent;
+#define HEXC_INPUTS v_uv
+#endif
 layout(location = 0) out vec4 o_color;
-
-#include <hexc>
 
 const vec3 kLightDir = vec3(0.408248, 0.408248, 0.816497);  // towards the light, normalised (1, 1, 2)
 const vec3 kViewDir = vec3(0.0, 0.0, 1.0);
@@ -16,17 +24,19 @@ const float kAmbient = 0.15;
 
 void main() {
 #ifdef HEXC_HAS_albedo
-    vec3 albedo = hexc_albedo(v_uv).rgb;
+    vec3 albedo = hexc_albedo(HEXC_INPUTS).rgb;
 #else
     vec3 albedo = vec3(0.5);
 #endif
 #ifdef HEXC_HAS_roughness
-    float roughness = clamp(hexc_roughness(v_uv), 0.02, 1.0);
+    float roughness = clamp(hexc_roughness(HEXC_INPUTS), 0.02, 1.0);
 #else
     float roughness = 0.5;
 #endif
     vec3 N = normalize(v_normal);
-#ifdef HEXC_HAS_normal
+#if defined(HEXC_HAS_normal) && defined(HEXC_PROJECTION_triplanar)
+    N = hexcPerturbNormal(N, hexc_normal(v_position, N));
+#elif defined(HEXC_HAS_normal)
     // Tangent-space normal from the blended derivative, taken to the surface frame (Mikkelsen 2020).
     vec3 T = normalize(v_tangent.xyz - N * dot(N, v_tangent.xyz));
     vec3 B = cross(N, T) * v_tangent.w;

@@ -1,10 +1,12 @@
-// hexc per-slot snippets. codegen picks one section per slot (`//@ <kind>.<hex|hex1|plain>`) and the resource
-// sections, and replaces the $placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff,
-// $falloffcontrast, $exponent, $origincell, $originoffset (uniform members, constants or literals),
-// $lattice (a `lattice.*` section), $tf (a HexcTransform), $transform, $rotate, $metric, $gain, $exponentint, $gainint (literal feature
-// switches and whole-number exponents, 0 = none), $luma, $channel,
-// $flipy, $kind, $members, $constants.
-// Each slot gets `hexc_$name(vec2 uv)` and an overload with `out vec3 weights` (Listing 7 hex weights).
+// hexc per-slot snippets. codegen picks, per slot, a sampling section (`//@ <kind>.<hex|hex1|plain>`), which
+// defines `hexcAt_$name` (the slot at st with its gradients and split-coordinates cell), and a projection section
+// (`uv`, `uv.split`, `triplanar`), which defines the public `hexc_$name` from it; plus the resource sections.
+// Placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff, $falloffcontrast, $exponent,
+// $origincell, $originoffset, $planesharpness (uniform members, constants or literals), $lattice (a `lattice.*`
+// section), $tf (a HexcTransform), $transform, $rotate, $metric, $gain, $exponentint, $gainint, $taps, $maskscale,
+// $triple, $explicit (literal feature switches and whole numbers, 0 = none), $height (height-blend arguments),
+// $luma, $channel, $flipy, $type (the slot's result type), $kind, $members.
+// Each slot gets `hexc_$name(...)` and an overload with `out vec3 weights` (the weights output).
 
 //@ params
 layout(set = 0, binding = 0, std140) uniform HexcParams {
@@ -25,6 +27,7 @@ layout(set = 0, binding = $binding) uniform sampler hexcSampler;
 //@ first
 #define HEXC_FIRST_SLOT hexc_$name
 #define HEXC_FIRST_KIND_$kind 1
+#define HEXC_PROJECTION_$projection 1
 
 //@ texture
 layout(set = 0, binding = $binding) uniform texture2D hexcTex_$name;
@@ -34,64 +37,87 @@ layout(set = 0, binding = $binding) uniform texture2D hexcTex_$name;
 HexcTransform($rotationrange, $rotationsteps, $scalerange, $offset, ivec2($offsetstepsx, $offsetstepsy))
 
 //@ lattice.paper
-hexcTilesPaper(uv * $tiling, $rotation, $rotate)
+hexcTilesPaper(st, dx, dy, $rotation, $rotate)
 
 //@ lattice.stable
-hexcTilesStable(uv * $tiling, $rotation, $rotate, $transform, $tf)
+hexcTilesStable(st, dx, dy, cell, $rotation, $rotate, $transform, $tf)
 
-//@ lattice.split
-hexcTilesStableSplit(uv * $tiling, $origincell, $originoffset, $rotation, $rotate, $transform, $tf)
+//@ lattice.checker
+hexcTilesChecker(st, dx, dy, cell, $maskscale, $rotation, $rotate, $transform, $tf)
+
+//@ lattice.noise
+hexcTilesNoise(st, dx, dy, $maskscale, $triple, $rotation, $rotate, $transform, $tf)
 
 //@ color.hex
-vec4 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, $exponentint, $gainint, weights);
+vec4 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, $exponentint, $gainint, $taps, $height, weights);
 }
-vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ color.hex1
-vec4 hexc_$name(vec2 uv, out vec3 weights) {
+vec4 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
     return hexcColor1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $gain, $exponentint, $gainint, weights);
 }
-vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ color.plain
-vec4 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcPlainColor(hexcTex_$name, hexcSampler, uv * $tiling, weights);
+vec4 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcPlainColor(hexcTex_$name, hexcSampler, st, dx, dy, $explicit, weights);
 }
-vec4 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ scalar.hex
-float hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, $exponentint, $gainint, weights).$channel;
+float hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, $exponentint, $gainint, $taps, $height, weights).$channel;
 }
-float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ scalar.hex1
-float hexc_$name(vec2 uv, out vec3 weights) {
+float hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
     return hexcColor1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $gain, $exponentint, $gainint, weights).$channel;
 }
-float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ scalar.plain
-float hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcPlainColor(hexcTex_$name, hexcSampler, uv * $tiling, weights).$channel;
+float hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcPlainColor(hexcTex_$name, hexcSampler, st, dx, dy, $explicit, weights).$channel;
 }
-float hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ normal.hex
-vec2 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, $metric, $gain, $exponentint, $gainint, weights);
+vec2 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, $metric, $gain, $exponentint, $gainint, $taps, $height, weights);
 }
-vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ normal.hex1
-vec2 hexc_$name(vec2 uv, out vec3 weights) {
+vec2 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
     return hexcDeriv1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $flipy, $gain, $exponentint, $gainint, weights);
 }
-vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
 
 //@ normal.plain
-vec2 hexc_$name(vec2 uv, out vec3 weights) {
-    return hexcPlainDeriv(hexcTex_$name, hexcSampler, uv * $tiling, $flipy, weights);
+vec2 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcPlainDeriv(hexcTex_$name, hexcSampler, st, dx, dy, $explicit, $flipy, weights);
 }
-vec2 hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ uv
+$type hexc_$name(vec2 uv, out vec3 weights) {
+    vec2 st = uv * $tiling;
+    return hexcAt_$name(st, dFdx(st), dFdy(st), ivec2(0), weights);
+}
+$type hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ uv.split
+// uv relative to the per-frame origin, whose cell and offset the engine fills (docs/precision.md).
+$type hexc_$name(vec2 uv, out vec3 weights) {
+    vec2 st = uv * $tiling;
+    return hexcAt_$name($originoffset + st, dFdx(st), dFdy(st), $origincell, weights);
+}
+$type hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+
+//@ triplanar
+$type hexc_$name(vec3 position, vec3 normal, out vec3 weights) {
+    HexcPlanes p = hexcPlanes(position, normal, $planesharpness, $tiling);
+    $type value = $type(0.0);
+    vec3 w;
+    weights = vec3(0.0);
+    // Planes of weight 0 are skipped: most pixels of a mesh face one or two planes.
+    if (p.b.x > 0.0) { value += p.b.x * hexcLift(0, hexcAt_$name(p.st[0], p.dx[0], p.dy[0], ivec2(0), w)); weights += p.b.x * w; }
+    if (p.b.y > 0.0) { value += p.b.y * hexcLift(1, hexcAt_$name(p.st[1], p.dx[1], p.dy[1], ivec2(0), w)); weights += p.b.y * w; }
+    if (p.b.z > 0.0) { value += p.b.z * hexcLift(2, hexcAt_$name(p.st[2], p.dx[2], p.dy[2], ivec2(0), w)); weights += p.b.z * w; }
+    return hexcFinish(value, p.n);
+}
+$type hexc_$name(vec3 position, vec3 normal) { vec3 weights; return hexc_$name(position, normal, weights); }

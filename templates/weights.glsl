@@ -8,6 +8,13 @@ layout(location = 0) out vec4 o_color;
 
 void main() {
     vec3 weights;
+#if defined(HEXC_PROJECTION_triplanar)
+    // A triplanar material on the unit sphere, as in the `value` template.
+    vec3 position, normal;
+    hexcPreviewSphere(v_uv, position, normal);
+    HEXC_FIRST_SLOT(position, normal, weights);
+#else
     HEXC_FIRST_SLOT(v_uv, weights);
+#endif
     o_color = vec4(weights, 1.0);
 }

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "hexc/material.h"
 #include "reference/reference.h"
@@ -49,8 +50,10 @@ double pixelTolerance(const reference::SlotResult& r, double ex, double em, cons
 
 // ---- Fixtures ---------------------------------------------------------------------------------------------
 
-Material material(const std::string& slotJson) {
-    ParseResult r = parseMaterial(R"({"name": "exec", "slots": [)" + slotJson + "]}", "materials/exec.json");
+// A material of the given slots (one slot object, or several separated by commas; the first is the one tested)
+// and optional material-level hex-tiling settings.
+Material material(const std::string& slotJson, const std::string& hexJson = "{}") {
+    ParseResult r = parseMaterial(R"({"name": "exec", "hextiling": )" + hexJson + R"(, "slots": [)" + slotJson + "]}", "materials/exec.json");
     if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
     return *r.material;
 }
@@ -105,10 +108,16 @@ TextureBounds bounds(const reference::SampledTexture& t) {
 const View kMagnified{192, 192, {0.3, 0.45, 0.3 + 192 * 0.75 / 1024, 0.45 + 192 * 0.75 / 1024}};  // 0.75 texel per pixel
 const View kMinified{96, 96, {0.3, 0.45, 0.3 + 96.0 * 4 / 1024, 0.45 + 96.0 * 4 / 1024}};  // 4 texels per pixel
 
+// Triplanar materials are shown on the preview sphere (reference::previewSphere) over longitude 0.2..1.0 and
+// latitude 0.1..0.9 radians, where all three planes take part. |dP| <= 0.8 / 384 per pixel, so at tiling 1.5 a
+// pixel spans at most 0.8 texels of a 256^2 texture: level 0 only, like kMagnified.
+const View kSphere{384, 384, {0.2, 0.1, 1.0, 0.9}};
+
 struct Case {
     const char* name;
-    const char* slot;  // slot JSON
+    const char* slot;  // slot JSON (several slots: the first is tested, the others are its height maps)
     bool minified;
+    const char* hextiling = "{}";  // material-level settings
 };
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
@@ -132,6 +141,26 @@ const Case kColorCases[] = {
     {"color_transforms_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotationrange": [-45, 45], "offset": 0.25}})", true},
     {"scalar_roughness", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})", false},
     {"scalar_roughness_minified", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})", true},
+    // The seeds' variants (docs/material-format.md#mask and on).
+    {"color_checker", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "maskscale": 3, "falloff": 0.7}})", false},
+    {"color_checker_transforms_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "rotationrange": [0, 360], "rotationsteps": 4, "offsetsteps": [4, 4]}})", true},
+    {"color_noise", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "noise", "maskscale": 4}})", false},
+    {"color_noise3", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "noise3", "maskscale": 4, "exponent": 4, "falloff": 0.7}})", false},
+    {"scalar_noise3_minified", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "mask": "noise3", "rotation": 0}})", true},
+    // Height blending: the metric off, so the weights before the height stage are the lattice's alone (see
+    // heightTolerance).
+    {"color_height_blend", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}, "height_blend": {"slot": "height", "width": 0.1}},
+                              {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})", false},
+    {"color_height_blend_checker_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "mask": "checker"}, "height_blend": {"slot": "height", "width": 0.3}},
+                              {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})", true},
+    {"scalar_height_blend_self", R"({"name": "height", "kind": "scalar", "texture": "textures/rock_height.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "falloff": 0.7}, "height_blend": {"slot": "height", "width": 0.05}})", false},
+    // Triplanar on the preview sphere; falloffcontrast 0 keeps each plane's weights exact (see ColorPath).
+    {"color_triplanar", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloffcontrast": 0, "falloff": 0.7}})", false,
+     R"({"projection": "triplanar", "tiling": 1.5})"},
+    {"color_triplanar_checker_sharp", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloffcontrast": 0, "mask": "checker"}})", false,
+     R"({"projection": "triplanar", "tiling": 1.5, "planesharpness": 12})"},
+    {"color_triplanar_plain", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"enabled": false}})", false,
+     R"({"projection": "triplanar", "tiling": 1.5})"},
 };
 
 struct Check {
@@ -143,12 +172,41 @@ struct Check {
 
 // Runs a one-slot material on the GPU and compares `channels` channels of every pixel with the reference,
 // each pixel against its own tolerance (pixelTolerance).
-Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, vk::ExecutedTarget target, double ex,
+// Height blending (hexcHeightBlend): W'_i = W_i f_i / S with f_i = max(h_i W_i - max_j h_j W_j + width, 0) and
+// S = sum_j W_j f_j. Heights off by at most e_h move each a_j = h_j W_j by <= e_h W_j, each f_i by <= 2 e_h and S by
+// <= 2 e_h sum_j W_j = 2 e_h, so sum_i |dW'_i| <= (2 e_h + 2 e_h) / S, and the blend, whose weight changes sum to 0,
+// by <= sum_i |dW'_i| / 2 * spread = 2 e_h spread / S, spread being the largest difference between the tiles'
+// samples in a channel.
+double heightTolerance(const reference::SlotResult& r, double eh, int channels) {
+    double spread = 0;
+    for (int c = 0; c < channels; ++c) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (const reference::Rgba& x : r.samples) {
+            lo = std::min(lo, x[size_t(c)]);
+            hi = std::max(hi, x[size_t(c)]);
+        }
+        spread = std::max(spread, hi - lo);
+    }
+    return 2 * eh * spread / r.heightSum;
+}
+
+// `level`: the deepest mip level the view reads.
+Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, vk::ExecutedTarget target, double ex,
                             double em, int channels) {
     std::string why;
     const Slot& slot = m.slots[0];
     Image gpu = vk::render(*runner(&why), m, output, "", view, target);
-    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view);
+    std::optional<reference::SampledTexture> heights;
+    reference::HeightSource height;
+    if (slot.heightBlend)
+        for (const Slot& h : m.slots)
+            if (h.name == slot.heightBlend->slot) {
+                heights.emplace(loadTexture(h.texturePath, h.colorSpace == ColorSpace::Srgb));
+                height = {&*heights, h.channel, slot.heightBlend->width};
+            }
+    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view, slot.heightBlend ? &height : nullptr);
+    // The height map is 8-bit linear data, sampled at the view's levels like the slot.
+    const double eh = sampleError(level, false);
     Check check;
     Image cpu = gpu;
     for (size_t p = 0; p < ref.size(); ++p) {
@@ -156,6 +214,7 @@ Check checkAgainstReference(const Material& m, vk::RenderOutput output, const Vi
         for (int c = 0; c < channels; ++c)
             cpu.rgba[p * 4 + size_t(c)] = float(ref[p].value[slot.kind == SlotKind::Scalar ? size_t(slot.channel) : size_t(c)]);
         double tolerance = pixelTolerance(ref[p], ex, em, slot.hex, slot.kind == SlotKind::Scalar ? 1 : channels);
+        if (slot.heightBlend) tolerance += heightTolerance(ref[p], eh, slot.kind == SlotKind::Scalar ? 1 : channels);
         check.maxTolerance = std::max(check.maxTolerance, tolerance);
         for (int c = 0; c < channels; ++c) {
             double e = std::fabs(double(gpu.rgba[p * 4 + size_t(c)]) - double(cpu.rgba[p * 4 + size_t(c)]));
@@ -178,16 +237,16 @@ class ColorPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTar
 TEST_P(ColorPath, MatchesReference) {
     REQUIRE_VULKAN();
     const auto& [c, target] = GetParam();
-    Material m = material(c.slot);
+    Material m = material(c.slot, c.hextiling);
     const Slot& slot = m.slots[0];
-    View view = c.minified ? kMinified : kMagnified;
+    View view = slot.hex.projection == Projection::Triplanar ? kSphere : c.minified ? kMinified : kMagnified;
     // The paper's hash is fract(sin(x) * 43758.5453): lavapipe's sin and the C library's disagree in the last
     // bits, which the factor 43758 turns into different tiles away from the origin (see docs/precision.md).
     // Near the origin, where the ids are 0 and 1, both agree.
     if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};
     double es = sampleError(c.minified ? 2 : 0, slot.colorSpace == ColorSpace::Srgb);
     // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
-    Check check = checkAgainstReference(m, vk::RenderOutput::Albedo, view, target, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
+    Check check = checkAgainstReference(m, vk::RenderOutput::Albedo, view, c.minified ? 2 : 0, target, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
@@ -209,6 +268,13 @@ const Case kNormalCases[] = {
     {"normal_minified", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", true},
     {"normal_transforms", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "rotationrange": [0, 360], "rotationsteps": 8, "scalerange": [0.5, 2], "offsetsteps": [2, 2]}})", false},
     {"normal_paper_mode_near_origin", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
+    {"normal_checker", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mask": "checker", "scalerange": [0.7, 1.4]}})", false},
+    {"normal_noise", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mask": "noise", "maskscale": 5}})", false},
+    {"normal_height_blend", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}, "height_blend": {"slot": "height", "width": 0.15}},
+                               {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})", false},
+    // The surface gradient (x, y, z) of the planes' blended derivatives; falloffcontrast 0 as in ColorPath.
+    {"normal_triplanar", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"falloffcontrast": 0}})", false,
+     R"({"projection": "triplanar", "tiling": 1.5})"},
 };
 
 class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
@@ -216,16 +282,21 @@ class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTa
 TEST_P(NormalPath, MatchesReference) {
     REQUIRE_VULKAN();
     const auto& [c, target] = GetParam();
-    Material m = material(c.slot);
+    Material m = material(c.slot, c.hextiling);
     const Slot& slot = m.slots[0];
-    View view = c.minified ? kMinified : kMagnified;
+    const bool triplanar = slot.hex.projection == Projection::Triplanar;
+    View view = triplanar ? kSphere : c.minified ? kMinified : kMagnified;
     if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};  // see ColorPath
     TextureBounds b = bounds(sampled(slot));
     // Listing 9: d = -xy / z with x, y, z = 2 * texel - 1, each off by 2 e_s, so to first order
     // |dd| <= 2 e_s (1 + max|d|) / min z. The slope metric sin(theta) = sqrt(|d|^2 / (1 + |d|^2)) moves by at
     // most the error of |d| (its slope is <= 1), which is <= sqrt(2) |dd|.
     double ed = 2 * sampleError(c.minified ? 2 : 0, false) * (1 + b.maxDeriv) / b.minZ;
-    Check check = checkAgainstReference(m, vk::RenderOutput::Derivative, view, target, ed, std::sqrt(2.0) * ed, 2);
+    // Triplanar: each plane's gradient g_k errs by |(dd_x, dd_y)| <= sqrt(2) ed, so does their convex combination,
+    // and the projection onto the surface does not lengthen it: each component of the surface gradient is within
+    // sqrt(2) ed. The plane weights' own float32 error (~1e-7) is negligible.
+    Check check = triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, 0, target, std::sqrt(2.0) * ed, 0, 3)
+                            : checkAgainstReference(m, vk::RenderOutput::Derivative, view, c.minified ? 2 : 0, target, ed, std::sqrt(2.0) * ed, 2);
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
@@ -352,6 +423,35 @@ TEST(OneTap, SamplesOncePerSlot) {
     size_t samples = 0;
     for (size_t p = 0; (p = text.find("OpImageSample", p)) != std::string::npos; ++p) ++samples;
     EXPECT_EQ(samples, 1u);
+}
+
+// What each variant fetches per pixel, counted in the SPIR-V: the checker mask's two taps, the height map's
+// fetch per tap, three planes of three taps for triplanar.
+TEST(Variants, FetchWhatTheyDocument) {
+    const std::string albedo = R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": )";
+    const std::string height = R"(, {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})";
+    struct Expect {
+        std::string slots, hextiling;
+        size_t samples;
+    };
+    const Expect cases[] = {
+        {albedo + R"({"mask": "checker"}})", "{}", 2},
+        {albedo + R"({"mask": "checker", "taps": 1}})", "{}", 1},
+        {albedo + R"({"mask": "noise3"}})", "{}", 3},
+        {albedo + R"({}, "height_blend": {"slot": "height"}})" + height, "{}", 6},
+        {albedo + R"({"mask": "checker"}, "height_blend": {"slot": "height"}})" + height, "{}", 4},
+        {albedo + "{}}", R"({"projection": "triplanar"})", 9},
+    };
+    for (const Expect& e : cases) {
+        Material m = material(e.slots, e.hextiling);
+        m.templateName = "value";
+        CompileResult r = compile(m);
+        ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+        std::string text = disassemble(r.spirv);
+        size_t samples = 0;
+        for (size_t p = 0; (p = text.find("OpImageSample", p)) != std::string::npos; ++p) ++samples;
+        EXPECT_EQ(samples, e.samples) << e.slots << " " << e.hextiling;
+    }
 }
 
 // ---- Properties of the GPU output ----------------------------------------------------------------------------

@@ -31,12 +31,33 @@ const InvalidFile kInvalidFiles[] = {
     {"falloff_zero", "6:16: error: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 0"},
     {"falloffcontrast_out_of_range", "6:24: error: /hextiling/falloffcontrast: expected a number in [0, 1], got 1.5"},
     {"flip_y_on_color_slot", "10:7: error: /slots/0/flip_y: `flip_y` applies only to slots of kind `normal`"},
+    {"height_blend_missing_slot",
+     "10:23: error: /slots/0/height_blend: missing required key `slot` (the name of a scalar slot holding heights)"},
+    {"height_blend_not_scalar",
+     "10:33: error: /slots/0/height_blend/slot: slot `normal` is of kind `normal`; heights come from a slot of kind `scalar`"},
+    {"height_blend_unknown_key", "10:46: error: /slots/0/height_blend/contrast: unknown key `contrast`; expected `slot` or `width`"},
+    {"height_blend_unknown_slot",
+     "10:33: error: /slots/0/height_blend/slot: no slot named `roughnes` in this material (did you mean `roughness`?)"},
+    {"height_blend_width_zero", "10:55: error: /slots/0/height_blend/width: expected a number in (0, 1], got 0"},
+    {"height_blend_with_one_tap",
+     "13:7: error: /slots/0/height_blend: `height_blend` needs every tile's height; it cannot be combined with `taps` 1"},
     {"kind_misspelled",
      "9:15: error: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got \"colour\" (did you mean `color`?)"},
+    {"mask_needs_stable",
+     "13:20: error: /slots/0/hextiling: mask `checker` needs mode `stable`; the paper defines only the hex lattice"},
+    {"mask_unknown",
+     "6:13: error: /hextiling/mask: expected one of `hex`, `checker`, `noise` or `noise3`, got \"checkers\" (did you mean `checker`?)"},
+    {"maskscale_not_whole",
+     "7:18: error: /hextiling/maskscale: expected a whole number in 1..64 (mask cells per texture repeat), got 2.5"},
     {"material_name_invalid",
      "3:11: error: /name: expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"rock stone\""},
     {"missing_name", "1:1: error: missing required key `name` (a string)"},
     {"mode_unknown", "6:13: error: /hextiling/mode: expected one of `stable` or `paper`, got \"fast\""},
+    {"planesharpness_out_of_range", "7:23: error: /hextiling/planesharpness: expected a number in [1, 64], got 0.5"},
+    {"projection_in_slot",
+     "10:22: error: /slots/0/hextiling/projection: `projection` is material-wide (every slot function takes the same inputs); "
+     "set it in the top-level `hextiling`"},
+    {"projection_unknown", "6:19: error: /hextiling/projection: expected one of `uv` or `triplanar`, got \"planar\""},
     {"rotation_negative", "6:17: error: /hextiling/rotation: expected a number >= 0, got -1"},
     {"rotation_not_finite", "6:17: error: number 1e999 is out of range (expected a finite number)"},
     {"scalar_channel_invalid", "10:18: error: /slots/0/channel: expected one of `r`, `g`, `b` or `a`, got \"rgb\""},
@@ -51,7 +72,16 @@ const InvalidFile kInvalidFiles[] = {
      "7:15: error: /slots/0/name: expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`), got "
      "\"Albedo\" (it becomes the GLSL function hexc_<name>)"},
     {"slots_empty", "5:12: error: /slots: expected 1 to 16 slots, got 0"},
+    {"split_with_noise_mask",
+     "13:20: error: /slots/0/hextiling: `split_coordinates` does not work with the noise masks: their copies are transformed "
+     "about the origin"},
+    {"split_with_triplanar",
+     "13:20: error: /slots/0/hextiling: `split_coordinates` does not work with the triplanar projection: it reads world "
+     "positions, not uv"},
     {"srgb_normal", "10:21: error: /slots/0/colorspace: a normal map holds vectors and must be `linear`, got \"srgb\""},
+    {"taps_above_three", "6:13: error: /hextiling/taps: expected a number in 1..3, got 4"},
+    {"taps_mismatch_checker",
+     "13:20: error: /slots/0/hextiling: `taps` 3 does not fit mask `checker`, which has 2 taps; expected 2 or 1 (one dithered fetch)"},
     {"template_unknown",
      "4:15: error: /template: unknown template \"pbr\"; expected a built-in template (`lit`, `unlit`, `weights`, `value`, `depth`, `shadow`) or a path "
      "to a .glsl file"},
@@ -61,10 +91,11 @@ const InvalidFile kInvalidFiles[] = {
     {"too_many_slots", "5:12: error: /slots: expected 1 to 16 slots, got 17"},
     {"unknown_key_in_slot",
      "10:7: error: /slots/0/color_space: unknown key `color_space`; expected `name`, `texture`, `kind`, `channel`, "
-     "`colorspace`, `flip_y` or `hextiling` (did you mean `colorspace`?)"},
+     "`colorspace`, `flip_y`, `hextiling` or `height_blend` (did you mean `colorspace`?)"},
     {"unknown_key_misspelled",
      "6:5: error: /hextiling/rotaton: unknown key `rotaton`; expected `enabled`, `tiling`, `rotation`, `falloff`, "
-     "`falloffcontrast`, `exponent`, `mode`, `split_coordinates`, `rotationrange`, `rotationsteps`, `scalerange`, `offset`, `offsetsteps` or `taps` (did you mean `rotation`?)"},
+     "`falloffcontrast`, `exponent`, `mode`, `split_coordinates`, `rotationrange`, `rotationsteps`, `scalerange`, `offset`, "
+     "`offsetsteps`, `mask`, `maskscale`, `taps`, `projection` or `planesharpness` (did you mean `rotation`?)"},
     {"unknown_key_top_level",
      "12:3: error: /description: unknown key `description`; expected `$schema`, `name`, `template`, `hextiling` or `slots`"},
 };
@@ -156,7 +187,7 @@ TEST(Validation, AllProblemsInAFileAreReported) {
                      "materials/t.json:1:40: error: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 2",
                      "materials/t.json:1:55: error: /hextiling/exponent: expected a number in [1, 64], got 0",
                      "materials/t.json:2:84: error: /slots/0/chanel: unknown key `chanel`; expected `name`, `texture`, `kind`, "
-                     "`channel`, `colorspace`, `flip_y` or `hextiling` (did you mean `channel`?)",
+                     "`channel`, `colorspace`, `flip_y`, `hextiling` or `height_blend` (did you mean `channel`?)",
                      "materials/t.json:2:22: error: /slots/0/name: expected a lower-case identifier of 1-32 characters "
                      "([a-z][a-z0-9_]*, no `__`), got \"A\" (it becomes the GLSL function hexc_<name>)",
                      "materials/t.json:2:35: error: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got "
@@ -193,9 +224,151 @@ TEST(Validation, PerTileTransforms) {
     EXPECT_TRUE(ok.material->slots[0].hex.hasTransforms());
 }
 
-TEST(Validation, TapsAreOneOrThree) {
+TEST(Validation, TapsAreOneOrTheMasksCount) {
+    // Checked per slot on the merged settings: a material-level mismatch is reported at each slot.
     EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"taps": 2}, "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
-              std::vector<std::string>{"materials/t.json:1:37: error: /hextiling/taps: expected 1 or 3, got 2"});
+              std::vector<std::string>{"materials/t.json:1:51: error: /slots/0: `taps` 2 does not fit mask `hex`, which has 3 taps; "
+                                       "expected 3 or 1 (one dithered fetch)"});
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"mask": "noise3"},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"taps": 2}}]})"),
+              std::vector<std::string>{"materials/t.json:2:96: error: /slots/0/hextiling: `taps` 2 does not fit mask `noise3`, which has "
+                                       "3 taps; expected 3 or 1 (one dithered fetch)"});
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"taps": 1.5},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
+              std::vector<std::string>{"materials/t.json:1:37: error: /hextiling/taps: expected a whole number in 1..3, got 1.5"});
+    // A slot may set the taps that fit its own mask, and taps 1 fits every mask.
+    ParseResult ok = parseMaterial(R"({"name": "m", "hextiling": {"taps": 3}, "slots": [
+  {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "checker", "taps": 2}},
+  {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png"},
+  {"name": "c", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "noise", "taps": 1}},
+  {"name": "d", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "checker", "taps": 1}}]})",
+                                   "materials/t.json");
+    ASSERT_TRUE(ok.material) << ok.diagnostics.size();
+    EXPECT_EQ(ok.material->slots[0].hex.mask, Mask::Checker);
+    EXPECT_EQ(ok.material->slots[0].hex.taps, 2);
+    EXPECT_EQ(ok.material->slots[0].hex.maskTaps(), 2);
+    EXPECT_EQ(ok.material->slots[1].hex.taps, 3);
+    EXPECT_EQ(ok.material->slots[2].hex.taps, 1);
+    EXPECT_EQ(ok.material->slots[3].hex.taps, 1);
+}
+
+TEST(Validation, MasksOtherThanHexNeedStableMode) {
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"mode": "paper", "mask": "noise"},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"},
+            {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "hex"}}]})"),
+              std::vector<std::string>{"materials/t.json:2:13: error: /slots/0: mask `noise` needs mode `stable`; the paper defines "
+                                       "only the hex lattice"});
+}
+
+TEST(Validation, ProjectionAndPlaneSharpnessAreMaterialWide) {
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"projection": "triplanar"},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"planesharpness": 8, "projection": "uv"}}]})"),
+              (std::vector<std::string>{
+                  "materials/t.json:2:118: error: /slots/0/hextiling/projection: `projection` is material-wide (every slot function takes the "
+                  "same inputs); set it in the top-level `hextiling`",
+                  "materials/t.json:2:97: error: /slots/0/hextiling/planesharpness: `planesharpness` is material-wide (every slot function "
+                  "takes the same inputs); set it in the top-level `hextiling`",
+              }));
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"planesharpness": 65}, "slots": [)" + std::string(kSlot) + "]}"),
+              std::vector<std::string>{"materials/t.json:1:47: error: /hextiling/planesharpness: expected a number in [1, 64], got 65"});
+}
+
+TEST(Validation, SplitCoordinatesWithNoiseMasksOrTriplanar) {
+    // Each slot is checked on its merged settings; the checker mask supports split coordinates.
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"split_coordinates": true, "mask": "noise3"}, "slots": [
+  {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"},
+  {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "checker"}},
+  {"name": "c", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"split_coordinates": false}}]})"),
+              std::vector<std::string>{"materials/t.json:2:3: error: /slots/0: `split_coordinates` does not work with the noise masks: "
+                                       "their copies are transformed about the origin"});
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"split_coordinates": true, "projection": "triplanar"}, "slots": [)" +
+                       std::string(kSlot) + "]}"),
+              std::vector<std::string>{"materials/t.json:1:94: error: /slots/0: `split_coordinates` does not work with the triplanar "
+                                       "projection: it reads world positions, not uv"});
+}
+
+TEST(Validation, HeightBlend) {
+    const std::string height = R"({"name": "height", "kind": "scalar", "texture": "textures/rock_roughness.png"})";
+    EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png",
+  "height_blend": "height"}, )" + height + "]}"),
+              std::vector<std::string>{"materials/t.json:2:19: error: /slots/0/height_blend: expected an object {\"slot\": name, "
+                                       "\"width\": number}, got a string"});
+    // taps 1 from the slot's own settings; the height slot may come later in the array.
+    EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png",
+  "hextiling": {"taps": 1}, "height_blend": {"slot": "hieght", "width": 1.5}}, )" + height + "]}"),
+              (std::vector<std::string>{
+                  "materials/t.json:2:73: error: /slots/0/height_blend/width: expected a number in (0, 1], got 1.5",
+                  "materials/t.json:2:29: error: /slots/0/height_blend: `height_blend` needs every tile's height; it cannot be combined "
+                  "with `taps` 1",
+                  "materials/t.json:2:54: error: /slots/0/height_blend/slot: no slot named `hieght` in this material (did you mean `height`?)",
+              }));    // Plain tiling has one tile, nothing to weigh.
+    EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png",
+  "hextiling": {"enabled": false}, "height_blend": {"slot": "height"}}, )" + height + "]}"),
+              std::vector<std::string>{"materials/t.json:2:36: error: /slots/0/height_blend: `height_blend` weighs tiles, and this slot has "
+                                       "hex-tiling disabled (`enabled`: false)"});
+}
+
+TEST(Material, HexTilingDefaults) {
+    ParseResult r = parseMaterial(std::string(R"({"name": "m", "slots": [)") + kSlot + "]}", "materials/t.json");
+    ASSERT_TRUE(r.material);
+    for (const HexTiling& hex : {r.material->hex, r.material->slots[0].hex}) {
+        EXPECT_EQ(hex.mask, Mask::Hex);
+        EXPECT_EQ(hex.taps, 0);  // every tap of the mask
+        EXPECT_EQ(hex.maskTaps(), 3);
+        EXPECT_EQ(hex.maskScale, 2);
+        EXPECT_EQ(hex.projection, Projection::Uv);
+        EXPECT_EQ(hex.planeSharpness, 4.0);
+    }
+    EXPECT_FALSE(r.material->slots[0].heightBlend);
+}
+
+TEST(Material, SlotOverridesMask) {
+    ParseResult r = parseMaterial(R"({"name": "m", "hextiling": {"mask": "checker", "maskscale": 4}, "slots": [
+  {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"},
+  {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "noise3"}},
+  {"name": "c", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "hex", "maskscale": 1}}]})",
+                                  "materials/t.json");
+    ASSERT_TRUE(r.material) << r.diagnostics.size();
+    const auto& s = r.material->slots;
+    EXPECT_EQ(s[0].hex.mask, Mask::Checker);
+    EXPECT_EQ(s[0].hex.maskScale, 4);
+    EXPECT_EQ(s[1].hex.mask, Mask::Noise3);
+    EXPECT_EQ(s[1].hex.maskScale, 4);  // inherited
+    EXPECT_EQ(s[2].hex.mask, Mask::Hex);
+    EXPECT_EQ(s[2].hex.maskScale, 1);
+    EXPECT_EQ(toString(s[1].hex.mask), "noise3");
+}
+
+TEST(Material, HeightBlendIsParsed) {
+    ParseResult r = parseMaterial(R"({"name": "m", "slots": [
+  {"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "height_blend": {"slot": "height"}},
+  {"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "height_blend": {"slot": "height", "width": 0.5}},
+  {"name": "height", "kind": "scalar", "texture": "textures/rock_roughness.png", "height_blend": {"slot": "height", "width": 1}}]})",
+                                  "materials/t.json");
+    ASSERT_TRUE(r.material) << r.diagnostics.size();
+    const auto& s = r.material->slots;
+    ASSERT_TRUE(s[0].heightBlend);
+    EXPECT_EQ(s[0].heightBlend->slot, "height");
+    EXPECT_EQ(s[0].heightBlend->width, 0.2);  // default
+    ASSERT_TRUE(s[1].heightBlend);
+    EXPECT_EQ(s[1].heightBlend->width, 0.5);
+    ASSERT_TRUE(s[2].heightBlend);  // a scalar slot may be its own height map
+    EXPECT_EQ(s[2].heightBlend->slot, "height");
+    EXPECT_EQ(s[2].heightBlend->width, 1.0);
+}
+
+TEST(Material, TriplanarProjectionAppliesToEverySlot) {
+    ParseResult r = parseMaterial(R"({"name": "m", "hextiling": {"projection": "triplanar", "planesharpness": 8}, "slots": [
+  {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"},
+  {"name": "b", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"falloff": 0.5}},
+  {"name": "c", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"mask": "checker"}}]})",
+                                  "materials/t.json");
+    ASSERT_TRUE(r.material) << r.diagnostics.size();
+    EXPECT_EQ(r.material->hex.projection, Projection::Triplanar);
+    for (const Slot& s : r.material->slots) {
+        EXPECT_EQ(s.hex.projection, Projection::Triplanar) << s.name;
+        EXPECT_EQ(s.hex.planeSharpness, 8.0) << s.name;
+    }
 }
 
 TEST(Validation, ColumnsCountCharactersNotBytes) {

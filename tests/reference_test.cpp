@@ -8,6 +8,7 @@
 #include <functional>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include "reference/reference.h"
 
@@ -592,6 +593,647 @@ TEST(ReferenceRender, IsEvaluateAtEachPixelCentre) {
             const SlotResult r = evaluate(slot, tex, u, v, 1.5 / 5, 0, 0, 1.2 / 3);
             for (size_t c = 0; c < 4; ++c) EXPECT_EQ(value.at(i, j)[c], float(r.value[c]));
             for (size_t c = 0; c < 3; ++c) EXPECT_EQ(weights.at(i, j)[c], float(r.weights[c]));
+        }
+}
+
+// --- Masks (docs/material-format.md#mask; stable mode) -----------------------------------------------------
+
+Slot maskSlot(SlotKind kind, Mask mask, int maskScale = 3) {
+    Slot slot;
+    slot.name = "test";
+    slot.kind = kind;
+    slot.hex.mask = mask;
+    slot.hex.maskScale = maskScale;
+    return slot;
+}
+
+// Per-tile rotation, scale and offset at once, so that sample points and gradients are checked with all three.
+void withTransforms(HexTiling& hex) {
+    hex.scaleRange = {0.5, 2};
+    hex.offset = 0.75;
+}
+
+Texture loadTestTexture(const char* name, bool srgb) {  // the tests run from the source root
+    return loadTexture(std::string("materials/textures/") + name, srgb);
+}
+
+double luminance(const Rgba& c) { return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]; }
+
+// pcg3d as Jarzynski and Olano (2020) print it, and the docs' random number: a word's top 24 bits over 2^24.
+std::array<uint32_t, 3> pcg3d(std::array<uint32_t, 3> v) {
+    for (uint32_t& x : v) x = x * 1664525u + 1013904223u;
+    v[0] += v[1] * v[2];
+    v[1] += v[2] * v[0];
+    v[2] += v[0] * v[1];
+    for (uint32_t& x : v) x ^= x >> 16u;
+    v[0] += v[1] * v[2];
+    v[1] += v[2] * v[0];
+    v[2] += v[0] * v[1];
+    return v;
+}
+double random24(uint32_t word) { return (word >> 8) / 16777216.0; }
+
+// The docs' checker cell of grid 0 (A) or 1 (B) that holds st: its tile id and st's position f in it.
+struct Cell {
+    TileId id;
+    Vec2 f;
+};
+Cell checkerCell(Vec2 st, int maskScale, int grid) {
+    const double kx = std::floor(st[0]), ky = std::floor(st[1]);
+    const double qx = (st[0] - kx) * maskScale + 0.5 * grid, qy = (st[1] - ky) * maskScale + 0.5 * grid;
+    const TileId cell{maskScale * int64_t(kx) + int64_t(std::floor(qx)), maskScale * int64_t(ky) + int64_t(std::floor(qy))};
+    return {{2 * cell[0] + grid, 2 * cell[1] + grid}, {qx - std::floor(qx), qy - std::floor(qy)}};
+}
+double taper(Vec2 f) { return std::min({f[0], 1 - f[0], f[1], 1 - f[1]}); }
+
+// Where a tile (or noise copy) samples: the point turned into its frame, divided by its scale, plus its offset.
+Vec2 tilePoint(Vec2 local, const TileTransform& tile) {
+    const Vec2 r = rowTimesRotation(local, tile.angle);
+    return {r[0] / tile.scale + tile.offset[0], r[1] / tile.scale + tile.offset[1]};
+}
+
+// Eq. 1 with the luminance metric and Eq. 5 at r = 0.75 (k = 2), over the mask weights of colour samples x.
+template <size_t N>
+std::array<double, N> blendClosedForm(const std::array<double, N>& mask, const std::array<Rgba, N>& x, double gamma) {
+    std::array<double, N> w;
+    for (size_t i = 0; i < N; ++i) w[i] = (0.4 + 0.6 * luminance(x[i])) * std::pow(mask[i], gamma);
+    double sum = 0;
+    for (double a : w) sum += a;
+    for (double& a : w) a = a / sum < 0.5 ? 2 * (a / sum) * (a / sum) : 1 - 2 * (1 - a / sum) * (1 - a / sum);
+    sum = 0;
+    for (double a : w) sum += a;
+    for (double& a : w) a /= sum;
+    return w;
+}
+
+TEST(ReferenceChecker, MatchesClosedFormTexture) {
+    const SampledTexture tex(floatTexture(256, 256, wave));
+    Slot slot = maskSlot(SlotKind::Color, Mask::Checker);
+    slot.hex.falloff = 0.75;
+    withTransforms(slot.hex);
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> coord(-5, 5);
+    for (int k = 0; k < 500; ++k) {
+        const Vec2 st{coord(rng), coord(rng)};
+        std::array<Rgba, 2> x;
+        std::array<double, 2> mask;
+        for (int grid = 0; grid < 2; ++grid) {
+            const Cell cell = checkerCell(st, 3, grid);
+            const Vec2 p = tilePoint({(cell.f[0] - 0.5) / 3, (cell.f[1] - 0.5) / 3}, tileTransform(cell.id, slot.hex));
+            x[size_t(grid)] = wave(p[0], p[1]);
+            mask[size_t(grid)] = taper(cell.f) + 0x1p-24;
+        }
+        const std::array<double, 2> w = blendClosedForm(mask, x, 7);
+        const SlotResult r = evaluateAt(slot, tex, st, {1e-7, 0}, {0, 1e-7});  // magnified: level 0
+        for (size_t c = 0; c < 4; ++c) EXPECT_NEAR(r.value[c], w[0] * x[0][c] + w[1] * x[1][c], 1e-3) << st[0] << "," << st[1];
+        EXPECT_NEAR(r.weights[0], w[0], 1e-3);  // (W_A, W_B, 0)
+        EXPECT_NEAR(r.weights[1], w[1], 1e-3);
+        EXPECT_EQ(r.weights[2], 0);
+        EXPECT_EQ(r.blend, r.weights);
+        EXPECT_EQ(r.samples[2], r.samples[1]);  // two taps: the third repeats the second
+    }
+}
+
+// At a cell's centre its grid has all the weight (the other grid is at its border), so the result is that tile's
+// sample at its offset, with the view's gradients turned into the tile and divided by its scale. The texture is the
+// non-square one of GradientsTurnWithEachTile, where turning the gradients changes the level of detail.
+TEST(ReferenceChecker, CellCentresShowTheirTileWithTurnedGradients) {
+    const SampledTexture tex(floatTexture(64, 4, [](double s, double) { return Rgba{std::fmod(std::floor(s * 64), 2), 0, 0, 1}; }));
+    Slot slot = maskSlot(SlotKind::Color, Mask::Checker);
+    withTransforms(slot.hex);
+    const double g = 2.0 / 64;
+    double largestChange = 0;  // against sampling with the unturned gradients
+    for (int grid = 0; grid < 2; ++grid)
+        for (TileId c : {TileId{0, 0}, TileId{1, 0}, TileId{4, 5}, TileId{-4, 7}, TileId{-13, -2}, TileId{25, -31}}) {
+            // A's cell c is centred at (c + 0.5) / 3, B's at c / 3; their ids are 2c and 2c + (1, 1).
+            const Vec2 st{(c[0] + 0.5 * (1 - grid)) / 3, (c[1] + 0.5 * (1 - grid)) / 3};
+            const TileTransform tile = tileTransform({2 * c[0] + grid, 2 * c[1] + grid}, slot.hex);
+            const Vec2 dx = rowTimesRotation({g / tile.scale, 0}, tile.angle), dy = rowTimesRotation({0, g / tile.scale}, tile.angle);
+            const SlotResult r = evaluateAt(slot, tex, st, {g, 0}, {0, g});
+            ASSERT_GT(r.weights[size_t(grid)], 0.999999);
+            const double expected = tex.sample(tile.offset[0], tile.offset[1], dx[0], dx[1], dy[0], dy[1])[0];
+            EXPECT_NEAR(r.value[0], expected, 1e-9);
+            largestChange = std::max(largestChange, std::abs(r.value[0] - tex.sample(tile.offset[0], tile.offset[1], g, 0, 0, g)[0]));
+        }
+    EXPECT_GT(largestChange, 0.02);
+}
+
+// Each grid's weight is 0 on its own cell borders, where its tile changes, so the blend is continuous across them
+// (away from the points where a border of the other grid crosses).
+TEST(ReferenceChecker, WeightsVanishOnTheirOwnBordersSoTheValueIsContinuous) {
+    const SampledTexture tex(floatTexture(256, 256, wave));
+    Slot slot = maskSlot(SlotKind::Color, Mask::Checker);
+    slot.hex.falloff = 0.75;
+    withTransforms(slot.hex);
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> coord(-4, 4);
+    std::uniform_int_distribution<int> border(-12, 12);
+    int checked = 0;
+    for (int k = 0; k < 400; ++k) {
+        const int grid = k % 2;
+        const size_t axis = size_t(k / 2 % 2);
+        Vec2 st{coord(rng), coord(rng)};
+        st[axis] = (border(rng) + 0.5 * grid) / 3;  // on a border of `grid` across `axis`
+        if (taper(checkerCell(st, 3, 1 - grid).f) < 0.05) continue;  // near a crossing
+        Vec2 lo = st, hi = st;
+        lo[axis] -= 1e-7;
+        hi[axis] += 1e-7;
+        ASSERT_NE(checkerCell(lo, 3, grid).id, checkerCell(hi, 3, grid).id);  // a different tile on each side
+        const SlotResult a = evaluateAt(slot, tex, lo, {1e-7, 0}, {0, 1e-7}), b = evaluateAt(slot, tex, hi, {1e-7, 0}, {0, 1e-7});
+        EXPECT_LT(a.weights[size_t(grid)], 1e-12);
+        EXPECT_LT(b.weights[size_t(grid)], 1e-12);
+        for (size_t c = 0; c < 4; ++c) EXPECT_NEAR(a.value[c], b.value[c], 1e-5) << st[0] << "," << st[1];
+        ++checked;
+    }
+    EXPECT_GT(checked, 200);
+}
+
+// Where borders of A and B cross, both weights are 2^-24: an equal blend, not 0/0, even at the largest exponent.
+TEST(ReferenceChecker, BorderCrossingsBlendEqually) {
+    const SampledTexture tex(constantTexture(4, 4, {0.2, 0.4, 0.6, 1}));
+    Slot slot = maskSlot(SlotKind::Color, Mask::Checker, 2);
+    slot.hex.exponent = 64;
+    for (Vec2 st : {Vec2{1, 0.75}, Vec2{-2.25, 3}, Vec2{0.5, 0.25}}) {  // q = 2 r: A's f and B's f both on a border
+        const SlotResult r = evaluateAt(slot, tex, st, {0.01, 0}, {0, 0.01});
+        EXPECT_NEAR(r.weights[0], 0.5, 1e-12) << st[0] << "," << st[1];
+        EXPECT_NEAR(r.weights[1], 0.5, 1e-12);
+        EXPECT_NEAR(r.value[0], 0.2, 1e-7);
+    }
+}
+
+TEST(ReferenceChecker, OneTapPicksAWeightedTileByItsShare) {
+    const SampledTexture tex(floatTexture(64, 64, wave));
+    Slot one = maskSlot(SlotKind::Color, Mask::Checker);
+    one.hex.taps = 1;
+    one.hex.falloff = 0.7;
+    Slot all = one;  // the same without the metric: the weights the pick uses
+    all.hex.taps = 0;
+    all.hex.falloffcontrast = 0;
+    std::mt19937 rng(37);
+    std::uniform_real_distribution<double> coord(-6, 6);
+    std::uniform_int_distribution<uint32_t> pixelIndex(0, 4095);
+    const Vec2 dx{0.01, 0}, dy{0, 0.01};
+    for (int k = 0; k < 2000; ++k) {
+        const Vec2 st{coord(rng), coord(rng)};
+        const std::array<uint32_t, 2> pixel{pixelIndex(rng), pixelIndex(rng)};
+        const SlotResult r = evaluateAt(one, tex, st, dx, dy, pixel), w = evaluateAt(all, tex, st, dx, dy, pixel);
+        const int pick = dominant(r.weights);
+        ASSERT_EQ(r.weights[size_t(pick)], 1);
+        ASSERT_LT(pick, 2);  // never the checker's empty third tap
+        EXPECT_GT(w.blend[size_t(pick)], 0);
+        EXPECT_EQ(pick, ditherValue(pixel) < w.blend[0] ? 0 : 1);
+        EXPECT_EQ(r.value, w.samples[size_t(pick)]);
+    }
+    // Over many pixels at one point, tile A is picked with its weight's probability.
+    Vec2 st;
+    SlotResult w;
+    do {
+        st = {coord(rng), coord(rng)};
+        w = evaluateAt(all, tex, st, dx, dy);
+    } while (w.blend[0] < 0.2 || w.blend[0] > 0.8);
+    int picksA = 0;
+    for (uint32_t j = 0; j < 100; ++j)
+        for (uint32_t i = 0; i < 100; ++i) picksA += evaluateAt(one, tex, st, dx, dy, {i, j}).weights[0] == 1;
+    EXPECT_NEAR(picksA / 10000.0, w.blend[0], 0.02);  // 4 standard deviations
+}
+
+// The checker's cells are whole numbers per unit of st and its ids are 32-bit: 2 * maskscale * shift = 2^32 in st
+// gives the same tiles, with the same local coordinates.
+TEST(ReferenceChecker, TileIdsWrapAt32Bits) {
+    const SampledTexture tex(floatTexture(64, 64, wave));
+    for (int maskScale : {2, 4}) {
+        const Slot slot = maskSlot(SlotKind::Color, Mask::Checker, maskScale);
+        const double period = 0x1p32 / (2 * maskScale);
+        for (Vec2 st : {Vec2{0.375, -0.8125}, Vec2{-3.1875, 2.0625}}) {
+            const Rgba base = evaluateAt(slot, tex, st, {0.01, 0}, {0, 0.01}).value;
+            EXPECT_EQ(evaluateAt(slot, tex, {st[0] + period, st[1]}, {0.01, 0}, {0, 0.01}).value, base);
+            EXPECT_EQ(evaluateAt(slot, tex, {st[0], st[1] - period}, {0.01, 0}, {0, 0.01}).value, base);
+            EXPECT_NE(evaluateAt(slot, tex, {st[0] + period / 2, st[1]}, {0.01, 0}, {0, 0.01}).value, base);
+        }
+    }
+}
+
+TEST(ReferenceNoise, ValueNoiseIsHashedAtCellCornersWithAQuinticFade) {
+    const auto corner = [](int64_t x, int64_t y, uint32_t salt) { return random24(pcg3d({uint32_t(x), uint32_t(y), salt})[0]); };
+    for (int maskScale : {1, 2, 5})
+        for (uint32_t salt : {3u, 4u, 6u})
+            for (int64_t y = -7; y <= 7; y += 2)
+                for (int64_t x = -9; x <= 9; x += 3) {
+                    const double ms = maskScale;
+                    EXPECT_NEAR(valueNoise({x / ms, y / ms}, maskScale, salt), corner(x, y, salt), 1e-12) << x << "," << y;
+                    // Halfway the fade is 1/2: the mean of the cell's corners; at a quarter it is 0.103515625.
+                    const double mean = (corner(x, y, salt) + corner(x + 1, y, salt) + corner(x, y + 1, salt) + corner(x + 1, y + 1, salt)) / 4;
+                    EXPECT_NEAR(valueNoise({(x + 0.5) / ms, (y + 0.5) / ms}, maskScale, salt), mean, 1e-12);
+                    EXPECT_NEAR(valueNoise({(x + 0.25) / ms, y / ms}, maskScale, salt),
+                                corner(x, y, salt) + 0.103515625 * (corner(x + 1, y, salt) - corner(x, y, salt)), 1e-12);
+                }
+    // Cells are 32-bit: maskscale * shift = 2^32 in st is the same noise.
+    for (Vec2 st : {Vec2{0.375, -0.8125}, Vec2{-3.1875, 2.0625}}) {
+        EXPECT_EQ(valueNoise({st[0] + 0x1p31, st[1]}, 2, 3), valueNoise(st, 2, 3));
+        EXPECT_EQ(valueNoise({st[0], st[1] + 0x1p30}, 4, 5), valueNoise(st, 4, 5));
+    }
+}
+
+// With exponent 1, no metric and no gain, the weights are the mask's own: three bands of the noise.
+TEST(ReferenceNoise, BandsSplitOneNoiseIntoThreeCopies) {
+    const SampledTexture tex(floatTexture(64, 64, wave));
+    Slot slot = maskSlot(SlotKind::Color, Mask::Noise);
+    slot.hex.exponent = 1;
+    slot.hex.falloffcontrast = 0;
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<double> coord(-6, 6);
+    int pureFirst = 0, pureLast = 0, mixed = 0;
+    for (int k = 0; k < 3000; ++k) {
+        const Vec2 st{coord(rng), coord(rng)};
+        const double n = valueNoise(st, 3, 3);
+        const SlotResult r = evaluateAt(slot, tex, st, {0.01, 0}, {0, 0.01});
+        const double p = std::clamp(4 * n - 1, 0.0, 2.0);
+        for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(r.weights[i], std::max(0.0, 1 - std::abs(p - double(i))), 1e-12);
+        EXPECT_EQ(r.blend, r.weights);
+        EXPECT_NEAR(r.weights[0] + r.weights[1] + r.weights[2], 1, 1e-12);
+        EXPECT_EQ(r.weights[0] * r.weights[2], 0);  // neighbouring bands only
+        if (n < 0.25) {
+            EXPECT_EQ(r.weights, (std::array<double, 3>{1, 0, 0}));
+            ++pureFirst;
+        } else if (n > 0.75) {
+            EXPECT_EQ(r.weights, (std::array<double, 3>{0, 0, 1}));
+            ++pureLast;
+        } else {
+            ++mixed;
+        }
+    }
+    EXPECT_GT(pureFirst, 30);
+    EXPECT_GT(pureLast, 30);
+    EXPECT_GT(mixed, 300);
+}
+
+// Three copies, each turned, scaled and shifted about the st origin, blended by Eq. 1 over the mask's weights.
+TEST(ReferenceNoise, MatchesClosedFormTexture) {
+    const SampledTexture tex(floatTexture(256, 256, wave));
+    for (Mask mask : {Mask::Noise, Mask::Noise3}) {
+        Slot slot = maskSlot(SlotKind::Color, mask, 2);
+        slot.hex.falloff = 0.75;
+        withTransforms(slot.hex);
+        std::mt19937 rng(43);
+        std::uniform_real_distribution<double> coord(-3, 3);
+        for (int k = 0; k < 300; ++k) {
+            const Vec2 st{coord(rng), coord(rng)};
+            std::array<double, 3> weight;
+            if (mask == Mask::Noise) {
+                const double p = std::clamp(4 * valueNoise(st, 2, 3) - 1, 0.0, 2.0);
+                for (size_t i = 0; i < 3; ++i) weight[i] = std::max(0.0, 1 - std::abs(p - double(i)));
+            } else {
+                const std::array<double, 3> n{valueNoise(st, 2, 4), valueNoise(st, 2, 5), valueNoise(st, 2, 6)};
+                for (size_t i = 0; i < 3; ++i) weight[i] = n[i] / std::max({n[0], n[1], n[2], 0x1p-24});
+            }
+            std::array<Rgba, 3> x;
+            for (size_t i = 0; i < 3; ++i) {
+                const Vec2 p = tilePoint(st, tileTransform({int64_t(i), 0}, slot.hex));
+                x[i] = wave(p[0], p[1]);
+            }
+            const std::array<double, 3> w = blendClosedForm(weight, x, 7);
+            const SlotResult r = evaluateAt(slot, tex, st, {1e-7, 0}, {0, 1e-7});
+            for (size_t c = 0; c < 4; ++c)
+                EXPECT_NEAR(r.value[c], w[0] * x[0][c] + w[1] * x[1][c] + w[2] * x[2][c], 1e-3) << st[0] << "," << st[1];
+            for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(r.weights[i], w[i], 1e-3);  // copy k in channel k
+        }
+    }
+}
+
+// Noise cells (including the unit borders, where the cell count restarts at maskscale * k) join without a seam.
+TEST(ReferenceNoise, WeightsAreContinuousAcrossCellBorders) {
+    const SampledTexture tex(floatTexture(256, 256, wave));
+    for (Mask mask : {Mask::Noise, Mask::Noise3}) {
+        Slot slot = maskSlot(SlotKind::Color, mask);
+        slot.hex.falloff = 0.75;
+        std::mt19937 rng(47);
+        std::uniform_real_distribution<double> coord(-4, 4);
+        std::uniform_int_distribution<int> border(-9, 9);
+        for (int k = 0; k < 300; ++k) {
+            const size_t axis = size_t(k % 2);
+            Vec2 st{coord(rng), coord(rng)};
+            st[axis] = border(rng) / 3.0;
+            Vec2 lo = st, hi = st;
+            lo[axis] -= 1e-10;
+            hi[axis] += 1e-10;
+            const SlotResult a = evaluateAt(slot, tex, lo, {1e-7, 0}, {0, 1e-7}), b = evaluateAt(slot, tex, hi, {1e-7, 0}, {0, 1e-7});
+            for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(a.weights[i], b.weights[i], 1e-6) << st[0] << "," << st[1];
+            for (size_t c = 0; c < 4; ++c) EXPECT_NEAR(a.value[c], b.value[c], 1e-6);
+        }
+    }
+}
+
+TEST(ReferenceMask, WeightsAreNonNegativeAndSumToOne) {
+    const SampledTexture colour(floatTexture(64, 64, wave));
+    const SampledTexture normalMap(rampNormalMap());
+    std::mt19937 rng(53);
+    std::uniform_real_distribution<double> near(-4, 4), far(-1e4, 1e4);
+    for (Mask mask : {Mask::Hex, Mask::Checker, Mask::Noise, Mask::Noise3})
+        for (SlotKind kind : {SlotKind::Color, SlotKind::Normal})
+            for (int taps : {0, 1}) {
+                Slot slot = maskSlot(kind, mask);
+                slot.hex.taps = taps;
+                slot.hex.falloff = 0.8;
+                const SampledTexture& tex = kind == SlotKind::Color ? colour : normalMap;
+                for (int k = 0; k < 200; ++k) {
+                    const Vec2 st = k % 2 ? Vec2{near(rng), near(rng)} : Vec2{far(rng), far(rng)};
+                    const SlotResult r = evaluateAt(slot, tex, st, {0.01, 0}, {0, 0.01}, {uint32_t(k), 7});
+                    for (const auto& w : {r.weights, r.blend}) {
+                        for (double x : w) EXPECT_GE(x, 0);
+                        EXPECT_NEAR(w[0] + w[1] + w[2], 1, 1e-12);
+                    }
+                    if (mask == Mask::Hex) {  // the hex lattice has a fixed size: maskscale changes nothing
+                        Slot other = slot;
+                        other.hex.maskScale = 7;
+                        EXPECT_EQ(evaluateAt(other, tex, st, {0.01, 0}, {0, 0.01}, {uint32_t(k), 7}).value, r.value);
+                    }
+                }
+            }
+}
+
+// --- Height blending ------------------------------------------------------------------------------------------
+
+// A height map whose red is the slot texture's blue: sampled at each tile's point with its gradients, it reads
+// exactly the blue of that tile's sample.
+Texture blueAsRed() {
+    return floatTexture(64, 64, [](double s, double t) {
+        const Rgba c = wave(s, t);
+        return Rgba{c[2], 0, 0, 1};
+    });
+}
+
+TEST(ReferenceHeightBlend, IsTheDocumentedFormulaAtEachTilesSample) {
+    const SampledTexture tex(floatTexture(64, 64, wave)), heights(blueAsRed());
+    std::mt19937 rng(59);
+    std::uniform_real_distribution<double> coord(-4, 4);
+    for (Mask mask : {Mask::Hex, Mask::Checker, Mask::Noise3})
+        for (double width : {0.05, 0.2, 1.0}) {
+            Slot plain = maskSlot(SlotKind::Color, mask);
+            plain.hex.falloff = 0.7;
+            withTransforms(plain.hex);
+            Slot blended = plain;
+            blended.heightBlend = HeightBlend{"height", width};
+            const HeightSource source{&heights, 0, width};
+            double largestGain = 0;  // of the highest tile's weight
+            for (int k = 0; k < 300; ++k) {
+                const Vec2 st{coord(rng), coord(rng)}, dx{0.02, 0.005}, dy{-0.004, 0.02};
+                const SlotResult r = evaluateAt(plain, tex, st, dx, dy), h = evaluateAt(blended, tex, st, dx, dy, {0, 0}, &source);
+                std::array<double, 3> a, expected;
+                for (size_t i = 0; i < 3; ++i) a[i] = r.samples[i][2] * r.blend[i];
+                const double top = *std::max_element(a.begin(), a.end());
+                double sum = 0;
+                for (size_t i = 0; i < 3; ++i) sum += expected[i] = r.blend[i] * std::max(a[i] - top + width, 0.0);
+                for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(h.blend[i], expected[i] / sum, 1e-12);
+                for (size_t c = 0; c < 4; ++c)
+                    EXPECT_NEAR(h.value[c], h.blend[0] * r.samples[0][c] + h.blend[1] * r.samples[1][c] + h.blend[2] * r.samples[2][c], 1e-12);
+                EXPECT_NEAR(h.blend[0] + h.blend[1] + h.blend[2], 1, 1e-12);
+                if (mask == Mask::Checker) EXPECT_EQ(h.blend[2], 0);
+                const size_t highest = size_t(std::max_element(a.begin(), a.end()) - a.begin());
+                EXPECT_GE(h.blend[highest], r.blend[highest] - 1e-12);  // the highest tile only gains
+                largestGain = std::max(largestGain, h.blend[highest] - r.blend[highest]);
+            }
+            if (width < 1) EXPECT_GT(largestGain, 0.1);
+        }
+}
+
+// Heights of 0 everywhere leave every tile within `width` of the highest: the linear blend, at any width.
+TEST(ReferenceHeightBlend, FlatHeightsKeepTheLinearBlend) {
+    const SampledTexture tex(floatTexture(64, 64, wave)), flat(constantTexture(4, 4, {0, 0, 0, 1}));
+    std::mt19937 rng(61);
+    std::uniform_real_distribution<double> coord(-4, 4);
+    for (double width : {0.2, 1.0}) {
+        Slot plain = maskSlot(SlotKind::Color, Mask::Hex);
+        Slot blended = plain;
+        blended.heightBlend = HeightBlend{"height", width};
+        const HeightSource source{&flat, 0, width};
+        for (int k = 0; k < 200; ++k) {
+            const Vec2 st{coord(rng), coord(rng)};
+            const SlotResult r = evaluateAt(plain, tex, st, {0.01, 0}, {0, 0.01}), h = evaluateAt(blended, tex, st, {0.01, 0}, {0, 0.01}, {0, 0}, &source);
+            for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(h.blend[i], r.blend[i], 1e-15);
+            for (size_t c = 0; c < 4; ++c) EXPECT_NEAR(h.value[c], r.value[c], 1e-15);
+        }
+    }
+}
+
+// A real texture pair: rock albedo blended by the rock roughness as height. Crossing an edge of the hex lattice's
+// triangles one tile leaves the blend; its weight reaches 0 there, so the value and Listing 7's weights (one
+// colour per tile) are continuous.
+TEST(ReferenceHeightBlend, ContinuousAcrossHexTriangleEdges) {
+    const SampledTexture tex(loadTestTexture("rock_albedo.png", true)), heights(loadTestTexture("rock_roughness.png", false));
+    Slot slot = maskSlot(SlotKind::Color, Mask::Hex);
+    slot.hex.falloff = 0.7;
+    slot.heightBlend = HeightBlend{"roughness", 0.1};
+    const HeightSource source{&heights, 0, 0.1};
+    const auto toSt = [](Vec2 skewed) {  // stable mode's skewed coordinates (97/28 s - 2 t, 4 t), inverted
+        const double t = skewed[1] / 4;
+        return Vec2{(skewed[0] + 2 * t) * 28 / 97, t};
+    };
+    std::mt19937 rng(67);
+    std::uniform_int_distribution<int> vertex(-20, 20);
+    std::uniform_real_distribution<double> along(0.1, 0.9);
+    for (int k = 0; k < 300; ++k) {
+        const double i = vertex(rng), j = vertex(rng), a = along(rng), e = 1e-9;
+        // Edges of the three directions and a step across each: x = i, y = j, x + y = i.
+        const std::array<std::pair<Vec2, Vec2>, 3> edges{{{{i, j + a}, {e, 0}}, {{i + a, j}, {0, e}}, {{i - a, a}, {e, e}}}};
+        const auto& [p, step] = edges[size_t(k % 3)];
+        const Vec2 lo = toSt({p[0] - step[0], p[1] - step[1]}), hi = toSt({p[0] + step[0], p[1] + step[1]});
+        const SlotResult r0 = evaluateAt(slot, tex, lo, {1e-4, 0}, {0, 1e-4}, {0, 0}, &source);
+        const SlotResult r1 = evaluateAt(slot, tex, hi, {1e-4, 0}, {0, 1e-4}, {0, 0}, &source);
+        for (size_t c = 0; c < 3; ++c) {
+            EXPECT_NEAR(r0.weights[c], r1.weights[c], 1e-6) << k;
+            EXPECT_NEAR(r0.value[c], r1.value[c], 1e-6) << k;
+        }
+    }
+}
+
+TEST(ReferenceHeightBlend, NeedsHeightsUnlessOneTap) {
+    const SampledTexture tex(floatTexture(16, 16, wave));
+    Slot slot = maskSlot(SlotKind::Color, Mask::Hex);
+    slot.heightBlend = HeightBlend{"height", 0.2};
+    EXPECT_THROW(evaluateAt(slot, tex, {0.3, 0.4}, {0.01, 0}, {0, 0.01}), std::invalid_argument);
+    slot.hex.taps = 1;  // one sample has nothing to weigh
+    Slot plain = slot;
+    plain.heightBlend.reset();
+    EXPECT_EQ(evaluateAt(slot, tex, {0.3, 0.4}, {0.01, 0}, {0, 0.01}, {5, 9}).value,
+              evaluateAt(plain, tex, {0.3, 0.4}, {0.01, 0}, {0, 0.01}, {5, 9}).value);
+}
+
+// --- Triplanar projection -----------------------------------------------------------------------------------
+
+// The docs' planes written out: plane k samples at (P[kPlane[k][0]], P[kPlane[k][1]]) * tiling, and its derivative
+// (d.x, d.y) is the world gradient with d.x on axis kPlane[k][0] and d.y on kPlane[k][1]: x (P.y, P.z) and
+// (0, d.x, d.y); y (P.z, P.x) and (d.y, 0, d.x); z (P.x, P.y) and (d.x, d.y, 0).
+constexpr std::array<std::array<size_t, 2>, 3> kPlane{{{1, 2}, {2, 0}, {0, 1}}};
+
+Slot triplanarSlot(SlotKind kind, Mask mask = Mask::Hex) {
+    Slot slot = maskSlot(kind, mask);
+    slot.hex.projection = Projection::Triplanar;
+    slot.hex.tiling = {2, 3};
+    return slot;
+}
+
+std::array<double, 3> planeWeights(Vec3 n, double sharpness) {
+    std::array<double, 3> b;
+    for (size_t k = 0; k < 3; ++k) b[k] = std::pow(std::abs(n[k]), sharpness);
+    const double sum = b[0] + b[1] + b[2];
+    for (double& x : b) x /= sum;
+    return b;
+}
+
+TEST(ReferenceTriplanar, AxisNormalsAreTheUvEvaluationOfTheirPlane) {
+    const SampledTexture colour(floatTexture(64, 64, wave)), normalMap(loadTestTexture("rock_normal.png", false));
+    std::mt19937 rng(71);
+    std::uniform_real_distribution<double> coord(-3, 3), grad(-0.01, 0.01);
+    for (SlotKind kind : {SlotKind::Color, SlotKind::Normal})
+        for (Mask mask : {Mask::Hex, Mask::Checker}) {
+            const Slot slot = triplanarSlot(kind, mask);
+            const SampledTexture& tex = kind == SlotKind::Color ? colour : normalMap;
+            for (int k = 0; k < 60; ++k) {
+                const size_t axis = size_t(k % 3);
+                const Vec3 P{coord(rng), coord(rng), coord(rng)}, dPdx{grad(rng), grad(rng), grad(rng)}, dPdy{grad(rng), grad(rng), grad(rng)};
+                Vec3 N{0, 0, 0};
+                N[axis] = k % 2 ? 2.5 : -0.5;  // any length, either side
+                const auto [s, t] = kPlane[axis];
+                const SlotResult r = evaluateTriplanar(slot, tex, {P, N, dPdx, dPdy}, {3, 4});
+                const SlotResult e = evaluate(slot, tex, P[s], P[t], dPdx[s], dPdx[t], dPdy[s], dPdy[t], {3, 4});
+                if (kind == SlotKind::Color) {
+                    EXPECT_EQ(r.value, e.value);
+                } else {
+                    Rgba gradient{0, 0, 0, 1};
+                    gradient[s] = e.value[0];
+                    gradient[t] = e.value[1];
+                    EXPECT_EQ(r.value, gradient);
+                }
+                EXPECT_EQ(r.weights, e.weights);
+                EXPECT_EQ(r.samples, e.samples);  // the only plane is the dominant one
+                EXPECT_EQ(r.blend, e.blend);
+            }
+        }
+}
+
+// A linear ramp (red = s, green = t) without hex-tiling reads each plane's st back: the colour is the plane weights'
+// mix of the three planes' coordinates.
+TEST(ReferenceTriplanar, PlaneWeightsFollowTheNormal) {
+    const SampledTexture ramp(floatTexture(256, 256, [](double s, double t) { return Rgba{s, t, 0, 1}; }));
+    Slot slot = triplanarSlot(SlotKind::Color);
+    slot.hex.enabled = false;
+    slot.hex.tiling = {1, 1};
+    std::mt19937 rng(73);
+    std::uniform_real_distribution<double> inside(0.1, 0.9), direction(-1, 1);
+    for (double sharpness : {1.0, 4.0, 9.5}) {
+        slot.hex.planeSharpness = sharpness;
+        for (int k = 0; k < 200; ++k) {
+            const Vec3 P{inside(rng), inside(rng), inside(rng)}, N{direction(rng), direction(rng), direction(rng)};
+            const double length = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
+            const std::array<double, 3> b = planeWeights({N[0] / length, N[1] / length, N[2] / length}, sharpness);
+            const SlotResult r = evaluateTriplanar(slot, ramp, {P, N, {1e-6, 0, 0}, {0, 1e-6, 0}});
+            double red = 0, green = 0;
+            for (size_t p = 0; p < 3; ++p) {
+                red += b[p] * P[kPlane[p][0]];
+                green += b[p] * P[kPlane[p][1]];
+            }
+            EXPECT_NEAR(r.value[0], red, 1e-6);
+            EXPECT_NEAR(r.value[1], green, 1e-6);
+            EXPECT_NEAR(r.value[3], 1, 1e-12);  // the plane weights sum to 1
+            EXPECT_NEAR(r.weights[0], 1, 1e-12);
+        }
+    }
+    // A zero normal weighs the planes equally.
+    const Vec3 P{0.2, 0.3, 0.7};
+    const SlotResult r = evaluateTriplanar(slot, ramp, {P, {0, 0, 0}, {1e-6, 0, 0}, {0, 1e-6, 0}});
+    EXPECT_NEAR(r.value[0], (0.3 + 0.7 + 0.2) / 3, 1e-6);
+    EXPECT_NEAR(r.value[1], (0.7 + 0.2 + 0.3) / 3, 1e-6);
+}
+
+// The surface gradient of the planes' world gradients: tangent to the surface, and the plane gradients as written.
+TEST(ReferenceTriplanar, SurfaceGradientIsTangentToTheSurface) {
+    const SampledTexture tex(loadTestTexture("rock_normal.png", false));
+    for (Mask mask : {Mask::Hex, Mask::Noise}) {
+        const Slot slot = triplanarSlot(SlotKind::Normal, mask);
+        std::mt19937 rng(79);
+        std::uniform_real_distribution<double> coord(-2, 2), direction(-1, 1), grad(-1e-3, 1e-3);
+        for (int k = 0; k < 200; ++k) {
+            const Vec3 P{coord(rng), coord(rng), coord(rng)}, N{direction(rng), direction(rng), direction(rng)};
+            const Vec3 dPdx{grad(rng), grad(rng), grad(rng)}, dPdy{grad(rng), grad(rng), grad(rng)};
+            const SlotResult r = evaluateTriplanar(slot, tex, {P, N, dPdx, dPdy});
+            const double length = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
+            const Vec3 n{N[0] / length, N[1] / length, N[2] / length};
+            EXPECT_NEAR(r.value[0] * n[0] + r.value[1] * n[1] + r.value[2] * n[2], 0, 1e-12);
+            EXPECT_EQ(r.value[3], 1);
+            const std::array<double, 3> b = planeWeights(n, slot.hex.planeSharpness);
+            Vec3 g{0, 0, 0};
+            for (size_t p = 0; p < 3; ++p) {
+                const auto [s, t] = kPlane[p];
+                const SlotResult e = evaluate(slot, tex, P[s], P[t], dPdx[s], dPdx[t], dPdy[s], dPdy[t]);
+                g[s] += b[p] * e.value[0];
+                g[t] += b[p] * e.value[1];
+            }
+            const double along = g[0] * n[0] + g[1] * n[1] + g[2] * n[2];
+            for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(r.value[c], g[c] - along * n[c], 1e-12);
+        }
+    }
+}
+
+// The planes' weights and gradients do not see the normal's sign: the face opposite shows the same (mirrored) texture.
+TEST(ReferenceTriplanar, OppositeFacesMatch) {
+    const SampledTexture albedo(loadTestTexture("rock_albedo.png", true)), normalMap(loadTestTexture("rock_normal.png", false));
+    std::mt19937 rng(83);
+    std::uniform_real_distribution<double> coord(-2, 2), direction(-1, 1);
+    for (SlotKind kind : {SlotKind::Color, SlotKind::Normal}) {
+        const Slot slot = triplanarSlot(kind, Mask::Checker);
+        const SampledTexture& tex = kind == SlotKind::Color ? albedo : normalMap;
+        for (int k = 0; k < 100; ++k) {
+            const Vec3 P{coord(rng), coord(rng), coord(rng)};
+            const Vec3 N = k < 10 ? Vec3{0, 0, 1} : Vec3{direction(rng), direction(rng), direction(rng)};
+            const SurfacePoint front{P, N, {0.01, 0, 0}, {0, 0.01, 0}}, back{P, {-N[0], -N[1], -N[2]}, front.dPdx, front.dPdy};
+            const SlotResult a = evaluateTriplanar(slot, tex, front), b = evaluateTriplanar(slot, tex, back);
+            EXPECT_EQ(a.value, b.value);
+            EXPECT_EQ(a.weights, b.weights);
+        }
+    }
+}
+
+TEST(ReferenceTriplanar, PreviewSphereIsTheUnitSphereWithItsGradients) {
+    const auto near = [](const Vec3& a, const Vec3& b, double tolerance) {
+        for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], tolerance);
+    };
+    // u = 0, v = 0 faces +z; u = pi/2 turns to +x; v = pi/2 is the north pole, +y.
+    near(previewSphere(0, 0, 0, 0, 0, 0).position, {0, 0, 1}, 1e-15);
+    near(previewSphere(kPi / 2, 0, 0, 0, 0, 0).position, {1, 0, 0}, 1e-15);
+    near(previewSphere(0.7, kPi / 2, 0, 0, 0, 0).position, {0, 1, 0}, 1e-15);
+    std::mt19937 rng(89);
+    std::uniform_real_distribution<double> angle(-3, 3), grad(-0.1, 0.1);
+    for (int k = 0; k < 200; ++k) {
+        const double u = angle(rng), v = angle(rng) / 2, dudx = grad(rng), dvdx = grad(rng), dudy = grad(rng), dvdy = grad(rng);
+        const SurfacePoint p = previewSphere(u, v, dudx, dvdx, dudy, dvdy);
+        EXPECT_NEAR(p.position[0] * p.position[0] + p.position[1] * p.position[1] + p.position[2] * p.position[2], 1, 1e-15);
+        EXPECT_EQ(p.normal, p.position);
+        near(p.position, {std::cos(v) * std::sin(u), std::sin(v), std::cos(v) * std::cos(u)}, 1e-15);
+        // Central differences along the screen directions.
+        const double h = 1e-5;
+        const auto diff = [&](double du, double dv) {
+            const Vec3 a = previewSphere(u + h * du, v + h * dv, 0, 0, 0, 0).position, b = previewSphere(u - h * du, v - h * dv, 0, 0, 0, 0).position;
+            return Vec3{(a[0] - b[0]) / (2 * h), (a[1] - b[1]) / (2 * h), (a[2] - b[2]) / (2 * h)};
+        };
+        near(p.dPdx, diff(dudx, dvdx), 1e-9);
+        near(p.dPdy, diff(dudy, dvdy), 1e-9);
+    }
+}
+
+TEST(ReferenceTriplanar, ViewEvaluatesThePreviewSphereAtEachPixel) {
+    const SampledTexture tex(floatTexture(64, 64, wave));
+    Slot slot = triplanarSlot(SlotKind::Color, Mask::Checker);
+    slot.hex.taps = 1;  // the dither sees the pixel
+    const View view{6, 4, {-3, -1.4, 3, 1.4}};
+    const std::vector<SlotResult> results = evaluateView(slot, tex, view);
+    const Image weights = render(slot, tex, view, Output::Weights);
+    ASSERT_EQ(results.size(), 24u);
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 6; ++i) {
+            const double u = -3 + (i + 0.5) / 6 * 6, v = -1.4 + (j + 0.5) / 4 * 2.8;
+            const SlotResult e = evaluateTriplanar(slot, tex, previewSphere(u, v, 1, 0, 0, 0.7), {uint32_t(i), uint32_t(j)});
+            EXPECT_EQ(results[size_t(j * 6 + i)].value, e.value);
+            for (size_t c = 0; c < 3; ++c) EXPECT_EQ(weights.at(i, j)[c], float(e.weights[c]));
         }
 }
 

@@ -7,9 +7,26 @@ Every GOOD file must be a valid material and every BAD file (after --bad) an inv
 argument stands for the *.json files directly in it, except *.schema.json. Prints one line per file and a
 closing "N passed, M failed" line; exits 1 if any expectation fails, 2 on usage errors.
 
-Besides the schema, this applies the two format rules JSON Schema cannot express: slot names are unique
-within a material, and numbers are finite (Python's json module would otherwise accept NaN, Infinity
-and 1e999). Run it with the Debian interpreter (/usr/bin/python3), which has python3-jsonschema.
+Besides the schema, this applies the format rules JSON Schema cannot express, as hexc does
+(compiler/src/material/parse.cpp):
+
+ 1. numbers are finite (Python's json module would otherwise accept NaN, Infinity and 1e999);
+ 2. slot names are unique within a material;
+ 3. each height_blend names a slot of the same material,
+ 4. and that slot is of kind "scalar";
+
+and these rules on each slot's merged settings (the material's hextiling overridden key by key by the
+slot's; the schema has the ones it can state exactly, where both keys are in one slot's hextiling):
+
+ 5. split_coordinates needs mode "stable";
+ 6. per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode "stable";
+ 7. every mask but "hex" needs mode "stable";
+ 8. taps is 1 or the mask's tap count (2 for "checker", 3 otherwise);
+ 9. split_coordinates does not work with the "noise" and "noise3" masks,
+10. nor with the material's "triplanar" projection;
+11. height_blend cannot be combined with taps 1.
+
+Run it with the Debian interpreter (/usr/bin/python3), which has python3-jsonschema.
 """
 import json
 import math
@@ -55,8 +72,12 @@ def pointer(parts):
 def describe(error):
     """jsonschema's message, made shorter and plainer where it is not."""
     if error.schema is False:
-        # The schema forbids keys with `false` only in the slot rules that depend on "kind".
-        return f"{error.absolute_path[-1]!r} is not allowed on a slot of this kind"
+        # The schema forbids keys with `false` in the slot rules that depend on "kind", and for the
+        # material-wide keys in a slot's hextiling.
+        key = error.absolute_path[-1]
+        if key in ("projection", "planesharpness"):
+            return f"{key!r} is material-wide: set it in the top-level hextiling, not a slot's"
+        return f"{key!r} is not allowed on a slot of this kind"
     message = error.message
     instance = repr(error.instance)
     if len(instance) > 60:  # e.g. a whole slots array
@@ -89,6 +110,65 @@ def problems(validator, path):
                 if name in seen:
                     found.append(f"/slots/{i}/name: duplicate slot name {name!r} (first at /slots/{seen[name]})")
                 seen.setdefault(name, i)
+        found += slot_problems(doc, slots)
+    return found
+
+
+# The built-in hex-tiling defaults that the merged-settings rules read (compiler/include/hexc/material.h).
+DEFAULTS = {"mode": "stable", "mask": "hex", "split_coordinates": False, "rotationrange": [-180, 180],
+            "rotationsteps": 0, "scalerange": [1, 1], "offset": 1, "offsetsteps": [0, 0]}
+MASK_TAPS = {"hex": 3, "checker": 2, "noise": 3, "noise3": 3}
+
+
+def is_number(value):
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def slot_problems(doc, slots):
+    """Rules 3-11 of the docstring, for a document whose slots array is `slots`."""
+    found = []
+    top = doc.get("hextiling")
+    top = top if isinstance(top, dict) else {}
+    projection = top.get("projection", "uv")
+    kinds = {}  # name -> kind, of the first slot with that name
+    for slot in slots:
+        if isinstance(slot, dict) and isinstance(slot.get("name"), str):
+            kinds.setdefault(slot["name"], slot.get("kind"))
+
+    for i, slot in enumerate(slots):
+        if not isinstance(slot, dict):
+            continue
+        own = slot.get("hextiling")
+        at = f"/slots/{i}/hextiling" if "hextiling" in slot else f"/slots/{i}"
+        merged = {**DEFAULTS, **top, **(own if isinstance(own, dict) else {})}
+        mode, mask, taps = merged["mode"], merged["mask"], merged.get("taps")
+        split = merged["split_coordinates"] is True
+        if mode == "paper":
+            if split:
+                found.append(f"{at}: split_coordinates needs mode 'stable'")
+            if any(merged[key] != DEFAULTS[key] for key in ("rotationrange", "rotationsteps", "scalerange", "offset", "offsetsteps")):
+                found.append(f"{at}: per-tile transforms need mode 'stable'")
+            if mask in MASK_TAPS and mask != "hex":
+                found.append(f"{at}: mask {mask!r} needs mode 'stable'")
+        # Values the schema rejects (taps 4, mask "square") are left to it, not reported twice.
+        if mask in MASK_TAPS and taps in (2, 3) and taps != MASK_TAPS[mask]:
+            found.append(f"{at}: taps {taps} does not fit mask {mask!r}; expected {MASK_TAPS[mask]} or 1")
+        if split and mask in ("noise", "noise3"):
+            found.append(f"{at}: split_coordinates does not work with mask {mask!r}")
+        if split and projection == "triplanar":
+            found.append(f"{at}: split_coordinates does not work with the triplanar projection")
+
+        height = slot.get("height_blend")
+        if not isinstance(height, dict):
+            continue
+        if is_number(taps) and taps == 1:
+            found.append(f"/slots/{i}/height_blend: height_blend cannot be combined with taps 1")
+        name = height.get("slot")
+        if isinstance(name, str):
+            if name not in kinds:
+                found.append(f"/slots/{i}/height_blend/slot: no slot named {name!r} in this material")
+            elif kinds[name] != "scalar":
+                found.append(f"/slots/{i}/height_blend/slot: slot {name!r} is of kind {kinds[name]!r}; heights come from a 'scalar' slot")
     return found
 
 

@@ -188,8 +188,12 @@ bool writeRock(const std::filesystem::path& dir) {
         roughness[i] = toByte(0.78 - 0.22 * s.base - 0.35 * s.streak + 0.2 * s.crack);
     }
 
+    // Height, for height blending: the field the normals come from, its range [-0.45, 0.9] mapped to [0, 1].
+    std::vector<uint8_t> heightMap(kSize * kSize);
+    for (int i = 0; i < kSize * kSize; ++i) heightMap[i] = toByte((height[i] + 0.45) / 1.35);
+
     return writePng(dir / "rock_albedo.png", 3, albedo) && writePng(dir / "rock_normal.png", 3, normal) &&
-           writePng(dir / "rock_roughness.png", 1, roughness);
+           writePng(dir / "rock_roughness.png", 1, roughness) && writePng(dir / "rock_height.png", 1, heightMap);
 }
 
 // ---- the tiles material --------------------------------------------------------------------

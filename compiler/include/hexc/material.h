@@ -17,6 +17,11 @@ enum class ColorSpace { Srgb, Linear };
 // hash of exactly reduced lattice ids, identical on every target and precise far from the origin
 // (templates/hextiling.glsl, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
 enum class HashMode { Stable, Paper };
+// What decides the blend weights (docs/material-format.md#mask): the paper's hex lattice (3 taps), two offset
+// square grids (2 taps), or three globally transformed copies under one or three value noises (3 taps).
+enum class Mask { Hex, Checker, Noise, Noise3 };
+// Where a slot's texture coordinate comes from: the mesh uv, or world position and normal on three planes.
+enum class Projection { Uv, Triplanar };
 
 // Hex-tiling settings. Names follow MaterialX <hextiledimage> where the meaning is the same;
 // the paper's symbol is given for each.
@@ -28,7 +33,11 @@ struct HexTiling {
     double falloffcontrast = 0.6;         // beta of Eq. 3-4 (MaterialX `falloffcontrast`)
     double exponent = 7.0;                // gamma, exponent on the barycentric weights (Eq. 1)
     HashMode mode = HashMode::Stable;
-    int taps = 3;                         // 3: the paper's blend of three fetches; 1: one dithered fetch
+    Mask mask = Mask::Hex;
+    int maskScale = 2;                    // checker and noise masks: cells per unit of st
+    int taps = 0;                         // 0: every tap of the mask, blended; 1: one dithered fetch
+    Projection projection = Projection::Uv;  // material-wide
+    double planeSharpness = 4;            // triplanar: exponent on |normal| per plane
     // Stable mode only: the slot also reads an origin (cell, offset) that the engine fills each frame from a
     // double-precision origin, for worlds whose uv exceed what float32 resolves (docs/precision.md).
     bool splitCoordinates = false;
@@ -38,10 +47,17 @@ struct HexTiling {
     std::array<double, 2> scaleRange{1, 1};           // texture scale drawn per tile
     double offset = 1.0;                              // amount of the random offset
     std::array<int, 2> offsetSteps{0, 0};             // > 0: offsets snapped to a grid of that many cells
+    int maskTaps() const { return mask == Mask::Checker ? 2 : 3; }
     bool hasTransforms() const {
         return rotationRange != std::array<double, 2>{-180, 180} || rotationSteps != 0 || scaleRange != std::array<double, 2>{1, 1} ||
                offset != 1.0 || offsetSteps != std::array<int, 2>{0, 0};
     }
+};
+
+// Height blending (docs/material-format.md#height-blending): tiles weighed by the heights of a scalar slot.
+struct HeightBlend {
+    std::string slot;                // a scalar slot of the same material, possibly this one
+    double width = 0.2;              // transition width, in (0, 1]
 };
 
 struct Slot {
@@ -53,6 +69,7 @@ struct Slot {
     ColorSpace colorSpace = ColorSpace::Srgb;
     bool flipY = false;              // normal slots: green channel points down (DirectX convention)
     HexTiling hex;                   // material settings with this slot's overrides applied
+    std::optional<HeightBlend> heightBlend;
     int width = 0, height = 0;       // of the texture file
 };
 
@@ -77,5 +94,6 @@ ParseResult parseMaterialFile(const std::filesystem::path& file);
 std::string_view toString(SlotKind kind);
 std::string_view toString(ColorSpace space);
 std::string_view toString(HashMode mode);
+std::string_view toString(Mask mask);
 
 }  // namespace hexc

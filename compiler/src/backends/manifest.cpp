@@ -21,8 +21,16 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
               {"falloffcontrast", h.falloffcontrast},
               {"exponent", h.exponent},
               {"mode", toString(h.mode)},
-              {"split_coordinates", h.splitCoordinates}}},
+              {"split_coordinates", h.splitCoordinates},
+              {"mask", toString(h.mask)},
+              {"taps", h.taps == 1 ? 1 : h.maskTaps()},
+              {"projection", h.projection == Projection::Triplanar ? "triplanar" : "uv"}}},
         };
+        if (h.mask != Mask::Hex) slot["hextiling"]["maskscale"] = h.maskScale;
+        if (h.projection == Projection::Triplanar) slot["hextiling"]["planesharpness"] = h.planeSharpness;
+        if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
+        // Bound for another slot's height blending only: the shader has no function for it.
+        if (sp.heightOnly) slot["height_map_only"] = true;
         if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
         if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
         slots.push_back(std::move(slot));

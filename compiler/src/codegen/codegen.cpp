@@ -1,5 +1,6 @@
 #include "codegen/codegen.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -55,9 +56,15 @@ std::string injectedCode(const ShaderPlan& plan) {
         out += replaceAll(sections.at("params"), {{"$members", members}}) + "\n";
     }
     out += replaceAll(sections.at("sampler"), {{"$binding", std::to_string(kSamplerBinding)}}) + "\n";
-    const Slot& first = *plan.slots.front().slot;
-    out += replaceAll(sections.at("first"), {{"$name", first.name}, {"$kind", std::string(toString(first.kind))}}) + "\n";
+    // Every texture first: a slot may read another's as its height map.
+    for (const SlotPlan& sp : plan.slots)
+        out += replaceAll(sections.at("texture"), {{"$name", sp.slot->name}, {"$binding", std::to_string(sp.binding)}}) + "\n";
+    const SlotPlan& first = *std::find_if(plan.slots.begin(), plan.slots.end(), [](const SlotPlan& sp) { return !sp.heightOnly; });
+    out += replaceAll(sections.at("first"), {{"$name", first.slot->name}, {"$kind", std::string(toString(first.slot->kind))},
+                                             {"$projection", first.slot->hex.projection == Projection::Triplanar ? "triplanar" : "uv"}}) +
+           "\n";
     for (const SlotPlan& sp : plan.slots) {
+        if (sp.heightOnly) continue;
         const Slot& s = *sp.slot;
         const LatticePlan& lattice = plan.lattices[sp.lattice];
         // A setting reads as its block member or its constant; a feature left out reads as its neutral value.
@@ -69,9 +76,22 @@ std::string injectedCode(const ShaderPlan& plan) {
         static const char* kChannels[] = {"r", "g", "b", "a"};
         static const char* kChannelVectors[] = {"vec4(1.0, 0.0, 0.0, 0.0)", "vec4(0.0, 1.0, 0.0, 0.0)",
                                                 "vec4(0.0, 0.0, 1.0, 0.0)", "vec4(0.0, 0.0, 0.0, 1.0)"};
+        const bool triplanar = s.hex.projection == Projection::Triplanar;
+        static const char* kTypes[] = {"vec4", "float", "vec2"};
+        std::string height = "false, hexcTex_" + s.name + ", vec4(0.0), 0.0";
+        if (s.heightBlend) {
+            const Slot& h = *std::find_if(plan.slots.begin(), plan.slots.end(), [&](const SlotPlan& p) { return p.slot->name == s.heightBlend->slot; })->slot;
+            height = "true, hexcTex_" + h.name + ", " + kChannelVectors[h.channel] + ", " + param(s.name + "_heightwidth", "");
+        }
         std::map<std::string, std::string> values = {
             {"$name", s.name},
-            {"$binding", std::to_string(sp.binding)},
+            {"$type", triplanar && s.kind == SlotKind::Normal ? "vec3" : kTypes[size_t(s.kind)]},
+            {"$height", height},
+            {"$taps", std::to_string(s.hex.maskTaps())},
+            {"$maskscale", std::to_string(s.hex.maskScale)},
+            {"$triple", s.hex.mask == Mask::Noise3 ? "true" : "false"},
+            {"$explicit", triplanar ? "true" : "false"},
+            {"$planesharpness", param(lattice.name + "_planesharpness", "4.0")},
             {"$tiling", param(lattice.name + "_tiling", "")},
             {"$rotation", param(lattice.name + "_rotation", "0.0")},
             {"$origincell", param(lattice.name + "_origin_cell", "ivec2(0)")},
@@ -96,13 +116,14 @@ std::string injectedCode(const ShaderPlan& plan) {
             {"$channel", kChannels[s.channel]},
             {"$flipy", s.flipY ? "true" : "false"},
         };
-        const char* latticeSection = s.hex.mode == HashMode::Paper ? "lattice.paper" : s.hex.splitCoordinates ? "lattice.split" : "lattice.stable";
+        static const char* kMaskLattices[] = {"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"};
+        const char* latticeSection = s.hex.mode == HashMode::Paper ? "lattice.paper" : kMaskLattices[size_t(s.hex.mask)];
         values["$tf"] = replaceAll(sections.at("transform"), values);
         values["$tf"].pop_back();  // the section's final newline
         values["$lattice"] = replaceAll(sections.at(latticeSection), values);
         values["$lattice"].pop_back();  // the section's final newline
-        out += replaceAll(sections.at("texture"), values) + "\n";
         out += replaceAll(sections.at(sp.section), values) + "\n";
+        out += replaceAll(sections.at(triplanar ? "triplanar" : s.hex.splitCoordinates ? "uv.split" : "uv"), values) + "\n";
     }
     return out;
 }

@@ -21,13 +21,17 @@ namespace {
 using nlohmann::json;
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "slots"};
-const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling"};
+const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling", "height_blend"};
 const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "falloff", "falloffcontrast", "exponent", "mode",
-                                           "split_coordinates", "rotationrange", "rotationsteps", "scalerange", "offset", "offsetsteps", "taps"};
+                                           "split_coordinates", "rotationrange", "rotationsteps", "scalerange", "offset", "offsetsteps",
+                                           "mask", "maskscale", "taps", "projection", "planesharpness"};
+const std::vector<std::string> kHeightKeys = {"slot", "width"};
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
 const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
 const std::vector<std::string> kModes = {"stable", "paper"};
+const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
+const std::vector<std::string> kProjections = {"uv", "triplanar"};
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
 constexpr size_t kMaxSlots = 16;
 
@@ -88,7 +92,7 @@ public:
         m.templateName = "lit";
         if (doc.contains("template")) m.templateName = templateRef(doc["template"], "/template");
         if (doc.contains("$schema")) string(doc["$schema"], "/$schema");
-        if (doc.contains("hextiling")) hexSettings(doc["hextiling"], "/hextiling", m.hex);
+        if (doc.contains("hextiling")) hexSettings(doc["hextiling"], "/hextiling", m.hex, true);
         if (requireKey(doc, "", "slots", "an array of slots")) slots(doc["slots"], "/slots", m);
         return m;
     }
@@ -285,7 +289,8 @@ private:
         return "lit";
     }
 
-    void hexSettings(const json& v, const std::string& pointer, HexTiling& hex) {
+    // `materialLevel`: the top-level block, the only place for material-wide keys.
+    void hexSettings(const json& v, const std::string& pointer, HexTiling& hex, bool materialLevel = false) {
         if (!v.is_object()) {
             error(pointer, "expected an object of hex-tiling settings, got " + typeName(v));
             return;
@@ -325,11 +330,21 @@ private:
         if (v.contains("offset")) hex.offset = number(v["offset"], pointer + "/offset", {0, 1, false, false, "in [0, 1]"}, hex.offset);
         if (v.contains("rotationsteps"))
             hex.rotationSteps = int(whole(v["rotationsteps"], pointer + "/rotationsteps", {0, 360, false, false, "in 0..360 (0: continuous)"}, 0));
-        if (v.contains("taps")) {
-            double taps = whole(v["taps"], pointer + "/taps", {1, 3, false, false, "1 or 3"}, hex.taps);
-            if (taps == 2) error(pointer + "/taps", "expected 1 or 3, got 2");
-            else hex.taps = int(taps);
+        if (v.contains("mask")) {
+            if (int i = choice(v["mask"], pointer + "/mask", kMasks); i >= 0) hex.mask = Mask(i);
         }
+        if (v.contains("maskscale"))
+            hex.maskScale = int(whole(v["maskscale"], pointer + "/maskscale", {1, 64, false, false, "in 1..64 (mask cells per texture repeat)"}, hex.maskScale));
+        if (v.contains("taps")) hex.taps = int(whole(v["taps"], pointer + "/taps", {1, 3, false, false, "in 1..3"}, hex.taps));
+        for (const char* key : {"projection", "planesharpness"})
+            if (v.contains(key) && !materialLevel)
+                error(pointer + "/" + key, ticked(key) + " is material-wide (every slot function takes the same inputs); set it in the top-level `hextiling`",
+                      {}, true);
+        if (v.contains("projection") && materialLevel) {
+            if (int i = choice(v["projection"], pointer + "/projection", kProjections); i >= 0) hex.projection = Projection(i);
+        }
+        if (v.contains("planesharpness") && materialLevel)
+            hex.planeSharpness = number(v["planesharpness"], pointer + "/planesharpness", {1, 64, false, false, "in [1, 64]"}, hex.planeSharpness);
         if (v.contains("offsetsteps")) {
             std::array<double, 2> steps{0, 0};
             pair(v["offsetsteps"], pointer + "/offsetsteps", {0, 4096, false, false, "in 0..4096 (0: continuous)"}, steps, true);
@@ -358,6 +373,7 @@ private:
             }
             m.slots.push_back(std::move(s));
         }
+        heightSlots(pointer, m);
     }
 
     Slot slot(const json& v, const std::string& pointer, const HexTiling& defaults) {
@@ -414,11 +430,56 @@ private:
         if (s.hex.hasTransforms() && s.hex.mode == HashMode::Paper)
             error(at, "per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode `stable`; "
                       "mode `paper` is exactly the paper's Listings 2 and 6");
+        if (s.hex.mask != Mask::Hex && s.hex.mode == HashMode::Paper)
+            error(at, "mask `" + std::string(toString(s.hex.mask)) + "` needs mode `stable`; the paper defines only the hex lattice");
+        if (s.hex.taps > 1 && s.hex.taps != s.hex.maskTaps())
+            error(at, "`taps` " + std::to_string(s.hex.taps) + " does not fit mask `" + std::string(toString(s.hex.mask)) + "`, which has " +
+                          std::to_string(s.hex.maskTaps()) + " taps; expected " + std::to_string(s.hex.maskTaps()) + " or 1 (one dithered fetch)");
+        if (s.hex.splitCoordinates && (s.hex.mask == Mask::Noise || s.hex.mask == Mask::Noise3))
+            error(at, "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
+        if (s.hex.splitCoordinates && s.hex.projection == Projection::Triplanar)
+            error(at, "`split_coordinates` does not work with the triplanar projection: it reads world positions, not uv");
+        if (v.contains("height_blend")) heightBlend(v["height_blend"], pointer + "/height_blend", s);
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
             s.texture = string(v["texture"], pointer + "/texture");
             if (v["texture"].is_string()) texture(s, pointer + "/texture");
         }
         return s;
+    }
+
+    void heightBlend(const json& v, const std::string& pointer, Slot& s) {
+        if (!v.is_object()) {
+            error(pointer, "expected an object {\"slot\": name, \"width\": number}, got " + typeName(v));
+            return;
+        }
+        checkKeys(v, pointer, kHeightKeys);
+        HeightBlend h;
+        if (requireKey(v, pointer, "slot", "the name of a scalar slot holding heights")) h.slot = string(v["slot"], pointer + "/slot");
+        if (v.contains("width")) h.width = number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, h.width);
+        if (s.hex.taps == 1)
+            error(pointer, "`height_blend` needs every tile's height; it cannot be combined with `taps` 1", {}, true);
+        if (!s.hex.enabled)
+            error(pointer, "`height_blend` weighs tiles, and this slot has hex-tiling disabled (`enabled`: false)", {}, true);
+        s.heightBlend = h;
+    }
+
+    // After all slots are known: each height_blend names a scalar slot.
+    void heightSlots(const std::string& pointer, const Material& m) {
+        std::vector<std::string> names;
+        for (const Slot& s : m.slots) names.push_back(s.name);
+        for (size_t i = 0; i < m.slots.size(); ++i) {
+            const Slot& s = m.slots[i];
+            if (!s.heightBlend || s.heightBlend->slot.empty()) continue;
+            std::string p = pointerAppend(pointer, i) + "/height_blend/slot";
+            auto it = std::find(names.begin(), names.end(), s.heightBlend->slot);
+            if (it == names.end()) {
+                std::string hint;
+                if (auto best = closestMatch(s.heightBlend->slot, names)) hint = "did you mean " + ticked(*best) + "?";
+                error(p, "no slot named `" + s.heightBlend->slot + "` in this material", hint);
+            } else if (const Slot& h = m.slots[size_t(it - names.begin())]; h.kind != SlotKind::Scalar) {
+                error(p, "slot `" + h.name + "` is of kind `" + std::string(toString(h.kind)) + "`; heights come from a slot of kind `scalar`");
+            }
+        }
     }
 
     void texture(Slot& s, const std::string& pointer) {
@@ -518,5 +579,6 @@ SceneParseResult parseSceneFile(const std::filesystem::path& file) {
 std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }
 std::string_view toString(ColorSpace space) { return kColorSpaces[size_t(space)]; }
 std::string_view toString(HashMode mode) { return kModes[size_t(mode)]; }
+std::string_view toString(Mask mask) { return kMasks[size_t(mask)]; }
 
 }  // namespace hexc

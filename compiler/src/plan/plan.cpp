@@ -17,7 +17,8 @@ bool readsIdentifier(const std::string& source, const std::string& identifier) {
 bool sameLattice(const HexTiling& a, const HexTiling& b) {
     return a.enabled == b.enabled && a.mode == b.mode && a.splitCoordinates == b.splitCoordinates && a.tiling == b.tiling &&
            a.rotation == b.rotation && a.rotationRange == b.rotationRange && a.rotationSteps == b.rotationSteps &&
-           a.scaleRange == b.scaleRange && a.offset == b.offset && a.offsetSteps == b.offsetSteps;
+           a.scaleRange == b.scaleRange && a.offset == b.offset && a.offsetSteps == b.offsetSteps && a.mask == b.mask &&
+           a.maskScale == b.maskScale && a.projection == b.projection && a.planeSharpness == b.planeSharpness;
 }
 
 class ParamBuilder {
@@ -89,12 +90,29 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         error("a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
 
     bool readsFirst = readsIdentifier(plan.templateSource, "HEXC_FIRST_SLOT");
+    // The slots the template reads, and the height maps they blend by (of which only the texture may be needed).
+    std::vector<bool> read(material.slots.size()), needed(material.slots.size());
+    for (size_t i = 0; i < material.slots.size(); ++i) {
+        const Slot& slot = material.slots[i];
+        if (!readsIdentifier(plan.templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
+        read[i] = needed[i] = true;
+        if (slot.heightBlend)
+            for (size_t j = 0; j < material.slots.size(); ++j) needed[j] = needed[j] || material.slots[j].name == slot.heightBlend->slot;
+    }
     uint32_t binding = kFirstTextureBinding;
-    for (const Slot& slot : material.slots) {
-        bool first = &slot == &material.slots.front();
-        if (!readsIdentifier(plan.templateSource, "hexc_" + slot.name) && !(first && readsFirst)) {
+    for (size_t i = 0; i < material.slots.size(); ++i) {
+        const Slot& slot = material.slots[i];
+        if (!needed[i]) {
             plan.diagnostics.push_back({Diagnostic::Severity::Warning, {material.sourceFile.string(), 0, 0}, "",
                                         "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out", {}});
+            continue;
+        }
+        if (!read[i]) {
+            SlotPlan heights;
+            heights.slot = &slot;
+            heights.binding = binding++;
+            heights.heightOnly = true;
+            plan.slots.push_back(heights);
             continue;
         }
         const HexTiling& h = slot.hex;
@@ -102,7 +120,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         bool all = !options.specialize;
         // One tap needs no falloff metric: it has a single sample to weigh.
         SlotPlan sp{&slot, std::string(toString(slot.kind)) + (!h.enabled ? ".plain" : h.taps == 1 ? ".hex1" : ".hex"), binding++, 0,
-                    h.taps == 3 && (all || h.falloffcontrast != 0), all || h.falloff != 0.5};
+                    h.taps != 1 && (all || h.falloffcontrast != 0), all || h.falloff != 0.5};
         // Whole-number exponents become multiplications: gamma = 7 (the paper's) and the gain at r = 1 - 2^-k
         // (the paper's 0.75 is k = 2) then cost no pow. Like the feature switches, they fix the value in the code.
         if (!all && h.exponent == std::floor(h.exponent) && h.exponent <= 16) sp.exponentInt = int(h.exponent);
@@ -121,9 +139,10 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         const LatticePlan& l = plan.lattices[i];
         std::vector<std::string> users;
         for (const SlotPlan& sp : plan.slots)
-            if (sp.lattice == i) users.push_back(sp.slot->name);
+            if (sp.lattice == i && !sp.heightOnly) users.push_back(sp.slot->name);
         const HexTiling& h = l.settings;
         params.add(l.name + "_tiling", {h.tiling[0], h.tiling[1]}, users);
+        if (h.projection == Projection::Triplanar) params.add(l.name + "_planesharpness", {h.planeSharpness}, users);
         if (!h.enabled) continue;
         if (l.rotate) params.add(l.name + "_rotation", {h.rotation}, users);
         if (l.transform) {
@@ -140,7 +159,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     }
     for (const SlotPlan& sp : plan.slots) {
         const HexTiling& h = sp.slot->hex;
-        if (!h.enabled) continue;
+        if (!h.enabled || sp.heightOnly) continue;
         const std::string& n = sp.slot->name;
         auto fixed = [&](const std::string& name, double value) { plan.specialised.push_back({name, "float", {value}, {n}, {}, 0, std::nullopt}); };
         if (sp.gainInt) fixed(n + "_falloff", h.falloff);
@@ -148,6 +167,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         if (sp.metric) params.add(n + "_falloffcontrast", {h.falloffcontrast}, {n});
         if (sp.exponentInt) fixed(n + "_exponent", h.exponent);
         else params.add(n + "_exponent", {h.exponent}, {n});
+        if (sp.slot->heightBlend) params.add(n + "_heightwidth", {sp.slot->heightBlend->width}, {n});
     }
     params.finish();
     return plan;

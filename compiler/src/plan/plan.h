@@ -42,13 +42,14 @@ struct LatticePlan {
 
 struct SlotPlan {
     const Slot* slot = nullptr;
-    std::string section;         // snippet in templates/slots.glsl, e.g. "color.hex"
+    std::string section;         // snippet in templates/slots.glsl, e.g. "color.hex"; empty when heightOnly
     uint32_t binding = 0;        // texture binding (set 0)
     size_t lattice = 0;          // index into ShaderPlan::lattices
     bool metric = true;          // the falloff metric code is emitted (falloffcontrast != 0)
     bool gain = true;            // the gain code is emitted (falloff != 0.5)
     int exponentInt = 0;         // > 0: the exponent is this whole number, multiplied out (no pow, no uniform)
     int gainInt = 0;             // > 0: the gain's k = log2(1 / (1 - falloff)) is this whole number, likewise
+    bool heightOnly = false;     // only the texture is used, as another slot's height map (no function, no lattice)
 };
 
 struct ShaderPlan {

@@ -79,6 +79,11 @@ std::array<uint32_t, 3> pcg3d(std::array<uint32_t, 3> v) {
     return v;
 }
 
+// 2^-24: the step of the random numbers below, and the masks' floor under a weight or a maximum.
+constexpr double kTiny = 1.0 / 16777216.0;
+
+// A random number in [0, 1): the top 24 bits of a pcg3d word.
+double random24(uint32_t word) { return (word >> 8) * kTiny; }
 
 double paperAngle(TileId id, double strength) {
     // In double: an int product could overflow for far-away tiles, and the sum is exact here for |id| < 2^26.
@@ -103,10 +108,106 @@ Vec2 normalToDerivative(const Rgba& texel, bool flipY) {
 // changes it by +-1 or +-2, never by 3, so neighbouring tiles (and the three tiles of a triangle) always differ.
 // This restates the listing's swizzle: its vh/vl choice (on vertex1.x < vertex3.x) gives vertex2 and vertex3
 // exactly these indices.
-std::array<double, 3> hexColours(const std::array<double, 3>& w, const Triangle& tri) {
+std::array<double, 3> hexColours(const std::array<double, 3>& w, const std::array<TileId, 3>& id) {
     std::array<double, 3> out{};
     // The difference of the 32-bit ids the shader keeps (exact while |id| < 2^31).
-    for (int i = 0; i < 3; ++i) out[size_t(floorMod3(int32_t(uint32_t(tri.id[i][0]) - uint32_t(tri.id[i][1]))))] = w[i];
+    for (int i = 0; i < 3; ++i) out[size_t(floorMod3(int32_t(uint32_t(id[i][0]) - uint32_t(id[i][1]))))] = w[i];
+    return out;
+}
+
+// What a mask decides at st (docs/material-format.md#mask): three tiles, tile i sampled at
+// toTile(local[i]) / scale + shift[i] + offset with its own transform, and their weights before Eq. 1. The
+// checker repeats its second tile, with weight 0, as the third.
+struct Taps {
+    std::array<TileId, 3> id;
+    std::array<Vec2, 3> local;     // st relative to the point the tile turns and scales about
+    std::array<Vec2, 3> shift;     // added back after the transform: paper mode's tile centre (Listing 3), else 0
+    std::array<double, 3> weight;  // the mask's weights
+};
+
+Taps hexTaps(Vec2 st, HashMode mode) {
+    const Triangle tri = lattice(st, mode);
+    const bool paper = mode == HashMode::Paper;
+    Taps taps{tri.id, {}, {}, tri.weight};
+    for (size_t i = 0; i < 3; ++i) {
+        const Vec2 c = paper ? tileCentre(tri.id[i]) : stableCentre(tri.id[i]);
+        taps.local[i] = {st[0] - c[0], st[1] - c[1]};
+        taps.shift[i] = paper ? c : Vec2{0, 0};
+    }
+    return taps;
+}
+
+// The checker and noise masks' cells: st = (kx, ky) + r and q = r * scale, so that the cell holding st + shift / scale
+// is scale * (kx, ky) + floor(q + shift), with the same integers however far st is from the origin.
+struct MaskFrame {
+    std::array<int64_t, 2> base;  // scale * (kx, ky)
+    Vec2 q;
+};
+
+MaskFrame maskFrame(Vec2 st, int scale) {
+    const double kx = std::floor(st[0]), ky = std::floor(st[1]);
+    return {{scale * int64_t(kx), scale * int64_t(ky)}, {(st[0] - kx) * scale, (st[1] - ky) * scale}};
+}
+
+// Two square grids, B shifted by half a cell; each cell is a tile with its own transform, sampled about its centre.
+Taps checkerTaps(Vec2 st, int scale) {
+    const MaskFrame frame = maskFrame(st, scale);
+    Taps taps{};
+    for (int64_t grid = 0; grid < 2; ++grid) {
+        const double shift = 0.5 * double(grid);
+        const Vec2 corner{std::floor(frame.q[0] + shift), std::floor(frame.q[1] + shift)};
+        const Vec2 f{frame.q[0] + shift - corner[0], frame.q[1] + shift - corner[1]};
+        // 2A and 2B + (1, 1): the grids never share an id. TileId is wider than the shader's 32 bits; the hash
+        // reads its low 32 bits, which is the shader's wrap-around.
+        taps.id[size_t(grid)] = {2 * (frame.base[0] + int64_t(corner[0])) + grid, 2 * (frame.base[1] + int64_t(corner[1])) + grid};
+        taps.local[size_t(grid)] = {(f[0] - 0.5) / scale, (f[1] - 0.5) / scale};
+        taps.weight[size_t(grid)] = std::min({f[0], 1 - f[0], f[1], 1 - f[1]}) + kTiny;
+    }
+    taps.id[2] = taps.id[1];
+    taps.local[2] = taps.local[1];
+    // Over the larger weight: the same after Eq. 1 normalises, but w^gamma cannot underflow where both weights are
+    // near 2^-24 (the points where borders of A and B cross) for any exponent up to 64.
+    const double top = std::max(taps.weight[0], taps.weight[1]);
+    for (size_t i = 0; i < 2; ++i) taps.weight[i] /= top;
+    return taps;
+}
+
+// Three copies of the texture, each with one transform drawn like a tile's, about the st origin.
+Taps noiseTaps(Vec2 st, const HexTiling& hex) {
+    Taps taps{{TileId{0, 0}, TileId{1, 0}, TileId{2, 0}}, {st, st, st}, {}, {}};
+    if (hex.mask == Mask::Noise) {
+        // Three bands of one noise: pure copy 0 below 1/4, 1 at 1/2, 2 above 3/4.
+        const double p = std::clamp(4 * valueNoise(st, hex.maskScale, 3) - 1, 0.0, 2.0);
+        for (size_t i = 0; i < 3; ++i) taps.weight[i] = std::max(0.0, 1 - std::abs(p - double(i)));
+    } else {
+        std::array<double, 3> n;
+        for (size_t k = 0; k < 3; ++k) n[k] = valueNoise(st, hex.maskScale, uint32_t(4 + k));
+        const double top = std::max({n[0], n[1], n[2], kTiny});
+        for (size_t k = 0; k < 3; ++k) taps.weight[k] = n[k] / top;
+    }
+    return taps;
+}
+
+Taps maskTaps(Vec2 st, const HexTiling& hex) {
+    switch (hex.mask) {
+    case Mask::Hex: return hexTaps(st, hex.mode);
+    case Mask::Checker: return checkerTaps(st, hex.maskScale);
+    case Mask::Noise:
+    case Mask::Noise3: return noiseTaps(st, hex);
+    }
+    throw std::invalid_argument("reference: unknown mask");
+}
+
+// docs/material-format.md#height-blending: each weight times how far its tile's weighted height comes within
+// `width` of the highest, renormalised. `sum`: the sum before renormalising.
+std::array<double, 3> heightBlend(const std::array<double, 3>& w, const std::array<double, 3>& h, double width, double& sum) {
+    std::array<double, 3> a;
+    for (size_t i = 0; i < 3; ++i) a[i] = std::max(h[i], 0.0) * w[i];
+    const double top = std::max({a[0], a[1], a[2]});
+    std::array<double, 3> out;
+    for (size_t i = 0; i < 3; ++i) out[i] = w[i] * std::max(a[i] - top + width, 0.0);
+    sum = out[0] + out[1] + out[2];
+    for (double& x : out) x /= sum;
     return out;
 }
 
@@ -232,12 +333,9 @@ std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, con
     return w;
 }
 
-SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
-                    double dudy, double dvdy, std::array<uint32_t, 2> pixel) {
+SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel,
+                      const HeightSource* height) {
     const HexTiling& hex = slot.hex;
-    const Vec2 st{u * hex.tiling[0], v * hex.tiling[1]};
-    const Vec2 dx{dudx * hex.tiling[0], dvdx * hex.tiling[1]};
-    const Vec2 dy{dudy * hex.tiling[0], dvdy * hex.tiling[1]};
     const bool normal = slot.kind == SlotKind::Normal;
     const auto asValue = [](Vec2 d) { return Rgba{d[0], d[1], 0, 1}; };
 
@@ -246,26 +344,30 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
         const Rgba value = normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
         return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
     }
+    const bool heightBlended = slot.heightBlend && hex.taps != 1;  // 1 tap cannot height-blend (the parser rejects it)
+    if (heightBlended && !height) throw std::invalid_argument("reference: slot " + slot.name + " height-blends but no heights were given");
 
-    const bool paper = hex.mode == HashMode::Paper;
-    const Triangle tri = lattice(st, hex.mode);
+    const Taps taps = maskTaps(st, hex);
+    // Listing 7's colours for the hex mask; the other masks show their weights in their own order.
+    const auto shown = [&](const std::array<double, 3>& w) { return hex.mask == Mask::Hex ? hexColours(w, taps.id) : w; };
+    struct Fetch {
+        Vec2 p, dx, dy;
+    };
+    std::array<Fetch, 3> fetch;
     std::array<Rgba, 3> samples;
     std::array<double, 3> delta;
     for (size_t i = 0; i < 3; ++i) {
-        const TileId id = tri.id[i];
-        const TileTransform tile = tileTransform(id, hex);
+        const TileTransform tile = tileTransform(taps.id[i], hex);
         const Rotation rot{std::cos(tile.angle), std::sin(tile.angle)};
-        const Vec2 c = paper ? tileCentre(id) : stableCentre(id);
-        // Rotate st about the tile centre into the tile's frame, then shift by the tile's offset (paper: and
-        // back by the centre); the gradients rotate with it (Listings 3 and 4).
-        // The texture is scaled by the tile's scale about the tile centre: sample at the local point / scale.
-        const Vec2 rotated = rot.toTile({st[0] - c[0], st[1] - c[1]});
-        const Vec2 local{rotated[0] / tile.scale, rotated[1] / tile.scale};
-        const Vec2 p = paper ? Vec2{local[0] + c[0] + tile.offset[0], local[1] + c[1] + tile.offset[1]}
-                             : Vec2{local[0] + tile.offset[0], local[1] + tile.offset[1]};
-        Vec2 px = rot.toTile(dx), py = rot.toTile(dy);
-        for (Vec2* g : {&px, &py}) *g = {(*g)[0] / tile.scale, (*g)[1] / tile.scale};
-        const Rgba x = texture.sample(p[0], p[1], px[0], px[1], py[0], py[1]);
+        // Rotate into the tile's frame, scale (the texture is scaled by tile.scale: sample at the point / scale),
+        // then shift by the tile's offset; the gradients rotate and scale with it (Listings 3 and 4).
+        const Vec2 rotated = rot.toTile(taps.local[i]);
+        Fetch& f = fetch[i];
+        f.p = {rotated[0] / tile.scale + taps.shift[i][0] + tile.offset[0], rotated[1] / tile.scale + taps.shift[i][1] + tile.offset[1]};
+        f.dx = rot.toTile(dx);
+        f.dy = rot.toTile(dy);
+        for (Vec2* g : {&f.dx, &f.dy}) *g = {(*g)[0] / tile.scale, (*g)[1] / tile.scale};
+        const Rgba x = texture.sample(f.p[0], f.p[1], f.dx[0], f.dx[1], f.dy[0], f.dy[1]);
 
         double metric;
         if (normal) {
@@ -287,22 +389,101 @@ SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, d
 
     if (hex.taps == 1) {
         // One dithered tap: the pixel's hash u in [0, 1) picks the tile whose share of Eq. 1's weights (without
-        // the metric, which one sample cannot weigh) covers it; that tile's sample is the result.
-        const std::array<double, 3> w = blendWeights(tri.weight, {1, 1, 1}, hex);
+        // the metric, which one sample cannot weigh) covers it; that tile's sample is the result. A two-tap mask
+        // has no third tile: u beyond W_0 + W_1 (by rounding) picks the second.
+        const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);
         const double u = ditherValue(pixel);
-        const size_t pick = u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2;
+        const size_t pick = std::min<size_t>(u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2, size_t(hex.maskTaps() - 1));
         std::array<double, 3> oneHot{};
         oneHot[pick] = 1;
-        return {samples[pick], hexColours(oneHot, tri), {samples[pick], samples[pick], samples[pick]}, oneHot};
+        return {samples[pick], shown(oneHot), {samples[pick], samples[pick], samples[pick]}, oneHot};
     }
-    const std::array<double, 3> w = blendWeights(tri.weight, delta, hex);
+    std::array<double, 3> w = blendWeights(taps.weight, delta, hex);
+    double heightSum = 1;
+    if (heightBlended) {
+        // The heights at each tile's own sample point, with its gradients: the tile's transform applies to them too.
+        std::array<double, 3> h;
+        for (size_t i = 0; i < 3; ++i) {
+            const Fetch& f = fetch[i];
+            h[i] = height->texture->sample(f.p[0], f.p[1], f.dx[0], f.dx[1], f.dy[0], f.dy[1])[size_t(height->channel)];
+        }
+        w = heightBlend(w, h, height->width, heightSum);
+    }
     Rgba value{};
     for (size_t c = 0; c < 4; ++c) value[c] = w[0] * samples[0][c] + w[1] * samples[1][c] + w[2] * samples[2][c];
     if (normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
-    return {value, hexColours(w, tri), samples, w};
+    return {value, shown(w), samples, w, heightSum};
 }
 
-double ditherValue(std::array<uint32_t, 2> pixel) { return (pcg3d({pixel[0], pixel[1], 2u})[0] >> 8) / 16777216.0; }
+SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
+                    double dudy, double dvdy, std::array<uint32_t, 2> pixel, const HeightSource* height) {
+    const auto [a, b] = slot.hex.tiling;
+    return evaluateAt(slot, texture, {u * a, v * b}, {dudx * a, dvdx * b}, {dudy * a, dvdy * b}, pixel, height);
+}
+
+SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, const SurfacePoint& point,
+                             std::array<uint32_t, 2> pixel, const HeightSource* height) {
+    const Vec3& N = point.normal;
+    const double length = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
+    const Vec3 n = length > 0 ? Vec3{N[0] / length, N[1] / length, N[2] / length} : Vec3{0, 0, 0};
+    std::array<double, 3> b{1.0 / 3, 1.0 / 3, 1.0 / 3};
+    if (length > 0) {
+        for (size_t k = 0; k < 3; ++k) b[k] = std::pow(std::abs(n[k]), slot.hex.planeSharpness);
+        const double sum = b[0] + b[1] + b[2];
+        for (double& x : b) x /= sum;
+    }
+    // Plane k's st axes are the world axes k + 1 and k + 2 (mod 3): (y, z), (z, x), (x, y).
+    const auto onPlane = [&](const Vec3& p, size_t k) {
+        return Vec2{p[(k + 1) % 3] * slot.hex.tiling[0], p[(k + 2) % 3] * slot.hex.tiling[1]};
+    };
+    const size_t dominant = size_t(std::max_element(b.begin(), b.end()) - b.begin());
+    const bool normal = slot.kind == SlotKind::Normal;
+    SlotResult out{};
+    Vec3 g{};  // normal slots: the blended world-space height gradient
+    for (size_t k = 0; k < 3; ++k) {
+        if (!(b[k] > 0)) continue;
+        const SlotResult r = evaluateAt(slot, texture, onPlane(point.position, k), onPlane(point.dPdx, k), onPlane(point.dPdy, k),
+                                        pixel, height);
+        if (normal) {
+            g[(k + 1) % 3] += b[k] * r.value[0];
+            g[(k + 2) % 3] += b[k] * r.value[1];
+        } else {
+            for (size_t c = 0; c < 4; ++c) out.value[c] += b[k] * r.value[c];
+        }
+        for (size_t c = 0; c < 3; ++c) out.weights[c] += b[k] * r.weights[c];
+        if (k == dominant) {
+            out.samples = r.samples;
+            out.blend = r.blend;
+        }
+    }
+    if (normal) {
+        // The surface gradient (Mikkelsen 2020): g without its component along n.
+        const double along = g[0] * n[0] + g[1] * n[1] + g[2] * n[2];
+        out.value = {g[0] - along * n[0], g[1] - along * n[1], g[2] - along * n[2], 1};
+    }
+    return out;
+}
+
+SurfacePoint previewSphere(double u, double v, double dudx, double dvdx, double dudy, double dvdy) {
+    const double cu = std::cos(u), su = std::sin(u), cv = std::cos(v), sv = std::sin(v);
+    const Vec3 p{cv * su, sv, cv * cu};
+    const Vec3 du{cv * cu, 0, -cv * su}, dv{-sv * su, cv, -sv * cu};  // dP/du, dP/dv
+    const auto chain = [&](double a, double b) { return Vec3{du[0] * a + dv[0] * b, du[1] * a + dv[1] * b, du[2] * a + dv[2] * b}; };
+    return {p, p, chain(dudx, dvdx), chain(dudy, dvdy)};
+}
+
+double valueNoise(Vec2 st, int maskScale, uint32_t salt) {
+    const MaskFrame frame = maskFrame(st, maskScale);
+    const Vec2 corner{std::floor(frame.q[0]), std::floor(frame.q[1])};
+    // The cell in 32-bit unsigned arithmetic, as the shader has it (conversion to uint32_t is modulo 2^32).
+    const uint32_t cx = uint32_t(frame.base[0] + int64_t(corner[0])), cy = uint32_t(frame.base[1] + int64_t(corner[1]));
+    const auto h = [&](uint32_t i, uint32_t j) { return random24(pcg3d({cx + i, cy + j, salt})[0]); };
+    const auto fade = [](double f) { return f * f * f * (f * (6 * f - 15) + 10); };  // quintic: C2 across cells
+    const double sx = fade(frame.q[0] - corner[0]), sy = fade(frame.q[1] - corner[1]);
+    return lerp(lerp(h(0, 0), h(1, 0), sx), lerp(h(0, 1), h(1, 1), sx), sy);
+}
+
+double ditherValue(std::array<uint32_t, 2> pixel) { return random24(pcg3d({pixel[0], pixel[1], 2u})[0]); }
 
 Triangle lattice(Vec2 st, HashMode mode) {
     return mode == HashMode::Paper ? triangleGrid(st) : triangleInSkewed(kStableScale * st[0] - 2 * st[1], 4 * st[1]);
@@ -312,36 +493,38 @@ TileTransform tileTransform(TileId id, const HexTiling& hex) {
     if (hex.mode == HashMode::Paper) return {tileOffset(id), paperAngle(id, hex.rotation)};
     // Three numbers in [0, 1) from the top 24 bits of pcg3d(id, 0), a fourth from pcg3d(id, 1).
     const auto h = pcg3d({uint32_t(id[0]), uint32_t(id[1]), 0u});
-    const double unit = 1.0 / 16777216.0;
-    const double ux = (h[0] >> 8) * unit, uy = (h[1] >> 8) * unit, uz = (h[2] >> 8) * unit;
+    const double ux = random24(h[0]), uy = random24(h[1]), uz = random24(h[2]);
     if (!hex.hasTransforms()) return {{ux, uy}, (uz * 2 - 1) * pi * hex.rotation};
     auto snap = [](double u, int steps) { return steps > 0 ? std::floor(u * steps) / steps : u; };
     const Vec2 offset{snap(ux, hex.offsetSteps[0]) * hex.offset, snap(uy, hex.offsetSteps[1]) * hex.offset};
     const double a = snap(uz, hex.rotationSteps);
     const double degrees = hex.rotationRange[0] + (hex.rotationRange[1] - hex.rotationRange[0]) * a;
-    const double v = (pcg3d({uint32_t(id[0]), uint32_t(id[1]), 1u})[0] >> 8) * unit;
+    const double v = random24(pcg3d({uint32_t(id[0]), uint32_t(id[1]), 1u})[0]);
     return {offset, degrees * pi / 180 * hex.rotation, hex.scaleRange[0] + (hex.scaleRange[1] - hex.scaleRange[0]) * v};
 }
 
-std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view) {
+std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view, const HeightSource* height) {
     std::vector<SlotResult> out;
     out.reserve(size_t(view.width) * size_t(view.height));
     const auto [u0, v0, u1, v1] = view.uvRect;
     const double dudx = (u1 - u0) / view.width, dvdy = (v1 - v0) / view.height;
+    const bool triplanar = slot.hex.projection == Projection::Triplanar;
     for (int j = 0; j < view.height; ++j)
         for (int i = 0; i < view.width; ++i) {
             const double u = u0 + (i + 0.5) / view.width * (u1 - u0), v = v0 + (j + 0.5) / view.height * (v1 - v0);
-            out.push_back(evaluate(slot, texture, u, v, dudx, 0, 0, dvdy, {uint32_t(i), uint32_t(j)}));
+            const std::array<uint32_t, 2> pixel{uint32_t(i), uint32_t(j)};
+            out.push_back(triplanar ? evaluateTriplanar(slot, texture, previewSphere(u, v, dudx, 0, 0, dvdy), pixel, height)
+                                    : evaluate(slot, texture, u, v, dudx, 0, 0, dvdy, pixel, height));
         }
     return out;
 }
 
-Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output) {
+Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output, const HeightSource* height) {
     Image image;
     image.width = view.width;
     image.height = view.height;
     image.rgba.resize(size_t(view.width) * size_t(view.height) * 4);
-    const std::vector<SlotResult> results = evaluateView(slot, texture, view);
+    const std::vector<SlotResult> results = evaluateView(slot, texture, view, height);
     for (size_t p = 0; p < results.size(); ++p) {
         const SlotResult& r = results[p];
         const Rgba out = output == Output::Value ? r.value : Rgba{r.weights[0], r.weights[1], r.weights[2], 1};

@@ -34,6 +34,7 @@
 namespace hexc::reference {
 
 using Vec2 = std::array<double, 2>;
+using Vec3 = std::array<double, 3>;
 using Rgba = std::array<double, 4>;
 // Integer lattice coordinates of a hex tile centre (Listing 1's vertex). Exact here; the shader keeps them
 // in 32 bits, which only the hash and Listing 7's colour index see (both defined on the low 32 bits).
@@ -89,6 +90,10 @@ struct TileTransform {
 };
 TileTransform tileTransform(TileId id, const HexTiling& hex);
 
+// The value noise of the noise masks (docs/material-format.md#mask) at st, in [0, 1]: maskScale cells per unit of
+// st, corner values from pcg3d(cell, salt).x; salt 3 for "noise", 4 + k for noise3's k-th noise.
+double valueNoise(Vec2 st, int maskScale, uint32_t salt);
+
 // The 1-tap variant's per-pixel dither value in [0, 1): pcg3d of (column, row, 2), top 24 bits.
 double ditherValue(std::array<uint32_t, 2> pixel);
 
@@ -101,26 +106,65 @@ std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, con
                                    const HexTiling& hex);
 
 struct SlotResult {
-    Rgba value;                    // colour/scalar slots: blended RGBA; normal slots: (dH/ds, dH/dt, 0, 1)
-    std::array<double, 3> weights; // blend weights shown as Listing 7 colours; (1, 0, 0) without hex-tiling
-    std::array<Rgba, 3> samples;   // each tile's sample, in value's form (derivatives rotated back)
-    std::array<double, 3> blend;   // each tile's final weight (Eq. 1 and the gain), in the order of samples
+    Rgba value;                    // colour/scalar slots: blended RGBA; normal slots: (dH/ds, dH/dt, 0, 1), or with the
+                                   // triplanar projection the world-space surface gradient (x, y, z, 1)
+    std::array<double, 3> weights; // blend weights as the weights output shows them: Listing 7 colours for the hex
+                                   // mask, the mask's own order otherwise; (1, 0, 0) without hex-tiling
+    // Each tile's sample, in the form of evaluateAt's value (derivatives rotated back to st), and its final weight
+    // (mask, Eq. 1, gain, height) in the same order; the checker's third tile repeats its second with weight 0.
+    // With the triplanar projection: those of the plane with the largest b_k (the first of equal ones).
+    std::array<Rgba, 3> samples;
+    std::array<double, 3> blend;
+    double heightSum = 1;  // height blending: sum_j W_j max(a_j - max a + width, 0) before normalising (for error bounds)
 };
 
-// The slot at uv with screen-space uv gradients: st = uv * slot.hex.tiling, then hex-tiling (Listings 3 and 4) or,
-// when slot.hex.enabled is false, one sample at st. Colour slots weigh tiles by luminance (Eq. 4), scalar slots by
-// their channel's value, normal slots by slope (Eq. 3) of the derivative (Listing 9, flipped with slot.flipY).
-// The texture's own srgb flag decides decoding; the slot's colour space is the caller's to apply when loading.
-// HashMode::Paper follows Listings 1, 2, 5 and 6; HashMode::Stable its specification in docs/material-format.md.
-// `pixel`: the pixel's integer position (column, row), which the 1-tap variant's dither hashes.
+// A height-blended slot's heights (docs/material-format.md#height-blending): the height slot's texture and channel,
+// and the slot's transition width.
+struct HeightSource {
+    const SampledTexture* texture = nullptr;
+    int channel = 0;
+    double width = 0.2;
+};
+
+// The slot at st = uv * tiling with screen-space st gradients dx = d(st)/dx, dy = d(st)/dy: the slot's mask
+// (docs/material-format.md#mask; hex: Listings 3 and 4) or, when slot.hex.enabled is false, one sample at st.
+// Colour slots weigh tiles by luminance (Eq. 4), scalar slots by their channel's value, normal slots by slope
+// (Eq. 3) of the derivative (Listing 9, flipped with slot.flipY). The texture's own srgb flag decides decoding; the
+// slot's colour space is the caller's to apply when loading. HashMode::Paper follows Listings 1, 2, 5 and 6;
+// HashMode::Stable its specification in docs/material-format.md; the checker and noise masks are specified for
+// stable mode only (the parser rejects paper mode with them). `pixel`: the pixel's integer position (column, row),
+// which the 1-tap variant's dither hashes. `height`: required when the slot has height_blend (unless taps is 1,
+// which cannot height-blend); its width is the one used, not slot.heightBlend's.
+SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel = {0, 0},
+                      const HeightSource* height = nullptr);
+
+// evaluateAt at st = uv * slot.hex.tiling, with uv gradients.
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
-                    double dudy, double dvdy, std::array<uint32_t, 2> pixel = {0, 0});
+                    double dudy, double dvdy, std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr);
+
+// A surface point for the triplanar projection: world position, normal (any length) and the position's
+// screen-space gradients.
+struct SurfacePoint {
+    Vec3 position, normal, dPdx, dPdy;
+};
+
+// The slot with the triplanar projection (docs/material-format.md#triplanar-projection) at a surface point:
+// each plane with b_k > 0 evaluated by evaluateAt, colours blended by b_k, normal derivatives turned into a
+// world-space surface gradient.
+SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, const SurfacePoint& point,
+                             std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr);
+
+// The value and weights templates' preview surface for triplanar materials: the unit sphere with u, v as
+// longitude and latitude (radians), P = N = (cos v sin u, sin v, cos v cos u); dPdx, dPdy from the uv gradients.
+SurfacePoint previewSphere(double u, double v, double dudx, double dvdx, double dudy, double dvdy);
 
 enum class Output { Value, Weights };  // Weights: (w.x, w.y, w.z, 1) per pixel
 
-Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output);
+// Every pixel of a view, row by row (row 0 at the top), with its details: the slot at the pixel centre's uv, or
+// for the triplanar projection at previewSphere of it.
+std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view,
+                                     const HeightSource* height = nullptr);
 
-// Every pixel of a view, row by row (row 0 at the top), with its details.
-std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view);
+Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output, const HeightSource* height = nullptr);
 
 }  // namespace hexc::reference

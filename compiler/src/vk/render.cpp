@@ -73,7 +73,11 @@ const Slot& slotForOutput(const Material& material, RenderOutput output, const s
 Material renderedMaterial(const Material& material, RenderOutput output, const std::string& slotName) {
     if (output == RenderOutput::Shaded) return material;
     Material m = material;
-    m.slots = {slotForOutput(material, output, slotName)};
+    const Slot& shown = slotForOutput(material, output, slotName);
+    m.slots = {shown};
+    // A height-blended slot also reads its height slot's texture.
+    for (const Slot& s : material.slots)
+        if (shown.heightBlend && s.name == shown.heightBlend->slot && s.name != shown.name) m.slots.push_back(s);
     m.templateName = output == RenderOutput::Weights ? "weights" : "value";
     return m;
 }
