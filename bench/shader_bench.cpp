@@ -100,7 +100,7 @@ const std::vector<Method>& methods() {
         // shows. The oblique template gives every pixel a normal that weighs all three planes (its error is not
         // comparable and not measured).
         {"triplanar-face-on", with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}})},
-        {"triplanar-3-planes", with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}}), {}, {}, "bench/triplanar-oblique.glsl"},
+        {"triplanar-3-planes", with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}}), {}, json::object(), "bench/triplanar-oblique.glsl"},
     };
     return table;
 }
