@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 
 #include "hexc/material.h"
 #include "reference/reference.h"
@@ -196,15 +195,8 @@ Check checkAgainstReference(const Material& m, vk::RenderOutput output, const Vi
     std::string why;
     const Slot& slot = m.slots[0];
     Image gpu = vk::render(*runner(&why), m, output, "", view, target);
-    std::optional<reference::SampledTexture> heights;
-    reference::HeightSource height;
-    if (slot.heightBlend)
-        for (const Slot& h : m.slots)
-            if (h.name == slot.heightBlend->slot) {
-                heights.emplace(loadTexture(h.texturePath, h.colorSpace == ColorSpace::Srgb));
-                height = {&*heights, h.channel, slot.heightBlend->width};
-            }
-    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view, slot.heightBlend ? &height : nullptr);
+    const reference::Heights heights(m, slot);
+    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view, heights.source());
     // The height map is 8-bit linear data, sampled at the view's levels like the slot.
     const double eh = sampleError(level, false);
     Check check;
@@ -602,6 +594,21 @@ TEST(RenderCommand, Errors) {
     EXPECT_EQ(err, "hexc: --uv-rect expects 4 numbers, got `0,0,1`\n");
     EXPECT_EQ(runHexc("render materials/rock.json -o /tmp/x.tiff", &err), 3);
     EXPECT_EQ(runHexc("render materials/invalid/falloff_zero.json -o /tmp/x.png", &err), 1);
+    EXPECT_EQ(runHexc("render materials/rock_triplanar.json --output normal -o /tmp/x.png", &err), 1);
+    EXPECT_EQ(err, "hexc: slot `normal` is triplanar: it returns a world-space surface gradient; use the derivative output\n");
+}
+
+// The reference of a height-blended slot reads its height slot (without it, the reference refuses to evaluate).
+TEST(RenderCommand, ReferenceOfAHeightBlendedSlot) {
+    std::filesystem::path file = std::filesystem::temp_directory_path() / "hb_cpu.pfm";
+    ASSERT_EQ(runHexc("render materials/rock_blend.json --output albedo --size 32x32 --uv-rect 0.1,0.2,0.2,0.3 --reference -o " + file.string()), 0);
+    Material m = *parseMaterialFile("materials/rock_blend.json").material;
+    const reference::Heights heights(m, m.slots[0]);
+    ASSERT_NE(heights.source(), nullptr);
+    Image ref = reference::render(m.slots[0], sampled(m.slots[0]), {32, 32, {0.1, 0.2, 0.2, 0.3}}, reference::Output::Value, heights.source());
+    Texture cpu = loadTexture(file, false);
+    for (size_t i = 0; i < ref.rgba.size(); i += 4)
+        for (size_t c = 0; c < 3; ++c) ASSERT_EQ(cpu.rgba32f[i + c], ref.rgba[i + c]) << i;  // PFM holds RGB
 }
 
 TEST(PreviewCommand, WritesALabelledSheet) {

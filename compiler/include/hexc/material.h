@@ -95,5 +95,6 @@ std::string_view toString(SlotKind kind);
 std::string_view toString(ColorSpace space);
 std::string_view toString(HashMode mode);
 std::string_view toString(Mask mask);
+std::string_view toString(Projection projection);
 
 }  // namespace hexc

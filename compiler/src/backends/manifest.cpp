@@ -24,7 +24,7 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
               {"split_coordinates", h.splitCoordinates},
               {"mask", toString(h.mask)},
               {"taps", h.taps == 1 ? 1 : h.maskTaps()},
-              {"projection", h.projection == Projection::Triplanar ? "triplanar" : "uv"}}},
+              {"projection", toString(h.projection)}}},
         };
         if (h.mask != Mask::Hex) slot["hextiling"]["maskscale"] = h.maskScale;
         if (h.projection == Projection::Triplanar) slot["hextiling"]["planesharpness"] = h.planeSharpness;

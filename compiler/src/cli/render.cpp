@@ -32,7 +32,9 @@ Pixel (i, j), row j = 0 at the top, shows the material at its centre
   uv = (U0 + (i + 0.5) / W * (U1 - U0),  V0 + (j + 0.5) / H * (V1 - V0))
 with exact screen-space UV derivatives (U1 - U0) / W and (V1 - V0) / H. Slot tiling applies on top of uv.
 albedo: RGBA as sampled (linear); derivative: (dH/du, dH/dv, 0, 1); normal: the tangent-space normal
-encoded n * 0.5 + 0.5; weights: the three hex-tile weights (Listing 7). PFM keeps floats exactly; PNG
+encoded n * 0.5 + 0.5; weights: the three hex-tile weights (Listing 7). Triplanar materials are shown on
+the unit sphere, uv being longitude and latitude in radians; their derivative output is the world-space
+surface gradient (x, y, z, 1), and normal is not offered. PFM keeps floats exactly; PNG
 clamps to [0, 1] and stores 8 bits without sRGB encoding.
 )";
 
@@ -173,7 +175,9 @@ int renderCommand(const std::vector<std::string>& args) {
         if (useReference) {
             const Slot& s = vk::slotForOutput(*material, output, slot);
             reference::SampledTexture texture(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb));
-            Image image = reference::render(s, texture, view, output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value);
+            const reference::Heights heights(*material, s);
+            Image image = reference::render(s, texture, view, output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
+                                            heights.source());
             if (s.kind == SlotKind::Scalar)  // as the GPU shows it: (s, s, s, 1)
                 for (size_t i = 0; i < image.rgba.size(); i += 4) image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];
             if (output == vk::RenderOutput::Normal) vk::derivativeToNormalMap(image);

@@ -61,7 +61,7 @@ std::string injectedCode(const ShaderPlan& plan) {
         out += replaceAll(sections.at("texture"), {{"$name", sp.slot->name}, {"$binding", std::to_string(sp.binding)}}) + "\n";
     const SlotPlan& first = *std::find_if(plan.slots.begin(), plan.slots.end(), [](const SlotPlan& sp) { return !sp.heightOnly; });
     out += replaceAll(sections.at("first"), {{"$name", first.slot->name}, {"$kind", std::string(toString(first.slot->kind))},
-                                             {"$projection", first.slot->hex.projection == Projection::Triplanar ? "triplanar" : "uv"}}) +
+                                             {"$projection", std::string(toString(first.slot->hex.projection))}}) +
            "\n";
     for (const SlotPlan& sp : plan.slots) {
         if (sp.heightOnly) continue;

@@ -580,5 +580,6 @@ std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }
 std::string_view toString(ColorSpace space) { return kColorSpaces[size_t(space)]; }
 std::string_view toString(HashMode mode) { return kModes[size_t(mode)]; }
 std::string_view toString(Mask mask) { return kMasks[size_t(mask)]; }
+std::string_view toString(Projection projection) { return kProjections[size_t(projection)]; }
 
 }  // namespace hexc

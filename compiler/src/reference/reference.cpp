@@ -415,6 +415,15 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
     return {value, shown(w), samples, w, heightSum};
 }
 
+Heights::Heights(const Material& material, const Slot& slot) {
+    if (!slot.heightBlend) return;
+    for (const Slot& h : material.slots)
+        if (h.name == slot.heightBlend->slot) {
+            texture_ = std::make_unique<SampledTexture>(loadTexture(h.texturePath, h.colorSpace == ColorSpace::Srgb));
+            source_ = {texture_.get(), h.channel, slot.heightBlend->width};
+        }
+}
+
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
                     double dudy, double dvdy, std::array<uint32_t, 2> pixel, const HeightSource* height) {
     const auto [a, b] = slot.hex.tiling;

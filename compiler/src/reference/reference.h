@@ -26,6 +26,7 @@
 //     tile offset by about 0.004 in st.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "hexc/image.h"
@@ -124,6 +125,18 @@ struct HeightSource {
     const SampledTexture* texture = nullptr;
     int channel = 0;
     double width = 0.2;
+};
+
+// The heights a slot of `material` blends by, loaded from its height slot's texture (none for a slot without
+// height_blend).
+class Heights {
+public:
+    Heights(const Material& material, const Slot& slot);
+    const HeightSource* source() const { return texture_ ? &source_ : nullptr; }
+
+private:
+    std::unique_ptr<SampledTexture> texture_;
+    HeightSource source_;
 };
 
 // The slot at st = uv * tiling with screen-space st gradients dx = d(st)/dx, dy = d(st)/dy: the slot's mask

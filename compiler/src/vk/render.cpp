@@ -44,7 +44,10 @@ Image renderShader(Runner& runner, const std::string& templateFile, const std::v
     return std::move(runner.render(request).image);
 }
 
-const Slot& slotForOutput(const Material& material, RenderOutput output, const std::string& slotName) {
+namespace {
+
+// The slot an output shows, by kind only (slotForOutput adds what the projection rules out).
+const Slot& fittingSlot(const Material& material, RenderOutput output, const std::string& slotName) {
     auto fits = [&](const Slot& s) {
         switch (output) {
         case RenderOutput::Albedo: return s.kind != SlotKind::Normal;
@@ -68,6 +71,16 @@ const Slot& slotForOutput(const Material& material, RenderOutput output, const s
     for (const Slot& s : material.slots)
         if (fits(s)) return s;
     throw std::invalid_argument("material `" + material.name + "` has no " + what);
+}
+
+}  // namespace
+
+const Slot& slotForOutput(const Material& material, RenderOutput output, const std::string& slotName) {
+    const Slot& s = fittingSlot(material, output, slotName);
+    // A triplanar normal slot returns a world-space surface gradient, which no tangent-space encoding shows.
+    if (output == RenderOutput::Normal && s.hex.projection == Projection::Triplanar)
+        throw std::invalid_argument("slot `" + s.name + "` is triplanar: it returns a world-space surface gradient; use the derivative output");
+    return s;
 }
 
 Material renderedMaterial(const Material& material, RenderOutput output, const std::string& slotName) {
