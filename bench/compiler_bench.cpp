@@ -23,7 +23,7 @@
 #include "hexc/material.h"
 #include "plan/plan.h"
 #include "machine.h"
-#include "spirv/spirv.h"
+#include "hexc/spirv.h"
 
 namespace hexc::bench {
 namespace {

@@ -29,7 +29,7 @@
 #include "measures.h"
 #include "plot.h"
 #include "reference/reference.h"
-#include "spirv/spirv.h"
+#include "hexc/spirv.h"
 #include "strf.h"
 #include "vk/precision.h"
 #include "vk/render.h"
@@ -527,11 +527,12 @@ int run(const fs::path& resultsDir) {
     // The precision stress report (the same measurement as tests/stress_test.cpp).
     std::cout << "  precision far from the origin" << std::endl;
     std::vector<vk::PrecisionRow> precision;
+    const vk::ProbeTextures kProbe{"materials/textures/rock_albedo.png", "materials/textures/rock_normal.png"};
     for (auto [mode, split] : {std::pair{HashMode::Stable, false}, std::pair{HashMode::Paper, false}}) {
-        auto rows = vk::measurePrecision(*runner, resultsDir / "precision", mode, split, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
+        auto rows = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", mode, split, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
         precision.insert(precision.end(), rows.begin(), rows.end());
     }
-    auto split = vk::measurePrecision(*runner, resultsDir / "precision", HashMode::Stable, true, {0, 1e3, 1e6, 1e9});
+    auto split = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", HashMode::Stable, true, {0, 1e3, 1e6, 1e9});
     precision.insert(precision.end(), split.begin(), split.end());
     writeFile(resultsDir / "precision.md", vk::precisionTable(precision));
     std::cout << "\n" << vk::precisionTable(precision);

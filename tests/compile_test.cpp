@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "hexc/compiler.h"
-#include "spirv/spirv.h"
+#include "hexc/spirv.h"
 #include "support.h"
 
 using namespace hexc;
@@ -149,6 +149,18 @@ TEST(Compile, TemplateErrorsPointIntoTheTemplate) {
     EXPECT_EQ(r.diagnostics[0].loc.file, t.string());
     EXPECT_EQ(r.diagnostics[0].loc.line, 6);
     EXPECT_NE(r.diagnostics[0].message.find("undefined_thing"), std::string::npos) << r.diagnostics[0].message;
+}
+
+// A library user may build a Material in code, skipping the parser's template check: compile() still answers
+// with a diagnostic, not an exception.
+TEST(Compile, UnknownBuiltinTemplateInACodeBuiltMaterialIsADiagnostic) {
+    Material m = load("materials/rock.json");
+    m.templateName = "pbr";
+    CompileResult r;
+    ASSERT_NO_THROW(r = compile(m));
+    ASSERT_FALSE(r.ok());
+    EXPECT_TRUE(r.files.empty());
+    EXPECT_NE(formatAll(r.diagnostics).find("no built-in template `pbr`"), std::string::npos) << formatAll(r.diagnostics);
 }
 
 TEST(Compile, TemplateWithoutInjectionPointIsRejected) {

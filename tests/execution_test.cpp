@@ -9,7 +9,7 @@
 
 #include "hexc/material.h"
 #include "reference/reference.h"
-#include "spirv/spirv.h"
+#include "hexc/spirv.h"
 #include "vk/precision.h"
 #include "vk/render.h"
 #include "support.h"

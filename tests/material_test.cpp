@@ -83,7 +83,7 @@ const InvalidFile kInvalidFiles[] = {
     {"taps_mismatch_checker",
      "13:20: error: /slots/0/hextiling: `taps` 3 does not fit mask `checker`, which has 2 taps; expected 2 or 1 (one dithered fetch)"},
     {"template_unknown",
-     "4:15: error: /template: unknown template \"pbr\"; expected a built-in template (`lit`, `unlit`, `weights`, `value`, `depth`, `shadow`) or a path "
+     "4:15: error: /template: unknown template \"pbr\"; expected a built-in template (`depth`, `lit`, `shadow`, `unlit`, `value`, `weights`) or a path "
      "to a .glsl file"},
     {"tiling_wrong_length",
      "6:15: error: /hextiling/tiling: expected a number > 0 or an array [u, v] of two numbers > 0, got an array of 1"},
@@ -163,7 +163,7 @@ TEST(Validation, NormalMapNeedsThreeChannels) {
 TEST(Validation, TemplateTypoSuggestsTheBuiltin) {
     EXPECT_EQ(diagnose(std::string(R"({"name": "m", "template": "litt", "slots": [)") + kSlot + "]}"),
               std::vector<std::string>{"materials/t.json:1:27: error: /template: unknown template \"litt\"; expected a built-in "
-                                       "template (`lit`, `unlit`, `weights`, `value`, `depth`, `shadow`) or a path to a .glsl file (did you mean `lit`?)"});
+                                       "template (`depth`, `lit`, `shadow`, `unlit`, `value`, `weights`) or a path to a .glsl file (did you mean `lit`?)"});
 }
 
 TEST(Validation, MissingTemplateFile) {

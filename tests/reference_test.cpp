@@ -987,12 +987,16 @@ TEST(ReferenceHeightBlend, IsTheDocumentedFormulaAtEachTilesSample) {
                 for (size_t c = 0; c < 4; ++c)
                     EXPECT_NEAR(h.value[c], h.blend[0] * r.samples[0][c] + h.blend[1] * r.samples[1][c] + h.blend[2] * r.samples[2][c], 1e-12);
                 EXPECT_NEAR(h.blend[0] + h.blend[1] + h.blend[2], 1, 1e-12);
-                if (mask == Mask::Checker) EXPECT_EQ(h.blend[2], 0);
+                if (mask == Mask::Checker) {
+                    EXPECT_EQ(h.blend[2], 0);
+                }
                 const size_t highest = size_t(std::max_element(a.begin(), a.end()) - a.begin());
                 EXPECT_GE(h.blend[highest], r.blend[highest] - 1e-12);  // the highest tile only gains
                 largestGain = std::max(largestGain, h.blend[highest] - r.blend[highest]);
             }
-            if (width < 1) EXPECT_GT(largestGain, 0.1);
+            if (width < 1) {
+                EXPECT_GT(largestGain, 0.1);
+            }
         }
 }
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hexc/compiler.h"
-#include "spirv/spirv.h"
+#include "hexc/spirv.h"
 #include "support.h"
 #include "vk/precision.h"
 #include "vk/render.h"

@@ -18,7 +18,8 @@ using hexc::test::runner;
 
 namespace {
 
-
+// Tests run from the source root (tests/CMakeLists.txt).
+const vk::ProbeTextures kProbe{"materials/textures/rock_albedo.png", "materials/textures/rock_normal.png"};
 const std::filesystem::path kWork = std::filesystem::temp_directory_path() / "hexc_stress";
 
 // Stable mode's error must not grow with |uv|: the lattice is reduced exactly and the hash is integer, so the
@@ -26,18 +27,20 @@ const std::filesystem::path kWork = std::filesystem::temp_directory_path() / "he
 // error), 1/255 is the requirement up to |uv| = 1e6.
 TEST(Precision, StableModeStaysWithinOne255UpTo1e6) {
     REQUIRE_VULKAN();
-    auto stable = vk::measurePrecision(*runner(&whyNoVulkan), kWork, HashMode::Stable, false, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
-    auto paper = vk::measurePrecision(*runner(&whyNoVulkan), kWork, HashMode::Paper, false, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
+    auto stable = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Stable, false, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
+    auto paper = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Paper, false, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
     std::vector<vk::PrecisionRow> all = stable;
     all.insert(all.end(), paper.begin(), paper.end());
     std::printf("%s", vk::precisionTable(all).c_str());  // paper mode is reported, not required
     for (const auto& r : stable)
-        if (r.magnitude <= 1e6) EXPECT_LE(r.errors.max, 1.0 / 255) << r.path << " at |uv| " << r.magnitude;
+        if (r.magnitude <= 1e6) {
+            EXPECT_LE(r.errors.max, 1.0 / 255) << r.path << " at |uv| " << r.magnitude;
+        }
 }
 
 TEST(Precision, SplitCoordinatesStayWithinOne255UpToAnOriginOf1e9) {
     REQUIRE_VULKAN();
-    auto rows = vk::measurePrecision(*runner(&whyNoVulkan), kWork, HashMode::Stable, true, {0, 1e3, 1e6, 1e9});
+    auto rows = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Stable, true, {0, 1e3, 1e6, 1e9});
     std::printf("%s", vk::precisionTable(rows).c_str());
     for (const auto& r : rows) EXPECT_LE(r.errors.max, 1.0 / 255) << r.path << " at origin " << r.magnitude;
 }

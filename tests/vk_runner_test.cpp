@@ -12,7 +12,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "common/templates.h"
+#include "vk/shaders.h"
 #include "hexc/image.h"
 #include "vk/runner.h"
 
@@ -80,7 +80,7 @@ class VkRunnerTest : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         runner_ = Runner::create(&whyNot_);
-        if (runner_) vertex_ = compileGlsl(hexc::embeddedText("fullscreen.vert.glsl"), EShLangVertex);
+        if (runner_) vertex_ = compileGlsl(hexc::vk::harnessShaders().at("fullscreen.vert.glsl"), EShLangVertex);
     }
     static void TearDownTestSuite() { runner_.reset(); }
 
@@ -116,7 +116,7 @@ TEST_F(VkRunnerTest, UvMatchesPixelCentreMapping) {
     ASSERT_EQ(image.height, 4);
     for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 8; ++i) {
-            // The mapping documented in templates/fullscreen.vert.glsl; row j = 0 is the top.
+            // The mapping documented in templates/harness/fullscreen.vert.glsl; row j = 0 is the top.
             const double u = 0.25 + (i + 0.5) / 8 * (1.25 - 0.25);
             const double v = 0.5 + (j + 0.5) / 4 * (2.5 - 0.5);
             const float* p = image.at(i, j);

@@ -8,7 +8,7 @@
 #include "codegen/codegen.h"
 #include "hexc/compiler.h"
 #include "plan/plan.h"
-#include "spirv/spirv.h"
+#include "hexc/spirv.h"
 
 namespace hexc {
 

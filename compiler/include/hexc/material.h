@@ -15,7 +15,7 @@ enum class SlotKind { Color, Scalar, Normal };
 enum class ColorSpace { Srgb, Linear };
 // How tile offsets and rotations are derived from the lattice ids. `Stable` (the default): an integer
 // hash of exactly reduced lattice ids, identical on every target and precise far from the origin
-// (templates/hextiling.glsl, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
+// (templates/library/hextiling.glsl, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
 enum class HashMode { Stable, Paper };
 // What decides the blend weights (docs/material-format.md#mask): the paper's hex lattice (3 taps), two offset
 // square grids (2 taps), or three globally transformed copies under one or three value noises (3 taps).

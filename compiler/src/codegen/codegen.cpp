@@ -34,7 +34,7 @@ std::string literal(double v) {
 
 std::string injectedCode(const ShaderPlan& plan) {
     const auto sections = snippetSections("slots.glsl");
-    std::string out = lineDirective(1, "hexc/hextiling.glsl") + embeddedText("hextiling.glsl");
+    std::string out = lineDirective(1, "hexc/hextiling.glsl") + *embeddedText("hextiling.glsl");
     out += lineDirective(1, "hexc/generated") + "\n";
     if (plan.slots.empty()) return out;
 

@@ -1,15 +1,10 @@
 #pragma once
-// Files embedded into libhexc at build time (compiler/cmake/embed.cmake).
+// Templates and snippets embedded into libhexc at build time (compiler/cmake/embed.cmake): file name -> text.
+#include <map>
 #include <string>
-#include <vector>
 
 namespace hexc {
 
-struct EmbeddedFile {
-    std::string name;      // file name, e.g. "lit.glsl"
-    std::string contents;
-};
-
-const std::vector<EmbeddedFile>& embeddedTemplates();
+const std::map<std::string, std::string>& embeddedTemplates();
 
 }  // namespace hexc

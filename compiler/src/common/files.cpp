@@ -1,4 +1,4 @@
-#include "common/files.h"
+#include "hexc/files.h"
 
 #include <fstream>
 #include <sstream>

@@ -2,7 +2,7 @@
 // image writing (.pfm, .png), always through a temporary file and a rename.
 #include "hexc/image.h"
 
-#include "common/files.h"
+#include "hexc/files.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

@@ -1,7 +1,6 @@
 #include "common/templates.h"
 
 #include <sstream>
-#include <stdexcept>
 
 #include "common/embedded.h"
 
@@ -9,21 +8,19 @@ namespace hexc {
 
 std::vector<std::string> builtinTemplateNames() {
     std::vector<std::string> names;
-    for (const EmbeddedFile& f : embeddedTemplates())
-        if (f.contents.find("\n#include <hexc>") != std::string::npos)
-            names.push_back(f.name.substr(0, f.name.size() - 5));  // drop ".glsl"
+    for (const auto& [name, text] : embeddedTemplates())
+        if (text.find("\n#include <hexc>") != std::string::npos) names.push_back(name.substr(0, name.size() - 5));  // drop ".glsl"
     return names;
 }
 
-const std::string& embeddedText(const std::string& fileName) {
-    for (const EmbeddedFile& f : embeddedTemplates())
-        if (f.name == fileName) return f.contents;
-    throw std::out_of_range("no embedded template " + fileName);
+const std::string* embeddedText(const std::string& fileName) {
+    auto it = embeddedTemplates().find(fileName);
+    return it == embeddedTemplates().end() ? nullptr : &it->second;
 }
 
 std::map<std::string, std::string> snippetSections(const std::string& fileName) {
     std::map<std::string, std::string> sections;
-    std::istringstream in(embeddedText(fileName));
+    std::istringstream in(*embeddedText(fileName));  // only hexc's own snippet files
     std::string line, current;
     while (std::getline(in, line)) {
         if (line.rfind("//@ ", 0) == 0) {

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "common/files.h"
+#include "hexc/files.h"
 #include "common/suggest.h"
 #include "common/templates.h"
 #include "hexc/image.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <regex>
 
-#include "common/files.h"
+#include "hexc/files.h"
 #include "common/templates.h"
 
 namespace hexc {
@@ -81,7 +81,12 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         plan.templateSource = std::move(*text);
     } else {
         plan.templateName = "templates/" + ref + ".glsl";
-        plan.templateSource = embeddedText(ref + ".glsl");
+        const std::string* text = embeddedText(ref + ".glsl");
+        if (!text) {
+            error("no built-in template `" + ref + "`");
+            return plan;
+        }
+        plan.templateSource = *text;
     }
     if (!std::regex_search(plan.templateSource, std::regex("^#version[^\n]*\n"))) error("a template must start with a `#version` line");
     static const std::regex include("(^|\n)#include <hexc>[ \t]*(\r?\n|$)");

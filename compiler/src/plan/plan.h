@@ -42,7 +42,7 @@ struct LatticePlan {
 
 struct SlotPlan {
     const Slot* slot = nullptr;
-    std::string section;         // snippet in templates/slots.glsl, e.g. "color.hex"; empty when heightOnly
+    std::string section;         // snippet in templates/library/slots.glsl, e.g. "color.hex"; empty when heightOnly
     uint32_t binding = 0;        // texture binding (set 0)
     size_t lattice = 0;          // index into ShaderPlan::lattices
     bool metric = true;          // the falloff metric code is emitted (falloffcontrast != 0)

@@ -1,4 +1,4 @@
-#include "spirv/spirv.h"
+#include "hexc/spirv.h"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>

@@ -1,4 +1,4 @@
-#include "cli/build.h"
+#include "build.h"
 
 #include <algorithm>
 #include <atomic>
@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/depfile.h"
-#include "cli/incremental.h"
-#include "cli/outputs.h"
-#include "common/files.h"
-#include "common/hash.h"
+#include "depfile.h"
+#include "incremental.h"
+#include "outputs.h"
+#include "hexc/files.h"
+#include "hash.h"
 #include "hexc/scene.h"
 
 namespace hexc::cli {

@@ -1,4 +1,4 @@
-#include "cli/render.h"
+#include "render.h"
 
 #include <stb_easy_font.h>
 
@@ -6,7 +6,7 @@
 #include <map>
 #include <sstream>
 
-#include "cli/options.h"
+#include "options.h"
 #include "hexc/material.h"
 #include "reference/reference.h"
 #include "vk/render.h"

@@ -23,15 +23,21 @@ struct PrecisionRow {
     ImageErrors errors;
 };
 
-// Renders the example rock albedo (colour path) and normal map (normal path, compared as the encoded normal
+// The PNGs the probe tiles: a colour texture and a tangent-space normal map (the callers use materials/textures/
+// rock_albedo.png and rock_normal.png).
+struct ProbeTextures {
+    std::filesystem::path color, normal;
+};
+
+// Renders the colour texture (colour path) and normal map (normal path, compared as the encoded normal
 // n * 0.5 + 0.5) at tiling 4 in a 64 x 64 view at uv ~ (X, X) for each X in `magnitudes`, and compares every
 // pixel with the reference evaluated at the uv and derivatives the rasteriser gave that pixel (read back with
-// templates/probe.frag.glsl). The textures are converted to float, so 8-bit filtering does not hide or add
+// templates/harness/probe.frag.glsl). The textures are converted to float, so 8-bit filtering does not hide or add
 // error; the view keeps a texel per pixel where float32 resolves it, else half an ulp of X per pixel.
 // split: the view is near 0 and X is the origin, passed as split coordinates (hexc/origin.h).
 // `workDir` receives the float textures. Throws on a render failure.
-std::vector<PrecisionRow> measurePrecision(Runner& runner, const std::filesystem::path& workDir, HashMode mode, bool split,
-                                           const std::vector<double>& magnitudes);
+std::vector<PrecisionRow> measurePrecision(Runner& runner, const ProbeTextures& inputs, const std::filesystem::path& workDir, HashMode mode,
+                                           bool split, const std::vector<double>& magnitudes);
 
 // A Markdown table of rows: mode, path, |uv|, max, mean, share over 1/255.
 std::string precisionTable(const std::vector<PrecisionRow>& rows);

@@ -1,4 +1,4 @@
-#include "cli/depfile.h"
+#include "depfile.h"
 
 namespace hexc::cli {
 namespace {
@@ -15,7 +15,10 @@ std::string escaped(const std::filesystem::path& p) {
 
 std::string joined(const std::vector<std::filesystem::path>& paths) {
     std::string out;
-    for (const auto& p : paths) out += (out.empty() ? "" : " ") + escaped(p);
+    for (const auto& p : paths) {
+        if (!out.empty()) out += ' ';
+        out += escaped(p);
+    }
     return out;
 }
 

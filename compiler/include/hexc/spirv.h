@@ -1,5 +1,6 @@
 #pragma once
-// The SPIR-V stage: glslang front ends (GLSL and HLSL, in process) and SPIRV-Tools validation and
+// The SPIR-V stage, public because it is useful alone (the harness compiles its own shaders and the emitted
+// HLSL/GLSL with it): glslang front ends (GLSL and HLSL, in process) and SPIRV-Tools validation and
 // optimisation. Errors come back as diagnostics located at the file and line glslang reports.
 #include <cstdint>
 #include <string>
@@ -21,7 +22,7 @@ struct SpirvResult {
 
 // Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
 // the source in diagnostics when it has no #line names. HLSL registers map to hexc's Vulkan layout:
-// b0 -> binding 0, s0 -> binding 1, t<i> -> binding 2+i (see plan.h); OpenGL texture unit i -> 2+i.
+// b0 -> binding 0, s0 -> binding 1, t<i> -> binding 2+i (the layout docs/cli.md describes); OpenGL texture unit i -> 2+i.
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
                            SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main");
 

@@ -4,8 +4,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "common/templates.h"
-#include "spirv/spirv.h"
+#include "hexc/spirv.h"
+#include "vk/shaders.h"
 
 namespace hexc::vk {
 namespace {
@@ -17,7 +17,7 @@ std::vector<uint32_t> spirvOrThrow(SpirvResult r) {
 
 const std::vector<uint32_t>& vertexShader() {
     static const std::vector<uint32_t> words =
-        spirvOrThrow(compileToSpirv(embeddedText("fullscreen.vert.glsl"), ShaderStage::Vertex, "templates/fullscreen.vert.glsl"));
+        spirvOrThrow(compileToSpirv(harnessShaders().at("fullscreen.vert.glsl"), ShaderStage::Vertex, "templates/harness/fullscreen.vert.glsl"));
     return words;
 }
 
@@ -38,7 +38,7 @@ void setView(RenderRequest& request, const View& view) {
 Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view) {
     RenderRequest request;
     request.vertexSpirv = vertexShader();
-    request.fragmentSpirv = spirvOrThrow(compileToSpirv(embeddedText(templateFile), ShaderStage::Fragment, "templates/" + templateFile));
+    request.fragmentSpirv = spirvOrThrow(compileToSpirv(harnessShaders().at(templateFile), ShaderStage::Fragment, "templates/harness/" + templateFile));
     request.uniformData = uniforms;
     setView(request, view);
     return std::move(runner.render(request).image);

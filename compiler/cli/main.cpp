@@ -1,9 +1,9 @@
 // hexc: a thin command line over libhexc: compile (cli/build), render and preview (cli/render).
 #include <iostream>
 
-#include "cli/build.h"
-#include "cli/options.h"
-#include "cli/render.h"
+#include "build.h"
+#include "options.h"
+#include "render.h"
 #include "hexc/compiler.h"
 
 using namespace hexc;

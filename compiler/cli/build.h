@@ -1,7 +1,7 @@
 #pragma once
 // `hexc MATERIAL.json|SCENE.json ... -o DIR`: compile, skip what is up to date, deduplicate scene shaders,
 // write outputs atomically (all or nothing), the depfile and a report.
-#include "cli/options.h"
+#include "options.h"
 
 namespace hexc::cli {
 

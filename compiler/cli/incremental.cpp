@@ -1,10 +1,10 @@
-#include "cli/incremental.h"
+#include "incremental.h"
 
 #include <fstream>
 
-#include "common/files.h"
-#include "common/hash.h"
-#include "common/templates.h"
+#include "hexc/files.h"
+#include "hash.h"
+#include "hexc/templates.h"
 
 namespace hexc::cli {
 namespace {
@@ -38,8 +38,8 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     for (const auto& f : inputFiles(material, options)) addFile(h, f);
     for (const auto& f : extra) addFile(h, f);
     // Built-in templates are part of the binary; hash their text too, not only the version.
-    for (const char* f : {"hextiling.glsl", "slots.glsl"}) h.add(embeddedText(f));
-    if (!material.templateName.ends_with(".glsl") && options.templateFile.empty()) h.add(embeddedText(material.templateName + ".glsl"));
+    for (const std::string& f : {std::string("hextiling.glsl"), std::string("slots.glsl"), material.templateName + ".glsl"})
+        if (const std::string* text = embeddedText(f)) h.add(*text);
     return h.hex();
 }
 

@@ -1,8 +1,8 @@
-#include "cli/outputs.h"
+#include "outputs.h"
 
 #include <fstream>
 
-#include "common/files.h"
+#include "hexc/files.h"
 
 namespace hexc::cli {
 

@@ -2,7 +2,6 @@
 // on any driver; lavapipe is the one it is tested on.
 #include "vk/runner.h"
 
-#include <vulkan/vulkan.h>
 
 #include <algorithm>
 #include <bit>
@@ -12,6 +11,8 @@
 #include <functional>
 #include <stdexcept>
 #include <string_view>
+
+#include "vk/loader.h"
 
 namespace hexc::vk {
 namespace {
@@ -557,6 +558,7 @@ Runner::~Runner() = default;
 
 std::unique_ptr<Runner> Runner::create(std::string* whyNot) {
     try {
+        loadVulkan();
         return std::unique_ptr<Runner>(new Runner(openContext()));
     } catch (const std::exception& e) {
         if (whyNot) *whyNot = e.what();

@@ -50,11 +50,10 @@ ImageErrors compareImages(const Image& a, const Image& b, int channels) {
     return e;
 }
 
-std::vector<PrecisionRow> measurePrecision(Runner& runner, const std::filesystem::path& workDir, HashMode mode, bool split,
-                                           const std::vector<double>& magnitudes) {
+std::vector<PrecisionRow> measurePrecision(Runner& runner, const ProbeTextures& inputs, const std::filesystem::path& workDir, HashMode mode,
+                                           bool split, const std::vector<double>& magnitudes) {
     std::filesystem::create_directories(workDir);
-    const std::filesystem::path textures[] = {floatCopy("materials/textures/rock_albedo.png", workDir),
-                                              floatCopy("materials/textures/rock_normal.png", workDir)};
+    const std::filesystem::path textures[] = {floatCopy(inputs.color, workDir), floatCopy(inputs.normal, workDir)};
     std::vector<PrecisionRow> rows;
     for (int path = 0; path < 2; ++path) {
         std::string json = std::string(R"({"name": "precision", "slots": [{"name": "s", "kind": ")") + (path ? "normal" : "color") +
