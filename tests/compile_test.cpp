@@ -247,7 +247,7 @@ TEST(Cli, UsageErrors) {
 TEST(Cli, MissingMaterialFile) {
     std::string err;
     EXPECT_EQ(runHexc("materials/nope.json -o " + freshDir("hexc_cli_none").string(), &err), 1);
-    EXPECT_EQ(err, "materials/nope.json: error: cannot open material file\nhexc: nothing written\n");
+    EXPECT_EQ(err, "materials/nope.json: error: cannot read material file: No such file or directory\nhexc: nothing written\n");
 }
 
 }  // namespace

@@ -168,7 +168,7 @@ TEST(Validation, TemplateTypoSuggestsTheBuiltin) {
 
 TEST(Validation, MissingTemplateFile) {
     EXPECT_EQ(diagnose(std::string(R"({"name": "m", "template": "mine.glsl", "slots": [)") + kSlot + "]}"),
-              std::vector<std::string>{"materials/t.json:1:27: error: /template: cannot read template file materials/mine.glsl"});
+              std::vector<std::string>{"materials/t.json:1:27: error: /template: cannot read template file materials/mine.glsl: no such file"});
 }
 
 TEST(Validation, WrongTypes) {

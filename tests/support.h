@@ -22,11 +22,12 @@ inline vk::Runner* runner(std::string* why) {
 }
 
 // Runs the hexc executable with `args`; returns its exit code and, if asked, what it wrote to stderr.
-// The log is named after the running test, so tests may run in parallel.
-inline int runHexc(const std::string& args, std::string* err = nullptr) {
+// The log is named after the running test, so tests may run in parallel. `prefix`: shell commands run first
+// (e.g. `ulimit -v N;`) or a wrapper command (e.g. `timeout 20`).
+inline int runHexc(const std::string& args, std::string* err = nullptr, const std::string& prefix = "") {
     std::filesystem::path log = std::filesystem::temp_directory_path() /
                                 (std::string("hexc_stderr_") + testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt");
-    int status = std::system((std::string(HEXC_EXE) + " " + args + " 2> " + log.string() + " > /dev/null").c_str());
+    int status = std::system((prefix + " " + HEXC_EXE + " " + args + " 2> " + log.string() + " > /dev/null").c_str());
     if (err) {
         std::ifstream in(log);
         err->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

@@ -1,5 +1,6 @@
 #pragma once
 // Reading inputs whole, and writing outputs so they appear whole or not at all.
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -7,10 +8,16 @@
 
 namespace hexc {
 
-// The file's bytes, or nullopt when it cannot be opened.
-std::optional<std::string> readFile(const std::filesystem::path& file);
+// Inputs (materials, scenes, templates) are small; the limit keeps a wrong path or hostile file from taking
+// the machine's memory.
+constexpr uint64_t kMaxInputBytes = 64ull << 20;
 
-// Outputs are written under a temporary name in the same folder, then renamed.
+// The file's bytes, read once; nullopt when it cannot be opened, is not a regular file (a FIFO, a device such
+// as /dev/zero, a folder) or exceeds kMaxInputBytes, with the reason in *whyNot when given.
+std::optional<std::string> readFile(const std::filesystem::path& file, std::string* whyNot = nullptr);
+
+// Outputs are written under a temporary name unique to the writer in the same folder, then renamed; an existing
+// target that is not a regular file (symlink, device, FIFO, folder) is refused with std::runtime_error.
 // Calls write(temporary path) and renames the result to `file`; a failed write or rename removes the
 // temporary and throws std::runtime_error naming `file`.
 void writeFileAtomically(const std::filesystem::path& file, const std::function<bool(const std::filesystem::path&)>& write);

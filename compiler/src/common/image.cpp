@@ -117,10 +117,34 @@ bool writePng(const Image& image, const std::filesystem::path& file) {
     return stbi_write_png(file.string().c_str(), image.width, image.height, 4, bytes.data(), image.width * 4) != 0;
 }
 
+// Whether the file is a PNG whose chunks stop before IEND. stbi_info reads only the header, so a truncated PNG
+// would pass validation and fail when an engine loads it; walking the chunk headers costs a few seeks, not a decode.
+bool truncatedPng(const std::filesystem::path& file) {
+    std::error_code ec;
+    const uintmax_t size = std::filesystem::file_size(file, ec);
+    std::ifstream in(file, std::ios::binary);
+    char signature[8];
+    if (ec || !in.read(signature, 8) || std::string_view(signature, 8) != "\x89PNG\r\n\x1a\n") return false;
+    for (uintmax_t at = 8; at + 12 <= size;) {  // after the 8-byte signature: length, type, data, CRC
+        unsigned char header[8];
+        if (!in.seekg(std::streamoff(at)) || !in.read(reinterpret_cast<char*>(header), 8)) return false;
+        const uintmax_t length = uintmax_t(header[0]) << 24 | header[1] << 16 | header[2] << 8 | header[3];
+        if (std::string_view(reinterpret_cast<const char*>(header + 4), 4) == "IEND") return false;
+        at += 12 + length;
+    }
+    return true;
+}
+
 }  // namespace
 
 std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::string* error) {
     TextureInfo info;
+    // Only regular files: opening a FIFO would wait for a writer forever.
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) {
+        *error = std::filesystem::exists(file, ec) ? "not a regular file" : "no such file";
+        return std::nullopt;
+    }
     if (lowerExtension(file) == ".pfm") {
         try {
             std::ifstream in(file, std::ios::binary);
@@ -134,6 +158,10 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
     if (!stbi_info(file.string().c_str(), &info.width, &info.height, &info.channels)) {
         const char* reason = stbi_failure_reason();
         *error = reason ? reason : "cannot read image";
+        return std::nullopt;
+    }
+    if (truncatedPng(file)) {
+        *error = "the PNG is truncated (its chunks end before IEND)";
         return std::nullopt;
     }
     return info;

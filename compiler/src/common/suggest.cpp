@@ -31,6 +31,9 @@ std::optional<std::string> closestMatch(const std::string& word, const std::vect
     std::optional<std::string> best;
     size_t bestDistance = std::max<size_t>(1, word.size() / 3) + 1;
     for (const std::string& c : candidates) {
+        // The distance is at least the length difference: skipping those candidates bounds the work by the
+        // candidates' lengths, whatever the length of the word (a 16 MB unknown key costs nothing).
+        if (std::max(word.size(), c.size()) - std::min(word.size(), c.size()) >= bestDistance) continue;
         size_t d = editDistance(lower(word), lower(c));
         if (d < bestDistance) {
             bestDistance = d;

@@ -1,7 +1,5 @@
 #include "material/json_locator.h"
 
-#include <algorithm>
-
 namespace hexc {
 
 std::string pointerAppend(const std::string& pointer, std::string_view token) {
@@ -18,9 +16,11 @@ std::string pointerAppend(const std::string& pointer, size_t index) {
     return pointer + "/" + std::to_string(index);
 }
 
-TextPos textPosition(std::string_view text, size_t offset) {
-    TextPos p;
-    for (size_t i = 0; i < offset && i < text.size(); ++i) {
+namespace {
+
+// Advances p over text[from, to).
+void advance(TextPos& p, std::string_view text, size_t from, size_t to) {
+    for (size_t i = from; i < to && i < text.size(); ++i) {
         if (text[i] == '\n') {
             ++p.line;
             p.col = 1;
@@ -28,23 +28,46 @@ TextPos textPosition(std::string_view text, size_t offset) {
             ++p.col;  // columns count characters, not UTF-8 continuation bytes
         }
     }
+}
+
+}  // namespace
+
+size_t byteOrderMarkSize(std::string_view text) { return text.starts_with("\xEF\xBB\xBF") ? 3 : 0; }
+
+TextPos textPosition(std::string_view text, size_t offset) {
+    TextPos p;
+    advance(p, text, byteOrderMarkSize(text), offset);
     return p;
 }
 
-JsonLocator::JsonLocator(std::string_view text) : text_(text) {
-    lineStarts_.push_back(0);
-    for (size_t i = 0; i < text.size(); ++i)
-        if (text[i] == '\n') lineStarts_.push_back(i + 1);
+std::optional<size_t> excessiveNesting(std::string_view text) {
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::nullopt;
+}
+
+JsonLocator::JsonLocator(std::string_view text) : text_(text), pos_(byteOrderMarkSize(text)), scanned_(pos_) {
     skipSpace();
     if (pos_ < text_.size()) parseValue("");
 }
 
-TextPos JsonLocator::here() const {
-    // Only the current line is scanned for the column, so locating every value stays linear.
-    size_t line = size_t(std::upper_bound(lineStarts_.begin(), lineStarts_.end(), pos_) - lineStarts_.begin());
-    size_t start = lineStarts_[line - 1];
-    TextPos p = textPosition(text_.substr(start), pos_ - start);
-    return {int(line), p.col};
+TextPos JsonLocator::here() {
+    advance(scannedPos_, text_, scanned_, pos_);  // pos_ only moves forward
+    scanned_ = pos_;
+    return scannedPos_;
 }
 
 TextPos JsonLocator::value(const std::string& pointer) const {

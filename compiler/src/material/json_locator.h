@@ -1,13 +1,24 @@
 #pragma once
 // nlohmann::json keeps no source positions, so this scanner re-reads a document that nlohmann has
 // already accepted and records where every value and every object key starts, keyed by JSON pointer.
-// It also finds duplicate keys, which nlohmann silently merges.
+// It also finds duplicate keys, which nlohmann silently merges. Linear in the text's size; recursion and the
+// pointers it stores are bounded by kMaxJsonDepth, which the text must respect (check with excessiveNesting).
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace hexc {
+
+// Materials and scenes nest 5 levels deep; 32 leaves room and bounds the locator's recursion and memory.
+constexpr int kMaxJsonDepth = 32;
+
+// The offset of the first `[` or `{` that opens a level deeper than kMaxJsonDepth, if any (strings skipped).
+std::optional<size_t> excessiveNesting(std::string_view text);
+
+// A UTF-8 byte order mark at the start of the text takes no column: positions count from after it.
+size_t byteOrderMarkSize(std::string_view text);
 
 struct TextPos {
     int line = 1, col = 1;
@@ -32,11 +43,14 @@ private:
     void parseValue(const std::string& pointer);
     void parseString();
     void skipSpace();
-    TextPos here() const;
+    TextPos here();
 
     std::string_view text_;  // must outlive the locator
     size_t pos_ = 0;
-    std::vector<size_t> lineStarts_;
+    // here() advances from the last position it reported, so locating every value is linear even when the
+    // whole document is one line.
+    size_t scanned_ = 0;
+    TextPos scannedPos_;
     std::map<std::string, TextPos> values_, keys_;
     std::vector<Duplicate> duplicates_;
 };

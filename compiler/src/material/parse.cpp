@@ -276,7 +276,11 @@ private:
         if (!v.is_string()) return "lit";
         if (name.size() > 5 && name.ends_with(".glsl")) {
             std::filesystem::path p = dir_ / name;
-            if (!std::ifstream(p)) error(pointer, "cannot read template file " + p.string());
+            // A status check, not an open: opening a FIFO would block; the plan reads the file (readFile refuses
+            // what is not a regular file).
+            std::error_code ec;
+            if (!std::filesystem::is_regular_file(p, ec))
+                error(pointer, "cannot read template file " + p.string() + (std::filesystem::exists(p, ec) ? ": not a regular file" : ": no such file"));
             return p.string();
         }
         std::vector<std::string> names = builtinTemplateNames();
@@ -512,6 +516,8 @@ std::optional<json> parseJson(std::string_view text, const std::filesystem::path
         diags->push_back({Diagnostic::Severity::Error, {file.string(), p.line, p.col}, "", std::move(message), {}});
         return std::nullopt;
     };
+    if (std::optional<size_t> at = excessiveNesting(text))
+        return syntaxError(*at, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (a material needs 5)");
     try {
         return json::parse(text);
     } catch (const json::parse_error& e) {
@@ -545,10 +551,11 @@ ParseResult parseMaterial(std::string_view text, const std::filesystem::path& fi
 }
 
 ParseResult parseMaterialFile(const std::filesystem::path& file) {
-    std::optional<std::string> text = readFile(file);
+    std::string why;
+    std::optional<std::string> text = readFile(file, &why);
     if (!text) {
         ParseResult r;
-        r.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot open material file", {}});
+        r.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot read material file: " + why, {}});
         return r;
     }
     return parseMaterial(*text, file);
@@ -562,9 +569,10 @@ bool isSceneDocument(std::string_view text) {
 
 SceneParseResult parseSceneFile(const std::filesystem::path& file) {
     SceneParseResult result;
-    std::optional<std::string> text = readFile(file);
+    std::string why;
+    std::optional<std::string> text = readFile(file, &why);
     if (!text) {
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot open scene file", {}});
+        result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot read scene file: " + why, {}});
         return result;
     }
     std::optional<json> doc = parseJson(*text, file, &result.diagnostics);

@@ -73,9 +73,10 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     std::string ref = options.templateFile.empty() ? material.templateName : options.templateFile.string();
     if (ref.ends_with(".glsl")) {
         plan.templateName = ref;
-        std::optional<std::string> text = readFile(ref);
+        std::string why;
+        std::optional<std::string> text = readFile(ref, &why);
         if (!text) {
-            error("cannot read template file");
+            error("cannot read template file: " + why);
             return plan;
         }
         plan.templateSource = std::move(*text);

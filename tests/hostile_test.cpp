@@ -1,0 +1,154 @@
+// Hostile inputs: each case runs the hexc command line under a time and address-space bound and asserts the
+// exit code, the located message where one applies, and that nothing was written.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Generous bounds for a 2-core machine running the suite in parallel; a case that needs more is a bug. The
+// address-space bound includes the binary's own mappings (about 300 MiB with glslang and the C++ runtime).
+constexpr int kSeconds = 20;
+constexpr int kMiB = 1536;
+
+struct Outcome {
+    int exit;         // 124: killed by the time bound
+    std::string err;  // stderr
+};
+
+Outcome runBounded(const std::string& args) {
+    std::string err;
+    int exit = hexc::test::runHexc(args, &err, "ulimit -v " + std::to_string(kMiB * 1024) + "; timeout " + std::to_string(kSeconds));
+    return {exit, err};
+}
+
+class Hostile : public testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("hexc_hostile_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_ / "out");
+    }
+    fs::path write(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name, std::ios::binary) << text;
+        return dir_ / name;
+    }
+    // A valid one-slot material; `extra` is spliced in as more top-level members.
+    std::string material(const std::string& extra = "") const {
+        return R"({"name": "m", "slots": [{"name": "albedo", "kind": "color", "texture": ")" + fs::absolute("materials/textures/rock_albedo.png").string() +
+               "\"}]" + extra + "}";
+    }
+    void expectNothingWritten() const { EXPECT_TRUE(fs::is_empty(dir_ / "out")) << "an output was written"; }
+    std::string out() const { return " -o " + (dir_ / "out").string(); }
+
+    fs::path dir_;
+};
+
+TEST_F(Hostile, DeepNestingIsALocatedErrorNotACrash) {
+    fs::path m = write("deep.json", std::string(50000, '[') + std::string(50000, ']'));
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("deep.json:1:33: error"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("nested deeper than 32 levels"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, AMinifiedMaterialWithManyValuesIsLinear) {
+    // 640 KB on one line: locating each of its 160,000 values must not rescan the line.
+    std::string values;
+    for (int i = 0; i < 160000; ++i) values += i ? ",1.5" : "1.5";
+    fs::path m = write("long_line.json", material(R"(, "junk": [)" + values + "]"));
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("long_line.json:1:"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("/junk: unknown key"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, AHugeUnknownKeyDoesNotAmplifyTheSuggestionWork) {
+    fs::path m = write("huge_key.json", material(", \"" + std::string(16 << 20, 'x') + "\": 1"));
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err.substr(0, 300);
+    EXPECT_NE(o.err.find("huge_key.json:1:"), std::string::npos) << o.err.substr(0, 300);
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, NonRegularMaterialFilesAreRefused) {
+    fs::path fifo = dir_ / "fifo.json";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    for (const std::string& file : {std::string("/dev/zero"), fifo.string(), dir_.string()}) {
+        Outcome o = runBounded(file + out());
+        EXPECT_EQ(o.exit, 1) << file << ": " << o.err;
+        EXPECT_NE(o.err.find("not a regular file"), std::string::npos) << file << ": " << o.err;
+    }
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, AnOversizedMaterialIsRefusedBeforeItIsParsed) {
+    fs::path m = dir_ / "big.json";
+    fs::resize_file(write("big.json", "{"), 100 << 20);  // sparse: 100 MB of zeros after the brace
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("input limit of 64 MiB"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, AByteOrderMarkDoesNotMoveDiagnostics) {
+    fs::path m = write("bom.json", "\xEF\xBB\xBF" + material(",\n  \"tiling\": 4"));
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("bom.json:2:3: error"), std::string::npos) << o.err;
+}
+
+TEST_F(Hostile, ATruncatedPngIsRejectedAtValidation) {
+    std::ifstream in("materials/textures/rock_albedo.png", std::ios::binary);
+    std::string png(3000, '\0');
+    in.read(png.data(), std::streamsize(png.size()));
+    fs::path tex = write("truncated.png", png);
+    fs::path m = write("m.json", R"({"name": "m", "slots": [{"name": "albedo", "kind": "color", "texture": ")" + tex.string() + "\"}]}");
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("m.json:1:"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("truncated"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, OutputsThatAreNotRegularFilesAreNotReplaced) {
+    fs::path target = write("target.txt", "keep");
+    fs::create_symlink(target, dir_ / "out" / "m.frag.spv");
+    fs::path m = write("m.json", material());
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 3) << o.err;
+    EXPECT_NE(o.err.find("not a regular file"), std::string::npos) << o.err;
+    EXPECT_TRUE(fs::is_symlink(dir_ / "out" / "m.frag.spv"));
+    std::ifstream keep(target);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(keep), {}), "keep");
+
+    fs::path fifo = dir_ / "dep.d";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    o = runBounded(m.string() + " -o " + (dir_ / "out2").string() + " --depfile " + fifo.string());
+    EXPECT_EQ(o.exit, 3) << o.err;
+    EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+TEST_F(Hostile, ConcurrentRunsIntoOneFolderAllSucceed) {
+    fs::path m = write("m.json", material());
+    std::vector<int> exits(8, -1);
+    std::vector<std::thread> runs;
+    for (size_t i = 0; i < exits.size(); ++i)
+        runs.emplace_back([&, i] { exits[i] = std::system(("timeout 60 " + std::string(HEXC_EXE) + " -q " + m.string() + out() + " 2>/dev/null").c_str()); });
+    for (auto& t : runs) t.join();
+    for (int e : exits) EXPECT_EQ(e, 0);
+    for (const auto& f : fs::directory_iterator(dir_ / "out")) EXPECT_FALSE(f.path().extension() == ".tmp") << f.path();
+}
+
+}  // namespace
