@@ -36,6 +36,8 @@ bool isSceneDocument(std::string_view text);
 
 // Parses a scene and every material it lists (paths relative to the scene file), with located diagnostics.
 SceneParseResult parseSceneFile(const std::filesystem::path& file);
+// The same on text already read; `file` locates diagnostics and resolves the scene's material paths.
+SceneParseResult parseScene(std::string_view text, const std::filesystem::path& file);
 
 // One (material, pass) pair the scene renders: the material restricted to the pass's slots and template.
 struct Variant {

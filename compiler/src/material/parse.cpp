@@ -575,9 +575,14 @@ SceneParseResult parseSceneFile(const std::filesystem::path& file) {
         result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot read scene file: " + why, {}});
         return result;
     }
-    std::optional<json> doc = parseJson(*text, file, &result.diagnostics);
+    return parseScene(*text, file);
+}
+
+SceneParseResult parseScene(std::string_view text, const std::filesystem::path& file) {
+    SceneParseResult result;
+    std::optional<json> doc = parseJson(text, file, &result.diagnostics);
     if (!doc) return result;
-    Validator v(*text, file);
+    Validator v(text, file);
     Scene scene = v.runScene(*doc);
     result.diagnostics = std::move(v.diags);
     if (!hasErrors(result.diagnostics)) result.scene = std::move(scene);

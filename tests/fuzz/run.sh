@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Runs each libFuzzer target for SECONDS (default 60) from a build configured with clang and -DHEXC_FUZZ=ON:
+#   tests/fuzz/run.sh build-asan 60
+# Seeds: the example, invalid and scene materials (parse, compile) and the built-in templates (template), plus
+# the corpus each target grew in earlier runs (BUILD/fuzz-corpus/TARGET). A crash stops the run with the
+# input saved as BUILD/fuzz-artifacts/TARGET/crash-*; add it to tests/fuzz/regressions/TARGET/ once fixed.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${1:?usage: tests/fuzz/run.sh BUILD_DIR [SECONDS]}
+seconds=${2:-60}
+for target in parse compile template; do
+  corpus=$build/fuzz-corpus/$target seeds=$build/fuzz-seeds/$target artifacts=$build/fuzz-artifacts/$target
+  mkdir -p "$corpus" "$seeds" "$artifacts"
+  if [ "$target" = template ]; then
+    cp templates/builtin/*.glsl "$seeds"/
+  else
+    cp materials/*.json materials/invalid/*.json materials/scenes/*.json "$seeds"/
+  fi
+  echo "fuzz_$target: ${seconds} s"
+  # -rss_limit_mb: hexc's inputs are capped; a run that needs more is a finding. -timeout: one input, seconds.
+  log=$build/fuzz-$target.log
+  if ! "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -dict=tests/fuzz/material.dict \
+      -rss_limit_mb=4096 -timeout=30 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" "$seeds" > "$log" 2>&1; then
+    tail -n 60 "$log"
+    echo "fuzz_$target failed: the input is in $artifacts/" >&2
+    exit 1
+  fi
+  grep -E '^stat::(number_of_executed_units|peak_rss_mb)' "$log"
+done
