@@ -93,18 +93,39 @@ vec2 hexcRotateFromTile(vec2 d, vec2 cs) {
     return vec2(cs.x * d.x - cs.y * d.y, cs.y * d.x + cs.x * d.y);
 }
 
+// What a lattice computes its tiles from, filled by each generated slot function from hexcLattice() (the neutral
+// values). Fields marked "literal" are set from constants chosen by hexc, so the optimiser removes the code of a
+// feature left out rather than computing a no-op at run time: rotation turned off, or no per-tile transforms.
+struct HexcLattice {
+    float rotation;              // rotStrength of Listings 3, 4, 6
+    bool rotate;                 // literal: false, no rotation code
+    // Per-tile transforms (stable mode, docs/material-format.md#per-tile-transforms): the angle drawn from
+    // rotationRange (degrees), in rotationSteps steps when > 0; the texture scaled by a factor drawn from
+    // scaleRange; the offset times `offset`, snapped to an offsetSteps grid when > 0.
+    bool transform;              // literal: false, none of them (the defaults, without their code)
+    vec2 rotationRange;
+    int rotationSteps;           // literal
+    vec2 scaleRange;
+    float offset;
+    ivec2 offsetSteps;           // literal
+    int maskScale;               // literal: checker and noise masks, cells per unit of st
+    bool triple;                 // literal: the noise mask draws three noises
+};
+
+HexcLattice hexcLattice() {
+    return HexcLattice(0.0, false, false, vec2(-180.0, 180.0), 0, vec2(1.0), 1.0, ivec2(0), 1, false);
+}
+
 // Listings 3-4, shared part, `paper` mode: st_i = (st - c_i) R_i + c_i + hash(v_i), gradients rotated
 // with the tile. Derivatives of the continuous st are taken once, before the lattice.
-// `rotate`, here and below, is a literal chosen by hexc: false when the material turns rotation off, so the
-// optimiser removes the rotation code entirely rather than rotating by a zero angle at run time.
-HexcTiles hexcTilesPaper(vec2 st, vec2 dSTdx, vec2 dSTdy, float rotStrength, bool rotate) {
+HexcTiles hexcTilesPaper(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTiles t;
     t.invScale = vec3(1.0);
     hexcTriangleGrid(st, t.w, t.v1, t.v2, t.v3);
     t.channel = hexcHexChannels(t.v1, t.v3);
-    t.rot1 = rotate ? hexcRotationPaper(t.v1, rotStrength) : vec2(1.0, 0.0);
-    t.rot2 = rotate ? hexcRotationPaper(t.v2, rotStrength) : vec2(1.0, 0.0);
-    t.rot3 = rotate ? hexcRotationPaper(t.v3, rotStrength) : vec2(1.0, 0.0);
+    t.rot1 = l.rotate ? hexcRotationPaper(t.v1, l.rotation) : vec2(1.0, 0.0);
+    t.rot2 = l.rotate ? hexcRotationPaper(t.v2, l.rotation) : vec2(1.0, 0.0);
+    t.rot3 = l.rotate ? hexcRotationPaper(t.v3, l.rotation) : vec2(1.0, 0.0);
     vec2 c1 = hexcTileCentre(t.v1), c2 = hexcTileCentre(t.v2), c3 = hexcTileCentre(t.v3);
     t.st1 = hexcRotateToTile(st - c1, t.rot1) + c1 + hexcHashPaper(t.v1);
     t.st2 = hexcRotateToTile(st - c2, t.rot2) + c2 + hexcHashPaper(t.v2);
@@ -138,35 +159,22 @@ uvec3 hexcPcg3d(uvec3 v) {
     return v;
 }
 
-// Per-tile transforms (stable mode, docs/material-format.md#per-tile-transforms): the angle drawn from
-// rotationRange (degrees), in rotationSteps steps when > 0; the texture scaled by a factor drawn from
-// scaleRange; the offset times `offset`, snapped to an offsetSteps grid when > 0.
-struct HexcTransform {
-    vec2 rotationRange;
-    int rotationSteps;
-    vec2 scaleRange;
-    float offset;
-    ivec2 offsetSteps;
-};
-
 // A tile's offset in [0, 1)^2, rotation (cos, sin) of an angle in [-pi, pi) * rotStrength and 1 / scale,
-// from the top 24 bits of each hash word (exact in float32). `transform` is a literal: false keeps the
-// defaults (no range, steps or scale) without their code.
-void hexcStableTile(ivec2 id, float rotStrength, bool rotate, bool transform, HexcTransform tf, out vec2 offset, out vec2 rot,
-                    out float invScale) {
+// from the top 24 bits of each hash word (exact in float32).
+void hexcStableTile(ivec2 id, HexcLattice l, out vec2 offset, out vec2 rot, out float invScale) {
     vec3 u = vec3(hexcPcg3d(uvec3(uvec2(id), 0u)) >> 8u) * (1.0 / 16777216.0);
     offset = u.xy;
-    float angle = (u.z * 2.0 - 1.0) * hexcPi * rotStrength;
+    float angle = (u.z * 2.0 - 1.0) * hexcPi * l.rotation;
     invScale = 1.0;
-    if (transform) {
-        vec2 steps = vec2(tf.offsetSteps);
-        offset = mix(offset, floor(offset * steps) / steps, greaterThan(steps, vec2(0.0))) * tf.offset;
-        float a = tf.rotationSteps > 0 ? floor(u.z * float(tf.rotationSteps)) / float(tf.rotationSteps) : u.z;
-        angle = radians(mix(tf.rotationRange.x, tf.rotationRange.y, a)) * rotStrength;
+    if (l.transform) {
+        vec2 steps = vec2(l.offsetSteps);
+        offset = mix(offset, floor(offset * steps) / steps, greaterThan(steps, vec2(0.0))) * l.offset;
+        float a = l.rotationSteps > 0 ? floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps) : u.z;
+        angle = radians(mix(l.rotationRange.x, l.rotationRange.y, a)) * l.rotation;
         float v = float(hexcPcg3d(uvec3(uvec2(id), 1u)).x >> 8u) * (1.0 / 16777216.0);
-        invScale = 1.0 / mix(tf.scaleRange.x, tf.scaleRange.y, v);
+        invScale = 1.0 / mix(l.scaleRange.x, l.scaleRange.y, v);
     }
-    rot = rotate ? vec2(cos(angle), sin(angle)) : vec2(1.0, 0.0);
+    rot = l.rotate ? vec2(cos(angle), sin(angle)) : vec2(1.0, 0.0);
 }
 
 // Tile centre of local (reduced) ids: the inverse of skewed = (s x - 2 y, 4 y).
@@ -176,20 +184,20 @@ vec2 hexcStableCentre(ivec2 local) {
 
 // Places tile i: its transform from the hash of `id`, the sample point from `d` (st relative to the point the
 // tile rotates and scales about) and the gradients, rotated and scaled with the tile.
-void hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, float rotStrength, bool rotate, bool transform, HexcTransform tf,
-                   out vec2 st, out vec2 dx, out vec2 dy, out vec2 rot, out float invScale) {
+void hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out vec2 st, out vec2 dx, out vec2 dy, out vec2 rot,
+                   out float invScale) {
     vec2 offset;
-    hexcStableTile(id, rotStrength, rotate, transform, tf, offset, rot, invScale);
-    st = (rotate ? hexcRotateToTile(d, rot) : d) * invScale + offset;
-    dx = (rotate ? hexcRotateToTile(dSTdx, rot) : dSTdx) * invScale;
-    dy = (rotate ? hexcRotateToTile(dSTdy, rot) : dSTdy) * invScale;
+    hexcStableTile(id, l, offset, rot, invScale);
+    st = (l.rotate ? hexcRotateToTile(d, rot) : d) * invScale + offset;
+    dx = (l.rotate ? hexcRotateToTile(dSTdx, rot) : dSTdx) * invScale;
+    dy = (l.rotate ? hexcRotateToTile(dSTdy, rot) : dSTdy) * invScale;
 }
 
 // st = (28, 1) * cell + st_local: `cell` is a split-coordinates origin (0 otherwise), whose lattice shift is
 // added to the ids in 32-bit unsigned arithmetic (ids are only hashed, so they may wrap). With split coordinates
 // the engine computes the cell and the offset in st from a double origin each frame (docs/precision.md) and the
 // mesh supplies a small st relative to it, whose gradients are precise.
-HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, float rotStrength, bool rotate, bool transform, HexcTransform tf) {
+HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l) {
     HexcTiles t;
     // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small.
     float kx = floor(st.x / 28.0), ky = floor(st.y);
@@ -202,9 +210,9 @@ HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, float rot
     t.v2 = ivec2(uvec2(l2) + shift);
     t.v3 = ivec2(uvec2(l3) + shift);
     t.channel = hexcHexChannels(t.v1, t.v3);
-    hexcPlaceTile(t.v1, r - hexcStableCentre(l1), dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
-    hexcPlaceTile(t.v2, r - hexcStableCentre(l2), dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
-    hexcPlaceTile(t.v3, r - hexcStableCentre(l3), dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st3, t.dx3, t.dy3, t.rot3, t.invScale.z);
+    hexcPlaceTile(t.v1, r - hexcStableCentre(l1), dSTdx, dSTdy, l, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
+    hexcPlaceTile(t.v2, r - hexcStableCentre(l2), dSTdx, dSTdy, l, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
+    hexcPlaceTile(t.v3, r - hexcStableCentre(l3), dSTdx, dSTdy, l, t.st3, t.dx3, t.dy3, t.rot3, t.invScale.z);
     return t;
 }
 
@@ -214,9 +222,9 @@ float hexcTaper(vec2 f) {
     return min(min(f.x, 1.0 - f.x), min(f.y, 1.0 - f.y));
 }
 
-HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, int scale, float rotStrength, bool rotate, bool transform,
-                           HexcTransform tf) {
+HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l) {
     HexcTiles t;
+    int scale = l.maskScale;
     vec2 k = floor(st);
     vec2 q = (st - k) * float(scale);
     uvec2 base = uint(scale) * (uvec2(ivec2(k)) + uvec2(28u * uint(cell.x), uint(cell.y)));
@@ -231,8 +239,8 @@ HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, int scal
     t.v3 = t.v2;
     t.channel = ivec3(0, 1, 1);
     float s = 1.0 / float(scale);
-    hexcPlaceTile(t.v1, (fa - 0.5) * s, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
-    hexcPlaceTile(t.v2, (fb - 0.5) * s, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
+    hexcPlaceTile(t.v1, (fa - 0.5) * s, dSTdx, dSTdy, l, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
+    hexcPlaceTile(t.v2, (fb - 0.5) * s, dSTdx, dSTdy, l, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
     t.st3 = t.st2; t.dx3 = t.dx2; t.dy3 = t.dy2; t.rot3 = t.rot2; t.invScale.z = t.invScale.y;
     return t;
 }
@@ -247,16 +255,16 @@ float hexcValueNoise(uvec2 c, vec2 f, uint salt) {
 }
 
 // The noise masks: three copies of the texture, each with one transform (ids (0,0), (1,0), (2,0)) about the st
-// origin, weighed by three bands of one value noise or by three noises (`triple`, a literal).
-HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, int scale, bool triple, float rotStrength, bool rotate, bool transform,
-                         HexcTransform tf) {
+// origin, weighed by three bands of one value noise or by three noises (`triple`).
+HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTiles t;
+    int scale = l.maskScale;
     vec2 k = floor(st);
     vec2 q = (st - k) * float(scale);
     vec2 fl = floor(q);
     uvec2 c = uint(scale) * uvec2(ivec2(k)) + uvec2(ivec2(fl));
     vec2 f = q - fl;
-    if (triple) {
+    if (l.triple) {
         vec3 n = vec3(hexcValueNoise(c, f, 4u), hexcValueNoise(c, f, 5u), hexcValueNoise(c, f, 6u));
         t.w = n / max(max(n.x, n.y), max(n.z, 1.0 / 16777216.0));
     } else {
@@ -267,9 +275,9 @@ HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, int scale, bool triple
     t.v2 = ivec2(1, 0);
     t.v3 = ivec2(2, 0);
     t.channel = ivec3(0, 1, 2);
-    hexcPlaceTile(t.v1, st, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
-    hexcPlaceTile(t.v2, st, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
-    hexcPlaceTile(t.v3, st, dSTdx, dSTdy, rotStrength, rotate, transform, tf, t.st3, t.dx3, t.dy3, t.rot3, t.invScale.z);
+    hexcPlaceTile(t.v1, st, dSTdx, dSTdy, l, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
+    hexcPlaceTile(t.v2, st, dSTdx, dSTdy, l, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
+    hexcPlaceTile(t.v3, st, dSTdx, dSTdy, l, t.st3, t.dx3, t.dy3, t.rot3, t.invScale.z);
     return t;
 }
 
@@ -300,19 +308,37 @@ vec3 hexcGain3(vec3 x, float r, int kInt) {
     return res / (res.x + res.y + res.z);
 }
 
+// How a slot weighs its tiles' samples, filled by each generated slot function from hexcBlend() (the neutral
+// values). Fields marked "literal" are set from constants chosen by hexc: metric and gain are false when
+// falloffcontrast is 0 or falloff is 0.5, so the optimiser removes the metric (and the samples' luminance)
+// or the gain instead of computing a no-op; a whole-number exponent or gain exponent (> 0) replaces a pow.
+struct HexcBlend {
+    float falloff;               // r of Eq. 5 / Listing 8
+    float falloffContrast;       // beta of Eq. 3-4
+    float exponent;              // gamma of Eq. 1
+    bool metric;                 // literal: the falloff metric is computed
+    bool gain;                   // literal: the gain is applied
+    int exponentInt;             // literal: > 0, gamma is this whole number
+    int gainInt;                 // literal: > 0, the gain's k is this whole number
+    int taps;                    // literal: 3, or 2 for the checker mask (no third fetch)
+    bool height;                 // literal: blend by the heights in channel heightLuma of the height texture
+    vec4 heightLuma;
+    float heightWidth;
+};
+
+HexcBlend hexcBlend() {
+    return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, vec4(0.0), 1.0);
+}
+
 // Two guards keep the weights finite, non-negative and normalised outside the paper's domain, and change
 // nothing inside it: a negative metric (HDR texels with negative values) counts as 0, and when every
 // weighted term is 0 (falloffcontrast 1 over three black samples) the metric is ignored.
-// `metric`, `gain`, `exponentInt` and `gainInt` are literals chosen by hexc: metric and gain are false when
-// falloffcontrast is 0 or falloff is 0.5, so the optimiser removes the metric (and the samples' luminance)
-// or the gain instead of computing a no-op; a whole-number exponent or gain exponent (> 0) replaces a pow.
-vec3 hexcBlendWeights(vec3 w, vec3 Dw, float falloffContrast, float exponent, float falloff, bool metric, bool gain,
-                      int exponentInt, int gainInt) {
-    vec3 wg = exponentInt > 0 ? hexcPowInt(w, exponentInt) : pow(w, vec3(exponent));
-    vec3 W = metric ? mix(vec3(1.0), max(Dw, vec3(0.0)), falloffContrast) * wg : wg;
+vec3 hexcBlendWeights(vec3 w, vec3 Dw, HexcBlend b) {
+    vec3 wg = b.exponentInt > 0 ? hexcPowInt(w, b.exponentInt) : pow(w, vec3(b.exponent));
+    vec3 W = b.metric ? mix(vec3(1.0), max(Dw, vec3(0.0)), b.falloffContrast) * wg : wg;
     float sum = W.x + W.y + W.z;
     W = sum > 0.0 ? W / sum : wg / (wg.x + wg.y + wg.z);
-    if (gain && (gainInt > 0 || falloff != 0.5)) W = hexcGain3(W, falloff, gainInt);
+    if (b.gain && (b.gainInt > 0 || b.falloff != 0.5)) W = hexcGain3(W, b.falloff, b.gainInt);
     return W;
 }
 
@@ -326,24 +352,27 @@ vec3 hexcHeightBlend(vec3 W, vec3 h, float width) {
 }
 
 // The heights of the tiles' samples from the height slot's texture (`luma` picks its channel); `taps` = 2 (the
-// checker) leaves the third, weightless tile unsampled. `height`, `taps`: literals chosen by hexc.
+// checker) leaves the third, weightless tile unsampled.
 vec3 hexcTileHeights(texture2D tex, sampler samp, HexcTiles t, vec4 luma, int taps) {
     return vec3(dot(textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1), luma), dot(textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2), luma),
                 taps > 2 ? dot(textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3), luma) : 0.0);
 }
 
+// The unit vector picking channel c (0 = r ... 3 = a): a scalar map's falloff metric, a height slot's height.
+vec4 hexcChannel(int c) {
+    // Selects of constants rather than a vector comparison: with a literal c, the optimiser folds them.
+    return c == 0 ? vec4(1.0, 0.0, 0.0, 0.0) : c == 1 ? vec4(0.0, 1.0, 0.0, 0.0) : c == 2 ? vec4(0.0, 0.0, 1.0, 0.0) : vec4(0.0, 0.0, 0.0, 1.0);
+}
+
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
-// a unit vector picking the channel for scalar maps. `taps`: 3, or 2 for the checker mask (no third fetch).
-// `height` (a literal): blend by the heights in channel `heightLuma` of `heightTex`.
-vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, vec4 luma,
-               bool metric, bool gain, int exponentInt, int gainInt, int taps, bool height, texture2D heightTex, vec4 heightLuma,
-               float heightWidth, out vec3 weights) {
+// a unit vector picking the channel for scalar maps. `heightTex`: the height slot's texture (b.height).
+vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma, texture2D heightTex, out vec3 weights) {
     vec4 c1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1);
     vec4 c2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2);
-    vec4 c3 = taps > 2 ? textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3) : vec4(0.0);
+    vec4 c3 = b.taps > 2 ? textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3) : vec4(0.0);
     vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
-    vec3 W = hexcBlendWeights(t.w, Dw, falloffContrast, exponent, falloff, metric, gain, exponentInt, gainInt);
-    if (height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, heightLuma, taps), heightWidth);
+    vec3 W = hexcBlendWeights(t.w, Dw, b);
+    if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b.heightLuma, b.taps), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
     return W.x * c1 + W.y * c2 + W.z * c3;
 }
@@ -364,16 +393,14 @@ vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, boo
 
 // Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
-vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, float falloff, float falloffContrast, float exponent, bool flipY,
-               bool metric, bool gain, int exponentInt, int gainInt, int taps, bool height, texture2D heightTex, vec4 heightLuma,
-               float heightWidth, out vec3 weights) {
+vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, texture2D heightTex, out vec3 weights) {
     // A tile scaled by s shows H(p / s), whose slope is the sampled one over s.
     vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1) * t.invScale.x;
     vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2) * t.invScale.y;
-    vec2 d3 = taps > 2 ? hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3) * t.invScale.z : vec2(0.0);
+    vec2 d3 = b.taps > 2 ? hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3) * t.invScale.z : vec2(0.0);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-    vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), falloffContrast, exponent, falloff, metric, gain, exponentInt, gainInt);
-    if (height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, heightLuma, taps), heightWidth);
+    vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), b);
+    if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b.heightLuma, b.taps), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
     return W.x * d1 + W.y * d2 + W.z * d3;
 }
@@ -388,8 +415,9 @@ struct HexcTap {
     vec3 pick;                   // one-hot: which of the three tiles
 };
 
-HexcTap hexcDitherTile(HexcTiles t, float exponent, float falloff, bool gain, int exponentInt, int gainInt) {
-    vec3 W = hexcBlendWeights(t.w, vec3(1.0), 0.0, exponent, falloff, false, gain, exponentInt, gainInt);
+HexcTap hexcDitherTile(HexcTiles t, HexcBlend b) {
+    b.metric = false;
+    vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);
     float u = float(hexcPcg3d(uvec3(uvec2(gl_FragCoord.xy), 2u)).x >> 8u) * (1.0 / 16777216.0);
     int i = u < W.x ? 0 : (u < W.x + W.y ? 1 : 2);
     HexcTap tap;
@@ -402,16 +430,14 @@ HexcTap hexcDitherTile(HexcTiles t, float exponent, float falloff, bool gain, in
     return tap;
 }
 
-vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, float falloff, float exponent, bool gain, int exponentInt, int gainInt,
-                out vec3 weights) {
-    HexcTap tap = hexcDitherTile(t, exponent, falloff, gain, exponentInt, gainInt);
+vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, out vec3 weights) {
+    HexcTap tap = hexcDitherTile(t, b);
     weights = hexcShowWeights(tap.pick, t.channel);
     return textureGrad(sampler2D(tex, samp), tap.st, tap.dx, tap.dy);
 }
 
-vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, float falloff, float exponent, bool flipY, bool gain, int exponentInt,
-                int gainInt, out vec3 weights) {
-    HexcTap tap = hexcDitherTile(t, exponent, falloff, gain, exponentInt, gainInt);
+vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, out vec3 weights) {
+    HexcTap tap = hexcDitherTile(t, b);
     weights = hexcShowWeights(tap.pick, t.channel);
     return hexcRotateFromTile(hexcSampleDeriv(tex, samp, tap.st, tap.dx, tap.dy, flipY), tap.rot) * tap.invScale;
 }

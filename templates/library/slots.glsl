@@ -1,123 +1,150 @@
 // hexc per-slot snippets. codegen picks, per slot, a sampling section (`//@ <kind>.<hex|hex1|plain>`), which
-// defines `hexcAt_$name` (the slot at st with its gradients and split-coordinates cell), and a projection section
-// (`uv`, `uv.split`, `triplanar`), which defines the public `hexc_$name` from it; plus the resource sections.
-// Placeholders: $name (slot name), $binding, $tiling, $rotation, $falloff, $falloffcontrast, $exponent,
-// $origincell, $originoffset, $planesharpness (uniform members, constants or literals), $lattice (a `lattice.*`
-// section), $tf (a HexcTransform), $transform, $rotate, $metric, $gain, $exponentint, $gainint, $taps, $maskscale,
-// $triple, $explicit (literal feature switches and whole numbers, 0 = none), $height (height-blend arguments),
-// $luma, $channel, $flipy, $type (the slot's result type), $kind, $members.
-// Each slot gets `hexc_$name(...)` and an overload with `out vec3 weights` (the weights output).
+// defines `hexcAt_${name}` (the slot at st with its gradients and split-coordinates cell), and a coordinates section
+// (`uv`, `uv.split`, `triplanar`), which defines the public `hexc_${name}` from it; plus the resource sections.
+// Tokens `${...}` are replaced in one pass; one codegen does not know is an error. ${name}: the slot's name;
+// ${binding}; ${tiling}, ${planesharpness}, ${origincell}, ${originoffset}: the parameters (uniform members or
+// constants) the coordinates read; ${tiles}: the slot's `lattice.*` section; ${lattice}, ${blend}: `set` lines
+// filling the slot's HexcLattice and HexcBlend (templates/library/hextiling.glsl) from the plan; ${heightmap}: the
+// slot whose texture holds its heights (itself when it blends by none); ${channel}: a scalar slot's channel
+// (0 = r ... 3 = a); ${flipy}, ${explicit}: literal switches; ${type}: the slot's result type; ${kind},
+// ${projection}; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
+// Each slot gets `hexc_${name}(...)` and an overload with `out vec3 weights` (the weights output).
 
 //@ params
 layout(set = 0, binding = 0, std140) uniform HexcParams {
-$members
+${members}
 } hexcParams;
 
 //@ constant
-layout(constant_id = $id) const $type $name = $value;
+layout(constant_id = ${id}) const ${type} ${name} = ${value};
 
 //@ constant.vec2
-layout(constant_id = $id) const float $name_x = $x;
-layout(constant_id = $idy) const float $name_y = $y;
-const vec2 $name = vec2($name_x, $name_y);
+layout(constant_id = ${id}) const float ${name}_x = ${x};
+layout(constant_id = ${idy}) const float ${name}_y = ${y};
+const vec2 ${name} = vec2(${name}_x, ${name}_y);
 
 //@ sampler
-layout(set = 0, binding = $binding) uniform sampler hexcSampler;
+layout(set = 0, binding = ${binding}) uniform sampler hexcSampler;
 
 //@ first
-#define HEXC_FIRST_SLOT hexc_$name
-#define HEXC_FIRST_KIND_$kind 1
-#define HEXC_PROJECTION_$projection 1
+#define HEXC_FIRST_SLOT hexc_${name}
+#define HEXC_FIRST_KIND_${kind} 1
+#define HEXC_PROJECTION_${projection} 1
 
 //@ texture
-layout(set = 0, binding = $binding) uniform texture2D hexcTex_$name;
-#define HEXC_HAS_$name 1
+layout(set = 0, binding = ${binding}) uniform texture2D hexcTex_${name};
+#define HEXC_HAS_${name} 1
 
-//@ transform
-HexcTransform($rotationrange, $rotationsteps, $scalerange, $offset, ivec2($offsetstepsx, $offsetstepsy))
+//@ set
+    ${struct}.${field} = ${value};
 
 //@ lattice.paper
-hexcTilesPaper(st, dx, dy, $rotation, $rotate)
+hexcTilesPaper(st, dx, dy, lattice)
 
 //@ lattice.stable
-hexcTilesStable(st, dx, dy, cell, $rotation, $rotate, $transform, $tf)
+hexcTilesStable(st, dx, dy, cell, lattice)
 
 //@ lattice.checker
-hexcTilesChecker(st, dx, dy, cell, $maskscale, $rotation, $rotate, $transform, $tf)
+hexcTilesChecker(st, dx, dy, cell, lattice)
 
 //@ lattice.noise
-hexcTilesNoise(st, dx, dy, $maskscale, $triple, $rotation, $rotate, $transform, $tf)
+hexcTilesNoise(st, dx, dy, lattice)
 
 //@ color.hex
-vec4 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, $exponentint, $gainint, $taps, $height, weights);
+vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, hexcLuma, hexcTex_${heightmap}, weights);
 }
 
 //@ color.hex1
-vec4 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcColor1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $gain, $exponentint, $gainint, weights);
+vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, weights);
 }
 
 //@ color.plain
-vec4 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcPlainColor(hexcTex_$name, hexcSampler, st, dx, dy, $explicit, weights);
+vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights);
 }
 
 //@ scalar.hex
-float hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcColor(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $luma, $metric, $gain, $exponentint, $gainint, $taps, $height, weights).$channel;
+// Scalar maps weigh tiles by their own channel.
+float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, hexcChannel(${channel}), hexcTex_${heightmap}, weights)[${channel}];
 }
 
 //@ scalar.hex1
-float hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcColor1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $gain, $exponentint, $gainint, weights).$channel;
+float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, weights)[${channel}];
 }
 
 //@ scalar.plain
-float hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcPlainColor(hexcTex_$name, hexcSampler, st, dx, dy, $explicit, weights).$channel;
+float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights)[${channel}];
 }
 
 //@ normal.hex
-vec2 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcDeriv(hexcTex_$name, hexcSampler, $lattice, $falloff, $falloffcontrast, $exponent, $flipy, $metric, $gain, $exponentint, $gainint, $taps, $height, weights);
+vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcDeriv(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, hexcTex_${heightmap}, weights);
 }
 
 //@ normal.hex1
-vec2 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcDeriv1(hexcTex_$name, hexcSampler, $lattice, $falloff, $exponent, $flipy, $gain, $exponentint, $gainint, weights);
+vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcDeriv1(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, weights);
 }
 
 //@ normal.plain
-vec2 hexcAt_$name(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcPlainDeriv(hexcTex_$name, hexcSampler, st, dx, dy, $explicit, $flipy, weights);
+vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    return hexcPlainDeriv(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, ${flipy}, weights);
 }
 
 //@ uv
-$type hexc_$name(vec2 uv, out vec3 weights) {
-    vec2 st = uv * $tiling;
-    return hexcAt_$name(st, dFdx(st), dFdy(st), ivec2(0), weights);
+${type} hexc_${name}(vec2 uv, out vec3 weights) {
+    vec2 st = uv * ${tiling};
+    return hexcAt_${name}(st, dFdx(st), dFdy(st), ivec2(0), weights);
 }
-$type hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+${type} hexc_${name}(vec2 uv) { vec3 weights; return hexc_${name}(uv, weights); }
 
 //@ uv.split
 // uv relative to the per-frame origin, whose cell and offset the engine fills (docs/precision.md).
-$type hexc_$name(vec2 uv, out vec3 weights) {
-    vec2 st = uv * $tiling;
-    return hexcAt_$name($originoffset + st, dFdx(st), dFdy(st), $origincell, weights);
+${type} hexc_${name}(vec2 uv, out vec3 weights) {
+    vec2 st = uv * ${tiling};
+    return hexcAt_${name}(${originoffset} + st, dFdx(st), dFdy(st), ${origincell}, weights);
 }
-$type hexc_$name(vec2 uv) { vec3 weights; return hexc_$name(uv, weights); }
+${type} hexc_${name}(vec2 uv) { vec3 weights; return hexc_${name}(uv, weights); }
 
 //@ triplanar
-$type hexc_$name(vec3 position, vec3 normal, out vec3 weights) {
-    HexcPlanes p = hexcPlanes(position, normal, $planesharpness, $tiling);
-    $type value = $type(0.0);
+${type} hexc_${name}(vec3 position, vec3 normal, out vec3 weights) {
+    HexcPlanes p = hexcPlanes(position, normal, ${planesharpness}, ${tiling});
+    ${type} value = ${type}(0.0);
     vec3 w;
     weights = vec3(0.0);
     // Planes of weight 0 are skipped: most pixels of a mesh face one or two planes.
-    if (p.b.x > 0.0) { value += p.b.x * hexcLift(0, hexcAt_$name(p.st[0], p.dx[0], p.dy[0], ivec2(0), w)); weights += p.b.x * w; }
-    if (p.b.y > 0.0) { value += p.b.y * hexcLift(1, hexcAt_$name(p.st[1], p.dx[1], p.dy[1], ivec2(0), w)); weights += p.b.y * w; }
-    if (p.b.z > 0.0) { value += p.b.z * hexcLift(2, hexcAt_$name(p.st[2], p.dx[2], p.dy[2], ivec2(0), w)); weights += p.b.z * w; }
+    if (p.b.x > 0.0) { value += p.b.x * hexcLift(0, hexcAt_${name}(p.st[0], p.dx[0], p.dy[0], ivec2(0), w)); weights += p.b.x * w; }
+    if (p.b.y > 0.0) { value += p.b.y * hexcLift(1, hexcAt_${name}(p.st[1], p.dx[1], p.dy[1], ivec2(0), w)); weights += p.b.y * w; }
+    if (p.b.z > 0.0) { value += p.b.z * hexcLift(2, hexcAt_${name}(p.st[2], p.dx[2], p.dy[2], ivec2(0), w)); weights += p.b.z * w; }
     return hexcFinish(value, p.n);
 }
-$type hexc_$name(vec3 position, vec3 normal) { vec3 weights; return hexc_$name(position, normal, weights); }
+${type} hexc_${name}(vec3 position, vec3 normal) { vec3 weights; return hexc_${name}(position, normal, weights); }

@@ -101,7 +101,11 @@ std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const Parame
     for (const auto& m : params["members"]) {
         const bool integer = m["type"].get<std::string>()[0] == 'i';
         nlohmann::json values = m["value"].is_array() ? m["value"] : nlohmann::json::array({m["value"]});
-        if (auto it = parameters.find(m["name"]); it != parameters.end()) values = it->second;
+        // A member is set by its name or any of its aliases (other slots' names for a shared setting).
+        std::vector<std::string> names = {m["name"]};
+        if (m.contains("aliases")) names.insert(names.end(), m["aliases"].begin(), m["aliases"].end());
+        for (const std::string& name : names)
+            if (auto it = parameters.find(name); it != parameters.end()) values = it->second;
         uint8_t* at = bytes.data() + m["offset"].get<size_t>();
         for (const auto& v : values) {
             // int32 and float32 are both 4 bytes in std140.

@@ -51,7 +51,8 @@ Image renderShader(Runner& runner, const std::string& templateFile, const std::v
 // Derivative images (dH/du, dH/dv, ., .) to tangent-space normals encoded n * 0.5 + 0.5, in place (Eq. 2).
 void derivativeToNormalMap(Image& image);
 
-// The parameter block as the manifest lays it out, filled with the material's values or `parameters`.
+// The parameter block as the manifest lays it out, filled with the material's values or `parameters` (by a
+// member's name or any of its aliases).
 std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const ParameterValues& parameters = {});
 
 }  // namespace hexc::vk

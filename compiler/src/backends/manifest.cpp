@@ -40,6 +40,8 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
     for (const ParamMember& p : plan.params) {
         nlohmann::json value = p.value.size() == 1 ? nlohmann::json(p.value[0]) : nlohmann::json(p.value);
         nlohmann::json entry = {{"name", p.name}, {"type", p.type}, {"value", value}, {"slots", p.slots}};
+        // The other slots' names for the same storage (a shared lattice's settings): setting one sets them all.
+        if (!p.aliases.empty()) entry["aliases"] = p.aliases;
         if (!p.perFrame.empty()) entry["per_frame"] = p.perFrame;
         if (p.constantId) {
             entry["constant_id"] = *p.constantId;

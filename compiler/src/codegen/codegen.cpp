@@ -10,15 +10,6 @@
 namespace hexc {
 namespace {
 
-std::string replaceAll(std::string text, const std::map<std::string, std::string>& values) {
-    // Longest placeholder first, so `$falloff` never eats the start of `$falloffcontrast`.
-    for (auto it = values.rbegin(); it != values.rend(); ++it) {
-        for (size_t pos = 0; (pos = text.find(it->first, pos)) != std::string::npos; pos += it->second.size())
-            text.replace(pos, it->first.size(), it->second);
-    }
-    return text;
-}
-
 std::string lineDirective(int line, const std::string& file) {
     return "#line " + std::to_string(line) + " \"" + file + "\"\n";
 }
@@ -32,103 +23,149 @@ std::string literal(double v) {
     return s;
 }
 
+std::string literal(bool v) { return v ? "true" : "false"; }
+std::string literal(int v) { return std::to_string(v); }
+
+class Emitter {
+public:
+    explicit Emitter(const ShaderPlan& plan) : plan_(plan), sections_(snippetSections("slots.glsl")) {}
+
+    // The section expanded, without its final newline.
+    std::string expand(const std::string& section, const Tokens& values) const {
+        std::string text = expandTokens(sections_.at(section), values, section);
+        if (text.ends_with('\n')) text.pop_back();
+        return text;
+    }
+
+    // How the code reads a parameter: a baked constant by its name, a block member through the block.
+    std::string read(size_t param) const {
+        const ParamMember& p = plan_.params[param];
+        return p.constantId ? p.name : "hexcParams." + p.name;
+    }
+
+    // Specialisation constants, the parameter block, the sampler and the textures.
+    std::string resources() const {
+        std::string out, members;
+        for (const ParamMember& p : plan_.params) {
+            if (!p.constantId) {
+                members += (members.empty() ? "" : "\n") + std::string("    ") + p.type + " " + p.name + ";";
+                continue;
+            }
+            if (p.type == "vec2")
+                out += expand("constant.vec2", {{"id", std::to_string(*p.constantId)}, {"idy", std::to_string(*p.constantId + 1)},
+                                                {"name", p.name}, {"x", literal(p.value[0])}, {"y", literal(p.value[1])}}) + "\n";
+            else
+                out += expand("constant", {{"id", std::to_string(*p.constantId)}, {"type", p.type}, {"name", p.name}, {"value", literal(p.value[0])}}) + "\n";
+        }
+        if (!members.empty()) out += expand("params", {{"members", members}}) + "\n";
+        out += expand("sampler", {{"binding", std::to_string(kSamplerBinding)}}) + "\n";
+        // Every texture first: a slot may read another's as its height map.
+        for (const SlotPlan& sp : plan_.slots) out += expand("texture", {{"name", sp.slot->name}, {"binding", std::to_string(sp.binding)}}) + "\n";
+        return out;
+    }
+
+    // `set` lines filling `structName`: each field with a value (a feature switch, or a parameter the plan has).
+    std::string set(const std::string& structName, const std::vector<std::pair<std::string, std::string>>& fields) const {
+        std::string out;
+        for (const auto& [field, value] : fields)
+            out += (out.empty() ? "" : "\n") + expand("set", {{"struct", structName}, {"field", field}, {"value", value}});
+        return out;
+    }
+
+    void addParam(std::vector<std::pair<std::string, std::string>>& to, const std::string& field, ParamRef ref) const {
+        if (ref) to.emplace_back(field, read(*ref));
+    }
+
+    void addParam(Tokens& to, const std::string& token, ParamRef ref) const {
+        if (ref) to[token] = read(*ref);
+    }
+
+    std::string latticeSettings(const LatticePlan& l) const {
+        std::vector<std::pair<std::string, std::string>> fields = {
+            {"rotate", literal(l.rotate)},
+            {"transform", literal(l.transform)},
+            {"rotationSteps", literal(l.rotationSteps)},
+            {"offsetSteps", "ivec2(" + literal(l.offsetSteps[0]) + ", " + literal(l.offsetSteps[1]) + ")"},
+            {"maskScale", literal(l.maskScale)},
+            {"triple", literal(l.triple)},
+        };
+        addParam(fields, "rotation", l.rotation);
+        addParam(fields, "rotationRange", l.rotationRange);
+        addParam(fields, "scaleRange", l.scaleRange);
+        addParam(fields, "offset", l.offset);
+        return set("lattice", fields);
+    }
+
+    std::string blendSettings(const SlotPlan& sp) const {
+        std::vector<std::pair<std::string, std::string>> fields = {
+            {"metric", literal(sp.metric)},       {"gain", literal(sp.gain)}, {"exponentInt", literal(sp.exponentInt)},
+            {"gainInt", literal(sp.gainInt)},     {"taps", literal(sp.taps)}, {"height", literal(sp.heightMap.has_value())},
+        };
+        if (sp.heightMap) fields.emplace_back("heightLuma", "hexcChannel(" + literal(plan_.slots[*sp.heightMap].slot->channel) + ")");
+        addParam(fields, "falloff", sp.falloff);
+        addParam(fields, "falloffContrast", sp.falloffContrast);
+        addParam(fields, "exponent", sp.exponent);
+        addParam(fields, "heightWidth", sp.heightWidth);
+        return set("blend", fields);
+    }
+
+    // The slot's sampling and coordinates functions.
+    std::string slot(const SlotPlan& sp) const {
+        const Slot& s = *sp.slot;
+        const LatticePlan& l = plan_.lattices[sp.lattice];
+        Tokens t = {
+            {"name", s.name},
+            {"type", sp.type},
+            {"explicit", literal(sp.explicitGradients)},
+            {"flipy", literal(s.flipY)},
+            {"channel", literal(s.channel)},
+            {"heightmap", sp.heightMap ? plan_.slots[*sp.heightMap].slot->name : s.name},  // unread without height blending
+            {"tiles", expand(l.section, {})},
+            {"lattice", latticeSettings(l)},
+            {"blend", blendSettings(sp)},
+        };
+        addParam(t, "tiling", l.tiling);
+        addParam(t, "planesharpness", l.planeSharpness);
+        addParam(t, "origincell", l.originCell);
+        addParam(t, "originoffset", l.originOffset);
+        return expand(sp.section, t) + "\n\n" + expand(sp.coordinates, t) + "\n";
+    }
+
+private:
+    const ShaderPlan& plan_;
+    std::map<std::string, std::string> sections_;
+};
+
 std::string injectedCode(const ShaderPlan& plan) {
-    const auto sections = snippetSections("slots.glsl");
     std::string out = lineDirective(1, "hexc/hextiling.glsl") + *embeddedText("hextiling.glsl");
     out += lineDirective(1, "hexc/generated") + "\n";
     if (plan.slots.empty()) return out;
-
-    std::string members;
-    for (const ParamMember& p : plan.params) {
-        if (p.constantId) {
-            if (p.type == "vec2")
-                out += replaceAll(sections.at("constant.vec2"), {{"$id", std::to_string(*p.constantId)}, {"$idy", std::to_string(*p.constantId + 1)},
-                                                                  {"$name", p.name}, {"$x", literal(p.value[0])}, {"$y", literal(p.value[1])}});
-            else
-                out += replaceAll(sections.at("constant"), {{"$id", std::to_string(*p.constantId)}, {"$type", p.type}, {"$name", p.name},
-                                                             {"$value", literal(p.value[0])}});
-        } else {
-            members += "    " + p.type + " " + p.name + ";\n";
-        }
-    }
-    if (!members.empty()) {
-        members.pop_back();
-        out += replaceAll(sections.at("params"), {{"$members", members}}) + "\n";
-    }
-    out += replaceAll(sections.at("sampler"), {{"$binding", std::to_string(kSamplerBinding)}}) + "\n";
-    // Every texture first: a slot may read another's as its height map.
-    for (const SlotPlan& sp : plan.slots)
-        out += replaceAll(sections.at("texture"), {{"$name", sp.slot->name}, {"$binding", std::to_string(sp.binding)}}) + "\n";
+    Emitter emit(plan);
+    out += emit.resources();
     const SlotPlan& first = *std::find_if(plan.slots.begin(), plan.slots.end(), [](const SlotPlan& sp) { return !sp.heightOnly; });
-    out += replaceAll(sections.at("first"), {{"$name", first.slot->name}, {"$kind", std::string(toString(first.slot->kind))},
-                                             {"$projection", std::string(toString(first.slot->hex.projection))}}) +
-           "\n";
-    for (const SlotPlan& sp : plan.slots) {
-        if (sp.heightOnly) continue;
-        const Slot& s = *sp.slot;
-        const LatticePlan& lattice = plan.lattices[sp.lattice];
-        // A setting reads as its block member or its constant; a feature left out reads as its neutral value.
-        auto param = [&](const std::string& name, const char* neutral) -> std::string {
-            const ParamMember* p = plan.param(name);
-            if (!p) return neutral;
-            return p->constantId ? name : "hexcParams." + name;
-        };
-        static const char* kChannels[] = {"r", "g", "b", "a"};
-        static const char* kChannelVectors[] = {"vec4(1.0, 0.0, 0.0, 0.0)", "vec4(0.0, 1.0, 0.0, 0.0)",
-                                                "vec4(0.0, 0.0, 1.0, 0.0)", "vec4(0.0, 0.0, 0.0, 1.0)"};
-        const bool triplanar = s.hex.projection == Projection::Triplanar;
-        static const char* kTypes[] = {"vec4", "float", "vec2"};
-        std::string height = "false, hexcTex_" + s.name + ", vec4(0.0), 0.0";
-        if (s.heightBlend) {
-            const Slot& h = *std::find_if(plan.slots.begin(), plan.slots.end(), [&](const SlotPlan& p) { return p.slot->name == s.heightBlend->slot; })->slot;
-            height = "true, hexcTex_" + h.name + ", " + kChannelVectors[h.channel] + ", " + param(s.name + "_heightwidth", "");
-        }
-        std::map<std::string, std::string> values = {
-            {"$name", s.name},
-            {"$type", triplanar && s.kind == SlotKind::Normal ? "vec3" : kTypes[size_t(s.kind)]},
-            {"$height", height},
-            {"$taps", std::to_string(s.hex.maskTaps())},
-            {"$maskscale", std::to_string(s.hex.maskScale)},
-            {"$triple", s.hex.mask == Mask::Noise3 ? "true" : "false"},
-            {"$explicit", triplanar ? "true" : "false"},
-            {"$planesharpness", param(lattice.name + "_planesharpness", "4.0")},
-            {"$tiling", param(lattice.name + "_tiling", "")},
-            {"$rotation", param(lattice.name + "_rotation", "0.0")},
-            {"$origincell", param(lattice.name + "_origin_cell", "ivec2(0)")},
-            {"$originoffset", param(lattice.name + "_origin_offset", "vec2(0.0)")},
-            {"$falloff", param(s.name + "_falloff", "0.5")},
-            {"$falloffcontrast", param(s.name + "_falloffcontrast", "0.0")},
-            {"$exponent", param(s.name + "_exponent", "7.0")},
-            {"$rotate", lattice.rotate ? "true" : "false"},
-            {"$transform", lattice.transform ? "true" : "false"},
-            {"$rotationrange", param(lattice.name + "_rotationrange", "vec2(-180.0, 180.0)")},
-            {"$scalerange", param(lattice.name + "_scalerange", "vec2(1.0)")},
-            {"$offset", param(lattice.name + "_offset", "1.0")},
-            {"$rotationsteps", std::to_string(lattice.settings.rotationSteps)},
-            {"$offsetstepsx", std::to_string(lattice.settings.offsetSteps[0])},
-            {"$offsetstepsy", std::to_string(lattice.settings.offsetSteps[1])},
-            {"$metric", sp.metric ? "true" : "false"},
-            {"$gain", sp.gain ? "true" : "false"},
-            {"$exponentint", std::to_string(sp.exponentInt)},
-            {"$gainint", std::to_string(sp.gainInt)},
-            // Scalar maps weight tiles by their own channel; colour by luminance (Eq. 4).
-            {"$luma", s.kind == SlotKind::Scalar ? kChannelVectors[s.channel] : "hexcLuma"},
-            {"$channel", kChannels[s.channel]},
-            {"$flipy", s.flipY ? "true" : "false"},
-        };
-        static const char* kMaskLattices[] = {"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"};
-        const char* latticeSection = s.hex.mode == HashMode::Paper ? "lattice.paper" : kMaskLattices[size_t(s.hex.mask)];
-        values["$tf"] = replaceAll(sections.at("transform"), values);
-        values["$tf"].pop_back();  // the section's final newline
-        values["$lattice"] = replaceAll(sections.at(latticeSection), values);
-        values["$lattice"].pop_back();  // the section's final newline
-        out += replaceAll(sections.at(sp.section), values) + "\n";
-        out += replaceAll(sections.at(triplanar ? "triplanar" : s.hex.splitCoordinates ? "uv.split" : "uv"), values) + "\n";
-    }
+    out += emit.expand("first", {{"name", first.slot->name}, {"kind", std::string(toString(first.slot->kind))},
+                                 {"projection", std::string(toString(first.projection))}}) + "\n";
+    for (const SlotPlan& sp : plan.slots)
+        if (!sp.heightOnly) out += emit.slot(sp);
     return out;
 }
 
 }  // namespace
+
+std::string expandTokens(const std::string& text, const Tokens& values, const std::string& section) {
+    std::string out;
+    size_t at = 0;
+    for (size_t open; (open = text.find("${", at)) != std::string::npos; at = text.find('}', open) + 1) {
+        size_t close = text.find('}', open);
+        std::string name = text.substr(open + 2, close == std::string::npos ? std::string::npos : close - open - 2);
+        auto it = values.find(name);
+        if (close == std::string::npos || it == values.end())
+            throw CompileError{{{Diagnostic::Severity::Error, {"hexc/slots.glsl", 0, 0}, "",
+                                 "internal error: section `" + section + "` has token `${" + name + "}`, which hexc does not fill", {}}}};
+        out.append(text, at, open - at).append(it->second);
+    }
+    return out.append(text, at);
+}
 
 std::string generateGlsl(const ShaderPlan& plan) {
     std::istringstream in(plan.templateSource);

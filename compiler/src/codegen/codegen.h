@@ -1,11 +1,19 @@
 #pragma once
 // ShaderPlan -> Vulkan GLSL 450: the template with hexc's library, resources and per-slot functions
 // injected at its `#include <hexc>` line.
+#include <map>
 #include <string>
 
 #include "plan/plan.h"
 
 namespace hexc {
+
+// The values of a snippet's `${name}` tokens.
+using Tokens = std::map<std::string, std::string>;
+
+// `text` (the snippet `section` of templates/library/slots.glsl) with each `${name}` token replaced by its value, in
+// one pass (a value is never scanned again). A token without a value is a hexc bug: CompileError, naming the section.
+std::string expandTokens(const std::string& text, const Tokens& values, const std::string& section);
 
 // The returned source carries `#line` directives, so glslang reports errors at the template's own
 // file and line; injected code is reported as "hexc/<file>".

@@ -21,55 +21,12 @@ bool sameLattice(const HexTiling& a, const HexTiling& b) {
            a.maskScale == b.maskScale && a.projection == b.projection && a.planeSharpness == b.planeSharpness;
 }
 
-class ParamBuilder {
-public:
-    ParamBuilder(ShaderPlan& plan, bool bake) : plan_(plan), bake_(bake) {}
-
-    // A setting of `slots`; per-frame values are always block members, others are baked on request.
-    void add(const std::string& name, std::vector<double> value, std::vector<std::string> slots, bool integer = false,
-             std::string perFrame = {}) {
-        std::string type = value.size() == 2 ? (integer ? "ivec2" : "vec2") : (integer ? "int" : "float");
-        ParamMember m{name, type, std::move(value), std::move(slots), std::move(perFrame), 0, std::nullopt};
-        if (bake_ && m.perFrame.empty()) {
-            m.constantId = nextConstant_;
-            nextConstant_ += uint32_t(m.value.size());
-            constants_.push_back(std::move(m));
-            return;
-        }
-        // std140: scalars align to 4, two-component vectors to 8.
-        uint32_t size = uint32_t(m.value.size()) * 4;
-        m.offset = (plan_.paramBlockSize + size - 1) / size * size;
-        plan_.paramBlockSize = m.offset + size;
-        plan_.params.push_back(std::move(m));
-    }
-
-    void finish() {
-        plan_.paramBlockSize = (plan_.paramBlockSize + 15) / 16 * 16;
-        plan_.params.insert(plan_.params.end(), constants_.begin(), constants_.end());
-    }
-
-private:
-    ShaderPlan& plan_;
-    bool bake_;
-    uint32_t nextConstant_ = 0;
-    std::vector<ParamMember> constants_;
-};
-
-}  // namespace
-
-const ParamMember* ShaderPlan::param(const std::string& name) const {
-    for (const ParamMember& p : params)
-        if (p.name == name) return &p;
-    return nullptr;
-}
-
-ShaderPlan planShader(const Material& material, const CompileOptions& options) {
-    ShaderPlan plan;
-    plan.materialName = material.name;
+// Reads the template the options or the material name into plan.templateSource; false (with an error) when it
+// cannot be used.
+bool loadTemplate(const Material& material, const CompileOptions& options, ShaderPlan& plan) {
     auto error = [&](std::string message) {
         plan.diagnostics.push_back({Diagnostic::Severity::Error, {plan.templateName, 0, 0}, "", std::move(message), {}});
     };
-
     std::string ref = options.templateFile.empty() ? material.templateName : options.templateFile.string();
     if (ref.ends_with(".glsl")) {
         plan.templateName = ref;
@@ -77,7 +34,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         std::optional<std::string> text = readFile(ref, &why);
         if (!text) {
             error("cannot read template file: " + why);
-            return plan;
+            return false;
         }
         plan.templateSource = std::move(*text);
     } else {
@@ -85,7 +42,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
         const std::string* text = embeddedText(ref + ".glsl");
         if (!text) {
             error("no built-in template `" + ref + "`");
-            return plan;
+            return false;
         }
         plan.templateSource = *text;
     }
@@ -94,88 +51,212 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     auto begin = std::sregex_iterator(plan.templateSource.begin(), plan.templateSource.end(), include);
     if (std::distance(begin, std::sregex_iterator()) != 1)
         error("a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+    return !hasErrors(plan.diagnostics);
+}
 
-    bool readsFirst = readsIdentifier(plan.templateSource, "HEXC_FIRST_SLOT");
-    // The slots the template reads, and the height maps they blend by (of which only the texture may be needed).
-    std::vector<bool> read(material.slots.size()), needed(material.slots.size());
+// The slots the template reads (`read`), and those whose texture is bound (`needed`): those read and the
+// height maps they blend by.
+struct SlotUse {
+    std::vector<bool> read, needed;
+};
+
+SlotUse slotUse(const Material& material, const std::string& templateSource) {
+    bool readsFirst = readsIdentifier(templateSource, "HEXC_FIRST_SLOT");
+    SlotUse use{std::vector<bool>(material.slots.size()), std::vector<bool>(material.slots.size())};
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
-        if (!readsIdentifier(plan.templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
-        read[i] = needed[i] = true;
+        if (!readsIdentifier(templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
+        use.read[i] = use.needed[i] = true;
         if (slot.heightBlend)
-            for (size_t j = 0; j < material.slots.size(); ++j) needed[j] = needed[j] || material.slots[j].name == slot.heightBlend->slot;
+            for (size_t j = 0; j < material.slots.size(); ++j) use.needed[j] = use.needed[j] || material.slots[j].name == slot.heightBlend->slot;
     }
+    return use;
+}
+
+// A read slot's snippets and features. `all`: without specialisation every feature is emitted, and the values
+// decide at run time.
+SlotPlan planSlot(const Slot& slot, bool all) {
+    const HexTiling& h = slot.hex;
+    const bool triplanar = h.projection == Projection::Triplanar;
+    static const char* kTypes[] = {"vec4", "float", "vec2"};
+    SlotPlan sp;
+    sp.slot = &slot;
+    sp.section = std::string(toString(slot.kind)) + (!h.enabled ? ".plain" : h.taps == 1 ? ".hex1" : ".hex");
+    sp.coordinates = triplanar ? "triplanar" : h.splitCoordinates ? "uv.split" : "uv";
+    // A triplanar normal slot returns a world-space surface gradient.
+    sp.type = triplanar && slot.kind == SlotKind::Normal ? "vec3" : kTypes[size_t(slot.kind)];
+    sp.projection = h.projection;
+    sp.explicitGradients = triplanar;
+    sp.taps = h.maskTaps();
+    // One tap needs no falloff metric: it has a single sample to weigh.
+    sp.metric = h.taps != 1 && (all || h.falloffcontrast != 0);
+    sp.gain = all || h.falloff != 0.5;
+    // Whole-number exponents become multiplications: gamma = 7 (the paper's) and the gain at r = 1 - 2^-k
+    // (the paper's 0.75 is k = 2) then cost no pow. Like the feature switches, they fix the value in the code.
+    if (!all && h.exponent == std::floor(h.exponent) && h.exponent <= 16) sp.exponentInt = int(h.exponent);
+    double k = std::log2(1.0 / (1.0 - h.falloff));
+    if (!all && sp.gain && std::fabs(k - std::round(k)) < 1e-12 && k >= 2 && k <= 16) sp.gainInt = int(std::round(k));
+    return sp;
+}
+
+LatticePlan planLattice(const HexTiling& h, bool all) {
+    static const char* kMaskLattices[] = {"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"};
+    LatticePlan l;
+    l.section = h.mode == HashMode::Paper ? "lattice.paper" : kMaskLattices[size_t(h.mask)];
+    l.rotate = all || h.rotation != 0;
+    l.transform = h.hasTransforms();
+    l.rotationSteps = h.rotationSteps;
+    l.offsetSteps = h.offsetSteps;
+    l.maskScale = h.maskScale;
+    l.triple = h.mask == Mask::Noise3;
+    return l;
+}
+
+// plan.slots and plan.lattices; a slot joins the first lattice computed from the same settings when sharing.
+void planSlots(const Material& material, const CompileOptions& options, ShaderPlan& plan) {
+    SlotUse use = slotUse(material, plan.templateSource);
+    std::vector<const HexTiling*> latticeKeys;
     uint32_t binding = kFirstTextureBinding;
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
-        if (!needed[i]) {
+        if (!use.needed[i]) {
             plan.diagnostics.push_back({Diagnostic::Severity::Warning, {material.sourceFile.string(), 0, 0}, "",
                                         "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out", {}});
             continue;
         }
-        if (!read[i]) {
-            SlotPlan heights;
-            heights.slot = &slot;
-            heights.binding = binding++;
-            heights.heightOnly = true;
-            plan.slots.push_back(heights);
-            continue;
+        SlotPlan sp;
+        sp.slot = &slot;
+        sp.heightOnly = !use.read[i];
+        if (!sp.heightOnly) {
+            sp = planSlot(slot, !options.specialize);
+            size_t& l = sp.lattice;
+            while (l < latticeKeys.size() && !(options.shareLattice && sameLattice(*latticeKeys[l], slot.hex))) ++l;
+            if (l == latticeKeys.size()) {
+                latticeKeys.push_back(&slot.hex);
+                plan.lattices.push_back(planLattice(slot.hex, !options.specialize));
+            }
         }
-        const HexTiling& h = slot.hex;
-        // Without specialisation every feature is emitted, and the values decide at run time.
-        bool all = !options.specialize;
-        // One tap needs no falloff metric: it has a single sample to weigh.
-        SlotPlan sp{&slot, std::string(toString(slot.kind)) + (!h.enabled ? ".plain" : h.taps == 1 ? ".hex1" : ".hex"), binding++, 0,
-                    h.taps != 1 && (all || h.falloffcontrast != 0), all || h.falloff != 0.5};
-        // Whole-number exponents become multiplications: gamma = 7 (the paper's) and the gain at r = 1 - 2^-k
-        // (the paper's 0.75 is k = 2) then cost no pow. Like the feature switches, they fix the value in the code.
-        if (!all && h.exponent == std::floor(h.exponent) && h.exponent <= 16) sp.exponentInt = int(h.exponent);
-        double k = std::log2(1.0 / (1.0 - h.falloff));
-        if (!all && sp.gain && std::fabs(k - std::round(k)) < 1e-12 && k >= 2 && k <= 16) sp.gainInt = int(std::round(k));
-        size_t lattice = 0;
-        while (lattice < plan.lattices.size() && !(options.shareLattice && sameLattice(plan.lattices[lattice].settings, h))) ++lattice;
-        if (lattice == plan.lattices.size()) plan.lattices.push_back({slot.name, h, all || h.rotation != 0, h.hasTransforms()});
-        sp.lattice = lattice;
+        sp.binding = binding++;
         plan.slots.push_back(sp);
     }
+    for (SlotPlan& sp : plan.slots) {
+        if (sp.heightOnly || !sp.slot->heightBlend) continue;
+        for (size_t j = 0; j < plan.slots.size(); ++j)
+            if (plan.slots[j].slot->name == sp.slot->heightBlend->slot) sp.heightMap = j;
+    }
+}
 
-    // Parameters: each lattice's, then each slot's, only for the features emitted.
-    ParamBuilder params(plan, options.bake);
+class ParamBuilder {
+public:
+    ParamBuilder(ShaderPlan& plan, bool bake) : plan_(plan), bake_(bake) {}
+
+    // `setting` of `slots`, referred to by `ref`: named after the first slot, the others' names its aliases.
+    // Per-frame values are always block members, others are baked on request.
+    void add(ParamRef& ref, const std::string& setting, std::vector<double> value, const std::vector<std::string>& slots,
+             bool integer = false, std::string perFrame = {}) {
+        ParamMember m;
+        m.name = slots.front() + "_" + setting;
+        for (size_t i = 1; i < slots.size(); ++i) m.aliases.push_back(slots[i] + "_" + setting);
+        m.type = value.size() == 2 ? (integer ? "ivec2" : "vec2") : (integer ? "int" : "float");
+        m.value = std::move(value);
+        m.slots = slots;
+        m.perFrame = std::move(perFrame);
+        if (bake_ && m.perFrame.empty()) {
+            m.constantId = nextConstant_;
+            nextConstant_ += uint32_t(m.value.size());
+            ref = constants_.size();
+            constantRefs_.push_back(&ref);
+            constants_.push_back(std::move(m));
+            return;
+        }
+        // std140: scalars align to 4, two-component vectors to 8.
+        uint32_t size = uint32_t(m.value.size()) * 4;
+        m.offset = (plan_.paramBlockSize + size - 1) / size * size;
+        plan_.paramBlockSize = m.offset + size;
+        ref = plan_.params.size();
+        plan_.params.push_back(std::move(m));
+    }
+
+    // Block members first, in block order, then the baked constants.
+    void finish() {
+        plan_.paramBlockSize = (plan_.paramBlockSize + 15) / 16 * 16;
+        for (ParamRef* ref : constantRefs_) **ref += plan_.params.size();
+        plan_.params.insert(plan_.params.end(), constants_.begin(), constants_.end());
+    }
+
+private:
+    ShaderPlan& plan_;
+    bool bake_;
+    uint32_t nextConstant_ = 0;
+    std::vector<ParamMember> constants_;
+    std::vector<ParamRef*> constantRefs_;
+};
+
+// A lattice's parameters, read by `users` (the slots computed on it), for the features it emits.
+void addLatticeParams(ParamBuilder& params, LatticePlan& l, const HexTiling& h, const std::vector<std::string>& users) {
+    params.add(l.tiling, "tiling", {h.tiling[0], h.tiling[1]}, users);
+    if (h.projection == Projection::Triplanar) params.add(l.planeSharpness, "planesharpness", {h.planeSharpness}, users);
+    if (!h.enabled) return;
+    if (l.rotate) params.add(l.rotation, "rotation", {h.rotation}, users);
+    if (l.transform) {
+        params.add(l.rotationRange, "rotationrange", {h.rotationRange[0], h.rotationRange[1]}, users);
+        params.add(l.scaleRange, "scalerange", {h.scaleRange[0], h.scaleRange[1]}, users);
+        params.add(l.offset, "offset", {h.offset}, users);
+    }
+    if (h.splitCoordinates) {
+        // Filled per frame by the engine from its double-precision origin (docs/precision.md).
+        params.add(l.originCell, "origin_cell", {0, 0}, users, true,
+                   "floor(st / (28, 1)) with st = origin_uv * tiling in double, stored modulo 2^32 (hexc/origin.h)");
+        params.add(l.originOffset, "origin_offset", {0, 0}, users, false, "st - cell * (28, 1), as float (hexc/origin.h)");
+    }
+}
+
+// A slot's own parameters, for the features it emits; specialised values are listed in plan.specialised.
+void addSlotParams(ParamBuilder& params, SlotPlan& sp, std::vector<ParamMember>& specialised) {
+    const HexTiling& h = sp.slot->hex;
+    const std::string& n = sp.slot->name;
+    auto fixed = [&](const std::string& setting, double value) {
+        ParamMember m;
+        m.name = n + "_" + setting;
+        m.type = "float";
+        m.value = {value};
+        m.slots = {n};
+        specialised.push_back(std::move(m));
+    };
+    if (sp.gainInt) fixed("falloff", h.falloff);
+    else if (sp.gain) params.add(sp.falloff, "falloff", {h.falloff}, {n});
+    if (sp.metric) params.add(sp.falloffContrast, "falloffcontrast", {h.falloffcontrast}, {n});
+    if (sp.exponentInt) fixed("exponent", h.exponent);
+    else params.add(sp.exponent, "exponent", {h.exponent}, {n});
+    if (sp.slot->heightBlend) params.add(sp.heightWidth, "heightwidth", {sp.slot->heightBlend->width}, {n});
+}
+
+// Parameters: each lattice's, then each slot's, only for the features emitted.
+void planParams(bool bake, ShaderPlan& plan) {
+    ParamBuilder params(plan, bake);
     for (size_t i = 0; i < plan.lattices.size(); ++i) {
-        const LatticePlan& l = plan.lattices[i];
         std::vector<std::string> users;
-        for (const SlotPlan& sp : plan.slots)
-            if (sp.lattice == i && !sp.heightOnly) users.push_back(sp.slot->name);
-        const HexTiling& h = l.settings;
-        params.add(l.name + "_tiling", {h.tiling[0], h.tiling[1]}, users);
-        if (h.projection == Projection::Triplanar) params.add(l.name + "_planesharpness", {h.planeSharpness}, users);
-        if (!h.enabled) continue;
-        if (l.rotate) params.add(l.name + "_rotation", {h.rotation}, users);
-        if (l.transform) {
-            params.add(l.name + "_rotationrange", {h.rotationRange[0], h.rotationRange[1]}, users);
-            params.add(l.name + "_scalerange", {h.scaleRange[0], h.scaleRange[1]}, users);
-            params.add(l.name + "_offset", {h.offset}, users);
+        const HexTiling* settings = nullptr;  // the same for every user
+        for (const SlotPlan& sp : plan.slots) {
+            if (sp.lattice != i || sp.heightOnly) continue;
+            users.push_back(sp.slot->name);
+            settings = &sp.slot->hex;
         }
-        if (h.splitCoordinates) {
-            // Filled per frame by the engine from its double-precision origin (docs/precision.md).
-            params.add(l.name + "_origin_cell", {0, 0}, users, true,
-                       "floor(st / (28, 1)) with st = origin_uv * tiling in double, stored modulo 2^32 (hexc/origin.h)");
-            params.add(l.name + "_origin_offset", {0, 0}, users, false, "st - cell * (28, 1), as float (hexc/origin.h)");
-        }
+        addLatticeParams(params, plan.lattices[i], *settings, users);
     }
-    for (const SlotPlan& sp : plan.slots) {
-        const HexTiling& h = sp.slot->hex;
-        if (!h.enabled || sp.heightOnly) continue;
-        const std::string& n = sp.slot->name;
-        auto fixed = [&](const std::string& name, double value) { plan.specialised.push_back({name, "float", {value}, {n}, {}, 0, std::nullopt}); };
-        if (sp.gainInt) fixed(n + "_falloff", h.falloff);
-        else if (sp.gain) params.add(n + "_falloff", {h.falloff}, {n});
-        if (sp.metric) params.add(n + "_falloffcontrast", {h.falloffcontrast}, {n});
-        if (sp.exponentInt) fixed(n + "_exponent", h.exponent);
-        else params.add(n + "_exponent", {h.exponent}, {n});
-        if (sp.slot->heightBlend) params.add(n + "_heightwidth", {sp.slot->heightBlend->width}, {n});
-    }
+    for (SlotPlan& sp : plan.slots)
+        if (sp.slot->hex.enabled && !sp.heightOnly) addSlotParams(params, sp, plan.specialised);
     params.finish();
+}
+
+}  // namespace
+
+ShaderPlan planShader(const Material& material, const CompileOptions& options) {
+    ShaderPlan plan;
+    plan.materialName = material.name;
+    if (!loadTemplate(material, options, plan)) return plan;
+    planSlots(material, options, plan);
+    planParams(options.bake, plan);
     return plan;
 }
 

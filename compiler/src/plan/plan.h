@@ -1,6 +1,7 @@
 #pragma once
 // Material -> ShaderPlan: which template, which code each slot needs, where every resource and
 // parameter lives. Everything later stages emit is decided here.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -21,8 +22,16 @@ constexpr uint32_t kFirstTextureBinding = 2;
 
 // A numeric setting the shader reads: a member of the HexcParams block, or (baked) a specialisation
 // constant that spirv-opt freezes.
+//
+// Slots that share a lattice read its settings from one member, named after the first of them, and the others'
+// names for it are its `aliases`: the engine sets every slot's setting by the slot's own name (`normal_tiling`),
+// whatever sharing the compiler chose. One member rather than one per slot, because the lattice is shared on the
+// promise that the values are equal: a second member would be a setting the shader ignores, and reading each
+// slot's own member would make the lattice per slot again. An engine that wants to give such slots different
+// values at run time compiles without sharing (CompileOptions::shareLattice = false).
 struct ParamMember {
-    std::string name;            // "<slot>_<setting>"; lattice settings are named after the lattice's first slot
+    std::string name;            // "<slot>_<setting>" of the first slot that reads it
+    std::vector<std::string> aliases;  // "<slot>_<setting>" of the other slots that read it: the same storage
     std::string type;            // "float", "vec2", "int" or "ivec2"
     std::vector<double> value;   // the material's value, what an engine writes by default
     std::vector<std::string> slots;  // the slots that read it
@@ -31,25 +40,40 @@ struct ParamMember {
     std::optional<uint32_t> constantId;  // set when baked: its first specialisation constant id
 };
 
+// A setting's parameter: its index in ShaderPlan::params, or none when the code does not read the setting (its
+// feature is left out, or its value is specialised into the code), so the library's neutral value stands.
+using ParamRef = std::optional<size_t>;
+
 // The lattice (Listing 1 plus the tile transforms) that one or more slots share: slots with the same
 // coordinates, tiling, rotation and mode evaluate it once.
 struct LatticePlan {
-    std::string name;            // the first slot's name; names the lattice's parameters
-    HexTiling settings;          // enabled, mode, split, tiling, rotation
+    std::string section;         // its `lattice.*` snippet in templates/library/slots.glsl (mode and mask)
     bool rotate = true;          // the rotation code is emitted
     bool transform = false;      // per-tile transforms (ranges, steps, scale, offset amount) are emitted
+    int rotationSteps = 0;       // whole numbers fixed in the code (transform only)
+    std::array<int, 2> offsetSteps{0, 0};
+    int maskScale = 1;           // cells per st unit of the checker and noise masks
+    bool triple = false;         // the noise mask draws three noises
+    ParamRef tiling, planeSharpness, rotation, rotationRange, scaleRange, offset, originCell, originOffset;
 };
 
 struct SlotPlan {
     const Slot* slot = nullptr;
-    std::string section;         // snippet in templates/library/slots.glsl, e.g. "color.hex"; empty when heightOnly
+    std::string section;         // sampling snippet in templates/library/slots.glsl, e.g. "color.hex"; empty when heightOnly
+    std::string coordinates;     // coordinates snippet: "uv", "uv.split" or "triplanar"
+    std::string type;            // the GLSL type hexc_<slot> returns
+    Projection projection = Projection::Uv;
     uint32_t binding = 0;        // texture binding (set 0)
     size_t lattice = 0;          // index into ShaderPlan::lattices
     bool metric = true;          // the falloff metric code is emitted (falloffcontrast != 0)
     bool gain = true;            // the gain code is emitted (falloff != 0.5)
     int exponentInt = 0;         // > 0: the exponent is this whole number, multiplied out (no pow, no uniform)
     int gainInt = 0;             // > 0: the gain's k = log2(1 / (1 - falloff)) is this whole number, likewise
+    int taps = 3;                // fetches per sample: 3, or 2 for the checker mask
+    bool explicitGradients = false;  // plain sampling with the given gradients (triplanar planes: non-uniform flow)
+    std::optional<size_t> heightMap;  // index into ShaderPlan::slots of the slot it height-blends by
     bool heightOnly = false;     // only the texture is used, as another slot's height map (no function, no lattice)
+    ParamRef falloff, falloffContrast, exponent, heightWidth;
 };
 
 struct ShaderPlan {
@@ -62,8 +86,6 @@ struct ShaderPlan {
     std::vector<ParamMember> specialised;  // settings fixed in the code as whole-number exponents
     uint32_t paramBlockSize = 0; // std140 size, rounded up to 16
     Diagnostics diagnostics;     // warnings (e.g. a slot the template never reads) or errors
-
-    const ParamMember* param(const std::string& name) const;
 };
 
 ShaderPlan planShader(const Material& material, const CompileOptions& options);
