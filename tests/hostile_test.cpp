@@ -156,4 +156,54 @@ TEST_F(Hostile, ConcurrentRunsIntoOneFolderAllSucceed) {
     for (const auto& f : fs::directory_iterator(dir_ / "out")) EXPECT_FALSE(f.path().extension() == ".tmp") << f.path();
 }
 
+// The built-in unlit template with `defines` after its #version line and `use` at the start of main().
+std::string unlitWith(const std::string& defines, const std::string& use) {
+    std::ifstream in("templates/builtin/unlit.glsl");
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    size_t body = text.find("void main() {");
+    text.insert(body + 13, " " + use);
+    text.insert(text.find('\n') + 1, defines);
+    return text;
+}
+
+TEST_F(Hostile, MacroBombsInATemplateAreRefusedBeforePreprocessing) {
+    // 2^40 tokens from 41 chained lines, and from one line of nested calls; glslang has no bound of its own.
+    std::string chain = "#define M0 1.0\n";
+    for (int i = 1; i <= 40; ++i) chain += "#define M" + std::to_string(i) + " (M" + std::to_string(i - 1) + " + M" + std::to_string(i - 1) + ")\n";
+    std::string nested = "1.0";
+    for (int i = 0; i < 40; ++i) nested = "D(" + nested + ")";
+    fs::path m = write("m.json", material());
+    for (const auto& [name, text] : {std::pair{"chain.glsl", unlitWith(chain, "float bomb = M40;")},
+                                     std::pair{"nested.glsl", unlitWith("#define D(x) (x + x)\n", "float bomb = " + nested + ";")}}) {
+        fs::path t = write(name, text);
+        Outcome o = runBounded(m.string() + " --template " + t.string() + out());
+        EXPECT_EQ(o.exit, 1) << o.err;
+        // The line that uses the macros: the template's main(), after its defines.
+        EXPECT_NE(o.err.find(t.string() + ":"), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find("macros expand to more than"), std::string::npos) << o.err;
+        expectNothingWritten();
+    }
+}
+
+TEST_F(Hostile, MacrosWithinTheBoundStillCompile) {
+    std::string chain = "#define M0 1.0\n";
+    for (int i = 1; i <= 10; ++i) chain += "#define M" + std::to_string(i) + " (M" + std::to_string(i - 1) + " * 0.5 + M" + std::to_string(i - 1) + " * 0.5)\n";
+    fs::path t = write("chain.glsl", unlitWith(chain, "float fine = M10;"));
+    Outcome o = runBounded(write("m.json", material()).string() + " --template " + t.string() + out());
+    EXPECT_EQ(o.exit, 0) << o.err;
+}
+
+TEST_F(Hostile, ATemplatePathWithAQuoteKeepsErrorsLocated) {
+    // A quoted `#line` name cannot hold `"`: the error must still name the file and the template's own line.
+    fs::path t = write("q\"t.glsl", unlitWith("", "undefined_name;"));
+    Outcome o = runBounded(write("m.json", material()).string() + " --template '" + t.string() + "'" + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    std::ifstream in(t);
+    int line = 1;
+    for (std::string l; std::getline(in, l) && l.find("undefined_name") == std::string::npos;) ++line;
+    EXPECT_NE(o.err.find(t.string() + ":" + std::to_string(line) + ":"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("undeclared identifier"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
 }  // namespace

@@ -1,6 +1,6 @@
 // The plan owns every decision (snippets, features, typed parameter references), codegen expands snippet tokens
 // in one pass and refuses unknown ones, and the manifest names every slot's parameters per slot, with aliases
-// where slots share a lattice.
+// where slots share a lattice; the bound on what a template's macros expand to.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +10,7 @@
 
 #include "codegen/codegen.h"
 #include "hexc/compiler.h"
+#include "plan/macros.h"
 #include "plan/plan.h"
 #include "vk/render.h"
 
@@ -204,4 +205,23 @@ TEST(Manifest, AnEngineSetsASharedSettingByAnySlotsName) {
     float rotation = 0;
     std::memcpy(&rotation, block.data() + offset, 4);
     EXPECT_EQ(rotation, 0.25f);
+}
+
+TEST(Macros, CountsTheTokensOfTheExpansion) {
+    EXPECT_EQ(boundMacroExpansion("#define A x y\nA A\n").tokens, 4);
+    // The argument's size times its uses, through a nested call: F(G(1)) = ((1 + 1) * (1 + 1)) is 13 tokens.
+    EXPECT_EQ(boundMacroExpansion("#define G(a) (a + a)\n#define F(b) (b * b)\nF(G(1))\n").tokens, 13);
+    // A macro inside its own body stays a name (C rules), comments and continuations are not tokens.
+    EXPECT_EQ(boundMacroExpansion("#define A A + \\\n 1 /* 2 3 */\nA // 4\n").tokens, 3);
+    // A function-like name without `(` is a plain token; #undef ends a macro.
+    EXPECT_EQ(boundMacroExpansion("#define F(a) a a a\nF;\n#undef F\nF(1)\n").tokens, 6);
+}
+
+TEST(Macros, FindsTheLineWhereTheBoundIsPassed) {
+    std::string source = "#define M0 1\n";
+    for (int i = 1; i <= 30; ++i) source += "#define M" + std::to_string(i) + " M" + std::to_string(i - 1) + " M" + std::to_string(i - 1) + "\n";
+    source += "M21\nM22\n";  // 2^21 tokens, then 2^22 more: 6.3 M in all
+    MacroExpansion e = boundMacroExpansion(source);
+    EXPECT_EQ(e.tokens, double(1 << 21) + double(1 << 22));
+    EXPECT_EQ(e.line, 33);
 }

@@ -14,6 +14,10 @@ std::string lineDirective(int line, const std::string& file) {
     return "#line " + std::to_string(line) + " \"" + file + "\"\n";
 }
 
+// Back in the template: source string 0, which glslang names after the template file it was given. Not the path in
+// quotes: a `#line` string cannot hold a `"`, and a path can.
+std::string templateLine(int line) { return "#line " + std::to_string(line) + " 0\n"; }
+
 // A GLSL float literal that reads back as the same float32.
 std::string literal(double v) {
     char buf[32];
@@ -174,13 +178,13 @@ std::string generateGlsl(const ShaderPlan& plan) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.rfind("#include <hexc>", 0) == 0) {
             out += injectedCode(plan);
-            out += lineDirective(number + 1, plan.templateName);
+            out += templateLine(number + 1);
         } else {
             out += line + "\n";
             if (number == 1) {
                 // Right after #version: lets `#line` name files, so errors point into the user's template.
                 out += "#extension GL_GOOGLE_cpp_style_line_directive : require\n";
-                out += lineDirective(2, plan.templateName);
+                out += templateLine(2);
             }
         }
     }

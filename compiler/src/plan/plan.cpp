@@ -5,6 +5,7 @@
 
 #include "hexc/files.h"
 #include "common/templates.h"
+#include "plan/macros.h"
 
 namespace hexc {
 namespace {
@@ -51,6 +52,11 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
     auto begin = std::sregex_iterator(plan.templateSource.begin(), plan.templateSource.end(), include);
     if (std::distance(begin, std::sregex_iterator()) != 1)
         error("a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+    if (MacroExpansion e = boundMacroExpansion(plan.templateSource); e.line) {
+        plan.diagnostics.push_back({Diagnostic::Severity::Error, {plan.templateName, e.line, 0}, "",
+                                    "the template's macros expand to more than " + std::to_string(int(kMaxExpandedTokens)) +
+                                        " tokens by this line; hexc refuses it rather than stall the preprocessor", {}});
+    }
     return !hasErrors(plan.diagnostics);
 }
 
