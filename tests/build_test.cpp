@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "hexc/image.h"
 #include "hexc/scene.h"
 #include "support.h"
 
@@ -99,8 +100,16 @@ TEST(Incremental, UnchangedInputsAreSkippedAndAChangedTextureRebuildsWhatUsesIt)
     ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string(), &err), 0) << err;
     ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string(), &err), 0) << err;
     EXPECT_NE(err.find("0 compiled, 9 up to date"), std::string::npos) << err;
-    // A texture only tiles.json reads: its main and shadow variants compile again (depth reads no slot).
+    // New bytes in a texture of the same size: the shaders read only its size, so nothing compiles again.
     { std::ofstream(dir / "textures" / "tiles_albedo.png", std::ios::app) << ' '; }
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string(), &err), 0) << err;
+    EXPECT_NE(err.find("0 compiled, 9 up to date"), std::string::npos) << err;
+    // Another size of a texture only tiles.json reads: its main and shadow variants compile again (depth reads no
+    // slot).
+    Image odd;
+    odd.width = 127, odd.height = 80;
+    odd.rgba.assign(size_t(odd.width) * odd.height * 4, 0.5f);
+    writeImage(odd, dir / "textures" / "tiles_albedo.png");
     ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string(), &err), 0) << err;
     EXPECT_NE(err.find("2 compiled, 7 up to date"), std::string::npos) << err;
     // Other options change every output.
@@ -110,6 +119,23 @@ TEST(Incremental, UnchangedInputsAreSkippedAndAChangedTextureRebuildsWhatUsesIt)
     fs::remove(out / "rock.main.manifest.json");
     ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string() + " --bake", &err), 0) << err;
     EXPECT_NE(err.find("1 compiled, 8 up to date"), std::string::npos) << err;
+}
+
+TEST(Incremental, AnotherHexcBuildDoesNotTrustTheStamp) {
+    fs::path dir = copyOfMaterials("hexc_stale");
+    fs::path out = dir / "out";
+    std::string err;
+    ASSERT_EQ(runHexc(dir.string() + "/tiles.json -o " + out.string(), &err), 0) << err;
+    // The same version string in a different binary (as a rebuilt hexc, or one linked with newer glslang).
+    fs::path other = dir / "hexc-other";
+    fs::copy_file(HEXC_EXE, other);
+    { std::ofstream(other, std::ios::app) << '\0'; }
+    fs::path log = dir / "other.txt";
+    int status = std::system((other.string() + " " + dir.string() + "/tiles.json -o " + out.string() + " 2> " + log.string()).c_str());
+    std::ifstream in(log);
+    err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    ASSERT_EQ(WEXITSTATUS(status), 0) << err;
+    EXPECT_NE(err.find("1 compiled, 0 up to date"), std::string::npos) << err;
 }
 
 TEST(Depfile, ListsEveryInputWithMakeEscapes) {

@@ -56,7 +56,7 @@ bool printDiagnostics(const Diagnostics& diags, bool quiet) {
 
 // A hash of a shader's target sources: variants with equal hashes share one set of files.
 std::string shaderHash(const CompileResult& r) {
-    Fnv1a h;
+    ContentHash h;
     for (const OutputFile& f : r.files)
         if (!f.name.ends_with(".manifest.json")) h.add(f.contents);
     return h.hex(12);

@@ -1,6 +1,7 @@
 #include "incremental.h"
 
 #include <fstream>
+#include <algorithm>
 
 #include "hexc/files.h"
 #include "hash.h"
@@ -10,9 +11,22 @@ namespace hexc::cli {
 namespace {
 
 // Adds a file's bytes (nothing when it cannot be read: the compile will report it).
-void addFile(Fnv1a& h, const std::filesystem::path& file) { h.add(readFile(file).value_or("")); }
+void addFile(ContentHash& h, const std::filesystem::path& file) { h.add(readFile(file).value_or("")); }
 
 }  // namespace
+
+const std::string& buildId() {
+    static const std::string id = [] {
+        // glslang, SPIRV-Tools and SPIRV-Cross are linked in statically, so the executable's bytes cover them too.
+        std::ifstream in("/proc/self/exe", std::ios::binary | std::ios::ate);
+        std::string bytes(size_t(std::max<std::streamoff>(in.tellg(), 0)), '\0');
+        in.seekg(0).read(bytes.data(), std::streamsize(bytes.size()));
+        ContentHash h;
+        h.add(bytes);
+        return h.hex(16);
+    }();
+    return id;
+}
 
 std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options) {
     std::vector<std::filesystem::path> files{material.sourceFile};
@@ -23,8 +37,9 @@ std::vector<std::filesystem::path> inputFiles(const Material& material, const Co
 }
 
 std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::filesystem::path>& extra) {
-    Fnv1a h;
+    ContentHash h;
     h.add(version());
+    h.add(buildId());
     // Every option that changes an output.
     std::string opts;
     for (Target t : options.targets) opts += std::string(toString(t)) + ",";
@@ -34,8 +49,11 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     h.add(opts);
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).
     h.add(material.name + "|" + material.templateName);
-    for (const Slot& s : material.slots) h.add(s.name);
-    for (const auto& f : inputFiles(material, options)) addFile(h, f);
+    // Of a texture the compile reads only its size (validation has checked its channels): new pixels leave the
+    // shaders as they are.
+    for (const Slot& s : material.slots) h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height));
+    addFile(h, material.sourceFile);
+    if (std::string t = options.templateFile.empty() ? material.templateName : options.templateFile.string(); t.ends_with(".glsl")) addFile(h, t);
     for (const auto& f : extra) addFile(h, f);
     // Built-in templates are part of the binary; hash their text too, not only the version.
     for (const std::string& f : {std::string("hextiling.glsl"), std::string("slots.glsl"), material.templateName + ".glsl"})

@@ -1,7 +1,7 @@
 #pragma once
 // Incremental builds: a material (or scene variant) whose inputs have not changed since its outputs were
-// written is not compiled again. Its inputs are hashed: the material file, the scene file, every texture's
-// bytes, the template's text, the compile options and the hexc version.
+// written is not compiled again. Its inputs are hashed: the material file, the scene file, every texture's size
+// (all a compile reads of it), the template's text, the compile options, and the hexc version and build.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -15,7 +15,10 @@ namespace hexc::cli {
 // The files a compile reads (for the depfile): the material file, its textures, a user template.
 std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options);
 
-// FNV-1a (64 bit) of everything a compile depends on, as 16 hex digits; `extra` adds e.g. a scene file.
+// A hash of the running hexc executable (16 hex digits): a rebuilt or upgraded hexc never trusts an old stamp.
+const std::string& buildId();
+
+// XXH3 (128 bit) of everything a compile depends on, as 32 hex digits; `extra` adds e.g. a scene file.
 std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::filesystem::path>& extra);
 
 // The stamp `dir/.<name>.hexc-stamp` records the hash and the outputs of the last successful compile.
