@@ -10,10 +10,30 @@
 #include "hexc/compiler.h"
 #include "plan/plan.h"
 
+namespace spirv_cross {
+class Compiler;
+}
+
 namespace hexc {
 
 // Where one resource lives on a target, as written to the manifest.
 enum class ResourceKind { Params, Sampler, Texture };
+
+// A resource the template declares itself (per-frame blocks, shadow maps, push constants...): anything but
+// hexc's own, which are set 0 (plan.h). Each target places them after hexc's, per register class.
+enum class ResourceClass { UniformBuffer, StorageBuffer, PushConstant, SampledImage, Image, Sampler, StorageImage };
+struct TemplateResource {
+    uint32_t id = 0;  // SPIR-V variable
+    std::string name;
+    ResourceClass cls = ResourceClass::UniformBuffer;
+    uint32_t set = 0, binding = 0;  // as declared (none for push constants)
+};
+
+// The template's resources in (class, set, binding) order. A template resource in hexc's set 0 is a located error
+// (CompileError): it would share hexc's bindings.
+std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, const ShaderPlan& plan);
+// {name, kind, set, binding} for the manifest; a target adds where it placed the resource.
+nlohmann::json describe(const TemplateResource& r);
 
 struct TargetOutput {
     std::string source;             // empty for the SPIR-V target (its output is the binary)
@@ -30,8 +50,9 @@ TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan&
 // `ioName` the target's name for a stage input/output location (semantic, attribute), or null.
 using Locate = nlohmann::json (*)(ResourceKind kind, uint32_t index);
 using IoName = nlohmann::json (*)(uint32_t location, bool input);
+// `placed`: the template's resources as the target placed them (describe() plus the target's address).
 nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const std::string& entryPoint,
-                              Locate locate, IoName ioName);
+                              Locate locate, IoName ioName, const nlohmann::json& placed);
 
 // The manifest (manifest.cpp): material, slots, parameter block, and every target's description.
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets);

@@ -4,12 +4,40 @@
 // name (the manifest says so), instead of hexc requiring GL_ARB_shading_language_420pack.
 #include <spirv_glsl.hpp>
 
+#include <map>
+
 #include "backends/backends.h"
 
 namespace hexc {
 namespace {
 
 bool hasBindingQualifiers(const CompileOptions& options) { return options.glslEs || options.glslVersion >= 420; }
+
+// The template's blocks after hexc's (uniform block binding 0), storage buffers and images from 0, its sampler2Ds
+// on the texture units after `unit`; `units` holds those SPIRV-Cross combined from separate images.
+nlohmann::json placeTemplateResources(spirv_cross::CompilerGLSL& c, const std::vector<TemplateResource>& own, std::map<uint32_t, uint32_t>& units,
+                                      uint32_t unit) {
+    uint32_t block = 1, storage = 0, image = 0;
+    nlohmann::json placed = nlohmann::json::array();
+    for (const TemplateResource& r : own) {
+        nlohmann::json where = describe(r);
+        auto bind = [&](const char* key, uint32_t value) {
+            c.set_decoration(r.id, spv::DecorationBinding, value);
+            where[key] = value;
+        };
+        switch (r.cls) {
+        case ResourceClass::UniformBuffer: bind("binding", block++); break;
+        case ResourceClass::StorageBuffer: bind("binding", storage++); break;
+        case ResourceClass::StorageImage: bind("image_unit", image++); break;
+        case ResourceClass::SampledImage: bind("texture_unit", unit++); break;
+        case ResourceClass::Image: where["texture_unit"] = units[r.id]; break;
+        case ResourceClass::Sampler: where["combined_into_textures"] = true; break;
+        case ResourceClass::PushConstant: where["uniform"] = c.get_name(r.id); break;  // a plain uniform struct in OpenGL
+        }
+        placed.push_back(std::move(where));
+    }
+    return placed;
+}
 
 }  // namespace
 
@@ -22,12 +50,19 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     glsl.enable_420pack_extension = false;
     c.set_common_options(glsl);
 
+    std::vector<TemplateResource> own = templateResources(c, plan);
     c.build_combined_image_samplers();
+    // hexc's textures on units 0..n-1; the template's textures (combined by SPIRV-Cross or its own sampler2D) after.
+    uint32_t unit = uint32_t(plan.slots.size());
+    std::map<uint32_t, uint32_t> units;  // template image or sampled image id -> texture unit
     for (const auto& combined : c.get_combined_image_samplers()) {
         uint32_t binding = c.get_decoration(combined.image_id, spv::DecorationBinding);
+        bool hexcs = c.get_decoration(combined.image_id, spv::DecorationDescriptorSet) == 0;
         c.set_name(combined.combined_id, c.get_name(combined.image_id));
-        c.set_decoration(combined.combined_id, spv::DecorationBinding, binding - kFirstTextureBinding);
+        if (!hexcs && !units.count(combined.image_id)) units[combined.image_id] = unit++;
+        c.set_decoration(combined.combined_id, spv::DecorationBinding, hexcs ? binding - kFirstTextureBinding : units[combined.image_id]);
     }
+    nlohmann::json placed = placeTemplateResources(c, own, units, unit);
     if (!hasBindingQualifiers(options)) {
         for (const auto& r : c.get_shader_resources().sampled_images) c.unset_decoration(r.id, spv::DecorationBinding);
         for (const auto& r : c.get_shader_resources().uniform_buffers) c.unset_decoration(r.id, spv::DecorationBinding);
@@ -48,7 +83,7 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
                               return {{"texture_unit", index}, {"bind_by_name", true}};
                           });
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };
-    out.target = describeTarget(spirv, plan, out.entryPoint, locate, none);
+    out.target = describeTarget(spirv, plan, out.entryPoint, locate, none, placed);
     out.target["version"] = std::to_string(options.glslVersion) + (options.glslEs ? " es" : "");
     // Combined samplers keep the texture's name, so the uniform to bind is the slot's texture name.
     for (auto& [slot, where] : out.target["textures"].items()) where["uniform"] = "hexcTex_" + slot;

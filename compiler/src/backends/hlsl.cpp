@@ -1,26 +1,69 @@
-// HLSL: cbuffer in b0, the shared sampler in s0, slot i's texture in t<i>, all in space0.
+// HLSL: cbuffer in b0, the shared sampler in s0, slot i's texture in t<i>, all in space0; the template's own
+// resources after them.
 #include <spirv_hlsl.hpp>
 
 #include "backends/backends.h"
 
 namespace hexc {
+namespace {
+
+// The template's resources after hexc's, each register class counted on from hexc's last (b0, s0, t0..t<n-1>),
+// all in space0 (shader model 5.0 has no spaces).
+template <typename Binding>
+nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const ShaderPlan& plan, Binding binding) {
+    uint32_t next[4] = {1, uint32_t(plan.slots.size()), 1, 0};  // b, t, s, u
+    auto take = [&](char cls) { return next[std::string_view("btsu").find(cls)]++; };
+    nlohmann::json placed = nlohmann::json::array();
+    for (const TemplateResource& r : templateResources(c, plan)) {
+        const bool push = r.cls == ResourceClass::PushConstant;
+        spirv_cross::HLSLResourceBinding b =
+            push ? binding(spirv_cross::ResourceBindingPushConstantDescriptorSet, spirv_cross::ResourceBindingPushConstantBinding) : binding(r.set, r.binding);
+        nlohmann::json where = describe(r);
+        auto assign = [&](spirv_cross::HLSLResourceBinding::Binding& field, char cls, const char* key) {
+            field.register_binding = take(cls);
+            where[key] = cls + std::to_string(field.register_binding);
+        };
+        switch (r.cls) {
+        case ResourceClass::UniformBuffer:
+        case ResourceClass::PushConstant: assign(b.cbv, 'b', "register"); break;
+        case ResourceClass::SampledImage: assign(b.srv, 't', "register"), assign(b.sampler, 's', "sampler_register"); break;
+        case ResourceClass::Image: assign(b.srv, 't', "register"); break;
+        case ResourceClass::Sampler: assign(b.sampler, 's', "register"); break;
+        case ResourceClass::StorageBuffer:
+        case ResourceClass::StorageImage: assign(b.uav, 'u', "register"); break;
+        }
+        where["space"] = 0;
+        c.add_hlsl_resource_binding(b);
+        placed.push_back(std::move(where));
+    }
+    return placed;
+}
+
+}  // namespace
 
 TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
     spirv_cross::CompilerHLSL c(spirv);
     spirv_cross::CompilerHLSL::Options hlsl;
     hlsl.shader_model = options.hlslShaderModel;
     c.set_hlsl_options(hlsl);
-    auto bind = [&](uint32_t binding, auto member, uint32_t reg) {
-        spirv_cross::HLSLResourceBinding b;
-        b.stage = spv::ExecutionModelFragment;
-        b.desc_set = 0;
-        b.binding = binding;
-        (b.*member).register_binding = reg;
-        c.add_hlsl_resource_binding(b);
+    auto binding = [](uint32_t set, uint32_t b) {
+        spirv_cross::HLSLResourceBinding r;
+        r.stage = spv::ExecutionModelFragment;
+        r.desc_set = set;
+        r.binding = b;
+        return r;
     };
-    bind(kParamsBinding, &spirv_cross::HLSLResourceBinding::cbv, 0);
-    bind(kSamplerBinding, &spirv_cross::HLSLResourceBinding::sampler, 0);
-    for (uint32_t i = 0; i < plan.slots.size(); ++i) bind(plan.slots[i].binding, &spirv_cross::HLSLResourceBinding::srv, i);
+    spirv_cross::HLSLResourceBinding params = binding(0, kParamsBinding), sampler = binding(0, kSamplerBinding);
+    params.cbv.register_binding = 0;
+    sampler.sampler.register_binding = 0;
+    c.add_hlsl_resource_binding(params);
+    c.add_hlsl_resource_binding(sampler);
+    for (uint32_t i = 0; i < plan.slots.size(); ++i) {
+        spirv_cross::HLSLResourceBinding texture = binding(0, plan.slots[i].binding);
+        texture.srv.register_binding = i;
+        c.add_hlsl_resource_binding(texture);
+    }
+    nlohmann::json placed = placeTemplateResources(c, plan, binding);
 
     TargetOutput out;
     out.source = c.compile();
@@ -33,7 +76,7 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     IoName semantic = [](uint32_t location, bool input) -> nlohmann::json {
         return {{"semantic", (input ? "TEXCOORD" : "SV_Target") + std::to_string(location)}};
     };
-    out.target = describeTarget(spirv, plan, out.entryPoint, locate, semantic);
+    out.target = describeTarget(spirv, plan, out.entryPoint, locate, semantic, placed);
     out.target["shader_model"] = std::to_string(options.hlslShaderModel / 10) + "_" + std::to_string(options.hlslShaderModel % 10);
     out.target["profile"] = "ps_" + out.target["shader_model"].get<std::string>();
     return out;

@@ -1,5 +1,5 @@
 // MSL: the parameter block in [[buffer(0)]], the shared sampler in [[sampler(0)]], slot i's texture in
-// [[texture(i)]].
+// [[texture(i)]]; the template's own resources after them.
 #include <spirv_msl.hpp>
 
 #include "backends/backends.h"
@@ -25,6 +25,25 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
     bind(kParamsBinding, 0, 0, 0);
     bind(kSamplerBinding, 0, 0, 0);
     for (uint32_t i = 0; i < plan.slots.size(); ++i) bind(plan.slots[i].binding, 0, i, 0);
+    // The template's resources after hexc's: buffers from 1, textures from the slot count, samplers from 1.
+    uint32_t buffer = 1, texture = uint32_t(plan.slots.size()), sampler = 1;
+    nlohmann::json placed = nlohmann::json::array();
+    for (const TemplateResource& r : templateResources(c, plan)) {
+        spirv_cross::MSLResourceBinding b;
+        b.stage = spv::ExecutionModelFragment;
+        const bool push = r.cls == ResourceClass::PushConstant;
+        b.desc_set = push ? spirv_cross::ResourceBindingPushConstantDescriptorSet : r.set;
+        b.binding = push ? spirv_cross::ResourceBindingPushConstantBinding : r.binding;
+        b.count = 1;
+        nlohmann::json where = describe(r);
+        const bool textured = r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Image || r.cls == ResourceClass::StorageImage;
+        const bool sampling = r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Sampler;
+        if (textured) where["texture"] = b.msl_texture = texture++;
+        if (sampling) where["sampler"] = b.msl_sampler = sampler++;
+        if (!textured && !sampling) where["buffer"] = b.msl_buffer = buffer++;
+        c.add_msl_resource_binding(b);
+        placed.push_back(std::move(where));
+    }
 
     TargetOutput out;
     out.source = c.compile();
@@ -38,7 +57,7 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
     IoName attribute = [](uint32_t location, bool input) -> nlohmann::json {
         return {{"attribute", (input ? "user(locn" : "color(") + std::to_string(location) + ")"}};
     };
-    out.target = describeTarget(spirv, plan, out.entryPoint, locate, attribute);
+    out.target = describeTarget(spirv, plan, out.entryPoint, locate, attribute, placed);
     out.target["msl_version"] = std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor);
     return out;
 }

@@ -1,5 +1,8 @@
 #include <spirv_cross.hpp>
 
+#include <algorithm>
+#include <tuple>
+
 #include "backends/backends.h"
 #include "hexc/diagnostics.h"
 
@@ -26,28 +29,94 @@ nlohmann::json stageVariables(const spirv_cross::Compiler& c, const spirv_cross:
     return out;
 }
 
+// The line of the template that first names `name` (1 when none does), for a located error.
+int lineNaming(const std::string& source, const std::string& name) {
+    size_t at = source.find(name);
+    return at == std::string::npos ? 1 : 1 + int(std::count(source.begin(), source.begin() + std::ptrdiff_t(at), '\n'));
+}
+
+// hexc's own resources: its block, sampler and textures at their set-0 bindings, under its names.
+bool isHexcs(const TemplateResource& r, const ShaderPlan& plan) {
+    const bool named = r.name.starts_with("hexc") || r.name == "HexcParams";
+    switch (r.cls) {
+    case ResourceClass::UniformBuffer: return named && r.binding == kParamsBinding;
+    case ResourceClass::Sampler: return named && r.binding == kSamplerBinding;
+    case ResourceClass::Image: return named && r.binding >= kFirstTextureBinding && r.binding < kFirstTextureBinding + plan.slots.size();
+    default: return false;
+    }
+}
+
+const char* toString(ResourceClass cls) {
+    static const char* names[] = {"uniform_buffer", "storage_buffer", "push_constant", "sampled_image", "image", "sampler", "storage_image"};
+    return names[size_t(cls)];
+}
+
 }  // namespace
 
+std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, const ShaderPlan& plan) {
+    spirv_cross::ShaderResources res = c.get_shader_resources();
+    const std::pair<ResourceClass, const spirv_cross::SmallVector<spirv_cross::Resource>*> lists[] = {
+        {ResourceClass::UniformBuffer, &res.uniform_buffers}, {ResourceClass::StorageBuffer, &res.storage_buffers},
+        {ResourceClass::PushConstant, &res.push_constant_buffers}, {ResourceClass::SampledImage, &res.sampled_images},
+        {ResourceClass::Image, &res.separate_images}, {ResourceClass::Sampler, &res.separate_samplers},
+        {ResourceClass::StorageImage, &res.storage_images}};
+    std::vector<TemplateResource> out;
+    for (const auto& [cls, list] : lists)
+        for (const spirv_cross::Resource& r : *list) {
+            TemplateResource t{r.id, r.name, cls, c.get_decoration(r.id, spv::DecorationDescriptorSet), c.get_decoration(r.id, spv::DecorationBinding)};
+            if (cls == ResourceClass::PushConstant) {
+                t.name = c.get_name(r.base_type_id);  // its block's name, as for the other blocks
+                out.push_back(std::move(t));
+                continue;
+            }
+            if (t.set != 0) {
+                out.push_back(std::move(t));
+                continue;
+            }
+            if (!isHexcs(t, plan))
+                throw CompileError{{{Diagnostic::Severity::Error, {plan.templateName, lineNaming(plan.templateSource, t.name), 0}, "",
+                                     "`" + t.name + "` is in descriptor set 0, binding " + std::to_string(t.binding) +
+                                         ", and set 0 is hexc's (parameter block, sampler, textures); declare the template's own resources "
+                                         "in set 1 or higher",
+                                     {}}}};
+        }
+    std::stable_sort(out.begin(), out.end(), [](const TemplateResource& a, const TemplateResource& b) {
+        return std::tie(a.cls, a.set, a.binding) < std::tie(b.cls, b.set, b.binding);
+    });
+    return out;
+}
+
+nlohmann::json describe(const TemplateResource& r) {
+    nlohmann::json j = {{"name", r.name}, {"kind", toString(r.cls)}};
+    if (r.cls != ResourceClass::PushConstant) j["vulkan"] = {{"set", r.set}, {"binding", r.binding}};
+    return j;
+}
+
 nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const std::string& entryPoint,
-                              Locate locate, IoName ioName) {
+                              Locate locate, IoName ioName, const nlohmann::json& placed) {
     spirv_cross::Compiler c(spirv);
     spirv_cross::ShaderResources res = c.get_shader_resources();
     nlohmann::json t = {{"entry_point", entryPoint}, {"stage", "fragment"}};
     if (!plan.slots.empty()) {
-        // The block layout the optimiser kept must be the one the plan laid out: engines fill it by offset.
+        // The block layout the optimiser kept must be the one the plan laid out: engines fill it by offset. Only
+        // hexc's own block (set 0): the template's are the template's.
+        bool hexcBlock = false;
         for (const auto& ubo : res.uniform_buffers) {
+            if (c.get_decoration(ubo.id, spv::DecorationDescriptorSet) != 0) continue;
+            hexcBlock = true;
             const auto& type = c.get_type(ubo.base_type_id);
             for (uint32_t i = 0; i < type.member_types.size(); ++i) {
                 if (plan.params[i].constantId || c.type_struct_member_offset(type, i) != plan.params[i].offset)
                     throw CompileError{{{Diagnostic::Severity::Error, {"hexc", 0, 0}, "", "internal: parameter block layout differs from the plan", {}}}};
             }
         }
-        if (!res.uniform_buffers.empty()) t["params"] = locate(ResourceKind::Params, 0);
+        if (hexcBlock) t["params"] = locate(ResourceKind::Params, 0);
         t["sampler"] = locate(ResourceKind::Sampler, 0);
         nlohmann::json textures = nlohmann::json::object();
         for (size_t i = 0; i < plan.slots.size(); ++i) textures[plan.slots[i].slot->name] = locate(ResourceKind::Texture, uint32_t(i));
         t["textures"] = textures;
     }
+    if (!placed.empty()) t["template_resources"] = placed;
     t["inputs"] = stageVariables(c, res.stage_inputs, true, ioName);
     t["outputs"] = stageVariables(c, res.stage_outputs, false, ioName);
     return t;
@@ -61,7 +130,9 @@ TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan&
         return {{"set", 0}, {"binding", binding}};
     };
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };
-    out.target = describeTarget(spirv, plan, out.entryPoint, locate, none);
+    nlohmann::json placed = nlohmann::json::array();
+    for (const TemplateResource& r : templateResources(spirv_cross::Compiler(spirv), plan)) placed.push_back(describe(r));
+    out.target = describeTarget(spirv, plan, out.entryPoint, locate, none, placed);
     return out;
 }
 

@@ -1,0 +1,127 @@
+// Templates that bring their own resources (materials/templates/engine.glsl: two uniform blocks in sets 1 and 2,
+// a sampler2D, a samplerCube, a separate texture and sampler, push constants): every target places them after
+// hexc's without a collision, the manifest lists each where the target put it, and the outputs compile again.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <regex>
+#include <set>
+
+#include "hexc/compiler.h"
+#include "hexc/material.h"
+#include "hexc/spirv.h"
+
+using namespace hexc;
+using json = nlohmann::json;
+
+namespace {
+
+CompileResult compileEngine(const std::string& templ = "materials/templates/engine.glsl", const std::string& extraSlot = "") {
+    std::string text = R"({"name": "engine_rock", "template": ")" + std::filesystem::absolute(templ).string() + R"(", "hextiling": {"tiling": 4},
+        "slots": [{"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"},
+                  {"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"})" + extraSlot + "]}";
+    ParseResult parsed = parseMaterial(text, "materials/engine_rock.json");
+    if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
+    return compile(*parsed.material);
+}
+
+std::string file(const CompileResult& r, const std::string& name) {
+    for (const OutputFile& f : r.files)
+        if (f.name == name) return f.contents;
+    ADD_FAILURE() << "no output " << name;
+    return {};
+}
+
+// Every match of `pattern` (its first group) in `text`, which must all differ.
+std::multiset<std::string> matches(const std::string& text, const std::string& pattern) {
+    std::multiset<std::string> out;
+    std::regex re(pattern);
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator(); ++it) out.insert((*it)[1].str());
+    return out;
+}
+
+void expectDistinct(const std::multiset<std::string>& found, size_t count, const std::string& what) {
+    EXPECT_EQ(found.size(), count) << what;
+    EXPECT_EQ(std::set<std::string>(found.begin(), found.end()).size(), found.size()) << what << " used twice";
+}
+
+}  // namespace
+
+TEST(TemplateResources, EveryTargetPlacesThemWithoutCollisions) {
+    CompileResult r = compileEngine();
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    // HLSL: 4 cbuffers (hexc's, Frame, Object, Push), 5 textures, 4 samplers.
+    std::string hlsl = file(r, "engine_rock.frag.hlsl");
+    expectDistinct(matches(hlsl, R"(register\((b\d+)\))"), 4, "HLSL b registers");
+    expectDistinct(matches(hlsl, R"(register\((t\d+)\))"), 5, "HLSL t registers");
+    expectDistinct(matches(hlsl, R"(register\((s\d+)\))"), 4, "HLSL s registers");
+    std::string msl = file(r, "engine_rock.frag.metal");
+    expectDistinct(matches(msl, R"(\[\[buffer\((\d+)\)\]\])"), 4, "MSL buffers");
+    expectDistinct(matches(msl, R"(\[\[texture\((\d+)\)\]\])"), 5, "MSL textures");
+    expectDistinct(matches(msl, R"(\[\[sampler\((\d+)\)\]\])"), 4, "MSL samplers");
+    // GLSL: 3 uniform blocks, 5 combined samplers on texture units (push constants become a plain uniform).
+    std::string glsl = file(r, "engine_rock.frag.glsl");
+    expectDistinct(matches(glsl, R"(binding = (\d+), std140)"), 3, "GLSL uniform block bindings");
+    expectDistinct(matches(glsl, R"(binding = (\d+)\) uniform sampler)"), 5, "GLSL texture units");
+}
+
+TEST(TemplateResources, TheManifestSaysWhereEachTargetPutThem) {
+    CompileResult r = compileEngine();
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    json m = json::parse(file(r, "engine_rock.manifest.json"));
+    std::string hlsl = file(r, "engine_rock.frag.hlsl"), msl = file(r, "engine_rock.frag.metal"), glsl = file(r, "engine_rock.frag.glsl");
+    for (const std::string target : {"spirv", "hlsl", "glsl", "msl"}) ASSERT_EQ(m["targets"][target]["template_resources"].size(), 7u) << target;
+    for (const json& res : m["targets"]["hlsl"]["template_resources"]) {
+        std::string name = res["name"];
+        // The declaration of `name` carries the register the manifest gives (cbuffers by their block name).
+        std::string reg = res["register"];
+        EXPECT_TRUE(std::regex_search(hlsl, std::regex("\\b" + name + "\\b[^;\\n]*register\\(" + reg + "\\)"))) << name << " " << reg;
+        if (res.contains("sampler_register")) {
+            std::regex sampler("_" + name + "_sampler : register\\(" + res["sampler_register"].get<std::string>() + "\\)");
+            EXPECT_TRUE(std::regex_search(hlsl, sampler)) << name;
+        }
+    }
+    for (const json& res : m["targets"]["msl"]["template_resources"]) {
+        std::string name = res["name"], what = res.contains("buffer") ? "buffer" : res.contains("texture") ? "texture" : "sampler";
+        int index = res[what].get<int>();
+        EXPECT_TRUE(std::regex_search(msl, std::regex("\\b" + name + "\\b[^,)]*\\[\\[" + what + "\\(" + std::to_string(index) + "\\)\\]\\]"))) << name;
+    }
+    for (const json& res : m["targets"]["glsl"]["template_resources"]) {
+        if (!res.contains("texture_unit") || res["kind"] == "image") continue;  // combined images keep the image's name
+        std::string name = res["name"];
+        EXPECT_TRUE(std::regex_search(glsl, std::regex("binding = " + std::to_string(res["texture_unit"].get<int>()) + "\\) uniform \\w+ " + name + ";")))
+            << name;
+    }
+    // hexc's own resources keep their documented places.
+    EXPECT_EQ(m["targets"]["hlsl"]["params"]["register"], "b0");
+    EXPECT_EQ(m["targets"]["hlsl"]["textures"]["roughness"]["register"], "t1");
+    EXPECT_EQ(m["targets"]["spirv"]["textures"]["albedo"]["binding"], 2);
+}
+
+TEST(TemplateResources, TheHlslOutputCompilesAgain) {
+    CompileResult r = compileEngine();
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    json m = json::parse(file(r, "engine_rock.manifest.json"));
+    SpirvResult again = compileToSpirv(file(r, "engine_rock.frag.hlsl"), ShaderStage::Fragment, "engine_rock.frag.hlsl", SourceLanguage::Hlsl,
+                                       m["targets"]["hlsl"]["entry_point"]);
+    EXPECT_FALSE(again.words.empty()) << formatAll(again.diagnostics);
+}
+
+TEST(TemplateResources, OneInHexcsSetIsALocatedError) {
+    std::filesystem::path templ = std::filesystem::temp_directory_path() / "hexc_set0_template.glsl";
+    std::ifstream in("materials/templates/engine.glsl");
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    const std::string declared = "layout(set = 1, binding = 1)";
+    text.replace(text.find(declared + " uniform sampler2D shadowMap;"), declared.size(), "layout(set = 0, binding = 9)");
+    std::ofstream(templ) << text;
+    CompileResult r = compileEngine(templ.string());
+    ASSERT_FALSE(r.ok());
+    const Diagnostic& d = r.diagnostics.back();
+    EXPECT_EQ(d.loc.file, templ.string());
+    int line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(text.find("shadowMap")), '\n'));
+    EXPECT_EQ(d.loc.line, line);
+    EXPECT_NE(d.message.find("`shadowMap` is in descriptor set 0"), std::string::npos) << d.format();
+    EXPECT_TRUE(r.files.empty());
+}
