@@ -4,6 +4,9 @@
 // Stage inputs: location 0 = texture coordinate, 1 = surface normal, 2 = tangent (w = bitangent sign),
 // all in the same (world or view) space as the light direction below. With the triplanar projection:
 // 1 = surface normal and 3 = position, in world space.
+// hexc slot albedo color
+// hexc slot normal normal
+// hexc slot roughness scalar
 #include <hexc>
 
 #ifdef HEXC_PROJECTION_triplanar

@@ -3,6 +3,7 @@
 // Slots read: `albedo` (color), optional; without it the pass writes depth only.
 layout(location = 0) in vec2 v_uv;
 
+// hexc slot albedo color
 #include <hexc>
 
 void main() {

@@ -2,6 +2,7 @@
 // hexc template `unlit`: writes the hex-tiled colour of slot `albedo` (alpha included).
 // Stage inputs: location 0 = texture coordinate; with the triplanar projection instead location 1 = surface
 // normal and 3 = position, in world space.
+// hexc slot albedo color required
 #include <hexc>
 
 #ifdef HEXC_PROJECTION_triplanar

@@ -71,6 +71,7 @@ struct Slot {
     HexTiling hex;                   // material settings with this slot's overrides applied
     std::optional<HeightBlend> heightBlend;
     int width = 0, height = 0;       // of the texture file
+    int line = 0, col = 0;           // where the slot's kind (else the slot) is in the material file; 0 when built in code
 };
 
 struct Material {

@@ -402,6 +402,8 @@ private:
             if (int i = choice(v["kind"], pointer + "/kind", kKinds); i >= 0) {
                 s.kind = SlotKind(i);
                 kindKnown = true;
+                TextPos at = locator_.value(pointer + "/kind");  // where a template-fit error points
+                s.line = at.line, s.col = at.col;
             }
         }
         s.colorSpace = s.kind == SlotKind::Color ? ColorSpace::Srgb : ColorSpace::Linear;

@@ -6,6 +6,7 @@
 #include "hexc/files.h"
 #include "common/templates.h"
 #include "plan/macros.h"
+#include "plan/template_fit.h"
 
 namespace hexc {
 namespace {
@@ -52,6 +53,8 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
     auto begin = std::sregex_iterator(plan.templateSource.begin(), plan.templateSource.end(), include);
     if (std::distance(begin, std::sregex_iterator()) != 1)
         error("a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+    std::vector<TemplateSlot> declared = readTemplateSlots(plan.templateSource, plan.templateName, plan.diagnostics);
+    for (Diagnostic& d : checkTemplateFit(declared, material, ref)) plan.diagnostics.push_back(std::move(d));
     if (MacroExpansion e = boundMacroExpansion(plan.templateSource); e.line) {
         plan.diagnostics.push_back({Diagnostic::Severity::Error, {plan.templateName, e.line, 0}, "",
                                     "the template's macros expand to more than " + std::to_string(int(kMaxExpandedTokens)) +

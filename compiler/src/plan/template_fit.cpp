@@ -1,0 +1,59 @@
+#include "plan/template_fit.h"
+
+#include <sstream>
+
+namespace hexc {
+namespace {
+
+constexpr std::string_view kMarker = "// hexc slot ";
+
+std::string kindName(SlotKind kind) { return std::string(toString(kind)); }
+
+}  // namespace
+
+std::vector<TemplateSlot> readTemplateSlots(const std::string& source, const std::string& file, Diagnostics& diagnostics) {
+    std::vector<TemplateSlot> out;
+    std::istringstream in(source);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        size_t at = line.find_first_not_of(" \t");
+        if (at == std::string::npos || line.compare(at, kMarker.size(), kMarker) != 0) continue;
+        std::istringstream words(line.substr(at + kMarker.size()));
+        std::string name, kind, extra, more;
+        words >> name >> kind >> extra >> more;
+        TemplateSlot slot{name, SlotKind::Color, extra == "required"};
+        bool known = false;
+        for (SlotKind k : {SlotKind::Color, SlotKind::Scalar, SlotKind::Normal})
+            if (kind == kindName(k)) slot.kind = k, known = true;
+        if (name.empty() || !known || !(extra.empty() || slot.required) || !more.empty()) {
+            diagnostics.push_back({Diagnostic::Severity::Error, {file, number, int(at) + 1}, "",
+                                   "expected `// hexc slot <name> <color|scalar|normal> [required]`, got `" + line.substr(at) + "`", {}});
+            continue;
+        }
+        out.push_back(std::move(slot));
+    }
+    return out;
+}
+
+Diagnostics checkTemplateFit(const std::vector<TemplateSlot>& declared, const Material& material, const std::string& templateName) {
+    Diagnostics out;
+    for (const TemplateSlot& t : declared) {
+        bool found = false;
+        for (size_t i = 0; i < material.slots.size(); ++i) {
+            const Slot& s = material.slots[i];
+            if (s.name != t.name) continue;
+            found = true;
+            if (s.kind != t.kind)
+                out.push_back({Diagnostic::Severity::Error, {material.sourceFile.string(), s.line, s.col}, "/slots/" + std::to_string(i) + "/kind",
+                               "template `" + templateName + "` reads `" + s.name + "` as a " + kindName(t.kind) + " slot; this one is `" +
+                                   kindName(s.kind) + "`",
+                               {}});
+        }
+        if (!found && t.required)
+            out.push_back({Diagnostic::Severity::Error, {material.sourceFile.string(), 0, 0}, "/slots",
+                           "template `" + templateName + "` needs a " + kindName(t.kind) + " slot named `" + t.name + "`", {}});
+    }
+    return out;
+}
+
+}  // namespace hexc
