@@ -411,3 +411,19 @@ TEST(Material, ScalarTilingAppliesToBothAxes) {
 }
 
 }  // namespace
+
+TEST(Validation, AScalarSlotReadsOnlyChannelsItsTextureHas) {
+    // rock_roughness.png is grey (1 channel), rock_albedo.png RGB (3).
+    auto scalar = [](const char* channel, const char* texture) {
+        return diagnose(std::string(R"({"name": "m", "slots": [{"name": "rough", "kind": "scalar", "channel": ")") + channel +
+                        R"(", "texture": "textures/)" + texture + R"("}]})");
+    };
+    EXPECT_EQ(scalar("a", "rock_albedo.png"),
+              std::vector<std::string>{"materials/t.json:1:72: error: /slots/0/channel: channel `a` of materials/textures/rock_albedo.png, which "
+                                       "has 3 channels; expected `r`, `g` or `b`"});
+    EXPECT_EQ(scalar("g", "rock_roughness.png"),
+              std::vector<std::string>{"materials/t.json:1:72: error: /slots/0/channel: channel `g` of materials/textures/rock_roughness.png, which "
+                                       "has 1 channel; expected `r`"});
+    EXPECT_TRUE(scalar("b", "rock_albedo.png").empty());
+    EXPECT_TRUE(scalar("r", "rock_roughness.png").empty());
+}

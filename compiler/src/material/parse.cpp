@@ -505,6 +505,15 @@ private:
         s.height = info->height;
         if (s.kind == SlotKind::Normal && info->channels < 3)
             error(pointer, "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));
+        // A channel the file lacks reads whatever the engine's upload puts there (0, 1 or a copy of grey): a scalar
+        // slot reading one is a mistake. A grey + alpha file has r and a.
+        static const char* kHas[] = {"", "r", "ra", "rgb", "rgba"};
+        std::vector<std::string> has;
+        for (const char* c = kHas[std::clamp(info->channels, 0, 4)]; *c; ++c) has.emplace_back(1, *c);
+        if (s.kind == SlotKind::Scalar && std::find(has.begin(), has.end(), kChannels[size_t(s.channel)]) == has.end())
+            error(pointer.substr(0, pointer.rfind('/')) + "/channel",
+                  "channel `" + kChannels[size_t(s.channel)] + "` of " + s.texturePath.string() + ", which has " + std::to_string(info->channels) +
+                      " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));
     }
 
     JsonLocator locator_;
