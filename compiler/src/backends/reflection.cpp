@@ -127,7 +127,8 @@ TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan&
     out.entryPoint = "main";
     Locate locate = [](ResourceKind kind, uint32_t index) -> nlohmann::json {
         uint32_t binding = kind == ResourceKind::Params ? kParamsBinding : kind == ResourceKind::Sampler ? kSamplerBinding : kFirstTextureBinding + index;
-        return {{"set", 0}, {"binding", binding}};
+        const char* type = kind == ResourceKind::Params ? "uniform_buffer" : kind == ResourceKind::Sampler ? "sampler" : "sampled_image";
+        return {{"set", 0}, {"binding", binding}, {"descriptor_type", type}};
     };
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };
     nlohmann::json placed = nlohmann::json::array();
