@@ -165,12 +165,15 @@ TEST(Compile, UnknownBuiltinTemplateInACodeBuiltMaterialIsADiagnostic) {
 
 TEST(Compile, TemplateWithoutInjectionPointIsRejected) {
     std::filesystem::path t = std::filesystem::temp_directory_path() / "hexc_no_include.glsl";
-    std::ofstream(t) << "#version 450\nlayout(location = 0) out vec4 o;\nvoid main() { o = vec4(1.0); }\n";
-    CompileOptions options;
-    options.templateFile = t;
-    CompileResult r = compile(load("materials/tiles.json"), options);
-    ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.diagnostics[0].format(), t.string() + ": error: a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+    // None, two on adjacent lines (CRLF), and one only inside a longer line: each is refused.
+    for (const char* body : {"", "#include <hexc>\r\n#include <hexc>\r\n", "// #include <hexc>\n"}) {
+        std::ofstream(t) << "#version 450\n" << body << "layout(location = 0) out vec4 o;\nvoid main() { o = vec4(1.0); }\n";
+        CompileOptions options;
+        options.templateFile = t;
+        CompileResult r = compile(load("materials/tiles.json"), options);
+        ASSERT_FALSE(r.ok()) << body;
+        EXPECT_EQ(r.diagnostics[0].format(), t.string() + ": error: a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+    }
 }
 
 TEST(Compile, SlotsTheTemplateDoesNotReadAreLeftOutWithAWarning) {

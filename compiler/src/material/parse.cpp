@@ -1,8 +1,8 @@
 // JSON -> Material: parse, validate and fill defaults. Every problem becomes a located diagnostic and
 // validation goes on after an error, so a user sees all problems in one run.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +10,7 @@
 #include "hexc/files.h"
 #include "common/suggest.h"
 #include "common/templates.h"
+#include "common/text.h"
 #include "hexc/image.h"
 #include "hexc/material.h"
 #include "hexc/scene.h"
@@ -29,6 +30,18 @@ const std::vector<std::string> kHeightKeys = {"slot", "width"};
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
 const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
+
+// 1-64 letters, digits, `_` or `-`: material, scene and pass names become file names.
+bool isFileName(const std::string& name) {
+    return !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) { return isIdentifierChar(c) || c == '-'; });
+}
+
+// [a-z][a-z0-9_]{0,31} without `__` (reserved in GLSL): a slot name becomes the GLSL function hexc_<name>.
+bool isSlotName(const std::string& name) {
+    auto lowerOrDigit = [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; };
+    return !name.empty() && name.size() <= 32 && name[0] >= 'a' && name[0] <= 'z' && std::all_of(name.begin(), name.end(), lowerOrDigit) &&
+           name.find("__") == std::string::npos;
+}
 const std::vector<std::string> kModes = {"stable", "paper"};
 const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
 const std::vector<std::string> kProjections = {"uv", "triplanar"};
@@ -85,8 +98,7 @@ public:
         checkKeys(doc, "", kMaterialKeys);
         if (requireKey(doc, "", "name", "a string")) {
             m.name = string(doc["name"], "/name");
-            static const std::regex re("[A-Za-z0-9_-]{1,64}");
-            if (doc["name"].is_string() && !std::regex_match(m.name, re))
+            if (doc["name"].is_string() && !isFileName(m.name))
                 error("/name", "expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"" + m.name + "\"");
         }
         m.templateName = "lit";
@@ -104,14 +116,13 @@ public:
         scene.sourceFile = file_;
         static const std::vector<std::string> kSceneKeys = {"$schema", "scene", "materials", "passes"};
         static const std::vector<std::string> kPassKeys = {"name", "template", "slots", "materials"};
-        static const std::regex identifier("[A-Za-z0-9_-]{1,64}");
         if (!doc.is_object()) {
             error("", "expected a scene object, got " + typeName(doc));
             return scene;
         }
         checkKeys(doc, "", kSceneKeys);
         scene.name = string(doc["scene"], "/scene");
-        if (doc["scene"].is_string() && !std::regex_match(scene.name, identifier))
+        if (doc["scene"].is_string() && !isFileName(scene.name))
             error("/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
         if (requireKey(doc, "", "materials", "an array of material files")) {
             const json& list = doc["materials"];
@@ -145,7 +156,7 @@ public:
                 ScenePass pass;
                 if (requireKey(v, p, "name", "a string")) {
                     pass.name = string(v["name"], p + "/name");
-                    if (v["name"].is_string() && !std::regex_match(pass.name, identifier))
+                    if (v["name"].is_string() && !isFileName(pass.name))
                         error(p + "/name", "expected 1-64 letters, digits, `_` or `-`, got \"" + pass.name + "\"");
                     for (const ScenePass& other : scene.passes)
                         if (other.name == pass.name) error(p + "/name", "duplicate pass name \"" + pass.name + "\"");
@@ -390,8 +401,7 @@ private:
         checkKeys(v, pointer, kSlotKeys);
         if (requireKey(v, pointer, "name", "a string")) {
             s.name = string(v["name"], pointer + "/name");
-            static const std::regex re("[a-z][a-z0-9_]{0,31}");
-            if (v["name"].is_string() && (!std::regex_match(s.name, re) || s.name.find("__") != std::string::npos)) {
+            if (v["name"].is_string() && !isSlotName(s.name)) {
                 error(pointer + "/name", "expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`), got \"" + s.name + "\"",
                       "it becomes the GLSL function hexc_<name>");
                 s.name.clear();

@@ -1,19 +1,15 @@
 #include "plan/plan.h"
 
 #include <cmath>
-#include <regex>
 
 #include "hexc/files.h"
 #include "common/templates.h"
+#include "common/text.h"
 #include "plan/macros.h"
 #include "plan/template_fit.h"
 
 namespace hexc {
 namespace {
-
-bool readsIdentifier(const std::string& source, const std::string& identifier) {
-    return std::regex_search(source, std::regex("\\b" + identifier + "\\b"));
-}
 
 // Slots share a lattice when everything the lattice computes from is the same.
 bool sameLattice(const HexTiling& a, const HexTiling& b) {
@@ -48,10 +44,9 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
         }
         plan.templateSource = *text;
     }
-    if (!std::regex_search(plan.templateSource, std::regex("^#version[^\n]*\n"))) error("a template must start with a `#version` line");
-    static const std::regex include("(^|\n)#include <hexc>[ \t]*(\r?\n|$)");
-    auto begin = std::sregex_iterator(plan.templateSource.begin(), plan.templateSource.end(), include);
-    if (std::distance(begin, std::sregex_iterator()) != 1)
+    if (!plan.templateSource.starts_with("#version") || plan.templateSource.find('\n') == std::string::npos)
+        error("a template must start with a `#version` line");
+    if (countLines(plan.templateSource, "#include <hexc>") != 1)
         error("a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
     std::vector<TemplateSlot> declared = readTemplateSlots(plan.templateSource, plan.templateName, plan.diagnostics);
     for (Diagnostic& d : checkTemplateFit(declared, material, ref)) plan.diagnostics.push_back(std::move(d));
@@ -70,11 +65,11 @@ struct SlotUse {
 };
 
 SlotUse slotUse(const Material& material, const std::string& templateSource) {
-    bool readsFirst = readsIdentifier(templateSource, "HEXC_FIRST_SLOT");
+    bool readsFirst = containsWord(templateSource, "HEXC_FIRST_SLOT");
     SlotUse use{std::vector<bool>(material.slots.size()), std::vector<bool>(material.slots.size())};
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
-        if (!readsIdentifier(templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
+        if (!containsWord(templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
         use.read[i] = use.needed[i] = true;
         if (slot.heightBlend)
             for (size_t j = 0; j < material.slots.size(); ++j) use.needed[j] = use.needed[j] || material.slots[j].name == slot.heightBlend->slot;

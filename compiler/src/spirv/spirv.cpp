@@ -7,7 +7,6 @@
 #include <spirv-tools/optimizer.hpp>
 
 #include <mutex>
-#include <regex>
 #include <sstream>
 
 #include "plan/plan.h"
@@ -21,19 +20,35 @@ void initializeGlslang() {
     std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
+// The file and line of a glslang log line "file:line: message": the first `:digits: ` splits them (file names may
+// hold colons). False when the line has no location.
+bool splitLocated(std::string_view rest, std::string& file, int& line, std::string& message) {
+    for (size_t colon = rest.find(':'); colon != std::string_view::npos; colon = rest.find(':', colon + 1)) {
+        size_t digits = colon + 1;
+        while (digits < rest.size() && rest[digits] >= '0' && rest[digits] <= '9') ++digits;
+        if (digits == colon + 1 || digits > colon + 10 || rest.substr(digits, 2) != ": ") continue;
+        file = std::string(rest.substr(0, colon));
+        line = std::stoi(std::string(rest.substr(colon + 1, digits - colon - 1)));
+        message = std::string(rest.substr(digits + 2));
+        return true;
+    }
+    return false;
+}
+
 // glslang writes "ERROR: file:line: message" (or "0:line" for unnamed sources) one per line.
 void appendGlslangLog(const std::string& log, const std::string& fallbackName, Diagnostics& out) {
-    static const std::regex located("^(ERROR|WARNING): (.*?):([0-9]+): (.*)$");
     std::istringstream in(log);
-    std::string line;
-    std::smatch m;
+    std::string line, file, message;
+    int number = 0;
     while (std::getline(in, line)) {
-        if (std::regex_match(line, m, located)) {
-            std::string file = m[2].str() == "0" ? fallbackName : m[2].str();
-            auto severity = m[1] == "ERROR" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
-            out.push_back({severity, {file, std::stoi(m[3]), 0}, "", m[4].str(), {}});
-        } else if (line.rfind("ERROR: ", 0) == 0 && line.find("compilation errors") == std::string::npos) {
-            out.push_back({Diagnostic::Severity::Error, {fallbackName, 0, 0}, "", line.substr(7), {}});
+        bool isError = line.starts_with("ERROR: "), isWarning = line.starts_with("WARNING: ");
+        if (!isError && !isWarning) continue;
+        auto severity = isError ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
+        std::string_view rest = std::string_view(line).substr(isError ? 7 : 9);
+        if (splitLocated(rest, file, number, message)) {
+            out.push_back({severity, {file == "0" ? fallbackName : file, number, 0}, "", message, {}});
+        } else if (isError && line.find("compilation errors") == std::string::npos) {
+            out.push_back({Diagnostic::Severity::Error, {fallbackName, 0, 0}, "", std::string(rest), {}});
         }
     }
 }
