@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "hexc/material.h"
 #include "reference/reference.h"
@@ -517,9 +518,10 @@ TEST(Properties, GainAtOneHalfChangesNothing) {
     EXPECT_GT(compare(albedo(0.5), albedo(0.75), 4).max, 1.0 / 255);  // and the gain does act when asked
 }
 
-// A ramp normal map: every texel encodes the same slope (a, b), the height field H = a s + b t. Inside a tile
-// rotated by theta (sample point (st - c) R + offset), the height seen in st is H((st - c) R), whose gradient is
-// R (a, b): the blended derivative must be (a, b) rotated by the tile's angle. Checked where one tile's weight
+// A ramp normal map: every texel encodes the same derivative (a, b) = (dH/du, dH/dy), y = -v (a green-up map), the
+// height field H = a u - b v. Inside a tile rotated by theta (sample point R^T (uv - c) + offset) the height seen is
+// H(R^T uv + ...), whose (u, v) gradient is R (a, -b); in (u, y) that is F R F (a, b) = R^T (a, b) with
+// F = diag(1, -1): the blended derivative must be (a, b) rotated by minus the tile's angle. Checked where one tile's weight
 // exceeds 0.999 (the others can move the result by at most 2 * 0.001 * |(a, b)|), with theta from the mode's
 // definition (reference::tileTransform). Stored as float texels: sampling adds no error.
 TEST(Properties, RampNormalMapRotatesWithEachTile) {
@@ -531,7 +533,7 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
     ramp.rgba.clear();
     for (int i = 0; i < 16 * 16; ++i) ramp.rgba.insert(ramp.rgba.end(), {float(0.5 - 0.25 * a), float(0.5 - 0.25 * b), 0.75f, 1.0f});
     writeImage(ramp, file);  // n = (-a, -b, 1) / 2 encoded n * 0.5 + 0.5: Listing 9 reads back d = (a, b)
-    // Per-tile scale s: the tile shows H(p / s), so its slope is R(theta)(a, b) / s.
+    // Per-tile scale s: the tile shows H(p / s), so its slope is R(-theta)(a, b) / s.
     for (const char* mode : {R"("mode": "stable")", R"("mode": "paper")", R"("scalerange": [0.5, 2], "rotationrange": [0, 360], "rotationsteps": 6)"}) {
         Material m = material(std::string(R"({"name": "normal", "kind": "normal", "texture": ")") + file.string() +
                               R"(", "hextiling": {"tiling": 1, )" + mode + "}}");
@@ -548,18 +550,125 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
                 if (r.blend[dominant] < 0.999) continue;
                 reference::TileTransform tile = reference::tileTransform(tri.id[dominant], m.slots[0].hex);
                 double theta = tile.angle;
-                double ex = (std::cos(theta) * a - std::sin(theta) * b) / tile.scale, ey = (std::sin(theta) * a + std::cos(theta) * b) / tile.scale;
+                double ex = (std::cos(theta) * a + std::sin(theta) * b) / tile.scale, ey = (-std::sin(theta) * a + std::cos(theta) * b) / tile.scale;
                 worst = std::max({worst, std::fabs(d.at(i, j)[0] - ex), std::fabs(d.at(i, j)[1] - ey)});
                 ++checked;
             }
         // The other tiles' share (< 0.001) moves the result by at most 0.001 times the largest difference of two
         // tiles' slopes, 2 |(a, b)| / min scale; 1e-5: float32 sin/cos and products.
         double bound = 2 * 0.001 * std::hypot(a, b) / m.slots[0].hex.scaleRange[0] + 1e-5;
-        std::printf("  ramp (%s): %zu pixels inside tiles, largest |d - R(theta)(a, b)| %.2e, bound %.2e\n", mode, checked, worst, bound);
+        std::printf("  ramp (%s): %zu pixels inside tiles, largest |d - R(-theta)(a, b)| %.2e, bound %.2e\n", mode, checked, worst, bound);
         EXPECT_GT(checked, size_t(view.width * view.height / 4));
         EXPECT_LE(worst, bound) << mode;
     }
 }
+
+// An analytic height field h(s, t) (periodic, slopes up to about 1.2), given as a height texture and as normal maps
+// in both green conventions, each with its documented flip_y. Inside the tiles, the blended derivative must be the
+// derivative of the hex-tiled height (the same lattice and weights: falloffcontrast 0), whatever the tile's
+// rotation, and the two conventions must give one image. Derivatives are (dH/du, dH/dy) with y up the texture
+// (y = -v), the convention of a green-up map and of the tangent frame the templates use.
+namespace analytic {
+constexpr int kSize = 256;
+const double kTwoPi = 2 * 3.14159265358979323846;
+double h(double s, double t) { return (0.6 * std::sin(kTwoPi * s) * std::cos(kTwoPi * t) + 0.3 * std::sin(kTwoPi * (s + 2 * t))) / kTwoPi; }
+double hs(double s, double t) { return 0.6 * std::cos(kTwoPi * s) * std::cos(kTwoPi * t) + 0.3 * std::cos(kTwoPi * (s + 2 * t)); }
+double ht(double s, double t) { return -0.6 * std::sin(kTwoPi * s) * std::sin(kTwoPi * t) + 0.6 * std::cos(kTwoPi * (s + 2 * t)); }
+
+// texel(s, t) at each texel centre (row 0 at t = 0, the top), written as a float texture.
+std::filesystem::path write(const char* name, const std::function<std::array<float, 4>(double, double)>& texel) {
+    Image image;
+    image.width = image.height = kSize;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            auto v = texel((x + 0.5) / kSize, (y + 0.5) / kSize);
+            image.rgba.insert(image.rgba.end(), v.begin(), v.end());
+        }
+    std::filesystem::path file = std::filesystem::temp_directory_path() / name;
+    writeImage(image, file);
+    return file;
+}
+
+// A normal map of h whose green axis points up the texture (greenUp) or down it, encoded n * 0.5 + 0.5 with
+// n = (-dh/dx, -dh/dy, 1) / 2 (Listing 9 divides by z, so n need not be unit length).
+std::filesystem::path normalMap(bool greenUp) {
+    return write(greenUp ? "hexc_analytic_green_up.pfm" : "hexc_analytic_green_down.pfm", [&](double s, double t) {
+        double dy = greenUp ? -ht(s, t) : ht(s, t);
+        return std::array<float, 4>{float(0.5 - 0.25 * hs(s, t)), float(0.5 - 0.25 * dy), 0.75f, 1.0f};
+    });
+}
+}  // namespace analytic
+
+struct AnalyticCase {
+    const char* name;
+    const char* settings;
+};
+
+class AnalyticNormals : public testing::TestWithParam<std::tuple<AnalyticCase, vk::ExecutedTarget>> {};
+
+TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
+    REQUIRE_VULKAN();
+    const auto [which, target] = GetParam();
+    const char* settings = which.settings;
+    std::filesystem::path height = analytic::write("hexc_analytic_height.pfm", [](double s, double t) {
+        float v = float(analytic::h(s, t));
+        return std::array<float, 4>{v, v, v, 1.0f};
+    });
+    const std::string hex = std::string(R"("hextiling": {"tiling": 1, "falloffcontrast": 0, )") + settings + "}";
+    auto slot = [&](const char* kind, const std::filesystem::path& file, const char* extra) {
+        return material(std::string(R"({"name": "s", "kind": ")") + kind + R"(", "colorspace": "linear", "texture": ")" + file.string() + "\", " +
+                        extra + hex + "}");
+    };
+    // 512 pixels over two texture periods: a pixel step of 1/256 in st.
+    const View view{512, 512, {0.0, 0.0, 2.0, 2.0}};
+    vk::Runner& gpu = *runner(&whyNoVulkan);
+    Image up = vk::render(gpu, slot("normal", analytic::normalMap(true), R"("flip_y": false, )"), vk::RenderOutput::Derivative, "", view, target);
+    Image down = vk::render(gpu, slot("normal", analytic::normalMap(false), R"("flip_y": true, )"), vk::RenderOutput::Derivative, "", view, target);
+    Image H = vk::render(gpu, slot("scalar", height, ""), vk::RenderOutput::Albedo, "", view, target);
+    Image W = vk::render(gpu, slot("scalar", height, ""), vk::RenderOutput::Weights, "", view, target);
+    // Both conventions decode to the same derivative up to the float32 rounding of their texels: 0.5 - x and 0.5 + x
+    // round with different ulps (2^-25 below 0.5, 2^-24 above), so the decoded greens differ by up to 2 * 2^-24 +
+    // 2^-23 = 2.4e-7, and d = -n / z with z = 0.5 doubles it; filtering is a convex combination (no growth), and the
+    // rotation and blend add a few float32 ulps of |d| <= 1.5. 1e-6.
+    EXPECT_LE(compare(up, down, 2).max, 1e-6);
+    // Checked at pixels where one tile's weight is >= 0.9999 there and at the four neighbours the central difference
+    // reads. Tolerance, per component, T = 1/256 a texel (and a pixel step):
+    // - H is filtered bilinearly: its slope at a point is that of the interpolant, off by at most (T / 2) max|h''|, and
+    //   max|h''| = 2 pi * 1.8 (h_tt), so 11.3 / 512 = 0.022 (the central difference averages it but, in a rotated
+    //   tile, need not cancel it);
+    // - lavapipe quantises bilinear weights to 8 bits (error <= 1/512 per axis, two axes) of texel differences
+    //   <= T max|h'| = 1.5 T: H is off by <= 1.2e-5 T per sample, its central difference by <= 0.0025;
+    // - the normal map's filtered slopes: (T^2 / 8) max|h'''| (118) = 2.3e-4, and the 8-bit weights 2 * 11.3 T / 512 =
+    //   1.7e-4;
+    // - the other tiles (weights <= 1e-4 at all five pixels): in H's difference <= 2 * 1e-4 * 2 max|h| (0.29) / 2T =
+    //   0.0074, in the derivative <= 1e-4 * 2 max|grad h| (3.0) = 3e-4;
+    // - float32 H (ulp 1.5e-8) over 2T: 4e-6.
+    // Sum 0.033; 0.035.
+    const double bound = 0.035, step = 2.0 / view.width;
+    auto pure = [&](int i, int j, int c) { return W.at(i, j)[c] >= 0.9999f; };
+    std::vector<double> errors;
+    for (int j = 1; j + 1 < view.height; ++j)
+        for (int i = 1; i + 1 < view.width; ++i) {
+            const float* w = W.at(i, j);
+            int c = int(std::max_element(w, w + 3) - w);
+            if (!pure(i, j, c) || !pure(i - 1, j, c) || !pure(i + 1, j, c) || !pure(i, j - 1, c) || !pure(i, j + 1, c)) continue;
+            double du = (H.at(i + 1, j)[0] - H.at(i - 1, j)[0]) / (2 * step), dv = (H.at(i, j + 1)[0] - H.at(i, j - 1)[0]) / (2 * step);
+            errors.push_back(std::max(std::fabs(up.at(i, j)[0] - du), std::fabs(up.at(i, j)[1] + dv)));
+        }
+    ASSERT_GT(errors.size(), size_t(view.width * view.height / 8));
+    std::sort(errors.begin(), errors.end());
+    std::printf("  %s: %zu pixels inside tiles, |d - grad H|: median %.4f, max %.4f (bound %.3f)\n", settings, errors.size(),
+                errors[errors.size() / 2], errors.back(), bound);
+    EXPECT_LE(errors.back(), bound);
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, AnalyticNormals,
+                         testing::Combine(testing::Values(AnalyticCase{"stable", R"("mode": "stable", "rotation": 1)"},
+                                                          AnalyticCase{"paper", R"("mode": "paper", "rotation": 1)"},
+                                                          AnalyticCase{"unrotated", R"("mode": "stable", "rotation": 0)"},
+                                                          AnalyticCase{"checker2taps", R"("mode": "stable", "rotation": 1, "mask": "checker", "taps": 2)"}),
+                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
+                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
 
 // ---- hexc render and hexc preview, run as a user would ------------------------------------------------------
 

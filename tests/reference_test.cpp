@@ -383,14 +383,16 @@ TEST(ReferenceScalar, WeighsTilesByItsChannel) {
 
 // --- Normal slots --------------------------------------------------------------------------------------------
 
-// A constant slope (dH/ds, dH/dt) = (a, b) = (0.5, 0.25): tangent-space normal along (-a, -b, 1), stored
+// A constant slope (dH/du, dH/dy) = (a, b) = (0.5, 0.25), y = -v up the texture (a green-up map): tangent-space
+// normal along (-a, -b, 1), stored
 // unnormalised as 0.5 * n + 0.5 = (0.25, 0.375, 1), exact in float32 (Listing 9 divides by z, so the length
 // does not matter).
 constexpr double kA = 0.5, kB = 0.25;
 Texture rampNormalMap() { return constantTexture(8, 8, {0.5 - 0.5 * kA, 0.5 - 0.5 * kB, 1, 1}); }
 
-// Deep inside tile v, that tile's height field is H(st) = (a, b) . R^T (st - c), whose gradient is R (a, b):
-// the blended derivative must be the slope rotated by the tile's angle.
+// Deep inside tile v, that tile's height field is H(st) = (a, -b) . R^T (st - c) in (u, v), whose gradient is
+// R (a, -b); in (u, y) that is F R F (a, b) = R^T (a, b) with F = diag(1, -1): the blended derivative must be the
+// slope rotated by minus the tile's angle.
 TEST(ReferenceNormal, RampSlopeTurnsWithEachTile) {
     const SampledTexture tex(rampNormalMap());
     for (bool flipY : {false, true})
@@ -408,8 +410,8 @@ TEST(ReferenceNormal, RampSlopeTurnsWithEachTile) {
                     const SlotResult r = evaluate(slot, tex, u, w, 1e-3, 0, 0, 1e-3);
                     ASSERT_GT(*std::max_element(r.weights.begin(), r.weights.end()), 0.999);
                     const double theta = angle(v, strength);
-                    EXPECT_NEAR(r.value[0], std::cos(theta) * kA - std::sin(theta) * b, 1e-9);
-                    EXPECT_NEAR(r.value[1], std::sin(theta) * kA + std::cos(theta) * b, 1e-9);
+                    EXPECT_NEAR(r.value[0], std::cos(theta) * kA + std::sin(theta) * b, 1e-9);
+                    EXPECT_NEAR(r.value[1], -std::sin(theta) * kA + std::cos(theta) * b, 1e-9);
                     EXPECT_EQ(r.value[2], 0);
                     EXPECT_EQ(r.value[3], 1);
                 }
@@ -444,7 +446,7 @@ TEST(ReferenceNormal, MatchesClosedFormNormalMap) {
             const Vec2 c = centre(tri.id[i]), h = tileOffset(tri.id[i]);
             const Vec2 local = rowTimesRotation({st[0] - c[0], st[1] - c[1]}, theta);
             const Vec2 m = slope(local[0] + c[0] + h[0], local[1] + c[1] + h[1]);
-            d[i] = {std::cos(theta) * m[0] - std::sin(theta) * m[1], std::sin(theta) * m[0] + std::cos(theta) * m[1]};
+            d[i] = {std::cos(theta) * m[0] + std::sin(theta) * m[1], -std::sin(theta) * m[0] + std::cos(theta) * m[1]};  // R^T m
             const double d2 = d[i][0] * d[i][0] + d[i][1] * d[i][1];
             w[i] = (0.4 + 0.6 * std::sqrt(d2 / (1 + d2))) * std::pow(tri.weight[i], 7);
         }
@@ -1105,7 +1107,7 @@ TEST(ReferenceTriplanar, AxisNormalsAreTheUvEvaluationOfTheirPlane) {
                 } else {
                     Rgba gradient{0, 0, 0, 1};
                     gradient[s] = e.value[0];
-                    gradient[t] = e.value[1];
+                    gradient[t] = -e.value[1];  // the derivative's y runs up the texture, along -t
                     EXPECT_EQ(r.value, gradient);
                 }
                 EXPECT_EQ(r.weights, e.weights);
@@ -1170,7 +1172,7 @@ TEST(ReferenceTriplanar, SurfaceGradientIsTangentToTheSurface) {
                 const auto [s, t] = kPlane[p];
                 const SlotResult e = evaluate(slot, tex, P[s], P[t], dPdx[s], dPdx[t], dPdy[s], dPdy[t]);
                 g[s] += b[p] * e.value[0];
-                g[t] += b[p] * e.value[1];
+                g[t] -= b[p] * e.value[1];
             }
             const double along = g[0] * n[0] + g[1] * n[1] + g[2] * n[2];
             for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(r.value[c], g[c] - along * n[c], 1e-12);

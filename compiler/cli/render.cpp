@@ -31,7 +31,7 @@ Options:
 Pixel (i, j), row j = 0 at the top, shows the material at its centre
   uv = (U0 + (i + 0.5) / W * (U1 - U0),  V0 + (j + 0.5) / H * (V1 - V0))
 with exact screen-space UV derivatives (U1 - U0) / W and (V1 - V0) / H. Slot tiling applies on top of uv.
-albedo: RGBA as sampled (linear); derivative: (dH/du, dH/dv, 0, 1); normal: the tangent-space normal
+albedo: RGBA as sampled (linear); derivative: (dH/du, dH/dy, 0, 1), y = -v; normal: the tangent-space normal
 encoded n * 0.5 + 0.5; weights: the three hex-tile weights (Listing 7). Triplanar materials are shown on
 the unit sphere, uv being longitude and latitude in radians; their derivative output is the world-space
 surface gradient (x, y, z, 1), and normal is not offered. PFM keeps floats exactly; PNG

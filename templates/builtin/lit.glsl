@@ -1,8 +1,8 @@
 #version 450
 // hexc template `lit`: albedo + tangent-space normal + roughness under one directional light.
 // Slots read (all optional): `albedo` (color), `normal` (normal), `roughness` (scalar).
-// Stage inputs: location 0 = texture coordinate, 1 = surface normal, 2 = tangent (w = bitangent sign),
-// all in the same (world or view) space as the light direction below. With the triplanar projection:
+// Stage inputs: location 0 = texture coordinate, 1 = surface normal, 2 = tangent (w = bitangent sign: cross(N, T) * w
+// runs along +v, as MikkTSpace gives it for texture coordinates with v down the image), all in the same (world or view) space as the light direction below. With the triplanar projection:
 // 1 = surface normal and 3 = position, in world space.
 // hexc slot albedo color
 // hexc slot normal normal
@@ -43,8 +43,8 @@ void main() {
     // Tangent-space normal from the blended derivative, taken to the surface frame (Mikkelsen 2020).
     vec3 T = normalize(v_tangent.xyz - N * dot(N, v_tangent.xyz));
     vec3 B = cross(N, T) * v_tangent.w;
-    vec3 n = hexcDerivToNormal(hexc_normal(v_uv));
-    N = normalize(n.x * T + n.y * B + n.z * N);
+    vec3 n = hexcDerivToNormal(hexc_normal(v_uv));  // its y runs up the texture, along -B
+    N = normalize(n.x * T - n.y * B + n.z * N);
 #endif
     // Blinn-Phong with the specular power derived from roughness.
     float diffuse = max(dot(N, kLightDir), 0.0);

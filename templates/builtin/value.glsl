@@ -1,6 +1,6 @@
 #version 450
 // hexc template `value`: the first slot's raw blended result, for inspection and testing:
-// color -> RGBA, scalar -> (s, s, s, 1), normal -> the height derivative (dH/du, dH/dv, 0, 1).
+// color -> RGBA, scalar -> (s, s, s, 1), normal -> the height derivative (dH/du, dH/dy, 0, 1), y = -v up the texture.
 // A triplanar material is shown on the unit sphere (hexcPreviewSphere) and a normal slot as its surface
 // gradient (x, y, z, 1).
 // Stage inputs: location 0 = texture coordinate.

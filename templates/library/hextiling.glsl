@@ -2,9 +2,10 @@
 // Injected by hexc at the template's `#include <hexc>` line. Every name here starts with `hexc` followed
 // by an upper-case letter, so it never collides with the generated per-slot functions `hexc_<slot>`.
 //
-// Conventions: the paper's HLSL `mul(v, R)` with R = float2x2(cs, -si, si, cs) (rows) is written out
-// as hexcRotateToTile (rotation by -angle) and `mul(R, d)` as hexcRotateFromTile (rotation by +angle),
-// so no matrix layout convention can flip them between targets.
+// Conventions: texture space is (u, v) with v down the image. A normal slot's derivative is (dH/du, dH/dy) with
+// y = -v, up the image: a green-up (OpenGL) map gives it as sampled, a green-down (DirectX) map once flip_y negates
+// its green. The paper's HLSL `mul(v, R)` with R = float2x2(cs, -si, si, cs) (rows) is written out as
+// hexcRotateToTile (rotation by -angle), so no matrix layout convention can flip it between targets.
 
 const float hexcPi = 3.14159265358979;
 // Listing 4, Eq. 4: Rec. 601 luminance weights.
@@ -88,9 +89,12 @@ vec2 hexcRotateToTile(vec2 v, vec2 cs) {
     return vec2(v.x * cs.x + v.y * cs.y, -v.x * cs.y + v.y * cs.x);
 }
 
-// mul(R, d): a derivative sampled in the tile's frame back to st space (by +angle), Listing 3.
+// A derivative sampled in the tile's frame back to st space. The tile reads h(M uv + c) with M = R(-angle), so by the
+// chain rule the (u, v) gradient is M^T grad h = R(+angle) grad h: Listing 3's mul(R, d), which holds for a
+// derivative whose y runs along +v. Ours runs along -v (F = diag(1, -1)), so the rotation back is
+// F R(+angle) F = R(-angle): the same rotation as into the tile.
 vec2 hexcRotateFromTile(vec2 d, vec2 cs) {
-    return vec2(cs.x * d.x - cs.y * d.y, cs.y * d.x + cs.x * d.y);
+    return hexcRotateToTile(d, cs);
 }
 
 // What a lattice computes its tiles from, filled by each generated slot function from hexcLattice() (the neutral
@@ -480,12 +484,12 @@ HexcPlanes hexcPlanes(vec3 position, vec3 normal, float sharpness, vec2 tiling) 
     return p;
 }
 
-// A plane's value in the blend: colour and scalar as they are; a normal slot's derivative (dH/ds, dH/dt) as the
-// world-space gradient it implies on plane k.
+// A plane's value in the blend: colour and scalar as they are; a normal slot's derivative (dH/ds, dH/dy), y = -t
+// (see Conventions), as the world-space gradient it implies on plane k, whose (s, t) are world (y, z), (z, x), (x, y).
 vec4 hexcLift(int k, vec4 v) { return v; }
 float hexcLift(int k, float v) { return v; }
 vec3 hexcLift(int k, vec2 d) {
-    return k == 0 ? vec3(0.0, d.x, d.y) : (k == 1 ? vec3(d.y, 0.0, d.x) : vec3(d.x, d.y, 0.0));
+    return k == 0 ? vec3(0.0, d.x, -d.y) : (k == 1 ? vec3(-d.y, 0.0, d.x) : vec3(d.x, -d.y, 0.0));
 }
 
 // The blended planes' result: colour and scalar as they are; gradients projected onto the surface (the surface

@@ -53,8 +53,10 @@ struct Rotation {
     double c, s;
     // R^T p: the paper's mul(p, R) with p a row vector, which turns st (and its gradients) into the tile's frame.
     Vec2 toTile(Vec2 p) const { return {c * p[0] + s * p[1], -s * p[0] + c * p[1]}; }
-    // R d: the paper's mul(R, d), which brings a derivative sampled in the tile's frame back to st.
-    Vec2 fromTile(Vec2 d) const { return {c * d[0] - s * d[1], s * d[0] + c * d[1]}; }
+    // A derivative (dH/du, dH/dy), y = -v, sampled in the tile's frame, back to st. The tile reads h(R^T st + c), so
+    // the st gradient is R grad h (the paper's mul(R, d), for y along +v); with F = diag(1, -1) for y along -v it is
+    // F R F = R^T: the same rotation as toTile.
+    Vec2 fromTile(Vec2 d) const { return toTile(d); }
 };
 
 // `stable` mode, from its specification in docs/material-format.md (#mode): the lattice scale is 97/28
@@ -455,7 +457,7 @@ SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, co
                                         pixel, height);
         if (normal) {
             g[(k + 1) % 3] += b[k] * r.value[0];
-            g[(k + 2) % 3] += b[k] * r.value[1];
+            g[(k + 2) % 3] -= b[k] * r.value[1];  // the plane's t axis is world +, its derivative's y is -t
         } else {
             for (size_t c = 0; c < 4; ++c) out.value[c] += b[k] * r.value[c];
         }

@@ -18,7 +18,7 @@ namespace hexc::vk {
 enum class RenderOutput {
     Albedo,      // a colour (or scalar) slot's blended value
     Normal,      // a normal slot's tangent-space normal, encoded n * 0.5 + 0.5 like a normal map
-    Derivative,  // a normal slot's blended height derivative (dH/du, dH/dv, 0, 1)
+    Derivative,  // a normal slot's blended height derivative (dH/du, dH/dy, 0, 1), y = -v up the texture
     Weights,     // a slot's hex-tile weights (Listing 7), (w1, w2, w3, 1)
     Shaded,      // the material's own template
 };
@@ -48,7 +48,7 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
 // Draws a fragment shader of the embedded templates (no material) with the given uniform block.
 Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view);
 
-// Derivative images (dH/du, dH/dv, ., .) to tangent-space normals encoded n * 0.5 + 0.5, in place (Eq. 2).
+// Derivative images (dH/du, dH/dy, ., .) to tangent-space normals encoded n * 0.5 + 0.5, in place (Eq. 2).
 void derivativeToNormalMap(Image& image);
 
 // The parameter block as the manifest lays it out, filled with the material's values or `parameters` (by a
