@@ -299,6 +299,60 @@ INSTANTIATE_TEST_SUITE_P(Exec, NormalPath,
                                           testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
                          [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
 
+// ---- Odd-sized textures -----------------------------------------------------------------------------------
+// hexc accepts any texture size. The runner builds each mip level by a linear blit of the one above, which at an odd
+// size resamples rather than averages; the reference models it (reference::SampledTexture::halve). Crops of the rock
+// albedo (8-bit, linear, so not seamless: GPU and reference wrap alike) at odd and non-square sizes, seen magnified
+// (0.75 texel per pixel along the larger axis: level 0) and minified (4 texels per pixel: exactly level 2, or the
+// last level when the chain is shorter), with tile rotation off so the footprint stays axis-aligned: lavapipe's
+// log2 of the footprint is exact only at a power of two, which a rotated footprint on a non-square texture is not.
+struct OddSize {
+    const char* name;
+    int width, height;
+    bool minified;
+};
+void PrintTo(const OddSize& c, std::ostream* os) { *os << c.name; }
+
+std::filesystem::path cropOfRock(int width, int height) {
+    const Texture rock = loadTexture("materials/textures/rock_albedo.png", false);
+    Image out;
+    out.width = width;
+    out.height = height;
+    out.rgba.clear();
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 4; ++c) out.rgba.push_back(rock.rgba8[(size_t(y + 40) * size_t(rock.width) + size_t(x + 40)) * 4 + size_t(c)] / 255.0f);
+    std::filesystem::path file = std::filesystem::temp_directory_path() / ("hexc_odd_" + std::to_string(width) + "x" + std::to_string(height) + ".png");
+    writeImage(out, file);
+    return file;
+}
+
+class OddSizes : public testing::TestWithParam<std::tuple<OddSize, vk::ExecutedTarget>> {};
+
+TEST_P(OddSizes, MatchReference) {
+    REQUIRE_VULKAN();
+    const auto& [c, target] = GetParam();
+    const std::filesystem::path file = cropOfRock(c.width, c.height);
+    Material m = material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": ")" + file.string() +
+                          R"(", "hextiling": {"tiling": 4, "rotation": 0}})");
+    const int larger = std::max(c.width, c.height), levels = std::bit_width(unsigned(larger));
+    const double uvPerPixel = (c.minified ? 4.0 : 0.75) / (4.0 * larger);
+    const View view{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}};
+    const int level = c.minified ? std::min(2, levels - 1) : 0;
+    const double es = sampleError(level, false);
+    Check check = checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, target, es, es, 4);
+    report(c.name, check);
+    EXPECT_LE(check.worstRatio, 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, OddSizes,
+                         testing::Combine(testing::Values(OddSize{"127x80", 127, 80, false}, OddSize{"127x80_minified", 127, 80, true},
+                                                          OddSize{"1x64", 1, 64, false}, OddSize{"1x64_minified", 1, 64, true},
+                                                          OddSize{"3x3", 3, 3, false}, OddSize{"3x3_minified", 3, 3, true},
+                                                          OddSize{"127x127_minified", 127, 127, true}),
+                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
+                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+
 // ---- Weights ----------------------------------------------------------------------------------------------
 // With falloffcontrast 0 the weights depend on the lattice alone. The GPU evaluates it in float32 on a uv that
 // the rasteriser interpolated, so st and the skewed coordinates carry a few ulps of their size (|skewed| <= 4 |st|):

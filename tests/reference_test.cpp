@@ -144,6 +144,25 @@ TEST(ReferenceSampler, ConstantTextureAtEveryLod) {
     }
 }
 
+// Odd sizes resample as a linear blit does: 5 -> 2 texels read the level above at (i + 0.5) * 5 / 2 - 0.5 = 0.75
+// and 3.25; 3 -> 1 reads the middle texel; a size of 1 stays and reads its one texel.
+TEST(ReferenceSampler, OddLevelsAreLinearBlitsOfTheLevelAbove) {
+    Texture t;
+    t.width = 5;
+    t.height = 3;
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x) t.rgba32f.insert(t.rgba32f.end(), {float(x), float(10 * y), 0.0f, 1.0f});
+    const SampledTexture tex(t);
+    ASSERT_EQ(tex.levels(), 3);
+    ASSERT_EQ(tex.width(1), 2);
+    ASSERT_EQ(tex.height(1), 1);
+    EXPECT_DOUBLE_EQ(tex.texel(1, 0, 0)[0], 0.75);
+    EXPECT_DOUBLE_EQ(tex.texel(1, 1, 0)[0], 3.25);
+    EXPECT_DOUBLE_EQ(tex.texel(1, 0, 0)[1], 10.0);  // the middle row
+    // 2 -> 1: the average, at the centre 1.0 of the level above.
+    EXPECT_DOUBLE_EQ(tex.texel(2, 0, 0)[0], (0.75 + 3.25) / 2);
+}
+
 TEST(ReferenceSampler, LodFollowsTheEuclideanGradientLength) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> unit(0, 1);

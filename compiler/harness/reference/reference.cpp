@@ -235,23 +235,35 @@ SampledTexture::SampledTexture(const Texture& texture) {
     }
     levels_.push_back(std::move(base));
 
-    // Each level halves (rounding down, at least 1) and averages the 2x2 block it covers; at an odd size the
-    // block's second row or column is clamped onto the first.
-    while (levels_.back().width > 1 || levels_.back().height > 1) {
-        const Level& prev = levels_.back();
-        Level next{std::max(1, prev.width / 2), std::max(1, prev.height / 2), {}};
-        next.texels.resize(size_t(next.width) * size_t(next.height));
-        for (int y = 0; y < next.height; ++y)
-            for (int x = 0; x < next.width; ++x) {
-                const int x0 = 2 * x, x1 = std::min(2 * x + 1, prev.width - 1);
-                const int y0 = 2 * y, y1 = std::min(2 * y + 1, prev.height - 1);
-                const auto at = [&](int px, int py) { return prev.texels[size_t(py) * prev.width + px]; };
-                Rgba& t = next.texels[size_t(y) * next.width + x];
-                for (size_t c = 0; c < 4; ++c)
-                    t[c] = (at(x0, y0)[c] + at(x1, y0)[c] + at(x0, y1)[c] + at(x1, y1)[c]) / 4;
-            }
-        levels_.push_back(std::move(next));
+    while (levels_.back().width > 1 || levels_.back().height > 1) levels_.push_back(halve(levels_.back()));
+}
+
+// The next mip level as the runner builds it, by vkCmdBlitImage with VK_FILTER_LINEAR from the level above: the size
+// halves (rounding down, at least 1), and each texel is the bilinear sample of the level above at its centre mapped
+// into it, (i + 0.5) * size / next size, clamped to the edge. At an even size that is the 2x2 average; at an odd one
+// the texels are resampled (127 -> 63 texels reads at steps of 2.016).
+SampledTexture::Level SampledTexture::halve(const Level& prev) {
+    Level next{std::max(1, prev.width / 2), std::max(1, prev.height / 2), {}};
+    struct Tap {
+        int i0, i1;
+        double f;  // weight of i1
+    };
+    const auto taps = [](int dst, int src, int i) {
+        const double x = (i + 0.5) * src / dst - 0.5;
+        const int x0 = int(std::floor(x));
+        return Tap{std::clamp(x0, 0, src - 1), std::clamp(x0 + 1, 0, src - 1), x - x0};
+    };
+    next.texels.resize(size_t(next.width) * size_t(next.height));
+    const auto at = [&](int px, int py) { return prev.texels[size_t(py) * prev.width + px]; };
+    for (int y = 0; y < next.height; ++y) {
+        const Tap ty = taps(next.height, prev.height, y);
+        for (int x = 0; x < next.width; ++x) {
+            const Tap tx = taps(next.width, prev.width, x);
+            const Rgba top = lerp(at(tx.i0, ty.i0), at(tx.i1, ty.i0), tx.f), bottom = lerp(at(tx.i0, ty.i1), at(tx.i1, ty.i1), tx.f);
+            next.texels[size_t(y) * next.width + x] = lerp(top, bottom, ty.f);
+        }
     }
+    return next;
 }
 
 const Rgba& SampledTexture::texel(int level, int x, int y) const {

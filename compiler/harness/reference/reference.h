@@ -62,6 +62,7 @@ private:
         std::vector<Rgba> texels;  // row-major, row 0 at the top
     };
     static Rgba bilinear(const Level& level, double s, double t);
+    static Level halve(const Level& prev);
 
     std::vector<Level> levels_;
 };
