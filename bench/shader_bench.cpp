@@ -528,11 +528,13 @@ int run(const fs::path& resultsDir) {
     std::cout << "  precision far from the origin" << std::endl;
     std::vector<vk::PrecisionRow> precision;
     const vk::ProbeTextures kProbe{"materials/textures/rock_albedo.png", "materials/textures/rock_normal.png"};
-    for (auto [mode, split] : {std::pair{HashMode::Stable, false}, std::pair{HashMode::Paper, false}}) {
-        auto rows = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", mode, split, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
+    for (HashMode mode : {HashMode::Stable, HashMode::Paper}) {
+        auto rows = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", mode, vk::Placement::Direct, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
         precision.insert(precision.end(), rows.begin(), rows.end());
     }
-    auto split = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", HashMode::Stable, true, {0, 1e3, 1e6, 1e9});
+    auto aligned = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", HashMode::Stable, vk::Placement::Aligned, {1e5, 1e6, 1e7});
+    precision.insert(precision.end(), aligned.begin(), aligned.end());
+    auto split = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", HashMode::Stable, vk::Placement::Split, {0, 1e3, 1e6, 1e9});
     precision.insert(precision.end(), split.begin(), split.end());
     writeFile(resultsDir / "precision.md", vk::precisionTable(precision));
     std::cout << "\n" << vk::precisionTable(precision);

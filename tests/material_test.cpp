@@ -287,6 +287,26 @@ TEST(Validation, SplitCoordinatesWithNoiseMasksOrTriplanar) {
                                        "projection: it reads world positions, not uv"});
 }
 
+// Stable mode is exact while |u * tiling| < 2^26 (hex) or |uv * tiling| < 2^31 (checker): a tiling that brings
+// that under 2^16 uv warns, unless split coordinates keep uv small; noise masks and paper mode have no such range.
+TEST(Validation, TilingThatBringsStableModesRangeNearWarns) {
+    const char* hint = " (for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin "
+                       "(docs/precision.md#stable-modes-range))";
+    EXPECT_EQ(diagnose(R"({"name": "m", "slots": [
+  {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": [2048, 1]}},
+  {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 1024}},
+  {"name": "c", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": [1, 4096]}},
+  {"name": "d", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "split_coordinates": true}},
+  {"name": "e", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "mode": "paper"}},
+  {"name": "f", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "mask": "checker"}},
+  {"name": "g", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 40000, "mask": "checker"}},
+  {"name": "h", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "enabled": false}}]})"),
+              (std::vector<std::string>{"materials/t.json:2:86: warning: /slots/0/hextiling: with tiling 2048, stable mode's lattice is exact "
+                                        "only for |u| < 32768 (2^26 / tiling); beyond, tiles come out wrong" + std::string(hint),
+                                        "materials/t.json:8:86: warning: /slots/6/hextiling: with tiling 40000, stable mode's checker is "
+                                        "exact only for |uv| < 53687 (2^31 / tiling); beyond, tiles come out wrong" + std::string(hint)}));
+}
+
 TEST(Validation, HeightBlend) {
     const std::string height = R"({"name": "height", "kind": "scalar", "texture": "textures/rock_roughness.png"})";
     EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png",

@@ -141,7 +141,8 @@ HexcTiles hexcTilesPaper(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
 }
 
 // `stable` mode (docs/material-format.md#mode). Three changes to the paper, none visible, that make the
-// result exact and identical on every target and at any distance from the origin:
+// result exact and identical on every target as far as |st.x| < 2^26 (where 28 kx stops being exact in float32;
+// docs/precision.md#stable-modes-range) and |st.y| < 2^31:
 // 1. The lattice scale 2 sqrt(3) becomes 97/28 (relative difference 4.4e-6). Then the lattice repeats
 //    exactly every 28 st units in u (97 ids) and every 1 in v (ids (-2, 4)), so st is reduced to
 //    [0, 28) x [0, 1) by exact subtractions before any product, and the ids come back as exact integers.
@@ -203,7 +204,8 @@ void hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out 
 // mesh supplies a small st relative to it, whose gradients are precise.
 HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l) {
     HexcTiles t;
-    // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small.
+    // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small, while 28 kx is exact:
+    // 7 kx < 2^24, so |st.x| < 2^26.
     float kx = floor(st.x / 28.0), ky = floor(st.y);
     vec2 r = vec2(st.x - 28.0 * kx, st.y - ky);
     ivec2 l1, l2, l3;

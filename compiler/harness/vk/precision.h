@@ -16,10 +16,18 @@ struct ImageErrors {
 };
 ImageErrors compareImages(const Image& a, const Image& b, int channels);
 
+// Where the view lies and how far its pixels are apart.
+enum class Placement {
+    Direct,   // at uv ~ (X, X), a texel per pixel where float32 resolves it, else half an ulp of X per pixel
+    Split,    // near 0, with X the origin passed as split coordinates (hexc/origin.h)
+    Aligned,  // at uv ~ (X, X), a texel per pixel or one ulp of X per pixel, each pixel sampling with the
+              // gradients of one texel (templates/harness/aligned.frag.glsl), so mip level 0 at any X
+};
+
 struct PrecisionRow {
-    std::string mode;   // "stable", "paper" or "stable, split"
+    std::string mode;   // "stable", "paper", "stable, split" or "stable, aligned"
     std::string path;   // "color" or "normal"
-    double magnitude;   // |uv| of the view (split: of the origin)
+    double magnitude;   // X: |uv| of the view (split: of the origin)
     ImageErrors errors;
 };
 
@@ -30,14 +38,13 @@ struct ProbeTextures {
 };
 
 // Renders the colour texture (colour path) and normal map (normal path, compared as the encoded normal
-// n * 0.5 + 0.5) at tiling 4 in a 64 x 64 view at uv ~ (X, X) for each X in `magnitudes`, and compares every
-// pixel with the reference evaluated at the uv and derivatives the rasteriser gave that pixel (read back with
-// templates/harness/probe.frag.glsl). The textures are converted to float, so 8-bit filtering does not hide or add
-// error; the view keeps a texel per pixel where float32 resolves it, else half an ulp of X per pixel.
-// split: the view is near 0 and X is the origin, passed as split coordinates (hexc/origin.h).
-// `workDir` receives the float textures. Throws on a render failure.
+// n * 0.5 + 0.5) at tiling 4 in a 64 x 64 view placed by `placement` for each X in `magnitudes`, and compares
+// every pixel with the reference evaluated at the uv and derivatives the rasteriser gave that pixel (read back with
+// templates/harness/probe.frag.glsl; aligned views: the one-texel gradients they sample with). The textures are
+// converted to float, so 8-bit filtering does not hide or add error. `workDir` receives the float textures and the
+// aligned views' template. Throws on a render failure.
 std::vector<PrecisionRow> measurePrecision(Runner& runner, const ProbeTextures& inputs, const std::filesystem::path& workDir, HashMode mode,
-                                           bool split, const std::vector<double>& magnitudes);
+                                           Placement placement, const std::vector<double>& magnitudes);
 
 // A Markdown table of rows: mode, path, |uv|, max, mean, share over 1/255.
 std::string precisionTable(const std::vector<PrecisionRow>& rows);

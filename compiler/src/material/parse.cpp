@@ -2,6 +2,7 @@
 // validation goes on after an error, so a user sees all problems in one run.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -83,6 +84,11 @@ public:
 
     void error(const std::string& pointer, TextPos p, std::string message, std::string hint = {}) {
         diags.push_back({Diagnostic::Severity::Error, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)});
+    }
+
+    void warning(const std::string& pointer, std::string message, std::string hint = {}) {
+        TextPos p = locator_.value(pointer);
+        diags.push_back({Diagnostic::Severity::Warning, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)});
     }
 
     Material run(const json& doc) {
@@ -455,12 +461,29 @@ private:
             error(at, "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
         if (s.hex.splitCoordinates && s.hex.projection == Projection::Triplanar)
             error(at, "`split_coordinates` does not work with the triplanar projection: it reads world positions, not uv");
+        if (!s.hex.splitCoordinates) rangeWarning(s.hex, at);
         if (v.contains("height_blend")) heightBlend(v["height_blend"], pointer + "/height_blend", s);
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
             s.texture = string(v["texture"], pointer + "/texture");
             if (v["texture"].is_string()) texture(s, pointer + "/texture");
         }
         return s;
+    }
+
+    // Stable mode is exact while st = uv * tiling stays within its reduction's range (docs/precision.md): |st.x| < 2^26
+    // for the hex lattice (28 kx exact in float32), |st| < 2^31 for the checker (int conversion). A tiling that
+    // brings that range under 2^16 uv, where an ordinary terrain's uv can reach, gets a warning.
+    void rangeWarning(const HexTiling& hex, const std::string& at) {
+        if (!hex.enabled || hex.mode != HashMode::Stable || hex.projection != Projection::Uv) return;
+        if (hex.mask != Mask::Hex && hex.mask != Mask::Checker) return;  // the noise masks lose precision like plain tiling
+        const bool checker = hex.mask == Mask::Checker;
+        const double tiling = checker ? std::max(hex.tiling[0], hex.tiling[1]) : hex.tiling[0];
+        const double limit = std::ldexp(1.0, checker ? 31 : 26) / tiling;
+        if (limit >= 65536) return;
+        char text[200];
+        std::snprintf(text, sizeof text, "with tiling %g, stable mode's %s is exact only for |%s| < %.0f (2^%d / tiling); beyond, tiles come out wrong",
+                      tiling, checker ? "checker" : "lattice", checker ? "uv" : "u", limit, checker ? 31 : 26);
+        warning(at, text, "for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin (docs/precision.md#stable-modes-range)");
     }
 
     void heightBlend(const json& v, const std::string& pointer, Slot& s) {
