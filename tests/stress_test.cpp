@@ -53,15 +53,18 @@ TEST(Precision, SplitCoordinatesStayWithinOne255UpToAnOriginOf1e9) {
 TEST(Precision, StableModeIsExactUpToStOf2To26AndNotBeyond) {
     REQUIRE_VULKAN();
     const double limitUv = std::ldexp(1.0, 26) / 4;  // tiling 4
-    auto rows = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Stable, vk::Placement::Aligned,
-                                     {1e3, 1e5, 1e6, 1e7, limitUv - 128, limitUv * 1.02, limitUv * 1.5});
-    std::printf("%s", vk::precisionTable(rows).c_str());
-    for (const auto& r : rows) {
-        if (r.magnitude < limitUv) {
-            EXPECT_LE(r.errors.max, 1.0 / 255) << r.path << " at |uv| " << r.magnitude;
-        } else {
-            // Past the limit a quarter or more of the values are off: the stated limit is the real one.
-            EXPECT_GE(r.errors.overOne255, 0.25) << r.path << " at |uv| " << r.magnitude;
+    for (auto target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl}) {
+        const char* name = target == vk::ExecutedTarget::Spirv ? "spirv" : target == vk::ExecutedTarget::Hlsl ? "hlsl" : "glsl";
+        auto rows = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Stable, vk::Placement::Aligned,
+                                         {1e3, 1e5, 1e6, 1e7, limitUv - 128, limitUv * 1.02, limitUv * 1.5}, target);
+        std::printf("%s\n%s", name, vk::precisionTable(rows).c_str());
+        for (const auto& r : rows) {
+            if (r.magnitude < limitUv) {
+                EXPECT_LE(r.errors.max, 1.0 / 255) << r.path << " at |uv| " << r.magnitude << ", " << name;
+            } else {
+                // Past the limit a quarter or more of the values are off: the stated limit is the real one.
+                EXPECT_GE(r.errors.overOne255, 0.25) << r.path << " at |uv| " << r.magnitude << ", " << name;
+            }
         }
     }
 }

@@ -99,7 +99,7 @@ ImageErrors compareImages(const Image& a, const Image& b, int channels) {
 }
 
 std::vector<PrecisionRow> measurePrecision(Runner& runner, const ProbeTextures& inputs, const std::filesystem::path& workDir, HashMode mode,
-                                           Placement placement, const std::vector<double>& magnitudes) {
+                                           Placement placement, const std::vector<double>& magnitudes, ExecutedTarget target) {
     std::filesystem::create_directories(workDir);
     const std::filesystem::path textures[] = {floatCopy(inputs.color, workDir), floatCopy(inputs.normal, workDir)};
     std::vector<PrecisionRow> rows;
@@ -116,7 +116,7 @@ std::vector<PrecisionRow> measurePrecision(Runner& runner, const ProbeTextures& 
                 params["s_origin_offset"] = {double(o.offset[0]), double(o.offset[1])};
             }
             RenderOutput output = placement == Placement::Aligned ? RenderOutput::Shaded : path ? RenderOutput::Derivative : RenderOutput::Albedo;
-            Image gpu = render(runner, m, output, "", view, ExecutedTarget::Spirv, 0, nullptr, params);
+            Image gpu = render(runner, m, output, "", view, target, 0, nullptr, params);
             Image cpu = referenceImage(runner, slot, texture, view, placement == Placement::Split ? x : 0, placement);
             if (path) {
                 derivativeToNormalMap(gpu);

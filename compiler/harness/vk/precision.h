@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hexc/material.h"
+#include "vk/render.h"
 #include "vk/runner.h"
 
 namespace hexc::vk {
@@ -42,9 +43,10 @@ struct ProbeTextures {
 // every pixel with the reference evaluated at the uv and derivatives the rasteriser gave that pixel (read back with
 // templates/harness/probe.frag.glsl; aligned views: the one-texel gradients they sample with). The textures are
 // converted to float, so 8-bit filtering does not hide or add error. `workDir` receives the float textures and the
-// aligned views' template. Throws on a render failure.
+// aligned views' template. `target`: the emitted source executed. Throws on a render failure.
 std::vector<PrecisionRow> measurePrecision(Runner& runner, const ProbeTextures& inputs, const std::filesystem::path& workDir, HashMode mode,
-                                           Placement placement, const std::vector<double>& magnitudes);
+                                           Placement placement, const std::vector<double>& magnitudes,
+                                           ExecutedTarget target = ExecutedTarget::Spirv);
 
 // A Markdown table of rows: mode, path, |uv|, max, mean, share over 1/255.
 std::string precisionTable(const std::vector<PrecisionRow>& rows);
