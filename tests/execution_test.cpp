@@ -761,6 +761,19 @@ TEST(RenderCommand, Errors) {
     EXPECT_EQ(err, "hexc: slot `normal` is triplanar: it returns a world-space surface gradient; use the derivative output\n");
 }
 
+// No Vulkan device (the loader pointed at a driver manifest that does not exist) is its own exit code, 4, for
+// render and preview alike, and nothing is written.
+TEST(RenderCommand, NoVulkanDeviceExitsFour) {
+    const std::string noDriver = "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json";
+    std::filesystem::path out = std::filesystem::temp_directory_path() / "hexc_no_vulkan.png";
+    std::filesystem::remove(out);
+    std::string err;
+    EXPECT_EQ(runHexc("render materials/rock.json -o " + out.string(), &err, noDriver), 4) << err;
+    EXPECT_NE(err.find("hexc: no Vulkan device: "), std::string::npos) << err;
+    EXPECT_EQ(runHexc("preview materials/rock.json -o " + out.string(), &err, noDriver), 4) << err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // The reference of a height-blended slot reads its height slot (without it, the reference refuses to evaluate).
 TEST(RenderCommand, ReferenceOfAHeightBlendedSlot) {
     std::filesystem::path file = std::filesystem::temp_directory_path() / "hb_cpu.pfm";

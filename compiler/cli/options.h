@@ -9,7 +9,7 @@
 namespace hexc::cli {
 
 // Exit codes, documented in --help and docs/cli.md.
-enum Exit { kOk = 0, kInvalidInput = 1, kUsage = 2, kWriteFailed = 3 };
+enum Exit { kOk = 0, kInvalidInput = 1, kUsage = 2, kWriteFailed = 3, kNoVulkan = 4 };
 
 struct Arguments {
     std::vector<std::filesystem::path> materials;

@@ -94,6 +94,9 @@ int guarded(Body body) {
     } catch (const std::invalid_argument& e) {
         std::cerr << "hexc: " << e.what() << "\n";
         return kInvalidInput;
+    } catch (const vk::VulkanError& e) {
+        std::cerr << "hexc: Vulkan: " << e.what() << "\n";
+        return kNoVulkan;
     } catch (const std::exception& e) {
         std::cerr << "hexc: " << e.what() << "\n";
         return kWriteFailed;
@@ -185,7 +188,7 @@ int renderCommand(const std::vector<std::string>& args) {
             return int(kOk);
         }
         auto runner = makeRunner();
-        if (!runner) return int(kInvalidInput);
+        if (!runner) return int(kNoVulkan);
         writeImage(vk::render(*runner, *material, output, slot, view, target), out);
         return int(kOk);
     });
@@ -216,7 +219,7 @@ int previewCommand(const std::vector<std::string>& args) {
         auto material = loadMaterial(materialPath);
         if (!material) return int(kInvalidInput);
         auto runner = makeRunner();
-        if (!runner) return int(kInvalidInput);
+        if (!runner) return int(kNoVulkan);
 
         Material plain = *material;
         for (Slot& s : plain.slots) s.hex.enabled = false;

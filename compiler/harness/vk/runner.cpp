@@ -47,7 +47,7 @@ std::string resultName(VkResult r) {
 
 // The one place a VkResult is checked: anything but VK_SUCCESS throws, naming the call.
 void check(VkResult result, const char* call) {
-    if (result != VK_SUCCESS) throw std::runtime_error(std::string(call) + " failed: " + resultName(result));
+    if (result != VK_SUCCESS) throw VulkanError(std::string(call) + " failed: " + resultName(result));
 }
 #define VK_CHECK(fn, ...) check(fn(__VA_ARGS__), #fn)
 
@@ -100,7 +100,7 @@ uint32_t memoryType(const VulkanContext& ctx, uint32_t typeBits, VkMemoryPropert
     for (VkMemoryPropertyFlags wanted : {required | preferred, required})
         for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i)
             if ((typeBits & (1u << i)) && (ctx.memory.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
-    throw std::runtime_error("no Vulkan memory type with the required properties");
+    throw VulkanError("no Vulkan memory type with the required properties");
 }
 
 VkDeviceMemory allocate(VulkanContext& ctx, const VkMemoryRequirements& req, VkMemoryPropertyFlags required,
@@ -221,7 +221,7 @@ VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture&
     const VkFormatFeatureFlags features = props.optimalTilingFeatures;
     const VkFormatFeatureFlags blit = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
     if (!(features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) || (levels > 1 && (features & blit) != blit))
-        throw std::runtime_error("the Vulkan device cannot sample or blit texture format " +
+        throw VulkanError("the Vulkan device cannot sample or blit texture format " +
                                  std::to_string(int(format)));
     // A linear blit needs the format's linear-filter feature (optional for RGBA32F on some GPUs); without it the
     // mips are point-sampled instead. Such a device could not filter the format linearly when sampling either.
@@ -499,7 +499,7 @@ std::unique_ptr<VulkanContext> openContext() {
             break;
         }
     }
-    if (!found) throw std::runtime_error("no Vulkan device with a graphics queue and RGBA32F/D32 attachments");
+    if (!found) throw VulkanError("no Vulkan device with a graphics queue and RGBA32F/D32 attachments");
     vkGetPhysicalDeviceMemoryProperties(ctx->physical, &ctx->memory);
 
     const float priority = 1;

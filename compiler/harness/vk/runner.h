@@ -16,12 +16,18 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "hexc/image.h"
 
 namespace hexc::vk {
+
+// A failure of the Vulkan device or driver, not of what was asked of it (`hexc render` and `preview` exit 4).
+struct VulkanError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 struct VulkanContext;  // instance, device and long-lived objects; defined in runner.cpp
 
