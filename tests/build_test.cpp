@@ -87,9 +87,9 @@ TEST(Scene, DiagnosticsAreLocated) {
     std::vector<std::string> got;
     for (const auto& d : r.diagnostics) got.push_back(d.format().substr(d.format().find("bad.json:")));
     EXPECT_EQ(got, (std::vector<std::string>{
-                       "bad.json:5:37: error: /passes/0/materials/0: no material named `rocks` in the scene (did you mean `rock`?)",
-                       "bad.json:6:23: error: /passes/1/colour: unknown key `colour`; expected `name`, `template`, `slots` or `materials`",
-                       "bad.json:6:15: error: /passes/1/name: duplicate pass name \"main\"",
+                       "bad.json:5:37: error[HX113]: /passes/0/materials/0: no material named `rocks` in the scene (did you mean `rock`?)",
+                       "bad.json:6:23: error[HX103]: /passes/1/colour: unknown key `colour`; expected `name`, `template`, `slots` or `materials`",
+                       "bad.json:6:15: error[HX109]: /passes/1/name: duplicate pass name \"main\"",
                    }));
 }
 

@@ -172,7 +172,7 @@ TEST(Compile, TemplateWithoutInjectionPointIsRejected) {
         options.templateFile = t;
         CompileResult r = compile(load("materials/tiles.json"), options);
         ASSERT_FALSE(r.ok()) << body;
-        EXPECT_EQ(r.diagnostics[0].format(), t.string() + ": error: a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+        EXPECT_EQ(r.diagnostics[0].format(), t.string() + ": error[HX203]: a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
     }
 }
 
@@ -182,7 +182,7 @@ TEST(Compile, SlotsTheTemplateDoesNotReadAreLeftOutWithAWarning) {
     CompileResult r = compile(m);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
     ASSERT_EQ(r.diagnostics.size(), 2u);
-    EXPECT_EQ(r.diagnostics[0].format(), "materials/rock.json: warning: slot `normal` is not read by template templates/unlit.glsl; it is left out");
+    EXPECT_EQ(r.diagnostics[0].format(), "materials/rock.json: warning[HX204]: slot `normal` is not read by template templates/unlit.glsl; it is left out");
     auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
     EXPECT_EQ(manifest["slots"].size(), 1u);
     EXPECT_EQ(manifest["targets"]["spirv"]["textures"].size(), 1u);
@@ -232,7 +232,7 @@ TEST(Cli, BrokenMaterialWritesNothing) {
     std::string err;
     EXPECT_EQ(runHexc("materials/rock.json materials/invalid/falloff_zero.json -o " + out.string(), &err), 1);
     EXPECT_FALSE(std::filesystem::exists(out));
-    EXPECT_NE(err.find("materials/invalid/falloff_zero.json:6:16: error: /hextiling/falloff:"), std::string::npos) << err;
+    EXPECT_NE(err.find("materials/invalid/falloff_zero.json:6:16: error[HX106]: /hextiling/falloff:"), std::string::npos) << err;
     EXPECT_NE(err.find("nothing written"), std::string::npos);
 }
 
@@ -250,7 +250,7 @@ TEST(Cli, UsageErrors) {
 TEST(Cli, MissingMaterialFile) {
     std::string err;
     EXPECT_EQ(runHexc("materials/nope.json -o " + freshDir("hexc_cli_none").string(), &err), 1);
-    EXPECT_EQ(err, "materials/nope.json: error: cannot read material file: No such file or directory\nhexc: nothing written\n");
+    EXPECT_EQ(err, "materials/nope.json: error[HX100]: cannot read material file: No such file or directory\nhexc: nothing written\n");
 }
 
 // Templates declare the slots they read (`// hexc slot <name> <kind> [required]`); a material that does not fit gets
@@ -266,7 +266,7 @@ TEST(TemplateFit, ASlotOfAnotherKindIsAnErrorAtItsKind) {
                                   "\"texture\": \"textures/rock_normal.png\"}]}");
     ASSERT_FALSE(r.ok());
     ASSERT_EQ(r.diagnostics.size(), 1u) << formatAll(r.diagnostics);
-    EXPECT_EQ(r.diagnostics[0].format(), "materials/fit.json:2:39: error: /slots/0/kind: template `lit` reads `albedo` as a color slot; this one is `normal`");
+    EXPECT_EQ(r.diagnostics[0].format(), "materials/fit.json:2:39: error[HX208]: /slots/0/kind: template `lit` reads `albedo` as a color slot; this one is `normal`");
     EXPECT_TRUE(r.files.empty());
 }
 

@@ -86,7 +86,10 @@ CompileResult compile(const Material& material, const CompileOptions& options) {
     } catch (const CompileError& e) {
         append(result.diagnostics, e.diagnostics);
     } catch (const spirv_cross::CompilerError& e) {
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {material.sourceFile.string(), 0, 0}, "", std::string("SPIRV-Cross: ") + e.what(), {}});
+        result.diagnostics.push_back(Diagnostic::make(Code::TargetUnsupported, {material.sourceFile.string()}, "", std::string("SPIRV-Cross: ") + e.what()));
+    } catch (const std::exception& e) {
+        // compile() never throws: anything else is hexc's own fault, reported as such.
+        result.diagnostics.push_back(Diagnostic::make(Code::Internal, {material.sourceFile.string()}, "", std::string("internal error: ") + e.what()));
     }
     if (!result.ok()) result.files.clear();
     return result;

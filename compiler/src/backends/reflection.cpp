@@ -74,11 +74,10 @@ std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, 
                 continue;
             }
             if (!isHexcs(t, plan))
-                throw CompileError{{{Diagnostic::Severity::Error, {plan.templateName, lineNaming(plan.templateSource, t.name), 0}, "",
+                throw CompileError{{Diagnostic::make(Code::TemplateSetConflict, {plan.templateName, lineNaming(plan.templateSource, t.name), 0}, "",
                                      "`" + t.name + "` is in descriptor set 0, binding " + std::to_string(t.binding) +
                                          ", and set 0 is hexc's (parameter block, sampler, textures); declare the template's own resources "
-                                         "in set 1 or higher",
-                                     {}}}};
+                                         "in set 1 or higher")}};
         }
     std::stable_sort(out.begin(), out.end(), [](const TemplateResource& a, const TemplateResource& b) {
         return std::tie(a.cls, a.set, a.binding) < std::tie(b.cls, b.set, b.binding);
@@ -107,7 +106,7 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
             const auto& type = c.get_type(ubo.base_type_id);
             for (uint32_t i = 0; i < type.member_types.size(); ++i) {
                 if (plan.params[i].constantId || c.type_struct_member_offset(type, i) != plan.params[i].offset)
-                    throw CompileError{{{Diagnostic::Severity::Error, {"hexc", 0, 0}, "", "internal: parameter block layout differs from the plan", {}}}};
+                    throw CompileError{{Diagnostic::make(Code::Internal, {"hexc"}, "", "internal: parameter block layout differs from the plan")}};
             }
         }
         if (hexcBlock) t["params"] = locate(ResourceKind::Params, 0);

@@ -164,8 +164,8 @@ std::string expandTokens(const std::string& text, const Tokens& values, const st
         std::string name = text.substr(open + 2, close == std::string::npos ? std::string::npos : close - open - 2);
         auto it = values.find(name);
         if (close == std::string::npos || it == values.end())
-            throw CompileError{{{Diagnostic::Severity::Error, {"hexc/slots.glsl", 0, 0}, "",
-                                 "internal error: section `" + section + "` has token `${" + name + "}`, which hexc does not fill", {}}}};
+            throw CompileError{{Diagnostic::make(Code::Internal, {"hexc/slots.glsl"}, "",
+                                 "internal error: section `" + section + "` has token `${" + name + "}`, which hexc does not fill")}};
         out.append(text, at, open - at).append(it->second);
     }
     return out.append(text, at);

@@ -78,34 +78,29 @@ public:
 
     Diagnostics diags;
 
-    void error(const std::string& pointer, std::string message, std::string hint = {}, bool atKey = false) {
-        error(pointer, atKey ? locator_.key(pointer) : locator_.value(pointer), std::move(message), std::move(hint));
+    void report(Code code, const std::string& pointer, std::string message, std::string hint = {}, bool atKey = false) {
+        report(code, pointer, atKey ? locator_.key(pointer) : locator_.value(pointer), std::move(message), std::move(hint));
     }
 
-    void error(const std::string& pointer, TextPos p, std::string message, std::string hint = {}) {
-        diags.push_back({Diagnostic::Severity::Error, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)});
-    }
-
-    void warning(const std::string& pointer, std::string message, std::string hint = {}) {
-        TextPos p = locator_.value(pointer);
-        diags.push_back({Diagnostic::Severity::Warning, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)});
+    void report(Code code, const std::string& pointer, TextPos p, std::string message, std::string hint = {}) {
+        diags.push_back(Diagnostic::make(code, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)));
     }
 
     Material run(const json& doc) {
         Material m;
         m.sourceFile = file_;
         for (const auto& d : locator_.duplicates())
-            error(d.pointer, d.second,
+            report(Code::DuplicateKey, d.pointer, d.second,
                   "duplicate key " + ticked(d.pointer.substr(d.pointer.rfind('/') + 1)) + " (first at line " + std::to_string(d.first.line) + ")");
         if (!doc.is_object()) {
-            error("", "expected a material object, got " + typeName(doc));
+            report(Code::WrongType, "", "expected a material object, got " + typeName(doc));
             return m;
         }
         checkKeys(doc, "", kMaterialKeys);
         if (requireKey(doc, "", "name", "a string")) {
             m.name = string(doc["name"], "/name");
             if (doc["name"].is_string() && !isFileName(m.name))
-                error("/name", "expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"" + m.name + "\"");
+                report(Code::InvalidName, "/name", "expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"" + m.name + "\"");
         }
         m.templateName = "lit";
         if (doc.contains("template")) m.templateName = templateRef(doc["template"], "/template");
@@ -123,16 +118,17 @@ public:
         static const std::vector<std::string> kSceneKeys = {"$schema", "scene", "materials", "passes"};
         static const std::vector<std::string> kPassKeys = {"name", "template", "slots", "materials"};
         if (!doc.is_object()) {
-            error("", "expected a scene object, got " + typeName(doc));
+            report(Code::WrongType, "", "expected a scene object, got " + typeName(doc));
             return scene;
         }
         checkKeys(doc, "", kSceneKeys);
         scene.name = string(doc["scene"], "/scene");
         if (doc["scene"].is_string() && !isFileName(scene.name))
-            error("/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
+            report(Code::InvalidName, "/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
         if (requireKey(doc, "", "materials", "an array of material files")) {
             const json& list = doc["materials"];
-            if (!list.is_array() || list.empty()) error("/materials", "expected a non-empty array of material file paths");
+            if (!list.is_array() || list.empty())
+                report(list.is_array() ? Code::WrongCount : Code::WrongType, "/materials", "expected a non-empty array of material file paths");
             for (size_t i = 0; list.is_array() && i < list.size(); ++i) {
                 std::string p = pointerAppend("/materials", i);
                 std::string path = string(list[i], p);
@@ -140,22 +136,23 @@ public:
                 ParseResult r = parseMaterialFile(dir_ / path);
                 diags.insert(diags.end(), r.diagnostics.begin(), r.diagnostics.end());
                 if (!r.material) {
-                    error(p, "material " + (dir_ / path).string() + " is invalid (see above)");
+                    report(Code::InvalidSceneMaterial, p, "material " + (dir_ / path).string() + " is invalid (see above)");
                     continue;
                 }
                 for (const Material& other : scene.materials)
-                    if (other.name == r.material->name) error(p, "two materials are named `" + other.name + "`; variant files would collide");
+                    if (other.name == r.material->name) report(Code::DuplicateName, p, "two materials are named `" + other.name + "`; variant files would collide");
                 scene.materials.push_back(std::move(*r.material));
             }
         }
         if (requireKey(doc, "", "passes", "an array of passes")) {
             const json& passes = doc["passes"];
-            if (!passes.is_array() || passes.empty()) error("/passes", "expected a non-empty array of passes");
+            if (!passes.is_array() || passes.empty())
+                report(passes.is_array() ? Code::WrongCount : Code::WrongType, "/passes", "expected a non-empty array of passes");
             for (size_t i = 0; passes.is_array() && i < passes.size(); ++i) {
                 std::string p = pointerAppend("/passes", i);
                 const json& v = passes[i];
                 if (!v.is_object()) {
-                    error(p, "expected a pass object, got " + typeName(v));
+                    report(Code::WrongType, p, "expected a pass object, got " + typeName(v));
                     continue;
                 }
                 checkKeys(v, p, kPassKeys);
@@ -163,9 +160,9 @@ public:
                 if (requireKey(v, p, "name", "a string")) {
                     pass.name = string(v["name"], p + "/name");
                     if (v["name"].is_string() && !isFileName(pass.name))
-                        error(p + "/name", "expected 1-64 letters, digits, `_` or `-`, got \"" + pass.name + "\"");
+                        report(Code::InvalidName, p + "/name", "expected 1-64 letters, digits, `_` or `-`, got \"" + pass.name + "\"");
                     for (const ScenePass& other : scene.passes)
-                        if (other.name == pass.name) error(p + "/name", "duplicate pass name \"" + pass.name + "\"");
+                        if (other.name == pass.name) report(Code::DuplicateName, p + "/name", "duplicate pass name \"" + pass.name + "\"");
                 }
                 if (v.contains("template")) pass.templateName = templateRef(v["template"], p + "/template");
                 pass.slots = names(v, p, "slots");
@@ -180,7 +177,7 @@ public:
                             for (const Material& m : scene.materials) all.push_back(m.name);
                             std::string hint;
                             if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
-                            error(pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
+                            report(Code::UnknownReference, pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
                         }
                     }
                 scene.passes.push_back(std::move(pass));
@@ -196,7 +193,7 @@ private:
         std::vector<std::string> out;
         const json& v = obj[key];
         if (!v.is_array()) {
-            error(pointer + "/" + key, "expected an array of names, got " + typeName(v));
+            report(Code::WrongType, pointer + "/" + key, "expected an array of names, got " + typeName(v));
             return out;
         }
         for (size_t i = 0; i < v.size(); ++i) out.push_back(string(v[i], pointerAppend(pointer + "/" + key, i)));
@@ -208,32 +205,32 @@ private:
             if (std::find(known.begin(), known.end(), key) != known.end()) continue;
             std::string hint;
             if (auto best = closestMatch(key, known)) hint = "did you mean " + ticked(*best) + "?";
-            error(pointerAppend(pointer, key), "unknown key " + ticked(key) + "; expected " + joinQuoted(known), hint, true);
+            report(Code::UnknownKey, pointerAppend(pointer, key), "unknown key " + ticked(key) + "; expected " + joinQuoted(known), hint, true);
         }
     }
 
     bool requireKey(const json& obj, const std::string& pointer, const std::string& key, const std::string& what) {
         if (obj.contains(key)) return true;
-        error(pointer, "missing required key " + ticked(key) + " (" + what + ")");
+        report(Code::MissingKey, pointer, "missing required key " + ticked(key) + " (" + what + ")");
         return false;
     }
 
     std::string string(const json& v, const std::string& pointer) {
         if (v.is_string()) return v.get<std::string>();
-        error(pointer, "expected a string, got " + typeName(v));
+        report(Code::WrongType, pointer, "expected a string, got " + typeName(v));
         return {};
     }
 
     bool boolean(const json& v, const std::string& pointer, bool fallback) {
         if (v.is_boolean()) return v.get<bool>();
-        error(pointer, "expected true or false, got " + typeName(v));
+        report(Code::WrongType, pointer, "expected true or false, got " + typeName(v));
         return fallback;
     }
 
     // A choice among fixed strings; returns the index, or -1 after reporting.
     int choice(const json& v, const std::string& pointer, const std::vector<std::string>& options) {
         if (!v.is_string()) {
-            error(pointer, "expected one of " + joinQuoted(options) + ", got " + typeName(v));
+            report(Code::WrongType, pointer, "expected one of " + joinQuoted(options) + ", got " + typeName(v));
             return -1;
         }
         std::string s = v.get<std::string>();
@@ -241,7 +238,7 @@ private:
             if (options[i] == s) return int(i);
         std::string hint;
         if (auto best = closestMatch(s, options)) hint = "did you mean " + ticked(*best) + "?";
-        error(pointer, "expected one of " + joinQuoted(options) + ", got \"" + s + "\"", hint);
+        report(Code::UnknownValue, pointer, "expected one of " + joinQuoted(options) + ", got \"" + s + "\"", hint);
         return -1;
     }
 
@@ -256,14 +253,14 @@ private:
 
     double number(const json& v, const std::string& pointer, const Range& range, double fallback) {
         if (!v.is_number()) {
-            error(pointer, "expected a number " + range.text + ", got " + typeName(v));
+            report(Code::WrongType, pointer, "expected a number " + range.text + ", got " + typeName(v));
             return fallback;
         }
         double x = v.get<double>();
         if (!std::isfinite(x) || !range.contains(x)) {
             std::ostringstream s;
             s << "expected a number " << range.text << ", got " << v.dump();
-            error(pointer, s.str());
+            report(Code::OutOfRange, pointer, s.str());
             return fallback;
         }
         return x;
@@ -272,7 +269,7 @@ private:
     // A whole number in `range`.
     double whole(const json& v, const std::string& pointer, const Range& range, double fallback) {
         if (v.is_number() && v.get<double>() != std::floor(v.get<double>())) {
-            error(pointer, "expected a whole number " + range.text + ", got " + v.dump());
+            report(Code::OutOfRange, pointer, "expected a whole number " + range.text + ", got " + v.dump());
             return fallback;
         }
         return number(v, pointer, range, fallback);
@@ -281,7 +278,7 @@ private:
     // An array of two numbers in `range` (whole numbers when `integer`).
     void pair(const json& v, const std::string& pointer, const Range& range, std::array<double, 2>& out, bool integer = false) {
         if (!v.is_array() || v.size() != 2) {
-            error(pointer, "expected an array of two numbers " + range.text + ", got " + (v.is_array() ? "an array of " + std::to_string(v.size()) : typeName(v)));
+            report(Code::WrongType, pointer, "expected an array of two numbers " + range.text + ", got " + (v.is_array() ? "an array of " + std::to_string(v.size()) : typeName(v)));
             return;
         }
         for (size_t i = 0; i < 2; ++i)
@@ -297,7 +294,7 @@ private:
             // what is not a regular file).
             std::error_code ec;
             if (!std::filesystem::is_regular_file(p, ec))
-                error(pointer, "cannot read template file " + p.string() + (std::filesystem::exists(p, ec) ? ": not a regular file" : ": no such file"));
+                report(Code::TemplateUnreadable, pointer, "cannot read template file " + p.string() + (std::filesystem::exists(p, ec) ? ": not a regular file" : ": no such file"));
             return p.string();
         }
         std::vector<std::string> names = builtinTemplateNames();
@@ -306,14 +303,14 @@ private:
         if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
         std::string list;
         for (const std::string& n : names) list += (list.empty() ? "" : ", ") + ticked(n);
-        error(pointer, "unknown template \"" + name + "\"; expected a built-in template (" + list + ") or a path to a .glsl file", hint);
+        report(Code::UnknownTemplate, pointer, "unknown template \"" + name + "\"; expected a built-in template (" + list + ") or a path to a .glsl file", hint);
         return "lit";
     }
 
     // `materialLevel`: the top-level block, the only place for material-wide keys.
     void hexSettings(const json& v, const std::string& pointer, HexTiling& hex, bool materialLevel = false) {
         if (!v.is_object()) {
-            error(pointer, "expected an object of hex-tiling settings, got " + typeName(v));
+            report(Code::WrongType, pointer, "expected an object of hex-tiling settings, got " + typeName(v));
             return;
         }
         checkKeys(v, pointer, kHexKeys);
@@ -328,7 +325,7 @@ private:
             } else if (t.is_number()) {
                 hex.tiling[0] = hex.tiling[1] = number(t, p, positive, hex.tiling[0]);
             } else {
-                error(p, "expected a number > 0 or an array [u, v] of two numbers > 0, got " +
+                report(Code::WrongType, p, "expected a number > 0 or an array [u, v] of two numbers > 0, got " +
                              (t.is_array() ? "an array of " + std::to_string(t.size()) : typeName(t)));
             }
         }
@@ -359,7 +356,7 @@ private:
         if (v.contains("taps")) hex.taps = int(whole(v["taps"], pointer + "/taps", {1, 3, false, false, "in 1..3"}, hex.taps));
         for (const char* key : {"projection", "planesharpness"})
             if (v.contains(key) && !materialLevel)
-                error(pointer + "/" + key, ticked(key) + " is material-wide (every slot function takes the same inputs); set it in the top-level `hextiling`",
+                report(Code::MisplacedKey, pointer + "/" + key, ticked(key) + " is material-wide (every slot function takes the same inputs); set it in the top-level `hextiling`",
                       {}, true);
         if (v.contains("projection") && materialLevel) {
             if (int i = choice(v["projection"], pointer + "/projection", kProjections); i >= 0) hex.projection = Projection(i);
@@ -375,11 +372,11 @@ private:
 
     void slots(const json& v, const std::string& pointer, Material& m) {
         if (!v.is_array()) {
-            error(pointer, "expected an array of slots, got " + typeName(v));
+            report(Code::WrongType, pointer, "expected an array of slots, got " + typeName(v));
             return;
         }
         if (v.empty() || v.size() > kMaxSlots) {
-            error(pointer, "expected 1 to " + std::to_string(kMaxSlots) + " slots, got " + std::to_string(v.size()));
+            report(Code::WrongCount, pointer, "expected 1 to " + std::to_string(kMaxSlots) + " slots, got " + std::to_string(v.size()));
             if (v.empty()) return;
         }
         std::map<std::string, std::string> seen;  // name -> pointer of first use
@@ -389,7 +386,7 @@ private:
             if (!s.name.empty()) {
                 if (auto [it, fresh] = seen.emplace(s.name, p); !fresh) {
                     TextPos first = locator_.value(it->second + "/name");
-                    error(p + "/name", "duplicate slot name \"" + s.name + "\" (first at line " + std::to_string(first.line) + ")");
+                    report(Code::DuplicateName, p + "/name", "duplicate slot name \"" + s.name + "\" (first at line " + std::to_string(first.line) + ")");
                 }
             }
             m.slots.push_back(std::move(s));
@@ -401,14 +398,14 @@ private:
         Slot s;
         s.hex = defaults;
         if (!v.is_object()) {
-            error(pointer, "expected a slot object, got " + typeName(v));
+            report(Code::WrongType, pointer, "expected a slot object, got " + typeName(v));
             return s;
         }
         checkKeys(v, pointer, kSlotKeys);
         if (requireKey(v, pointer, "name", "a string")) {
             s.name = string(v["name"], pointer + "/name");
             if (v["name"].is_string() && !isSlotName(s.name)) {
-                error(pointer + "/name", "expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`), got \"" + s.name + "\"",
+                report(Code::InvalidName, pointer + "/name", "expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`), got \"" + s.name + "\"",
                       "it becomes the GLSL function hexc_<name>");
                 s.name.clear();
             }
@@ -425,20 +422,20 @@ private:
         s.colorSpace = s.kind == SlotKind::Color ? ColorSpace::Srgb : ColorSpace::Linear;
         if (v.contains("channel")) {
             if (kindKnown && s.kind != SlotKind::Scalar)
-                error(pointer + "/channel", "`channel` applies only to slots of kind `scalar`", {}, true);
+                report(Code::MisplacedKey, pointer + "/channel", "`channel` applies only to slots of kind `scalar`", {}, true);
             else if (int i = choice(v["channel"], pointer + "/channel", kChannels); i >= 0)
                 s.channel = i;
         }
         if (v.contains("flip_y")) {
             if (kindKnown && s.kind != SlotKind::Normal)
-                error(pointer + "/flip_y", "`flip_y` applies only to slots of kind `normal`", {}, true);
+                report(Code::MisplacedKey, pointer + "/flip_y", "`flip_y` applies only to slots of kind `normal`", {}, true);
             else
                 s.flipY = boolean(v["flip_y"], pointer + "/flip_y", false);
         }
         if (v.contains("colorspace")) {
             if (int i = choice(v["colorspace"], pointer + "/colorspace", kColorSpaces); i >= 0) {
                 if (kindKnown && s.kind == SlotKind::Normal && ColorSpace(i) == ColorSpace::Srgb)
-                    error(pointer + "/colorspace", "a normal map holds vectors and must be `linear`, got \"srgb\"");
+                    report(Code::ConflictingSettings, pointer + "/colorspace", "a normal map holds vectors and must be `linear`, got \"srgb\"");
                 else
                     s.colorSpace = ColorSpace(i);
             }
@@ -448,19 +445,19 @@ private:
         // transforms are Listings 2 and 6 exactly.
         std::string at = v.contains("hextiling") ? pointer + "/hextiling" : pointer;
         if (s.hex.splitCoordinates && s.hex.mode == HashMode::Paper)
-            error(at, "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
+            report(Code::ConflictingSettings, at, "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
         if (s.hex.hasTransforms() && s.hex.mode == HashMode::Paper)
-            error(at, "per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode `stable`; "
+            report(Code::ConflictingSettings, at, "per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode `stable`; "
                       "mode `paper` is exactly the paper's Listings 2 and 6");
         if (s.hex.mask != Mask::Hex && s.hex.mode == HashMode::Paper)
-            error(at, "mask `" + std::string(toString(s.hex.mask)) + "` needs mode `stable`; the paper defines only the hex lattice");
+            report(Code::ConflictingSettings, at, "mask `" + std::string(toString(s.hex.mask)) + "` needs mode `stable`; the paper defines only the hex lattice");
         if (s.hex.taps > 1 && s.hex.taps != s.hex.maskTaps())
-            error(at, "`taps` " + std::to_string(s.hex.taps) + " does not fit mask `" + std::string(toString(s.hex.mask)) + "`, which has " +
+            report(Code::ConflictingSettings, at, "`taps` " + std::to_string(s.hex.taps) + " does not fit mask `" + std::string(toString(s.hex.mask)) + "`, which has " +
                           std::to_string(s.hex.maskTaps()) + " taps; expected " + std::to_string(s.hex.maskTaps()) + " or 1 (one dithered fetch)");
         if (s.hex.splitCoordinates && (s.hex.mask == Mask::Noise || s.hex.mask == Mask::Noise3))
-            error(at, "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
+            report(Code::ConflictingSettings, at, "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
         if (s.hex.splitCoordinates && s.hex.projection == Projection::Triplanar)
-            error(at, "`split_coordinates` does not work with the triplanar projection: it reads world positions, not uv");
+            report(Code::ConflictingSettings, at, "`split_coordinates` does not work with the triplanar projection: it reads world positions, not uv");
         if (!s.hex.splitCoordinates) rangeWarning(s.hex, at);
         if (v.contains("height_blend")) heightBlend(v["height_blend"], pointer + "/height_blend", s);
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
@@ -483,12 +480,12 @@ private:
         char text[200];
         std::snprintf(text, sizeof text, "with tiling %g, stable mode's %s is exact only for |%s| < %.0f (2^%d / tiling); beyond, tiles come out wrong",
                       tiling, checker ? "checker" : "lattice", checker ? "uv" : "u", limit, checker ? 31 : 26);
-        warning(at, text, "for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin (docs/precision.md#stable-modes-range)");
+        report(Code::TilingRange, at, text, "for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin (docs/precision.md#stable-modes-range)");
     }
 
     void heightBlend(const json& v, const std::string& pointer, Slot& s) {
         if (!v.is_object()) {
-            error(pointer, "expected an object {\"slot\": name, \"width\": number}, got " + typeName(v));
+            report(Code::WrongType, pointer, "expected an object {\"slot\": name, \"width\": number}, got " + typeName(v));
             return;
         }
         checkKeys(v, pointer, kHeightKeys);
@@ -496,9 +493,9 @@ private:
         if (requireKey(v, pointer, "slot", "the name of a scalar slot holding heights")) h.slot = string(v["slot"], pointer + "/slot");
         if (v.contains("width")) h.width = number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, h.width);
         if (s.hex.taps == 1)
-            error(pointer, "`height_blend` needs every tile's height; it cannot be combined with `taps` 1", {}, true);
+            report(Code::ConflictingSettings, pointer, "`height_blend` needs every tile's height; it cannot be combined with `taps` 1", {}, true);
         if (!s.hex.enabled)
-            error(pointer, "`height_blend` weighs tiles, and this slot has hex-tiling disabled (`enabled`: false)", {}, true);
+            report(Code::ConflictingSettings, pointer, "`height_blend` weighs tiles, and this slot has hex-tiling disabled (`enabled`: false)", {}, true);
         s.heightBlend = h;
     }
 
@@ -514,9 +511,9 @@ private:
             if (it == names.end()) {
                 std::string hint;
                 if (auto best = closestMatch(s.heightBlend->slot, names)) hint = "did you mean " + ticked(*best) + "?";
-                error(p, "no slot named `" + s.heightBlend->slot + "` in this material", hint);
+                report(Code::UnknownReference, p, "no slot named `" + s.heightBlend->slot + "` in this material", hint);
             } else if (const Slot& h = m.slots[size_t(it - names.begin())]; h.kind != SlotKind::Scalar) {
-                error(p, "slot `" + h.name + "` is of kind `" + std::string(toString(h.kind)) + "`; heights come from a slot of kind `scalar`");
+                report(Code::WrongSlotKind, p, "slot `" + h.name + "` is of kind `" + std::string(toString(h.kind)) + "`; heights come from a slot of kind `scalar`");
             }
         }
     }
@@ -525,26 +522,26 @@ private:
         s.texturePath = dir_ / s.texture;
         std::error_code ec;
         if (s.texture.empty() || !std::filesystem::is_regular_file(s.texturePath, ec)) {
-            error(pointer, "texture file not found: " + s.texturePath.string());
+            report(Code::TextureNotFound, pointer, "texture file not found: " + s.texturePath.string());
             return;
         }
         std::string why;
         std::optional<TextureInfo> info = textureInfo(s.texturePath, &why);
         if (!info) {
-            error(pointer, "cannot read texture " + s.texturePath.string() + ": " + why + " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM or PFM)");
+            report(Code::TextureUnreadable, pointer, "cannot read texture " + s.texturePath.string() + ": " + why + " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM or PFM)");
             return;
         }
         s.width = info->width;
         s.height = info->height;
         if (s.kind == SlotKind::Normal && info->channels < 3)
-            error(pointer, "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));
+            report(Code::TextureChannels, pointer, "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));
         // A channel the file lacks reads whatever the engine's upload puts there (0, 1 or a copy of grey): a scalar
         // slot reading one is a mistake. A grey + alpha file has r and a.
         static const char* kHas[] = {"", "r", "ra", "rgb", "rgba"};
         std::vector<std::string> has;
         for (const char* c = kHas[std::clamp(info->channels, 0, 4)]; *c; ++c) has.emplace_back(1, *c);
         if (s.kind == SlotKind::Scalar && std::find(has.begin(), has.end(), kChannels[size_t(s.channel)]) == has.end())
-            error(pointer.substr(0, pointer.rfind('/')) + "/channel",
+            report(Code::MisplacedKey, pointer.substr(0, pointer.rfind('/')) + "/channel",
                   "channel `" + kChannels[size_t(s.channel)] + "` of " + s.texturePath.string() + ", which has " + std::to_string(info->channels) +
                       " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));
     }
@@ -557,7 +554,7 @@ private:
 std::optional<json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags) {
     auto syntaxError = [&](size_t offset, std::string message) {
         TextPos p = textPosition(text, offset);
-        diags->push_back({Diagnostic::Severity::Error, {file.string(), p.line, p.col}, "", std::move(message), {}});
+        diags->push_back(Diagnostic::make(Code::JsonSyntax, {file.string(), p.line, p.col}, "", std::move(message)));
         return std::nullopt;
     };
     if (std::optional<size_t> at = excessiveNesting(text))
@@ -599,7 +596,7 @@ ParseResult parseMaterialFile(const std::filesystem::path& file) {
     std::optional<std::string> text = readFile(file, &why);
     if (!text) {
         ParseResult r;
-        r.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot read material file: " + why, {}});
+        r.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {file.string()}, "", "cannot read material file: " + why));
         return r;
     }
     return parseMaterial(*text, file);
@@ -616,7 +613,7 @@ SceneParseResult parseSceneFile(const std::filesystem::path& file) {
     std::string why;
     std::optional<std::string> text = readFile(file, &why);
     if (!text) {
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {file.string(), 0, 0}, "", "cannot read scene file: " + why, {}});
+        result.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {file.string()}, "", "cannot read scene file: " + why));
         return result;
     }
     return parseScene(*text, file);

@@ -22,8 +22,8 @@ bool sameLattice(const HexTiling& a, const HexTiling& b) {
 // Reads the template the options or the material name into plan.templateSource; false (with an error) when it
 // cannot be used.
 bool loadTemplate(const Material& material, const CompileOptions& options, ShaderPlan& plan) {
-    auto error = [&](std::string message) {
-        plan.diagnostics.push_back({Diagnostic::Severity::Error, {plan.templateName, 0, 0}, "", std::move(message), {}});
+    auto error = [&](Code code, std::string message) {
+        plan.diagnostics.push_back(Diagnostic::make(code, {plan.templateName}, "", std::move(message)));
     };
     std::string ref = options.templateFile.empty() ? material.templateName : options.templateFile.string();
     if (ref.ends_with(".glsl")) {
@@ -31,7 +31,7 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
         std::string why;
         std::optional<std::string> text = readFile(ref, &why);
         if (!text) {
-            error("cannot read template file: " + why);
+            error(Code::TemplateUnreadable, "cannot read template file: " + why);
             return false;
         }
         plan.templateSource = std::move(*text);
@@ -39,21 +39,21 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
         plan.templateName = "templates/" + ref + ".glsl";
         const std::string* text = embeddedText(ref + ".glsl");
         if (!text) {
-            error("no built-in template `" + ref + "`");
+            error(Code::UnknownTemplate, "no built-in template `" + ref + "`");
             return false;
         }
         plan.templateSource = *text;
     }
     if (!plan.templateSource.starts_with("#version") || plan.templateSource.find('\n') == std::string::npos)
-        error("a template must start with a `#version` line");
+        error(Code::TemplateNoVersion, "a template must start with a `#version` line");
     if (countLines(plan.templateSource, "#include <hexc>") != 1)
-        error("a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+        error(Code::TemplateNoInclude, "a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
     std::vector<TemplateSlot> declared = readTemplateSlots(plan.templateSource, plan.templateName, plan.diagnostics);
     for (Diagnostic& d : checkTemplateFit(declared, material, ref)) plan.diagnostics.push_back(std::move(d));
     if (MacroExpansion e = boundMacroExpansion(plan.templateSource); e.line) {
-        plan.diagnostics.push_back({Diagnostic::Severity::Error, {plan.templateName, e.line, 0}, "",
+        plan.diagnostics.push_back(Diagnostic::make(Code::TemplateTooLarge, {plan.templateName, e.line, 0}, "",
                                     "the template's macros expand to more than " + std::to_string(int(kMaxExpandedTokens)) +
-                                        " tokens by this line; hexc refuses it rather than stall the preprocessor", {}});
+                                        " tokens by this line; hexc refuses it rather than stall the preprocessor"));
     }
     return !hasErrors(plan.diagnostics);
 }
@@ -124,8 +124,8 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
         if (!use.needed[i]) {
-            plan.diagnostics.push_back({Diagnostic::Severity::Warning, {material.sourceFile.string(), 0, 0}, "",
-                                        "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out", {}});
+            plan.diagnostics.push_back(Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "",
+                                        "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out"));
             continue;
         }
         SlotPlan sp;

@@ -43,12 +43,12 @@ void appendGlslangLog(const std::string& log, const std::string& fallbackName, D
     while (std::getline(in, line)) {
         bool isError = line.starts_with("ERROR: "), isWarning = line.starts_with("WARNING: ");
         if (!isError && !isWarning) continue;
-        auto severity = isError ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
+        Code code = isError ? Code::ShaderError : Code::ShaderWarning;
         std::string_view rest = std::string_view(line).substr(isError ? 7 : 9);
         if (splitLocated(rest, file, number, message)) {
-            out.push_back({severity, {file == "0" ? fallbackName : file, number, 0}, "", message, {}});
+            out.push_back(Diagnostic::make(code, {file == "0" ? fallbackName : file, number, 0}, "", message));
         } else if (isError && line.find("compilation errors") == std::string::npos) {
-            out.push_back({Diagnostic::Severity::Error, {fallbackName, 0, 0}, "", std::string(rest), {}});
+            out.push_back(Diagnostic::make(Code::ShaderError, {fallbackName}, "", std::string(rest)));
         }
     }
 }
@@ -100,7 +100,7 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(*program.getIntermediate(lang), result.words, &logger, &options);
     if (std::string log = logger.getAllMessages(); log.find("error") != std::string::npos) {
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {name, 0, 0}, "", "SPIR-V generation failed: " + log, {}});
+        result.diagnostics.push_back(Diagnostic::make(Code::Internal, {name}, "", "SPIR-V generation failed: " + log));
         result.words.clear();
     }
     return result;
@@ -114,7 +114,7 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstan
     };
     auto fail = [&](const std::string& what) {
         result.words.clear();
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {"hexc", 0, 0}, "", what + ":\n" + messages, {}});
+        result.diagnostics.push_back(Diagnostic::make(Code::Internal, {"hexc"}, "", what + ":\n" + messages));
         return result;
     };
     spvtools::SpirvTools tools(kTargetEnv);
