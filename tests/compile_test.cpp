@@ -239,12 +239,38 @@ TEST(Cli, BrokenMaterialWritesNothing) {
 TEST(Cli, UsageErrors) {
     std::string err;
     EXPECT_EQ(runHexc("materials/rock.json", &err), 2);
-    EXPECT_EQ(err, "hexc: no output folder given: use -o DIR\n");
+    EXPECT_EQ(err, "hexc: no output folder given: use -o DIR (see hexc --help)\n");
     EXPECT_EQ(runHexc("materials/rock.json -o x --targets hlsl,dxil", &err), 2);
-    EXPECT_EQ(err, "hexc: unknown target `dxil` in --targets; expected spirv, hlsl, glsl or msl\n");
+    EXPECT_EQ(err, "hexc: --targets: dxil not in {spirv,hlsl,glsl,msl} (see hexc --help)\n");
     EXPECT_EQ(runHexc("--frobnicate", &err), 2);
+    EXPECT_EQ(err, "hexc: The following argument was not expected: --frobnicate (see hexc --help)\n");
+    EXPECT_EQ(runHexc("materials/rock.json -o x --hlsl-sm 52", &err), 2);
+    EXPECT_EQ(err, "hexc: --hlsl-sm: 52 not in {50,51,60,61,62,63,64,65,66} (see hexc --help)\n");
+    EXPECT_EQ(runHexc("materials/rock.json -o x --template lit.txt", &err), 2);
+    EXPECT_EQ(err, "hexc: --template: expected a .glsl file, got lit.txt (see hexc --help)\n");
     EXPECT_EQ(runHexc("--help"), 0);
     EXPECT_EQ(runHexc("--version"), 0);
+}
+
+// CLI11 parses the usual spellings: --opt=value, -oDIR, options after the inputs, a repeatable --variant that
+// takes one value each time, and generated help listing every option.
+TEST(Cli, OptionSpellings) {
+    std::string err;
+    for (const char* spelling : {"--out=", "-o", "-o "}) {
+        std::filesystem::path dir = freshDir("hexc_cli_spelling");
+        EXPECT_EQ(runHexc("materials/rock.json -q --targets=hlsl,glsl " + std::string(spelling) + dir.string(), &err), 0) << spelling << err;
+        EXPECT_TRUE(std::filesystem::exists(dir / "rock.frag.hlsl")) << spelling;
+        EXPECT_TRUE(std::filesystem::exists(dir / "rock.frag.glsl")) << spelling;
+        EXPECT_FALSE(std::filesystem::exists(dir / "rock.frag.spv")) << spelling;
+    }
+    // --variant takes one value; the next word is an input again (here a second scene-less input: an error of
+    // the inputs, exit 1, not of the command line).
+    EXPECT_EQ(runHexc("materials/rock.json --variant rock.lit materials/rock.json -o " + freshDir("hexc_cli_variant").string(), &err), 1);
+    EXPECT_NE(err.find("--variant rock.lit: no scene given"), std::string::npos) << err;
+    std::string help = hexc::test::runHexcStdout("--help");
+    for (const char* option : {"--out", "--targets", "--template", "--hlsl-sm", "--glsl-version", "--msl-version", "--bake",
+                               "--no-specialize", "--no-shared-lattice", "--depfile", "--variant", "--quiet", "--version", "Exit codes"})
+        EXPECT_NE(help.find(option), std::string::npos) << option;
 }
 
 TEST(Cli, MissingMaterialFile) {

@@ -754,7 +754,13 @@ TEST(RenderCommand, Errors) {
     EXPECT_EQ(err, "hexc: slot `albedo` is of kind color; this output needs a normal slot\n");
     EXPECT_EQ(runHexc("render materials/rock.json --size 0x5 -o /tmp/x.png", &err), 2);
     EXPECT_EQ(runHexc("render materials/rock.json --uv-rect 0,0,1 -o /tmp/x.png", &err), 2);
-    EXPECT_EQ(err, "hexc: --uv-rect expects 4 numbers, got `0,0,1`\n");
+    EXPECT_EQ(err, "hexc: --uv-rect expects 4 finite numbers, got `0,0,1`\n");
+    EXPECT_EQ(runHexc("render materials/rock.json --uv-rect 0,0,1,nan -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(err, "hexc: --uv-rect expects 4 finite numbers, got `0,0,1,nan`\n");
+    EXPECT_EQ(runHexc("render materials/rock.json --output albedoo -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(err, "hexc: --output: albedoo not in {shaded,albedo,normal,derivative,weights} (see hexc render --help)\n");
+    EXPECT_EQ(runHexc("preview materials/rock.json --cell 10 -o /tmp/x.png", &err), 2);
+    EXPECT_EQ(err, "hexc: --cell: Value 10 not in range 32 to 2048 (see hexc preview --help)\n");
     EXPECT_EQ(runHexc("render materials/rock.json -o /tmp/x.tiff", &err), 3);
     EXPECT_EQ(runHexc("render materials/invalid/falloff_zero.json -o /tmp/x.png", &err), 1);
     EXPECT_EQ(runHexc("render materials/rock_triplanar.json --output normal -o /tmp/x.png", &err), 1);

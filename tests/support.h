@@ -35,6 +35,15 @@ inline int runHexc(const std::string& args, std::string* err = nullptr, const st
     return WEXITSTATUS(status);
 }
 
+// Runs hexc and returns what it printed on stdout.
+inline std::string runHexcStdout(const std::string& args) {
+    std::filesystem::path log = std::filesystem::temp_directory_path() /
+                                (std::string("hexc_stdout_") + testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt");
+    std::system((std::string(HEXC_EXE) + " " + args + " > " + log.string() + " 2>/dev/null").c_str());
+    std::ifstream in(log);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
 }  // namespace hexc::test
 
 // Without a Vulkan device a test skips with the reason, unless HEXC_REQUIRE_VULKAN is set (CI), where it fails.

@@ -1,17 +1,19 @@
 #include "options.h"
 
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <iostream>
 #include <map>
-#include <sstream>
 
 namespace hexc::cli {
+namespace {
 
-const char* const kHelp = R"(hexc - compile hex-tiled materials to SPIR-V, HLSL, GLSL and MSL
+const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V, HLSL, GLSL and MSL
 
-Usage:
   hexc MATERIAL.json|SCENE.json [MORE.json ...] -o DIR [options]
   hexc render MATERIAL.json -o IMAGE.{pfm,png} [options]   (hexc render --help)
   hexc preview MATERIAL.json -o PREVIEW.png [--cell N]     (hexc preview --help)
-  hexc --help | --version
 
 Reads each material (JSON, see docs/material-format.md), injects hex-tiling into every texture slot of
 its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:
@@ -20,104 +22,84 @@ A scene (a JSON file with a "scene" key, see docs/scenes.md) compiles each (mate
 uses, and writes shaders that several variants share once. Inputs unchanged since the last run (material,
 textures, template, options, hexc version) are not compiled again. Nothing is written unless everything
 compiles; each file is written atomically.
+)";
 
-Options:
-  -o, --out DIR            output folder (created if missing)
-  --targets LIST           comma-separated subset of spirv,hlsl,glsl,msl (default: all four)
-  --template FILE.glsl     use this template instead of the material's (see docs/templates.md)
-  --hlsl-sm N              HLSL shader model: 50 (default), 51, 60, 61, 62, 63, 64, 65, 66
-  --glsl-version V         450 (default), 330 or 310es
-  --msl-version V          2.0 (default), 2.1, 2.2, 2.3 or 2.4
-  --bake                   numeric settings become constants folded into the code (one shader per
-                           material) instead of uniforms (one shader serves many materials)
-  --no-specialize          emit every feature (rotation, gain, falloff metric) even when a setting
-                           turns it off; the uniforms decide at run time
-  --no-shared-lattice      evaluate the lattice per slot even where slots could share it
-  --depfile FILE           write a make-style dependency file (outputs: inputs) for Make and Ninja
-  --variant M.PASS         compile only this scene variant (repeatable); one the scene does not have is
-                           an error
-  -q, --quiet              print errors only
-  -h, --help               this text
-  --version                print the version
-
-Exit codes:
+const char* const kExitCodes = R"(Exit codes:
   0  success (warnings may have been printed)
   1  a material or template is invalid, or compilation failed (diagnostics on stderr)
   2  bad command line
   3  an output could not be written
-)";
+  4  render, preview: no Vulkan device, or the device failed)";
 
-namespace {
-
-std::vector<std::string> split(const std::string& list) {
-    std::vector<std::string> out;
-    std::stringstream in(list);
-    for (std::string item; std::getline(in, item, ',');) out.push_back(item);
-    return out;
+// Fills the compile options from the checked names of --targets, --glsl-version and --msl-version.
+void applyNames(const std::vector<std::string>& targets, const std::string& glsl, const std::string& msl, CompileOptions& o) {
+    static const std::map<std::string, Target> names = {{"spirv", Target::Spirv}, {"hlsl", Target::Hlsl}, {"glsl", Target::Glsl}, {"msl", Target::Msl}};
+    if (!targets.empty()) o.targets.clear();
+    for (const std::string& t : targets) o.targets.push_back(names.at(t));
+    if (!glsl.empty()) {
+        o.glslEs = glsl == "310es";
+        o.glslVersion = o.glslEs ? 310 : uint32_t(std::stoi(glsl));
+    }
+    if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
 }
 
 }  // namespace
 
-Arguments parseArguments(const std::vector<std::string>& args) {
-    Arguments a;
-    auto value = [&](size_t& i) -> const std::string& {
-        if (i + 1 >= args.size()) throw UsageError{args[i] + " needs a value"};
-        return args[++i];
-    };
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        if (arg == "-o" || arg == "--out") {
-            a.outDir = value(i);
-        } else if (arg == "--targets") {
-            static const std::map<std::string, Target> names = {
-                {"spirv", Target::Spirv}, {"hlsl", Target::Hlsl}, {"glsl", Target::Glsl}, {"msl", Target::Msl}};
-            a.options.targets.clear();
-            for (const std::string& t : split(value(i))) {
-                auto it = names.find(t);
-                if (it == names.end()) throw UsageError{"unknown target `" + t + "` in --targets; expected spirv, hlsl, glsl or msl"};
-                a.options.targets.push_back(it->second);
-            }
-            if (a.options.targets.empty()) throw UsageError{"--targets needs at least one of spirv, hlsl, glsl, msl"};
-        } else if (arg == "--template") {
-            a.options.templateFile = value(i);
-            if (a.options.templateFile.extension() != ".glsl") throw UsageError{"--template expects a .glsl file, got " + a.options.templateFile.string()};
-        } else if (arg == "--hlsl-sm") {
-            static const std::map<std::string, uint32_t> models = {{"50", 50}, {"51", 51}, {"60", 60}, {"61", 61}, {"62", 62},
-                                                                   {"63", 63}, {"64", 64}, {"65", 65}, {"66", 66}};
-            auto it = models.find(value(i));
-            if (it == models.end()) throw UsageError{"--hlsl-sm expects 50, 51 or 60-66, got " + args[i]};
-            a.options.hlslShaderModel = it->second;
-        } else if (arg == "--glsl-version") {
-            const std::string& v = value(i);
-            if (v == "450" || v == "330") a.options.glslVersion = uint32_t(std::stoi(v));
-            else if (v == "310es") a.options.glslVersion = 310, a.options.glslEs = true;
-            else throw UsageError{"--glsl-version expects 450, 330 or 310es, got " + v};
-        } else if (arg == "--msl-version") {
-            const std::string& v = value(i);
-            if (v.size() != 3 || v[0] != '2' || v[1] != '.' || v[2] < '0' || v[2] > '4') throw UsageError{"--msl-version expects 2.0 to 2.4, got " + v};
-            a.options.mslMajor = 2;
-            a.options.mslMinor = uint32_t(v[2] - '0');
-        } else if (arg == "--depfile") {
-            a.depfile = value(i);
-        } else if (arg == "--variant") {
-            a.variants.push_back(value(i));
-        } else if (arg == "--bake") {
-            a.options.bake = true;
-        } else if (arg == "--no-specialize") {
-            a.options.specialize = false;
-        } else if (arg == "--no-shared-lattice") {
-            a.options.shareLattice = false;
-        } else if (arg == "-q" || arg == "--quiet") {
-            a.quiet = true;
-        } else if (!arg.empty() && arg[0] == '-') {
-            throw UsageError{"unknown option " + arg + " (see hexc --help)"};
-        } else {
-            a.materials.emplace_back(arg);
-        }
+std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args) {
+    app.footer(kExitCodes);
+    app.get_formatter()->column_width(30);
+    try {
+        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 consumes from the back
+        app.parse(reversed);
+    } catch (const CLI::CallForVersion& e) {  // a CLI::Success too: caught first
+        std::cout << e.what() << "\n";
+        return kOk;
+    } catch (const CLI::Success&) {
+        std::cout << app.help();
+        return kOk;
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "hexc: " << e.what() << " (see " << app.get_name() << " --help)\n";
+        return kUsage;
     }
-    if (a.materials.empty()) throw UsageError{"no material or scene given (see hexc --help)"};
-    if (a.outDir.empty()) throw UsageError{"no output folder given: use -o DIR"};
-    return a;
+    return std::nullopt;
+}
+
+std::optional<int> parseArguments(const std::vector<std::string>& args, Arguments& a) {
+    CLI::App app(kDescription, "hexc");
+    std::vector<std::string> materials, targets;
+    std::string glsl, msl;
+    // Required by hand below, after CLI11 has reported unknown options (it checks requirements first).
+    app.add_option("materials", materials, "material or scene files")->type_name("FILE.json");
+    app.add_option("-o,--out", a.outDir, "output folder (created if missing)")->type_name("DIR");
+    app.add_option("--targets", targets, "subset of spirv,hlsl,glsl,msl (default: all four)")
+        ->delimiter(',')
+        ->allow_extra_args(false)
+        ->check(CLI::IsMember({"spirv", "hlsl", "glsl", "msl"}));
+    app.add_option("--template", a.options.templateFile, "use this template instead of the material's (docs/templates.md)")
+        ->type_name("FILE.glsl")
+        ->check(CLI::Validator([](std::string& f) { return f.ends_with(".glsl") ? "" : "expected a .glsl file, got " + f; }, ""));
+    app.add_option("--hlsl-sm", a.options.hlslShaderModel, "HLSL shader model (default 50)")
+        ->check(CLI::IsMember({50, 51, 60, 61, 62, 63, 64, 65, 66}));
+    app.add_option("--glsl-version", glsl, "GLSL version (default 450)")->check(CLI::IsMember({"450", "330", "310es"}));
+    app.add_option("--msl-version", msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
+    app.add_flag("--bake", a.options.bake,
+                 "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
+    app.add_flag_callback("--no-specialize", [&] { a.options.specialize = false; },
+                          "emit every feature even when a setting turns it off; the uniforms decide");
+    app.add_flag_callback("--no-shared-lattice", [&] { a.options.shareLattice = false; },
+                          "evaluate the lattice per slot even where slots could share it");
+    app.add_option("--depfile", a.depfile, "write a make-style dependency file for Make and Ninja")->type_name("FILE");
+    app.add_option("--variant", a.variants, "compile only this scene variant (repeatable)")->type_name("MATERIAL.PASS")->allow_extra_args(false);
+    app.add_flag("-q,--quiet", a.quiet, "print errors only");
+    app.set_version_flag("--version", std::string("hexc ") + version());
+    if (std::optional<int> done = parseWith(app, args)) return done;
+    if (materials.empty() || a.outDir.empty()) {
+        std::cerr << "hexc: " << (materials.empty() ? "no material or scene given" : "no output folder given: use -o DIR") << " (see hexc --help)\n";
+        return kUsage;
+    }
+    a.materials.assign(materials.begin(), materials.end());
+    applyNames(targets, glsl, msl, a.options);
+    return std::nullopt;
 }
 
 }  // namespace hexc::cli

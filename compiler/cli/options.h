@@ -1,10 +1,15 @@
 #pragma once
 // Command-line arguments of `hexc` (compile mode) -> CompileOptions and a list of materials.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "hexc/compiler.h"
+
+namespace CLI {
+class App;
+}
 
 namespace hexc::cli {
 
@@ -20,12 +25,17 @@ struct Arguments {
     bool quiet = false;
 };
 
-// Throws UsageError with a message naming the bad argument.
+// A command line that parses but does not make sense (render.cpp's checks across options); exit kUsage.
 struct UsageError {
     std::string message;
 };
-Arguments parseArguments(const std::vector<std::string>& args);
 
-extern const char* const kHelp;
+// Parses `args` (without the program and command names) with CLI11 into what `app`'s options are bound to.
+// Returns the exit code when the command is done: kOk after printing --help or --version, kUsage after printing
+// "hexc: <what is wrong>"; nullopt when the command should run.
+std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args);
+
+// `hexc`'s compile mode; nullopt with `out` filled when it should run, else the exit code (see parseWith).
+std::optional<int> parseArguments(const std::vector<std::string>& args, Arguments& out);
 
 }  // namespace hexc::cli

@@ -2,6 +2,9 @@
 
 #include <stb_easy_font.h>
 
+#include <CLI/CLI.hpp>
+
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -13,20 +16,9 @@
 
 namespace hexc::cli {
 
+namespace {
+
 const char* const kRenderHelp = R"(hexc render - render one output of a material on Vulkan (Mesa lavapipe)
-
-Usage:
-  hexc render MATERIAL.json -o IMAGE.{pfm,png} [options]
-
-Options:
-  --output WHAT      shaded (default: the material's template), albedo, normal, derivative or weights
-  --slot NAME        the slot albedo/normal/derivative/weights show (default: the slot named albedo or
-                     normal, else the first slot of a fitting kind; weights: the first slot)
-  --size WxH         image size in pixels (default 512x512)
-  --uv-rect U0,V0,U1,V1  the UV rectangle the image covers (default 0,0,1,1)
-  --target T         execute the emitted spirv (default), hlsl or glsl (re-compiled to SPIR-V by glslang)
-  --reference        write the fp64 CPU reference instead (albedo, normal, derivative, weights; no Vulkan
-                     needed): what the GPU image should be, up to texture filtering precision
 
 Pixel (i, j), row j = 0 at the top, shows the material at its centre
   uv = (U0 + (i + 0.5) / W * (U1 - U0),  V0 + (j + 0.5) / H * (V1 - V0))
@@ -40,15 +32,10 @@ clamps to [0, 1] and stores 8 bits without sRGB encoding.
 
 const char* const kPreviewHelp = R"(hexc preview - one labelled picture of a material: plain tiling, hex tiling, hex weights
 
-Usage:
-  hexc preview MATERIAL.json -o PREVIEW.png [--cell N]
-
 Three columns (plain tiling, hex tiling, the hex-tile weights of the first slot) at two distances:
 magnified (UV 0..0.5) and minified (UV 0..4, several texels per pixel, mip-mapped).
 Each cell is N x N pixels (default 256). Shaded with the material's template.
 )";
-
-namespace {
 
 std::vector<double> numbers(const std::string& text, char sep, size_t count, const std::string& option) {
     std::vector<double> out;
@@ -57,12 +44,12 @@ std::vector<double> numbers(const std::string& text, char sep, size_t count, con
         try {
             size_t used = 0;
             out.push_back(std::stod(item, &used));
-            if (used != item.size()) throw std::invalid_argument(item);
+            if (used != item.size() || !std::isfinite(out.back())) throw std::invalid_argument(item);  // nan, inf: no view
         } catch (const std::exception&) {
-            throw UsageError{option + " expects " + std::to_string(count) + " numbers, got `" + text + "`"};
+            throw UsageError{option + " expects " + std::to_string(count) + " finite numbers, got `" + text + "`"};
         }
     }
-    if (out.size() != count) throw UsageError{option + " expects " + std::to_string(count) + " numbers, got `" + text + "`"};
+    if (out.size() != count) throw UsageError{option + " expects " + std::to_string(count) + " finite numbers, got `" + text + "`"};
     return out;
 }
 
@@ -124,72 +111,88 @@ void drawLabel(Image& image, int x0, int y0, const std::string& text, int scale)
 
 }  // namespace
 
+namespace {
+
+struct RenderArguments {
+    std::string material, out, slot;
+    View view{512, 512, {0, 0, 1, 1}};
+    vk::RenderOutput output = vk::RenderOutput::Shaded;
+    vk::ExecutedTarget target = vk::ExecutedTarget::Spirv;
+    bool reference = false;
+};
+
+// `hexc render`'s command line; nullopt with `r` filled when it should run, else the exit code.
+std::optional<int> parseRender(const std::vector<std::string>& args, RenderArguments& r) {
+    static const std::map<std::string, vk::RenderOutput> outputs = {
+        {"shaded", vk::RenderOutput::Shaded}, {"albedo", vk::RenderOutput::Albedo}, {"normal", vk::RenderOutput::Normal},
+        {"derivative", vk::RenderOutput::Derivative}, {"weights", vk::RenderOutput::Weights}};
+    static const std::map<std::string, vk::ExecutedTarget> targets = {
+        {"spirv", vk::ExecutedTarget::Spirv}, {"hlsl", vk::ExecutedTarget::Hlsl}, {"glsl", vk::ExecutedTarget::Glsl}};
+    CLI::App app(kRenderHelp, "hexc render");
+    std::string size, uvRect, output = "shaded", target = "spirv";
+    app.add_option("material", r.material, "the material file")->type_name("MATERIAL.json");
+    app.add_option("-o,--out", r.out, "the image to write")->type_name("IMAGE.{pfm,png}");
+    app.add_option("--output", output, "what to show (default: shaded, with the material's template)")
+        ->check(CLI::IsMember({"shaded", "albedo", "normal", "derivative", "weights"}));
+    app.add_option("--slot", r.slot, "the slot albedo/normal/derivative/weights show (default: the slot\n"
+                                     "named albedo or normal, else the first of a fitting kind)")->type_name("NAME");
+    app.add_option("--size", size, "image size in pixels (default 512x512)")->type_name("WxH");
+    app.add_option("--uv-rect", uvRect, "the UV rectangle the image covers (default 0,0,1,1)")->type_name("U0,V0,U1,V1");
+    app.add_option("--target", target, "the emitted source executed (HLSL and GLSL re-compiled by glslang)")
+        ->check(CLI::IsMember({"spirv", "hlsl", "glsl"}));
+    app.add_flag("--reference", r.reference, "write the fp64 CPU reference instead (no Vulkan needed): what the\n"
+                                             "GPU image should be, up to texture filtering precision");
+    if (std::optional<int> done = parseWith(app, args)) return done;
+    r.output = outputs.at(output);
+    r.target = targets.at(target);
+    if (!size.empty()) {
+        auto wh = numbers(size, 'x', 2, "--size");
+        if (wh[0] < 1 || wh[1] < 1 || wh[0] > 8192 || wh[1] > 8192 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
+            throw UsageError{"--size expects WxH with whole numbers from 1 to 8192, got " + size};
+        r.view.width = int(wh[0]);
+        r.view.height = int(wh[1]);
+    }
+    if (!uvRect.empty()) {
+        auto u = numbers(uvRect, ',', 4, "--uv-rect");
+        r.view.uvRect = {u[0], u[1], u[2], u[3]};
+    }
+    if (r.material.empty()) throw UsageError{"no material given (see hexc render --help)"};
+    if (r.out.empty()) throw UsageError{"no output image given: use -o IMAGE.pfm or IMAGE.png"};
+    if (!r.slot.empty() && r.output == vk::RenderOutput::Shaded)
+        throw UsageError{"--slot picks the slot of --output albedo, normal, derivative or weights; shaded shows the whole material"};
+    if (r.reference && r.output == vk::RenderOutput::Shaded)
+        throw UsageError{"--reference covers the hex-tiled slots (albedo, normal, derivative, weights), not a template's shading"};
+    return std::nullopt;
+}
+
+// The fp64 reference image of the slot `r` shows, as the GPU would show it.
+Image referenceImage(const Material& material, const RenderArguments& r) {
+    const Slot& s = vk::slotForOutput(material, r.output, r.slot);
+    reference::SampledTexture texture(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb));
+    const reference::Heights heights(material, s);
+    Image image = reference::render(s, texture, r.view, r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
+                                    heights.source());
+    if (s.kind == SlotKind::Scalar)  // as the GPU shows it: (s, s, s, 1)
+        for (size_t i = 0; i < image.rgba.size(); i += 4) image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];
+    if (r.output == vk::RenderOutput::Normal) vk::derivativeToNormalMap(image);
+    return image;
+}
+
+}  // namespace
+
 int renderCommand(const std::vector<std::string>& args) {
     return guarded([&] {
-        std::string materialPath, out, slot;
-        View view{512, 512, {0, 0, 1, 1}};
-        vk::RenderOutput output = vk::RenderOutput::Shaded;
-        vk::ExecutedTarget target = vk::ExecutedTarget::Spirv;
-        bool useReference = false;
-        static const std::map<std::string, vk::RenderOutput> outputs = {
-            {"shaded", vk::RenderOutput::Shaded}, {"albedo", vk::RenderOutput::Albedo}, {"normal", vk::RenderOutput::Normal},
-            {"derivative", vk::RenderOutput::Derivative}, {"weights", vk::RenderOutput::Weights}};
-        static const std::map<std::string, vk::ExecutedTarget> targets = {
-            {"spirv", vk::ExecutedTarget::Spirv}, {"hlsl", vk::ExecutedTarget::Hlsl}, {"glsl", vk::ExecutedTarget::Glsl}};
-        for (size_t i = 0; i < args.size(); ++i) {
-            auto value = [&]() -> const std::string& {
-                if (i + 1 >= args.size()) throw UsageError{args[i] + " needs a value"};
-                return args[++i];
-            };
-            const std::string& a = args[i];
-            if (a == "-h" || a == "--help") return std::cout << kRenderHelp, int(kOk);
-            if (a == "-o" || a == "--out") out = value();
-            else if (a == "--slot") slot = value();
-            else if (a == "--size") {
-                auto wh = numbers(value(), 'x', 2, "--size");
-                if (wh[0] < 1 || wh[1] < 1 || wh[0] > 8192 || wh[1] > 8192 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
-                    throw UsageError{"--size expects WxH with whole numbers from 1 to 8192, got " + args[i]};
-                view.width = int(wh[0]);
-                view.height = int(wh[1]);
-            } else if (a == "--uv-rect") {
-                auto r = numbers(value(), ',', 4, "--uv-rect");
-                view.uvRect = {r[0], r[1], r[2], r[3]};
-            } else if (a == "--output") {
-                auto it = outputs.find(value());
-                if (it == outputs.end()) throw UsageError{"--output expects shaded, albedo, normal, derivative or weights, got " + args[i]};
-                output = it->second;
-            } else if (a == "--target") {
-                auto it = targets.find(value());
-                if (it == targets.end()) throw UsageError{"--target expects spirv, hlsl or glsl, got " + args[i]};
-                target = it->second;
-            } else if (a == "--reference") useReference = true;
-            else if (!a.empty() && a[0] == '-') throw UsageError{"unknown option " + a + " (see hexc render --help)"};
-            else if (materialPath.empty()) materialPath = a;
-            else throw UsageError{"hexc render takes one material, got a second: " + a};
-        }
-        if (materialPath.empty()) throw UsageError{"no material given (see hexc render --help)"};
-        if (out.empty()) throw UsageError{"no output image given: use -o IMAGE.pfm or IMAGE.png"};
-        if (!slot.empty() && output == vk::RenderOutput::Shaded)
-            throw UsageError{"--slot picks the slot of --output albedo, normal, derivative or weights; shaded shows the whole material"};
-        if (useReference && output == vk::RenderOutput::Shaded)
-            throw UsageError{"--reference covers the hex-tiled slots (albedo, normal, derivative, weights), not a template's shading"};
-        auto material = loadMaterial(materialPath);
+        RenderArguments r;
+        if (std::optional<int> done = parseRender(args, r)) return *done;
+        auto material = loadMaterial(r.material);
         if (!material) return int(kInvalidInput);
-        if (useReference) {
-            const Slot& s = vk::slotForOutput(*material, output, slot);
-            reference::SampledTexture texture(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb));
-            const reference::Heights heights(*material, s);
-            Image image = reference::render(s, texture, view, output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
-                                            heights.source());
-            if (s.kind == SlotKind::Scalar)  // as the GPU shows it: (s, s, s, 1)
-                for (size_t i = 0; i < image.rgba.size(); i += 4) image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];
-            if (output == vk::RenderOutput::Normal) vk::derivativeToNormalMap(image);
-            writeImage(image, out);
+        if (r.reference) {
+            writeImage(referenceImage(*material, r), r.out);
             return int(kOk);
         }
         auto runner = makeRunner();
         if (!runner) return int(kNoVulkan);
-        writeImage(vk::render(*runner, *material, output, slot, view, target), out);
+        writeImage(vk::render(*runner, *material, r.output, r.slot, r.view, r.target), r.out);
         return int(kOk);
     });
 }
@@ -198,22 +201,11 @@ int previewCommand(const std::vector<std::string>& args) {
     return guarded([&] {
         std::string materialPath, out;
         int cell = 256;
-        for (size_t i = 0; i < args.size(); ++i) {
-            const std::string& a = args[i];
-            auto value = [&]() -> const std::string& {
-                if (i + 1 >= args.size()) throw UsageError{a + " needs a value"};
-                return args[++i];
-            };
-            if (a == "-h" || a == "--help") return std::cout << kPreviewHelp, int(kOk);
-            if (a == "-o" || a == "--out") out = value();
-            else if (a == "--cell") {
-                double n = numbers(value(), ',', 1, "--cell")[0];
-                if (n < 32 || n > 2048 || n != int(n)) throw UsageError{"--cell expects a whole number from 32 to 2048"};
-                cell = int(n);
-            } else if (!a.empty() && a[0] == '-') throw UsageError{"unknown option " + a + " (see hexc preview --help)"};
-            else if (materialPath.empty()) materialPath = a;
-            else throw UsageError{"hexc preview takes one material, got a second: " + a};
-        }
+        CLI::App app(kPreviewHelp, "hexc preview");
+        app.add_option("material", materialPath, "the material file")->type_name("MATERIAL.json");
+        app.add_option("-o,--out", out, "the PNG to write")->type_name("PREVIEW.png");
+        app.add_option("--cell", cell, "each cell's size in pixels (default 256)")->check(CLI::Range(32, 2048))->type_name("N");
+        if (std::optional<int> done = parseWith(app, args)) return *done;
         if (materialPath.empty()) throw UsageError{"no material given (see hexc preview --help)"};
         if (out.empty()) throw UsageError{"no output image given: use -o PREVIEW.png"};
         auto material = loadMaterial(materialPath);

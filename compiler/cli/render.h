@@ -8,7 +8,4 @@ namespace hexc::cli {
 int renderCommand(const std::vector<std::string>& args);
 int previewCommand(const std::vector<std::string>& args);
 
-extern const char* const kRenderHelp;
-extern const char* const kPreviewHelp;
-
 }  // namespace hexc::cli
