@@ -434,11 +434,9 @@ void validate(const VulkanContext& ctx, const RenderRequest& req) {
 }
 
 // Picks the physical device and queue family, creates the device and the objects every render shares.
-std::unique_ptr<VulkanContext> openContext() {
-    auto ctx = std::make_unique<VulkanContext>();
-    Cleanup& cleanup = ctx->cleanup;
-
-    // Validation is opt-in and optional: it is not installed on most machines that run the tests.
+// The instance layers asked for: validation is opt-in (HEXC_VK_VALIDATION=1) and optional, as it is not installed
+// on most machines that run the tests.
+std::vector<const char*> instanceLayers() {
     std::vector<const char*> layers;
     const char* wantValidation = std::getenv("HEXC_VK_VALIDATION");
     if (wantValidation && std::string_view(wantValidation) == "1") {
@@ -454,7 +452,11 @@ std::unique_ptr<VulkanContext> openContext() {
             std::fprintf(stderr, "hexc: HEXC_VK_VALIDATION=1 but %s is not installed; running without it\n",
                          validation);
     }
+    return layers;
+}
 
+void createInstance(VulkanContext& ctx) {
+    const std::vector<const char*> layers = instanceLayers();
     VkApplicationInfo app{};
     app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
     app.pApplicationName = "hexc";
@@ -464,20 +466,22 @@ std::unique_ptr<VulkanContext> openContext() {
     instanceInfo.pApplicationInfo = &app;
     instanceInfo.enabledLayerCount = uint32_t(layers.size());
     instanceInfo.ppEnabledLayerNames = layers.data();
-    VK_CHECK(vkCreateInstance, &instanceInfo, nullptr, &ctx->instance);
-    cleanup.defer([instance = ctx->instance] { vkDestroyInstance(instance, nullptr); });
+    VK_CHECK(vkCreateInstance, &instanceInfo, nullptr, &ctx.instance);
+    ctx.cleanup.defer([instance = ctx.instance] { vkDestroyInstance(instance, nullptr); });
+}
 
+// Usable: a graphics queue and the two attachment formats. Among usable devices, a CPU one (lavapipe) wins.
+void pickDevice(VulkanContext& ctx) {
     uint32_t count = 0;
-    VK_CHECK(vkEnumeratePhysicalDevices, ctx->instance, &count, nullptr);
+    VK_CHECK(vkEnumeratePhysicalDevices, ctx.instance, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
-    VK_CHECK(vkEnumeratePhysicalDevices, ctx->instance, &count, devices.data());
-    // Usable: a graphics queue and the two attachment formats. Among usable devices, a CPU one (lavapipe) wins.
+    VK_CHECK(vkEnumeratePhysicalDevices, ctx.instance, &count, devices.data());
     bool found = false;
     for (VkPhysicalDevice pd : devices) {
         VkPhysicalDeviceProperties props;
         vkGetPhysicalDeviceProperties(pd, &props);
         if (found && !(props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
-                       ctx->properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU))
+                       ctx.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU))
             continue;
         VkFormatProperties color, depth;
         vkGetPhysicalDeviceFormatProperties(pd, kColorFormat, &color);
@@ -491,43 +495,46 @@ std::unique_ptr<VulkanContext> openContext() {
         vkGetPhysicalDeviceQueueFamilyProperties(pd, &familyCount, families.data());
         for (uint32_t i = 0; i < familyCount; ++i) {
             if (!(families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) continue;
-            ctx->physical = pd;
-            ctx->properties = props;
-            ctx->queueFamily = i;
-            ctx->timestampValidBits = families[i].timestampValidBits;
+            ctx.physical = pd;
+            ctx.properties = props;
+            ctx.queueFamily = i;
+            ctx.timestampValidBits = families[i].timestampValidBits;
             found = true;
             break;
         }
     }
     if (!found) throw VulkanError("no Vulkan device with a graphics queue and RGBA32F/D32 attachments");
-    vkGetPhysicalDeviceMemoryProperties(ctx->physical, &ctx->memory);
+}
 
+// The device, its queue, and the long-lived objects every render shares.
+void createDevice(VulkanContext& ctx) {
+    Cleanup& cleanup = ctx.cleanup;
     const float priority = 1;
     VkDeviceQueueCreateInfo queueInfo{};
     queueInfo.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
-    queueInfo.queueFamilyIndex = ctx->queueFamily;
+    queueInfo.queueFamilyIndex = ctx.queueFamily;
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
     VkDeviceCreateInfo deviceInfo{};
     deviceInfo.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     deviceInfo.queueCreateInfoCount = 1;
     deviceInfo.pQueueCreateInfos = &queueInfo;
-    VK_CHECK(vkCreateDevice, ctx->physical, &deviceInfo, nullptr, &ctx->device);
-    const VkDevice dev = ctx->device;
+    VK_CHECK(vkCreateDevice, ctx.physical, &deviceInfo, nullptr, &ctx.device);
+    const VkDevice dev = ctx.device;
     cleanup.defer([dev] { vkDestroyDevice(dev, nullptr); });
-    vkGetDeviceQueue(dev, ctx->queueFamily, 0, &ctx->queue);
+    vkGetDeviceQueue(dev, ctx.queueFamily, 0, &ctx.queue);
 
     VkCommandPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    poolInfo.queueFamilyIndex = ctx->queueFamily;
-    VK_CHECK(vkCreateCommandPool, dev, &poolInfo, nullptr, &ctx->commandPool);
-    cleanup.defer([dev, pool = ctx->commandPool] { vkDestroyCommandPool(dev, pool, nullptr); });
+    poolInfo.queueFamilyIndex = ctx.queueFamily;
+    VK_CHECK(vkCreateCommandPool, dev, &poolInfo, nullptr, &ctx.commandPool);
+    cleanup.defer([dev, pool = ctx.commandPool] { vkDestroyCommandPool(dev, pool, nullptr); });
 
     VkPipelineCacheCreateInfo cacheInfo{};
     cacheInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO;
-    VK_CHECK(vkCreatePipelineCache, dev, &cacheInfo, nullptr, &ctx->pipelineCache);
-    cleanup.defer([dev, cache = ctx->pipelineCache] { vkDestroyPipelineCache(dev, cache, nullptr); });
+    VK_CHECK(vkCreatePipelineCache, dev, &cacheInfo, nullptr, &ctx.pipelineCache);
+    cleanup.defer([dev, cache = ctx.pipelineCache] { vkDestroyPipelineCache(dev, cache, nullptr); });
 
     VkSamplerCreateInfo samplerInfo{};
     samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
@@ -541,13 +548,21 @@ std::unique_ptr<VulkanContext> openContext() {
     samplerInfo.anisotropyEnable = VK_FALSE;
     samplerInfo.minLod = 0;
     samplerInfo.maxLod = VK_LOD_CLAMP_NONE;
-    VK_CHECK(vkCreateSampler, dev, &samplerInfo, nullptr, &ctx->sampler);
-    cleanup.defer([dev, sampler = ctx->sampler] { vkDestroySampler(dev, sampler, nullptr); });
+    VK_CHECK(vkCreateSampler, dev, &samplerInfo, nullptr, &ctx.sampler);
+    cleanup.defer([dev, sampler = ctx.sampler] { vkDestroySampler(dev, sampler, nullptr); });
 
     VkFenceCreateInfo fenceInfo{};
     fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-    VK_CHECK(vkCreateFence, dev, &fenceInfo, nullptr, &ctx->fence);
-    cleanup.defer([dev, fence = ctx->fence] { vkDestroyFence(dev, fence, nullptr); });
+    VK_CHECK(vkCreateFence, dev, &fenceInfo, nullptr, &ctx.fence);
+    cleanup.defer([dev, fence = ctx.fence] { vkDestroyFence(dev, fence, nullptr); });
+}
+
+std::unique_ptr<VulkanContext> openContext() {
+    auto ctx = std::make_unique<VulkanContext>();
+    createInstance(*ctx);
+    pickDevice(*ctx);
+    vkGetPhysicalDeviceMemoryProperties(ctx->physical, &ctx->memory);
+    createDevice(*ctx);
     return ctx;
 }
 
@@ -568,19 +583,10 @@ std::unique_ptr<Runner> Runner::create(std::string* whyNot) {
 
 std::string Runner::deviceName() const { return ctx_->properties.deviceName; }
 
-RenderResult Runner::render(const RenderRequest& req) {
-    VulkanContext& ctx = *ctx_;
-    validate(ctx, req);
-    const VkDevice dev = ctx.device;
-    Cleanup cleanup;
-    // Declared after `cleanup`, so destroyed before it: if a submission fails, wait before destroying its objects.
-    struct WaitIdle {
-        VkDevice dev;
-        ~WaitIdle() { vkDeviceWaitIdle(dev); }
-    } waitIdle{dev};
-    const uint32_t width = uint32_t(req.width), height = uint32_t(req.height);
+namespace {
 
-    // Descriptor set 0 and the pipeline.
+// Descriptor set 0 as hexc lays it out: parameter block, sampler, then the textures.
+std::vector<VkDescriptorSetLayoutBinding> setBindings(const RenderRequest& req) {
     std::vector<VkDescriptorSetLayoutBinding> bindings(kFirstTextureBinding + req.textures.size());
     for (uint32_t i = 0; i < bindings.size(); ++i) {
         bindings[i].binding = i;
@@ -591,6 +597,13 @@ RenderResult Runner::render(const RenderRequest& req) {
         bindings[i].descriptorCount = 1;
         bindings[i].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
     }
+    return bindings;
+}
+
+// The set layout and the pipeline layout (set 0 plus the vertex shader's uv rectangle as a push constant).
+std::pair<VkDescriptorSetLayout, VkPipelineLayout> createLayouts(VulkanContext& ctx, const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+                                                                 Cleanup& cleanup) {
+    const VkDevice dev = ctx.device;
     VkDescriptorSetLayoutCreateInfo setLayoutInfo{};
     setLayoutInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
     setLayoutInfo.bindingCount = uint32_t(bindings.size());
@@ -599,7 +612,7 @@ RenderResult Runner::render(const RenderRequest& req) {
     VK_CHECK(vkCreateDescriptorSetLayout, dev, &setLayoutInfo, nullptr, &setLayout);
     cleanup.defer([dev, setLayout] { vkDestroyDescriptorSetLayout(dev, setLayout, nullptr); });
 
-    VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(req.uvRect)};
+    VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(RenderRequest::uvRect)};
     VkPipelineLayoutCreateInfo layoutInfo{};
     layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
     layoutInfo.setLayoutCount = 1;
@@ -609,15 +622,14 @@ RenderResult Runner::render(const RenderRequest& req) {
     VkPipelineLayout layout;
     VK_CHECK(vkCreatePipelineLayout, dev, &layoutInfo, nullptr, &layout);
     cleanup.defer([dev, layout] { vkDestroyPipelineLayout(dev, layout, nullptr); });
+    return {setLayout, layout};
+}
 
-    const VkRenderPass pass = createRenderPass(ctx, cleanup);
-    const VkPipeline pipeline = createPipeline(ctx, req, layout, pass, cleanup);
-
-    // Render target, depth and the read-back buffer.
-    const VkImage color = createImage(ctx, kColorFormat, width, height, 1,
-                                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, cleanup);
-    const VkImage depth =
-        createImage(ctx, kDepthFormat, width, height, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, cleanup);
+// The colour render target (also the copy source) and the framebuffer over it and a depth buffer.
+std::pair<VkImage, VkFramebuffer> createTarget(VulkanContext& ctx, VkRenderPass pass, uint32_t width, uint32_t height, Cleanup& cleanup) {
+    const VkDevice dev = ctx.device;
+    const VkImage color = createImage(ctx, kColorFormat, width, height, 1, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, cleanup);
+    const VkImage depth = createImage(ctx, kDepthFormat, width, height, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, cleanup);
     const VkImageView views[2] = {createView(ctx, color, kColorFormat, VK_IMAGE_ASPECT_COLOR_BIT, 1, cleanup),
                                   createView(ctx, depth, kDepthFormat, VK_IMAGE_ASPECT_DEPTH_BIT, 1, cleanup)};
     VkFramebufferCreateInfo fbInfo{};
@@ -631,29 +643,24 @@ RenderResult Runner::render(const RenderRequest& req) {
     VkFramebuffer framebuffer;
     VK_CHECK(vkCreateFramebuffer, dev, &fbInfo, nullptr, &framebuffer);
     cleanup.defer([dev, framebuffer] { vkDestroyFramebuffer(dev, framebuffer, nullptr); });
+    return {color, framebuffer};
+}
 
-    const VkDeviceSize imageBytes = VkDeviceSize(width) * height * 4 * sizeof(float);
-    const HostBuffer readback = createHostBuffer(ctx, imageBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, cleanup);
+// The parameter block: an empty block still gets a (zeroed) 16-byte buffer, so binding 0 is always valid.
+HostBuffer createUniforms(VulkanContext& ctx, const std::vector<uint8_t>& data, Cleanup& cleanup) {
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(16, (data.size() + 15) / 16 * 16);
+    const HostBuffer uniforms = createHostBuffer(ctx, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, cleanup);
+    std::memset(uniforms.mapped, 0, bytes);
+    if (!data.empty()) std::memcpy(uniforms.mapped, data.data(), data.size());
+    return uniforms;
+}
 
-    // Uniforms: an empty block still gets a (zeroed) 16-byte buffer, so binding 0 is always valid.
-    const VkDeviceSize uniformBytes = std::max<VkDeviceSize>(16, (req.uniformData.size() + 15) / 16 * 16);
-    const HostBuffer uniforms = createHostBuffer(ctx, uniformBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, cleanup);
-    std::memset(uniforms.mapped, 0, uniformBytes);
-    if (!req.uniformData.empty()) std::memcpy(uniforms.mapped, req.uniformData.data(), req.uniformData.size());
-
-    // The first command buffer uploads the textures, draws, and copies the image out.
-    const VkCommandBuffer first = allocateCommandBuffer(ctx, cleanup);
-    VkCommandBufferBeginInfo beginInfo{};
-    beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-    beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    VK_CHECK(vkBeginCommandBuffer, first, &beginInfo);
-    std::vector<VkImageView> textureViews;
-    for (const Texture* t : req.textures) textureViews.push_back(uploadTexture(ctx, first, *t, cleanup));
-
-    std::vector<VkDescriptorPoolSize> poolSizes = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                                   {VK_DESCRIPTOR_TYPE_SAMPLER, 1}};
-    if (!textureViews.empty())
-        poolSizes.push_back({bindings[kFirstTextureBinding].descriptorType, uint32_t(textureViews.size())});
+// Allocates set 0 from a pool of its own and points it at the uniforms, the sampler and the texture views.
+VkDescriptorSet createSet(VulkanContext& ctx, const std::vector<VkDescriptorSetLayoutBinding>& bindings, VkDescriptorSetLayout setLayout,
+                          VkBuffer uniforms, const std::vector<VkImageView>& textureViews, bool combined, Cleanup& cleanup) {
+    const VkDevice dev = ctx.device;
+    std::vector<VkDescriptorPoolSize> poolSizes = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_SAMPLER, 1}};
+    if (!textureViews.empty()) poolSizes.push_back({bindings[kFirstTextureBinding].descriptorType, uint32_t(textureViews.size())});
     VkDescriptorPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     poolInfo.maxSets = 1;
@@ -670,11 +677,11 @@ RenderResult Runner::render(const RenderRequest& req) {
     VkDescriptorSet set;
     VK_CHECK(vkAllocateDescriptorSets, dev, &setInfo, &set);
 
-    const VkDescriptorBufferInfo uniformInfo{uniforms.buffer, 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo uniformInfo{uniforms, 0, VK_WHOLE_SIZE};
     const VkDescriptorImageInfo samplerInfo{ctx.sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
     std::vector<VkDescriptorImageInfo> imageInfos;
     for (VkImageView view : textureViews)
-        imageInfos.push_back({req.combinedSamplers ? ctx.sampler : VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+        imageInfos.push_back({combined ? ctx.sampler : VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
     std::vector<VkWriteDescriptorSet> writes(bindings.size());
     for (uint32_t i = 0; i < writes.size(); ++i) {
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
@@ -687,40 +694,124 @@ RenderResult Runner::render(const RenderRequest& req) {
         else writes[i].pImageInfo = &imageInfos[i - kFirstTextureBinding];
     }
     vkUpdateDescriptorSets(dev, uint32_t(writes.size()), writes.data(), 0, nullptr);
+    return set;
+}
 
-    auto recordDraw = [&](VkCommandBuffer cb) {
-        VkClearValue clears[2]{};
-        clears[1].depthStencil = {1.0f, 0};
-        VkRenderPassBeginInfo passInfo{};
-        passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-        passInfo.renderPass = pass;
-        passInfo.framebuffer = framebuffer;
-        passInfo.renderArea = {{0, 0}, {width, height}};
-        passInfo.clearValueCount = 2;
-        passInfo.pClearValues = clears;
-        vkCmdBeginRenderPass(cb, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0, nullptr);
-        vkCmdPushConstants(cb, layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(req.uvRect), req.uvRect.data());
-        vkCmdDraw(cb, 3, 1, 0, 0);
-        vkCmdEndRenderPass(cb);
-    };
+// Everything one draw binds.
+struct Draw {
+    VkRenderPass pass;
+    VkFramebuffer framebuffer;
+    VkPipeline pipeline;
+    VkPipelineLayout layout;
+    VkDescriptorSet set;
+    uint32_t width, height;
+    std::array<float, 4> uvRect;
+};
 
-    recordDraw(first);
+void recordDraw(VkCommandBuffer cb, const Draw& d) {
+    VkClearValue clears[2]{};
+    clears[1].depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo passInfo{};
+    passInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+    passInfo.renderPass = d.pass;
+    passInfo.framebuffer = d.framebuffer;
+    passInfo.renderArea = {{0, 0}, {d.width, d.height}};
+    passInfo.clearValueCount = 2;
+    passInfo.pClearValues = clears;
+    vkCmdBeginRenderPass(cb, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, d.layout, 0, 1, &d.set, 0, nullptr);
+    vkCmdPushConstants(cb, d.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(d.uvRect), d.uvRect.data());
+    vkCmdDraw(cb, 3, 1, 0, 0);
+    vkCmdEndRenderPass(cb);
+}
+
+// Copies the rendered image into the host-visible read-back buffer, made visible to the host.
+void recordReadback(VkCommandBuffer cb, VkImage color, VkBuffer readback, uint32_t width, uint32_t height) {
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.imageExtent = {width, height, 1};
-    vkCmdCopyImageToBuffer(first, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &copy);
+    vkCmdCopyImageToBuffer(cb, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback, 1, &copy);
     VkBufferMemoryBarrier toHost{};
     toHost.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER;
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
     toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toHost.buffer = readback.buffer;
+    toHost.buffer = readback;
     toHost.size = VK_WHOLE_SIZE;
-    vkCmdPipelineBarrier(first, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost,
-                         0, nullptr);
+    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost, 0, nullptr);
+}
+
+// GPU time of `frames` draws, one submission each: one command buffer resets two timestamp queries, writes
+// one, draws, writes the other.
+std::vector<double> timeFrames(VulkanContext& ctx, const Draw& draw, int frames, Cleanup& cleanup) {
+    const VkDevice dev = ctx.device;
+    VkQueryPoolCreateInfo queryInfo{};
+    queryInfo.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
+    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    queryInfo.queryCount = 2;
+    VkQueryPool queries;
+    VK_CHECK(vkCreateQueryPool, dev, &queryInfo, nullptr, &queries);
+    cleanup.defer([dev, queries] { vkDestroyQueryPool(dev, queries, nullptr); });
+
+    const VkCommandBuffer timed = allocateCommandBuffer(ctx, cleanup);
+    VkCommandBufferBeginInfo beginInfo{};
+    beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;  // no one-time flag: submitted once per frame
+    VK_CHECK(vkBeginCommandBuffer, timed, &beginInfo);
+    vkCmdResetQueryPool(timed, queries, 0, 2);
+    vkCmdWriteTimestamp(timed, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
+    recordDraw(timed, draw);
+    vkCmdWriteTimestamp(timed, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
+    VK_CHECK(vkEndCommandBuffer, timed);
+
+    std::vector<double> ms;
+    const uint64_t mask = ctx.timestampValidBits >= 64 ? ~0ull : (1ull << ctx.timestampValidBits) - 1;
+    for (int frame = 0; frame < frames; ++frame) {
+        submitAndWait(ctx, timed);
+        uint64_t ticks[2];
+        VK_CHECK(vkGetQueryPoolResults, dev, queries, 0, 2, sizeof(ticks), ticks, sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
+        // Masked subtraction stays right if the counter wrapped between the two timestamps.
+        const uint64_t elapsed = (ticks[1] - ticks[0]) & mask;
+        ms.push_back(double(elapsed) * ctx.properties.limits.timestampPeriod * 1e-6);
+    }
+    return ms;
+}
+
+}  // namespace
+
+RenderResult Runner::render(const RenderRequest& req) {
+    VulkanContext& ctx = *ctx_;
+    validate(ctx, req);
+    Cleanup cleanup;
+    // Declared after `cleanup`, so destroyed before it: if a submission fails, wait before destroying its objects.
+    struct WaitIdle {
+        VkDevice dev;
+        ~WaitIdle() { vkDeviceWaitIdle(dev); }
+    } waitIdle{ctx.device};
+    const uint32_t width = uint32_t(req.width), height = uint32_t(req.height);
+
+    const std::vector<VkDescriptorSetLayoutBinding> bindings = setBindings(req);
+    const auto [setLayout, layout] = createLayouts(ctx, bindings, cleanup);
+    const VkRenderPass pass = createRenderPass(ctx, cleanup);
+    const VkPipeline pipeline = createPipeline(ctx, req, layout, pass, cleanup);
+    const auto [color, framebuffer] = createTarget(ctx, pass, width, height, cleanup);
+    const VkDeviceSize imageBytes = VkDeviceSize(width) * height * 4 * sizeof(float);
+    const HostBuffer readback = createHostBuffer(ctx, imageBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, cleanup);
+    const HostBuffer uniforms = createUniforms(ctx, req.uniformData, cleanup);
+
+    // The first command buffer uploads the textures, draws, and copies the image out.
+    const VkCommandBuffer first = allocateCommandBuffer(ctx, cleanup);
+    VkCommandBufferBeginInfo beginInfo{};
+    beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer, first, &beginInfo);
+    std::vector<VkImageView> textureViews;
+    for (const Texture* t : req.textures) textureViews.push_back(uploadTexture(ctx, first, *t, cleanup));
+    const VkDescriptorSet set = createSet(ctx, bindings, setLayout, uniforms.buffer, textureViews, req.combinedSamplers, cleanup);
+    const Draw draw{pass, framebuffer, pipeline, layout, set, width, height, req.uvRect};
+    recordDraw(first, draw);
+    recordReadback(first, color, readback.buffer, width, height);
     VK_CHECK(vkEndCommandBuffer, first);
     submitAndWait(ctx, first);
 
@@ -729,37 +820,7 @@ RenderResult Runner::render(const RenderRequest& req) {
     result.image.height = req.height;
     result.image.rgba.resize(size_t(width) * height * 4);
     std::memcpy(result.image.rgba.data(), readback.mapped, imageBytes);  // rows top first, tightly packed
-
-    if (req.timedFrames > 0) {
-        // One command buffer, submitted once per frame: reset the two queries, timestamp, draw, timestamp.
-        VkQueryPoolCreateInfo queryInfo{};
-        queryInfo.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
-        queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        queryInfo.queryCount = 2;
-        VkQueryPool queries;
-        VK_CHECK(vkCreateQueryPool, dev, &queryInfo, nullptr, &queries);
-        cleanup.defer([dev, queries] { vkDestroyQueryPool(dev, queries, nullptr); });
-
-        const VkCommandBuffer timed = allocateCommandBuffer(ctx, cleanup);
-        beginInfo.flags = 0;  // submitted several times
-        VK_CHECK(vkBeginCommandBuffer, timed, &beginInfo);
-        vkCmdResetQueryPool(timed, queries, 0, 2);
-        vkCmdWriteTimestamp(timed, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
-        recordDraw(timed);
-        vkCmdWriteTimestamp(timed, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
-        VK_CHECK(vkEndCommandBuffer, timed);
-
-        const uint64_t mask = ctx.timestampValidBits >= 64 ? ~0ull : (1ull << ctx.timestampValidBits) - 1;
-        for (int frame = 0; frame < req.timedFrames; ++frame) {
-            submitAndWait(ctx, timed);
-            uint64_t ticks[2];
-            VK_CHECK(vkGetQueryPoolResults, dev, queries, 0, 2, sizeof(ticks), ticks, sizeof(uint64_t),
-                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
-            // Masked subtraction stays right if the counter wrapped between the two timestamps.
-            const uint64_t elapsed = (ticks[1] - ticks[0]) & mask;
-            result.frameMs.push_back(double(elapsed) * ctx.properties.limits.timestampPeriod * 1e-6);
-        }
-    }
+    if (req.timedFrames > 0) result.frameMs = timeFrames(ctx, draw, req.timedFrames, cleanup);
     return result;
 }
 
