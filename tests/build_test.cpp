@@ -76,7 +76,7 @@ TEST(Scene, DiagnosticsAreLocated) {
     fs::path dir = copyOfMaterials("hexc_scene_bad");
     std::ofstream(dir / "scenes" / "bad.json") << R"({
   "scene": "bad",
-  "materials": ["../rock.json"],
+  "materials": ["../rock.json", ""],
   "passes": [
     { "name": "main", "materials": ["rocks"] },
     { "name": "main", "colour": 1 }
@@ -87,6 +87,7 @@ TEST(Scene, DiagnosticsAreLocated) {
     std::vector<std::string> got;
     for (const auto& d : r.diagnostics) got.push_back(d.format().substr(d.format().find("bad.json:")));
     EXPECT_EQ(got, (std::vector<std::string>{
+                       "bad.json:3:33: error[HX100]: /materials/1: an empty path names no material file",
                        "bad.json:5:37: error[HX113]: /passes/0/materials/0: no material named `rocks` in the scene (did you mean `rock`?)",
                        "bad.json:6:23: error[HX103]: /passes/1/colour: unknown key `colour`; expected `name`, `template`, `slots` or `materials`",
                        "bad.json:6:15: error[HX109]: /passes/1/name: duplicate pass name \"main\"",

@@ -116,7 +116,6 @@ public:
         Scene scene;
         scene.sourceFile = file_;
         static const std::vector<std::string> kSceneKeys = {"$schema", "scene", "materials", "passes"};
-        static const std::vector<std::string> kPassKeys = {"name", "template", "slots", "materials"};
         if (!doc.is_object()) {
             report(Code::WrongType, "", "expected a scene object, got " + typeName(doc));
             return scene;
@@ -125,68 +124,68 @@ public:
         scene.name = string(doc["scene"], "/scene");
         if (doc["scene"].is_string() && !isFileName(scene.name))
             report(Code::InvalidName, "/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
-        if (requireKey(doc, "", "materials", "an array of material files")) {
-            const json& list = doc["materials"];
-            if (!list.is_array() || list.empty())
-                report(list.is_array() ? Code::WrongCount : Code::WrongType, "/materials", "expected a non-empty array of material file paths");
-            for (size_t i = 0; list.is_array() && i < list.size(); ++i) {
-                std::string p = pointerAppend("/materials", i);
-                std::string path = string(list[i], p);
-                if (path.empty()) continue;
-                ParseResult r = parseMaterialFile(dir_ / path);
-                diags.insert(diags.end(), r.diagnostics.begin(), r.diagnostics.end());
-                if (!r.material) {
-                    report(Code::InvalidSceneMaterial, p, "material " + (dir_ / path).string() + " is invalid (see above)");
-                    continue;
-                }
-                for (const Material& other : scene.materials)
-                    if (other.name == r.material->name) report(Code::DuplicateName, p, "two materials are named `" + other.name + "`; variant files would collide");
-                scene.materials.push_back(std::move(*r.material));
-            }
-        }
+        if (requireKey(doc, "", "materials", "an array of material files")) sceneMaterials(doc["materials"], scene);
         if (requireKey(doc, "", "passes", "an array of passes")) {
             const json& passes = doc["passes"];
             if (!passes.is_array() || passes.empty())
                 report(passes.is_array() ? Code::WrongCount : Code::WrongType, "/passes", "expected a non-empty array of passes");
-            for (size_t i = 0; passes.is_array() && i < passes.size(); ++i) {
-                std::string p = pointerAppend("/passes", i);
-                const json& v = passes[i];
-                if (!v.is_object()) {
-                    report(Code::WrongType, p, "expected a pass object, got " + typeName(v));
-                    continue;
-                }
-                checkKeys(v, p, kPassKeys);
-                ScenePass pass;
-                if (requireKey(v, p, "name", "a string")) {
-                    pass.name = string(v["name"], p + "/name");
-                    if (v["name"].is_string() && !isFileName(pass.name))
-                        report(Code::InvalidName, p + "/name", "expected 1-64 letters, digits, `_` or `-`, got \"" + pass.name + "\"");
-                    for (const ScenePass& other : scene.passes)
-                        if (other.name == pass.name) report(Code::DuplicateName, p + "/name", "duplicate pass name \"" + pass.name + "\"");
-                }
-                if (v.contains("template")) pass.templateName = templateRef(v["template"], p + "/template");
-                pass.slots = names(v, p, "slots");
-                pass.materials = names(v, p, "materials");
-                if (pass.materials)
-                    for (size_t j = 0; j < pass.materials->size(); ++j) {
-                        const std::string& name = (*pass.materials)[j];
-                        bool known = false;
-                        for (const Material& m : scene.materials) known |= m.name == name;
-                        if (!known) {
-                            std::vector<std::string> all;
-                            for (const Material& m : scene.materials) all.push_back(m.name);
-                            std::string hint;
-                            if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
-                            report(Code::UnknownReference, pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
-                        }
-                    }
-                scene.passes.push_back(std::move(pass));
-            }
+            for (size_t i = 0; passes.is_array() && i < passes.size(); ++i) scenePass(passes[i], pointerAppend("/passes", i), scene);
         }
         return scene;
     }
 
 private:
+    // The scene's materials, each parsed (paths relative to the scene file) with its own diagnostics first.
+    void sceneMaterials(const json& list, Scene& scene) {
+        if (!list.is_array() || list.empty())
+            report(list.is_array() ? Code::WrongCount : Code::WrongType, "/materials", "expected a non-empty array of material file paths");
+        for (size_t i = 0; list.is_array() && i < list.size(); ++i) {
+            std::string p = pointerAppend("/materials", i);
+            std::string path = string(list[i], p);
+            if (list[i].is_string() && path.empty()) report(Code::InputUnreadable, p, "an empty path names no material file");
+            if (path.empty()) continue;
+            ParseResult r = parseMaterialFile(dir_ / path);
+            diags.insert(diags.end(), r.diagnostics.begin(), r.diagnostics.end());
+            if (!r.material) {
+                report(Code::InvalidSceneMaterial, p, "material " + (dir_ / path).string() + " is invalid (see above)");
+                continue;
+            }
+            for (const Material& other : scene.materials)
+                if (other.name == r.material->name) report(Code::DuplicateName, p, "two materials are named `" + other.name + "`; variant files would collide");
+            scene.materials.push_back(std::move(*r.material));
+        }
+    }
+
+    void scenePass(const json& v, const std::string& p, Scene& scene) {
+        static const std::vector<std::string> kPassKeys = {"name", "template", "slots", "materials"};
+        if (!v.is_object()) {
+            report(Code::WrongType, p, "expected a pass object, got " + typeName(v));
+            return;
+        }
+        checkKeys(v, p, kPassKeys);
+        ScenePass pass;
+        if (requireKey(v, p, "name", "a string")) {
+            pass.name = string(v["name"], p + "/name");
+            if (v["name"].is_string() && !isFileName(pass.name))
+                report(Code::InvalidName, p + "/name", "expected 1-64 letters, digits, `_` or `-`, got \"" + pass.name + "\"");
+            for (const ScenePass& other : scene.passes)
+                if (other.name == pass.name) report(Code::DuplicateName, p + "/name", "duplicate pass name \"" + pass.name + "\"");
+        }
+        if (v.contains("template")) pass.templateName = templateRef(v["template"], p + "/template");
+        pass.slots = names(v, p, "slots");
+        pass.materials = names(v, p, "materials");
+        std::vector<std::string> all;
+        for (const Material& m : scene.materials) all.push_back(m.name);
+        for (size_t j = 0; pass.materials && j < pass.materials->size(); ++j) {
+            const std::string& name = (*pass.materials)[j];
+            if (std::find(all.begin(), all.end(), name) != all.end()) continue;
+            std::string hint;
+            if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
+            report(Code::UnknownReference, pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
+        }
+        scene.passes.push_back(std::move(pass));
+    }
+
     // An optional array of names under `key`.
     std::optional<std::vector<std::string>> names(const json& obj, const std::string& pointer, const std::string& key) {
         if (!obj.contains(key)) return std::nullopt;
@@ -441,23 +440,8 @@ private:
             }
         }
         if (v.contains("hextiling")) hexSettings(v["hextiling"], pointer + "/hextiling", s.hex);
-        // Checked on the merged settings: the paper's lattice has no exact period to split at, and its tile
-        // transforms are Listings 2 and 6 exactly.
         std::string at = v.contains("hextiling") ? pointer + "/hextiling" : pointer;
-        if (s.hex.splitCoordinates && s.hex.mode == HashMode::Paper)
-            report(Code::ConflictingSettings, at, "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
-        if (s.hex.hasTransforms() && s.hex.mode == HashMode::Paper)
-            report(Code::ConflictingSettings, at, "per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode `stable`; "
-                      "mode `paper` is exactly the paper's Listings 2 and 6");
-        if (s.hex.mask != Mask::Hex && s.hex.mode == HashMode::Paper)
-            report(Code::ConflictingSettings, at, "mask `" + std::string(toString(s.hex.mask)) + "` needs mode `stable`; the paper defines only the hex lattice");
-        if (s.hex.taps > 1 && s.hex.taps != s.hex.maskTaps())
-            report(Code::ConflictingSettings, at, "`taps` " + std::to_string(s.hex.taps) + " does not fit mask `" + std::string(toString(s.hex.mask)) + "`, which has " +
-                          std::to_string(s.hex.maskTaps()) + " taps; expected " + std::to_string(s.hex.maskTaps()) + " or 1 (one dithered fetch)");
-        if (s.hex.splitCoordinates && (s.hex.mask == Mask::Noise || s.hex.mask == Mask::Noise3))
-            report(Code::ConflictingSettings, at, "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
-        if (s.hex.splitCoordinates && s.hex.projection == Projection::Triplanar)
-            report(Code::ConflictingSettings, at, "`split_coordinates` does not work with the triplanar projection: it reads world positions, not uv");
+        settingRules(s.hex, at);
         if (!s.hex.splitCoordinates) rangeWarning(s.hex, at);
         if (v.contains("height_blend")) heightBlend(v["height_blend"], pointer + "/height_blend", s);
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
@@ -465,6 +449,26 @@ private:
             if (v["texture"].is_string()) texture(s, pointer + "/texture");
         }
         return s;
+    }
+
+    // Rules across a slot's merged hex-tiling settings, reported at `at`.
+    void settingRules(const HexTiling& hex, const std::string& at) {
+        // Checked on the merged settings: the paper's lattice has no exact period to split at, and its tile
+        // transforms are Listings 2 and 6 exactly.
+        if (hex.splitCoordinates && hex.mode == HashMode::Paper)
+            report(Code::ConflictingSettings, at, "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
+        if (hex.hasTransforms() && hex.mode == HashMode::Paper)
+            report(Code::ConflictingSettings, at, "per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode `stable`; "
+                      "mode `paper` is exactly the paper's Listings 2 and 6");
+        if (hex.mask != Mask::Hex && hex.mode == HashMode::Paper)
+            report(Code::ConflictingSettings, at, "mask `" + std::string(toString(hex.mask)) + "` needs mode `stable`; the paper defines only the hex lattice");
+        if (hex.taps > 1 && hex.taps != hex.maskTaps())
+            report(Code::ConflictingSettings, at, "`taps` " + std::to_string(hex.taps) + " does not fit mask `" + std::string(toString(hex.mask)) + "`, which has " +
+                          std::to_string(hex.maskTaps()) + " taps; expected " + std::to_string(hex.maskTaps()) + " or 1 (one dithered fetch)");
+        if (hex.splitCoordinates && (hex.mask == Mask::Noise || hex.mask == Mask::Noise3))
+            report(Code::ConflictingSettings, at, "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
+        if (hex.splitCoordinates && hex.projection == Projection::Triplanar)
+            report(Code::ConflictingSettings, at, "`split_coordinates` does not work with the triplanar projection: it reads world positions, not uv");
     }
 
     // Stable mode is exact while st = uv * tiling stays within its reduction's range (docs/precision.md): |st.x| < 2^26
