@@ -133,12 +133,11 @@ void BatchExternalTools(benchmark::State& state) {
         for (const auto& [frag, glsl] : sources) {
             std::ofstream(frag, std::ios::binary) << glsl;
             const std::string stem = (dir / frag.stem()).string();
-            const std::string chain =
-                "glslangValidator -V --target-env vulkan1.0 -o " + stem + ".spv " + frag.string() + " >/dev/null" +
-                " && spirv-opt -O " + stem + ".spv -o " + stem + ".opt.spv" +
-                " && spirv-cross " + stem + ".opt.spv --hlsl --shader-model 50 --output " + stem + ".hlsl" +
-                " && spirv-cross " + stem + ".opt.spv --version 450 --output " + stem + ".glsl" +
-                " && spirv-cross " + stem + ".opt.spv --msl --output " + stem + ".metal";
+            const std::string chain = "glslangValidator -V --target-env vulkan1.0 -o " + stem + ".spv " + frag.string() + " >/dev/null" +
+                                      " && spirv-opt -O " + stem + ".spv -o " + stem + ".opt.spv" + " && spirv-cross " + stem +
+                                      ".opt.spv --hlsl --shader-model 50 --output " + stem + ".hlsl" + " && spirv-cross " + stem +
+                                      ".opt.spv --version 450 --output " + stem + ".glsl" + " && spirv-cross " + stem +
+                                      ".opt.spv --msl --output " + stem + ".metal";
             if (const int status = std::system(chain.c_str()); status != 0) {
                 state.SkipWithError(("external chain failed with status " + std::to_string(status) + ": " + chain).c_str());
                 break;
@@ -192,22 +191,32 @@ std::string fixed(double v, int decimals) {
 }
 
 void report(const Recorder& r, const fs::path& dir, const std::string& machine) {
-    const char* const stageNames[] = {"Parse", "Plan", "Codegen", "Glslang", "SpirvOpt", "EmitSpirv", "EmitHlsl", "EmitGlsl", "EmitMsl", "Manifest"};
-    std::string md = "Machine: " + machine + ". Wall-clock time per call, Google Benchmark, median of 3 repetitions in random order.\n\n| stage (materials/rock.json) | ms | share of the stages |\n|---|---|---|\n", csv = "benchmark,ms_per_iteration\n";
+    const char* const stageNames[] = {"Parse",     "Plan",     "Codegen",  "Glslang", "SpirvOpt",
+                                      "EmitSpirv", "EmitHlsl", "EmitGlsl", "EmitMsl", "Manifest"};
+    std::string md = "Machine: " + machine +
+                     ". Wall-clock time per call, Google Benchmark, median of 3 repetitions in random order.\n\n| stage "
+                     "(materials/rock.json) | ms | share of the stages |\n|---|---|---|\n",
+                csv = "benchmark,ms_per_iteration\n";
     double sum = 0;
     for (const char* name : stageNames) sum += r.get(name);
-    for (const char* name : stageNames) md += "| " + std::string(name) + " | " + fixed(r.get(name), 3) + " | " + fixed(r.get(name) / sum * 100, 0) + "% |\n";
-    md += "| sum of the stages | " + fixed(sum, 3) + " | |\n| whole compile, four targets (CompileAllTargets) | " + fixed(r.get("CompileAllTargets"), 3) + " | |\n";
+    for (const char* name : stageNames)
+        md += "| " + std::string(name) + " | " + fixed(r.get(name), 3) + " | " + fixed(r.get(name) / sum * 100, 0) + "% |\n";
+    md += "| sum of the stages | " + fixed(sum, 3) + " | |\n| whole compile, four targets (CompileAllTargets) | " +
+          fixed(r.get("CompileAllTargets"), 3) + " | |\n";
     for (const auto& [name, ms] : r.ms) csv += name + "," + fixed(ms, 4) + "\n";
 
     const double inProcess = r.get("BatchInProcess"), external = r.get("BatchExternalTools"), speedup = external / inProcess;
     const std::string batch = std::to_string(kBatch.size()) + " example materials";
     md += "\n| batch of " + batch + " | ms per batch | materials/s |\n|---|---|---|\n";
-    md += "| in process (read, parse, compile to four targets) | " + fixed(inProcess, 1) + " | " + fixed(kBatch.size() / inProcess * 1000, 1) + " |\n";
+    md += "| in process (read, parse, compile to four targets) | " + fixed(inProcess, 1) + " | " +
+          fixed(kBatch.size() / inProcess * 1000, 1) + " |\n";
     md += "| external tools (glslangValidator, spirv-opt, spirv-cross x3 per material) | " + fixed(external, 1) + " | " +
           fixed(kBatch.size() / external * 1000, 1) + " |\n";
-    const std::string verdict = "in process is " + fixed(speedup, 1) + "x faster than the external chain; target >= " + fixed(kTargetSpeedup, 0) +
-                                "x: " + (std::isnan(speedup) ? "not measured" : speedup >= kTargetSpeedup ? "MET" : "NOT MET");
+    const std::string verdict = "in process is " + fixed(speedup, 1) +
+                                "x faster than the external chain; target >= " + fixed(kTargetSpeedup, 0) + "x: " +
+                                (std::isnan(speedup)         ? "not measured"
+                                 : speedup >= kTargetSpeedup ? "MET"
+                                                             : "NOT MET");
     md += "\n- " + verdict + "\n";
     for (const auto& [name, error] : r.errors) md += "- " + name + " failed: " + error + "\n";
 
@@ -222,7 +231,8 @@ void report(const Recorder& r, const fs::path& dir, const std::string& machine) 
 int main(int argc, char** argv) {
     // Defaults that the user's own --benchmark_* flags override (the last one given wins): three repetitions in
     // random order, so that load from elsewhere on the machine spreads over all benchmarks; reported: the median.
-    std::string defaults[] = {"--benchmark_repetitions=3", "--benchmark_enable_random_interleaving=true", "--benchmark_display_aggregates_only=true"};
+    std::string defaults[] = {"--benchmark_repetitions=3", "--benchmark_enable_random_interleaving=true",
+                              "--benchmark_display_aggregates_only=true"};
     std::vector<char*> args{argv[0]};
     for (std::string& flag : defaults) args.push_back(flag.data());
     args.insert(args.end(), argv + 1, argv + argc);

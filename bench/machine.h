@@ -24,7 +24,8 @@ inline std::string loadAverage() {
 }
 
 inline std::string cpuSummary() {
-    return strf("%s, %u cores, load average %s at the start", cpuModel().c_str(), std::thread::hardware_concurrency(), loadAverage().c_str());
+    return strf("%s, %u cores, load average %s at the start", cpuModel().c_str(), std::thread::hardware_concurrency(),
+                loadAverage().c_str());
 }
 
 }  // namespace hexc::bench

@@ -29,8 +29,8 @@ Contrast contrast(const std::vector<double>& rendered, const std::vector<double>
 // Per-pixel work of a shader without loops (spirv-opt inlines everything into main): every instruction
 // executes at most once. Counts come from hexc::disassemble's text.
 struct ShaderOps {
-    int instructions = 0;                // inside function bodies
-    int textureSamples = 0;              // OpImageSample*, OpImageFetch, OpImageGather
+    int instructions = 0;                 // inside function bodies
+    int textureSamples = 0;               // OpImageSample*, OpImageFetch, OpImageGather
     std::map<std::string, int> extended;  // GLSL.std.450 instruction (e.g. "Pow") -> scalar operations
 };
 ShaderOps countOps(const std::string& disassembly);

@@ -40,9 +40,8 @@ constexpr double kLabelHeight = 11;
 // one line further down or up each time, until it overlaps no label placed before it.
 Box placeLabel(double pointX, double pointY, const std::string& label, std::vector<Box>& placed) {
     auto overlaps = [&](const Box& a) {
-        return std::any_of(placed.begin(), placed.end(), [&](const Box& b) {
-            return a.x < b.x + b.width && b.x < a.x + a.width && std::abs(a.y - b.y) < kLabelHeight;
-        });
+        return std::any_of(placed.begin(), placed.end(),
+                           [&](const Box& b) { return a.x < b.x + b.width && b.x < a.x + a.width && std::abs(a.y - b.y) < kLabelHeight; });
     };
     const double width = 6.0 * double(label.size());
     Box box{pointX + 6, pointY - 5, width};
@@ -77,7 +76,9 @@ std::string scatterSvg(const std::string& title, const std::string& xLabel, cons
     auto px = [&](double x) { return kLeft + x / xMax * (kRight - kLeft); };
     auto py = [&](double y) { return kBottom - (std::log10(y) - decadeLo) / (decadeHi - decadeLo) * (kBottom - kTop); };
 
-    std::string svg = strf("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" font-family=\"sans-serif\" font-size=\"12\">\n", kWidth, kHeight);
+    std::string svg =
+        strf("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" font-family=\"sans-serif\" font-size=\"12\">\n", kWidth,
+             kHeight);
     svg += strf("<rect width=\"%g\" height=\"%g\" fill=\"white\"/>\n", kWidth, kHeight);
     svg += text(kLeft, 22, title, "font-size=\"15\" font-weight=\"bold\"");
     // Axes, grid and ticks.
@@ -86,14 +87,17 @@ std::string scatterSvg(const std::string& title, const std::string& xLabel, cons
         svg += text(px(x), kBottom + 16, strf("%g", x), "text-anchor=\"middle\"");
     }
     for (int d = decadeLo; d <= decadeHi; ++d) {
-        svg += strf("<line x1=\"%g\" y1=\"%.1f\" x2=\"%g\" y2=\"%.1f\" stroke=\"#ddd\"/>\n", kLeft, py(std::pow(10, d)), kRight, py(std::pow(10, d)));
+        svg += strf("<line x1=\"%g\" y1=\"%.1f\" x2=\"%g\" y2=\"%.1f\" stroke=\"#ddd\"/>\n", kLeft, py(std::pow(10, d)), kRight,
+                    py(std::pow(10, d)));
         svg += text(kLeft - 6, py(std::pow(10, d)) + 4, strf("1e%d", d), "text-anchor=\"end\"");
     }
     for (const XMarker& m : markers) {
-        svg += strf("<line x1=\"%.1f\" y1=\"%g\" x2=\"%.1f\" y2=\"%g\" stroke=\"#888\" stroke-dasharray=\"2 3\"/>\n", px(m.x), kTop, px(m.x), kBottom);
+        svg += strf("<line x1=\"%.1f\" y1=\"%g\" x2=\"%.1f\" y2=\"%g\" stroke=\"#888\" stroke-dasharray=\"2 3\"/>\n", px(m.x), kTop,
+                    px(m.x), kBottom);
         svg += text(px(m.x) + 4, kTop + 12, m.label, "font-size=\"10\" fill=\"#666\"");
     }
-    svg += strf("<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"black\"/>\n", kLeft, kTop, kRight - kLeft, kBottom - kTop);
+    svg += strf("<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"black\"/>\n", kLeft, kTop, kRight - kLeft,
+                kBottom - kTop);
     svg += text((kLeft + kRight) / 2, kBottom + 40, xLabel, "text-anchor=\"middle\"");
     svg += text(18, (kTop + kBottom) / 2, yLabel, strf("text-anchor=\"middle\" transform=\"rotate(-90 18 %g)\"", (kTop + kBottom) / 2));
 
@@ -113,10 +117,12 @@ std::string scatterSvg(const std::string& title, const std::string& xLabel, cons
                 best = p.y;
                 front += strf("%.1f,%.1f ", px(p.x), py(p.y));
             }
-        svg += strf("<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\"/>\n", front.c_str(), colour);
+        svg += strf("<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\"/>\n", front.c_str(),
+                    colour);
         for (const PlotPoint& p : shown) {
             if (p.series != s) continue;
-            svg += strf("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" stroke=\"%s\" fill=\"%s\"/>\n", px(p.x), py(p.y), colour, p.onFront ? colour : "white");
+            svg += strf("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" stroke=\"%s\" fill=\"%s\"/>\n", px(p.x), py(p.y), colour,
+                        p.onFront ? colour : "white");
             const Box label = placeLabel(px(p.x), py(p.y), p.label, labels);
             svg += text(label.x, label.y, p.label, strf("font-size=\"10\" fill=\"%s\"", colour));
         }
@@ -125,7 +131,8 @@ std::string scatterSvg(const std::string& title, const std::string& xLabel, cons
         svg += strf("<circle cx=\"%g\" cy=\"%g\" r=\"4\" fill=\"%s\"/>\n", kRight + 20, ly - 4, colour);
         svg += text(kRight + 30, ly, seriesNames[s] + " (dashed: Pareto front)");
     }
-    for (size_t i = 0; i < notes.size(); ++i) svg += text(kRight + 14, kTop + 30 + 20 * double(seriesNames.size() + i), notes[i], "font-size=\"11\"");
+    for (size_t i = 0; i < notes.size(); ++i)
+        svg += text(kRight + 14, kTop + 30 + 20 * double(seriesNames.size() + i), notes[i], "font-size=\"11\"");
     return svg + "</svg>\n";
 }
 

@@ -8,7 +8,7 @@ namespace hexc::bench {
 
 struct PlotPoint {
     std::string label;
-    size_t series = 0;   // index into the series names; one colour each
+    size_t series = 0;    // index into the series names; one colour each
     double x = 0, y = 0;  // points with a non-finite x or y, or y <= 0, are left out (a log axis cannot show them)
     bool onFront = true;  // may be part of the Pareto front; drawn hollow when false
 };

@@ -53,9 +53,9 @@ constexpr double kTargetRatio = 3.0;  // full-quality 3-slot material against pl
 struct Method {
     std::string name;
     json hextiling;
-    CompileOptions compile = {};  // how hexc compiles it: specialised and with a shared lattice by default
+    CompileOptions compile = {};            // how hexc compiles it: specialised and with a shared lattice by default
     json colourAndNormal = json::object();  // slot keys added to the albedo and normal slots (height_blend)
-    std::string templ = "lit";    // a path (from the source root) for a bench template
+    std::string templ = "lit";              // a path (from the source root) for a bench template
 };
 
 json with(json settings, const json& more) {
@@ -100,7 +100,11 @@ const std::vector<Method>& methods() {
         // shows. The oblique template gives every pixel a normal that weighs all three planes (its error is not
         // comparable and not measured).
         {"triplanar-face-on", with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}})},
-        {"triplanar-3-planes", with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}}), {}, json::object(), "bench/triplanar-oblique.glsl"},
+        {"triplanar-3-planes",
+         with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}}),
+         {},
+         json::object(),
+         "bench/triplanar-oblique.glsl"},
     };
     return table;
 }
@@ -146,8 +150,8 @@ const std::vector<OpCost> kOpCosts = {
 };
 
 // Shown in the op-count table: the GLSL.std.450 instructions that cost more than a multiply on a CPU.
-const std::vector<std::string> kTranscendentals = {"Pow", "Exp", "Exp2", "Log", "Log2", "Sin", "Cos", "Tan", "Atan",
-                                                   "Sqrt", "InverseSqrt", "Normalize", "Length", "Distance"};
+const std::vector<std::string> kTranscendentals = {"Pow", "Exp",  "Exp2", "Log",         "Log2",      "Sin",    "Cos",
+                                                   "Tan", "Atan", "Sqrt", "InverseSqrt", "Normalize", "Length", "Distance"};
 
 // A shader timed on one view. Timings interleave: each round times every shader once, so a burst of load from
 // elsewhere on the machine lands on all of them rather than on one.
@@ -240,7 +244,9 @@ ShaderOps shaderOps(const Material& m, CompileOptions options) {
     return countOps(disassemble(compiled.spirv));
 }
 
-double texelsPerPixel(const View& view, int textureWidth) { return (view.uvRect[2] - view.uvRect[0]) * kTiling * textureWidth / view.width; }
+double texelsPerPixel(const View& view, int textureWidth) {
+    return (view.uvRect[2] - view.uvRect[0]) * kTiling * textureWidth / view.width;
+}
 
 // The mip level a view samples: log2 of texels per pixel, as the sampler computes it for these exact powers of two.
 int viewLevel(const View& view, const reference::SampledTexture& texture) {
@@ -343,8 +349,8 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
             if (!t->failure.empty()) continue;
             attempt(t->failure, [&] {
                 std::vector<double> frameMs;
-                vk::render(runner, t->material, vk::RenderOutput::Shaded, "", kViews[t->view].view, vk::ExecutedTarget::Spirv, kFramesPerRound,
-                           &frameMs, {}, t->compile);
+                vk::render(runner, t->material, vk::RenderOutput::Shaded, "", kViews[t->view].view, vk::ExecutedTarget::Spirv,
+                           kFramesPerRound, &frameMs, {}, t->compile);
                 t->frameMs.insert(t->frameMs.end(), frameMs.begin(), frameMs.end());
             });
         }
@@ -382,7 +388,10 @@ std::string targetLine(const Results& results, size_t view) {
     const Row* row = fullQualityRow(results, view);
     const double ratio = row ? row->ratio : kNaN;
     return strf("full quality (stable-rot-gain), 3 slots, %s: %sx plain tiling, target <= %.1fx: %s", kViews[view].name.c_str(),
-                num(ratio, "%.2f").c_str(), kTargetRatio, std::isnan(ratio) ? "not measured" : ratio <= kTargetRatio ? "MET" : "NOT MET");
+                num(ratio, "%.2f").c_str(), kTargetRatio,
+                std::isnan(ratio)       ? "not measured"
+                : ratio <= kTargetRatio ? "MET"
+                                        : "NOT MET");
 }
 
 std::string mainTable(const Results& results) {
@@ -393,7 +402,8 @@ std::string mainTable(const Results& results) {
         md += strf("| %s | %s | %s | %s | %d | %d | %s | %s | %s | %s | %s | %s |\n", kViews[r.view].name.c_str(), r.name.c_str(),
                    num(r.medianMs, "%.2f").c_str(), num(r.ratio, "%.2f").c_str(), r.ops.textureSamples, r.ops.instructions,
                    std::string(toString(r.errorReference)).c_str(), num(r.error.max, "%.4f").c_str(), num(r.error.mean, "%.5f").c_str(),
-                   num(r.error.psnrDb, "%.1f").c_str(), num(r.contrast.varianceRatio, "%.3f").c_str(), num(r.contrast.histogramEmd, "%.4f").c_str());
+                   num(r.error.psnrDb, "%.1f").c_str(), num(r.contrast.varianceRatio, "%.3f").c_str(),
+                   num(r.contrast.histogramEmd, "%.4f").c_str());
     return md;
 }
 
@@ -454,18 +464,24 @@ std::string breakdownTable(const Results& results) {
 }
 
 std::string markdown(const Results& r) {
-    std::string md = "# hexc shader benchmark\n\n" + r.machine + "\n" + r.settings + "\n## Run time, error, contrast\n\n" + mainTable(r) + "\n";
+    std::string md =
+        "# hexc shader benchmark\n\n" + r.machine + "\n" + r.settings + "\n## Run time, error, contrast\n\n" + mainTable(r) + "\n";
     for (size_t v = 0; v < kViews.size(); ++v) md += "- " + targetLine(r, v) + "\n";
-    md += "\n## Operations per pixel\n\nScalar operations counted in the SPIR-V (a vec3 pow counts 3; there are no loops, so each runs at most once per pixel).\n\n" + opCountTable(r);
-    md += "\n## Where the full-quality shader's time goes\n\nOne operation per pixel costs the time of its bench/op-cost/*.glsl "
-          "template above baseline.glsl's, per operation (magnified / minified); times how often stable-rot-gain does it.\n\n" +
-          breakdownTable(r);
+    md +=
+        "\n## Operations per pixel\n\nScalar operations counted in the SPIR-V (a vec3 pow counts 3; there are no loops, so each runs at "
+        "most once per pixel).\n\n" +
+        opCountTable(r);
+    md +=
+        "\n## Where the full-quality shader's time goes\n\nOne operation per pixel costs the time of its bench/op-cost/*.glsl "
+        "template above baseline.glsl's, per operation (magnified / minified); times how often stable-rot-gain does it.\n\n" +
+        breakdownTable(r);
     return md;
 }
 
 std::string csv(const Results& r) {
-    std::string out = "view,method,median_ms,min_ms,max_ms,frames,ratio_to_plain,samples_per_px,spirv_instructions,error_reference,max_error,mean_error,"
-                      "psnr_db,variance_ratio,histogram_emd,failure\n";
+    std::string out =
+        "view,method,median_ms,min_ms,max_ms,frames,ratio_to_plain,samples_per_px,spirv_instructions,error_reference,max_error,mean_error,"
+        "psnr_db,variance_ratio,histogram_emd,failure\n";
     for (const Row& row : r.rows) {
         std::string failure = row.failure;
         std::replace(failure.begin(), failure.end(), '\n', ' ');
@@ -474,9 +490,9 @@ std::string csv(const Results& r) {
         out += strf("%s,%s,%s,%s,%s,%zu,%s,%d,%d,%s,%s,%s,%s,%s,%s,%s\n", kViews[row.view].name.c_str(), row.name.c_str(),
                     num(row.medianMs, "%.4f").c_str(), num(row.frameMs.empty() ? kNaN : *fastest, "%.4f").c_str(),
                     num(row.frameMs.empty() ? kNaN : *slowest, "%.4f").c_str(), row.frameMs.size(), num(row.ratio, "%.4f").c_str(),
-                    row.ops.textureSamples, row.ops.instructions, std::string(toString(row.errorReference)).c_str(), num(row.error.max, "%.6g").c_str(),
-                    num(row.error.mean, "%.6g").c_str(), num(row.error.psnrDb, "%.4g").c_str(), num(row.contrast.varianceRatio, "%.6g").c_str(),
-                    num(row.contrast.histogramEmd, "%.6g").c_str(), failure.c_str());
+                    row.ops.textureSamples, row.ops.instructions, std::string(toString(row.errorReference)).c_str(),
+                    num(row.error.max, "%.6g").c_str(), num(row.error.mean, "%.6g").c_str(), num(row.error.psnrDb, "%.4g").c_str(),
+                    num(row.contrast.varianceRatio, "%.6g").c_str(), num(row.contrast.histogramEmd, "%.6g").c_str(), failure.c_str());
     }
     return out;
 }
@@ -490,7 +506,8 @@ std::string plot(const Results& r) {
     return scatterSvg("hexc on lavapipe: run time against error (albedo, 1024x1024)", "run time / plain tiling (same view)",
                       "mean abs error vs full-quality fp64 reference", series, points,
                       {{kTargetRatio, strf("target: full quality <= %gx", kTargetRatio)}},
-                      {"filled: vs stable-rot-gain reference", "hollow: paper mode, vs paper-rot-gain", "reference (hash differs from", "the GPU's sin beyond the origin)"});
+                      {"filled: vs stable-rot-gain reference", "hollow: paper mode, vs paper-rot-gain", "reference (hash differs from",
+                       "the GPU's sin beyond the origin)"});
 }
 
 int run(const fs::path& resultsDir) {
@@ -508,11 +525,13 @@ int run(const fs::path& resultsDir) {
                            threads ? (std::string(", LP_NUM_THREADS=") + threads).c_str() : "");
     std::string views;
     for (const NamedView& v : kViews)
-        views += strf("%s uv %g..%g (%g texels/px); ", v.name.c_str(), v.view.uvRect[0], v.view.uvRect[2], texelsPerPixel(v.view, kTextureSize));
+        views +=
+            strf("%s uv %g..%g (%g texels/px); ", v.name.c_str(), v.view.uvRect[0], v.view.uvRect[2], texelsPerPixel(v.view, kTextureSize));
     results.settings = strf(
         "Settings: material albedo (sRGB colour) + normal map + roughness (scalar), %dx%d textures (the examples upscaled), template "
         "`lit`, tiling %g, every slot with the method's settings; %dx%d frames; %sGPU time from timestamps, median of %d frames (%d "
-        "rounds over all shaders of %d frames, each after one warm-up frame). Methods: rot = rotation 1 (else 0), gain = falloff 0.75 (else 0.5); other settings the defaults. Error: the "
+        "rounds over all shaders of %d frames, each after one warm-up frame). Methods: rot = rotation 1 (else 0), gain = falloff 0.75 "
+        "(else 0.5); other settings the defaults. Error: the "
         "albedo output against the fp64 reference of the full-quality method of the same hash mode (stable-rot-gain for plain and "
         "stable rows, paper-rot-gain for paper rows), RGB, linear. Contrast: luminance of the albedo against the source texture's "
         "at the mip level the view samples (so plain tiling scores about 1 and 0).\n",
@@ -529,12 +548,15 @@ int run(const fs::path& resultsDir) {
     std::vector<vk::PrecisionRow> precision;
     const vk::ProbeTextures kProbe{"materials/textures/rock_albedo.png", "materials/textures/rock_normal.png"};
     for (HashMode mode : {HashMode::Stable, HashMode::Paper}) {
-        auto rows = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", mode, vk::Placement::Direct, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
+        auto rows =
+            vk::measurePrecision(*runner, kProbe, resultsDir / "precision", mode, vk::Placement::Direct, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
         precision.insert(precision.end(), rows.begin(), rows.end());
     }
-    auto aligned = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", HashMode::Stable, vk::Placement::Aligned, {1e5, 1e6, 1e7});
+    auto aligned =
+        vk::measurePrecision(*runner, kProbe, resultsDir / "precision", HashMode::Stable, vk::Placement::Aligned, {1e5, 1e6, 1e7});
     precision.insert(precision.end(), aligned.begin(), aligned.end());
-    auto split = vk::measurePrecision(*runner, kProbe, resultsDir / "precision", HashMode::Stable, vk::Placement::Split, {0, 1e3, 1e6, 1e9});
+    auto split =
+        vk::measurePrecision(*runner, kProbe, resultsDir / "precision", HashMode::Stable, vk::Placement::Split, {0, 1e3, 1e6, 1e9});
     precision.insert(precision.end(), split.begin(), split.end());
     writeFile(resultsDir / "precision.md", vk::precisionTable(precision));
     std::cout << "\n" << vk::precisionTable(precision);

@@ -65,8 +65,9 @@ TEST(Scene, AVariantTheSceneFiltersOutIsAnError) {
     fs::path out = fs::temp_directory_path() / "hexc_scene_variant";
     fs::remove_all(out);
     EXPECT_EQ(runHexc("materials/scenes/forest.json -o " + out.string() + " --variant rock.main --variant rock_normal.shadow", &err), 1);
-    EXPECT_EQ(err, "hexc: error: --variant rock_normal.shadow: pass `shadow` of scene `forest` renders only rock, tiles, not "
-                   "`rock_normal`\nhexc: nothing written\n");
+    EXPECT_EQ(err,
+              "hexc: error: --variant rock_normal.shadow: pass `shadow` of scene `forest` renders only rock, tiles, not "
+              "`rock_normal`\nhexc: nothing written\n");
     EXPECT_FALSE(fs::exists(out));
     ASSERT_EQ(runHexc("materials/scenes/forest.json -o " + out.string() + " --variant rock.main", &err), 0);
     EXPECT_EQ(countFiles(out, ".manifest.json"), 1u);
@@ -86,12 +87,13 @@ TEST(Scene, DiagnosticsAreLocated) {
     ASSERT_FALSE(r.scene);
     std::vector<std::string> got;
     for (const auto& d : r.diagnostics) got.push_back(d.format().substr(d.format().find("bad.json:")));
-    EXPECT_EQ(got, (std::vector<std::string>{
-                       "bad.json:3:33: error[HX100]: /materials/1: an empty path names no material file",
-                       "bad.json:5:37: error[HX113]: /passes/0/materials/0: no material named `rocks` in the scene (did you mean `rock`?)",
-                       "bad.json:6:23: error[HX103]: /passes/1/colour: unknown key `colour`; expected `name`, `template`, `slots` or `materials`",
-                       "bad.json:6:15: error[HX109]: /passes/1/name: duplicate pass name \"main\"",
-                   }));
+    EXPECT_EQ(
+        got, (std::vector<std::string>{
+                 "bad.json:3:33: error[HX100]: /materials/1: an empty path names no material file",
+                 "bad.json:5:37: error[HX113]: /passes/0/materials/0: no material named `rocks` in the scene (did you mean `rock`?)",
+                 "bad.json:6:23: error[HX103]: /passes/1/colour: unknown key `colour`; expected `name`, `template`, `slots` or `materials`",
+                 "bad.json:6:15: error[HX109]: /passes/1/name: duplicate pass name \"main\"",
+             }));
 }
 
 TEST(Incremental, UnchangedInputsAreSkippedAndAChangedTextureRebuildsWhatUsesIt) {

@@ -52,7 +52,8 @@ TEST_P(Example, WritesEveryTargetAndAManifest) {
     std::string n = GetParam();
     std::vector<std::string> names;
     for (const OutputFile& f : r.files) names.push_back(f.name);
-    EXPECT_EQ(names, (std::vector<std::string>{n + ".frag.glsl", n + ".frag.hlsl", n + ".frag.metal", n + ".frag.spv", n + ".manifest.json"}));
+    EXPECT_EQ(names,
+              (std::vector<std::string>{n + ".frag.glsl", n + ".frag.hlsl", n + ".frag.metal", n + ".frag.spv", n + ".manifest.json"}));
     for (const OutputFile& f : r.files) EXPECT_GT(f.contents.size(), 500u) << f.name;
     auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
     EXPECT_EQ(manifest["material"], n);
@@ -172,7 +173,9 @@ TEST(Compile, TemplateWithoutInjectionPointIsRejected) {
         options.templateFile = t;
         CompileResult r = compile(load("materials/tiles.json"), options);
         ASSERT_FALSE(r.ok()) << body;
-        EXPECT_EQ(r.diagnostics[0].format(), t.string() + ": error[HX203]: a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
+        EXPECT_EQ(
+            r.diagnostics[0].format(),
+            t.string() + ": error[HX203]: a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
     }
 }
 
@@ -182,7 +185,8 @@ TEST(Compile, SlotsTheTemplateDoesNotReadAreLeftOutWithAWarning) {
     CompileResult r = compile(m);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
     ASSERT_EQ(r.diagnostics.size(), 2u);
-    EXPECT_EQ(r.diagnostics[0].format(), "materials/rock.json: warning[HX204]: slot `normal` is not read by template templates/unlit.glsl; it is left out");
+    EXPECT_EQ(r.diagnostics[0].format(),
+              "materials/rock.json: warning[HX204]: slot `normal` is not read by template templates/unlit.glsl; it is left out");
     auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
     EXPECT_EQ(manifest["slots"].size(), 1u);
     EXPECT_EQ(manifest["targets"]["spirv"]["textures"].size(), 1u);
@@ -258,7 +262,8 @@ TEST(Cli, OptionSpellings) {
     std::string err;
     for (const char* spelling : {"--out=", "-o", "-o "}) {
         std::filesystem::path dir = freshDir("hexc_cli_spelling");
-        EXPECT_EQ(runHexc("materials/rock.json -q --targets=hlsl,glsl " + std::string(spelling) + dir.string(), &err), 0) << spelling << err;
+        EXPECT_EQ(runHexc("materials/rock.json -q --targets=hlsl,glsl " + std::string(spelling) + dir.string(), &err), 0)
+            << spelling << err;
         EXPECT_TRUE(std::filesystem::exists(dir / "rock.frag.hlsl")) << spelling;
         EXPECT_TRUE(std::filesystem::exists(dir / "rock.frag.glsl")) << spelling;
         EXPECT_FALSE(std::filesystem::exists(dir / "rock.frag.spv")) << spelling;
@@ -288,18 +293,22 @@ CompileResult compileText(const std::string& material) {
 }
 
 TEST(TemplateFit, ASlotOfAnotherKindIsAnErrorAtItsKind) {
-    CompileResult r = compileText("{\"name\": \"fit\", \"template\": \"lit\",\n \"slots\": [{\"name\": \"albedo\", \"kind\": \"normal\", "
-                                  "\"texture\": \"textures/rock_normal.png\"}]}");
+    CompileResult r = compileText(
+        "{\"name\": \"fit\", \"template\": \"lit\",\n \"slots\": [{\"name\": \"albedo\", \"kind\": \"normal\", "
+        "\"texture\": \"textures/rock_normal.png\"}]}");
     ASSERT_FALSE(r.ok());
     ASSERT_EQ(r.diagnostics.size(), 1u) << formatAll(r.diagnostics);
-    EXPECT_EQ(r.diagnostics[0].format(), "materials/fit.json:2:39: error[HX208]: /slots/0/kind: template `lit` reads `albedo` as a color slot; this one is `normal`");
+    EXPECT_EQ(r.diagnostics[0].format(),
+              "materials/fit.json:2:39: error[HX208]: /slots/0/kind: template `lit` reads `albedo` as a color slot; this one is `normal`");
     EXPECT_TRUE(r.files.empty());
 }
 
 TEST(TemplateFit, ARequiredSlotThatIsMissingIsAnError) {
-    CompileResult r = compileText(R"({"name": "fit", "template": "unlit", "slots": [{"name": "base", "kind": "color", "texture": "textures/rock_albedo.png"}]})");
+    CompileResult r = compileText(
+        R"({"name": "fit", "template": "unlit", "slots": [{"name": "base", "kind": "color", "texture": "textures/rock_albedo.png"}]})");
     ASSERT_FALSE(r.ok());
-    EXPECT_NE(formatAll(r.diagnostics).find("/slots: template `unlit` needs a color slot named `albedo`"), std::string::npos) << formatAll(r.diagnostics);
+    EXPECT_NE(formatAll(r.diagnostics).find("/slots: template `unlit` needs a color slot named `albedo`"), std::string::npos)
+        << formatAll(r.diagnostics);
     // No raw glslang output (the template's own #error) reaches the user.
     EXPECT_EQ(formatAll(r.diagnostics).find("#error"), std::string::npos) << formatAll(r.diagnostics);
 }

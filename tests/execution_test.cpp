@@ -53,7 +53,8 @@ double pixelTolerance(const reference::SlotResult& r, double ex, double em, cons
 // A material of the given slots (one slot object, or several separated by commas; the first is the one tested)
 // and optional material-level hex-tiling settings.
 Material material(const std::string& slotJson, const std::string& hexJson = "{}") {
-    ParseResult r = parseMaterial(R"({"name": "exec", "hextiling": )" + hexJson + R"(, "slots": [)" + slotJson + "]}", "materials/exec.json");
+    ParseResult r =
+        parseMaterial(R"({"name": "exec", "hextiling": )" + hexJson + R"(, "slots": [)" + slotJson + "]}", "materials/exec.json");
     if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
     return *r.material;
 }
@@ -71,10 +72,10 @@ Image cpuRender(const Slot& slot, const View& view, reference::Output output) {
 
 // What a texture's own content allows, measured on its level 0 (in linear values, as sampled).
 struct TextureBounds {
-    double spread = 0;     // largest max - min of a channel: bounds |x_j - R| for a blend of samples
-    double step = 0;       // largest difference between horizontally or vertically adjacent texels
-    double minZ = 1;       // normal maps: smallest z = 2 b - 1
-    double maxDeriv = 0;   // normal maps: largest |dH/du| or |dH/dv| of a texel (Listing 9)
+    double spread = 0;    // largest max - min of a channel: bounds |x_j - R| for a blend of samples
+    double step = 0;      // largest difference between horizontally or vertically adjacent texels
+    double minZ = 1;      // normal maps: smallest z = 2 b - 1
+    double maxDeriv = 0;  // normal maps: largest |dH/du| or |dH/dv| of a texel (Listing 9)
 };
 
 TextureBounds bounds(const reference::SampledTexture& t) {
@@ -87,7 +88,8 @@ TextureBounds bounds(const reference::SampledTexture& t) {
                 double v = t.texel(0, x, y)[size_t(c)];
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);
-                b.step = std::max({b.step, std::fabs(v - t.texel(0, (x + 1) % w, y)[size_t(c)]), std::fabs(v - t.texel(0, x, (y + 1) % h)[size_t(c)])});
+                b.step = std::max(
+                    {b.step, std::fabs(v - t.texel(0, (x + 1) % w, y)[size_t(c)]), std::fabs(v - t.texel(0, x, (y + 1) % h)[size_t(c)])});
             }
         b.spread = std::max(b.spread, hi - lo);
     }
@@ -106,7 +108,7 @@ TextureBounds bounds(const reference::SampledTexture& t) {
 // tiling 4: one uv unit is 1024 texels, tiles are 1 / (2 sqrt 3) = 0.29 st apart, so the magnified view spans
 // about 2 x 2 tiles and the minified one 5 x 5, borders included.
 const View kMagnified{192, 192, {0.3, 0.45, 0.3 + 192 * 0.75 / 1024, 0.45 + 192 * 0.75 / 1024}};  // 0.75 texel per pixel
-const View kMinified{96, 96, {0.3, 0.45, 0.3 + 96.0 * 4 / 1024, 0.45 + 96.0 * 4 / 1024}};  // 4 texels per pixel
+const View kMinified{96, 96, {0.3, 0.45, 0.3 + 96.0 * 4 / 1024, 0.45 + 96.0 * 4 / 1024}};         // 4 texels per pixel
 
 // Triplanar materials are shown on the preview sphere (reference::previewSphere) over longitude 0.2..1.0 and
 // latitude 0.1..0.9 radians, where all three planes take part. |dP| <= 0.8 / 384 per pixel, so at tiling 1.5 a
@@ -124,49 +126,91 @@ void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 // Colour and scalar slots. Colour spread: the largest difference between two texels of a channel bounds
 // |x_j - R|; 1 is the safe bound for 8-bit data.
 const Case kColorCases[] = {
-    {"color_rotation_on", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4}})", false},
-    {"color_rotation_off", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotation": 0}})", false},
-    {"color_gain_07", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", false},
-    {"color_gain_09", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.9}})", false},
-    {"color_beta_0", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})", false},
-    {"color_beta_03_gamma_3", R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0.3, "exponent": 3}})", false},
-    {"color_gamma_1", R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 1}})", false},
-    {"color_gamma_20", R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 20}})", false},
-    {"color_linear_minified", R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", true},
-    {"color_srgb_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", true},
-    {"color_paper_mode_near_origin", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
-    {"color_plain_tiling", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "enabled": false}})", true},
-    {"color_transforms", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotationrange": [0, 360], "rotationsteps": 4, "scalerange": [0.5, 2], "offset": 0.5, "offsetsteps": [4, 4]}})", false},
+    {"color_rotation_on", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4}})",
+     false},
+    {"color_rotation_off",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotation": 0}})", false},
+    {"color_gain_07",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", false},
+    {"color_gain_09",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.9}})", false},
+    {"color_beta_0",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})",
+     false},
+    {"color_beta_03_gamma_3",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0.3, "exponent": 3}})",
+     false},
+    {"color_gamma_1",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 1}})", false},
+    {"color_gamma_20",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 20}})", false},
+    {"color_linear_minified",
+     R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})",
+     true},
+    {"color_srgb_minified",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", true},
+    {"color_paper_mode_near_origin",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
+    {"color_plain_tiling",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "enabled": false}})", true},
+    {"color_transforms",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotationrange": [0, 360], "rotationsteps": 4, "scalerange": [0.5, 2], "offset": 0.5, "offsetsteps": [4, 4]}})",
+     false},
     // Minified with transforms but no scale: a scaled tile would read other mip levels than the view's exact level 2.
-    {"color_transforms_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotationrange": [-45, 45], "offset": 0.25}})", true},
-    {"scalar_roughness", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})", false},
-    {"scalar_roughness_minified", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})", true},
+    {"color_transforms_minified",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "rotationrange": [-45, 45], "offset": 0.25}})",
+     true},
+    {"scalar_roughness",
+     R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})",
+     false},
+    {"scalar_roughness_minified",
+     R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75}})",
+     true},
     // The seeds' variants (docs/material-format.md#mask and on).
-    {"color_checker", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "maskscale": 3, "falloff": 0.7}})", false},
-    {"color_checker_transforms_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "rotationrange": [0, 360], "rotationsteps": 4, "offsetsteps": [4, 4]}})", true},
-    {"color_noise", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "noise", "maskscale": 4}})", false},
-    {"color_noise3", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "noise3", "maskscale": 4, "exponent": 4, "falloff": 0.7}})", false},
-    {"scalar_noise3_minified", R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "mask": "noise3", "rotation": 0}})", true},
+    {"color_checker",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "maskscale": 3, "falloff": 0.7}})",
+     false},
+    {"color_checker_transforms_minified",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "rotationrange": [0, 360], "rotationsteps": 4, "offsetsteps": [4, 4]}})",
+     true},
+    {"color_noise",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "noise", "maskscale": 4}})",
+     false},
+    {"color_noise3",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "noise3", "maskscale": 4, "exponent": 4, "falloff": 0.7}})",
+     false},
+    {"scalar_noise3_minified",
+     R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "mask": "noise3", "rotation": 0}})",
+     true},
     // Height blending: the metric off, so the weights before the height stage are the lattice's alone (see
     // heightTolerance).
-    {"color_height_blend", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}, "height_blend": {"slot": "height", "width": 0.1}},
-                              {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})", false},
-    {"color_height_blend_checker_minified", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "mask": "checker"}, "height_blend": {"slot": "height", "width": 0.3}},
-                              {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})", true},
-    {"scalar_height_blend_self", R"({"name": "height", "kind": "scalar", "texture": "textures/rock_height.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "falloff": 0.7}, "height_blend": {"slot": "height", "width": 0.05}})", false},
+    {"color_height_blend",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}, "height_blend": {"slot": "height", "width": 0.1}},
+                              {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})",
+     false},
+    {"color_height_blend_checker_minified",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "mask": "checker"}, "height_blend": {"slot": "height", "width": 0.3}},
+                              {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})",
+     true},
+    {"scalar_height_blend_self",
+     R"({"name": "height", "kind": "scalar", "texture": "textures/rock_height.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "falloff": 0.7}, "height_blend": {"slot": "height", "width": 0.05}})",
+     false},
     // Triplanar on the preview sphere; falloffcontrast 0 keeps each plane's weights exact (see ColorPath).
-    {"color_triplanar", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloffcontrast": 0, "falloff": 0.7}})", false,
-     R"({"projection": "triplanar", "tiling": 1.5})"},
-    {"color_triplanar_checker_sharp", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloffcontrast": 0, "mask": "checker"}})", false,
-     R"({"projection": "triplanar", "tiling": 1.5, "planesharpness": 12})"},
-    {"color_triplanar_plain", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"enabled": false}})", false,
+    {"color_triplanar",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloffcontrast": 0, "falloff": 0.7}})",
+     false, R"({"projection": "triplanar", "tiling": 1.5})"},
+    {"color_triplanar_checker_sharp",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloffcontrast": 0, "mask": "checker"}})",
+     false, R"({"projection": "triplanar", "tiling": 1.5, "planesharpness": 12})"},
+    {"color_triplanar_plain",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"enabled": false}})", false,
      R"({"projection": "triplanar", "tiling": 1.5})"},
 };
 
 struct Check {
     Errors errors;
-    double worstRatio = 0;     // max over pixels of error / tolerance: <= 1 passes
-    double toleranceAtMax = 0; // the tolerance of the pixel with the largest error
+    double worstRatio = 0;      // max over pixels of error / tolerance: <= 1 passes
+    double toleranceAtMax = 0;  // the tolerance of the pixel with the largest error
     double maxTolerance = 0;
 };
 
@@ -239,34 +283,55 @@ TEST_P(ColorPath, MatchesReference) {
     if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};
     double es = sampleError(c.minified ? 2 : 0, slot.colorSpace == ColorSpace::Srgb);
     // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
-    Check check = checkAgainstReference(m, vk::RenderOutput::Albedo, view, c.minified ? 2 : 0, target, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
+    Check check =
+        checkAgainstReference(m, vk::RenderOutput::Albedo, view, c.minified ? 2 : 0, target, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
 
-std::string targetName(vk::ExecutedTarget t) { return t == vk::ExecutedTarget::Spirv ? "spirv" : t == vk::ExecutedTarget::Hlsl ? "hlsl" : "glsl"; }
+std::string targetName(vk::ExecutedTarget t) {
+    return t == vk::ExecutedTarget::Spirv ? "spirv" : t == vk::ExecutedTarget::Hlsl ? "hlsl" : "glsl";
+}
 
 INSTANTIATE_TEST_SUITE_P(Exec, ColorPath,
                          testing::Combine(testing::ValuesIn(kColorCases),
                                           testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+                         [](const auto& info) {
+                             return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
+                         });
 
 // ---- Normal path --------------------------------------------------------------------------------------------
 const Case kNormalCases[] = {
-    {"normal_rotation_on", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", false},
-    {"normal_rotation_off", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "rotation": 0}})", false},
-    {"normal_gain_07", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", false},
-    {"normal_beta_1_gamma_3", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloffcontrast": 0.9, "exponent": 3}})", false},
-    {"normal_flip_y", R"({"name": "normal", "kind": "normal", "flip_y": true, "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", false},
+    {"normal_rotation_on", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})",
+     false},
+    {"normal_rotation_off",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "rotation": 0}})", false},
+    {"normal_gain_07",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", false},
+    {"normal_beta_1_gamma_3",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloffcontrast": 0.9, "exponent": 3}})",
+     false},
+    {"normal_flip_y",
+     R"({"name": "normal", "kind": "normal", "flip_y": true, "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", false},
     {"normal_minified", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4}})", true},
-    {"normal_transforms", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "rotationrange": [0, 360], "rotationsteps": 8, "scalerange": [0.5, 2], "offsetsteps": [2, 2]}})", false},
-    {"normal_paper_mode_near_origin", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
-    {"normal_checker", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mask": "checker", "scalerange": [0.7, 1.4]}})", false},
-    {"normal_noise", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mask": "noise", "maskscale": 5}})", false},
-    {"normal_height_blend", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}, "height_blend": {"slot": "height", "width": 0.15}},
-                               {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})", false},
+    {"normal_transforms",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "rotationrange": [0, 360], "rotationsteps": 8, "scalerange": [0.5, 2], "offsetsteps": [2, 2]}})",
+     false},
+    {"normal_paper_mode_near_origin",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mode": "paper"}})", false},
+    {"normal_checker",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mask": "checker", "scalerange": [0.7, 1.4]}})",
+     false},
+    {"normal_noise",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "mask": "noise", "maskscale": 5}})",
+     false},
+    {"normal_height_blend",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}, "height_blend": {"slot": "height", "width": 0.15}},
+                               {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})",
+     false},
     // The surface gradient (x, y, z) of the planes' blended derivatives; falloffcontrast 0 as in ColorPath.
-    {"normal_triplanar", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"falloffcontrast": 0}})", false,
+    {"normal_triplanar",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"falloffcontrast": 0}})", false,
      R"({"projection": "triplanar", "tiling": 1.5})"},
 };
 
@@ -288,8 +353,9 @@ TEST_P(NormalPath, MatchesReference) {
     // Triplanar: each plane's gradient g_k errs by |(dd_x, dd_y)| <= sqrt(2) ed, so does their convex combination,
     // and the projection onto the surface does not lengthen it: each component of the surface gradient is within
     // sqrt(2) ed. The plane weights' own float32 error (~1e-7) is negligible.
-    Check check = triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, 0, target, std::sqrt(2.0) * ed, 0, 3)
-                            : checkAgainstReference(m, vk::RenderOutput::Derivative, view, c.minified ? 2 : 0, target, ed, std::sqrt(2.0) * ed, 2);
+    Check check =
+        triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, 0, target, std::sqrt(2.0) * ed, 0, 3)
+                  : checkAgainstReference(m, vk::RenderOutput::Derivative, view, c.minified ? 2 : 0, target, ed, std::sqrt(2.0) * ed, 2);
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
@@ -297,7 +363,9 @@ TEST_P(NormalPath, MatchesReference) {
 INSTANTIATE_TEST_SUITE_P(Exec, NormalPath,
                          testing::Combine(testing::ValuesIn(kNormalCases),
                                           testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+                         [](const auto& info) {
+                             return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
+                         });
 
 // ---- Odd-sized textures -----------------------------------------------------------------------------------
 // hexc accepts any texture size. The runner builds each mip level by a linear blit of the one above, which at an odd
@@ -321,8 +389,10 @@ std::filesystem::path cropOfRock(int width, int height) {
     out.rgba.clear();
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
-            for (int c = 0; c < 4; ++c) out.rgba.push_back(rock.rgba8[(size_t(y + 40) * size_t(rock.width) + size_t(x + 40)) * 4 + size_t(c)] / 255.0f);
-    std::filesystem::path file = std::filesystem::temp_directory_path() / ("hexc_odd_" + std::to_string(width) + "x" + std::to_string(height) + ".png");
+            for (int c = 0; c < 4; ++c)
+                out.rgba.push_back(rock.rgba8[(size_t(y + 40) * size_t(rock.width) + size_t(x + 40)) * 4 + size_t(c)] / 255.0f);
+    std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("hexc_odd_" + std::to_string(width) + "x" + std::to_string(height) + ".png");
     writeImage(out, file);
     return file;
 }
@@ -345,13 +415,13 @@ TEST_P(OddSizes, MatchReference) {
     EXPECT_LE(check.worstRatio, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, OddSizes,
-                         testing::Combine(testing::Values(OddSize{"127x80", 127, 80, false}, OddSize{"127x80_minified", 127, 80, true},
-                                                          OddSize{"1x64", 1, 64, false}, OddSize{"1x64_minified", 1, 64, true},
-                                                          OddSize{"3x3", 3, 3, false}, OddSize{"3x3_minified", 3, 3, true},
-                                                          OddSize{"127x127_minified", 127, 127, true}),
-                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+INSTANTIATE_TEST_SUITE_P(
+    Exec, OddSizes,
+    testing::Combine(testing::Values(OddSize{"127x80", 127, 80, false}, OddSize{"127x80_minified", 127, 80, true},
+                                     OddSize{"1x64", 1, 64, false}, OddSize{"1x64_minified", 1, 64, true}, OddSize{"3x3", 3, 3, false},
+                                     OddSize{"3x3_minified", 3, 3, true}, OddSize{"127x127_minified", 127, 127, true}),
+                     testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
+    [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
 
 // ---- Weights ----------------------------------------------------------------------------------------------
 // With falloffcontrast 0 the weights depend on the lattice alone. The GPU evaluates it in float32 on a uv that
@@ -369,12 +439,24 @@ struct WeightsCase {
 void PrintTo(const WeightsCase& c, std::ostream* os) { *os << c.name; }
 
 const WeightsCase kWeightsCases[] = {
-    {"lattice_stable", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})", {0.3, 0.45, 0.55, 0.7}},
-    {"lattice_stable_far", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})", {40.3, 17.45, 40.55, 17.7}},
-    {"lattice_paper_far", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "mode": "paper"}})", {40.3, 17.45, 40.55, 17.7}},
-    {"lattice_gamma_1", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "exponent": 1}})", {0.3, 0.45, 0.55, 0.7}},
-    {"lattice_gain_09", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "falloff": 0.9}})", {0.3, 0.45, 0.55, 0.7}},
-    {"luminance_weighted", R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})", {0.3, 0.45, 0.3 + 96.0 / 2048, 0.45 + 96.0 / 2048}},
+    {"lattice_stable",
+     R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})",
+     {0.3, 0.45, 0.55, 0.7}},
+    {"lattice_stable_far",
+     R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}})",
+     {40.3, 17.45, 40.55, 17.7}},
+    {"lattice_paper_far",
+     R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "mode": "paper"}})",
+     {40.3, 17.45, 40.55, 17.7}},
+    {"lattice_gamma_1",
+     R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "exponent": 1}})",
+     {0.3, 0.45, 0.55, 0.7}},
+    {"lattice_gain_09",
+     R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "falloff": 0.9}})",
+     {0.3, 0.45, 0.55, 0.7}},
+    {"luminance_weighted",
+     R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})",
+     {0.3, 0.45, 0.3 + 96.0 / 2048, 0.45 + 96.0 / 2048}},
 };
 
 class Weights : public testing::TestWithParam<std::tuple<WeightsCase, vk::ExecutedTarget>> {};
@@ -401,7 +483,9 @@ TEST_P(Weights, MatchReference) {
 INSTANTIATE_TEST_SUITE_P(Exec, Weights,
                          testing::Combine(testing::ValuesIn(kWeightsCases),
                                           testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+                         [](const auto& info) {
+                             return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
+                         });
 
 // ---- 1-tap dithered hex tiling ---------------------------------------------------------------------------
 // Each pixel samples one tile, picked by comparing its dither value u with the cumulative weights. Where u
@@ -415,8 +499,10 @@ TEST(OneTap, PicksTheSameTileAndSampleAsTheReference) {
         const char* slot;
     };
     const OneTapCase cases[] = {
-        {"color", R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "taps": 1, "falloff": 0.7}})"},
-        {"normal", R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "taps": 1, "exponent": 3}})"},
+        {"color",
+         R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "taps": 1, "falloff": 0.7}})"},
+        {"normal",
+         R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "taps": 1, "exponent": 3}})"},
     };
     for (const OneTapCase& c : cases)
         for (auto target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl}) {
@@ -424,7 +510,8 @@ TEST(OneTap, PicksTheSameTileAndSampleAsTheReference) {
             const Slot& slot = m.slots[0];
             const bool normal = slot.kind == SlotKind::Normal;
             const View view = kMagnified;
-            Image value = vk::render(*runner(&whyNoVulkan), m, normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo, "", view, target);
+            Image value =
+                vk::render(*runner(&whyNoVulkan), m, normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo, "", view, target);
             Image weights = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view, target);
             reference::SampledTexture tex = sampled(slot);
             std::vector<reference::SlotResult> ref = reference::evaluateView(slot, tex, view);
@@ -473,7 +560,8 @@ size_t fetches(Material m) {
 }
 
 TEST(OneTap, SamplesOncePerSlot) {
-    EXPECT_EQ(fetches(material(R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"taps": 1}})")), 1u);
+    EXPECT_EQ(fetches(material(R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"taps": 1}})")),
+              1u);
 }
 
 // What each variant fetches per pixel, counted in the SPIR-V: the checker mask's two taps, the height map's
@@ -502,13 +590,19 @@ TEST(Variants, FetchWhatTheyDocument) {
 // Lavapipe divides with a reciprocal refined to full precision; 8 * 2^-24 = 4.8e-7 is the bound.
 TEST(Properties, WeightsAreFiniteNonNegativeAndSumToOne) {
     REQUIRE_VULKAN();
-    const char* settings[] = {R"({"tiling": 4})", R"({"tiling": 4, "falloff": 0.01})", R"({"tiling": 4, "falloff": 0.99})",
-                              R"({"tiling": 4, "exponent": 1})", R"({"tiling": 4, "exponent": 64})", R"({"tiling": 4, "falloffcontrast": 0.9})",
-                              R"({"tiling": 4, "rotation": 25})", R"({"tiling": 4, "mode": "paper", "falloff": 0.8})"};
+    const char* settings[] = {R"({"tiling": 4})",
+                              R"({"tiling": 4, "falloff": 0.01})",
+                              R"({"tiling": 4, "falloff": 0.99})",
+                              R"({"tiling": 4, "exponent": 1})",
+                              R"({"tiling": 4, "exponent": 64})",
+                              R"({"tiling": 4, "falloffcontrast": 0.9})",
+                              R"({"tiling": 4, "rotation": 25})",
+                              R"({"tiling": 4, "mode": "paper", "falloff": 0.8})"};
     const double bound = 8 * std::ldexp(1.0, -24);
     double worst = 0;
     for (const char* h : settings) {
-        Material m = material(std::string(R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": )") + h + "}");
+        Material m =
+            material(std::string(R"({"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": )") + h + "}");
         Image w = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", {128, 128, {0.1, 0.2, 0.6, 0.7}});
         for (size_t i = 0; i < w.rgba.size(); i += 4) {
             const float* p = &w.rgba[i];
@@ -563,7 +657,10 @@ TEST(Properties, GainAtOneHalfChangesNothing) {
     const View view{96, 96, {0.3, 0.45, 0.4, 0.55}};
     auto albedo = [&](double r) {
         char slot[256];
-        std::snprintf(slot, sizeof slot, R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": %.17g}})", r);
+        std::snprintf(
+            slot, sizeof slot,
+            R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": %.17g}})",
+            r);
         return vk::render(*runner(&whyNoVulkan), material(slot), vk::RenderOutput::Albedo, "", view);
     };
     Errors e = compare(albedo(0.5), albedo(0.5 + std::ldexp(1.0, -20)), 4);
@@ -588,7 +685,8 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
     for (int i = 0; i < 16 * 16; ++i) ramp.rgba.insert(ramp.rgba.end(), {float(0.5 - 0.25 * a), float(0.5 - 0.25 * b), 0.75f, 1.0f});
     writeImage(ramp, file);  // n = (-a, -b, 1) / 2 encoded n * 0.5 + 0.5: Listing 9 reads back d = (a, b)
     // Per-tile scale s: the tile shows H(p / s), so its slope is R(-theta)(a, b) / s.
-    for (const char* mode : {R"("mode": "stable")", R"("mode": "paper")", R"("scalerange": [0.5, 2], "rotationrange": [0, 360], "rotationsteps": 6)"}) {
+    for (const char* mode :
+         {R"("mode": "stable")", R"("mode": "paper")", R"("scalerange": [0.5, 2], "rotationrange": [0, 360], "rotationsteps": 6)"}) {
         Material m = material(std::string(R"({"name": "normal", "kind": "normal", "texture": ")") + file.string() +
                               R"(", "hextiling": {"tiling": 1, )" + mode + "}}");
         const View view{128, 128, {0.0, 0.0, 1.0, 1.0}};
@@ -604,7 +702,8 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
                 if (r.blend[dominant] < 0.999) continue;
                 reference::TileTransform tile = reference::tileTransform(tri.id[dominant], m.slots[0].hex);
                 double theta = tile.angle;
-                double ex = (std::cos(theta) * a + std::sin(theta) * b) / tile.scale, ey = (-std::sin(theta) * a + std::cos(theta) * b) / tile.scale;
+                double ex = (std::cos(theta) * a + std::sin(theta) * b) / tile.scale,
+                       ey = (-std::sin(theta) * a + std::cos(theta) * b) / tile.scale;
                 worst = std::max({worst, std::fabs(d.at(i, j)[0] - ex), std::fabs(d.at(i, j)[1] - ey)});
                 ++checked;
             }
@@ -670,14 +769,16 @@ TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
     });
     const std::string hex = std::string(R"("hextiling": {"tiling": 1, "falloffcontrast": 0, )") + settings + "}";
     auto slot = [&](const char* kind, const std::filesystem::path& file, const char* extra) {
-        return material(std::string(R"({"name": "s", "kind": ")") + kind + R"(", "colorspace": "linear", "texture": ")" + file.string() + "\", " +
-                        extra + hex + "}");
+        return material(std::string(R"({"name": "s", "kind": ")") + kind + R"(", "colorspace": "linear", "texture": ")" + file.string() +
+                        "\", " + extra + hex + "}");
     };
     // 512 pixels over two texture periods: a pixel step of 1/256 in st.
     const View view{512, 512, {0.0, 0.0, 2.0, 2.0}};
     vk::Runner& gpu = *runner(&whyNoVulkan);
-    Image up = vk::render(gpu, slot("normal", analytic::normalMap(true), R"("flip_y": false, )"), vk::RenderOutput::Derivative, "", view, target);
-    Image down = vk::render(gpu, slot("normal", analytic::normalMap(false), R"("flip_y": true, )"), vk::RenderOutput::Derivative, "", view, target);
+    Image up =
+        vk::render(gpu, slot("normal", analytic::normalMap(true), R"("flip_y": false, )"), vk::RenderOutput::Derivative, "", view, target);
+    Image down =
+        vk::render(gpu, slot("normal", analytic::normalMap(false), R"("flip_y": true, )"), vk::RenderOutput::Derivative, "", view, target);
     Image H = vk::render(gpu, slot("scalar", height, ""), vk::RenderOutput::Albedo, "", view, target);
     Image W = vk::render(gpu, slot("scalar", height, ""), vk::RenderOutput::Weights, "", view, target);
     // Both conventions decode to the same derivative up to the float32 rounding of their texels: 0.5 - x and 0.5 + x
@@ -716,21 +817,26 @@ TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
     EXPECT_LE(errors.back(), bound);
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, AnalyticNormals,
-                         testing::Combine(testing::Values(AnalyticCase{"stable", R"("mode": "stable", "rotation": 1)"},
-                                                          AnalyticCase{"paper", R"("mode": "paper", "rotation": 1)"},
-                                                          AnalyticCase{"unrotated", R"("mode": "stable", "rotation": 0)"},
-                                                          AnalyticCase{"checker2taps", R"("mode": "stable", "rotation": 1, "mask": "checker", "taps": 2)"}),
-                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+INSTANTIATE_TEST_SUITE_P(
+    Exec, AnalyticNormals,
+    testing::Combine(testing::Values(AnalyticCase{"stable", R"("mode": "stable", "rotation": 1)"},
+                                     AnalyticCase{"paper", R"("mode": "paper", "rotation": 1)"},
+                                     AnalyticCase{"unrotated", R"("mode": "stable", "rotation": 0)"},
+                                     AnalyticCase{"checker2taps", R"("mode": "stable", "rotation": 1, "mask": "checker", "taps": 2)"}),
+                     testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
+    [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
 
 // ---- hexc render and hexc preview, run as a user would ------------------------------------------------------
 
 TEST(RenderCommand, WritesWhatTheLibraryRenders) {
     REQUIRE_VULKAN();
     std::filesystem::path dir = std::filesystem::temp_directory_path();
-    ASSERT_EQ(runHexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 -o " + (dir / "r.pfm").string()), 0);
-    ASSERT_EQ(runHexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 --reference -o " + (dir / "c.pfm").string()), 0);
+    ASSERT_EQ(
+        runHexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 -o " + (dir / "r.pfm").string()),
+        0);
+    ASSERT_EQ(runHexc("render materials/rock.json --output derivative --size 40x24 --uv-rect 0.1,0.2,0.3,0.35 --reference -o " +
+                      (dir / "c.pfm").string()),
+              0);
     Material rock = *parseMaterialFile("materials/rock.json").material;
     const View view{40, 24, {0.1, 0.2, 0.3, 0.35}};
     Image lib = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Derivative, "", view);
@@ -783,11 +889,14 @@ TEST(RenderCommand, NoVulkanDeviceExitsFour) {
 // The reference of a height-blended slot reads its height slot (without it, the reference refuses to evaluate).
 TEST(RenderCommand, ReferenceOfAHeightBlendedSlot) {
     std::filesystem::path file = std::filesystem::temp_directory_path() / "hb_cpu.pfm";
-    ASSERT_EQ(runHexc("render materials/rock_blend.json --output albedo --size 32x32 --uv-rect 0.1,0.2,0.2,0.3 --reference -o " + file.string()), 0);
+    ASSERT_EQ(
+        runHexc("render materials/rock_blend.json --output albedo --size 32x32 --uv-rect 0.1,0.2,0.2,0.3 --reference -o " + file.string()),
+        0);
     Material m = *parseMaterialFile("materials/rock_blend.json").material;
     const reference::Heights heights(m, m.slots[0]);
     ASSERT_NE(heights.source(), nullptr);
-    Image ref = reference::render(m.slots[0], sampled(m.slots[0]), {32, 32, {0.1, 0.2, 0.2, 0.3}}, reference::Output::Value, heights.source());
+    Image ref =
+        reference::render(m.slots[0], sampled(m.slots[0]), {32, 32, {0.1, 0.2, 0.2, 0.3}}, reference::Output::Value, heights.source());
     Texture cpu = loadTexture(file, false);
     for (size_t i = 0; i < ref.rgba.size(); i += 4)
         for (size_t c = 0; c < 3; ++c) ASSERT_EQ(cpu.rgba32f[i + c], ref.rgba[i + c]) << i;  // PFM holds RGB

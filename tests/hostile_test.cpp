@@ -49,8 +49,8 @@ protected:
     }
     // A valid one-slot material; `extra` is spliced in as more top-level members.
     std::string material(const std::string& extra = "") const {
-        return R"({"name": "m", "slots": [{"name": "albedo", "kind": "color", "texture": ")" + fs::absolute("materials/textures/rock_albedo.png").string() +
-               "\"}]" + extra + "}";
+        return R"({"name": "m", "slots": [{"name": "albedo", "kind": "color", "texture": ")" +
+               fs::absolute("materials/textures/rock_albedo.png").string() + "\"}]" + extra + "}";
     }
     void expectNothingWritten() const { EXPECT_TRUE(fs::is_empty(dir_ / "out")) << "an output was written"; }
     std::string out() const { return " -o " + (dir_ / "out").string(); }
@@ -150,7 +150,9 @@ TEST_F(Hostile, ConcurrentRunsIntoOneFolderAllSucceed) {
     std::vector<int> exits(8, -1);
     std::vector<std::thread> runs;
     for (size_t i = 0; i < exits.size(); ++i)
-        runs.emplace_back([&, i] { exits[i] = std::system(("timeout 60 " + std::string(HEXC_EXE) + " -q " + m.string() + out() + " 2>/dev/null").c_str()); });
+        runs.emplace_back([&, i] {
+            exits[i] = std::system(("timeout 60 " + std::string(HEXC_EXE) + " -q " + m.string() + out() + " 2>/dev/null").c_str());
+        });
     for (auto& t : runs) t.join();
     for (int e : exits) EXPECT_EQ(e, 0);
     for (const auto& f : fs::directory_iterator(dir_ / "out")) EXPECT_FALSE(f.path().extension() == ".tmp") << f.path();
@@ -169,7 +171,8 @@ std::string unlitWith(const std::string& defines, const std::string& use) {
 TEST_F(Hostile, MacroBombsInATemplateAreRefusedBeforePreprocessing) {
     // 2^40 tokens from 41 chained lines, and from one line of nested calls; glslang has no bound of its own.
     std::string chain = "#define M0 1.0\n";
-    for (int i = 1; i <= 40; ++i) chain += "#define M" + std::to_string(i) + " (M" + std::to_string(i - 1) + " + M" + std::to_string(i - 1) + ")\n";
+    for (int i = 1; i <= 40; ++i)
+        chain += "#define M" + std::to_string(i) + " (M" + std::to_string(i - 1) + " + M" + std::to_string(i - 1) + ")\n";
     std::string nested = "1.0";
     for (int i = 0; i < 40; ++i) nested = "D(" + nested + ")";
     fs::path m = write("m.json", material());
@@ -187,7 +190,8 @@ TEST_F(Hostile, MacroBombsInATemplateAreRefusedBeforePreprocessing) {
 
 TEST_F(Hostile, MacrosWithinTheBoundStillCompile) {
     std::string chain = "#define M0 1.0\n";
-    for (int i = 1; i <= 10; ++i) chain += "#define M" + std::to_string(i) + " (M" + std::to_string(i - 1) + " * 0.5 + M" + std::to_string(i - 1) + " * 0.5)\n";
+    for (int i = 1; i <= 10; ++i)
+        chain += "#define M" + std::to_string(i) + " (M" + std::to_string(i - 1) + " * 0.5 + M" + std::to_string(i - 1) + " * 0.5)\n";
     fs::path t = write("chain.glsl", unlitWith(chain, "float fine = M10;"));
     Outcome o = runBounded(write("m.json", material()).string() + " --template " + t.string() + out());
     EXPECT_EQ(o.exit, 0) << o.err;

@@ -85,7 +85,8 @@ TEST(Validation, DuplicateKeyIsReportedAtTheSecondKey) {
 
 TEST(Validation, MissingTexture) {
     EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/none.png"}]})"),
-              std::vector<std::string>{"materials/t.json:1:67: error[HX120]: /slots/0/texture: texture file not found: materials/textures/none.png"});
+              std::vector<std::string>{
+                  "materials/t.json:1:67: error[HX120]: /slots/0/texture: texture file not found: materials/textures/none.png"});
 }
 
 TEST(Validation, TextureThatIsNotAnImage) {
@@ -102,20 +103,23 @@ TEST(Validation, NormalMapNeedsThreeChannels) {
 
 TEST(Validation, TemplateTypoSuggestsTheBuiltin) {
     EXPECT_EQ(diagnose(std::string(R"({"name": "m", "template": "litt", "slots": [)") + kSlot + "]}"),
-              std::vector<std::string>{"materials/t.json:1:27: error[HX200]: /template: unknown template \"litt\"; expected a built-in "
-                                       "template (`depth`, `lit`, `shadow`, `unlit`, `value`, `weights`) or a path to a .glsl file (did you mean `lit`?)"});
+              std::vector<std::string>{
+                  "materials/t.json:1:27: error[HX200]: /template: unknown template \"litt\"; expected a built-in "
+                  "template (`depth`, `lit`, `shadow`, `unlit`, `value`, `weights`) or a path to a .glsl file (did you mean `lit`?)"});
 }
 
 TEST(Validation, MissingTemplateFile) {
     EXPECT_EQ(diagnose(std::string(R"({"name": "m", "template": "mine.glsl", "slots": [)") + kSlot + "]}"),
-              std::vector<std::string>{"materials/t.json:1:27: error[HX201]: /template: cannot read template file materials/mine.glsl: no such file"});
+              std::vector<std::string>{
+                  "materials/t.json:1:27: error[HX201]: /template: cannot read template file materials/mine.glsl: no such file"});
 }
 
 TEST(Validation, WrongTypes) {
     EXPECT_EQ(diagnose(R"({"name": 3, "slots": {}, "hextiling": {"tiling": "big"}})"),
               (std::vector<std::string>{
                   "materials/t.json:1:10: error[HX105]: /name: expected a string, got a number",
-                  "materials/t.json:1:50: error[HX105]: /hextiling/tiling: expected a number > 0 or an array [u, v] of two numbers > 0, got a string",
+                  "materials/t.json:1:50: error[HX105]: /hextiling/tiling: expected a number > 0 or an array [u, v] of two numbers > 0, "
+                  "got a string",
                   "materials/t.json:1:22: error[HX105]: /slots: expected an array of slots, got an object",
               }));
 }
@@ -123,16 +127,17 @@ TEST(Validation, WrongTypes) {
 TEST(Validation, AllProblemsInAFileAreReported) {
     auto d = diagnose(R"({"name": "m", "hextiling": {"falloff": 2, "exponent": 0},
   "slots": [{"name": "A", "kind": "colour", "texture": "textures/rock_albedo.png", "chanel": "r"}]})");
-    EXPECT_EQ(d, (std::vector<std::string>{
-                     "materials/t.json:1:40: error[HX106]: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 2",
-                     "materials/t.json:1:55: error[HX106]: /hextiling/exponent: expected a number in [1, 64], got 0",
-                     "materials/t.json:2:84: error[HX103]: /slots/0/chanel: unknown key `chanel`; expected `name`, `texture`, `kind`, "
-                     "`channel`, `colorspace`, `flip_y`, `hextiling` or `height_blend` (did you mean `channel`?)",
-                     "materials/t.json:2:22: error[HX108]: /slots/0/name: expected a lower-case identifier of 1-32 characters "
-                     "([a-z][a-z0-9_]*, no `__`), got \"A\" (it becomes the GLSL function hexc_<name>)",
-                     "materials/t.json:2:35: error[HX107]: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got "
-                     "\"colour\" (did you mean `color`?)",
-                 }));
+    EXPECT_EQ(d,
+              (std::vector<std::string>{
+                  "materials/t.json:1:40: error[HX106]: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 2",
+                  "materials/t.json:1:55: error[HX106]: /hextiling/exponent: expected a number in [1, 64], got 0",
+                  "materials/t.json:2:84: error[HX103]: /slots/0/chanel: unknown key `chanel`; expected `name`, `texture`, `kind`, "
+                  "`channel`, `colorspace`, `flip_y`, `hextiling` or `height_blend` (did you mean `channel`?)",
+                  "materials/t.json:2:22: error[HX108]: /slots/0/name: expected a lower-case identifier of 1-32 characters "
+                  "([a-z][a-z0-9_]*, no `__`), got \"A\" (it becomes the GLSL function hexc_<name>)",
+                  "materials/t.json:2:35: error[HX107]: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got "
+                  "\"colour\" (did you mean `color`?)",
+              }));
 }
 
 TEST(Validation, SplitCoordinatesNeedStableMode) {
@@ -143,21 +148,24 @@ TEST(Validation, SplitCoordinatesNeedStableMode) {
 }
 
 TEST(Validation, PerTileTransforms) {
-    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"rotationsteps": 2.5, "scalerange": [0, 2], "offsetsteps": 4, "offset": 2},
+    EXPECT_EQ(
+        diagnose(R"({"name": "m", "hextiling": {"rotationsteps": 2.5, "scalerange": [0, 2], "offsetsteps": 4, "offset": 2},
   "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
-              (std::vector<std::string>{
-                  "materials/t.json:1:66: error[HX106]: /hextiling/scalerange/0: expected a number in [0.01, 100], got 0",
-                  "materials/t.json:1:101: error[HX106]: /hextiling/offset: expected a number in [0, 1], got 2",
-                  "materials/t.json:1:46: error[HX106]: /hextiling/rotationsteps: expected a whole number in 0..360 (0: continuous), got 2.5",
-                  "materials/t.json:1:88: error[HX105]: /hextiling/offsetsteps: expected an array of two numbers in 0..4096 (0: continuous), got a number",
-              }));
+        (std::vector<std::string>{
+            "materials/t.json:1:66: error[HX106]: /hextiling/scalerange/0: expected a number in [0.01, 100], got 0",
+            "materials/t.json:1:101: error[HX106]: /hextiling/offset: expected a number in [0, 1], got 2",
+            "materials/t.json:1:46: error[HX106]: /hextiling/rotationsteps: expected a whole number in 0..360 (0: continuous), got 2.5",
+            "materials/t.json:1:88: error[HX105]: /hextiling/offsetsteps: expected an array of two numbers in 0..4096 (0: continuous), got "
+            "a number",
+        }));
     EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"mode": "paper", "rotationsteps": 4},
   "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
               std::vector<std::string>{"materials/t.json:2:13: error[HX112]: /slots/0: per-tile transforms (rotationrange, rotationsteps, "
                                        "scalerange, offset, offsetsteps) need mode `stable`; mode `paper` is exactly the paper's "
                                        "Listings 2 and 6"});
     ParseResult ok = parseMaterial(R"({"name": "m", "hextiling": {"rotationrange": [0, 360], "rotationsteps": 4, "offsetsteps": [4, 2]},
-  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})", "materials/t.json");
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})",
+                                   "materials/t.json");
     ASSERT_TRUE(ok.material);
     EXPECT_EQ(ok.material->slots[0].hex.rotationSteps, 4);
     EXPECT_EQ(ok.material->slots[0].hex.offsetSteps, (std::array<int, 2>{4, 2}));
@@ -166,13 +174,16 @@ TEST(Validation, PerTileTransforms) {
 
 TEST(Validation, TapsAreOneOrTheMasksCount) {
     // Checked per slot on the merged settings: a material-level mismatch is reported at each slot.
-    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"taps": 2}, "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
-              std::vector<std::string>{"materials/t.json:1:51: error[HX112]: /slots/0: `taps` 2 does not fit mask `hex`, which has 3 taps; "
-                                       "expected 3 or 1 (one dithered fetch)"});
-    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"mask": "noise3"},
+    EXPECT_EQ(
+        diagnose(
+            R"({"name": "m", "hextiling": {"taps": 2}, "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
+        std::vector<std::string>{"materials/t.json:1:51: error[HX112]: /slots/0: `taps` 2 does not fit mask `hex`, which has 3 taps; "
+                                 "expected 3 or 1 (one dithered fetch)"});
+    EXPECT_EQ(
+        diagnose(R"({"name": "m", "hextiling": {"mask": "noise3"},
   "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"taps": 2}}]})"),
-              std::vector<std::string>{"materials/t.json:2:96: error[HX112]: /slots/0/hextiling: `taps` 2 does not fit mask `noise3`, which has "
-                                       "3 taps; expected 3 or 1 (one dithered fetch)"});
+        std::vector<std::string>{"materials/t.json:2:96: error[HX112]: /slots/0/hextiling: `taps` 2 does not fit mask `noise3`, which has "
+                                 "3 taps; expected 3 or 1 (one dithered fetch)"});
     EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"taps": 1.5},
   "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
               std::vector<std::string>{"materials/t.json:1:37: error[HX106]: /hextiling/taps: expected a whole number in 1..3, got 1.5"});
@@ -204,34 +215,40 @@ TEST(Validation, ProjectionAndPlaneSharpnessAreMaterialWide) {
     EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"projection": "triplanar"},
   "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"planesharpness": 8, "projection": "uv"}}]})"),
               (std::vector<std::string>{
-                  "materials/t.json:2:118: error[HX111]: /slots/0/hextiling/projection: `projection` is material-wide (every slot function takes the "
+                  "materials/t.json:2:118: error[HX111]: /slots/0/hextiling/projection: `projection` is material-wide (every slot function "
+                  "takes the "
                   "same inputs); set it in the top-level `hextiling`",
-                  "materials/t.json:2:97: error[HX111]: /slots/0/hextiling/planesharpness: `planesharpness` is material-wide (every slot function "
+                  "materials/t.json:2:97: error[HX111]: /slots/0/hextiling/planesharpness: `planesharpness` is material-wide (every slot "
+                  "function "
                   "takes the same inputs); set it in the top-level `hextiling`",
               }));
-    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"planesharpness": 65}, "slots": [)" + std::string(kSlot) + "]}"),
-              std::vector<std::string>{"materials/t.json:1:47: error[HX106]: /hextiling/planesharpness: expected a number in [1, 64], got 65"});
+    EXPECT_EQ(
+        diagnose(R"({"name": "m", "hextiling": {"planesharpness": 65}, "slots": [)" + std::string(kSlot) + "]}"),
+        std::vector<std::string>{"materials/t.json:1:47: error[HX106]: /hextiling/planesharpness: expected a number in [1, 64], got 65"});
 }
 
 TEST(Validation, SplitCoordinatesWithNoiseMasksOrTriplanar) {
     // Each slot is checked on its merged settings; the checker mask supports split coordinates.
-    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"split_coordinates": true, "mask": "noise3"}, "slots": [
+    EXPECT_EQ(
+        diagnose(R"({"name": "m", "hextiling": {"split_coordinates": true, "mask": "noise3"}, "slots": [
   {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"},
   {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "checker"}},
   {"name": "c", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"split_coordinates": false}}]})"),
-              std::vector<std::string>{"materials/t.json:2:3: error[HX112]: /slots/0: `split_coordinates` does not work with the noise masks: "
-                                       "their copies are transformed about the origin"});
-    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"split_coordinates": true, "projection": "triplanar"}, "slots": [)" +
-                       std::string(kSlot) + "]}"),
-              std::vector<std::string>{"materials/t.json:1:94: error[HX112]: /slots/0: `split_coordinates` does not work with the triplanar "
-                                       "projection: it reads world positions, not uv"});
+        std::vector<std::string>{"materials/t.json:2:3: error[HX112]: /slots/0: `split_coordinates` does not work with the noise masks: "
+                                 "their copies are transformed about the origin"});
+    EXPECT_EQ(
+        diagnose(R"({"name": "m", "hextiling": {"split_coordinates": true, "projection": "triplanar"}, "slots": [)" + std::string(kSlot) +
+                 "]}"),
+        std::vector<std::string>{"materials/t.json:1:94: error[HX112]: /slots/0: `split_coordinates` does not work with the triplanar "
+                                 "projection: it reads world positions, not uv"});
 }
 
 // Stable mode is exact while |u * tiling| < 2^26 (hex) or |uv * tiling| < 2^31 (checker): a tiling that brings
 // that under 2^16 uv warns, unless split coordinates keep uv small; noise masks and paper mode have no such range.
 TEST(Validation, TilingThatBringsStableModesRangeNearWarns) {
-    const char* hint = " (for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin "
-                       "(docs/precision.md#stable-modes-range))";
+    const char* hint =
+        " (for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin "
+        "(docs/precision.md#stable-modes-range))";
     EXPECT_EQ(diagnose(R"({"name": "m", "slots": [
   {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": [2048, 1]}},
   {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 1024}},
@@ -241,31 +258,40 @@ TEST(Validation, TilingThatBringsStableModesRangeNearWarns) {
   {"name": "f", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "mask": "checker"}},
   {"name": "g", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 40000, "mask": "checker"}},
   {"name": "h", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "enabled": false}}]})"),
-              (std::vector<std::string>{"materials/t.json:2:86: warning[HX116]: /slots/0/hextiling: with tiling 2048, stable mode's lattice is exact "
-                                        "only for |u| < 32768 (2^26 / tiling); beyond, tiles come out wrong" + std::string(hint),
-                                        "materials/t.json:8:86: warning[HX116]: /slots/6/hextiling: with tiling 40000, stable mode's checker is "
-                                        "exact only for |uv| < 53687 (2^31 / tiling); beyond, tiles come out wrong" + std::string(hint)}));
+              (std::vector<std::string>{
+                  "materials/t.json:2:86: warning[HX116]: /slots/0/hextiling: with tiling 2048, stable mode's lattice is exact "
+                  "only for |u| < 32768 (2^26 / tiling); beyond, tiles come out wrong" +
+                      std::string(hint),
+                  "materials/t.json:8:86: warning[HX116]: /slots/6/hextiling: with tiling 40000, stable mode's checker is "
+                  "exact only for |uv| < 53687 (2^31 / tiling); beyond, tiles come out wrong" +
+                      std::string(hint)}));
 }
 
 TEST(Validation, HeightBlend) {
     const std::string height = R"({"name": "height", "kind": "scalar", "texture": "textures/rock_roughness.png"})";
     EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png",
-  "height_blend": "height"}, )" + height + "]}"),
+  "height_blend": "height"}, )" +
+                       height + "]}"),
               std::vector<std::string>{"materials/t.json:2:19: error[HX105]: /slots/0/height_blend: expected an object {\"slot\": name, "
                                        "\"width\": number}, got a string"});
     // taps 1 from the slot's own settings; the height slot may come later in the array.
+    EXPECT_EQ(
+        diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png",
+  "hextiling": {"taps": 1}, "height_blend": {"slot": "hieght", "width": 1.5}}, )" +
+                 height + "]}"),
+        (std::vector<std::string>{
+            "materials/t.json:2:73: error[HX106]: /slots/0/height_blend/width: expected a number in (0, 1], got 1.5",
+            "materials/t.json:2:29: error[HX112]: /slots/0/height_blend: `height_blend` needs every tile's height; it cannot be combined "
+            "with `taps` 1",
+            "materials/t.json:2:54: error[HX113]: /slots/0/height_blend/slot: no slot named `hieght` in this material (did you mean "
+            "`height`?)",
+        }));  // Plain tiling has one tile, nothing to weigh.
     EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png",
-  "hextiling": {"taps": 1}, "height_blend": {"slot": "hieght", "width": 1.5}}, )" + height + "]}"),
-              (std::vector<std::string>{
-                  "materials/t.json:2:73: error[HX106]: /slots/0/height_blend/width: expected a number in (0, 1], got 1.5",
-                  "materials/t.json:2:29: error[HX112]: /slots/0/height_blend: `height_blend` needs every tile's height; it cannot be combined "
-                  "with `taps` 1",
-                  "materials/t.json:2:54: error[HX113]: /slots/0/height_blend/slot: no slot named `hieght` in this material (did you mean `height`?)",
-              }));    // Plain tiling has one tile, nothing to weigh.
-    EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png",
-  "hextiling": {"enabled": false}, "height_blend": {"slot": "height"}}, )" + height + "]}"),
-              std::vector<std::string>{"materials/t.json:2:36: error[HX112]: /slots/0/height_blend: `height_blend` weighs tiles, and this slot has "
-                                       "hex-tiling disabled (`enabled`: false)"});
+  "hextiling": {"enabled": false}, "height_blend": {"slot": "height"}}, )" +
+                       height + "]}"),
+              std::vector<std::string>{
+                  "materials/t.json:2:36: error[HX112]: /slots/0/height_blend: `height_blend` weighs tiles, and this slot has "
+                  "hex-tiling disabled (`enabled`: false)"});
 }
 
 TEST(Material, HexTilingDefaults) {
@@ -335,7 +361,8 @@ TEST(Validation, ColumnsCountCharactersNotBytes) {
     // "é" is two bytes in UTF-8; the error column must still be the character column.
     auto d = diagnose(R"({"name": "é", "x": 1, "slots": []})");
     ASSERT_EQ(d.size(), 3u);
-    EXPECT_EQ(d[0], "materials/t.json:1:15: error[HX103]: /x: unknown key `x`; expected `$schema`, `name`, `template`, `hextiling` or `slots`");
+    EXPECT_EQ(d[0],
+              "materials/t.json:1:15: error[HX103]: /x: unknown key `x`; expected `$schema`, `name`, `template`, `hextiling` or `slots`");
 }
 
 TEST(Material, ExamplesParseWithDefaultsAndOverrides) {
@@ -353,7 +380,7 @@ TEST(Material, ExamplesParseWithDefaultsAndOverrides) {
     EXPECT_EQ(m.slots[0].hex.exponent, 7.0);
     EXPECT_EQ(m.slots[1].kind, SlotKind::Normal);
     EXPECT_EQ(m.slots[1].colorSpace, ColorSpace::Linear);
-    EXPECT_EQ(m.slots[1].hex.falloff, 0.5);  // slot override
+    EXPECT_EQ(m.slots[1].hex.falloff, 0.5);                           // slot override
     EXPECT_EQ(m.slots[1].hex.tiling, (std::array<double, 2>{4, 4}));  // inherited
     EXPECT_EQ(m.slots[2].kind, SlotKind::Scalar);
     EXPECT_EQ(m.slots[2].channel, 0);
@@ -379,11 +406,13 @@ TEST(Validation, AScalarSlotReadsOnlyChannelsItsTextureHas) {
                         R"(", "texture": "textures/)" + texture + R"("}]})");
     };
     EXPECT_EQ(scalar("a", "rock_albedo.png"),
-              std::vector<std::string>{"materials/t.json:1:72: error[HX111]: /slots/0/channel: channel `a` of materials/textures/rock_albedo.png, which "
-                                       "has 3 channels; expected `r`, `g` or `b`"});
+              std::vector<std::string>{
+                  "materials/t.json:1:72: error[HX111]: /slots/0/channel: channel `a` of materials/textures/rock_albedo.png, which "
+                  "has 3 channels; expected `r`, `g` or `b`"});
     EXPECT_EQ(scalar("g", "rock_roughness.png"),
-              std::vector<std::string>{"materials/t.json:1:72: error[HX111]: /slots/0/channel: channel `g` of materials/textures/rock_roughness.png, which "
-                                       "has 1 channel; expected `r`"});
+              std::vector<std::string>{
+                  "materials/t.json:1:72: error[HX111]: /slots/0/channel: channel `g` of materials/textures/rock_roughness.png, which "
+                  "has 1 channel; expected `r`"});
     EXPECT_TRUE(scalar("b", "rock_albedo.png").empty());
     EXPECT_TRUE(scalar("r", "rock_roughness.png").empty());
 }

@@ -147,8 +147,9 @@ TEST(Plan, ReferencesBakedConstantsAfterTheBlockMembers) {
 }
 
 TEST(Codegen, ExpandsTokensInOnePass) {
-    EXPECT_EQ(expandTokens("${falloff} ${falloffcontrast}$x ${a}_y", {{"falloff", "f"}, {"falloffcontrast", "c"}, {"a", "${falloff}"}}, "t"),
-              "f c$x ${falloff}_y");
+    EXPECT_EQ(
+        expandTokens("${falloff} ${falloffcontrast}$x ${a}_y", {{"falloff", "f"}, {"falloffcontrast", "c"}, {"a", "${falloff}"}}, "t"),
+        "f c$x ${falloff}_y");
 }
 
 TEST(Codegen, UnknownTokenIsAnInternalError) {
@@ -193,7 +194,8 @@ TEST(Manifest, SlotsOnTheirOwnLatticeHaveTheirOwnMembers) {
     nlohmann::json separate = manifestOf(rock(), perSlot);
     for (const auto& m : separate["parameters"]["members"]) EXPECT_FALSE(m.contains("aliases")) << m.dump();
     names = settableNames(separate);
-    for (const char* slot : {"albedo", "normal", "roughness"}) EXPECT_EQ(names[std::string(slot) + "_tiling"], std::string(slot) + "_tiling");
+    for (const char* slot : {"albedo", "normal", "roughness"})
+        EXPECT_EQ(names[std::string(slot) + "_tiling"], std::string(slot) + "_tiling");
 }
 
 TEST(Manifest, AnEngineSetsASharedSettingByAnySlotsName) {
@@ -219,7 +221,8 @@ TEST(Macros, CountsTheTokensOfTheExpansion) {
 
 TEST(Macros, FindsTheLineWhereTheBoundIsPassed) {
     std::string source = "#define M0 1\n";
-    for (int i = 1; i <= 30; ++i) source += "#define M" + std::to_string(i) + " M" + std::to_string(i - 1) + " M" + std::to_string(i - 1) + "\n";
+    for (int i = 1; i <= 30; ++i)
+        source += "#define M" + std::to_string(i) + " M" + std::to_string(i - 1) + " M" + std::to_string(i - 1) + "\n";
     source += "M21\nM22\n";  // 2^21 tokens, then 2^22 more: 6.3 M in all
     MacroExpansion e = boundMacroExpansion(source);
     EXPECT_EQ(e.tokens, double(1 << 21) + double(1 << 22));

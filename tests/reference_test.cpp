@@ -68,8 +68,7 @@ std::array<double, 3> listing7(std::array<double, 3> W, TileId vertex1, TileId v
     const int vl = v1 > 0 ? (v1 - 1) : 2;
     const int v2 = vertex1[0] < vertex3[0] ? vl : vh;
     const int v3 = vertex1[0] < vertex3[0] ? vh : vl;
-    return {v3 == 0 ? W[2] : (v2 == 0 ? W[1] : W[0]), v3 == 1 ? W[2] : (v2 == 1 ? W[1] : W[0]),
-            v3 == 2 ? W[2] : (v2 == 2 ? W[1] : W[0])};
+    return {v3 == 0 ? W[2] : (v2 == 0 ? W[1] : W[0]), v3 == 1 ? W[2] : (v2 == 1 ? W[1] : W[0]), v3 == 2 ? W[2] : (v2 == 2 ? W[1] : W[0])};
 }
 
 int dominant(const std::array<double, 3>& w) { return int(std::max_element(w.begin(), w.end()) - w.begin()); }
@@ -121,8 +120,7 @@ TEST(ReferenceSampler, RepeatBlendsFirstAndLastTexel) {
         EXPECT_NEAR(tex.sample(-3, t, 1e-6, 0, 0, 1e-6)[0], expected, 1e-15);
     }
     // and vertically: t = 0 lies between the bottom and the top row
-    EXPECT_NEAR(tex.sample(0.125, 0, 1e-6, 0, 0, 1e-6)[0], (tex.texel(0, 0, 0)[0] + tex.texel(0, 0, 3)[0]) / 2,
-                1e-15);
+    EXPECT_NEAR(tex.sample(0.125, 0, 1e-6, 0, 0, 1e-6)[0], (tex.texel(0, 0, 0)[0] + tex.texel(0, 0, 3)[0]) / 2, 1e-15);
 }
 
 TEST(ReferenceSampler, ConstantTextureAtEveryLod) {
@@ -175,16 +173,14 @@ TEST(ReferenceSampler, LodFollowsTheEuclideanGradientLength) {
     // Level 1 and bilinear filtering, computed here from the texture data.
     const auto level0 = [&](int x, int y, int c) { return double(t.rgba32f[size_t(y * 64 + x) * 4 + c]); };
     const auto level1 = [&](int x, int y, int c) {
-        return (level0(2 * x, 2 * y, c) + level0(2 * x + 1, 2 * y, c) + level0(2 * x, 2 * y + 1, c) +
-                level0(2 * x + 1, 2 * y + 1, c)) / 4;
+        return (level0(2 * x, 2 * y, c) + level0(2 * x + 1, 2 * y, c) + level0(2 * x, 2 * y + 1, c) + level0(2 * x + 1, 2 * y + 1, c)) / 4;
     };
     const auto bilinear = [](const std::function<double(int, int)>& texel, int size, double s, double t) {
         const double x = s * size - 0.5, y = t * size - 0.5;
         const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
         const double a = x - x0, b = y - y0;
         const auto at = [&](int i, int j) { return texel(((i % size) + size) % size, ((j % size) + size) % size); };
-        return (1 - a) * (1 - b) * at(x0, y0) + a * (1 - b) * at(x0 + 1, y0) + (1 - a) * b * at(x0, y0 + 1) +
-               a * b * at(x0 + 1, y0 + 1);
+        return (1 - a) * (1 - b) * at(x0, y0) + a * (1 - b) * at(x0 + 1, y0) + (1 - a) * b * at(x0, y0 + 1) + a * b * at(x0 + 1, y0 + 1);
     };
 
     for (int k = 0; k < 200; ++k) {
@@ -216,7 +212,7 @@ TEST(ReferenceSampler, SrgbDecodesBeforeFiltering) {
     t.rgba8 = {188, 188, 188, 188, 0, 0, 0, 0};
     const SampledTexture tex(t);
     const Rgba c = tex.sample(0.25, 0.5, 1e-6, 0, 0, 1e-6);
-    EXPECT_NEAR(c[0], 0.50289, 1e-5);  // ((188/255 + 0.055) / 1.055)^2.4
+    EXPECT_NEAR(c[0], 0.50289, 1e-5);       // ((188/255 + 0.055) / 1.055)^2.4
     EXPECT_NEAR(c[3], 188 / 255.0, 1e-15);  // alpha stays linear
     // halfway between 188 and 0: the mean of the linear values, not the decoded mean of the encoded ones
     EXPECT_NEAR(tex.sample(0.5, 0.5, 1e-6, 0, 0, 1e-6)[0], 0.50289 / 2, 1e-5);
@@ -273,9 +269,9 @@ TEST(ReferenceHash, IsListing2InFloat32) {
 
 TEST(ReferenceGain, IsEquation5) {
     for (double x = 0; x <= 1; x += 1.0 / 64) {
-        EXPECT_NEAR(gain(x, 0.5), x, 1e-15);                          // k = 1
+        EXPECT_NEAR(gain(x, 0.5), x, 1e-15);                                                 // k = 1
         EXPECT_NEAR(gain(x, 0.75), x < 0.5 ? 2 * x * x : 1 - 2 * (1 - x) * (1 - x), 1e-15);  // k = 2
-        EXPECT_NEAR(gain(1 - x, 0.9), 1 - gain(x, 0.9), 1e-15);     // symmetric about (0.5, 0.5)
+        EXPECT_NEAR(gain(1 - x, 0.9), 1 - gain(x, 0.9), 1e-15);                              // symmetric about (0.5, 0.5)
     }
 }
 
@@ -321,8 +317,7 @@ TEST(ReferenceColour, ConstantTextureGivesItsColourEverywhere) {
                 for (int k = 0; k < 100; ++k) {
                     const double g = std::exp2(coord(rng)) / 16;  // magnified to minified
                     const SlotResult r = evaluate(slot, tex, coord(rng), coord(rng), g, 0.3 * g, -0.2 * g, g);
-                    for (size_t c = 0; c < 4; ++c)
-                        EXPECT_NEAR(r.value[c], float(colour[c]), 1e-12);  // the texture stores float32
+                    for (size_t c = 0; c < 4; ++c) EXPECT_NEAR(r.value[c], float(colour[c]), 1e-12);  // the texture stores float32
                     EXPECT_NEAR(r.weights[0] + r.weights[1] + r.weights[2], 1, 1e-12);
                     for (double w : r.weights) EXPECT_GE(w, 0);
                 }
@@ -375,12 +370,8 @@ TEST(ReferenceScalar, WeighsTilesByItsChannel) {
     // Scalar slot on alpha = p versus colour slot on grey (p, p, p), whose luminance is p: same weights.
     const auto p = [](double s, double t) { return 0.5 + 0.4 * std::sin(2 * kPi * s) * std::cos(4 * kPi * t); };
     const auto q = [](double s, double t) { return 0.5 + 0.4 * std::cos(6 * kPi * s + 2 * kPi * t); };
-    const SampledTexture scalarTex(floatTexture(32, 32, [&](double s, double t) {
-        return Rgba{q(s, t), q(s, t), q(s, t), p(s, t)};
-    }));
-    const SampledTexture greyTex(floatTexture(32, 32, [&](double s, double t) {
-        return Rgba{p(s, t), p(s, t), p(s, t), 1};
-    }));
+    const SampledTexture scalarTex(floatTexture(32, 32, [&](double s, double t) { return Rgba{q(s, t), q(s, t), q(s, t), p(s, t)}; }));
+    const SampledTexture greyTex(floatTexture(32, 32, [&](double s, double t) { return Rgba{p(s, t), p(s, t), p(s, t), 1}; }));
     Slot scalar = hexSlot(SlotKind::Scalar), colour = hexSlot(SlotKind::Color);
     scalar.channel = 3;
     std::mt19937 rng(11);
@@ -420,8 +411,7 @@ TEST(ReferenceNormal, RampSlopeTurnsWithEachTile) {
             slot.flipY = flipY;
             slot.hex.rotation = strength;
             const double b = flipY ? -kB : kB;  // green read as pointing down
-            for (TileId v : {TileId{0, 0}, TileId{1, 0}, TileId{3, 5}, TileId{-4, 7}, TileId{-13, -2},
-                             TileId{25, -31}})
+            for (TileId v : {TileId{0, 0}, TileId{1, 0}, TileId{3, 5}, TileId{-4, 7}, TileId{-13, -2}, TileId{25, -31}})
                 for (int k = 0; k < 6; ++k) {
                     const double phi = 0.3 + k * kPi / 3;  // one point in each of the tile's six triangles
                     const Vec2 c = centre(v);
@@ -472,8 +462,7 @@ TEST(ReferenceNormal, MatchesClosedFormNormalMap) {
         const double sum = w[0] + w[1] + w[2];
         const SlotResult r = evaluate(slot, tex, st[0], st[1], 1e-7, 0, 0, 1e-7);
         for (size_t c = 0; c < 2; ++c)
-            EXPECT_NEAR(r.value[c], (w[0] * d[0][c] + w[1] * d[1][c] + w[2] * d[2][c]) / sum, 2e-3)
-                << "st " << st[0] << "," << st[1];
+            EXPECT_NEAR(r.value[c], (w[0] * d[0][c] + w[1] * d[1][c] + w[2] * d[2][c]) / sum, 2e-3) << "st " << st[0] << "," << st[1];
     }
 }
 
@@ -560,8 +549,7 @@ TEST(ReferenceWeights, EachTileKeepsOneColourAndNeighboursDiffer) {
     const Slot slot = hexSlot(SlotKind::Color);
     const auto colourNear = [&](TileId v, double phi) {
         const Vec2 c = centre(v);
-        const SlotResult r = evaluate(slot, tex, c[0] + 0.02 * std::cos(phi), c[1] + 0.02 * std::sin(phi), 0.01,
-                                      0, 0, 0.01);
+        const SlotResult r = evaluate(slot, tex, c[0] + 0.02 * std::cos(phi), c[1] + 0.02 * std::sin(phi), 0.01, 0, 0, 0.01);
         return dominant(r.weights);
     };
     for (TileId v : {TileId{0, 0}, TileId{2, -1}, TileId{-7, -3}, TileId{10, 4}}) {
@@ -754,7 +742,7 @@ TEST(ReferenceChecker, WeightsVanishOnTheirOwnBordersSoTheValueIsContinuous) {
         const int grid = k % 2;
         const size_t axis = size_t(k / 2 % 2);
         Vec2 st{coord(rng), coord(rng)};
-        st[axis] = (border(rng) + 0.5 * grid) / 3;  // on a border of `grid` across `axis`
+        st[axis] = (border(rng) + 0.5 * grid) / 3;                   // on a border of `grid` across `axis`
         if (taper(checkerCell(st, 3, 1 - grid).f) < 0.05) continue;  // near a crossing
         Vec2 lo = st, hi = st;
         lo[axis] -= 1e-7;
@@ -843,7 +831,8 @@ TEST(ReferenceNoise, ValueNoiseIsHashedAtCellCornersWithAQuinticFade) {
                     const double ms = maskScale;
                     EXPECT_NEAR(valueNoise({x / ms, y / ms}, maskScale, salt), corner(x, y, salt), 1e-12) << x << "," << y;
                     // Halfway the fade is 1/2: the mean of the cell's corners; at a quarter it is 0.103515625.
-                    const double mean = (corner(x, y, salt) + corner(x + 1, y, salt) + corner(x, y + 1, salt) + corner(x + 1, y + 1, salt)) / 4;
+                    const double mean =
+                        (corner(x, y, salt) + corner(x + 1, y, salt) + corner(x, y + 1, salt) + corner(x + 1, y + 1, salt)) / 4;
                     EXPECT_NEAR(valueNoise({(x + 0.5) / ms, (y + 0.5) / ms}, maskScale, salt), mean, 1e-12);
                     EXPECT_NEAR(valueNoise({(x + 0.25) / ms, y / ms}, maskScale, salt),
                                 corner(x, y, salt) + 0.103515625 * (corner(x + 1, y, salt) - corner(x, y, salt)), 1e-12);
@@ -1006,7 +995,8 @@ TEST(ReferenceHeightBlend, IsTheDocumentedFormulaAtEachTilesSample) {
                 for (size_t i = 0; i < 3; ++i) sum += expected[i] = r.blend[i] * std::max(a[i] - top + width, 0.0);
                 for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(h.blend[i], expected[i] / sum, 1e-12);
                 for (size_t c = 0; c < 4; ++c)
-                    EXPECT_NEAR(h.value[c], h.blend[0] * r.samples[0][c] + h.blend[1] * r.samples[1][c] + h.blend[2] * r.samples[2][c], 1e-12);
+                    EXPECT_NEAR(h.value[c], h.blend[0] * r.samples[0][c] + h.blend[1] * r.samples[1][c] + h.blend[2] * r.samples[2][c],
+                                1e-12);
                 EXPECT_NEAR(h.blend[0] + h.blend[1] + h.blend[2], 1, 1e-12);
                 if (mask == Mask::Checker) {
                     EXPECT_EQ(h.blend[2], 0);
@@ -1033,7 +1023,8 @@ TEST(ReferenceHeightBlend, FlatHeightsKeepTheLinearBlend) {
         const HeightSource source{&flat, 0, width};
         for (int k = 0; k < 200; ++k) {
             const Vec2 st{coord(rng), coord(rng)};
-            const SlotResult r = evaluateAt(plain, tex, st, {0.01, 0}, {0, 0.01}), h = evaluateAt(blended, tex, st, {0.01, 0}, {0, 0.01}, {0, 0}, &source);
+            const SlotResult r = evaluateAt(plain, tex, st, {0.01, 0}, {0, 0.01}),
+                             h = evaluateAt(blended, tex, st, {0.01, 0}, {0, 0.01}, {0, 0}, &source);
             for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(h.blend[i], r.blend[i], 1e-15);
             for (size_t c = 0; c < 4; ++c) EXPECT_NEAR(h.value[c], r.value[c], 1e-15);
         }
@@ -1115,7 +1106,8 @@ TEST(ReferenceTriplanar, AxisNormalsAreTheUvEvaluationOfTheirPlane) {
             const SampledTexture& tex = kind == SlotKind::Color ? colour : normalMap;
             for (int k = 0; k < 60; ++k) {
                 const size_t axis = size_t(k % 3);
-                const Vec3 P{coord(rng), coord(rng), coord(rng)}, dPdx{grad(rng), grad(rng), grad(rng)}, dPdy{grad(rng), grad(rng), grad(rng)};
+                const Vec3 P{coord(rng), coord(rng), coord(rng)}, dPdx{grad(rng), grad(rng), grad(rng)},
+                    dPdy{grad(rng), grad(rng), grad(rng)};
                 Vec3 N{0, 0, 0};
                 N[axis] = k % 2 ? 2.5 : -0.5;  // any length, either side
                 const auto [s, t] = kPlane[axis];
@@ -1237,7 +1229,8 @@ TEST(ReferenceTriplanar, PreviewSphereIsTheUnitSphereWithItsGradients) {
         // Central differences along the screen directions.
         const double h = 1e-5;
         const auto diff = [&](double du, double dv) {
-            const Vec3 a = previewSphere(u + h * du, v + h * dv, 0, 0, 0, 0).position, b = previewSphere(u - h * du, v - h * dv, 0, 0, 0, 0).position;
+            const Vec3 a = previewSphere(u + h * du, v + h * dv, 0, 0, 0, 0).position,
+                       b = previewSphere(u - h * du, v - h * dv, 0, 0, 0, 0).position;
             return Vec3{(a[0] - b[0]) / (2 * h), (a[1] - b[1]) / (2 * h), (a[2] - b[2]) / (2 * h)};
         };
         near(p.dPdx, diff(dudx, dvdx), 1e-9);

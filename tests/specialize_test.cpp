@@ -64,7 +64,8 @@ TEST(Specialize, GainAtOneHalfIsLeftOut) {
 
 TEST(Specialize, NoFalloffMetricAtFalloffContrastZero) {
     // The normal path's metric is sqrt(|d|^2 / (1 + |d|^2)) of the three tiles.
-    auto metric = spirv(oneSlot("normal", kNormal, R"("falloffcontrast": 0.6)")), none = spirv(oneSlot("normal", kNormal, R"("falloffcontrast": 0)"));
+    auto metric = spirv(oneSlot("normal", kNormal, R"("falloffcontrast": 0.6)")),
+         none = spirv(oneSlot("normal", kNormal, R"("falloffcontrast": 0)"));
     EXPECT_EQ(count(metric, "Sqrt"), 1u);  // one vec3 Sqrt for the three tiles
     EXPECT_EQ(count(none, "Sqrt"), 0u);
 }
@@ -91,8 +92,12 @@ TEST(Specialize, PlainSlotSamplesOnce) {
 
 TEST(Specialize, WeightsOnlyWhenAsked) {
     // Listing 7's colour index is the shader's only integer remainder.
-    EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, "", "value")), "OpSMod") + count(spirv(oneSlot("color", kAlbedo, "", "value")), "OpSRem"), 0u);
-    EXPECT_GT(count(spirv(oneSlot("color", kAlbedo, "", "weights")), "OpSMod") + count(spirv(oneSlot("color", kAlbedo, "", "weights")), "OpSRem"), 0u);
+    EXPECT_EQ(
+        count(spirv(oneSlot("color", kAlbedo, "", "value")), "OpSMod") + count(spirv(oneSlot("color", kAlbedo, "", "value")), "OpSRem"),
+        0u);
+    EXPECT_GT(
+        count(spirv(oneSlot("color", kAlbedo, "", "weights")), "OpSMod") + count(spirv(oneSlot("color", kAlbedo, "", "weights")), "OpSRem"),
+        0u);
 }
 
 TEST(Specialize, UnusedSettingsAreNotParameters) {
@@ -114,8 +119,8 @@ TEST(SharedLattice, OneLatticeForSlotsWithTheSameTilingAndRotation) {
     auto shared = spirv(rock), separate = spirv(rock, perSlot);
     std::printf("  rock.json: %zu SPIR-V words with a shared lattice, %zu with one per slot; Sin %zu vs %zu\n", shared.size(),
                 separate.size(), count(shared, "Sin"), count(separate, "Sin"));
-    EXPECT_EQ(count(shared, "Sin"), 3u);    // three tiles, once
-    EXPECT_EQ(count(separate, "Sin"), 9u);  // three tiles for each of three slots
+    EXPECT_EQ(count(shared, "Sin"), 3u);                       // three tiles, once
+    EXPECT_EQ(count(separate, "Sin"), 9u);                     // three tiles for each of three slots
     EXPECT_EQ(count(shared, "OpImageSampleExplicitLod"), 9u);  // the fetches stay per slot
     EXPECT_LT(shared.size(), separate.size());
 }
@@ -127,7 +132,7 @@ TEST(Bake, SettingsFoldIntoTheCode) {
     CompileResult r = compile(rock, baked);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
     EXPECT_EQ(count(r.spirv, "OpSpecConstant"), 0u);  // frozen
-    EXPECT_EQ(count(r.spirv, "Log"), 0u);            // the gain's exponent is a constant now
+    EXPECT_EQ(count(r.spirv, "Log"), 0u);             // the gain's exponent is a constant now
     std::string manifest;
     for (const auto& f : r.files)
         if (f.name.ends_with(".manifest.json")) manifest = f.contents;
@@ -192,8 +197,10 @@ TEST(SharedLattice, SharingAndBakingChangeNoPixel) {
     perSlot.shareLattice = false;
     baked.bake = true;
     Image shared = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Shaded, "", view);
-    Image separate = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, perSlot);
-    Image folded = vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, baked);
+    Image separate =
+        vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, perSlot);
+    Image folded =
+        vk::render(*runner(&whyNoVulkan), rock, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, baked);
     EXPECT_EQ(vk::compareImages(shared, separate, 4).max, 0.0);  // the same arithmetic, done once
     // Folding constants may reassociate a few float operations: a handful of roundings of values near 1.
     double e = vk::compareImages(shared, folded, 4).max;

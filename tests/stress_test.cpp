@@ -27,8 +27,10 @@ const std::filesystem::path kWork = std::filesystem::temp_directory_path() / "he
 // error), 1/255 is the requirement up to |uv| = 1e6.
 TEST(Precision, StableModeStaysWithinOne255UpTo1e6) {
     REQUIRE_VULKAN();
-    auto stable = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Stable, vk::Placement::Direct, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
-    auto paper = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Paper, vk::Placement::Direct, {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
+    auto stable = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Stable, vk::Placement::Direct,
+                                       {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
+    auto paper = vk::measurePrecision(*runner(&whyNoVulkan), kProbe, kWork, HashMode::Paper, vk::Placement::Direct,
+                                      {1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7});
     std::vector<vk::PrecisionRow> all = stable;
     all.insert(all.end(), paper.begin(), paper.end());
     std::printf("%s", vk::precisionTable(all).c_str());  // paper mode is reported, not required
@@ -100,30 +102,53 @@ std::vector<Input> extremeInputs() {
     };
     auto hash = [](int x, int y) { return float((x * 73856093 ^ y * 19349663) % 1000) / 1000.0f; };
     return {
-        {"black", "color", write("black", floatTexture(16, [](int, int) { return std::array<float, 4>{0, 0, 0, 1}; }))},
-        {"white", "color", write("white", floatTexture(16, [](int, int) { return std::array<float, 4>{1, 1, 1, 1}; }))},
-        {"hdr", "color", write("hdr", floatTexture(16, [&](int x, int y) {
-             float h = hash(x, y);
-             return std::array<float, 4>{h * 1e4f - 50.0f, (x % 2 ? -3.0f : 1e4f), h, 1};
-         }))},
+        {"black", "color",
+         write("black", floatTexture(16,
+                                     [](int, int) {
+                                         return std::array<float, 4>{0, 0, 0, 1};
+                                     }))},
+        {"white", "color",
+         write("white", floatTexture(16,
+                                     [](int, int) {
+                                         return std::array<float, 4>{1, 1, 1, 1};
+                                     }))},
+        {"hdr", "color",
+         write("hdr", floatTexture(16,
+                                   [&](int x, int y) {
+                                       float h = hash(x, y);
+                                       return std::array<float, 4>{h * 1e4f - 50.0f, (x % 2 ? -3.0f : 1e4f), h, 1};
+                                   }))},
         {"rock", "color", "materials/textures/rock_albedo.png"},
         {"normal_rock", "normal", "materials/textures/rock_normal.png"},
         // n * 0.5 + 0.5 with z <= 0 (pointing into the surface), the zero vector, and non-unit vectors.
-        {"normal_z_negative", "normal", write("normal_z_negative", floatTexture(16, [&](int x, int y) {
-             return std::array<float, 4>{hash(x, y), 0.5f, y % 2 ? 0.5f : 0.2f, 1};
-         }))},
-        {"normal_zero", "normal", write("normal_zero", floatTexture(16, [](int, int) { return std::array<float, 4>{0.5f, 0.5f, 0.5f, 1}; }))},
-        {"normal_non_unit", "normal", write("normal_non_unit", floatTexture(16, [&](int x, int y) {
-             float s = x % 2 ? 3.0f : 0.01f;
-             return std::array<float, 4>{0.5f + s * (hash(x, y) - 0.5f), 0.5f + s * 0.1f, 0.5f + s * 0.4f, 1};
-         }))},
+        {"normal_z_negative", "normal",
+         write("normal_z_negative", floatTexture(16,
+                                                 [&](int x, int y) {
+                                                     return std::array<float, 4>{hash(x, y), 0.5f, y % 2 ? 0.5f : 0.2f, 1};
+                                                 }))},
+        {"normal_zero", "normal",
+         write("normal_zero", floatTexture(16,
+                                           [](int, int) {
+                                               return std::array<float, 4>{0.5f, 0.5f, 0.5f, 1};
+                                           }))},
+        {"normal_non_unit", "normal",
+         write("normal_non_unit",
+               floatTexture(16,
+                            [&](int x, int y) {
+                                float s = x % 2 ? 3.0f : 0.01f;
+                                return std::array<float, 4>{0.5f + s * (hash(x, y) - 0.5f), 0.5f + s * 0.1f, 0.5f + s * 0.4f, 1};
+                            }))},
     };
 }
 
 const char* kExtremeSettings[] = {
-    R"("falloff": 0.000001)", R"("falloff": 0.01)", R"("falloff": 0.5)", R"("falloff": 0.99)", R"("falloff": 0.999999)",
-    R"("exponent": 1)", R"("exponent": 7)", R"("exponent": 64)", R"("falloffcontrast": 0)", R"("falloffcontrast": 1)",
-    R"("rotation": 0)", R"("rotation": 1)", R"("rotation": 25)", R"("falloffcontrast": 1, "exponent": 64, "falloff": 0.999999)",
+    R"("falloff": 0.000001)",  R"("falloff": 0.01)",
+    R"("falloff": 0.5)",       R"("falloff": 0.99)",
+    R"("falloff": 0.999999)",  R"("exponent": 1)",
+    R"("exponent": 7)",        R"("exponent": 64)",
+    R"("falloffcontrast": 0)", R"("falloffcontrast": 1)",
+    R"("rotation": 0)",        R"("rotation": 1)",
+    R"("rotation": 25)",       R"("falloffcontrast": 1, "exponent": 64, "falloff": 0.999999)",
 };
 
 // Views: ordinary, zero gradients (a zero-size rectangle), huge gradients (1e4 uv across 32 pixels).
@@ -153,7 +178,8 @@ TEST(Extremes, OutputsStayFiniteNormalisedAndInRange) {
                 ParseResult parsed = parseMaterial(R"({"name": "extreme", "slots": [)" + slot + "]}", kWork / "extreme.json");
                 ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
                 const Material& m = *parsed.material;
-                Image value = vk::render(*runner(&whyNoVulkan), m, normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo, "", view);
+                Image value =
+                    vk::render(*runner(&whyNoVulkan), m, normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo, "", view);
                 Image weights = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view);
                 renders += 2;
                 for (size_t p = 0; p < value.rgba.size(); p += 4) {
@@ -175,8 +201,8 @@ TEST(Extremes, OutputsStayFiniteNormalisedAndInRange) {
                 }
             }
     }
-    std::printf("  %zu renders: largest |sum of weights - 1| %.2e (bound %.2e); colour never left its texture's range\n", renders,
-                worstSum, 8 * eps);
+    std::printf("  %zu renders: largest |sum of weights - 1| %.2e (bound %.2e); colour never left its texture's range\n", renders, worstSum,
+                8 * eps);
     EXPECT_LE(worstSum, 8 * eps);
 }
 
@@ -186,8 +212,11 @@ TEST(Extremes, OutputsStayFiniteNormalisedAndInRange) {
 // must agree exactly and the colour to float32 rounding of the blend (8 roundings of 1).
 TEST(CrossTarget, StableModePicksTheSameTilesOnEveryTarget) {
     REQUIRE_VULKAN();
-    Material m = *parseMaterial(R"({"name": "x", "slots": [{"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}}]})",
-                                "materials/x.json").material;
+    Material m =
+        *parseMaterial(
+             R"({"name": "x", "slots": [{"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}}]})",
+             "materials/x.json")
+             .material;
     for (double x : {0.0, 1e3, 1e5, 1e6}) {
         View view{48, 48, {x, x, x + 0.2, x + 0.2}};
         Image w0 = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view, vk::ExecutedTarget::Spirv);

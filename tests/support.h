@@ -47,9 +47,9 @@ inline std::string runHexcStdout(const std::string& args) {
 }  // namespace hexc::test
 
 // Without a Vulkan device a test skips with the reason, unless HEXC_REQUIRE_VULKAN is set (CI), where it fails.
-#define REQUIRE_VULKAN()                                                                        \
-    std::string whyNoVulkan;                                                                    \
-    if (!hexc::test::runner(&whyNoVulkan)) {                                                    \
+#define REQUIRE_VULKAN()                                                                       \
+    std::string whyNoVulkan;                                                                   \
+    if (!hexc::test::runner(&whyNoVulkan)) {                                                   \
         if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << "no Vulkan device: " << whyNoVulkan; \
-        GTEST_SKIP() << "no Vulkan device: " << whyNoVulkan;                                    \
+        GTEST_SKIP() << "no Vulkan device: " << whyNoVulkan;                                   \
     }

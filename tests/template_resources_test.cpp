@@ -19,9 +19,11 @@ using json = nlohmann::json;
 namespace {
 
 CompileResult compileEngine(const std::string& templ = "materials/templates/engine.glsl", const std::string& extraSlot = "") {
-    std::string text = R"({"name": "engine_rock", "template": ")" + std::filesystem::absolute(templ).string() + R"(", "hextiling": {"tiling": 4},
+    std::string text = R"({"name": "engine_rock", "template": ")" + std::filesystem::absolute(templ).string() +
+                       R"(", "hextiling": {"tiling": 4},
         "slots": [{"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"},
-                  {"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"})" + extraSlot + "]}";
+                  {"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"})" +
+                       extraSlot + "]}";
     ParseResult parsed = parseMaterial(text, "materials/engine_rock.json");
     if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
     return compile(*parsed.material);
@@ -72,7 +74,8 @@ TEST(TemplateResources, TheManifestSaysWhereEachTargetPutThem) {
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
     json m = json::parse(file(r, "engine_rock.manifest.json"));
     std::string hlsl = file(r, "engine_rock.frag.hlsl"), msl = file(r, "engine_rock.frag.metal"), glsl = file(r, "engine_rock.frag.glsl");
-    for (const std::string target : {"spirv", "hlsl", "glsl", "msl"}) ASSERT_EQ(m["targets"][target]["template_resources"].size(), 7u) << target;
+    for (const std::string target : {"spirv", "hlsl", "glsl", "msl"})
+        ASSERT_EQ(m["targets"][target]["template_resources"].size(), 7u) << target;
     for (const json& res : m["targets"]["hlsl"]["template_resources"]) {
         std::string name = res["name"];
         // The declaration of `name` carries the register the manifest gives (cbuffers by their block name).
@@ -86,12 +89,15 @@ TEST(TemplateResources, TheManifestSaysWhereEachTargetPutThem) {
     for (const json& res : m["targets"]["msl"]["template_resources"]) {
         std::string name = res["name"], what = res.contains("buffer") ? "buffer" : res.contains("texture") ? "texture" : "sampler";
         int index = res[what].get<int>();
-        EXPECT_TRUE(std::regex_search(msl, std::regex("\\b" + name + "\\b[^,)]*\\[\\[" + what + "\\(" + std::to_string(index) + "\\)\\]\\]"))) << name;
+        EXPECT_TRUE(
+            std::regex_search(msl, std::regex("\\b" + name + "\\b[^,)]*\\[\\[" + what + "\\(" + std::to_string(index) + "\\)\\]\\]")))
+            << name;
     }
     for (const json& res : m["targets"]["glsl"]["template_resources"]) {
         if (!res.contains("texture_unit") || res["kind"] == "image") continue;  // combined images keep the image's name
         std::string name = res["name"];
-        EXPECT_TRUE(std::regex_search(glsl, std::regex("binding = " + std::to_string(res["texture_unit"].get<int>()) + "\\) uniform \\w+ " + name + ";")))
+        EXPECT_TRUE(std::regex_search(
+            glsl, std::regex("binding = " + std::to_string(res["texture_unit"].get<int>()) + "\\) uniform \\w+ " + name + ";")))
             << name;
     }
     // hexc's own resources keep their documented places.
@@ -104,8 +110,8 @@ TEST(TemplateResources, TheHlslOutputCompilesAgain) {
     CompileResult r = compileEngine();
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
     json m = json::parse(file(r, "engine_rock.manifest.json"));
-    SpirvResult again = compileToSpirv(file(r, "engine_rock.frag.hlsl"), ShaderStage::Fragment, "engine_rock.frag.hlsl", SourceLanguage::Hlsl,
-                                       m["targets"]["hlsl"]["entry_point"]);
+    SpirvResult again = compileToSpirv(file(r, "engine_rock.frag.hlsl"), ShaderStage::Fragment, "engine_rock.frag.hlsl",
+                                       SourceLanguage::Hlsl, m["targets"]["hlsl"]["entry_point"]);
     EXPECT_FALSE(again.words.empty()) << formatAll(again.diagnostics);
 }
 

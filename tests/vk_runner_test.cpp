@@ -58,11 +58,12 @@ std::string readFile(const std::filesystem::path& file) {
 
 // A fragment shader body over the fixed interface: v_uv in, o_color out, set 0 as documented in runner.h.
 std::vector<uint32_t> fragment(const std::string& declarations, const std::string& body) {
-    return compileGlsl("#version 450\n"
-                       "layout(location = 0) in vec2 v_uv;\n"
-                       "layout(location = 0) out vec4 o_color;\n" +
-                           declarations + "\nvoid main() {\n" + body + "\n}\n",
-                       EShLangFragment);
+    return compileGlsl(
+        "#version 450\n"
+        "layout(location = 0) in vec2 v_uv;\n"
+        "layout(location = 0) out vec4 o_color;\n" +
+            declarations + "\nvoid main() {\n" + body + "\n}\n",
+        EShLangFragment);
 }
 
 const char* kTextureDeclarations =
@@ -128,11 +129,12 @@ TEST_F(VkRunnerTest, UvMatchesPixelCentreMapping) {
 }
 
 TEST_F(VkRunnerTest, NormalAndTangentAreConstant) {
-    const Image image = runner_->render(request(fragment("layout(location = 1) in vec3 v_normal;\n"
-                                                         "layout(location = 2) in vec4 v_tangent;\n",
-                                                         "o_color = vec4(v_normal.z, v_tangent.xw, v_normal.x + "
-                                                         "v_normal.y + v_tangent.y + v_tangent.z);"),
-                                                2, 2))
+    const Image image = runner_
+                            ->render(request(fragment("layout(location = 1) in vec3 v_normal;\n"
+                                                      "layout(location = 2) in vec4 v_tangent;\n",
+                                                      "o_color = vec4(v_normal.z, v_tangent.xw, v_normal.x + "
+                                                      "v_normal.y + v_tangent.y + v_tangent.z);"),
+                                             2, 2))
                             .image;
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {
@@ -155,8 +157,7 @@ Texture texture8(int width, int height, bool srgb) {
 
 TEST_F(VkRunnerTest, TexelCentresSampleExactTexels) {
     const Texture texture = texture8(4, 4, false);
-    RenderRequest r = request(fragment(kTextureDeclarations, "o_color = textureLod(sampler2D(tex, samp), v_uv, 0.0);"),
-                              4, 4);
+    RenderRequest r = request(fragment(kTextureDeclarations, "o_color = textureLod(sampler2D(tex, samp), v_uv, 0.0);"), 4, 4);
     r.textures = {&texture};
     const Image image = runner_->render(r).image;
     for (int y = 0; y < 4; ++y)
@@ -169,8 +170,7 @@ TEST_F(VkRunnerTest, TexelCentresSampleExactTexels) {
 TEST_F(VkRunnerTest, SrgbTexturesDecodeToLinear) {
     Texture texture = texture8(2, 2, true);
     std::fill(texture.rgba8.begin(), texture.rgba8.end(), uint8_t(128));
-    RenderRequest r = request(fragment(kTextureDeclarations, "o_color = textureLod(sampler2D(tex, samp), v_uv, 0.0);"),
-                              2, 2);
+    RenderRequest r = request(fragment(kTextureDeclarations, "o_color = textureLod(sampler2D(tex, samp), v_uv, 0.0);"), 2, 2);
     r.textures = {&texture};
     const Image image = runner_->render(r).image;
     const double linear = std::pow((128 / 255.0 + 0.055) / 1.055, 2.4);
@@ -185,17 +185,15 @@ TEST_F(VkRunnerTest, MipLevelsAreBoxAverages) {
     for (int i = 0; i < 64; ++i) texture.rgba32f.push_back(float(i % 7) * 0.125f + float(i / 4) * 0.01f);
     auto texel = [&](int x, int y, int c) { return double(texture.rgba32f[(y * 4 + x) * 4 + c]); };
 
-    RenderRequest r = request(fragment(kTextureDeclarations,
-                                       "o_color = textureLod(sampler2D(tex, samp), v_uv, params.lod);"),
-                              2, 2);
+    RenderRequest r = request(fragment(kTextureDeclarations, "o_color = textureLod(sampler2D(tex, samp), v_uv, params.lod);"), 2, 2);
     r.textures = {&texture};
     r.uniformData = uniformFloats({1.0f});
     const Image level1 = runner_->render(r).image;  // 2x2 pixels land on the 2x2 level's texel centres
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x)
             for (int c = 0; c < 4; ++c) {
-                const double box = (texel(2 * x, 2 * y, c) + texel(2 * x + 1, 2 * y, c) +
-                                    texel(2 * x, 2 * y + 1, c) + texel(2 * x + 1, 2 * y + 1, c)) / 4;
+                const double box =
+                    (texel(2 * x, 2 * y, c) + texel(2 * x + 1, 2 * y, c) + texel(2 * x, 2 * y + 1, c) + texel(2 * x + 1, 2 * y + 1, c)) / 4;
                 EXPECT_NEAR(level1.at(x, y)[c], box, 1e-6) << "level 1 texel " << x << "," << y;
             }
 
@@ -210,9 +208,8 @@ TEST_F(VkRunnerTest, MipLevelsAreBoxAverages) {
 }
 
 TEST_F(VkRunnerTest, UniformDataReachesShader) {
-    RenderRequest r = request(fragment("layout(set = 0, binding = 0, std140) uniform Params { vec4 a; vec4 b; } p;",
-                                       "o_color = p.a * p.b;"),
-                              3, 2);
+    RenderRequest r =
+        request(fragment("layout(set = 0, binding = 0, std140) uniform Params { vec4 a; vec4 b; } p;", "o_color = p.a * p.b;"), 3, 2);
     r.uniformData = uniformFloats({0.5f, -2.0f, 0.25f, 8.0f, 3.0f, 0.5f, -4.0f, 0.125f});
     const Image image = runner_->render(r).image;
     const float expected[4] = {1.5f, -1.0f, -1.0f, 1.0f};
@@ -222,9 +219,8 @@ TEST_F(VkRunnerTest, UniformDataReachesShader) {
 }
 
 TEST_F(VkRunnerTest, EmptyUniformDataReadsZeros) {
-    RenderRequest r = request(fragment("layout(set = 0, binding = 0, std140) uniform Params { vec4 a; } p;",
-                                       "o_color = p.a + vec4(0.0, 0.0, 0.0, 1.0);"),
-                              1, 1);
+    RenderRequest r = request(
+        fragment("layout(set = 0, binding = 0, std140) uniform Params { vec4 a; } p;", "o_color = p.a + vec4(0.0, 0.0, 0.0, 1.0);"), 1, 1);
     const Image image = runner_->render(r).image;
     EXPECT_EQ(image.at(0, 0)[0], 0.0f);
     EXPECT_EQ(image.at(0, 0)[3], 1.0f);
@@ -247,9 +243,8 @@ TEST_F(VkRunnerTest, TimedFramesReturnPositiveDurations) {
 // valgrind/ASan, or by watching memory) leave nothing behind.
 TEST_F(VkRunnerTest, RepeatedRendersAreIdentical) {
     const Texture texture = texture8(16, 8, false);
-    RenderRequest r = request(fragment(kTextureDeclarations,
-                                       "o_color = textureLod(sampler2D(tex, samp), v_uv * 1.7, params.lod);"),
-                              16, 16);
+    RenderRequest r =
+        request(fragment(kTextureDeclarations, "o_color = textureLod(sampler2D(tex, samp), v_uv * 1.7, params.lod);"), 16, 16);
     r.textures = {&texture, &texture};
     r.uniformData = uniformFloats({0.6f});
     const Image first = runner_->render(r).image;

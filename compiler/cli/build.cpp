@@ -31,7 +31,7 @@ struct Job {
 
 struct SceneSummary {
     Scene scene;
-    std::vector<std::string> variants;   // in the scene (after --variant filtering)
+    std::vector<std::string> variants;  // in the scene (after --variant filtering)
 };
 
 // Why a requested variant "<material>.<pass>" is not in any scene given.
@@ -95,7 +95,8 @@ Inputs readInputs(const Arguments& a) {
             continue;
         }
         ParseResult parsed = text ? parseMaterial(*text, path) : ParseResult{};
-        if (!text) parsed.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {path.string()}, "", "cannot read material file: " + why));
+        if (!text)
+            parsed.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {path.string()}, "", "cannot read material file: " + why));
         if (!printDiagnostics(parsed.diagnostics, a.quiet) || !parsed.material) {
             in.failed = true;
             continue;
@@ -166,8 +167,10 @@ void addVariantFiles(const Job& j, std::set<std::string>& sceneShaders, Outputs&
     out.deduplicated += fresh ? 0 : 1;
     for (OutputFile f : j.result.files) {
         bool manifest = f.name.ends_with(".manifest.json");
-        if (manifest) f.contents = renamedManifest(f.contents, j.material.name, stem);
-        else f.name = stem + f.name.substr(j.material.name.size());
+        if (manifest)
+            f.contents = renamedManifest(f.contents, j.material.name, stem);
+        else
+            f.name = stem + f.name.substr(j.material.name.size());
         written.push_back(f.name);
         if (manifest || fresh) out.files.push_back(std::move(f));
     }

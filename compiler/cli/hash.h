@@ -30,7 +30,8 @@ public:
     std::string hex(size_t digits = 32) const {
         XXH128_hash_t h = XXH3_128bits_digest(&state_);
         char buf[33];
-        std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(h.high64), static_cast<unsigned long long>(h.low64));
+        std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
+                      static_cast<unsigned long long>(h.low64));
         return std::string(buf, digits);
     }
 

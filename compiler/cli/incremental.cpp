@@ -53,7 +53,8 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     // shaders as they are.
     for (const Slot& s : material.slots) h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height));
     addFile(h, material.sourceFile);
-    if (std::string t = options.templateFile.empty() ? material.templateName : options.templateFile.string(); t.ends_with(".glsl")) addFile(h, t);
+    if (std::string t = options.templateFile.empty() ? material.templateName : options.templateFile.string(); t.ends_with(".glsl"))
+        addFile(h, t);
     for (const auto& f : extra) addFile(h, f);
     // Built-in templates are part of the binary; hash their text too, not only the version.
     for (const std::string& f : {std::string("hextiling.glsl"), std::string("slots.glsl"), material.templateName + ".glsl"})

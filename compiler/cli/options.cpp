@@ -33,7 +33,8 @@ const char* const kExitCodes = R"(Exit codes:
 
 // Fills the compile options from the checked names of --targets, --glsl-version and --msl-version.
 void applyNames(const std::vector<std::string>& targets, const std::string& glsl, const std::string& msl, CompileOptions& o) {
-    static const std::map<std::string, Target> names = {{"spirv", Target::Spirv}, {"hlsl", Target::Hlsl}, {"glsl", Target::Glsl}, {"msl", Target::Msl}};
+    static const std::map<std::string, Target> names = {
+        {"spirv", Target::Spirv}, {"hlsl", Target::Hlsl}, {"glsl", Target::Glsl}, {"msl", Target::Msl}};
     if (!targets.empty()) o.targets.clear();
     for (const std::string& t : targets) o.targets.push_back(names.at(t));
     if (!glsl.empty()) {
@@ -84,17 +85,21 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     app.add_option("--msl-version", msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
     app.add_flag("--bake", a.options.bake,
                  "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
-    app.add_flag_callback("--no-specialize", [&] { a.options.specialize = false; },
-                          "emit every feature even when a setting turns it off; the uniforms decide");
-    app.add_flag_callback("--no-shared-lattice", [&] { a.options.shareLattice = false; },
-                          "evaluate the lattice per slot even where slots could share it");
+    app.add_flag_callback(
+        "--no-specialize", [&] { a.options.specialize = false; },
+        "emit every feature even when a setting turns it off; the uniforms decide");
+    app.add_flag_callback(
+        "--no-shared-lattice", [&] { a.options.shareLattice = false; }, "evaluate the lattice per slot even where slots could share it");
     app.add_option("--depfile", a.depfile, "write a make-style dependency file for Make and Ninja")->type_name("FILE");
-    app.add_option("--variant", a.variants, "compile only this scene variant (repeatable)")->type_name("MATERIAL.PASS")->allow_extra_args(false);
+    app.add_option("--variant", a.variants, "compile only this scene variant (repeatable)")
+        ->type_name("MATERIAL.PASS")
+        ->allow_extra_args(false);
     app.add_flag("-q,--quiet", a.quiet, "print errors only");
     app.set_version_flag("--version", std::string("hexc ") + version());
     if (std::optional<int> done = parseWith(app, args)) return done;
     if (materials.empty() || a.outDir.empty()) {
-        std::cerr << "hexc: " << (materials.empty() ? "no material or scene given" : "no output folder given: use -o DIR") << " (see hexc --help)\n";
+        std::cerr << "hexc: " << (materials.empty() ? "no material or scene given" : "no output folder given: use -o DIR")
+                  << " (see hexc --help)\n";
         return kUsage;
     }
     a.materials.assign(materials.begin(), materials.end());

@@ -20,8 +20,8 @@ struct Arguments {
     std::vector<std::filesystem::path> materials;
     std::filesystem::path outDir;
     CompileOptions options;
-    std::filesystem::path depfile;        // --depfile
-    std::vector<std::string> variants;    // --variant: only these scene variants
+    std::filesystem::path depfile;      // --depfile
+    std::vector<std::string> variants;  // --variant: only these scene variants
     bool quiet = false;
 };
 

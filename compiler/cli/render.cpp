@@ -123,9 +123,11 @@ struct RenderArguments {
 
 // `hexc render`'s command line; nullopt with `r` filled when it should run, else the exit code.
 std::optional<int> parseRender(const std::vector<std::string>& args, RenderArguments& r) {
-    static const std::map<std::string, vk::RenderOutput> outputs = {
-        {"shaded", vk::RenderOutput::Shaded}, {"albedo", vk::RenderOutput::Albedo}, {"normal", vk::RenderOutput::Normal},
-        {"derivative", vk::RenderOutput::Derivative}, {"weights", vk::RenderOutput::Weights}};
+    static const std::map<std::string, vk::RenderOutput> outputs = {{"shaded", vk::RenderOutput::Shaded},
+                                                                    {"albedo", vk::RenderOutput::Albedo},
+                                                                    {"normal", vk::RenderOutput::Normal},
+                                                                    {"derivative", vk::RenderOutput::Derivative},
+                                                                    {"weights", vk::RenderOutput::Weights}};
     static const std::map<std::string, vk::ExecutedTarget> targets = {
         {"spirv", vk::ExecutedTarget::Spirv}, {"hlsl", vk::ExecutedTarget::Hlsl}, {"glsl", vk::ExecutedTarget::Glsl}};
     CLI::App app(kRenderHelp, "hexc render");
@@ -134,14 +136,17 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
     app.add_option("-o,--out", r.out, "the image to write")->type_name("IMAGE.{pfm,png}");
     app.add_option("--output", output, "what to show (default: shaded, with the material's template)")
         ->check(CLI::IsMember({"shaded", "albedo", "normal", "derivative", "weights"}));
-    app.add_option("--slot", r.slot, "the slot albedo/normal/derivative/weights show (default: the slot\n"
-                                     "named albedo or normal, else the first of a fitting kind)")->type_name("NAME");
+    app.add_option("--slot", r.slot,
+                   "the slot albedo/normal/derivative/weights show (default: the slot\n"
+                   "named albedo or normal, else the first of a fitting kind)")
+        ->type_name("NAME");
     app.add_option("--size", size, "image size in pixels (default 512x512)")->type_name("WxH");
     app.add_option("--uv-rect", uvRect, "the UV rectangle the image covers (default 0,0,1,1)")->type_name("U0,V0,U1,V1");
     app.add_option("--target", target, "the emitted source executed (HLSL and GLSL re-compiled by glslang)")
         ->check(CLI::IsMember({"spirv", "hlsl", "glsl"}));
-    app.add_flag("--reference", r.reference, "write the fp64 CPU reference instead (no Vulkan needed): what the\n"
-                                             "GPU image should be, up to texture filtering precision");
+    app.add_flag("--reference", r.reference,
+                 "write the fp64 CPU reference instead (no Vulkan needed): what the\n"
+                 "GPU image should be, up to texture filtering precision");
     if (std::optional<int> done = parseWith(app, args)) return done;
     r.output = outputs.at(output);
     r.target = targets.at(target);
@@ -170,10 +175,12 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
     const Slot& s = vk::slotForOutput(material, r.output, r.slot);
     reference::SampledTexture texture(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb));
     const reference::Heights heights(material, s);
-    Image image = reference::render(s, texture, r.view, r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
-                                    heights.source());
+    Image image =
+        reference::render(s, texture, r.view, r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
+                          heights.source());
     if (s.kind == SlotKind::Scalar)  // as the GPU shows it: (s, s, s, 1)
-        for (size_t i = 0; i < image.rgba.size(); i += 4) image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];
+        for (size_t i = 0; i < image.rgba.size(); i += 4)
+            image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];
     if (r.output == vk::RenderOutput::Normal) vk::derivativeToNormalMap(image);
     return image;
 }

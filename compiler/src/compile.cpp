@@ -52,22 +52,22 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
         TargetOutput out;
         OutputFile file;
         switch (t) {
-        case Target::Spirv:
-            out = describeSpirv(result.spirv, plan);
-            file = {stem + "spv", spirvBytes(result.spirv)};
-            break;
-        case Target::Hlsl:
-            out = emitHlsl(result.spirv, plan, options);
-            file = {stem + "hlsl", out.source};
-            break;
-        case Target::Glsl:
-            out = emitGlsl(result.spirv, plan, options);
-            file = {stem + "glsl", out.source};
-            break;
-        case Target::Msl:
-            out = emitMsl(result.spirv, plan, options);
-            file = {stem + "metal", out.source};
-            break;
+            case Target::Spirv:
+                out = describeSpirv(result.spirv, plan);
+                file = {stem + "spv", spirvBytes(result.spirv)};
+                break;
+            case Target::Hlsl:
+                out = emitHlsl(result.spirv, plan, options);
+                file = {stem + "hlsl", out.source};
+                break;
+            case Target::Glsl:
+                out = emitGlsl(result.spirv, plan, options);
+                file = {stem + "glsl", out.source};
+                break;
+            case Target::Msl:
+                out = emitMsl(result.spirv, plan, options);
+                file = {stem + "metal", out.source};
+                break;
         }
         out.target["file"] = file.name;
         described[std::string(toString(t))] = std::move(out.target);
@@ -86,10 +86,12 @@ CompileResult compile(const Material& material, const CompileOptions& options) {
     } catch (const CompileError& e) {
         append(result.diagnostics, e.diagnostics);
     } catch (const spirv_cross::CompilerError& e) {
-        result.diagnostics.push_back(Diagnostic::make(Code::TargetUnsupported, {material.sourceFile.string()}, "", std::string("SPIRV-Cross: ") + e.what()));
+        result.diagnostics.push_back(
+            Diagnostic::make(Code::TargetUnsupported, {material.sourceFile.string()}, "", std::string("SPIRV-Cross: ") + e.what()));
     } catch (const std::exception& e) {
         // compile() never throws: anything else is hexc's own fault, reported as such.
-        result.diagnostics.push_back(Diagnostic::make(Code::Internal, {material.sourceFile.string()}, "", std::string("internal error: ") + e.what()));
+        result.diagnostics.push_back(
+            Diagnostic::make(Code::Internal, {material.sourceFile.string()}, "", std::string("internal error: ") + e.what()));
     }
     if (!result.ok()) result.files.clear();
     return result;

@@ -44,9 +44,7 @@ uint32_t hash3(int32_t x, int32_t y, uint32_t seed) {
 }
 
 // Uniform in [0, 1): the top 24 bits of the hash, exact in a double.
-double hash01(int32_t x, int32_t y, uint32_t seed) {
-    return static_cast<double>(hash3(x, y, seed) >> 8) / 16777216.0;
-}
+double hash01(int32_t x, int32_t y, uint32_t seed) { return static_cast<double>(hash3(x, y, seed) >> 8) / 16777216.0; }
 
 int wrap(int i, int period) {
     const int m = i % period;
@@ -218,8 +216,8 @@ bool writeTiles(const std::filesystem::path& dir) {
                 c = grout;
             } else {
                 const Rgb glaze = palette[hash3(tx, ty, 59u) % 4u];
-                const double tileShade = 0.92 + 0.16 * hash01(tx, ty, 61u);          // per-tile variation
-                const double mottle = 1.0 + 0.08 * fbm(x, y, 16, 2, 67u);            // glaze unevenness
+                const double tileShade = 0.92 + 0.16 * hash01(tx, ty, 61u);  // per-tile variation
+                const double mottle = 1.0 + 0.08 * fbm(x, y, 16, 2, 67u);    // glaze unevenness
                 const double bevel = edge == kGroutHalf ? 0.82 : (edge == kGroutHalf + 1 ? 0.92 : 1.0);
                 c = scale(glaze, tileShade * mottle * bevel);
             }
@@ -242,8 +240,7 @@ int main(int argc, char** argv) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) {
-        std::fprintf(stderr, "hexc-gen-textures: cannot create %s: %s\n", dir.string().c_str(),
-                     ec.message().c_str());
+        std::fprintf(stderr, "hexc-gen-textures: cannot create %s: %s\n", dir.string().c_str(), ec.message().c_str());
         return 1;
     }
     // Pin the encoder settings instead of relying on libstb's defaults.

@@ -10,7 +10,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size < 1) return 0;
     const uint8_t bits = data[0];
-    hexc::ParseResult parsed = hexc::parseMaterial(std::string_view(reinterpret_cast<const char*>(data + 1), size - 1), "materials/fuzz.json");
+    hexc::ParseResult parsed =
+        hexc::parseMaterial(std::string_view(reinterpret_cast<const char*>(data + 1), size - 1), "materials/fuzz.json");
     if (!parsed.material) return 0;
     hexc::CompileOptions options;
     options.specialize = bits & 1;

@@ -9,7 +9,9 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string_view text(reinterpret_cast<const char*>(data), size);
-    if (hexc::isSceneDocument(text)) hexc::parseScene(text, "materials/scenes/fuzz.json");
-    else hexc::parseMaterial(text, "materials/fuzz.json");
+    if (hexc::isSceneDocument(text))
+        hexc::parseScene(text, "materials/scenes/fuzz.json");
+    else
+        hexc::parseMaterial(text, "materials/fuzz.json");
     return 0;
 }

@@ -192,10 +192,13 @@ Taps noiseTaps(Vec2 st, const HexTiling& hex) {
 
 Taps maskTaps(Vec2 st, const HexTiling& hex) {
     switch (hex.mask) {
-    case Mask::Hex: return hexTaps(st, hex.mode);
-    case Mask::Checker: return checkerTaps(st, hex.maskScale);
-    case Mask::Noise:
-    case Mask::Noise3: return noiseTaps(st, hex);
+        case Mask::Hex:
+            return hexTaps(st, hex.mode);
+        case Mask::Checker:
+            return checkerTaps(st, hex.maskScale);
+        case Mask::Noise:
+        case Mask::Noise3:
+            return noiseTaps(st, hex);
     }
     throw std::invalid_argument("reference: unknown mask");
 }
@@ -218,8 +221,8 @@ std::array<double, 3> heightBlend(const std::array<double, 3>& w, const std::arr
 SampledTexture::SampledTexture(const Texture& texture) {
     const size_t count = size_t(std::max(texture.width, 0)) * size_t(std::max(texture.height, 0));
     if (count == 0 || (texture.isFloat() ? texture.rgba32f.size() : texture.rgba8.size()) != count * 4)
-        throw std::invalid_argument("reference: texture of " + std::to_string(texture.width) + "x" +
-                                    std::to_string(texture.height) + " texels has no or the wrong amount of data");
+        throw std::invalid_argument("reference: texture of " + std::to_string(texture.width) + "x" + std::to_string(texture.height) +
+                                    " texels has no or the wrong amount of data");
 
     Level base{texture.width, texture.height, std::vector<Rgba>(count)};
     std::array<double, 256> fromByte;  // 8-bit value -> linear colour channel
@@ -307,8 +310,7 @@ Triangle triangleInSkewed(double kx, double ky) {
     if (z > 0)  // lower triangle: corners base, base + (0, 1), base + (1, 0)
         return {{TileId{baseX, baseY}, TileId{baseX, baseY + 1}, TileId{baseX + 1, baseY}}, {z, fy, fx}};
     // upper triangle: corners base + (1, 1), base + (1, 0), base + (0, 1)
-    return {{TileId{baseX + 1, baseY + 1}, TileId{baseX + 1, baseY}, TileId{baseX, baseY + 1}},
-            {-z, 1 - fy, 1 - fx}};
+    return {{TileId{baseX + 1, baseY + 1}, TileId{baseX + 1, baseY}, TileId{baseX, baseY + 1}}, {-z, 1 - fy, 1 - fx}};
 }
 
 Vec2 tileOffset(TileId id) {
@@ -323,8 +325,7 @@ double gain(double x, double r) {
     return x < 0.5 ? 0.5 * std::pow(2 * x, k) : 1 - 0.5 * std::pow(2 - 2 * x, k);
 }
 
-std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, const std::array<double, 3>& delta,
-                                   const HexTiling& hex) {
+std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, const std::array<double, 3>& delta, const HexTiling& hex) {
     std::array<double, 3> w, plain;
     for (size_t i = 0; i < 3; ++i) {
         plain[i] = std::pow(barycentric[i], hex.exponent);
@@ -438,14 +439,14 @@ Heights::Heights(const Material& material, const Slot& slot) {
         }
 }
 
-SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
-                    double dudy, double dvdy, std::array<uint32_t, 2> pixel, const HeightSource* height) {
+SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx, double dudy, double dvdy,
+                    std::array<uint32_t, 2> pixel, const HeightSource* height) {
     const auto [a, b] = slot.hex.tiling;
     return evaluateAt(slot, texture, {u * a, v * b}, {dudx * a, dvdx * b}, {dudy * a, dvdy * b}, pixel, height);
 }
 
-SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, const SurfacePoint& point,
-                             std::array<uint32_t, 2> pixel, const HeightSource* height) {
+SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, const SurfacePoint& point, std::array<uint32_t, 2> pixel,
+                             const HeightSource* height) {
     const Vec3& N = point.normal;
     const double length = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
     const Vec3 n = length > 0 ? Vec3{N[0] / length, N[1] / length, N[2] / length} : Vec3{0, 0, 0};
@@ -465,8 +466,8 @@ SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, co
     Vec3 g{};  // normal slots: the blended world-space height gradient
     for (size_t k = 0; k < 3; ++k) {
         if (!(b[k] > 0)) continue;
-        const SlotResult r = evaluateAt(slot, texture, onPlane(point.position, k), onPlane(point.dPdx, k), onPlane(point.dPdy, k),
-                                        pixel, height);
+        const SlotResult r =
+            evaluateAt(slot, texture, onPlane(point.position, k), onPlane(point.dPdx, k), onPlane(point.dPdy, k), pixel, height);
         if (normal) {
             g[(k + 1) % 3] += b[k] * r.value[0];
             g[(k + 2) % 3] -= b[k] * r.value[1];  // the plane's t axis is world +, its derivative's y is -t

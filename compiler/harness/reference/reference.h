@@ -104,14 +104,13 @@ double gain(double x, double r);
 
 // Eq. 1, then Eq. 5 and renormalisation when falloff != 0.5: the blend weights of the three tiles, from their
 // barycentric weights and the metric delta(x_i) of their samples. hex supplies exponent (gamma) and falloff (r).
-std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, const std::array<double, 3>& delta,
-                                   const HexTiling& hex);
+std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, const std::array<double, 3>& delta, const HexTiling& hex);
 
 struct SlotResult {
-    Rgba value;                    // colour/scalar slots: blended RGBA; normal slots: (dH/ds, dH/dt, 0, 1), or with the
-                                   // triplanar projection the world-space surface gradient (x, y, z, 1)
-    std::array<double, 3> weights; // blend weights as the weights output shows them: Listing 7 colours for the hex
-                                   // mask, the mask's own order otherwise; (1, 0, 0) without hex-tiling
+    Rgba value;                     // colour/scalar slots: blended RGBA; normal slots: (dH/ds, dH/dt, 0, 1), or with the
+                                    // triplanar projection the world-space surface gradient (x, y, z, 1)
+    std::array<double, 3> weights;  // blend weights as the weights output shows them: Listing 7 colours for the hex
+                                    // mask, the mask's own order otherwise; (1, 0, 0) without hex-tiling
     // Each tile's sample, in the form of evaluateAt's value (derivatives rotated back to st), and its final weight
     // (mask, Eq. 1, gain, height) in the same order; the checker's third tile repeats its second with weight 0.
     // With the triplanar projection: those of the plane with the largest b_k (the first of equal ones).
@@ -153,8 +152,8 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
                       const HeightSource* height = nullptr);
 
 // evaluateAt at st = uv * slot.hex.tiling, with uv gradients.
-SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx,
-                    double dudy, double dvdy, std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr);
+SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx, double dudy, double dvdy,
+                    std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr);
 
 // A surface point for the triplanar projection: world position, normal (any length) and the position's
 // screen-space gradients.

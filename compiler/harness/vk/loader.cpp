@@ -18,8 +18,8 @@ void resolve() {
     // The loader stays open for the life of the process: the functions point into it.
     void* loader = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
     if (!loader) throw std::runtime_error(std::string("cannot load the Vulkan loader libvulkan.so.1 (") + dlerror() + ")");
-#define HEXC_VK_RESOLVE(fn)                                                                                \
-    fn = reinterpret_cast<PFN_##fn>(dlsym(loader, #fn));                                                   \
+#define HEXC_VK_RESOLVE(fn)                              \
+    fn = reinterpret_cast<PFN_##fn>(dlsym(loader, #fn)); \
     if (!fn) throw std::runtime_error("the Vulkan loader libvulkan.so.1 has no " #fn);
     HEXC_VK_FUNCTIONS(HEXC_VK_RESOLVE)
 #undef HEXC_VK_RESOLVE

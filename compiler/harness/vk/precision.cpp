@@ -39,9 +39,15 @@ const char* modeName(HashMode mode, Placement placement) {
 // The probe material: one slot `s` of the given path at tiling 4; aligned views draw it with their own template.
 Material probeMaterial(const std::filesystem::path& texture, bool normal, HashMode mode, Placement placement,
                        const std::filesystem::path& workDir) {
-    nlohmann::json hex = {{"tiling", 4}, {"mode", mode == HashMode::Paper ? "paper" : "stable"}, {"split_coordinates", placement == Placement::Split}};
+    nlohmann::json hex = {
+        {"tiling", 4}, {"mode", mode == HashMode::Paper ? "paper" : "stable"}, {"split_coordinates", placement == Placement::Split}};
     nlohmann::json json = {{"name", "precision"},
-                           {"slots", {{{"name", "s"}, {"kind", normal ? "normal" : "color"}, {"colorspace", "linear"}, {"texture", texture.string()}, {"hextiling", hex}}}}};
+                           {"slots",
+                            {{{"name", "s"},
+                              {"kind", normal ? "normal" : "color"},
+                              {"colorspace", "linear"},
+                              {"texture", texture.string()},
+                              {"hextiling", hex}}}}};
     if (placement == Placement::Aligned) {
         std::filesystem::path shader = workDir / "aligned.frag.glsl";
         std::ofstream(shader, std::ios::binary) << harnessShaders().at("aligned.frag.glsl");
@@ -115,7 +121,9 @@ std::vector<PrecisionRow> measurePrecision(Runner& runner, const ProbeTextures& 
                 params["s_origin_cell"] = {double(o.cell[0]), double(o.cell[1])};
                 params["s_origin_offset"] = {double(o.offset[0]), double(o.offset[1])};
             }
-            RenderOutput output = placement == Placement::Aligned ? RenderOutput::Shaded : path ? RenderOutput::Derivative : RenderOutput::Albedo;
+            RenderOutput output = placement == Placement::Aligned ? RenderOutput::Shaded
+                                  : path                          ? RenderOutput::Derivative
+                                                                  : RenderOutput::Albedo;
             Image gpu = render(runner, m, output, "", view, target, 0, nullptr, params);
             Image cpu = referenceImage(runner, slot, texture, view, placement == Placement::Split ? x : 0, placement);
             if (path) {
@@ -133,8 +141,8 @@ std::string precisionTable(const std::vector<PrecisionRow>& rows) {
     out << "| mode | path | |uv| | max error | mean error | pixels over 1/255 |\n|---|---|---|---|---|---|\n";
     char line[256];
     for (const PrecisionRow& r : rows) {
-        std::snprintf(line, sizeof line, "| %s | %s | %.4g | %.2e (%.2f/255) | %.2e | %.1f%% |\n", r.mode.c_str(), r.path.c_str(), r.magnitude,
-                      r.errors.max, r.errors.max * 255, r.errors.mean, r.errors.overOne255 * 100);
+        std::snprintf(line, sizeof line, "| %s | %s | %.4g | %.2e (%.2f/255) | %.2e | %.1f%% |\n", r.mode.c_str(), r.path.c_str(),
+                      r.magnitude, r.errors.max, r.errors.max * 255, r.errors.mean, r.errors.overOne255 * 100);
         out << line;
     }
     return out.str();

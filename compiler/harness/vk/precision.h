@@ -26,9 +26,9 @@ enum class Placement {
 };
 
 struct PrecisionRow {
-    std::string mode;   // "stable", "paper", "stable, split" or "stable, aligned"
-    std::string path;   // "color" or "normal"
-    double magnitude;   // X: |uv| of the view (split: of the origin)
+    std::string mode;  // "stable", "paper", "stable, split" or "stable, aligned"
+    std::string path;  // "color" or "normal"
+    double magnitude;  // X: |uv| of the view (split: of the origin)
     ImageErrors errors;
 };
 

@@ -16,8 +16,8 @@ std::vector<uint32_t> spirvOrThrow(SpirvResult r) {
 }
 
 const std::vector<uint32_t>& vertexShader() {
-    static const std::vector<uint32_t> words =
-        spirvOrThrow(compileToSpirv(harnessShaders().at("fullscreen.vert.glsl"), ShaderStage::Vertex, "templates/harness/fullscreen.vert.glsl"));
+    static const std::vector<uint32_t> words = spirvOrThrow(
+        compileToSpirv(harnessShaders().at("fullscreen.vert.glsl"), ShaderStage::Vertex, "templates/harness/fullscreen.vert.glsl"));
     return words;
 }
 
@@ -38,7 +38,8 @@ void setView(RenderRequest& request, const View& view) {
 Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view) {
     RenderRequest request;
     request.vertexSpirv = vertexShader();
-    request.fragmentSpirv = spirvOrThrow(compileToSpirv(harnessShaders().at(templateFile), ShaderStage::Fragment, "templates/harness/" + templateFile));
+    request.fragmentSpirv =
+        spirvOrThrow(compileToSpirv(harnessShaders().at(templateFile), ShaderStage::Fragment, "templates/harness/" + templateFile));
     request.uniformData = uniforms;
     setView(request, view);
     return std::move(runner.render(request).image);
@@ -50,17 +51,22 @@ namespace {
 const Slot& fittingSlot(const Material& material, RenderOutput output, const std::string& slotName) {
     auto fits = [&](const Slot& s) {
         switch (output) {
-        case RenderOutput::Albedo: return s.kind != SlotKind::Normal;
-        case RenderOutput::Normal:
-        case RenderOutput::Derivative: return s.kind == SlotKind::Normal;
-        default: return true;
+            case RenderOutput::Albedo:
+                return s.kind != SlotKind::Normal;
+            case RenderOutput::Normal:
+            case RenderOutput::Derivative:
+                return s.kind == SlotKind::Normal;
+            default:
+                return true;
         }
     };
     const char* what = output == RenderOutput::Albedo ? "color or scalar slot" : output == RenderOutput::Weights ? "slot" : "normal slot";
     if (!slotName.empty()) {
         for (const Slot& s : material.slots) {
             if (s.name != slotName) continue;
-            if (!fits(s)) throw std::invalid_argument("slot `" + slotName + "` is of kind " + std::string(toString(s.kind)) + "; this output needs a " + what);
+            if (!fits(s))
+                throw std::invalid_argument("slot `" + slotName + "` is of kind " + std::string(toString(s.kind)) +
+                                            "; this output needs a " + what);
             return s;
         }
         throw std::invalid_argument("material `" + material.name + "` has no slot `" + slotName + "`");
@@ -79,7 +85,8 @@ const Slot& slotForOutput(const Material& material, RenderOutput output, const s
     const Slot& s = fittingSlot(material, output, slotName);
     // A triplanar normal slot returns a world-space surface gradient, which no tangent-space encoding shows.
     if (output == RenderOutput::Normal && s.hex.projection == Projection::Triplanar)
-        throw std::invalid_argument("slot `" + s.name + "` is triplanar: it returns a world-space surface gradient; use the derivative output");
+        throw std::invalid_argument("slot `" + s.name +
+                                    "` is triplanar: it returns a world-space surface gradient; use the derivative output");
     return s;
 }
 
@@ -135,17 +142,20 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     RenderRequest request;
     request.vertexSpirv = vertexShader();
     switch (target) {
-    case ExecutedTarget::Spirv: request.fragmentSpirv = compiled.spirv; break;
-    case ExecutedTarget::Hlsl:
-        request.fragmentSpirv = spirvOrThrow(optimizeSpirv(spirvOrThrow(compileToSpirv(
-            outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl", SourceLanguage::Hlsl, manifest["targets"]["hlsl"]["entry_point"])),
-            false, true));
-        break;
-    case ExecutedTarget::Glsl:
-        request.fragmentSpirv = spirvOrThrow(optimizeSpirv(
-            spirvOrThrow(compileToSpirv(outputFile(compiled, ".glsl"), ShaderStage::Fragment, m.name + ".frag.glsl", SourceLanguage::OpenGlGlsl))));
-        request.combinedSamplers = true;
-        break;
+        case ExecutedTarget::Spirv:
+            request.fragmentSpirv = compiled.spirv;
+            break;
+        case ExecutedTarget::Hlsl:
+            request.fragmentSpirv = spirvOrThrow(
+                optimizeSpirv(spirvOrThrow(compileToSpirv(outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl",
+                                                          SourceLanguage::Hlsl, manifest["targets"]["hlsl"]["entry_point"])),
+                              false, true));
+            break;
+        case ExecutedTarget::Glsl:
+            request.fragmentSpirv = spirvOrThrow(optimizeSpirv(spirvOrThrow(
+                compileToSpirv(outputFile(compiled, ".glsl"), ShaderStage::Fragment, m.name + ".frag.glsl", SourceLanguage::OpenGlGlsl))));
+            request.combinedSamplers = true;
+            break;
     }
     request.uniformData = packParameters(manifest, parameters);
     // Textures in manifest order, which is binding order.

@@ -2,7 +2,6 @@
 // on any driver; lavapipe is the one it is tested on.
 #include "vk/runner.h"
 
-
 #include <algorithm>
 #include <bit>
 #include <cstdio>
@@ -20,7 +19,8 @@ namespace {
 std::string resultName(VkResult r) {
     switch (r) {
 #define HEXC_VK_RESULT(name) \
-    case name: return #name;
+    case name:               \
+        return #name;
         HEXC_VK_RESULT(VK_SUCCESS)
         HEXC_VK_RESULT(VK_NOT_READY)
         HEXC_VK_RESULT(VK_TIMEOUT)
@@ -41,7 +41,8 @@ std::string resultName(VkResult r) {
         HEXC_VK_RESULT(VK_ERROR_INVALID_SHADER_NV)
         HEXC_VK_RESULT(VK_ERROR_UNKNOWN)
 #undef HEXC_VK_RESULT
-        default: return "VkResult(" + std::to_string(int(r)) + ")";
+        default:
+            return "VkResult(" + std::to_string(int(r)) + ")";
     }
 }
 
@@ -95,8 +96,7 @@ struct VulkanContext {
 
 namespace {
 
-uint32_t memoryType(const VulkanContext& ctx, uint32_t typeBits, VkMemoryPropertyFlags required,
-                    VkMemoryPropertyFlags preferred) {
+uint32_t memoryType(const VulkanContext& ctx, uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) {
     for (VkMemoryPropertyFlags wanted : {required | preferred, required})
         for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i)
             if ((typeBits & (1u << i)) && (ctx.memory.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
@@ -141,8 +141,8 @@ HostBuffer createHostBuffer(VulkanContext& ctx, VkDeviceSize size, VkBufferUsage
     return b;
 }
 
-VkImage createImage(VulkanContext& ctx, VkFormat format, uint32_t width, uint32_t height, uint32_t mipLevels,
-                    VkImageUsageFlags usage, Cleanup& cleanup) {
+VkImage createImage(VulkanContext& ctx, VkFormat format, uint32_t width, uint32_t height, uint32_t mipLevels, VkImageUsageFlags usage,
+                    Cleanup& cleanup) {
     VkImageCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
     info.imageType = VK_IMAGE_TYPE_2D;
@@ -165,8 +165,8 @@ VkImage createImage(VulkanContext& ctx, VkFormat format, uint32_t width, uint32_
     return image;
 }
 
-VkImageView createView(VulkanContext& ctx, VkImage image, VkFormat format, VkImageAspectFlags aspect,
-                       uint32_t mipLevels, Cleanup& cleanup) {
+VkImageView createView(VulkanContext& ctx, VkImage image, VkFormat format, VkImageAspectFlags aspect, uint32_t mipLevels,
+                       Cleanup& cleanup) {
     VkImageViewCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
     info.image = image;
@@ -191,9 +191,8 @@ VkShaderModule createShaderModule(VulkanContext& ctx, const std::vector<uint32_t
 }
 
 // A layout transition (and memory dependency) for mip levels [baseLevel, baseLevel + levelCount) of a colour image.
-void imageBarrier(VkCommandBuffer cb, VkImage image, uint32_t baseLevel, uint32_t levelCount, VkImageLayout from,
-                  VkImageLayout to, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
-                  VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+void imageBarrier(VkCommandBuffer cb, VkImage image, uint32_t baseLevel, uint32_t levelCount, VkImageLayout from, VkImageLayout to,
+                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
     VkImageMemoryBarrier b{};
     b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
     b.srcAccessMask = srcAccess;
@@ -211,9 +210,7 @@ void imageBarrier(VkCommandBuffer cb, VkImage image, uint32_t baseLevel, uint32_
 // buffer and the blits that build each further level from the one before. Returns a view of all levels, which
 // is in SHADER_READ_ONLY_OPTIMAL once cb has run.
 VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture& t, Cleanup& cleanup) {
-    const VkFormat format = t.isFloat() ? VK_FORMAT_R32G32B32A32_SFLOAT
-                            : t.srgb    ? VK_FORMAT_R8G8B8A8_SRGB
-                                        : VK_FORMAT_R8G8B8A8_UNORM;
+    const VkFormat format = t.isFloat() ? VK_FORMAT_R32G32B32A32_SFLOAT : t.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
     const uint32_t levels = std::bit_width(unsigned(std::max(t.width, t.height)));  // floor(log2(max)) + 1
 
     VkFormatProperties props;
@@ -221,12 +218,10 @@ VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture&
     const VkFormatFeatureFlags features = props.optimalTilingFeatures;
     const VkFormatFeatureFlags blit = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
     if (!(features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) || (levels > 1 && (features & blit) != blit))
-        throw VulkanError("the Vulkan device cannot sample or blit texture format " +
-                                 std::to_string(int(format)));
+        throw VulkanError("the Vulkan device cannot sample or blit texture format " + std::to_string(int(format)));
     // A linear blit needs the format's linear-filter feature (optional for RGBA32F on some GPUs); without it the
     // mips are point-sampled instead. Such a device could not filter the format linearly when sampling either.
-    const VkFilter mipFilter =
-        (features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    const VkFilter mipFilter = (features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
 
     const void* pixels = t.isFloat() ? static_cast<const void*>(t.rgba32f.data()) : t.rgba8.data();
     const size_t bytes = t.isFloat() ? t.rgba32f.size() * sizeof(float) : t.rgba8.size();
@@ -234,11 +229,9 @@ VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture&
     std::memcpy(staging.mapped, pixels, bytes);
 
     VkImage image = createImage(ctx, format, uint32_t(t.width), uint32_t(t.height), levels,
-                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                    VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                cleanup);
-    imageBarrier(cb, image, 0, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, cleanup);
+    imageBarrier(cb, image, 0, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.imageExtent = {uint32_t(t.width), uint32_t(t.height), 1};
@@ -246,28 +239,26 @@ VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture&
 
     int32_t w = t.width, h = t.height;
     for (uint32_t level = 1; level < levels; ++level) {
-        imageBarrier(cb, image, level - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        imageBarrier(cb, image, level - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_READ_BIT);
         const int32_t nw = std::max(1, w / 2), nh = std::max(1, h / 2);
         VkImageBlit region{};
         region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
         region.srcOffsets[1] = {w, h, 1};
         region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
         region.dstOffsets[1] = {nw, nh, 1};
-        vkCmdBlitImage(cb, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                       1, &region, mipFilter);
+        vkCmdBlitImage(cb, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, mipFilter);
         w = nw;
         h = nh;
     }
     // Levels 0..levels-2 were blit sources, the last level only a destination.
     if (levels > 1)
-        imageBarrier(cb, image, 0, levels - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-    imageBarrier(cb, image, levels - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                 VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+        imageBarrier(cb, image, 0, levels - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+    imageBarrier(cb, image, levels - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                 VK_ACCESS_SHADER_READ_BIT);
     return createView(ctx, image, format, VK_IMAGE_ASPECT_COLOR_BIT, levels, cleanup);
 }
 
@@ -319,8 +310,7 @@ VkRenderPass createRenderPass(VulkanContext& ctx, Cleanup& cleanup) {
     return pass;
 }
 
-VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipelineLayout layout,
-                          VkRenderPass pass, Cleanup& cleanup) {
+VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipelineLayout layout, VkRenderPass pass, Cleanup& cleanup) {
     VkPipelineShaderStageCreateInfo stages[2]{};
     stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -365,8 +355,8 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     depth.depthCompareOp = VK_COMPARE_OP_ALWAYS;
 
     VkPipelineColorBlendAttachmentState blendAttachment{};
-    blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    blendAttachment.colorWriteMask =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     VkPipelineColorBlendStateCreateInfo blend{};
     blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
     blend.attachmentCount = 1;
@@ -424,8 +414,7 @@ void validate(const VulkanContext& ctx, const RenderRequest& req) {
     if (req.textures.size() > limits.maxPerStageDescriptorSampledImages) fail("too many textures for the device");
     for (const Texture* t : req.textures) {
         const size_t values = t ? size_t(t->width) * t->height * 4 : 0;
-        if (!t || t->width <= 0 || t->height <= 0 ||
-            uint32_t(std::max(t->width, t->height)) > limits.maxImageDimension2D ||
+        if (!t || t->width <= 0 || t->height <= 0 || uint32_t(std::max(t->width, t->height)) > limits.maxImageDimension2D ||
             (t->isFloat() ? t->rgba32f.size() : t->rgba8.size()) != values)
             fail("a texture is missing, empty, too large or has the wrong number of values");
     }
@@ -449,8 +438,7 @@ std::vector<const char*> instanceLayers() {
                         [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, validation) == 0; }))
             layers.push_back(validation);
         else
-            std::fprintf(stderr, "hexc: HEXC_VK_VALIDATION=1 but %s is not installed; running without it\n",
-                         validation);
+            std::fprintf(stderr, "hexc: HEXC_VK_VALIDATION=1 but %s is not installed; running without it\n", validation);
     }
     return layers;
 }
@@ -480,8 +468,7 @@ void pickDevice(VulkanContext& ctx) {
     for (VkPhysicalDevice pd : devices) {
         VkPhysicalDeviceProperties props;
         vkGetPhysicalDeviceProperties(pd, &props);
-        if (found && !(props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
-                       ctx.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU))
+        if (found && !(props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU && ctx.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU))
             continue;
         VkFormatProperties color, depth;
         vkGetPhysicalDeviceFormatProperties(pd, kColorFormat, &color);
@@ -601,7 +588,8 @@ std::vector<VkDescriptorSetLayoutBinding> setBindings(const RenderRequest& req) 
 }
 
 // The set layout and the pipeline layout (set 0 plus the vertex shader's uv rectangle as a push constant).
-std::pair<VkDescriptorSetLayout, VkPipelineLayout> createLayouts(VulkanContext& ctx, const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+std::pair<VkDescriptorSetLayout, VkPipelineLayout> createLayouts(VulkanContext& ctx,
+                                                                 const std::vector<VkDescriptorSetLayoutBinding>& bindings,
                                                                  Cleanup& cleanup) {
     const VkDevice dev = ctx.device;
     VkDescriptorSetLayoutCreateInfo setLayoutInfo{};
@@ -628,7 +616,8 @@ std::pair<VkDescriptorSetLayout, VkPipelineLayout> createLayouts(VulkanContext& 
 // The colour render target (also the copy source) and the framebuffer over it and a depth buffer.
 std::pair<VkImage, VkFramebuffer> createTarget(VulkanContext& ctx, VkRenderPass pass, uint32_t width, uint32_t height, Cleanup& cleanup) {
     const VkDevice dev = ctx.device;
-    const VkImage color = createImage(ctx, kColorFormat, width, height, 1, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, cleanup);
+    const VkImage color =
+        createImage(ctx, kColorFormat, width, height, 1, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, cleanup);
     const VkImage depth = createImage(ctx, kDepthFormat, width, height, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, cleanup);
     const VkImageView views[2] = {createView(ctx, color, kColorFormat, VK_IMAGE_ASPECT_COLOR_BIT, 1, cleanup),
                                   createView(ctx, depth, kDepthFormat, VK_IMAGE_ASPECT_DEPTH_BIT, 1, cleanup)};
@@ -689,9 +678,12 @@ VkDescriptorSet createSet(VulkanContext& ctx, const std::vector<VkDescriptorSetL
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = bindings[i].descriptorType;
-        if (i == 0) writes[i].pBufferInfo = &uniformInfo;
-        else if (i == 1) writes[i].pImageInfo = &samplerInfo;
-        else writes[i].pImageInfo = &imageInfos[i - kFirstTextureBinding];
+        if (i == 0)
+            writes[i].pBufferInfo = &uniformInfo;
+        else if (i == 1)
+            writes[i].pImageInfo = &samplerInfo;
+        else
+            writes[i].pImageInfo = &imageInfos[i - kFirstTextureBinding];
     }
     vkUpdateDescriptorSets(dev, uint32_t(writes.size()), writes.data(), 0, nullptr);
     return set;
@@ -770,7 +762,8 @@ std::vector<double> timeFrames(VulkanContext& ctx, const Draw& draw, int frames,
     for (int frame = 0; frame < frames; ++frame) {
         submitAndWait(ctx, timed);
         uint64_t ticks[2];
-        VK_CHECK(vkGetQueryPoolResults, dev, queries, 0, 2, sizeof(ticks), ticks, sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
+        VK_CHECK(vkGetQueryPoolResults, dev, queries, 0, 2, sizeof(ticks), ticks, sizeof(uint64_t),
+                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
         // Masked subtraction stays right if the counter wrapped between the two timestamps.
         const uint64_t elapsed = (ticks[1] - ticks[0]) & mask;
         ms.push_back(double(elapsed) * ctx.properties.limits.timestampPeriod * 1e-6);

@@ -36,13 +36,13 @@ struct RenderRequest {
     std::vector<uint8_t> uniformData;                  // may be empty: a zeroed 16-byte buffer is bound instead
     std::vector<const Texture*> textures;              // not owned; must outlive render()
     int width = 0, height = 0;
-    std::array<float, 4> uvRect{0, 0, 1, 1};           // u0, v0, u1, v1
-    int timedFrames = 0;                                // > 0: draw this many extra frames, timing each one
-    bool combinedSamplers = false;                      // textures as COMBINED_IMAGE_SAMPLER (see above)
+    std::array<float, 4> uvRect{0, 0, 1, 1};  // u0, v0, u1, v1
+    int timedFrames = 0;                      // > 0: draw this many extra frames, timing each one
+    bool combinedSamplers = false;            // textures as COMBINED_IMAGE_SAMPLER (see above)
 };
 
 struct RenderResult {
-    Image image;                 // row 0 is the top row
+    Image image;                  // row 0 is the top row
     std::vector<double> frameMs;  // one GPU duration per timed frame, in milliseconds
 };
 

@@ -18,12 +18,38 @@ struct SourceLoc {
 // files, HX2xx: templates and shader code, HX3xx: output targets, HX9xx: hexc itself.
 enum class Code {
     // material and scene files
-    InputUnreadable, JsonSyntax, DuplicateKey, UnknownKey, MissingKey, WrongType, OutOfRange, UnknownValue, InvalidName,
-    DuplicateName, WrongCount, MisplacedKey, ConflictingSettings, UnknownReference, WrongSlotKind, InvalidSceneMaterial,
-    TilingRange, TextureNotFound, TextureUnreadable, TextureChannels,
+    InputUnreadable,
+    JsonSyntax,
+    DuplicateKey,
+    UnknownKey,
+    MissingKey,
+    WrongType,
+    OutOfRange,
+    UnknownValue,
+    InvalidName,
+    DuplicateName,
+    WrongCount,
+    MisplacedKey,
+    ConflictingSettings,
+    UnknownReference,
+    WrongSlotKind,
+    InvalidSceneMaterial,
+    TilingRange,
+    TextureNotFound,
+    TextureUnreadable,
+    TextureChannels,
     // templates and shader code
-    UnknownTemplate, TemplateUnreadable, TemplateNoVersion, TemplateNoInclude, SlotNotRead, ShaderError, ShaderWarning,
-    TemplateSlotLine, TemplateMismatch, TemplateTooLarge, TemplateSetConflict,
+    UnknownTemplate,
+    TemplateUnreadable,
+    TemplateNoVersion,
+    TemplateNoInclude,
+    SlotNotRead,
+    ShaderError,
+    ShaderWarning,
+    TemplateSlotLine,
+    TemplateMismatch,
+    TemplateTooLarge,
+    TemplateSetConflict,
     // output targets
     TargetUnsupported,
     // hexc itself
@@ -33,7 +59,7 @@ enum class Code {
 struct Diagnostic {
     enum class Severity { Error, Warning };
     Code code;
-    Severity severity;    // fixed per code, from the catalogue
+    Severity severity;  // fixed per code, from the catalogue
     SourceLoc loc;
     std::string path;     // JSON pointer, e.g. /slots/0/falloff; empty when not about a JSON value
     std::string message;  // what is wrong and what was expected

@@ -13,9 +13,9 @@ namespace hexc {
 // or 32-bit float RGBA. Row 0 is the top row of the file, which is v = 0 (texel centre v = 0.5/height).
 struct Texture {
     int width = 0, height = 0;
-    bool srgb = false;               // 8-bit only: decode sRGB to linear when sampling
-    std::vector<uint8_t> rgba8;      // width*height*4, when 8-bit
-    std::vector<float> rgba32f;      // width*height*4, when float
+    bool srgb = false;           // 8-bit only: decode sRGB to linear when sampling
+    std::vector<uint8_t> rgba8;  // width*height*4, when 8-bit
+    std::vector<float> rgba32f;  // width*height*4, when float
     bool isFloat() const { return !rgba32f.empty(); }
 };
 

@@ -26,27 +26,27 @@ enum class Projection { Uv, Triplanar };
 // Hex-tiling settings. Names follow MaterialX <hextiledimage> where the meaning is the same;
 // the paper's symbol is given for each.
 struct HexTiling {
-    bool enabled = true;                  // false: plain tiling (one fetch), for comparison or cheap slots
-    std::array<double, 2> tiling{1, 1};   // UV scale applied before the lattice (MaterialX `tiling`)
-    double rotation = 1.0;                // rotStrength of Listings 3, 4, 6 (MaterialX `rotation`)
-    double falloff = 0.5;                 // r of Eq. 5 / Listing 8 gain; 0.5 = off (MaterialX `falloff`)
-    double falloffcontrast = 0.6;         // beta of Eq. 3-4 (MaterialX `falloffcontrast`)
-    double exponent = 7.0;                // gamma, exponent on the barycentric weights (Eq. 1)
+    bool enabled = true;                 // false: plain tiling (one fetch), for comparison or cheap slots
+    std::array<double, 2> tiling{1, 1};  // UV scale applied before the lattice (MaterialX `tiling`)
+    double rotation = 1.0;               // rotStrength of Listings 3, 4, 6 (MaterialX `rotation`)
+    double falloff = 0.5;                // r of Eq. 5 / Listing 8 gain; 0.5 = off (MaterialX `falloff`)
+    double falloffcontrast = 0.6;        // beta of Eq. 3-4 (MaterialX `falloffcontrast`)
+    double exponent = 7.0;               // gamma, exponent on the barycentric weights (Eq. 1)
     HashMode mode = HashMode::Stable;
     Mask mask = Mask::Hex;
-    int maskScale = 2;                    // checker and noise masks: cells per unit of st
-    int taps = 0;                         // 0: every tap of the mask, blended; 1: one dithered fetch
+    int maskScale = 2;                       // checker and noise masks: cells per unit of st
+    int taps = 0;                            // 0: every tap of the mask, blended; 1: one dithered fetch
     Projection projection = Projection::Uv;  // material-wide
-    double planeSharpness = 4;            // triplanar: exponent on |normal| per plane
+    double planeSharpness = 4;               // triplanar: exponent on |normal| per plane
     // Stable mode only: the slot also reads an origin (cell, offset) that the engine fills each frame from a
     // double-precision origin, for worlds whose uv exceed what float32 resolves (docs/precision.md).
     bool splitCoordinates = false;
     // Per-tile transforms (stable mode; docs/material-format.md#per-tile-transforms).
     std::array<double, 2> rotationRange{-180, 180};  // degrees the tile angle is drawn from (times `rotation`)
-    int rotationSteps = 0;                            // > 0: that many evenly spaced angles in the range
-    std::array<double, 2> scaleRange{1, 1};           // texture scale drawn per tile
-    double offset = 1.0;                              // amount of the random offset
-    std::array<int, 2> offsetSteps{0, 0};             // > 0: offsets snapped to a grid of that many cells
+    int rotationSteps = 0;                           // > 0: that many evenly spaced angles in the range
+    std::array<double, 2> scaleRange{1, 1};          // texture scale drawn per tile
+    double offset = 1.0;                             // amount of the random offset
+    std::array<int, 2> offsetSteps{0, 0};            // > 0: offsets snapped to a grid of that many cells
     int maskTaps() const { return mask == Mask::Checker ? 2 : 3; }
     bool hasTransforms() const {
         return rotationRange != std::array<double, 2>{-180, 180} || rotationSteps != 0 || scaleRange != std::array<double, 2>{1, 1} ||
@@ -56,30 +56,30 @@ struct HexTiling {
 
 // Height blending (docs/material-format.md#height-blending): tiles weighed by the heights of a scalar slot.
 struct HeightBlend {
-    std::string slot;                // a scalar slot of the same material, possibly this one
-    double width = 0.2;              // transition width, in (0, 1]
+    std::string slot;    // a scalar slot of the same material, possibly this one
+    double width = 0.2;  // transition width, in (0, 1]
 };
 
 struct Slot {
-    std::string name;                // GLSL identifier; used in generated function and resource names
-    std::string texture;             // as written in the JSON
+    std::string name;                   // GLSL identifier; used in generated function and resource names
+    std::string texture;                // as written in the JSON
     std::filesystem::path texturePath;  // resolved against the material file's folder
     SlotKind kind = SlotKind::Color;
-    int channel = 0;                 // scalar slots: 0..3 for r, g, b, a
+    int channel = 0;  // scalar slots: 0..3 for r, g, b, a
     ColorSpace colorSpace = ColorSpace::Srgb;
-    bool flipY = false;              // normal slots: green channel points down (DirectX convention)
-    HexTiling hex;                   // material settings with this slot's overrides applied
+    bool flipY = false;  // normal slots: green channel points down (DirectX convention)
+    HexTiling hex;       // material settings with this slot's overrides applied
     std::optional<HeightBlend> heightBlend;
-    int width = 0, height = 0;       // of the texture file
-    int line = 0, col = 0;           // where the slot's kind (else the slot) is in the material file; 0 when built in code
+    int width = 0, height = 0;  // of the texture file
+    int line = 0, col = 0;      // where the slot's kind (else the slot) is in the material file; 0 when built in code
 };
 
 struct Material {
-    std::string name;                // output file stem
-    std::string templateName;        // a built-in template name, or a path to a .glsl file
+    std::string name;          // output file stem
+    std::string templateName;  // a built-in template name, or a path to a .glsl file
     std::filesystem::path sourceFile;
-    HexTiling hex;                   // material-level settings (slots may override)
-    std::vector<Slot> slots;         // in declaration order; binding order follows it
+    HexTiling hex;            // material-level settings (slots may override)
+    std::vector<Slot> slots;  // in declaration order; binding order follows it
 };
 
 struct ParseResult {

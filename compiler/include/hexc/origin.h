@@ -11,8 +11,8 @@
 namespace hexc {
 
 struct SplitOrigin {
-    std::array<int32_t, 2> cell;   // floor(st / (28, 1)), kept modulo 2^32 (the shader's ids wrap the same way)
-    std::array<float, 2> offset;   // st - cell * (28, 1), in [0, 28) x [0, 1)
+    std::array<int32_t, 2> cell;  // floor(st / (28, 1)), kept modulo 2^32 (the shader's ids wrap the same way)
+    std::array<float, 2> offset;  // st - cell * (28, 1), in [0, 28) x [0, 1)
 };
 
 inline SplitOrigin splitOrigin(double u, double v, const std::array<double, 2>& tiling) {

@@ -36,9 +36,9 @@ std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, 
 nlohmann::json describe(const TemplateResource& r);
 
 struct TargetOutput {
-    std::string source;             // empty for the SPIR-V target (its output is the binary)
+    std::string source;  // empty for the SPIR-V target (its output is the binary)
     std::string entryPoint;
-    nlohmann::json target;          // the manifest's description of this target
+    nlohmann::json target;  // the manifest's description of this target
 };
 
 TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
@@ -51,8 +51,8 @@ TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan&
 using Locate = nlohmann::json (*)(ResourceKind kind, uint32_t index);
 using IoName = nlohmann::json (*)(uint32_t location, bool input);
 // `placed`: the template's resources as the target placed them (describe() plus the target's address).
-nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const std::string& entryPoint,
-                              Locate locate, IoName ioName, const nlohmann::json& placed);
+nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const std::string& entryPoint, Locate locate,
+                              IoName ioName, const nlohmann::json& placed);
 
 // The manifest (manifest.cpp): material, slots, parameter block, and every target's description.
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets);

@@ -15,8 +15,8 @@ bool hasBindingQualifiers(const CompileOptions& options) { return options.glslEs
 
 // The template's blocks after hexc's (uniform block binding 0), storage buffers and images from 0, its sampler2Ds
 // on the texture units after `unit`; `units` holds those SPIRV-Cross combined from separate images.
-nlohmann::json placeTemplateResources(spirv_cross::CompilerGLSL& c, const std::vector<TemplateResource>& own, std::map<uint32_t, uint32_t>& units,
-                                      uint32_t unit) {
+nlohmann::json placeTemplateResources(spirv_cross::CompilerGLSL& c, const std::vector<TemplateResource>& own,
+                                      std::map<uint32_t, uint32_t>& units, uint32_t unit) {
     uint32_t block = 1, storage = 0, image = 0;
     nlohmann::json placed = nlohmann::json::array();
     for (const TemplateResource& r : own) {
@@ -26,13 +26,27 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerGLSL& c, const std::v
             where[key] = value;
         };
         switch (r.cls) {
-        case ResourceClass::UniformBuffer: bind("binding", block++); break;
-        case ResourceClass::StorageBuffer: bind("binding", storage++); break;
-        case ResourceClass::StorageImage: bind("image_unit", image++); break;
-        case ResourceClass::SampledImage: bind("texture_unit", unit++); break;
-        case ResourceClass::Image: where["texture_unit"] = units[r.id]; break;
-        case ResourceClass::Sampler: where["combined_into_textures"] = true; break;
-        case ResourceClass::PushConstant: where["uniform"] = c.get_name(r.id); break;  // a plain uniform struct in OpenGL
+            case ResourceClass::UniformBuffer:
+                bind("binding", block++);
+                break;
+            case ResourceClass::StorageBuffer:
+                bind("binding", storage++);
+                break;
+            case ResourceClass::StorageImage:
+                bind("image_unit", image++);
+                break;
+            case ResourceClass::SampledImage:
+                bind("texture_unit", unit++);
+                break;
+            case ResourceClass::Image:
+                where["texture_unit"] = units[r.id];
+                break;
+            case ResourceClass::Sampler:
+                where["combined_into_textures"] = true;
+                break;
+            case ResourceClass::PushConstant:
+                where["uniform"] = c.get_name(r.id);
+                break;  // a plain uniform struct in OpenGL
         }
         placed.push_back(std::move(where));
     }
@@ -71,17 +85,17 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     TargetOutput out;
     out.source = c.compile();
     out.entryPoint = "main";
-    Locate locate = hasBindingQualifiers(options)
-                        ? Locate([](ResourceKind kind, uint32_t index) -> nlohmann::json {
-                              if (kind == ResourceKind::Params) return {{"uniform_block", "HexcParams"}, {"binding", 0}};
-                              if (kind == ResourceKind::Sampler) return {{"combined_into_textures", true}};
-                              return {{"texture_unit", index}};
-                          })
-                        : Locate([](ResourceKind kind, uint32_t index) -> nlohmann::json {
-                              if (kind == ResourceKind::Params) return {{"uniform_block", "HexcParams"}, {"bind_by_name", true}};
-                              if (kind == ResourceKind::Sampler) return {{"combined_into_textures", true}};
-                              return {{"texture_unit", index}, {"bind_by_name", true}};
-                          });
+    Locate locate = hasBindingQualifiers(options) ? Locate([](ResourceKind kind, uint32_t index) -> nlohmann::json {
+        if (kind == ResourceKind::Params) return {{"uniform_block", "HexcParams"}, {"binding", 0}};
+        if (kind == ResourceKind::Sampler) return {{"combined_into_textures", true}};
+        return {{"texture_unit", index}};
+    })
+                                                  : Locate([](ResourceKind kind, uint32_t index) -> nlohmann::json {
+                                                        if (kind == ResourceKind::Params)
+                                                            return {{"uniform_block", "HexcParams"}, {"bind_by_name", true}};
+                                                        if (kind == ResourceKind::Sampler) return {{"combined_into_textures", true}};
+                                                        return {{"texture_unit", index}, {"bind_by_name", true}};
+                                                    });
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };
     out.target = describeTarget(spirv, plan, out.entryPoint, locate, none, placed);
     out.target["version"] = std::to_string(options.glslVersion) + (options.glslEs ? " es" : "");

@@ -17,20 +17,31 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const Shader
     for (const TemplateResource& r : templateResources(c, plan)) {
         const bool push = r.cls == ResourceClass::PushConstant;
         spirv_cross::HLSLResourceBinding b =
-            push ? binding(spirv_cross::ResourceBindingPushConstantDescriptorSet, spirv_cross::ResourceBindingPushConstantBinding) : binding(r.set, r.binding);
+            push ? binding(spirv_cross::ResourceBindingPushConstantDescriptorSet, spirv_cross::ResourceBindingPushConstantBinding)
+                 : binding(r.set, r.binding);
         nlohmann::json where = describe(r);
         auto assign = [&](spirv_cross::HLSLResourceBinding::Binding& field, char cls, const char* key) {
             field.register_binding = take(cls);
             where[key] = cls + std::to_string(field.register_binding);
         };
         switch (r.cls) {
-        case ResourceClass::UniformBuffer:
-        case ResourceClass::PushConstant: assign(b.cbv, 'b', "register"); break;
-        case ResourceClass::SampledImage: assign(b.srv, 't', "register"), assign(b.sampler, 's', "sampler_register"); break;
-        case ResourceClass::Image: assign(b.srv, 't', "register"); break;
-        case ResourceClass::Sampler: assign(b.sampler, 's', "register"); break;
-        case ResourceClass::StorageBuffer:
-        case ResourceClass::StorageImage: assign(b.uav, 'u', "register"); break;
+            case ResourceClass::UniformBuffer:
+            case ResourceClass::PushConstant:
+                assign(b.cbv, 'b', "register");
+                break;
+            case ResourceClass::SampledImage:
+                assign(b.srv, 't', "register"), assign(b.sampler, 's', "sampler_register");
+                break;
+            case ResourceClass::Image:
+                assign(b.srv, 't', "register");
+                break;
+            case ResourceClass::Sampler:
+                assign(b.sampler, 's', "register");
+                break;
+            case ResourceClass::StorageBuffer:
+            case ResourceClass::StorageImage:
+                assign(b.uav, 'u', "register");
+                break;
         }
         where["space"] = 0;
         c.add_hlsl_resource_binding(b);

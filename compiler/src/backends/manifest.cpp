@@ -57,8 +57,13 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
         {"template", plan.templateName},
         // The state hexc's one sampler (hexcSampler) must have: the blend assumes trilinear filtering over a full
         // mip chain and repeat addressing (tiles sample outside [0, 1)); anisotropic filtering may be added.
-        {"sampler", {{"min_filter", "linear"}, {"mag_filter", "linear"}, {"mipmap_mode", "linear"}, {"address_mode", "repeat"},
-                     {"mip_chain", "full"}, {"anisotropy", "optional"}}},
+        {"sampler",
+         {{"min_filter", "linear"},
+          {"mag_filter", "linear"},
+          {"mipmap_mode", "linear"},
+          {"address_mode", "repeat"},
+          {"mip_chain", "full"},
+          {"anisotropy", "optional"}}},
         {"slots", slots},
         // Uniforms are run-time parameters; baked constants (--bake) and specialised settings (whole-number
         // exponents, multiplied out) are fixed in the code and listed for reference only.

@@ -14,8 +14,8 @@ std::string typeName(const spirv_cross::SPIRType& type) {
     return type.vecsize == 1 ? (base.empty() ? "float" : base == "i" ? "int" : "uint") : base + "vec" + std::to_string(type.vecsize);
 }
 
-nlohmann::json stageVariables(const spirv_cross::Compiler& c, const spirv_cross::SmallVector<spirv_cross::Resource>& vars,
-                              bool input, IoName ioName) {
+nlohmann::json stageVariables(const spirv_cross::Compiler& c, const spirv_cross::SmallVector<spirv_cross::Resource>& vars, bool input,
+                              IoName ioName) {
     std::vector<std::pair<uint32_t, nlohmann::json>> sorted;
     for (const auto& r : vars) {
         uint32_t location = c.get_decoration(r.id, spv::DecorationLocation);
@@ -39,15 +39,20 @@ int lineNaming(const std::string& source, const std::string& name) {
 bool isHexcs(const TemplateResource& r, const ShaderPlan& plan) {
     const bool named = r.name.starts_with("hexc") || r.name == "HexcParams";
     switch (r.cls) {
-    case ResourceClass::UniformBuffer: return named && r.binding == kParamsBinding;
-    case ResourceClass::Sampler: return named && r.binding == kSamplerBinding;
-    case ResourceClass::Image: return named && r.binding >= kFirstTextureBinding && r.binding < kFirstTextureBinding + plan.slots.size();
-    default: return false;
+        case ResourceClass::UniformBuffer:
+            return named && r.binding == kParamsBinding;
+        case ResourceClass::Sampler:
+            return named && r.binding == kSamplerBinding;
+        case ResourceClass::Image:
+            return named && r.binding >= kFirstTextureBinding && r.binding < kFirstTextureBinding + plan.slots.size();
+        default:
+            return false;
     }
 }
 
 const char* toString(ResourceClass cls) {
-    static const char* names[] = {"uniform_buffer", "storage_buffer", "push_constant", "sampled_image", "image", "sampler", "storage_image"};
+    static const char* names[] = {"uniform_buffer", "storage_buffer", "push_constant", "sampled_image",
+                                  "image",          "sampler",        "storage_image"};
     return names[size_t(cls)];
 }
 
@@ -56,14 +61,18 @@ const char* toString(ResourceClass cls) {
 std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, const ShaderPlan& plan) {
     spirv_cross::ShaderResources res = c.get_shader_resources();
     const std::pair<ResourceClass, const spirv_cross::SmallVector<spirv_cross::Resource>*> lists[] = {
-        {ResourceClass::UniformBuffer, &res.uniform_buffers}, {ResourceClass::StorageBuffer, &res.storage_buffers},
-        {ResourceClass::PushConstant, &res.push_constant_buffers}, {ResourceClass::SampledImage, &res.sampled_images},
-        {ResourceClass::Image, &res.separate_images}, {ResourceClass::Sampler, &res.separate_samplers},
+        {ResourceClass::UniformBuffer, &res.uniform_buffers},
+        {ResourceClass::StorageBuffer, &res.storage_buffers},
+        {ResourceClass::PushConstant, &res.push_constant_buffers},
+        {ResourceClass::SampledImage, &res.sampled_images},
+        {ResourceClass::Image, &res.separate_images},
+        {ResourceClass::Sampler, &res.separate_samplers},
         {ResourceClass::StorageImage, &res.storage_images}};
     std::vector<TemplateResource> out;
     for (const auto& [cls, list] : lists)
         for (const spirv_cross::Resource& r : *list) {
-            TemplateResource t{r.id, r.name, cls, c.get_decoration(r.id, spv::DecorationDescriptorSet), c.get_decoration(r.id, spv::DecorationBinding)};
+            TemplateResource t{r.id, r.name, cls, c.get_decoration(r.id, spv::DecorationDescriptorSet),
+                               c.get_decoration(r.id, spv::DecorationBinding)};
             if (cls == ResourceClass::PushConstant) {
                 t.name = c.get_name(r.base_type_id);  // its block's name, as for the other blocks
                 out.push_back(std::move(t));
@@ -74,10 +83,11 @@ std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, 
                 continue;
             }
             if (!isHexcs(t, plan))
-                throw CompileError{{Diagnostic::make(Code::TemplateSetConflict, {plan.templateName, lineNaming(plan.templateSource, t.name), 0}, "",
-                                     "`" + t.name + "` is in descriptor set 0, binding " + std::to_string(t.binding) +
-                                         ", and set 0 is hexc's (parameter block, sampler, textures); declare the template's own resources "
-                                         "in set 1 or higher")}};
+                throw CompileError{{Diagnostic::make(
+                    Code::TemplateSetConflict, {plan.templateName, lineNaming(plan.templateSource, t.name), 0}, "",
+                    "`" + t.name + "` is in descriptor set 0, binding " + std::to_string(t.binding) +
+                        ", and set 0 is hexc's (parameter block, sampler, textures); declare the template's own resources "
+                        "in set 1 or higher")}};
         }
     std::stable_sort(out.begin(), out.end(), [](const TemplateResource& a, const TemplateResource& b) {
         return std::tie(a.cls, a.set, a.binding) < std::tie(b.cls, b.set, b.binding);
@@ -91,8 +101,8 @@ nlohmann::json describe(const TemplateResource& r) {
     return j;
 }
 
-nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const std::string& entryPoint,
-                              Locate locate, IoName ioName, const nlohmann::json& placed) {
+nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const std::string& entryPoint, Locate locate,
+                              IoName ioName, const nlohmann::json& placed) {
     spirv_cross::Compiler c(spirv);
     spirv_cross::ShaderResources res = c.get_shader_resources();
     nlohmann::json t = {{"entry_point", entryPoint}, {"stage", "fragment"}};
@@ -106,7 +116,8 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
             const auto& type = c.get_type(ubo.base_type_id);
             for (uint32_t i = 0; i < type.member_types.size(); ++i) {
                 if (plan.params[i].constantId || c.type_struct_member_offset(type, i) != plan.params[i].offset)
-                    throw CompileError{{Diagnostic::make(Code::Internal, {"hexc"}, "", "internal: parameter block layout differs from the plan")}};
+                    throw CompileError{
+                        {Diagnostic::make(Code::Internal, {"hexc"}, "", "internal: parameter block layout differs from the plan")}};
             }
         }
         if (hexcBlock) t["params"] = locate(ResourceKind::Params, 0);
@@ -125,7 +136,9 @@ TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan&
     TargetOutput out;
     out.entryPoint = "main";
     Locate locate = [](ResourceKind kind, uint32_t index) -> nlohmann::json {
-        uint32_t binding = kind == ResourceKind::Params ? kParamsBinding : kind == ResourceKind::Sampler ? kSamplerBinding : kFirstTextureBinding + index;
+        uint32_t binding = kind == ResourceKind::Params    ? kParamsBinding
+                           : kind == ResourceKind::Sampler ? kSamplerBinding
+                                                           : kFirstTextureBinding + index;
         const char* type = kind == ResourceKind::Params ? "uniform_buffer" : kind == ResourceKind::Sampler ? "sampler" : "sampled_image";
         return {{"set", 0}, {"binding", binding}, {"descriptor_type", type}};
     };

@@ -10,9 +10,7 @@
 namespace hexc {
 namespace {
 
-std::string lineDirective(int line, const std::string& file) {
-    return "#line " + std::to_string(line) + " \"" + file + "\"\n";
-}
+std::string lineDirective(int line, const std::string& file) { return "#line " + std::to_string(line) + " \"" + file + "\"\n"; }
 
 // Back in the template: source string 0, which glslang names after the template file it was given. Not the path in
 // quotes: a `#line` string cannot hold a `"`, and a path can.
@@ -56,15 +54,22 @@ public:
                 continue;
             }
             if (p.type == "vec2")
-                out += expand("constant.vec2", {{"id", std::to_string(*p.constantId)}, {"idy", std::to_string(*p.constantId + 1)},
-                                                {"name", p.name}, {"x", literal(p.value[0])}, {"y", literal(p.value[1])}}) + "\n";
+                out += expand("constant.vec2", {{"id", std::to_string(*p.constantId)},
+                                                {"idy", std::to_string(*p.constantId + 1)},
+                                                {"name", p.name},
+                                                {"x", literal(p.value[0])},
+                                                {"y", literal(p.value[1])}}) +
+                       "\n";
             else
-                out += expand("constant", {{"id", std::to_string(*p.constantId)}, {"type", p.type}, {"name", p.name}, {"value", literal(p.value[0])}}) + "\n";
+                out += expand("constant",
+                              {{"id", std::to_string(*p.constantId)}, {"type", p.type}, {"name", p.name}, {"value", literal(p.value[0])}}) +
+                       "\n";
         }
         if (!members.empty()) out += expand("params", {{"members", members}}) + "\n";
         out += expand("sampler", {{"binding", std::to_string(kSamplerBinding)}}) + "\n";
         // Every texture first: a slot may read another's as its height map.
-        for (const SlotPlan& sp : plan_.slots) out += expand("texture", {{"name", sp.slot->name}, {"binding", std::to_string(sp.binding)}}) + "\n";
+        for (const SlotPlan& sp : plan_.slots)
+            out += expand("texture", {{"name", sp.slot->name}, {"binding", std::to_string(sp.binding)}}) + "\n";
         return out;
     }
 
@@ -102,8 +107,8 @@ public:
 
     std::string blendSettings(const SlotPlan& sp) const {
         std::vector<std::pair<std::string, std::string>> fields = {
-            {"metric", literal(sp.metric)},       {"gain", literal(sp.gain)}, {"exponentInt", literal(sp.exponentInt)},
-            {"gainInt", literal(sp.gainInt)},     {"taps", literal(sp.taps)}, {"height", literal(sp.heightMap.has_value())},
+            {"metric", literal(sp.metric)},   {"gain", literal(sp.gain)}, {"exponentInt", literal(sp.exponentInt)},
+            {"gainInt", literal(sp.gainInt)}, {"taps", literal(sp.taps)}, {"height", literal(sp.heightMap.has_value())},
         };
         if (sp.heightMap) fields.emplace_back("heightLuma", "hexcChannel(" + literal(plan_.slots[*sp.heightMap].slot->channel) + ")");
         addParam(fields, "falloff", sp.falloff);
@@ -147,8 +152,10 @@ std::string injectedCode(const ShaderPlan& plan) {
     Emitter emit(plan);
     out += emit.resources();
     const SlotPlan& first = *std::find_if(plan.slots.begin(), plan.slots.end(), [](const SlotPlan& sp) { return !sp.heightOnly; });
-    out += emit.expand("first", {{"name", first.slot->name}, {"kind", std::string(toString(first.slot->kind))},
-                                 {"projection", std::string(toString(first.projection))}}) + "\n";
+    out += emit.expand("first", {{"name", first.slot->name},
+                                 {"kind", std::string(toString(first.slot->kind))},
+                                 {"projection", std::string(toString(first.projection))}}) +
+           "\n";
     for (const SlotPlan& sp : plan.slots)
         if (!sp.heightOnly) out += emit.slot(sp);
     return out;
@@ -164,8 +171,9 @@ std::string expandTokens(const std::string& text, const Tokens& values, const st
         std::string name = text.substr(open + 2, close == std::string::npos ? std::string::npos : close - open - 2);
         auto it = values.find(name);
         if (close == std::string::npos || it == values.end())
-            throw CompileError{{Diagnostic::make(Code::Internal, {"hexc/slots.glsl"}, "",
-                                 "internal error: section `" + section + "` has token `${" + name + "}`, which hexc does not fill")}};
+            throw CompileError{
+                {Diagnostic::make(Code::Internal, {"hexc/slots.glsl"}, "",
+                                  "internal error: section `" + section + "` has token `${" + name + "}`, which hexc does not fill")}};
         out.append(text, at, open - at).append(it->second);
     }
     return out.append(text, at);

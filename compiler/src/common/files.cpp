@@ -33,7 +33,8 @@ std::optional<std::string> readFile(const std::filesystem::path& file, std::stri
     struct stat st;
     if (::fstat(in.fd, &st) != 0) return fail(std::strerror(errno));
     if (!S_ISREG(st.st_mode)) return fail("not a regular file");
-    if (uint64_t(st.st_size) > kMaxInputBytes) return fail("larger than hexc's input limit of " + std::to_string(kMaxInputBytes >> 20) + " MiB");
+    if (uint64_t(st.st_size) > kMaxInputBytes)
+        return fail("larger than hexc's input limit of " + std::to_string(kMaxInputBytes >> 20) + " MiB");
     // Read what is there, up to the limit: a file that grows while read is cut off and reported, not followed.
     std::string bytes;
     char buffer[65536];
@@ -57,8 +58,8 @@ void writeFileAtomically(const std::filesystem::path& file, const std::function<
     // A hidden name in the target folder, so the rename stays on one file system and is atomic; unique per
     // process and call, so concurrent writers into one folder never share or rename each other's temporary.
     static std::atomic<unsigned> counter{0};
-    std::filesystem::path temp = file.parent_path() / ("." + file.filename().string() + "." + std::to_string(::getpid()) + "." +
-                                                       std::to_string(counter++) + ".tmp");
+    std::filesystem::path temp =
+        file.parent_path() / ("." + file.filename().string() + "." + std::to_string(::getpid()) + "." + std::to_string(counter++) + ".tmp");
     if (!write(temp)) {
         std::filesystem::remove(temp, ec);
         throw std::runtime_error("cannot write " + file.string());

@@ -50,8 +50,7 @@ PfmHeader readPfmHeader(std::ifstream& in, const std::filesystem::path& file) {
     double scale = 0;
     in >> magic >> h.width >> h.height >> scale;
     in.get();  // the single whitespace character that ends the header
-    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || scale == 0)
-        fail(file, "not a PFM file (bad header)");
+    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || scale == 0) fail(file, "not a PFM file (bad header)");
     h.channels = magic == "PF" ? 3 : 1;
     h.littleEndian = scale < 0;
     return h;
@@ -71,8 +70,7 @@ Texture loadPfm(const std::filesystem::path& file) {
     in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
     if (in.gcount() != std::streamsize(words.size() * 4)) fail(file, "PFM file is truncated");
     if (header.littleEndian != (std::endian::native == std::endian::little))
-        for (uint32_t& w : words)
-            w = (w >> 24) | ((w >> 8) & 0xff00u) | ((w << 8) & 0xff0000u) | (w << 24);  // std::byteswap is C++23
+        for (uint32_t& w : words) w = (w >> 24) | ((w >> 8) & 0xff00u) | ((w << 8) & 0xff0000u) | (w << 24);  // std::byteswap is C++23
 
     Texture t;
     t.width = width;
@@ -174,13 +172,11 @@ Texture loadTexture(const std::filesystem::path& file, bool srgb) {
     Texture t;
     int channelsInFile = 0;
     if (stbi_is_hdr(name.c_str())) {
-        std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(name.c_str(), &t.width, &t.height, &channelsInFile, 4),
-                                                     stbi_image_free);
+        std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(name.c_str(), &t.width, &t.height, &channelsInFile, 4), stbi_image_free);
         if (!data) failStb(file);
         t.rgba32f.assign(data.get(), data.get() + size_t(t.width) * t.height * 4);
     } else {
-        std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(name.c_str(), &t.width, &t.height, &channelsInFile, 4),
-                                                       stbi_image_free);
+        std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(name.c_str(), &t.width, &t.height, &channelsInFile, 4), stbi_image_free);
         if (!data) failStb(file);
         t.rgba8.assign(data.get(), data.get() + size_t(t.width) * t.height * 4);
         t.srgb = srgb;

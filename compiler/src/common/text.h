@@ -5,9 +5,7 @@
 
 namespace hexc {
 
-inline bool isIdentifierChar(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
+inline bool isIdentifierChar(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
 
 // True when `word` occurs in `text` with no identifier character either side (regex \bword\b).
 inline bool containsWord(std::string_view text, std::string_view word) {

@@ -5,16 +5,17 @@ namespace hexc {
 std::string pointerAppend(const std::string& pointer, std::string_view token) {
     std::string out = pointer + "/";
     for (char c : token) {
-        if (c == '~') out += "~0";
-        else if (c == '/') out += "~1";
-        else out += c;
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
     }
     return out;
 }
 
-std::string pointerAppend(const std::string& pointer, size_t index) {
-    return pointer + "/" + std::to_string(index);
-}
+std::string pointerAppend(const std::string& pointer, size_t index) { return pointer + "/" + std::to_string(index); }
 
 namespace {
 
@@ -46,8 +47,10 @@ std::optional<size_t> excessiveNesting(std::string_view text) {
     for (size_t i = 0; i < text.size(); ++i) {
         char c = text[i];
         if (inString) {
-            if (c == '\\') ++i;
-            else if (c == '"') inString = false;
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                inString = false;
         } else if (c == '"') {
             inString = true;
         } else if (c == '[' || c == '{') {
@@ -85,8 +88,7 @@ TextPos JsonLocator::key(const std::string& pointer) const {
 }
 
 void JsonLocator::skipSpace() {
-    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' || text_[pos_] == '\r'))
-        ++pos_;
+    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' || text_[pos_] == '\r')) ++pos_;
 }
 
 void JsonLocator::parseString() {
@@ -108,8 +110,10 @@ void JsonLocator::parseValue(const std::string& pointer) {
             // The raw key between the quotes; escapes are rare in material keys and kept as written.
             std::string key(text_.substr(start + 1, pos_ - start - 2));
             std::string child = pointerAppend(pointer, key);
-            if (auto it = keys_.find(child); it != keys_.end()) duplicates_.push_back({child, it->second, keyPos});
-            else keys_.emplace(child, keyPos);
+            if (auto it = keys_.find(child); it != keys_.end())
+                duplicates_.push_back({child, it->second, keyPos});
+            else
+                keys_.emplace(child, keyPos);
             skipSpace();
             ++pos_;  // ':'
             skipSpace();

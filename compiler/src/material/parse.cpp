@@ -24,9 +24,10 @@ using nlohmann::json;
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "slots"};
 const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling", "height_blend"};
-const std::vector<std::string> kHexKeys = {"enabled", "tiling", "rotation", "falloff", "falloffcontrast", "exponent", "mode",
-                                           "split_coordinates", "rotationrange", "rotationsteps", "scalerange", "offset", "offsetsteps",
-                                           "mask", "maskscale", "taps", "projection", "planesharpness"};
+const std::vector<std::string> kHexKeys = {"enabled",    "tiling",     "rotation",          "falloff",       "falloffcontrast",
+                                           "exponent",   "mode",       "split_coordinates", "rotationrange", "rotationsteps",
+                                           "scalerange", "offset",     "offsetsteps",       "mask",          "maskscale",
+                                           "taps",       "projection", "planesharpness"};
 const std::vector<std::string> kHeightKeys = {"slot", "width"};
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
@@ -34,7 +35,8 @@ const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
 
 // 1-64 letters, digits, `_` or `-`: material, scene and pass names become file names.
 bool isFileName(const std::string& name) {
-    return !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) { return isIdentifierChar(c) || c == '-'; });
+    return !name.empty() && name.size() <= 64 &&
+           std::all_of(name.begin(), name.end(), [](char c) { return isIdentifierChar(c) || c == '-'; });
 }
 
 // [a-z][a-z0-9_]{0,31} without `__` (reserved in GLSL): a slot name becomes the GLSL function hexc_<name>.
@@ -51,12 +53,18 @@ constexpr size_t kMaxSlots = 16;
 
 std::string typeName(const json& v) {
     switch (v.type()) {
-    case json::value_t::object: return "an object";
-    case json::value_t::array: return "an array";
-    case json::value_t::string: return "a string";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::null: return "null";
-    default: return "a number";
+        case json::value_t::object:
+            return "an object";
+        case json::value_t::array:
+            return "an array";
+        case json::value_t::string:
+            return "a string";
+        case json::value_t::boolean:
+            return "a boolean";
+        case json::value_t::null:
+            return "null";
+        default:
+            return "a number";
     }
 }
 
@@ -73,8 +81,7 @@ std::string joinQuoted(const std::vector<std::string>& items) {
 
 class Validator {
 public:
-    Validator(std::string_view text, const std::filesystem::path& file)
-        : locator_(text), file_(file), dir_(file.parent_path()) {}
+    Validator(std::string_view text, const std::filesystem::path& file) : locator_(text), file_(file), dir_(file.parent_path()) {}
 
     Diagnostics diags;
 
@@ -91,7 +98,8 @@ public:
         m.sourceFile = file_;
         for (const auto& d : locator_.duplicates())
             report(Code::DuplicateKey, d.pointer, d.second,
-                  "duplicate key " + ticked(d.pointer.substr(d.pointer.rfind('/') + 1)) + " (first at line " + std::to_string(d.first.line) + ")");
+                   "duplicate key " + ticked(d.pointer.substr(d.pointer.rfind('/') + 1)) + " (first at line " +
+                       std::to_string(d.first.line) + ")");
         if (!doc.is_object()) {
             report(Code::WrongType, "", "expected a material object, got " + typeName(doc));
             return m;
@@ -100,7 +108,8 @@ public:
         if (requireKey(doc, "", "name", "a string")) {
             m.name = string(doc["name"], "/name");
             if (doc["name"].is_string() && !isFileName(m.name))
-                report(Code::InvalidName, "/name", "expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"" + m.name + "\"");
+                report(Code::InvalidName, "/name",
+                       "expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"" + m.name + "\"");
         }
         m.templateName = "lit";
         if (doc.contains("template")) m.templateName = templateRef(doc["template"], "/template");
@@ -151,7 +160,8 @@ private:
                 continue;
             }
             for (const Material& other : scene.materials)
-                if (other.name == r.material->name) report(Code::DuplicateName, p, "two materials are named `" + other.name + "`; variant files would collide");
+                if (other.name == r.material->name)
+                    report(Code::DuplicateName, p, "two materials are named `" + other.name + "`; variant files would collide");
             scene.materials.push_back(std::move(*r.material));
         }
     }
@@ -204,7 +214,8 @@ private:
             if (std::find(known.begin(), known.end(), key) != known.end()) continue;
             std::string hint;
             if (auto best = closestMatch(key, known)) hint = "did you mean " + ticked(*best) + "?";
-            report(Code::UnknownKey, pointerAppend(pointer, key), "unknown key " + ticked(key) + "; expected " + joinQuoted(known), hint, true);
+            report(Code::UnknownKey, pointerAppend(pointer, key), "unknown key " + ticked(key) + "; expected " + joinQuoted(known), hint,
+                   true);
         }
     }
 
@@ -245,9 +256,7 @@ private:
         double lo, hi;
         bool loOpen, hiOpen;
         std::string text;  // as shown to the user, e.g. "in (0, 1)"
-        bool contains(double x) const {
-            return (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi);
-        }
+        bool contains(double x) const { return (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi); }
     };
 
     double number(const json& v, const std::string& pointer, const Range& range, double fallback) {
@@ -277,11 +286,14 @@ private:
     // An array of two numbers in `range` (whole numbers when `integer`).
     void pair(const json& v, const std::string& pointer, const Range& range, std::array<double, 2>& out, bool integer = false) {
         if (!v.is_array() || v.size() != 2) {
-            report(Code::WrongType, pointer, "expected an array of two numbers " + range.text + ", got " + (v.is_array() ? "an array of " + std::to_string(v.size()) : typeName(v)));
+            report(Code::WrongType, pointer,
+                   "expected an array of two numbers " + range.text + ", got " +
+                       (v.is_array() ? "an array of " + std::to_string(v.size()) : typeName(v)));
             return;
         }
         for (size_t i = 0; i < 2; ++i)
-            out[i] = integer ? whole(v[i], pointerAppend(pointer, i), range, out[i]) : number(v[i], pointerAppend(pointer, i), range, out[i]);
+            out[i] =
+                integer ? whole(v[i], pointerAppend(pointer, i), range, out[i]) : number(v[i], pointerAppend(pointer, i), range, out[i]);
     }
 
     std::string templateRef(const json& v, const std::string& pointer) {
@@ -293,7 +305,9 @@ private:
             // what is not a regular file).
             std::error_code ec;
             if (!std::filesystem::is_regular_file(p, ec))
-                report(Code::TemplateUnreadable, pointer, "cannot read template file " + p.string() + (std::filesystem::exists(p, ec) ? ": not a regular file" : ": no such file"));
+                report(Code::TemplateUnreadable, pointer,
+                       "cannot read template file " + p.string() +
+                           (std::filesystem::exists(p, ec) ? ": not a regular file" : ": no such file"));
             return p.string();
         }
         std::vector<std::string> names = builtinTemplateNames();
@@ -302,7 +316,8 @@ private:
         if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
         std::string list;
         for (const std::string& n : names) list += (list.empty() ? "" : ", ") + ticked(n);
-        report(Code::UnknownTemplate, pointer, "unknown template \"" + name + "\"; expected a built-in template (" + list + ") or a path to a .glsl file", hint);
+        report(Code::UnknownTemplate, pointer,
+               "unknown template \"" + name + "\"; expected a built-in template (" + list + ") or a path to a .glsl file", hint);
         return "lit";
     }
 
@@ -324,44 +339,55 @@ private:
             } else if (t.is_number()) {
                 hex.tiling[0] = hex.tiling[1] = number(t, p, positive, hex.tiling[0]);
             } else {
-                report(Code::WrongType, p, "expected a number > 0 or an array [u, v] of two numbers > 0, got " +
-                             (t.is_array() ? "an array of " + std::to_string(t.size()) : typeName(t)));
+                report(Code::WrongType, p,
+                       "expected a number > 0 or an array [u, v] of two numbers > 0, got " +
+                           (t.is_array() ? "an array of " + std::to_string(t.size()) : typeName(t)));
             }
         }
-        if (v.contains("rotation")) hex.rotation = number(v["rotation"], pointer + "/rotation", {0, INFINITY, false, true, ">= 0"}, hex.rotation);
+        if (v.contains("rotation"))
+            hex.rotation = number(v["rotation"], pointer + "/rotation", {0, INFINITY, false, true, ">= 0"}, hex.rotation);
         // 1e-6 from either end: float32 must still tell 1 - r from 0 and from 1 for the gain's exponent.
         if (v.contains("falloff"))
-            hex.falloff = number(v["falloff"], pointer + "/falloff", {1e-6, 1 - 1e-6, false, false, "in [0.000001, 0.999999] (0.5 = off)"}, hex.falloff);
+            hex.falloff = number(v["falloff"], pointer + "/falloff", {1e-6, 1 - 1e-6, false, false, "in [0.000001, 0.999999] (0.5 = off)"},
+                                 hex.falloff);
         if (v.contains("falloffcontrast"))
-            hex.falloffcontrast = number(v["falloffcontrast"], pointer + "/falloffcontrast", {0, 1, false, false, "in [0, 1]"}, hex.falloffcontrast);
+            hex.falloffcontrast =
+                number(v["falloffcontrast"], pointer + "/falloffcontrast", {0, 1, false, false, "in [0, 1]"}, hex.falloffcontrast);
         // Above 64, (1/3)^gamma at a triangle centre underflows float32 and the weights become 0/0.
-        if (v.contains("exponent")) hex.exponent = number(v["exponent"], pointer + "/exponent", {1, 64, false, false, "in [1, 64]"}, hex.exponent);
+        if (v.contains("exponent"))
+            hex.exponent = number(v["exponent"], pointer + "/exponent", {1, 64, false, false, "in [1, 64]"}, hex.exponent);
         if (v.contains("mode")) {
             if (int i = choice(v["mode"], pointer + "/mode", kModes); i >= 0) hex.mode = HashMode(i);
         }
         if (v.contains("split_coordinates"))
             hex.splitCoordinates = boolean(v["split_coordinates"], pointer + "/split_coordinates", hex.splitCoordinates);
         if (v.contains("rotationrange"))
-            pair(v["rotationrange"], pointer + "/rotationrange", {-3600, 3600, false, false, "in [-3600, 3600] (degrees)"}, hex.rotationRange);
-        if (v.contains("scalerange")) pair(v["scalerange"], pointer + "/scalerange", {0.01, 100, false, false, "in [0.01, 100]"}, hex.scaleRange);
+            pair(v["rotationrange"], pointer + "/rotationrange", {-3600, 3600, false, false, "in [-3600, 3600] (degrees)"},
+                 hex.rotationRange);
+        if (v.contains("scalerange"))
+            pair(v["scalerange"], pointer + "/scalerange", {0.01, 100, false, false, "in [0.01, 100]"}, hex.scaleRange);
         if (v.contains("offset")) hex.offset = number(v["offset"], pointer + "/offset", {0, 1, false, false, "in [0, 1]"}, hex.offset);
         if (v.contains("rotationsteps"))
-            hex.rotationSteps = int(whole(v["rotationsteps"], pointer + "/rotationsteps", {0, 360, false, false, "in 0..360 (0: continuous)"}, 0));
+            hex.rotationSteps =
+                int(whole(v["rotationsteps"], pointer + "/rotationsteps", {0, 360, false, false, "in 0..360 (0: continuous)"}, 0));
         if (v.contains("mask")) {
             if (int i = choice(v["mask"], pointer + "/mask", kMasks); i >= 0) hex.mask = Mask(i);
         }
         if (v.contains("maskscale"))
-            hex.maskScale = int(whole(v["maskscale"], pointer + "/maskscale", {1, 64, false, false, "in 1..64 (mask cells per texture repeat)"}, hex.maskScale));
+            hex.maskScale = int(whole(v["maskscale"], pointer + "/maskscale",
+                                      {1, 64, false, false, "in 1..64 (mask cells per texture repeat)"}, hex.maskScale));
         if (v.contains("taps")) hex.taps = int(whole(v["taps"], pointer + "/taps", {1, 3, false, false, "in 1..3"}, hex.taps));
         for (const char* key : {"projection", "planesharpness"})
             if (v.contains(key) && !materialLevel)
-                report(Code::MisplacedKey, pointer + "/" + key, ticked(key) + " is material-wide (every slot function takes the same inputs); set it in the top-level `hextiling`",
-                      {}, true);
+                report(Code::MisplacedKey, pointer + "/" + key,
+                       ticked(key) + " is material-wide (every slot function takes the same inputs); set it in the top-level `hextiling`",
+                       {}, true);
         if (v.contains("projection") && materialLevel) {
             if (int i = choice(v["projection"], pointer + "/projection", kProjections); i >= 0) hex.projection = Projection(i);
         }
         if (v.contains("planesharpness") && materialLevel)
-            hex.planeSharpness = number(v["planesharpness"], pointer + "/planesharpness", {1, 64, false, false, "in [1, 64]"}, hex.planeSharpness);
+            hex.planeSharpness =
+                number(v["planesharpness"], pointer + "/planesharpness", {1, 64, false, false, "in [1, 64]"}, hex.planeSharpness);
         if (v.contains("offsetsteps")) {
             std::array<double, 2> steps{0, 0};
             pair(v["offsetsteps"], pointer + "/offsetsteps", {0, 4096, false, false, "in 0..4096 (0: continuous)"}, steps, true);
@@ -385,7 +411,8 @@ private:
             if (!s.name.empty()) {
                 if (auto [it, fresh] = seen.emplace(s.name, p); !fresh) {
                     TextPos first = locator_.value(it->second + "/name");
-                    report(Code::DuplicateName, p + "/name", "duplicate slot name \"" + s.name + "\" (first at line " + std::to_string(first.line) + ")");
+                    report(Code::DuplicateName, p + "/name",
+                           "duplicate slot name \"" + s.name + "\" (first at line " + std::to_string(first.line) + ")");
                 }
             }
             m.slots.push_back(std::move(s));
@@ -404,8 +431,9 @@ private:
         if (requireKey(v, pointer, "name", "a string")) {
             s.name = string(v["name"], pointer + "/name");
             if (v["name"].is_string() && !isSlotName(s.name)) {
-                report(Code::InvalidName, pointer + "/name", "expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`), got \"" + s.name + "\"",
-                      "it becomes the GLSL function hexc_<name>");
+                report(Code::InvalidName, pointer + "/name",
+                       "expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`), got \"" + s.name + "\"",
+                       "it becomes the GLSL function hexc_<name>");
                 s.name.clear();
             }
         }
@@ -434,7 +462,8 @@ private:
         if (v.contains("colorspace")) {
             if (int i = choice(v["colorspace"], pointer + "/colorspace", kColorSpaces); i >= 0) {
                 if (kindKnown && s.kind == SlotKind::Normal && ColorSpace(i) == ColorSpace::Srgb)
-                    report(Code::ConflictingSettings, pointer + "/colorspace", "a normal map holds vectors and must be `linear`, got \"srgb\"");
+                    report(Code::ConflictingSettings, pointer + "/colorspace",
+                           "a normal map holds vectors and must be `linear`, got \"srgb\"");
                 else
                     s.colorSpace = ColorSpace(i);
             }
@@ -456,19 +485,25 @@ private:
         // Checked on the merged settings: the paper's lattice has no exact period to split at, and its tile
         // transforms are Listings 2 and 6 exactly.
         if (hex.splitCoordinates && hex.mode == HashMode::Paper)
-            report(Code::ConflictingSettings, at, "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
+            report(Code::ConflictingSettings, at,
+                   "`split_coordinates` needs mode `stable`; the paper's lattice has no exact period to split at");
         if (hex.hasTransforms() && hex.mode == HashMode::Paper)
-            report(Code::ConflictingSettings, at, "per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode `stable`; "
-                      "mode `paper` is exactly the paper's Listings 2 and 6");
+            report(Code::ConflictingSettings, at,
+                   "per-tile transforms (rotationrange, rotationsteps, scalerange, offset, offsetsteps) need mode `stable`; "
+                   "mode `paper` is exactly the paper's Listings 2 and 6");
         if (hex.mask != Mask::Hex && hex.mode == HashMode::Paper)
-            report(Code::ConflictingSettings, at, "mask `" + std::string(toString(hex.mask)) + "` needs mode `stable`; the paper defines only the hex lattice");
+            report(Code::ConflictingSettings, at,
+                   "mask `" + std::string(toString(hex.mask)) + "` needs mode `stable`; the paper defines only the hex lattice");
         if (hex.taps > 1 && hex.taps != hex.maskTaps())
-            report(Code::ConflictingSettings, at, "`taps` " + std::to_string(hex.taps) + " does not fit mask `" + std::string(toString(hex.mask)) + "`, which has " +
-                          std::to_string(hex.maskTaps()) + " taps; expected " + std::to_string(hex.maskTaps()) + " or 1 (one dithered fetch)");
+            report(Code::ConflictingSettings, at,
+                   "`taps` " + std::to_string(hex.taps) + " does not fit mask `" + std::string(toString(hex.mask)) + "`, which has " +
+                       std::to_string(hex.maskTaps()) + " taps; expected " + std::to_string(hex.maskTaps()) + " or 1 (one dithered fetch)");
         if (hex.splitCoordinates && (hex.mask == Mask::Noise || hex.mask == Mask::Noise3))
-            report(Code::ConflictingSettings, at, "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
+            report(Code::ConflictingSettings, at,
+                   "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
         if (hex.splitCoordinates && hex.projection == Projection::Triplanar)
-            report(Code::ConflictingSettings, at, "`split_coordinates` does not work with the triplanar projection: it reads world positions, not uv");
+            report(Code::ConflictingSettings, at,
+                   "`split_coordinates` does not work with the triplanar projection: it reads world positions, not uv");
     }
 
     // Stable mode is exact while st = uv * tiling stays within its reduction's range (docs/precision.md): |st.x| < 2^26
@@ -482,9 +517,12 @@ private:
         const double limit = std::ldexp(1.0, checker ? 31 : 26) / tiling;
         if (limit >= 65536) return;
         char text[200];
-        std::snprintf(text, sizeof text, "with tiling %g, stable mode's %s is exact only for |%s| < %.0f (2^%d / tiling); beyond, tiles come out wrong",
+        std::snprintf(text, sizeof text,
+                      "with tiling %g, stable mode's %s is exact only for |%s| < %.0f (2^%d / tiling); beyond, tiles come out wrong",
                       tiling, checker ? "checker" : "lattice", checker ? "uv" : "u", limit, checker ? 31 : 26);
-        report(Code::TilingRange, at, text, "for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin (docs/precision.md#stable-modes-range)");
+        report(Code::TilingRange, at, text,
+               "for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin "
+               "(docs/precision.md#stable-modes-range)");
     }
 
     void heightBlend(const json& v, const std::string& pointer, Slot& s) {
@@ -497,9 +535,11 @@ private:
         if (requireKey(v, pointer, "slot", "the name of a scalar slot holding heights")) h.slot = string(v["slot"], pointer + "/slot");
         if (v.contains("width")) h.width = number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, h.width);
         if (s.hex.taps == 1)
-            report(Code::ConflictingSettings, pointer, "`height_blend` needs every tile's height; it cannot be combined with `taps` 1", {}, true);
+            report(Code::ConflictingSettings, pointer, "`height_blend` needs every tile's height; it cannot be combined with `taps` 1", {},
+                   true);
         if (!s.hex.enabled)
-            report(Code::ConflictingSettings, pointer, "`height_blend` weighs tiles, and this slot has hex-tiling disabled (`enabled`: false)", {}, true);
+            report(Code::ConflictingSettings, pointer,
+                   "`height_blend` weighs tiles, and this slot has hex-tiling disabled (`enabled`: false)", {}, true);
         s.heightBlend = h;
     }
 
@@ -517,7 +557,9 @@ private:
                 if (auto best = closestMatch(s.heightBlend->slot, names)) hint = "did you mean " + ticked(*best) + "?";
                 report(Code::UnknownReference, p, "no slot named `" + s.heightBlend->slot + "` in this material", hint);
             } else if (const Slot& h = m.slots[size_t(it - names.begin())]; h.kind != SlotKind::Scalar) {
-                report(Code::WrongSlotKind, p, "slot `" + h.name + "` is of kind `" + std::string(toString(h.kind)) + "`; heights come from a slot of kind `scalar`");
+                report(
+                    Code::WrongSlotKind, p,
+                    "slot `" + h.name + "` is of kind `" + std::string(toString(h.kind)) + "`; heights come from a slot of kind `scalar`");
             }
         }
     }
@@ -532,13 +574,16 @@ private:
         std::string why;
         std::optional<TextureInfo> info = textureInfo(s.texturePath, &why);
         if (!info) {
-            report(Code::TextureUnreadable, pointer, "cannot read texture " + s.texturePath.string() + ": " + why + " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM or PFM)");
+            report(Code::TextureUnreadable, pointer,
+                   "cannot read texture " + s.texturePath.string() + ": " + why +
+                       " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM or PFM)");
             return;
         }
         s.width = info->width;
         s.height = info->height;
         if (s.kind == SlotKind::Normal && info->channels < 3)
-            report(Code::TextureChannels, pointer, "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));
+            report(Code::TextureChannels, pointer,
+                   "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));
         // A channel the file lacks reads whatever the engine's upload puts there (0, 1 or a copy of grey): a scalar
         // slot reading one is a mistake. A grey + alpha file has r and a.
         static const char* kHas[] = {"", "r", "ra", "rgb", "rgba"};
@@ -546,8 +591,8 @@ private:
         for (const char* c = kHas[std::clamp(info->channels, 0, 4)]; *c; ++c) has.emplace_back(1, *c);
         if (s.kind == SlotKind::Scalar && std::find(has.begin(), has.end(), kChannels[size_t(s.channel)]) == has.end())
             report(Code::MisplacedKey, pointer.substr(0, pointer.rfind('/')) + "/channel",
-                  "channel `" + kChannels[size_t(s.channel)] + "` of " + s.texturePath.string() + ", which has " + std::to_string(info->channels) +
-                      " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));
+                   "channel `" + kChannels[size_t(s.channel)] + "` of " + s.texturePath.string() + ", which has " +
+                       std::to_string(info->channels) + " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));
     }
 
     JsonLocator locator_;

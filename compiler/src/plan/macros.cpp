@@ -41,7 +41,8 @@ Tokens tokenize(const std::string& text, size_t from = 0) {
     Tokens out;
     for (size_t i = from; i < text.size();) {
         char ch = text[i];
-        bool number = std::isdigit(static_cast<unsigned char>(ch)) || (ch == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])));
+        bool number = std::isdigit(static_cast<unsigned char>(ch)) ||
+                      (ch == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])));
         if (std::isspace(static_cast<unsigned char>(ch))) {
             ++i;
         } else if (number || identifierChar(ch)) {

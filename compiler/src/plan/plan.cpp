@@ -52,8 +52,8 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
     for (Diagnostic& d : checkTemplateFit(declared, material, ref)) plan.diagnostics.push_back(std::move(d));
     if (MacroExpansion e = boundMacroExpansion(plan.templateSource); e.line) {
         plan.diagnostics.push_back(Diagnostic::make(Code::TemplateTooLarge, {plan.templateName, e.line, 0}, "",
-                                    "the template's macros expand to more than " + std::to_string(int(kMaxExpandedTokens)) +
-                                        " tokens by this line; hexc refuses it rather than stall the preprocessor"));
+                                                    "the template's macros expand to more than " + std::to_string(int(kMaxExpandedTokens)) +
+                                                        " tokens by this line; hexc refuses it rather than stall the preprocessor"));
     }
     return !hasErrors(plan.diagnostics);
 }
@@ -72,7 +72,8 @@ SlotUse slotUse(const Material& material, const std::string& templateSource) {
         if (!containsWord(templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
         use.read[i] = use.needed[i] = true;
         if (slot.heightBlend)
-            for (size_t j = 0; j < material.slots.size(); ++j) use.needed[j] = use.needed[j] || material.slots[j].name == slot.heightBlend->slot;
+            for (size_t j = 0; j < material.slots.size(); ++j)
+                use.needed[j] = use.needed[j] || material.slots[j].name == slot.heightBlend->slot;
     }
     return use;
 }
@@ -124,8 +125,9 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
         if (!use.needed[i]) {
-            plan.diagnostics.push_back(Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "",
-                                        "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out"));
+            plan.diagnostics.push_back(
+                Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "",
+                                 "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out"));
             continue;
         }
         SlotPlan sp;
@@ -227,11 +229,15 @@ void addSlotParams(ParamBuilder& params, SlotPlan& sp, std::vector<ParamMember>&
         m.slots = {n};
         specialised.push_back(std::move(m));
     };
-    if (sp.gainInt) fixed("falloff", h.falloff);
-    else if (sp.gain) params.add(sp.falloff, "falloff", {h.falloff}, {n});
+    if (sp.gainInt)
+        fixed("falloff", h.falloff);
+    else if (sp.gain)
+        params.add(sp.falloff, "falloff", {h.falloff}, {n});
     if (sp.metric) params.add(sp.falloffContrast, "falloffcontrast", {h.falloffcontrast}, {n});
-    if (sp.exponentInt) fixed("exponent", h.exponent);
-    else params.add(sp.exponent, "exponent", {h.exponent}, {n});
+    if (sp.exponentInt)
+        fixed("exponent", h.exponent);
+    else
+        params.add(sp.exponent, "exponent", {h.exponent}, {n});
     if (sp.slot->heightBlend) params.add(sp.heightWidth, "heightwidth", {sp.slot->heightBlend->width}, {n});
 }
 

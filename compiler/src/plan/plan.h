@@ -30,13 +30,13 @@ constexpr uint32_t kFirstTextureBinding = 2;
 // slot's own member would make the lattice per slot again. An engine that wants to give such slots different
 // values at run time compiles without sharing (CompileOptions::shareLattice = false).
 struct ParamMember {
-    std::string name;            // "<slot>_<setting>" of the first slot that reads it
-    std::vector<std::string> aliases;  // "<slot>_<setting>" of the other slots that read it: the same storage
-    std::string type;            // "float", "vec2", "int" or "ivec2"
-    std::vector<double> value;   // the material's value, what an engine writes by default
-    std::vector<std::string> slots;  // the slots that read it
-    std::string perFrame;        // set for values the engine computes each frame: how (the manifest says it)
-    uint32_t offset = 0;         // std140 byte offset, for block members
+    std::string name;                    // "<slot>_<setting>" of the first slot that reads it
+    std::vector<std::string> aliases;    // "<slot>_<setting>" of the other slots that read it: the same storage
+    std::string type;                    // "float", "vec2", "int" or "ivec2"
+    std::vector<double> value;           // the material's value, what an engine writes by default
+    std::vector<std::string> slots;      // the slots that read it
+    std::string perFrame;                // set for values the engine computes each frame: how (the manifest says it)
+    uint32_t offset = 0;                 // std140 byte offset, for block members
     std::optional<uint32_t> constantId;  // set when baked: its first specialisation constant id
 };
 
@@ -47,45 +47,45 @@ using ParamRef = std::optional<size_t>;
 // The lattice (Listing 1 plus the tile transforms) that one or more slots share: slots with the same
 // coordinates, tiling, rotation and mode evaluate it once.
 struct LatticePlan {
-    std::string section;         // its `lattice.*` snippet in templates/library/slots.glsl (mode and mask)
-    bool rotate = true;          // the rotation code is emitted
-    bool transform = false;      // per-tile transforms (ranges, steps, scale, offset amount) are emitted
-    int rotationSteps = 0;       // whole numbers fixed in the code (transform only)
+    std::string section;     // its `lattice.*` snippet in templates/library/slots.glsl (mode and mask)
+    bool rotate = true;      // the rotation code is emitted
+    bool transform = false;  // per-tile transforms (ranges, steps, scale, offset amount) are emitted
+    int rotationSteps = 0;   // whole numbers fixed in the code (transform only)
     std::array<int, 2> offsetSteps{0, 0};
-    int maskScale = 1;           // cells per st unit of the checker and noise masks
-    bool triple = false;         // the noise mask draws three noises
+    int maskScale = 1;    // cells per st unit of the checker and noise masks
+    bool triple = false;  // the noise mask draws three noises
     ParamRef tiling, planeSharpness, rotation, rotationRange, scaleRange, offset, originCell, originOffset;
 };
 
 struct SlotPlan {
     const Slot* slot = nullptr;
-    std::string section;         // sampling snippet in templates/library/slots.glsl, e.g. "color.hex"; empty when heightOnly
-    std::string coordinates;     // coordinates snippet: "uv", "uv.split" or "triplanar"
-    std::string type;            // the GLSL type hexc_<slot> returns
+    std::string section;      // sampling snippet in templates/library/slots.glsl, e.g. "color.hex"; empty when heightOnly
+    std::string coordinates;  // coordinates snippet: "uv", "uv.split" or "triplanar"
+    std::string type;         // the GLSL type hexc_<slot> returns
     Projection projection = Projection::Uv;
-    uint32_t binding = 0;        // texture binding (set 0)
-    size_t lattice = 0;          // index into ShaderPlan::lattices
-    bool metric = true;          // the falloff metric code is emitted (falloffcontrast != 0)
-    bool gain = true;            // the gain code is emitted (falloff != 0.5)
-    int exponentInt = 0;         // > 0: the exponent is this whole number, multiplied out (no pow, no uniform)
-    int gainInt = 0;             // > 0: the gain's k = log2(1 / (1 - falloff)) is this whole number, likewise
-    int taps = 3;                // fetches per sample: 3, or 2 for the checker mask
-    bool explicitGradients = false;  // plain sampling with the given gradients (triplanar planes: non-uniform flow)
+    uint32_t binding = 0;             // texture binding (set 0)
+    size_t lattice = 0;               // index into ShaderPlan::lattices
+    bool metric = true;               // the falloff metric code is emitted (falloffcontrast != 0)
+    bool gain = true;                 // the gain code is emitted (falloff != 0.5)
+    int exponentInt = 0;              // > 0: the exponent is this whole number, multiplied out (no pow, no uniform)
+    int gainInt = 0;                  // > 0: the gain's k = log2(1 / (1 - falloff)) is this whole number, likewise
+    int taps = 3;                     // fetches per sample: 3, or 2 for the checker mask
+    bool explicitGradients = false;   // plain sampling with the given gradients (triplanar planes: non-uniform flow)
     std::optional<size_t> heightMap;  // index into ShaderPlan::slots of the slot it height-blends by
-    bool heightOnly = false;     // only the texture is used, as another slot's height map (no function, no lattice)
+    bool heightOnly = false;          // only the texture is used, as another slot's height map (no function, no lattice)
     ParamRef falloff, falloffContrast, exponent, heightWidth;
 };
 
 struct ShaderPlan {
     std::string materialName;
-    std::string templateName;    // as shown in diagnostics: "templates/lit.glsl" or the user's path
+    std::string templateName;  // as shown in diagnostics: "templates/lit.glsl" or the user's path
     std::string templateSource;
-    std::vector<SlotPlan> slots; // only the slots the template reads
+    std::vector<SlotPlan> slots;  // only the slots the template reads
     std::vector<LatticePlan> lattices;
-    std::vector<ParamMember> params;  // block members first, in block order, then baked constants
+    std::vector<ParamMember> params;       // block members first, in block order, then baked constants
     std::vector<ParamMember> specialised;  // settings fixed in the code as whole-number exponents
-    uint32_t paramBlockSize = 0; // std140 size, rounded up to 16
-    Diagnostics diagnostics;     // warnings (e.g. a slot the template never reads) or errors
+    uint32_t paramBlockSize = 0;           // std140 size, rounded up to 16
+    Diagnostics diagnostics;               // warnings (e.g. a slot the template never reads) or errors
 };
 
 ShaderPlan planShader(const Material& material, const CompileOptions& options);

@@ -26,8 +26,9 @@ std::vector<TemplateSlot> readTemplateSlots(const std::string& source, const std
         for (SlotKind k : {SlotKind::Color, SlotKind::Scalar, SlotKind::Normal})
             if (kind == kindName(k)) slot.kind = k, known = true;
         if (name.empty() || !known || !(extra.empty() || slot.required) || !more.empty()) {
-            diagnostics.push_back(Diagnostic::make(Code::TemplateSlotLine, {file, number, int(at) + 1}, "",
-                                   "expected `// hexc slot <name> <color|scalar|normal> [required]`, got `" + line.substr(at) + "`"));
+            diagnostics.push_back(
+                Diagnostic::make(Code::TemplateSlotLine, {file, number, int(at) + 1}, "",
+                                 "expected `// hexc slot <name> <color|scalar|normal> [required]`, got `" + line.substr(at) + "`"));
             continue;
         }
         out.push_back(std::move(slot));
@@ -44,13 +45,14 @@ Diagnostics checkTemplateFit(const std::vector<TemplateSlot>& declared, const Ma
             if (s.name != t.name) continue;
             found = true;
             if (s.kind != t.kind)
-                out.push_back(Diagnostic::make(Code::TemplateMismatch, {material.sourceFile.string(), s.line, s.col}, "/slots/" + std::to_string(i) + "/kind",
-                               "template `" + templateName + "` reads `" + s.name + "` as a " + kindName(t.kind) + " slot; this one is `" +
-                                   kindName(s.kind) + "`"));
+                out.push_back(Diagnostic::make(Code::TemplateMismatch, {material.sourceFile.string(), s.line, s.col},
+                                               "/slots/" + std::to_string(i) + "/kind",
+                                               "template `" + templateName + "` reads `" + s.name + "` as a " + kindName(t.kind) +
+                                                   " slot; this one is `" + kindName(s.kind) + "`"));
         }
         if (!found && t.required)
             out.push_back(Diagnostic::make(Code::TemplateMismatch, {material.sourceFile.string()}, "/slots",
-                           "template `" + templateName + "` needs a " + kindName(t.kind) + " slot named `" + t.name + "`"));
+                                           "template `" + templateName + "` needs a " + kindName(t.kind) + " slot named `" + t.name + "`"));
     }
     return out;
 }
