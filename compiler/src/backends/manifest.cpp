@@ -2,39 +2,46 @@
 
 namespace hexc {
 
+namespace {
+
+// A slot as the manifest lists it: its texture and the settings it was compiled with.
+nlohmann::json slotEntry(const SlotPlan& sp) {
+    const Slot& s = *sp.slot;
+    const HexTiling& h = s.hex;
+    nlohmann::json slot = {
+        {"name", s.name},
+        {"kind", toString(s.kind)},
+        {"texture", s.texture},
+        {"size", {s.width, s.height}},
+        {"colorspace", toString(s.colorSpace)},
+        {"hextiling",
+         {{"enabled", h.enabled},
+          {"tiling", {h.tiling[0], h.tiling[1]}},
+          {"rotation", h.rotation},
+          {"falloff", h.falloff},
+          {"falloffcontrast", h.falloffcontrast},
+          {"exponent", h.exponent},
+          {"mode", toString(h.mode)},
+          {"split_coordinates", h.splitCoordinates},
+          {"mask", toString(h.mask)},
+          {"taps", h.taps == 1 ? 1 : h.maskTaps()},
+          {"projection", toString(h.projection)}}},
+    };
+    if (h.mask != Mask::Hex) slot["hextiling"]["maskscale"] = h.maskScale;
+    if (h.projection == Projection::Triplanar) slot["hextiling"]["planesharpness"] = h.planeSharpness;
+    if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
+    // Bound for another slot's height blending only: the shader has no function for it.
+    if (sp.heightOnly) slot["height_map_only"] = true;
+    if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
+    if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
+    return slot;
+}
+
+}  // namespace
+
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets) {
     nlohmann::json slots = nlohmann::json::array();
-    for (const SlotPlan& sp : plan.slots) {
-        const Slot& s = *sp.slot;
-        const HexTiling& h = s.hex;
-        nlohmann::json slot = {
-            {"name", s.name},
-            {"kind", toString(s.kind)},
-            {"texture", s.texture},
-            {"size", {s.width, s.height}},
-            {"colorspace", toString(s.colorSpace)},
-            {"hextiling",
-             {{"enabled", h.enabled},
-              {"tiling", {h.tiling[0], h.tiling[1]}},
-              {"rotation", h.rotation},
-              {"falloff", h.falloff},
-              {"falloffcontrast", h.falloffcontrast},
-              {"exponent", h.exponent},
-              {"mode", toString(h.mode)},
-              {"split_coordinates", h.splitCoordinates},
-              {"mask", toString(h.mask)},
-              {"taps", h.taps == 1 ? 1 : h.maskTaps()},
-              {"projection", toString(h.projection)}}},
-        };
-        if (h.mask != Mask::Hex) slot["hextiling"]["maskscale"] = h.maskScale;
-        if (h.projection == Projection::Triplanar) slot["hextiling"]["planesharpness"] = h.planeSharpness;
-        if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
-        // Bound for another slot's height blending only: the shader has no function for it.
-        if (sp.heightOnly) slot["height_map_only"] = true;
-        if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
-        if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
-        slots.push_back(std::move(slot));
-    }
+    for (const SlotPlan& sp : plan.slots) slots.push_back(slotEntry(sp));
     nlohmann::json members = nlohmann::json::array(), constants = nlohmann::json::array(), specialised = nlohmann::json::array();
     for (const ParamMember& p : plan.specialised) specialised.push_back({{"name", p.name}, {"value", p.value[0]}, {"slots", p.slots}});
     for (const ParamMember& p : plan.params) {

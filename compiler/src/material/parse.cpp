@@ -328,22 +328,8 @@ private:
             return;
         }
         checkKeys(v, pointer, kHexKeys);
-        const Range positive{0, INFINITY, true, true, "> 0"};
         if (v.contains("enabled")) hex.enabled = boolean(v["enabled"], pointer + "/enabled", hex.enabled);
-        if (v.contains("tiling")) {
-            const json& t = v["tiling"];
-            std::string p = pointer + "/tiling";
-            if (t.is_array() && t.size() == 2) {
-                hex.tiling[0] = number(t[0], p + "/0", positive, hex.tiling[0]);
-                hex.tiling[1] = number(t[1], p + "/1", positive, hex.tiling[1]);
-            } else if (t.is_number()) {
-                hex.tiling[0] = hex.tiling[1] = number(t, p, positive, hex.tiling[0]);
-            } else {
-                report(Code::WrongType, p,
-                       "expected a number > 0 or an array [u, v] of two numbers > 0, got " +
-                           (t.is_array() ? "an array of " + std::to_string(t.size()) : typeName(t)));
-            }
-        }
+        if (v.contains("tiling")) tiling(v["tiling"], pointer + "/tiling", hex);
         if (v.contains("rotation"))
             hex.rotation = number(v["rotation"], pointer + "/rotation", {0, INFINITY, false, true, ">= 0"}, hex.rotation);
         // 1e-6 from either end: float32 must still tell 1 - r from 0 and from 1 for the gain's exponent.
@@ -361,6 +347,34 @@ private:
         }
         if (v.contains("split_coordinates"))
             hex.splitCoordinates = boolean(v["split_coordinates"], pointer + "/split_coordinates", hex.splitCoordinates);
+        if (v.contains("mask")) {
+            if (int i = choice(v["mask"], pointer + "/mask", kMasks); i >= 0) hex.mask = Mask(i);
+        }
+        if (v.contains("maskscale"))
+            hex.maskScale = int(whole(v["maskscale"], pointer + "/maskscale",
+                                      {1, 64, false, false, "in 1..64 (mask cells per texture repeat)"}, hex.maskScale));
+        if (v.contains("taps")) hex.taps = int(whole(v["taps"], pointer + "/taps", {1, 3, false, false, "in 1..3"}, hex.taps));
+        transformSettings(v, pointer, hex);
+        projectionSettings(v, pointer, hex, materialLevel);
+    }
+
+    // `tiling`: one number for both axes or [u, v].
+    void tiling(const json& t, const std::string& p, HexTiling& hex) {
+        const Range positive{0, INFINITY, true, true, "> 0"};
+        if (t.is_array() && t.size() == 2) {
+            hex.tiling[0] = number(t[0], p + "/0", positive, hex.tiling[0]);
+            hex.tiling[1] = number(t[1], p + "/1", positive, hex.tiling[1]);
+        } else if (t.is_number()) {
+            hex.tiling[0] = hex.tiling[1] = number(t, p, positive, hex.tiling[0]);
+        } else {
+            report(Code::WrongType, p,
+                   "expected a number > 0 or an array [u, v] of two numbers > 0, got " +
+                       (t.is_array() ? "an array of " + std::to_string(t.size()) : typeName(t)));
+        }
+    }
+
+    // The per-tile transforms (stable mode): rotation and scale ranges, offset, and their steps.
+    void transformSettings(const json& v, const std::string& pointer, HexTiling& hex) {
         if (v.contains("rotationrange"))
             pair(v["rotationrange"], pointer + "/rotationrange", {-3600, 3600, false, false, "in [-3600, 3600] (degrees)"},
                  hex.rotationRange);
@@ -370,13 +384,15 @@ private:
         if (v.contains("rotationsteps"))
             hex.rotationSteps =
                 int(whole(v["rotationsteps"], pointer + "/rotationsteps", {0, 360, false, false, "in 0..360 (0: continuous)"}, 0));
-        if (v.contains("mask")) {
-            if (int i = choice(v["mask"], pointer + "/mask", kMasks); i >= 0) hex.mask = Mask(i);
+        if (v.contains("offsetsteps")) {
+            std::array<double, 2> steps{0, 0};
+            pair(v["offsetsteps"], pointer + "/offsetsteps", {0, 4096, false, false, "in 0..4096 (0: continuous)"}, steps, true);
+            hex.offsetSteps = {int(steps[0]), int(steps[1])};
         }
-        if (v.contains("maskscale"))
-            hex.maskScale = int(whole(v["maskscale"], pointer + "/maskscale",
-                                      {1, 64, false, false, "in 1..64 (mask cells per texture repeat)"}, hex.maskScale));
-        if (v.contains("taps")) hex.taps = int(whole(v["taps"], pointer + "/taps", {1, 3, false, false, "in 1..3"}, hex.taps));
+    }
+
+    // `projection` and `planesharpness`: the material-level block only (every slot function takes the same inputs).
+    void projectionSettings(const json& v, const std::string& pointer, HexTiling& hex, bool materialLevel) {
         for (const char* key : {"projection", "planesharpness"})
             if (v.contains(key) && !materialLevel)
                 report(Code::MisplacedKey, pointer + "/" + key,
@@ -388,11 +404,6 @@ private:
         if (v.contains("planesharpness") && materialLevel)
             hex.planeSharpness =
                 number(v["planesharpness"], pointer + "/planesharpness", {1, 64, false, false, "in [1, 64]"}, hex.planeSharpness);
-        if (v.contains("offsetsteps")) {
-            std::array<double, 2> steps{0, 0};
-            pair(v["offsetsteps"], pointer + "/offsetsteps", {0, 4096, false, false, "in 0..4096 (0: continuous)"}, steps, true);
-            hex.offsetSteps = {int(steps[0]), int(steps[1])};
-        }
     }
 
     void slots(const json& v, const std::string& pointer, Material& m) {
