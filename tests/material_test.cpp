@@ -134,7 +134,7 @@ TEST(Validation, AllProblemsInAFileAreReported) {
                   "materials/t.json:2:84: error[HX103]: /slots/0/chanel: unknown key `chanel`; expected `name`, `texture`, `kind`, "
                   "`channel`, `colorspace`, `flip_y`, `hextiling` or `height_blend` (did you mean `channel`?)",
                   "materials/t.json:2:22: error[HX108]: /slots/0/name: expected a lower-case identifier of 1-32 characters "
-                  "([a-z][a-z0-9_]*, no `__`), got \"A\" (it becomes the GLSL function hexc_<name>)",
+                  "([a-z][a-z0-9_]*, no `__`, not starting with `gl_`), got \"A\" (it becomes the GLSL function hexc_<name>)",
                   "materials/t.json:2:35: error[HX107]: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got "
                   "\"colour\" (did you mean `color`?)",
               }));
@@ -265,6 +265,18 @@ TEST(Validation, TilingThatBringsStableModesRangeNearWarns) {
                   "materials/t.json:8:86: warning[HX116]: /slots/6/hextiling: with tiling 40000, stable mode's checker is "
                   "exact only for |uv| < 53687 (2^31 / tiling); beyond, tiles come out wrong" +
                       std::string(hint)}));
+}
+
+// Generated parameters are <slot>_<setting>: `a` + `a_origin` would both declare a_origin_offset (split
+// coordinates' origin of `a`, the per-tile offset of `a_origin`), so a name that extends another with `_` is refused.
+TEST(Validation, ASlotNameThatExtendsAnotherWithAnUnderscoreIsRefused) {
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"split_coordinates": true}, "slots": [
+  {"name": "a_origin", "kind": "color", "texture": "textures/rock_albedo.png"},
+  {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"},
+  {"name": "ab", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
+              std::vector<std::string>{"materials/t.json:2:12: error[HX108]: /slots/0/name: slot name \"a_origin\" starts with slot `a`'s "
+                                       "name and `_`, so their generated parameters (<slot>_tiling, <slot>_origin_offset, ...) could "
+                                       "collide (rename one of them)"});
 }
 
 TEST(Validation, HeightBlend) {

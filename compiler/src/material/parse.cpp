@@ -43,7 +43,7 @@ bool isFileName(const std::string& name) {
 bool isSlotName(const std::string& name) {
     auto lowerOrDigit = [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; };
     return !name.empty() && name.size() <= 32 && name[0] >= 'a' && name[0] <= 'z' && std::all_of(name.begin(), name.end(), lowerOrDigit) &&
-           name.find("__") == std::string::npos;
+           name.find("__") == std::string::npos && !name.starts_with("gl_");
 }
 const std::vector<std::string> kModes = {"stable", "paper"};
 const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
@@ -428,7 +428,23 @@ private:
             }
             m.slots.push_back(std::move(s));
         }
+        namePrefixes(pointer, m);
         heightSlots(pointer, m);
+    }
+
+    // Generated parameters are named <slot>_<setting> (albedo_tiling, albedo_origin_offset): two slots' names
+    // can only collide when one slot's name is another's followed by `_`, so that is refused.
+    void namePrefixes(const std::string& pointer, const Material& m) {
+        for (size_t i = 0; i < m.slots.size(); ++i)
+            for (const Slot& other : m.slots) {
+                const std::string& name = m.slots[i].name;
+                if (other.name.empty() || !name.starts_with(other.name + "_")) continue;
+                report(Code::InvalidName, pointerAppend(pointer, i) + "/name",
+                       "slot name \"" + name + "\" starts with slot `" + other.name + "`'s name and `_`, so their generated parameters " +
+                           "(<slot>_tiling, <slot>_origin_offset, ...) could collide",
+                       "rename one of them");
+                break;
+            }
     }
 
     Slot slot(const json& v, const std::string& pointer, const HexTiling& defaults) {
@@ -443,7 +459,8 @@ private:
             s.name = string(v["name"], pointer + "/name");
             if (v["name"].is_string() && !isSlotName(s.name)) {
                 report(Code::InvalidName, pointer + "/name",
-                       "expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`), got \"" + s.name + "\"",
+                       "expected a lower-case identifier of 1-32 characters ([a-z][a-z0-9_]*, no `__`, not starting with `gl_`), got \"" +
+                           s.name + "\"",
                        "it becomes the GLSL function hexc_<name>");
                 s.name.clear();
             }
