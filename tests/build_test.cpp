@@ -96,6 +96,20 @@ TEST(Scene, DiagnosticsAreLocated) {
              }));
 }
 
+// parseScene on a document without the `scene` key (a material, say) reports the missing key.
+TEST(Scene, ADocumentWithoutTheSceneKeyIsADiagnostic) {
+    SceneParseResult r = parseScene(R"({"name": "rock", "materials": ["x.json"], "passes": [{"name": "main"}]})", "s.json");
+    ASSERT_FALSE(r.scene);
+    std::vector<std::string> got;
+    for (const auto& d : r.diagnostics) got.push_back(d.format());
+    EXPECT_EQ(got, (std::vector<std::string>{
+                       "s.json:1:2: error[HX103]: /name: unknown key `name`; expected `$schema`, `scene`, `materials` or `passes`",
+                       "s.json:1:1: error[HX104]: missing required key `scene` (the scene's name)",
+                       "x.json: error[HX100]: cannot read material file: No such file or directory",
+                       "s.json:1:32: error[HX115]: /materials/0: material x.json is invalid (see above)",
+                   }));
+}
+
 TEST(Incremental, UnchangedInputsAreSkippedAndAChangedTextureRebuildsWhatUsesIt) {
     fs::path dir = copyOfMaterials("hexc_incremental");
     fs::path out = dir / "out";

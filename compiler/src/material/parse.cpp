@@ -130,9 +130,11 @@ public:
             return scene;
         }
         checkKeys(doc, "", kSceneKeys);
-        scene.name = string(doc["scene"], "/scene");
-        if (doc["scene"].is_string() && !isFileName(scene.name))
-            report(Code::InvalidName, "/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
+        if (requireKey(doc, "", "scene", "the scene's name")) {
+            scene.name = string(doc["scene"], "/scene");
+            if (doc["scene"].is_string() && !isFileName(scene.name))
+                report(Code::InvalidName, "/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
+        }
         if (requireKey(doc, "", "materials", "an array of material files")) sceneMaterials(doc["materials"], scene);
         if (requireKey(doc, "", "passes", "an array of passes")) {
             const json& passes = doc["passes"];
