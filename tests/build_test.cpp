@@ -110,6 +110,20 @@ TEST(Scene, ADocumentWithoutTheSceneKeyIsADiagnostic) {
                    }));
 }
 
+// Two scenes of one name would write one index file: refused before anything is compiled or written.
+TEST(Scene, TwoScenesWithOneNameAreRefused) {
+    fs::path dir = copyOfMaterials("hexc_scene_twice");
+    std::ofstream(dir / "scenes" / "a.json") << R"({"scene": "same", "materials": ["../rock.json"], "passes": [{"name": "main"}]})";
+    std::ofstream(dir / "scenes" / "b.json") << R"({"scene": "same", "materials": ["../tiles.json"], "passes": [{"name": "main"}]})";
+    fs::path out = dir / "out";
+    std::string err;
+    EXPECT_EQ(runHexc((dir / "scenes" / "a.json").string() + " " + (dir / "scenes" / "b.json").string() + " -o " + out.string(), &err), 1);
+    EXPECT_NE(err.find("hexc: error: two scenes are named `same`; their indexes (same.scene.json) would overwrite each other"),
+              std::string::npos)
+        << err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(Incremental, UnchangedInputsAreSkippedAndAChangedTextureRebuildsWhatUsesIt) {
     fs::path dir = copyOfMaterials("hexc_incremental");
     fs::path out = dir / "out";
@@ -176,8 +190,25 @@ TEST(Depfile, ListsEveryInputWithMakeEscapes) {
         }
         return o;
     };
-    EXPECT_EQ(read(out / "tiles.d"), esc((out / "tiles.manifest.json").string()) + ": " + esc((dir / "tiles.json").string()) + " " +
-                                         esc((dir / "textures" / "tiles_albedo.png").string()) + "\n");
+    const std::string material = esc((dir / "tiles.json").string()), texture = esc((dir / "textures" / "tiles_albedo.png").string());
+    // The rule, then an empty rule per input (gcc -MP), so that deleting an input re-runs hexc instead of stopping Make.
+    EXPECT_EQ(read(out / "tiles.d"), esc((out / "tiles.manifest.json").string()) + ": " + material + " " + texture + "\n\n" + material +
+                                         ":\n\n" + texture + ":\n");
+}
+
+// No depfile syntax holds a line break: such a path is an error, and nothing is written.
+TEST(Depfile, APathWithALineBreakIsRefusedAndNothingIsWritten) {
+    fs::path dir = fs::temp_directory_path() / "hexc_dep\nline";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "textures");
+    fs::copy("materials/tiles.json", dir / "tiles.json");
+    fs::copy("materials/textures/tiles_albedo.png", dir / "textures" / "tiles_albedo.png");
+    fs::path out = fs::temp_directory_path() / "hexc_dep_newline_out";
+    fs::remove_all(out);
+    std::string err;
+    EXPECT_EQ(runHexc("'" + (dir / "tiles.json").string() + "' -o " + out.string() + " --depfile " + (out / "tiles.d").string(), &err), 1);
+    EXPECT_NE(err.find("holds a line break, which no depfile can express"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

@@ -116,6 +116,13 @@ bool inputsFit(const Arguments& a, const Inputs& in) {
         std::cerr << "hexc: error: --variant " << v << ": " << whyNotInScene(v, in.scenes) << "\n";
         ok = false;
     }
+    std::set<std::string> sceneNames;
+    for (const SceneSummary& s : in.scenes)
+        if (!sceneNames.insert(s.scene.name).second) {
+            std::cerr << "hexc: error: two scenes are named `" << s.scene.name << "`; their indexes (" << s.scene.name
+                      << ".scene.json) would overwrite each other\n";
+            ok = false;
+        }
     std::set<std::string> names;
     for (const Job& j : in.jobs)
         if (!names.insert(j.material.name).second) {
@@ -199,7 +206,7 @@ Outputs collectOutputs(const Inputs& in) {
     return out;
 }
 
-void writeDepfile(const Arguments& a, const std::vector<Job>& jobs) {
+std::string depfileFor(const Arguments& a, const std::vector<Job>& jobs) {
     std::vector<std::filesystem::path> outs, ins;
     std::set<std::filesystem::path> seenIn;
     for (const Job& j : jobs) {
@@ -209,12 +216,12 @@ void writeDepfile(const Arguments& a, const std::vector<Job>& jobs) {
         for (const auto& f : files)
             if (seenIn.insert(f).second) ins.push_back(f);
     }
-    writeAtomically(a.depfile.parent_path().empty() ? "." : a.depfile.parent_path(), a.depfile.filename().string(), depfileText(outs, ins));
+    return depfileText(outs, ins);
 }
 
 // Writes every output, then the stamps (a crash before them leaves the jobs to be compiled again next time),
 // then the depfile. Returns the bytes written; throws when something cannot be written.
-size_t writeOutputs(const Arguments& a, const Outputs& out, const std::vector<Job>& jobs) {
+size_t writeOutputs(const Arguments& a, const Outputs& out, const std::string& depfile) {
     size_t bytes = 0;
     std::filesystem::create_directories(a.outDir);
     for (const OutputFile& f : out.files) {
@@ -222,7 +229,8 @@ size_t writeOutputs(const Arguments& a, const Outputs& out, const std::vector<Jo
         bytes += f.contents.size();
     }
     for (const auto& [name, text] : out.stamps) writeAtomically(a.outDir, stampName(name), text);
-    if (!a.depfile.empty()) writeDepfile(a, jobs);
+    if (!a.depfile.empty())
+        writeAtomically(a.depfile.parent_path().empty() ? "." : a.depfile.parent_path(), a.depfile.filename().string(), depfile);
     return bytes;
 }
 
@@ -247,9 +255,16 @@ int buildCommand(const Arguments& a) {
         return kInvalidInput;
     }
     Outputs out = collectOutputs(in);
+    std::string depfile;
+    try {
+        if (!a.depfile.empty()) depfile = depfileFor(a, in.jobs);
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "hexc: error: " << e.what() << "\nhexc: nothing written\n";
+        return kInvalidInput;
+    }
     size_t bytes = 0;
     try {
-        bytes = writeOutputs(a, out, in.jobs);
+        bytes = writeOutputs(a, out, depfile);
     } catch (const std::exception& e) {
         std::cerr << "hexc: " << e.what() << "\n";
         return kWriteFailed;

@@ -1,5 +1,7 @@
 #include "depfile.h"
 
+#include <stdexcept>
+
 namespace hexc::cli {
 namespace {
 
@@ -25,7 +27,14 @@ std::string joined(const std::vector<std::filesystem::path>& paths) {
 }  // namespace
 
 std::string depfileText(const std::vector<std::filesystem::path>& outputs, const std::vector<std::filesystem::path>& inputs) {
-    return joined(outputs) + ": " + joined(inputs) + "\n";
+    for (const auto& list : {outputs, inputs})
+        for (const auto& p : list)
+            if (p.string().find_first_of("\n\r") != std::string::npos)
+                throw std::invalid_argument("--depfile: the path " + p.string() + " holds a line break, which no depfile can express");
+    std::string text = joined(outputs) + ": " + joined(inputs) + "\n";
+    // One empty rule per input (as `gcc -MP`): Make then rebuilds, instead of failing, when an input is deleted.
+    for (const auto& p : inputs) text += "\n" + escaped(p) + ":\n";
+    return text;
 }
 
 }  // namespace hexc::cli
