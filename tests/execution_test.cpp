@@ -867,10 +867,32 @@ TEST(RenderCommand, Errors) {
     EXPECT_EQ(err, "hexc: --output: albedoo not in {shaded,albedo,normal,derivative,weights} (see hexc render --help)\n");
     EXPECT_EQ(runHexc("preview materials/rock.json --cell 10 -o /tmp/x.png", &err), 2);
     EXPECT_EQ(err, "hexc: --cell: Value 10 not in range 32 to 2048 (see hexc preview --help)\n");
-    EXPECT_EQ(runHexc("render materials/rock.json -o /tmp/x.tiff", &err), 3);
+    EXPECT_EQ(runHexc("render materials/rock.json -o /tmp/x.tiff", &err), 2);  // refused before rendering
+    EXPECT_EQ(err, "hexc: -o /tmp/x.tiff: hexc render writes .pfm or .png\n");
     EXPECT_EQ(runHexc("render materials/invalid/falloff_zero.json -o /tmp/x.png", &err), 1);
     EXPECT_EQ(runHexc("render materials/rock_triplanar.json --output normal -o /tmp/x.png", &err), 1);
     EXPECT_EQ(err, "hexc: slot `normal` is triplanar: it returns a world-space surface gradient; use the derivative output\n");
+}
+
+// A PNG whose header and chunks are sound (so the material validates and compiles) but whose image data does not
+// decode: render reports the texture, exit 1 (bad input), and writes nothing.
+TEST(RenderCommand, ATextureThatDoesNotDecodeIsBadInput) {
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bad_texture";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ifstream in("materials/textures/rock_albedo.png", std::ios::binary);
+    std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t idat = png.find("IDAT");
+    ASSERT_NE(idat, std::string::npos);
+    std::fill(png.begin() + long(idat + 14), png.begin() + long(idat + 2014), '\xff');  // inside the deflate stream
+    std::ofstream(dir / "bad.png", std::ios::binary) << png;
+    std::ofstream(dir / "m.json")
+        << R"({"name": "bad", "template": "unlit", "slots": [{"name": "albedo", "kind": "color", "texture": "bad.png"}]})";
+    std::string err;
+    EXPECT_EQ(runHexc((dir / "m.json").string() + " -q -o " + (dir / "out").string(), &err), 0) << err;
+    EXPECT_EQ(runHexc("render " + (dir / "m.json").string() + " -o " + (dir / "x.png").string(), &err), 1) << err;
+    EXPECT_NE(err.find("bad.png: "), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
 }
 
 // No Vulkan device (the loader pointed at a driver manifest that does not exist) is its own exit code, 4, for

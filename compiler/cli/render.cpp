@@ -81,6 +81,9 @@ int guarded(Body body) {
     } catch (const std::invalid_argument& e) {
         std::cerr << "hexc: " << e.what() << "\n";
         return kInvalidInput;
+    } catch (const TextureError& e) {  // a texture that passed validation (its header) but does not decode
+        std::cerr << "hexc: " << e.what() << "\n";
+        return kInvalidInput;
     } catch (const vk::VulkanError& e) {
         std::cerr << "hexc: Vulkan: " << e.what() << "\n";
         return kNoVulkan;
@@ -163,6 +166,7 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
     }
     if (r.material.empty()) throw UsageError{"no material given (see hexc render --help)"};
     if (r.out.empty()) throw UsageError{"no output image given: use -o IMAGE.pfm or IMAGE.png"};
+    if (!isImageExtension(r.out)) throw UsageError{"-o " + r.out + ": hexc render writes .pfm or .png"};
     if (!r.slot.empty() && r.output == vk::RenderOutput::Shaded)
         throw UsageError{"--slot picks the slot of --output albedo, normal, derivative or weights; shaded shows the whole material"};
     if (r.reference && r.output == vk::RenderOutput::Shaded)
@@ -215,6 +219,7 @@ int previewCommand(const std::vector<std::string>& args) {
         if (std::optional<int> done = parseWith(app, args)) return *done;
         if (materialPath.empty()) throw UsageError{"no material given (see hexc preview --help)"};
         if (out.empty()) throw UsageError{"no output image given: use -o PREVIEW.png"};
+        if (!isImageExtension(out)) throw UsageError{"-o " + out + ": hexc preview writes .png or .pfm"};
         auto material = loadMaterial(materialPath);
         if (!material) return int(kInvalidInput);
         auto runner = makeRunner();

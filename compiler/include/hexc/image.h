@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,9 +44,17 @@ struct TextureInfo {
 // nullopt with the reason in *error when the file is not a readable image.
 std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::string* error);
 
+// A texture that cannot be decoded: a problem of the input (hexc render exits 1), not of an output.
+struct TextureError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 // Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...) and PFM. HDR and PFM load as float.
-// Throws std::runtime_error with the file name and stb's reason on failure.
+// Throws TextureError with the file name and stb's reason on failure.
 Texture loadTexture(const std::filesystem::path& file, bool srgb);
+
+// Whether writeImage writes this file's extension (.pfm or .png, any case).
+bool isImageExtension(const std::filesystem::path& file);
 
 // Writes by extension: .pfm (float, exact), .png (8-bit, values clamped to [0,1], no sRGB encoding).
 // Written to a temporary file and renamed. Throws std::runtime_error on failure.

@@ -25,9 +25,11 @@ namespace {
     throw std::runtime_error(file.string() + ": " + reason);
 }
 
+[[noreturn]] void failRead(const std::filesystem::path& file, const std::string& reason) { throw TextureError(file.string() + ": " + reason); }
+
 [[noreturn]] void failStb(const std::filesystem::path& file) {
     const char* reason = stbi_failure_reason();
-    fail(file, reason ? reason : "cannot load image");
+    failRead(file, reason ? reason : "cannot load image");
 }
 
 std::string lowerExtension(const std::filesystem::path& file) {
@@ -44,13 +46,13 @@ struct PfmHeader {
 };
 
 PfmHeader readPfmHeader(std::ifstream& in, const std::filesystem::path& file) {
-    if (!in) fail(file, "cannot open for reading");
+    if (!in) failRead(file, "cannot open for reading");
     std::string magic;
     PfmHeader h;
     double scale = 0;
     in >> magic >> h.width >> h.height >> scale;
     in.get();  // the single whitespace character that ends the header
-    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || scale == 0) fail(file, "not a PFM file (bad header)");
+    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || scale == 0) failRead(file, "not a PFM file (bad header)");
     h.channels = magic == "PF" ? 3 : 1;
     h.littleEndian = scale < 0;
     return h;
@@ -65,10 +67,10 @@ Texture loadPfm(const std::filesystem::path& file) {
     const uint64_t dataBytes = uint64_t(width) * uint64_t(height) * channels * 4;
     std::error_code ec;
     const uint64_t fileBytes = std::filesystem::file_size(file, ec);
-    if (ec || dataBytes > fileBytes - uint64_t(in.tellg())) fail(file, "PFM file is truncated");
+    if (ec || dataBytes > fileBytes - uint64_t(in.tellg())) failRead(file, "PFM file is truncated");
     std::vector<uint32_t> words(size_t(width) * height * channels);
     in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
-    if (in.gcount() != std::streamsize(words.size() * 4)) fail(file, "PFM file is truncated");
+    if (in.gcount() != std::streamsize(words.size() * 4)) failRead(file, "PFM file is truncated");
     if (header.littleEndian != (std::endian::native == std::endian::little))
         for (uint32_t& w : words) w = (w >> 24) | ((w >> 8) & 0xff00u) | ((w << 8) & 0xff0000u) | (w << 24);  // std::byteswap is C++23
 
@@ -182,6 +184,11 @@ Texture loadTexture(const std::filesystem::path& file, bool srgb) {
         t.srgb = srgb;
     }
     return t;
+}
+
+bool isImageExtension(const std::filesystem::path& file) {
+    const std::string ext = lowerExtension(file);
+    return ext == ".pfm" || ext == ".png";
 }
 
 void writeImage(const Image& image, const std::filesystem::path& file) {
