@@ -25,7 +25,9 @@ namespace {
     throw std::runtime_error(file.string() + ": " + reason);
 }
 
-[[noreturn]] void failRead(const std::filesystem::path& file, const std::string& reason) { throw TextureError(file.string() + ": " + reason); }
+[[noreturn]] void failRead(const std::filesystem::path& file, const std::string& reason) {
+    throw TextureError(file.string() + ": " + reason);
+}
 
 [[noreturn]] void failStb(const std::filesystem::path& file) {
     const char* reason = stbi_failure_reason();
@@ -52,7 +54,8 @@ PfmHeader readPfmHeader(std::ifstream& in, const std::filesystem::path& file) {
     double scale = 0;
     in >> magic >> h.width >> h.height >> scale;
     in.get();  // the single whitespace character that ends the header
-    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || scale == 0) failRead(file, "not a PFM file (bad header)");
+    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || scale == 0)
+        failRead(file, "not a PFM file (bad header)");
     h.channels = magic == "PF" ? 3 : 1;
     h.littleEndian = scale < 0;
     return h;
