@@ -196,6 +196,27 @@ TEST(Depfile, ListsEveryInputWithMakeEscapes) {
                                          ":\n\n" + texture + ":\n");
 }
 
+// The manifest names a material's template file as the material wrote it: compiling the same material from
+// another working directory, or by an absolute path, gives a byte-identical manifest.
+TEST(Manifest, NamesTheTemplateFileAsTheMaterialWroteIt) {
+    fs::path dir = fs::temp_directory_path() / "hexc_template_as_written";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "textures");
+    fs::create_directories(dir / "shaders");
+    fs::copy("templates/builtin/unlit.glsl", dir / "shaders" / "mine.glsl");
+    fs::copy("materials/textures/tiles_albedo.png", dir / "textures" / "tiles_albedo.png");
+    nlohmann::json m = nlohmann::json::parse(read("materials/tiles.json"));
+    m["template"] = "shaders/mine.glsl";
+    std::ofstream(dir / "tiles.json") << m.dump(2);
+    const fs::path absOut = dir / "out_abs", relOut = dir / "out_rel";
+    std::string err;
+    ASSERT_EQ(runHexc((dir / "tiles.json").string() + " -o " + absOut.string(), &err), 0) << err;
+    ASSERT_EQ(runHexc("tiles.json -o out_rel", &err, "cd " + dir.string() + " &&"), 0) << err;
+    const std::string manifest = read(absOut / "tiles.manifest.json");
+    EXPECT_EQ(nlohmann::json::parse(manifest)["template"], "shaders/mine.glsl");
+    EXPECT_EQ(manifest, read(relOut / "tiles.manifest.json"));
+}
+
 // No depfile syntax holds a line break: such a path is an error, and nothing is written.
 TEST(Depfile, APathWithALineBreakIsRefusedAndNothingIsWritten) {
     fs::path dir = fs::temp_directory_path() / "hexc_dep\nline";

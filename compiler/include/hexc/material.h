@@ -75,8 +75,9 @@ struct Slot {
 };
 
 struct Material {
-    std::string name;          // output file stem
-    std::string templateName;  // a built-in template name, or a path to a .glsl file
+    std::string name;               // output file stem
+    std::string templateName;       // a built-in template name, or a path to a .glsl file
+    std::string templateAsWritten;  // a template file as the material (or scene pass) names it, for the manifest
     std::filesystem::path sourceFile;
     HexTiling hex;            // material-level settings (slots may override)
     std::vector<Slot> slots;  // in declaration order; binding order follows it

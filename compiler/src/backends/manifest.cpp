@@ -61,7 +61,7 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
     return {
         {"hexc_version", version()},
         {"material", material.name},
-        {"template", plan.templateName},
+        {"template", plan.templateShown},
         // The state hexc's one sampler (hexcSampler) must have: the blend assumes trilinear filtering over a full
         // mip chain and repeat addressing (tiles sample outside [0, 1)); anisotropic filtering may be added.
         {"sampler",

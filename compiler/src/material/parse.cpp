@@ -112,7 +112,10 @@ public:
                        "expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"" + m.name + "\"");
         }
         m.templateName = "lit";
-        if (doc.contains("template")) m.templateName = templateRef(doc["template"], "/template");
+        if (doc.contains("template")) {
+            m.templateName = templateRef(doc["template"], "/template");
+            if (m.templateName.ends_with(".glsl")) m.templateAsWritten = doc["template"].get<std::string>();
+        }
         if (doc.contains("$schema")) string(doc["$schema"], "/$schema");
         if (doc.contains("hextiling")) hexSettings(doc["hextiling"], "/hextiling", m.hex, true);
         if (requireKey(doc, "", "slots", "an array of slots")) slots(doc["slots"], "/slots", m);
@@ -183,7 +186,10 @@ private:
             for (const ScenePass& other : scene.passes)
                 if (other.name == pass.name) report(Code::DuplicateName, p + "/name", "duplicate pass name \"" + pass.name + "\"");
         }
-        if (v.contains("template")) pass.templateName = templateRef(v["template"], p + "/template");
+        if (v.contains("template")) {
+            pass.templateName = templateRef(v["template"], p + "/template");
+            if (pass.templateName.ends_with(".glsl")) pass.templateAsWritten = v["template"].get<std::string>();
+        }
         pass.slots = names(v, p, "slots");
         pass.materials = names(v, p, "materials");
         std::vector<std::string> all;

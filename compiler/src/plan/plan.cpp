@@ -44,6 +44,10 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
         }
         plan.templateSource = *text;
     }
+    // The manifest names a material's own template as the material wrote it, so it does not depend on where hexc
+    // was run from; a --template file as given.
+    const bool written = options.templateFile.empty() && !material.templateAsWritten.empty();
+    plan.templateShown = written ? material.templateAsWritten : plan.templateName;
     if (!plan.templateSource.starts_with("#version") || plan.templateSource.find('\n') == std::string::npos)
         error(Code::TemplateNoVersion, "a template must start with a `#version` line");
     if (countLines(plan.templateSource, "#include <hexc>") != 1)

@@ -78,7 +78,8 @@ struct SlotPlan {
 
 struct ShaderPlan {
     std::string materialName;
-    std::string templateName;  // as shown in diagnostics: "templates/lit.glsl" or the user's path
+    std::string templateName;   // as shown in diagnostics: "templates/lit.glsl" or the user's path
+    std::string templateShown;  // as the manifest lists it: the built-in's name as above, else as the material wrote it
     std::string templateSource;
     std::vector<SlotPlan> slots;  // only the slots the template reads
     std::vector<LatticePlan> lattices;
