@@ -127,6 +127,19 @@ TEST_F(Hostile, ATruncatedPngIsRejectedAtValidation) {
     expectNothingWritten();
 }
 
+TEST_F(Hostile, ATextureTooLargeForTheReferenceIsRefusedBeforeLoading) {
+    // A PNG whose header says 16384 x 16384 (the reference would need 11.5 GB in fp64); stb does not check CRCs.
+    std::ifstream in("materials/textures/rock_albedo.png", std::ios::binary);
+    std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (size_t at : {16u, 20u}) png.replace(at, 4, std::string("\0\0\x40\0", 4));  // IHDR width, height: 0x4000
+    fs::path tex = write("huge.png", png);
+    fs::path m = write("m.json", R"({"name": "m", "slots": [{"name": "albedo", "kind": "color", "texture": ")" + tex.string() + "\"}]}");
+    Outcome o = runBounded("render " + m.string() + " --reference --output albedo --size 8x8 -o " + (dir_ / "out" / "r.pfm").string());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("16384x16384 is too large for --reference"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
 TEST_F(Hostile, OutputsThatAreNotRegularFilesAreNotReplaced) {
     fs::path target = write("target.txt", "keep");
     fs::create_symlink(target, dir_ / "out" / "m.frag.spv");

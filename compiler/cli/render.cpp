@@ -174,9 +174,23 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
     return std::nullopt;
 }
 
+// The reference holds a texture as fp64 RGBA with its mips: 32 bytes per texel, 4/3 of that with the chain, so
+// 4096 x 4096 takes 716 MB and 16384 x 16384 would take 11.5 GB. Larger textures are refused before loading.
+constexpr int64_t kReferenceTexels = 4096 * 4096;
+
+void checkReferenceSize(const Material& material, const Slot& slot) {
+    for (const Slot& s : material.slots) {
+        if (s.name != slot.name && !(slot.heightBlend && s.name == slot.heightBlend->slot)) continue;
+        if (int64_t(s.width) * s.height > kReferenceTexels)
+            throw TextureError(s.texturePath.string() + ": " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                               " is too large for --reference (at most 4096x4096 texels: it holds them in fp64)");
+    }
+}
+
 // The fp64 reference image of the slot `r` shows, as the GPU would show it.
 Image referenceImage(const Material& material, const RenderArguments& r) {
     const Slot& s = vk::slotForOutput(material, r.output, r.slot);
+    checkReferenceSize(material, s);
     reference::SampledTexture texture(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb));
     const reference::Heights heights(material, s);
     Image image =
