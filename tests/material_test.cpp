@@ -64,9 +64,22 @@ std::vector<std::string> diagnose(const std::string& text) { return formatted(pa
 const char* kSlot = R"({"name": "albedo", "texture": "textures/rock_albedo.png", "kind": "color"})";
 
 TEST(Validation, SyntaxErrorIsLocated) {
-    EXPECT_EQ(diagnose("{\n  \"name\": \"x\",\n}"),
-              std::vector<std::string>{"materials/t.json:3:1: error[HX101]: invalid JSON: syntax error while parsing object key - "
-                                       "unexpected '}'; expected string literal"});
+    EXPECT_EQ(diagnose("{\n  \"name\" \"x\"\n}"),
+              std::vector<std::string>{"materials/t.json:2:12: error[HX101]: invalid JSON: syntax error while parsing object separator - "
+                                       "unexpected string literal; expected ':'"});
+}
+
+// nlohmann stops at the bracket after a trailing comma; the diagnostic points at the comma and names it.
+TEST(Validation, ATrailingCommaIsReportedWhereItIs) {
+    EXPECT_EQ(
+        diagnose("{\n  \"name\": \"x\",\n}"),
+        std::vector<std::string>{"materials/t.json:2:14: error[HX101]: invalid JSON: a trailing comma before `}` (JSON allows none)"});
+    EXPECT_EQ(
+        diagnose("{\"slots\": [1, 2 , \t\r\n  ]}"),
+        std::vector<std::string>{"materials/t.json:1:17: error[HX101]: invalid JSON: a trailing comma before `]` (JSON allows none)"});
+    // A comma with nothing before the bracket but the comma itself is still that comma.
+    EXPECT_EQ(diagnose("[,]"), std::vector<std::string>{"materials/t.json:1:2: error[HX101]: invalid JSON: syntax error while parsing "
+                                                        "value - unexpected ','; expected '[', '{', or a literal"});
 }
 
 TEST(Validation, EmptyFile) {

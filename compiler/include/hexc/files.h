@@ -16,6 +16,10 @@ constexpr uint64_t kMaxInputBytes = 64ull << 20;
 // as /dev/zero, a folder) or exceeds kMaxInputBytes, with the reason in *whyNot when given.
 std::optional<std::string> readFile(const std::filesystem::path& file, std::string* whyNot = nullptr);
 
+// Why `file` is not a regular file, in a user's words: "no such file", "is a directory" or "not a regular
+// file" (a FIFO, a device).
+std::string whyNotRegular(const std::filesystem::path& file);
+
 // Outputs are written under a temporary name unique to the writer in the same folder, then renamed; an existing
 // target that is not a regular file (symlink, device, FIFO, folder) is refused with std::runtime_error.
 // Calls write(temporary path) and renames the result to `file`; a failed write or rename removes the

@@ -32,7 +32,7 @@ std::optional<std::string> readFile(const std::filesystem::path& file, std::stri
     if (in.fd < 0) return fail(std::strerror(errno));
     struct stat st;
     if (::fstat(in.fd, &st) != 0) return fail(std::strerror(errno));
-    if (!S_ISREG(st.st_mode)) return fail("not a regular file");
+    if (!S_ISREG(st.st_mode)) return fail(whyNotRegular(file));
     if (uint64_t(st.st_size) > kMaxInputBytes)
         return fail("larger than hexc's input limit of " + std::to_string(kMaxInputBytes >> 20) + " MiB");
     // Read what is there, up to the limit: a file that grows while read is cut off and reported, not followed.
@@ -46,6 +46,13 @@ std::optional<std::string> readFile(const std::filesystem::path& file, std::stri
         if (bytes.size() + size_t(n) > kMaxInputBytes) return fail("grew past hexc's input limit while being read");
         bytes.append(buffer, size_t(n));
     }
+}
+
+std::string whyNotRegular(const std::filesystem::path& file) {
+    std::error_code ec;
+    std::filesystem::file_status status = std::filesystem::status(file, ec);
+    if (!std::filesystem::exists(status)) return "no such file";
+    return std::filesystem::is_directory(status) ? "is a directory" : "not a regular file";
 }
 
 void writeFileAtomically(const std::filesystem::path& file, const std::function<bool(const std::filesystem::path&)>& write) {

@@ -145,7 +145,7 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
     // Only regular files: opening a FIFO would wait for a writer forever.
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) {
-        *error = std::filesystem::exists(file, ec) ? "not a regular file" : "no such file";
+        *error = whyNotRegular(file);
         return std::nullopt;
     }
     if (lowerExtension(file) == ".pfm") {

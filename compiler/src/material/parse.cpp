@@ -313,9 +313,7 @@ private:
             // what is not a regular file).
             std::error_code ec;
             if (!std::filesystem::is_regular_file(p, ec))
-                report(Code::TemplateUnreadable, pointer,
-                       "cannot read template file " + p.string() +
-                           (std::filesystem::exists(p, ec) ? ": not a regular file" : ": no such file"));
+                report(Code::TemplateUnreadable, pointer, "cannot read template file " + p.string() + ": " + whyNotRegular(p));
             return p.string();
         }
         std::vector<std::string> names = builtinTemplateNames();
@@ -635,6 +633,15 @@ private:
     std::filesystem::path file_, dir_;
 };
 
+// A comma right before the `]` or `}` at `offset` (JSON allows no trailing comma): where it is, to report it there
+// rather than at the bracket nlohmann stops on.
+std::optional<size_t> trailingComma(std::string_view text, size_t offset) {
+    if (offset == 0 || offset >= text.size() || (text[offset] != ']' && text[offset] != '}')) return std::nullopt;
+    size_t at = text.find_last_not_of(" \t\r\n", offset - 1);
+    if (at == std::string_view::npos || text[at] != ',') return std::nullopt;
+    return at;
+}
+
 // Parses JSON text; on a syntax error returns nullopt with the located diagnostic in *diags.
 std::optional<json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags) {
     auto syntaxError = [&](size_t offset, std::string message) {
@@ -649,9 +656,12 @@ std::optional<json> parseJson(std::string_view text, const std::filesystem::path
     } catch (const json::parse_error& e) {
         // nlohmann's message carries its own "[json.exception...] parse error at line L, column C: " prefix;
         // the position is recomputed from the byte offset (one past the offending character).
+        const size_t offset = e.byte > 0 ? e.byte - 1 : 0;
+        if (std::optional<size_t> comma = trailingComma(text, offset))
+            return syntaxError(*comma, std::string("invalid JSON: a trailing comma before `") + text[offset] + "` (JSON allows none)");
         std::string what = e.what();
         if (auto colon = what.find(": ", what.find("column")); colon != std::string::npos) what = what.substr(colon + 2);
-        return syntaxError(e.byte > 0 ? e.byte - 1 : 0, "invalid JSON: " + what);
+        return syntaxError(offset, "invalid JSON: " + what);
     } catch (const json::out_of_range& e) {
         // The only range error the parser raises: a number literal beyond double, e.g. 1e999.
         // nlohmann gives no offset here, so the literal is found in the text.
