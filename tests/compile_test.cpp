@@ -273,8 +273,9 @@ TEST(Cli, OptionSpellings) {
     EXPECT_EQ(runHexc("materials/rock.json --variant rock.lit materials/rock.json -o " + freshDir("hexc_cli_variant").string(), &err), 1);
     EXPECT_NE(err.find("--variant rock.lit: no scene given"), std::string::npos) << err;
     std::string help = hexc::test::runHexcStdout("--help");
-    for (const char* option : {"--out", "--targets", "--template", "--hlsl-sm", "--glsl-version", "--msl-version", "--bake",
-                               "--no-specialize", "--no-shared-lattice", "--depfile", "--variant", "--quiet", "--version", "Exit codes"})
+    for (const char* option :
+         {"--out", "--targets", "--template", "--hlsl-sm", "--glsl-version", "--msl-version", "--bake", "--no-specialize",
+          "--no-shared-lattice", "--depfile", "--variant", "--quiet", "--verbose", "--no-warnings", "--version", "Exit codes"})
         EXPECT_NE(help.find(option), std::string::npos) << option;
 }
 
@@ -282,6 +283,58 @@ TEST(Cli, MissingMaterialFile) {
     std::string err;
     EXPECT_EQ(runHexc("materials/nope.json -o " + freshDir("hexc_cli_none").string(), &err), 1);
     EXPECT_EQ(err, "materials/nope.json: error[HX100]: cannot read material file: No such file or directory\nhexc: nothing written\n");
+}
+
+TEST(Cli, MessagesSayWhatHappened) {
+    std::string err;
+    EXPECT_EQ(runHexc("materials -o " + freshDir("hexc_cli_dir").string(), &err), 1);
+    EXPECT_EQ(err, "materials: error[HX100]: cannot read material file: is a directory\nhexc: nothing written\n");
+    // An output path that is a file is refused before anything is compiled, and left as it was.
+    auto file = freshDir("hexc_cli_afile");
+    std::ofstream(file) << "mine";
+    EXPECT_EQ(runHexc("materials/tiles.json -o " + file.string(), &err), 3);
+    EXPECT_EQ(err, "hexc: cannot write to " + file.string() + ": it is a file, not a folder\nhexc: nothing written\n");
+    std::ifstream in(file);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "mine");
+}
+
+// -q drops the summary but keeps warnings, --no-warnings drops them, -v says what happened to each job; a scene
+// pass with its own template and no slot list leaves slots out by design, which only -v reports.
+TEST(Cli, WarningsAndVerbosity) {
+    std::string err;
+    const std::string weights = "materials/rock.json --template templates/builtin/weights.glsl -o ";
+    EXPECT_EQ(runHexc(weights + freshDir("hexc_cli_q").string() + " -q", &err), 0);
+    EXPECT_NE(err.find("warning[HX204]: slot `normal` is not read"), std::string::npos) << err;
+    EXPECT_EQ(err.find("compiled"), std::string::npos) << err;
+    EXPECT_EQ(runHexc(weights + freshDir("hexc_cli_nw").string() + " --no-warnings", &err), 0);
+    EXPECT_EQ(err.find("warning"), std::string::npos) << err;
+    EXPECT_NE(err.find("hexc: 1 compiled, 0 up to date"), std::string::npos) << err;
+
+    const std::string scene = "materials/scenes/forest.json -o " + freshDir("hexc_cli_scene").string();
+    EXPECT_EQ(runHexc(scene, &err), 0);
+    EXPECT_EQ(err.find("HX204"), std::string::npos) << err;
+    EXPECT_EQ(runHexc(scene + " -v", &err), 0);
+    EXPECT_NE(err.find("hexc: rock.weights: up to date"), std::string::npos) << err;
+    EXPECT_EQ(runHexc("materials/scenes/forest.json -v -o " + freshDir("hexc_cli_scene_v").string(), &err), 0);
+    EXPECT_NE(err.find("warning[HX204]: slot `normal` is not read by template templates/weights.glsl"), std::string::npos) << err;
+    EXPECT_NE(err.find("hexc: rock_normal.depth: compiled (no stamp"), std::string::npos) << err;
+    EXPECT_NE(err.find("its shaders equal forest."), std::string::npos) << err;
+    EXPECT_EQ(runHexc(scene + " -v -q", &err), 2);
+}
+
+// The progress line is for a terminal (here a pseudo-terminal from script(1)); a pipe or a log gets none.
+TEST(Cli, ProgressOnlyOnATerminal) {
+    if (std::system("command -v script > /dev/null") != 0) GTEST_SKIP() << "script(1) is not installed";
+    auto log = freshDir("hexc_cli_tty.txt");
+    const std::string build = std::string(HEXC_EXE) + " materials/tiles.json materials/rock.json -o " + freshDir("hexc_cli_tty").string();
+    ASSERT_EQ(std::system(("script -qec '" + build + "' /dev/null > " + log.string()).c_str()), 0);
+    std::ifstream in(log);
+    std::string tty(std::istreambuf_iterator<char>(in), {});
+    EXPECT_NE(tty.find("hexc: [2/2] compiling "), std::string::npos) << tty;
+    EXPECT_NE(tty.find("\r\033[Khexc: 2 compiled"), std::string::npos) << tty;  // cleared before the summary
+    std::string err;
+    EXPECT_EQ(runHexc("materials/tiles.json -o " + freshDir("hexc_cli_pipe").string(), &err), 0);
+    EXPECT_EQ(err.find("[1/1]"), std::string::npos) << err;
 }
 
 // Templates declare the slots they read (`// hexc slot <name> <kind> [required]`); a material that does not fit gets

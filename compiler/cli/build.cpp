@@ -12,6 +12,7 @@
 #include "depfile.h"
 #include "incremental.h"
 #include "outputs.h"
+#include "progress.h"
 #include "hexc/files.h"
 #include "hash.h"
 #include "hexc/scene.h"
@@ -24,6 +25,7 @@ struct Job {
     Material material;
     std::vector<std::filesystem::path> extraInputs = {};  // the scene file, for variants
     std::string scene = {};                               // set for scene variants (their shaders are deduplicated)
+    bool passReadsFewer = false;  // a scene pass with its own template and no slot list: leaving slots out is its purpose
     std::string hash = {};
     CompileResult result = {};
     bool upToDate = false;
@@ -48,9 +50,12 @@ std::string whyNotInScene(const std::string& variant, const std::vector<SceneSum
     return scenes.empty() ? "no scene given" : "no scene on the command line has a pass `" + pass + "` for a material `" + material + "`";
 }
 
-bool printDiagnostics(const Diagnostics& diags, bool quiet) {
-    for (const Diagnostic& d : diags)
-        if (!quiet || d.severity == Diagnostic::Severity::Error) std::cerr << d.format() << "\n";
+// Errors always; warnings unless --no-warnings, and a slot a scene pass leaves out on purpose only with -v.
+bool printDiagnostics(const Diagnostics& diags, const Arguments& a, bool passReadsFewer = false) {
+    for (const Diagnostic& d : diags) {
+        const bool expected = passReadsFewer && d.code == Code::SlotNotRead && !a.verbose;
+        if (d.severity == Diagnostic::Severity::Error || (a.warnings && !expected)) std::cerr << d.format() << "\n";
+    }
     return !hasErrors(diags);
 }
 
@@ -72,7 +77,7 @@ struct Inputs {
 // A scene's variants (those --variant asks for, or all) become jobs.
 void addScene(const std::filesystem::path& path, std::string_view text, const Arguments& a, Inputs& in) {
     SceneParseResult parsed = parseScene(text, path);
-    if (!printDiagnostics(parsed.diagnostics, a.quiet) || !parsed.scene) {
+    if (!printDiagnostics(parsed.diagnostics, a) || !parsed.scene) {
         in.failed = true;
         return;
     }
@@ -80,7 +85,9 @@ void addScene(const std::filesystem::path& path, std::string_view text, const Ar
     for (Variant& v : sceneVariants(*parsed.scene)) {
         if (!a.variants.empty() && std::find(a.variants.begin(), a.variants.end(), v.name) == a.variants.end()) continue;
         summary.variants.push_back(v.name);
-        in.jobs.push_back({std::move(v.material), {path}, parsed.scene->name});
+        const ScenePass& pass = *std::find_if(parsed.scene->passes.begin(), parsed.scene->passes.end(),
+                                              [&](const ScenePass& p) { return p.name == v.passName; });
+        in.jobs.push_back({std::move(v.material), {path}, parsed.scene->name, !pass.templateName.empty() && !pass.slots});
     }
     in.scenes.push_back(std::move(summary));
 }
@@ -97,7 +104,7 @@ Inputs readInputs(const Arguments& a) {
         ParseResult parsed = text ? parseMaterial(*text, path) : ParseResult{};
         if (!text)
             parsed.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {path.string()}, "", "cannot read material file: " + why));
-        if (!printDiagnostics(parsed.diagnostics, a.quiet) || !parsed.material) {
+        if (!printDiagnostics(parsed.diagnostics, a) || !parsed.material) {
             in.failed = true;
             continue;
         }
@@ -132,8 +139,23 @@ bool inputsFit(const Arguments& a, const Inputs& in) {
     return ok;
 }
 
-// Compiles the jobs that are not up to date on every core: jobs are independent, and each keeps its own
-// results, so the outputs do not depend on the order they finish in. False if any failed.
+// Compiles the jobs on every core, with a progress line on a terminal (cleared before diagnostics are printed):
+// jobs are independent, and each keeps its own results, so the outputs do not depend on the order they finish in.
+void compileInParallel(const Arguments& a, const std::vector<Job*>& pending) {
+    std::atomic<size_t> next = 0;
+    Progress progress(pending.size(), a.quiet);
+    auto worker = [&] {
+        for (size_t i; (i = next++) < pending.size();) {
+            progress.step("compiling " + pending[i]->material.name);
+            pending[i]->result = compile(pending[i]->material, a.options);
+        }
+    };
+    std::vector<std::thread> threads(std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size()));
+    for (auto& t : threads) t = std::thread(worker);
+    for (auto& t : threads) t.join();
+}
+
+// Compiles the jobs that are not up to date. False if any failed.
 bool compileJobs(const Arguments& a, std::vector<Job>& jobs) {
     std::vector<Job*> pending;
     for (Job& j : jobs) {
@@ -141,15 +163,9 @@ bool compileJobs(const Arguments& a, std::vector<Job>& jobs) {
         j.upToDate = upToDate(a.outDir, j.material.name, j.hash);
         if (!j.upToDate) pending.push_back(&j);
     }
-    std::atomic<size_t> next = 0;
-    auto worker = [&] {
-        for (size_t i; (i = next++) < pending.size();) pending[i]->result = compile(pending[i]->material, a.options);
-    };
-    std::vector<std::thread> threads(std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size()));
-    for (auto& t : threads) t = std::thread(worker);
-    for (auto& t : threads) t.join();
+    compileInParallel(a, pending);
     bool ok = true;
-    for (Job* j : pending) ok &= printDiagnostics(j->result.diagnostics, a.quiet);
+    for (Job* j : pending) ok &= printDiagnostics(j->result.diagnostics, a, j->passReadsFewer);
     return ok;
 }
 
@@ -157,6 +173,7 @@ struct Outputs {
     std::vector<OutputFile> files;
     std::map<std::string, std::string> stamps;  // job name -> stamp text
     size_t deduplicated = 0;                    // scene variants that reuse another variant's shader files
+    std::map<std::string, std::string> shares;  // such a variant -> the stem of the files it reuses (for -v)
 };
 
 // A manifest whose target files are renamed from `from` to `to` (the same suffixes).
@@ -172,6 +189,7 @@ void addVariantFiles(const Job& j, std::set<std::string>& sceneShaders, Outputs&
     std::string stem = j.scene + "." + shaderHash(j.result);
     bool fresh = sceneShaders.insert(stem).second;
     out.deduplicated += fresh ? 0 : 1;
+    if (!fresh) out.shares[j.material.name] = stem;
     for (OutputFile f : j.result.files) {
         bool manifest = f.name.ends_with(".manifest.json");
         if (manifest)
@@ -219,11 +237,20 @@ std::string depfileFor(const Arguments& a, const std::vector<Job>& jobs) {
     return depfileText(outs, ins);
 }
 
+// The output folder, created if missing; throws with the reason in a user's words when it cannot be.
+void makeOutputFolder(const std::filesystem::path& dir) {
+    std::error_code ec;
+    if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+        throw std::runtime_error("cannot write to " + dir.string() + ": it is a file, not a folder");
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("cannot create the output folder " + dir.string() + ": " + ec.message());
+}
+
 // Writes every output, then the stamps (a crash before them leaves the jobs to be compiled again next time),
 // then the depfile. Returns the bytes written; throws when something cannot be written.
 size_t writeOutputs(const Arguments& a, const Outputs& out, const std::string& depfile) {
     size_t bytes = 0;
-    std::filesystem::create_directories(a.outDir);
+    makeOutputFolder(a.outDir);
     for (const OutputFile& f : out.files) {
         writeAtomically(a.outDir, f.name, f.contents);
         bytes += f.contents.size();
@@ -234,7 +261,23 @@ size_t writeOutputs(const Arguments& a, const Outputs& out, const std::string& d
     return bytes;
 }
 
+// -v: each job's fate and why.
+void printJobs(const Inputs& in, const Outputs& out) {
+    for (const Job& j : in.jobs) {
+        std::cerr << "hexc: " << j.material.name << ": ";
+        if (j.upToDate) {
+            std::cerr << "up to date (its inputs, options and hexc match the last build's stamp); not compiled\n";
+            continue;
+        }
+        std::cerr << "compiled (no stamp from an earlier build matches its inputs, options and hexc)";
+        if (auto s = out.shares.find(j.material.name); s != out.shares.end())
+            std::cerr << "; its shaders equal " << s->second << ".*, written once for the scene";
+        std::cerr << "\n";
+    }
+}
+
 void printSummary(const Arguments& a, const Inputs& in, const Outputs& out, size_t bytes) {
+    if (a.verbose) printJobs(in, out);
     size_t upToDate = 0;
     for (const Job& j : in.jobs) upToDate += j.upToDate;
     for (const SceneSummary& s : in.scenes)
@@ -242,12 +285,19 @@ void printSummary(const Arguments& a, const Inputs& in, const Outputs& out, size
                   << s.variants.size() << " used\n";
     std::cerr << "hexc: " << in.jobs.size() - upToDate << " compiled, " << upToDate << " up to date";
     if (!in.scenes.empty()) std::cerr << ", " << out.deduplicated << " scene shaders deduplicated";
-    std::cerr << "; wrote " << out.files.size() << " files (" << bytes << " bytes) to " << a.outDir.string() << "\n";
+    std::cerr << "; wrote " << out.files.size() << (out.files.size() == 1 ? " file (" : " files (") << bytes << " bytes) to "
+              << a.outDir.string() << "\n";
 }
 
 }  // namespace
 
 int buildCommand(const Arguments& a) {
+    try {  // before compiling anything
+        if (std::error_code ec; std::filesystem::exists(a.outDir, ec)) makeOutputFolder(a.outDir);
+    } catch (const std::exception& e) {
+        std::cerr << "hexc: " << e.what() << "\nhexc: nothing written\n";
+        return kWriteFailed;
+    }
     Inputs in = readInputs(a);
     bool ok = inputsFit(a, in) && !in.failed;
     if (!ok || !compileJobs(a, in.jobs)) {

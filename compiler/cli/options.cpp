@@ -94,7 +94,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     app.add_option("--variant", a.variants, "compile only this scene variant (repeatable)")
         ->type_name("MATERIAL.PASS")
         ->allow_extra_args(false);
-    app.add_flag("-q,--quiet", a.quiet, "print errors only");
+    app.add_flag("-q,--quiet", a.quiet, "print errors and warnings only (no summary)");
+    app.add_flag("-v,--verbose", a.verbose, "say what was compiled, what was up to date or shared, and why")->excludes("-q");
+    app.add_flag_callback(
+        "--no-warnings", [&] { a.warnings = false; }, "do not print warnings");
     app.set_version_flag("--version", std::string("hexc ") + version());
     if (std::optional<int> done = parseWith(app, args)) return done;
     if (materials.empty() || a.outDir.empty()) {

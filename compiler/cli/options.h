@@ -22,7 +22,9 @@ struct Arguments {
     CompileOptions options;
     std::filesystem::path depfile;      // --depfile
     std::vector<std::string> variants;  // --variant: only these scene variants
-    bool quiet = false;
+    bool quiet = false;                 // -q: no summary; warnings stay
+    bool verbose = false;               // -v: what was compiled, skipped, shared, and why
+    bool warnings = true;               // --no-warnings turns them off
 };
 
 // A command line that parses but does not make sense (render.cpp's checks across options); exit kUsage.

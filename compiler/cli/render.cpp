@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "options.h"
+#include "progress.h"
 #include "hexc/material.h"
 #include "reference/reference.h"
 #include "vk/render.h"
@@ -122,6 +123,7 @@ struct RenderArguments {
     vk::RenderOutput output = vk::RenderOutput::Shaded;
     vk::ExecutedTarget target = vk::ExecutedTarget::Spirv;
     bool reference = false;
+    bool quiet = false;
 };
 
 // `hexc render`'s command line; nullopt with `r` filled when it should run, else the exit code.
@@ -150,6 +152,7 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
     app.add_flag("--reference", r.reference,
                  "write the fp64 CPU reference instead (no Vulkan needed): what the\n"
                  "GPU image should be, up to texture filtering precision");
+    app.add_flag("-q,--quiet", r.quiet, "no progress line on a terminal");
     if (std::optional<int> done = parseWith(app, args)) return done;
     r.output = outputs.at(output);
     r.target = targets.at(target);
@@ -211,13 +214,21 @@ int renderCommand(const std::vector<std::string>& args) {
         if (std::optional<int> done = parseRender(args, r)) return *done;
         auto material = loadMaterial(r.material);
         if (!material) return int(kInvalidInput);
+        Progress progress(2, r.quiet);
+        const std::string size = std::to_string(r.view.width) + "x" + std::to_string(r.view.height);
         if (r.reference) {
-            writeImage(referenceImage(*material, r), r.out);
+            progress.step("computing the fp64 reference, " + size + " pixels");
+            Image image = referenceImage(*material, r);
+            progress.step("writing " + r.out);
+            writeImage(image, r.out);
             return int(kOk);
         }
         auto runner = makeRunner();
         if (!runner) return int(kNoVulkan);
-        writeImage(vk::render(*runner, *material, r.output, r.slot, r.view, r.target), r.out);
+        progress.step("rendering " + size + " pixels on " + runner->deviceName());
+        Image image = vk::render(*runner, *material, r.output, r.slot, r.view, r.target);
+        progress.step("writing " + r.out);
+        writeImage(image, r.out);
         return int(kOk);
     });
 }
@@ -226,10 +237,12 @@ int previewCommand(const std::vector<std::string>& args) {
     return guarded([&] {
         std::string materialPath, out;
         int cell = 256;
+        bool quiet = false;
         CLI::App app(kPreviewHelp, "hexc preview");
         app.add_option("material", materialPath, "the material file")->type_name("MATERIAL.json");
         app.add_option("-o,--out", out, "the PNG to write")->type_name("PREVIEW.png");
         app.add_option("--cell", cell, "each cell's size in pixels (default 256)")->check(CLI::Range(32, 2048))->type_name("N");
+        app.add_flag("-q,--quiet", quiet, "no progress line on a terminal");
         if (std::optional<int> done = parseWith(app, args)) return *done;
         if (materialPath.empty()) throw UsageError{"no material given (see hexc preview --help)"};
         if (out.empty()) throw UsageError{"no output image given: use -o PREVIEW.png"};
@@ -260,8 +273,10 @@ int previewCommand(const std::vector<std::string>& args) {
         sheet.height = 2 * (cell + band);
         sheet.rgba.assign(size_t(sheet.width) * sheet.height * 4, 0.12f);  // dark grey bands behind the labels
         for (size_t i = 3; i < sheet.rgba.size(); i += 4) sheet.rgba[i] = 1.0f;
+        Progress progress(7, quiet);
         for (int r = 0; r < 2; ++r) {
             for (int c = 0; c < 3; ++c) {
+                progress.step(std::string("rendering ") + columns[c].label + ", " + rows[r].label);
                 View view{cell, cell, {0, 0, rows[r].extent, rows[r].extent}};
                 Image img = vk::render(*runner, *columns[c].material, columns[c].output, "", view);
                 int y0 = r * (cell + band) + band;
@@ -270,6 +285,7 @@ int previewCommand(const std::vector<std::string>& args) {
                 drawLabel(sheet, c * cell + 6, r * (cell + band) + 6, std::string(columns[c].label) + ", " + rows[r].label, scale);
             }
         }
+        progress.step("writing " + out);
         writeImage(sheet, out);
         return int(kOk);
     });
