@@ -32,6 +32,16 @@ fs::path copyOfMaterials(const std::string& name) {
     return dir;
 }
 
+// A fresh folder in the temporary directory holding tiles.json and its texture.
+fs::path tilesFolder(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir / "textures");
+    fs::copy("materials/tiles.json", dir / "tiles.json");
+    fs::copy("materials/textures/tiles_albedo.png", dir / "textures" / "tiles_albedo.png");
+    return dir;
+}
+
 size_t countFiles(const fs::path& dir, const std::string& suffix) {
     size_t n = 0;
     for (const auto& e : fs::directory_iterator(dir)) n += e.path().string().ends_with(suffix);
@@ -171,11 +181,7 @@ TEST(Incremental, AnotherHexcBuildDoesNotTrustTheStamp) {
 
 TEST(Depfile, ListsEveryInputWithMakeEscapes) {
     // A folder name with the characters Make and Ninja treat specially.
-    fs::path dir = fs::temp_directory_path() / "hexc dep$#";
-    fs::remove_all(dir);
-    fs::create_directories(dir / "textures");
-    fs::copy("materials/tiles.json", dir / "tiles.json");
-    fs::copy("materials/textures/tiles_albedo.png", dir / "textures" / "tiles_albedo.png");
+    const fs::path dir = tilesFolder("hexc dep$#");
     fs::path out = fs::temp_directory_path() / "hexc_dep_out";
     fs::remove_all(out);
     std::string err;
@@ -199,13 +205,10 @@ TEST(Depfile, ListsEveryInputWithMakeEscapes) {
 // The manifest names a material's template file as the material wrote it: compiling the same material from
 // another working directory, or by an absolute path, gives a byte-identical manifest.
 TEST(Manifest, NamesTheTemplateFileAsTheMaterialWroteIt) {
-    fs::path dir = fs::temp_directory_path() / "hexc_template_as_written";
-    fs::remove_all(dir);
-    fs::create_directories(dir / "textures");
+    const fs::path dir = tilesFolder("hexc_template_as_written");
     fs::create_directories(dir / "shaders");
     fs::copy("templates/builtin/unlit.glsl", dir / "shaders" / "mine.glsl");
-    fs::copy("materials/textures/tiles_albedo.png", dir / "textures" / "tiles_albedo.png");
-    nlohmann::json m = nlohmann::json::parse(read("materials/tiles.json"));
+    nlohmann::json m = nlohmann::json::parse(read(dir / "tiles.json"));
     m["template"] = "shaders/mine.glsl";
     std::ofstream(dir / "tiles.json") << m.dump(2);
     const fs::path absOut = dir / "out_abs", relOut = dir / "out_rel";
@@ -219,11 +222,7 @@ TEST(Manifest, NamesTheTemplateFileAsTheMaterialWroteIt) {
 
 // No depfile syntax holds a line break: such a path is an error, and nothing is written.
 TEST(Depfile, APathWithALineBreakIsRefusedAndNothingIsWritten) {
-    fs::path dir = fs::temp_directory_path() / "hexc_dep\nline";
-    fs::remove_all(dir);
-    fs::create_directories(dir / "textures");
-    fs::copy("materials/tiles.json", dir / "tiles.json");
-    fs::copy("materials/textures/tiles_albedo.png", dir / "textures" / "tiles_albedo.png");
+    const fs::path dir = tilesFolder("hexc_dep\nline");
     fs::path out = fs::temp_directory_path() / "hexc_dep_newline_out";
     fs::remove_all(out);
     std::string err;
