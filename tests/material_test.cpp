@@ -105,7 +105,7 @@ TEST(Validation, MissingTexture) {
 TEST(Validation, TextureThatIsNotAnImage) {
     EXPECT_EQ(diagnose(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": "rock.json"}]})"),
               std::vector<std::string>{"materials/t.json:1:67: error[HX121]: /slots/0/texture: cannot read texture materials/rock.json: "
-                                       "unknown image type (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM or PFM)"});
+                                       "unknown image type (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM, PFM, OpenEXR, KTX2 or DDS)"});
 }
 
 TEST(Validation, NormalMapNeedsThreeChannels) {

@@ -38,6 +38,7 @@ enum class Code {
     TextureNotFound,
     TextureUnreadable,
     TextureChannels,
+    TextureColorSpace,
     // templates and shader code
     UnknownTemplate,
     TemplateUnreadable,

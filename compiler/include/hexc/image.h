@@ -38,6 +38,10 @@ struct View {
 
 struct TextureInfo {
     int width = 0, height = 0, channels = 0;
+    std::string channelNames;  // the channels the file has: "r", "ra" (grey + alpha), "rg" (e.g. BC5), "rgb", "rgba"
+    int mipLevels = 1;         // stored in the file (KTX2, DDS); hexc's uploads make their own chain
+    std::optional<bool> srgb;  // whether the file's format says sRGB, where it says (KTX2, DDS); float files hold linear values
+    std::string format = {};   // the container's pixel format, for messages ("BC7 sRGB"); empty for stb's formats
 };
 
 // Size and channel count of an image file without decoding it (the formats loadTexture reads);

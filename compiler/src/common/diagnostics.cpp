@@ -10,17 +10,23 @@ using enum Diagnostic::Severity;
 // The catalogue. An id, once released, is never reused for another meaning; new codes take the next free number
 // of their group. docs/cli.md explains each one.
 constexpr CodeInfo kCatalogue[] = {
-    {Code::InputUnreadable, "HX100", Error},      {Code::JsonSyntax, "HX101", Error},        {Code::DuplicateKey, "HX102", Error},
-    {Code::UnknownKey, "HX103", Error},           {Code::MissingKey, "HX104", Error},        {Code::WrongType, "HX105", Error},
-    {Code::OutOfRange, "HX106", Error},           {Code::UnknownValue, "HX107", Error},      {Code::InvalidName, "HX108", Error},
-    {Code::DuplicateName, "HX109", Error},        {Code::WrongCount, "HX110", Error},        {Code::MisplacedKey, "HX111", Error},
-    {Code::ConflictingSettings, "HX112", Error},  {Code::UnknownReference, "HX113", Error},  {Code::WrongSlotKind, "HX114", Error},
-    {Code::InvalidSceneMaterial, "HX115", Error}, {Code::TilingRange, "HX116", Warning},     {Code::TextureNotFound, "HX120", Error},
-    {Code::TextureUnreadable, "HX121", Error},    {Code::TextureChannels, "HX122", Error},   {Code::UnknownTemplate, "HX200", Error},
-    {Code::TemplateUnreadable, "HX201", Error},   {Code::TemplateNoVersion, "HX202", Error}, {Code::TemplateNoInclude, "HX203", Error},
-    {Code::SlotNotRead, "HX204", Warning},        {Code::ShaderError, "HX205", Error},       {Code::ShaderWarning, "HX206", Warning},
-    {Code::TemplateSlotLine, "HX207", Error},     {Code::TemplateMismatch, "HX208", Error},  {Code::TemplateTooLarge, "HX209", Error},
-    {Code::TemplateSetConflict, "HX210", Error},  {Code::TargetUnsupported, "HX300", Error}, {Code::Internal, "HX900", Error},
+    {Code::InputUnreadable, "HX100", Error},     {Code::JsonSyntax, "HX101", Error},
+    {Code::DuplicateKey, "HX102", Error},        {Code::UnknownKey, "HX103", Error},
+    {Code::MissingKey, "HX104", Error},          {Code::WrongType, "HX105", Error},
+    {Code::OutOfRange, "HX106", Error},          {Code::UnknownValue, "HX107", Error},
+    {Code::InvalidName, "HX108", Error},         {Code::DuplicateName, "HX109", Error},
+    {Code::WrongCount, "HX110", Error},          {Code::MisplacedKey, "HX111", Error},
+    {Code::ConflictingSettings, "HX112", Error}, {Code::UnknownReference, "HX113", Error},
+    {Code::WrongSlotKind, "HX114", Error},       {Code::InvalidSceneMaterial, "HX115", Error},
+    {Code::TilingRange, "HX116", Warning},       {Code::TextureNotFound, "HX120", Error},
+    {Code::TextureUnreadable, "HX121", Error},   {Code::TextureChannels, "HX122", Error},
+    {Code::TextureColorSpace, "HX123", Warning}, {Code::UnknownTemplate, "HX200", Error},
+    {Code::TemplateUnreadable, "HX201", Error},  {Code::TemplateNoVersion, "HX202", Error},
+    {Code::TemplateNoInclude, "HX203", Error},   {Code::SlotNotRead, "HX204", Warning},
+    {Code::ShaderError, "HX205", Error},         {Code::ShaderWarning, "HX206", Warning},
+    {Code::TemplateSlotLine, "HX207", Error},    {Code::TemplateMismatch, "HX208", Error},
+    {Code::TemplateTooLarge, "HX209", Error},    {Code::TemplateSetConflict, "HX210", Error},
+    {Code::TargetUnsupported, "HX300", Error},   {Code::Internal, "HX900", Error},
 };
 
 // Indexed by the enum: every code has its entry, in order.

@@ -2,6 +2,7 @@
 // image writing (.pfm, .png), always through a temporary file and a rename.
 #include "hexc/image.h"
 
+#include "common/containers.h"
 #include "hexc/files.h"
 
 #include <stb_image.h>
@@ -148,11 +149,12 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
         *error = whyNotRegular(file);
         return std::nullopt;
     }
+    if (containers::Kind kind = containers::kindOf(file); kind != containers::Kind::None) return containers::info(kind, file, error);
     if (lowerExtension(file) == ".pfm") {
         try {
             std::ifstream in(file, std::ios::binary);
             PfmHeader h = readPfmHeader(in, file);
-            return TextureInfo{h.width, h.height, h.channels};
+            return TextureInfo{h.width, h.height, h.channels, h.channels == 3 ? "rgb" : "r", 1, std::nullopt};
         } catch (const std::runtime_error&) {
             *error = "not a PFM file (bad header)";
             return std::nullopt;
@@ -167,10 +169,13 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
         *error = "the PNG is truncated (its chunks end before IEND)";
         return std::nullopt;
     }
+    static const char* const kNames[] = {"", "r", "ra", "rgb", "rgba"};  // stb: grey, grey + alpha, RGB, RGBA
+    info.channelNames = kNames[std::clamp(info.channels, 0, 4)];
     return info;
 }
 
 Texture loadTexture(const std::filesystem::path& file, bool srgb) {
+    if (containers::Kind kind = containers::kindOf(file); kind != containers::Kind::None) return containers::load(kind, file, srgb);
     if (lowerExtension(file) == ".pfm") return loadPfm(file);
 
     const std::string name = file.string();

@@ -610,7 +610,7 @@ private:
         if (!info) {
             report(Code::TextureUnreadable, pointer,
                    "cannot read texture " + s.texturePath.string() + ": " + why +
-                       " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM or PFM)");
+                       " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM, PFM, OpenEXR, KTX2 or DDS)");
             return;
         }
         s.width = info->width;
@@ -620,9 +620,12 @@ private:
                    "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));
         // A channel the file lacks reads whatever the engine's upload puts there (0, 1 or a copy of grey): a scalar
         // slot reading one is a mistake. A grey + alpha file has r and a.
-        static const char* kHas[] = {"", "r", "ra", "rgb", "rgba"};
+        if (info->srgb && *info->srgb != (s.colorSpace == ColorSpace::Srgb))
+            report(Code::TextureColorSpace, pointer,
+                   s.texturePath.string() + " is " + info->format + ", but the slot's colorspace is " +
+                       (*info->srgb ? "\"linear\"; a sampler would decode it from sRGB" : "\"srgb\"; its format stores linear values"));
         std::vector<std::string> has;
-        for (const char* c = kHas[std::clamp(info->channels, 0, 4)]; *c; ++c) has.emplace_back(1, *c);
+        for (char c : info->channelNames) has.emplace_back(1, c);
         if (s.kind == SlotKind::Scalar && std::find(has.begin(), has.end(), kChannels[size_t(s.channel)]) == has.end())
             report(Code::MisplacedKey, pointer.substr(0, pointer.rfind('/')) + "/channel",
                    "channel `" + kChannels[size_t(s.channel)] + "` of " + s.texturePath.string() + ", which has " +

@@ -1,0 +1,280 @@
+#include "common/containers.h"
+
+#include <tinyexr.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <vector>
+
+namespace hexc::containers {
+namespace {
+
+// A pixel format as far as hexc needs it: its channels, colour space, storage and whether level 0 is decoded.
+struct Format {
+    uint32_t code;  // DXGI_FORMAT or VkFormat
+    const char* name;
+    const char* channels;  // as TextureInfo::channelNames
+    bool srgb;
+    int block, blockBytes;  // texels per block side (4 for BCn, else 1) and bytes per block
+    enum Decode { No, Rgba8, Bgra8, Rgba32f } decode;
+};
+
+constexpr Format kDxgi[] = {
+    {2, "R32G32B32A32 float", "rgba", false, 1, 16, Format::Rgba32f},
+    {6, "R32G32B32 float", "rgb", false, 1, 12, Format::No},
+    {10, "R16G16B16A16 float", "rgba", false, 1, 8, Format::No},
+    {16, "R32G32 float", "rg", false, 1, 8, Format::No},
+    {28, "R8G8B8A8", "rgba", false, 1, 4, Format::Rgba8},
+    {29, "R8G8B8A8 sRGB", "rgba", true, 1, 4, Format::Rgba8},
+    {41, "R32 float", "r", false, 1, 4, Format::No},
+    {49, "R8G8", "rg", false, 1, 2, Format::No},
+    {61, "R8", "r", false, 1, 1, Format::No},
+    {71, "BC1", "rgba", false, 4, 8, Format::No},
+    {72, "BC1 sRGB", "rgba", true, 4, 8, Format::No},
+    {74, "BC2", "rgba", false, 4, 16, Format::No},
+    {75, "BC2 sRGB", "rgba", true, 4, 16, Format::No},
+    {77, "BC3", "rgba", false, 4, 16, Format::No},
+    {78, "BC3 sRGB", "rgba", true, 4, 16, Format::No},
+    {80, "BC4", "r", false, 4, 8, Format::No},
+    {81, "BC4 signed", "r", false, 4, 8, Format::No},
+    {83, "BC5", "rg", false, 4, 16, Format::No},
+    {84, "BC5 signed", "rg", false, 4, 16, Format::No},
+    {87, "B8G8R8A8", "rgba", false, 1, 4, Format::Bgra8},
+    {88, "B8G8R8X8", "rgb", false, 1, 4, Format::No},
+    {91, "B8G8R8A8 sRGB", "rgba", true, 1, 4, Format::Bgra8},
+    {93, "B8G8R8X8 sRGB", "rgb", true, 1, 4, Format::No},
+    {95, "BC6H", "rgb", false, 4, 16, Format::No},
+    {96, "BC6H signed", "rgb", false, 4, 16, Format::No},
+    {98, "BC7", "rgba", false, 4, 16, Format::No},
+    {99, "BC7 sRGB", "rgba", true, 4, 16, Format::No},
+};
+
+constexpr Format kVk[] = {
+    {9, "R8", "r", false, 1, 1, Format::No},
+    {15, "R8 sRGB", "r", true, 1, 1, Format::No},
+    {16, "R8G8", "rg", false, 1, 2, Format::No},
+    {23, "R8G8B8", "rgb", false, 1, 3, Format::No},
+    {29, "R8G8B8 sRGB", "rgb", true, 1, 3, Format::No},
+    {37, "R8G8B8A8", "rgba", false, 1, 4, Format::Rgba8},
+    {43, "R8G8B8A8 sRGB", "rgba", true, 1, 4, Format::Rgba8},
+    {44, "B8G8R8A8", "rgba", false, 1, 4, Format::Bgra8},
+    {50, "B8G8R8A8 sRGB", "rgba", true, 1, 4, Format::Bgra8},
+    {97, "R16G16B16A16 float", "rgba", false, 1, 8, Format::No},
+    {100, "R32 float", "r", false, 1, 4, Format::No},
+    {103, "R32G32 float", "rg", false, 1, 8, Format::No},
+    {106, "R32G32B32 float", "rgb", false, 1, 12, Format::No},
+    {109, "R32G32B32A32 float", "rgba", false, 1, 16, Format::Rgba32f},
+    {131, "BC1 RGB", "rgb", false, 4, 8, Format::No},
+    {132, "BC1 RGB sRGB", "rgb", true, 4, 8, Format::No},
+    {133, "BC1", "rgba", false, 4, 8, Format::No},
+    {134, "BC1 sRGB", "rgba", true, 4, 8, Format::No},
+    {135, "BC2", "rgba", false, 4, 16, Format::No},
+    {136, "BC2 sRGB", "rgba", true, 4, 16, Format::No},
+    {137, "BC3", "rgba", false, 4, 16, Format::No},
+    {138, "BC3 sRGB", "rgba", true, 4, 16, Format::No},
+    {139, "BC4", "r", false, 4, 8, Format::No},
+    {140, "BC4 signed", "r", false, 4, 8, Format::No},
+    {141, "BC5", "rg", false, 4, 16, Format::No},
+    {142, "BC5 signed", "rg", false, 4, 16, Format::No},
+    {143, "BC6H", "rgb", false, 4, 16, Format::No},
+    {144, "BC6H signed", "rgb", false, 4, 16, Format::No},
+    {145, "BC7", "rgba", false, 4, 16, Format::No},
+    {146, "BC7 sRGB", "rgba", true, 4, 16, Format::No},
+};
+
+// Legacy DDS files name block formats by FourCC instead of a DXGI code.
+constexpr std::pair<const char*, uint32_t> kFourCc[] = {{"DXT1", 71}, {"DXT2", 74},       {"DXT3", 74},     {"DXT4", 77}, {"DXT5", 77},
+                                                        {"ATI1", 80}, {"BC4U", 80},       {"BC4S", 81},     {"ATI2", 83}, {"BC5U", 83},
+                                                        {"BC5S", 84}, {"\x71\0\0\0", 10}, {"\x74\0\0\0", 2}};
+
+template <size_t N>
+const Format* find(const Format (&table)[N], uint32_t code) {
+    for (const Format& f : table)
+        if (f.code == code) return &f;
+    return nullptr;
+}
+
+// A container's header as far as hexc reads it.
+struct Header {
+    int width = 0, height = 0, mips = 1;
+    const Format* format = nullptr;
+    uint64_t dataOffset = 0;  // of level 0
+    std::string problem;      // why the file cannot be used, when it cannot
+};
+
+uint32_t u32(const std::vector<unsigned char>& b, size_t at) {
+    return at + 4 <= b.size() ? uint32_t(b[at]) | uint32_t(b[at + 1]) << 8 | uint32_t(b[at + 2]) << 16 | uint32_t(b[at + 3]) << 24 : 0;
+}
+
+std::vector<unsigned char> prefix(const std::filesystem::path& file, size_t bytes) {
+    std::ifstream in(file, std::ios::binary);
+    std::vector<unsigned char> b(bytes);
+    in.read(reinterpret_cast<char*>(b.data()), std::streamsize(bytes));
+    b.resize(size_t(in.gcount()));
+    return b;
+}
+
+constexpr unsigned char kKtx2Magic[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
+
+Header ktx2Header(const std::vector<unsigned char>& b) {
+    Header h;
+    if (b.size() < 104) return {.problem = "KTX2 header is truncated"};
+    const uint32_t vkFormat = u32(b, 12);
+    h.width = int(u32(b, 20));
+    h.height = int(std::max(1u, u32(b, 24)));
+    h.mips = int(std::max(1u, u32(b, 40)));
+    h.dataOffset = u32(b, 80) | uint64_t(u32(b, 84)) << 32;
+    h.format = find(kVk, vkFormat);
+    if (vkFormat == 0)
+        h.problem = "KTX2 with VK_FORMAT_UNDEFINED (Basis Universal) is not supported; transcode it to a BCn format";
+    else if (!h.format)
+        h.problem = "KTX2 vkFormat " + std::to_string(vkFormat) + " is not one hexc reads (8-bit, float or BC1-BC7)";
+    else if (u32(b, 28) > 1 || u32(b, 32) > 1 || u32(b, 36) > 1)
+        h.problem = "a KTX2 array, cube or 3D texture is not a 2D texture";
+    else if (u32(b, 44) != 0)
+        h.problem = "supercompressed KTX2 (scheme " + std::to_string(u32(b, 44)) + ")";
+    return h;
+}
+
+const Format* ddsLegacyFormat(const std::vector<unsigned char>& b, std::string* problem) {
+    const uint32_t flags = u32(b, 80), bits = u32(b, 88);
+    if (flags & 0x4) {  // DDPF_FOURCC
+        for (const auto& [cc, dxgi] : kFourCc)
+            if (std::memcmp(cc, &b[84], 4) == 0) return find(kDxgi, dxgi);
+        *problem = "DDS FourCC `" + std::string(reinterpret_cast<const char*>(&b[84]), 4) + "` is not one hexc reads";
+        return nullptr;
+    }
+    const bool rgba = u32(b, 92) == 0xff && u32(b, 100) == 0xff0000, bgra = u32(b, 92) == 0xff0000 && u32(b, 100) == 0xff;
+    if ((flags & 0x40) && bits == 32 && (flags & 0x1) && (rgba || bgra)) return find(kDxgi, rgba ? 28 : 87);
+    *problem = "this uncompressed DDS layout (" + std::to_string(bits) + " bits per texel) is not one hexc reads; use 32-bit RGBA";
+    return nullptr;
+}
+
+Header ddsHeader(const std::vector<unsigned char>& b) {
+    Header h;
+    if (b.size() < 128 || u32(b, 4) != 124) return {.problem = "DDS header is truncated or malformed"};
+    h.height = int(u32(b, 12));
+    h.width = int(u32(b, 16));
+    h.mips = int(std::max(1u, u32(b, 28)));
+    const bool dx10 = std::memcmp(&b[84], "DX10", 4) == 0;
+    h.dataOffset = dx10 ? 148 : 128;
+    if (dx10 && b.size() < 148) return {.problem = "DDS DX10 header is truncated"};
+    if (dx10) {
+        h.format = find(kDxgi, u32(b, 128));
+        if (!h.format)
+            h.problem = "DDS DXGI format " + std::to_string(u32(b, 128)) + " is not one hexc reads (8-bit, float or BC1-BC7)";
+        else if (u32(b, 132) != 3 || u32(b, 140) > 1 || (u32(b, 136) & 0x4))
+            h.problem = "a DDS array, cube or 3D texture is not a 2D texture";
+    } else {
+        h.format = ddsLegacyFormat(b, &h.problem);
+    }
+    return h;
+}
+
+Header header(Kind kind, const std::filesystem::path& file) {
+    std::vector<unsigned char> b = prefix(file, 148);
+    Header h = kind == Kind::Ktx2 ? ktx2Header(b) : ddsHeader(b);
+    if (!h.problem.empty()) return h;
+    if (h.width <= 0 || h.height <= 0 || h.width > 65536 || h.height > 65536) return {.problem = "the header gives no valid size"};
+    // Level 0 must be in the file: a truncated texture would fail in the engine, not here.
+    const Format& f = *h.format;
+    const uint64_t bytes = uint64_t((h.width + f.block - 1) / f.block) * uint64_t((h.height + f.block - 1) / f.block) * f.blockBytes;
+    std::error_code ec;
+    if (h.dataOffset + bytes > std::filesystem::file_size(file, ec) || ec) h.problem = "the file is truncated (level 0 does not fit)";
+    return h;
+}
+
+std::optional<TextureInfo> exrInfo(const std::filesystem::path& file, std::string* error) {
+    EXRVersion version;
+    EXRHeader h;
+    InitEXRHeader(&h);
+    const char* err = nullptr;
+    if (ParseEXRVersionFromFile(&version, file.c_str()) != TINYEXR_SUCCESS || version.multipart || version.non_image ||
+        ParseEXRHeaderFromFile(&h, &version, file.c_str(), &err) != TINYEXR_SUCCESS) {
+        *error = std::string("not a single-part OpenEXR image") + (err ? std::string(" (") + err + ")" : "");
+        if (err) FreeEXRErrorMessage(err);
+        FreeEXRHeader(&h);
+        return std::nullopt;
+    }
+    TextureInfo info;
+    info.width = h.data_window.max_x - h.data_window.min_x + 1;
+    info.height = h.data_window.max_y - h.data_window.min_y + 1;
+    info.channels = std::min(h.num_channels, 4);
+    info.channelNames = std::string("rgba").substr(0, size_t(info.channels));
+    info.format = "OpenEXR";
+    FreeEXRHeader(&h);
+    return info;
+}
+
+Texture loadExr(const std::filesystem::path& file) {
+    float* rgba = nullptr;
+    const char* err = nullptr;
+    Texture t;
+    if (LoadEXR(&rgba, &t.width, &t.height, file.c_str(), &err) != TINYEXR_SUCCESS) {
+        std::string why = err ? err : "cannot decode";
+        if (err) FreeEXRErrorMessage(err);
+        throw TextureError(file.string() + ": OpenEXR: " + why);
+    }
+    std::unique_ptr<float, void (*)(void*)> owned(rgba, std::free);
+    t.rgba32f.assign(rgba, rgba + size_t(t.width) * t.height * 4);
+    return t;
+}
+
+Texture decode(const Header& h, const std::filesystem::path& file, bool srgb) {
+    const Format& f = *h.format;
+    std::ifstream in(file, std::ios::binary);
+    in.seekg(std::streamoff(h.dataOffset));
+    Texture t;
+    t.width = h.width;
+    t.height = h.height;
+    const size_t texels = size_t(h.width) * h.height;
+    if (f.decode == Format::Rgba32f) {
+        t.rgba32f.resize(texels * 4);
+        in.read(reinterpret_cast<char*>(t.rgba32f.data()), std::streamsize(texels * 16));
+    } else {
+        t.rgba8.resize(texels * 4);
+        in.read(reinterpret_cast<char*>(t.rgba8.data()), std::streamsize(texels * 4));
+        if (f.decode == Format::Bgra8)
+            for (size_t i = 0; i < t.rgba8.size(); i += 4) std::swap(t.rgba8[i], t.rgba8[i + 2]);
+        t.srgb = srgb;
+    }
+    if (!in) throw TextureError(file.string() + ": the file is truncated");
+    return t;
+}
+
+}  // namespace
+
+Kind kindOf(const std::filesystem::path& file) {
+    std::vector<unsigned char> b = prefix(file, 12);
+    if (b.size() == 12 && std::memcmp(b.data(), kKtx2Magic, 12) == 0) return Kind::Ktx2;
+    if (b.size() >= 4 && std::memcmp(b.data(), "DDS ", 4) == 0) return Kind::Dds;
+    if (b.size() >= 4 && std::memcmp(b.data(), "\x76\x2f\x31\x01", 4) == 0) return Kind::Exr;
+    return Kind::None;
+}
+
+std::optional<TextureInfo> info(Kind kind, const std::filesystem::path& file, std::string* error) {
+    if (kind == Kind::Exr) return exrInfo(file, error);
+    Header h = header(kind, file);
+    if (!h.problem.empty()) {
+        *error = h.problem;
+        return std::nullopt;
+    }
+    const std::string names = h.format->channels;
+    const char* container = kind == Kind::Ktx2 ? "KTX2 " : "DDS ";
+    return TextureInfo{h.width, h.height, int(names.size()), names, h.mips, h.format->srgb, container + std::string(h.format->name)};
+}
+
+Texture load(Kind kind, const std::filesystem::path& file, bool srgb) {
+    if (kind == Kind::Exr) return loadExr(file);
+    Header h = header(kind, file);
+    if (!h.problem.empty()) throw TextureError(file.string() + ": " + h.problem);
+    if (h.format->decode == Format::No)
+        throw TextureError(file.string() + ": hexc render and preview do not decode " + h.format->name +
+                           " (only uncompressed 8-bit and 32-bit float RGBA, and EXR); hexc compiles with it");
+    return decode(h, file, srgb);
+}
+
+}  // namespace hexc::containers

@@ -1,0 +1,25 @@
+#pragma once
+// Texture files that pipelines hand over besides stb's formats: GPU containers (KTX2, DDS, with block-compressed
+// formats and mips) and OpenEXR. Compiling needs only their headers; render and preview decode level 0 where
+// that is simple (uncompressed 8-bit or 32-bit float RGBA, and any EXR through tinyexr).
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "hexc/image.h"
+
+namespace hexc::containers {
+
+enum class Kind { None, Ktx2, Dds, Exr };
+
+// By the file's first bytes, not its extension.
+Kind kindOf(const std::filesystem::path& file);
+
+// Size, channels, mip count and the format's colour space; nullopt with the reason in *error for a malformed,
+// truncated or unknown file.
+std::optional<TextureInfo> info(Kind kind, const std::filesystem::path& file, std::string* error);
+
+// Level 0 as loadTexture returns it; throws TextureError naming the format when it is not decoded here.
+Texture load(Kind kind, const std::filesystem::path& file, bool srgb);
+
+}  // namespace hexc::containers

@@ -1,0 +1,224 @@
+// KTX2, DDS and OpenEXR textures from a small generator: their headers as compiling reads them, their texels as
+// render and preview decode them, and the located errors for what hexc does not read.
+#include <gtest/gtest.h>
+#include <tinyexr.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "hexc/image.h"
+#include "hexc/material.h"
+#include "support.h"
+
+namespace fs = std::filesystem;
+using namespace hexc;
+
+namespace {
+
+void put32(std::vector<unsigned char>& b, size_t at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) b[at + size_t(i)] = (unsigned char)(v >> (8 * i));
+}
+
+// Texels that differ in every channel, so a swapped or shifted channel shows.
+std::vector<unsigned char> texels(int w, int h) {
+    std::vector<unsigned char> t(size_t(w) * h * 4);
+    for (size_t i = 0; i < t.size(); ++i) t[i] = (unsigned char)(i * 37 + (i % 4) * 11);
+    return t;
+}
+
+fs::path dir() {
+    fs::path d = fs::temp_directory_path() / "hexc_texture_formats";
+    fs::create_directories(d);
+    return d;
+}
+
+fs::path save(const std::string& name, const std::vector<unsigned char>& bytes) {
+    std::ofstream(dir() / name, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    return dir() / name;
+}
+
+// KTX2 with one level: the 80-byte header and index, one level entry, then level 0 (a reader needs no more).
+fs::path ktx2(const std::string& name, uint32_t vkFormat, int w, int h, const std::vector<unsigned char>& data, uint32_t levels = 1) {
+    std::vector<unsigned char> b(112, 0);
+    const unsigned char magic[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
+    std::memcpy(b.data(), magic, 12);
+    put32(b, 12, vkFormat);
+    put32(b, 16, 1);
+    put32(b, 20, uint32_t(w));
+    put32(b, 24, uint32_t(h));
+    put32(b, 36, 1);  // faces
+    put32(b, 40, levels);
+    put32(b, 80, 112);                    // level 0 byte offset
+    put32(b, 88, uint32_t(data.size()));  // and length
+    b.insert(b.end(), data.begin(), data.end());
+    return save(name, b);
+}
+
+// DDS: the 128-byte legacy header, with a DX10 header when dxgi != 0, then level 0.
+fs::path dds(const std::string& name, uint32_t dxgi, int w, int h, const std::vector<unsigned char>& data, uint32_t mips = 1) {
+    std::vector<unsigned char> b(dxgi ? 148 : 128, 0);
+    std::memcpy(b.data(), "DDS ", 4);
+    put32(b, 4, 124);
+    put32(b, 12, uint32_t(h));
+    put32(b, 16, uint32_t(w));
+    put32(b, 28, mips);
+    put32(b, 76, 32);
+    if (dxgi) {
+        put32(b, 80, 0x4);
+        std::memcpy(&b[84], "DX10", 4);
+        put32(b, 128, dxgi);
+        put32(b, 132, 3);  // a 2D texture
+        put32(b, 140, 1);
+    } else {  // 32-bit RGBA with alpha, in R, G, B, A byte order
+        put32(b, 80, 0x41);
+        put32(b, 88, 32);
+        put32(b, 92, 0xff);
+        put32(b, 96, 0xff00);
+        put32(b, 100, 0xff0000);
+        put32(b, 104, 0xff000000u);
+    }
+    b.insert(b.end(), data.begin(), data.end());
+    return save(name, b);
+}
+
+TEST(TextureFormats, Ktx2HeaderAndTexels) {
+    const std::vector<unsigned char> rgba = texels(37, 19);
+    fs::path file = ktx2("a.ktx2", 43, 37, 19, rgba);  // R8G8B8A8_SRGB, odd sizes
+    std::string why;
+    std::optional<TextureInfo> info = textureInfo(file, &why);
+    ASSERT_TRUE(info) << why;
+    EXPECT_EQ(info->width, 37);
+    EXPECT_EQ(info->height, 19);
+    EXPECT_EQ(info->channelNames, "rgba");
+    EXPECT_EQ(info->srgb, true);
+    EXPECT_EQ(info->format, "KTX2 R8G8B8A8 sRGB");
+    Texture t = loadTexture(file, true);
+    EXPECT_EQ(t.width, 37);
+    EXPECT_EQ(t.rgba8, rgba);
+    EXPECT_TRUE(t.srgb);
+}
+
+TEST(TextureFormats, DdsUncompressedAndBlockCompressed) {
+    const std::vector<unsigned char> rgba = texels(5, 3);
+    std::string why;
+    fs::path plain = dds("plain.dds", 0, 5, 3, rgba);
+    ASSERT_TRUE(textureInfo(plain, &why)) << why;
+    EXPECT_EQ(loadTexture(plain, false).rgba8, rgba);
+    // BGRA through DX10: the loader swaps red and blue back.
+    fs::path bgra = dds("bgra.dds", 87, 5, 3, rgba);
+    std::vector<unsigned char> swapped = rgba;
+    for (size_t i = 0; i < swapped.size(); i += 4) std::swap(swapped[i], swapped[i + 2]);
+    EXPECT_EQ(loadTexture(bgra, false).rgba8, swapped);
+    // BC7 sRGB, 64 x 30 (blocks of 4 x 4 round up to 16 x 8), with its mips declared: read, not decoded.
+    fs::path bc7 = dds("bc7.dds", 99, 64, 30, std::vector<unsigned char>(16 * 8 * 16), 7);
+    std::optional<TextureInfo> info = textureInfo(bc7, &why);
+    ASSERT_TRUE(info) << why;
+    EXPECT_EQ(info->height, 30);
+    EXPECT_EQ(info->mipLevels, 7);
+    EXPECT_EQ(info->srgb, true);
+    EXPECT_EQ(info->format, "DDS BC7 sRGB");
+    try {
+        loadTexture(bc7, true);
+        ADD_FAILURE() << "BC7 decoded";
+    } catch (const TextureError& e) {
+        EXPECT_NE(std::string(e.what()).find("do not decode BC7 sRGB"), std::string::npos) << e.what();
+    }
+}
+
+TEST(TextureFormats, ExrThroughTinyexr) {
+    std::vector<float> rgba(size_t(33) * 17 * 4);
+    for (size_t i = 0; i < rgba.size(); ++i) rgba[i] = float(i) * 0.37f - 40.0f;  // negative and above 1: HDR
+    const fs::path file = dir() / "h.exr";
+    const char* err = nullptr;
+    ASSERT_EQ(SaveEXR(rgba.data(), 33, 17, 4, 0, file.c_str(), &err), TINYEXR_SUCCESS) << (err ? err : "");
+    std::string why;
+    std::optional<TextureInfo> info = textureInfo(file, &why);
+    ASSERT_TRUE(info) << why;
+    EXPECT_EQ(info->width, 33);
+    EXPECT_EQ(info->height, 17);
+    EXPECT_EQ(info->channels, 4);
+    EXPECT_FALSE(info->srgb.has_value());               // float: the colour space does not apply
+    EXPECT_EQ(loadTexture(file, false).rgba32f, rgba);  // fp32 storage: exact
+}
+
+// What hexc does not read is a located error at the slot's texture, saying why.
+TEST(TextureFormats, UnreadableContainersAreLocatedErrors) {
+    const fs::path basis = ktx2("basis.ktx2", 0, 8, 8, std::vector<unsigned char>(64));
+    const fs::path cube = dds("short.dds", 98, 64, 64, std::vector<unsigned char>(100));  // level 0 needs 4096 bytes
+    for (const auto& [file, why] : {std::pair{basis, "VK_FORMAT_UNDEFINED (Basis Universal) is not supported"},
+                                    std::pair{cube, "the file is truncated (level 0 does not fit)"}}) {
+        ParseResult r = parseMaterial(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": ")" + file.string() + "\"}]}",
+                                      "materials/t.json");
+        ASSERT_EQ(r.diagnostics.size(), 1u);
+        EXPECT_NE(r.diagnostics[0].format().find("materials/t.json:1:67: error[HX121]: /slots/0/texture: cannot read texture"),
+                  std::string::npos)
+            << r.diagnostics[0].format();
+        EXPECT_NE(r.diagnostics[0].format().find(why), std::string::npos) << r.diagnostics[0].format();
+    }
+}
+
+// A two-channel BC5 map has r and g: a scalar slot may read g, not b.
+TEST(TextureFormats, ChannelsFollowTheFormat) {
+    const fs::path bc5 = dds("bc5.dds", 83, 8, 8, std::vector<unsigned char>(4 * 16));
+    auto parse = [&](const char* channel) {
+        return parseMaterial(R"({"name": "m", "slots": [{"name": "a", "kind": "scalar", "channel": ")" + std::string(channel) +
+                                 R"(", "texture": ")" + bc5.string() + "\"}]}",
+                             "materials/t.json");
+    };
+    EXPECT_TRUE(parse("g").material) << formatAll(parse("g").diagnostics);
+    ParseResult b = parse("b");
+    ASSERT_EQ(b.diagnostics.size(), 1u);
+    EXPECT_NE(b.diagnostics[0].format().find("has 2 channels; expected `r` or `g`"), std::string::npos) << b.diagnostics[0].format();
+}
+
+// A container's format says whether it is sRGB; a slot that says otherwise gets a warning, as the engine's
+// upload would either decode what should stay linear or leave sRGB values encoded.
+TEST(TextureFormats, AColourSpaceThatDisagreesWithTheFormatWarns) {
+    const fs::path unorm = ktx2("unorm.ktx2", 37, 4, 4, texels(4, 4)), srgb = ktx2("srgb.ktx2", 43, 4, 4, texels(4, 4));
+    auto diagnose = [](const fs::path& tex, const std::string& kind, const std::string& colorspace) {
+        ParseResult r = parseMaterial(R"({"name": "m", "slots": [{"name": "a", "kind": ")" + kind + R"(", "texture": ")" + tex.string() +
+                                          "\"" + (colorspace.empty() ? "" : R"(, "colorspace": ")" + colorspace + "\"") + "}]}",
+                                      "materials/t.json");
+        EXPECT_TRUE(r.material) << formatAll(r.diagnostics);
+        return formatAll(r.diagnostics);
+    };
+    EXPECT_NE(diagnose(unorm, "color", "")
+                  .find("warning[HX123]: /slots/0/texture: " + unorm.string() + " is KTX2 R8G8B8A8, but the slot's colorspace is \"srgb\""),
+              std::string::npos);
+    EXPECT_EQ(diagnose(unorm, "color", "linear"), "");
+    EXPECT_EQ(diagnose(srgb, "color", ""), "");
+    EXPECT_NE(diagnose(srgb, "scalar", "").find("warning[HX123]"), std::string::npos);
+}
+
+// Each container compiles from the command line; the decodable ones render (the fp64 reference needs no GPU).
+TEST(TextureFormats, CompileAndRenderFromTheCommandLine) {
+    const fs::path k = ktx2("m.ktx2", 37, 16, 16, texels(16, 16));
+    const fs::path d = dds("m.dds", 98, 16, 16, std::vector<unsigned char>(16 * 16));
+    const fs::path e = dir() / "m.exr";
+    const std::vector<float> grey(16 * 16 * 4, 0.5f);
+    ASSERT_EQ(SaveEXR(grey.data(), 16, 16, 4, 1, e.c_str(), nullptr), TINYEXR_SUCCESS);
+    for (const fs::path& tex : {k, d, e}) {
+        const fs::path m = dir() / ("m" + tex.extension().string() + ".json");
+        std::ofstream(m) << R"({"name": "m", "template": "unlit", "slots": [{"name": "albedo", "kind": "color", "texture": ")" +
+                                tex.filename().string() + "\"}]}";
+        const fs::path out = dir() / ("out" + tex.extension().string());
+        fs::remove_all(out);
+        std::string err;
+        ASSERT_EQ(hexc::test::runHexc(m.string() + " -o " + out.string(), &err), 0) << err;
+        std::ifstream manifest(out / "m.manifest.json");
+        EXPECT_EQ(nlohmann::json::parse(manifest)["slots"][0]["size"], nlohmann::json::array({16, 16}));
+        const int render =
+            hexc::test::runHexc("render " + m.string() + " --reference --output albedo --size 8x8 -o " + (out / "r.pfm").string(), &err);
+        EXPECT_EQ(render, tex == d ? 1 : 0) << err;
+        if (tex == d) {
+            EXPECT_NE(err.find("do not decode BC7"), std::string::npos) << err;
+        }
+    }
+}
+
+}  // namespace
