@@ -14,6 +14,7 @@
 #include "hexc/image.h"
 #include "hexc/material.h"
 #include "support.h"
+#include "vk/render.h"
 
 namespace fs = std::filesystem;
 using namespace hexc;
@@ -219,6 +220,29 @@ TEST(TextureFormats, CompileAndRenderFromTheCommandLine) {
             EXPECT_NE(err.find("do not decode BC7"), std::string::npos) << err;
         }
     }
+}
+
+// On the GPU a container renders exactly like a file of the same texels: a KTX2 like the PNG it was made from,
+// an EXR like a PFM of the same floats (same upload, same mips, same sampler).
+TEST(TextureFormats, ContainersRenderOnTheGpuLikeTheFilesTheyHold) {
+    REQUIRE_VULKAN();
+    const Texture png = loadTexture("materials/textures/tiles_albedo.png", true);
+    const fs::path ktx = ktx2("tiles.ktx2", 43, png.width, png.height, png.rgba8);
+    Image floats{19, 13, std::vector<float>(19 * 13 * 4)};
+    for (size_t i = 0; i < floats.rgba.size(); ++i) floats.rgba[i] = i % 4 == 3 ? 1.0f : float((i * 7919) % 1000) / 250.0f;
+    writeImage(floats, dir() / "f.pfm");
+    ASSERT_EQ(SaveEXR(floats.rgba.data(), 19, 13, 4, 0, (dir() / "f.exr").c_str(), nullptr), TINYEXR_SUCCESS);
+    auto render = [&](const fs::path& texture) {
+        ParseResult r = parseMaterial(R"({"name": "m", "template": "unlit", "hextiling": {"tiling": 3},
+            "slots": [{"name": "albedo", "kind": "color", "colorspace": "srgb", "texture": ")" +
+                                          texture.string() + "\"}]}",
+                                      "materials/m.json");
+        EXPECT_TRUE(r.material) << formatAll(r.diagnostics);
+        return vk::render(*hexc::test::runner(&whyNoVulkan), *r.material, vk::RenderOutput::Albedo, "", View{48, 40, {0, 0, 1.3, 0.9}})
+            .rgba;
+    };
+    EXPECT_EQ(render(ktx), render(fs::absolute("materials/textures/tiles_albedo.png")));
+    EXPECT_EQ(render(dir() / "f.exr"), render(dir() / "f.pfm"));
 }
 
 }  // namespace
