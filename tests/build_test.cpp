@@ -179,6 +179,23 @@ TEST(Incremental, AnotherHexcBuildDoesNotTrustTheStamp) {
     EXPECT_NE(err.find("1 compiled, 0 up to date"), std::string::npos) << err;
 }
 
+// --force compiles what the stamps call up to date; -j 1 gives the same bytes as one thread per core.
+TEST(Incremental, ForceAndJobs) {
+    fs::path dir = copyOfMaterials("hexc_force");
+    std::string err;
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + (dir / "a").string(), &err), 0) << err;
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + (dir / "a").string() + " --force", &err), 0) << err;
+    EXPECT_NE(err.find("9 compiled, 0 up to date"), std::string::npos) << err;
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -j 1 -o " + (dir / "b").string(), &err), 0) << err;
+    size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir / "a")) {
+        ++files;
+        EXPECT_EQ(read(e.path()), read(dir / "b" / e.path().filename())) << e.path().filename();
+    }
+    EXPECT_EQ(files, size_t(std::distance(fs::directory_iterator(dir / "b"), fs::directory_iterator())));
+    EXPECT_EQ(runHexc(dir.string() + "/tiles.json -j 0 -o " + (dir / "c").string(), &err), 2);
+}
+
 TEST(Depfile, ListsEveryInputWithMakeEscapes) {
     // A folder name with the characters Make and Ninja treat specially.
     const fs::path dir = tilesFolder("hexc dep$#");

@@ -273,10 +273,19 @@ TEST(Cli, OptionSpellings) {
     EXPECT_EQ(runHexc("materials/rock.json --variant rock.lit materials/rock.json -o " + freshDir("hexc_cli_variant").string(), &err), 1);
     EXPECT_NE(err.find("--variant rock.lit: no scene given"), std::string::npos) << err;
     std::string help = hexc::test::runHexcStdout("--help");
-    for (const char* option :
-         {"--out", "--targets", "--template", "--hlsl-sm", "--glsl-version", "--msl-version", "--bake", "--no-specialize",
-          "--no-shared-lattice", "--depfile", "--variant", "--quiet", "--verbose", "--no-warnings", "--version", "Exit codes"})
+    for (const char* option : {"--out", "--targets", "--template", "--hlsl-sm", "--glsl-version", "--msl-version", "--bake",
+                               "--no-specialize", "--no-shared-lattice", "--depfile", "--variant", "--quiet", "--verbose", "--no-warnings",
+                               "--force", "--jobs", "--version", "Exit codes"})
         EXPECT_NE(help.find(option), std::string::npos) << option;
+}
+
+// --version names the build (the hash the stamps use) and the shader tool chain.
+TEST(Cli, VersionNamesTheBuildAndTheToolChain) {
+    std::string v = hexc::test::runHexcStdout("--version");
+    EXPECT_EQ(v.rfind(std::string("hexc ") + version() + " (build ", 0), 0u) << v;
+    EXPECT_EQ(v.find(") (build"), std::string::npos) << v;
+    for (const char* tool : {"\nglslang 1", "\nSPIRV-Tools v", "\nSPIRV-Cross "}) EXPECT_NE(v.find(tool), std::string::npos) << v;
+    EXPECT_EQ(v.find("SPIRV-Cross unknown"), std::string::npos) << v;
 }
 
 TEST(Cli, MissingMaterialFile) {

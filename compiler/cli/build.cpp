@@ -150,7 +150,8 @@ void compileInParallel(const Arguments& a, const std::vector<Job*>& pending) {
             pending[i]->result = compile(pending[i]->material, a.options);
         }
     };
-    std::vector<std::thread> threads(std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size()));
+    const unsigned cores = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::thread> threads(std::min<size_t>(cores, pending.size()));
     for (auto& t : threads) t = std::thread(worker);
     for (auto& t : threads) t.join();
 }
@@ -160,7 +161,7 @@ bool compileJobs(const Arguments& a, std::vector<Job>& jobs) {
     std::vector<Job*> pending;
     for (Job& j : jobs) {
         j.hash = inputHash(j.material, a.options, j.extraInputs);
-        j.upToDate = upToDate(a.outDir, j.material.name, j.hash);
+        j.upToDate = !a.force && upToDate(a.outDir, j.material.name, j.hash);
         if (!j.upToDate) pending.push_back(&j);
     }
     compileInParallel(a, pending);

@@ -40,6 +40,7 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     ContentHash h;
     h.add(version());
     h.add(buildId());
+    h.add(toolchainVersions());  // also in the executable's bytes, unless a library is ever linked dynamically
     // Every option that changes an output.
     std::string opts;
     for (Target t : options.targets) opts += std::string(toString(t)) + ",";

@@ -1,5 +1,7 @@
 #include "options.h"
 
+#include "incremental.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -98,7 +100,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     app.add_flag("-v,--verbose", a.verbose, "say what was compiled, what was up to date or shared, and why")->excludes("-q");
     app.add_flag_callback(
         "--no-warnings", [&] { a.warnings = false; }, "do not print warnings");
-    app.set_version_flag("--version", std::string("hexc ") + version());
+    app.add_flag("--force", a.force, "compile every material, even those whose stamp says they are up to date");
+    app.add_option("-j,--jobs", a.jobs, "compile N materials at once (default: one per core)")->check(CLI::Range(1u, 256u))->type_name("N");
+    app.set_version_flag("--version",
+                         [] { return std::string("hexc ") + version() + " (build " + buildId() + ")\n" + toolchainVersions(); });
     if (std::optional<int> done = parseWith(app, args)) return done;
     if (materials.empty() || a.outDir.empty()) {
         std::cerr << "hexc: " << (materials.empty() ? "no material or scene given" : "no output folder given: use -o DIR")

@@ -25,6 +25,8 @@ struct Arguments {
     bool quiet = false;                 // -q: no summary; warnings stay
     bool verbose = false;               // -v: what was compiled, skipped, shared, and why
     bool warnings = true;               // --no-warnings turns them off
+    bool force = false;                 // --force: compile even what the stamps say is up to date
+    unsigned jobs = 0;                  // -j: materials compiled at once; 0: one per core
 };
 
 // A command line that parses but does not make sense (render.cpp's checks across options); exit kUsage.

@@ -1,4 +1,7 @@
 // The one place the stages are chained: plan -> codegen -> glslang -> spirv-opt -> SPIRV-Cross -> manifest.
+#include <glslang/build_info.h>
+#include <spirv-tools/libspirv.h>
+
 #include <spirv_cross_error_handling.hpp>
 
 #include <algorithm>
@@ -13,6 +16,12 @@
 namespace hexc {
 
 const char* version() { return HEXC_VERSION; }
+
+std::string toolchainVersions() {
+    return "glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
+           std::to_string(GLSLANG_VERSION_PATCH) + GLSLANG_VERSION_FLAVOR + "\nSPIRV-Tools " + spvSoftwareVersionString() +
+           "\nSPIRV-Cross " + HEXC_SPIRV_CROSS_VERSION;
+}
 
 std::string_view toString(Target target) {
     static const char* names[] = {"spirv", "hlsl", "glsl", "msl"};

@@ -48,4 +48,8 @@ CompileResult compile(const Material& material, const CompileOptions& options = 
 
 const char* version();
 
+// The shader tool chain hexc is built with, one per line: "glslang 12.0.0", "SPIRV-Tools v2022.4 ...",
+// "SPIRV-Cross 1.3.239.0+dfsg1-1" (the Debian package's version; SPIRV-Cross has no version of its own).
+std::string toolchainVersions();
+
 }  // namespace hexc
