@@ -196,6 +196,26 @@ TEST(Incremental, ForceAndJobs) {
     EXPECT_EQ(runHexc(dir.string() + "/tiles.json -j 0 -o " + (dir / "c").string(), &err), 2);
 }
 
+// Files an earlier build wrote and this one does not are removed, unless another stamp still lists them.
+TEST(Incremental, StaleOutputsAreRemoved) {
+    fs::path dir = copyOfMaterials("hexc_stale_outputs"), out = dir / "out";
+    std::string err;
+    ASSERT_EQ(runHexc(dir.string() + "/tiles.json -o " + out.string(), &err), 0) << err;
+    ASSERT_EQ(runHexc(dir.string() + "/tiles.json --targets spirv -o " + out.string(), &err), 0) << err;
+    EXPECT_TRUE(fs::exists(out / "tiles.frag.spv"));
+    for (const char* gone : {"tiles.frag.hlsl", "tiles.frag.glsl", "tiles.frag.metal"}) EXPECT_FALSE(fs::exists(out / gone)) << gone;
+    // A scene's depth shader is shared by three variants: rebuilding one of them for SPIR-V alone keeps it.
+    ASSERT_EQ(runHexc(dir.string() + "/scenes/forest.json -o " + out.string(), &err), 0) << err;
+    const std::string depth = nlohmann::json::parse(read(out / "tiles.depth.manifest.json"))["targets"]["hlsl"]["file"];
+    const std::string main = nlohmann::json::parse(read(out / "rock.main.manifest.json"))["targets"]["hlsl"]["file"];
+    ASSERT_EQ(
+        runHexc(dir.string() + "/scenes/forest.json --targets spirv --variant rock.depth --variant rock.main -o " + out.string(), &err), 0)
+        << err;
+    EXPECT_TRUE(fs::exists(out / depth)) << "still listed by tiles.depth and rock_normal.depth";
+    EXPECT_FALSE(fs::exists(out / main)) << "listed by no stamp any more";
+    EXPECT_TRUE(fs::exists(out / "tiles.frag.spv")) << "another material's output";
+}
+
 TEST(Depfile, ListsEveryInputWithMakeEscapes) {
     // A folder name with the characters Make and Ninja treat specially.
     const fs::path dir = tilesFolder("hexc dep$#");

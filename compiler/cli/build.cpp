@@ -248,15 +248,20 @@ void makeOutputFolder(const std::filesystem::path& dir) {
 }
 
 // Writes every output, then the stamps (a crash before them leaves the jobs to be compiled again next time),
-// then the depfile. Returns the bytes written; throws when something cannot be written.
+// removes what the replaced stamps listed and none lists now, then writes the depfile. Returns the bytes
+// written; throws when something cannot be written.
 size_t writeOutputs(const Arguments& a, const Outputs& out, const std::string& depfile) {
     size_t bytes = 0;
     makeOutputFolder(a.outDir);
+    std::set<std::string> before;  // what the stamps about to be replaced listed
+    for (const auto& [name, text] : out.stamps)
+        for (std::string& o : stampedOutputs(a.outDir, name)) before.insert(std::move(o));
     for (const OutputFile& f : out.files) {
         writeAtomically(a.outDir, f.name, f.contents);
         bytes += f.contents.size();
     }
     for (const auto& [name, text] : out.stamps) writeAtomically(a.outDir, stampName(name), text);
+    removeStaleOutputs(a.outDir, before);
     if (!a.depfile.empty())
         writeAtomically(a.depfile.parent_path().empty() ? "." : a.depfile.parent_path(), a.depfile.filename().string(), depfile);
     return bytes;

@@ -71,13 +71,42 @@ std::string stampText(const std::string& hash, const std::vector<std::string>& o
     return text;
 }
 
+namespace {
+
+// A stamp: its hash line, then one output name per line.
+std::vector<std::string> stampLines(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+}  // namespace
+
 bool upToDate(const std::filesystem::path& dir, const std::string& name, const std::string& hash) {
-    std::ifstream in(dir / stampName(name));
-    std::string line;
-    if (!std::getline(in, line) || line != hash) return false;
-    while (std::getline(in, line))
-        if (!std::filesystem::exists(dir / line)) return false;
-    return true;
+    std::vector<std::string> lines = stampLines(dir / stampName(name));
+    if (lines.empty() || lines[0] != hash) return false;
+    return std::all_of(lines.begin() + 1, lines.end(), [&](const std::string& o) { return std::filesystem::exists(dir / o); });
+}
+
+std::vector<std::string> stampedOutputs(const std::filesystem::path& dir, const std::string& name) {
+    std::vector<std::string> lines = stampLines(dir / stampName(name));
+    if (!lines.empty()) lines.erase(lines.begin());
+    return lines;
+}
+
+void removeStaleOutputs(const std::filesystem::path& dir, const std::set<std::string>& before) {
+    std::set<std::string> live;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        const std::string file = entry.path().filename().string();
+        if (!file.starts_with(".") || !file.ends_with(".hexc-stamp")) continue;
+        std::vector<std::string> lines = stampLines(entry.path());
+        if (!lines.empty()) live.insert(lines.begin() + 1, lines.end());
+    }
+    for (const std::string& name : before)
+        if (!live.contains(name) && name.find('/') == std::string::npos && std::filesystem::is_regular_file(dir / name, ec))
+            std::filesystem::remove(dir / name, ec);
 }
 
 }  // namespace hexc::cli

@@ -4,6 +4,7 @@
 // (all a compile reads of it), the template's text, the compile options, and the hexc version and build.
 #include <cstdint>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
 
 // The stamp `dir/.<name>.hexc-stamp` records the hash and the outputs of the last successful compile.
 bool upToDate(const std::filesystem::path& dir, const std::string& name, const std::string& hash);
+// The outputs the stamp of `name` in `dir` lists; empty when there is none.
+std::vector<std::string> stampedOutputs(const std::filesystem::path& dir, const std::string& name);
+// Removes the files in `before` that no stamp in `dir` lists any more: what an earlier build wrote and this one
+// does not (another --targets, a scene shader whose code changed). Only plain names from hexc's stamps are touched.
+void removeStaleOutputs(const std::filesystem::path& dir, const std::set<std::string>& before);
 std::string stampText(const std::string& hash, const std::vector<std::string>& outputs);
 std::string stampName(const std::string& name);
 
