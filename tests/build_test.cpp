@@ -257,6 +257,50 @@ TEST(Manifest, NamesTheTemplateFileAsTheMaterialWroteIt) {
     EXPECT_EQ(manifest, read(relOut / "tiles.manifest.json"));
 }
 
+// The inputs of a depfile's gcc -MP rules (one "input:" line each), unescaped.
+std::vector<std::string> depfileInputs(const std::string& text) {
+    std::vector<std::string> inputs;
+    std::istringstream in(text.substr(text.find('\n')));
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty()) continue;
+        std::string path;
+        for (size_t i = 0; i + 1 < line.size(); ++i) {  // the last character is the rule's ':'
+            if ((line[i] == '\\' && (line[i + 1] == ' ' || line[i + 1] == '#')) || (line[i] == '$' && line[i + 1] == '$')) ++i;
+            path += line[i];
+        }
+        inputs.push_back(path);
+    }
+    return inputs;
+}
+
+// A hermetic action: hexc given only the files its depfile names (as a sandbox or a remote executor gives it)
+// writes byte-identical outputs. Built-in templates are part of hexc; a user template is a named input.
+TEST(Depfile, TheFilesItNamesAreEverythingACompileReads) {
+    const fs::path src = copyOfMaterials("hexc_hermetic_src"), dst = fs::temp_directory_path() / "hexc_hermetic_dst";
+    fs::remove_all(dst);
+    fs::copy("templates/builtin/unlit.glsl", src / "mine.glsl");
+    nlohmann::json custom = nlohmann::json::parse(read(src / "tiles.json"));
+    custom["name"] = "custom";
+    custom["template"] = "mine.glsl";
+    std::ofstream(src / "custom.json") << custom.dump(2);
+    const std::string build = "scenes/forest.json rock_blend.json custom.json -o out --depfile out/all.d -q";
+    std::string err;
+    ASSERT_EQ(runHexc(build, &err, "cd '" + src.string() + "' &&"), 0) << err;
+    const std::vector<std::string> inputs = depfileInputs(read(src / "out" / "all.d"));
+    EXPECT_NE(std::find(inputs.begin(), inputs.end(), "mine.glsl"), inputs.end());
+    for (const std::string& in : inputs) {
+        fs::create_directories((dst / in).parent_path());
+        fs::copy_file(src / in, dst / in, fs::copy_options::overwrite_existing);
+    }
+    ASSERT_EQ(runHexc(build, &err, "cd '" + dst.string() + "' &&"), 0) << err;
+    size_t files = 0;
+    for (const auto& e : fs::directory_iterator(src / "out")) {
+        ++files;
+        EXPECT_EQ(read(e.path()), read(dst / "out" / e.path().filename())) << e.path().filename();
+    }
+    EXPECT_GT(files, 40u);
+}
+
 // No depfile syntax holds a line break: such a path is an error, and nothing is written.
 TEST(Depfile, APathWithALineBreakIsRefusedAndNothingIsWritten) {
     const fs::path dir = tilesFolder("hexc_dep\nline");
