@@ -175,6 +175,7 @@ struct Outputs {
     std::map<std::string, std::string> stamps;  // job name -> stamp text
     size_t deduplicated = 0;                    // scene variants that reuse another variant's shader files
     std::map<std::string, std::string> shares;  // such a variant -> the stem of the files it reuses (for -v)
+    std::vector<std::string> settled;           // outputs of up-to-date jobs: their times are refreshed (see below)
 };
 
 // A manifest whose target files are renamed from `from` to `to` (the same suffixes).
@@ -202,11 +203,14 @@ void addVariantFiles(const Job& j, std::set<std::string>& sceneShaders, Outputs&
     }
 }
 
-Outputs collectOutputs(const Inputs& in) {
+Outputs collectOutputs(const Arguments& a, const Inputs& in) {
     Outputs out;
     std::set<std::string> sceneShaders;
     for (const Job& j : in.jobs) {
-        if (j.upToDate) continue;
+        if (j.upToDate) {
+            for (std::string& o : stampedOutputs(a.outDir, j.material.name)) out.settled.push_back(std::move(o));
+            continue;
+        }
         std::vector<std::string> written;
         if (!j.scene.empty()) {
             addVariantFiles(j, sceneShaders, out, written);
@@ -262,6 +266,11 @@ size_t writeOutputs(const Arguments& a, const Outputs& out, const std::string& d
     }
     for (const auto& [name, text] : out.stamps) writeAtomically(a.outDir, stampName(name), text);
     removeStaleOutputs(a.outDir, before);
+    // A build system ran hexc because an input looks newer than these outputs (a touched texture): with their
+    // times refreshed, Make sees them up to date next time instead of running hexc on every build.
+    std::error_code ec;
+    for (const std::string& o : out.settled)
+        std::filesystem::last_write_time(a.outDir / o, std::filesystem::file_time_type::clock::now(), ec);
     if (!a.depfile.empty())
         writeAtomically(a.depfile.parent_path().empty() ? "." : a.depfile.parent_path(), a.depfile.filename().string(), depfile);
     return bytes;
@@ -310,7 +319,7 @@ int buildCommand(const Arguments& a) {
         std::cerr << "hexc: nothing written\n";
         return kInvalidInput;
     }
-    Outputs out = collectOutputs(in);
+    Outputs out = collectOutputs(a, in);
     std::string depfile;
     try {
         if (!a.depfile.empty()) depfile = depfileFor(a, in.jobs);

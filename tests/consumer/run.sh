@@ -50,6 +50,20 @@ step="deleted moss.frag.hlsl" expect moss
 cp materials/textures/rock_height.png "$src/materials/textures/moss.png"
 step="moss.png replaced" expect moss
 
+# Touched, not changed: hexc may run once (its stamp says the shaders stand) and must leave the build settled.
+touch "$src/materials/textures/moss.png"
+cmake --build "$work/bin" > "$work/log" 2>&1 || { cat "$work/log"; fail "build after touching moss.png failed"; }
+step="moss.png touched, built again" expect
+
+# A renamed texture: the material names the new file; the old one is gone (no "No rule to make target").
+mv "$src/materials/textures/moss.png" "$src/materials/textures/moss2.png"
+material moss moss2.png 3
+step="moss.png renamed" expect moss
+# Ninja settles at once. CMake 3.25's Makefile generator merges each depfile into its own dependency list
+# (compiler_depend.make) and keeps the old texture there, so Make re-runs the rule on later builds; hexc then
+# finds its stamp up to date and compiles nothing (docs/build-integration.md says so).
+if [ "$generator" = Ninja ]; then step="after the rename" expect; fi
+
 "$work/bin/compile_one" "$src/materials/stone.json" > "$work/compiled" || fail "compile_one failed"
 grep -qx stone.frag.spv "$work/compiled" || fail "compile_one (hexc::compiler) did not compile stone: $(cat "$work/compiled")"
 echo "ok: hexc::compiler links and compiles"
