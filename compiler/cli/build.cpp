@@ -24,7 +24,6 @@ namespace {
 struct Job {
     Material material;
     std::vector<std::filesystem::path> extraInputs = {};  // the scene file, for variants
-    std::string scene = {};                               // set for scene variants (their shaders are deduplicated)
     bool passReadsFewer = false;  // a scene pass with its own template and no slot list: leaving slots out is its purpose
     std::string hash = {};
     CompileResult result = {};
@@ -59,11 +58,17 @@ bool printDiagnostics(const Diagnostics& diags, const Arguments& a, bool passRea
     return !hasErrors(diags);
 }
 
-// A hash of a shader's target sources: variants with equal hashes share one set of files.
-std::string shaderHash(const CompileResult& r) {
+// A hash of a variant's shader code (its target files, not its manifest, which holds its own parameter values):
+// variants with equal hashes have byte-identical shaders. An up-to-date variant's files are read back.
+std::string shaderHash(const std::filesystem::path& dir, const Job& j) {
     ContentHash h;
-    for (const OutputFile& f : r.files)
-        if (!f.name.ends_with(".manifest.json")) h.add(f.contents);
+    if (!j.upToDate) {
+        for (const OutputFile& f : j.result.files)
+            if (!f.name.ends_with(".manifest.json")) h.add(f.contents);
+        return h.hex(12);
+    }
+    for (const std::string& name : stampedOutputs(dir, j.material.name))
+        if (!name.ends_with(".manifest.json")) h.add(readFile(dir / name).value_or(""));
     return h.hex(12);
 }
 
@@ -87,7 +92,7 @@ void addScene(const std::filesystem::path& path, std::string_view text, const Ar
         summary.variants.push_back(v.name);
         const ScenePass& pass = *std::find_if(parsed.scene->passes.begin(), parsed.scene->passes.end(),
                                               [&](const ScenePass& p) { return p.name == v.passName; });
-        in.jobs.push_back({std::move(v.material), {path}, parsed.scene->name, !pass.templateName.empty() && !pass.slots});
+        in.jobs.push_back({std::move(v.material), {path}, !pass.templateName.empty() && !pass.slots});
     }
     in.scenes.push_back(std::move(summary));
 }
@@ -173,59 +178,41 @@ bool compileJobs(const Arguments& a, std::vector<Job>& jobs) {
 struct Outputs {
     std::vector<OutputFile> files;
     std::map<std::string, std::string> stamps;  // job name -> stamp text
-    size_t deduplicated = 0;                    // scene variants that reuse another variant's shader files
-    std::map<std::string, std::string> shares;  // such a variant -> the stem of the files it reuses (for -v)
+    size_t deduplicated = 0;                    // scene variants whose shader code equals an earlier variant's
+    std::map<std::string, std::string> shares;  // such a variant -> that earlier variant (for -v)
     std::vector<std::string> settled;           // outputs of up-to-date jobs: their times are refreshed (see below)
 };
 
-// A manifest whose target files are renamed from `from` to `to` (the same suffixes).
-std::string renamedManifest(const std::string& contents, const std::string& from, const std::string& to) {
-    auto manifest = nlohmann::json::parse(contents);
-    for (auto& [target, t] : manifest["targets"].items()) t["file"] = to + t["file"].get<std::string>().substr(from.size());
-    return manifest.dump(2) + "\n";
-}
-
-// A scene variant's files: shaders named by the hash of their code, written once per scene however many
-// variants share them; each variant keeps its own manifest (its parameter values differ), pointing at them.
-void addVariantFiles(const Job& j, std::set<std::string>& sceneShaders, Outputs& out, std::vector<std::string>& written) {
-    std::string stem = j.scene + "." + shaderHash(j.result);
-    bool fresh = sceneShaders.insert(stem).second;
-    out.deduplicated += fresh ? 0 : 1;
-    if (!fresh) out.shares[j.material.name] = stem;
-    for (OutputFile f : j.result.files) {
-        bool manifest = f.name.ends_with(".manifest.json");
-        if (manifest)
-            f.contents = renamedManifest(f.contents, j.material.name, stem);
-        else
-            f.name = stem + f.name.substr(j.material.name.size());
-        written.push_back(f.name);
-        if (manifest || fresh) out.files.push_back(std::move(f));
+// A scene's index: each variant's manifest and shader hash. Variants with one hash have identical code, so an
+// engine may build one pipeline for them; counted in `out` for the summary and -v.
+void addSceneIndex(const Arguments& a, const SceneSummary& s, const std::vector<Job>& jobs, Outputs& out) {
+    nlohmann::json index = {{"scene", s.scene.name}, {"variants", nlohmann::json::object()}};
+    std::map<std::string, std::string> firstWith;  // shader hash -> the first variant with it
+    for (const std::string& v : s.variants) {
+        const Job& j = *std::find_if(jobs.begin(), jobs.end(), [&](const Job& job) { return job.material.name == v; });
+        const std::string hash = shaderHash(a.outDir, j);
+        index["variants"][v] = {{"manifest", v + ".manifest.json"}, {"shader", hash}};
+        if (auto [first, fresh] = firstWith.emplace(hash, v); !fresh) {
+            ++out.deduplicated;
+            out.shares[v] = first->second;
+        }
     }
+    out.files.push_back({s.scene.name + ".scene.json", index.dump(2) + "\n"});
 }
 
 Outputs collectOutputs(const Arguments& a, const Inputs& in) {
     Outputs out;
-    std::set<std::string> sceneShaders;
     for (const Job& j : in.jobs) {
         if (j.upToDate) {
             for (std::string& o : stampedOutputs(a.outDir, j.material.name)) out.settled.push_back(std::move(o));
             continue;
         }
         std::vector<std::string> written;
-        if (!j.scene.empty()) {
-            addVariantFiles(j, sceneShaders, out, written);
-        } else {
-            for (const OutputFile& f : j.result.files) written.push_back(f.name);
-            out.files.insert(out.files.end(), j.result.files.begin(), j.result.files.end());
-        }
+        for (const OutputFile& f : j.result.files) written.push_back(f.name);
+        out.files.insert(out.files.end(), j.result.files.begin(), j.result.files.end());
         out.stamps[j.material.name] = stampText(j.hash, written);
     }
-    // Each scene's index of its variants and their manifests.
-    for (const SceneSummary& s : in.scenes) {
-        nlohmann::json index = {{"scene", s.scene.name}, {"variants", nlohmann::json::object()}};
-        for (const std::string& v : s.variants) index["variants"][v] = {{"manifest", v + ".manifest.json"}};
-        out.files.push_back({s.scene.name + ".scene.json", index.dump(2) + "\n"});
-    }
+    for (const SceneSummary& s : in.scenes) addSceneIndex(a, s, in.jobs, out);
     return out;
 }
 
@@ -286,7 +273,7 @@ void printJobs(const Inputs& in, const Outputs& out) {
         }
         std::cerr << "compiled (no stamp from an earlier build matches its inputs, options and hexc)";
         if (auto s = out.shares.find(j.material.name); s != out.shares.end())
-            std::cerr << "; its shaders equal " << s->second << ".*, written once for the scene";
+            std::cerr << "; its shader code is identical to " << s->second << "'s (one `shader` hash in the scene index)";
         std::cerr << "\n";
     }
 }
@@ -299,7 +286,7 @@ void printSummary(const Arguments& a, const Inputs& in, const Outputs& out, size
         std::cerr << "hexc: scene " << s.scene.name << ": " << s.scene.materials.size() * s.scene.passes.size() << " variants possible, "
                   << s.variants.size() << " used\n";
     std::cerr << "hexc: " << in.jobs.size() - upToDate << " compiled, " << upToDate << " up to date";
-    if (!in.scenes.empty()) std::cerr << ", " << out.deduplicated << " scene shaders deduplicated";
+    if (!in.scenes.empty()) std::cerr << ", " << out.deduplicated << " scene variants share another's code";
     std::cerr << "; wrote " << out.files.size() << (out.files.size() == 1 ? " file (" : " files (") << bytes << " bytes) to "
               << a.outDir.string() << "\n";
 }
