@@ -151,8 +151,17 @@ TEST(TextureFormats, ExrThroughTinyexr) {
 TEST(TextureFormats, UnreadableContainersAreLocatedErrors) {
     const fs::path basis = ktx2("basis.ktx2", 0, 8, 8, std::vector<unsigned char>(64));
     const fs::path cube = dds("short.dds", 98, 64, 64, std::vector<unsigned char>(100));  // level 0 needs 4096 bytes
+    // A level offset near 2^64: offset + size would wrap around to a small number.
+    const fs::path wrap = ktx2("wrap.ktx2", 37, 65536, 65536, std::vector<unsigned char>(64));
+    {
+        std::fstream f(wrap, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(80);
+        const unsigned char offset[8] = {0, 0, 0, 0, 0xfc, 0xff, 0xff, 0xff};  // 2^64 - 2^34, and level 0 is 2^34 bytes
+        f.write(reinterpret_cast<const char*>(offset), 8);
+    }
     for (const auto& [file, why] : {std::pair{basis, "VK_FORMAT_UNDEFINED (Basis Universal) is not supported"},
-                                    std::pair{cube, "the file is truncated (level 0 does not fit)"}}) {
+                                    std::pair{cube, "the file is truncated (level 0 does not fit)"},
+                                    std::pair{wrap, "the file is truncated (level 0 does not fit)"}}) {
         ParseResult r = parseMaterial(R"({"name": "m", "slots": [{"name": "a", "kind": "color", "texture": ")" + file.string() + "\"}]}",
                                       "materials/t.json");
         ASSERT_EQ(r.diagnostics.size(), 1u);

@@ -183,7 +183,8 @@ Header header(Kind kind, const std::filesystem::path& file) {
     const Format& f = *h.format;
     const uint64_t bytes = uint64_t((h.width + f.block - 1) / f.block) * uint64_t((h.height + f.block - 1) / f.block) * f.blockBytes;
     std::error_code ec;
-    if (h.dataOffset + bytes > std::filesystem::file_size(file, ec) || ec) h.problem = "the file is truncated (level 0 does not fit)";
+    const uint64_t size = std::filesystem::file_size(file, ec);
+    if (ec || h.dataOffset > size || bytes > size - h.dataOffset) h.problem = "the file is truncated (level 0 does not fit)";
     return h;
 }
 
