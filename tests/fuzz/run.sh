@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer target for SECONDS (default 60) from a build configured with clang and -DHEXC_FUZZ=ON:
 #   tests/fuzz/run.sh build-asan 60
-# Seeds: the example, invalid and scene materials (parse, compile) and the built-in templates (template), plus
-# the corpus each target grew in earlier runs (BUILD/fuzz-corpus/TARGET). A crash stops the run with the
+# Seeds: the example, invalid and scene materials (parse, compile), the built-in templates (template) and the bare
+# KTX2 and DDS magic (texture), plus the
+# corpus each target grew in earlier runs (BUILD/fuzz-corpus/TARGET). A crash stops the run with the
 # input saved as BUILD/fuzz-artifacts/TARGET/crash-*; add it to tests/fuzz/regressions/TARGET/ once fixed.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:?usage: tests/fuzz/run.sh BUILD_DIR [SECONDS]}
 seconds=${2:-60}
-for target in parse compile template; do
+for target in parse compile template texture; do
   corpus=$build/fuzz-corpus/$target seeds=$build/fuzz-seeds/$target artifacts=$build/fuzz-artifacts/$target
   mkdir -p "$corpus" "$seeds" "$artifacts"
   if [ "$target" = template ]; then
     cp templates/builtin/*.glsl "$seeds"/
+  elif [ "$target" = texture ]; then
+    printf '\001' > "$seeds/ktx2" && printf '\000' > "$seeds/dds"  # the container's magic is added by the target
   else
     cp materials/*.json materials/invalid/*.json materials/scenes/*.json "$seeds"/
   fi
