@@ -182,6 +182,31 @@ std::string unlitWith(const std::string& defines, const std::string& use) {
     return text;
 }
 
+// Lines that once overflowed the stack in std::regex (it recursed per character): 30 KB of blanks after #version
+// and after #include <hexc> compile; a 100 KB #error message is a located error.
+TEST_F(Hostile, LongTemplateLinesAreLinear) {
+    std::ifstream in("templates/builtin/unlit.glsl");
+    const std::string unlit(std::istreambuf_iterator<char>(in), {});
+    auto after = [&](const std::string& line, const std::string& extra) {
+        std::string text = unlit;
+        text.insert(text.find(line) + line.size(), extra);
+        return text;
+    };
+    fs::path m = write("m.json", material());
+    for (const auto& [name, text] : {std::pair{"version.glsl", after("#version 450", std::string(30000, ' '))},
+                                     std::pair{"include.glsl", after("#include <hexc>", std::string(30000, '\t'))}}) {
+        Outcome o = runBounded(m.string() + " --template " + write(name, text).string() + out());
+        EXPECT_EQ(o.exit, 0) << name << ": " << o.err;
+    }
+    fs::remove_all(dir_ / "out");
+    fs::create_directories(dir_ / "out");
+    const fs::path error = write("error.glsl", after("#include <hexc>", "\n#error " + std::string(100000, 'x')));
+    Outcome o = runBounded(m.string() + " --template " + error.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find(error.string() + ":7:0: error[HX205]: '#error' : xxx"), std::string::npos) << o.err.substr(0, 300);
+    expectNothingWritten();
+}
+
 TEST_F(Hostile, MacroBombsInATemplateAreRefusedBeforePreprocessing) {
     // 2^40 tokens from 41 chained lines, and from one line of nested calls; glslang has no bound of its own.
     std::string chain = "#define M0 1.0\n";
