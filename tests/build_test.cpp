@@ -239,8 +239,10 @@ TEST(Depfile, ListsEveryInputWithMakeEscapes) {
     };
     const std::string material = esc((dir / "tiles.json").string()), texture = esc((dir / "textures" / "tiles_albedo.png").string());
     // The rule, then an empty rule per input (gcc -MP), so that deleting an input re-runs hexc instead of stopping Make.
-    EXPECT_EQ(read(out / "tiles.d"), esc((out / "tiles.manifest.json").string()) + ": " + material + " " + texture + "\n\n" + material +
-                                         ":\n\n" + texture + ":\n");
+    // Every output is a target: the manifest and the four shaders.
+    std::string outputs = esc((out / "tiles.manifest.json").string());
+    for (const char* ext : {"spv", "hlsl", "glsl", "metal"}) outputs += " " + esc((out / ("tiles.frag." + std::string(ext))).string());
+    EXPECT_EQ(read(out / "tiles.d"), outputs + ": " + material + " " + texture + "\n\n" + material + ":\n\n" + texture + ":\n");
 }
 
 // The manifest names a material's template file as the material wrote it: compiling the same material from
@@ -303,6 +305,28 @@ TEST(Depfile, TheFilesItNamesAreEverythingACompileReads) {
         EXPECT_EQ(read(e.path()), read(dst / "out" / e.path().filename())) << e.path().filename();
     }
     EXPECT_GT(files, 40u);
+}
+
+// The Ninja rule of docs/scenes.md, with this build's hexc: a no-op rebuild does nothing, a deleted shader is
+// built again.
+TEST(Depfile, TheNinjaRuleInTheDocsRebuildsWhatIsMissing) {
+    const fs::path dir = copyOfMaterials("hexc_ninja");
+    std::ofstream(dir / "build.ninja")
+        << "rule hexc\n  command = " << HEXC_EXE
+        << " $in -o shaders --depfile $depfile -q\n  depfile = $depfile\n  deps = gcc\n"
+           "build shaders/rock.manifest.json shaders/rock.frag.spv shaders/rock.frag.hlsl shaders/rock.frag.glsl $\n"
+           "      shaders/rock.frag.metal: hexc rock.json\n  depfile = shaders/rock.d\n";
+    auto ninja = [&] {
+        const fs::path log = dir / "ninja.log";
+        EXPECT_EQ(std::system(("ninja -C '" + dir.string() + "' > '" + log.string() + "' 2>&1").c_str()), 0) << read(log);
+        return read(log);
+    };
+    EXPECT_NE(ninja().find("hexc rock.json"), std::string::npos);
+    EXPECT_NE(ninja().find("no work to do"), std::string::npos);
+    fs::remove(dir / "shaders" / "rock.frag.hlsl");
+    EXPECT_NE(ninja().find("hexc rock.json"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir / "shaders" / "rock.frag.hlsl"));
+    EXPECT_NE(ninja().find("no work to do"), std::string::npos);
 }
 
 // No depfile syntax holds a line break: such a path is an error, and nothing is written.

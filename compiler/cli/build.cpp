@@ -216,11 +216,15 @@ Outputs collectOutputs(const Arguments& a, const Inputs& in) {
     return out;
 }
 
-std::string depfileFor(const Arguments& a, const std::vector<Job>& jobs) {
+// Every output as a target (the manifests, the shaders of each --targets, the scene indexes) and every file read.
+std::string depfileFor(const Arguments& a, const Inputs& in) {
     std::vector<std::filesystem::path> outs, ins;
     std::set<std::filesystem::path> seenIn;
-    for (const Job& j : jobs) {
+    const std::set<Target> targets(a.options.targets.begin(), a.options.targets.end());
+    for (const SceneSummary& s : in.scenes) outs.push_back(a.outDir / (s.scene.name + ".scene.json"));
+    for (const Job& j : in.jobs) {
         outs.push_back(a.outDir / (j.material.name + ".manifest.json"));
+        for (Target t : targets) outs.push_back(a.outDir / shaderFileName(j.material.name, t));
         std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
         files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
         for (const auto& f : files)
@@ -309,7 +313,7 @@ int buildCommand(const Arguments& a) {
     Outputs out = collectOutputs(a, in);
     std::string depfile;
     try {
-        if (!a.depfile.empty()) depfile = depfileFor(a, in.jobs);
+        if (!a.depfile.empty()) depfile = depfileFor(a, in);
     } catch (const std::invalid_argument& e) {
         std::cerr << "hexc: error: " << e.what() << "\nhexc: nothing written\n";
         return kInvalidInput;

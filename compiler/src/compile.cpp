@@ -23,6 +23,11 @@ std::string toolchainVersions() {
            "\nSPIRV-Cross " + HEXC_SPIRV_CROSS_VERSION;
 }
 
+std::string shaderFileName(std::string_view material, Target target) {
+    static const char* const extensions[] = {"spv", "hlsl", "glsl", "metal"};
+    return std::string(material) + ".frag." + extensions[int(target)];
+}
+
 std::string_view toString(Target target) {
     static const char* names[] = {"spirv", "hlsl", "glsl", "msl"};
     return names[int(target)];
@@ -56,26 +61,25 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     std::sort(targets.begin(), targets.end());
     targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
     nlohmann::json described = nlohmann::json::object();
-    const std::string stem = material.name + ".frag.";
     for (Target t : targets) {
         TargetOutput out;
         OutputFile file;
         switch (t) {
             case Target::Spirv:
                 out = describeSpirv(result.spirv, plan);
-                file = {stem + "spv", spirvBytes(result.spirv)};
+                file = {shaderFileName(material.name, Target::Spirv), spirvBytes(result.spirv)};
                 break;
             case Target::Hlsl:
                 out = emitHlsl(result.spirv, plan, options);
-                file = {stem + "hlsl", out.source};
+                file = {shaderFileName(material.name, Target::Hlsl), out.source};
                 break;
             case Target::Glsl:
                 out = emitGlsl(result.spirv, plan, options);
-                file = {stem + "glsl", out.source};
+                file = {shaderFileName(material.name, Target::Glsl), out.source};
                 break;
             case Target::Msl:
                 out = emitMsl(result.spirv, plan, options);
-                file = {stem + "metal", out.source};
+                file = {shaderFileName(material.name, Target::Msl), out.source};
                 break;
         }
         out.target["file"] = file.name;

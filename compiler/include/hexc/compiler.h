@@ -52,4 +52,7 @@ const char* version();
 // "SPIRV-Cross 1.3.239.0+dfsg1-1" (the Debian package's version; SPIRV-Cross has no version of its own).
 std::string toolchainVersions();
 
+// The file a material's shader for `target` is written to: "<material>.frag.{spv,hlsl,glsl,metal}".
+std::string shaderFileName(std::string_view material, Target target);
+
 }  // namespace hexc
