@@ -233,6 +233,43 @@ int renderCommand(const std::vector<std::string>& args) {
     });
 }
 
+// The preview sheet: plain tiling, hex tiling and the hex weights (columns) at two distances (rows), labelled.
+Image previewSheet(vk::Runner& runner, const Material& material, int cell, Progress& progress) {
+    Material plain = material;
+    for (Slot& s : plain.slots) s.hex.enabled = false;
+    struct Column {
+        const char* label;
+        const Material* material;
+        vk::RenderOutput output;
+    };
+    const Column columns[] = {{"plain", &plain, vk::RenderOutput::Shaded},
+                              {"hex", &material, vk::RenderOutput::Shaded},
+                              {"weights", &material, vk::RenderOutput::Weights}};
+    struct Row {
+        const char* label;
+        double extent;
+    };
+    const Row rows[] = {{"uv 0..0.5", 0.5}, {"uv 0..4", 4.0}};
+    const int band = 28, scale = 2;
+    Image sheet;
+    sheet.width = 3 * cell;
+    sheet.height = 2 * (cell + band);
+    sheet.rgba.assign(size_t(sheet.width) * sheet.height * 4, 0.12f);  // dark grey bands behind the labels
+    for (size_t i = 3; i < sheet.rgba.size(); i += 4) sheet.rgba[i] = 1.0f;
+    for (int r = 0; r < 2; ++r) {
+        for (int c = 0; c < 3; ++c) {
+            progress.step(std::string("rendering ") + columns[c].label + ", " + rows[r].label);
+            View view{cell, cell, {0, 0, rows[r].extent, rows[r].extent}};
+            Image img = vk::render(runner, *columns[c].material, columns[c].output, "", view);
+            int y0 = r * (cell + band) + band;
+            for (int y = 0; y < cell; ++y)
+                for (int x = 0; x < cell; ++x) std::copy_n(img.at(x, y), 4, sheet.at(c * cell + x, y0 + y));
+            drawLabel(sheet, c * cell + 6, r * (cell + band) + 6, std::string(columns[c].label) + ", " + rows[r].label, scale);
+        }
+    }
+    return sheet;
+}
+
 int previewCommand(const std::vector<std::string>& args) {
     return guarded([&] {
         std::string materialPath, out;
@@ -252,39 +289,8 @@ int previewCommand(const std::vector<std::string>& args) {
         auto runner = makeRunner();
         if (!runner) return int(kNoVulkan);
 
-        Material plain = *material;
-        for (Slot& s : plain.slots) s.hex.enabled = false;
-        struct Column {
-            const char* label;
-            const Material* material;
-            vk::RenderOutput output;
-        };
-        const Column columns[] = {{"plain", &plain, vk::RenderOutput::Shaded},
-                                  {"hex", &*material, vk::RenderOutput::Shaded},
-                                  {"weights", &*material, vk::RenderOutput::Weights}};
-        struct Row {
-            const char* label;
-            double extent;
-        };
-        const Row rows[] = {{"uv 0..0.5", 0.5}, {"uv 0..4", 4.0}};
-        const int band = 28, scale = 2;
-        Image sheet;
-        sheet.width = 3 * cell;
-        sheet.height = 2 * (cell + band);
-        sheet.rgba.assign(size_t(sheet.width) * sheet.height * 4, 0.12f);  // dark grey bands behind the labels
-        for (size_t i = 3; i < sheet.rgba.size(); i += 4) sheet.rgba[i] = 1.0f;
         Progress progress(7, quiet);
-        for (int r = 0; r < 2; ++r) {
-            for (int c = 0; c < 3; ++c) {
-                progress.step(std::string("rendering ") + columns[c].label + ", " + rows[r].label);
-                View view{cell, cell, {0, 0, rows[r].extent, rows[r].extent}};
-                Image img = vk::render(*runner, *columns[c].material, columns[c].output, "", view);
-                int y0 = r * (cell + band) + band;
-                for (int y = 0; y < cell; ++y)
-                    for (int x = 0; x < cell; ++x) std::copy_n(img.at(x, y), 4, sheet.at(c * cell + x, y0 + y));
-                drawLabel(sheet, c * cell + 6, r * (cell + band) + 6, std::string(columns[c].label) + ", " + rows[r].label, scale);
-            }
-        }
+        Image sheet = previewSheet(*runner, *material, cell, progress);
         progress.step("writing " + out);
         writeImage(sheet, out);
         return int(kOk);
