@@ -250,7 +250,9 @@ Image previewSheet(vk::Runner& runner, const Material& material, int cell, Progr
         double extent;
     };
     const Row rows[] = {{"uv 0..0.5", 0.5}, {"uv 0..4", 4.0}};
-    const int band = 28, scale = 2;
+    // Labels on one line at scale 2 need about 220 px; smaller cells get two lines at scale 1.
+    const int band = 28, scale = cell >= 240 ? 2 : 1;
+    const char* const separator = scale == 2 ? ", " : "\n";
     Image sheet;
     sheet.width = 3 * cell;
     sheet.height = 2 * (cell + band);
@@ -264,7 +266,7 @@ Image previewSheet(vk::Runner& runner, const Material& material, int cell, Progr
             int y0 = r * (cell + band) + band;
             for (int y = 0; y < cell; ++y)
                 for (int x = 0; x < cell; ++x) std::copy_n(img.at(x, y), 4, sheet.at(c * cell + x, y0 + y));
-            drawLabel(sheet, c * cell + 6, r * (cell + band) + 6, std::string(columns[c].label) + ", " + rows[r].label, scale);
+            drawLabel(sheet, c * cell + 6, r * (cell + band) + 6, std::string(columns[c].label) + separator + rows[r].label, scale);
         }
     }
     return sheet;
