@@ -21,9 +21,10 @@ Reads each material (JSON, see docs/material-format.md), injects hex-tiling into
 its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:
   DIR/<name>.frag.spv  .frag.hlsl  .frag.glsl  .frag.metal  and  DIR/<name>.manifest.json
 A scene (a JSON file with a "scene" key, see docs/scenes.md) compiles each (material, pass) variant it
-uses, and writes shaders that several variants share once. Inputs unchanged since the last run (material,
-textures, template, options, hexc version) are not compiled again. Nothing is written unless everything
-compiles; each file is written atomically.
+uses into DIR/<material>.<pass>.*, with an index (DIR/<scene>.scene.json) that marks variants whose code is
+identical. Inputs unchanged since the last run (material, textures' sizes, template, options, hexc build)
+are not compiled again (--force compiles them anyway). Nothing is written unless everything compiles; each
+file is written atomically.
 )";
 
 const char* const kExitCodes = R"(Exit codes:
