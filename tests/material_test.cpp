@@ -432,11 +432,11 @@ TEST(Validation, AScalarSlotReadsOnlyChannelsItsTextureHas) {
     };
     EXPECT_EQ(scalar("a", "rock_albedo.png"),
               std::vector<std::string>{
-                  "materials/t.json:1:72: error[HX111]: /slots/0/channel: channel `a` of materials/textures/rock_albedo.png, which "
+                  "materials/t.json:1:72: error[HX122]: /slots/0/channel: channel `a` of materials/textures/rock_albedo.png, which "
                   "has 3 channels; expected `r`, `g` or `b`"});
     EXPECT_EQ(scalar("g", "rock_roughness.png"),
               std::vector<std::string>{
-                  "materials/t.json:1:72: error[HX111]: /slots/0/channel: channel `g` of materials/textures/rock_roughness.png, which "
+                  "materials/t.json:1:72: error[HX122]: /slots/0/channel: channel `g` of materials/textures/rock_roughness.png, which "
                   "has 1 channel; expected `r`"});
     EXPECT_TRUE(scalar("b", "rock_albedo.png").empty());
     EXPECT_TRUE(scalar("r", "rock_roughness.png").empty());

@@ -627,7 +627,7 @@ private:
         std::vector<std::string> has;
         for (char c : info->channelNames) has.emplace_back(1, c);
         if (s.kind == SlotKind::Scalar && std::find(has.begin(), has.end(), kChannels[size_t(s.channel)]) == has.end())
-            report(Code::MisplacedKey, pointer.substr(0, pointer.rfind('/')) + "/channel",
+            report(Code::TextureChannels, pointer.substr(0, pointer.rfind('/')) + "/channel",
                    "channel `" + kChannels[size_t(s.channel)] + "` of " + s.texturePath.string() + ", which has " +
                        std::to_string(info->channels) + " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));
     }
