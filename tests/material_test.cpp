@@ -280,6 +280,17 @@ TEST(Validation, TilingThatBringsStableModesRangeNearWarns) {
                       std::string(hint)}));
 }
 
+// A tiling the slots inherit is warned about once, at the material's hextiling.
+TEST(Validation, AnInheritedTilingIsWarnedAboutOnceWhereItIsSet) {
+    const std::vector<std::string> d = diagnose(R"({"name": "m",
+  "hextiling": {"tiling": 2048},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"},
+            {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"rotation": 0.5}}]})");
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_TRUE(d[0].starts_with("materials/t.json:2:16: warning[HX116]: /hextiling: with tiling 2048, stable mode's lattice is exact"))
+        << d[0];
+}
+
 // Generated parameters are <slot>_<setting>: `a` + `a_origin` would both declare a_origin_offset (split
 // coordinates' origin of `a`, the per-tile offset of `a_origin`), so a name that extends another with `_` is refused.
 TEST(Validation, ASlotNameThatExtendsAnotherWithAnUnderscoreIsRefused) {

@@ -505,7 +505,14 @@ private:
         if (v.contains("hextiling")) hexSettings(v["hextiling"], pointer + "/hextiling", s.hex);
         std::string at = v.contains("hextiling") ? pointer + "/hextiling" : pointer;
         settingRules(s.hex, at);
-        if (!s.hex.splitCoordinates) rangeWarning(s.hex, at);
+        if (!s.hex.splitCoordinates) {
+            // A tiling the slot inherits is the material's: reported there, once for all the slots that inherit it.
+            const bool ownTiling = v.contains("hextiling") && v["hextiling"].is_object() && v["hextiling"].contains("tiling");
+            if (ownTiling)
+                rangeWarning(s.hex, at);
+            else if (!inheritedRangeWarned_)
+                inheritedRangeWarned_ = rangeWarning(s.hex, "/hextiling");
+        }
         if (v.contains("height_blend")) heightBlend(v["height_blend"], pointer + "/height_blend", s);
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
             s.texture = string(v["texture"], pointer + "/texture");
@@ -543,13 +550,14 @@ private:
     // Stable mode is exact while st = uv * tiling stays within its reduction's range (docs/precision.md): |st.x| < 2^26
     // for the hex lattice (28 kx exact in float32), |st| < 2^31 for the checker (int conversion). A tiling that
     // brings that range under 2^16 uv, where an ordinary terrain's uv can reach, gets a warning.
-    void rangeWarning(const HexTiling& hex, const std::string& at) {
-        if (!hex.enabled || hex.mode != HashMode::Stable || hex.projection != Projection::Uv) return;
-        if (hex.mask != Mask::Hex && hex.mask != Mask::Checker) return;  // the noise masks lose precision like plain tiling
+    // HX116 when the tiling brings stable mode's exact range under 65,536 uv; whether it was reported.
+    bool rangeWarning(const HexTiling& hex, const std::string& at) {
+        if (!hex.enabled || hex.mode != HashMode::Stable || hex.projection != Projection::Uv) return false;
+        if (hex.mask != Mask::Hex && hex.mask != Mask::Checker) return false;  // the noise masks lose precision like plain tiling
         const bool checker = hex.mask == Mask::Checker;
         const double tiling = checker ? std::max(hex.tiling[0], hex.tiling[1]) : hex.tiling[0];
         const double limit = std::ldexp(1.0, checker ? 31 : 26) / tiling;
-        if (limit >= 65536) return;
+        if (limit >= 65536) return false;
         char text[200];
         std::snprintf(text, sizeof text,
                       "with tiling %g, stable mode's %s is exact only for |%s| < %.0f (2^%d / tiling); beyond, tiles come out wrong",
@@ -557,6 +565,7 @@ private:
         report(Code::TilingRange, at, text,
                "for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin "
                "(docs/precision.md#stable-modes-range)");
+        return true;
     }
 
     void heightBlend(const json& v, const std::string& pointer, Slot& s) {
@@ -634,6 +643,7 @@ private:
 
     JsonLocator locator_;
     std::filesystem::path file_, dir_;
+    bool inheritedRangeWarned_ = false;  // HX116 for the material-level tiling is given once
 };
 
 // A comma right before the `]` or `}` at `offset` (JSON allows no trailing comma): where it is, to report it there
