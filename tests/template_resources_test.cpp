@@ -18,7 +18,8 @@ using json = nlohmann::json;
 
 namespace {
 
-CompileResult compileEngine(const std::string& templ = "materials/templates/engine.glsl", const std::string& extraSlot = "") {
+CompileResult compileEngine(const std::string& templ = "materials/templates/engine.glsl", const std::string& extraSlot = "",
+                            const CompileOptions& options = {}) {
     std::string text = R"({"name": "engine_rock", "template": ")" + std::filesystem::absolute(templ).string() +
                        R"(", "hextiling": {"tiling": 4},
         "slots": [{"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"},
@@ -26,7 +27,7 @@ CompileResult compileEngine(const std::string& templ = "materials/templates/engi
                        extraSlot + "]}";
     ParseResult parsed = parseMaterial(text, "materials/engine_rock.json");
     if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
-    return compile(*parsed.material);
+    return compile(*parsed.material, options);
 }
 
 std::string file(const CompileResult& r, const std::string& name) {
@@ -51,22 +52,42 @@ void expectDistinct(const std::multiset<std::string>& found, size_t count, const
 
 }  // namespace
 
+// The default layout, and hexc sharing the template's set 1 from binding 5 with every target's bases moved and HLSL
+// register spaces.
+std::vector<CompileOptions> layouts() {
+    CompileOptions moved;
+    moved.layout.vulkan = {1, 5};
+    moved.layout.hlsl = {1, 2, 3, 1, 0};
+    moved.layout.msl = {1, 2, 3};
+    moved.layout.glsl = {2};
+    moved.hlslShaderModel = 51;
+    return {CompileOptions{}, moved};
+}
+
 TEST(TemplateResources, EveryTargetPlacesThemWithoutCollisions) {
-    CompileResult r = compileEngine();
-    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    // HLSL: 4 cbuffers (hexc's, Frame, Object, Push), 5 textures, 4 samplers.
-    std::string hlsl = file(r, "engine_rock.frag.hlsl");
-    expectDistinct(matches(hlsl, R"(register\((b\d+)\))"), 4, "HLSL b registers");
-    expectDistinct(matches(hlsl, R"(register\((t\d+)\))"), 5, "HLSL t registers");
-    expectDistinct(matches(hlsl, R"(register\((s\d+)\))"), 4, "HLSL s registers");
-    std::string msl = file(r, "engine_rock.frag.metal");
-    expectDistinct(matches(msl, R"(\[\[buffer\((\d+)\)\]\])"), 4, "MSL buffers");
-    expectDistinct(matches(msl, R"(\[\[texture\((\d+)\)\]\])"), 5, "MSL textures");
-    expectDistinct(matches(msl, R"(\[\[sampler\((\d+)\)\]\])"), 4, "MSL samplers");
-    // GLSL: 3 uniform blocks, 5 combined samplers on texture units (push constants become a plain uniform).
-    std::string glsl = file(r, "engine_rock.frag.glsl");
-    expectDistinct(matches(glsl, R"(binding = (\d+), std140)"), 3, "GLSL uniform block bindings");
-    expectDistinct(matches(glsl, R"(binding = (\d+)\) uniform sampler)"), 5, "GLSL texture units");
+    for (const CompileOptions& options : layouts()) {
+        SCOPED_TRACE("hexc in set " + std::to_string(options.layout.vulkan.set));
+        CompileResult r = compileEngine("materials/templates/engine.glsl", "", options);
+        ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+        // HLSL: 4 cbuffers (hexc's, Frame, Object, Push), 5 textures, 4 samplers, all in hexc's space.
+        std::string hlsl = file(r, "engine_rock.frag.hlsl");
+        const std::string space = options.layout.hlsl.space ? ", space" + std::to_string(options.layout.hlsl.space) : "";
+        expectDistinct(matches(hlsl, R"(register\((b\d+))" + space + R"(\))"), 4, "HLSL b registers");
+        expectDistinct(matches(hlsl, R"(register\((t\d+))" + space + R"(\))"), 5, "HLSL t registers");
+        expectDistinct(matches(hlsl, R"(register\((s\d+))" + space + R"(\))"), 4, "HLSL s registers");
+        std::string msl = file(r, "engine_rock.frag.metal");
+        expectDistinct(matches(msl, R"(\[\[buffer\((\d+)\)\]\])"), 4, "MSL buffers");
+        expectDistinct(matches(msl, R"(\[\[texture\((\d+)\)\]\])"), 5, "MSL textures");
+        expectDistinct(matches(msl, R"(\[\[sampler\((\d+)\)\]\])"), 4, "MSL samplers");
+        // GLSL: 3 uniform blocks, 5 combined samplers on texture units (push constants become a plain uniform).
+        std::string glsl = file(r, "engine_rock.frag.glsl");
+        expectDistinct(matches(glsl, R"(binding = (\d+), std140)"), 3, "GLSL uniform block bindings");
+        expectDistinct(matches(glsl, R"(binding = (\d+)\) uniform sampler)"), 5, "GLSL texture units");
+        // SPIR-V: the template's declarations as written, hexc's after them in set 1.
+        json spirv = json::parse(file(r, "engine_rock.manifest.json"))["targets"]["spirv"];
+        EXPECT_EQ(spirv["textures"]["roughness"]["set"], options.layout.vulkan.set);
+        EXPECT_EQ(spirv["textures"]["roughness"]["binding"], options.layout.vulkan.binding + 3);
+    }
 }
 
 TEST(TemplateResources, TheManifestSaysWhereEachTargetPutThem) {
@@ -115,12 +136,12 @@ TEST(TemplateResources, TheHlslOutputCompilesAgain) {
     EXPECT_FALSE(again.words.empty()) << formatAll(again.diagnostics);
 }
 
-TEST(TemplateResources, OneInHexcsSetIsALocatedError) {
+TEST(TemplateResources, OneAtHexcsBindingsIsALocatedError) {
     std::filesystem::path templ = std::filesystem::temp_directory_path() / "hexc_set0_template.glsl";
     std::ifstream in("materials/templates/engine.glsl");
     std::string text(std::istreambuf_iterator<char>(in), {});
     const std::string declared = "layout(set = 1, binding = 1)";
-    text.replace(text.find(declared + " uniform sampler2D shadowMap;"), declared.size(), "layout(set = 0, binding = 9)");
+    text.replace(text.find(declared + " uniform sampler2D shadowMap;"), declared.size(), "layout(set = 0, binding = 3)");
     std::ofstream(templ) << text;
     CompileResult r = compileEngine(templ.string());
     ASSERT_FALSE(r.ok());
@@ -128,6 +149,23 @@ TEST(TemplateResources, OneInHexcsSetIsALocatedError) {
     EXPECT_EQ(d.loc.file, templ.string());
     int line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(text.find("shadowMap")), '\n'));
     EXPECT_EQ(d.loc.line, line);
-    EXPECT_NE(d.message.find("`shadowMap` is in descriptor set 0"), std::string::npos) << d.format();
+    EXPECT_NE(d.message.find("`shadowMap` is in descriptor set 0, binding 3, which hexc's layout takes (set 0, bindings 0-3"),
+              std::string::npos)
+        << d.format();
     EXPECT_TRUE(r.files.empty());
+}
+
+TEST(TemplateResources, OneInHexcsSetPastItsBindingsIsTheTemplates) {
+    std::filesystem::path templ = std::filesystem::temp_directory_path() / "hexc_set0_free_template.glsl";
+    std::ifstream in("materials/templates/engine.glsl");
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    const std::string declared = "layout(set = 1, binding = 1) uniform sampler2D shadowMap;";
+    text.replace(text.find(declared), declared.size(), "layout(set = 0, binding = 4) uniform sampler2D shadowMap;");
+    std::ofstream(templ) << text;
+    CompileResult r = compileEngine(templ.string());
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    json placed = json::parse(file(r, "engine_rock.manifest.json"))["targets"]["spirv"]["template_resources"];
+    bool found = false;
+    for (const json& res : placed) found |= res["name"] == "shadowMap" && res["vulkan"] == json{{"set", 0}, {"binding", 4}};
+    EXPECT_TRUE(found) << placed.dump();
 }

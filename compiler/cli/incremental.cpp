@@ -33,6 +33,7 @@ std::vector<std::filesystem::path> inputFiles(const Material& material, const Co
     for (const Slot& s : material.slots) files.push_back(s.texturePath);
     std::string templ = options.templateFile.empty() ? material.templateName : options.templateFile.string();
     if (templ.ends_with(".glsl")) files.push_back(templ);
+    if (!options.layout.sourceFile.empty()) files.push_back(options.layout.sourceFile);
     return files;
 }
 
@@ -46,7 +47,7 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     for (Target t : options.targets) opts += std::string(toString(t)) + ",";
     opts += std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
             std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + "," + std::to_string(options.specialize) +
-            std::to_string(options.shareLattice) + std::to_string(options.bake);
+            std::to_string(options.shareLattice) + std::to_string(options.bake) + "," + toString(options.layout);
     h.add(opts);
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).
     h.add(material.name + "|" + material.templateName);

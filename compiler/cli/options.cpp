@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <iostream>
 #include <map>
 
@@ -47,6 +48,44 @@ void applyNames(const std::vector<std::string>& targets, const std::string& glsl
     if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
 }
 
+// One flag per layout field; a flag given overrides the layout file's value.
+struct LayoutFlag {
+    const char* name;
+    const char* help;
+    std::function<uint32_t&(ResourceLayout&)> field;
+    uint32_t max = 4095;  // as the layout file allows (material/parse.cpp)
+    std::optional<uint32_t> value = {};
+};
+
+std::vector<LayoutFlag> layoutFlags() {
+    using L = ResourceLayout;
+    return {{"--set", "hexc's Vulkan descriptor set, 0 to 31 (default 0)", [](L& l) -> uint32_t& { return l.vulkan.set; }, 31},
+            {"--binding", "hexc's first Vulkan binding: block, sampler, textures (default 0)",
+             [](L& l) -> uint32_t& { return l.vulkan.binding; }},
+            {"--hlsl-space", "hexc's HLSL register space (needs --hlsl-sm 51+)", [](L& l) -> uint32_t& { return l.hlsl.space; }},
+            {"--hlsl-b", "hexc's first HLSL b register", [](L& l) -> uint32_t& { return l.hlsl.b; }},
+            {"--hlsl-t", "hexc's first HLSL t register", [](L& l) -> uint32_t& { return l.hlsl.t; }},
+            {"--hlsl-s", "hexc's first HLSL s register", [](L& l) -> uint32_t& { return l.hlsl.s; }},
+            {"--hlsl-u", "first HLSL u register (template storage)", [](L& l) -> uint32_t& { return l.hlsl.u; }},
+            {"--msl-buffer", "hexc's first MSL buffer index", [](L& l) -> uint32_t& { return l.msl.buffer; }},
+            {"--msl-texture", "hexc's first MSL texture index", [](L& l) -> uint32_t& { return l.msl.texture; }},
+            {"--msl-sampler", "hexc's first MSL sampler index", [](L& l) -> uint32_t& { return l.msl.sampler; }},
+            {"--glsl-binding", "hexc's GLSL block binding and first texture unit", [](L& l) -> uint32_t& { return l.glsl.binding; }}};
+}
+
+// The layout file (if any) with the flags over it; false after printing the file's errors.
+bool resolveLayout(const std::filesystem::path& file, const std::vector<LayoutFlag>& flags, ResourceLayout& out) {
+    if (!file.empty()) {
+        LayoutParseResult parsed = parseLayoutFile(file);
+        std::cerr << formatAll(parsed.diagnostics);
+        if (!parsed.layout) return false;
+        out = *parsed.layout;
+    }
+    for (const LayoutFlag& f : flags)
+        if (f.value) f.field(out) = *f.value;
+    return true;
+}
+
 }  // namespace
 
 std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args) {
@@ -86,6 +125,14 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         ->check(CLI::IsMember({50, 51, 60, 61, 62, 63, 64, 65, 66}));
     app.add_option("--glsl-version", glsl, "GLSL version (default 450)")->check(CLI::IsMember({"450", "330", "310es"}));
     app.add_option("--msl-version", msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
+    std::filesystem::path layoutFile;
+    std::vector<LayoutFlag> flags = layoutFlags();
+    const char* layoutGroup = "Resource layout (docs/cli.md; flags override the file)";
+    app.add_option("--layout", layoutFile, "where hexc's resources go on each target, as a JSON file")
+        ->type_name("FILE.json")
+        ->group(layoutGroup);
+    for (LayoutFlag& f : flags)
+        app.add_option(f.name, f.value, f.help)->type_name("N")->check(CLI::Range(0u, f.max).description(""))->group(layoutGroup);
     app.add_flag("--bake", a.options.bake,
                  "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
     app.add_flag_callback(
@@ -113,6 +160,11 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     }
     a.materials.assign(materials.begin(), materials.end());
     applyNames(targets, glsl, msl, a.options);
+    if (!resolveLayout(layoutFile, flags, a.options.layout)) return kInvalidInput;
+    if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {
+        std::cerr << "hexc: HLSL register space " << space << " needs --hlsl-sm 51 or later (shader model 5.0 has no spaces)\n";
+        return kUsage;
+    }
     return std::nullopt;
 }
 

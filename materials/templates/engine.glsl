@@ -1,6 +1,6 @@
 #version 450
 // An engine's own template: it brings its per-frame and per-object blocks, a shadow map, an environment map, a
-// separate texture with its own sampler and push constants, all outside hexc's descriptor set 0, and reads the
+// separate texture with its own sampler and push constants, all clear of hexc's bindings, and reads the
 // `albedo` (color) and `roughness` (scalar) slots. hexc places every resource on each target without collisions
 // and lists the template's under `template_resources` in the manifest (docs/templates.md).
 #include <hexc>

@@ -2,7 +2,7 @@
 // defines `hexcAt_${name}` (the slot at st with its gradients and split-coordinates cell), and a coordinates section
 // (`uv`, `uv.split`, `triplanar`), which defines the public `hexc_${name}` from it; plus the resource sections.
 // Tokens `${...}` are replaced in one pass; one codegen does not know is an error. ${name}: the slot's name;
-// ${binding}; ${tiling}, ${planesharpness}, ${origincell}, ${originoffset}: the parameters (uniform members or
+// ${set}, ${binding}: hexc's descriptors (plan.h, HexcBindings); ${tiling}, ${planesharpness}, ${origincell}, ${originoffset}: the parameters (uniform members or
 // constants) the coordinates read; ${tiles}: the slot's `lattice.*` section; ${lattice}, ${blend}: `set` lines
 // filling the slot's HexcLattice and HexcBlend (templates/library/hextiling.glsl) from the plan; ${heightmap}: the
 // slot whose texture holds its heights (itself when it blends by none); ${channel}: a scalar slot's channel
@@ -11,7 +11,7 @@
 // Each slot gets `hexc_${name}(...)` and an overload with `out vec3 weights` (the weights output).
 
 //@ params
-layout(set = 0, binding = 0, std140) uniform HexcParams {
+layout(set = ${set}, binding = ${binding}, std140) uniform HexcParams {
 ${members}
 } hexcParams;
 
@@ -24,7 +24,7 @@ layout(constant_id = ${idy}) const float ${name}_y = ${y};
 const vec2 ${name} = vec2(${name}_x, ${name}_y);
 
 //@ sampler
-layout(set = 0, binding = ${binding}) uniform sampler hexcSampler;
+layout(set = ${set}, binding = ${binding}) uniform sampler hexcSampler;
 
 //@ first
 #define HEXC_FIRST_SLOT hexc_${name}
@@ -32,7 +32,7 @@ layout(set = 0, binding = ${binding}) uniform sampler hexcSampler;
 #define HEXC_PROJECTION_${projection} 1
 
 //@ texture
-layout(set = 0, binding = ${binding}) uniform texture2D hexcTex_${name};
+layout(set = ${set}, binding = ${binding}) uniform texture2D hexcTex_${name};
 #define HEXC_HAS_${name} 1
 
 //@ set

@@ -146,17 +146,22 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
             request.fragmentSpirv = compiled.spirv;
             break;
         case ExecutedTarget::Hlsl:
-            request.fragmentSpirv = spirvOrThrow(
-                optimizeSpirv(spirvOrThrow(compileToSpirv(outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl",
-                                                          SourceLanguage::Hlsl, manifest["targets"]["hlsl"]["entry_point"])),
-                              false, true));
+            request.fragmentSpirv = spirvOrThrow(optimizeSpirv(
+                spirvOrThrow(compileToSpirv(outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl",
+                                            SourceLanguage::Hlsl, manifest["targets"]["hlsl"]["entry_point"], options.layout)),
+                false, true));
             break;
         case ExecutedTarget::Glsl:
-            request.fragmentSpirv = spirvOrThrow(optimizeSpirv(spirvOrThrow(
-                compileToSpirv(outputFile(compiled, ".glsl"), ShaderStage::Fragment, m.name + ".frag.glsl", SourceLanguage::OpenGlGlsl))));
+            request.fragmentSpirv = spirvOrThrow(
+                optimizeSpirv(spirvOrThrow(compileToSpirv(outputFile(compiled, ".glsl"), ShaderStage::Fragment, m.name + ".frag.glsl",
+                                                          SourceLanguage::OpenGlGlsl, "main", options.layout))));
             request.combinedSamplers = true;
             break;
     }
+    // Bound where the manifest says, as an engine would: the shared sampler follows the parameter block.
+    const nlohmann::json& sampler = manifest["targets"]["spirv"]["sampler"];
+    request.set = sampler["set"];
+    request.firstBinding = sampler["binding"].get<uint32_t>() - 1;
     request.uniformData = packParameters(manifest, parameters);
     // Textures in manifest order, which is binding order.
     std::vector<Texture> textures;

@@ -315,9 +315,10 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
     stages[0].module = createShaderModule(ctx, req.vertexSpirv, cleanup);
-    stages[0].pName = "main";
+    stages[0].pName = req.vertexEntry.c_str();
     stages[1] = stages[0];
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].pName = req.fragmentEntry.c_str();
     stages[1].module = createShaderModule(ctx, req.fragmentSpirv, cleanup);
 
     VkPipelineVertexInputStateCreateInfo vertexInput{};
@@ -412,6 +413,8 @@ void validate(const VulkanContext& ctx, const RenderRequest& req) {
     if (req.vertexSpirv.empty() || req.fragmentSpirv.empty()) fail("a shader has no SPIR-V");
     if (req.uniformData.size() > limits.maxUniformBufferRange) fail("uniform data is larger than the device allows");
     if (req.textures.size() > limits.maxPerStageDescriptorSampledImages) fail("too many textures for the device");
+    if (req.set >= limits.maxBoundDescriptorSets)
+        fail("descriptor set " + std::to_string(req.set) + " is beyond the device's " + std::to_string(limits.maxBoundDescriptorSets));
     for (const Texture* t : req.textures) {
         const size_t values = t ? size_t(t->width) * t->height * 4 : 0;
         if (!t || t->width <= 0 || t->height <= 0 || uint32_t(std::max(t->width, t->height)) > limits.maxImageDimension2D ||
@@ -572,11 +575,11 @@ std::string Runner::deviceName() const { return ctx_->properties.deviceName; }
 
 namespace {
 
-// Descriptor set 0 as hexc lays it out: parameter block, sampler, then the textures.
+// hexc's descriptor set as the request lays it out: parameter block, sampler, then the textures.
 std::vector<VkDescriptorSetLayoutBinding> setBindings(const RenderRequest& req) {
     std::vector<VkDescriptorSetLayoutBinding> bindings(kFirstTextureBinding + req.textures.size());
     for (uint32_t i = 0; i < bindings.size(); ++i) {
-        bindings[i].binding = i;
+        bindings[i].binding = req.firstBinding + i;
         bindings[i].descriptorType = i == 0                 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                      : i == 1               ? VK_DESCRIPTOR_TYPE_SAMPLER
                                      : req.combinedSamplers ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
@@ -587,9 +590,10 @@ std::vector<VkDescriptorSetLayoutBinding> setBindings(const RenderRequest& req) 
     return bindings;
 }
 
-// The set layout and the pipeline layout (set 0 plus the vertex shader's uv rectangle as a push constant).
+// The set layout and the pipeline layout (hexc's set `set`, empty sets below it, and the vertex shader's uv
+// rectangle as a push constant).
 std::pair<VkDescriptorSetLayout, VkPipelineLayout> createLayouts(VulkanContext& ctx,
-                                                                 const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+                                                                 const std::vector<VkDescriptorSetLayoutBinding>& bindings, uint32_t set,
                                                                  Cleanup& cleanup) {
     const VkDevice dev = ctx.device;
     VkDescriptorSetLayoutCreateInfo setLayoutInfo{};
@@ -599,12 +603,19 @@ std::pair<VkDescriptorSetLayout, VkPipelineLayout> createLayouts(VulkanContext& 
     VkDescriptorSetLayout setLayout;
     VK_CHECK(vkCreateDescriptorSetLayout, dev, &setLayoutInfo, nullptr, &setLayout);
     cleanup.defer([dev, setLayout] { vkDestroyDescriptorSetLayout(dev, setLayout, nullptr); });
+    std::vector<VkDescriptorSetLayout> sets(set + 1, setLayout);
+    if (set > 0) {
+        setLayoutInfo.bindingCount = 0;
+        VK_CHECK(vkCreateDescriptorSetLayout, dev, &setLayoutInfo, nullptr, &sets[0]);
+        cleanup.defer([dev, empty = sets[0]] { vkDestroyDescriptorSetLayout(dev, empty, nullptr); });
+        std::fill(sets.begin(), sets.end() - 1, sets[0]);
+    }
 
     VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(RenderRequest::uvRect)};
     VkPipelineLayoutCreateInfo layoutInfo{};
     layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
+    layoutInfo.setLayoutCount = uint32_t(sets.size());
+    layoutInfo.pSetLayouts = sets.data();
     layoutInfo.pushConstantRangeCount = 1;
     layoutInfo.pPushConstantRanges = &pushRange;
     VkPipelineLayout layout;
@@ -675,7 +686,7 @@ VkDescriptorSet createSet(VulkanContext& ctx, const std::vector<VkDescriptorSetL
     for (uint32_t i = 0; i < writes.size(); ++i) {
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         writes[i].dstSet = set;
-        writes[i].dstBinding = i;
+        writes[i].dstBinding = bindings[i].binding;
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = bindings[i].descriptorType;
         if (i == 0)
@@ -696,6 +707,7 @@ struct Draw {
     VkPipeline pipeline;
     VkPipelineLayout layout;
     VkDescriptorSet set;
+    uint32_t setIndex;
     uint32_t width, height;
     std::array<float, 4> uvRect;
 };
@@ -712,7 +724,7 @@ void recordDraw(VkCommandBuffer cb, const Draw& d) {
     passInfo.pClearValues = clears;
     vkCmdBeginRenderPass(cb, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline);
-    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, d.layout, 0, 1, &d.set, 0, nullptr);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, d.layout, d.setIndex, 1, &d.set, 0, nullptr);
     vkCmdPushConstants(cb, d.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(d.uvRect), d.uvRect.data());
     vkCmdDraw(cb, 3, 1, 0, 0);
     vkCmdEndRenderPass(cb);
@@ -785,7 +797,7 @@ RenderResult Runner::render(const RenderRequest& req) {
     const uint32_t width = uint32_t(req.width), height = uint32_t(req.height);
 
     const std::vector<VkDescriptorSetLayoutBinding> bindings = setBindings(req);
-    const auto [setLayout, layout] = createLayouts(ctx, bindings, cleanup);
+    const auto [setLayout, layout] = createLayouts(ctx, bindings, req.set, cleanup);
     const VkRenderPass pass = createRenderPass(ctx, cleanup);
     const VkPipeline pipeline = createPipeline(ctx, req, layout, pass, cleanup);
     const auto [color, framebuffer] = createTarget(ctx, pass, width, height, cleanup);
@@ -802,7 +814,7 @@ RenderResult Runner::render(const RenderRequest& req) {
     std::vector<VkImageView> textureViews;
     for (const Texture* t : req.textures) textureViews.push_back(uploadTexture(ctx, first, *t, cleanup));
     const VkDescriptorSet set = createSet(ctx, bindings, setLayout, uniforms.buffer, textureViews, req.combinedSamplers, cleanup);
-    const Draw draw{pass, framebuffer, pipeline, layout, set, width, height, req.uvRect};
+    const Draw draw{pass, framebuffer, pipeline, layout, set, req.set, width, height, req.uvRect};
     recordDraw(first, draw);
     recordReadback(first, color, readback.buffer, width, height);
     VK_CHECK(vkEndCommandBuffer, first);

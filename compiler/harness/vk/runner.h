@@ -2,12 +2,13 @@
 // Runs a vertex + fragment shader pair over a UV rectangle on Vulkan (Mesa lavapipe in tests and CI) into an
 // RGBA32F image and reads it back; optionally times the draw. Used by the execution tests, preview and bench.
 //
-// Resource interface the shaders see (descriptor set 0):
-//   binding 0       uniform buffer, fragment stage: RenderRequest::uniformData (std140)
-//   binding 1       one sampler for every texture: linear min/mag/mip, REPEAT on u/v/w, lod 0..all, no anisotropy
-//   binding 2 + i   sampled image (texture2D): RenderRequest::textures[i], with a full mip chain; or, with
-//                   RenderRequest::combinedSamplers, a sampler2D combining it with the binding-1 sampler
+// Resource interface the shaders see (descriptor set RenderRequest::set, hexc's; bindings from b = firstBinding):
+//   binding b       uniform buffer, fragment stage: RenderRequest::uniformData (std140)
+//   binding b+1     one sampler for every texture: linear min/mag/mip, REPEAT on u/v/w, lod 0..all, no anisotropy
+//   binding b+2+i   sampled image (texture2D): RenderRequest::textures[i], with a full mip chain; or, with
+//                   RenderRequest::combinedSamplers, a sampler2D combining it with the binding-(b+1) sampler
 //                   (how GLSL emitted for OpenGL binds textures once brought back to Vulkan)
+//   sets below      empty
 //   push constant   16 bytes, vertex stage: RenderRequest::uvRect (see templates/fullscreen.vert.glsl)
 // The fragment shader writes location 0; the render target is VK_FORMAT_R32G32B32A32_SFLOAT, no blending.
 //
@@ -32,13 +33,15 @@ struct VulkanError : std::runtime_error {
 struct VulkanContext;  // instance, device and long-lived objects; defined in runner.cpp
 
 struct RenderRequest {
-    std::vector<uint32_t> vertexSpirv, fragmentSpirv;  // entry point "main" for both
-    std::vector<uint8_t> uniformData;                  // may be empty: a zeroed 16-byte buffer is bound instead
-    std::vector<const Texture*> textures;              // not owned; must outlive render()
+    std::vector<uint32_t> vertexSpirv, fragmentSpirv;
+    std::string vertexEntry = "main", fragmentEntry = "main";
+    std::vector<uint8_t> uniformData;      // may be empty: a zeroed 16-byte buffer is bound instead
+    std::vector<const Texture*> textures;  // not owned; must outlive render()
     int width = 0, height = 0;
     std::array<float, 4> uvRect{0, 0, 1, 1};  // u0, v0, u1, v1
     int timedFrames = 0;                      // > 0: draw this many extra frames, timing each one
     bool combinedSamplers = false;            // textures as COMBINED_IMAGE_SAMPLER (see above)
+    uint32_t set = 0, firstBinding = 0;       // where the shader's layout puts hexc's resources (hexc::ResourceLayout)
 };
 
 struct RenderResult {

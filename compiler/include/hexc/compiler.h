@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hexc/diagnostics.h"
+#include "hexc/layout.h"
 #include "hexc/material.h"
 
 namespace hexc {
@@ -28,6 +29,7 @@ struct CompileOptions {
     // Numeric settings become specialisation constants, frozen by spirv-opt so it can fold them, instead of
     // uniforms (one shader then serves one material only). Per-frame values stay uniforms.
     bool bake = false;
+    ResourceLayout layout;  // where hexc's own resources go on each target
 };
 
 struct OutputFile {

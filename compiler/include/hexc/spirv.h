@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hexc/diagnostics.h"
+#include "hexc/layout.h"
 
 namespace hexc {
 
@@ -21,10 +22,12 @@ struct SpirvResult {
 };
 
 // Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
-// the source in diagnostics when it has no #line names. HLSL registers map to hexc's Vulkan layout:
-// b0 -> binding 0, s0 -> binding 1, t<i> -> binding 2+i (the layout docs/cli.md describes); OpenGL texture unit i -> 2+i.
+// the source in diagnostics when it has no #line names. HLSL registers and OpenGL texture units placed by `layout`
+// map back to its Vulkan bindings (by default b0 -> binding 0, s0 -> 1, t<i> and texture unit i -> 2+i; docs/cli.md);
+// an HLSL register space N is descriptor set N, as with dxc -spirv.
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
-                           SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main");
+                           SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main",
+                           const ResourceLayout& layout = {});
 
 // Validates, optimises for performance and validates again. Diagnostics only on failure (a hexc bug).
 // freezeConstants: specialisation constants become constants first, so the optimiser folds them.

@@ -2,6 +2,7 @@
 // SPIR-V -> target source through SPIRV-Cross. One file per target holds only what differs: compiler
 // options, how hexc's fixed resource layout (plan.h) is pinned, and how the manifest addresses it.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,7 @@ namespace hexc {
 enum class ResourceKind { Params, Sampler, Texture };
 
 // A resource the template declares itself (per-frame blocks, shadow maps, push constants...): anything but
-// hexc's own, which are set 0 (plan.h). Each target places them after hexc's, per register class.
+// hexc's own (plan.h, HexcBindings). Each target places them after hexc's, per register class.
 enum class ResourceClass { UniformBuffer, StorageBuffer, PushConstant, SampledImage, Image, Sampler, StorageImage };
 struct TemplateResource {
     uint32_t id = 0;  // SPIR-V variable
@@ -29,8 +30,8 @@ struct TemplateResource {
     uint32_t set = 0, binding = 0;  // as declared (none for push constants)
 };
 
-// The template's resources in (class, set, binding) order. A template resource in hexc's set 0 is a located error
-// (CompileError): it would share hexc's bindings.
+// The template's resources in (class, set, binding) order. One at a binding hexc's layout takes is a located error
+// (CompileError).
 std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, const ShaderPlan& plan);
 // {name, kind, set, binding} for the manifest; a target adds where it placed the resource.
 nlohmann::json describe(const TemplateResource& r);
@@ -48,7 +49,7 @@ TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan&
 
 // Shared by the backends (reflection.cpp). `locate` gives a target's address of one resource;
 // `ioName` the target's name for a stage input/output location (semantic, attribute), or null.
-using Locate = nlohmann::json (*)(ResourceKind kind, uint32_t index);
+using Locate = std::function<nlohmann::json(ResourceKind kind, uint32_t index)>;
 using IoName = nlohmann::json (*)(uint32_t location, bool input);
 // `placed`: the template's resources as the target placed them (describe() plus the target's address).
 nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const std::string& entryPoint, Locate locate,

@@ -1,6 +1,6 @@
 // OpenGL GLSL (450, 330) and GLSL ES (310). OpenGL has no separate samplers, so each texture is
-// combined with the shared sampler into a sampler2D named hexcTex_<slot> on texture unit i; the
-// parameter block is uniform block binding 0. GLSL 330 has no layout(binding): the engine binds by
+// combined with the shared sampler into a sampler2D named hexcTex_<slot> on texture unit base + i; the
+// parameter block is uniform block binding base (the layout's GLSL binding, 0 by default). GLSL 330 has no layout(binding): the engine binds by
 // name (the manifest says so), instead of hexc requiring GL_ARB_shading_language_420pack.
 #include <spirv_glsl.hpp>
 
@@ -13,11 +13,11 @@ namespace {
 
 bool hasBindingQualifiers(const CompileOptions& options) { return options.glslEs || options.glslVersion >= 420; }
 
-// The template's blocks after hexc's (uniform block binding 0), storage buffers and images from 0, its sampler2Ds
-// on the texture units after `unit`; `units` holds those SPIRV-Cross combined from separate images.
+// The template's blocks after hexc's (uniform block binding `base`), storage buffers and images from 0, its
+// sampler2Ds on the texture units after `unit`; `units` holds those SPIRV-Cross combined from separate images.
 nlohmann::json placeTemplateResources(spirv_cross::CompilerGLSL& c, const std::vector<TemplateResource>& own,
-                                      std::map<uint32_t, uint32_t>& units, uint32_t unit) {
-    uint32_t block = 1, storage = 0, image = 0;
+                                      std::map<uint32_t, uint32_t>& units, uint32_t base, uint32_t unit) {
+    uint32_t block = base + 1, storage = 0, image = 0;
     nlohmann::json placed = nlohmann::json::array();
     for (const TemplateResource& r : own) {
         nlohmann::json where = describe(r);
@@ -66,17 +66,25 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
 
     std::vector<TemplateResource> own = templateResources(c, plan);
     c.build_combined_image_samplers();
-    // hexc's textures on units 0..n-1; the template's textures (combined by SPIRV-Cross or its own sampler2D) after.
-    uint32_t unit = uint32_t(plan.slots.size());
+    // hexc's textures on units base..base+n-1; the template's textures (combined by SPIRV-Cross or its own
+    // sampler2D) after.
+    const uint32_t base = plan.layout.glsl.binding;
+    uint32_t unit = base + uint32_t(plan.slots.size());
     std::map<uint32_t, uint32_t> units;  // template image or sampled image id -> texture unit
     for (const auto& combined : c.get_combined_image_samplers()) {
         uint32_t binding = c.get_decoration(combined.image_id, spv::DecorationBinding);
-        bool hexcs = c.get_decoration(combined.image_id, spv::DecorationDescriptorSet) == 0;
+        bool hexcs = c.get_decoration(combined.image_id, spv::DecorationDescriptorSet) == plan.bindings.set &&
+                     binding >= plan.bindings.firstTexture && binding < plan.bindings.firstTexture + plan.slots.size();
         c.set_name(combined.combined_id, c.get_name(combined.image_id));
         if (!hexcs && !units.count(combined.image_id)) units[combined.image_id] = unit++;
-        c.set_decoration(combined.combined_id, spv::DecorationBinding, hexcs ? binding - kFirstTextureBinding : units[combined.image_id]);
+        c.set_decoration(combined.combined_id, spv::DecorationBinding,
+                         hexcs ? base + binding - plan.bindings.firstTexture : units[combined.image_id]);
     }
-    nlohmann::json placed = placeTemplateResources(c, own, units, unit);
+    for (const auto& ubo : c.get_shader_resources().uniform_buffers)
+        if (c.get_decoration(ubo.id, spv::DecorationDescriptorSet) == plan.bindings.set &&
+            c.get_decoration(ubo.id, spv::DecorationBinding) == plan.bindings.params)
+            c.set_decoration(ubo.id, spv::DecorationBinding, base);
+    nlohmann::json placed = placeTemplateResources(c, own, units, base, unit);
     if (!hasBindingQualifiers(options)) {
         for (const auto& r : c.get_shader_resources().sampled_images) c.unset_decoration(r.id, spv::DecorationBinding);
         for (const auto& r : c.get_shader_resources().uniform_buffers) c.unset_decoration(r.id, spv::DecorationBinding);
@@ -85,17 +93,17 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     TargetOutput out;
     out.source = c.compile();
     out.entryPoint = "main";
-    Locate locate = hasBindingQualifiers(options) ? Locate([](ResourceKind kind, uint32_t index) -> nlohmann::json {
-        if (kind == ResourceKind::Params) return {{"uniform_block", "HexcParams"}, {"binding", 0}};
+    const bool byName = !hasBindingQualifiers(options);
+    Locate locate = [base, byName](ResourceKind kind, uint32_t index) -> nlohmann::json {
         if (kind == ResourceKind::Sampler) return {{"combined_into_textures", true}};
-        return {{"texture_unit", index}};
-    })
-                                                  : Locate([](ResourceKind kind, uint32_t index) -> nlohmann::json {
-                                                        if (kind == ResourceKind::Params)
-                                                            return {{"uniform_block", "HexcParams"}, {"bind_by_name", true}};
-                                                        if (kind == ResourceKind::Sampler) return {{"combined_into_textures", true}};
-                                                        return {{"texture_unit", index}, {"bind_by_name", true}};
-                                                    });
+        nlohmann::json where = kind == ResourceKind::Params ? nlohmann::json{{"uniform_block", "HexcParams"}, {"binding", base}}
+                                                            : nlohmann::json{{"texture_unit", base + index}};
+        if (byName) {
+            where.erase("binding");
+            where["bind_by_name"] = true;
+        }
+        return where;
+    };
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };
     out.target = describeTarget(spirv, plan, out.entryPoint, locate, none, placed);
     out.target["version"] = std::to_string(options.glslVersion) + (options.glslEs ? " es" : "");

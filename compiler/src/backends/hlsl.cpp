@@ -1,5 +1,5 @@
-// HLSL: cbuffer in b0, the shared sampler in s0, slot i's texture in t<i>, all in space0; the template's own
-// resources after them.
+// HLSL: by default the cbuffer in b0, the shared sampler in s0, slot i's texture in t<i>, all in space0 (the
+// layout moves each class and the space); the template's own resources after them, in the same space.
 #include <spirv_hlsl.hpp>
 
 #include "backends/backends.h"
@@ -7,11 +7,11 @@
 namespace hexc {
 namespace {
 
-// The template's resources after hexc's, each register class counted on from hexc's last (b0, s0, t0..t<n-1>),
-// all in space0 (shader model 5.0 has no spaces).
+// The template's resources after hexc's, each register class counted on from hexc's last, in hexc's space.
 template <typename Binding>
 nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const ShaderPlan& plan, Binding binding) {
-    uint32_t next[4] = {1, uint32_t(plan.slots.size()), 1, 0};  // b, t, s, u
+    const ResourceLayout::Hlsl& l = plan.layout.hlsl;
+    uint32_t next[4] = {l.b + 1, l.t + uint32_t(plan.slots.size()), l.s + 1, l.u};  // b, t, s, u
     auto take = [&](char cls) { return next[std::string_view("btsu").find(cls)]++; };
     nlohmann::json placed = nlohmann::json::array();
     for (const TemplateResource& r : templateResources(c, plan)) {
@@ -22,6 +22,7 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const Shader
         nlohmann::json where = describe(r);
         auto assign = [&](spirv_cross::HLSLResourceBinding::Binding& field, char cls, const char* key) {
             field.register_binding = take(cls);
+            field.register_space = l.space;
             where[key] = cls + std::to_string(field.register_binding);
         };
         switch (r.cls) {
@@ -43,7 +44,7 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const Shader
                 assign(b.uav, 'u', "register");
                 break;
         }
-        where["space"] = 0;
+        where["space"] = l.space;
         c.add_hlsl_resource_binding(b);
         placed.push_back(std::move(where));
     }
@@ -57,6 +58,11 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     spirv_cross::CompilerHLSL::Options hlsl;
     hlsl.shader_model = options.hlslShaderModel;
     c.set_hlsl_options(hlsl);
+    const ResourceLayout::Hlsl& l = plan.layout.hlsl;
+    if (l.space != 0 && options.hlslShaderModel < 51)
+        throw CompileError{{Diagnostic::make(
+            Code::TargetUnsupported, {plan.layout.sourceFile.empty() ? "--hlsl-space" : plan.layout.sourceFile.string()}, "",
+            "HLSL register space " + std::to_string(l.space) + " needs shader model 5.1 or later (--hlsl-sm 51); 5.0 has no spaces")}};
     auto binding = [](uint32_t set, uint32_t b) {
         spirv_cross::HLSLResourceBinding r;
         r.stage = spv::ExecutionModelFragment;
@@ -64,14 +70,15 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
         r.binding = b;
         return r;
     };
-    spirv_cross::HLSLResourceBinding params = binding(0, kParamsBinding), sampler = binding(0, kSamplerBinding);
-    params.cbv.register_binding = 0;
-    sampler.sampler.register_binding = 0;
+    const HexcBindings& hexcs = plan.bindings;
+    spirv_cross::HLSLResourceBinding params = binding(hexcs.set, hexcs.params), sampler = binding(hexcs.set, hexcs.sampler);
+    params.cbv = {l.space, l.b};
+    sampler.sampler = {l.space, l.s};
     c.add_hlsl_resource_binding(params);
     c.add_hlsl_resource_binding(sampler);
     for (uint32_t i = 0; i < plan.slots.size(); ++i) {
-        spirv_cross::HLSLResourceBinding texture = binding(0, plan.slots[i].binding);
-        texture.srv.register_binding = i;
+        spirv_cross::HLSLResourceBinding texture = binding(hexcs.set, plan.slots[i].binding);
+        texture.srv = {l.space, l.t + i};
         c.add_hlsl_resource_binding(texture);
     }
     nlohmann::json placed = placeTemplateResources(c, plan, binding);
@@ -79,9 +86,11 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     TargetOutput out;
     out.source = c.compile();
     out.entryPoint = c.get_cleansed_entry_point_name("main", spv::ExecutionModelFragment);
-    Locate locate = [](ResourceKind kind, uint32_t index) -> nlohmann::json {
-        std::string reg = kind == ResourceKind::Params ? "b0" : kind == ResourceKind::Sampler ? "s0" : "t" + std::to_string(index);
-        return {{"register", reg}, {"space", 0}};
+    Locate locate = [&l](ResourceKind kind, uint32_t index) -> nlohmann::json {
+        std::string reg = kind == ResourceKind::Params    ? "b" + std::to_string(l.b)
+                          : kind == ResourceKind::Sampler ? "s" + std::to_string(l.s)
+                                                          : "t" + std::to_string(l.t + index);
+        return {{"register", reg}, {"space", l.space}};
     };
     // SPIRV-Cross names user varyings TEXCOORD<location>; the colour output is SV_Target<location>.
     IoName semantic = [](uint32_t location, bool input) -> nlohmann::json {

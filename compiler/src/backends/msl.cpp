@@ -1,5 +1,5 @@
-// MSL: the parameter block in [[buffer(0)]], the shared sampler in [[sampler(0)]], slot i's texture in
-// [[texture(i)]]; the template's own resources after them.
+// MSL: by default the parameter block in [[buffer(0)]], the shared sampler in [[sampler(0)]], slot i's texture in
+// [[texture(i)]] (the layout moves each base); the template's own resources after them.
 #include <spirv_msl.hpp>
 
 #include "backends/backends.h"
@@ -11,10 +11,11 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
     spirv_cross::CompilerMSL::Options msl;
     msl.set_msl_version(options.mslMajor, options.mslMinor);
     c.set_msl_options(msl);
+    const ResourceLayout::Msl& l = plan.layout.msl;
     auto bind = [&](uint32_t binding, uint32_t buffer, uint32_t texture, uint32_t sampler) {
         spirv_cross::MSLResourceBinding b;
         b.stage = spv::ExecutionModelFragment;
-        b.desc_set = 0;
+        b.desc_set = plan.bindings.set;
         b.binding = binding;
         b.count = 1;
         b.msl_buffer = buffer;
@@ -22,11 +23,11 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
         b.msl_sampler = sampler;
         c.add_msl_resource_binding(b);
     };
-    bind(kParamsBinding, 0, 0, 0);
-    bind(kSamplerBinding, 0, 0, 0);
-    for (uint32_t i = 0; i < plan.slots.size(); ++i) bind(plan.slots[i].binding, 0, i, 0);
-    // The template's resources after hexc's: buffers from 1, textures from the slot count, samplers from 1.
-    uint32_t buffer = 1, texture = uint32_t(plan.slots.size()), sampler = 1;
+    bind(plan.bindings.params, l.buffer, 0, 0);
+    bind(plan.bindings.sampler, 0, 0, l.sampler);
+    for (uint32_t i = 0; i < plan.slots.size(); ++i) bind(plan.slots[i].binding, 0, l.texture + i, 0);
+    // The template's resources after hexc's last buffer, texture and sampler.
+    uint32_t buffer = l.buffer + 1, texture = l.texture + uint32_t(plan.slots.size()), sampler = l.sampler + 1;
     nlohmann::json placed = nlohmann::json::array();
     for (const TemplateResource& r : templateResources(c, plan)) {
         spirv_cross::MSLResourceBinding b;
@@ -48,10 +49,10 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
     TargetOutput out;
     out.source = c.compile();
     out.entryPoint = c.get_cleansed_entry_point_name("main", spv::ExecutionModelFragment);
-    Locate locate = [](ResourceKind kind, uint32_t index) -> nlohmann::json {
-        if (kind == ResourceKind::Params) return {{"buffer", 0}};
-        if (kind == ResourceKind::Sampler) return {{"sampler", 0}};
-        return {{"texture", index}};
+    Locate locate = [&l](ResourceKind kind, uint32_t index) -> nlohmann::json {
+        if (kind == ResourceKind::Params) return {{"buffer", l.buffer}};
+        if (kind == ResourceKind::Sampler) return {{"sampler", l.sampler}};
+        return {{"texture", l.texture + index}};
     };
     // SPIRV-Cross gives user varyings [[user(locn<location>)]] and colour outputs [[color(<location>)]].
     IoName attribute = [](uint32_t location, bool input) -> nlohmann::json {

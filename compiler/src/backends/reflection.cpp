@@ -35,19 +35,31 @@ int lineNaming(const std::string& source, const std::string& name) {
     return at == std::string::npos ? 1 : 1 + int(std::count(source.begin(), source.begin() + std::ptrdiff_t(at), '\n'));
 }
 
-// hexc's own resources: its block, sampler and textures at their set-0 bindings, under its names.
-bool isHexcs(const TemplateResource& r, const ShaderPlan& plan) {
-    const bool named = r.name.starts_with("hexc") || r.name == "HexcParams";
+// hexc's own resources: its block, sampler and textures at their bindings in hexc's set, under its names.
+bool isHexcs(const TemplateResource& r, const HexcBindings& b, size_t slots) {
+    const bool named = r.set == b.set && (r.name.starts_with("hexc") || r.name == "HexcParams");
     switch (r.cls) {
         case ResourceClass::UniformBuffer:
-            return named && r.binding == kParamsBinding;
+            return named && r.binding == b.params;
         case ResourceClass::Sampler:
-            return named && r.binding == kSamplerBinding;
+            return named && r.binding == b.sampler;
         case ResourceClass::Image:
-            return named && r.binding >= kFirstTextureBinding && r.binding < kFirstTextureBinding + plan.slots.size();
+            return named && r.binding >= b.firstTexture && r.binding < b.firstTexture + slots;
         default:
             return false;
     }
+}
+
+// A template resource at one of the bindings hexc's layout takes (HX210).
+CompileError bindingConflict(const TemplateResource& t, const ShaderPlan& plan) {
+    const HexcBindings& b = plan.bindings;
+    const std::string last = std::to_string(b.firstTexture + plan.slots.size() - 1);
+    return CompileError{{Diagnostic::make(
+        Code::TemplateSetConflict, {plan.templateName, lineNaming(plan.templateSource, t.name), 0}, "",
+        "`" + t.name + "` is in descriptor set " + std::to_string(t.set) + ", binding " + std::to_string(t.binding) +
+            ", which hexc's layout takes (set " + std::to_string(b.set) + ", bindings " + std::to_string(b.params) + "-" +
+            (plan.slots.empty() ? std::to_string(b.sampler) : last) +
+            ": parameter block, sampler, textures); give it another set or binding, or move hexc's with --set/--binding")}};
 }
 
 const char* toString(ResourceClass cls) {
@@ -78,16 +90,10 @@ std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, 
                 out.push_back(std::move(t));
                 continue;
             }
-            if (t.set != 0) {
-                out.push_back(std::move(t));
-                continue;
-            }
-            if (!isHexcs(t, plan))
-                throw CompileError{{Diagnostic::make(
-                    Code::TemplateSetConflict, {plan.templateName, lineNaming(plan.templateSource, t.name), 0}, "",
-                    "`" + t.name + "` is in descriptor set 0, binding " + std::to_string(t.binding) +
-                        ", and set 0 is hexc's (parameter block, sampler, textures); declare the template's own resources "
-                        "in set 1 or higher")}};
+            if (isHexcs(t, plan.bindings, plan.slots.size())) continue;
+            const uint32_t end = plan.bindings.firstTexture + uint32_t(plan.slots.size());
+            if (t.set == plan.bindings.set && t.binding >= plan.bindings.params && t.binding < end) throw bindingConflict(t, plan);
+            out.push_back(std::move(t));
         }
     std::stable_sort(out.begin(), out.end(), [](const TemplateResource& a, const TemplateResource& b) {
         return std::tie(a.cls, a.set, a.binding) < std::tie(b.cls, b.set, b.binding);
@@ -108,10 +114,12 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
     nlohmann::json t = {{"entry_point", entryPoint}, {"stage", "fragment"}};
     if (!plan.slots.empty()) {
         // The block layout the optimiser kept must be the one the plan laid out: engines fill it by offset. Only
-        // hexc's own block (set 0): the template's are the template's.
+        // hexc's own block: the template's are the template's.
         bool hexcBlock = false;
         for (const auto& ubo : res.uniform_buffers) {
-            if (c.get_decoration(ubo.id, spv::DecorationDescriptorSet) != 0) continue;
+            if (c.get_decoration(ubo.id, spv::DecorationDescriptorSet) != plan.bindings.set ||
+                c.get_decoration(ubo.id, spv::DecorationBinding) != plan.bindings.params)
+                continue;
             hexcBlock = true;
             const auto& type = c.get_type(ubo.base_type_id);
             for (uint32_t i = 0; i < type.member_types.size(); ++i) {
@@ -135,12 +143,11 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan) {
     TargetOutput out;
     out.entryPoint = "main";
-    Locate locate = [](ResourceKind kind, uint32_t index) -> nlohmann::json {
-        uint32_t binding = kind == ResourceKind::Params    ? kParamsBinding
-                           : kind == ResourceKind::Sampler ? kSamplerBinding
-                                                           : kFirstTextureBinding + index;
+    const HexcBindings& b = plan.bindings;
+    Locate locate = [&b](ResourceKind kind, uint32_t index) -> nlohmann::json {
+        uint32_t binding = kind == ResourceKind::Params ? b.params : kind == ResourceKind::Sampler ? b.sampler : b.firstTexture + index;
         const char* type = kind == ResourceKind::Params ? "uniform_buffer" : kind == ResourceKind::Sampler ? "sampler" : "sampled_image";
-        return {{"set", 0}, {"binding", binding}, {"descriptor_type", type}};
+        return {{"set", b.set}, {"binding", binding}, {"descriptor_type", type}};
     };
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };
     nlohmann::json placed = nlohmann::json::array();

@@ -65,11 +65,13 @@ public:
                               {{"id", std::to_string(*p.constantId)}, {"type", p.type}, {"name", p.name}, {"value", literal(p.value[0])}}) +
                        "\n";
         }
-        if (!members.empty()) out += expand("params", {{"members", members}}) + "\n";
-        out += expand("sampler", {{"binding", std::to_string(kSamplerBinding)}}) + "\n";
+        const HexcBindings& b = plan_.bindings;
+        const std::string set = std::to_string(b.set);
+        if (!members.empty()) out += expand("params", {{"set", set}, {"binding", std::to_string(b.params)}, {"members", members}}) + "\n";
+        out += expand("sampler", {{"set", set}, {"binding", std::to_string(b.sampler)}}) + "\n";
         // Every texture first: a slot may read another's as its height map.
         for (const SlotPlan& sp : plan_.slots)
-            out += expand("texture", {{"name", sp.slot->name}, {"binding", std::to_string(sp.binding)}}) + "\n";
+            out += expand("texture", {{"name", sp.slot->name}, {"set", set}, {"binding", std::to_string(sp.binding)}}) + "\n";
         return out;
     }
 

@@ -13,6 +13,7 @@
 #include "common/templates.h"
 #include "common/text.h"
 #include "hexc/image.h"
+#include "hexc/layout.h"
 #include "hexc/material.h"
 #include "hexc/scene.h"
 #include "material/json_locator.h"
@@ -146,6 +147,44 @@ public:
             for (size_t i = 0; passes.is_array() && i < passes.size(); ++i) scenePass(passes[i], pointerAppend("/passes", i), scene);
         }
         return scene;
+    }
+
+    // A layout file: each target's object of whole numbers, every key optional.
+    ResourceLayout runLayout(const json& doc) {
+        ResourceLayout layout;
+        layout.sourceFile = file_;
+        if (!doc.is_object()) {
+            report(Code::WrongType, "", "expected a layout object, got " + typeName(doc));
+            return layout;
+        }
+        using Fields = std::vector<std::pair<std::string, uint32_t*>>;
+        const std::vector<std::pair<std::string, Fields>> targets = {
+            {"vulkan", {{"set", &layout.vulkan.set}, {"binding", &layout.vulkan.binding}}},
+            {"hlsl",
+             {{"space", &layout.hlsl.space}, {"b", &layout.hlsl.b}, {"t", &layout.hlsl.t}, {"s", &layout.hlsl.s}, {"u", &layout.hlsl.u}}},
+            {"msl", {{"buffer", &layout.msl.buffer}, {"texture", &layout.msl.texture}, {"sampler", &layout.msl.sampler}}},
+            {"glsl", {{"binding", &layout.glsl.binding}}}};
+        std::vector<std::string> keys{"$schema"};
+        for (const auto& [target, fields] : targets) keys.push_back(target);
+        checkKeys(doc, "", keys);
+        // Vulkan guarantees 4 descriptor sets; the other limits keep every index well inside what targets accept.
+        const Range sets{0, 31, false, false, "in [0, 31]"}, indices{0, 4095, false, false, "in [0, 4095]"};
+        for (const auto& [target, fields] : targets) {
+            if (!doc.contains(target)) continue;
+            const json& t = doc[target];
+            const std::string p = "/" + target;
+            if (!t.is_object()) {
+                report(Code::WrongType, p, "expected an object, got " + typeName(t));
+                continue;
+            }
+            std::vector<std::string> names;
+            for (const auto& f : fields) names.push_back(f.first);
+            checkKeys(t, p, names);
+            for (const auto& [key, field] : fields)
+                if (t.contains(key))
+                    *field = uint32_t(whole(t[key], p + "/" + key, target == "vulkan" && key == "set" ? sets : indices, 0));
+        }
+        return layout;
     }
 
 private:
@@ -688,27 +727,40 @@ std::optional<json> parseJson(std::string_view text, const std::filesystem::path
 
 }  // namespace
 
-ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
-    ParseResult result;
+namespace {
+
+// Parses `text` and validates the document with `run`, whose result lands in `field` only when there is no error.
+template <typename Result, typename T>
+Result validate(std::string_view text, const std::filesystem::path& file, std::optional<T> Result::*field,
+                T (Validator::*run)(const json&)) {
+    Result result;
     std::optional<json> doc = parseJson(text, file, &result.diagnostics);
     if (!doc) return result;
     Validator v(text, file);
-    Material m = v.run(*doc);
+    T value = (v.*run)(*doc);
     result.diagnostics = std::move(v.diags);
-    if (!hasErrors(result.diagnostics)) result.material = std::move(m);
+    if (!hasErrors(result.diagnostics)) result.*field = std::move(value);
     return result;
 }
 
-ParseResult parseMaterialFile(const std::filesystem::path& file) {
+template <typename Result>
+Result readAndParse(const std::filesystem::path& file, const std::string& what,
+                    Result (*parse)(std::string_view, const std::filesystem::path&)) {
     std::string why;
     std::optional<std::string> text = readFile(file, &why);
-    if (!text) {
-        ParseResult r;
-        r.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {file.string()}, "", "cannot read material file: " + why));
-        return r;
-    }
-    return parseMaterial(*text, file);
+    if (text) return parse(*text, file);
+    Result r;
+    r.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {file.string()}, "", "cannot read " + what + " file: " + why));
+    return r;
 }
+
+}  // namespace
+
+ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
+    return validate(text, file, &ParseResult::material, &Validator::run);
+}
+
+ParseResult parseMaterialFile(const std::filesystem::path& file) { return readAndParse(file, "material", &parseMaterial); }
 
 bool isSceneDocument(std::string_view text) {
     Diagnostics ignored;
@@ -716,26 +768,23 @@ bool isSceneDocument(std::string_view text) {
     return doc && doc->is_object() && doc->contains("scene");
 }
 
-SceneParseResult parseSceneFile(const std::filesystem::path& file) {
-    SceneParseResult result;
-    std::string why;
-    std::optional<std::string> text = readFile(file, &why);
-    if (!text) {
-        result.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {file.string()}, "", "cannot read scene file: " + why));
-        return result;
-    }
-    return parseScene(*text, file);
-}
+SceneParseResult parseSceneFile(const std::filesystem::path& file) { return readAndParse(file, "scene", &parseScene); }
 
 SceneParseResult parseScene(std::string_view text, const std::filesystem::path& file) {
-    SceneParseResult result;
-    std::optional<json> doc = parseJson(text, file, &result.diagnostics);
-    if (!doc) return result;
-    Validator v(text, file);
-    Scene scene = v.runScene(*doc);
-    result.diagnostics = std::move(v.diags);
-    if (!hasErrors(result.diagnostics)) result.scene = std::move(scene);
-    return result;
+    return validate(text, file, &SceneParseResult::scene, &Validator::runScene);
+}
+
+LayoutParseResult parseLayout(std::string_view text, const std::filesystem::path& file) {
+    return validate(text, file, &LayoutParseResult::layout, &Validator::runLayout);
+}
+
+LayoutParseResult parseLayoutFile(const std::filesystem::path& file) { return readAndParse(file, "layout", &parseLayout); }
+
+std::string toString(const ResourceLayout& l) {
+    auto n = [](uint32_t v) { return std::to_string(v); };
+    return "vulkan " + n(l.vulkan.set) + "/" + n(l.vulkan.binding) + " hlsl space" + n(l.hlsl.space) + " b" + n(l.hlsl.b) + " t" +
+           n(l.hlsl.t) + " s" + n(l.hlsl.s) + " u" + n(l.hlsl.u) + " msl " + n(l.msl.buffer) + "/" + n(l.msl.texture) + "/" +
+           n(l.msl.sampler) + " glsl " + n(l.glsl.binding);
 }
 
 std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }

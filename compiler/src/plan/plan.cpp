@@ -125,7 +125,7 @@ LatticePlan planLattice(const HexTiling& h, bool all) {
 void planSlots(const Material& material, const CompileOptions& options, ShaderPlan& plan) {
     SlotUse use = slotUse(material, plan.templateSource);
     std::vector<const HexTiling*> latticeKeys;
-    uint32_t binding = kFirstTextureBinding;
+    uint32_t binding = plan.bindings.firstTexture;
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
         if (!use.needed[i]) {
@@ -268,6 +268,8 @@ void planParams(bool bake, ShaderPlan& plan) {
 ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     ShaderPlan plan;
     plan.materialName = material.name;
+    plan.layout = options.layout;
+    plan.bindings = HexcBindings(options.layout.vulkan);
     if (!loadTemplate(material, options, plan)) return plan;
     planSlots(material, options, plan);
     planParams(options.bake, plan);

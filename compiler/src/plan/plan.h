@@ -14,11 +14,13 @@
 
 namespace hexc {
 
-// Fixed descriptor layout, the same on every target (set 0): parameter block, one shared sampler,
-// then one texture per slot in declaration order.
-constexpr uint32_t kParamsBinding = 0;
-constexpr uint32_t kSamplerBinding = 1;
-constexpr uint32_t kFirstTextureBinding = 2;
+// hexc's descriptors in the Vulkan layout (CompileOptions::layout): parameter block, one shared sampler, then one
+// texture per slot in declaration order, from the layout's first binding on.
+struct HexcBindings {
+    uint32_t set, params, sampler, firstTexture;
+    explicit HexcBindings(const ResourceLayout::Vulkan& v)
+        : set(v.set), params(v.binding), sampler(v.binding + 1), firstTexture(v.binding + 2) {}
+};
 
 // A numeric setting the shader reads: a member of the HexcParams block, or (baked) a specialisation
 // constant that spirv-opt freezes.
@@ -63,7 +65,7 @@ struct SlotPlan {
     std::string coordinates;  // coordinates snippet: "uv", "uv.split" or "triplanar"
     std::string type;         // the GLSL type hexc_<slot> returns
     Projection projection = Projection::Uv;
-    uint32_t binding = 0;             // texture binding (set 0)
+    uint32_t binding = 0;             // texture binding (in HexcBindings::set)
     size_t lattice = 0;               // index into ShaderPlan::lattices
     bool metric = true;               // the falloff metric code is emitted (falloffcontrast != 0)
     bool gain = true;                 // the gain code is emitted (falloff != 0.5)
@@ -82,6 +84,8 @@ struct ShaderPlan {
     std::string templateShown;  // as the manifest lists it: the built-in's name as above, else as the material wrote it
     std::string templateSource;
     std::vector<SlotPlan> slots;  // only the slots the template reads
+    ResourceLayout layout;        // where hexc's resources go on each target
+    HexcBindings bindings{layout.vulkan};
     std::vector<LatticePlan> lattices;
     std::vector<ParamMember> params;       // block members first, in block order, then baked constants
     std::vector<ParamMember> specialised;  // settings fixed in the code as whole-number exponents

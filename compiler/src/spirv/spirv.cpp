@@ -58,7 +58,7 @@ spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_0;
 }  // namespace
 
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name, SourceLanguage language,
-                           const std::string& entryPoint) {
+                           const std::string& entryPoint, const ResourceLayout& layout) {
     initializeGlslang();
     SpirvResult result;
     EShLanguage lang = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
@@ -71,16 +71,21 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
     shader.setEntryPoint(entryPoint.c_str());
+    // Registers and texture units back to hexc's Vulkan bindings: shifts are unsigned and wrap, so a register above
+    // its binding still lands on it. Sources without a set or space (HLSL 5.0, OpenGL) go to hexc's set.
+    const HexcBindings b(layout.vulkan);
+    shader.setResourceSetBinding({std::to_string(b.set)});
     if (hlsl) {
-        shader.setShiftBinding(glslang::EResUbo, kParamsBinding);
-        shader.setShiftBinding(glslang::EResSampler, kSamplerBinding);
-        shader.setShiftBinding(glslang::EResTexture, kFirstTextureBinding);
+        shader.setShiftBinding(glslang::EResUbo, b.params - layout.hlsl.b);
+        shader.setShiftBinding(glslang::EResSampler, b.sampler - layout.hlsl.s);
+        shader.setShiftBinding(glslang::EResTexture, b.firstTexture - layout.hlsl.t);
     } else if (language == SourceLanguage::OpenGlGlsl) {
         // GLSL 330 carries no binding or varying location qualifiers (OpenGL matches by name): let
-        // glslang number what is missing, in declaration order, then shift textures into hexc's layout.
+        // glslang number what is missing, in declaration order, then shift into hexc's layout.
         shader.setAutoMapBindings(true);
         shader.setAutoMapLocations(true);
-        shader.setShiftBinding(glslang::EResTexture, kFirstTextureBinding);
+        shader.setShiftBinding(glslang::EResUbo, b.params - layout.glsl.binding);
+        shader.setShiftBinding(glslang::EResTexture, b.firstTexture - layout.glsl.binding);
     }
     auto messages = EShMessages(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl | EShMsgHlslOffsets : 0));
     if (!shader.parse(GetDefaultResources(), 450, false, messages)) {

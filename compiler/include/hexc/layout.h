@@ -1,0 +1,49 @@
+#pragma once
+// Where hexc's own resources (parameter block, shared sampler, one texture per slot) go on each target, so the
+// shaders fit an engine's resource layout. The template's own resources follow hexc's on each target, per register
+// class. Set from the command line or a layout file (docs/cli.md, "Resource layout").
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "hexc/diagnostics.h"
+
+namespace hexc {
+
+struct ResourceLayout {
+    // Vulkan (SPIR-V): hexc's descriptor set; the block at `binding`, the sampler at binding + 1, slot i's texture at
+    // binding + 2 + i. The template may use the rest of the set.
+    struct Vulkan {
+        uint32_t set = 0, binding = 0;
+    } vulkan;
+    // HLSL: hexc's register space (shader model 5.1 or later when not 0) and first register of each class.
+    struct Hlsl {
+        uint32_t space = 0, b = 0, t = 0, s = 0, u = 0;
+    } hlsl;
+    // MSL: hexc's first buffer, texture and sampler index.
+    struct Msl {
+        uint32_t buffer = 0, texture = 0, sampler = 0;
+    } msl;
+    // OpenGL GLSL: hexc's uniform block binding and first texture unit.
+    struct Glsl {
+        uint32_t binding = 0;
+    } glsl;
+    std::filesystem::path sourceFile;  // the layout file it came from, if any (for located errors)
+};
+
+// One line naming every field, for stamps and messages: "vulkan 0/0 hlsl space0 b0 t0 s0 u0 msl 0/0/0 glsl 0".
+std::string toString(const ResourceLayout& layout);
+
+struct LayoutParseResult {
+    std::optional<ResourceLayout> layout;
+    Diagnostics diagnostics;
+};
+
+// A layout file: {"vulkan": {"set", "binding"}, "hlsl": {"space", "b", "t", "s", "u"}, "msl": {"buffer",
+// "texture", "sampler"}, "glsl": {"binding"}}, every key optional. Errors are located in `file`.
+LayoutParseResult parseLayout(std::string_view text, const std::filesystem::path& file);
+LayoutParseResult parseLayoutFile(const std::filesystem::path& file);
+
+}  // namespace hexc

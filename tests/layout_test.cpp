@@ -1,0 +1,159 @@
+// Resource layouts (CompileOptions::layout, `--layout`, `--set` ...): each target puts hexc's resources where the
+// layout says, the manifest says the same, and a shader moved by a layout renders exactly what the default one does
+// on lavapipe, bound where the manifest says (render.cpp), on SPIR-V, HLSL and GLSL.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <fstream>
+
+#include "hexc/compiler.h"
+#include "hexc/layout.h"
+#include "support.h"
+#include "vk/render.h"
+
+using namespace hexc;
+using hexc::test::runner;
+using json = nlohmann::json;
+
+namespace {
+
+Material rock() {
+    ParseResult r = parseMaterialFile("materials/rock.json");
+    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
+    return *r.material;
+}
+
+struct NamedLayout {
+    const char* name;
+    ResourceLayout layout;
+    uint32_t shaderModel;
+};
+
+// Default; hexc in set 3 from binding 4 with every other target's bases moved; HLSL register spaces (space = set,
+// as dxc -spirv and glslang read them back).
+std::vector<NamedLayout> layouts() {
+    ResourceLayout shifted;
+    shifted.vulkan = {3, 4};
+    shifted.hlsl = {0, 2, 5, 3, 1};
+    shifted.msl = {2, 3, 1};
+    shifted.glsl = {3};
+    ResourceLayout spaces;
+    spaces.vulkan = {2, 0};
+    spaces.hlsl = {2, 1, 4, 2, 0};
+    return {{"default", {}, 50}, {"shifted", shifted, 50}, {"spaces", spaces, 51}};
+}
+
+std::string file(const CompileResult& r, const std::string& suffix) {
+    for (const OutputFile& f : r.files)
+        if (f.name.ends_with(suffix)) return f.contents;
+    ADD_FAILURE() << "no output " << suffix;
+    return {};
+}
+
+CompileResult compileWith(const NamedLayout& l) {
+    CompileOptions options;
+    options.layout = l.layout;
+    options.hlslShaderModel = l.shaderModel;
+    CompileResult r = compile(rock(), options);
+    EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    return r;
+}
+
+}  // namespace
+
+TEST(Layout, EveryTargetAndTheManifestPutHexcsResourcesWhereItSays) {
+    for (const NamedLayout& l : layouts()) {
+        SCOPED_TRACE(l.name);
+        CompileResult r = compileWith(l);
+        const ResourceLayout& L = l.layout;
+        json targets = json::parse(file(r, ".manifest.json"))["targets"];
+        // rock's slots in order: albedo, normal, roughness.
+        EXPECT_EQ(targets["spirv"]["params"],
+                  (json{{"set", L.vulkan.set}, {"binding", L.vulkan.binding}, {"descriptor_type", "uniform_buffer"}}));
+        EXPECT_EQ(targets["spirv"]["textures"]["roughness"]["binding"], L.vulkan.binding + 4);
+        const std::string space = L.hlsl.space ? ", space" + std::to_string(L.hlsl.space) : "";
+        const std::string hlsl = file(r, ".hlsl");
+        EXPECT_NE(hlsl.find("hexcTex_roughness : register(t" + std::to_string(L.hlsl.t + 2) + space + ")"), std::string::npos);
+        EXPECT_NE(hlsl.find("hexcSampler : register(s" + std::to_string(L.hlsl.s) + space + ")"), std::string::npos);
+        EXPECT_NE(hlsl.find("HexcParams : register(b" + std::to_string(L.hlsl.b) + space + ")"), std::string::npos);
+        EXPECT_EQ(targets["hlsl"]["textures"]["roughness"],
+                  (json{{"register", "t" + std::to_string(L.hlsl.t + 2)}, {"space", L.hlsl.space}}));
+        const std::string msl = file(r, ".metal");
+        EXPECT_NE(msl.find("hexcTex_roughness [[texture(" + std::to_string(L.msl.texture + 2) + ")]]"), std::string::npos);
+        EXPECT_NE(msl.find("hexcSampler [[sampler(" + std::to_string(L.msl.sampler) + ")]]"), std::string::npos);
+        EXPECT_NE(msl.find("hexcParams [[buffer(" + std::to_string(L.msl.buffer) + ")]]"), std::string::npos);
+        EXPECT_EQ(targets["msl"]["textures"]["roughness"]["texture"], L.msl.texture + 2);
+        const std::string glsl = file(r, ".frag.glsl");
+        EXPECT_NE(glsl.find("layout(binding = " + std::to_string(L.glsl.binding + 2) + ") uniform sampler2D hexcTex_roughness"),
+                  std::string::npos);
+        EXPECT_EQ(targets["glsl"]["params"]["binding"], L.glsl.binding);
+    }
+}
+
+TEST(Layout, AMovedShaderRendersWhatTheDefaultOneDoes) {
+    REQUIRE_VULKAN();
+    const View view{48, 48, {0.1, 0.2, 0.6, 0.7}};
+    const std::vector<NamedLayout> all = layouts();
+    for (vk::ExecutedTarget target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl}) {
+        Image base;
+        for (const NamedLayout& l : all) {
+            SCOPED_TRACE(std::string(l.name) + " on target " + std::to_string(int(target)));
+            CompileOptions options;
+            options.layout = l.layout;
+            options.hlslShaderModel = l.shaderModel;
+            Image image = vk::render(*runner(&whyNoVulkan), rock(), vk::RenderOutput::Shaded, "", view, target, 0, nullptr, {}, options);
+            if (&l == &all.front()) {
+                base = image;
+                // Not a blank image: three textures were read (a wrongly bound one would fail validation or read black).
+                double sum = 0;
+                for (float v : image.rgba) sum += v;
+                EXPECT_GT(sum / double(image.rgba.size()), 0.05);
+                continue;
+            }
+            ASSERT_EQ(image.rgba.size(), base.rgba.size());
+            EXPECT_EQ(std::memcmp(image.rgba.data(), base.rgba.data(), base.rgba.size() * sizeof(float)), 0);
+        }
+    }
+}
+
+TEST(Layout, FileErrorsAreLocated) {
+    LayoutParseResult r =
+        parseLayout("{\n  \"vulkan\": {\"set\": 40},\n  \"hlsl\": {\"spcae\": 1},\n  \"metal\": {}\n}", "engine.layout.json");
+    ASSERT_FALSE(r.layout);
+    std::string all = formatAll(r.diagnostics);
+    EXPECT_NE(all.find("engine.layout.json:2:21: error[HX106]: /vulkan/set: expected a number in [0, 31], got 40"), std::string::npos)
+        << all;
+    EXPECT_NE(all.find("engine.layout.json:3:12: error[HX103]: /hlsl/spcae"), std::string::npos) << all;
+    EXPECT_NE(all.find("did you mean `space`?"), std::string::npos) << all;
+    EXPECT_NE(all.find("/metal"), std::string::npos) << all;
+}
+
+TEST(Layout, CommandLineFlagsOverrideTheFileAndNeedSpacesInShaderModel51) {
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_layout_cli";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "layout.json") << R"({"vulkan": {"set": 1, "binding": 8}, "msl": {"texture": 4}})";
+    std::string err;
+    ASSERT_EQ(test::runHexc("materials/rock.json -o " + (dir / "out").string() + " --layout " + (dir / "layout.json").string() +
+                                " --binding 2 --depfile " + (dir / "rock.d").string(),
+                            &err),
+              0)
+        << err;
+    json targets = json::parse(std::ifstream(dir / "out" / "rock.manifest.json"))["targets"];
+    EXPECT_EQ(targets["spirv"]["sampler"]["set"], 1);
+    EXPECT_EQ(targets["spirv"]["sampler"]["binding"], 3);
+    EXPECT_EQ(targets["msl"]["textures"]["albedo"]["texture"], 4);
+    // The layout file is an input: the depfile names it.
+    std::ifstream dep(dir / "rock.d");
+    EXPECT_NE(std::string(std::istreambuf_iterator<char>(dep), {}).find("layout.json"), std::string::npos);
+
+    EXPECT_EQ(test::runHexc("materials/rock.json -o " + (dir / "out2").string() + " --hlsl-space 1", &err), 2);
+    EXPECT_NE(err.find("needs --hlsl-sm 51"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out2"));
+    EXPECT_EQ(test::runHexc("materials/rock.json -o " + (dir / "out3").string() + " --set 32", &err), 2);
+    std::ofstream(dir / "bad.json") << R"({"glsl": {"binding": -1}})";
+    EXPECT_EQ(test::runHexc("materials/rock.json -o " + (dir / "out4").string() + " --layout " + (dir / "bad.json").string(), &err), 1);
+    EXPECT_NE(err.find("bad.json:1:22: error[HX106]: /glsl/binding"), std::string::npos) << err;
+}
