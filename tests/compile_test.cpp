@@ -58,8 +58,40 @@ TEST_P(Example, WritesEveryTargetAndAManifest) {
     auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
     EXPECT_EQ(manifest["material"], n);
     for (const char* t : {"spirv", "hlsl", "glsl", "msl"}) EXPECT_TRUE(manifest["targets"].contains(t)) << t;
-    EXPECT_EQ(manifest["targets"]["msl"]["entry_point"], "main0");
+    // Named after the material on every target OpenGL allows, so materials can share one metallib or HLSL library.
+    for (const char* t : {"spirv", "hlsl", "msl"}) EXPECT_EQ(manifest["targets"][t]["entry_point"], n + "_frag") << t;
+    EXPECT_EQ(manifest["targets"]["glsl"]["entry_point"], "main");
     EXPECT_EQ(manifest["targets"]["hlsl"]["params"]["register"], "b0");
+}
+
+TEST(EntryPoint, EveryTargetDefinesTheNameTheManifestGives) {
+    for (const std::string& entry : {std::string(), std::string("terrainPS")}) {
+        CompileOptions options;
+        options.entryPoint = entry;
+        CompileResult r = compileExample("rock", options);
+        ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+        const std::string name = entry.empty() ? "rock_frag" : entry;
+        EXPECT_NE(disassemble(r.spirv).find("OpEntryPoint Fragment %" + name + " \"" + name + "\""), std::string::npos) << name;
+        EXPECT_NE(file(r, ".hlsl").contents.find("SPIRV_Cross_Output " + name + "(SPIRV_Cross_Input stage_input)"), std::string::npos);
+        EXPECT_NE(file(r, ".metal").contents.find("fragment " + name + "_out " + name + "("), std::string::npos);
+        EXPECT_NE(file(r, ".glsl").contents.find("void main()"), std::string::npos);
+        auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+        // The HLSL compiles again from the entry point the manifest names.
+        SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "rock.frag.hlsl", SourceLanguage::Hlsl,
+                                          manifest["targets"]["hlsl"]["entry_point"]);
+        EXPECT_FALSE(back.words.empty()) << formatAll(back.diagnostics);
+    }
+}
+
+TEST(EntryPoint, DefaultNamesAreIdentifiersAndBadOnesAreRefused) {
+    EXPECT_EQ(defaultEntryPoint("rock"), "rock_frag");
+    EXPECT_EQ(defaultEntryPoint("rock-2.depth"), "rock_2_depth_frag");
+    EXPECT_EQ(defaultEntryPoint("2rock"), "m2rock_frag");
+    for (const char* bad : {"", "2x", "gl_Main", "a-b", "float", "main0", "__x"}) EXPECT_FALSE(isEntryPointName(bad)) << bad;
+    for (const char* good : {"main", "rock_frag", "PSMain", "_x"}) EXPECT_TRUE(isEntryPointName(good)) << good;
+    std::string err;
+    EXPECT_EQ(runHexc("materials/rock.json -o /tmp/hexc_entry_bad --entry 2x", &err), 2);
+    EXPECT_NE(err.find("expected an identifier"), std::string::npos) << err;
 }
 
 TEST_P(Example, MatchesGoldenOutputs) {
@@ -84,7 +116,8 @@ TEST_P(Example, EmittedHlslCompilesWithGlslangHlslFrontEnd) {
         CompileOptions options;
         options.hlslShaderModel = sm;
         CompileResult r = compileExample(GetParam(), options);
-        SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl, "main");
+        SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl,
+                                          std::string(GetParam()) + "_frag");
         ASSERT_FALSE(back.words.empty()) << "SM " << sm << "\n" << formatAll(back.diagnostics);
         EXPECT_FALSE(optimizeSpirv(back.words, false, true).words.empty());
     }
@@ -113,7 +146,7 @@ TEST(Compile, HlslPackOffsetsMatchTheManifest) {
     // An engine fills the block by the manifest's offsets; the HLSL cbuffer must agree byte for byte.
     CompileResult r = compileExample("rock");
     auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
-    SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl, "main");
+    SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl, "rock_frag");
     ASSERT_FALSE(back.words.empty());
     spirv_cross::Compiler c(back.words);
     auto ubos = c.get_shader_resources().uniform_buffers;

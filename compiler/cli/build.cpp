@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <thread>
 #include <iostream>
 #include <map>
@@ -58,17 +59,40 @@ bool printDiagnostics(const Diagnostics& diags, const Arguments& a, bool passRea
     return !hasErrors(diags);
 }
 
+// A shader file's code without its entry point's name, which differs between variants whose code is the same: the
+// name taken out of text, OpEntryPoint and OpName (the only instructions that hold it) skipped in SPIR-V.
+std::string withoutEntryName(const std::string& file, std::string contents, const std::string& entry) {
+    if (entry.empty()) return contents;
+    if (!file.ends_with(".spv")) {
+        for (size_t at; (at = contents.find(entry)) != std::string::npos;) contents.erase(at, entry.size());
+        return contents;
+    }
+    std::vector<uint32_t> words(contents.size() / 4);
+    std::memcpy(words.data(), contents.data(), words.size() * 4);
+    std::string code(contents.data(), std::min<size_t>(contents.size(), 20));  // the header
+    for (size_t at = 5; at < words.size();) {
+        const uint32_t count = words[at] >> 16, opcode = words[at] & 0xffff;
+        if (count == 0) break;  // not SPIR-V hexc wrote; hash what was read so far
+        if (opcode != 15 && opcode != 5)
+            code.append(reinterpret_cast<const char*>(&words[at]), std::min<size_t>(count, words.size() - at) * 4);
+        at += count;
+    }
+    return code;
+}
+
 // A hash of a variant's shader code (its target files, not its manifest, which holds its own parameter values):
-// variants with equal hashes have byte-identical shaders. An up-to-date variant's files are read back.
-std::string shaderHash(const std::filesystem::path& dir, const Job& j) {
+// variants with equal hashes have identical shaders but for the entry point's name (the same for all under --entry).
+// An up-to-date variant's files are read back.
+std::string shaderHash(const std::filesystem::path& dir, const Job& j, const CompileOptions& options) {
+    const std::string entry = options.entryPoint.empty() ? defaultEntryPoint(j.material.name) : "";
     ContentHash h;
     if (!j.upToDate) {
         for (const OutputFile& f : j.result.files)
-            if (!f.name.ends_with(".manifest.json")) h.add(f.contents);
+            if (!f.name.ends_with(".manifest.json")) h.add(withoutEntryName(f.name, f.contents, entry));
         return h.hex(12);
     }
     for (const std::string& name : stampedOutputs(dir, j.material.name))
-        if (!name.ends_with(".manifest.json")) h.add(readFile(dir / name).value_or(""));
+        if (!name.ends_with(".manifest.json")) h.add(withoutEntryName(name, readFile(dir / name).value_or(""), entry));
     return h.hex(12);
 }
 
@@ -190,7 +214,7 @@ void addSceneIndex(const Arguments& a, const SceneSummary& s, const std::vector<
     std::map<std::string, std::string> firstWith;  // shader hash -> the first variant with it
     for (const std::string& v : s.variants) {
         const Job& j = *std::find_if(jobs.begin(), jobs.end(), [&](const Job& job) { return job.material.name == v; });
-        const std::string hash = shaderHash(a.outDir, j);
+        const std::string hash = shaderHash(a.outDir, j, a.options);
         index["variants"][v] = {{"manifest", v + ".manifest.json"}, {"shader", hash}};
         if (auto [first, fresh] = firstWith.emplace(hash, v); !fresh) {
             ++out.deduplicated;

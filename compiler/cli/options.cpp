@@ -121,6 +121,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     app.add_option("--template", a.options.templateFile, "use this template instead of the material's (docs/templates.md)")
         ->type_name("FILE.glsl")
         ->check(CLI::Validator([](std::string& f) { return f.ends_with(".glsl") ? "" : "expected a .glsl file, got " + f; }, ""));
+    app.add_option("--entry", a.options.entryPoint, "fragment entry point on every target but OpenGL GLSL (default <material>_frag)")
+        ->type_name("NAME")
+        ->check(CLI::Validator([](std::string& n) { return isEntryPointName(n) ? "" : "expected an identifier (not reserved), got " + n; },
+                               ""));
     app.add_option("--hlsl-sm", a.options.hlslShaderModel, "HLSL shader model (default 50)")
         ->check(CLI::IsMember({50, 51, 60, 61, 62, 63, 64, 65, 66}));
     app.add_option("--glsl-version", glsl, "GLSL version (default 450)")->check(CLI::IsMember({"450", "330", "310es"}));

@@ -5,7 +5,9 @@
 #include <spirv_cross_error_handling.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
+#include <set>
 
 #include "backends/backends.h"
 #include "codegen/codegen.h"
@@ -21,6 +23,25 @@ std::string toolchainVersions() {
     return "glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
            std::to_string(GLSLANG_VERSION_PATCH) + GLSLANG_VERSION_FLAVOR + "\nSPIRV-Tools " + spvSoftwareVersionString() +
            "\nSPIRV-Cross " + HEXC_SPIRV_CROSS_VERSION;
+}
+
+std::string defaultEntryPoint(std::string_view material) {
+    std::string name(material);
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    // An identifier cannot start with a digit; material names may.
+    return (std::isdigit(static_cast<unsigned char>(name[0])) ? "m" : "") + name + "_frag";
+}
+
+bool isEntryPointName(std::string_view name) {
+    static const std::set<std::string_view> reserved = {
+        "main0",  "void",      "float", "int",      "bool",    "struct", "return",   "if",      "else",    "for",    "while",
+        "do",     "in",        "out",   "inout",    "uniform", "const",  "true",     "false",   "discard", "vertex", "fragment",
+        "kernel", "namespace", "using", "template", "class",   "static", "register", "texture", "sampler"};
+    if (name.empty() || name.size() > 64 || std::isdigit(static_cast<unsigned char>(name[0])) || name.starts_with("gl_") ||
+        name.starts_with("__") || reserved.count(name))
+        return false;
+    return std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 std::string shaderFileName(std::string_view material, Target target) {
@@ -49,7 +70,7 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     if (hasErrors(plan.diagnostics)) return;
 
     result.glsl = generateGlsl(plan);
-    SpirvResult front = compileToSpirv(result.glsl, ShaderStage::Fragment, plan.templateName);
+    SpirvResult front = compileToSpirv(result.glsl, ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl, plan.entryPoint);
     append(result.diagnostics, front.diagnostics);
     if (front.words.empty()) return;
     SpirvResult optimized = optimizeSpirv(front.words, options.bake);

@@ -161,6 +161,10 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     // Bound where the manifest says, as an engine would: the shared sampler follows the parameter block.
     const nlohmann::json& sampler = manifest["targets"]["spirv"]["sampler"];
     request.set = sampler["set"];
+    // glslang keeps an HLSL entry point's name; OpenGL GLSL's is `main`.
+    request.fragmentEntry = manifest["targets"][target == ExecutedTarget::Glsl   ? "glsl"
+                                                : target == ExecutedTarget::Hlsl ? "hlsl"
+                                                                                 : "spirv"]["entry_point"];
     request.firstBinding = sampler["binding"].get<uint32_t>() - 1;
     request.uniformData = packParameters(manifest, parameters);
     // Textures in manifest order, which is binding order.

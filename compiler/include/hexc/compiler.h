@@ -30,6 +30,8 @@ struct CompileOptions {
     // uniforms (one shader then serves one material only). Per-frame values stay uniforms.
     bool bake = false;
     ResourceLayout layout;  // where hexc's own resources go on each target
+    // The fragment entry point on every target but OpenGL GLSL (always `main`); empty: defaultEntryPoint(material).
+    std::string entryPoint;
 };
 
 struct OutputFile {
@@ -53,6 +55,13 @@ const char* version();
 // The shader tool chain hexc is built with, one per line: "glslang 12.0.0", "SPIRV-Tools v2022.4 ...",
 // "SPIRV-Cross 1.3.239.0+dfsg1-1" (the Debian package's version; SPIRV-Cross has no version of its own).
 std::string toolchainVersions();
+
+// `<material>_frag`, with characters an identifier cannot hold (a scene variant's `.`, `-`) as `_`, so that
+// materials and scene variants can share one library (a metallib, an HLSL effect) without a clash.
+std::string defaultEntryPoint(std::string_view material);
+
+// Whether `name` can be an entry point on every target: an identifier, not reserved by GLSL (`gl_`) or a language.
+bool isEntryPointName(std::string_view name);
 
 // The file a material's shader for `target` is written to: "<material>.frag.{spv,hlsl,glsl,metal}".
 std::string shaderFileName(std::string_view material, Target target);

@@ -24,7 +24,8 @@ struct SpirvResult {
 // Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
 // the source in diagnostics when it has no #line names. HLSL registers and OpenGL texture units placed by `layout`
 // map back to its Vulkan bindings (by default b0 -> binding 0, s0 -> 1, t<i> and texture unit i -> 2+i; docs/cli.md);
-// an HLSL register space N is descriptor set N, as with dxc -spirv.
+// an HLSL register space N is descriptor set N, as with dxc -spirv. `entryPoint`: the HLSL function to compile, or
+// the name a GLSL shader's `main` gets in the module.
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
                            SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main",
                            const ResourceLayout& layout = {});

@@ -92,7 +92,7 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
 
     TargetOutput out;
     out.source = c.compile();
-    out.entryPoint = "main";
+    out.entryPoint = "main";  // OpenGL has no other
     const bool byName = !hasBindingQualifiers(options);
     Locate locate = [base, byName](ResourceKind kind, uint32_t index) -> nlohmann::json {
         if (kind == ResourceKind::Sampler) return {{"combined_into_textures", true}};

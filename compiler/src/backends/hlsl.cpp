@@ -85,7 +85,13 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
 
     TargetOutput out;
     out.source = c.compile();
-    out.entryPoint = c.get_cleansed_entry_point_name("main", spv::ExecutionModelFragment);
+    // SPIRV-Cross names the HLSL entry function `main` whatever the module's entry point is: give it the plan's.
+    for (std::string_view head : {"\nSPIRV_Cross_Output main(", "\nvoid main("})
+        if (size_t at = out.source.find(head); at != std::string::npos) {
+            out.source.replace(at + head.size() - 5, 4, plan.entryPoint);
+            break;
+        }
+    out.entryPoint = plan.entryPoint;
     Locate locate = [&l](ResourceKind kind, uint32_t index) -> nlohmann::json {
         std::string reg = kind == ResourceKind::Params    ? "b" + std::to_string(l.b)
                           : kind == ResourceKind::Sampler ? "s" + std::to_string(l.s)

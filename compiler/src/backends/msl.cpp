@@ -48,7 +48,7 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
 
     TargetOutput out;
     out.source = c.compile();
-    out.entryPoint = c.get_cleansed_entry_point_name("main", spv::ExecutionModelFragment);
+    out.entryPoint = c.get_cleansed_entry_point_name(plan.entryPoint, spv::ExecutionModelFragment);
     Locate locate = [&l](ResourceKind kind, uint32_t index) -> nlohmann::json {
         if (kind == ResourceKind::Params) return {{"buffer", l.buffer}};
         if (kind == ResourceKind::Sampler) return {{"sampler", l.sampler}};

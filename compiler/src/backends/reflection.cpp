@@ -142,7 +142,7 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
 
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan) {
     TargetOutput out;
-    out.entryPoint = "main";
+    out.entryPoint = plan.entryPoint;
     const HexcBindings& b = plan.bindings;
     Locate locate = [&b](ResourceKind kind, uint32_t index) -> nlohmann::json {
         uint32_t binding = kind == ResourceKind::Params ? b.params : kind == ResourceKind::Sampler ? b.sampler : b.firstTexture + index;

@@ -269,6 +269,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     ShaderPlan plan;
     plan.materialName = material.name;
     plan.layout = options.layout;
+    plan.entryPoint = options.entryPoint.empty() ? defaultEntryPoint(material.name) : options.entryPoint;
     plan.bindings = HexcBindings(options.layout.vulkan);
     if (!loadTemplate(material, options, plan)) return plan;
     planSlots(material, options, plan);

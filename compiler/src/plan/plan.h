@@ -85,6 +85,7 @@ struct ShaderPlan {
     std::string templateSource;
     std::vector<SlotPlan> slots;  // only the slots the template reads
     ResourceLayout layout;        // where hexc's resources go on each target
+    std::string entryPoint;       // the SPIR-V entry point, which HLSL and MSL keep
     HexcBindings bindings{layout.vulkan};
     std::vector<LatticePlan> lattices;
     std::vector<ParamMember> params;       // block members first, in block order, then baked constants

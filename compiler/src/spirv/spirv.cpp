@@ -71,6 +71,8 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
     shader.setEntryPoint(entryPoint.c_str());
+    // GLSL's function is `main` whatever the module calls its entry point.
+    if (!hlsl) shader.setSourceEntryPoint("main");
     // Registers and texture units back to hexc's Vulkan bindings: shifts are unsigned and wrap, so a register above
     // its binding still lands on it. Sources without a set or space (HLSL 5.0, OpenGL) go to hexc's set.
     const HexcBindings b(layout.vulkan);

@@ -221,7 +221,7 @@ void frag_main()
     o_color = float4(((((_3501 * _3795.x) + (_3511 * _3795.y)) + (_3525 * _3795.z)).xyz * (0.1500000059604644775390625f + _1844)) + (0.039999999105930328369140625f * (((pow(max(dot(_1837, float3(0.21418631076812744140625f, 0.21418631076812744140625f, 0.95302069187164306640625f)), 0.0f), _1857 - 2.0f) * (_1857 + 6.0f)) * 0.0397887341678142547607421875f) * _1844)).xxx, 1.0f);
 }
 
-SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+SPIRV_Cross_Output rock_frag(SPIRV_Cross_Input stage_input)
 {
     v_uv = stage_input.v_uv;
     v_normal = stage_input.v_normal;

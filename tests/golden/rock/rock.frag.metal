@@ -12,21 +12,21 @@ struct HexcParams
     float roughness_falloffcontrast;
 };
 
-struct main0_out
+struct rock_frag_out
 {
     float4 o_color [[color(0)]];
 };
 
-struct main0_in
+struct rock_frag_in
 {
     float2 v_uv [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
     float4 v_tangent [[user(locn2)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_albedo [[texture(0)]], texture2d<float> hexcTex_normal [[texture(1)]], texture2d<float> hexcTex_roughness [[texture(2)]], sampler hexcSampler [[sampler(0)]])
+fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_albedo [[texture(0)]], texture2d<float> hexcTex_normal [[texture(1)]], texture2d<float> hexcTex_roughness [[texture(2)]], sampler hexcSampler [[sampler(0)]])
 {
-    main0_out out = {};
+    rock_frag_out out = {};
     float2 _1910 = in.v_uv * hexcParams.albedo_tiling;
     float2 _1912 = dfdx(_1910);
     float2 _1914 = dfdy(_1910);

@@ -158,7 +158,7 @@ void frag_main()
     o_color = float4((0.5f.xxx * (0.1500000059604644775390625f + _1513)) + (0.039999999105930328369140625f * ((pow(max(dot(_1506, float3(0.21418631076812744140625f, 0.21418631076812744140625f, 0.95302069187164306640625f)), 0.0f), 30.0f) * 1.511971950531005859375f) * _1513)).xxx, 1.0f);
 }
 
-SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+SPIRV_Cross_Output rock_normal_frag(SPIRV_Cross_Input stage_input)
 {
     v_normal = stage_input.v_normal;
     v_tangent = stage_input.v_tangent;

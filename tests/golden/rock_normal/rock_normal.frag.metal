@@ -10,21 +10,21 @@ struct HexcParams
     float normal_falloffcontrast;
 };
 
-struct main0_out
+struct rock_normal_frag_out
 {
     float4 o_color [[color(0)]];
 };
 
-struct main0_in
+struct rock_normal_frag_in
 {
     float2 v_uv [[user(locn0)]];
     float3 v_normal [[user(locn1)]];
     float4 v_tangent [[user(locn2)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_normal [[texture(0)]], sampler hexcSampler [[sampler(0)]])
+fragment rock_normal_frag_out rock_normal_frag(rock_normal_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_normal [[texture(0)]], sampler hexcSampler [[sampler(0)]])
 {
-    main0_out out = {};
+    rock_normal_frag_out out = {};
     float3 _1461 = fast::normalize(in.v_normal);
     float3 _1474 = fast::normalize(in.v_tangent.xyz - (_1461 * dot(_1461, in.v_tangent.xyz)));
     float2 _1583 = in.v_uv * hexcParams.normal_tiling;

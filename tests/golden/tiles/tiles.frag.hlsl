@@ -111,7 +111,7 @@ void frag_main()
     o_color = ((_2942 * _3236.x) + (_2952 * _3236.y)) + (_2966 * _3236.z);
 }
 
-SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+SPIRV_Cross_Output tiles_frag(SPIRV_Cross_Input stage_input)
 {
     v_uv = stage_input.v_uv;
     frag_main();

@@ -11,19 +11,19 @@ struct HexcParams
 
 constant uint _4085 = {};
 
-struct main0_out
+struct tiles_frag_out
 {
     float4 o_color [[color(0)]];
 };
 
-struct main0_in
+struct tiles_frag_in
 {
     float2 v_uv [[user(locn0)]];
 };
 
-fragment main0_out main0(main0_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_albedo [[texture(0)]], sampler hexcSampler [[sampler(0)]])
+fragment tiles_frag_out tiles_frag(tiles_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_albedo [[texture(0)]], sampler hexcSampler [[sampler(0)]])
 {
-    main0_out out = {};
+    tiles_frag_out out = {};
     float2 _1354 = in.v_uv * hexcParams.albedo_tiling;
     float2 _1356 = dfdx(_1354);
     float2 _1358 = dfdy(_1354);
