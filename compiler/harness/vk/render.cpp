@@ -129,9 +129,39 @@ std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const Parame
     return bytes;
 }
 
+namespace {
+
+// The template's resources where the SPIR-V manifest says the template declared them. A shader whose template
+// declares resources `own` does not provide cannot be drawn (unbound descriptors are undefined behaviour, and
+// lavapipe crashes): std::invalid_argument naming them.
+void bindTemplateInputs(const nlohmann::json& manifest, ExecutedTarget target, const TemplateInputs& own, RenderRequest& request) {
+    const nlohmann::json listed = manifest["targets"]["spirv"].value("template_resources", nlohmann::json::array());
+    std::string missing;
+    for (const nlohmann::json& r : listed) {
+        const std::string name = r["name"];
+        const bool push = r["kind"] == "push_constant";
+        if (push ? own.pushConstants.empty() : !own.resources.count(name)) missing += (missing.empty() ? "" : ", ") + name;
+        if (push || !own.resources.count(name)) continue;
+        TemplateResource placed = own.resources.at(name);
+        placed.set = r["vulkan"]["set"];
+        placed.binding = r["vulkan"]["binding"];
+        request.templateResources.push_back(std::move(placed));
+    }
+    if (!missing.empty())
+        throw std::invalid_argument("template " + manifest["template"].get<std::string>() + " declares resources of its own (" + missing +
+                                    ") that only the engine can bind; render a slot output instead (--output albedo, normal, ...)");
+    if (request.templateResources.size() != own.resources.size())
+        throw std::invalid_argument("a template resource given is not in the manifest");
+    if (!listed.empty() && target != ExecutedTarget::Spirv)
+        throw std::invalid_argument("a template's own resources are bound for the SPIR-V target only");
+    request.fragmentPushConstants = own.pushConstants;
+}
+
+}  // namespace
+
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
              ExecutedTarget target, int timedFrames, std::vector<double>* frameMs, const ParameterValues& parameters,
-             const CompileOptions& compileOptions) {
+             const CompileOptions& compileOptions, const TemplateInputs& own) {
     Material m = renderedMaterial(material, output, slotName);
     CompileOptions options = compileOptions;
     options.targets = {Target::Spirv, target == ExecutedTarget::Hlsl ? Target::Hlsl : Target::Glsl};
@@ -167,6 +197,7 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
                                                                                  : "spirv"]["entry_point"];
     request.firstBinding = sampler["binding"].get<uint32_t>() - 1;
     request.uniformData = packParameters(manifest, parameters);
+    bindTemplateInputs(manifest, target, own, request);
     // Textures in manifest order, which is binding order.
     std::vector<Texture> textures;
     for (const auto& s : manifest["slots"]) {

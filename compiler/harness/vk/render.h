@@ -38,12 +38,19 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
 // Parameter values by member name, replacing the material's (e.g. a split-coordinates origin).
 using ParameterValues = std::map<std::string, std::vector<double>>;
 
+// What a template of the engine's binds beside hexc's: its resources by name (set and binding are taken from the
+// manifest, as an engine would) and its fragment push constant bytes from offset 16 (runner.h). SPIR-V target only.
+struct TemplateInputs {
+    std::map<std::string, TemplateResource> resources;
+    std::vector<uint8_t> pushConstants;
+};
+
 // Compiles (throws CompileError on failure; `compileOptions` apart from its targets apply), uploads and
 // draws. `frameMs`, if given, receives one GPU time per timed frame (`timedFrames` after one untimed
 // warm-up frame).
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
              ExecutedTarget target = ExecutedTarget::Spirv, int timedFrames = 0, std::vector<double>* frameMs = nullptr,
-             const ParameterValues& parameters = {}, const CompileOptions& compileOptions = {});
+             const ParameterValues& parameters = {}, const CompileOptions& compileOptions = {}, const TemplateInputs& own = {});
 
 // Draws a fragment shader of the embedded templates (no material) with the given uniform block.
 Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view);

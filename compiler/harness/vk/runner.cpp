@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <string_view>
 
@@ -70,7 +72,8 @@ private:
 
 constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-constexpr uint32_t kFirstTextureBinding = 2;
+// The vertex shader's uv rectangle takes push constant bytes 0..15; a fragment shader's own start after it.
+constexpr uint32_t kFragmentPushOffset = sizeof(RenderRequest::uvRect);
 
 }  // namespace
 
@@ -415,7 +418,16 @@ void validate(const VulkanContext& ctx, const RenderRequest& req) {
     if (req.textures.size() > limits.maxPerStageDescriptorSampledImages) fail("too many textures for the device");
     if (req.set >= limits.maxBoundDescriptorSets)
         fail("descriptor set " + std::to_string(req.set) + " is beyond the device's " + std::to_string(limits.maxBoundDescriptorSets));
-    for (const Texture* t : req.textures) {
+    if (req.fragmentPushConstants.size() % 4 || kFragmentPushOffset + req.fragmentPushConstants.size() > limits.maxPushConstantsSize)
+        fail("fragment push constants must be a multiple of 4 bytes within the device's push constant size");
+    std::vector<const Texture*> textures = req.textures;
+    for (const TemplateResource& r : req.templateResources) {
+        const bool image = r.kind == TemplateResource::Kind::CombinedImageSampler || r.kind == TemplateResource::Kind::SampledImage;
+        if (image) textures.push_back(r.texture);
+        if (r.kind == TemplateResource::Kind::UniformBuffer && r.data.size() > limits.maxUniformBufferRange)
+            fail("a template's uniform data is larger than the device allows");
+    }
+    for (const Texture* t : textures) {
         const size_t values = t ? size_t(t->width) * t->height * 4 : 0;
         if (!t || t->width <= 0 || t->height <= 0 || uint32_t(std::max(t->width, t->height)) > limits.maxImageDimension2D ||
             (t->isFloat() ? t->rgba32f.size() : t->rgba8.size()) != values)
@@ -575,53 +587,66 @@ std::string Runner::deviceName() const { return ctx_->properties.deviceName; }
 
 namespace {
 
-// hexc's descriptor set as the request lays it out: parameter block, sampler, then the textures.
-std::vector<VkDescriptorSetLayoutBinding> setBindings(const RenderRequest& req) {
-    std::vector<VkDescriptorSetLayoutBinding> bindings(kFirstTextureBinding + req.textures.size());
-    for (uint32_t i = 0; i < bindings.size(); ++i) {
-        bindings[i].binding = req.firstBinding + i;
-        bindings[i].descriptorType = i == 0                 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                     : i == 1               ? VK_DESCRIPTOR_TYPE_SAMPLER
-                                     : req.combinedSamplers ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
-                                                            : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-        bindings[i].descriptorCount = 1;
-        bindings[i].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
-    }
-    return bindings;
+// One descriptor the draw binds: hexc's (parameter block, sampler, textures) or one of the template's own.
+struct Descriptor {
+    uint32_t set = 0, binding = 0;
+    VkDescriptorType type{};
+    VkDescriptorBufferInfo buffer{};  // uniform buffers
+    VkDescriptorImageInfo image{};    // samplers and images
+};
+
+// Every descriptor of the request: hexc's block, sampler and textures, then the template's resources in request
+// order (what fillDescriptors relies on). Throws when two share a set and binding.
+std::vector<Descriptor> descriptorsOf(const RenderRequest& req) {
+    std::vector<Descriptor> d = {{req.set, req.firstBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                 {req.set, req.firstBinding + 1, VK_DESCRIPTOR_TYPE_SAMPLER}};
+    const VkDescriptorType texture = req.combinedSamplers ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    for (uint32_t i = 0; i < req.textures.size(); ++i) d.push_back({req.set, req.firstBinding + 2 + i, texture});
+    static const VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                             VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLER};
+    for (const TemplateResource& r : req.templateResources) d.push_back({r.set, r.binding, types[int(r.kind)]});
+    std::set<std::pair<uint32_t, uint32_t>> taken;
+    for (const Descriptor& x : d)
+        if (!taken.emplace(x.set, x.binding).second)
+            throw std::runtime_error("vk::Runner::render: set " + std::to_string(x.set) + ", binding " + std::to_string(x.binding) +
+                                     " is bound twice");
+    return d;
 }
 
-// The set layout and the pipeline layout (hexc's set `set`, empty sets below it, and the vertex shader's uv
-// rectangle as a push constant).
-std::pair<VkDescriptorSetLayout, VkPipelineLayout> createLayouts(VulkanContext& ctx,
-                                                                 const std::vector<VkDescriptorSetLayoutBinding>& bindings, uint32_t set,
-                                                                 Cleanup& cleanup) {
+// One set layout per set up to the highest used (empty ones between), and the pipeline layout: those sets, the
+// vertex shader's uv rectangle as push constant bytes 0..15 and the fragment shader's own bytes from 16.
+std::pair<std::vector<VkDescriptorSetLayout>, VkPipelineLayout> createLayouts(VulkanContext& ctx,
+                                                                              const std::vector<Descriptor>& descriptors,
+                                                                              uint32_t fragmentPushBytes, Cleanup& cleanup) {
     const VkDevice dev = ctx.device;
-    VkDescriptorSetLayoutCreateInfo setLayoutInfo{};
-    setLayoutInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-    setLayoutInfo.bindingCount = uint32_t(bindings.size());
-    setLayoutInfo.pBindings = bindings.data();
-    VkDescriptorSetLayout setLayout;
-    VK_CHECK(vkCreateDescriptorSetLayout, dev, &setLayoutInfo, nullptr, &setLayout);
-    cleanup.defer([dev, setLayout] { vkDestroyDescriptorSetLayout(dev, setLayout, nullptr); });
-    std::vector<VkDescriptorSetLayout> sets(set + 1, setLayout);
-    if (set > 0) {
-        setLayoutInfo.bindingCount = 0;
-        VK_CHECK(vkCreateDescriptorSetLayout, dev, &setLayoutInfo, nullptr, &sets[0]);
-        cleanup.defer([dev, empty = sets[0]] { vkDestroyDescriptorSetLayout(dev, empty, nullptr); });
-        std::fill(sets.begin(), sets.end() - 1, sets[0]);
+    uint32_t sets = 0;
+    for (const Descriptor& d : descriptors) sets = std::max(sets, d.set + 1);
+    std::vector<std::vector<VkDescriptorSetLayoutBinding>> bySet(sets);
+    for (const Descriptor& d : descriptors) bySet[d.set].push_back({d.binding, d.type, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    std::vector<VkDescriptorSetLayout> setLayouts;
+    for (const auto& bindings : bySet) {
+        VkDescriptorSetLayoutCreateInfo setLayoutInfo{};
+        setLayoutInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+        setLayoutInfo.bindingCount = uint32_t(bindings.size());
+        setLayoutInfo.pBindings = bindings.data();
+        VkDescriptorSetLayout setLayout;
+        VK_CHECK(vkCreateDescriptorSetLayout, dev, &setLayoutInfo, nullptr, &setLayout);
+        cleanup.defer([dev, setLayout] { vkDestroyDescriptorSetLayout(dev, setLayout, nullptr); });
+        setLayouts.push_back(setLayout);
     }
 
-    VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(RenderRequest::uvRect)};
+    const VkPushConstantRange pushRanges[] = {{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(RenderRequest::uvRect)},
+                                              {VK_SHADER_STAGE_FRAGMENT_BIT, kFragmentPushOffset, fragmentPushBytes}};
     VkPipelineLayoutCreateInfo layoutInfo{};
     layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-    layoutInfo.setLayoutCount = uint32_t(sets.size());
-    layoutInfo.pSetLayouts = sets.data();
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &pushRange;
+    layoutInfo.setLayoutCount = uint32_t(setLayouts.size());
+    layoutInfo.pSetLayouts = setLayouts.data();
+    layoutInfo.pushConstantRangeCount = fragmentPushBytes ? 2 : 1;
+    layoutInfo.pPushConstantRanges = pushRanges;
     VkPipelineLayout layout;
     VK_CHECK(vkCreatePipelineLayout, dev, &layoutInfo, nullptr, &layout);
     cleanup.defer([dev, layout] { vkDestroyPipelineLayout(dev, layout, nullptr); });
-    return {setLayout, layout};
+    return {setLayouts, layout};
 }
 
 // The colour render target (also the copy source) and the framebuffer over it and a depth buffer.
@@ -655,15 +680,36 @@ HostBuffer createUniforms(VulkanContext& ctx, const std::vector<uint8_t>& data, 
     return uniforms;
 }
 
-// Allocates set 0 from a pool of its own and points it at the uniforms, the sampler and the texture views.
-VkDescriptorSet createSet(VulkanContext& ctx, const std::vector<VkDescriptorSetLayoutBinding>& bindings, VkDescriptorSetLayout setLayout,
-                          VkBuffer uniforms, const std::vector<VkImageView>& textureViews, bool combined, Cleanup& cleanup) {
+// Points each descriptor at what it binds: the parameter block, the shared sampler, hexc's texture views, then the
+// template's buffers and views (one per resource; unused entries for samplers), in descriptorsOf's order.
+void fillDescriptors(const VulkanContext& ctx, const RenderRequest& req, std::vector<Descriptor>& d, VkBuffer uniforms,
+                     const std::vector<VkImageView>& textureViews, const std::vector<VkBuffer>& ownBuffers,
+                     const std::vector<VkImageView>& ownViews) {
+    d[0].buffer = {uniforms, 0, VK_WHOLE_SIZE};
+    d[1].image = {ctx.sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
+    for (size_t i = 0; i < textureViews.size(); ++i)
+        d[2 + i].image = {req.combinedSamplers ? ctx.sampler : VK_NULL_HANDLE, textureViews[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    for (size_t j = 0; j < req.templateResources.size(); ++j) {
+        Descriptor& x = d[2 + textureViews.size() + j];
+        if (x.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            x.buffer = {ownBuffers[j], 0, VK_WHOLE_SIZE};
+        else
+            x.image = {x.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE ? VK_NULL_HANDLE : ctx.sampler, ownViews[j],
+                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
+}
+
+// Allocates every set from a pool of its own and writes the descriptors.
+std::vector<VkDescriptorSet> createSets(VulkanContext& ctx, const std::vector<Descriptor>& descriptors,
+                                        const std::vector<VkDescriptorSetLayout>& setLayouts, Cleanup& cleanup) {
     const VkDevice dev = ctx.device;
-    std::vector<VkDescriptorPoolSize> poolSizes = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_SAMPLER, 1}};
-    if (!textureViews.empty()) poolSizes.push_back({bindings[kFirstTextureBinding].descriptorType, uint32_t(textureViews.size())});
+    std::map<VkDescriptorType, uint32_t> counts;
+    for (const Descriptor& d : descriptors) ++counts[d.type];
+    std::vector<VkDescriptorPoolSize> poolSizes;
+    for (const auto& [type, count] : counts) poolSizes.push_back({type, count});
     VkDescriptorPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-    poolInfo.maxSets = 1;
+    poolInfo.maxSets = uint32_t(setLayouts.size());
     poolInfo.poolSizeCount = uint32_t(poolSizes.size());
     poolInfo.pPoolSizes = poolSizes.data();
     VkDescriptorPool descriptorPool;
@@ -672,32 +718,26 @@ VkDescriptorSet createSet(VulkanContext& ctx, const std::vector<VkDescriptorSetL
     VkDescriptorSetAllocateInfo setInfo{};
     setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
     setInfo.descriptorPool = descriptorPool;
-    setInfo.descriptorSetCount = 1;
-    setInfo.pSetLayouts = &setLayout;
-    VkDescriptorSet set;
-    VK_CHECK(vkAllocateDescriptorSets, dev, &setInfo, &set);
+    setInfo.descriptorSetCount = uint32_t(setLayouts.size());
+    setInfo.pSetLayouts = setLayouts.data();
+    std::vector<VkDescriptorSet> sets(setLayouts.size());
+    VK_CHECK(vkAllocateDescriptorSets, dev, &setInfo, sets.data());
 
-    const VkDescriptorBufferInfo uniformInfo{uniforms, 0, VK_WHOLE_SIZE};
-    const VkDescriptorImageInfo samplerInfo{ctx.sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
-    std::vector<VkDescriptorImageInfo> imageInfos;
-    for (VkImageView view : textureViews)
-        imageInfos.push_back({combined ? ctx.sampler : VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-    std::vector<VkWriteDescriptorSet> writes(bindings.size());
-    for (uint32_t i = 0; i < writes.size(); ++i) {
+    std::vector<VkWriteDescriptorSet> writes(descriptors.size());
+    for (size_t i = 0; i < writes.size(); ++i) {
+        const Descriptor& d = descriptors[i];
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        writes[i].dstSet = set;
-        writes[i].dstBinding = bindings[i].binding;
+        writes[i].dstSet = sets[d.set];
+        writes[i].dstBinding = d.binding;
         writes[i].descriptorCount = 1;
-        writes[i].descriptorType = bindings[i].descriptorType;
-        if (i == 0)
-            writes[i].pBufferInfo = &uniformInfo;
-        else if (i == 1)
-            writes[i].pImageInfo = &samplerInfo;
+        writes[i].descriptorType = d.type;
+        if (d.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+            writes[i].pBufferInfo = &d.buffer;
         else
-            writes[i].pImageInfo = &imageInfos[i - kFirstTextureBinding];
+            writes[i].pImageInfo = &d.image;
     }
     vkUpdateDescriptorSets(dev, uint32_t(writes.size()), writes.data(), 0, nullptr);
-    return set;
+    return sets;
 }
 
 // Everything one draw binds.
@@ -706,10 +746,10 @@ struct Draw {
     VkFramebuffer framebuffer;
     VkPipeline pipeline;
     VkPipelineLayout layout;
-    VkDescriptorSet set;
-    uint32_t setIndex;
+    std::vector<VkDescriptorSet> sets;  // set i at index i
     uint32_t width, height;
     std::array<float, 4> uvRect;
+    std::vector<uint8_t> fragmentPush;
 };
 
 void recordDraw(VkCommandBuffer cb, const Draw& d) {
@@ -724,8 +764,11 @@ void recordDraw(VkCommandBuffer cb, const Draw& d) {
     passInfo.pClearValues = clears;
     vkCmdBeginRenderPass(cb, &passInfo, VK_SUBPASS_CONTENTS_INLINE);
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline);
-    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, d.layout, d.setIndex, 1, &d.set, 0, nullptr);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, d.layout, 0, uint32_t(d.sets.size()), d.sets.data(), 0, nullptr);
     vkCmdPushConstants(cb, d.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(d.uvRect), d.uvRect.data());
+    if (!d.fragmentPush.empty())
+        vkCmdPushConstants(cb, d.layout, VK_SHADER_STAGE_FRAGMENT_BIT, kFragmentPushOffset, uint32_t(d.fragmentPush.size()),
+                           d.fragmentPush.data());
     vkCmdDraw(cb, 3, 1, 0, 0);
     vkCmdEndRenderPass(cb);
 }
@@ -796,14 +839,18 @@ RenderResult Runner::render(const RenderRequest& req) {
     } waitIdle{ctx.device};
     const uint32_t width = uint32_t(req.width), height = uint32_t(req.height);
 
-    const std::vector<VkDescriptorSetLayoutBinding> bindings = setBindings(req);
-    const auto [setLayout, layout] = createLayouts(ctx, bindings, req.set, cleanup);
+    std::vector<Descriptor> descriptors = descriptorsOf(req);
+    const auto [setLayouts, layout] = createLayouts(ctx, descriptors, uint32_t(req.fragmentPushConstants.size()), cleanup);
     const VkRenderPass pass = createRenderPass(ctx, cleanup);
     const VkPipeline pipeline = createPipeline(ctx, req, layout, pass, cleanup);
     const auto [color, framebuffer] = createTarget(ctx, pass, width, height, cleanup);
     const VkDeviceSize imageBytes = VkDeviceSize(width) * height * 4 * sizeof(float);
     const HostBuffer readback = createHostBuffer(ctx, imageBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, cleanup);
     const HostBuffer uniforms = createUniforms(ctx, req.uniformData, cleanup);
+    std::vector<VkBuffer> ownBuffers;
+    for (const TemplateResource& r : req.templateResources)
+        ownBuffers.push_back(r.kind == TemplateResource::Kind::UniformBuffer ? createUniforms(ctx, r.data, cleanup).buffer
+                                                                             : VK_NULL_HANDLE);
 
     // The first command buffer uploads the textures, draws, and copies the image out.
     const VkCommandBuffer first = allocateCommandBuffer(ctx, cleanup);
@@ -813,8 +860,12 @@ RenderResult Runner::render(const RenderRequest& req) {
     VK_CHECK(vkBeginCommandBuffer, first, &beginInfo);
     std::vector<VkImageView> textureViews;
     for (const Texture* t : req.textures) textureViews.push_back(uploadTexture(ctx, first, *t, cleanup));
-    const VkDescriptorSet set = createSet(ctx, bindings, setLayout, uniforms.buffer, textureViews, req.combinedSamplers, cleanup);
-    const Draw draw{pass, framebuffer, pipeline, layout, set, req.set, width, height, req.uvRect};
+    std::vector<VkImageView> ownViews;
+    for (const TemplateResource& r : req.templateResources)
+        ownViews.push_back(r.texture ? uploadTexture(ctx, first, *r.texture, cleanup) : VK_NULL_HANDLE);
+    fillDescriptors(ctx, req, descriptors, uniforms.buffer, textureViews, ownBuffers, ownViews);
+    const std::vector<VkDescriptorSet> sets = createSets(ctx, descriptors, setLayouts, cleanup);
+    const Draw draw{pass, framebuffer, pipeline, layout, sets, width, height, req.uvRect, req.fragmentPushConstants};
     recordDraw(first, draw);
     recordReadback(first, color, readback.buffer, width, height);
     VK_CHECK(vkEndCommandBuffer, first);

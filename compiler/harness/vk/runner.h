@@ -8,8 +8,9 @@
 //   binding b+2+i   sampled image (texture2D): RenderRequest::textures[i], with a full mip chain; or, with
 //                   RenderRequest::combinedSamplers, a sampler2D combining it with the binding-(b+1) sampler
 //                   (how GLSL emitted for OpenGL binds textures once brought back to Vulkan)
-//   sets below      empty
-//   push constant   16 bytes, vertex stage: RenderRequest::uvRect (see templates/fullscreen.vert.glsl)
+//   other sets      RenderRequest::templateResources, the fragment shader's own; sets no one uses are empty
+//   push constant   bytes 0..15, vertex stage: RenderRequest::uvRect (see templates/fullscreen.vert.glsl); from byte
+//                   16, fragment stage: RenderRequest::fragmentPushConstants
 // The fragment shader writes location 0; the render target is VK_FORMAT_R32G32B32A32_SFLOAT, no blending.
 //
 // Mip chain: level 0 is the texture; level n+1 is vkCmdBlitImage of level n with VK_FILTER_LINEAR (an exact 2x2
@@ -32,16 +33,27 @@ struct VulkanError : std::runtime_error {
 
 struct VulkanContext;  // instance, device and long-lived objects; defined in runner.cpp
 
+// A resource of the fragment shader's own, beside hexc's (a template's per-frame block, shadow map...).
+struct TemplateResource {
+    enum class Kind { UniformBuffer, CombinedImageSampler, SampledImage, Sampler };
+    Kind kind = Kind::UniformBuffer;
+    uint32_t set = 0, binding = 0;
+    std::vector<uint8_t> data;         // UniformBuffer: its bytes (std140)
+    const Texture* texture = nullptr;  // images: not owned, with a full mip chain like hexc's; samplers are hexc's one sampler
+};
+
 struct RenderRequest {
     std::vector<uint32_t> vertexSpirv, fragmentSpirv;
     std::string vertexEntry = "main", fragmentEntry = "main";
     std::vector<uint8_t> uniformData;      // may be empty: a zeroed 16-byte buffer is bound instead
     std::vector<const Texture*> textures;  // not owned; must outlive render()
     int width = 0, height = 0;
-    std::array<float, 4> uvRect{0, 0, 1, 1};  // u0, v0, u1, v1
-    int timedFrames = 0;                      // > 0: draw this many extra frames, timing each one
-    bool combinedSamplers = false;            // textures as COMBINED_IMAGE_SAMPLER (see above)
-    uint32_t set = 0, firstBinding = 0;       // where the shader's layout puts hexc's resources (hexc::ResourceLayout)
+    std::array<float, 4> uvRect{0, 0, 1, 1};          // u0, v0, u1, v1
+    int timedFrames = 0;                              // > 0: draw this many extra frames, timing each one
+    bool combinedSamplers = false;                    // textures as COMBINED_IMAGE_SAMPLER (see above)
+    uint32_t set = 0, firstBinding = 0;               // where the shader's layout puts hexc's resources (hexc::ResourceLayout)
+    std::vector<TemplateResource> templateResources;  // at their own sets and bindings (no two resources share one)
+    std::vector<uint8_t> fragmentPushConstants;       // the fragment stage's push constants, from byte 16 (see above)
 };
 
 struct RenderResult {
