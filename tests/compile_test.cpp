@@ -6,6 +6,9 @@
 #include <spirv_cross.hpp>
 
 #include <cstdlib>
+#include <cstring>
+#include <set>
+#include <tuple>
 #include <fstream>
 #include <sstream>
 
@@ -439,3 +442,67 @@ TEST(TemplateFit, FittingMaterialsCompileAsBefore) {
 }
 
 }  // namespace
+
+namespace {
+
+std::vector<uint32_t> words(const std::string& bytes) {
+    std::vector<uint32_t> w(bytes.size() / 4);
+    std::memcpy(w.data(), bytes.data(), w.size() * 4);
+    return w;
+}
+
+// (location, SPIR-V type id's vector size and base type) of each user stage variable, sorted.
+std::set<std::tuple<uint32_t, uint32_t, int>> interface(const std::vector<uint32_t>& spirv, bool inputs) {
+    spirv_cross::Compiler c(spirv);
+    std::set<std::tuple<uint32_t, uint32_t, int>> out;
+    auto res = c.get_shader_resources();
+    for (const auto& r : inputs ? res.stage_inputs : res.stage_outputs) {
+        const auto& type = c.get_type(r.type_id);
+        out.emplace(c.get_decoration(r.id, spv::DecorationLocation), type.vecsize, int(type.basetype));
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(Vertex, FeedsEveryFragmentInputOnEveryTarget) {
+    for (const char* name : {"rock", "rock_triplanar", "engine_rock"}) {
+        SCOPED_TRACE(name);
+        CompileOptions options;
+        options.vertex = true;
+        CompileResult r = compileExample(name, options);
+        ASSERT_EQ(r.files.size(), 9u);
+        const std::vector<uint32_t> vert = words(file(r, ".vert.spv").contents);
+        EXPECT_EQ(interface(vert, false), interface(r.spirv, true));
+        const std::string entry = std::string(name) + "_vert";
+        EXPECT_NE(disassemble(vert).find("OpEntryPoint Vertex %" + entry), std::string::npos);
+        // HLSL and OpenGL GLSL compile again; each fragment input's semantic / MSL user location is written.
+        SpirvResult hlsl = compileToSpirv(file(r, ".vert.hlsl").contents, ShaderStage::Vertex, "v.hlsl", SourceLanguage::Hlsl, entry);
+        EXPECT_FALSE(hlsl.words.empty()) << formatAll(hlsl.diagnostics);
+        SpirvResult glsl = compileToSpirv(file(r, ".vert.glsl").contents, ShaderStage::Vertex, "v.glsl", SourceLanguage::OpenGlGlsl);
+        EXPECT_FALSE(glsl.words.empty()) << formatAll(glsl.diagnostics);
+        auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+        const auto& inputs = manifest["targets"]["hlsl"]["inputs"];
+        ASSERT_EQ(manifest["vertex"]["attributes"].size(), inputs.size() + 1);
+        for (const auto& in : inputs) {
+            const std::string loc = std::to_string(in["location"].get<int>());
+            EXPECT_NE(file(r, ".vert.hlsl").contents.find(in["name"].get<std::string>() + " : TEXCOORD" + loc), std::string::npos);
+            EXPECT_NE(file(r, ".vert.metal").contents.find("[[user(locn" + loc + ")]]"), std::string::npos);
+        }
+        EXPECT_EQ(manifest["vertex"]["msl"]["entry_point"], entry);
+        EXPECT_EQ(manifest["vertex"]["glsl"]["file"], std::string(name) + ".vert.glsl");
+    }
+}
+
+TEST(Vertex, CommandLineWritesDeclaresAndRemovesIt) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_vertex_cli";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(runHexc("materials/rock.json --vertex -o " + dir.string() + " --depfile " + (dir / "rock.d").string(), &err), 0) << err;
+    for (const char* ext : {"spv", "hlsl", "glsl", "metal"}) EXPECT_TRUE(std::filesystem::exists(dir / (std::string("rock.vert.") + ext)));
+    EXPECT_NE(readFile(dir / "rock.d").find("rock.vert.metal"), std::string::npos);
+    // Without --vertex the stamp no longer matches, and the vertex files hexc wrote are removed.
+    ASSERT_EQ(runHexc("materials/rock.json -o " + dir.string(), &err), 0) << err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "rock.vert.spv"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "rock.frag.spv"));
+}

@@ -84,7 +84,8 @@ std::string withoutEntryName(const std::string& file, std::string contents, cons
 // variants with equal hashes have identical shaders but for the entry point's name (the same for all under --entry).
 // An up-to-date variant's files are read back.
 std::string shaderHash(const std::filesystem::path& dir, const Job& j, const CompileOptions& options) {
-    const std::string entry = options.entryPoint.empty() ? defaultEntryPoint(j.material.name) : "";
+    // The default names' common part ("rock_depth_" of rock_depth_frag and rock_depth_vert).
+    const std::string frag = defaultEntryPoint(j.material.name), entry = options.entryPoint.empty() ? frag.substr(0, frag.size() - 4) : "";
     ContentHash h;
     if (!j.upToDate) {
         for (const OutputFile& f : j.result.files)
@@ -240,7 +241,8 @@ Outputs collectOutputs(const Arguments& a, const Inputs& in) {
     return out;
 }
 
-// Every output as a target (the manifests, the shaders of each --targets, the scene indexes) and every file read.
+// Every output as a target (the manifests, the shaders of each --targets and stage, the scene indexes) and every
+// file read.
 std::string depfileFor(const Arguments& a, const Inputs& in) {
     std::vector<std::filesystem::path> outs, ins;
     std::set<std::filesystem::path> seenIn;
@@ -249,6 +251,8 @@ std::string depfileFor(const Arguments& a, const Inputs& in) {
     for (const Job& j : in.jobs) {
         outs.push_back(a.outDir / (j.material.name + ".manifest.json"));
         for (Target t : targets) outs.push_back(a.outDir / shaderFileName(j.material.name, t));
+        if (a.options.vertex)
+            for (Target t : targets) outs.push_back(a.outDir / shaderFileName(j.material.name, t, "vert"));
         std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
         files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
         for (const auto& f : files)

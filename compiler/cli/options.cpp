@@ -21,6 +21,7 @@ const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V
 Reads each material (JSON, see docs/material-format.md), injects hex-tiling into every texture slot of
 its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:
   DIR/<name>.frag.spv  .frag.hlsl  .frag.glsl  .frag.metal  and  DIR/<name>.manifest.json
+  (with --vertex also DIR/<name>.vert.*, a pass-through vertex stage feeding the fragment shader)
 A scene (a JSON file with a "scene" key, see docs/scenes.md) compiles each (material, pass) variant it
 uses into DIR/<material>.<pass>.*, with an index (DIR/<scene>.scene.json) that marks variants whose code is
 identical. Inputs unchanged since the last run (material, textures' sizes, template, options, hexc build)
@@ -137,6 +138,8 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         ->group(layoutGroup);
     for (LayoutFlag& f : flags)
         app.add_option(f.name, f.value, f.help)->type_name("N")->check(CLI::Range(0u, f.max).description(""))->group(layoutGroup);
+    app.add_flag("--vertex", a.options.vertex,
+                 "also write the pass-through vertex stage <name>.vert.* that feeds the\nfragment shader's inputs");
     app.add_flag("--bake", a.options.bake,
                  "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
     app.add_flag_callback(

@@ -44,9 +44,9 @@ bool isEntryPointName(std::string_view name) {
     return std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
-std::string shaderFileName(std::string_view material, Target target) {
+std::string shaderFileName(std::string_view material, Target target, std::string_view stage) {
     static const char* const extensions[] = {"spv", "hlsl", "glsl", "metal"};
-    return std::string(material) + ".frag." + extensions[int(target)];
+    return std::string(material) + "." + std::string(stage) + "." + extensions[int(target)];
 }
 
 std::string_view toString(Target target) {
@@ -62,6 +62,37 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
     std::string bytes(words.size() * 4, '\0');
     std::memcpy(bytes.data(), words.data(), bytes.size());
     return bytes;
+}
+
+// The pass-through vertex stage feeding the fragment shader's inputs, on every target: its files into `result`, its
+// description (files, entry points, attributes) returned for the manifest.
+nlohmann::json emitVertexStage(const Material& material, const ShaderPlan& plan, const CompileOptions& options,
+                               const std::vector<Target>& targets, CompileResult& result) {
+    const std::vector<Varying> inputs = fragmentInputs(result.spirv);
+    const std::string& frag = plan.entryPoint;
+    const std::string entry = (frag.ends_with("_frag") ? frag.substr(0, frag.size() - 5) : frag) + "_vert";
+    SpirvResult front = compileToSpirv(generateVertexGlsl(inputs), ShaderStage::Vertex, "hexc/vertex.glsl", SourceLanguage::Glsl, entry);
+    SpirvResult optimized = front.words.empty() ? front : optimizeSpirv(front.words);
+    if (optimized.words.empty()) throw CompileError{optimized.diagnostics};  // hexc's own code: a bug
+    // SPIRV-Cross gives vertex inputs TEXCOORD<location> in HLSL and [[attribute(<location>)]] in MSL.
+    auto attribute = [](const std::string& name, uint32_t location, const std::string& type, const std::string& feeds) {
+        return nlohmann::json{{"name", name},
+                              {"location", location},
+                              {"type", type},
+                              {"feeds", feeds},
+                              {"hlsl_semantic", "TEXCOORD" + std::to_string(location)},
+                              {"msl_attribute", location}};
+    };
+    nlohmann::json attributes = {attribute("hexc_position", 0, "vec4", "gl_Position")};
+    for (const Varying& v : inputs) attributes.push_back(attribute("hexc_in_" + v.name, uint32_t(attributes.size()), v.type, v.name));
+    nlohmann::json vertex = {{"attributes", attributes}};
+    for (Target t : targets) {
+        TargetOutput out = emitVertex(optimized.words, t, options, entry);
+        OutputFile file{shaderFileName(material.name, t, "vert"), t == Target::Spirv ? spirvBytes(optimized.words) : out.source};
+        vertex[std::string(toString(t))] = {{"file", file.name}, {"entry_point", out.entryPoint}};
+        result.files.push_back(std::move(file));
+    }
+    return vertex;
 }
 
 void run(const Material& material, const CompileOptions& options, CompileResult& result) {
@@ -107,7 +138,9 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
         described[std::string(toString(t))] = std::move(out.target);
         result.files.push_back(std::move(file));
     }
-    result.files.push_back({material.name + ".manifest.json", buildManifest(material, plan, described).dump(2) + "\n"});
+    nlohmann::json manifest = buildManifest(material, plan, described);
+    if (options.vertex) manifest["vertex"] = emitVertexStage(material, plan, options, targets, result);
+    result.files.push_back({material.name + ".manifest.json", manifest.dump(2) + "\n"});
     std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
 }
 

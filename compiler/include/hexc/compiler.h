@@ -32,6 +32,8 @@ struct CompileOptions {
     ResourceLayout layout;  // where hexc's own resources go on each target
     // The fragment entry point on every target but OpenGL GLSL (always `main`); empty: defaultEntryPoint(material).
     std::string entryPoint;
+    // Also emit the pass-through vertex stage that feeds the fragment shader's inputs ("<material>.vert.*").
+    bool vertex = false;
 };
 
 struct OutputFile {
@@ -63,7 +65,8 @@ std::string defaultEntryPoint(std::string_view material);
 // Whether `name` can be an entry point on every target: an identifier, not reserved by GLSL (`gl_`) or a language.
 bool isEntryPointName(std::string_view name);
 
-// The file a material's shader for `target` is written to: "<material>.frag.{spv,hlsl,glsl,metal}".
-std::string shaderFileName(std::string_view material, Target target);
+// The file a material's shader for `target` is written to: "<material>.frag.{spv,hlsl,glsl,metal}"; its vertex
+// stage's (CompileOptions::vertex), "<material>.vert.*".
+std::string shaderFileName(std::string_view material, Target target, std::string_view stage = "frag");
 
 }  // namespace hexc

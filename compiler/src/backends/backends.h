@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "codegen/codegen.h"
 #include "hexc/compiler.h"
 #include "plan/plan.h"
 
@@ -46,6 +47,14 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
 TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan);
+
+// SPIRV-Cross names the HLSL entry function `main` whatever the module's entry point is: gives it `entry`.
+void renameHlslEntry(std::string& source, const std::string& entry);
+
+// The fragment shader's inputs, in location order: what a pass-through vertex stage must write.
+std::vector<Varying> fragmentInputs(const std::vector<uint32_t>& spirv);
+// The pass-through vertex stage (vertex.cpp) on one target, its entry point `entry` (OpenGL: `main`).
+TargetOutput emitVertex(const std::vector<uint32_t>& spirv, Target target, const CompileOptions& options, const std::string& entry);
 
 // Shared by the backends (reflection.cpp). `locate` gives a target's address of one resource;
 // `ioName` the target's name for a stage input/output location (semantic, attribute), or null.

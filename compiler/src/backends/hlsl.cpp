@@ -53,6 +53,14 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const Shader
 
 }  // namespace
 
+void renameHlslEntry(std::string& source, const std::string& entry) {
+    for (std::string_view head : {"\nSPIRV_Cross_Output main(", "\nvoid main("})
+        if (size_t at = source.find(head); at != std::string::npos) {
+            source.replace(at + head.size() - 5, 4, entry);
+            return;
+        }
+}
+
 TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
     spirv_cross::CompilerHLSL c(spirv);
     spirv_cross::CompilerHLSL::Options hlsl;
@@ -85,12 +93,7 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
 
     TargetOutput out;
     out.source = c.compile();
-    // SPIRV-Cross names the HLSL entry function `main` whatever the module's entry point is: give it the plan's.
-    for (std::string_view head : {"\nSPIRV_Cross_Output main(", "\nvoid main("})
-        if (size_t at = out.source.find(head); at != std::string::npos) {
-            out.source.replace(at + head.size() - 5, 4, plan.entryPoint);
-            break;
-        }
+    renameHlslEntry(out.source, plan.entryPoint);
     out.entryPoint = plan.entryPoint;
     Locate locate = [&l](ResourceKind kind, uint32_t index) -> nlohmann::json {
         std::string reg = kind == ResourceKind::Params    ? "b" + std::to_string(l.b)

@@ -140,6 +140,15 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
     return t;
 }
 
+std::vector<Varying> fragmentInputs(const std::vector<uint32_t>& spirv) {
+    spirv_cross::Compiler c(spirv);
+    std::vector<Varying> out;
+    for (const auto& r : c.get_shader_resources().stage_inputs)
+        out.push_back({r.name, typeName(c.get_type(r.type_id)), c.get_decoration(r.id, spv::DecorationLocation)});
+    std::sort(out.begin(), out.end(), [](const Varying& a, const Varying& b) { return a.location < b.location; });
+    return out;
+}
+
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan) {
     TargetOutput out;
     out.entryPoint = plan.entryPoint;

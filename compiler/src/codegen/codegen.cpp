@@ -202,3 +202,26 @@ std::string generateGlsl(const ShaderPlan& plan) {
 }
 
 }  // namespace hexc
+
+namespace hexc {
+
+std::string generateVertexGlsl(const std::vector<Varying>& inputs) {
+    const std::map<std::string, std::string> sections = snippetSections("vertex.glsl");
+    std::string varyings, copies;
+    uint32_t attribute = 1;
+    for (const Varying& v : inputs) {
+        const bool integer =
+            v.type.starts_with("int") || v.type.starts_with("uint") || v.type.starts_with("ivec") || v.type.starts_with("uvec");
+        varyings += expandTokens(sections.at("varying"),
+                                 {{"name", v.name},
+                                  {"type", v.type},
+                                  {"location", std::to_string(v.location)},
+                                  {"attribute", std::to_string(attribute++)},
+                                  {"flat", integer ? "flat " : ""}},
+                                 "varying");
+        copies += expandTokens(sections.at("copy"), {{"name", v.name}}, "copy");
+    }
+    return expandTokens(sections.at("main"), {{"varyings", varyings}, {"copies", copies}}, "main");
+}
+
+}  // namespace hexc

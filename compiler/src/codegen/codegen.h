@@ -1,8 +1,10 @@
 #pragma once
 // ShaderPlan -> Vulkan GLSL 450: the template with hexc's library, resources and per-slot functions
 // injected at its `#include <hexc>` line.
+#include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "plan/plan.h"
 
@@ -18,5 +20,15 @@ std::string expandTokens(const std::string& text, const Tokens& values, const st
 // The returned source carries `#line` directives, so glslang reports errors at the template's own
 // file and line; injected code is reported as "hexc/<file>".
 std::string generateGlsl(const ShaderPlan& plan);
+
+// A fragment shader input: what the pass-through vertex stage writes.
+struct Varying {
+    std::string name, type;  // GLSL type, e.g. "vec2"
+    uint32_t location = 0;
+};
+
+// The pass-through vertex stage (templates/library/vertex.glsl) that feeds `inputs` (in location order) from vertex
+// attributes 1, 2, ..., the clip-space position being attribute 0.
+std::string generateVertexGlsl(const std::vector<Varying>& inputs);
 
 }  // namespace hexc
