@@ -506,3 +506,19 @@ TEST(Vertex, CommandLineWritesDeclaresAndRemovesIt) {
     EXPECT_FALSE(std::filesystem::exists(dir / "rock.vert.spv"));
     EXPECT_TRUE(std::filesystem::exists(dir / "rock.frag.spv"));
 }
+
+TEST(Cli, ShaderModelAndTargetSpellingsOtherToolsUse) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_spellings";
+    for (const char* sm : {"6.0", "6_0", "60"}) {
+        std::filesystem::remove_all(dir);
+        std::string err;
+        ASSERT_EQ(runHexc("materials/rock.json --targets hlsl,metal --hlsl-sm " + std::string(sm) + " -o " + dir.string(), &err), 0) << err;
+        auto manifest = nlohmann::json::parse(readFile(dir / "rock.manifest.json"));
+        EXPECT_EQ(manifest["targets"]["hlsl"]["shader_model"], "6_0") << sm;
+        EXPECT_TRUE(std::filesystem::exists(dir / "rock.frag.metal"));  // `metal` is msl
+        EXPECT_FALSE(std::filesystem::exists(dir / "rock.frag.spv"));
+    }
+    std::string err;
+    EXPECT_EQ(runHexc("materials/rock.json --hlsl-sm 6.9 -o " + dir.string(), &err), 2);
+    EXPECT_NE(err.find("--hlsl-sm"), std::string::npos) << err;
+}

@@ -115,9 +115,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     // Required by hand below, after CLI11 has reported unknown options (it checks requirements first).
     app.add_option("materials", materials, "material or scene files")->type_name("FILE.json");
     app.add_option("-o,--out", a.outDir, "output folder (created if missing)")->type_name("DIR");
-    app.add_option("--targets", targets, "subset of spirv,hlsl,glsl,msl (default: all four)")
+    app.add_option("--targets", targets, "subset of spirv,hlsl,glsl,msl (metal: msl; default: all four)")
         ->delimiter(',')
         ->allow_extra_args(false)
+        ->transform(CLI::Transformer(std::map<std::string, std::string>{{"metal", "msl"}}).description(""))
         ->check(CLI::IsMember({"spirv", "hlsl", "glsl", "msl"}));
     app.add_option("--template", a.options.templateFile, "use this template instead of the material's (docs/templates.md)")
         ->type_name("FILE.glsl")
@@ -126,7 +127,14 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         ->type_name("NAME")
         ->check(CLI::Validator([](std::string& n) { return isEntryPointName(n) ? "" : "expected an identifier (not reserved), got " + n; },
                                ""));
-    app.add_option("--hlsl-sm", a.options.hlslShaderModel, "HLSL shader model (default 50)")
+    // dxc and Slang write shader models 6_0 or 6.0; glslc-style tools 60: all name the same model.
+    app.add_option("--hlsl-sm", a.options.hlslShaderModel, "HLSL shader model: 50, 51, 60 ... 66, also as 6.0 or 6_0 (default 50)")
+        ->transform(CLI::Validator(
+            [](std::string& v) {
+                if (v.size() == 3 && (v[1] == '.' || v[1] == '_')) v.erase(1, 1);
+                return std::string();
+            },
+            ""))
         ->check(CLI::IsMember({50, 51, 60, 61, 62, 63, 64, 65, 66}));
     app.add_option("--glsl-version", glsl, "GLSL version (default 450)")->check(CLI::IsMember({"450", "330", "310es"}));
     app.add_option("--msl-version", msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
