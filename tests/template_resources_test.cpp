@@ -10,6 +10,7 @@
 #include <set>
 
 #include "hexc/compiler.h"
+#include "hexc/layout.h"
 #include "hexc/material.h"
 #include "hexc/spirv.h"
 
@@ -52,14 +53,13 @@ void expectDistinct(const std::multiset<std::string>& found, size_t count, const
 
 }  // namespace
 
-// The default layout, and hexc sharing the template's set 1 from binding 5 with every target's bases moved and HLSL
-// register spaces.
+// The default layout, and materials/layouts/engine.json: hexc sharing the template's set 1 from binding 5, every
+// target's bases moved, HLSL register space 1.
 std::vector<CompileOptions> layouts() {
     CompileOptions moved;
-    moved.layout.vulkan = {1, 5};
-    moved.layout.hlsl = {1, 2, 3, 1, 0};
-    moved.layout.msl = {1, 2, 3};
-    moved.layout.glsl = {2};
+    LayoutParseResult example = parseLayoutFile("materials/layouts/engine.json");
+    if (!example.layout) throw std::runtime_error(formatAll(example.diagnostics));
+    moved.layout = *example.layout;
     moved.hlslShaderModel = 51;
     return {CompileOptions{}, moved};
 }
