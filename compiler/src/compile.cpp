@@ -83,7 +83,8 @@ nlohmann::json emitVertexStage(const Material& material, const ShaderPlan& plan,
                               {"hlsl_semantic", "TEXCOORD" + std::to_string(location)},
                               {"msl_attribute", location}};
     };
-    nlohmann::json attributes = {attribute("hexc_position", 0, "vec4", "gl_Position")};
+    nlohmann::json attributes = nlohmann::json::array();  // not `{one}`: clang makes that the object itself
+    attributes.push_back(attribute("hexc_position", 0, "vec4", "gl_Position"));
     for (const Varying& v : inputs) attributes.push_back(attribute("hexc_in_" + v.name, uint32_t(attributes.size()), v.type, v.name));
     nlohmann::json vertex = {{"attributes", attributes}};
     for (Target t : targets) {
