@@ -177,9 +177,10 @@ std::vector<uint8_t> bytes(std::initializer_list<float> values) {
 
 }  // namespace
 
-// materials/templates/engine.glsl on lavapipe, its per-frame and per-object blocks, shadow map, environment map,
-// separate texture and sampler, and push constants bound where the manifest says, under the default layout and with
-// hexc sharing the template's set 1 from binding 5: every pixel is what the template computes from hexc's albedo
+// materials/templates/engine.glsl on lavapipe from its SPIR-V and its HLSL, its per-frame and per-object blocks,
+// shadow map, environment map, separate texture and sampler, and push constants bound where each target's manifest
+// entry says, under the default layout and materials/layouts/engine.json (hexc sharing the template's set 1 from
+// binding 5, HLSL register space 1): every pixel is what the template computes from hexc's albedo
 // (rendered alone, and checked against the fp64 reference by the ColorPath tests) and the template's values.
 TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
     REQUIRE_VULKAN();
@@ -199,23 +200,27 @@ TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
                      {"detail", {R::Kind::SampledImage, 0, 0, {}, &detail}},
                      {"detailSampler", {R::Kind::Sampler, 0, 0, {}, nullptr}}};
     own.pushConstants = bytes({0.25f});  // ambient
-    CompileOptions shared;
-    shared.layout.vulkan = {1, 5};
-    for (const CompileOptions& options : {CompileOptions{}, shared}) {
-        SCOPED_TRACE("hexc in set " + std::to_string(options.layout.vulkan.set));
-        Image image = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {},
-                                 options, own);
-        // N = light = +z: diffuse = shadow = 0.5; the sky term reads the environment's colour. Both shaders compute the
-        // albedo from the same GLSL; the rest is a few float32 operations on values below 4, so 1e-5 covers any
-        // contraction or reordering the optimisers choose (about 30 ulps at 4).
-        const float tint[3] = {1.0f, 0.5f, 0.25f}, sky[3] = {0.5f, 0.25f, 1.0f};
-        double worst = 0;
-        for (size_t p = 0; p < image.rgba.size(); p += 4)
-            for (size_t c = 0; c < 3; ++c) {
-                const double expected = (albedo.rgba[p + c] * tint[c] * (0.25 + 0.5) + sky[c] * 0.04) * 0.75 * 2.0;
-                worst = std::max(worst, std::fabs(double(image.rgba[p + c]) - expected));
-            }
-        std::printf("  hexc in set %u: worst difference %.2e\n", options.layout.vulkan.set, worst);
-        EXPECT_LE(worst, 1e-5);
-    }
+    CompileOptions shared;               // hexc in the template's set 1 from binding 5, HLSL space 1 (materials/layouts/engine.json)
+    LayoutParseResult example = parseLayoutFile("materials/layouts/engine.json");
+    ASSERT_TRUE(example.layout) << formatAll(example.diagnostics);
+    shared.layout = *example.layout;
+    shared.hlslShaderModel = 51;
+    for (const CompileOptions& options : {CompileOptions{}, shared})
+        for (vk::ExecutedTarget target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl}) {
+            SCOPED_TRACE("hexc in set " + std::to_string(options.layout.vulkan.set) + ", target " + std::to_string(int(target)));
+            Image image = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Shaded, "", view, target, 0, nullptr, {}, options, own);
+            // N = light = +z: diffuse = shadow = 0.5; the sky term reads the environment's colour. Both shaders compute the
+            // albedo from the same GLSL; the rest is a few float32 operations on values below 4, so 1e-5 covers any
+            // contraction or reordering the optimisers choose (about 30 ulps at 4).
+            const float tint[3] = {1.0f, 0.5f, 0.25f}, sky[3] = {0.5f, 0.25f, 1.0f};
+            double worst = 0;
+            for (size_t p = 0; p < image.rgba.size(); p += 4)
+                for (size_t c = 0; c < 3; ++c) {
+                    const double expected = (albedo.rgba[p + c] * tint[c] * (0.25 + 0.5) + sky[c] * 0.04) * 0.75 * 2.0;
+                    worst = std::max(worst, std::fabs(double(image.rgba[p + c]) - expected));
+                }
+            std::printf("  hexc in set %u, %s: worst difference %.2e\n", options.layout.vulkan.set,
+                        target == vk::ExecutedTarget::Hlsl ? "HLSL" : "SPIR-V", worst);
+            EXPECT_LE(worst, 1e-5);
+        }
 }

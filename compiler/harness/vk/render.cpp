@@ -131,30 +131,82 @@ std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const Parame
 
 namespace {
 
-// The template's resources where the SPIR-V manifest says the template declared them. A shader whose template
-// declares resources `own` does not provide cannot be drawn (unbound descriptors are undefined behaviour, and
-// lavapipe crashes): std::invalid_argument naming them.
-void bindTemplateInputs(const nlohmann::json& manifest, ExecutedTarget target, const TemplateInputs& own, RenderRequest& request) {
-    const nlohmann::json listed = manifest["targets"]["spirv"].value("template_resources", nlohmann::json::array());
-    std::string missing;
-    for (const nlohmann::json& r : listed) {
-        const std::string name = r["name"];
-        const bool push = r["kind"] == "push_constant";
-        if (push ? own.pushConstants.empty() : !own.resources.count(name)) missing += (missing.empty() ? "" : ", ") + name;
-        if (push || !own.resources.count(name)) continue;
-        TemplateResource placed = own.resources.at(name);
+// The Vulkan binding glslang gives an HLSL register ("t3": kHlslTextureShift + 3; spirv.h).
+uint32_t hlslBinding(const std::string& reg) {
+    const uint32_t n = uint32_t(std::stoul(reg.substr(1)));
+    return n + (reg[0] == 's' ? kHlslSamplerShift : reg[0] == 't' ? kHlslTextureShift : reg[0] == 'u' ? kHlslUavShift : 0);
+}
+
+// hexc's own resources where the executed target's manifest entry puts them.
+void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequest& request) {
+    if (target == ExecutedTarget::Hlsl) {
+        const nlohmann::json& hlsl = manifest["targets"]["hlsl"];
+        request.set = hlsl["sampler"]["space"];
+        request.samplerBinding = hlslBinding(hlsl["sampler"]["register"]);
+        request.paramsBinding = hlsl.contains("params") ? hlslBinding(hlsl["params"]["register"]) : request.samplerBinding + 1;
+        request.firstTextureBinding = UINT32_MAX;  // the lowest of the textures' registers (they are consecutive)
+        for (const auto& [slot, where] : hlsl["textures"].items())
+            request.firstTextureBinding = std::min(request.firstTextureBinding, hlslBinding(where["register"]));
+        return;
+    }
+    // SPIR-V, and OpenGL GLSL brought back into the same Vulkan layout: the sampler follows the block, the textures it.
+    const nlohmann::json& sampler = manifest["targets"]["spirv"]["sampler"];
+    request.set = sampler["set"];
+    request.samplerBinding = sampler["binding"];
+    request.paramsBinding = request.samplerBinding - 1;
+    request.firstTextureBinding = request.samplerBinding + 1;
+}
+
+// One template resource as a target's manifest entry places it: SPIR-V as declared; HLSL in its registers, a
+// sampler2D split into a texture and a SamplerState, push constants a cbuffer that keeps their offsets.
+void placeTemplateResource(const nlohmann::json& r, ExecutedTarget target, const TemplateInputs& own, RenderRequest& request) {
+    const std::string name = r["name"];
+    using Kind = TemplateResource::Kind;
+    if (r["kind"] == "push_constant") {
+        if (target == ExecutedTarget::Spirv) {
+            request.fragmentPushConstants = own.pushConstants;
+            return;
+        }
+        TemplateResource block{Kind::UniformBuffer, request.set, hlslBinding(r["register"]), std::vector<uint8_t>(16), nullptr};
+        block.data.insert(block.data.end(), own.pushConstants.begin(), own.pushConstants.end());
+        request.templateResources.push_back(std::move(block));
+        return;
+    }
+    TemplateResource placed = own.resources.at(name);
+    if (target == ExecutedTarget::Spirv) {
         placed.set = r["vulkan"]["set"];
         placed.binding = r["vulkan"]["binding"];
         request.templateResources.push_back(std::move(placed));
+        return;
+    }
+    placed.set = r["space"];
+    placed.binding = hlslBinding(r["register"]);
+    if (r.contains("sampler_register")) {
+        placed.kind = Kind::SampledImage;
+        request.templateResources.push_back({Kind::Sampler, placed.set, hlslBinding(r["sampler_register"]), {}, nullptr});
+    }
+    request.templateResources.push_back(std::move(placed));
+}
+
+// The template's resources where the executed target's manifest says (SPIR-V and HLSL). A shader whose template
+// declares resources `own` does not provide cannot be drawn (unbound descriptors are undefined behaviour, and
+// lavapipe crashes): std::invalid_argument naming them.
+void bindTemplateInputs(const nlohmann::json& manifest, ExecutedTarget target, const TemplateInputs& own, RenderRequest& request) {
+    const nlohmann::json listed =
+        manifest["targets"][target == ExecutedTarget::Hlsl ? "hlsl" : "spirv"].value("template_resources", nlohmann::json::array());
+    std::string missing;
+    for (const nlohmann::json& r : listed) {
+        const bool given = r["kind"] == "push_constant" ? !own.pushConstants.empty() : own.resources.count(r["name"]) > 0;
+        if (!given) missing += (missing.empty() ? "" : ", ") + r["name"].get<std::string>();
     }
     if (!missing.empty())
         throw std::invalid_argument("template " + manifest["template"].get<std::string>() + " declares resources of its own (" + missing +
                                     ") that only the engine can bind; render a slot output instead (--output albedo, normal, ...)");
-    if (request.templateResources.size() != own.resources.size())
+    if (listed.size() != own.resources.size() + (own.pushConstants.empty() ? 0 : 1))
         throw std::invalid_argument("a template resource given is not in the manifest");
-    if (!listed.empty() && target != ExecutedTarget::Spirv)
-        throw std::invalid_argument("a template's own resources are bound for the SPIR-V target only");
-    request.fragmentPushConstants = own.pushConstants;
+    if (!listed.empty() && target == ExecutedTarget::Glsl)
+        throw std::invalid_argument("a template's own resources are bound for the SPIR-V and HLSL targets only");
+    for (const nlohmann::json& r : listed) placeTemplateResource(r, target, own, request);
 }
 
 }  // namespace
@@ -188,14 +240,12 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
             request.combinedSamplers = true;
             break;
     }
-    // Bound where the manifest says, as an engine would: the shared sampler follows the parameter block.
-    const nlohmann::json& sampler = manifest["targets"]["spirv"]["sampler"];
-    request.set = sampler["set"];
+    // Bound where the manifest says, as an engine would.
+    bindHexcs(manifest, target, request);
     // glslang keeps an HLSL entry point's name; OpenGL GLSL's is `main`.
     request.fragmentEntry = manifest["targets"][target == ExecutedTarget::Glsl   ? "glsl"
                                                 : target == ExecutedTarget::Hlsl ? "hlsl"
                                                                                  : "spirv"]["entry_point"];
-    request.firstBinding = sampler["binding"].get<uint32_t>() - 1;
     request.uniformData = packParameters(manifest, parameters);
     bindTemplateInputs(manifest, target, own, request);
     // Textures in manifest order, which is binding order.

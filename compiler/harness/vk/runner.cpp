@@ -598,10 +598,10 @@ struct Descriptor {
 // Every descriptor of the request: hexc's block, sampler and textures, then the template's resources in request
 // order (what fillDescriptors relies on). Throws when two share a set and binding.
 std::vector<Descriptor> descriptorsOf(const RenderRequest& req) {
-    std::vector<Descriptor> d = {{req.set, req.firstBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                                 {req.set, req.firstBinding + 1, VK_DESCRIPTOR_TYPE_SAMPLER}};
+    std::vector<Descriptor> d = {{req.set, req.paramsBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                 {req.set, req.samplerBinding, VK_DESCRIPTOR_TYPE_SAMPLER}};
     const VkDescriptorType texture = req.combinedSamplers ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-    for (uint32_t i = 0; i < req.textures.size(); ++i) d.push_back({req.set, req.firstBinding + 2 + i, texture});
+    for (uint32_t i = 0; i < req.textures.size(); ++i) d.push_back({req.set, req.firstTextureBinding + i, texture});
     static const VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                              VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLER};
     for (const TemplateResource& r : req.templateResources) d.push_back({r.set, r.binding, types[int(r.kind)]});

@@ -2,12 +2,13 @@
 // Runs a vertex + fragment shader pair over a UV rectangle on Vulkan (Mesa lavapipe in tests and CI) into an
 // RGBA32F image and reads it back; optionally times the draw. Used by the execution tests, preview and bench.
 //
-// Resource interface the shaders see (descriptor set RenderRequest::set, hexc's; bindings from b = firstBinding):
-//   binding b       uniform buffer, fragment stage: RenderRequest::uniformData (std140)
-//   binding b+1     one sampler for every texture: linear min/mag/mip, REPEAT on u/v/w, lod 0..all, no anisotropy
-//   binding b+2+i   sampled image (texture2D): RenderRequest::textures[i], with a full mip chain; or, with
-//                   RenderRequest::combinedSamplers, a sampler2D combining it with the binding-(b+1) sampler
-//                   (how GLSL emitted for OpenGL binds textures once brought back to Vulkan)
+// Resource interface the shaders see (hexc's, in descriptor set RenderRequest::set, at its bindings):
+//   paramsBinding          uniform buffer, fragment stage: RenderRequest::uniformData (std140)
+//   samplerBinding         one sampler for every texture: linear min/mag/mip, REPEAT on u/v/w, lod 0..all, no
+//                          anisotropy
+//   firstTextureBinding+i  sampled image (texture2D): RenderRequest::textures[i], with a full mip chain; or, with
+//                          RenderRequest::combinedSamplers, a sampler2D combining it with that sampler
+//                          (how GLSL emitted for OpenGL binds textures once brought back to Vulkan)
 //   other sets      RenderRequest::templateResources, the fragment shader's own; sets no one uses are empty
 //   push constant   bytes 0..15, vertex stage: RenderRequest::uvRect (see templates/fullscreen.vert.glsl); from byte
 //                   16, fragment stage: RenderRequest::fragmentPushConstants
@@ -48,10 +49,10 @@ struct RenderRequest {
     std::vector<uint8_t> uniformData;      // may be empty: a zeroed 16-byte buffer is bound instead
     std::vector<const Texture*> textures;  // not owned; must outlive render()
     int width = 0, height = 0;
-    std::array<float, 4> uvRect{0, 0, 1, 1};          // u0, v0, u1, v1
-    int timedFrames = 0;                              // > 0: draw this many extra frames, timing each one
-    bool combinedSamplers = false;                    // textures as COMBINED_IMAGE_SAMPLER (see above)
-    uint32_t set = 0, firstBinding = 0;               // where the shader's layout puts hexc's resources (hexc::ResourceLayout)
+    std::array<float, 4> uvRect{0, 0, 1, 1};                                           // u0, v0, u1, v1
+    int timedFrames = 0;                                                               // > 0: draw this many extra frames, timing each one
+    bool combinedSamplers = false;                                                     // textures as COMBINED_IMAGE_SAMPLER (see above)
+    uint32_t set = 0, paramsBinding = 0, samplerBinding = 1, firstTextureBinding = 2;  // hexc's, where the shader has them
     std::vector<TemplateResource> templateResources;  // at their own sets and bindings (no two resources share one)
     std::vector<uint8_t> fragmentPushConstants;       // the fragment stage's push constants, from byte 16 (see above)
 };

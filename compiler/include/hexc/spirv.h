@@ -21,11 +21,16 @@ struct SpirvResult {
     Diagnostics diagnostics;
 };
 
+// Where HLSL registers land in Vulkan when compileToSpirv reads HLSL: b<n> at binding n, s<n> at kHlslSamplerShift + n,
+// t<n> at kHlslTextureShift + n, u<n> at kHlslUavShift + n (dxc's -fvk-*-shift idea; registers below 32 of each
+// class stay apart), register space N in set N.
+constexpr unsigned kHlslSamplerShift = 32, kHlslTextureShift = 64, kHlslUavShift = 96;
+
 // Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
-// the source in diagnostics when it has no #line names. HLSL registers and OpenGL texture units placed by `layout`
-// map back to its Vulkan bindings (by default b0 -> binding 0, s0 -> 1, t<i> and texture unit i -> 2+i; docs/cli.md);
-// an HLSL register space N is descriptor set N, as with dxc -spirv. `entryPoint`: the HLSL function to compile, or
-// the name a GLSL shader's `main` gets in the module.
+// the source in diagnostics when it has no #line names. HLSL registers land as above (HLSL 5.0 has no spaces: set
+// `layout.hlsl.space`). OpenGL texture units and block bindings placed by `layout` map back to its Vulkan bindings
+// (by default texture unit i -> binding 2+i). `entryPoint`: the HLSL function to compile, or the name a GLSL
+// shader's `main` gets in the module.
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
                            SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main",
                            const ResourceLayout& layout = {});

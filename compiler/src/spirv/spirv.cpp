@@ -73,17 +73,17 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     shader.setEntryPoint(entryPoint.c_str());
     // GLSL's function is `main` whatever the module calls its entry point.
     if (!hlsl) shader.setSourceEntryPoint("main");
-    // Registers and texture units back to hexc's Vulkan bindings: shifts are unsigned and wrap, so a register above
-    // its binding still lands on it. Sources without a set or space (HLSL 5.0, OpenGL) go to hexc's set.
+    // Sources without a set or space (HLSL 5.0, OpenGL) go to the layout's set or space.
     const HexcBindings b(layout.vulkan);
-    shader.setResourceSetBinding({std::to_string(b.set)});
+    shader.setResourceSetBinding({std::to_string(hlsl ? layout.hlsl.space : b.set)});
     if (hlsl) {
-        shader.setShiftBinding(glslang::EResUbo, b.params - layout.hlsl.b);
-        shader.setShiftBinding(glslang::EResSampler, b.sampler - layout.hlsl.s);
-        shader.setShiftBinding(glslang::EResTexture, b.firstTexture - layout.hlsl.t);
+        shader.setShiftBinding(glslang::EResSampler, kHlslSamplerShift);
+        shader.setShiftBinding(glslang::EResTexture, kHlslTextureShift);
+        shader.setShiftBinding(glslang::EResUav, kHlslUavShift);
     } else if (language == SourceLanguage::OpenGlGlsl) {
         // GLSL 330 carries no binding or varying location qualifiers (OpenGL matches by name): let
-        // glslang number what is missing, in declaration order, then shift into hexc's layout.
+        // glslang number what is missing, in declaration order, then shift into hexc's layout (shifts are unsigned
+        // and wrap, so a unit above its binding still lands on it).
         shader.setAutoMapBindings(true);
         shader.setAutoMapLocations(true);
         shader.setShiftBinding(glslang::EResUbo, b.params - layout.glsl.binding);
