@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <functional>
 #include <iostream>
 #include <map>
 
@@ -49,29 +48,18 @@ void applyNames(const std::vector<std::string>& targets, const std::string& glsl
     if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
 }
 
-// One flag per layout field; a flag given overrides the layout file's value.
+// One flag per layout field (hexc/layout.h); a flag given overrides the layout file's value.
 struct LayoutFlag {
-    const char* name;
-    const char* help;
-    std::function<uint32_t&(ResourceLayout&)> field;
-    uint32_t max = 4095;  // as the layout file allows (material/parse.cpp)
+    std::string name;
+    const LayoutField* field;
     std::optional<uint32_t> value = {};
 };
 
 std::vector<LayoutFlag> layoutFlags() {
-    using L = ResourceLayout;
-    return {{"--set", "hexc's Vulkan descriptor set, 0 to 31 (default 0)", [](L& l) -> uint32_t& { return l.vulkan.set; }, 31},
-            {"--binding", "hexc's first Vulkan binding: block, sampler, textures (default 0)",
-             [](L& l) -> uint32_t& { return l.vulkan.binding; }},
-            {"--hlsl-space", "hexc's HLSL register space (needs --hlsl-sm 51+)", [](L& l) -> uint32_t& { return l.hlsl.space; }},
-            {"--hlsl-b", "hexc's first HLSL b register", [](L& l) -> uint32_t& { return l.hlsl.b; }},
-            {"--hlsl-t", "hexc's first HLSL t register", [](L& l) -> uint32_t& { return l.hlsl.t; }},
-            {"--hlsl-s", "hexc's first HLSL s register", [](L& l) -> uint32_t& { return l.hlsl.s; }},
-            {"--hlsl-u", "first HLSL u register (template storage)", [](L& l) -> uint32_t& { return l.hlsl.u; }},
-            {"--msl-buffer", "hexc's first MSL buffer index", [](L& l) -> uint32_t& { return l.msl.buffer; }},
-            {"--msl-texture", "hexc's first MSL texture index", [](L& l) -> uint32_t& { return l.msl.texture; }},
-            {"--msl-sampler", "hexc's first MSL sampler index", [](L& l) -> uint32_t& { return l.msl.sampler; }},
-            {"--glsl-binding", "hexc's GLSL block binding and first texture unit", [](L& l) -> uint32_t& { return l.glsl.binding; }}};
+    std::vector<LayoutFlag> flags;
+    for (const LayoutField& f : layoutFields())
+        flags.push_back({std::string("--") + (std::string_view(f.target) == "vulkan" ? "" : std::string(f.target) + "-") + f.key, &f});
+    return flags;
 }
 
 // The layout file (if any) with the flags over it; false after printing the file's errors.
@@ -83,7 +71,7 @@ bool resolveLayout(const std::filesystem::path& file, const std::vector<LayoutFl
         out = *parsed.layout;
     }
     for (const LayoutFlag& f : flags)
-        if (f.value) f.field(out) = *f.value;
+        if (f.value) f.field->field(out) = *f.value;
     return true;
 }
 
@@ -145,7 +133,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         ->type_name("FILE.json")
         ->group(layoutGroup);
     for (LayoutFlag& f : flags)
-        app.add_option(f.name, f.value, f.help)->type_name("N")->check(CLI::Range(0u, f.max).description(""))->group(layoutGroup);
+        app.add_option(f.name, f.value, f.field->help)
+            ->type_name("N")
+            ->check(CLI::Range(0u, f.field->max).description(""))
+            ->group(layoutGroup);
     app.add_flag("--vertex", a.options.vertex,
                  "also write the pass-through vertex stage <name>.vert.* that feeds the\nfragment shader's inputs");
     app.add_flag("--bake", a.options.bake,

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hexc/diagnostics.h"
 
@@ -32,6 +33,18 @@ struct ResourceLayout {
     } glsl;
     std::filesystem::path sourceFile;  // the layout file it came from, if any (for located errors)
 };
+
+// One field of a layout, as the layout file and the command line name it: `"<target>": {"<key>": N}` and the flag
+// `--<key>` (vulkan) or `--<target>-<key>`, 0 to `max`.
+struct LayoutField {
+    const char* target;
+    const char* key;
+    uint32_t max;
+    const char* help;  // for --help
+    uint32_t& (*field)(ResourceLayout&);
+};
+// Every field, grouped by target in file order.
+const std::vector<LayoutField>& layoutFields();
 
 // One line naming every field, for stamps and messages: "vulkan 0/0 hlsl space0 b0 t0 s0 u0 msl 0/0/0 glsl 0".
 std::string toString(const ResourceLayout& layout);

@@ -157,32 +157,27 @@ public:
             report(Code::WrongType, "", "expected a layout object, got " + typeName(doc));
             return layout;
         }
-        using Fields = std::vector<std::pair<std::string, uint32_t*>>;
-        const std::vector<std::pair<std::string, Fields>> targets = {
-            {"vulkan", {{"set", &layout.vulkan.set}, {"binding", &layout.vulkan.binding}}},
-            {"hlsl",
-             {{"space", &layout.hlsl.space}, {"b", &layout.hlsl.b}, {"t", &layout.hlsl.t}, {"s", &layout.hlsl.s}, {"u", &layout.hlsl.u}}},
-            {"msl", {{"buffer", &layout.msl.buffer}, {"texture", &layout.msl.texture}, {"sampler", &layout.msl.sampler}}},
-            {"glsl", {{"binding", &layout.glsl.binding}}}};
         std::vector<std::string> keys{"$schema"};
-        for (const auto& [target, fields] : targets) keys.push_back(target);
+        for (const LayoutField& f : layoutFields())
+            if (keys.back() != f.target) keys.push_back(f.target);
         checkKeys(doc, "", keys);
-        // Vulkan guarantees 4 descriptor sets; the other limits keep every index well inside what targets accept.
-        const Range sets{0, 31, false, false, "in [0, 31]"}, indices{0, 4095, false, false, "in [0, 4095]"};
-        for (const auto& [target, fields] : targets) {
-            if (!doc.contains(target)) continue;
-            const json& t = doc[target];
-            const std::string p = "/" + target;
+        for (size_t i = 1; i < keys.size(); ++i) {
+            const std::string p = "/" + keys[i];
+            if (!doc.contains(keys[i])) continue;
+            const json& t = doc[keys[i]];
             if (!t.is_object()) {
                 report(Code::WrongType, p, "expected an object, got " + typeName(t));
                 continue;
             }
             std::vector<std::string> names;
-            for (const auto& f : fields) names.push_back(f.first);
+            for (const LayoutField& f : layoutFields())
+                if (f.target == keys[i]) names.push_back(f.key);
             checkKeys(t, p, names);
-            for (const auto& [key, field] : fields)
-                if (t.contains(key))
-                    *field = uint32_t(whole(t[key], p + "/" + key, target == "vulkan" && key == "set" ? sets : indices, 0));
+            for (const LayoutField& f : layoutFields())
+                if (f.target == keys[i] && t.contains(f.key)) {
+                    const Range range{0, double(f.max), false, false, "in [0, " + std::to_string(f.max) + "]"};
+                    f.field(layout) = uint32_t(whole(t[f.key], p + "/" + f.key, range, 0));
+                }
         }
         return layout;
     }
@@ -779,6 +774,25 @@ LayoutParseResult parseLayout(std::string_view text, const std::filesystem::path
 }
 
 LayoutParseResult parseLayoutFile(const std::filesystem::path& file) { return readAndParse(file, "layout", &parseLayout); }
+
+const std::vector<LayoutField>& layoutFields() {
+    using L = ResourceLayout;
+    // Vulkan guarantees 4 descriptor sets (31 leaves room); 4095 keeps every other index well inside what targets accept.
+    static const std::vector<LayoutField> fields = {
+        {"vulkan", "set", 31, "hexc's Vulkan descriptor set, 0 to 31 (default 0)", [](L& l) -> uint32_t& { return l.vulkan.set; }},
+        {"vulkan", "binding", 4095, "hexc's first Vulkan binding: block, sampler, textures (default 0)",
+         [](L& l) -> uint32_t& { return l.vulkan.binding; }},
+        {"hlsl", "space", 4095, "hexc's HLSL register space (needs --hlsl-sm 51+)", [](L& l) -> uint32_t& { return l.hlsl.space; }},
+        {"hlsl", "b", 4095, "hexc's first HLSL b register", [](L& l) -> uint32_t& { return l.hlsl.b; }},
+        {"hlsl", "t", 4095, "hexc's first HLSL t register", [](L& l) -> uint32_t& { return l.hlsl.t; }},
+        {"hlsl", "s", 4095, "hexc's first HLSL s register", [](L& l) -> uint32_t& { return l.hlsl.s; }},
+        {"hlsl", "u", 4095, "first HLSL u register (template storage)", [](L& l) -> uint32_t& { return l.hlsl.u; }},
+        {"msl", "buffer", 4095, "hexc's first MSL buffer index", [](L& l) -> uint32_t& { return l.msl.buffer; }},
+        {"msl", "texture", 4095, "hexc's first MSL texture index", [](L& l) -> uint32_t& { return l.msl.texture; }},
+        {"msl", "sampler", 4095, "hexc's first MSL sampler index", [](L& l) -> uint32_t& { return l.msl.sampler; }},
+        {"glsl", "binding", 4095, "hexc's GLSL block binding and first texture unit", [](L& l) -> uint32_t& { return l.glsl.binding; }}};
+    return fields;
+}
 
 std::string toString(const ResourceLayout& l) {
     auto n = [](uint32_t v) { return std::to_string(v); };
