@@ -14,7 +14,10 @@
 
 namespace spirv_cross {
 class Compiler;
-}
+class CompilerGLSL;
+class CompilerHLSL;
+class CompilerMSL;
+}  // namespace spirv_cross
 
 namespace hexc {
 
@@ -47,6 +50,11 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
 TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan);
+
+// Each target's SPIRV-Cross options from hexc's (version, shader model), for the fragment and the vertex stage alike.
+void configureHlsl(spirv_cross::CompilerHLSL& c, const CompileOptions& options);
+void configureGlsl(spirv_cross::CompilerGLSL& c, const CompileOptions& options);
+void configureMsl(spirv_cross::CompilerMSL& c, const CompileOptions& options);
 
 // SPIRV-Cross names the HLSL entry function `main` whatever the module's entry point is: gives it `entry`.
 void renameHlslEntry(std::string& source, const std::string& entry);

@@ -55,14 +55,18 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerGLSL& c, const std::v
 
 }  // namespace
 
-TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
-    spirv_cross::CompilerGLSL c(spirv);
+void configureGlsl(spirv_cross::CompilerGLSL& c, const CompileOptions& options) {
     spirv_cross::CompilerGLSL::Options glsl;
     glsl.version = options.glslVersion;
     glsl.es = options.glslEs;
     glsl.vulkan_semantics = false;
     glsl.enable_420pack_extension = false;
     c.set_common_options(glsl);
+}
+
+TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
+    spirv_cross::CompilerGLSL c(spirv);
+    configureGlsl(c, options);
 
     std::vector<TemplateResource> own = templateResources(c, plan);
     c.build_combined_image_samplers();

@@ -61,11 +61,15 @@ void renameHlslEntry(std::string& source, const std::string& entry) {
         }
 }
 
-TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
-    spirv_cross::CompilerHLSL c(spirv);
+void configureHlsl(spirv_cross::CompilerHLSL& c, const CompileOptions& options) {
     spirv_cross::CompilerHLSL::Options hlsl;
     hlsl.shader_model = options.hlslShaderModel;
     c.set_hlsl_options(hlsl);
+}
+
+TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
+    spirv_cross::CompilerHLSL c(spirv);
+    configureHlsl(c, options);
     const ResourceLayout::Hlsl& l = plan.layout.hlsl;
     if (l.space != 0 && options.hlslShaderModel < 51)
         throw CompileError{{Diagnostic::make(

@@ -6,11 +6,15 @@
 
 namespace hexc {
 
-TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
-    spirv_cross::CompilerMSL c(spirv);
+void configureMsl(spirv_cross::CompilerMSL& c, const CompileOptions& options) {
     spirv_cross::CompilerMSL::Options msl;
     msl.set_msl_version(options.mslMajor, options.mslMinor);
     c.set_msl_options(msl);
+}
+
+TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
+    spirv_cross::CompilerMSL c(spirv);
+    configureMsl(c, options);
     const ResourceLayout::Msl& l = plan.layout.msl;
     auto bind = [&](uint32_t binding, uint32_t buffer, uint32_t texture, uint32_t sampler) {
         spirv_cross::MSLResourceBinding b;

@@ -13,25 +13,17 @@ TargetOutput emitVertex(const std::vector<uint32_t>& spirv, Target target, const
     out.entryPoint = entry;
     if (target == Target::Hlsl) {
         spirv_cross::CompilerHLSL c(spirv);
-        spirv_cross::CompilerHLSL::Options hlsl;
-        hlsl.shader_model = options.hlslShaderModel;
-        c.set_hlsl_options(hlsl);
+        configureHlsl(c, options);
         out.source = c.compile();
         renameHlslEntry(out.source, entry);
     } else if (target == Target::Glsl) {
         spirv_cross::CompilerGLSL c(spirv);
-        spirv_cross::CompilerGLSL::Options glsl;
-        glsl.version = options.glslVersion;
-        glsl.es = options.glslEs;
-        glsl.vulkan_semantics = false;
-        c.set_common_options(glsl);
+        configureGlsl(c, options);
         out.source = c.compile();
         out.entryPoint = "main";
     } else if (target == Target::Msl) {
         spirv_cross::CompilerMSL c(spirv);
-        spirv_cross::CompilerMSL::Options msl;
-        msl.set_msl_version(options.mslMajor, options.mslMinor);
-        c.set_msl_options(msl);
+        configureMsl(c, options);
         out.source = c.compile();
         out.entryPoint = c.get_cleansed_entry_point_name(entry, spv::ExecutionModelVertex);
     }
