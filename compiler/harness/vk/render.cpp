@@ -131,6 +131,11 @@ std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const Parame
 
 namespace {
 
+// The manifest's name of the target whose output is executed.
+const char* manifestTarget(ExecutedTarget target) {
+    return target == ExecutedTarget::Glsl ? "glsl" : target == ExecutedTarget::Hlsl ? "hlsl" : "spirv";
+}
+
 // The Vulkan binding glslang gives an HLSL register ("t3": kHlslTextureShift + 3; spirv.h).
 uint32_t hlslBinding(const std::string& reg) {
     const uint32_t n = uint32_t(std::stoul(reg.substr(1)));
@@ -192,8 +197,7 @@ void placeTemplateResource(const nlohmann::json& r, ExecutedTarget target, const
 // declares resources `own` does not provide cannot be drawn (unbound descriptors are undefined behaviour, and
 // lavapipe crashes): std::invalid_argument naming them.
 void bindTemplateInputs(const nlohmann::json& manifest, ExecutedTarget target, const TemplateInputs& own, RenderRequest& request) {
-    const nlohmann::json listed =
-        manifest["targets"][target == ExecutedTarget::Hlsl ? "hlsl" : "spirv"].value("template_resources", nlohmann::json::array());
+    const nlohmann::json listed = manifest["targets"][manifestTarget(target)].value("template_resources", nlohmann::json::array());
     std::string missing;
     for (const nlohmann::json& r : listed) {
         const bool given = r["kind"] == "push_constant" ? !own.pushConstants.empty() : own.resources.count(r["name"]) > 0;
@@ -243,9 +247,7 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     // Bound where the manifest says, as an engine would.
     bindHexcs(manifest, target, request);
     // glslang keeps an HLSL entry point's name; OpenGL GLSL's is `main`.
-    request.fragmentEntry = manifest["targets"][target == ExecutedTarget::Glsl   ? "glsl"
-                                                : target == ExecutedTarget::Hlsl ? "hlsl"
-                                                                                 : "spirv"]["entry_point"];
+    request.fragmentEntry = manifest["targets"][manifestTarget(target)]["entry_point"];
     request.uniformData = packParameters(manifest, parameters);
     bindTemplateInputs(manifest, target, own, request);
     // Textures in manifest order, which is binding order.

@@ -201,10 +201,6 @@ std::string generateGlsl(const ShaderPlan& plan) {
     return out;
 }
 
-}  // namespace hexc
-
-namespace hexc {
-
 std::string generateVertexGlsl(const std::vector<Varying>& inputs) {
     const std::map<std::string, std::string> sections = snippetSections("vertex.glsl");
     std::string varyings, copies;
