@@ -177,10 +177,11 @@ std::vector<uint8_t> bytes(std::initializer_list<float> values) {
 
 }  // namespace
 
-// materials/templates/engine.glsl on lavapipe from its SPIR-V and its HLSL, its per-frame and per-object blocks,
-// shadow map, environment map, separate texture and sampler, and push constants bound where each target's manifest
-// entry says, under the default layout and materials/layouts/engine.json (hexc sharing the template's set 1 from
-// binding 5, HLSL register space 1): every pixel is what the template computes from hexc's albedo
+// materials/templates/engine.glsl on lavapipe from its SPIR-V, HLSL and OpenGL GLSL, its per-frame and per-object
+// blocks, shadow map, environment map, separate texture and sampler, and push constants bound where each target's
+// manifest entry says, under three layouts: the default; every base shifted (hexc in set 3 from binding 4, HLSL
+// registers b2 t5 s3 in space 0, GLSL from 3); materials/layouts/engine.json (hexc sharing the template's set 1 from
+// binding 5, HLSL register space 1 under SM 5.1). Every pixel is what the template computes from hexc's albedo
 // (rendered alone, and checked against the fp64 reference by the ColorPath tests) and the template's values.
 TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
     REQUIRE_VULKAN();
@@ -200,14 +201,19 @@ TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
                      {"detail", {R::Kind::SampledImage, 0, 0, {}, &detail}},
                      {"detailSampler", {R::Kind::Sampler, 0, 0, {}, nullptr}}};
     own.pushConstants = bytes({0.25f});  // ambient
-    CompileOptions shared;               // hexc in the template's set 1 from binding 5, HLSL space 1 (materials/layouts/engine.json)
+    std::vector<std::pair<std::string, CompileOptions>> all(3);
+    all[0].first = "default";
+    all[1] = {"shifted", {}};
+    all[1].second.layout = layouts()[1].layout;
     LayoutParseResult example = parseLayoutFile("materials/layouts/engine.json");
     ASSERT_TRUE(example.layout) << formatAll(example.diagnostics);
-    shared.layout = *example.layout;
-    shared.hlslShaderModel = 51;
-    for (const CompileOptions& options : {CompileOptions{}, shared})
-        for (vk::ExecutedTarget target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl}) {
-            SCOPED_TRACE("hexc in set " + std::to_string(options.layout.vulkan.set) + ", target " + std::to_string(int(target)));
+    all[2] = {"engine.json", {}};
+    all[2].second.layout = *example.layout;
+    all[2].second.hlslShaderModel = 51;
+    for (const auto& [name, options] : all)
+        for (vk::ExecutedTarget target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl}) {
+            const char* targetName = target == vk::ExecutedTarget::Hlsl ? "HLSL" : target == vk::ExecutedTarget::Glsl ? "GLSL" : "SPIR-V";
+            SCOPED_TRACE(name + " layout, " + targetName);
             Image image = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Shaded, "", view, target, 0, nullptr, {}, options, own);
             // N = light = +z: diffuse = shadow = 0.5; the sky term reads the environment's colour. Both shaders compute the
             // albedo from the same GLSL; the rest is a few float32 operations on values below 4, so 1e-5 covers any
@@ -219,8 +225,7 @@ TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
                     const double expected = (albedo.rgba[p + c] * tint[c] * (0.25 + 0.5) + sky[c] * 0.04) * 0.75 * 2.0;
                     worst = std::max(worst, std::fabs(double(image.rgba[p + c]) - expected));
                 }
-            std::printf("  hexc in set %u, %s: worst difference %.2e\n", options.layout.vulkan.set,
-                        target == vk::ExecutedTarget::Hlsl ? "HLSL" : "SPIR-V", worst);
+            std::printf("  %s layout, %s: worst difference %.2e\n", name.c_str(), targetName, worst);
             EXPECT_LE(worst, 1e-5);
         }
 }

@@ -154,7 +154,16 @@ void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequ
             request.firstTextureBinding = std::min(request.firstTextureBinding, hlslBinding(where["register"]));
         return;
     }
-    // SPIR-V, and OpenGL GLSL brought back into the same Vulkan layout: the sampler follows the block, the textures it.
+    if (target == ExecutedTarget::Glsl) {  // OpenGL block bindings and texture units, as compileToSpirv maps them
+        const nlohmann::json& glsl = manifest["targets"]["glsl"];
+        request.set = 0;
+        request.samplerBinding = kGlDefaultBlockBinding + 1;  // unread: OpenGL combines the sampler into each texture
+        request.paramsBinding = glsl.contains("params") ? glsl["params"]["binding"].get<uint32_t>() : request.samplerBinding + 1;
+        request.firstTextureBinding = UINT32_MAX;
+        for (const auto& [slot, where] : glsl["textures"].items())
+            request.firstTextureBinding = std::min(request.firstTextureBinding, kGlTextureShift + where["texture_unit"].get<uint32_t>());
+        return;
+    }
     const nlohmann::json& sampler = manifest["targets"]["spirv"]["sampler"];
     request.set = sampler["set"];
     request.samplerBinding = sampler["binding"];
@@ -163,37 +172,47 @@ void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequ
 }
 
 // One template resource as a target's manifest entry places it: SPIR-V as declared; HLSL in its registers, a
-// sampler2D split into a texture and a SamplerState, push constants a cbuffer that keeps their offsets.
+// sampler2D split into a texture and a SamplerState, push constants a cbuffer that keeps their offsets; OpenGL GLSL
+// at its block binding or texture unit (a separate texture combined with its sampler), push constants loose uniforms.
 void placeTemplateResource(const nlohmann::json& r, ExecutedTarget target, const TemplateInputs& own, RenderRequest& request) {
-    const std::string name = r["name"];
     using Kind = TemplateResource::Kind;
     if (r["kind"] == "push_constant") {
         if (target == ExecutedTarget::Spirv) {
             request.fragmentPushConstants = own.pushConstants;
-            return;
+        } else if (target == ExecutedTarget::Glsl) {  // a struct uniform: its std140 offsets are the block's from byte 16
+            request.templateResources.push_back({Kind::UniformBuffer, 0, kGlDefaultBlockBinding, own.pushConstants, nullptr});
+        } else {
+            TemplateResource block{Kind::UniformBuffer, request.set, hlslBinding(r["register"]), std::vector<uint8_t>(16), nullptr};
+            block.data.insert(block.data.end(), own.pushConstants.begin(), own.pushConstants.end());
+            request.templateResources.push_back(std::move(block));
         }
-        TemplateResource block{Kind::UniformBuffer, request.set, hlslBinding(r["register"]), std::vector<uint8_t>(16), nullptr};
-        block.data.insert(block.data.end(), own.pushConstants.begin(), own.pushConstants.end());
-        request.templateResources.push_back(std::move(block));
         return;
     }
-    TemplateResource placed = own.resources.at(name);
+    if (r.value("combined_into_textures", false)) return;  // OpenGL: bound with its texture
+    TemplateResource placed = own.resources.at(r["name"]);
     if (target == ExecutedTarget::Spirv) {
         placed.set = r["vulkan"]["set"];
         placed.binding = r["vulkan"]["binding"];
-        request.templateResources.push_back(std::move(placed));
-        return;
-    }
-    placed.set = r["space"];
-    placed.binding = hlslBinding(r["register"]);
-    if (r.contains("sampler_register")) {
-        placed.kind = Kind::SampledImage;
-        request.templateResources.push_back({Kind::Sampler, placed.set, hlslBinding(r["sampler_register"]), {}, nullptr});
+    } else if (target == ExecutedTarget::Glsl) {
+        placed.set = 0;
+        if (r.contains("texture_unit")) {
+            placed.kind = Kind::CombinedImageSampler;
+            placed.binding = kGlTextureShift + r["texture_unit"].get<uint32_t>();
+        } else {
+            placed.binding = r["binding"];
+        }
+    } else {
+        placed.set = r["space"];
+        placed.binding = hlslBinding(r["register"]);
+        if (r.contains("sampler_register")) {
+            placed.kind = Kind::SampledImage;
+            request.templateResources.push_back({Kind::Sampler, placed.set, hlslBinding(r["sampler_register"]), {}, nullptr});
+        }
     }
     request.templateResources.push_back(std::move(placed));
 }
 
-// The template's resources where the executed target's manifest says (SPIR-V and HLSL). A shader whose template
+// The template's resources where the executed target's manifest says. A shader whose template
 // declares resources `own` does not provide cannot be drawn (unbound descriptors are undefined behaviour, and
 // lavapipe crashes): std::invalid_argument naming them.
 void bindTemplateInputs(const nlohmann::json& manifest, ExecutedTarget target, const TemplateInputs& own, RenderRequest& request) {
@@ -208,8 +227,6 @@ void bindTemplateInputs(const nlohmann::json& manifest, ExecutedTarget target, c
                                     ") that only the engine can bind; render a slot output instead (--output albedo, normal, ...)");
     if (listed.size() != own.resources.size() + (own.pushConstants.empty() ? 0 : 1))
         throw std::invalid_argument("a template resource given is not in the manifest");
-    if (!listed.empty() && target == ExecutedTarget::Glsl)
-        throw std::invalid_argument("a template's own resources are bound for the SPIR-V and HLSL targets only");
     for (const nlohmann::json& r : listed) placeTemplateResource(r, target, own, request);
 }
 

@@ -39,7 +39,7 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
 using ParameterValues = std::map<std::string, std::vector<double>>;
 
 // What a template of the engine's binds beside hexc's: its resources by name (set and binding are taken from the
-// manifest, as an engine would) and its fragment push constant bytes from offset 16 (runner.h). SPIR-V target only.
+// manifest, as an engine would) and its fragment push constant bytes from offset 16 (runner.h).
 struct TemplateInputs {
     std::map<std::string, TemplateResource> resources;
     std::vector<uint8_t> pushConstants;

@@ -25,11 +25,14 @@ struct SpirvResult {
 // t<n> at kHlslTextureShift + n, u<n> at kHlslUavShift + n (dxc's -fvk-*-shift idea; registers below 32 of each
 // class stay apart), register space N in set N.
 constexpr unsigned kHlslSamplerShift = 32, kHlslTextureShift = 64, kHlslUavShift = 96;
+// Where OpenGL GLSL's bindings land when compileToSpirv reads it, all in set 0: uniform block binding n at n, texture
+// unit n at kGlTextureShift + n (OpenGL numbers the two apart), and the loose uniforms OpenGL has where Vulkan has
+// push constants gathered in one block at kGlDefaultBlockBinding (block bindings below it stay apart).
+constexpr unsigned kGlDefaultBlockBinding = 48, kGlTextureShift = 64;
 
 // Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
 // the source in diagnostics when it has no #line names. HLSL registers land as above (HLSL 5.0 has no spaces: set
-// `layout.hlsl.space`). OpenGL texture units and block bindings placed by `layout` map back to its Vulkan bindings
-// (by default texture unit i -> binding 2+i). `entryPoint`: the HLSL function to compile, or the name a GLSL
+// `layout.hlsl.space`); OpenGL bindings as above. `entryPoint`: the HLSL function to compile, or the name a GLSL
 // shader's `main` gets in the module.
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
                            SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main",

@@ -73,21 +73,22 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     shader.setEntryPoint(entryPoint.c_str());
     // GLSL's function is `main` whatever the module calls its entry point.
     if (!hlsl) shader.setSourceEntryPoint("main");
-    // Sources without a set or space (HLSL 5.0, OpenGL) go to the layout's set or space.
-    const HexcBindings b(layout.vulkan);
-    shader.setResourceSetBinding({std::to_string(hlsl ? layout.hlsl.space : b.set)});
+    // Sources without a set or space (HLSL 5.0, OpenGL) go to the layout's set or space, OpenGL's to set 0.
+    const bool openGl = language == SourceLanguage::OpenGlGlsl;
+    shader.setResourceSetBinding({std::to_string(hlsl ? layout.hlsl.space : openGl ? 0 : HexcBindings(layout.vulkan).set)});
     if (hlsl) {
         shader.setShiftBinding(glslang::EResSampler, kHlslSamplerShift);
         shader.setShiftBinding(glslang::EResTexture, kHlslTextureShift);
         shader.setShiftBinding(glslang::EResUav, kHlslUavShift);
-    } else if (language == SourceLanguage::OpenGlGlsl) {
-        // GLSL 330 carries no binding or varying location qualifiers (OpenGL matches by name): let
-        // glslang number what is missing, in declaration order, then shift into hexc's layout (shifts are unsigned
-        // and wrap, so a unit above its binding still lands on it).
+    } else if (openGl) {
+        // GLSL 330 carries no binding or varying location qualifiers (OpenGL matches by name): glslang numbers
+        // what is missing in declaration order. Relaxed rules take loose uniforms into one block.
         shader.setAutoMapBindings(true);
         shader.setAutoMapLocations(true);
-        shader.setShiftBinding(glslang::EResUbo, b.params - layout.glsl.binding);
-        shader.setShiftBinding(glslang::EResTexture, b.firstTexture - layout.glsl.binding);
+        shader.setShiftBinding(glslang::EResTexture, kGlTextureShift);
+        shader.setEnvInputVulkanRulesRelaxed();
+        shader.setGlobalUniformSet(0);
+        shader.setGlobalUniformBinding(kGlDefaultBlockBinding);
     }
     auto messages = EShMessages(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl | EShMsgHlslOffsets : 0));
     if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
