@@ -236,10 +236,10 @@ double heightTolerance(const reference::SlotResult& r, double eh, int channels) 
 
 // `level`: the deepest mip level the view reads.
 Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, vk::ExecutedTarget target, double ex,
-                            double em, int channels) {
+                            double em, int channels, const CompileOptions& options = {}) {
     std::string why;
     const Slot& slot = m.slots[0];
-    Image gpu = vk::render(*runner(&why), m, output, "", view, target);
+    Image gpu = vk::render(*runner(&why), m, output, "", view, target, 0, nullptr, {}, options);
     const reference::Heights heights(m, slot);
     std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view, heights.source());
     // The height map is 8-bit linear data, sampled at the view's levels like the slot.
@@ -269,22 +269,26 @@ void report(const char* name, const Check& c) {
                 c.errors.max, c.errors.max * 255, c.errors.mean, c.errors.overOne255, c.toleranceAtMax, c.worstRatio);
 }
 
+// A colour or scalar slot (the material's first) against the reference.
+Check checkColor(const Material& m, bool minified, vk::ExecutedTarget target, const CompileOptions& options = {}) {
+    const Slot& slot = m.slots[0];
+    View view = slot.hex.projection == Projection::Triplanar ? kSphere : minified ? kMinified : kMagnified;
+    // The paper's hash is fract(sin(x) * 43758.5453): lavapipe's sin and the C library's disagree in the last
+    // bits, which the factor 43758 turns into different tiles away from the origin (see docs/precision.md).
+    // Near the origin, where the ids are 0 and 1, both agree.
+    if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};
+    double es = sampleError(minified ? 2 : 0, slot.colorSpace == ColorSpace::Srgb);
+    // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
+    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, minified ? 2 : 0, target, es, es, slot.kind == SlotKind::Scalar ? 1 : 4,
+                                 options);
+}
+
 class ColorPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
 
 TEST_P(ColorPath, MatchesReference) {
     REQUIRE_VULKAN();
     const auto& [c, target] = GetParam();
-    Material m = material(c.slot, c.hextiling);
-    const Slot& slot = m.slots[0];
-    View view = slot.hex.projection == Projection::Triplanar ? kSphere : c.minified ? kMinified : kMagnified;
-    // The paper's hash is fract(sin(x) * 43758.5453): lavapipe's sin and the C library's disagree in the last
-    // bits, which the factor 43758 turns into different tiles away from the origin (see docs/precision.md).
-    // Near the origin, where the ids are 0 and 1, both agree.
-    if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};
-    double es = sampleError(c.minified ? 2 : 0, slot.colorSpace == ColorSpace::Srgb);
-    // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
-    Check check =
-        checkAgainstReference(m, vk::RenderOutput::Albedo, view, c.minified ? 2 : 0, target, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
+    Check check = checkColor(material(c.slot, c.hextiling), c.minified, target);
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
@@ -335,27 +339,31 @@ const Case kNormalCases[] = {
      R"({"projection": "triplanar", "tiling": 1.5})"},
 };
 
-class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
-
-TEST_P(NormalPath, MatchesReference) {
-    REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
-    Material m = material(c.slot, c.hextiling);
+// A normal slot (the material's first) against the reference, as derivatives.
+Check checkNormal(const Material& m, bool minified, vk::ExecutedTarget target, const CompileOptions& options = {}) {
     const Slot& slot = m.slots[0];
     const bool triplanar = slot.hex.projection == Projection::Triplanar;
-    View view = triplanar ? kSphere : c.minified ? kMinified : kMagnified;
+    View view = triplanar ? kSphere : minified ? kMinified : kMagnified;
     if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};  // see ColorPath
     TextureBounds b = bounds(sampled(slot));
     // Listing 9: d = -xy / z with x, y, z = 2 * texel - 1, each off by 2 e_s, so to first order
     // |dd| <= 2 e_s (1 + max|d|) / min z. The slope metric sin(theta) = sqrt(|d|^2 / (1 + |d|^2)) moves by at
     // most the error of |d| (its slope is <= 1), which is <= sqrt(2) |dd|.
-    double ed = 2 * sampleError(c.minified ? 2 : 0, false) * (1 + b.maxDeriv) / b.minZ;
+    double ed = 2 * sampleError(minified ? 2 : 0, false) * (1 + b.maxDeriv) / b.minZ;
     // Triplanar: each plane's gradient g_k errs by |(dd_x, dd_y)| <= sqrt(2) ed, so does their convex combination,
     // and the projection onto the surface does not lengthen it: each component of the surface gradient is within
     // sqrt(2) ed. The plane weights' own float32 error (~1e-7) is negligible.
-    Check check =
-        triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, 0, target, std::sqrt(2.0) * ed, 0, 3)
-                  : checkAgainstReference(m, vk::RenderOutput::Derivative, view, c.minified ? 2 : 0, target, ed, std::sqrt(2.0) * ed, 2);
+    return triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, 0, target, std::sqrt(2.0) * ed, 0, 3, options)
+                     : checkAgainstReference(m, vk::RenderOutput::Derivative, view, minified ? 2 : 0, target, ed, std::sqrt(2.0) * ed, 2,
+                                             options);
+}
+
+class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
+
+TEST_P(NormalPath, MatchesReference) {
+    REQUIRE_VULKAN();
+    const auto& [c, target] = GetParam();
+    Check check = checkNormal(material(c.slot, c.hextiling), c.minified, target);
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
@@ -366,6 +374,57 @@ INSTANTIATE_TEST_SUITE_P(Exec, NormalPath,
                          [](const auto& info) {
                              return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
                          });
+
+// ---- Debug outputs ------------------------------------------------------------------------------------------
+
+// --debug outputs (unoptimised, hexc's functions kept, #line directives) of each of rock's slots, with rock's
+// settings, on every target: the same reference and tolerances as the optimised ones above.
+class DebugOutputs : public testing::TestWithParam<vk::ExecutedTarget> {};
+
+TEST_P(DebugOutputs, RocksSlotsMatchTheReference) {
+    REQUIRE_VULKAN();
+    ParseResult rock = parseMaterialFile("materials/rock.json");
+    ASSERT_TRUE(rock.material) << formatAll(rock.diagnostics);
+    CompileOptions debug;
+    debug.debug = true;
+    for (const Slot& slot : rock.material->slots) {
+        Material one = *rock.material;
+        one.slots = {slot};
+        Check check =
+            slot.kind == SlotKind::Normal ? checkNormal(one, false, GetParam(), debug) : checkColor(one, false, GetParam(), debug);
+        report(("rock " + slot.name + " --debug").c_str(), check);
+        EXPECT_LE(check.worstRatio, 1.0) << slot.name;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, DebugOutputs, testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl),
+                         [](const auto& info) { return targetName(info.param); });
+
+// ---- GLSL versions ------------------------------------------------------------------------------------------
+
+// Every OpenGL GLSL version hexc emits, executed (compiled again by glslang, as the Glsl target above) on rock's
+// albedo and normal slots: the same reference and tolerances. GLSL 330 and ES 3.00 bind by name; one slot has one
+// block and one texture unit, where glslang's auto-mapping puts them (render.cpp).
+TEST(GlslVersions, EachMatchesTheReference) {
+    REQUIRE_VULKAN();
+    ParseResult rock = parseMaterialFile("materials/rock.json");
+    ASSERT_TRUE(rock.material) << formatAll(rock.diagnostics);
+    for (auto [version, es] : {std::pair{460u, false}, {330u, false}, {310u, true}, {300u, true}}) {
+        CompileOptions options;
+        options.glslVersion = version;
+        options.glslEs = es;
+        for (const Slot& slot : rock.material->slots) {
+            if (slot.kind == SlotKind::Scalar) continue;
+            Material one = *rock.material;
+            one.slots = {slot};
+            Check check = slot.kind == SlotKind::Normal ? checkNormal(one, false, vk::ExecutedTarget::Glsl, options)
+                                                        : checkColor(one, false, vk::ExecutedTarget::Glsl, options);
+            const std::string name = "rock " + slot.name + " GLSL " + std::to_string(version) + (es ? " es" : "");
+            report(name.c_str(), check);
+            EXPECT_LE(check.worstRatio, 1.0) << name;
+        }
+    }
+}
 
 // ---- Odd-sized textures -----------------------------------------------------------------------------------
 // hexc accepts any texture size. The runner builds each mip level by a linear blit of the one above, which at an odd

@@ -60,10 +60,12 @@ bool printDiagnostics(const Diagnostics& diags, const Arguments& a, bool passRea
 }
 
 // A shader file's code without its entry point's name, which differs between variants whose code is the same: the
-// name taken out of text, OpEntryPoint and OpName (the only instructions that hold it) skipped in SPIR-V.
+// name taken out of text, OpEntryPoint and OpName (the only instructions that hold it) skipped in SPIR-V. Text
+// loses its banner too, which names the material.
 std::string withoutEntryName(const std::string& file, std::string contents, const std::string& entry) {
-    if (entry.empty()) return contents;
     if (!file.ends_with(".spv")) {
+        contents = withoutBanner(std::move(contents));
+        if (entry.empty()) return contents;
         for (size_t at; (at = contents.find(entry)) != std::string::npos;) contents.erase(at, entry.size());
         return contents;
     }
@@ -253,6 +255,7 @@ std::string depfileFor(const Arguments& a, const Inputs& in) {
         for (Target t : targets) outs.push_back(a.outDir / shaderFileName(j.material.name, t));
         if (a.options.vertex)
             for (Target t : targets) outs.push_back(a.outDir / shaderFileName(j.material.name, t, "vert"));
+        if (a.options.emitGenerated) outs.push_back(a.outDir / (j.material.name + ".generated.frag"));
         std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
         files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
         for (const auto& f : files)

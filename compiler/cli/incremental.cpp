@@ -48,7 +48,8 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     opts += std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
             std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + "," + std::to_string(options.specialize) +
             std::to_string(options.shareLattice) + std::to_string(options.bake) + "," + toString(options.layout) + "," +
-            options.entryPoint + (options.vertex ? ",vertex" : "");
+            options.entryPoint + (options.vertex ? ",vertex" : "") + (options.debug ? ",debug" : "") +
+            (options.emitGenerated ? ",generated" : "");
     h.add(opts);
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).
     h.add(material.name + "|" + material.templateName);

@@ -20,7 +20,8 @@ const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V
 Reads each material (JSON, see docs/material-format.md), injects hex-tiling into every texture slot of
 its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:
   DIR/<name>.frag.spv  .frag.hlsl  .frag.glsl  .frag.metal  and  DIR/<name>.manifest.json
-  (with --vertex also DIR/<name>.vert.*, a pass-through vertex stage feeding the fragment shader)
+  (with --vertex also DIR/<name>.vert.*, a pass-through vertex stage feeding the fragment shader;
+   with --emit-generated also DIR/<name>.generated.frag, the Vulkan GLSL hexc generated and compiled)
 A scene (a JSON file with a "scene" key, see docs/scenes.md) compiles each (material, pass) variant it
 uses into DIR/<material>.<pass>.*, with an index (DIR/<scene>.scene.json) that marks variants whose code is
 identical. Inputs unchanged since the last run (material, textures' sizes, template, options, hexc build)
@@ -42,8 +43,8 @@ void applyNames(const std::vector<std::string>& targets, const std::string& glsl
     if (!targets.empty()) o.targets.clear();
     for (const std::string& t : targets) o.targets.push_back(names.at(t));
     if (!glsl.empty()) {
-        o.glslEs = glsl == "310es";
-        o.glslVersion = o.glslEs ? 310 : uint32_t(std::stoi(glsl));
+        o.glslEs = glsl.ends_with("es");
+        o.glslVersion = uint32_t(std::stoi(glsl));
     }
     if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
 }
@@ -124,7 +125,14 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
             },
             ""))
         ->check(CLI::IsMember({50, 51, 60, 61, 62, 63, 64, 65, 66}));
-    app.add_option("--glsl-version", glsl, "GLSL version (default 450)")->check(CLI::IsMember({"450", "330", "310es"}));
+    app.add_option("--glsl-version", glsl, "GLSL version: 460, 450 (default), 330, 310es, 300es (WebGL 2)")
+        ->transform(CLI::Validator(
+            [](std::string& v) {  // "300 es", "300_es" as other tools write it
+                if (v.size() == 6 && (v[3] == ' ' || v[3] == '_') && v.ends_with("es")) v.erase(3, 1);
+                return std::string();
+            },
+            ""))
+        ->check(CLI::IsMember({"460", "450", "330", "310es", "300es"}));
     app.add_option("--msl-version", msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
     std::filesystem::path layoutFile;
     std::vector<LayoutFlag> flags = layoutFlags();
@@ -139,6 +147,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
             ->group(layoutGroup);
     app.add_flag("--vertex", a.options.vertex,
                  "also write the pass-through vertex stage <name>.vert.* that feeds the\nfragment shader's inputs");
+    app.add_flag("--debug", a.options.debug,
+                 "readable outputs (like glslc/dxc -O0): no optimisation, hexc's\n"
+                 "functions kept by name, #line references to the template and library");
+    app.add_flag("--emit-generated", a.options.emitGenerated, "also write the generated Vulkan GLSL fed to glslang: <name>.generated.frag");
     app.add_flag("--bake", a.options.bake,
                  "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
     app.add_flag_callback(

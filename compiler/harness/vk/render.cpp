@@ -158,7 +158,9 @@ void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequ
         const nlohmann::json& glsl = manifest["targets"]["glsl"];
         request.set = 0;
         request.samplerBinding = kGlDefaultBlockBinding + 1;  // unread: OpenGL combines the sampler into each texture
-        request.paramsBinding = glsl.contains("params") ? glsl["params"]["binding"].get<uint32_t>() : request.samplerBinding + 1;
+        // Bound by name (GLSL 330, ES 3.00): the manifest's units are hexc's suggestion, and glslang's auto-mapping
+        // numbers blocks and units in declaration order, which is where they are for one slot.
+        request.paramsBinding = glsl.contains("params") ? glsl["params"].value("binding", 0u) : request.samplerBinding + 1;
         request.firstTextureBinding = UINT32_MAX;
         for (const auto& [slot, where] : glsl["textures"].items())
             request.firstTextureBinding = std::min(request.firstTextureBinding, kGlTextureShift + where["texture_unit"].get<uint32_t>());

@@ -18,7 +18,7 @@ struct CompileOptions {
     std::vector<Target> targets{Target::Spirv, Target::Hlsl, Target::Glsl, Target::Msl};
     std::filesystem::path templateFile;  // overrides the material's template when set (--template)
     uint32_t hlslShaderModel = 50;       // 50, 51, 60 ... 66
-    uint32_t glslVersion = 450;          // 330, 450 (desktop) or 310 with glslEs
+    uint32_t glslVersion = 450;          // 330, 450, 460 (desktop) or 300, 310 with glslEs
     bool glslEs = false;
     uint32_t mslMajor = 2, mslMinor = 0;
     // Emit only the code each slot's settings need (no rotation at rotation 0, no gain at falloff 0.5, no
@@ -34,6 +34,11 @@ struct CompileOptions {
     std::string entryPoint;
     // Also emit the pass-through vertex stage that feeds the fragment shader's inputs ("<material>.vert.*").
     bool vertex = false;
+    // Readable outputs (like glslc/dxc -O0): no optimisation, so hexc's functions keep their names, and #line
+    // directives back to the template and library where the target has them. Not for shipping: slower.
+    bool debug = false;
+    // Also write the generated Vulkan GLSL fed to glslang, "<material>.generated.frag" (glslangValidator reads it).
+    bool emitGenerated = false;
 };
 
 struct OutputFile {
@@ -53,6 +58,10 @@ struct CompileResult {
 CompileResult compile(const Material& material, const CompileOptions& options = {});
 
 const char* version();
+
+// A shader source without the two banner lines compile() writes on top (after GLSL's #version line), which name
+// the material: two materials' identical code differs there only.
+std::string withoutBanner(std::string source);
 
 // The shader tool chain hexc is built with, one per line: "glslang 12.0.0", "SPIRV-Tools v2022.4 ...",
 // "SPIRV-Cross 1.3.239.0+dfsg1-1" (the Debian package's version; SPIRV-Cross has no version of its own).

@@ -33,15 +33,16 @@ constexpr unsigned kGlDefaultBlockBinding = 48, kGlTextureShift = 64;
 // Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
 // the source in diagnostics when it has no #line names. HLSL registers land as above (HLSL 5.0 has no spaces: set
 // `layout.hlsl.space`); OpenGL bindings as above. `entryPoint`: the HLSL function to compile, or the name a GLSL
-// shader's `main` gets in the module.
+// shader's `main` gets in the module. `debugInfo`: keep source lines (OpLine) for readable outputs.
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
                            SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main",
-                           const ResourceLayout& layout = {});
+                           const ResourceLayout& layout = {}, bool debugInfo = false);
 
 // Validates, optimises for performance and validates again. Diagnostics only on failure (a hexc bug).
 // freezeConstants: specialisation constants become constants first, so the optimiser folds them.
 // legalize: run the legalisation recipe first, which SPIR-V from glslang's HLSL front end needs.
-SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants = false, bool legalize = false);
+// performance: the -O recipe; off (--debug), the module is only validated (and frozen if asked).
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants = false, bool legalize = false, bool performance = true);
 
 // Human-readable SPIR-V, for tests and debugging.
 std::string disassemble(const std::vector<uint32_t>& words);

@@ -1,7 +1,7 @@
-// OpenGL GLSL (450, 330) and GLSL ES (310). OpenGL has no separate samplers, so each texture is
+// OpenGL GLSL (460, 450, 330) and GLSL ES (310, 300 for WebGL 2). OpenGL has no separate samplers, so each texture is
 // combined with the shared sampler into a sampler2D named hexcTex_<slot> on texture unit base + i; the
 // parameter block is uniform block binding base (the layout's GLSL binding, 0 by default). GLSL 330 has no layout(binding): the engine binds by
-// name (the manifest says so), instead of hexc requiring GL_ARB_shading_language_420pack.
+// name (the manifest says so), instead of hexc requiring GL_ARB_shading_language_420pack; nor has GLSL ES 3.00.
 #include <spirv_glsl.hpp>
 
 #include <map>
@@ -11,7 +11,7 @@
 namespace hexc {
 namespace {
 
-bool hasBindingQualifiers(const CompileOptions& options) { return options.glslEs || options.glslVersion >= 420; }
+bool hasBindingQualifiers(const CompileOptions& options) { return options.glslVersion >= (options.glslEs ? 310u : 420u); }
 
 // The template's blocks after hexc's (uniform block binding `base`), storage buffers and images from 0, its
 // sampler2Ds on the texture units after `unit`; `units` holds those SPIRV-Cross combined from separate images.
@@ -61,6 +61,7 @@ void configureGlsl(spirv_cross::CompilerGLSL& c, const CompileOptions& options) 
     glsl.es = options.glslEs;
     glsl.vulkan_semantics = false;
     glsl.enable_420pack_extension = false;
+    glsl.emit_line_directives = options.debug;
     c.set_common_options(glsl);
 }
 

@@ -65,6 +65,9 @@ void configureHlsl(spirv_cross::CompilerHLSL& c, const CompileOptions& options) 
     spirv_cross::CompilerHLSL::Options hlsl;
     hlsl.shader_model = options.hlslShaderModel;
     c.set_hlsl_options(hlsl);
+    spirv_cross::CompilerGLSL::Options common = c.get_common_options();
+    common.emit_line_directives = options.debug;
+    c.set_common_options(common);
 }
 
 TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {

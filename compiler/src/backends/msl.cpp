@@ -10,6 +10,9 @@ void configureMsl(spirv_cross::CompilerMSL& c, const CompileOptions& options) {
     spirv_cross::CompilerMSL::Options msl;
     msl.set_msl_version(options.mslMajor, options.mslMinor);
     c.set_msl_options(msl);
+    spirv_cross::CompilerGLSL::Options common = c.get_common_options();
+    common.emit_line_directives = options.debug;
+    c.set_common_options(common);
 }
 
 TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {

@@ -55,15 +55,33 @@ void appendGlslangLog(const std::string& log, const std::string& fallbackName, D
 
 spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_0;
 
+// GLSL ES 3.00 (WebGL 2): glslang makes SPIR-V from ES 3.10 on, so it is checked by glslang's ES 3.00 rules alone
+// (parse, no target), then compiled as ES 3.10, of which it is a subset. Returns the source to compile, or "".
+constexpr std::string_view kEs300 = "#version 300 es\n";
+std::string asEs310(const std::string& source, EShLanguage lang, const std::string& name, Diagnostics& out) {
+    glslang::TShader shader(lang);
+    const char* text = source.c_str();
+    const char* names = name.c_str();
+    shader.setStringsWithLengthsAndNames(&text, nullptr, &names, 1);
+    shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientNone, 0);
+    shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetSpv_1_0);
+    const bool ok = shader.parse(GetDefaultResources(), 300, true, EShMsgDefault);
+    appendGlslangLog(shader.getInfoLog(), name, out);
+    return ok ? "#version 310 es\n" + source.substr(kEs300.size()) : "";
+}
+
 }  // namespace
 
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name, SourceLanguage language,
-                           const std::string& entryPoint, const ResourceLayout& layout) {
+                           const std::string& entryPoint, const ResourceLayout& layout, bool debugInfo) {
     initializeGlslang();
     SpirvResult result;
     EShLanguage lang = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
     glslang::TShader shader(lang);
-    const char* text = source.c_str();
+    const bool es300 = language == SourceLanguage::OpenGlGlsl && source.starts_with(kEs300);
+    const std::string es310 = es300 ? asEs310(source, lang, name, result.diagnostics) : "";
+    if (es300 && es310.empty()) return result;
+    const char* text = es300 ? es310.c_str() : source.c_str();
     const char* names = name.c_str();
     shader.setStringsWithLengthsAndNames(&text, nullptr, &names, 1);
     bool hlsl = language == SourceLanguage::Hlsl;
@@ -105,6 +123,7 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     glslang::SpvOptions options;
     options.disableOptimizer = true;  // SPIRV-Tools runs next, with passes chosen in optimizeSpirv
     options.validate = false;
+    options.generateDebugInfo = debugInfo;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(*program.getIntermediate(lang), result.words, &logger, &options);
     if (std::string log = logger.getAllMessages(); log.find("error") != std::string::npos) {
@@ -114,7 +133,7 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     return result;
 }
 
-SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants, bool legalize) {
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants, bool legalize, bool performance) {
     SpirvResult result;
     std::string messages;
     auto consumer = [&messages](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
@@ -141,7 +160,7 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstan
     // Then the performance recipe (spirv-opt -O): inlines the per-slot functions and the library,
     // breaks the HexcTiles struct into scalars, folds constants and removes library code the
     // material never reaches, which is what keeps the emitted HLSL/GLSL/MSL short.
-    optimizer.RegisterPerformancePasses();
+    if (performance) optimizer.RegisterPerformancePasses();
     std::vector<uint32_t> optimized;
     if (!optimizer.Run(words.data(), words.size(), &optimized)) return fail("spirv-opt failed");
     if (!tools.Validate(optimized)) return fail("optimised SPIR-V failed validation");
