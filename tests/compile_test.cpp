@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <set>
 #include <tuple>
 #include <fstream>
@@ -592,4 +593,49 @@ TEST(Compile, GlslEs300IsCheckedAsEs300) {
     EXPECT_TRUE(es300.words.empty());
     EXPECT_NE(formatAll(es300.diagnostics).find("f.glsl:4:0: error[HX205]: 'bitfieldExtract'"), std::string::npos)
         << formatAll(es300.diagnostics);
+}
+
+// `hexc library`: one include file per target, the same bytes every run; every public function on every target
+// with as many parameters as in the GLSL it comes from (OpenGL GLSL: a texture and its sampler are one parameter).
+TEST(Library, WritesAnIncludeFilePerTarget) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_library";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(runHexc("library --target hlsl,glsl --target metal,spirv-asm -o " + dir.string(), &err), 0) << err;
+    const std::map<std::string, std::string> signatures = {
+        {"hexcColor",
+         "(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlend b, float4 luma, Texture2D<float4> heightTex, out float3 "
+         "weights)"},
+        {"hexcDeriv",
+         "(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlend b, bool flipY, Texture2D<float4> heightTex, out float3 "
+         "weights)"},
+        {"hexcTilesStable", "(float2 st, float2 dSTdx, float2 dSTdy, int2 cell, HexcLattice l)"}};
+    const std::string hlsl = readFile(dir / "hexc_hextiling.hlsl"), glsl = readFile(dir / "hexc_hextiling.glsl");
+    const std::string msl = readFile(dir / "hexc_hextiling.metal"), spvasm = readFile(dir / "hexc_hextiling.spvasm");
+    for (const auto& [name, parameters] : signatures) EXPECT_NE(hlsl.find(name + parameters + "\n{"), std::string::npos) << name;
+    EXPECT_NE(glsl.find("vec4 hexcColor(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sampler2D tex, sampler2D heightTex)"),
+              std::string::npos);
+    EXPECT_NE(msl.find("float4 hexcColor(texture2d<float> tex, sampler samp, thread const HexcTiles& t"), std::string::npos);
+    for (const char* name : {"hexcLattice()", "hexcBlend()", "hexcTilesPaper(", "hexcTilesChecker(", "hexcTilesNoise(", "hexcColor1(",
+                             "hexcDeriv1(", "hexcDerivToNormal(", "hexcChannel("})
+        for (const std::string* text : {&hlsl, &glsl, &msl}) EXPECT_NE(text->find(name), std::string::npos) << name;
+    // The entry point that keeps them and its resources are cut away; nothing of a material is left.
+    for (const std::string* text : {&hlsl, &glsl, &msl}) {
+        EXPECT_EQ(text->find("hexcLib"), std::string::npos);
+        EXPECT_EQ(text->find("main"), std::string::npos);
+        EXPECT_EQ(text->find("#version"), std::string::npos);
+    }
+    EXPECT_NE(spvasm.find("OpFunction"), std::string::npos);
+    ASSERT_EQ(runHexc("library --target hlsl -o " + (dir / "again").string(), &err), 0) << err;
+    EXPECT_EQ(readFile(dir / "again" / "hexc_hextiling.hlsl"), hlsl);
+}
+
+TEST(Library, CommandLineErrors) {
+    std::string err;
+    EXPECT_EQ(runHexc("library -o /tmp/hexc_library_errors", &err), 2);
+    EXPECT_NE(err.find("--target is required"), std::string::npos) << err;
+    EXPECT_EQ(runHexc("library --target wgsl -o /tmp/hexc_library_errors", &err), 2);
+    EXPECT_NE(err.find("wgsl"), std::string::npos) << err;
+    EXPECT_EQ(runHexc("library --target hlsl -o /dev/null/x", &err), 3);
+    EXPECT_NE(err.find("/dev/null/x"), std::string::npos) << err;
 }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <functional>
 
+#include "hexc/library.h"
 #include "hexc/material.h"
 #include "reference/reference.h"
 #include "hexc/spirv.h"
@@ -235,11 +236,20 @@ double heightTolerance(const reference::SlotResult& r, double eh, int channels) 
 }
 
 // `level`: the deepest mip level the view reads.
-Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, vk::ExecutedTarget target, double ex,
-                            double em, int channels, const CompileOptions& options = {}) {
-    std::string why;
+// What draws a material's output on the GPU: hexc's shader on one target, or a shader written by hand.
+using Draw = std::function<Image(const Material& m, vk::RenderOutput output, const View& view)>;
+
+Draw on(vk::ExecutedTarget target, const CompileOptions& options = {}) {
+    return [=](const Material& m, vk::RenderOutput output, const View& view) {
+        std::string why;
+        return vk::render(*runner(&why), m, output, "", view, target, 0, nullptr, {}, options);
+    };
+}
+
+Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, const Draw& draw, double ex, double em,
+                            int channels) {
     const Slot& slot = m.slots[0];
-    Image gpu = vk::render(*runner(&why), m, output, "", view, target, 0, nullptr, {}, options);
+    Image gpu = draw(m, output, view);
     const reference::Heights heights(m, slot);
     std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view, heights.source());
     // The height map is 8-bit linear data, sampled at the view's levels like the slot.
@@ -270,7 +280,7 @@ void report(const char* name, const Check& c) {
 }
 
 // A colour or scalar slot (the material's first) against the reference.
-Check checkColor(const Material& m, bool minified, vk::ExecutedTarget target, const CompileOptions& options = {}) {
+Check checkColor(const Material& m, bool minified, const Draw& draw) {
     const Slot& slot = m.slots[0];
     View view = slot.hex.projection == Projection::Triplanar ? kSphere : minified ? kMinified : kMagnified;
     // The paper's hash is fract(sin(x) * 43758.5453): lavapipe's sin and the C library's disagree in the last
@@ -279,8 +289,7 @@ Check checkColor(const Material& m, bool minified, vk::ExecutedTarget target, co
     if (slot.hex.mode == HashMode::Paper) view.uvRect = {0.0, 0.0, 0.02, 0.02};
     double es = sampleError(minified ? 2 : 0, slot.colorSpace == ColorSpace::Srgb);
     // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
-    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, minified ? 2 : 0, target, es, es, slot.kind == SlotKind::Scalar ? 1 : 4,
-                                 options);
+    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, minified ? 2 : 0, draw, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
 }
 
 class ColorPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
@@ -288,7 +297,7 @@ class ColorPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTar
 TEST_P(ColorPath, MatchesReference) {
     REQUIRE_VULKAN();
     const auto& [c, target] = GetParam();
-    Check check = checkColor(material(c.slot, c.hextiling), c.minified, target);
+    Check check = checkColor(material(c.slot, c.hextiling), c.minified, on(target));
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
@@ -340,7 +349,7 @@ const Case kNormalCases[] = {
 };
 
 // A normal slot (the material's first) against the reference, as derivatives.
-Check checkNormal(const Material& m, bool minified, vk::ExecutedTarget target, const CompileOptions& options = {}) {
+Check checkNormal(const Material& m, bool minified, const Draw& draw) {
     const Slot& slot = m.slots[0];
     const bool triplanar = slot.hex.projection == Projection::Triplanar;
     View view = triplanar ? kSphere : minified ? kMinified : kMagnified;
@@ -353,9 +362,8 @@ Check checkNormal(const Material& m, bool minified, vk::ExecutedTarget target, c
     // Triplanar: each plane's gradient g_k errs by |(dd_x, dd_y)| <= sqrt(2) ed, so does their convex combination,
     // and the projection onto the surface does not lengthen it: each component of the surface gradient is within
     // sqrt(2) ed. The plane weights' own float32 error (~1e-7) is negligible.
-    return triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, 0, target, std::sqrt(2.0) * ed, 0, 3, options)
-                     : checkAgainstReference(m, vk::RenderOutput::Derivative, view, minified ? 2 : 0, target, ed, std::sqrt(2.0) * ed, 2,
-                                             options);
+    return triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, 0, draw, std::sqrt(2.0) * ed, 0, 3)
+                     : checkAgainstReference(m, vk::RenderOutput::Derivative, view, minified ? 2 : 0, draw, ed, std::sqrt(2.0) * ed, 2);
 }
 
 class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
@@ -363,7 +371,7 @@ class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTa
 TEST_P(NormalPath, MatchesReference) {
     REQUIRE_VULKAN();
     const auto& [c, target] = GetParam();
-    Check check = checkNormal(material(c.slot, c.hextiling), c.minified, target);
+    Check check = checkNormal(material(c.slot, c.hextiling), c.minified, on(target));
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
@@ -391,7 +399,7 @@ TEST_P(DebugOutputs, RocksSlotsMatchTheReference) {
         Material one = *rock.material;
         one.slots = {slot};
         Check check =
-            slot.kind == SlotKind::Normal ? checkNormal(one, false, GetParam(), debug) : checkColor(one, false, GetParam(), debug);
+            slot.kind == SlotKind::Normal ? checkNormal(one, false, on(GetParam(), debug)) : checkColor(one, false, on(GetParam(), debug));
         report(("rock " + slot.name + " --debug").c_str(), check);
         EXPECT_LE(check.worstRatio, 1.0) << slot.name;
     }
@@ -417,12 +425,98 @@ TEST(GlslVersions, EachMatchesTheReference) {
             if (slot.kind == SlotKind::Scalar) continue;
             Material one = *rock.material;
             one.slots = {slot};
-            Check check = slot.kind == SlotKind::Normal ? checkNormal(one, false, vk::ExecutedTarget::Glsl, options)
-                                                        : checkColor(one, false, vk::ExecutedTarget::Glsl, options);
+            Check check = slot.kind == SlotKind::Normal ? checkNormal(one, false, on(vk::ExecutedTarget::Glsl, options))
+                                                        : checkColor(one, false, on(vk::ExecutedTarget::Glsl, options));
             const std::string name = "rock " + slot.name + " GLSL " + std::to_string(version) + (es ? " es" : "");
             report(name.c_str(), check);
             EXPECT_LE(check.worstRatio, 1.0) << name;
         }
+    }
+}
+
+// ---- The library for hand-written shaders ------------------------------------------------------------------------
+
+// materials/library/<file> with its `#include "hexc_hextiling.<ext>"` line replaced by `hexc library`'s file, as
+// an include path would give it.
+std::string withLibrary(const std::string& file, LibraryTarget target) {
+    std::ifstream in("materials/library/" + file);
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    const OutputFile library = hexcLibrary(target);
+    const std::string line = "#include \"" + library.name + "\"";
+    const size_t at = text.find(line);
+    if (at == std::string::npos) throw std::runtime_error(file + " does not include " + library.name);
+    return text.replace(at, line.size(), library.contents);
+}
+
+// The hand-written shaders' Settings block (std140, which the HLSL cbuffer's packing matches): tiling, rotation,
+// falloff, falloffContrast, exponent of the slot.
+std::vector<uint8_t> settingsBlock(const Slot& slot) {
+    const HexTiling& h = slot.hex;
+    const float values[] = {float(h.tiling[0]), float(h.tiling[1]),       float(h.rotation),
+                            float(h.falloff),   float(h.falloffcontrast), float(h.exponent)};
+    std::vector<uint8_t> bytes(sizeof(values));
+    std::memcpy(bytes.data(), values, sizeof(values));
+    return bytes;
+}
+
+// A hand-written shader, bound as its source declares: the block at binding 0, the texture at `firstTexture`, the
+// sampler at `sampler` (unread when combined), all in set 0.
+Draw handWritten(const std::vector<uint32_t>& spirv, uint32_t firstTexture, uint32_t sampler, bool combined) {
+    return [=](const Material& m, vk::RenderOutput, const View& view) {
+        const Slot& slot = m.slots[0];
+        const Texture texture = loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb);
+        vk::RenderRequest request;
+        request.fragmentSpirv = spirv;
+        request.uniformData = settingsBlock(slot);
+        request.textures = {&texture};
+        request.combinedSamplers = combined;
+        request.paramsBinding = 0;
+        request.samplerBinding = sampler;
+        request.firstTextureBinding = firstTexture;
+        std::string why;
+        return vk::renderFragment(*runner(&why), request, view);
+    };
+}
+
+Material rockWith(const std::string& slotName) {
+    ParseResult rock = parseMaterialFile("materials/rock.json");
+    if (!rock.material) throw std::runtime_error(formatAll(rock.diagnostics));
+    Material one = *rock.material;
+    one.slots.erase(std::remove_if(one.slots.begin(), one.slots.end(), [&](const Slot& s) { return s.name != slotName; }), one.slots.end());
+    return one;
+}
+
+// materials/library/hextiled_color.hlsl with the HLSL library, through glslang's HLSL front end, on rock's albedo
+// (sRGB, rotation 1, falloff 0.75): the reference and tolerances of the ColorPath tests, magnified and minified.
+TEST(Library, AHandWrittenHlslShaderMatchesTheReference) {
+    REQUIRE_VULKAN();
+    SpirvResult front = compileToSpirv(withLibrary("hextiled_color.hlsl", LibraryTarget::Hlsl), ShaderStage::Fragment,
+                                       "hextiled_color.hlsl", SourceLanguage::Hlsl, "main");
+    ASSERT_FALSE(front.words.empty()) << formatAll(front.diagnostics);
+    SpirvResult legal = optimizeSpirv(front.words, false, true);
+    ASSERT_FALSE(legal.words.empty()) << formatAll(legal.diagnostics);
+    const Draw draw = handWritten(legal.words, kHlslTextureShift, kHlslSamplerShift, false);
+    for (bool minified : {false, true}) {
+        Check check = checkColor(rockWith("albedo"), minified, draw);
+        report(minified ? "hand-written HLSL, minified" : "hand-written HLSL", check);
+        EXPECT_LE(check.worstRatio, 1.0);
+    }
+}
+
+// materials/library/hextiled_normal.glsl with the OpenGL GLSL library, through glslang, on rock's normal map: the
+// reference and tolerances of the NormalPath tests.
+TEST(Library, AHandWrittenGlslShaderMatchesTheReference) {
+    REQUIRE_VULKAN();
+    SpirvResult front = compileToSpirv(withLibrary("hextiled_normal.glsl", LibraryTarget::Glsl), ShaderStage::Fragment,
+                                       "hextiled_normal.glsl", SourceLanguage::OpenGlGlsl);
+    ASSERT_FALSE(front.words.empty()) << formatAll(front.diagnostics);
+    SpirvResult optimized = optimizeSpirv(front.words);
+    ASSERT_FALSE(optimized.words.empty()) << formatAll(optimized.diagnostics);
+    const Draw draw = handWritten(optimized.words, kGlTextureShift, kGlDefaultBlockBinding + 1, true);
+    for (bool minified : {false, true}) {
+        Check check = checkNormal(rockWith("normal"), minified, draw);
+        report(minified ? "hand-written GLSL, minified" : "hand-written GLSL", check);
+        EXPECT_LE(check.worstRatio, 1.0);
     }
 }
 
@@ -469,7 +563,7 @@ TEST_P(OddSizes, MatchReference) {
     const View view{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}};
     const int level = c.minified ? std::min(2, levels - 1) : 0;
     const double es = sampleError(level, false);
-    Check check = checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, target, es, es, 4);
+    Check check = checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, on(target), es, es, 4);
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }

@@ -1,5 +1,6 @@
-// hexc: a thin command line over libhexc: compile (cli/build), render and preview (cli/render).
+// hexc: a thin command line over libhexc: compile (cli/build), render and preview (cli/render), library.
 #include "build.h"
+#include "library.h"
 #include "options.h"
 #include "render.h"
 
@@ -9,6 +10,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && args[0] == "render") return cli::renderCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "preview") return cli::previewCommand({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "library") return cli::libraryCommand({args.begin() + 1, args.end()});
     cli::Arguments a;
     if (std::optional<int> done = cli::parseArguments(args, a)) return *done;
     return cli::buildCommand(a);

@@ -16,6 +16,7 @@ const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V
   hexc MATERIAL.json|SCENE.json [MORE.json ...] -o DIR [options]
   hexc render MATERIAL.json -o IMAGE.{pfm,png} [options]   (hexc render --help)
   hexc preview MATERIAL.json -o PREVIEW.png [--cell N]     (hexc preview --help)
+  hexc library --target hlsl|glsl|msl|spirv-asm -o DIR   (hexc library --help)
 
 Reads each material (JSON, see docs/material-format.md), injects hex-tiling into every texture slot of
 its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:

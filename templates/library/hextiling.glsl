@@ -415,16 +415,17 @@ vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY
 // three tiles with probability equal to its blend weight, by an integer hash of the pixel position (the
 // same on every target), and samples only that tile, with the tile's own rotated gradients so the mip
 // level stays right. The falloff metric would need all three samples, so the weights are Eq. 1 without it.
+// `pixel`: the pixel's position (gl_FragCoord.xy; a parameter so the library needs no stage input).
 struct HexcTap {
     vec2 st, dx, dy, rot;        // the picked tile's sample point, gradients and rotation
     float invScale;
     vec3 pick;                   // one-hot: which of the three tiles
 };
 
-HexcTap hexcDitherTile(HexcTiles t, HexcBlend b) {
+HexcTap hexcDitherTile(HexcTiles t, HexcBlend b, vec2 pixel) {
     b.metric = false;
     vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);
-    float u = float(hexcPcg3d(uvec3(uvec2(gl_FragCoord.xy), 2u)).x >> 8u) * (1.0 / 16777216.0);
+    float u = float(hexcPcg3d(uvec3(uvec2(pixel), 2u)).x >> 8u) * (1.0 / 16777216.0);
     int i = u < W.x ? 0 : (u < W.x + W.y ? 1 : 2);
     HexcTap tap;
     tap.pick = vec3(equal(ivec3(0, 1, 2), ivec3(i)));
@@ -436,14 +437,14 @@ HexcTap hexcDitherTile(HexcTiles t, HexcBlend b) {
     return tap;
 }
 
-vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, out vec3 weights) {
-    HexcTap tap = hexcDitherTile(t, b);
+vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec2 pixel, out vec3 weights) {
+    HexcTap tap = hexcDitherTile(t, b, pixel);
     weights = hexcShowWeights(tap.pick, t.channel);
     return textureGrad(sampler2D(tex, samp), tap.st, tap.dx, tap.dy);
 }
 
-vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, out vec3 weights) {
-    HexcTap tap = hexcDitherTile(t, b);
+vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, vec2 pixel, out vec3 weights) {
+    HexcTap tap = hexcDitherTile(t, b, pixel);
     weights = hexcShowWeights(tap.pick, t.channel);
     return hexcRotateFromTile(hexcSampleDeriv(tex, samp, tap.st, tap.dx, tap.dy, flipY), tap.rot) * tap.invScale;
 }

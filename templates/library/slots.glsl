@@ -65,7 +65,7 @@ vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${lattice}
     HexcBlend blend = hexcBlend();
 ${blend}
-    return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, weights);
+    return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, gl_FragCoord.xy, weights);
 }
 
 //@ color.plain
@@ -89,7 +89,7 @@ float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${lattice}
     HexcBlend blend = hexcBlend();
 ${blend}
-    return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, weights)[${channel}];
+    return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, gl_FragCoord.xy, weights)[${channel}];
 }
 
 //@ scalar.plain
@@ -112,7 +112,7 @@ vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${lattice}
     HexcBlend blend = hexcBlend();
 ${blend}
-    return hexcDeriv1(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, weights);
+    return hexcDeriv1(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, gl_FragCoord.xy, weights);
 }
 
 //@ normal.plain

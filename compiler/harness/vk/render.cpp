@@ -37,10 +37,14 @@ void setView(RenderRequest& request, const View& view) {
 
 Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view) {
     RenderRequest request;
-    request.vertexSpirv = vertexShader();
     request.fragmentSpirv =
         spirvOrThrow(compileToSpirv(harnessShaders().at(templateFile), ShaderStage::Fragment, "templates/harness/" + templateFile));
     request.uniformData = uniforms;
+    return renderFragment(runner, std::move(request), view);
+}
+
+Image renderFragment(Runner& runner, RenderRequest request, const View& view) {
+    request.vertexSpirv = vertexShader();
     setView(request, view);
     return std::move(runner.render(request).image);
 }

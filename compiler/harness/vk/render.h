@@ -55,6 +55,10 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
 // Draws a fragment shader of the embedded templates (no material) with the given uniform block.
 Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view);
 
+// Draws `request`'s fragment shader (one written by hand, its resources filled in by the caller) over `view`, with the
+// harness's vertex stage.
+Image renderFragment(Runner& runner, RenderRequest request, const View& view);
+
 // Derivative images (dH/du, dH/dy, ., .) to tangent-space normals encoded n * 0.5 + 0.5, in place (Eq. 2).
 void derivativeToNormalMap(Image& image);
 

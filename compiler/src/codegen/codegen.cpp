@@ -201,6 +201,15 @@ std::string generateGlsl(const ShaderPlan& plan) {
     return out;
 }
 
+std::string generateLibraryGlsl() {
+    const std::string& entry = *embeddedText("entry.glsl");
+    const std::string marker = "#include <hexc/hextiling.glsl>\n";  // not <hexc>: no built-in template
+    const size_t at = entry.find(marker);
+    const int next = 2 + int(std::count(entry.begin(), entry.begin() + std::ptrdiff_t(at), '\n'));
+    return entry.substr(0, at) + lineDirective(1, "hexc/hextiling.glsl") + *embeddedText("hextiling.glsl") +
+           lineDirective(next, "hexc/entry.glsl") + entry.substr(at + marker.size());
+}
+
 std::string generateVertexGlsl(const std::vector<Varying>& inputs) {
     const std::map<std::string, std::string> sections = snippetSections("vertex.glsl");
     std::string varyings, copies;

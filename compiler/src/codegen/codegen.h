@@ -21,6 +21,10 @@ std::string expandTokens(const std::string& text, const Tokens& values, const st
 // file and line; injected code is reported as "hexc/<file>".
 std::string generateGlsl(const ShaderPlan& plan);
 
+// templates/library/entry.glsl with hextiling.glsl at its `#include <hexc/hextiling.glsl>`: a shader that calls every public
+// function of the library, which `hexc library` emits (backends/library.cpp).
+std::string generateLibraryGlsl();
+
 // A fragment shader input: what the pass-through vertex stage writes.
 struct Varying {
     std::string name, type;  // GLSL type, e.g. "vec2"

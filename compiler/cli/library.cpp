@@ -1,0 +1,57 @@
+#include "library.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <map>
+
+#include "hexc/library.h"
+#include "options.h"
+#include "outputs.h"
+
+namespace hexc::cli {
+
+namespace {
+
+const char* const kLibraryHelp = R"(hexc library - hexc's hex-tiling functions for shaders you write by hand
+
+  hexc library --target hlsl|glsl|msl|spirv-asm [--target ...] -o DIR
+
+Writes DIR/hexc_hextiling.{hlsl,glsl,metal,spvasm}: the colour path (hexcColor), the normal map derivative path
+(hexcDeriv), their 1-tap variants (hexcColor1, hexcDeriv1), the lattices of each mode and mask (hexcTilesStable,
+hexcTilesPaper, hexcTilesChecker, hexcTilesNoise), shared by every texture that uses the same coordinates, and
+the settings as structs (hexcLattice(), hexcBlend()). Made from the GLSL hexc injects into materials, through
+glslang and SPIRV-Cross. docs/library.md documents each function and shows a whole shader per target.
+)";
+
+}  // namespace
+
+int libraryCommand(const std::vector<std::string>& args) {
+    CLI::App app{kLibraryHelp, "hexc library"};
+    std::vector<std::string> targets;
+    std::filesystem::path outDir;
+    app.add_option("-t,--target", targets, "hlsl, glsl, msl (or metal), spirv-asm; repeatable or comma-separated")
+        ->required()
+        ->delimiter(',')
+        ->check(CLI::IsMember({"hlsl", "glsl", "msl", "metal", "spirv-asm"}));
+    app.add_option("-o,--out", outDir, "output folder")->required()->type_name("DIR");
+    if (std::optional<int> done = parseWith(app, args)) return *done;
+    static const std::map<std::string, LibraryTarget> names = {{"hlsl", LibraryTarget::Hlsl},
+                                                               {"glsl", LibraryTarget::Glsl},
+                                                               {"msl", LibraryTarget::Msl},
+                                                               {"metal", LibraryTarget::Msl},
+                                                               {"spirv-asm", LibraryTarget::SpirvAsm}};
+    std::vector<OutputFile> files;
+    for (const std::string& t : targets) files.push_back(hexcLibrary(names.at(t)));
+    try {
+        std::filesystem::create_directories(outDir);
+        for (const OutputFile& f : files) writeAtomically(outDir, f.name, f.contents);
+    } catch (const std::exception& e) {
+        std::cerr << "hexc: " << e.what() << "\n";
+        return kWriteFailed;
+    }
+    for (const OutputFile& f : files) std::cerr << "hexc: wrote " << (outDir / f.name).string() << "\n";
+    return kOk;
+}
+
+}  // namespace hexc::cli
