@@ -639,3 +639,19 @@ TEST(Library, CommandLineErrors) {
     EXPECT_EQ(runHexc("library --target hlsl -o /dev/null/x", &err), 3);
     EXPECT_NE(err.find("/dev/null/x"), std::string::npos) << err;
 }
+
+// Modules are validated without friendly names (a fifth of a compile); a failure is reported with them.
+TEST(Compile, AnInvalidModuleIsReportedWithNames) {
+    SpirvResult front = compileToSpirv("#version 450\nlayout(location = 0) out vec4 shade;\nvoid main() { shade = vec4(1.0); }\n",
+                                       ShaderStage::Fragment, "tiny.frag");
+    ASSERT_FALSE(front.words.empty()) << formatAll(front.diagnostics);
+    EXPECT_FALSE(optimizeSpirv(front.words).words.empty());
+    std::vector<uint32_t> broken = front.words;
+    for (size_t at = 5; at < broken.size(); at += broken[at] >> 16)
+        if ((broken[at] & 0xffff) == 62) std::swap(broken[at + 1], broken[at + 2]);  // OpStore: pointer and object swapped
+    SpirvResult r = optimizeSpirv(broken);
+    EXPECT_TRUE(r.words.empty());
+    const std::string all = formatAll(r.diagnostics);
+    EXPECT_NE(all.find("glslang produced invalid SPIR-V"), std::string::npos) << all;
+    EXPECT_NE(all.find("shade"), std::string::npos) << all;
+}

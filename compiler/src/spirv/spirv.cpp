@@ -146,7 +146,18 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstan
     };
     spvtools::SpirvTools tools(kTargetEnv);
     tools.SetMessageConsumer(consumer);
-    if (!tools.Validate(words)) return fail("glslang produced invalid SPIR-V");
+    // Each module is validated once, without friendly names: building them costs more than the validation (it is
+    // quadratic in repeated names, and glslang calls every call's temporary `param`). A failure, a hexc bug, is
+    // validated again with names for its message.
+    spvtools::ValidatorOptions quiet;
+    quiet.SetFriendlyNames(false);
+    auto valid = [&](const std::vector<uint32_t>& module) {
+        if (tools.Validate(module.data(), module.size(), quiet)) return true;
+        messages.clear();
+        tools.Validate(module);
+        return false;
+    };
+    if (!valid(words)) return fail("glslang produced invalid SPIR-V");
 
     spvtools::Optimizer optimizer(kTargetEnv);
     optimizer.SetMessageConsumer(consumer);
@@ -162,8 +173,10 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstan
     // material never reaches, which is what keeps the emitted HLSL/GLSL/MSL short.
     if (performance) optimizer.RegisterPerformancePasses();
     std::vector<uint32_t> optimized;
-    if (!optimizer.Run(words.data(), words.size(), &optimized)) return fail("spirv-opt failed");
-    if (!tools.Validate(optimized)) return fail("optimised SPIR-V failed validation");
+    spvtools::OptimizerOptions once;
+    once.set_run_validator(false);  // validated above
+    if (!optimizer.Run(words.data(), words.size(), &optimized, once)) return fail("spirv-opt failed");
+    if (!valid(optimized)) return fail("optimised SPIR-V failed validation");
     result.words = std::move(optimized);
     return result;
 }
