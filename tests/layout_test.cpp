@@ -11,6 +11,7 @@
 
 #include "hexc/compiler.h"
 #include "hexc/layout.h"
+#include "hexc/spirv.h"
 #include "support.h"
 #include "vk/render.h"
 
@@ -32,11 +33,11 @@ struct NamedLayout {
     uint32_t shaderModel;
 };
 
-// Default; hexc in set 3 from binding 4 with every other target's bases moved; HLSL register spaces (space = set,
-// as dxc -spirv and glslang read them back).
+// Default; hexc in set 3 from binding 4 with combined image samplers in SPIR-V and every other target's bases
+// moved; HLSL register spaces (space = set, as dxc -spirv and glslang read them back).
 std::vector<NamedLayout> layouts() {
     ResourceLayout shifted;
-    shifted.vulkan = {3, 4};
+    shifted.vulkan = {3, 4, 1};
     shifted.hlsl = {0, 2, 5, 3, 1};
     shifted.msl = {2, 3, 1};
     shifted.glsl = {3};
@@ -44,6 +45,12 @@ std::vector<NamedLayout> layouts() {
     spaces.vulkan = {2, 0};
     spaces.hlsl = {2, 1, 4, 2, 0};
     return {{"default", {}, 50}, {"shifted", shifted, 50}, {"spaces", spaces, 51}};
+}
+
+std::vector<uint32_t> spirvWords(const std::string& bytes) {
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), words.size() * 4);
+    return words;
 }
 
 std::string file(const CompileResult& r, const std::string& suffix) {
@@ -74,6 +81,13 @@ TEST(Layout, EveryTargetAndTheManifestPutHexcsResourcesWhereItSays) {
         EXPECT_EQ(targets["spirv"]["params"],
                   (json{{"set", L.vulkan.set}, {"binding", L.vulkan.binding}, {"descriptor_type", "uniform_buffer"}}));
         EXPECT_EQ(targets["spirv"]["textures"]["roughness"]["binding"], L.vulkan.binding + 4);
+        EXPECT_EQ(targets["spirv"]["textures"]["roughness"]["descriptor_type"],
+                  L.vulkan.combined ? "combined_image_sampler" : "sampled_image");
+        EXPECT_EQ(targets["spirv"]["sampler"].contains("combined_into_textures"), L.vulkan.combined == 1);
+        // Combined: no sampler variable is left in the module, and each texture is a sampler2D.
+        const std::string spirv = disassemble(spirvWords(file(r, ".spv")));
+        EXPECT_EQ(spirv.find("%hexcSampler = OpVariable"), L.vulkan.combined ? std::string::npos : spirv.find("%hexcSampler = OpVariable"));
+        EXPECT_EQ(spirv.find("OpSampledImage") == std::string::npos, L.vulkan.combined == 1);
         const std::string space = L.hlsl.space ? ", space" + std::to_string(L.hlsl.space) : "";
         const std::string hlsl = file(r, ".hlsl");
         EXPECT_NE(hlsl.find("hexcTex_roughness : register(t" + std::to_string(L.hlsl.t + 2) + space + ")"), std::string::npos);

@@ -51,6 +51,16 @@ void expectDistinct(const std::multiset<std::string>& found, size_t count, const
     EXPECT_EQ(std::set<std::string>(found.begin(), found.end()).size(), found.size()) << what << " used twice";
 }
 
+// materials/templates/engine.glsl with `from` replaced by `to` (into `text`), written to a temporary file `name`.
+std::filesystem::path engineTemplateWith(const std::string& from, const std::string& to, const std::string& name, std::string& text) {
+    std::ifstream in("materials/templates/engine.glsl");
+    text.assign(std::istreambuf_iterator<char>(in), {});
+    text.replace(text.find(from), from.size(), to);
+    const std::filesystem::path templ = std::filesystem::temp_directory_path() / name;
+    std::ofstream(templ) << text;
+    return templ;
+}
+
 }  // namespace
 
 // The default layout, and materials/layouts/engine.json: hexc sharing the template's set 1 from binding 5, every
@@ -137,12 +147,10 @@ TEST(TemplateResources, TheHlslOutputCompilesAgain) {
 }
 
 TEST(TemplateResources, OneAtHexcsBindingsIsALocatedError) {
-    std::filesystem::path templ = std::filesystem::temp_directory_path() / "hexc_set0_template.glsl";
-    std::ifstream in("materials/templates/engine.glsl");
-    std::string text(std::istreambuf_iterator<char>(in), {});
-    const std::string declared = "layout(set = 1, binding = 1)";
-    text.replace(text.find(declared + " uniform sampler2D shadowMap;"), declared.size(), "layout(set = 0, binding = 3)");
-    std::ofstream(templ) << text;
+    std::string text;
+    const std::filesystem::path templ =
+        engineTemplateWith("layout(set = 1, binding = 1) uniform sampler2D shadowMap;",
+                           "layout(set = 0, binding = 3) uniform sampler2D shadowMap;", "hexc_set0_template.glsl", text);
     CompileResult r = compileEngine(templ.string());
     ASSERT_FALSE(r.ok());
     const Diagnostic& d = r.diagnostics.back();
@@ -156,16 +164,31 @@ TEST(TemplateResources, OneAtHexcsBindingsIsALocatedError) {
 }
 
 TEST(TemplateResources, OneInHexcsSetPastItsBindingsIsTheTemplates) {
-    std::filesystem::path templ = std::filesystem::temp_directory_path() / "hexc_set0_free_template.glsl";
-    std::ifstream in("materials/templates/engine.glsl");
-    std::string text(std::istreambuf_iterator<char>(in), {});
-    const std::string declared = "layout(set = 1, binding = 1) uniform sampler2D shadowMap;";
-    text.replace(text.find(declared), declared.size(), "layout(set = 0, binding = 4) uniform sampler2D shadowMap;");
-    std::ofstream(templ) << text;
+    std::string text;
+    const std::filesystem::path templ =
+        engineTemplateWith("layout(set = 1, binding = 1) uniform sampler2D shadowMap;",
+                           "layout(set = 0, binding = 4) uniform sampler2D shadowMap;", "hexc_set0_free_template.glsl", text);
     CompileResult r = compileEngine(templ.string());
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
     json placed = json::parse(file(r, "engine_rock.manifest.json"))["targets"]["spirv"]["template_resources"];
     bool found = false;
     for (const json& res : placed) found |= res["name"] == "shadowMap" && res["vulkan"] == json{{"set", 0}, {"binding", 4}};
     EXPECT_TRUE(found) << placed.dump();
+}
+
+// Combined image samplers (layout vulkan.combined) leave no sampler to share: a template that samples its own texture
+// with hexc's sampler is told so, and nothing is written.
+TEST(TemplateResources, CombinedSamplersAndATemplateReadingHexcsSampler) {
+    std::string text;
+    const std::filesystem::path templ =
+        engineTemplateWith("sampler2D(detail, detailSampler)", "sampler2D(detail, hexcSampler)", "hexc_shares_sampler.glsl", text);
+    CompileOptions combined;
+    combined.layout.vulkan.combined = 1;
+    ASSERT_TRUE(compileEngine(templ.string()).ok());  // separate samplers: the template may share hexc's
+    CompileResult r = compileEngine(templ.string(), "", combined);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(formatAll(r.diagnostics).find("--combined: error[HX"), std::string::npos) << formatAll(r.diagnostics);
+    EXPECT_NE(formatAll(r.diagnostics).find("reads hexcSampler or a hexcTex_ texture itself"), std::string::npos);
+    EXPECT_TRUE(r.files.empty());
+    EXPECT_TRUE(compileEngine("materials/templates/engine.glsl", "", combined).ok());
 }

@@ -14,6 +14,7 @@
 #include "hexc/compiler.h"
 #include "plan/plan.h"
 #include "hexc/spirv.h"
+#include "spirv/combined.h"
 
 namespace hexc {
 
@@ -139,10 +140,13 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
         TargetOutput out;
         OutputFile file;
         switch (t) {
-            case Target::Spirv:
-                out = describeSpirv(result.spirv, plan);
-                file = {shaderFileName(material.name, Target::Spirv), spirvBytes(result.spirv)};
+            case Target::Spirv: {
+                // The other targets are emitted from the separate module (combined.h).
+                const std::vector<uint32_t> words = plan.layout.vulkan.combined ? combineSamplers(result.spirv, plan) : result.spirv;
+                out = describeSpirv(words, plan);
+                file = {shaderFileName(material.name, Target::Spirv), spirvBytes(words)};
                 break;
+            }
             case Target::Hlsl:
                 out = emitHlsl(result.spirv, plan, options);
                 file = {shaderFileName(material.name, Target::Hlsl), out.source};

@@ -170,11 +170,26 @@ void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequ
             request.firstTextureBinding = std::min(request.firstTextureBinding, kGlTextureShift + where["texture_unit"].get<uint32_t>());
         return;
     }
-    const nlohmann::json& sampler = manifest["targets"]["spirv"]["sampler"];
-    request.set = sampler["set"];
-    request.samplerBinding = sampler["binding"];
-    request.paramsBinding = request.samplerBinding - 1;
-    request.firstTextureBinding = request.samplerBinding + 1;
+    // hexc's block at binding b, the sampler at b + 1 (unused with layout vulkan.combined), textures from b + 2.
+    const nlohmann::json& spirv = manifest["targets"]["spirv"];
+    request.combinedSamplers = spirv["sampler"].contains("combined_into_textures");
+    uint32_t base = 0;
+    if (!request.combinedSamplers) {
+        request.set = spirv["sampler"]["set"];
+        base = spirv["sampler"]["binding"].get<uint32_t>() - 1;
+    } else if (spirv.contains("params")) {
+        request.set = spirv["params"]["set"];
+        base = spirv["params"]["binding"];
+    } else {
+        base = UINT32_MAX;
+        for (const auto& [slot, where] : spirv["textures"].items()) {
+            request.set = where["set"];
+            base = std::min(base, where["binding"].get<uint32_t>() - 2);
+        }
+    }
+    request.paramsBinding = base;
+    request.samplerBinding = base + 1;
+    request.firstTextureBinding = base + 2;
 }
 
 // One template resource as a target's manifest entry places it: SPIR-V as declared; HLSL in its registers, a
@@ -251,9 +266,12 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     RenderRequest request;
     request.vertexSpirv = vertexShader();
     switch (target) {
-        case ExecutedTarget::Spirv:
-            request.fragmentSpirv = compiled.spirv;
+        case ExecutedTarget::Spirv: {  // the .spv file, as an engine loads it (combined samplers are in it only)
+            const std::string bytes = outputFile(compiled, ".spv");
+            request.fragmentSpirv.resize(bytes.size() / 4);
+            std::memcpy(request.fragmentSpirv.data(), bytes.data(), bytes.size());
             break;
+        }
         case ExecutedTarget::Hlsl:
             request.fragmentSpirv = spirvOrThrow(optimizeSpirv(
                 spirvOrThrow(compileToSpirv(outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl",

@@ -15,9 +15,10 @@ namespace hexc {
 
 struct ResourceLayout {
     // Vulkan (SPIR-V): hexc's descriptor set; the block at `binding`, the sampler at binding + 1, slot i's texture at
-    // binding + 2 + i. The template may use the rest of the set.
+    // binding + 2 + i. The template may use the rest of the set. `combined` (1): each texture a combined image sampler
+    // (sampler2D) at its binding, binding + 1 left unused; the other targets keep theirs.
     struct Vulkan {
-        uint32_t set = 0, binding = 0;
+        uint32_t set = 0, binding = 0, combined = 0;
     } vulkan;
     // HLSL: hexc's register space (shader model 5.1 or later when not 0) and first register of each class.
     struct Hlsl {

@@ -44,6 +44,7 @@ bool isHexcs(const TemplateResource& r, const HexcBindings& b, size_t slots) {
         case ResourceClass::Sampler:
             return named && r.binding == b.sampler;
         case ResourceClass::Image:
+        case ResourceClass::SampledImage:  // the SPIR-V output's, with layout vulkan.combined
             return named && r.binding >= b.firstTexture && r.binding < b.firstTexture + slots;
         default:
             return false;
@@ -153,9 +154,14 @@ TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan&
     TargetOutput out;
     out.entryPoint = plan.entryPoint;
     const HexcBindings& b = plan.bindings;
-    Locate locate = [&b](ResourceKind kind, uint32_t index) -> nlohmann::json {
+    const bool combined = plan.layout.vulkan.combined != 0;
+    Locate locate = [&b, combined](ResourceKind kind, uint32_t index) -> nlohmann::json {
+        if (kind == ResourceKind::Sampler && combined) return {{"combined_into_textures", true}};
         uint32_t binding = kind == ResourceKind::Params ? b.params : kind == ResourceKind::Sampler ? b.sampler : b.firstTexture + index;
-        const char* type = kind == ResourceKind::Params ? "uniform_buffer" : kind == ResourceKind::Sampler ? "sampler" : "sampled_image";
+        const char* type = kind == ResourceKind::Params    ? "uniform_buffer"
+                           : kind == ResourceKind::Sampler ? "sampler"
+                           : combined                      ? "combined_image_sampler"
+                                                           : "sampled_image";
         return {{"set", b.set}, {"binding", binding}, {"descriptor_type", type}};
     };
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };

@@ -782,6 +782,8 @@ const std::vector<LayoutField>& layoutFields() {
         {"vulkan", "set", 31, "hexc's Vulkan descriptor set, 0 to 31 (default 0)", [](L& l) -> uint32_t& { return l.vulkan.set; }},
         {"vulkan", "binding", 4095, "hexc's first Vulkan binding: block, sampler, textures (default 0)",
          [](L& l) -> uint32_t& { return l.vulkan.binding; }},
+        {"vulkan", "combined", 1, "1: hexc's SPIR-V textures as combined image samplers, no sampler (default 0)",
+         [](L& l) -> uint32_t& { return l.vulkan.combined; }},
         {"hlsl", "space", 4095, "hexc's HLSL register space (needs --hlsl-sm 51+)", [](L& l) -> uint32_t& { return l.hlsl.space; }},
         {"hlsl", "b", 4095, "hexc's first HLSL b register", [](L& l) -> uint32_t& { return l.hlsl.b; }},
         {"hlsl", "t", 4095, "hexc's first HLSL t register", [](L& l) -> uint32_t& { return l.hlsl.t; }},
@@ -796,9 +798,9 @@ const std::vector<LayoutField>& layoutFields() {
 
 std::string toString(const ResourceLayout& l) {
     auto n = [](uint32_t v) { return std::to_string(v); };
-    return "vulkan " + n(l.vulkan.set) + "/" + n(l.vulkan.binding) + " hlsl space" + n(l.hlsl.space) + " b" + n(l.hlsl.b) + " t" +
-           n(l.hlsl.t) + " s" + n(l.hlsl.s) + " u" + n(l.hlsl.u) + " msl " + n(l.msl.buffer) + "/" + n(l.msl.texture) + "/" +
-           n(l.msl.sampler) + " glsl " + n(l.glsl.binding);
+    return "vulkan " + n(l.vulkan.set) + "/" + n(l.vulkan.binding) + (l.vulkan.combined ? " combined" : "") + " hlsl space" +
+           n(l.hlsl.space) + " b" + n(l.hlsl.b) + " t" + n(l.hlsl.t) + " s" + n(l.hlsl.s) + " u" + n(l.hlsl.u) + " msl " + n(l.msl.buffer) +
+           "/" + n(l.msl.texture) + "/" + n(l.msl.sampler) + " glsl " + n(l.glsl.binding);
 }
 
 std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }

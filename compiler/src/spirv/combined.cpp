@@ -1,0 +1,156 @@
+// Combined image samplers for the SPIR-V output (layout vulkan.combined): hexc's textures become sampler2D
+// descriptors at their bindings and the shared sampler goes. Done on the optimised module, where every sample is
+// `OpSampledImage(load texture, load sampler)`: the texture variable's type becomes a pointer to the sampled image
+// type, its load yields the sampled image, and each OpSampledImage is replaced by that load. The other targets are
+// emitted from the separate module (HLSL and MSL have separate samplers only, OpenGL GLSL combined ones only).
+#include "spirv/combined.h"
+
+#include <spirv-tools/libspirv.hpp>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+namespace hexc {
+namespace {
+
+constexpr uint16_t kOpFunction = 54, kOpName = 5, kOpTypeSampledImage = 27, kOpTypePointer = 32, kOpVariable = 59, kOpLoad = 61,
+                   kOpDecorate = 71, kOpSampledImage = 86;
+constexpr uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34, kUniformConstant = 0;
+
+struct Instruction {
+    std::vector<uint32_t> words;
+    std::vector<uint16_t> ids;  // word offsets of the id operands (result id excluded)
+    uint16_t opcode() const { return uint16_t(words[0] & 0xffff); }
+};
+
+struct Module {
+    std::vector<uint32_t> header;
+    std::vector<Instruction> code;
+};
+
+Module parse(const std::vector<uint32_t>& words) {
+    Module m;
+    m.header.assign(words.begin(), words.begin() + 5);
+    spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_0);
+    auto onInstruction = [](void* user, const spv_parsed_instruction_t* parsed) {
+        Instruction i{{parsed->words, parsed->words + parsed->num_words}, {}};
+        for (uint16_t k = 0; k < parsed->num_operands; ++k) {
+            const spv_operand_type_t type = parsed->operands[k].type;
+            if (type == SPV_OPERAND_TYPE_ID || type == SPV_OPERAND_TYPE_TYPE_ID || type == SPV_OPERAND_TYPE_MEMORY_SEMANTICS_ID ||
+                type == SPV_OPERAND_TYPE_SCOPE_ID)
+                i.ids.push_back(parsed->operands[k].offset);
+        }
+        static_cast<Module*>(user)->code.push_back(std::move(i));
+        return SPV_SUCCESS;
+    };
+    const spv_result_t result = spvBinaryParse(context, &m, words.data(), words.size(), nullptr, onInstruction, nullptr);
+    spvContextDestroy(context);
+    if (result != SPV_SUCCESS) throw std::runtime_error("combined samplers: the module does not parse");
+    return m;
+}
+
+// Variables by (set, binding), from the decorations.
+std::map<std::pair<uint32_t, uint32_t>, uint32_t> descriptors(const Module& m) {
+    std::map<uint32_t, uint32_t> set, binding;
+    for (const Instruction& i : m.code)
+        if (i.opcode() == kOpDecorate && i.words.size() == 4) {
+            if (i.words[2] == kDecorationDescriptorSet) set[i.words[1]] = i.words[3];
+            if (i.words[2] == kDecorationBinding) binding[i.words[1]] = i.words[3];
+        }
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> out;
+    for (const auto& [id, b] : binding) out[{set[id], b}] = id;
+    return out;
+}
+
+// The id of `OpTypePointer UniformConstant pointee`, added after the instruction defining `pointee` if missing.
+uint32_t uniformPointer(Module& m, uint32_t pointee) {
+    for (const Instruction& i : m.code)
+        if (i.opcode() == kOpTypePointer && i.words[2] == kUniformConstant && i.words[3] == pointee) return i.words[1];
+    const uint32_t id = m.header[3]++;
+    auto defined =
+        std::find_if(m.code.begin(), m.code.end(), [&](const Instruction& i) { return i.words.size() > 1 && i.words[1] == pointee; });
+    m.code.insert(defined + 1, Instruction{{(4u << 16) | kOpTypePointer, id, kUniformConstant, pointee}, {3}});
+    return id;
+}
+
+// The sampled image type of image type `image` (optimised hexc modules sample every texture, so it exists).
+uint32_t sampledImageType(const Module& m, uint32_t image) {
+    for (const Instruction& i : m.code)
+        if (i.opcode() == kOpTypeSampledImage && i.words[2] == image) return i.words[1];
+    throw std::runtime_error("combined samplers: a texture is never sampled");
+}
+
+}  // namespace
+
+std::vector<uint32_t> combineSamplers(const std::vector<uint32_t>& words, const ShaderPlan& plan) {
+    const HexcBindings& b = plan.bindings;
+    const size_t textures = plan.slots.size();
+    Module m = parse(words);
+    const auto byBinding = descriptors(m);
+    const auto found = byBinding.find({b.set, b.sampler});
+    const uint32_t sampler = found == byBinding.end() ? 0 : found->second;
+    std::map<uint32_t, uint32_t> imageOf, pointerOf;  // texture variable -> its image type, its new pointer type
+    for (size_t t = 0; t < textures; ++t) {
+        const auto var = byBinding.find({b.set, b.firstTexture + uint32_t(t)});
+        if (var == byBinding.end()) continue;  // a slot the shader does not read
+        for (const Instruction& i : m.code)
+            if (i.opcode() == kOpVariable && i.words[2] == var->second)
+                for (const Instruction& p : m.code)
+                    if (p.opcode() == kOpTypePointer && p.words[1] == i.words[1]) imageOf[var->second] = p.words[3];
+    }
+    std::map<uint32_t, uint32_t> sampledOf;  // texture variable -> its sampled image type
+    for (const auto& [var, image] : imageOf) {
+        sampledOf[var] = sampledImageType(m, image);
+        pointerOf[var] = uniformPointer(m, sampledOf[var]);
+    }
+    std::map<uint32_t, uint32_t> loadType, replaced;  // texture load -> sampled image type; OpSampledImage -> its load
+    std::set<uint32_t> samplerLoads;
+    std::vector<Instruction> kept;
+    for (Instruction& i : m.code) {
+        const uint16_t op = i.opcode();
+        if (op == kOpVariable && pointerOf.count(i.words[2])) i.words[1] = pointerOf[i.words[2]];
+        if (op == kOpLoad && pointerOf.count(i.words[3])) {
+            i.words[1] = sampledOf[i.words[3]];
+            loadType[i.words[2]] = i.words[1];
+        }
+        if (op == kOpLoad && i.words[3] == sampler) {
+            samplerLoads.insert(i.words[2]);
+            continue;
+        }
+        if (op == kOpSampledImage && loadType.count(i.words[3]) && samplerLoads.count(i.words[4])) {
+            replaced[i.words[2]] = i.words[3];
+            continue;
+        }
+        const bool aboutSampler =
+            (op == kOpVariable && i.words[2] == sampler) || ((op == kOpDecorate || op == kOpName) && i.words[1] == sampler);
+        if (!aboutSampler || sampler == 0) kept.push_back(std::move(i));
+    }
+    for (Instruction& i : kept)
+        for (uint16_t at : i.ids) {
+            if (samplerLoads.count(i.words[at]) || (sampler != 0 && i.words[at] == sampler) || loadType.count(i.words[at]))
+                throw CompileError{{Diagnostic::make(
+                    Code::TargetUnsupported, {plan.layout.sourceFile.empty() ? "--combined" : plan.layout.sourceFile.string()}, "",
+                    "combined samplers (layout vulkan.combined): the template reads hexcSampler or a hexcTex_ texture itself, "
+                    "which a combined image sampler cannot give; sample its own textures with its own sampler, or keep "
+                    "separate samplers")}};
+            if (auto r = replaced.find(i.words[at]); r != replaced.end()) i.words[at] = r->second;
+        }
+    // The variables move to the end of the global declarations: their new type may be declared after them.
+    auto moved = std::stable_partition(kept.begin(), kept.end(),
+                                       [&](const Instruction& i) { return !(i.opcode() == kOpVariable && pointerOf.count(i.words[2])); });
+    std::vector<Instruction> variables(std::make_move_iterator(moved), std::make_move_iterator(kept.end()));
+    kept.erase(moved, kept.end());
+    auto functions = std::find_if(kept.begin(), kept.end(), [](const Instruction& i) { return i.opcode() == kOpFunction; });
+    kept.insert(functions, std::make_move_iterator(variables.begin()), std::make_move_iterator(variables.end()));
+    std::vector<uint32_t> out = m.header;
+    for (const Instruction& i : kept) out.insert(out.end(), i.words.begin(), i.words.end());
+    spvtools::ValidatorOptions quiet;
+    quiet.SetFriendlyNames(false);
+    if (!spvtools::SpirvTools(SPV_ENV_VULKAN_1_0).Validate(out.data(), out.size(), quiet))
+        throw std::runtime_error("combined samplers: the rewritten module is invalid");
+    return out;
+}
+
+}  // namespace hexc
