@@ -82,26 +82,49 @@ uint32_t sampledImageType(const Module& m, uint32_t image) {
     throw std::runtime_error("combined samplers: a texture is never sampled");
 }
 
-}  // namespace
-
-std::vector<uint32_t> combineSamplers(const std::vector<uint32_t>& words, const ShaderPlan& plan) {
-    const HexcBindings& b = plan.bindings;
-    const size_t textures = plan.slots.size();
-    Module m = parse(words);
-    const auto byBinding = descriptors(m);
-    const auto found = byBinding.find({b.set, b.sampler});
-    const uint32_t sampler = found == byBinding.end() ? 0 : found->second;
-    std::map<uint32_t, uint32_t> imageOf, pointerOf;  // texture variable -> its image type, its new pointer type
-    for (size_t t = 0; t < textures; ++t) {
-        const auto var = byBinding.find({b.set, b.firstTexture + uint32_t(t)});
+// hexc's texture variables (by their bindings) -> their image types.
+std::map<uint32_t, uint32_t> textureImages(const Module& m, const std::map<std::pair<uint32_t, uint32_t>, uint32_t>& byBinding,
+                                           const ShaderPlan& plan) {
+    std::map<uint32_t, uint32_t> imageOf;
+    for (size_t t = 0; t < plan.slots.size(); ++t) {
+        const auto var = byBinding.find({plan.bindings.set, plan.bindings.firstTexture + uint32_t(t)});
         if (var == byBinding.end()) continue;  // a slot the shader does not read
         for (const Instruction& i : m.code)
             if (i.opcode() == kOpVariable && i.words[2] == var->second)
                 for (const Instruction& p : m.code)
                     if (p.opcode() == kOpTypePointer && p.words[1] == i.words[1]) imageOf[var->second] = p.words[3];
     }
-    std::map<uint32_t, uint32_t> sampledOf;  // texture variable -> its sampled image type
-    for (const auto& [var, image] : imageOf) {
+    return imageOf;
+}
+
+// The module's words from `code`, the texture variables `moved` to the end of the global declarations (their new
+// type may be declared after them), validated.
+std::vector<uint32_t> assemble(const std::vector<uint32_t>& header, std::vector<Instruction> code,
+                               const std::map<uint32_t, uint32_t>& moved) {
+    auto last = std::stable_partition(code.begin(), code.end(),
+                                      [&](const Instruction& i) { return !(i.opcode() == kOpVariable && moved.count(i.words[2])); });
+    std::vector<Instruction> variables(std::make_move_iterator(last), std::make_move_iterator(code.end()));
+    code.erase(last, code.end());
+    auto functions = std::find_if(code.begin(), code.end(), [](const Instruction& i) { return i.opcode() == kOpFunction; });
+    code.insert(functions, std::make_move_iterator(variables.begin()), std::make_move_iterator(variables.end()));
+    std::vector<uint32_t> out = header;
+    for (const Instruction& i : code) out.insert(out.end(), i.words.begin(), i.words.end());
+    spvtools::ValidatorOptions quiet;
+    quiet.SetFriendlyNames(false);
+    if (!spvtools::SpirvTools(SPV_ENV_VULKAN_1_0).Validate(out.data(), out.size(), quiet))
+        throw std::runtime_error("combined samplers: the rewritten module is invalid");
+    return out;
+}
+
+}  // namespace
+
+std::vector<uint32_t> combineSamplers(const std::vector<uint32_t>& words, const ShaderPlan& plan) {
+    Module m = parse(words);
+    const auto byBinding = descriptors(m);
+    const auto found = byBinding.find({plan.bindings.set, plan.bindings.sampler});
+    const uint32_t sampler = found == byBinding.end() ? 0 : found->second;
+    std::map<uint32_t, uint32_t> pointerOf, sampledOf;  // texture variable -> its new pointer type, its sampled image type
+    for (const auto& [var, image] : textureImages(m, byBinding, plan)) {
         sampledOf[var] = sampledImageType(m, image);
         pointerOf[var] = uniformPointer(m, sampledOf[var]);
     }
@@ -137,20 +160,7 @@ std::vector<uint32_t> combineSamplers(const std::vector<uint32_t>& words, const 
                     "separate samplers")}};
             if (auto r = replaced.find(i.words[at]); r != replaced.end()) i.words[at] = r->second;
         }
-    // The variables move to the end of the global declarations: their new type may be declared after them.
-    auto moved = std::stable_partition(kept.begin(), kept.end(),
-                                       [&](const Instruction& i) { return !(i.opcode() == kOpVariable && pointerOf.count(i.words[2])); });
-    std::vector<Instruction> variables(std::make_move_iterator(moved), std::make_move_iterator(kept.end()));
-    kept.erase(moved, kept.end());
-    auto functions = std::find_if(kept.begin(), kept.end(), [](const Instruction& i) { return i.opcode() == kOpFunction; });
-    kept.insert(functions, std::make_move_iterator(variables.begin()), std::make_move_iterator(variables.end()));
-    std::vector<uint32_t> out = m.header;
-    for (const Instruction& i : kept) out.insert(out.end(), i.words.begin(), i.words.end());
-    spvtools::ValidatorOptions quiet;
-    quiet.SetFriendlyNames(false);
-    if (!spvtools::SpirvTools(SPV_ENV_VULKAN_1_0).Validate(out.data(), out.size(), quiet))
-        throw std::runtime_error("combined samplers: the rewritten module is invalid");
-    return out;
+    return assemble(m.header, std::move(kept), pointerOf);
 }
 
 }  // namespace hexc
