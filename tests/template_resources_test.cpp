@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -191,4 +192,45 @@ TEST(TemplateResources, CombinedSamplersAndATemplateReadingHexcsSampler) {
     EXPECT_NE(formatAll(r.diagnostics).find("reads hexcSampler or a hexcTex_ texture itself"), std::string::npos);
     EXPECT_TRUE(r.files.empty());
     EXPECT_TRUE(compileEngine("materials/templates/engine.glsl", "", combined).ok());
+}
+
+// Layout msl.argument_buffers: one argument buffer per descriptor set at [[buffer(set)]], every resource at the
+// [[id]] the manifest gives, no id twice in one buffer, push constants a buffer after them.
+TEST(TemplateResources, MslArgumentBuffersHoldWhatTheManifestSays) {
+    CompileOptions options;
+    options.layout.msl.argumentBuffers = 1;
+    CompileResult r = compileEngine("materials/templates/engine.glsl", "", options);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    const std::string msl = file(r, "engine_rock.frag.metal");
+    const json target = json::parse(file(r, "engine_rock.manifest.json"))["targets"]["msl"];
+    EXPECT_EQ(target["argument_buffers"], true);
+    // Each struct's members and their ids.
+    std::map<int, std::string> structs;
+    for (int set = 0; set < 3; ++set) {
+        const size_t at = msl.find("struct spvDescriptorSetBuffer" + std::to_string(set) + "\n");
+        ASSERT_NE(at, std::string::npos) << set;
+        structs[set] = msl.substr(at, msl.find("};", at) - at);
+        expectDistinct(matches(structs[set], R"(\[\[id\((\d+)\)\]\])"), set == 0 ? 4u : set == 1 ? 7u : 1u, "ids");
+        EXPECT_NE(msl.find("spvDescriptorSet" + std::to_string(set) + " [[buffer(" + std::to_string(set) + ")]]"), std::string::npos);
+    }
+    auto member = [&](const json& where, const std::string& name) {
+        const std::string& text = structs[where["argument_buffer"].get<int>()];
+        EXPECT_TRUE(
+            std::regex_search(text, std::regex("\\b" + name + " \\[\\[id\\(" + std::to_string(where["id"].get<int>()) + "\\)\\]\\]")))
+            << name << " " << where.dump();
+    };
+    member(target["params"], "hexcParams");
+    member(target["sampler"], "hexcSampler");
+    member(target["textures"]["roughness"], "hexcTex_roughness");
+    for (const json& res : target["template_resources"]) {
+        if (res["kind"] == "push_constant") {
+            EXPECT_NE(msl.find("constant Push& push [[buffer(" + std::to_string(res["buffer"].get<int>()) + ")]]"), std::string::npos);
+            continue;
+        }
+        const std::string name =
+            res["kind"] == "uniform_buffer" ? std::string(res["name"] == "Frame" ? "frame" : "object") : res["name"].get<std::string>();
+        member(res, name);
+        if (res.contains("sampler_id"))
+            EXPECT_NE(structs[1].find(name + "Smplr [[id(" + std::to_string(res["sampler_id"].get<int>()) + ")]]"), std::string::npos);
+    }
 }

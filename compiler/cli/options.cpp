@@ -59,8 +59,11 @@ struct LayoutFlag {
 
 std::vector<LayoutFlag> layoutFlags() {
     std::vector<LayoutFlag> flags;
-    for (const LayoutField& f : layoutFields())
-        flags.push_back({std::string("--") + (std::string_view(f.target) == "vulkan" ? "" : std::string(f.target) + "-") + f.key, &f});
+    for (const LayoutField& f : layoutFields()) {
+        std::string name = std::string("--") + (std::string_view(f.target) == "vulkan" ? "" : std::string(f.target) + "-") + f.key;
+        std::replace(name.begin(), name.end(), '_', '-');  // argument_buffers: --msl-argument-buffers
+        flags.push_back({name, &f});
+    }
     return flags;
 }
 

@@ -24,9 +24,11 @@ struct ResourceLayout {
     struct Hlsl {
         uint32_t space = 0, b = 0, t = 0, s = 0, u = 0;
     } hlsl;
-    // MSL: hexc's first buffer, texture and sampler index.
+    // MSL: hexc's first buffer, texture and sampler index. `argument_buffers` (1): each descriptor set is an argument
+    // buffer at [[buffer(set)]], each resource at [[id(its Vulkan binding)]] in it, as MoltenVK lays them out; the
+    // three bases are then unused.
     struct Msl {
-        uint32_t buffer = 0, texture = 0, sampler = 0;
+        uint32_t buffer = 0, texture = 0, sampler = 0, argumentBuffers = 0;
     } msl;
     // OpenGL GLSL: hexc's uniform block binding and first texture unit.
     struct Glsl {

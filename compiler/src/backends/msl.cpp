@@ -1,6 +1,10 @@
 // MSL: by default the parameter block in [[buffer(0)]], the shared sampler in [[sampler(0)]], slot i's texture in
-// [[texture(i)]] (the layout moves each base); the template's own resources after them.
+// [[texture(i)]] (the layout moves each base); the template's own resources after them. Or argument buffers.
 #include <spirv_msl.hpp>
+
+#include <algorithm>
+#include <map>
+#include <tuple>
 
 #include "backends/backends.h"
 
@@ -9,57 +13,121 @@ namespace hexc {
 void configureMsl(spirv_cross::CompilerMSL& c, const CompileOptions& options) {
     spirv_cross::CompilerMSL::Options msl;
     msl.set_msl_version(options.mslMajor, options.mslMinor);
+    msl.argument_buffers = options.layout.msl.argumentBuffers != 0;
     c.set_msl_options(msl);
     spirv_cross::CompilerGLSL::Options common = c.get_common_options();
     common.emit_line_directives = options.debug;
     c.set_common_options(common);
 }
 
-TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
-    spirv_cross::CompilerMSL c(spirv);
-    configureMsl(c, options);
+namespace {
+
+spirv_cross::MSLResourceBinding fragmentBinding(uint32_t set, uint32_t binding) {
+    spirv_cross::MSLResourceBinding b;
+    b.stage = spv::ExecutionModelFragment;
+    b.desc_set = set;
+    b.binding = binding;
+    b.count = 1;
+    return b;
+}
+
+// Where each resource went, by (set, binding): the manifest's address of it.
+using Placed = std::map<std::pair<uint32_t, uint32_t>, nlohmann::json>;
+
+// hexc's resources at the layout's bases; the template's after hexc's last buffer, texture and sampler.
+Placed placeDirect(spirv_cross::CompilerMSL& c, const ShaderPlan& plan, const std::vector<TemplateResource>& own) {
     const ResourceLayout::Msl& l = plan.layout.msl;
-    auto bind = [&](uint32_t binding, uint32_t buffer, uint32_t texture, uint32_t sampler) {
-        spirv_cross::MSLResourceBinding b;
-        b.stage = spv::ExecutionModelFragment;
-        b.desc_set = plan.bindings.set;
-        b.binding = binding;
-        b.count = 1;
-        b.msl_buffer = buffer;
-        b.msl_texture = texture;
-        b.msl_sampler = sampler;
+    const uint32_t set = plan.bindings.set;
+    Placed placed;
+    auto bind = [&](uint32_t s, uint32_t binding, const char* kind, uint32_t index) {
+        spirv_cross::MSLResourceBinding b = fragmentBinding(s, binding);
+        (std::string_view(kind) == "buffer" ? b.msl_buffer : std::string_view(kind) == "texture" ? b.msl_texture : b.msl_sampler) = index;
         c.add_msl_resource_binding(b);
+        placed[{s, binding}][kind] = index;
     };
-    bind(plan.bindings.params, l.buffer, 0, 0);
-    bind(plan.bindings.sampler, 0, 0, l.sampler);
-    for (uint32_t i = 0; i < plan.slots.size(); ++i) bind(plan.slots[i].binding, 0, l.texture + i, 0);
-    // The template's resources after hexc's last buffer, texture and sampler.
+    bind(set, plan.bindings.params, "buffer", l.buffer);
+    bind(set, plan.bindings.sampler, "sampler", l.sampler);
+    for (uint32_t i = 0; i < plan.slots.size(); ++i) bind(set, plan.slots[i].binding, "texture", l.texture + i);
     uint32_t buffer = l.buffer + 1, texture = l.texture + uint32_t(plan.slots.size()), sampler = l.sampler + 1;
-    nlohmann::json placed = nlohmann::json::array();
-    for (const TemplateResource& r : templateResources(c, plan)) {
-        spirv_cross::MSLResourceBinding b;
-        b.stage = spv::ExecutionModelFragment;
+    for (const TemplateResource& r : own) {
         const bool push = r.cls == ResourceClass::PushConstant;
-        b.desc_set = push ? spirv_cross::ResourceBindingPushConstantDescriptorSet : r.set;
-        b.binding = push ? spirv_cross::ResourceBindingPushConstantBinding : r.binding;
-        b.count = 1;
-        nlohmann::json where = describe(r);
+        spirv_cross::MSLResourceBinding b =
+            push ? fragmentBinding(spirv_cross::ResourceBindingPushConstantDescriptorSet, spirv_cross::ResourceBindingPushConstantBinding)
+                 : fragmentBinding(r.set, r.binding);
+        nlohmann::json& where = placed[{b.desc_set, b.binding}];
         const bool textured = r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Image || r.cls == ResourceClass::StorageImage;
         const bool sampling = r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Sampler;
         if (textured) where["texture"] = b.msl_texture = texture++;
         if (sampling) where["sampler"] = b.msl_sampler = sampler++;
         if (!textured && !sampling) where["buffer"] = b.msl_buffer = buffer++;
         c.add_msl_resource_binding(b);
-        placed.push_back(std::move(where));
+    }
+    return placed;
+}
+
+// Argument buffers (layout msl.argument_buffers): descriptor set N is the argument buffer at [[buffer(N)]]; in it,
+// every resource, hexc's and the template's, takes the next [[id]] in binding order, a sampler2D two (its texture,
+// then its sampler). Push constants stay a buffer, after the argument buffers.
+Placed placeInArgumentBuffers(spirv_cross::CompilerMSL& c, const ShaderPlan& plan, const std::vector<TemplateResource>& own) {
+    struct Entry {
+        uint32_t set, binding;
+        bool texture, sampler;
+    };
+    const uint32_t set = plan.bindings.set;
+    std::vector<Entry> entries = {{set, plan.bindings.params, false, false}, {set, plan.bindings.sampler, false, true}};
+    for (const SlotPlan& sp : plan.slots) entries.push_back({set, sp.binding, true, false});
+    uint32_t sets = set + 1;
+    for (const TemplateResource& r : own)
+        if (r.cls != ResourceClass::PushConstant) {
+            const bool textured =
+                r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Image || r.cls == ResourceClass::StorageImage;
+            entries.push_back({r.set, r.binding, textured, r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Sampler});
+            sets = std::max(sets, r.set + 1);
+        }
+    std::sort(entries.begin(), entries.end(),
+              [](const Entry& a, const Entry& b) { return std::tie(a.set, a.binding) < std::tie(b.set, b.binding); });
+    std::map<uint32_t, uint32_t> next;  // per set
+    Placed placed;
+    for (const Entry& e : entries) {
+        spirv_cross::MSLResourceBinding b = fragmentBinding(e.set, e.binding);
+        nlohmann::json& where = placed[{e.set, e.binding}];
+        where["argument_buffer"] = e.set;
+        where["id"] = b.msl_buffer = b.msl_texture = b.msl_sampler = next[e.set]++;
+        if (e.texture && e.sampler) where["sampler_id"] = b.msl_sampler = next[e.set]++;
+        c.add_msl_resource_binding(b);
+    }
+    spirv_cross::MSLResourceBinding push =
+        fragmentBinding(spirv_cross::ResourceBindingPushConstantDescriptorSet, spirv_cross::ResourceBindingPushConstantBinding);
+    placed[{push.desc_set, push.binding}]["buffer"] = push.msl_buffer = sets;
+    c.add_msl_resource_binding(push);
+    return placed;
+}
+
+}  // namespace
+
+TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
+    spirv_cross::CompilerMSL c(spirv);
+    configureMsl(c, options);
+    const std::vector<TemplateResource> own = templateResources(c, plan);
+    const Placed where = plan.layout.msl.argumentBuffers ? placeInArgumentBuffers(c, plan, own) : placeDirect(c, plan, own);
+    nlohmann::json placed = nlohmann::json::array();
+    for (const TemplateResource& r : own) {
+        nlohmann::json described = describe(r);
+        const bool push = r.cls == ResourceClass::PushConstant;
+        described.update(where.at(
+            push ? std::pair{spirv_cross::ResourceBindingPushConstantDescriptorSet, spirv_cross::ResourceBindingPushConstantBinding}
+                 : std::pair{r.set, r.binding}));
+        placed.push_back(std::move(described));
     }
 
     TargetOutput out;
     out.source = c.compile();
     out.entryPoint = c.get_cleansed_entry_point_name(plan.entryPoint, spv::ExecutionModelFragment);
-    Locate locate = [&l](ResourceKind kind, uint32_t index) -> nlohmann::json {
-        if (kind == ResourceKind::Params) return {{"buffer", l.buffer}};
-        if (kind == ResourceKind::Sampler) return {{"sampler", l.sampler}};
-        return {{"texture", l.texture + index}};
+    Locate locate = [&](ResourceKind kind, uint32_t index) -> nlohmann::json {
+        const uint32_t binding = kind == ResourceKind::Params    ? plan.bindings.params
+                                 : kind == ResourceKind::Sampler ? plan.bindings.sampler
+                                                                 : plan.slots[index].binding;
+        return where.at({plan.bindings.set, binding});
     };
     // SPIRV-Cross gives user varyings [[user(locn<location>)]] and colour outputs [[color(<location>)]].
     IoName attribute = [](uint32_t location, bool input) -> nlohmann::json {
@@ -67,6 +135,7 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
     };
     out.target = describeTarget(spirv, plan, out.entryPoint, locate, attribute, placed);
     out.target["msl_version"] = std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor);
+    if (plan.layout.msl.argumentBuffers) out.target["argument_buffers"] = true;
     return out;
 }
 

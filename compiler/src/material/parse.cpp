@@ -792,6 +792,8 @@ const std::vector<LayoutField>& layoutFields() {
         {"msl", "buffer", 4095, "hexc's first MSL buffer index", [](L& l) -> uint32_t& { return l.msl.buffer; }},
         {"msl", "texture", 4095, "hexc's first MSL texture index", [](L& l) -> uint32_t& { return l.msl.texture; }},
         {"msl", "sampler", 4095, "hexc's first MSL sampler index", [](L& l) -> uint32_t& { return l.msl.sampler; }},
+        {"msl", "argument_buffers", 1, "1: a Metal argument buffer per descriptor set (default 0)",
+         [](L& l) -> uint32_t& { return l.msl.argumentBuffers; }},
         {"glsl", "binding", 4095, "hexc's GLSL block binding and first texture unit", [](L& l) -> uint32_t& { return l.glsl.binding; }}};
     return fields;
 }
@@ -800,7 +802,8 @@ std::string toString(const ResourceLayout& l) {
     auto n = [](uint32_t v) { return std::to_string(v); };
     return "vulkan " + n(l.vulkan.set) + "/" + n(l.vulkan.binding) + (l.vulkan.combined ? " combined" : "") + " hlsl space" +
            n(l.hlsl.space) + " b" + n(l.hlsl.b) + " t" + n(l.hlsl.t) + " s" + n(l.hlsl.s) + " u" + n(l.hlsl.u) + " msl " + n(l.msl.buffer) +
-           "/" + n(l.msl.texture) + "/" + n(l.msl.sampler) + " glsl " + n(l.glsl.binding);
+           "/" + n(l.msl.texture) + "/" + n(l.msl.sampler) + (l.msl.argumentBuffers ? " argument buffers" : "") + " glsl " +
+           n(l.glsl.binding);
 }
 
 std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }
