@@ -655,3 +655,44 @@ TEST(Compile, AnInvalidModuleIsReportedWithNames) {
     EXPECT_NE(all.find("glslang produced invalid SPIR-V"), std::string::npos) << all;
     EXPECT_NE(all.find("shade"), std::string::npos) << all;
 }
+
+// --manifest-paths: the manifest says where each input was, relative to the output folder, so a tool reading the
+// manifest finds the textures; without it the manifest does not depend on where it was built.
+TEST(Cli, ManifestPathsSayWhereTheInputsWere) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_manifest_paths";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(runHexc("materials/engine_rock.json --manifest-paths --layout materials/layouts/engine.json --hlsl-sm 51 -o " +
+                          (dir / "out").string(),
+                      &err),
+              0)
+        << err;
+    const auto source = nlohmann::json::parse(readFile(dir / "out" / "engine_rock.manifest.json"))["source"];
+    for (const auto& [key, path] : {std::pair{"material", "materials/engine_rock.json"},
+                                    {"template", "materials/templates/engine.glsl"},
+                                    {"layout", "materials/layouts/engine.json"}})
+        EXPECT_TRUE(std::filesystem::equivalent(dir / "out" / source[key].get<std::string>(), path)) << key << " " << source[key];
+    EXPECT_TRUE(
+        std::filesystem::equivalent(dir / "out" / source["textures"]["albedo"].get<std::string>(), "materials/textures/rock_albedo.png"));
+    EXPECT_EQ(source["relative_to"], "this manifest's folder");
+    // The option is in the stamp: without it the manifest is written again, without "source".
+    ASSERT_EQ(runHexc("materials/engine_rock.json --layout materials/layouts/engine.json --hlsl-sm 51 -o " + (dir / "out").string(), &err),
+              0)
+        << err;
+    EXPECT_FALSE(nlohmann::json::parse(readFile(dir / "out" / "engine_rock.manifest.json")).contains("source"));
+}
+
+// The banner names the material file: renaming the file, its content unchanged, compiles again.
+TEST(Cli, ARenamedMaterialFileIsNotUpToDate) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_renamed_material";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "m");
+    std::filesystem::create_directory_symlink(std::filesystem::absolute("materials/textures"), dir / "m" / "textures");
+    std::filesystem::copy_file("materials/rock.json", dir / "m" / "a.json");
+    std::string err;
+    ASSERT_EQ(runHexc((dir / "m" / "a.json").string() + " -o " + (dir / "out").string(), &err), 0) << err;
+    std::filesystem::rename(dir / "m" / "a.json", dir / "m" / "b.json");
+    ASSERT_EQ(runHexc((dir / "m" / "b.json").string() + " -o " + (dir / "out").string(), &err), 0) << err;
+    EXPECT_NE(err.find("1 compiled, 0 up to date"), std::string::npos) << err;
+    EXPECT_NE(readFile(dir / "out" / "rock.frag.hlsl").find("from b.json"), std::string::npos);
+}

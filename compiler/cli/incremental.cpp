@@ -49,10 +49,16 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
             std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + "," + std::to_string(options.specialize) +
             std::to_string(options.shareLattice) + std::to_string(options.bake) + "," + toString(options.layout) + "," +
             options.entryPoint + (options.vertex ? ",vertex" : "") + (options.debug ? ",debug" : "") +
-            (options.emitGenerated ? ",generated" : "");
+            (options.emitGenerated ? ",generated" : "") + (options.manifestPathsFrom.empty() ? "" : ",paths");
     h.add(opts);
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).
     h.add(material.name + "|" + material.templateName);
+    // The banner names the material file; --manifest-paths gives where every input was (the stamp's folder is the
+    // output folder they are relative to).
+    h.add(material.sourceFile.filename().string());
+    if (!options.manifestPathsFrom.empty())
+        for (const std::filesystem::path& f : inputFiles(material, options))
+            h.add(std::filesystem::absolute(f).lexically_normal().string());
     // Of a texture the compile reads only its size (validation has checked its channels): new pixels leave the
     // shaders as they are.
     for (const Slot& s : material.slots) h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height));

@@ -139,6 +139,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         ->check(CLI::IsMember({"460", "450", "330", "310es", "300es"}));
     app.add_option("--msl-version", msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
     std::filesystem::path layoutFile;
+    bool manifestPaths = false;
     std::vector<LayoutFlag> flags = layoutFlags();
     const char* layoutGroup = "Resource layout (docs/cli.md; flags override the file)";
     app.add_option("--layout", layoutFile, "where hexc's resources go on each target, as a JSON file")
@@ -155,6 +156,8 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
                  "readable outputs (like glslc/dxc -O0): no optimisation, hexc's\n"
                  "functions kept by name, #line references to the template and library");
     app.add_flag("--emit-generated", a.options.emitGenerated, "also write the generated Vulkan GLSL fed to glslang: <name>.generated.frag");
+    app.add_flag("--manifest-paths", manifestPaths,
+                 "the manifest also gives where the material, its textures, template and\nlayout file are, relative to the output folder");
     app.add_flag("--bake", a.options.bake,
                  "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
     app.add_flag_callback(
@@ -181,6 +184,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         return kUsage;
     }
     a.materials.assign(materials.begin(), materials.end());
+    if (manifestPaths) a.options.manifestPathsFrom = a.outDir;
     applyNames(targets, glsl, msl, a.options);
     if (!resolveLayout(layoutFile, flags, a.options.layout)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {

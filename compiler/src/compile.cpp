@@ -112,6 +112,25 @@ nlohmann::json emitVertexStage(const Material& material, const ShaderPlan& plan,
     return vertex;
 }
 
+// `file` relative to the folder `from`, with `/` separators, whatever the current folder is.
+std::string relativeTo(const std::filesystem::path& file, const std::filesystem::path& from) {
+    const std::filesystem::path base = std::filesystem::absolute(from).lexically_normal();
+    return std::filesystem::absolute(file).lexically_normal().lexically_relative(base).generic_string();
+}
+
+// CompileOptions::manifestPathsFrom: where the compile's input files were.
+nlohmann::json sourcePaths(const Material& material, const ShaderPlan& plan, const CompileOptions& options) {
+    const std::filesystem::path& from = options.manifestPathsFrom;
+    nlohmann::json textures = nlohmann::json::object();
+    for (const SlotPlan& sp : plan.slots) textures[sp.slot->name] = relativeTo(sp.slot->texturePath, from);
+    nlohmann::json source = {
+        {"relative_to", "this manifest's folder"}, {"material", relativeTo(material.sourceFile, from)}, {"textures", textures}};
+    const std::string templ = options.templateFile.empty() ? material.templateName : options.templateFile.string();
+    if (templ.ends_with(".glsl")) source["template"] = relativeTo(templ, from);
+    if (!plan.layout.sourceFile.empty()) source["layout"] = relativeTo(plan.layout.sourceFile, from);
+    return source;
+}
+
 // GLSL's `#version` stays the first line (WebGL 2 requires it there); the banner follows it.
 void withBanner(std::string& source, const std::string& banner) {
     source.insert(source.starts_with("#version") ? source.find('\n') + 1 : 0, banner);
@@ -166,6 +185,7 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     }
     nlohmann::json manifest = buildManifest(material, plan, described);
     if (options.vertex) manifest["vertex"] = emitVertexStage(material, plan, options, targets, result);
+    if (!options.manifestPathsFrom.empty()) manifest["source"] = sourcePaths(material, plan, options);
     const std::string top = banner(material, plan, options);
     for (OutputFile& f : result.files)
         if (!f.name.ends_with(".spv") && !f.name.ends_with(".json")) withBanner(f.contents, top);

@@ -39,6 +39,9 @@ struct CompileOptions {
     bool debug = false;
     // Also write the generated Vulkan GLSL fed to glslang, "<material>.generated.frag" (glslangValidator reads it).
     bool emitGenerated = false;
+    // When set (the output folder): the manifest's "source" gives the material file, its textures, a template file and
+    // the layout file relative to it. Off by default, so that outputs do not depend on where they are built.
+    std::filesystem::path manifestPathsFrom;
 };
 
 struct OutputFile {
