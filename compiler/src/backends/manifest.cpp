@@ -34,6 +34,8 @@ nlohmann::json slotEntry(const SlotPlan& sp) {
     if (sp.heightOnly) slot["height_map_only"] = true;
     if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
     if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
+    // The texture channels the shader reads: what a packing tool may not reuse.
+    slot["reads"] = s.kind == SlotKind::Color ? "rgba" : s.kind == SlotKind::Normal ? "rgb" : std::string(1, "rgba"[s.channel]);
     return slot;
 }
 
