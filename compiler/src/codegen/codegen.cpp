@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "common/templates.h"
@@ -148,7 +149,10 @@ private:
 };
 
 std::string injectedCode(const ShaderPlan& plan) {
-    std::string out = lineDirective(1, "hexc/hextiling.glsl") + *embeddedText("hextiling.glsl");
+    // A variant that reads no slot and calls no hexc function (a depth pass) is spared the library's parse.
+    static const std::regex callsLibrary("\\bhexc[A-Z]");
+    const bool library = !plan.slots.empty() || std::regex_search(plan.templateSource, callsLibrary);
+    std::string out = library ? lineDirective(1, "hexc/hextiling.glsl") + *embeddedText("hextiling.glsl") : "";
     out += lineDirective(1, "hexc/generated") + "\n";
     if (plan.slots.empty()) return out;
     Emitter emit(plan);
