@@ -57,7 +57,8 @@ struct Stages {
     Material material = parsedOrExit(kStageMaterial);
     ShaderPlan plan = planShader(material, {});
     std::string glsl = generateGlsl(plan);
-    std::vector<uint32_t> spirv = compileToSpirv(glsl, ShaderStage::Fragment, plan.templateName).words;
+    std::vector<uint32_t> spirv =
+        compileToSpirv(glsl, ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl, plan.entryPoint).words;
     std::vector<uint32_t> optimized = optimizeSpirv(spirv).words;
     CompileOptions options;
     nlohmann::json targets = {{"spirv", describeSpirv(optimized, plan).target},
@@ -88,7 +89,9 @@ void Codegen(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(generateGlsl(stages().plan));
 }
 void Glslang(benchmark::State& state) {
-    for (auto _ : state) benchmark::DoNotOptimize(compileToSpirv(stages().glsl, ShaderStage::Fragment, stages().plan.templateName));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(compileToSpirv(stages().glsl, ShaderStage::Fragment, stages().plan.templateName, SourceLanguage::Glsl,
+                                                stages().plan.entryPoint));
 }
 void SpirvOpt(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(optimizeSpirv(stages().spirv));
