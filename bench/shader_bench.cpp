@@ -574,6 +574,10 @@ int run(const fs::path& resultsDir) {
 }  // namespace hexc::bench
 
 int main(int argc, char** argv) {
+    if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {  // --help included: not a results folder
+        std::cerr << "usage: hexc-bench-shaders [RESULTS_DIR]   (from the source root; default build/bench-results)\n";
+        return argc == 2 && std::string_view(argv[1]) == "--help" ? 0 : 2;
+    }
     try {
         return hexc::bench::run(argc > 1 ? argv[1] : "build/bench-results");
     } catch (const hexc::CompileError& e) {
