@@ -696,3 +696,15 @@ TEST(Cli, ARenamedMaterialFileIsNotUpToDate) {
     EXPECT_NE(err.find("1 compiled, 0 up to date"), std::string::npos) << err;
     EXPECT_NE(readFile(dir / "out" / "rock.frag.hlsl").find("from b.json"), std::string::npos);
 }
+
+// --debug keeps functions that take a texture and a sampler apart: combined samplers are refused, with the reason.
+TEST(Readable, DebugAndCombinedSamplersAreRefusedTogether) {
+    CompileOptions options;
+    options.debug = true;
+    options.layout.vulkan.combined = 1;
+    CompileResult r = compile(load("materials/rock.json"), options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(formatAll(r.diagnostics).find("--debug: error[HX300]: --debug keeps hexc's functions"), std::string::npos)
+        << formatAll(r.diagnostics);
+    EXPECT_TRUE(r.files.empty());
+}

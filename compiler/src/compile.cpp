@@ -136,24 +136,9 @@ void withBanner(std::string& source, const std::string& banner) {
     source.insert(source.starts_with("#version") ? source.find('\n') + 1 : 0, banner);
 }
 
-void run(const Material& material, const CompileOptions& options, CompileResult& result) {
-    ShaderPlan plan = planShader(material, options);
-    append(result.diagnostics, plan.diagnostics);
-    if (hasErrors(plan.diagnostics)) return;
-
-    result.glsl = generateGlsl(plan);
-    SpirvResult front =
-        compileToSpirv(result.glsl, ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl, plan.entryPoint, {}, options.debug);
-    append(result.diagnostics, front.diagnostics);
-    if (front.words.empty()) return;
-    SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);
-    append(result.diagnostics, optimized.diagnostics);
-    if (optimized.words.empty()) return;
-    result.spirv = std::move(optimized.words);
-
-    std::vector<Target> targets = options.targets;
-    std::sort(targets.begin(), targets.end());
-    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+// Each target's file into `result`; their descriptions for the manifest.
+nlohmann::json emitTargets(const Material& material, const ShaderPlan& plan, const CompileOptions& options,
+                           const std::vector<Target>& targets, CompileResult& result) {
     nlohmann::json described = nlohmann::json::object();
     for (Target t : targets) {
         TargetOutput out;
@@ -183,14 +168,39 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
         described[std::string(toString(t))] = std::move(out.target);
         result.files.push_back(std::move(file));
     }
+    return described;
+}
+
+void run(const Material& material, const CompileOptions& options, CompileResult& result) {
+    ShaderPlan plan = planShader(material, options);
+    append(result.diagnostics, plan.diagnostics);
+    if (hasErrors(plan.diagnostics)) return;
+
+    if (options.debug && plan.layout.vulkan.combined)
+        throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {"--debug"}, "",
+                                             "--debug keeps hexc's functions, which take a texture and a sampler apart; combined image "
+                                             "samplers (layout vulkan.combined) need the optimised, inlined shader")}};
+    result.glsl = generateGlsl(plan);
+    SpirvResult front =
+        compileToSpirv(result.glsl, ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl, plan.entryPoint, {}, options.debug);
+    append(result.diagnostics, front.diagnostics);
+    if (front.words.empty()) return;
+    SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);
+    append(result.diagnostics, optimized.diagnostics);
+    if (optimized.words.empty()) return;
+    result.spirv = std::move(optimized.words);
+
+    std::vector<Target> targets = options.targets;
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    const nlohmann::json described = emitTargets(material, plan, options, targets, result);
     nlohmann::json manifest = buildManifest(material, plan, described);
     if (options.vertex) manifest["vertex"] = emitVertexStage(material, plan, options, targets, result);
     if (!options.manifestPathsFrom.empty()) manifest["source"] = sourcePaths(material, plan, options);
+    if (options.emitGenerated) result.files.push_back({material.name + ".generated.frag", result.glsl});
     const std::string top = banner(material, plan, options);
     for (OutputFile& f : result.files)
         if (!f.name.ends_with(".spv") && !f.name.ends_with(".json")) withBanner(f.contents, top);
-    if (options.emitGenerated) result.files.push_back({material.name + ".generated.frag", result.glsl});
-    if (options.emitGenerated) withBanner(result.files.back().contents, top);
     result.files.push_back({material.name + ".manifest.json", manifest.dump(2) + "\n"});
     std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
 }
