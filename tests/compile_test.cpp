@@ -286,7 +286,7 @@ TEST(Cli, UsageErrors) {
     EXPECT_EQ(runHexc("--frobnicate", &err), 2);
     EXPECT_EQ(err, "hexc: The following argument was not expected: --frobnicate (see hexc --help)\n");
     EXPECT_EQ(runHexc("materials/rock.json -o x --hlsl-sm 52", &err), 2);
-    EXPECT_EQ(err, "hexc: --hlsl-sm: 52 not in {50,51,60,61,62,63,64,65,66} (see hexc --help)\n");
+    EXPECT_EQ(err, "hexc: --hlsl-sm: `52` is not a shader model hexc emits: 50, 51, 60 ... 66 (or 5.0, 6_0 ...) (see hexc --help)\n");
     EXPECT_EQ(runHexc("materials/rock.json -o x --template lit.txt", &err), 2);
     EXPECT_EQ(err, "hexc: --template: expected a .glsl file, got lit.txt (see hexc --help)\n");
     EXPECT_EQ(runHexc("--help"), 0);
@@ -521,7 +521,7 @@ TEST(Cli, ShaderModelAndTargetSpellingsOtherToolsUse) {
     }
     std::string err;
     EXPECT_EQ(runHexc("materials/rock.json --hlsl-sm 6.9 -o " + dir.string(), &err), 2);
-    EXPECT_NE(err.find("--hlsl-sm"), std::string::npos) << err;
+    EXPECT_NE(err.find("--hlsl-sm: `6.9` is not a shader model"), std::string::npos) << err;
 }
 
 // Every text output starts with the banner: hexc's version, the material file, the settings.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <iostream>
 #include <map>
+#include <set>
 
 namespace hexc::cli {
 namespace {
@@ -123,12 +124,16 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     // dxc and Slang write shader models 6_0 or 6.0; glslc-style tools 60: all name the same model.
     app.add_option("--hlsl-sm", a.options.hlslShaderModel, "HLSL shader model: 50, 51, 60 ... 66, also as 6.0 or 6_0 (default 50)")
         ->transform(CLI::Validator(
-            [](std::string& v) {
-                if (v.size() == 3 && (v[1] == '.' || v[1] == '_')) v.erase(1, 1);
+            [](std::string& v) {  // checked here, so that an error quotes what was written, not "69" for 6.9
+                std::string model = v;
+                if (model.size() == 3 && (model[1] == '.' || model[1] == '_')) model.erase(1, 1);
+                static const std::set<std::string> models = {"50", "51", "60", "61", "62", "63", "64", "65", "66"};
+                if (!models.count(model)) return "`" + v + "` is not a shader model hexc emits: 50, 51, 60 ... 66 (or 5.0, 6_0 ...)";
+                v = model;
                 return std::string();
             },
             ""))
-        ->check(CLI::IsMember({50, 51, 60, 61, 62, 63, 64, 65, 66}));
+        ->type_name("MODEL");
     app.add_option("--glsl-version", glsl, "GLSL version: 460, 450 (default), 330, 310es, 300es (WebGL 2)")
         ->transform(CLI::Validator(
             [](std::string& v) {  // "300 es", "300_es" as other tools write it
