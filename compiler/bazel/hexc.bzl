@@ -10,6 +10,8 @@ def _hexc_material_impl(ctx):
             fail("unknown target `%s`; expected spirv, hlsl, glsl or msl" % target, "targets")
     shaders = [ctx.actions.declare_file(name + ".manifest.json")]
     shaders += [ctx.actions.declare_file("%s.frag.%s" % (name, _EXTENSIONS[t])) for t in ctx.attr.targets]
+    if ctx.attr.vertex:
+        shaders += [ctx.actions.declare_file("%s.vert.%s" % (name, _EXTENSIONS[t])) for t in ctx.attr.targets]
 
     # hexc always writes its stamp beside the outputs. It is declared, so the action leaves no undeclared file
     # behind; --force, because Bazel, not the stamp, decides when the action runs.
@@ -20,6 +22,8 @@ def _hexc_material_impl(ctx):
     args.add("-o", shaders[0].dirname)
     args.add_joined("--targets", ctx.attr.targets, join_with = ",")
     args.add_all(["--force", "-q"])
+    if ctx.attr.vertex:
+        args.add("--vertex")
     args.add_all(ctx.attr.options)
     ctx.actions.run(
         executable = ctx.executable.hexc,
@@ -43,6 +47,10 @@ hexc_material = rule(
         ),
         "material_name": attr.string(
             doc = "The material's \"name\", which names the outputs; default: this target's name.",
+        ),
+        "vertex": attr.bool(
+            doc = "Also write the pass-through vertex stage <name>.vert.* (hexc --vertex; not in `options`, " +
+                  "whose outputs the rule would not declare).",
         ),
         "textures": attr.label_list(
             allow_files = True,

@@ -29,9 +29,9 @@ bazel_build() {
     build --spawn_strategy=linux-sandbox --nosandbox_debug //:rock) > "$work/log" 2>&1
 }
 
-(cd "$ws" && "$work/prefix/bin/hexc" materials/rock.json -o "$work/cli" -q) || fail "the command line failed"
+(cd "$ws" && "$work/prefix/bin/hexc" materials/rock.json -o "$work/cli" -q --vertex) || fail "the command line failed"
 bazel_build || { cat "$work/log"; fail "the sandboxed build failed"; }
-for f in rock.manifest.json rock.frag.spv rock.frag.hlsl rock.frag.glsl rock.frag.metal; do
+for f in rock.manifest.json rock.{frag,vert}.{spv,hlsl,glsl,metal}; do
   cmp "$ws/bazel-bin/$f" "$work/cli/$f" || fail "bazel-bin/$f differs from the command line's"
 done
 echo "ok: sandboxed build, outputs identical to the command line's"
