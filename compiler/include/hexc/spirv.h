@@ -44,6 +44,11 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
 // performance: the -O recipe; off (--debug), the module is only validated (and frozen if asked).
 SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants = false, bool legalize = false, bool performance = true);
 
+// Validates a module for Vulkan 1.0 without friendly names, which cost more than the validation (quadratic in
+// repeated names; glslang calls every call's temporary `param`). Empty when valid; else the validator's messages,
+// from a second validation with names.
+std::string validationErrors(const std::vector<uint32_t>& words);
+
 // Human-readable SPIR-V, for tests and debugging.
 std::string disassemble(const std::vector<uint32_t>& words);
 

@@ -5,7 +5,9 @@
 // emitted from the separate module (HLSL and MSL have separate samplers only, OpenGL GLSL combined ones only).
 #include "spirv/combined.h"
 
-#include <spirv-tools/libspirv.hpp>
+#include "hexc/spirv.h"
+
+#include <spirv-tools/libspirv.h>
 
 #include <algorithm>
 #include <map>
@@ -109,10 +111,8 @@ std::vector<uint32_t> assemble(const std::vector<uint32_t>& header, std::vector<
     code.insert(functions, std::make_move_iterator(variables.begin()), std::make_move_iterator(variables.end()));
     std::vector<uint32_t> out = header;
     for (const Instruction& i : code) out.insert(out.end(), i.words.begin(), i.words.end());
-    spvtools::ValidatorOptions quiet;
-    quiet.SetFriendlyNames(false);
-    if (!spvtools::SpirvTools(SPV_ENV_VULKAN_1_0).Validate(out.data(), out.size(), quiet))
-        throw std::runtime_error("combined samplers: the rewritten module is invalid");
+    if (std::string errors = validationErrors(out); !errors.empty())
+        throw std::runtime_error("combined samplers: the rewritten module is invalid:\n" + errors);
     return out;
 }
 

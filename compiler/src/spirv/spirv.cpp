@@ -55,6 +55,13 @@ void appendGlslangLog(const std::string& log, const std::string& fallbackName, D
 
 spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_0;
 
+// SPIRV-Tools' messages appended to `messages`, one line each, located by word.
+spvtools::MessageConsumer collectInto(std::string& messages) {
+    return [&messages](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
+        messages += "word " + std::to_string(pos.index) + ": " + message + "\n";
+    };
+}
+
 // GLSL ES 3.00 (WebGL 2): glslang makes SPIR-V from ES 3.10 on, so it is checked by glslang's ES 3.00 rules alone
 // (parse, no target), then compiled as ES 3.10, of which it is a subset. Returns the source to compile, or "".
 constexpr std::string_view kEs300 = "#version 300 es\n";
@@ -136,31 +143,16 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
 SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants, bool legalize, bool performance) {
     SpirvResult result;
     std::string messages;
-    auto consumer = [&messages](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
-        messages += "word " + std::to_string(pos.index) + ": " + message + "\n";
-    };
     auto fail = [&](const std::string& what) {
         result.words.clear();
         result.diagnostics.push_back(Diagnostic::make(Code::Internal, {"hexc"}, "", what + ":\n" + messages));
         return result;
     };
-    spvtools::SpirvTools tools(kTargetEnv);
-    tools.SetMessageConsumer(consumer);
-    // Each module is validated once, without friendly names: building them costs more than the validation (it is
-    // quadratic in repeated names, and glslang calls every call's temporary `param`). A failure, a hexc bug, is
-    // validated again with names for its message.
-    spvtools::ValidatorOptions quiet;
-    quiet.SetFriendlyNames(false);
-    auto valid = [&](const std::vector<uint32_t>& module) {
-        if (tools.Validate(module.data(), module.size(), quiet)) return true;
-        messages.clear();
-        tools.Validate(module);
-        return false;
-    };
-    if (!valid(words)) return fail("glslang produced invalid SPIR-V");
+    // Each module is validated once: here, and after the passes (spirv-opt's own validation is off).
+    if (messages = validationErrors(words); !messages.empty()) return fail("glslang produced invalid SPIR-V");
 
     spvtools::Optimizer optimizer(kTargetEnv);
-    optimizer.SetMessageConsumer(consumer);
+    optimizer.SetMessageConsumer(collectInto(messages));
     // Baked settings arrive as specialisation constants; freezing turns them into constants at their
     // default values, which the passes below fold like literals.
     if (freezeConstants) optimizer.RegisterPass(spvtools::CreateFreezeSpecConstantValuePass());
@@ -174,11 +166,23 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstan
     if (performance) optimizer.RegisterPerformancePasses();
     std::vector<uint32_t> optimized;
     spvtools::OptimizerOptions once;
-    once.set_run_validator(false);  // validated above
+    once.set_run_validator(false);
     if (!optimizer.Run(words.data(), words.size(), &optimized, once)) return fail("spirv-opt failed");
-    if (!valid(optimized)) return fail("optimised SPIR-V failed validation");
+    if (messages = validationErrors(optimized); !messages.empty()) return fail("optimised SPIR-V failed validation");
     result.words = std::move(optimized);
     return result;
+}
+
+std::string validationErrors(const std::vector<uint32_t>& words) {
+    spvtools::SpirvTools tools(kTargetEnv);
+    std::string messages;
+    tools.SetMessageConsumer(collectInto(messages));
+    spvtools::ValidatorOptions quiet;
+    quiet.SetFriendlyNames(false);
+    if (tools.Validate(words.data(), words.size(), quiet)) return "";
+    messages.clear();
+    tools.Validate(words);
+    return messages;
 }
 
 std::string disassemble(const std::vector<uint32_t>& words) {
