@@ -441,7 +441,7 @@ TEST(GlslVersions, EachMatchesTheReference) {
 std::string withLibrary(const std::string& file, LibraryTarget target) {
     std::ifstream in("materials/library/" + file);
     std::string text(std::istreambuf_iterator<char>(in), {});
-    const OutputFile library = hexcLibrary(target);
+    const OutputFile library = hexcLibrary({target}).front();
     const std::string line = "#include \"" + library.name + "\"";
     const size_t at = text.find(line);
     if (at == std::string::npos) throw std::runtime_error(file + " does not include " + library.name);

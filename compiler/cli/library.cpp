@@ -41,8 +41,9 @@ int libraryCommand(const std::vector<std::string>& args) {
                                                                {"msl", LibraryTarget::Msl},
                                                                {"metal", LibraryTarget::Msl},
                                                                {"spirv-asm", LibraryTarget::SpirvAsm}};
-    std::vector<OutputFile> files;
-    for (const std::string& t : targets) files.push_back(hexcLibrary(names.at(t)));
+    std::vector<LibraryTarget> chosen;
+    for (const std::string& t : targets) chosen.push_back(names.at(t));
+    const std::vector<OutputFile> files = hexcLibrary(chosen);
     try {
         std::filesystem::create_directories(outDir);
         for (const OutputFile& f : files) writeAtomically(outDir, f.name, f.contents);

@@ -7,9 +7,9 @@ namespace hexc {
 
 enum class LibraryTarget { Hlsl, Glsl, Msl, SpirvAsm };
 
-// The library for `target`: "hexc_hextiling.{hlsl,glsl,metal,spvasm}". Made from the same GLSL as every material,
+// The library for each of `targets`: "hexc_hextiling.{hlsl,glsl,metal,spvasm}", from one compile. Made from the same GLSL as every material,
 // through glslang and SPIRV-Cross, unoptimised so that every function keeps its name and signature. HLSL and MSL
 // take a texture and a sampler; OpenGL GLSL one sampler2D for both. Throws CompileError on a hexc bug.
-OutputFile hexcLibrary(LibraryTarget target);
+std::vector<OutputFile> hexcLibrary(const std::vector<LibraryTarget>& targets);
 
 }  // namespace hexc
