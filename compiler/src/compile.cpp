@@ -125,8 +125,7 @@ nlohmann::json sourcePaths(const Material& material, const ShaderPlan& plan, con
     for (const SlotPlan& sp : plan.slots) textures[sp.slot->name] = relativeTo(sp.slot->texturePath, from);
     nlohmann::json source = {
         {"relative_to", "this manifest's folder"}, {"material", relativeTo(material.sourceFile, from)}, {"textures", textures}};
-    const std::string templ = options.templateFile.empty() ? material.templateName : options.templateFile.string();
-    if (templ.ends_with(".glsl")) source["template"] = relativeTo(templ, from);
+    if (!plan.templateFile.empty()) source["template"] = relativeTo(plan.templateFile, from);
     if (!plan.layout.sourceFile.empty()) source["layout"] = relativeTo(plan.layout.sourceFile, from);
     return source;
 }

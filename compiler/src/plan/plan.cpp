@@ -28,6 +28,7 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
     std::string ref = options.templateFile.empty() ? material.templateName : options.templateFile.string();
     if (ref.ends_with(".glsl")) {
         plan.templateName = ref;
+        plan.templateFile = ref;
         std::string why;
         std::optional<std::string> text = readFile(ref, &why);
         if (!text) {
