@@ -31,6 +31,12 @@ spirv_cross::MSLResourceBinding fragmentBinding(uint32_t set, uint32_t binding) 
     return b;
 }
 
+// What a template resource of class `c` takes in MSL: a texture, a sampler (a sampler2D both), else a buffer.
+bool takesTexture(ResourceClass c) {
+    return c == ResourceClass::SampledImage || c == ResourceClass::Image || c == ResourceClass::StorageImage;
+}
+bool takesSampler(ResourceClass c) { return c == ResourceClass::SampledImage || c == ResourceClass::Sampler; }
+
 // Where each resource went, by (set, binding): the manifest's address of it.
 using Placed = std::map<std::pair<uint32_t, uint32_t>, nlohmann::json>;
 
@@ -55,8 +61,7 @@ Placed placeDirect(spirv_cross::CompilerMSL& c, const ShaderPlan& plan, const st
             push ? fragmentBinding(spirv_cross::ResourceBindingPushConstantDescriptorSet, spirv_cross::ResourceBindingPushConstantBinding)
                  : fragmentBinding(r.set, r.binding);
         nlohmann::json& where = placed[{b.desc_set, b.binding}];
-        const bool textured = r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Image || r.cls == ResourceClass::StorageImage;
-        const bool sampling = r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Sampler;
+        const bool textured = takesTexture(r.cls), sampling = takesSampler(r.cls);
         if (textured) where["texture"] = b.msl_texture = texture++;
         if (sampling) where["sampler"] = b.msl_sampler = sampler++;
         if (!textured && !sampling) where["buffer"] = b.msl_buffer = buffer++;
@@ -79,9 +84,7 @@ Placed placeInArgumentBuffers(spirv_cross::CompilerMSL& c, const ShaderPlan& pla
     uint32_t sets = set + 1;
     for (const TemplateResource& r : own)
         if (r.cls != ResourceClass::PushConstant) {
-            const bool textured =
-                r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Image || r.cls == ResourceClass::StorageImage;
-            entries.push_back({r.set, r.binding, textured, r.cls == ResourceClass::SampledImage || r.cls == ResourceClass::Sampler});
+            entries.push_back({r.set, r.binding, takesTexture(r.cls), takesSampler(r.cls)});
             sets = std::max(sets, r.set + 1);
         }
     std::sort(entries.begin(), entries.end(),
