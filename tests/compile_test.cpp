@@ -446,12 +446,6 @@ TEST(TemplateFit, FittingMaterialsCompileAsBefore) {
 
 namespace {
 
-std::vector<uint32_t> words(const std::string& bytes) {
-    std::vector<uint32_t> w(bytes.size() / 4);
-    std::memcpy(w.data(), bytes.data(), w.size() * 4);
-    return w;
-}
-
 // (location, SPIR-V type id's vector size and base type) of each user stage variable, sorted.
 std::set<std::tuple<uint32_t, uint32_t, int>> interface(const std::vector<uint32_t>& spirv, bool inputs) {
     spirv_cross::Compiler c(spirv);
@@ -473,7 +467,7 @@ TEST(Vertex, FeedsEveryFragmentInputOnEveryTarget) {
         options.vertex = true;
         CompileResult r = compileExample(name, options);
         ASSERT_EQ(r.files.size(), 9u);
-        const std::vector<uint32_t> vert = words(file(r, ".vert.spv").contents);
+        const std::vector<uint32_t> vert = spirvWords(file(r, ".vert.spv").contents);
         EXPECT_EQ(interface(vert, false), interface(r.spirv, true));
         const std::string entry = std::string(name) + "_vert";
         EXPECT_NE(disassemble(vert).find("OpEntryPoint Vertex %" + entry), std::string::npos);

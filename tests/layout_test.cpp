@@ -47,12 +47,6 @@ std::vector<NamedLayout> layouts() {
     return {{"default", {}, 50}, {"shifted", shifted, 50}, {"spaces", spaces, 51}};
 }
 
-std::vector<uint32_t> spirvWords(const std::string& bytes) {
-    std::vector<uint32_t> words(bytes.size() / 4);
-    std::memcpy(words.data(), bytes.data(), words.size() * 4);
-    return words;
-}
-
 std::string file(const CompileResult& r, const std::string& suffix) {
     for (const OutputFile& f : r.files)
         if (f.name.ends_with(suffix)) return f.contents;

@@ -17,6 +17,7 @@
 #include "hexc/files.h"
 #include "hash.h"
 #include "hexc/scene.h"
+#include "hexc/spirv.h"
 
 namespace hexc::cli {
 namespace {
@@ -69,8 +70,7 @@ std::string withoutEntryName(const std::string& file, std::string contents, cons
         for (size_t at; (at = contents.find(entry)) != std::string::npos;) contents.erase(at, entry.size());
         return contents;
     }
-    std::vector<uint32_t> words(contents.size() / 4);
-    std::memcpy(words.data(), contents.data(), words.size() * 4);
+    const std::vector<uint32_t> words = spirvWords(contents);
     std::string code(contents.data(), std::min<size_t>(contents.size(), 20));  // the header
     for (size_t at = 5; at < words.size();) {
         const uint32_t count = words[at] >> 16, opcode = words[at] & 0xffff;

@@ -266,12 +266,9 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     RenderRequest request;
     request.vertexSpirv = vertexShader();
     switch (target) {
-        case ExecutedTarget::Spirv: {  // the .spv file, as an engine loads it (combined samplers are in it only)
-            const std::string bytes = outputFile(compiled, ".spv");
-            request.fragmentSpirv.resize(bytes.size() / 4);
-            std::memcpy(request.fragmentSpirv.data(), bytes.data(), bytes.size());
+        case ExecutedTarget::Spirv:  // the .spv file, as an engine loads it (combined samplers are in it only)
+            request.fragmentSpirv = spirvWords(outputFile(compiled, ".spv"));
             break;
-        }
         case ExecutedTarget::Hlsl:
             request.fragmentSpirv = spirvOrThrow(optimizeSpirv(
                 spirvOrThrow(compileToSpirv(outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl",

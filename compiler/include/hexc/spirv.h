@@ -4,6 +4,7 @@
 // optimisation. Errors come back as diagnostics located at the file and line glslang reports.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hexc/diagnostics.h"
@@ -48,6 +49,9 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstan
 // repeated names; glslang calls every call's temporary `param`). Empty when valid; else the validator's messages,
 // from a second validation with names.
 std::string validationErrors(const std::vector<uint32_t>& words);
+
+// The words of a .spv file's bytes (a trailing partial word is dropped).
+std::vector<uint32_t> spirvWords(std::string_view bytes);
 
 // Human-readable SPIR-V, for tests and debugging.
 std::string disassemble(const std::vector<uint32_t>& words);

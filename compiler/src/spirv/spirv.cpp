@@ -6,6 +6,7 @@
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
+#include <cstring>
 #include <mutex>
 #include <sstream>
 
@@ -183,6 +184,12 @@ std::string validationErrors(const std::vector<uint32_t>& words) {
     messages.clear();
     tools.Validate(words);
     return messages;
+}
+
+std::vector<uint32_t> spirvWords(std::string_view bytes) {
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), words.size() * 4);
+    return words;
 }
 
 std::string disassemble(const std::vector<uint32_t>& words) {
