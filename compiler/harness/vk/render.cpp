@@ -146,6 +146,14 @@ uint32_t hlslBinding(const std::string& reg) {
     return n + (reg[0] == 's' ? kHlslSamplerShift : reg[0] == 't' ? kHlslTextureShift : reg[0] == 'u' ? kHlslUavShift : 0);
 }
 
+// The lowest of hexc's textures' bindings in a target's manifest entry, each read by `binding` (they are
+// consecutive); UINT32_MAX when there are none.
+uint32_t lowestTexture(const nlohmann::json& target, uint32_t (*binding)(const nlohmann::json&)) {
+    uint32_t lowest = UINT32_MAX;
+    for (const auto& [slot, where] : target["textures"].items()) lowest = std::min(lowest, binding(where));
+    return lowest;
+}
+
 // hexc's own resources where the executed target's manifest entry puts them.
 void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequest& request) {
     if (target == ExecutedTarget::Hlsl) {
@@ -153,9 +161,7 @@ void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequ
         request.set = hlsl["sampler"]["space"];
         request.samplerBinding = hlslBinding(hlsl["sampler"]["register"]);
         request.paramsBinding = hlsl.contains("params") ? hlslBinding(hlsl["params"]["register"]) : request.samplerBinding + 1;
-        request.firstTextureBinding = UINT32_MAX;  // the lowest of the textures' registers (they are consecutive)
-        for (const auto& [slot, where] : hlsl["textures"].items())
-            request.firstTextureBinding = std::min(request.firstTextureBinding, hlslBinding(where["register"]));
+        request.firstTextureBinding = lowestTexture(hlsl, [](const nlohmann::json& t) { return hlslBinding(t["register"]); });
         return;
     }
     if (target == ExecutedTarget::Glsl) {  // OpenGL block bindings and texture units, as compileToSpirv maps them
@@ -165,9 +171,8 @@ void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequ
         // Bound by name (GLSL 330, ES 3.00): the manifest's units are hexc's suggestion, and glslang's auto-mapping
         // numbers blocks and units in declaration order, which is where they are for one slot.
         request.paramsBinding = glsl.contains("params") ? glsl["params"].value("binding", 0u) : request.samplerBinding + 1;
-        request.firstTextureBinding = UINT32_MAX;
-        for (const auto& [slot, where] : glsl["textures"].items())
-            request.firstTextureBinding = std::min(request.firstTextureBinding, kGlTextureShift + where["texture_unit"].get<uint32_t>());
+        request.firstTextureBinding =
+            lowestTexture(glsl, [](const nlohmann::json& t) { return kGlTextureShift + t["texture_unit"].get<uint32_t>(); });
         return;
     }
     // hexc's block at binding b, the sampler at b + 1 (unused with layout vulkan.combined), textures from b + 2.
@@ -180,12 +185,9 @@ void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequ
     } else if (spirv.contains("params")) {
         request.set = spirv["params"]["set"];
         base = spirv["params"]["binding"];
-    } else {
-        base = UINT32_MAX;
-        for (const auto& [slot, where] : spirv["textures"].items()) {
-            request.set = where["set"];
-            base = std::min(base, where["binding"].get<uint32_t>() - 2);
-        }
+    } else if (!spirv["textures"].empty()) {
+        request.set = spirv["textures"].begin().value()["set"];  // hexc's resources share one set
+        base = lowestTexture(spirv, [](const nlohmann::json& t) { return t["binding"].get<uint32_t>(); }) - 2;
     }
     request.paramsBinding = base;
     request.samplerBinding = base + 1;
