@@ -14,14 +14,15 @@ def _hexc_material_impl(ctx):
         shaders += [ctx.actions.declare_file("%s.vert.%s" % (name, _EXTENSIONS[t])) for t in ctx.attr.targets]
 
     # hexc always writes its stamp beside the outputs. It is declared, so the action leaves no undeclared file
-    # behind; --force, because Bazel, not the stamp, decides when the action runs.
+    # behind; --force, because Bazel, not the stamp, decides when the action runs; --no-cache, because Bazel's own
+    # action cache serves that purpose and an action reads nothing undeclared.
     stamp = ctx.actions.declare_file("." + name + ".hexc-stamp")
 
     args = ctx.actions.args()
     args.add(ctx.file.material)
     args.add("-o", shaders[0].dirname)
     args.add_joined("--targets", ctx.attr.targets, join_with = ",")
-    args.add_all(["--force", "-q"])
+    args.add_all(["--force", "--no-cache", "-q"])
     if ctx.attr.vertex:
         args.add("--vertex")
     args.add_all(ctx.attr.options)

@@ -14,8 +14,9 @@
 #include "incremental.h"
 #include "outputs.h"
 #include "progress.h"
+#include "hexc/cache.h"
 #include "hexc/files.h"
-#include "hash.h"
+#include "hexc/hash.h"
 #include "hexc/scene.h"
 #include "hexc/spirv.h"
 
@@ -104,6 +105,7 @@ struct Inputs {
     std::vector<Job> jobs;
     std::vector<SceneSummary> scenes;
     bool failed = false;
+    ShaderCache::Stats cache = {};  // of the jobs compiled
 };
 
 // A scene's variants (those --variant asks for, or all) become jobs.
@@ -173,30 +175,36 @@ bool inputsFit(const Arguments& a, const Inputs& in) {
 
 // Compiles the jobs on every core, with a progress line on a terminal (cleared before diagnostics are printed):
 // jobs are independent, and each keeps its own results, so the outputs do not depend on the order they finish in.
-void compileInParallel(const Arguments& a, const std::vector<Job*>& pending) {
+ShaderCache::Stats compileInParallel(const Arguments& a, const std::vector<Job*>& pending) {
+    if (pending.empty()) return {};
+    ShaderCache cache(a.cacheDir);
+    CompileOptions options = a.options;
+    options.cache = &cache;
     std::atomic<size_t> next = 0;
     Progress progress(pending.size(), a.quiet);
     auto worker = [&] {
         for (size_t i; (i = next++) < pending.size();) {
             progress.step("compiling " + pending[i]->material.name);
-            pending[i]->result = compile(pending[i]->material, a.options);
+            pending[i]->result = compile(pending[i]->material, options);
         }
     };
     const unsigned cores = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
     std::vector<std::thread> threads(std::min<size_t>(cores, pending.size()));
     for (auto& t : threads) t = std::thread(worker);
     for (auto& t : threads) t.join();
+    if (cache.stats().misses) cache.trim();  // only what was stored can take the folder past its bound
+    return cache.stats();
 }
 
 // Compiles the jobs that are not up to date. False if any failed.
-bool compileJobs(const Arguments& a, std::vector<Job>& jobs) {
+bool compileJobs(const Arguments& a, std::vector<Job>& jobs, ShaderCache::Stats& stats) {
     std::vector<Job*> pending;
     for (Job& j : jobs) {
         j.hash = inputHash(j.material, a.options, j.extraInputs);
         j.upToDate = !a.force && upToDate(a.outDir, j.material.name, j.hash);
         if (!j.upToDate) pending.push_back(&j);
     }
-    compileInParallel(a, pending);
+    stats = compileInParallel(a, pending);
     bool ok = true;
     for (Job* j : pending) ok &= printDiagnostics(j->result.diagnostics, a, j->passReadsFewer);
     return ok;
@@ -315,6 +323,10 @@ void printJobs(const Inputs& in, const Outputs& out) {
 
 void printSummary(const Arguments& a, const Inputs& in, const Outputs& out, size_t bytes) {
     if (a.verbose) printJobs(in, out);
+    if (a.verbose && (in.cache.hits || in.cache.misses))
+        std::cerr << "hexc: shader code: " << in.cache.misses << " compiled, " << in.cache.hits << " from the cache ("
+                  << (a.cacheDir.empty() ? "this run only" : a.cacheDir.string()) << ")"
+                  << (in.cache.corrupt ? ", " + std::to_string(in.cache.corrupt) + " damaged entries replaced" : "") << "\n";
     size_t upToDate = 0;
     for (const Job& j : in.jobs) upToDate += j.upToDate;
     for (const SceneSummary& s : in.scenes)
@@ -337,7 +349,7 @@ int buildCommand(const Arguments& a) {
     }
     Inputs in = readInputs(a);
     bool ok = inputsFit(a, in) && !in.failed;
-    if (!ok || !compileJobs(a, in.jobs)) {
+    if (!ok || !compileJobs(a, in.jobs, in.cache)) {
         std::cerr << "hexc: nothing written\n";
         return kInvalidInput;
     }

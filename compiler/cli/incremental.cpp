@@ -1,10 +1,11 @@
 #include "incremental.h"
 
-#include <fstream>
 #include <algorithm>
+#include <fstream>
 
 #include "hexc/files.h"
-#include "hash.h"
+#include "hexc/cache.h"
+#include "hexc/hash.h"
 #include "hexc/templates.h"
 
 namespace hexc::cli {
@@ -14,19 +15,6 @@ namespace {
 void addFile(ContentHash& h, const std::filesystem::path& file) { h.add(readFile(file).value_or("")); }
 
 }  // namespace
-
-const std::string& buildId() {
-    static const std::string id = [] {
-        // glslang, SPIRV-Tools and SPIRV-Cross are linked in statically, so the executable's bytes cover them too.
-        std::ifstream in("/proc/self/exe", std::ios::binary | std::ios::ate);
-        std::string bytes(size_t(std::max<std::streamoff>(in.tellg(), 0)), '\0');
-        in.seekg(0).read(bytes.data(), std::streamsize(bytes.size()));
-        ContentHash h;
-        h.add(bytes);
-        return h.hex(16);
-    }();
-    return id;
-}
 
 std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options) {
     std::vector<std::filesystem::path> files{material.sourceFile};

@@ -16,9 +16,6 @@ namespace hexc::cli {
 // The files a compile reads (for the depfile): the material file, its textures, a user template.
 std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options);
 
-// A hash of the running hexc executable (16 hex digits): a rebuilt or upgraded hexc never trusts an old stamp.
-const std::string& buildId();
-
 // XXH3 (128 bit) of everything a compile depends on, as 32 hex digits; `extra` adds e.g. a scene file.
 std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::filesystem::path>& extra);
 

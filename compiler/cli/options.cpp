@@ -1,6 +1,6 @@
 #include "options.h"
 
-#include "incremental.h"
+#include "hexc/cache.h"
 
 #include <CLI/CLI.hpp>
 
@@ -27,8 +27,9 @@ its template, compiles with glslang, optimises with spirv-opt and emits through 
 A scene (a JSON file with a "scene" key, see docs/scenes.md) compiles each (material, pass) variant it
 uses into DIR/<material>.<pass>.*, with an index (DIR/<scene>.scene.json) that marks variants whose code is
 identical. Inputs unchanged since the last run (material, textures' sizes, template, options, hexc build)
-are not compiled again (--force compiles them anyway). Nothing is written unless everything compiles; each
-file is written atomically.
+are not compiled again (--force compiles them anyway); shader code compiled before, in this batch or an
+earlier run, comes from the cache (--cache-dir). Nothing is written unless everything compiles; each file is
+written atomically.
 )";
 
 const char* const kExitCodes = R"(Exit codes:
@@ -180,6 +181,14 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         "--no-warnings", [&] { a.warnings = false; }, "do not print warnings");
     app.add_flag("--force", a.force, "compile every material, even those whose stamp says they are up to date");
     app.add_option("-j,--jobs", a.jobs, "compile N materials at once (default: one per core)")->check(CLI::Range(1u, 256u))->type_name("N");
+    a.cacheDir = defaultCacheDir();
+    app.add_option("--cache-dir", a.cacheDir,
+                   "keep compiled shader code here, shared by runs and processes (default:\n$XDG_CACHE_HOME/hexc or ~/.cache/hexc; " +
+                       std::to_string(kDefaultCacheBytes >> 20) + " MiB, least recently used\nentries removed)")
+        ->type_name("DIR");
+    app.add_flag_callback(
+        "--no-cache", [&] { a.cacheDir.clear(); },
+        "no cache folder: compile all code anew (identical code in one batch is\nstill compiled once)");
     app.set_version_flag("--version",
                          [] { return std::string("hexc ") + version() + " (build " + buildId() + ")\n" + toolchainVersions(); });
     if (std::optional<int> done = parseWith(app, args)) return done;

@@ -27,6 +27,7 @@ struct Arguments {
     bool warnings = true;               // --no-warnings turns them off
     bool force = false;                 // --force: compile even what the stamps say is up to date
     unsigned jobs = 0;                  // -j: materials compiled at once; 0: one per core
+    std::filesystem::path cacheDir;     // --cache-dir; empty: no folder cache (--no-cache, or no home folder)
 };
 
 // A command line that parses but does not make sense (render.cpp's checks across options); exit kUsage.

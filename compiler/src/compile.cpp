@@ -7,14 +7,19 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <map>
+#include <optional>
 #include <set>
 
 #include "backends/backends.h"
 #include "codegen/codegen.h"
+#include "hexc/cache.h"
 #include "hexc/compiler.h"
-#include "plan/plan.h"
+#include "hexc/hash.h"
 #include "hexc/spirv.h"
+#include "plan/plan.h"
 #include "spirv/combined.h"
+#include "spirv/strings.h"
 
 namespace hexc {
 
@@ -135,39 +140,131 @@ void withBanner(std::string& source, const std::string& banner) {
     source.insert(source.starts_with("#version") ? source.find('\n') + 1 : 0, banner);
 }
 
-// Each target's file into `result`; their descriptions for the manifest.
-nlohmann::json emitTargets(const Material& material, const ShaderPlan& plan, const CompileOptions& options,
-                           const std::vector<Target>& targets, CompileResult& result) {
-    nlohmann::json described = nlohmann::json::object();
-    for (Target t : targets) {
-        TargetOutput out;
-        OutputFile file;
-        switch (t) {
-            case Target::Spirv: {
-                // The other targets are emitted from the separate module (combined.h).
-                const std::vector<uint32_t> words = plan.layout.vulkan.combined ? combineSamplers(result.spirv, plan) : result.spirv;
-                out = describeSpirv(words, plan);
-                file = {shaderFileName(material.name, Target::Spirv), spirvBytes(words)};
-                break;
-            }
-            case Target::Hlsl:
-                out = emitHlsl(result.spirv, plan, options);
-                file = {shaderFileName(material.name, Target::Hlsl), out.source};
-                break;
-            case Target::Glsl:
-                out = emitGlsl(result.spirv, plan, options);
-                file = {shaderFileName(material.name, Target::Glsl), out.source};
-                break;
-            case Target::Msl:
-                out = emitMsl(result.spirv, plan, options);
-                file = {shaderFileName(material.name, Target::Msl), out.source};
-                break;
+// Shader code as compiled from the generated GLSL: the optimised SPIR-V and each target's output. It is compiled with
+// the entry point kEntryPlaceholder and named afterwards (withEntryPoint), so that materials whose code differs in
+// that name only share one entry of a ShaderCache.
+struct ShaderCode {
+    std::vector<uint32_t> spirv;
+    std::map<Target, TargetOutput> targets;  // the SPIR-V target's source holds its file's bytes
+};
+// A name hexc reserves (docs/templates.md), so it stands for the entry point alone.
+constexpr std::string_view kEntryPlaceholder = "hexcEntryPoint";
+
+TargetOutput emitTarget(Target t, const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
+    switch (t) {
+        case Target::Spirv: {
+            // The other targets are emitted from the separate module (combined.h).
+            const std::vector<uint32_t> words = plan.layout.vulkan.combined ? combineSamplers(spirv, plan) : spirv;
+            TargetOutput out = describeSpirv(words, plan);
+            out.source = spirvBytes(words);
+            return out;
         }
-        out.target["file"] = file.name;
-        described[std::string(toString(t))] = std::move(out.target);
-        result.files.push_back(std::move(file));
+        case Target::Hlsl:
+            return emitHlsl(spirv, plan, options);
+        case Target::Glsl:
+            return emitGlsl(spirv, plan, options);
+        case Target::Msl:
+            return emitMsl(spirv, plan, options);
     }
-    return described;
+    throw std::logic_error("unknown target");
+}
+
+// Each target from the optimised module.
+std::map<Target, TargetOutput> emitTargets(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options,
+                                           const std::vector<Target>& targets) {
+    std::map<Target, TargetOutput> out;
+    for (Target t : targets) out[t] = emitTarget(t, spirv, plan, options);
+    return out;
+}
+
+ShaderCode compileCode(const std::string& glsl, const ShaderPlan& plan, const CompileOptions& options, const std::vector<Target>& targets,
+                       Diagnostics& diagnostics) {
+    SpirvResult front =
+        compileToSpirv(glsl, ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl, plan.entryPoint, {}, options.debug);
+    append(diagnostics, front.diagnostics);
+    if (front.words.empty()) return {};
+    SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);
+    append(diagnostics, optimized.diagnostics);
+    if (optimized.words.empty()) return {};
+    return {optimized.words, emitTargets(optimized.words, plan, options, targets)};
+}
+
+// Everything that can change a ShaderCode: the generated GLSL, the template's name (glslang's debug info holds it),
+// the slots' names (the manifest's), the options that reach glslang, spirv-opt and SPIRV-Cross, and hexc's build.
+std::string codeKey(const std::string& glsl, const ShaderPlan& plan, const CompileOptions& options, const std::vector<Target>& targets) {
+    ContentHash h;
+    for (const std::string& part : {std::string("hexc shader code 1"), std::string(version()), buildId(), toolchainVersions(), glsl,
+                                    plan.templateName, toString(plan.layout)})
+        h.add(part);
+    for (const SlotPlan& sp : plan.slots) h.add(sp.slot->name);
+    std::string opts;
+    for (Target t : targets) opts += std::string(toString(t)) + ",";
+    h.add(opts + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
+          std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
+          (options.debug ? ",debug" : ""));
+    return h.hex();
+}
+
+nlohmann::json binary(std::string_view bytes) { return nlohmann::json::binary(std::vector<uint8_t>(bytes.begin(), bytes.end())); }
+
+std::string toBytes(const ShaderCode& code) {
+    nlohmann::json j = {{"spirv", binary(spirvBytes(code.spirv))}};
+    for (const auto& [t, out] : code.targets)
+        j["targets"][std::string(toString(t))] = {{"source", binary(out.source)}, {"entry_point", out.entryPoint}, {"target", out.target}};
+    const std::vector<uint8_t> cbor = nlohmann::json::to_cbor(j);
+    return std::string(cbor.begin(), cbor.end());
+}
+
+// Null when the bytes are not a ShaderCode for `targets` (an entry of another format).
+std::optional<ShaderCode> fromBytes(const std::string& bytes, const std::vector<Target>& targets) {
+    try {
+        const nlohmann::json j = nlohmann::json::from_cbor(bytes);
+        const auto& spirv = j.at("spirv").get_binary();
+        ShaderCode code{spirvWords(std::string_view(reinterpret_cast<const char*>(spirv.data()), spirv.size())), {}};
+        for (Target t : targets) {
+            const nlohmann::json& out = j.at("targets").at(std::string(toString(t)));
+            const auto& source = out.at("source").get_binary();
+            code.targets[t] = {std::string(source.begin(), source.end()), out.at("entry_point"), out.at("target")};
+        }
+        return code;
+    } catch (const nlohmann::json::exception&) {
+        return std::nullopt;
+    }
+}
+
+// compileCode through CompileOptions::cache. A compile with diagnostics (warnings) is not stored, so a hit has none
+// to report.
+ShaderCode cachedCode(const std::string& glsl, const ShaderPlan& plan, const CompileOptions& options, const std::vector<Target>& targets,
+                      Diagnostics& diagnostics) {
+    if (!options.cache) return compileCode(glsl, plan, options, targets, diagnostics);
+    std::optional<ShaderCode> compiled;
+    auto compute = [&]() -> std::optional<std::string> {
+        Diagnostics own;
+        compiled = compileCode(glsl, plan, options, targets, own);
+        append(diagnostics, own);
+        if (compiled->spirv.empty() || !own.empty()) return std::nullopt;
+        return toBytes(*compiled);
+    };
+    std::optional<std::string> bytes = options.cache->getOrCompute(codeKey(glsl, plan, options, targets), compute);
+    if (compiled) return std::move(*compiled);
+    if (std::optional<ShaderCode> found = fromBytes(*bytes, targets)) return std::move(*found);
+    return compileCode(glsl, plan, options, targets, diagnostics);
+}
+
+// The code with its entry point named `entry` wherever the placeholder stands: SPIR-V strings, the sources (MSL
+// builds its stage structs' names from it) and the manifest's descriptions.
+void withEntryPoint(ShaderCode& code, const std::string& entry) {
+    code.spirv = replaceInStrings(code.spirv, kEntryPlaceholder, entry);
+    for (auto& [t, out] : code.targets) {
+        const std::string name = t == Target::Msl ? mslEntryName(entry) : entry;
+        if (t == Target::Spirv)
+            out.source = spirvBytes(replaceInStrings(spirvWords(out.source), kEntryPlaceholder, entry));
+        else
+            for (size_t at = 0; (at = out.source.find(kEntryPlaceholder, at)) != std::string::npos; at += name.size())
+                out.source.replace(at, kEntryPlaceholder.size(), name);
+        if (out.entryPoint == kEntryPlaceholder) out.entryPoint = name;
+        out.target["entry_point"] = out.entryPoint;
+    }
 }
 
 void run(const Material& material, const CompileOptions& options, CompileResult& result) {
@@ -180,19 +277,22 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
                                              "--debug keeps hexc's functions, which take a texture and a sampler apart; combined image "
                                              "samplers (layout vulkan.combined) need the optimised, inlined shader")}};
     result.glsl = generateGlsl(plan);
-    SpirvResult front =
-        compileToSpirv(result.glsl, ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl, plan.entryPoint, {}, options.debug);
-    append(result.diagnostics, front.diagnostics);
-    if (front.words.empty()) return;
-    SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);
-    append(result.diagnostics, optimized.diagnostics);
-    if (optimized.words.empty()) return;
-    result.spirv = std::move(optimized.words);
-
     std::vector<Target> targets = options.targets;
     std::sort(targets.begin(), targets.end());
     targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
-    const nlohmann::json described = emitTargets(material, plan, options, targets, result);
+    ShaderPlan placeholder = plan;
+    placeholder.entryPoint = kEntryPlaceholder;
+    ShaderCode code = cachedCode(result.glsl, placeholder, options, targets, result.diagnostics);
+    if (code.spirv.empty()) return;
+    withEntryPoint(code, plan.entryPoint);
+    result.spirv = std::move(code.spirv);
+
+    nlohmann::json described = nlohmann::json::object();
+    for (auto& [t, out] : code.targets) {
+        out.target["file"] = shaderFileName(material.name, t);
+        described[std::string(toString(t))] = std::move(out.target);
+        result.files.push_back({shaderFileName(material.name, t), std::move(out.source)});
+    }
     nlohmann::json manifest = buildManifest(material, plan, described);
     if (options.vertex) manifest["vertex"] = emitVertexStage(material, plan, options, targets, result);
     if (!options.manifestPathsFrom.empty()) manifest["source"] = sourcePaths(material, plan, options);

@@ -11,6 +11,8 @@
 
 namespace hexc {
 
+class ShaderCache;
+
 enum class Target { Spirv, Hlsl, Glsl, Msl };
 std::string_view toString(Target target);
 
@@ -42,6 +44,9 @@ struct CompileOptions {
     // When set (the output folder): the manifest's "source" gives the material file, its textures, a template file and
     // the layout file relative to it. Off by default, so that outputs do not depend on where they are built.
     std::filesystem::path manifestPathsFrom;
+    // Shader code compiled before (by this or another process, see cache.h) is taken from here, and new code stored;
+    // outputs are the same with or without. Not owned; null: compile everything.
+    ShaderCache* cache = nullptr;
 };
 
 struct OutputFile {

@@ -56,6 +56,9 @@ void configureHlsl(spirv_cross::CompilerHLSL& c, const CompileOptions& options);
 void configureGlsl(spirv_cross::CompilerGLSL& c, const CompileOptions& options);
 void configureMsl(spirv_cross::CompilerMSL& c, const CompileOptions& options);
 
+// The name SPIRV-Cross gives a fragment entry point `entry` in MSL: `entry`, or `entry0` where MSL reserves it.
+std::string mslEntryName(const std::string& entry);
+
 // SPIRV-Cross names the HLSL entry function `main` whatever the module's entry point is: gives it `entry`.
 void renameHlslEntry(std::string& source, const std::string& entry);
 

@@ -3,7 +3,9 @@
 #include <spirv_msl.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <map>
+#include <mutex>
 #include <tuple>
 
 #include "backends/backends.h"
@@ -18,6 +20,37 @@ void configureMsl(spirv_cross::CompilerMSL& c, const CompileOptions& options) {
     spirv_cross::CompilerGLSL::Options common = c.get_common_options();
     common.emit_line_directives = options.debug;
     c.set_common_options(common);
+}
+
+std::string mslEntryName(const std::string& entry) {
+    static std::mutex mutex;
+    static std::map<std::string, std::string> known;
+    std::lock_guard lock(mutex);
+    if (auto it = known.find(entry); it != known.end()) return it->second;
+    // SPIRV-Cross renames an entry point MSL reserves (`main` -> `main0`, Metal's library functions) when it
+    // compiles: asked of an empty fragment shader of that name, so the list stays SPIRV-Cross's own.
+    std::vector<uint32_t> words = {0x07230203, 0x00010000, 0, 5, 0};  // SPIR-V 1.0, ids below 5
+    auto op = [&words](uint32_t opcode, const std::vector<uint32_t>& operands) {
+        words.push_back(uint32_t(operands.size() + 1) << 16 | opcode);
+        words.insert(words.end(), operands.begin(), operands.end());
+    };
+    std::vector<uint32_t> entryPoint(2 + entry.size() / 4 + 1, 0);  // Fragment %3 "entry", NUL-padded
+    entryPoint[0] = 4;
+    entryPoint[1] = 3;
+    std::memcpy(&entryPoint[2], entry.data(), entry.size());
+    op(17, {1});           // OpCapability Shader
+    op(14, {0, 1});        // OpMemoryModel Logical GLSL450
+    op(15, entryPoint);    // OpEntryPoint
+    op(16, {3, 7});        // OpExecutionMode %3 OriginUpperLeft
+    op(19, {1});           // %1 = OpTypeVoid
+    op(33, {2, 1});        // %2 = OpTypeFunction %1
+    op(54, {1, 3, 0, 2});  // %3 = OpFunction %1 None %2
+    op(248, {4});          // %4 = OpLabel
+    op(253, {});           // OpReturn
+    op(56, {});            // OpFunctionEnd
+    spirv_cross::CompilerMSL c(std::move(words));
+    c.compile();
+    return known[entry] = c.get_cleansed_entry_point_name(entry, spv::ExecutionModelFragment);
 }
 
 namespace {

@@ -1,0 +1,60 @@
+#pragma once
+// Compiled shader code by content (CompileOptions::cache): a shader whose generated code, options and hexc build were
+// compiled before is not compiled again. In memory for one batch; with a folder, across runs and processes.
+#include <condition_variable>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+
+namespace hexc {
+
+// A hash of the running executable (16 hex digits). libhexc, glslang, SPIRV-Tools and SPIRV-Cross are linked into
+// it statically, so a rebuilt or upgraded hexc never trusts a stamp or cache entry of another build.
+const std::string& buildId();
+
+// Where the folder cache goes unless told: $XDG_CACHE_HOME/hexc, else $HOME/.cache/hexc; empty when neither is set.
+std::filesystem::path defaultCacheDir();
+
+constexpr uint64_t kDefaultCacheBytes = 256ull << 20;
+
+class ShaderCache {
+public:
+    // `dir` empty: in memory only. Several processes may share one folder: entries are written whole under a
+    // temporary name and renamed, and an entry that is cut short or altered is found out by its checksum and
+    // compiled again.
+    explicit ShaderCache(std::filesystem::path dir = {}, uint64_t maxBytes = kDefaultCacheBytes);
+
+    // The value under `key`: from memory, else from the folder, else compute()'s, stored. Threads asking for a key
+    // another thread is computing wait for it, so a batch computes each key once. compute() returning nullopt
+    // (a failed compile) stores nothing.
+    std::optional<std::string> getOrCompute(const std::string& key, const std::function<std::optional<std::string>()>& compute);
+
+    // Removes the folder's least recently used entries until it holds at most maxBytes. Run after a batch.
+    void trim() const;
+
+    struct Stats {
+        size_t hits = 0;     // found in memory or in the folder
+        size_t misses = 0;   // computed
+        size_t corrupt = 0;  // folder entries that failed their checksum (removed, computed again)
+    };
+    Stats stats() const;
+    const std::filesystem::path& dir() const { return dir_; }
+
+private:
+    std::optional<std::string> loadFromFolder(const std::string& key);
+    void storeInFolder(const std::string& key, const std::string& value) const;
+    std::filesystem::path entryPath(const std::string& key) const;
+
+    std::filesystem::path dir_;
+    uint64_t maxBytes_;
+    mutable std::mutex mutex_;
+    std::condition_variable done_;
+    std::map<std::string, std::optional<std::string>> memory_;  // nullopt: being computed
+    Stats stats_;
+};
+
+}  // namespace hexc

@@ -1,0 +1,153 @@
+#include "hexc/cache.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <vector>
+
+#include "hexc/hash.h"
+#include "hexc/files.h"
+
+namespace hexc {
+namespace {
+
+// An entry file: this header line, the key, the payload's checksum, then the payload. A reader that finds anything
+// else (another format, a file cut short, flipped bits) treats the entry as missing.
+constexpr std::string_view kEntryHeader = "hexc-cache 1\n";
+
+std::string checksum(std::string_view payload) {
+    ContentHash h;
+    h.add(payload);
+    return h.hex();
+}
+
+}  // namespace
+
+const std::string& buildId() {
+    static const std::string id = [] {
+        std::ifstream in("/proc/self/exe", std::ios::binary | std::ios::ate);
+        std::string bytes(size_t(std::max<std::streamoff>(in.tellg(), 0)), '\0');
+        in.seekg(0).read(bytes.data(), std::streamsize(bytes.size()));
+        ContentHash h;
+        h.add(bytes);
+        return h.hex(16);
+    }();
+    return id;
+}
+
+std::filesystem::path defaultCacheDir() {
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "hexc";
+    if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "hexc";
+    return {};
+}
+
+ShaderCache::ShaderCache(std::filesystem::path dir, uint64_t maxBytes) : dir_(std::move(dir)), maxBytes_(maxBytes) {}
+
+std::optional<std::string> ShaderCache::getOrCompute(const std::string& key, const std::function<std::optional<std::string>()>& compute) {
+    {
+        std::unique_lock lock(mutex_);
+        done_.wait(lock, [&] {
+            auto it = memory_.find(key);
+            return it == memory_.end() || it->second;
+        });
+        if (auto it = memory_.find(key); it != memory_.end()) {
+            ++stats_.hits;
+            return it->second;
+        }
+        memory_.emplace(key, std::nullopt);  // this thread computes it; others wait
+    }
+    std::optional<std::string> value = dir_.empty() ? std::nullopt : loadFromFolder(key);
+    const bool found = value.has_value();
+    if (!found) {
+        try {
+            value = compute();
+        } catch (...) {
+            std::lock_guard lock(mutex_);
+            memory_.erase(key);
+            done_.notify_all();
+            throw;
+        }
+        if (value && !dir_.empty()) storeInFolder(key, *value);
+    }
+    std::lock_guard lock(mutex_);
+    ++(found ? stats_.hits : stats_.misses);
+    if (value)
+        memory_[key] = value;
+    else
+        memory_.erase(key);  // a failed compile: the next caller tries again
+    done_.notify_all();
+    return value;
+}
+
+std::filesystem::path ShaderCache::entryPath(const std::string& key) const { return dir_ / key.substr(0, 2) / key; }
+
+std::optional<std::string> ShaderCache::loadFromFolder(const std::string& key) {
+    const std::filesystem::path path = entryPath(key);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return std::nullopt;
+    std::optional<std::string> bytes = readFile(path);
+    const std::string head = std::string(kEntryHeader) + key + "\n";
+    const size_t payloadAt = head.size() + 33;  // the checksum's 32 digits and a newline
+    if (bytes && bytes->starts_with(head) && bytes->size() >= payloadAt && (*bytes)[payloadAt - 1] == '\n') {
+        std::string payload = bytes->substr(payloadAt);
+        if (bytes->compare(head.size(), 32, checksum(payload)) == 0) {
+            // Its time marks it used, for trim().
+            std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);
+            return payload;
+        }
+    }
+    std::filesystem::remove(path, ec);
+    std::lock_guard lock(mutex_);
+    ++stats_.corrupt;
+    return std::nullopt;
+}
+
+void ShaderCache::storeInFolder(const std::string& key, const std::string& value) const {
+    const std::filesystem::path path = entryPath(key);
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
+    try {
+        writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+            std::ofstream out(temporary, std::ios::binary);
+            out << kEntryHeader << key << "\n" << checksum(value) << "\n" << value;
+            return bool(out.flush());
+        });
+    } catch (const std::exception&) {
+        // A cache that cannot be written (read-only, full disk) costs speed, not correctness.
+    }
+}
+
+void ShaderCache::trim() const {
+    if (dir_.empty()) return;
+    struct Entry {
+        std::filesystem::file_time_type time;
+        uint64_t size;
+        std::filesystem::path path;
+    };
+    std::vector<Entry> entries;
+    uint64_t total = 0;
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(dir_, ec); !ec && it != std::filesystem::recursive_directory_iterator();
+         it.increment(ec)) {
+        // Another process's temporary (a dot name) is not an entry yet.
+        if (!it->is_regular_file(ec) || it->path().filename().string().starts_with(".")) continue;
+        Entry e{it->last_write_time(ec), it->file_size(ec), it->path()};
+        if (ec) continue;  // removed meanwhile by another process
+        total += e.size;
+        entries.push_back(std::move(e));
+    }
+    std::sort(entries.begin(), entries.end(),
+              [](const Entry& a, const Entry& b) { return a.time < b.time || (a.time == b.time && a.path < b.path); });
+    for (const Entry& e : entries) {
+        if (total <= maxBytes_) break;
+        std::filesystem::remove(e.path, ec);
+        total -= e.size;
+    }
+}
+
+ShaderCache::Stats ShaderCache::stats() const {
+    std::lock_guard lock(mutex_);
+    return stats_;
+}
+
+}  // namespace hexc

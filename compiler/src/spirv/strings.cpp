@@ -1,0 +1,54 @@
+#include "spirv/strings.h"
+
+#include <spirv-tools/libspirv.h>
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace hexc {
+namespace {
+
+struct Rewrite {
+    std::string_view from, to;
+    std::vector<uint32_t> out;
+};
+
+// A string operand as SPIR-V holds it: its bytes, a terminating NUL, padded with NULs to whole words.
+void appendString(std::vector<uint32_t>& out, const std::string& text) {
+    std::vector<uint32_t> words(text.size() / 4 + 1, 0);
+    std::memcpy(words.data(), text.data(), text.size());
+    out.insert(out.end(), words.begin(), words.end());
+}
+
+spv_result_t rewriteInstruction(void* user, const spv_parsed_instruction_t* parsed) {
+    Rewrite& r = *static_cast<Rewrite*>(user);
+    const size_t start = r.out.size();
+    r.out.push_back(0);  // the word count and opcode, set below
+    uint16_t next = 1;   // the first word not yet copied
+    for (uint16_t k = 0; k < parsed->num_operands; ++k) {
+        const spv_parsed_operand_t& operand = parsed->operands[k];
+        if (operand.type != SPV_OPERAND_TYPE_LITERAL_STRING) continue;
+        r.out.insert(r.out.end(), parsed->words + next, parsed->words + operand.offset);
+        std::string text(reinterpret_cast<const char*>(parsed->words + operand.offset));
+        for (size_t at = 0; (at = text.find(r.from, at)) != std::string::npos; at += r.to.size()) text.replace(at, r.from.size(), r.to);
+        appendString(r.out, text);
+        next = uint16_t(operand.offset + operand.num_words);
+    }
+    r.out.insert(r.out.end(), parsed->words + next, parsed->words + parsed->num_words);
+    r.out[start] = uint32_t(r.out.size() - start) << 16 | parsed->opcode;
+    return SPV_SUCCESS;
+}
+
+}  // namespace
+
+std::vector<uint32_t> replaceInStrings(const std::vector<uint32_t>& words, std::string_view from, std::string_view to) {
+    Rewrite r{from, to, {words.begin(), words.begin() + std::min<size_t>(5, words.size())}};
+    spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_0);
+    const spv_result_t result = spvBinaryParse(context, &r, words.data(), words.size(), nullptr, rewriteInstruction, nullptr);
+    spvContextDestroy(context);
+    if (result != SPV_SUCCESS) throw std::runtime_error("SPIR-V strings: the module does not parse");
+    return r.out;
+}
+
+}  // namespace hexc

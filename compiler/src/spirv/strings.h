@@ -1,0 +1,13 @@
+#pragma once
+// Literal strings of a SPIR-V module (names, the entry point's, debug sources) rewritten in place.
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace hexc {
+
+// The module with every occurrence of `from` in its literal string operands replaced by `to`, each instruction
+// re-encoded to its new length. std::runtime_error when the module does not parse (a hexc bug).
+std::vector<uint32_t> replaceInStrings(const std::vector<uint32_t>& words, std::string_view from, std::string_view to);
+
+}  // namespace hexc
