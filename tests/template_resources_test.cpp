@@ -230,7 +230,8 @@ TEST(TemplateResources, MslArgumentBuffersHoldWhatTheManifestSays) {
         const std::string name =
             res["kind"] == "uniform_buffer" ? std::string(res["name"] == "Frame" ? "frame" : "object") : res["name"].get<std::string>();
         member(res, name);
-        if (res.contains("sampler_id"))
+        if (res.contains("sampler_id")) {
             EXPECT_NE(structs[1].find(name + "Smplr [[id(" + std::to_string(res["sampler_id"].get<int>()) + ")]]"), std::string::npos);
+        }
     }
 }
