@@ -11,6 +11,7 @@
 // code is 0 whatever the numbers.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -277,14 +278,25 @@ public:
         for (const Run& run : runs) {
             // Without the /min_time:... suffixes; with the argument, if any ("SlotScaling/4").
             const std::string name = run.run_name.function_name + (run.run_name.args.empty() ? "" : "/" + run.run_name.args);
+            const double time = run.GetAdjustedRealTime() * 1000.0 / benchmark::GetTimeUnitMultiplier(run.time_unit);
             if (run.error_occurred) errors[name] = run.error_message;
             // With repetitions, the median over them (reported after the repetitions themselves) is kept.
             else if (run.run_type == Run::RT_Iteration || run.aggregate_name == "median")
-                ms[name] = run.GetAdjustedRealTime() * 1000.0 / benchmark::GetTimeUnitMultiplier(run.time_unit);
+                ms[name] = time;
+            if (!run.error_occurred && run.run_type == Run::RT_Iteration) repetitions[name].push_back(time);
         }
         ConsoleReporter::ReportRuns(runs);
     }
     double get(const std::string& name) const { return ms.count(name) ? ms.at(name) : NAN; }
+    // (max - min) / median of the repetitions: how far one run's figure could move on this machine now.
+    double spread(const std::string& name) const {
+        if (!repetitions.count(name) || repetitions.at(name).size() < 2) return NAN;
+        const auto [low, high] = std::minmax_element(repetitions.at(name).begin(), repetitions.at(name).end());
+        return (*high - *low) / get(name);
+    }
+
+private:
+    std::map<std::string, std::vector<double>> repetitions;
 };
 
 std::string fixed(double v, int decimals) {
@@ -300,38 +312,45 @@ std::string fixed(double v, int decimals) {
 void reportTargets(const Recorder& r, std::string& md) {
     struct Row {
         std::string what;
-        double value;
+        double value, spread;
         std::string unit;
         double target;
         bool atLeast;
     };
     const double chain = r.get("ExternalChainOneMaterial"), cold = r.get("CliColdOneMaterial");
-    const std::vector<Row> rows = {
-        {"warm, in process: external chain / hexc, 3-material batch", r.get("BatchExternalTools") / r.get("BatchInProcess"), "x",
-         kTargetSpeedup, true},
-        {"warm, in process: one 3-slot material (rock), four targets", r.get("CompileAllTargets"), "ms", 25, false},
-        {"cold command line, one material: external chain / hexc", chain / cold, "x", 1.5, true},
-        {"shader cache hit, in process, per material", r.get("CacheHitInProcess"), "ms", 2, false},
-        {std::to_string(kGenerated) + " generated materials, command line, no cache folder", r.get("CliGeneratedBatch"), "ms", 2000, false},
-        {"no-op rebuild, per material (" + std::to_string(kGenerated) + " up to date)", r.get("CliNoOpRebuild") / kGenerated, "ms", 5,
-         false},
+    const double first = r.get("SlotScaling/2") - r.get("SlotScaling/1"), last = (r.get("SlotScaling/16") - r.get("SlotScaling/8")) / 8;
+    // A ratio's spread is at most the sum of its two figures' spreads.
+    auto spread = [&r](std::initializer_list<const char*> names) {
+        double sum = 0;
+        for (const char* n : names) sum += r.spread(n);
+        return sum;
     };
-    md += "\n| compile-speed target | measured | target | |\n|---|---|---|---|\n";
+    const std::vector<Row> rows = {
+        {"warm, in process: external chain / hexc, 3-material batch", r.get("BatchExternalTools") / r.get("BatchInProcess"),
+         spread({"BatchExternalTools", "BatchInProcess"}), "x", kTargetSpeedup, true},
+        {"warm, in process: one 3-slot material (rock), four targets", r.get("CompileAllTargets"), spread({"CompileAllTargets"}), "ms", 25,
+         false},
+        {"cold command line, one material: external chain / hexc", chain / cold, spread({"ExternalChainOneMaterial", "CliColdOneMaterial"}),
+         "x", 1.5, true},
+        {"shader cache hit, in process, per material", r.get("CacheHitInProcess"), spread({"CacheHitInProcess"}), "ms", 2, false},
+        {std::to_string(kGenerated) + " generated materials, command line, no cache folder", r.get("CliGeneratedBatch"),
+         spread({"CliGeneratedBatch"}), "ms", 2000, false},
+        {"no-op rebuild, per material (" + std::to_string(kGenerated) + " up to date)", r.get("CliNoOpRebuild") / kGenerated,
+         spread({"CliNoOpRebuild"}), "ms", 5, false},
+        {"cost linear in slots: ms per added slot from 8 to 16 slots / from 1 to 2", last / first,
+         spread({"SlotScaling/1", "SlotScaling/2", "SlotScaling/8", "SlotScaling/16"}), "", 1.25, false},
+    };
+    md += "\n| compile-speed target | measured | spread | target | |\n|---|---|---|---|---|\n";
     for (const Row& row : rows) {
         const bool met = row.atLeast ? row.value >= row.target : row.value <= row.target;
-        md += "| " + row.what + " | " + fixed(row.value, 2) + " " + row.unit + " | " + (row.atLeast ? ">= " : "<= ") +
-              fixed(row.target, 1) + " " + row.unit + " | " +
+        md += "| " + row.what + " | " + fixed(row.value, 2) + " " + row.unit + " | " + fixed(row.spread * 100, 0) + "% | " +
+              (row.atLeast ? ">= " : "<= ") + fixed(row.target, 2) + " " + row.unit + " | " +
               (std::isnan(row.value) ? "not measured"
                : met                 ? "MET"
                                      : "NOT MET") +
               " |\n";
     }
-    const double first = r.get("SlotScaling/2") - r.get("SlotScaling/1"), last = (r.get("SlotScaling/16") - r.get("SlotScaling/8")) / 8;
-    md += "| cost linear in slots: ms per added slot from 8 to 16 slots / from 1 to 2 | " + fixed(last / first, 2) + " | <= 1.25 | " +
-          (std::isnan(last / first) ? "not measured"
-           : last / first <= 1.25   ? "MET"
-                                    : "NOT MET") +
-          " |\n";
+    md += "\nSpread: (max - min) / median over the repetitions; for a ratio, the sum of its two figures' spreads.\n";
     md += "\nWhole compile by number of colour slots (one lattice, a template adding them up):";
     for (int n : {1, 2, 4, 8, 16}) md += " " + std::to_string(n) + ": " + fixed(r.get("SlotScaling/" + std::to_string(n)), 1) + " ms;";
     md += "\n";
@@ -376,9 +395,9 @@ void report(const Recorder& r, const fs::path& dir, const std::string& machine) 
 
 int main(int argc, char** argv) {
     // Defaults that the user's own --benchmark_* flags override (the last one given wins): three repetitions in
-    // random order, so that load from elsewhere on the machine spreads over all benchmarks; reported: the median.
-    std::string defaults[] = {"--benchmark_repetitions=3", "--benchmark_enable_random_interleaving=true",
-                              "--benchmark_display_aggregates_only=true"};
+    // random order, so that load from elsewhere on the machine spreads over all benchmarks; reported: the median,
+    // and how far the repetitions are apart.
+    std::string defaults[] = {"--benchmark_repetitions=3", "--benchmark_enable_random_interleaving=true"};
     std::vector<char*> args{argv[0]};
     for (std::string& flag : defaults) args.push_back(flag.data());
     args.insert(args.end(), argv + 1, argv + argc);
@@ -390,7 +409,7 @@ int main(int argc, char** argv) {
     const std::string machine = hexc::bench::cpuSummary();
     hexc::bench::Recorder recorder;
     benchmark::RunSpecifiedBenchmarks(&recorder);
-    hexc::bench::report(recorder, dir, machine);
+    hexc::bench::report(recorder, dir, machine + ", " + hexc::bench::loadAverage() + " at the end");
     benchmark::Shutdown();
     return 0;
 }
