@@ -76,24 +76,34 @@ const std::string& file(const CompileResult& r, const std::string& suffix) {
 // Code is compiled with a stand-in entry point and named afterwards, so that materials share it: the result must be
 // what compiling with the name gives, MSL's renaming of reserved names (`main` -> `main0`) and debug info included.
 TEST(ShaderCache, NamingTheEntryPointAfterwardsGivesWhatCompilingWithItGives) {
-    const Material rock = material("rock");
-    for (const std::string entry : {"", "main", "abs", "terrainPS"})
-        for (bool debug : {false, true}) {
-            SCOPED_TRACE(entry + (debug ? " debug" : ""));
-            CompileOptions options;
-            options.entryPoint = entry;
-            options.debug = debug;
-            const CompileResult r = compileWith(rock, nullptr, options);
-            const ShaderPlan plan = planShader(rock, options);
-            SpirvResult front = compileToSpirv(generateGlsl(plan), ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl,
-                                               plan.entryPoint, {}, debug);
-            SpirvResult direct = optimizeSpirv(front.words, false, false, !debug);
-            EXPECT_EQ(direct.words, r.spirv);
-            EXPECT_EQ(spirvWords(file(r, ".frag.spv")), direct.words);
-            EXPECT_EQ(emitMsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.metal")));
-            EXPECT_EQ(emitHlsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.hlsl")));
-            EXPECT_EQ(emitGlsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.glsl")));
-        }
+    struct Case {
+        const char* material;
+        std::string entry;
+        bool debug, argumentBuffers;
+    };
+    // engine_rock's template brings its own blocks, textures and push constants.
+    const Case cases[] = {{"rock", "", false, false},           {"rock", "main", false, false},
+                          {"rock", "abs", false, false},        {"rock", "terrainPS", true, false},
+                          {"rock", "main", true, false},        {"engine_rock", "", false, true},
+                          {"engine_rock", "main", false, true}, {"engine_rock", "terrainPS", true, false}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::string(c.material) + " " + c.entry + (c.debug ? " debug" : "") + (c.argumentBuffers ? " argument buffers" : ""));
+        const Material m = *parseMaterialFile("materials/" + std::string(c.material) + ".json").material;
+        CompileOptions options;
+        options.entryPoint = c.entry;
+        options.debug = c.debug;
+        options.layout.msl.argumentBuffers = c.argumentBuffers;
+        const CompileResult r = compileWith(m, nullptr, options);
+        const ShaderPlan plan = planShader(m, options);
+        SpirvResult front = compileToSpirv(generateGlsl(plan), ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl,
+                                           plan.entryPoint, {}, c.debug);
+        SpirvResult direct = optimizeSpirv(front.words, false, false, !c.debug);
+        EXPECT_EQ(direct.words, r.spirv);
+        EXPECT_EQ(spirvWords(file(r, ".frag.spv")), direct.words);
+        EXPECT_EQ(emitMsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.metal")));
+        EXPECT_EQ(emitHlsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.hlsl")));
+        EXPECT_EQ(emitGlsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.glsl")));
+    }
     EXPECT_EQ(mslEntryName("main"), "main0");
     EXPECT_EQ(mslEntryName("rock_frag"), "rock_frag");
 }
