@@ -264,6 +264,17 @@ TEST(ShaderCache, CommandLineHitsAndAnotherBuildMisses) {
     ASSERT_EQ(WEXITSTATUS(status), 0) << err;
     EXPECT_NE(err.find("shader code: 1 compiled, 0 from the cache"), std::string::npos) << err;
 
+    // A cache folder that cannot be written costs speed, not the build: a warning, and the outputs.
+    std::ofstream(dir / "a-file") << "not a folder";
+    fs::remove_all(dir / "out");
+    ASSERT_EQ(runHexc((dir / "rock.json").string() + " --cache-dir " + (dir / "a-file").string() + " -o " + (dir / "out").string(), &err),
+              0)
+        << err;
+    EXPECT_NE(err.find("warning: the shader cache keeps nothing for later runs (cannot create " + (dir / "a-file").string()),
+              std::string::npos)
+        << err;
+    EXPECT_TRUE(fs::exists(dir / "out" / "rock.frag.spv"));
+
     // --no-cache: no folder; the summary says so.
     ASSERT_EQ(runHexc((dir / "rock.json").string() + " -v --force --no-cache -o " + (dir / "out").string(), &err), 0) << err;
     EXPECT_NE(err.find("1 compiled, 0 from the cache (this run only)"), std::string::npos) << err;

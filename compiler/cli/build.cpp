@@ -205,6 +205,9 @@ bool compileJobs(const Arguments& a, std::vector<Job>& jobs, ShaderCache::Stats&
         if (!j.upToDate) pending.push_back(&j);
     }
     stats = compileInParallel(a, pending);
+    if (!stats.unwritable.empty() && a.warnings)
+        std::cerr << "hexc: warning: the shader cache keeps nothing for later runs (" << stats.unwritable
+                  << "); --cache-dir DIR names another folder, --no-cache turns it off\n";
     bool ok = true;
     for (Job* j : pending) ok &= printDiagnostics(j->result.diagnostics, a, j->passReadsFewer);
     return ok;

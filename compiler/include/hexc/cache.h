@@ -37,16 +37,17 @@ public:
     void trim() const;
 
     struct Stats {
-        size_t hits = 0;     // found in memory or in the folder
-        size_t misses = 0;   // computed
-        size_t corrupt = 0;  // folder entries that failed their checksum (removed, computed again)
+        size_t hits = 0;         // found in memory or in the folder
+        size_t misses = 0;       // computed
+        size_t corrupt = 0;      // folder entries that failed their checksum (removed, computed again)
+        std::string unwritable;  // why the first entry could not be written to the folder, if one could not
     };
     Stats stats() const;
     const std::filesystem::path& dir() const { return dir_; }
 
 private:
     std::optional<std::string> loadFromFolder(const std::string& key);
-    void storeInFolder(const std::string& key, const std::string& value) const;
+    void storeInFolder(const std::string& key, const std::string& value);
     std::filesystem::path entryPath(const std::string& key) const;
 
     std::filesystem::path dir_;

@@ -102,19 +102,25 @@ std::optional<std::string> ShaderCache::loadFromFolder(const std::string& key) {
     return std::nullopt;
 }
 
-void ShaderCache::storeInFolder(const std::string& key, const std::string& value) const {
+void ShaderCache::storeInFolder(const std::string& key, const std::string& value) {
     const std::filesystem::path path = entryPath(key);
+    std::string why;
     std::error_code ec;
-    std::filesystem::create_directories(path.parent_path(), ec);
-    try {
-        writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
-            std::ofstream out(temporary, std::ios::binary);
-            out << kEntryHeader << key << "\n" << checksum(value) << "\n" << value;
-            return bool(out.flush());
-        });
-    } catch (const std::exception&) {
-        // A cache that cannot be written (read-only, full disk) costs speed, not correctness.
-    }
+    if (std::filesystem::create_directories(path.parent_path(), ec); ec)
+        why = "cannot create " + path.parent_path().string() + ": " + ec.message();
+    else
+        try {
+            writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+                std::ofstream out(temporary, std::ios::binary);
+                out << kEntryHeader << key << "\n" << checksum(value) << "\n" << value;
+                return bool(out.flush());
+            });
+        } catch (const std::exception& e) {
+            why = e.what();
+        }
+    // A cache that cannot be written (read-only, full disk) costs speed, not correctness: reported, not fatal.
+    std::lock_guard lock(mutex_);
+    if (!why.empty() && stats_.unwritable.empty()) stats_.unwritable = why;
 }
 
 void ShaderCache::trim() const {
