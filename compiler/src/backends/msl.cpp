@@ -3,12 +3,12 @@
 #include <spirv_msl.hpp>
 
 #include <algorithm>
-#include <cstring>
 #include <map>
 #include <mutex>
 #include <tuple>
 
 #include "backends/backends.h"
+#include "spirv/strings.h"
 
 namespace hexc {
 
@@ -34,10 +34,9 @@ std::string mslEntryName(const std::string& entry) {
         words.push_back(uint32_t(operands.size() + 1) << 16 | opcode);
         words.insert(words.end(), operands.begin(), operands.end());
     };
-    std::vector<uint32_t> entryPoint(2 + entry.size() / 4 + 1, 0);  // Fragment %3 "entry", NUL-padded
-    entryPoint[0] = 4;
-    entryPoint[1] = 3;
-    std::memcpy(&entryPoint[2], entry.data(), entry.size());
+    std::vector<uint32_t> entryPoint = {4, 3};  // Fragment %3 "entry"
+    const std::vector<uint32_t> name = spirvString(entry);
+    entryPoint.insert(entryPoint.end(), name.begin(), name.end());
     op(17, {1});           // OpCapability Shader
     op(14, {0, 1});        // OpMemoryModel Logical GLSL450
     op(15, entryPoint);    // OpEntryPoint

@@ -14,13 +14,6 @@ struct Rewrite {
     std::vector<uint32_t> out;
 };
 
-// A string operand as SPIR-V holds it: its bytes, a terminating NUL, padded with NULs to whole words.
-void appendString(std::vector<uint32_t>& out, const std::string& text) {
-    std::vector<uint32_t> words(text.size() / 4 + 1, 0);
-    std::memcpy(words.data(), text.data(), text.size());
-    out.insert(out.end(), words.begin(), words.end());
-}
-
 spv_result_t rewriteInstruction(void* user, const spv_parsed_instruction_t* parsed) {
     Rewrite& r = *static_cast<Rewrite*>(user);
     const size_t start = r.out.size();
@@ -32,7 +25,8 @@ spv_result_t rewriteInstruction(void* user, const spv_parsed_instruction_t* pars
         r.out.insert(r.out.end(), parsed->words + next, parsed->words + operand.offset);
         std::string text(reinterpret_cast<const char*>(parsed->words + operand.offset));
         for (size_t at = 0; (at = text.find(r.from, at)) != std::string::npos; at += r.to.size()) text.replace(at, r.from.size(), r.to);
-        appendString(r.out, text);
+        const std::vector<uint32_t> encoded = spirvString(text);
+        r.out.insert(r.out.end(), encoded.begin(), encoded.end());
         next = uint16_t(operand.offset + operand.num_words);
     }
     r.out.insert(r.out.end(), parsed->words + next, parsed->words + parsed->num_words);
@@ -41,6 +35,12 @@ spv_result_t rewriteInstruction(void* user, const spv_parsed_instruction_t* pars
 }
 
 }  // namespace
+
+std::vector<uint32_t> spirvString(std::string_view text) {
+    std::vector<uint32_t> words(text.size() / 4 + 1, 0);
+    std::memcpy(words.data(), text.data(), text.size());
+    return words;
+}
 
 std::vector<uint32_t> replaceInStrings(const std::vector<uint32_t>& words, std::string_view from, std::string_view to) {
     Rewrite r{from, to, {words.begin(), words.begin() + std::min<size_t>(5, words.size())}};

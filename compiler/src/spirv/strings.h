@@ -6,6 +6,9 @@
 
 namespace hexc {
 
+// `text` as a SPIR-V literal string operand: its bytes, a terminating NUL, padded with NULs to whole words.
+std::vector<uint32_t> spirvString(std::string_view text);
+
 // The module with every occurrence of `from` in its literal string operands replaced by `to`, each instruction
 // re-encoded to its new length. std::runtime_error when the module does not parse (a hexc bug).
 std::vector<uint32_t> replaceInStrings(const std::vector<uint32_t>& words, std::string_view from, std::string_view to);
