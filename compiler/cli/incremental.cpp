@@ -31,14 +31,9 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     h.add(buildId());
     h.add(toolchainVersions());  // also in the executable's bytes, unless a library is ever linked dynamically
     // Every option that changes an output.
-    std::string opts;
-    for (Target t : options.targets) opts += std::string(toString(t)) + ",";
-    opts += std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
-            std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + "," + std::to_string(options.specialize) +
-            std::to_string(options.shareLattice) + std::to_string(options.bake) + "," + toString(options.layout) + "," +
-            options.entryPoint + (options.vertex ? ",vertex" : "") + (options.debug ? ",debug" : "") +
-            (options.emitGenerated ? ",generated" : "") + (options.manifestPathsFrom.empty() ? "" : ",paths");
-    h.add(opts);
+    h.add(codeOptionsKey(options) + "," + std::to_string(options.specialize) + std::to_string(options.shareLattice) + "," +
+          toString(options.layout) + "," + options.entryPoint + (options.vertex ? ",vertex" : "") +
+          (options.emitGenerated ? ",generated" : "") + (options.manifestPathsFrom.empty() ? "" : ",paths"));
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).
     h.add(material.name + "|" + material.templateName);
     // The banner names the material file; --manifest-paths gives where every input was (the stamp's folder is the

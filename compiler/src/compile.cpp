@@ -191,17 +191,13 @@ ShaderCode compileCode(const std::string& glsl, const ShaderPlan& plan, const Co
 
 // Everything that can change a ShaderCode: the generated GLSL, the template's name (glslang's debug info holds it),
 // the slots' names (the manifest's), the options that reach glslang, spirv-opt and SPIRV-Cross, and hexc's build.
-std::string codeKey(const std::string& glsl, const ShaderPlan& plan, const CompileOptions& options, const std::vector<Target>& targets) {
+std::string codeKey(const std::string& glsl, const ShaderPlan& plan, const CompileOptions& options) {
     ContentHash h;
     for (const std::string& part : {std::string("hexc shader code 1"), std::string(version()), buildId(), toolchainVersions(), glsl,
                                     plan.templateName, toString(plan.layout)})
         h.add(part);
     for (const SlotPlan& sp : plan.slots) h.add(sp.slot->name);
-    std::string opts;
-    for (Target t : targets) opts += std::string(toString(t)) + ",";
-    h.add(opts + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
-          std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
-          (options.debug ? ",debug" : ""));
+    h.add(codeOptionsKey(options));
     return h.hex();
 }
 
@@ -245,7 +241,7 @@ ShaderCode cachedCode(const std::string& glsl, const ShaderPlan& plan, const Com
         if (compiled->spirv.empty() || !own.empty()) return std::nullopt;
         return toBytes(*compiled);
     };
-    std::optional<std::string> bytes = options.cache->getOrCompute(codeKey(glsl, plan, options, targets), compute);
+    std::optional<std::string> bytes = options.cache->getOrCompute(codeKey(glsl, plan, options), compute);
     if (compiled) return std::move(*compiled);
     if (std::optional<ShaderCode> found = fromBytes(*bytes, targets)) return std::move(*found);
     return compileCode(glsl, plan, options, targets, diagnostics);
@@ -305,6 +301,14 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
 }
 
 }  // namespace
+
+std::string codeOptionsKey(const CompileOptions& options) {
+    std::string key;
+    for (Target t : std::set<Target>(options.targets.begin(), options.targets.end())) key += std::string(toString(t)) + ",";
+    return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
+           std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
+           (options.debug ? ",debug" : "");
+}
 
 std::string withoutBanner(std::string source) {
     if (size_t at = source.find(kBannerStart); at != std::string::npos && (at == 0 || source[at - 1] == '\n'))

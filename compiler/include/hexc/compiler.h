@@ -71,6 +71,10 @@ const char* version();
 // the material: two materials' identical code differs there only.
 std::string withoutBanner(std::string source);
 
+// The options that change what glslang, spirv-opt and SPIRV-Cross make of the generated GLSL, in one line for keys
+// (the shader cache's, the stamps'): the targets, HLSL shader model, GLSL and MSL versions, --bake and --debug.
+std::string codeOptionsKey(const CompileOptions& options);
+
 // The shader tool chain hexc is built with, one per line: "glslang 12.0.0", "SPIRV-Tools v2022.4 ...",
 // "SPIRV-Cross 1.3.239.0+dfsg1-1" (the Debian package's version; SPIRV-Cross has no version of its own).
 std::string toolchainVersions();
