@@ -43,7 +43,6 @@ public:
         std::string unwritable;  // why the first entry could not be written to the folder, if one could not
     };
     Stats stats() const;
-    const std::filesystem::path& dir() const { return dir_; }
 
 private:
     std::optional<std::string> loadFromFolder(const std::string& key);
