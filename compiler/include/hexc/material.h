@@ -88,8 +88,9 @@ struct ParseResult {
     Diagnostics diagnostics;
 };
 
-// Parses and validates a material. `file` names the document in diagnostics and anchors relative
-// texture and template paths. Never throws on bad input.
+// Parses and validates a material: JSON, or a MaterialX document when `file` ends in .mtlx (hexc/materialx.h).
+// `file` names the document in diagnostics and anchors relative texture and template paths. Never throws on bad
+// input.
 ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file);
 ParseResult parseMaterialFile(const std::filesystem::path& file);
 

@@ -15,8 +15,10 @@
 #include "hexc/image.h"
 #include "hexc/layout.h"
 #include "hexc/material.h"
+#include "hexc/materialx.h"
 #include "hexc/scene.h"
 #include "material/json_locator.h"
+#include "material/parse.h"
 
 namespace hexc {
 namespace {
@@ -751,8 +753,12 @@ Result readAndParse(const std::filesystem::path& file, const std::string& what,
 
 }  // namespace
 
-ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
+ParseResult parseMaterialJson(std::string_view text, const std::filesystem::path& file) {
     return validate(text, file, &ParseResult::material, &Validator::run);
+}
+
+ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
+    return isMaterialXFile(file) ? parseMaterialX(text, file) : parseMaterialJson(text, file);
 }
 
 ParseResult parseMaterialFile(const std::filesystem::path& file) { return readAndParse(file, "material", &parseMaterial); }

@@ -1,0 +1,541 @@
+// MaterialX -> Material. The document is read into the JSON material it means, which the JSON parser then
+// validates, so both formats follow one set of rules; its diagnostics are moved onto the elements the values came
+// from. What is read, and how each MaterialX input maps to a hexc setting, is in docs/materialx.md.
+#include <algorithm>
+#include <charconv>
+#include <map>
+
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+
+#include "common/suggest.h"
+#include "hexc/materialx.h"
+#include "material/json_locator.h"
+#include "material/materialx_names.h"
+#include "material/parse.h"
+
+namespace hexc {
+namespace {
+
+using nlohmann::json;
+using pugi::xml_node;
+
+// Where a value of the JSON material came from: an element's name path and its position in the document.
+struct Place {
+    std::string path;
+    TextPos pos;
+};
+
+// The inputs each texture node may have; anything else is reported rather than dropped.
+const std::map<std::string, std::vector<std::string>, std::less<>> kNodeInputs = {
+    {"hextiledimage",
+     {"file", "default", "texcoord", "tiling", "rotation", "rotationrange", "scale", "scalerange", "offset", "offsetrange", "falloff",
+      "falloffcontrast", "lumacoeffs"}},
+    {"hextilednormalmap",
+     {"file", "default", "texcoord", "tiling", "rotation", "rotationrange", "scale", "scalerange", "offset", "offsetrange", "falloff",
+      "strength", "flip_g", "normal", "tangent", "bitangent"}},
+    {"image",
+     {"file", "layer", "default", "texcoord", "uaddressmode", "vaddressmode", "filtertype", "framerange", "frameoffset", "frameendaction"}},
+    {"tiledimage",
+     {"file", "default", "texcoord", "uvtiling", "uvoffset", "realworldimagesize", "realworldtilesize", "filtertype", "framerange",
+      "frameoffset", "frameendaction"}},
+};
+
+// Inputs hexc reads only at one value (what it does: repeat, filter linearly, one image, no normal scaling); an
+// empty category applies to every node.
+struct Fixed {
+    std::string_view category, input, value, why;
+};
+constexpr Fixed kFixed[] = {
+    {"", "layer", "", "hexc reads a whole image file"},
+    {"", "uaddressmode", "periodic", "hex-tiling repeats the texture"},
+    {"", "vaddressmode", "periodic", "hex-tiling repeats the texture"},
+    {"", "filtertype", "linear", "hexc samples with trilinear filtering"},
+    {"", "framerange", "", "hexc reads one image, not a sequence"},
+    {"", "frameoffset", "0", "hexc reads one image, not a sequence"},
+    {"", "uvoffset", "0, 0", "hexc has no uv offset"},
+    {"", "realworldimagesize", "1, 1", "hexc has no real-world units; use uvtiling"},
+    {"", "realworldtilesize", "1, 1", "hexc has no real-world units; use uvtiling"},
+    {"hextilednormalmap", "strength", "1", "hexc does not scale normals; the template can"},
+    {"normalmap", "scale", "1", "hexc does not scale normals; the template can"},
+    {"normalmap", "space", "tangent", "hexc reads tangent-space normal maps"},
+};
+
+std::string_view text(const pugi::xml_attribute& a) { return a.value(); }
+
+// "0.5, 2" -> numbers; nullopt when any item is not a finite number.
+std::optional<std::vector<double>> numbers(std::string_view s) {
+    std::vector<double> out;
+    for (size_t begin = 0; begin <= s.size();) {
+        size_t end = std::min(s.find(',', begin), s.size());
+        std::string_view item = s.substr(begin, end - begin);
+        while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+        while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
+        double x = 0;
+        auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), x);
+        if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(x)) return std::nullopt;
+        out.push_back(x);
+        begin = end + 1;
+    }
+    return out;
+}
+
+// A MaterialX value string as JSON: a boolean, a number, an array of numbers, else the string itself (which the
+// JSON rules then report where a number was expected).
+json value(std::string_view s) {
+    if (s == "true" || s == "false") return s == "true";
+    if (std::optional<std::vector<double>> v = numbers(s)) return v->size() == 1 ? json(v->front()) : json(*v);
+    return std::string(s);
+}
+
+bool isNumbers(const json& v, size_t count) {
+    return count == 1 ? v.is_number()
+                      : v.is_array() && v.size() == count && std::all_of(v.begin(), v.end(), [](const json& x) { return x.is_number(); });
+}
+
+// `standard_surface` base_color -> albedo; other inputs by their own name in snake_case.
+std::string slotName(std::string_view shader, std::string_view input) {
+    for (const mtlx::SlotInput& s : mtlx::kSlotInputs)
+        if (s.shader == shader && s.input == input) return std::string(s.slot);
+    std::string out;
+    for (size_t i = 0; i < input.size(); ++i) {
+        char c = input[i];
+        if (c >= 'A' && c <= 'Z') {
+            const char before = i ? input[i - 1] : '_';
+            if ((before >= 'a' && before <= 'z') || (before >= '0' && before <= '9')) out += '_';
+            c = char(c - 'A' + 'a');
+        }
+        out += c;
+    }
+    return out;
+}
+
+class Reader {
+public:
+    Reader(std::string_view text, const std::filesystem::path& file, xml_node root) : text_(text), file_(file), root_(root) {}
+
+    Diagnostics diags;
+
+    // The JSON material of the document's surfacematerial; nullopt after reporting why there is none.
+    std::optional<json> run() {
+        if (std::string_view(root_.name()) != "materialx") {
+            report(Code::MaterialXUnsupported, root_, "expected a <materialx> document, got <" + std::string(root_.name()) + ">");
+            return std::nullopt;
+        }
+        std::vector<xml_node> materials;
+        for (xml_node n : root_.children("surfacematerial")) materials.push_back(n);
+        if (materials.size() != 1) {
+            std::string names;
+            for (xml_node n : materials) names += std::string(names.empty() ? "" : ", ") + "`" + n.attribute("name").value() + "`";
+            report(Code::MaterialXUnsupported, root_,
+                   materials.empty() ? "no <surfacematerial>: hexc compiles one material per document"
+                                     : "several <surfacematerial> elements (" + names + "): hexc compiles one material per document",
+                   materials.empty() ? "" : "split the document, one material each");
+            return std::nullopt;
+        }
+        return material(materials[0]);
+    }
+
+    // A diagnostic of the JSON rules, moved onto the element its value came from.
+    Diagnostic relocate(const Diagnostic& d) const {
+        if (d.loc.file != file_.string()) return d;
+        std::string pointer = d.path;
+        while (!places_.contains(pointer)) {
+            const size_t cut = pointer.rfind('/');
+            pointer = cut == std::string::npos ? "" : pointer.substr(0, cut);
+        }
+        const Place& p = places_.at(pointer);
+        return Diagnostic::make(d.code, {file_.string(), p.pos.line, p.pos.col}, p.path, d.message, d.hint);
+    }
+
+private:
+    json material(xml_node material) {
+        json m = {{"name", material.attribute("name").value()}, {"slots", json::array()}};
+        at("", material);
+        at("/name", material, "name");
+        hexcAttributes(material, mtlx::kMaterialKeys, [&](const std::string& key, const json& v, const char* attr) {
+            const std::string p = key == "template" ? "/template" : "/hextiling/" + key;
+            (key == "template" ? m["template"] : m["hextiling"][key]) = v;
+            at(p, material, attr);
+        });
+        for (xml_node input : material.children("input")) {
+            const std::string name = input.attribute("name").value();
+            if (name != "surfaceshader" && name != "displacementshader") {
+                report(Code::MaterialXUnsupported, input, "unknown <surfacematerial> input `" + name + "`",
+                       "expected surfaceshader or displacementshader");
+                continue;
+            }
+            if (xml_node shader = source(input)) surface(shader, m);
+        }
+        if (m["slots"].empty()) at("/slots", material);
+        return m;
+    }
+
+    // Each input of a surface (or displacement) shader fed by a texture node is a slot; inputs given as values
+    // are the template's business, said once.
+    void surface(xml_node shader, json& m) {
+        const std::string category = shader.name();
+        static const std::vector<std::string> kShaders = {"standard_surface", "open_pbr_surface", "UsdPreviewSurface", "displacement"};
+        if (std::find(kShaders.begin(), kShaders.end(), category) == kShaders.end()) {
+            report(Code::MaterialXUnsupported, shader, "shader <" + category + "> is not supported",
+                   "expected <standard_surface>, <open_pbr_surface>, <UsdPreviewSurface> or <displacement>");
+            return;
+        }
+        std::string values;
+        for (xml_node input : shader.children("input")) {
+            if (!connected(input)) {
+                values += std::string(values.empty() ? "" : ", ") + input.attribute("name").value();
+                continue;
+            }
+            if (xml_node node = source(input)) slot(node, slotName(category, input.attribute("name").value()), m);
+        }
+        if (!values.empty())
+            report(Code::MaterialXIgnored, shader,
+                   "inputs given as values are left to the template (hexc compiles the ones fed by images): " + values);
+    }
+
+    // The slot for a texture node, through the `extract` (a channel) or `normalmap` node around it.
+    void slot(xml_node node, const std::string& name, json& m) {
+        const std::string p = pointerAppend("/slots", m["slots"].size());
+        json s = {{"name", name}};
+        at(p, node);
+        at(p + "/name", node);
+        std::string category = node.name();
+        std::optional<int> channel;
+        const bool normalmap = category == "normalmap";
+        if (category == "extract" || normalmap) {
+            if (category == "extract") channel = extractIndex(node, p);
+            fixedInputs(node, normalmap ? std::vector<std::string>{"in", "scale", "space"} : std::vector<std::string>{"in", "index"});
+            xml_node in = node.find_child_by_attribute("input", "name", "in");
+            if (!in || !connected(in)) {
+                report(Code::MaterialXUnsupported, node, "<" + category + "> without a connected `in` input");
+                return;
+            }
+            if (!(node = source(in))) return;
+            category = node.name();
+        }
+        if (!kNodeInputs.contains(category)) {
+            report(Code::MaterialXUnsupported, node, "node <" + category + "> cannot feed a slot",
+                   "hexc compiles image, tiledimage, hextiledimage and hextilednormalmap nodes, optionally under extract or normalmap");
+            return;
+        }
+        s["kind"] = normalmap || category == "hextilednormalmap"                             ? "normal"
+                    : channel || std::string_view(node.attribute("type").value()) == "float" ? "scalar"
+                                                                                             : "color";
+        if (channel) s["channel"] = std::string(1, "rgba"[*channel]);
+        texture(node, s, p);
+        m["slots"].push_back(std::move(s));
+    }
+
+    std::optional<int> extractIndex(xml_node node, const std::string& p) {
+        xml_node index = node.find_child_by_attribute("input", "name", "index");
+        json v = index ? value(index.attribute("value").value()) : json(0);
+        if (v.is_number() && v.get<double>() >= 0 && v.get<double>() <= 3 && v.get<double>() == std::floor(v.get<double>()))
+            return int(v.get<double>());
+        report(Code::MaterialXUnsupported, index ? index : node, "<extract> `index` must be a channel, 0 to 3");
+        at(p + "/channel", node);
+        return std::nullopt;
+    }
+
+    void texture(xml_node node, json& s, const std::string& p);
+    void hexSettings(xml_node node, const std::map<std::string, xml_node>& inputs, json& s, const std::string& p);
+    void hexTransforms(const std::map<std::string, xml_node>& inputs, xml_node node, json& hex, const std::string& p);
+    void colorSpace(xml_node from, json& s, const std::string& p);
+    std::map<std::string, xml_node> inputsOf(xml_node node);
+    void fixedInputs(xml_node node, const std::vector<std::string>& known);
+    void texcoord(xml_node input);
+    void luma(xml_node input);
+    json inputValue(xml_node input, const json& fallback);
+    template <typename F>
+    void hexcAttributes(xml_node node, const std::vector<std::string>& keys, F&& each);
+    xml_node source(xml_node input);
+    static bool connected(xml_node input) {
+        return input.attribute("nodename") || input.attribute("nodegraph") || input.attribute("output");
+    }
+    static std::string inherited(xml_node node, const char* attribute) {
+        for (; node; node = node.parent())
+            if (pugi::xml_attribute a = node.attribute(attribute)) return a.value();
+        return {};
+    }
+
+    std::string namePath(xml_node node) const {
+        std::string path;
+        for (; node && node != root_; node = node.parent()) path = node.attribute("name").value() + (path.empty() ? "" : "/" + path);
+        return path;
+    }
+    Place place(xml_node node, const char* attribute = nullptr) const {
+        size_t offset = node.offset_debug() < 0 ? 0 : size_t(node.offset_debug());
+        if (offset > 0 && offset <= text_.size() && text_[offset - 1] == '<') --offset;  // pugixml points past the `<`
+        if (attribute) {
+            size_t at = text_.find(std::string(attribute) + "=", offset);
+            if (at != std::string_view::npos && at < text_.find('>', offset)) offset = at;
+        }
+        const bool own = attribute && std::string_view(attribute) != "value";  // an input's value is the input
+        return {namePath(node) + (own ? "/@" + std::string(attribute) : ""), textPosition(text_, offset)};
+    }
+    void at(const std::string& pointer, xml_node node, const char* attribute = nullptr) { places_[pointer] = place(node, attribute); }
+    void report(Code code, xml_node node, std::string message, std::string hint = {}) {
+        Place p = place(node);
+        diags.push_back(Diagnostic::make(code, {file_.string(), p.pos.line, p.pos.col}, p.path, std::move(message), std::move(hint)));
+    }
+
+    std::string_view text_;
+    std::filesystem::path file_;
+    xml_node root_;
+    std::map<std::string, Place> places_;  // JSON pointer -> where its value came from
+};
+
+// The node an input is connected to: `nodename` in the input's own graph, or a nodegraph's output.
+xml_node Reader::source(xml_node input) {
+    xml_node graph = input.parent().parent();
+    std::string name = input.attribute("nodename").value();
+    if (pugi::xml_attribute ng = input.attribute("nodegraph")) {
+        graph = root_.find_child_by_attribute("nodegraph", "name", ng.value());
+        if (!graph) {
+            report(Code::UnknownReference, input, "no <nodegraph> named `" + std::string(ng.value()) + "`");
+            return {};
+        }
+        const char* output = input.attribute("output").value();
+        xml_node out = *output ? graph.find_child_by_attribute("output", "name", output) : graph.child("output");
+        if (!out) {
+            report(Code::UnknownReference, input, "nodegraph `" + std::string(ng.value()) + "` has no output `" + output + "`");
+            return {};
+        }
+        name = out.attribute("nodename").value();
+    } else if (name.empty()) {
+        report(Code::MaterialXUnsupported, input, "an input connected by `output` alone is not supported", "connect it with nodename");
+        return {};
+    }
+    for (xml_node n : graph.children())
+        if (std::string_view(n.name()) != "input" && std::string_view(n.name()) != "output" && name == n.attribute("name").value())
+            return n;
+    report(Code::UnknownReference, input, "no node named `" + name + "` in " + (graph == root_ ? "the document" : namePath(graph)));
+    return {};
+}
+
+// The node's inputs by name, each unknown one and each set to what hexc cannot do reported.
+std::map<std::string, xml_node> Reader::inputsOf(xml_node node) {
+    const std::vector<std::string>& known = kNodeInputs.find(std::string_view(node.name()))->second;
+    fixedInputs(node, known);
+    std::map<std::string, xml_node> inputs;
+    for (xml_node input : node.children("input"))
+        if (std::find(known.begin(), known.end(), input.attribute("name").value()) != known.end())
+            inputs[input.attribute("name").value()] = input;
+    return inputs;
+}
+
+void Reader::fixedInputs(xml_node node, const std::vector<std::string>& known) {
+    const std::string category = node.name();
+    for (xml_node input : node.children("input")) {
+        const std::string name = input.attribute("name").value();
+        if (std::find(known.begin(), known.end(), name) == known.end()) {
+            std::string hint;
+            if (auto best = closestMatch(name, known)) hint = "did you mean `" + *best + "`?";
+            report(Code::MaterialXUnsupported, input, "<" + category + "> has no input `" + name + "` hexc knows", hint);
+            continue;
+        }
+        if (name == "texcoord") {
+            texcoord(input);
+            continue;
+        }
+        if (name == "in") continue;  // normalmap's image, read as the slot's texture node
+        if (connected(input)) {
+            report(Code::MaterialXUnsupported, input, "`" + name + "` is connected: hexc reads texture settings as values");
+            continue;
+        }
+        if ((name == "normal" || name == "tangent" || name == "bitangent") && category == "hextilednormalmap")
+            report(Code::MaterialXUnsupported, input, "`" + name + "` is the template's: hexc returns the tangent-space result");
+        for (const Fixed& f : kFixed)
+            if ((f.category.empty() || f.category == category) && f.input == name && inputValue(input, value(f.value)) != value(f.value))
+                report(Code::MaterialXUnsupported, input, "`" + name + "` must be \"" + std::string(f.value) + "\": " + std::string(f.why));
+    }
+}
+
+// The mesh uv, which is what the template passes: a <texcoord> node of index 0 (or none, MaterialX's default).
+void Reader::texcoord(xml_node input) {
+    xml_node from = connected(input) ? source(input) : xml_node();
+    if (!from && connected(input)) return;  // source() said why
+    xml_node index = from.find_child_by_attribute("input", "name", "index");
+    if (!from || std::string_view(from.name()) != "texcoord" || (index && inputValue(index, 0.0) != json(0.0)))
+        report(Code::MaterialXUnsupported, input, "`texcoord` must come from a <texcoord> node of index 0",
+               "hexc's template passes the mesh uv (or the triplanar position)");
+}
+
+// An input's value (through `interfacename` to its nodegraph's input), or `fallback` when it has none.
+json Reader::inputValue(xml_node input, const json& fallback) {
+    if (!input) return fallback;
+    if (pugi::xml_attribute name = input.attribute("interfacename")) {
+        xml_node graph = input.parent().parent();
+        xml_node outer = graph.find_child_by_attribute("input", "name", name.value());
+        if (!outer) {
+            report(Code::UnknownReference, input, "no nodegraph input `" + std::string(name.value()) + "`");
+            return fallback;
+        }
+        input = outer;
+    }
+    pugi::xml_attribute v = input.attribute("value");
+    if (!v) return fallback;
+    const std::string_view type = input.attribute("type").value();
+    return type == "filename" || type == "string" ? json(std::string(text(v))) : value(text(v));
+}
+
+template <typename F>
+void Reader::hexcAttributes(xml_node node, const std::vector<std::string>& keys, F&& each) {
+    for (pugi::xml_attribute a : node.attributes()) {
+        std::string_view name = a.name();
+        if (!name.starts_with("hexc_")) continue;
+        const std::string key(name.substr(5));
+        if (std::find(keys.begin(), keys.end(), key) != keys.end()) {
+            each(key, value(a.value()), a.name());
+            continue;
+        }
+        std::string hint;
+        if (auto best = closestMatch(key, keys)) hint = "did you mean `hexc_" + *best + "`?";
+        report(Code::MaterialXUnsupported, node, "unknown hexc attribute `" + std::string(name) + "` on <" + node.name() + ">", hint);
+    }
+}
+
+// The slot's texture, colour space and hex-tiling settings: the node's inputs, then its hexc_* attributes.
+void Reader::texture(xml_node node, json& s, const std::string& p) {
+    const std::map<std::string, xml_node> inputs = inputsOf(node);
+    auto file = inputs.find("file");
+    if (file != inputs.end()) {  // without one, the JSON rules report the missing `texture` at the node
+        json v = inputValue(file->second, "");
+        s["texture"] = v.is_string() ? json(inherited(file->second, "fileprefix") + v.get<std::string>()) : v;
+        at(p + "/texture", file->second, "value");
+    }
+    colorSpace(file != inputs.end() ? file->second : node, s, p);
+    hexSettings(node, inputs, s, p);
+    hexcAttributes(
+        node,
+        [] {
+            std::vector<std::string> keys = mtlx::kNodeKeys;
+            keys.insert(keys.end(), mtlx::kSlotKeys.begin(), mtlx::kSlotKeys.end());
+            return keys;
+        }(),
+        [&](const std::string& key, const json& v, const char* attr) {
+            std::string pointer = p + "/hextiling/" + key;
+            if (key == "flip_y") {
+                s["flip_y"] = v;
+                pointer = p + "/flip_y";
+            } else if (key.starts_with("height_blend")) {
+                const char* field = key == "height_blend" ? "slot" : "width";
+                s["height_blend"][field] = v;
+                pointer = p + "/height_blend/" + field;
+            } else {
+                s["hextiling"][key] = v;
+            }
+            at(pointer, node, attr);
+        });
+}
+
+// MaterialX names colour spaces; an image's is its file input's, or inherited from the elements around it.
+void Reader::colorSpace(xml_node from, json& s, const std::string& p) {
+    const std::string space = inherited(from, "colorspace");
+    at(p + "/colorspace", from, "colorspace");
+    if (space == "srgb_texture") {
+        s["colorspace"] = "srgb";  // on a normal map, the JSON rules report it
+    } else if (space.empty() || space == "lin_rec709" || space == "lin_srgb" || space == "raw" || space == "Raw") {
+        if (s["kind"] != "normal") s["colorspace"] = "linear";
+    } else {
+        report(Code::MaterialXUnsupported, from, "colour space `" + space + "` is not supported",
+               "expected srgb_texture, or lin_rec709 or raw for data stored as is");
+    }
+}
+
+void Reader::hexSettings(xml_node node, const std::map<std::string, xml_node>& inputs, json& s, const std::string& p) {
+    const std::string category = node.name(), h = p + "/hextiling";
+    json& hex = s["hextiling"];
+    auto set = [&](const char* key, const char* input, const json& fallback) {
+        auto it = inputs.find(input);
+        hex[key] = inputValue(it == inputs.end() ? xml_node() : it->second, fallback);
+        at(h + "/" + key, it == inputs.end() ? node : it->second, it == inputs.end() ? nullptr : "value");
+    };
+    if (category == "image" || category == "tiledimage") {
+        hex["enabled"] = false;
+        at(h + "/enabled", node);
+        if (category == "tiledimage") set("tiling", "uvtiling", json::array({1.0, 1.0}));
+        return;
+    }
+    set("tiling", "tiling", json::array({1.0, 1.0}));
+    set("falloff", "falloff", 0.5);
+    if (category == "hextiledimage") {
+        set("falloffcontrast", "falloffcontrast", 0.5);
+        if (inputs.contains("lumacoeffs")) luma(inputs.at("lumacoeffs"));
+    } else {
+        auto flip = inputs.find("flip_g");
+        s["flip_y"] = inputValue(flip == inputs.end() ? xml_node() : flip->second, false);
+        at(p + "/flip_y", flip == inputs.end() ? node : flip->second, "value");
+    }
+    hexTransforms(inputs, node, hex, h);
+}
+
+// MaterialX draws a tile's angle as A + (B - A) u R, its scale as 1 + (lo + (hi - lo) u - 1) S and its offset as
+// olo + (ohi - olo) u O; hexc as (a + (b - a) u) rotation, a + (b - a) u and u offset. The same functions of u:
+void Reader::hexTransforms(const std::map<std::string, xml_node>& inputs, xml_node node, json& hex, const std::string& h) {
+    auto get = [&](const char* name, const json& fallback, const char* key) {
+        auto it = inputs.find(name);
+        at(h + "/" + key, it == inputs.end() ? node : it->second, it == inputs.end() ? nullptr : "value");
+        return inputValue(it == inputs.end() ? xml_node() : it->second, fallback);
+    };
+    const json R = get("rotation", 1.0, "rotation"), AB = get("rotationrange", {0.0, 360.0}, "rotationrange");
+    if (!isNumbers(R, 1) || !isNumbers(AB, 2)) {
+        hex["rotation"] = R, hex["rotationrange"] = AB;  // the JSON rules say what is wrong
+    } else if (double r = R.get<double>(), a = AB[0].get<double>(), b = AB[1].get<double>(); r == 0) {
+        hex["rotation"] = a == 0 ? 0.0 : 1.0;  // every angle is A
+        if (a != 0) hex["rotationrange"] = {a, a};
+    } else {
+        hex["rotation"] = r, hex["rotationrange"] = r == 1 ? AB : json{a / r, a / r + (b - a)};
+    }
+    const json S = get("scale", 1.0, "scale"), LH = get("scalerange", {0.5, 2.0}, "scalerange");
+    if (isNumbers(S, 1) && isNumbers(LH, 2) && S != json(1.0))
+        hex["scalerange"] = {1 + (LH[0].get<double>() - 1) * S.get<double>(), 1 + (LH[1].get<double>() - 1) * S.get<double>()};
+    else
+        hex["scalerange"] = isNumbers(LH, 2) ? LH : S;
+    const json O = get("offset", 1.0, "offset"), OR = get("offsetrange", {0.0, 1.0}, "offsetrange");
+    if (isNumbers(OR, 2) && OR[0] != json(0.0))
+        report(Code::MaterialXUnsupported, inputs.contains("offsetrange") ? inputs.at("offsetrange") : node,
+               "`offsetrange` must start at 0: hexc offsets tiles by u * offset");
+    hex["offset"] = isNumbers(O, 1) && isNumbers(OR, 2) && OR[1] != json(1.0) ? json(O.get<double>() * OR[1].get<double>()) : O;
+}
+
+// hexc's colour path weighs by Rec. 601 luma (paper Eq. 4), whatever the document's working space.
+void Reader::luma(xml_node input) {
+    json v = inputValue(input, json());
+    for (size_t i = 0; isNumbers(v, 3) && i < 3; ++i)
+        if (std::fabs(v[i].get<double>() - mtlx::kLuma[i]) > 5e-4) v = json();
+    if (!isNumbers(v, 3))
+        report(Code::MaterialXIgnored, input,
+               "hexc weighs colour samples by Rec. 601 luma (0.299, 0.587, 0.114); `lumacoeffs` is not used");
+}
+
+}  // namespace
+
+bool isMaterialXFile(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".mtlx";
+}
+
+ParseResult parseMaterialX(std::string_view text, const std::filesystem::path& file) {
+    ParseResult result;
+    pugi::xml_document doc;
+    pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
+    if (!parsed) {
+        TextPos p = textPosition(text, size_t(std::max<ptrdiff_t>(parsed.offset, 0)));
+        result.diagnostics.push_back(
+            Diagnostic::make(Code::XmlSyntax, {file.string(), p.line, p.col}, "", std::string("invalid XML: ") + parsed.description()));
+        return result;
+    }
+    Reader reader(text, file, doc.document_element());
+    std::optional<json> material = reader.run();
+    result.diagnostics = std::move(reader.diags);
+    // Without a slot, what the reader said is the whole story (the JSON rules would add "no slots").
+    if (!material || (hasErrors(result.diagnostics) && (*material)["slots"].empty())) return result;
+    ParseResult checked = parseMaterialJson(material->dump(), file);
+    for (const Diagnostic& d : checked.diagnostics) result.diagnostics.push_back(reader.relocate(d));
+    if (!hasErrors(result.diagnostics)) result.material = std::move(checked.material);
+    return result;
+}
+
+}  // namespace hexc
