@@ -1,5 +1,7 @@
-// hexc: a thin command line over libhexc: compile (cli/build), render and preview (cli/render), library.
+// hexc: a thin command line over libhexc: compile (cli/build), render and preview (cli/render), library,
+// export-mtlx (cli/export).
 #include "build.h"
+#include "export.h"
 #include "library.h"
 #include "options.h"
 #include "render.h"
@@ -11,6 +13,7 @@ int main(int argc, char** argv) {
     if (!args.empty() && args[0] == "render") return cli::renderCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "preview") return cli::previewCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "library") return cli::libraryCommand({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "export-mtlx") return cli::exportCommand({args.begin() + 1, args.end()});
     cli::Arguments a;
     if (std::optional<int> done = cli::parseArguments(args, a)) return *done;
     return cli::buildCommand(a);

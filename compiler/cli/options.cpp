@@ -14,13 +14,14 @@ namespace {
 
 const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V, HLSL, GLSL and MSL
 
-  hexc MATERIAL.json|SCENE.json [MORE.json ...] -o DIR [options]
+  hexc MATERIAL.json|MATERIAL.mtlx|SCENE.json [MORE ...] -o DIR [options]
   hexc render MATERIAL.json -o IMAGE.{pfm,png} [options]   (hexc render --help)
   hexc preview MATERIAL.json -o PREVIEW.png [--cell N]     (hexc preview --help)
   hexc library --target hlsl|glsl|msl|spirv-asm -o DIR   (hexc library --help)
+  hexc export-mtlx MATERIAL.json -o MATERIAL.mtlx          (hexc export-mtlx --help)
 
-Reads each material (JSON, see docs/material-format.md), injects hex-tiling into every texture slot of
-its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:
+Reads each material (JSON, docs/material-format.md, or MaterialX, docs/materialx.md), injects hex-tiling
+into every texture slot of its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:
   DIR/<name>.frag.spv  .frag.hlsl  .frag.glsl  .frag.metal  and  DIR/<name>.manifest.json
   (with --vertex also DIR/<name>.vert.*, a pass-through vertex stage feeding the fragment shader;
    with --emit-generated also DIR/<name>.generated.frag, the Vulkan GLSL hexc generated and compiled)

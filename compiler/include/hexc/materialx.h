@@ -1,6 +1,6 @@
 #pragma once
 // MaterialX documents in and out (docs/materialx.md): a .mtlx file whose surface shader reads hex-tiled (or plain)
-// images is a hexc material.
+// images is a hexc material, and a hexc material can be written as one, for MaterialX tools to preview.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -16,5 +16,15 @@ bool isMaterialXFile(const std::filesystem::path& file);
 // The material a MaterialX document means, validated by the same rules as JSON; diagnostics point at the
 // document's elements (file:line:col and the element's name path).
 ParseResult parseMaterialX(std::string_view text, const std::filesystem::path& file);
+
+struct MaterialXExport {
+    std::optional<std::string> document;  // set only when there are no errors
+    Diagnostics diagnostics;
+};
+
+// The MaterialX document of `m`, to be written at `outFile` (texture and template paths are made relative to its
+// folder). Settings MaterialX has no input for are kept as hexc_* attributes, so that reading the document back
+// gives the same shaders; a slot no surface shader input can carry is an error.
+MaterialXExport exportMaterialX(const Material& m, const std::filesystem::path& outFile);
 
 }  // namespace hexc
