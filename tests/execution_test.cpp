@@ -385,9 +385,9 @@ INSTANTIATE_TEST_SUITE_P(Exec, NormalPath,
 
 // ---- rock's slots, one at a time, from other outputs ---------------------------------------------------------
 
-// materials/rock.json with only the slot `slotName`, its settings as rock gives them.
-Material rockWith(const std::string& slotName) {
-    ParseResult rock = parseMaterialFile("materials/rock.json");
+// A material file (rock by default) with only the slot `slotName`, its settings as the file gives them.
+Material rockWith(const std::string& slotName, const std::string& file = "materials/rock.json") {
+    ParseResult rock = parseMaterialFile(file);
     if (!rock.material) throw std::runtime_error(formatAll(rock.diagnostics));
     Material one = *rock.material;
     one.slots.erase(std::remove_if(one.slots.begin(), one.slots.end(), [&](const Slot& s) { return s.name != slotName; }), one.slots.end());
@@ -417,6 +417,27 @@ TEST_P(DebugOutputs, RocksSlotsMatchTheReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Exec, DebugOutputs, testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl),
+                         [](const auto& info) { return targetName(info.param); });
+
+// ---- MaterialX documents ---------------------------------------------------------------------------------------
+
+// Each slot of the hand-written MaterialX documents (docs/materialx.md), as hexc reads them, on every executed target:
+// the same reference and tolerances as JSON materials. preview_surface reads MaterialX's defaults (tile scales 0.5-2,
+// rotations over 0-360 degrees) and plain tiled and normal-mapped images.
+class MaterialXDocuments : public testing::TestWithParam<vk::ExecutedTarget> {};
+
+TEST_P(MaterialXDocuments, EverySlotMatchesTheReference) {
+    REQUIRE_VULKAN();
+    for (const std::string file : {"materials/mtlx/rock.mtlx", "materials/mtlx/preview_surface.mtlx"})
+        for (const std::string slot : {"albedo", "normal", "roughness"}) {
+            Check check = checkSlot(rockWith(slot, file), on(GetParam()));
+            report((std::filesystem::path(file).stem().string() + " " + slot).c_str(), check);
+            EXPECT_LE(check.worstRatio, 1.0) << file << " " << slot;
+        }
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, MaterialXDocuments,
+                         testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl),
                          [](const auto& info) { return targetName(info.param); });
 
 // ---- GLSL versions ------------------------------------------------------------------------------------------

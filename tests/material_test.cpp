@@ -19,14 +19,17 @@ std::vector<std::string> formatted(const ParseResult& r) {
     return out;
 }
 
-// Each file in materials/invalid/ breaks exactly one rule; the diagnostic hexc must give for it, code included,
-// sits next to it in <name>.expected (tests run from the source root).
+// Each file in materials/invalid/ (JSON) and materials/mtlx/invalid/ (MaterialX) breaks exactly one rule; the
+// diagnostic hexc must give for it, code included, sits next to it in <name>.expected (tests run from the source root).
+const std::pair<const char*, const char*> kInvalidFolders[] = {{"materials/invalid", ".json"}, {"materials/mtlx/invalid", ".mtlx"}};
+
 std::vector<std::string> invalidFiles() {
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator("materials/invalid"))
-        if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
+    std::vector<std::string> files;
+    for (const auto& [folder, extension] : kInvalidFolders)
+        for (const auto& entry : std::filesystem::directory_iterator(folder))
+            if (entry.path().extension() == extension) files.push_back(entry.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 std::string readText(const std::filesystem::path& file) {
@@ -37,24 +40,29 @@ std::string readText(const std::filesystem::path& file) {
 class InvalidMaterial : public testing::TestWithParam<std::string> {};
 
 TEST_P(InvalidMaterial, GivesExactlyItsDiagnostic) {
-    const std::string stem = "materials/invalid/" + GetParam();
-    ParseResult r = parseMaterialFile(stem + ".json");
+    std::filesystem::path file = GetParam();
+    ParseResult r = parseMaterialFile(file);
     EXPECT_FALSE(r.material.has_value());
-    std::string expected = readText(stem + ".expected");
-    ASSERT_FALSE(expected.empty()) << stem << ".expected is missing or empty";
+    std::string expected = readText(file.replace_extension(".expected"));
+    ASSERT_FALSE(expected.empty()) << file << " is missing or empty";
     EXPECT_EQ(formatted(r), std::vector<std::string>{expected.substr(0, expected.find_last_not_of('\n') + 1)});
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, InvalidMaterial, testing::ValuesIn(invalidFiles()), [](const auto& info) { return info.param; });
+// materials/invalid/x.json: x; materials/mtlx/invalid/x.mtlx: mtlx_x.
+INSTANTIATE_TEST_SUITE_P(Files, InvalidMaterial, testing::ValuesIn(invalidFiles()), [](const auto& info) {
+    const std::filesystem::path p = info.param;
+    return (p.extension() == ".mtlx" ? "mtlx_" : "") + p.stem().string();
+});
 
 TEST(InvalidMaterial, EveryExpectationHasItsFile) {
     size_t expectations = 0;
-    for (const auto& entry : std::filesystem::directory_iterator("materials/invalid"))
-        if (entry.path().extension() == ".expected") {
-            ++expectations;
-            std::filesystem::path json = entry.path();
-            EXPECT_TRUE(std::filesystem::exists(json.replace_extension(".json"))) << entry.path();
-        }
+    for (const auto& [folder, extension] : kInvalidFolders)
+        for (const auto& entry : std::filesystem::directory_iterator(folder))
+            if (entry.path().extension() == ".expected") {
+                ++expectations;
+                std::filesystem::path file = entry.path();
+                EXPECT_TRUE(std::filesystem::exists(file.replace_extension(extension))) << entry.path();
+            }
     EXPECT_EQ(expectations, invalidFiles().size());
 }
 
