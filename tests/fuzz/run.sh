@@ -1,19 +1,21 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer target for SECONDS (default 60) from a build configured with clang and -DHEXC_FUZZ=ON:
 #   tests/fuzz/run.sh build-asan 60
-# Seeds: the example, invalid and scene materials (parse, compile), the built-in templates (template) and the bare
-# KTX2 and DDS magic (texture), plus the
-# corpus each target grew in earlier runs (BUILD/fuzz-corpus/TARGET). A crash stops the run with the
+# Seeds: the example, invalid and scene materials (parse, compile), the MaterialX documents (mtlx), the built-in
+# templates (template) and the bare KTX2 and DDS magic (texture), plus the corpus each target grew in earlier runs
+# (BUILD/fuzz-corpus/TARGET). A crash stops the run with the
 # input saved as BUILD/fuzz-artifacts/TARGET/crash-*; add it to tests/fuzz/regressions/TARGET/ once fixed.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:?usage: tests/fuzz/run.sh BUILD_DIR [SECONDS]}
 seconds=${2:-60}
-for target in parse compile template texture; do
+for target in parse mtlx compile template texture; do
   corpus=$build/fuzz-corpus/$target seeds=$build/fuzz-seeds/$target artifacts=$build/fuzz-artifacts/$target
   mkdir -p "$corpus" "$seeds" "$artifacts"
   if [ "$target" = template ]; then
     cp templates/builtin/*.glsl "$seeds"/
+  elif [ "$target" = mtlx ]; then
+    cp materials/mtlx/*.mtlx materials/mtlx/invalid/*.mtlx "$seeds"/
   elif [ "$target" = texture ]; then
     printf '\001' > "$seeds/ktx2" && printf '\000' > "$seeds/dds"  # the container's magic is added by the target
   else
@@ -22,7 +24,9 @@ for target in parse compile template texture; do
   echo "fuzz_$target: ${seconds} s"
   # -rss_limit_mb: hexc's inputs are capped; a run that needs more is a finding. -timeout: one input, seconds.
   log=$build/fuzz-$target.log
-  if ! "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -dict=tests/fuzz/material.dict \
+  dict=tests/fuzz/material.dict
+  [ "$target" = mtlx ] && dict=tests/fuzz/mtlx.dict
+  if ! "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -dict="$dict" \
       -rss_limit_mb=4096 -timeout=30 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" "$seeds" > "$log" 2>&1; then
     tail -n 60 "$log"
     echo "fuzz_$target failed: the input is in $artifacts/" >&2
