@@ -509,6 +509,28 @@ void Reader::luma(xml_node input) {
                "hexc weighs colour samples by Rec. 601 luma (0.299, 0.587, 0.114); `lumacoeffs` is not used");
 }
 
+std::string hexByte(char c) {
+    const char* digits = "0123456789ABCDEF";
+    return {digits[static_cast<unsigned char>(c) >> 4], digits[static_cast<unsigned char>(c) & 15]};
+}
+
+// The offset of the first byte that does not begin or continue a well-formed UTF-8 character (pugixml passes
+// any bytes through; the JSON the document becomes must be UTF-8), if any.
+std::optional<size_t> invalidUtf8(std::string_view s) {
+    for (size_t i = 0; i < s.size();) {
+        const auto c = static_cast<unsigned char>(s[i]);
+        const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 && c >= 0xC2 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E && c <= 0xF4 ? 4 : 0;
+        if (n == 0 || i + n > s.size()) return i;
+        for (size_t k = 1; k < n; ++k)
+            if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return i;
+        const unsigned c1 = static_cast<unsigned char>(s[i + 1 < s.size() ? i + 1 : i]);
+        if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 >= 0xA0) || (c == 0xF0 && c1 < 0x90) || (c == 0xF4 && c1 >= 0x90))
+            return i;  // overlong, a surrogate, or beyond U+10FFFF
+        i += n;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 bool isMaterialXFile(const std::filesystem::path& file) {
@@ -519,6 +541,12 @@ bool isMaterialXFile(const std::filesystem::path& file) {
 
 ParseResult parseMaterialX(std::string_view text, const std::filesystem::path& file) {
     ParseResult result;
+    if (std::optional<size_t> at = invalidUtf8(text)) {
+        TextPos p = textPosition(text, *at);
+        result.diagnostics.push_back(Diagnostic::make(Code::XmlSyntax, {file.string(), p.line, p.col}, "",
+                                                      "invalid UTF-8 (byte 0x" + hexByte(text[*at]) + "); MaterialX documents are UTF-8"));
+        return result;
+    }
     pugi::xml_document doc;
     pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!parsed) {
