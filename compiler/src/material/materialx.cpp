@@ -165,7 +165,10 @@ private:
                        "expected surfaceshader or displacementshader");
                 continue;
             }
-            if (xml_node shader = source(input)) surface(shader, m);
+            if (!connected(input))
+                report(Code::MaterialXUnsupported, input, "`" + name + "` is not connected to a shader", "give it a nodename");
+            else if (xml_node shader = source(input))
+                surface(shader, m);
         }
         if (m["slots"].empty()) at("/slots", material);
         return m;
@@ -229,7 +232,7 @@ private:
 
     std::optional<int> extractIndex(xml_node node, const std::string& p) {
         xml_node index = node.find_child_by_attribute("input", "name", "index");
-        json v = index ? value(index.attribute("value").value()) : json(0);
+        json v = inputValue(index, 0.0);
         if (v.is_number() && v.get<double>() >= 0 && v.get<double>() <= 3 && v.get<double>() == std::floor(v.get<double>()))
             return int(v.get<double>());
         report(Code::MaterialXUnsupported, index ? index : node, "<extract> `index` must be a channel, 0 to 3");
