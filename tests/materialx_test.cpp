@@ -227,3 +227,30 @@ TEST(MaterialX, TheCommandLineExportsAndCompilesDocuments) {
     EXPECT_FALSE(std::filesystem::exists(dir / "bad.mtlx"));
     EXPECT_EQ(runHexc("export-mtlx materials/rock.json -o " + (dir / "rock.xml").string()), 2);
 }
+
+// A document of several materials: the compiler makes each one's shaders; what reads one material says why not.
+TEST(MaterialX, EveryMaterialOfADocumentIsCompiled) {
+    std::string text = fileText("materials/mtlx/rock.mtlx");
+    const std::string prefix = std::filesystem::absolute("materials/textures").string() + "/";
+    text.replace(text.find("../textures/"), 12, prefix);
+    const std::string second = R"(<surfacematerial name="rock_copy" type="material">
+    <input name="surfaceshader" type="surfaceshader" nodename="SR_rock" />
+  </surfacematerial>
+</materialx>)";
+    text.replace(text.find("</materialx>"), 12, second);
+    const std::filesystem::path doc = scratch("two.mtlx");
+    std::ofstream(doc, std::ios::binary) << text;
+    std::vector<ParseResult> all = parseMaterialXDocument(text, doc);
+    ASSERT_EQ(all.size(), 2u);
+    ASSERT_TRUE(all[0].material && all[1].material);
+    EXPECT_EQ(all[1].material->name, "rock_copy");
+    std::string err;
+    const std::filesystem::path out = scratch("two");
+    EXPECT_EQ(test::runHexc(doc.string() + " -o " + out.string() + " --no-cache", &err), 0) << err;
+    // The same code under another name: OpenGL GLSL's entry point is `main` for both.
+    EXPECT_TRUE(withoutBanner(fileText(out / "rock.frag.glsl")) == withoutBanner(fileText(out / "rock_copy.frag.glsl")));
+    EXPECT_EQ(test::runHexc("export-mtlx " + doc.string() + " -o " + scratch("one.mtlx").string(), &err), 1);
+    EXPECT_NE(err.find("error[HX118]: several <surfacematerial> elements (`rock`, `rock_copy`) where one material is read"),
+              std::string::npos)
+        << err;
+}

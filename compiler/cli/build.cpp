@@ -16,6 +16,7 @@
 #include "progress.h"
 #include "hexc/cache.h"
 #include "hexc/files.h"
+#include "hexc/materialx.h"
 #include "hexc/hash.h"
 #include "hexc/scene.h"
 #include "hexc/spirv.h"
@@ -135,14 +136,19 @@ Inputs readInputs(const Arguments& a) {
             addScene(path, *text, a, in);
             continue;
         }
-        ParseResult parsed = text ? parseMaterial(*text, path) : ParseResult{};
+        // A MaterialX document may hold several materials: each is a job.
+        std::vector<ParseResult> parsed = !text                   ? std::vector<ParseResult>(1)
+                                          : isMaterialXFile(path) ? parseMaterialXDocument(*text, path)
+                                                                  : std::vector<ParseResult>{parseMaterial(*text, path)};
         if (!text)
-            parsed.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {path.string()}, "", "cannot read material file: " + why));
-        if (!printDiagnostics(parsed.diagnostics, a) || !parsed.material) {
-            in.failed = true;
-            continue;
+            parsed[0].diagnostics.push_back(
+                Diagnostic::make(Code::InputUnreadable, {path.string()}, "", "cannot read material file: " + why));
+        for (ParseResult& p : parsed) {
+            if (printDiagnostics(p.diagnostics, a) && p.material)
+                in.jobs.push_back({std::move(*p.material)});
+            else
+                in.failed = true;
         }
-        in.jobs.push_back({std::move(*parsed.material)});
     }
     return in;
 }

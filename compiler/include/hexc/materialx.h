@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hexc/material.h"
 
@@ -15,7 +16,11 @@ bool isMaterialXFile(const std::filesystem::path& file);
 
 // The material a MaterialX document means, validated by the same rules as JSON; diagnostics point at the
 // document's elements (file:line:col and the element's name path).
+// The document must hold one <surfacematerial>.
 ParseResult parseMaterialX(std::string_view text, const std::filesystem::path& file);
+// Every <surfacematerial> of the document, each read and validated on its own (what `hexc DOC.mtlx -o DIR` compiles);
+// a problem of the whole document (XML, no material) is the only result.
+std::vector<ParseResult> parseMaterialXDocument(std::string_view text, const std::filesystem::path& file);
 
 struct MaterialXExport {
     std::optional<std::string> document;  // set only when there are no errors

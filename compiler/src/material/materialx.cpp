@@ -114,28 +114,26 @@ class Reader {
 public:
     Reader(std::string_view text, const std::filesystem::path& file, xml_node root) : text_(text), file_(file), root_(root) {}
 
-    Diagnostics diags;
-
-    // The JSON material of the document's surfacematerial; nullopt after reporting why there is none.
-    std::optional<json> run() {
-        if (std::string_view(root_.name()) != "materialx") {
-            report(Code::MaterialXUnsupported, root_, "expected a <materialx> document, got <" + std::string(root_.name()) + ">");
-            return std::nullopt;
-        }
-        std::vector<xml_node> materials;
-        for (xml_node n : root_.children("surfacematerial")) materials.push_back(n);
-        if (materials.size() != 1) {
-            std::string names;
-            for (xml_node n : materials) names += std::string(names.empty() ? "" : ", ") + "`" + n.attribute("name").value() + "`";
-            report(Code::MaterialXUnsupported, root_,
-                   materials.empty() ? "no <surfacematerial>: hexc compiles one material per document"
-                                     : "several <surfacematerial> elements (" + names + "): hexc compiles one material per document",
-                   materials.empty() ? "" : "split the document, one material each");
-            return std::nullopt;
-        }
-        return material(materials[0]);
+    // The material a <surfacematerial> means, checked by the JSON rules.
+    ParseResult read(xml_node surfacematerial) {
+        ParseResult result;
+        json m = material(surfacematerial);
+        result.diagnostics = std::move(diags_);
+        // Without a slot, what the reader said is the whole story (the JSON rules would add "no slots").
+        if (hasErrors(result.diagnostics) && m["slots"].empty()) return result;
+        ParseResult checked = parseMaterialJson(m.dump(), file_);
+        for (const Diagnostic& d : checked.diagnostics) result.diagnostics.push_back(relocate(d));
+        if (!hasErrors(result.diagnostics)) result.material = std::move(checked.material);
+        return result;
     }
 
+    // A problem of the whole document, as its only result.
+    std::vector<ParseResult> problem(xml_node node, std::string message, std::string hint = {}) {
+        report(Code::MaterialXUnsupported, node, std::move(message), std::move(hint));
+        return {ParseResult{std::nullopt, std::move(diags_)}};
+    }
+
+private:
     // A diagnostic of the JSON rules, moved onto the element its value came from.
     Diagnostic relocate(const Diagnostic& d) const {
         if (d.loc.file != file_.string()) return d;
@@ -148,7 +146,6 @@ public:
         return Diagnostic::make(d.code, {file_.string(), p.pos.line, p.pos.col}, p.path, d.message, d.hint);
     }
 
-private:
     json material(xml_node material) {
         json m = {{"name", material.attribute("name").value()}, {"slots", json::array()}};
         at("", material);
@@ -279,13 +276,14 @@ private:
     void at(const std::string& pointer, xml_node node, const char* attribute = nullptr) { places_[pointer] = place(node, attribute); }
     void report(Code code, xml_node node, std::string message, std::string hint = {}) {
         Place p = place(node);
-        diags.push_back(Diagnostic::make(code, {file_.string(), p.pos.line, p.pos.col}, p.path, std::move(message), std::move(hint)));
+        diags_.push_back(Diagnostic::make(code, {file_.string(), p.pos.line, p.pos.col}, p.path, std::move(message), std::move(hint)));
     }
 
     std::string_view text_;
     std::filesystem::path file_;
     xml_node root_;
     std::map<std::string, Place> places_;  // JSON pointer -> where its value came from
+    Diagnostics diags_;
 };
 
 // The node an input is connected to: `nodename` in the input's own graph, or a nodegraph's output.
@@ -542,31 +540,48 @@ bool isMaterialXFile(const std::filesystem::path& file) {
     return ext == ".mtlx";
 }
 
-ParseResult parseMaterialX(std::string_view text, const std::filesystem::path& file) {
-    ParseResult result;
-    if (std::optional<size_t> at = invalidUtf8(text)) {
-        TextPos p = textPosition(text, *at);
-        result.diagnostics.push_back(Diagnostic::make(Code::XmlSyntax, {file.string(), p.line, p.col}, "",
-                                                      "invalid UTF-8 (byte 0x" + hexByte(text[*at]) + "); MaterialX documents are UTF-8"));
-        return result;
-    }
+namespace {
+
+// Every <surfacematerial> of a document, or the one problem that stops reading it; with `one`, a document of
+// several materials is such a problem.
+std::vector<ParseResult> readDocument(std::string_view text, const std::filesystem::path& file, bool one) {
+    auto failed = [&](Code code, size_t offset, std::string message) {
+        TextPos p = textPosition(text, offset);
+        return std::vector<ParseResult>{{std::nullopt, {Diagnostic::make(code, {file.string(), p.line, p.col}, "", std::move(message))}}};
+    };
+    if (std::optional<size_t> at = invalidUtf8(text))
+        return failed(Code::XmlSyntax, *at, "invalid UTF-8 (byte 0x" + hexByte(text[*at]) + "); MaterialX documents are UTF-8");
     pugi::xml_document doc;
     pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
-    if (!parsed) {
-        TextPos p = textPosition(text, size_t(std::max<ptrdiff_t>(parsed.offset, 0)));
-        result.diagnostics.push_back(
-            Diagnostic::make(Code::XmlSyntax, {file.string(), p.line, p.col}, "", std::string("invalid XML: ") + parsed.description()));
-        return result;
+    if (!parsed)
+        return failed(Code::XmlSyntax, size_t(std::max<ptrdiff_t>(parsed.offset, 0)), std::string("invalid XML: ") + parsed.description());
+    xml_node root = doc.document_element();
+    if (std::string_view(root.name()) != "materialx")
+        return Reader(text, file, root).problem(root, "expected a <materialx> document, got <" + std::string(root.name()) + ">");
+    std::vector<xml_node> materials;
+    std::string names;
+    for (xml_node n : root.children("surfacematerial")) {
+        materials.push_back(n);
+        names += std::string(names.empty() ? "" : ", ") + "`" + n.attribute("name").value() + "`";
     }
-    Reader reader(text, file, doc.document_element());
-    std::optional<json> material = reader.run();
-    result.diagnostics = std::move(reader.diags);
-    // Without a slot, what the reader said is the whole story (the JSON rules would add "no slots").
-    if (!material || (hasErrors(result.diagnostics) && (*material)["slots"].empty())) return result;
-    ParseResult checked = parseMaterialJson(material->dump(), file);
-    for (const Diagnostic& d : checked.diagnostics) result.diagnostics.push_back(reader.relocate(d));
-    if (!hasErrors(result.diagnostics)) result.material = std::move(checked.material);
-    return result;
+    if (materials.empty()) return Reader(text, file, root).problem(root, "no <surfacematerial>: the document holds no material");
+    if (one && materials.size() > 1)
+        return Reader(text, file, root)
+            .problem(root, "several <surfacematerial> elements (" + names + ") where one material is read",
+                     "`hexc DOCUMENT.mtlx -o DIR` compiles them all; split the document for render, preview, export and scenes");
+    std::vector<ParseResult> out;
+    for (xml_node m : materials) out.push_back(Reader(text, file, root).read(m));
+    return out;
+}
+
+}  // namespace
+
+ParseResult parseMaterialX(std::string_view text, const std::filesystem::path& file) {
+    return std::move(readDocument(text, file, true).front());
+}
+
+std::vector<ParseResult> parseMaterialXDocument(std::string_view text, const std::filesystem::path& file) {
+    return readDocument(text, file, false);
 }
 
 }  // namespace hexc
