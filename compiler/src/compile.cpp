@@ -16,6 +16,8 @@
 #include "hexc/cache.h"
 #include "hexc/compiler.h"
 #include "hexc/hash.h"
+#include "hexc/histogram.h"
+#include "hexc/image.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
 #include "spirv/combined.h"
@@ -263,6 +265,24 @@ void withEntryPoint(ShaderCode& code, const std::string& entry) {
     }
 }
 
+// The histogram slots' derived textures (hexc/histogram.h), as PFM files: float32 keeps T and its inverse exact, and
+// hexc reads and writes PFM byte for byte. A texture that cannot be read stops the compile.
+void addHistogramFiles(const Material& material, const ShaderPlan& plan, CompileResult& result) {
+    for (size_t i : plan.luts) {
+        const Slot& s = *plan.slots[i].slot;
+        Texture source;
+        try {
+            source = loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb);
+        } catch (const TextureError& e) {
+            throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
+        }
+        const HistogramTransform t = histogramTransform(source, s);
+        for (const auto& [which, texture] : {std::pair{"gaussian", &t.gaussian}, std::pair{"lut", &t.lut}})
+            result.files.push_back(
+                {histogramFileName(material.name, s.name, which), pfmBytes({texture->width, texture->height, texture->rgba32f})});
+    }
+}
+
 void run(const Material& material, const CompileOptions& options, CompileResult& result) {
     ShaderPlan plan = planShader(material, options);
     append(result.diagnostics, plan.diagnostics);
@@ -293,6 +313,7 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     if (options.vertex) manifest["vertex"] = emitVertexStage(material, plan, options, targets, result);
     if (!options.manifestPathsFrom.empty()) manifest["source"] = sourcePaths(material, plan, options);
     if (options.emitGenerated) result.files.push_back({material.name + ".generated.frag", result.glsl});
+    addHistogramFiles(material, plan, result);
     const std::string top = banner(material, plan, options);
     for (OutputFile& f : result.files)
         if (!f.name.ends_with(".spv") && !f.name.ends_with(".json")) withBanner(f.contents, top);
