@@ -313,10 +313,10 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     if (options.vertex) manifest["vertex"] = emitVertexStage(material, plan, options, targets, result);
     if (!options.manifestPathsFrom.empty()) manifest["source"] = sourcePaths(material, plan, options);
     if (options.emitGenerated) result.files.push_back({material.name + ".generated.frag", result.glsl});
-    addHistogramFiles(material, plan, result);
     const std::string top = banner(material, plan, options);
     for (OutputFile& f : result.files)
         if (!f.name.ends_with(".spv") && !f.name.ends_with(".json")) withBanner(f.contents, top);
+    addHistogramFiles(material, plan, result);  // images: no banner
     result.files.push_back({material.name + ".manifest.json", manifest.dump(2) + "\n"});
     std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
 }
