@@ -1201,7 +1201,7 @@ TEST(PreviewCommand, WritesALabelledSheet) {
     std::filesystem::remove(out);
     ASSERT_EQ(runHexc("preview materials/rock.json --cell 64 -o " + out.string()), 0);
     Texture sheet = loadTexture(out, false);
-    EXPECT_EQ(sheet.width, 3 * 64);
+    EXPECT_EQ(sheet.width, 4 * 64);  // plain, falloff, histogram, weights
     EXPECT_EQ(sheet.height, 2 * (64 + 28));
 }
 
