@@ -305,26 +305,33 @@ Check checkColor(const Material& m, bool minified, const Draw& draw) {
     return checkAgainstReference(m, vk::RenderOutput::Albedo, view, minified ? 2 : 0, draw, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
 }
 
-class ColorPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
-
-TEST_P(ColorPath, MatchesReference) {
-    REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
-    Check check = checkColor(material(c.slot, c.hextiling), c.minified, on(target));
-    report(c.name, check);
-    EXPECT_LE(check.worstRatio, 1.0);
-}
-
 std::string targetName(vk::ExecutedTarget t) {
     return t == vk::ExecutedTarget::Spirv ? "spirv" : t == vk::ExecutedTarget::Hlsl ? "hlsl" : "glsl";
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, ColorPath,
-                         testing::Combine(testing::ValuesIn(kColorCases),
-                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) {
-                             return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
-                         });
+// A case on one executed target: the parameter of the path suites below, named "<case>_<target>".
+using CaseOn = std::tuple<Case, vk::ExecutedTarget>;
+std::string caseName(const testing::TestParamInfo<CaseOn>& info) {
+    return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
+}
+const auto kExecutedTargets = testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl);
+
+// The case's material drawn on its target, against the reference through `check`: every pixel within its tolerance.
+void expectMatch(const CaseOn& param, Check (*check)(const Material&, bool, const Draw&)) {
+    const auto& [c, target] = param;
+    Check result = check(material(c.slot, c.hextiling), c.minified, on(target));
+    report(c.name, result);
+    EXPECT_LE(result.worstRatio, 1.0);
+}
+
+class ColorPath : public testing::TestWithParam<CaseOn> {};
+
+TEST_P(ColorPath, MatchesReference) {
+    REQUIRE_VULKAN();
+    expectMatch(GetParam(), checkColor);
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, ColorPath, testing::Combine(testing::ValuesIn(kColorCases), kExecutedTargets), caseName);
 
 // ---- Histogram blend ---------------------------------------------------------------------------------------------
 
@@ -413,22 +420,14 @@ const Case kHistogramCases[] = {
      true},
 };
 
-class HistogramPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
+class HistogramPath : public testing::TestWithParam<CaseOn> {};
 
 TEST_P(HistogramPath, MatchesReference) {
     REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
-    Check check = checkHistogram(material(c.slot, c.hextiling), c.minified, on(target));
-    report(c.name, check);
-    EXPECT_LE(check.worstRatio, 1.0);
+    expectMatch(GetParam(), checkHistogram);
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, HistogramPath,
-                         testing::Combine(testing::ValuesIn(kHistogramCases),
-                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) {
-                             return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(Exec, HistogramPath, testing::Combine(testing::ValuesIn(kHistogramCases), kExecutedTargets), caseName);
 
 // ---- Normal path --------------------------------------------------------------------------------------------
 const Case kNormalCases[] = {
@@ -483,22 +482,14 @@ Check checkNormal(const Material& m, bool minified, const Draw& draw) {
                      : checkAgainstReference(m, vk::RenderOutput::Derivative, view, minified ? 2 : 0, draw, ed, std::sqrt(2.0) * ed, 2);
 }
 
-class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
+class NormalPath : public testing::TestWithParam<CaseOn> {};
 
 TEST_P(NormalPath, MatchesReference) {
     REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
-    Check check = checkNormal(material(c.slot, c.hextiling), c.minified, on(target));
-    report(c.name, check);
-    EXPECT_LE(check.worstRatio, 1.0);
+    expectMatch(GetParam(), checkNormal);
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, NormalPath,
-                         testing::Combine(testing::ValuesIn(kNormalCases),
-                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) {
-                             return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(Exec, NormalPath, testing::Combine(testing::ValuesIn(kNormalCases), kExecutedTargets), caseName);
 
 // ---- rock's slots, one at a time, from other outputs ---------------------------------------------------------
 
