@@ -94,6 +94,9 @@ const std::vector<Method>& methods() {
         {"stable-rot-gain-checker", with(fullQuality(HashMode::Stable), {{"mask", "checker"}})},
         {"stable-rot-gain-noise", with(fullQuality(HashMode::Stable), {{"mask", "noise"}, {"maskscale", 4}})},
         {"stable-rot-gain-noise3", with(fullQuality(HashMode::Stable), {{"mask", "noise3"}, {"maskscale", 4}})},
+        // The tiles almost without a blend (exponent 64: borders a few pixels wide; no falloff metric): the contrast the
+        // tiles' own sampling keeps in these views, which the blends below lose more or less of.
+        {"stable-rot-unblended", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.5}, {"exponent", 64}, {"falloffcontrast", 0}}},
         // Heitz and Neyret's histogram-preserving blend on the albedo and roughness (the normal map keeps its own).
         {"stable-rot-gain-histogram", with(fullQuality(HashMode::Stable), {{"blend", "histogram"}})},
         // Albedo and normal blended by the roughness map's values as heights.
