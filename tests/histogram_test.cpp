@@ -199,6 +199,11 @@ TEST(Histogram, HexcWritesTheTransformAndRebuildsWhenTheTexturesBytesChange) {
     EXPECT_EQ(lut.rgba32f, h.lut.rgba32f);
     for (const char* file : {"m.albedo.gaussian.pfm", "m.albedo.lut.pfm"})
         EXPECT_EQ(bytesOf(dir / "out" / file), bytesOf(dir / "again" / file));
+    // A build system learns of them from the depfile, up to date or not.
+    ASSERT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / "out").string() + " --depfile " + (dir / "m.d").string(), &err), 0)
+        << err;
+    const std::string depfile = bytesOf(dir / "m.d"), targets = depfile.substr(0, depfile.find(':'));
+    for (const char* file : {"m.albedo.gaussian.pfm", "m.albedo.lut.pfm"}) EXPECT_NE(targets.find(file), std::string::npos) << targets;
 
     ASSERT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / "out").string(), &err), 0) << err;
     EXPECT_NE(err.find("0 compiled, 1 up to date"), std::string::npos) << err;
