@@ -403,26 +403,27 @@ Check checkHistogram(const Material& m, bool minified, const Draw& draw) {
     return checkHistogram(m, minified ? kMinified : kMagnified, minified ? 2 : 0, draw);
 }
 
+// The blend set for the whole material, as a slot inherits it.
+const char* const kHistogramBlend = R"({"blend": "histogram"})";
+const char* const kRockAlbedo = R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4}})";
+
 const Case kHistogramCases[] = {
-    {"histogram_color",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "blend": "histogram"}})",
-     false},
-    {"histogram_color_minified",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "blend": "histogram"}})",
-     true},
+    {"histogram_color", kRockAlbedo, false, kHistogramBlend},
+    {"histogram_color_minified", kRockAlbedo, true, kHistogramBlend},
     // A structured texture, the gain, and a linear colour space.
     {"histogram_tiles_gain",
-     R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "blend": "histogram", "falloff": 0.7}})",
-     false},
+     R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})",
+     false, kHistogramBlend},
     {"histogram_checker_transforms",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "blend": "histogram", "mask": "checker", "rotationrange": [0, 360], "offset": 0.5}})",
-     false},
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "rotationrange": [0, 360], "offset": 0.5}})",
+     false, kHistogramBlend},
+    // The slot's own setting.
     {"histogram_scalar",
      R"({"name": "height", "kind": "scalar", "texture": "textures/rock_height.png", "hextiling": {"tiling": 4, "blend": "histogram"}})",
      false},
     {"histogram_scalar_green_minified",
-     R"({"name": "rough", "kind": "scalar", "channel": "g", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "blend": "histogram", "exponent": 3}})",
-     true},
+     R"({"name": "rough", "kind": "scalar", "channel": "g", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "exponent": 3}})",
+     true, kHistogramBlend},
 };
 
 class HistogramPath : public testing::TestWithParam<CaseOn> {};
