@@ -178,9 +178,17 @@ struct Row : Timed {
     Contrast contrast{kNaN, kNaN};
 };
 
+// A row's contrast in its view moved by (shift, shift) uv.
+struct Shifted {
+    const Row* row;
+    double shift;
+    Contrast contrast;
+};
+
 struct Results {
     std::string machine, settings;
     std::vector<Row> rows;
+    std::vector<Shifted> shifted;  // contrast at other places (shiftedContrast)
     std::vector<Timed> opTimings;  // bench/op-cost/<name>.glsl
     double referenceSeconds = 0, totalSeconds = 0;
 };
@@ -316,6 +324,26 @@ References references(const fs::path& materialDir) {
     return refs;
 }
 
+// Contrast is a statistic of the view as well as of the blend: how many tiles it holds (magnified: about 25), and whether
+// its pixels land on texel centres (minified: plain tiling's do at the bench's place, so its samples are unfiltered).
+// The same measure with the views moved elsewhere on the plane, for plain tiling, the falloff and histogram blends and
+// the unblended tiles.
+const std::vector<double> kShifts = {3.1, 7.7, 12.3};
+const std::vector<std::string> kShiftedMethods = {"plain", "stable-rot-gain", "stable-rot-unblended", "stable-rot-gain-histogram"};
+
+void shiftedContrast(vk::Runner& runner, const References& refs, Results& results) {
+    for (const Row& row : results.rows) {
+        if (!row.failure.empty() || std::find(kShiftedMethods.begin(), kShiftedMethods.end(), row.name) == kShiftedMethods.end()) continue;
+        for (double shift : kShifts) {
+            View view = kViews[row.view].view;
+            for (double& uv : view.uvRect) uv += shift;
+            const Image image = vk::render(runner, row.material, vk::RenderOutput::Albedo, "albedo", view, vk::ExecutedTarget::Spirv, 0,
+                                           nullptr, {}, row.method->compile);
+            results.shifted.push_back({&row, shift, contrast(luminances(image), refs.sourceLuminance[row.view])});
+        }
+    }
+}
+
 void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) {
     const auto start = std::chrono::steady_clock::now();
     const References refs = references(materialDir);
@@ -377,6 +405,8 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
             row.contrast = contrast(luminances(image), refs.sourceLuminance[row.view]);
         });
     }
+    std::cout << "  contrast at other places" << std::endl;
+    shiftedContrast(runner, refs, results);
     for (Row& row : results.rows)
         for (const Row& plain : results.rows)
             if (plain.name == "plain" && plain.view == row.view) row.ratio = row.medianMs / plain.medianMs;
@@ -474,10 +504,29 @@ std::string breakdownTable(const Results& results) {
     return md;
 }
 
+// Variance ratio / EMD of the shifted views, beside the bench's place.
+std::string shiftedTable(const Results& r) {
+    std::string md = "| view | method | at the bench's place |", rule = "|---|---|---|";
+    for (double shift : kShifts) md += strf(" moved by %g |", shift), rule += "---|";
+    md += "\n" + rule + "\n";
+    const Row* last = nullptr;
+    for (const Shifted& s : r.shifted) {
+        if (s.row != last)
+            md += (last ? "\n" : "") + strf("| %s | %s | %s / %s |", kViews[s.row->view].name.c_str(), s.row->name.c_str(),
+                                            num(s.row->contrast.varianceRatio, "%.3f").c_str(),
+                                            num(s.row->contrast.histogramEmd, "%.4f").c_str());
+        md += strf(" %s / %s |", num(s.contrast.varianceRatio, "%.3f").c_str(), num(s.contrast.histogramEmd, "%.4f").c_str());
+        last = s.row;
+    }
+    return md + (last ? "\n" : "");
+}
+
 std::string markdown(const Results& r) {
     std::string md =
         "# hexc shader benchmark\n\n" + r.machine + "\n" + r.settings + "\n## Run time, error, contrast\n\n" + mainTable(r) + "\n";
     for (size_t v = 0; v < kViews.size(); ++v) md += "- " + targetLine(r, v) + "\n";
+    md += "\n## Contrast at other places\n\nVariance ratio / histogram EMD of the albedo with the views moved by (d, d) uv.\n\n" +
+          shiftedTable(r);
     md +=
         "\n## Operations per pixel\n\nScalar operations counted in the SPIR-V (a vec3 pow counts 3; there are no loops, so each runs at "
         "most once per pixel).\n\n" +
