@@ -183,16 +183,20 @@ void writePng(const Texture& t, const fs::path& file) {
 }
 
 // hexc writes the transform (PFM drops alpha, which is 1), the same bytes every time; a build runs the precomputation
-// again when the texture's bytes change, and only then.
+// again when the texture's bytes change, and only then: a material changed otherwise takes it from the cache.
 TEST(Histogram, HexcWritesTheTransformAndRebuildsWhenTheTexturesBytesChange) {
     const fs::path dir = fs::temp_directory_path() / "hexc_histogram_cli";
     fs::remove_all(dir);
     fs::create_directories(dir);
     writePng(oddTexture(true), dir / "odd.png");
-    std::ofstream(dir / "m.json") << R"({"name": "m", "template": "unlit", "hextiling": {"blend": "histogram"},
-        "slots": [{"name": "albedo", "kind": "color", "texture": "odd.png"}]})";
+    auto writeMaterial = [&](double tiling) {
+        std::ofstream(dir / "m.json") << R"({"name": "m", "template": "unlit", "hextiling": {"blend": "histogram", "tiling": )" << tiling
+                                      << R"(}, "slots": [{"name": "albedo", "kind": "color", "texture": "odd.png"}]})";
+    };
+    writeMaterial(4);
     std::string err;
-    for (const char* out : {"out", "again"}) ASSERT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / out).string(), &err), 0) << err;
+    const std::string build = (dir / "m.json").string() + " -v --cache-dir " + (dir / "cache").string() + " -o ";
+    for (const char* out : {"out", "again"}) ASSERT_EQ(runHexc(build + (dir / out).string(), &err), 0) << err;
     const HistogramTransform h = histogramTransform(loadTexture(dir / "odd.png", true), slotOf(SlotKind::Color));
     const Texture lut = readBack(dir / "out" / "m.albedo.lut.pfm");
     EXPECT_EQ(readBack(dir / "out" / "m.albedo.gaussian.pfm").rgba32f, h.gaussian.rgba32f);
@@ -200,19 +204,23 @@ TEST(Histogram, HexcWritesTheTransformAndRebuildsWhenTheTexturesBytesChange) {
     for (const char* file : {"m.albedo.gaussian.pfm", "m.albedo.lut.pfm"})
         EXPECT_EQ(bytesOf(dir / "out" / file), bytesOf(dir / "again" / file));
     // A build system learns of them from the depfile, up to date or not.
-    ASSERT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / "out").string() + " --depfile " + (dir / "m.d").string(), &err), 0)
-        << err;
+    ASSERT_EQ(runHexc(build + (dir / "out").string() + " --depfile " + (dir / "m.d").string(), &err), 0) << err;
+    EXPECT_NE(err.find("0 compiled, 1 up to date"), std::string::npos) << err;
     const std::string depfile = bytesOf(dir / "m.d"), targets = depfile.substr(0, depfile.find(':'));
     for (const char* file : {"m.albedo.gaussian.pfm", "m.albedo.lut.pfm"}) EXPECT_NE(targets.find(file), std::string::npos) << targets;
 
-    ASSERT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / "out").string(), &err), 0) << err;
-    EXPECT_NE(err.find("0 compiled, 1 up to date"), std::string::npos) << err;
-    // Other pixels, the same size: the shaders are the same, the derived textures are not.
+    // Another tiling: the material compiles again, its shader code (tiling is a uniform) and its tables come from the cache.
+    writeMaterial(3);
+    ASSERT_EQ(runHexc(build + (dir / "out").string(), &err), 0) << err;
+    EXPECT_NE(err.find("1 compiled, 0 up to date"), std::string::npos) << err;
+    EXPECT_NE(err.find("shader code: 0 compiled, 2 from the cache"), std::string::npos) << err;
+    // Other pixels, the same size: the shader code is the same, the derived textures are computed again.
     Texture other = oddTexture(false);
     for (uint8_t& b : other.rgba8) b = uint8_t(255 - b);
     writePng(other, dir / "odd.png");
-    ASSERT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / "out").string(), &err), 0) << err;
+    ASSERT_EQ(runHexc(build + (dir / "out").string(), &err), 0) << err;
     EXPECT_NE(err.find("1 compiled, 0 up to date"), std::string::npos) << err;
+    EXPECT_NE(err.find("shader code: 1 compiled, 1 from the cache"), std::string::npos) << err;
     EXPECT_NE(readBack(dir / "out" / "m.albedo.lut.pfm").rgba32f, lut.rgba32f);
 }
 
