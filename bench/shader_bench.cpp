@@ -94,6 +94,11 @@ const std::vector<Method>& methods() {
         {"stable-rot-gain-checker", with(fullQuality(HashMode::Stable), {{"mask", "checker"}})},
         {"stable-rot-gain-noise", with(fullQuality(HashMode::Stable), {{"mask", "noise"}, {"maskscale", 4}})},
         {"stable-rot-gain-noise3", with(fullQuality(HashMode::Stable), {{"mask", "noise3"}, {"maskscale", 4}})},
+        // The tiles almost without a blend (exponent 64: borders a few pixels wide; no falloff metric): the contrast the
+        // tiles' own sampling keeps in these views, which the blends below lose more or less of.
+        {"stable-rot-unblended", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.5}, {"exponent", 64}, {"falloffcontrast", 0}}},
+        // Heitz and Neyret's histogram-preserving blend on the albedo and roughness (the normal map keeps its own).
+        {"stable-rot-gain-histogram", with(fullQuality(HashMode::Stable), {{"blend", "histogram"}})},
         // Albedo and normal blended by the roughness map's values as heights.
         {"stable-rot-gain-height", fullQuality(HashMode::Stable), {}, {{"height_blend", {{"slot", "roughness"}, {"width", 0.2}}}}},
         // Triplanar on the bench's plane z = 0 facing +z: one plane is evaluated, and it shows what uv hex-tiling
@@ -173,9 +178,17 @@ struct Row : Timed {
     Contrast contrast{kNaN, kNaN};
 };
 
+// A row's contrast in its view moved by (shift, shift) uv.
+struct Shifted {
+    const Row* row;
+    double shift;
+    Contrast contrast;
+};
+
 struct Results {
     std::string machine, settings;
     std::vector<Row> rows;
+    std::vector<Shifted> shifted;  // contrast at other places (shiftedContrast)
     std::vector<Timed> opTimings;  // bench/op-cost/<name>.glsl
     double referenceSeconds = 0, totalSeconds = 0;
 };
@@ -311,6 +324,26 @@ References references(const fs::path& materialDir) {
     return refs;
 }
 
+// Contrast is a statistic of the view as well as of the blend: how many tiles it holds (magnified: about 25), and whether
+// its pixels land on texel centres (minified: plain tiling's do at the bench's place, so its samples are unfiltered).
+// The same measure with the views moved elsewhere on the plane, for plain tiling, the falloff and histogram blends and
+// the unblended tiles.
+const std::vector<double> kShifts = {3.1, 7.7, 12.3};
+const std::vector<std::string> kShiftedMethods = {"plain", "stable-rot-gain", "stable-rot-unblended", "stable-rot-gain-histogram"};
+
+void shiftedContrast(vk::Runner& runner, const References& refs, Results& results) {
+    for (const Row& row : results.rows) {
+        if (!row.failure.empty() || std::find(kShiftedMethods.begin(), kShiftedMethods.end(), row.name) == kShiftedMethods.end()) continue;
+        for (double shift : kShifts) {
+            View view = kViews[row.view].view;
+            for (double& uv : view.uvRect) uv += shift;
+            const Image image = vk::render(runner, row.material, vk::RenderOutput::Albedo, "albedo", view, vk::ExecutedTarget::Spirv, 0,
+                                           nullptr, {}, row.method->compile);
+            results.shifted.push_back({&row, shift, contrast(luminances(image), refs.sourceLuminance[row.view])});
+        }
+    }
+}
+
 void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) {
     const auto start = std::chrono::steady_clock::now();
     const References refs = references(materialDir);
@@ -365,16 +398,24 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
         attempt(row.failure, [&] {
             const Image image = vk::render(runner, row.material, vk::RenderOutput::Albedo, "albedo", kViews[row.view].view,
                                            vk::ExecutedTarget::Spirv, 0, nullptr, {}, row.method->compile);
-            row.error = compareRgb(image, refs.albedo.at({row.errorReference, row.view}));
+            // The histogram blend makes another image than the falloff reference: the execution tests compare it with its
+            // own reference (HistogramPath); here, its contrast.
+            if (albedoSlot(row.material).hex.blend == Blend::Falloff)
+                row.error = compareRgb(image, refs.albedo.at({row.errorReference, row.view}));
             row.contrast = contrast(luminances(image), refs.sourceLuminance[row.view]);
         });
     }
+    std::cout << "  contrast at other places" << std::endl;
+    shiftedContrast(runner, refs, results);
     for (Row& row : results.rows)
         for (const Row& plain : results.rows)
             if (plain.name == "plain" && plain.view == row.view) row.ratio = row.medianMs / plain.medianMs;
     for (const Timed* t : timed)
         if (!t->failure.empty()) std::cout << "  failed: " << t->name << ", " << kViews[t->view].name << ": " << t->failure << "\n";
 }
+
+// The reference a row's error is measured against, "n/a" when it is not.
+std::string errorVs(const Row& r) { return std::isnan(r.error.max) ? "n/a" : std::string(toString(r.errorReference)); }
 
 int opCount(const ShaderOps& ops, const std::string& name) { return ops.extended.count(name) ? ops.extended.at(name) : 0; }
 
@@ -401,7 +442,7 @@ std::string mainTable(const Results& results) {
     for (const Row& r : results.rows)
         md += strf("| %s | %s | %s | %s | %d | %d | %s | %s | %s | %s | %s | %s |\n", kViews[r.view].name.c_str(), r.name.c_str(),
                    num(r.medianMs, "%.2f").c_str(), num(r.ratio, "%.2f").c_str(), r.ops.textureSamples, r.ops.instructions,
-                   std::string(toString(r.errorReference)).c_str(), num(r.error.max, "%.4f").c_str(), num(r.error.mean, "%.5f").c_str(),
+                   errorVs(r).c_str(), num(r.error.max, "%.4f").c_str(), num(r.error.mean, "%.5f").c_str(),
                    num(r.error.psnrDb, "%.1f").c_str(), num(r.contrast.varianceRatio, "%.3f").c_str(),
                    num(r.contrast.histogramEmd, "%.4f").c_str());
     return md;
@@ -463,10 +504,29 @@ std::string breakdownTable(const Results& results) {
     return md;
 }
 
+// Variance ratio / EMD of the shifted views, beside the bench's place.
+std::string shiftedTable(const Results& r) {
+    std::string md = "| view | method | at the bench's place |", rule = "|---|---|---|";
+    for (double shift : kShifts) md += strf(" moved by %g |", shift), rule += "---|";
+    md += "\n" + rule + "\n";
+    const Row* last = nullptr;
+    for (const Shifted& s : r.shifted) {
+        if (s.row != last)
+            md += (last ? "\n" : "") + strf("| %s | %s | %s / %s |", kViews[s.row->view].name.c_str(), s.row->name.c_str(),
+                                            num(s.row->contrast.varianceRatio, "%.3f").c_str(),
+                                            num(s.row->contrast.histogramEmd, "%.4f").c_str());
+        md += strf(" %s / %s |", num(s.contrast.varianceRatio, "%.3f").c_str(), num(s.contrast.histogramEmd, "%.4f").c_str());
+        last = s.row;
+    }
+    return md + (last ? "\n" : "");
+}
+
 std::string markdown(const Results& r) {
     std::string md =
         "# hexc shader benchmark\n\n" + r.machine + "\n" + r.settings + "\n## Run time, error, contrast\n\n" + mainTable(r) + "\n";
     for (size_t v = 0; v < kViews.size(); ++v) md += "- " + targetLine(r, v) + "\n";
+    md += "\n## Contrast at other places\n\nVariance ratio / histogram EMD of the albedo with the views moved by (d, d) uv.\n\n" +
+          shiftedTable(r);
     md +=
         "\n## Operations per pixel\n\nScalar operations counted in the SPIR-V (a vec3 pow counts 3; there are no loops, so each runs at "
         "most once per pixel).\n\n" +
@@ -490,8 +550,8 @@ std::string csv(const Results& r) {
         out += strf("%s,%s,%s,%s,%s,%zu,%s,%d,%d,%s,%s,%s,%s,%s,%s,%s\n", kViews[row.view].name.c_str(), row.name.c_str(),
                     num(row.medianMs, "%.4f").c_str(), num(row.frameMs.empty() ? kNaN : *fastest, "%.4f").c_str(),
                     num(row.frameMs.empty() ? kNaN : *slowest, "%.4f").c_str(), row.frameMs.size(), num(row.ratio, "%.4f").c_str(),
-                    row.ops.textureSamples, row.ops.instructions, std::string(toString(row.errorReference)).c_str(),
-                    num(row.error.max, "%.6g").c_str(), num(row.error.mean, "%.6g").c_str(), num(row.error.psnrDb, "%.4g").c_str(),
+                    row.ops.textureSamples, row.ops.instructions, errorVs(row).c_str(), num(row.error.max, "%.6g").c_str(),
+                    num(row.error.mean, "%.6g").c_str(), num(row.error.psnrDb, "%.4g").c_str(),
                     num(row.contrast.varianceRatio, "%.6g").c_str(), num(row.contrast.histogramEmd, "%.6g").c_str(), failure.c_str());
     }
     return out;

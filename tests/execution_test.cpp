@@ -215,8 +215,6 @@ struct Check {
     double maxTolerance = 0;
 };
 
-// Runs a one-slot material on the GPU and compares `channels` channels of every pixel with the reference,
-// each pixel against its own tolerance (pixelTolerance).
 // Height blending (hexcHeightBlend): W'_i = W_i f_i / S with f_i = max(h_i W_i - max_j h_j W_j + width, 0) and
 // S = sum_j W_j f_j. Heights off by at most e_h move each a_j = h_j W_j by <= e_h W_j, each f_i by <= 2 e_h and S by
 // <= 2 e_h sum_j W_j = 2 e_h, so sum_i |dW'_i| <= (2 e_h + 2 e_h) / S, and the blend, whose weight changes sum to 0,
@@ -235,7 +233,6 @@ double heightTolerance(const reference::SlotResult& r, double eh, int channels) 
     return 2 * eh * spread / r.heightSum;
 }
 
-// `level`: the deepest mip level the view reads.
 // What draws a material's output on the GPU: hexc's shader on one target, or a shader written by hand.
 using Draw = std::function<Image(const Material& m, vk::RenderOutput output, const View& view)>;
 
@@ -246,32 +243,48 @@ Draw on(vk::ExecutedTarget target, const CompileOptions& options = {}) {
     };
 }
 
-Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, const Draw& draw, double ex, double em,
-                            int channels) {
+// Each pixel's tolerance, from the reference's details of it.
+using PixelTolerance = std::function<double(const reference::SlotResult&)>;
+
+// Runs a one-slot material on the GPU and compares `channels` channels of every pixel with the reference, each pixel
+// against its own tolerance.
+Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, const Draw& draw, int channels,
+                            const PixelTolerance& tolerance) {
     const Slot& slot = m.slots[0];
     Image gpu = draw(m, output, view);
     const reference::Heights heights(m, slot);
-    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view, heights.source());
-    // The height map is 8-bit linear data, sampled at the view's levels like the slot.
-    const double eh = sampleError(level, false);
+    const reference::SlotTextures textures(slot);
+    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, *textures.texture, view, heights.source(), textures.lut.get());
     Check check;
     Image cpu = gpu;
     for (size_t p = 0; p < ref.size(); ++p) {
         // Scalar slots show (s, s, s, 1) of the channel they read.
         for (int c = 0; c < channels; ++c)
             cpu.rgba[p * 4 + size_t(c)] = float(ref[p].value[slot.kind == SlotKind::Scalar ? size_t(slot.channel) : size_t(c)]);
-        double tolerance = pixelTolerance(ref[p], ex, em, slot.hex, slot.kind == SlotKind::Scalar ? 1 : channels);
-        if (slot.heightBlend) tolerance += heightTolerance(ref[p], eh, slot.kind == SlotKind::Scalar ? 1 : channels);
-        check.maxTolerance = std::max(check.maxTolerance, tolerance);
+        const double t = tolerance(ref[p]);
+        check.maxTolerance = std::max(check.maxTolerance, t);
         for (int c = 0; c < channels; ++c) {
             double e = std::fabs(double(gpu.rgba[p * 4 + size_t(c)]) - double(cpu.rgba[p * 4 + size_t(c)]));
             if (!(e == e)) e = INFINITY;
-            if (e > check.errors.max) check.toleranceAtMax = tolerance;
-            check.worstRatio = std::max(check.worstRatio, e / tolerance);
+            if (e > check.errors.max) check.toleranceAtMax = t;
+            check.worstRatio = std::max(check.worstRatio, e / t);
         }
     }
     check.errors = compare(gpu, cpu, channels);
     return check;
+}
+
+// The falloff blend's tolerance (pixelTolerance, plus heightTolerance for height blending) with sample error ex and
+// metric error em. `level`: the deepest mip level the view reads.
+Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, const Draw& draw, double ex, double em,
+                            int channels) {
+    const Slot& slot = m.slots[0];
+    // The height map is 8-bit linear data, sampled at the view's levels like the slot.
+    const double eh = sampleError(level, false);
+    const int blended = slot.kind == SlotKind::Scalar ? 1 : channels;
+    return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r) {
+        return pixelTolerance(r, ex, em, slot.hex, blended) + (slot.heightBlend ? heightTolerance(r, eh, blended) : 0.0);
+    });
 }
 
 void report(const char* name, const Check& c) {
@@ -292,26 +305,135 @@ Check checkColor(const Material& m, bool minified, const Draw& draw) {
     return checkAgainstReference(m, vk::RenderOutput::Albedo, view, minified ? 2 : 0, draw, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
 }
 
-class ColorPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
-
-TEST_P(ColorPath, MatchesReference) {
-    REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
-    Check check = checkColor(material(c.slot, c.hextiling), c.minified, on(target));
-    report(c.name, check);
-    EXPECT_LE(check.worstRatio, 1.0);
-}
-
 std::string targetName(vk::ExecutedTarget t) {
     return t == vk::ExecutedTarget::Spirv ? "spirv" : t == vk::ExecutedTarget::Hlsl ? "hlsl" : "glsl";
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, ColorPath,
-                         testing::Combine(testing::ValuesIn(kColorCases),
-                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) {
-                             return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
-                         });
+// A case on one executed target: the parameter of the path suites below, named "<case>_<target>".
+using CaseOn = std::tuple<Case, vk::ExecutedTarget>;
+std::string caseName(const testing::TestParamInfo<CaseOn>& info) {
+    return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
+}
+const auto kExecutedTargets = testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl);
+
+// The case's material drawn on its target, against the reference through `check`: every pixel within its tolerance.
+void expectMatch(const CaseOn& param, Check (*check)(const Material&, bool, const Draw&)) {
+    const auto& [c, target] = param;
+    Check result = check(material(c.slot, c.hextiling), c.minified, on(target));
+    report(c.name, result);
+    EXPECT_LE(result.worstRatio, 1.0);
+}
+
+class ColorPath : public testing::TestWithParam<CaseOn> {};
+
+TEST_P(ColorPath, MatchesReference) {
+    REQUIRE_VULKAN();
+    expectMatch(GetParam(), checkColor);
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, ColorPath, testing::Combine(testing::ValuesIn(kColorCases), kExecutedTargets), caseName);
+
+// ---- Histogram blend ---------------------------------------------------------------------------------------------
+
+// The largest difference between horizontally or vertically adjacent texels of a level, per channel.
+std::array<double, 3> adjacentSteps(const reference::SampledTexture& t, int level) {
+    std::array<double, 3> step{};
+    const int w = t.width(level), h = t.height(level);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (size_t c = 0; c < 3; ++c) {
+                const double v = t.texel(level, x, y)[c];
+                step[c] =
+                    std::max({step[c], std::fabs(v - t.texel(level, (x + 1) % w, y)[c]), std::fabs(v - t.texel(level, x, (y + 1) % h)[c])});
+            }
+    return step;
+}
+
+// The histogram blend's tolerance at a pixel (hexcHistogram; reference.h, evaluateAt), step by step:
+// 1. A Gaussian sample: float32 texels, mip levels float averages (exact to 2^-24); lavapipe's bilinear weights taken
+//    as coarse as on 8-bit data, half a step of 2^-8 per axis, so a sample errs by e_g <= 2 * 2^-9 * step_k, step_k the
+//    largest difference between adjacent texels of channel k at the level read (adjacentSteps), plus 4 * 2^-24.
+// 2. The blend G = sum W_i (g_i - 0.5) / |W| + 0.5 moves by sum W_i / |W| <= sqrt(3) (Cauchy-Schwarz) times e_g; the
+//    weights' float32 rounding (a few ulp, relative 1e-6, times sum |g_i - 0.5| / |W| <= 3 sqrt(3)) adds 1e-5: e_G.
+// 3. The inverse reads entry x = G (N - 1) of rows r0 = 1 + floor(lod) and r0 + 1 (lod is exact in both views: 0 is
+//    clamped, 2 is a power of two): x moves by e_G (N - 1), so the value by that times D, the largest difference
+//    between adjacent entries within reach in either row; the filter's weight steps add 2^-9 D along x and 2^-9 D_v
+//    across rows, D_v the largest difference between the rows' entries there.
+// 4. Back to RGB, rgb_c = mean_c + sum_k q_k E_ck moves by sum_k |E_ck| e_k, plus float32 rounding (1e-6).
+PixelTolerance histogramTolerance(const Slot& slot, const reference::SlotTextures& textures, int level) {
+    const reference::SampledTexture& lut = *textures.lut;
+    const std::array<double, 3> step = adjacentSteps(*textures.texture, level);
+    const size_t channels = slot.kind == SlotKind::Scalar ? 1 : 3;
+    return [&lut, step, channels](const reference::SlotResult& r) {
+        const int n = lut.width(0), rows = lut.height(0);
+        const int r0 = 1 + int(std::floor(std::clamp(r.lod, 0.0, rows - 2.0))), r1 = std::min(r0 + 1, rows - 1);
+        std::array<double, 3> e{};
+        for (size_t k = 0; k < channels; ++k) {
+            const double eG = std::sqrt(3.0) * (2 * step[k] / 512 + 4 * 0x1p-24) + 1e-5;
+            const double x = std::clamp(r.gaussian[k], 0.0, 1.0) * (n - 1), reach = eG * (n - 1) + 1;
+            double d = 0, dv = 0;
+            for (int i = std::max(0, int(std::floor(x - reach))); i <= std::min(n - 1, int(std::ceil(x + reach))); ++i) {
+                dv = std::max(dv, std::fabs(lut.texel(0, i, r1)[k] - lut.texel(0, i, r0)[k]));
+                if (i + 1 < n)
+                    for (int row : {r0, r1}) d = std::max(d, std::fabs(lut.texel(0, i + 1, row)[k] - lut.texel(0, i, row)[k]));
+            }
+            e[k] = d * (eG * (n - 1) + 1.0 / 512) + dv / 512;
+        }
+        if (channels == 1) return e[0] + 1e-6;
+        double worst = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            double sum = 0;
+            for (size_t k = 0; k < 3; ++k) sum += std::fabs(lut.texel(0, int(k), 0)[c]) * e[k];
+            worst = std::max(worst, sum);
+        }
+        return worst + 1e-6;
+    };
+}
+
+// A histogram-blended colour or scalar slot (the material's first) against the reference, in a view whose deepest
+// mip level is `level`.
+Check checkHistogram(const Material& m, const View& view, int level, const Draw& draw) {
+    const Slot& slot = m.slots[0];
+    const reference::SlotTextures textures(slot);
+    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, draw, slot.kind == SlotKind::Scalar ? 1 : 4,
+                                 histogramTolerance(slot, textures, level));
+}
+
+Check checkHistogram(const Material& m, bool minified, const Draw& draw) {
+    return checkHistogram(m, minified ? kMinified : kMagnified, minified ? 2 : 0, draw);
+}
+
+// The blend set for the whole material, as a slot inherits it.
+const char* const kHistogramBlend = R"({"blend": "histogram"})";
+const char* const kRockAlbedo = R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4}})";
+
+const Case kHistogramCases[] = {
+    {"histogram_color", kRockAlbedo, false, kHistogramBlend},
+    {"histogram_color_minified", kRockAlbedo, true, kHistogramBlend},
+    // A structured texture, the gain, and a linear colour space.
+    {"histogram_tiles_gain",
+     R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7}})",
+     false, kHistogramBlend},
+    {"histogram_checker_transforms",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "rotationrange": [0, 360], "offset": 0.5}})",
+     false, kHistogramBlend},
+    // The slot's own setting.
+    {"histogram_scalar",
+     R"({"name": "height", "kind": "scalar", "texture": "textures/rock_height.png", "hextiling": {"tiling": 4, "blend": "histogram"}})",
+     false},
+    {"histogram_scalar_green_minified",
+     R"({"name": "rough", "kind": "scalar", "channel": "g", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "exponent": 3}})",
+     true, kHistogramBlend},
+};
+
+class HistogramPath : public testing::TestWithParam<CaseOn> {};
+
+TEST_P(HistogramPath, MatchesReference) {
+    REQUIRE_VULKAN();
+    expectMatch(GetParam(), checkHistogram);
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, HistogramPath, testing::Combine(testing::ValuesIn(kHistogramCases), kExecutedTargets), caseName);
 
 // ---- Normal path --------------------------------------------------------------------------------------------
 const Case kNormalCases[] = {
@@ -366,22 +488,14 @@ Check checkNormal(const Material& m, bool minified, const Draw& draw) {
                      : checkAgainstReference(m, vk::RenderOutput::Derivative, view, minified ? 2 : 0, draw, ed, std::sqrt(2.0) * ed, 2);
 }
 
-class NormalPath : public testing::TestWithParam<std::tuple<Case, vk::ExecutedTarget>> {};
+class NormalPath : public testing::TestWithParam<CaseOn> {};
 
 TEST_P(NormalPath, MatchesReference) {
     REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
-    Check check = checkNormal(material(c.slot, c.hextiling), c.minified, on(target));
-    report(c.name, check);
-    EXPECT_LE(check.worstRatio, 1.0);
+    expectMatch(GetParam(), checkNormal);
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, NormalPath,
-                         testing::Combine(testing::ValuesIn(kNormalCases),
-                                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-                         [](const auto& info) {
-                             return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(Exec, NormalPath, testing::Combine(testing::ValuesIn(kNormalCases), kExecutedTargets), caseName);
 
 // ---- rock's slots, one at a time, from other outputs ---------------------------------------------------------
 
@@ -549,6 +663,7 @@ struct OddSize {
     const char* name;
     int width, height;
     bool minified;
+    bool histogram = false;  // "blend": "histogram": its Gaussian texture has the odd size, its table odd levels
 };
 void PrintTo(const OddSize& c, std::ostream* os) { *os << c.name; }
 
@@ -574,14 +689,16 @@ TEST_P(OddSizes, MatchReference) {
     REQUIRE_VULKAN();
     const auto& [c, target] = GetParam();
     const std::filesystem::path file = cropOfRock(c.width, c.height);
-    Material m = material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": ")" + file.string() +
-                          R"(", "hextiling": {"tiling": 4, "rotation": 0}})");
+    Material m =
+        material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": ")" + file.string() +
+                 R"(", "hextiling": {"tiling": 4, "rotation": 0, "blend": ")" + (c.histogram ? "histogram" : "falloff") + R"("}})");
     const int larger = std::max(c.width, c.height), levels = std::bit_width(unsigned(larger));
     const double uvPerPixel = (c.minified ? 4.0 : 0.75) / (4.0 * larger);
     const View view{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}};
     const int level = c.minified ? std::min(2, levels - 1) : 0;
     const double es = sampleError(level, false);
-    Check check = checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, on(target), es, es, 4);
+    Check check = c.histogram ? checkHistogram(m, view, level, on(target))
+                              : checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, on(target), es, es, 4);
     report(c.name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
@@ -590,7 +707,10 @@ INSTANTIATE_TEST_SUITE_P(
     Exec, OddSizes,
     testing::Combine(testing::Values(OddSize{"127x80", 127, 80, false}, OddSize{"127x80_minified", 127, 80, true},
                                      OddSize{"1x64", 1, 64, false}, OddSize{"1x64_minified", 1, 64, true}, OddSize{"3x3", 3, 3, false},
-                                     OddSize{"3x3_minified", 3, 3, true}, OddSize{"127x127_minified", 127, 127, true}),
+                                     OddSize{"3x3_minified", 3, 3, true}, OddSize{"127x127_minified", 127, 127, true},
+                                     OddSize{"127x80_histogram", 127, 80, false, true},
+                                     OddSize{"127x80_histogram_minified", 127, 80, true, true},
+                                     OddSize{"3x3_histogram_minified", 3, 3, true, true}),
                      testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
     [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
 
@@ -1105,7 +1225,7 @@ TEST(PreviewCommand, WritesALabelledSheet) {
     std::filesystem::remove(out);
     ASSERT_EQ(runHexc("preview materials/rock.json --cell 64 -o " + out.string()), 0);
     Texture sheet = loadTexture(out, false);
-    EXPECT_EQ(sheet.width, 3 * 64);
+    EXPECT_EQ(sheet.width, 4 * 64);  // plain, falloff, histogram, weights
     EXPECT_EQ(sheet.height, 2 * (64 + 28));
 }
 

@@ -191,13 +191,14 @@ std::vector<uint8_t> bytes(std::initializer_list<float> values) {
 // registers b2 t5 s3 in space 0, GLSL from 3); materials/layouts/engine.json (hexc sharing the template's set 1 from
 // binding 5, HLSL register space 1 under SM 5.1). Every pixel is what the template computes from hexc's albedo
 // (rendered alone, and checked against the fp64 reference by the ColorPath tests) and the template's values.
-TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
-    REQUIRE_VULKAN();
-    ParseResult parsed = parseMaterialFile("materials/engine_rock.json");
-    ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
-    const Material& m = *parsed.material;
+namespace {
+
+// engine_rock's template, shaded on every target in three layouts: its own resources and hexc's all read right.
+void expectTheEngineTemplateReadsBoth(const Material& m) {
+    std::string why;
+    vk::Runner& gpu = *runner(&why);
     const View view{40, 40, {0.1, 0.2, 0.5, 0.6}};
-    Image albedo = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Albedo, "albedo", view);
+    Image albedo = vk::render(gpu, m, vk::RenderOutput::Albedo, "albedo", view);
 
     const Texture shadow = flat(0.5f, 0, 0), environment = flat(0.5f, 0.25f, 1.0f), detail = flat(0.75f, 0, 0);
     using R = vk::TemplateResource;
@@ -222,7 +223,7 @@ TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
         for (vk::ExecutedTarget target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl}) {
             const char* targetName = target == vk::ExecutedTarget::Hlsl ? "HLSL" : target == vk::ExecutedTarget::Glsl ? "GLSL" : "SPIR-V";
             SCOPED_TRACE(name + " layout, " + targetName);
-            Image image = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Shaded, "", view, target, 0, nullptr, {}, options, own);
+            Image image = vk::render(gpu, m, vk::RenderOutput::Shaded, "", view, target, 0, nullptr, {}, options, own);
             // N = light = +z: diffuse = shadow = 0.5; the sky term reads the environment's colour. Both shaders compute the
             // albedo from the same GLSL; the rest is a few float32 operations on values below 4, so 1e-5 covers any
             // contraction or reordering the optimisers choose (about 30 ulps at 4).
@@ -236,4 +237,21 @@ TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
             std::printf("  %s layout, %s: worst difference %.2e\n", name.c_str(), targetName, worst);
             EXPECT_LE(worst, 1e-5);
         }
+}
+
+}  // namespace
+
+TEST(Layout, AnEngineTemplateReadsItsOwnResourcesAndHexcs) {
+    REQUIRE_VULKAN();
+    ParseResult parsed = parseMaterialFile("materials/engine_rock.json");
+    ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
+    // Both blends: the histogram blend's look-up tables take bindings after every slot's texture, which the template's
+    // own resources must still avoid on every target.
+    for (Blend blend : {Blend::Falloff, Blend::Histogram}) {
+        Material m = *parsed.material;
+        for (Slot& s : m.slots)
+            if (s.kind != SlotKind::Normal) s.hex.blend = blend;
+        SCOPED_TRACE(std::string("blend ") + std::string(toString(blend)));
+        expectTheEngineTemplateReadsBoth(m);
+    }
 }

@@ -31,10 +31,11 @@ surface gradient (x, y, z, 1), and normal is not offered. PFM keeps floats exact
 clamps to [0, 1] and stores 8 bits without sRGB encoding.
 )";
 
-const char* const kPreviewHelp = R"(hexc preview - one labelled picture of a material: plain tiling, hex tiling, hex weights
+const char* const kPreviewHelp = R"(hexc preview - one labelled picture of a material: plain tiling, both hex blends, hex weights
 
-Three columns (plain tiling, hex tiling, the hex-tile weights of the first slot) at two distances:
-magnified (UV 0..0.5) and minified (UV 0..4, several texels per pixel, mip-mapped).
+Four columns (plain tiling, hex tiling with the falloff blend, hex tiling with the histogram-preserving blend
+on its colour and scalar slots, the hex-tile weights of the first slot) at two distances: magnified
+(UV 0..0.5) and minified (UV 0..4, several texels per pixel, mip-mapped).
 Each cell is N x N pixels (default 256). Shaded with the material's template.
 )";
 
@@ -233,17 +234,27 @@ int renderCommand(const std::vector<std::string>& args) {
     });
 }
 
-// The preview sheet: plain tiling, hex tiling and the hex weights (columns) at two distances (rows), labelled.
+// The material with `blend` on every slot that can take it (hex-tiled colour and scalar slots blending every tap
+// without height blending; the parser's rules).
+Material withBlend(Material material, Blend blend) {
+    for (Slot& s : material.slots)
+        if (s.hex.enabled && s.kind != SlotKind::Normal && s.hex.taps != 1 && !s.heightBlend) s.hex.blend = blend;
+    return material;
+}
+
+// The preview sheet: plain tiling, both hex blends and the hex weights (columns) at two distances (rows), labelled.
 Image previewSheet(vk::Runner& runner, const Material& material, int cell, Progress& progress) {
     Material plain = material;
     for (Slot& s : plain.slots) s.hex.enabled = false;
+    const Material falloff = withBlend(material, Blend::Falloff), histogram = withBlend(material, Blend::Histogram);
     struct Column {
         const char* label;
         const Material* material;
         vk::RenderOutput output;
     };
     const Column columns[] = {{"plain", &plain, vk::RenderOutput::Shaded},
-                              {"hex", &material, vk::RenderOutput::Shaded},
+                              {"falloff", &falloff, vk::RenderOutput::Shaded},
+                              {"histogram", &histogram, vk::RenderOutput::Shaded},
                               {"weights", &material, vk::RenderOutput::Weights}};
     struct Row {
         const char* label;
@@ -254,12 +265,12 @@ Image previewSheet(vk::Runner& runner, const Material& material, int cell, Progr
     const int band = 28, scale = cell >= 240 ? 2 : 1;
     const char* const separator = scale == 2 ? ", " : "\n";
     Image sheet;
-    sheet.width = 3 * cell;
+    sheet.width = 4 * cell;
     sheet.height = 2 * (cell + band);
     sheet.rgba.assign(size_t(sheet.width) * sheet.height * 4, 0.12f);  // dark grey bands behind the labels
     for (size_t i = 3; i < sheet.rgba.size(); i += 4) sheet.rgba[i] = 1.0f;
     for (int r = 0; r < 2; ++r) {
-        for (int c = 0; c < 3; ++c) {
+        for (int c = 0; c < 4; ++c) {
             progress.step(std::string("rendering ") + columns[c].label + ", " + rows[r].label);
             View view{cell, cell, {0, 0, rows[r].extent, rows[r].extent}};
             Image img = vk::render(runner, *columns[c].material, columns[c].output, "", view);
@@ -291,7 +302,7 @@ int previewCommand(const std::vector<std::string>& args) {
         auto runner = makeRunner();
         if (!runner) return int(kNoVulkan);
 
-        Progress progress(7, quiet);
+        Progress progress(9, quiet);
         Image sheet = previewSheet(*runner, *material, cell, progress);
         progress.step("writing " + out);
         writeImage(sheet, out);

@@ -15,7 +15,10 @@
 #include "codegen/codegen.h"
 #include "hexc/cache.h"
 #include "hexc/compiler.h"
+#include "hexc/files.h"
 #include "hexc/hash.h"
+#include "hexc/histogram.h"
+#include "hexc/image.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
 #include "spirv/combined.h"
@@ -263,6 +266,53 @@ void withEntryPoint(ShaderCode& code, const std::string& entry) {
     }
 }
 
+// A histogram slot's derived textures (hexc/histogram.h) as PFM files' bytes: float32 keeps T and its inverse exact,
+// and hexc reads and writes PFM byte for byte. A texture that cannot be read stops the compile.
+nlohmann::json histogramFiles(const Material& material, const Slot& s) {
+    Texture source;
+    try {
+        source = loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb);
+    } catch (const TextureError& e) {
+        throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
+    }
+    const HistogramTransform t = histogramTransform(source, s);
+    nlohmann::json files;
+    for (const auto& [which, texture] : {std::pair{"gaussian", &t.gaussian}, std::pair{"lut", &t.lut}})
+        files[which] = binary(pfmBytes({texture->width, texture->height, texture->rgba32f}));
+    return files;
+}
+
+// Everything a slot's derived textures depend on: the texture's bytes, how they are decoded (the file's extension, the
+// colour space) and which channels are transformed (kind, channel), and hexc's build.
+std::string histogramKey(const Slot& s) {
+    ContentHash h;
+    for (const std::string& part : {std::string("hexc histogram 1"), std::string(version()), buildId(),
+                                    readFile(s.texturePath).value_or(""), s.texturePath.extension().string(),
+                                    std::string(toString(s.colorSpace)), std::string(toString(s.kind)), std::to_string(s.channel)})
+        h.add(part);
+    return h.hex();
+}
+
+// The histogram slots' derived textures, through CompileOptions::cache: a material whose other settings changed takes
+// them from there while its textures' bytes stay the same.
+void addHistogramFiles(const Material& material, const ShaderPlan& plan, const CompileOptions& options, CompileResult& result) {
+    for (size_t i : plan.luts) {
+        const Slot& s = *plan.slots[i].slot;
+        auto compute = [&]() -> std::optional<std::string> {
+            const std::vector<uint8_t> cbor = nlohmann::json::to_cbor(histogramFiles(material, s));
+            return std::string(cbor.begin(), cbor.end());
+        };
+        const std::optional<std::string> cached = options.cache ? options.cache->getOrCompute(histogramKey(s), compute) : compute();
+        nlohmann::json files = nlohmann::json::from_cbor(*cached, true, false);
+        const auto holds = [&](const char* which) { return files.is_object() && files.contains(which) && files[which].is_binary(); };
+        if (!holds("gaussian") || !holds("lut")) files = histogramFiles(material, s);  // an entry of another format
+        for (const char* which : {"gaussian", "lut"}) {
+            const auto& bytes = files[which].get_binary();
+            result.files.push_back({histogramFileName(material.name, s.name, which), std::string(bytes.begin(), bytes.end())});
+        }
+    }
+}
+
 void run(const Material& material, const CompileOptions& options, CompileResult& result) {
     ShaderPlan plan = planShader(material, options);
     append(result.diagnostics, plan.diagnostics);
@@ -296,6 +346,7 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     const std::string top = banner(material, plan, options);
     for (OutputFile& f : result.files)
         if (!f.name.ends_with(".spv") && !f.name.ends_with(".json")) withBanner(f.contents, top);
+    addHistogramFiles(material, plan, options, result);  // images: no banner
     result.files.push_back({material.name + ".manifest.json", manifest.dump(2) + "\n"});
     std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
 }

@@ -383,6 +383,35 @@ vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma,
     return W.x * c1 + W.y * c2 + W.z * c3;
 }
 
+// The histogram-preserving blend (Heitz and Neyret 2018, Deliot and Heitz 2019; hexc/histogram.h). `tex` holds each
+// decorrelated channel gaussianised (mean 0.5, standard deviation 1/6); the tiles' values are blended with the
+// variance-preserving weights W / |W|, so the blend keeps the Gaussian's spread wherever the tiles overlap. `lut` row
+// 1 + lod holds each channel's inverse transform at a level of detail of the Gaussian texture, texel i for Gaussian
+// value i / (width - 1); row 0 the way back to linear RGB (the axes in texels 0-2, the mean in texel 3). lod comes
+// from the slot's st gradients as the sampler computes it (Euclidean lengths), and the rows are interpolated in it.
+// `scalar` (a literal): one channel, in r, and no way back to take.
+vec4 hexcHistogram(texture2D tex, texture2D lut, sampler samp, HexcTiles t, HexcBlend b, vec2 dx, vec2 dy, bool scalar, out vec3 weights) {
+    vec3 g1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1).rgb;
+    vec3 g2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2).rgb;
+    vec3 g3 = b.taps > 2 ? textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3).rgb : vec3(0.5);
+    vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);
+    weights = hexcShowWeights(W, t.channel);
+    vec3 G = (W.x * (g1 - 0.5) + W.y * (g2 - 0.5) + W.z * (g3 - 0.5)) * inversesqrt(dot(W, W)) + 0.5;
+    vec2 size = vec2(textureSize(sampler2D(tex, samp), 0));
+    vec2 ex = dx * size, ey = dy * size;
+    float lod = 0.5 * log2(max(max(dot(ex, ex), dot(ey, ey)), 1e-30));
+    vec2 n = vec2(textureSize(sampler2D(lut, samp), 0));
+    float v = (1.5 + clamp(lod, 0.0, n.y - 2.0)) / n.y;
+    vec3 u = (clamp(G, 0.0, 1.0) * (n.x - 1.0) + 0.5) / n.x;
+    float q1 = textureLod(sampler2D(lut, samp), vec2(u.x, v), 0.0).r;
+    if (scalar) return vec4(q1);
+    float q2 = textureLod(sampler2D(lut, samp), vec2(u.y, v), 0.0).g;
+    float q3 = textureLod(sampler2D(lut, samp), vec2(u.z, v), 0.0).b;
+    vec3 rgb = texelFetch(sampler2D(lut, samp), ivec2(3, 0), 0).rgb + q1 * texelFetch(sampler2D(lut, samp), ivec2(0, 0), 0).rgb +
+               q2 * texelFetch(sampler2D(lut, samp), ivec2(1, 0), 0).rgb + q3 * texelFetch(sampler2D(lut, samp), ivec2(2, 0), 0).rgb;
+    return vec4(rgb, 1.0);
+}
+
 // Listing 9: tangent-space normal in [-1, 1] to the height derivative dH/duv, |z| kept >= max(|x|,|y|)/128.
 // flipY: the map's green axis points down (DirectX convention). Guard: a zero vector gives 0, not 0/0.
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY) {

@@ -35,6 +35,9 @@ layout(set = ${set}, binding = ${binding}) uniform sampler hexcSampler;
 layout(set = ${set}, binding = ${binding}) uniform texture2D hexcTex_${name};
 #define HEXC_HAS_${name} 1
 
+//@ lut
+layout(set = ${set}, binding = ${binding}) uniform texture2D hexcLut_${name};
+
 //@ set
     ${struct}.${field} = ${value};
 
@@ -71,6 +74,26 @@ ${blend}
 //@ color.plain
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
     return hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights);
+}
+
+//@ color.histogram
+// The histogram-preserving blend: hexcTex_ holds the Gaussian texture hexc derived, hexcLut_ the inverse transform.
+vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcHistogram(hexcTex_${name}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, false, weights);
+}
+
+//@ scalar.histogram
+// The Gaussian texture holds the slot's channel in r.
+float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcHistogram(hexcTex_${name}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, true, weights).r;
 }
 
 //@ scalar.hex

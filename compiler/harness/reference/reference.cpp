@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "hexc/histogram.h"
+
 namespace hexc::reference {
 namespace {
 
@@ -348,8 +350,40 @@ std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, con
     return w;
 }
 
+// The histogram blend's way back (reference.h, evaluateAt): G of each channel, the level of detail, the table.
+Rgba inverseTransform(const SampledTexture& lut, const Rgba& G, double lod, bool scalar) {
+    const double width = lut.width(0), rows = lut.height(0);
+    // Row 1 + lod, entry G (width - 1), at texel centres: s = (x + 0.5) / width, t = (y + 0.5) / rows.
+    const double t = (1.5 + std::clamp(lod, 0.0, rows - 2)) / rows;
+    std::array<double, 3> q{};
+    for (size_t k = 0; k < (scalar ? 1 : 3); ++k)
+        q[k] = lut.sample((std::clamp(G[k], 0.0, 1.0) * (width - 1) + 0.5) / width, t, 0, 0, 0, 0)[k];
+    if (scalar) return {q[0], q[0], q[0], q[0]};
+    Rgba rgb = lut.texel(0, 3, 0);
+    for (size_t k = 0; k < 3; ++k)
+        for (size_t c = 0; c < 3; ++c) rgb[c] += q[k] * lut.texel(0, int(k), 0)[c];
+    rgb[3] = 1;
+    return rgb;
+}
+
+// Heitz and Neyret's variance-preserving blend of the tiles' Gaussian samples, then the way back.
+SlotResult histogramBlend(const SampledTexture& lut, const std::array<Rgba, 3>& samples, const std::array<double, 3>& w, Vec2 dx, Vec2 dy,
+                          double size0, double size1, bool scalar) {
+    SlotResult r{};
+    const double norm = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    for (size_t c = 0; c < 4; ++c)
+        r.gaussian[c] = (w[0] * (samples[0][c] - 0.5) + w[1] * (samples[1][c] - 0.5) + w[2] * (samples[2][c] - 0.5)) / norm + 0.5;
+    const double rho2 =
+        std::max(std::pow(dx[0] * size0, 2) + std::pow(dx[1] * size1, 2), std::pow(dy[0] * size0, 2) + std::pow(dy[1] * size1, 2));
+    r.lod = 0.5 * std::log2(std::max(rho2, 1e-30));
+    r.value = inverseTransform(lut, r.gaussian, r.lod, scalar);
+    r.samples = samples;
+    r.blend = w;
+    return r;
+}
+
 SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel,
-                      const HeightSource* height) {
+                      const HeightSource* height, const SampledTexture* lut) {
     const HexTiling& hex = slot.hex;
     const bool normal = slot.kind == SlotKind::Normal;
     const auto asValue = [](Vec2 d) { return Rgba{d[0], d[1], 0, 1}; };
@@ -361,6 +395,9 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
     }
     const bool heightBlended = slot.heightBlend && hex.taps != 1;  // 1 tap cannot height-blend (the parser rejects it)
     if (heightBlended && !height) throw std::invalid_argument("reference: slot " + slot.name + " height-blends but no heights were given");
+    const bool histogram = hex.blend == Blend::Histogram;  // the parser leaves it on colour and scalar slots only
+    if (histogram && !lut)
+        throw std::invalid_argument("reference: slot " + slot.name + " blends histograms but no look-up table was given");
 
     const Taps taps = maskTaps(st, hex);
     // Listing 7's colours for the hex mask; the other masks show their weights in their own order.
@@ -413,6 +450,12 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
         oneHot[pick] = 1;
         return {samples[pick], shown(oneHot), {samples[pick], samples[pick], samples[pick]}, oneHot};
     }
+    if (histogram) {
+        const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);  // no metric: see hexcHistogram
+        SlotResult r = histogramBlend(*lut, samples, w, dx, dy, texture.width(0), texture.height(0), slot.kind == SlotKind::Scalar);
+        r.weights = shown(w);
+        return r;
+    }
     std::array<double, 3> w = blendWeights(taps.weight, delta, hex);
     double heightSum = 1;
     if (heightBlended) {
@@ -430,6 +473,17 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
     return {value, shown(w), samples, w, heightSum};
 }
 
+SlotTextures::SlotTextures(const Slot& slot) {
+    const Texture source = loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb);
+    if (slot.hex.blend != Blend::Histogram) {
+        texture = std::make_unique<SampledTexture>(source);
+        return;
+    }
+    const HistogramTransform t = histogramTransform(source, slot);
+    texture = std::make_unique<SampledTexture>(t.gaussian);
+    lut = std::make_unique<SampledTexture>(t.lut);
+}
+
 Heights::Heights(const Material& material, const Slot& slot) {
     if (!slot.heightBlend) return;
     for (const Slot& h : material.slots)
@@ -440,13 +494,13 @@ Heights::Heights(const Material& material, const Slot& slot) {
 }
 
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx, double dudy, double dvdy,
-                    std::array<uint32_t, 2> pixel, const HeightSource* height) {
+                    std::array<uint32_t, 2> pixel, const HeightSource* height, const SampledTexture* lut) {
     const auto [a, b] = slot.hex.tiling;
-    return evaluateAt(slot, texture, {u * a, v * b}, {dudx * a, dvdx * b}, {dudy * a, dvdy * b}, pixel, height);
+    return evaluateAt(slot, texture, {u * a, v * b}, {dudx * a, dvdx * b}, {dudy * a, dvdy * b}, pixel, height, lut);
 }
 
 SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, const SurfacePoint& point, std::array<uint32_t, 2> pixel,
-                             const HeightSource* height) {
+                             const HeightSource* height, const SampledTexture* lut) {
     const Vec3& N = point.normal;
     const double length = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
     const Vec3 n = length > 0 ? Vec3{N[0] / length, N[1] / length, N[2] / length} : Vec3{0, 0, 0};
@@ -467,7 +521,7 @@ SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, co
     for (size_t k = 0; k < 3; ++k) {
         if (!(b[k] > 0)) continue;
         const SlotResult r =
-            evaluateAt(slot, texture, onPlane(point.position, k), onPlane(point.dPdx, k), onPlane(point.dPdy, k), pixel, height);
+            evaluateAt(slot, texture, onPlane(point.position, k), onPlane(point.dPdx, k), onPlane(point.dPdy, k), pixel, height, lut);
         if (normal) {
             g[(k + 1) % 3] += b[k] * r.value[0];
             g[(k + 2) % 3] -= b[k] * r.value[1];  // the plane's t axis is world +, its derivative's y is -t
@@ -527,7 +581,8 @@ TileTransform tileTransform(TileId id, const HexTiling& hex) {
     return {offset, degrees * pi / 180 * hex.rotation, hex.scaleRange[0] + (hex.scaleRange[1] - hex.scaleRange[0]) * v};
 }
 
-std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view, const HeightSource* height) {
+std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view, const HeightSource* height,
+                                     const SampledTexture* lut) {
     std::vector<SlotResult> out;
     out.reserve(size_t(view.width) * size_t(view.height));
     const auto [u0, v0, u1, v1] = view.uvRect;
@@ -537,18 +592,19 @@ std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& tex
         for (int i = 0; i < view.width; ++i) {
             const double u = u0 + (i + 0.5) / view.width * (u1 - u0), v = v0 + (j + 0.5) / view.height * (v1 - v0);
             const std::array<uint32_t, 2> pixel{uint32_t(i), uint32_t(j)};
-            out.push_back(triplanar ? evaluateTriplanar(slot, texture, previewSphere(u, v, dudx, 0, 0, dvdy), pixel, height)
-                                    : evaluate(slot, texture, u, v, dudx, 0, 0, dvdy, pixel, height));
+            out.push_back(triplanar ? evaluateTriplanar(slot, texture, previewSphere(u, v, dudx, 0, 0, dvdy), pixel, height, lut)
+                                    : evaluate(slot, texture, u, v, dudx, 0, 0, dvdy, pixel, height, lut));
         }
     return out;
 }
 
-Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output, const HeightSource* height) {
+Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output, const HeightSource* height,
+             const SampledTexture* lut) {
     Image image;
     image.width = view.width;
     image.height = view.height;
     image.rgba.resize(size_t(view.width) * size_t(view.height) * 4);
-    const std::vector<SlotResult> results = evaluateView(slot, texture, view, height);
+    const std::vector<SlotResult> results = evaluateView(slot, texture, view, height, lut);
     for (size_t p = 0; p < results.size(); ++p) {
         const SlotResult& r = results[p];
         const Rgba out = output == Output::Value ? r.value : Rgba{r.weights[0], r.weights[1], r.weights[2], 1};

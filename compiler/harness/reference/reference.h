@@ -117,6 +117,8 @@ struct SlotResult {
     std::array<Rgba, 3> samples;
     std::array<double, 3> blend;
     double heightSum = 1;  // height blending: sum_j W_j max(a_j - max a + width, 0) before normalising (for error bounds)
+    Rgba gaussian{};       // the histogram blend: the blended Gaussian value G of each channel, before the inverse
+    double lod = 0;        // the histogram blend: the level of detail that picks the inverse's row
 };
 
 // A height-blended slot's heights (docs/material-format.md#height-blending): the height slot's texture and channel,
@@ -148,12 +150,18 @@ private:
 // stable mode only (the parser rejects paper mode with them). `pixel`: the pixel's integer position (column, row),
 // which the 1-tap variant's dither hashes. `height`: required when the slot has height_blend (unless taps is 1,
 // which cannot height-blend); its width is the one used, not slot.heightBlend's.
+//
+// The histogram blend (slot.hex.blend, docs/material-format.md#blend): `texture` is the slot's Gaussian texture and
+// `lut` its inverse look-up table (hexc/histogram.h), both required. The tiles' Gaussian values are blended with the
+// weights W_i / sqrt(sum W_j^2) (Heitz and Neyret 2018, Eq. 12) about the mean 0.5; each channel's G is mapped back by
+// the table's row for the level of detail lod = log2 rho of the st gradients (as the sampler defines rho), rows
+// interpolated linearly in lod and entries in G; the channels return to RGB with the table's row 0.
 SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel = {0, 0},
-                      const HeightSource* height = nullptr);
+                      const HeightSource* height = nullptr, const SampledTexture* lut = nullptr);
 
 // evaluateAt at st = uv * slot.hex.tiling, with uv gradients.
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx, double dudy, double dvdy,
-                    std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr);
+                    std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr, const SampledTexture* lut = nullptr);
 
 // A surface point for the triplanar projection: world position, normal (any length) and the position's
 // screen-space gradients.
@@ -165,7 +173,8 @@ struct SurfacePoint {
 // each plane with b_k > 0 evaluated by evaluateAt, colours blended by b_k, normal derivatives turned into a
 // world-space surface gradient.
 SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, const SurfacePoint& point,
-                             std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr);
+                             std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr,
+                             const SampledTexture* lut = nullptr);
 
 // The value and weights templates' preview surface for triplanar materials: the unit sphere with u, v as
 // longitude and latitude (radians), P = N = (cos v sin u, sin v, cos v cos u); dPdx, dPdy from the uv gradients.
@@ -176,8 +185,16 @@ enum class Output { Value, Weights };  // Weights: (w.x, w.y, w.z, 1) per pixel
 // Every pixel of a view, row by row (row 0 at the top), with its details: the slot at the pixel centre's uv, or
 // for the triplanar projection at previewSphere of it.
 std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view,
-                                     const HeightSource* height = nullptr);
+                                     const HeightSource* height = nullptr, const SampledTexture* lut = nullptr);
 
-Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output, const HeightSource* height = nullptr);
+Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output, const HeightSource* height = nullptr,
+             const SampledTexture* lut = nullptr);
+
+// A slot's textures as the reference samples them: its own, or for the histogram blend its Gaussian texture and
+// inverse look-up table, derived by hexc's precomputation (what the compiler writes) from the slot's texture file.
+struct SlotTextures {
+    explicit SlotTextures(const Slot& slot);
+    std::unique_ptr<SampledTexture> texture, lut;  // lut: the histogram blend only
+};
 
 }  // namespace hexc::reference

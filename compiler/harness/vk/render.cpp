@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "hexc/histogram.h"
 #include "hexc/spirv.h"
 #include "vk/shaders.h"
 
@@ -290,12 +291,22 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     request.fragmentEntry = manifest["targets"][manifestTarget(target)]["entry_point"];
     request.uniformData = packParameters(manifest, parameters);
     bindTemplateInputs(manifest, target, own, request);
-    // Textures in manifest order, which is binding order.
-    std::vector<Texture> textures;
+    // Textures in manifest order, which is binding order; a histogram slot's Gaussian texture in its place, its look-up
+    // table after every slot's (as the manifest lists them).
+    std::vector<Texture> textures, luts;
     for (const auto& s : manifest["slots"]) {
-        for (const Slot& slot : m.slots)
-            if (slot.name == s["name"]) textures.push_back(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
+        for (const Slot& slot : m.slots) {
+            if (slot.name != s["name"]) continue;
+            Texture t = loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb);
+            if (s.contains("histogram")) {
+                HistogramTransform h = histogramTransform(t, slot);
+                t = std::move(h.gaussian);
+                luts.push_back(std::move(h.lut));
+            }
+            textures.push_back(std::move(t));
+        }
     }
+    textures.insert(textures.end(), std::make_move_iterator(luts.begin()), std::make_move_iterator(luts.end()));
     for (const Texture& t : textures) request.textures.push_back(&t);
     setView(request, view);
     request.timedFrames = timedFrames;

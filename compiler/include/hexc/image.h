@@ -60,6 +60,9 @@ Texture loadTexture(const std::filesystem::path& file, bool srgb);
 // Whether writeImage writes this file's extension (.pfm or .png, any case).
 bool isImageExtension(const std::filesystem::path& file);
 
+// An image as a PFM file's bytes (RGB, little-endian floats, bottom row first): exact, and the same bytes every time.
+std::string pfmBytes(const Image& image);
+
 // Writes by extension: .pfm (float, exact), .png (8-bit, values clamped to [0,1], no sRGB encoding).
 // Written to a temporary file and renamed. Throws std::runtime_error on failure.
 void writeImage(const Image& image, const std::filesystem::path& file);

@@ -22,6 +22,9 @@ enum class HashMode { Stable, Paper };
 enum class Mask { Hex, Checker, Noise, Noise3 };
 // Where a slot's texture coordinate comes from: the mesh uv, or world position and normal on three planes.
 enum class Projection { Uv, Triplanar };
+// How a colour or scalar slot blends its tiles' samples (docs/material-format.md#blend): the paper's weighted average
+// under its luminance falloff, or Heitz and Neyret's histogram-preserving blend of a transformed texture hexc derives.
+enum class Blend { Falloff, Histogram };
 
 // Hex-tiling settings. Names follow MaterialX <hextiledimage> where the meaning is the same;
 // the paper's symbol is given for each.
@@ -36,6 +39,7 @@ struct HexTiling {
     Mask mask = Mask::Hex;
     int maskScale = 2;                       // checker and noise masks: cells per unit of st
     int taps = 0;                            // 0: every tap of the mask, blended; 1: one dithered fetch
+    Blend blend = Blend::Falloff;            // normal slots always blend derivatives (Falloff)
     Projection projection = Projection::Uv;  // material-wide
     double planeSharpness = 4;               // triplanar: exponent on |normal| per plane
     // Stable mode only: the slot also reads an origin (cell, offset) that the engine fills each frame from a
@@ -99,5 +103,6 @@ std::string_view toString(ColorSpace space);
 std::string_view toString(HashMode mode);
 std::string_view toString(Mask mask);
 std::string_view toString(Projection projection);
+std::string_view toString(Blend blend);
 
 }  // namespace hexc

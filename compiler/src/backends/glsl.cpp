@@ -74,12 +74,12 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     // hexc's textures on units base..base+n-1; the template's textures (combined by SPIRV-Cross or its own
     // sampler2D) after.
     const uint32_t base = plan.layout.glsl.binding;
-    uint32_t unit = base + uint32_t(plan.slots.size());
+    uint32_t unit = base + uint32_t(plan.textureCount());
     std::map<uint32_t, uint32_t> units;  // template image or sampled image id -> texture unit
     for (const auto& combined : c.get_combined_image_samplers()) {
         uint32_t binding = c.get_decoration(combined.image_id, spv::DecorationBinding);
         bool hexcs = c.get_decoration(combined.image_id, spv::DecorationDescriptorSet) == plan.bindings.set &&
-                     binding >= plan.bindings.firstTexture && binding < plan.bindings.firstTexture + plan.slots.size();
+                     binding >= plan.bindings.firstTexture && binding < plan.bindings.firstTexture + plan.textureCount();
         c.set_name(combined.combined_id, c.get_name(combined.image_id));
         if (!hexcs && !units.count(combined.image_id)) units[combined.image_id] = unit++;
         c.set_decoration(combined.combined_id, spv::DecorationBinding,
@@ -112,8 +112,8 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };
     out.target = describeTarget(spirv, plan, out.entryPoint, locate, none, placed);
     out.target["version"] = std::to_string(options.glslVersion) + (options.glslEs ? " es" : "");
-    // Combined samplers keep the texture's name, so the uniform to bind is the slot's texture name.
-    for (auto& [slot, where] : out.target["textures"].items()) where["uniform"] = "hexcTex_" + slot;
+    // Combined samplers keep the texture's name, so the uniform to bind is the texture's variable.
+    for (size_t i = 0; i < plan.textureCount(); ++i) out.target["textures"][plan.textureName(i)]["uniform"] = plan.textureVariable(i);
     return out;
 }
 

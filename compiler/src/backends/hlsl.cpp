@@ -11,7 +11,7 @@ namespace {
 template <typename Binding>
 nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const ShaderPlan& plan, Binding binding) {
     const ResourceLayout::Hlsl& l = plan.layout.hlsl;
-    uint32_t next[4] = {l.b + 1, l.t + uint32_t(plan.slots.size()), l.s + 1, l.u};  // b, t, s, u
+    uint32_t next[4] = {l.b + 1, l.t + uint32_t(plan.textureCount()), l.s + 1, l.u};  // b, t, s, u
     auto take = [&](char cls) { return next[std::string_view("btsu").find(cls)]++; };
     nlohmann::json placed = nlohmann::json::array();
     for (const TemplateResource& r : templateResources(c, plan)) {
@@ -91,8 +91,8 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     sampler.sampler = {l.space, l.s};
     c.add_hlsl_resource_binding(params);
     c.add_hlsl_resource_binding(sampler);
-    for (uint32_t i = 0; i < plan.slots.size(); ++i) {
-        spirv_cross::HLSLResourceBinding texture = binding(hexcs.set, plan.slots[i].binding);
+    for (uint32_t i = 0; i < plan.textureCount(); ++i) {
+        spirv_cross::HLSLResourceBinding texture = binding(hexcs.set, hexcs.firstTexture + i);
         texture.srv = {l.space, l.t + i};
         c.add_hlsl_resource_binding(texture);
     }

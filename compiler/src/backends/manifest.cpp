@@ -1,11 +1,25 @@
 #include "backends/backends.h"
+#include "hexc/histogram.h"
 
 namespace hexc {
 
 namespace {
 
 // A slot as the manifest lists it: its texture and the settings it was compiled with.
-nlohmann::json slotEntry(const SlotPlan& sp) {
+// A histogram slot's derived textures (hexc/histogram.h): the files hexc writes and how an engine binds them.
+nlohmann::json histogramEntry(const std::string& material, const Slot& s) {
+    const std::string format = "PFM, RGB float32 (upload as RGBA float, alpha 1), linear values";
+    return {{"gaussian",
+             {{"file", histogramFileName(material, s.name, "gaussian")},
+              {"format", format},
+              {"binding", "the slot's texture, in place of " + s.texture + ": hexc's sampler, full mip chain"}}},
+            {"lut",
+             {{"file", histogramFileName(material, s.name, "lut")},
+              {"format", format},
+              {"binding", "texture `" + s.name + ".lut`: hexc's sampler, level 0 read only (no mip chain needed)"}}}};
+}
+
+nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
     nlohmann::json slot = {
@@ -32,6 +46,10 @@ nlohmann::json slotEntry(const SlotPlan& sp) {
     if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
     // Bound for another slot's height blending only: the shader has no function for it.
     if (sp.heightOnly) slot["height_map_only"] = true;
+    if (sp.histogram) {
+        slot["hextiling"]["blend"] = toString(h.blend);
+        slot["histogram"] = histogramEntry(material, s);
+    }
     if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
     if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
     // The texture channels the shader reads: what a packing tool may not reuse.
@@ -43,7 +61,7 @@ nlohmann::json slotEntry(const SlotPlan& sp) {
 
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets) {
     nlohmann::json slots = nlohmann::json::array();
-    for (const SlotPlan& sp : plan.slots) slots.push_back(slotEntry(sp));
+    for (const SlotPlan& sp : plan.slots) slots.push_back(slotEntry(material.name, sp));
     nlohmann::json members = nlohmann::json::array(), constants = nlohmann::json::array(), specialised = nlohmann::json::array();
     for (const ParamMember& p : plan.specialised) specialised.push_back({{"name", p.name}, {"value", p.value[0]}, {"slots", p.slots}});
     for (const ParamMember& p : plan.params) {

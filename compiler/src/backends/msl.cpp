@@ -85,8 +85,8 @@ Placed placeDirect(spirv_cross::CompilerMSL& c, const ShaderPlan& plan, const st
     };
     bind(set, plan.bindings.params, "buffer", l.buffer);
     bind(set, plan.bindings.sampler, "sampler", l.sampler);
-    for (uint32_t i = 0; i < plan.slots.size(); ++i) bind(set, plan.slots[i].binding, "texture", l.texture + i);
-    uint32_t buffer = l.buffer + 1, texture = l.texture + uint32_t(plan.slots.size()), sampler = l.sampler + 1;
+    for (uint32_t i = 0; i < plan.textureCount(); ++i) bind(set, plan.bindings.firstTexture + i, "texture", l.texture + i);
+    uint32_t buffer = l.buffer + 1, texture = l.texture + uint32_t(plan.textureCount()), sampler = l.sampler + 1;
     for (const TemplateResource& r : own) {
         const bool push = r.cls == ResourceClass::PushConstant;
         spirv_cross::MSLResourceBinding b =
@@ -112,7 +112,7 @@ Placed placeInArgumentBuffers(spirv_cross::CompilerMSL& c, const ShaderPlan& pla
     };
     const uint32_t set = plan.bindings.set;
     std::vector<Entry> entries = {{set, plan.bindings.params, false, false}, {set, plan.bindings.sampler, false, true}};
-    for (const SlotPlan& sp : plan.slots) entries.push_back({set, sp.binding, true, false});
+    for (uint32_t i = 0; i < plan.textureCount(); ++i) entries.push_back({set, plan.bindings.firstTexture + i, true, false});
     uint32_t sets = set + 1;
     for (const TemplateResource& r : own)
         if (r.cls != ResourceClass::PushConstant) {
@@ -161,7 +161,7 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
     Locate locate = [&](ResourceKind kind, uint32_t index) -> nlohmann::json {
         const uint32_t binding = kind == ResourceKind::Params    ? plan.bindings.params
                                  : kind == ResourceKind::Sampler ? plan.bindings.sampler
-                                                                 : plan.slots[index].binding;
+                                                                 : plan.bindings.firstTexture + index;
         return where.at({plan.bindings.set, binding});
     };
     // SPIRV-Cross gives user varyings [[user(locn<location>)]] and colour outputs [[color(<location>)]].

@@ -36,7 +36,7 @@ int lineNaming(const std::string& source, const std::string& name) {
 }
 
 // hexc's own resources: its block, sampler and textures at their bindings in hexc's set, under its names.
-bool isHexcs(const TemplateResource& r, const HexcBindings& b, size_t slots) {
+bool isHexcs(const TemplateResource& r, const HexcBindings& b, size_t textures) {
     const bool named = r.set == b.set && (r.name.starts_with("hexc") || r.name == "HexcParams");
     switch (r.cls) {
         case ResourceClass::UniformBuffer:
@@ -45,7 +45,7 @@ bool isHexcs(const TemplateResource& r, const HexcBindings& b, size_t slots) {
             return named && r.binding == b.sampler;
         case ResourceClass::Image:
         case ResourceClass::SampledImage:  // the SPIR-V output's, with layout vulkan.combined
-            return named && r.binding >= b.firstTexture && r.binding < b.firstTexture + slots;
+            return named && r.binding >= b.firstTexture && r.binding < b.firstTexture + textures;
         default:
             return false;
     }
@@ -54,7 +54,7 @@ bool isHexcs(const TemplateResource& r, const HexcBindings& b, size_t slots) {
 // A template resource at one of the bindings hexc's layout takes (HX210).
 CompileError bindingConflict(const TemplateResource& t, const ShaderPlan& plan) {
     const HexcBindings& b = plan.bindings;
-    const std::string last = std::to_string(b.firstTexture + plan.slots.size() - 1);
+    const std::string last = std::to_string(b.firstTexture + plan.textureCount() - 1);
     return CompileError{{Diagnostic::make(
         Code::TemplateSetConflict, {plan.templateName, lineNaming(plan.templateSource, t.name), 0}, "",
         "`" + t.name + "` is in descriptor set " + std::to_string(t.set) + ", binding " + std::to_string(t.binding) +
@@ -91,8 +91,8 @@ std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, 
                 out.push_back(std::move(t));
                 continue;
             }
-            if (isHexcs(t, plan.bindings, plan.slots.size())) continue;
-            const uint32_t end = plan.bindings.firstTexture + uint32_t(plan.slots.size());
+            if (isHexcs(t, plan.bindings, plan.textureCount())) continue;
+            const uint32_t end = plan.bindings.firstTexture + uint32_t(plan.textureCount());
             if (t.set == plan.bindings.set && t.binding >= plan.bindings.params && t.binding < end) throw bindingConflict(t, plan);
             out.push_back(std::move(t));
         }
@@ -132,7 +132,7 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
         if (hexcBlock) t["params"] = locate(ResourceKind::Params, 0);
         t["sampler"] = locate(ResourceKind::Sampler, 0);
         nlohmann::json textures = nlohmann::json::object();
-        for (size_t i = 0; i < plan.slots.size(); ++i) textures[plan.slots[i].slot->name] = locate(ResourceKind::Texture, uint32_t(i));
+        for (size_t i = 0; i < plan.textureCount(); ++i) textures[plan.textureName(i)] = locate(ResourceKind::Texture, uint32_t(i));
         t["textures"] = textures;
     }
     if (!placed.empty()) t["template_resources"] = placed;

@@ -73,6 +73,11 @@ public:
         // Every texture first: a slot may read another's as its height map.
         for (const SlotPlan& sp : plan_.slots)
             out += expand("texture", {{"name", sp.slot->name}, {"set", set}, {"binding", std::to_string(sp.binding)}}) + "\n";
+        for (size_t i = 0; i < plan_.luts.size(); ++i)
+            out += expand("lut", {{"name", plan_.slots[plan_.luts[i]].slot->name},
+                                  {"set", set},
+                                  {"binding", std::to_string(b.firstTexture + plan_.slots.size() + i)}}) +
+                   "\n";
         return out;
     }
 

@@ -96,17 +96,8 @@ Texture loadPfm(const std::filesystem::path& file) {
 bool writePfm(const Image& image, const std::filesystem::path& file) {
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     if (!out) return false;
-    out << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
-    std::vector<unsigned char> row(size_t(image.width) * 3 * 4);
-    for (int y = image.height - 1; y >= 0; --y) {  // PFM stores the bottom row first
-        unsigned char* p = row.data();
-        for (int x = 0; x < image.width; ++x)
-            for (int c = 0; c < 3; ++c) {
-                const uint32_t bits = std::bit_cast<uint32_t>(image.at(x, y)[c]);
-                for (int b = 0; b < 4; ++b) *p++ = (unsigned char)(bits >> (8 * b));  // little-endian
-            }
-        out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size()));
-    }
+    const std::string bytes = pfmBytes(image);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
     out.close();
     return bool(out);
 }
@@ -192,6 +183,17 @@ Texture loadTexture(const std::filesystem::path& file, bool srgb) {
         t.srgb = srgb;
     }
     return t;
+}
+
+std::string pfmBytes(const Image& image) {
+    std::string out = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+    for (int y = image.height - 1; y >= 0; --y)  // PFM stores the bottom row first
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const uint32_t bits = std::bit_cast<uint32_t>(image.at(x, y)[c]);
+                for (int b = 0; b < 4; ++b) out += char(bits >> (8 * b));  // little-endian
+            }
+    return out;
 }
 
 bool isImageExtension(const std::filesystem::path& file) {

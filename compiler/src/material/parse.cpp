@@ -30,7 +30,7 @@ const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel"
 const std::vector<std::string> kHexKeys = {"enabled",    "tiling",     "rotation",          "falloff",       "falloffcontrast",
                                            "exponent",   "mode",       "split_coordinates", "rotationrange", "rotationsteps",
                                            "scalerange", "offset",     "offsetsteps",       "mask",          "maskscale",
-                                           "taps",       "projection", "planesharpness"};
+                                           "taps",       "projection", "planesharpness",    "blend"};
 const std::vector<std::string> kHeightKeys = {"slot", "width"};
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
@@ -51,6 +51,7 @@ bool isSlotName(const std::string& name) {
 const std::vector<std::string> kModes = {"stable", "paper"};
 const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
 const std::vector<std::string> kProjections = {"uv", "triplanar"};
+const std::vector<std::string> kBlends = {"falloff", "histogram"};
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
 constexpr size_t kMaxSlots = 16;
 
@@ -396,6 +397,9 @@ private:
             hex.maskScale = int(whole(v["maskscale"], pointer + "/maskscale",
                                       {1, 64, false, false, "in 1..64 (mask cells per texture repeat)"}, hex.maskScale));
         if (v.contains("taps")) hex.taps = int(whole(v["taps"], pointer + "/taps", {1, 3, false, false, "in 1..3"}, hex.taps));
+        if (v.contains("blend")) {
+            if (int i = choice(v["blend"], pointer + "/blend", kBlends); i >= 0) hex.blend = Blend(i);
+        }
         transformSettings(v, pointer, hex);
         projectionSettings(v, pointer, hex, materialLevel);
     }
@@ -541,6 +545,7 @@ private:
         if (v.contains("hextiling")) hexSettings(v["hextiling"], pointer + "/hextiling", s.hex);
         std::string at = v.contains("hextiling") ? pointer + "/hextiling" : pointer;
         settingRules(s.hex, at);
+        blendRules(v, pointer, s);
         if (!s.hex.splitCoordinates) {
             // A tiling the slot inherits is the material's: reported there, once for all the slots that inherit it.
             const bool ownTiling = v.contains("hextiling") && v["hextiling"].is_object() && v["hextiling"].contains("tiling");
@@ -555,6 +560,21 @@ private:
             if (v["texture"].is_string()) texture(s, pointer + "/texture");
         }
         return s;
+    }
+
+    // The histogram blend applies to colour and scalar slots that blend every tap: one set on a normal slot itself is an
+    // error, one inherited from the material leaves normal and disabled slots as they were.
+    void blendRules(const json& v, const std::string& pointer, Slot& s) {
+        if (s.hex.blend != Blend::Histogram) return;
+        const bool own = v.contains("hextiling") && v["hextiling"].is_object() && v["hextiling"].contains("blend");
+        if (own && s.kind == SlotKind::Normal)
+            report(Code::WrongSlotKind, pointer + "/hextiling/blend",
+                   "`blend` \"histogram\" applies to slots of kind `color` or `scalar`; a normal map blends its derivatives");
+        else if (s.hex.enabled && s.kind != SlotKind::Normal && s.hex.taps == 1)
+            report(
+                Code::ConflictingSettings, pointer + (own ? "/hextiling/blend" : ""),
+                "`blend` \"histogram\" blends every tile's sample; it cannot be combined with `taps` 1 (one fetch has nothing to blend)");
+        if (s.kind == SlotKind::Normal || !s.hex.enabled) s.hex.blend = Blend::Falloff;
     }
 
     // Rules across a slot's merged hex-tiling settings, reported at `at`.
@@ -619,6 +639,9 @@ private:
         if (!s.hex.enabled)
             report(Code::ConflictingSettings, pointer,
                    "`height_blend` weighs tiles, and this slot has hex-tiling disabled (`enabled`: false)", {}, true);
+        if (s.hex.blend == Blend::Histogram)
+            report(Code::ConflictingSettings, pointer,
+                   "`height_blend` cannot be combined with `blend` \"histogram\", whose weights must keep the blend's variance");
         s.heightBlend = h;
     }
 
@@ -816,6 +839,7 @@ std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }
 std::string_view toString(ColorSpace space) { return kColorSpaces[size_t(space)]; }
 std::string_view toString(HashMode mode) { return kModes[size_t(mode)]; }
 std::string_view toString(Mask mask) { return kMasks[size_t(mask)]; }
+std::string_view toString(Blend blend) { return kBlends[size_t(blend)]; }
 std::string_view toString(Projection projection) { return kProjections[size_t(projection)]; }
 
 }  // namespace hexc

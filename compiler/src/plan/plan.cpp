@@ -91,7 +91,8 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     static const char* kTypes[] = {"vec4", "float", "vec2"};
     SlotPlan sp;
     sp.slot = &slot;
-    sp.section = std::string(toString(slot.kind)) + (!h.enabled ? ".plain" : h.taps == 1 ? ".hex1" : ".hex");
+    sp.histogram = h.enabled && h.blend == Blend::Histogram;  // the parser has left it only on colour and scalar slots
+    sp.section = std::string(toString(slot.kind)) + (!h.enabled ? ".plain" : h.taps == 1 ? ".hex1" : sp.histogram ? ".histogram" : ".hex");
     sp.coordinates = triplanar ? "triplanar" : h.splitCoordinates ? "uv.split" : "uv";
     // A triplanar normal slot returns a world-space surface gradient.
     sp.type = triplanar && slot.kind == SlotKind::Normal ? "vec3" : kTypes[size_t(slot.kind)];
@@ -99,7 +100,8 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     sp.explicitGradients = triplanar;
     sp.taps = h.maskTaps();
     // One tap needs no falloff metric: it has a single sample to weigh.
-    sp.metric = h.taps != 1 && (all || h.falloffcontrast != 0);
+    // The histogram blend weighs tiles by the lattice alone: a metric would break the variance its weights keep.
+    sp.metric = h.taps != 1 && !sp.histogram && (all || h.falloffcontrast != 0);
     sp.gain = all || h.falloff != 0.5;
     // Whole-number exponents become multiplications: gamma = 7 (the paper's) and the gain at r = 1 - 2^-k
     // (the paper's 0.75 is k = 2) then cost no pow. Like the feature switches, they fix the value in the code.
@@ -148,6 +150,7 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
             }
         }
         sp.binding = binding++;
+        if (sp.histogram) plan.luts.push_back(plan.slots.size());
         plan.slots.push_back(sp);
     }
     for (SlotPlan& sp : plan.slots) {

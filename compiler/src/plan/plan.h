@@ -75,6 +75,7 @@ struct SlotPlan {
     bool explicitGradients = false;   // plain sampling with the given gradients (triplanar planes: non-uniform flow)
     std::optional<size_t> heightMap;  // index into ShaderPlan::slots of the slot it height-blends by
     bool heightOnly = false;          // only the texture is used, as another slot's height map (no function, no lattice)
+    bool histogram = false;           // blend histogram: its texture is the Gaussian one, and it reads a look-up table
     ParamRef falloff, falloffContrast, exponent, heightWidth;
 };
 
@@ -85,14 +86,28 @@ struct ShaderPlan {
     std::filesystem::path templateFile;  // the template file read; empty for a built-in template
     std::string templateSource;
     std::vector<SlotPlan> slots;  // only the slots the template reads
-    ResourceLayout layout;        // where hexc's resources go on each target
-    std::string entryPoint;       // the SPIR-V entry point, which HLSL and MSL keep
+    // The slots (indexes into `slots`) whose histogram blend reads a look-up table: texture slots.size() + i, after
+    // every slot's texture, so that materials without one keep their bindings.
+    std::vector<size_t> luts;
+    ResourceLayout layout;   // where hexc's resources go on each target
+    std::string entryPoint;  // the SPIR-V entry point, which HLSL and MSL keep
     HexcBindings bindings{layout.vulkan};
     std::vector<LatticePlan> lattices;
     std::vector<ParamMember> params;       // block members first, in block order, then baked constants
     std::vector<ParamMember> specialised;  // settings fixed in the code as whole-number exponents
     uint32_t paramBlockSize = 0;           // std140 size, rounded up to 16
     Diagnostics diagnostics;               // warnings (e.g. a slot the template never reads) or errors
+
+    // hexc's textures, bound at firstTexture + i: each slot's, then the look-up tables.
+    size_t textureCount() const { return slots.size() + luts.size(); }
+    // The manifest's name of texture i: the slot's, or "<slot>.lut" (a `.` no slot name has).
+    std::string textureName(size_t i) const {
+        return i < slots.size() ? slots[i].slot->name : slots[luts[i - slots.size()]].slot->name + ".lut";
+    }
+    // Its variable in the generated GLSL: hexcTex_<slot> or hexcLut_<slot>.
+    std::string textureVariable(size_t i) const {
+        return i < slots.size() ? "hexcTex_" + slots[i].slot->name : "hexcLut_" + slots[luts[i - slots.size()]].slot->name;
+    }
 };
 
 ShaderPlan planShader(const Material& material, const CompileOptions& options);

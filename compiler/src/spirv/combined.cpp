@@ -88,7 +88,7 @@ uint32_t sampledImageType(const Module& m, uint32_t image) {
 std::map<uint32_t, uint32_t> textureImages(const Module& m, const std::map<std::pair<uint32_t, uint32_t>, uint32_t>& byBinding,
                                            const ShaderPlan& plan) {
     std::map<uint32_t, uint32_t> imageOf;
-    for (size_t t = 0; t < plan.slots.size(); ++t) {
+    for (size_t t = 0; t < plan.textureCount(); ++t) {
         const auto var = byBinding.find({plan.bindings.set, plan.bindings.firstTexture + uint32_t(t)});
         if (var == byBinding.end()) continue;  // a slot the shader does not read
         for (const Instruction& i : m.code)

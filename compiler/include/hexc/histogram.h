@@ -1,0 +1,40 @@
+#pragma once
+// The precomputation of the histogram-preserving blend (docs/material-format.md#blend): Heitz and Neyret 2018,
+// "High-Performance By-Example Noise using a Histogram-Preserving Blending Operator", and its real-time form by
+// Deliot and Heitz 2019, "Procedural Stochastic Textures by Tiling and Blending". From a slot's texture hexc derives
+//   - a decorrelated colour space: the principal axes of the texels' linear RGB (identity for a scalar slot);
+//   - T, per decorrelated channel: the channel's empirical CDF composed with the inverse CDF of a Gaussian of mean
+//     0.5 and standard deviation 1/6, applied to every texel: the Gaussian texture the shader samples instead;
+//   - the inverse of T as a look-up table, one row per mip level of the Gaussian texture: a level is a box average, of
+//     smaller variance s_l^2 than level 0's s_0^2, and the value it stands for is the average of the texels under
+//     it, E[T^-1(Y)] with Y ~ N(g, s_0^2 - s_l^2) (the level-0 value given the level-l value, for a Gaussian field).
+// The shader blends Gaussian values with variance-preserving weights, G = sum w_i (g_i - 0.5) / sqrt(sum w_i^2) + 0.5,
+// then reads each channel's inverse in the row of its level of detail and returns to RGB.
+#include <array>
+#include <string>
+
+#include "hexc/image.h"
+#include "hexc/material.h"
+
+namespace hexc {
+
+// Entries per look-up table row: Gaussian values 0 .. 1 (mean -3 to +3 standard deviations) in equal steps.
+constexpr int kHistogramLutWidth = 512;
+
+struct HistogramTransform {
+    // The texture's size, float RGBA: T of decorrelated channel k in channel k (a scalar slot: in r, g and b); alpha 1.
+    Texture gaussian;
+    // kHistogramLutWidth x (1 + levels of the Gaussian texture's full mip chain), float RGBA, linear values.
+    // Row 0, texels 0-2: the decorrelated axes in linear RGB, texel 3: the mean, so RGB = mean + sum_k q_k axis_k.
+    // Row 1 + l, texel i: q_k = T_k^-1 at Gaussian value i / (kHistogramLutWidth - 1), in channel k, for mip level l.
+    Texture lut;
+};
+
+// The transform of `source` (as loadTexture gives it, sRGB decoded to linear first) for `slot`: a colour slot's RGB,
+// a scalar slot's channel. Deterministic: the same texels give the same bytes.
+HistogramTransform histogramTransform(const Texture& source, const Slot& slot);
+
+// The output files hexc writes for a histogram slot: "<material>.<slot>.gaussian.pfm" and "<material>.<slot>.lut.pfm".
+std::string histogramFileName(const std::string& material, const std::string& slot, const char* which);
+
+}  // namespace hexc
