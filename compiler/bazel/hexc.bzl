@@ -42,9 +42,9 @@ hexc_material = rule(
           "(those of `targets`).",
     attrs = {
         "material": attr.label(
-            allow_single_file = [".json"],
+            allow_single_file = [".json", ".mtlx"],
             mandatory = True,
-            doc = "The material file.",
+            doc = "The material file: JSON, or a MaterialX document holding one material.",
         ),
         "material_name": attr.string(
             doc = "The material's \"name\", which names the outputs; default: this target's name.",

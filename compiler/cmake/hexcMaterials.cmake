@@ -1,12 +1,32 @@
-# hexc_add_materials(<target> MATERIALS <material.json>... OUTPUT_DIR <dir>
+# hexc_add_materials(<target> MATERIALS <material.json|.mtlx>... OUTPUT_DIR <dir>
 #                    [TARGETS spirv|hlsl|glsl|msl ...] [OPTIONS <hexc option>...])
 #
 # One build rule per material, running hexc::hexc with a depfile, so a change to the material, a texture or a
 # template rebuilds that material only. Every output is declared (<dir>/<name>.frag.{spv,hlsl,glsl,metal} for the
 # chosen TARGETS, default all four, and <dir>/<name>.manifest.json), so a deleted output is rebuilt and other
-# rules can depend on the files. <name> is the material's "name"; CMake reads it at configure time and
-# re-configures when a material file changes. <target> (ALL) builds them all; its HEXC_OUTPUTS property lists
+# rules can depend on the files. <name> is the material's "name" (each <surfacematerial>'s for a MaterialX
+# document, docs/materialx.md); CMake reads it at configure time and re-configures when a material file changes. <target> (ALL) builds them all; its HEXC_OUTPUTS property lists
 # the files.
+# The materials a file holds: a JSON material's "name", or each <surfacematerial>'s of a MaterialX document.
+function(_hexc_material_names file out)
+  file(READ ${file} text)
+  if(file MATCHES "\\.[mM][tT][lL][xX]$")
+    string(REGEX MATCHALL "<surfacematerial[^>]*>" elements "${text}")
+    set(names)
+    foreach(element IN LISTS elements)
+      if(element MATCHES "[ \t\r\n]name=\"([^\"]*)\"")
+        list(APPEND names ${CMAKE_MATCH_1})
+      endif()
+    endforeach()
+  else()
+    string(JSON names ERROR_VARIABLE error GET "${text}" name)
+    if(error)
+      message(FATAL_ERROR "hexc_add_materials: ${file} has no material name: ${error}")
+    endif()
+  endif()
+  set(${out} ${names} PARENT_SCOPE)
+endfunction()
+
 function(hexc_add_materials target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "OUTPUT_DIR" "MATERIALS;TARGETS;OPTIONS")
   if(arg_UNPARSED_ARGUMENTS OR NOT arg_MATERIALS OR NOT arg_OUTPUT_DIR)
@@ -33,21 +53,25 @@ function(hexc_add_materials target)
   foreach(material IN LISTS arg_MATERIALS)
     cmake_path(ABSOLUTE_PATH material BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR} NORMALIZE OUTPUT_VARIABLE file)
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file})
-    file(READ ${file} text)
-    string(JSON name ERROR_VARIABLE error GET "${text}" name)
-    if(error)
-      message(FATAL_ERROR "hexc_add_materials(${target}): ${file} has no material name: ${error}")
+    _hexc_material_names(${file} names)
+    if(NOT names)
+      message(FATAL_ERROR "hexc_add_materials(${target}): ${file} names no material")
     endif()
-    set(outputs ${out_dir}/${name}.manifest.json)
-    foreach(t IN LISTS arg_TARGETS)
-      list(APPEND outputs ${out_dir}/${name}.frag.${extension_${t}})
+    set(outputs)
+    foreach(name IN LISTS names)
+      list(APPEND outputs ${out_dir}/${name}.manifest.json)
+      foreach(t IN LISTS arg_TARGETS)
+        list(APPEND outputs ${out_dir}/${name}.frag.${extension_${t}})
+      endforeach()
     endforeach()
-    set(depfile ${depfile_dir}/${name}.d)
+    cmake_path(GET file STEM stem)
+    set(depfile ${depfile_dir}/${stem}.d)
+    list(JOIN names " " comment)
     add_custom_command(OUTPUT ${outputs}
       COMMAND hexc::hexc ${file} -o ${out_dir} --targets ${targets} --depfile ${depfile} -q ${arg_OPTIONS}
       DEPENDS ${file} hexc::hexc
       DEPFILE ${depfile}
-      COMMENT "hexc: compiling ${name}"
+      COMMENT "hexc: compiling ${comment}"
       VERBATIM)
     list(APPEND all_outputs ${outputs})
   endforeach()

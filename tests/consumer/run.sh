@@ -21,6 +21,24 @@ material() {  # NAME TEXTURE TILING
 }
 material stone stone.png 4
 material moss moss.png 3
+mtlx() {  # TILING: slate, a MaterialX document (docs/materialx.md)
+  cat > "$src/materials/slate.mtlx" <<EOF
+<?xml version="1.0"?>
+<materialx version="1.39">
+  <hextiledimage name="slate_albedo" type="color3">
+    <input name="file" type="filename" value="textures/stone.png" colorspace="srgb_texture" />
+    <input name="tiling" type="vector2" value="$1" />
+  </hextiledimage>
+  <standard_surface name="slate_surface" type="surfaceshader">
+    <input name="base_color" type="color3" nodename="slate_albedo" />
+  </standard_surface>
+  <surfacematerial name="slate" type="material" hexc_template="unlit">
+    <input name="surfaceshader" type="surfaceshader" nodename="slate_surface" />
+  </surfacematerial>
+</materialx>
+EOF
+}
+mtlx "2, 2"
 
 fail() { echo "consumer ($generator): $*" >&2; exit 1; }
 # Builds and checks which materials hexc compiled: expect NAME... (none for a no-op).
@@ -32,8 +50,8 @@ expect() {
 }
 
 cmake -S "$src" -B "$work/bin" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" || { cat "$work/configure.log"; fail "configure failed"; }
-step="first build" expect moss stone
-for f in moss.manifest.json moss.frag.spv moss.frag.hlsl moss.frag.metal stone.frag.spv; do
+step="first build" expect moss slate stone
+for f in moss.manifest.json moss.frag.spv moss.frag.hlsl moss.frag.metal stone.frag.spv slate.frag.spv; do
   [ -s "$work/bin/shaders/$f" ] || fail "first build: shaders/$f missing"
 done
 [ ! -e "$work/bin/shaders/moss.frag.glsl" ] || fail "TARGETS spirv hlsl msl wrote a .glsl"
@@ -41,6 +59,9 @@ step="no-op rebuild" expect
 
 material stone stone.png 5
 step="edited stone.json" expect stone
+
+mtlx "3, 3"
+step="edited slate.mtlx" expect slate
 
 rm "$work/bin/shaders/moss.frag.hlsl"
 step="deleted moss.frag.hlsl" expect moss
