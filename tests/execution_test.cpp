@@ -652,6 +652,45 @@ TEST(Library, AHandWrittenGlslShaderMatchesTheReference) {
     }
 }
 
+// ---- The bench's paper listing ------------------------------------------------------------------------------------
+
+// bench/paper-listing.glsl, the baseline of the bench's "x paper listing" (Listings 1-10 as written, per slot), must
+// compute what hexc's paper mode (exactly Listings 1, 2, 5 and 6) computes on the same material, or the bench would
+// time unlike shaders. Near the origin, where the paper's hash agrees between implementations (see ColorPath). Its
+// normal map is a flat float texel, (0.5, 0.5, 1) -> (0, 0, 1) exactly, against hexc's material without one: Listing 3
+// as written rotates derivatives back by R(+angle), right for a y-down map only (DESIGN.md), where hexc honours the
+// map's convention, so the two normal paths time the same work but agree only on a flat map. What remains differs by
+// float32 rounding in the order of operations: each output, about 1 here, by a few of its ulps (2^-23 ~ 1.2e-7); the
+// bound 1e-5 leaves a factor of ~80, far below the 1/255 of one texel step an actual difference of the maths makes.
+TEST(PaperListing, TheBenchBaselineComputesWhatPaperModeComputes) {
+    REQUIRE_VULKAN();
+    std::ifstream in("bench/paper-listing.glsl", std::ios::binary);
+    const std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    SpirvResult front = compileToSpirv(source, ShaderStage::Fragment, "bench/paper-listing.glsl");
+    ASSERT_FALSE(front.words.empty()) << formatAll(front.diagnostics);
+    SpirvResult optimized = optimizeSpirv(front.words);
+    ASSERT_FALSE(optimized.words.empty()) << formatAll(optimized.diagnostics);
+    // The bench's full-quality material in paper mode: tiling 4, rotation 1, falloff 0.75 on every slot.
+    ParseResult m = parseMaterial(
+        R"({"name": "listing", "hextiling": {"tiling": 4, "mode": "paper", "rotation": 1, "falloff": 0.75}, "slots": [
+            {"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"},
+            {"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"}]})",
+        "materials/listing.json");
+    ASSERT_TRUE(m.material) << formatAll(m.diagnostics);
+    const View view{128, 128, {0.0, 0.0, 0.05, 0.05}};
+    std::string why;
+    const Image hexc = vk::render(*runner(&why), *m.material, vk::RenderOutput::Shaded, "", view);
+    const Texture albedo = loadTexture(m.material->slots[0].texturePath, true);
+    const Texture roughness = loadTexture(m.material->slots[1].texturePath, false);
+    const Texture flat{1, 1, false, {}, {0.5f, 0.5f, 1.0f, 1.0f}};
+    vk::RenderRequest request;
+    request.fragmentSpirv = optimized.words;
+    request.textures = {&albedo, &flat, &roughness};
+    const Errors e = compare(hexc, vk::renderFragment(*runner(&why), request, view), 3);
+    std::printf("  paper listing against hexc's paper mode: max %.2e, mean %.2e\n", e.max, e.mean);
+    EXPECT_LE(e.max, 1e-5);
+}
+
 // ---- Odd-sized textures -----------------------------------------------------------------------------------
 // hexc accepts any texture size. The runner builds each mip level by a linear blit of the one above, which at an odd
 // size resamples rather than averages; the reference models it (reference::SampledTexture::halve). Crops of the rock

@@ -44,10 +44,12 @@ Image renderShader(Runner& runner, const std::string& templateFile, const std::v
     return renderFragment(runner, std::move(request), view);
 }
 
-Image renderFragment(Runner& runner, RenderRequest request, const View& view) {
+Image renderFragment(Runner& runner, RenderRequest request, const View& view, std::vector<double>* frameMs) {
     request.vertexSpirv = vertexShader();
     setView(request, view);
-    return std::move(runner.render(request).image);
+    RenderResult result = runner.render(request);
+    if (frameMs) *frameMs = std::move(result.frameMs);
+    return std::move(result.image);
 }
 
 namespace {

@@ -56,8 +56,8 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
 Image renderShader(Runner& runner, const std::string& templateFile, const std::vector<uint8_t>& uniforms, const View& view);
 
 // Draws `request`'s fragment shader (one written by hand, its resources filled in by the caller) over `view`, with the
-// harness's vertex stage.
-Image renderFragment(Runner& runner, RenderRequest request, const View& view);
+// harness's vertex stage; with request.timedFrames, each timed frame's GPU time goes to `frameMs`.
+Image renderFragment(Runner& runner, RenderRequest request, const View& view, std::vector<double>* frameMs = nullptr);
 
 // Derivative images (dH/du, dH/dy, ., .) to tangent-space normals encoded n * 0.5 + 0.5, in place (Eq. 2).
 void derivativeToNormalMap(Image& image);
