@@ -167,6 +167,7 @@ struct Timed {
     std::vector<double> frameMs;  // from every round
     std::string failure;          // why there are no numbers
     CompileOptions compile = {};  // how the shader is compiled
+    std::vector<uint32_t> spirv;  // a hand-written shader drawn on the material's textures instead of its own
 };
 
 struct Row : Timed {
@@ -190,6 +191,7 @@ struct Results {
     std::vector<Row> rows;
     std::vector<Shifted> shifted;  // contrast at other places (shiftedContrast)
     std::vector<Timed> opTimings;  // bench/op-cost/<name>.glsl
+    std::vector<Timed> listing;    // bench/paper-listing.glsl, per view
     double referenceSeconds = 0, totalSeconds = 0;
 };
 
@@ -344,6 +346,41 @@ void shiftedContrast(vk::Runner& runner, const References& refs, Results& result
     }
 }
 
+const Row* fullQualityRow(const Results& results, size_t view) {
+    for (const Row& row : results.rows)
+        if (row.view == view && row.method->hextiling == fullQuality(HashMode::Stable)) return &row;
+    return nullptr;
+}
+
+// bench/paper-listing.glsl, the paper's listings as written, optimised like hexc's shaders.
+std::vector<uint32_t> listingSpirv() {
+    const std::string file = "bench/paper-listing.glsl";
+    std::ifstream in(file, std::ios::binary);
+    const std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    SpirvResult front = compileToSpirv(source, ShaderStage::Fragment, file);
+    if (front.words.empty()) throw CompileError{front.diagnostics};
+    SpirvResult optimized = optimizeSpirv(front.words);
+    if (optimized.words.empty()) throw CompileError{optimized.diagnostics};
+    return optimized.words;
+}
+
+// A round of `t`'s frames: its material's shader, or its hand-written one on `textures` (the material's, in slot order,
+// where hexc's default layout binds them).
+void timeRound(vk::Runner& runner, Timed& t, const std::vector<Texture>& textures) {
+    std::vector<double> frameMs;
+    if (t.spirv.empty()) {
+        vk::render(runner, t.material, vk::RenderOutput::Shaded, "", kViews[t.view].view, vk::ExecutedTarget::Spirv, kFramesPerRound,
+                   &frameMs, {}, t.compile);
+    } else {
+        vk::RenderRequest request;
+        request.fragmentSpirv = t.spirv;
+        for (const Texture& texture : textures) request.textures.push_back(&texture);
+        request.timedFrames = kFramesPerRound;
+        vk::renderFragment(runner, request, kViews[t.view].view, &frameMs);
+    }
+    t.frameMs.insert(t.frameMs.end(), frameMs.begin(), frameMs.end());
+}
+
 void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) {
     const auto start = std::chrono::steady_clock::now();
     const References refs = references(materialDir);
@@ -370,23 +407,30 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
     for (const std::string& name : opTemplates) {
         const std::string templ = (fs::current_path() / "bench/op-cost" / (name + ".glsl")).string();
         const Material m = material(materialDir, "op-cost-" + name, {{"enabled", false}}, templ);
-        for (size_t v = 0; v < kViews.size(); ++v) results.opTimings.push_back({name, v, m, {}, {}});
+        for (size_t v = 0; v < kViews.size(); ++v) results.opTimings.push_back({name, v, m, {}, {}, {}, {}});
+    }
+
+    // The paper's listings on the full-quality row's material (its textures; the listing has its settings built in).
+    std::vector<Texture> listingTextures;
+    for (size_t v = 0; v < kViews.size(); ++v) {
+        Timed& t = results.listing.emplace_back(Timed{"paper-listing", v, {}, {}, {}, {}, {}});
+        attempt(t.failure, [&] {
+            t.material = fullQualityRow(results, v)->material;
+            t.spirv = listingSpirv();
+            if (listingTextures.empty())
+                for (const Slot& slot : t.material.slots)
+                    listingTextures.push_back(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
+        });
     }
 
     std::vector<Timed*> timed;
     for (Row& row : results.rows) timed.push_back(&row);
     for (Timed& t : results.opTimings) timed.push_back(&t);
+    for (Timed& t : results.listing) timed.push_back(&t);
     for (int round = 1; round <= kRounds; ++round) {
         std::cout << "  timing round " << round << "/" << kRounds << std::endl;
-        for (Timed* t : timed) {
-            if (!t->failure.empty()) continue;
-            attempt(t->failure, [&] {
-                std::vector<double> frameMs;
-                vk::render(runner, t->material, vk::RenderOutput::Shaded, "", kViews[t->view].view, vk::ExecutedTarget::Spirv,
-                           kFramesPerRound, &frameMs, {}, t->compile);
-                t->frameMs.insert(t->frameMs.end(), frameMs.begin(), frameMs.end());
-            });
-        }
+        for (Timed* t : timed)
+            if (t->failure.empty()) attempt(t->failure, [&] { timeRound(runner, *t, listingTextures); });
     }
 
     std::cout << "  albedo error and contrast" << std::endl;
@@ -418,12 +462,6 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
 std::string errorVs(const Row& r) { return std::isnan(r.error.max) ? "n/a" : std::string(toString(r.errorReference)); }
 
 int opCount(const ShaderOps& ops, const std::string& name) { return ops.extended.count(name) ? ops.extended.at(name) : 0; }
-
-const Row* fullQualityRow(const Results& results, size_t view) {
-    for (const Row& row : results.rows)
-        if (row.view == view && row.method->hextiling == fullQuality(HashMode::Stable)) return &row;
-    return nullptr;
-}
 
 std::string targetLine(const Results& results, size_t view) {
     const Row* row = fullQualityRow(results, view);
@@ -521,10 +559,50 @@ std::string shiftedTable(const Results& r) {
     return md + (last ? "\n" : "");
 }
 
+// The median of each round's frames.
+std::vector<double> roundMedians(const Timed& t) {
+    std::vector<double> out;
+    for (size_t i = 0; i + kFramesPerRound <= t.frameMs.size(); i += kFramesPerRound)
+        out.push_back(median({t.frameMs.begin() + long(i), t.frameMs.begin() + long(i + kFramesPerRound)}));
+    return out;
+}
+
+// `a`'s time over `b`'s, round by round (each round runs every shader once, side by side): "median (min-max)".
+std::string ratioSpread(const Timed& a, const Timed& b) {
+    const std::vector<double> ra = roundMedians(a), rb = roundMedians(b);
+    std::vector<double> ratios;
+    for (size_t i = 0; i < std::min(ra.size(), rb.size()); ++i) ratios.push_back(ra[i] / rb[i]);
+    if (ratios.empty()) return "n/a";
+    const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
+    return strf("%.2f (%.2f-%.2f)", median(ratios), *lo, *hi);
+}
+
+// Every method against the paper's listings as written (bench/paper-listing.glsl), in the same rounds.
+std::string listingTable(const Results& results) {
+    std::string md = "| view | method | x paper listing | x plain |\n|---|---|---|---|\n";
+    for (const Timed& listing : results.listing) {
+        const Row* plain = nullptr;
+        for (const Row& row : results.rows)
+            if (row.view == listing.view && row.name == "plain") plain = &row;
+        if (!listing.failure.empty() || !plain) continue;
+        md += strf("| %s | **paper listing** (%s ms) | 1 | %s |\n", kViews[listing.view].name.c_str(),
+                   num(median(listing.frameMs), "%.2f").c_str(), ratioSpread(listing, *plain).c_str());
+        for (const Row& row : results.rows)
+            if (row.view == listing.view && row.failure.empty())
+                md += strf("| %s | %s | %s | %s |\n", kViews[row.view].name.c_str(), row.name.c_str(), ratioSpread(row, listing).c_str(),
+                           ratioSpread(row, *plain).c_str());
+    }
+    return md;
+}
+
 std::string markdown(const Results& r) {
     std::string md =
         "# hexc shader benchmark\n\n" + r.machine + "\n" + r.settings + "\n## Run time, error, contrast\n\n" + mainTable(r) + "\n";
     for (size_t v = 0; v < kViews.size(); ++v) md += "- " + targetLine(r, v) + "\n";
+    md +=
+        "\n## Against the paper's listings\n\nTime over bench/paper-listing.glsl's (Listings 1-10 as written, per slot, the same "
+        "material and `lit` shading) and over plain tiling's, per round: median (min-max) of the " +
+        std::to_string(kRounds) + " rounds.\n\n" + listingTable(r);
     md += "\n## Contrast at other places\n\nVariance ratio / histogram EMD of the albedo with the views moved by (d, d) uv.\n\n" +
           shiftedTable(r);
     md +=
