@@ -3,8 +3,8 @@
 // them: the bench's baseline for "x paper listing". The material is the bench's full-quality one (rock's three maps
 // at tiling 4, rotation 1, falloff 0.75 on every slot), its settings as constants (the listings' default-argument
 // style; hexc's baked row is the like-for-like comparison), in hexc's default layout (sampler at binding 1,
-// textures from 2 in slot order), shaded as the built-in `lit` template shades it. tests/execution_test.cpp checks
-// that it draws what hexc's paper mode draws.
+// textures from 2 in slot order), shaded as the built-in `lit` template shades it (with PAPER_LISTING_MINIMAL
+// defined, as bench/minimal.glsl does). tests/execution_test.cpp checks that it draws what hexc's paper mode draws.
 //
 // HLSL float2x2(a, b, c, d) fills rows and mul(M, v) is M v, mul(v, M) is v M: with rot = mat2(cs, si, -si, cs)
 // (the rows (cs, -si), (si, cs) of Listing 6), GLSL's rot * v and v * rot are the same products.
@@ -145,6 +145,11 @@ const float kAmbient = 0.15;
 
 void main() {
     vec2 st = v_uv * kTiling;
+#ifdef PAPER_LISTING_MINIMAL
+    // bench/minimal.glsl's shading: the three results summed.
+    vec2 deriv = bumpHex2derivNMap(normalTex, st, 1.0, 0.75);
+    o_color = vec4(hex2colTex(albedoTex, st, 1.0, 0.75).rgb + vec3(hex2colTex(roughnessTex, st, 1.0, 0.75).r) + vec3(deriv, 0.0), 1.0);
+#else
     vec3 albedo = hex2colTex(albedoTex, st, 1.0, 0.75).rgb;
     float roughness = clamp(hex2colTex(roughnessTex, st, 1.0, 0.75).r, 0.02, 1.0);
     vec2 deriv = bumpHex2derivNMap(normalTex, st, 1.0, 0.75);
@@ -158,4 +163,5 @@ void main() {
     float power = 2.0 / (roughness * roughness * roughness * roughness) - 2.0;
     float specular = pow(max(dot(N, H), 0.0), power) * (power + 8.0) / 25.1327412 * diffuse;
     o_color = vec4(albedo * (kAmbient + diffuse) + vec3(0.04 * specular), 1.0);
+#endif
 }

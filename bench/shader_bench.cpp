@@ -43,7 +43,11 @@ using json = nlohmann::json;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kTextureSize = 512;
 constexpr int kFrameSize = 1024;
-constexpr int kRounds = 3, kFramesPerRound = 5;  // 15 timed frames per shader and view
+// Interleaved rounds: at least kRounds, repeated (up to kMaxRounds) until the full-quality rows' ratios to the paper
+// listing and to plain tiling vary by at most kStableSpread between rounds.
+constexpr int kRounds = 3, kMaxRounds = 8, kFramesPerRound = 5;
+constexpr double kStableSpread = 0.05;              // (max - min) / median of a ratio's per-round values
+const std::string kMinimal = "bench/minimal.glsl";  // the minimal shading template
 constexpr double kTiling = 4;
 constexpr double kTargetRatio = 3.0;  // full-quality 3-slot material against plain tiling
 
@@ -105,6 +109,9 @@ const std::vector<Method>& methods() {
         // shows. The oblique template gives every pixel a normal that weighs all three planes (its error is not
         // comparable and not measured).
         {"triplanar-face-on", with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}})},
+        // Plain tiling and full quality under bench/minimal.glsl, where the texture work is nearly all of the frame.
+        {"plain-minimal", {{"enabled", false}}, {}, json::object(), kMinimal},
+        {"stable-rot-gain-minimal", fullQuality(HashMode::Stable), {}, json::object(), kMinimal},
         {"triplanar-3-planes",
          with(fullQuality(HashMode::Stable), {{"projection", "triplanar"}}),
          {},
@@ -191,7 +198,8 @@ struct Results {
     std::vector<Row> rows;
     std::vector<Shifted> shifted;  // contrast at other places (shiftedContrast)
     std::vector<Timed> opTimings;  // bench/op-cost/<name>.glsl
-    std::vector<Timed> listing;    // bench/paper-listing.glsl, per view
+    std::vector<Timed> listing;    // bench/paper-listing.glsl, per view, with `lit`'s and the minimal shading
+    int rounds = 0;                // timing rounds run
     double referenceSeconds = 0, totalSeconds = 0;
 };
 
@@ -346,22 +354,71 @@ void shiftedContrast(vk::Runner& runner, const References& refs, Results& result
     }
 }
 
-const Row* fullQualityRow(const Results& results, size_t view) {
+// The plain or full-quality row of a view and shading (`lit`, or kMinimal).
+const Row* rowOf(const Results& results, size_t view, bool fullQualityRow, const std::string& templ = "lit") {
     for (const Row& row : results.rows)
-        if (row.view == view && row.method->hextiling == fullQuality(HashMode::Stable)) return &row;
+        if (row.view == view && row.method->templ == templ && row.method->compile.specialize && row.method->compile.shareLattice &&
+            !row.method->compile.bake &&
+            row.method->hextiling == (fullQualityRow ? fullQuality(HashMode::Stable) : json{{"enabled", false}}))
+            return &row;
     return nullptr;
 }
 
-// bench/paper-listing.glsl, the paper's listings as written, optimised like hexc's shaders.
-std::vector<uint32_t> listingSpirv() {
+const Row* fullQualityRow(const Results& results, size_t view) { return rowOf(results, view, true); }
+
+// A listing's shading, as its rows' template.
+std::string shadingOf(const Timed& listing) { return listing.name.ends_with("-minimal") ? kMinimal : "lit"; }
+
+// bench/paper-listing.glsl, the paper's listings as written, optimised like hexc's shaders; `minimal`: with the
+// minimal shading.
+std::vector<uint32_t> listingSpirv(bool minimal) {
     const std::string file = "bench/paper-listing.glsl";
     std::ifstream in(file, std::ios::binary);
-    const std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (minimal) source.insert(source.find('\n') + 1, "#define PAPER_LISTING_MINIMAL\n");
     SpirvResult front = compileToSpirv(source, ShaderStage::Fragment, file);
     if (front.words.empty()) throw CompileError{front.diagnostics};
     SpirvResult optimized = optimizeSpirv(front.words);
     if (optimized.words.empty()) throw CompileError{optimized.diagnostics};
     return optimized.words;
+}
+
+// The median of each round's frames.
+std::vector<double> roundMedians(const Timed& t) {
+    std::vector<double> out;
+    for (size_t i = 0; i + kFramesPerRound <= t.frameMs.size(); i += kFramesPerRound)
+        out.push_back(median({t.frameMs.begin() + long(i), t.frameMs.begin() + long(i + kFramesPerRound)}));
+    return out;
+}
+
+// `a`'s time over `b`'s, round by round (each round runs every shader once, side by side).
+std::vector<double> roundRatios(const Timed& a, const Timed& b) {
+    const std::vector<double> ra = roundMedians(a), rb = roundMedians(b);
+    std::vector<double> ratios;
+    for (size_t i = 0; i < std::min(ra.size(), rb.size()); ++i) ratios.push_back(ra[i] / rb[i]);
+    return ratios;
+}
+
+// "median (min-max)" of the per-round ratios.
+std::string ratioSpread(const Timed& a, const Timed& b) {
+    const std::vector<double> ratios = roundRatios(a, b);
+    if (ratios.empty()) return "n/a";
+    const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
+    return strf("%.2f (%.2f-%.2f)", median(ratios), *lo, *hi);
+}
+
+// Whether each full-quality row's ratios to its listing and its plain row vary by at most kStableSpread.
+bool ratiosStable(const Results& results) {
+    for (const Timed& listing : results.listing) {
+        const Row* full = rowOf(results, listing.view, true, shadingOf(listing));
+        const Row* plain = rowOf(results, listing.view, false, shadingOf(listing));
+        if (!listing.failure.empty() || !full || !plain) continue;
+        for (const std::vector<double>& r : {roundRatios(*full, listing), roundRatios(*full, *plain)}) {
+            const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+            if (r.empty() || (*hi - *lo) / median(r) > kStableSpread) return false;
+        }
+    }
+    return true;
 }
 
 // A round of `t`'s frames: its material's shader, or its hand-written one on `textures` (the material's, in slot order,
@@ -412,25 +469,27 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
 
     // The paper's listings on the full-quality row's material (its textures; the listing has its settings built in).
     std::vector<Texture> listingTextures;
-    for (size_t v = 0; v < kViews.size(); ++v) {
-        Timed& t = results.listing.emplace_back(Timed{"paper-listing", v, {}, {}, {}, {}, {}});
-        attempt(t.failure, [&] {
-            t.material = fullQualityRow(results, v)->material;
-            t.spirv = listingSpirv();
-            if (listingTextures.empty())
-                for (const Slot& slot : t.material.slots)
-                    listingTextures.push_back(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
-        });
-    }
+    for (bool minimal : {false, true})
+        for (size_t v = 0; v < kViews.size(); ++v) {
+            Timed& t = results.listing.emplace_back(Timed{minimal ? "paper-listing-minimal" : "paper-listing", v, {}, {}, {}, {}, {}});
+            attempt(t.failure, [&] {
+                t.material = fullQualityRow(results, v)->material;
+                t.spirv = listingSpirv(minimal);
+                if (listingTextures.empty())
+                    for (const Slot& slot : t.material.slots)
+                        listingTextures.push_back(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
+            });
+        }
 
     std::vector<Timed*> timed;
     for (Row& row : results.rows) timed.push_back(&row);
     for (Timed& t : results.opTimings) timed.push_back(&t);
     for (Timed& t : results.listing) timed.push_back(&t);
-    for (int round = 1; round <= kRounds; ++round) {
-        std::cout << "  timing round " << round << "/" << kRounds << std::endl;
+    for (results.rounds = 1;; ++results.rounds) {
+        std::cout << "  timing round " << results.rounds << std::endl;
         for (Timed* t : timed)
             if (t->failure.empty()) attempt(t->failure, [&] { timeRound(runner, *t, listingTextures); });
+        if (results.rounds >= kMaxRounds || (results.rounds >= kRounds && ratiosStable(results))) break;
     }
 
     std::cout << "  albedo error and contrast" << std::endl;
@@ -452,8 +511,7 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
     std::cout << "  contrast at other places" << std::endl;
     shiftedContrast(runner, refs, results);
     for (Row& row : results.rows)
-        for (const Row& plain : results.rows)
-            if (plain.name == "plain" && plain.view == row.view) row.ratio = row.medianMs / plain.medianMs;
+        if (const Row* plain = rowOf(results, row.view, false, row.method->templ)) row.ratio = row.medianMs / plain->medianMs;
     for (const Timed* t : timed)
         if (!t->failure.empty()) std::cout << "  failed: " << t->name << ", " << kViews[t->view].name << ": " << t->failure << "\n";
 }
@@ -559,36 +617,16 @@ std::string shiftedTable(const Results& r) {
     return md + (last ? "\n" : "");
 }
 
-// The median of each round's frames.
-std::vector<double> roundMedians(const Timed& t) {
-    std::vector<double> out;
-    for (size_t i = 0; i + kFramesPerRound <= t.frameMs.size(); i += kFramesPerRound)
-        out.push_back(median({t.frameMs.begin() + long(i), t.frameMs.begin() + long(i + kFramesPerRound)}));
-    return out;
-}
-
-// `a`'s time over `b`'s, round by round (each round runs every shader once, side by side): "median (min-max)".
-std::string ratioSpread(const Timed& a, const Timed& b) {
-    const std::vector<double> ra = roundMedians(a), rb = roundMedians(b);
-    std::vector<double> ratios;
-    for (size_t i = 0; i < std::min(ra.size(), rb.size()); ++i) ratios.push_back(ra[i] / rb[i]);
-    if (ratios.empty()) return "n/a";
-    const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
-    return strf("%.2f (%.2f-%.2f)", median(ratios), *lo, *hi);
-}
-
 // Every method against the paper's listings as written (bench/paper-listing.glsl), in the same rounds.
 std::string listingTable(const Results& results) {
     std::string md = "| view | method | x paper listing | x plain |\n|---|---|---|---|\n";
     for (const Timed& listing : results.listing) {
-        const Row* plain = nullptr;
-        for (const Row& row : results.rows)
-            if (row.view == listing.view && row.name == "plain") plain = &row;
+        const Row* plain = rowOf(results, listing.view, false, shadingOf(listing));
         if (!listing.failure.empty() || !plain) continue;
-        md += strf("| %s | **paper listing** (%s ms) | 1 | %s |\n", kViews[listing.view].name.c_str(),
+        md += strf("| %s | **%s** (%s ms) | 1 | %s |\n", kViews[listing.view].name.c_str(), listing.name.c_str(),
                    num(median(listing.frameMs), "%.2f").c_str(), ratioSpread(listing, *plain).c_str());
         for (const Row& row : results.rows)
-            if (row.view == listing.view && row.failure.empty())
+            if (row.view == listing.view && row.failure.empty() && row.method->templ == shadingOf(listing))
                 md += strf("| %s | %s | %s | %s |\n", kViews[row.view].name.c_str(), row.name.c_str(), ratioSpread(row, listing).c_str(),
                            ratioSpread(row, *plain).c_str());
     }
@@ -602,7 +640,8 @@ std::string markdown(const Results& r) {
     md +=
         "\n## Against the paper's listings\n\nTime over bench/paper-listing.glsl's (Listings 1-10 as written, per slot, the same "
         "material and `lit` shading) and over plain tiling's, per round: median (min-max) of the " +
-        std::to_string(kRounds) + " rounds.\n\n" + listingTable(r);
+        std::to_string(r.rounds) + " rounds (" + std::to_string(kRounds) + " or more, until the full-quality ratios vary by at most " +
+        strf("%.0f", kStableSpread * 100) + " % between rounds, at most " + std::to_string(kMaxRounds) + ").\n\n" + listingTable(r);
     md += "\n## Contrast at other places\n\nVariance ratio / histogram EMD of the albedo with the views moved by (d, d) uv.\n\n" +
           shiftedTable(r);
     md +=
@@ -667,19 +706,22 @@ int run(const fs::path& resultsDir) {
             strf("%s uv %g..%g (%g texels/px); ", v.name.c_str(), v.view.uvRect[0], v.view.uvRect[2], texelsPerPixel(v.view, kTextureSize));
     results.settings = strf(
         "Settings: material albedo (sRGB colour) + normal map + roughness (scalar), %dx%d textures (the examples upscaled), template "
-        "`lit`, tiling %g, every slot with the method's settings; %dx%d frames; %sGPU time from timestamps, median of %d frames (%d "
-        "rounds over all shaders of %d frames, each after one warm-up frame). Methods: rot = rotation 1 (else 0), gain = falloff 0.75 "
+        "`lit` (`bench/minimal.glsl` for the -minimal rows), tiling %g, every slot with the method's settings; %dx%d frames; %sGPU time "
+        "from timestamps, median of all frames (rounds over all shaders of %d frames, each after one warm-up frame, %d to %d rounds "
+        "until the full-quality ratios are stable). Methods: rot = rotation 1 (else 0), gain = falloff 0.75 "
         "(else 0.5); other settings the defaults. Error: the "
         "albedo output against the fp64 reference of the full-quality method of the same hash mode (stable-rot-gain for plain and "
         "stable rows, paper-rot-gain for paper rows), RGB, linear. Contrast: luminance of the albedo against the source texture's "
         "at the mip level the view samples (so plain tiling scores about 1 and 0).\n",
-        kTextureSize, kTextureSize, kTiling, kFrameSize, kFrameSize, views.c_str(), kRounds * kFramesPerRound, kRounds, kFramesPerRound);
+        kTextureSize, kTextureSize, kTiling, kFrameSize, kFrameSize, views.c_str(), kFramesPerRound, kRounds, kMaxRounds);
 
     std::cout << results.machine << "Measuring\n";
     measure(*runner, materialDir, results);
     results.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    results.settings += strf("Bench run time %.0f s, of which %.0f s for the four fp64 reference images; load average %s at the end.\n",
-                             results.totalSeconds, results.referenceSeconds, loadAverage().c_str());
+    results.settings += strf(
+        "Bench run time %.0f s, of which %.0f s for the four fp64 reference images; %d timing rounds; load average %s "
+        "at the end.\n",
+        results.totalSeconds, results.referenceSeconds, results.rounds, loadAverage().c_str());
 
     // The precision stress report (the same measurement as tests/stress_test.cpp).
     std::cout << "  precision far from the origin" << std::endl;
