@@ -61,8 +61,6 @@ constexpr Fixed kFixed[] = {
     {"normalmap", "space", "tangent", "hexc reads tangent-space normal maps"},
 };
 
-std::string_view text(const pugi::xml_attribute& a) { return a.value(); }
-
 // "0.5, 2" -> numbers; nullopt when any item is not a finite number.
 std::optional<std::vector<double>> numbers(std::string_view s) {
     std::vector<double> out;
@@ -91,23 +89,6 @@ json value(std::string_view s) {
 bool isNumbers(const json& v, size_t count) {
     return count == 1 ? v.is_number()
                       : v.is_array() && v.size() == count && std::all_of(v.begin(), v.end(), [](const json& x) { return x.is_number(); });
-}
-
-// `standard_surface` base_color -> albedo; other inputs by their own name in snake_case.
-std::string slotName(std::string_view shader, std::string_view input) {
-    for (const mtlx::SlotInput& s : mtlx::kSlotInputs)
-        if (s.shader == shader && s.input == input) return std::string(s.slot);
-    std::string out;
-    for (size_t i = 0; i < input.size(); ++i) {
-        char c = input[i];
-        if (c >= 'A' && c <= 'Z') {
-            const char before = i ? input[i - 1] : '_';
-            if ((before >= 'a' && before <= 'z') || (before >= '0' && before <= '9')) out += '_';
-            c = char(c - 'A' + 'a');
-        }
-        out += c;
-    }
-    return out;
 }
 
 class Reader {
@@ -187,7 +168,7 @@ private:
                 values += std::string(values.empty() ? "" : ", ") + input.attribute("name").value();
                 continue;
             }
-            if (xml_node node = source(input)) slot(node, slotName(category, input.attribute("name").value()), m);
+            if (xml_node node = source(input)) slot(node, mtlx::slotName(category, input.attribute("name").value()), m);
         }
         if (!values.empty())
             report(Code::MaterialXIgnored, shader,
@@ -377,7 +358,7 @@ json Reader::inputValue(xml_node input, const json& fallback) {
     pugi::xml_attribute v = input.attribute("value");
     if (!v) return fallback;
     const std::string_view type = input.attribute("type").value();
-    return type == "filename" || type == "string" ? json(std::string(text(v))) : value(text(v));
+    return type == "filename" || type == "string" ? json(std::string(v.value())) : value(v.value());
 }
 
 template <typename F>
@@ -533,6 +514,22 @@ std::optional<size_t> invalidUtf8(std::string_view s) {
 }
 
 }  // namespace
+
+std::string mtlx::slotName(std::string_view shader, std::string_view input) {
+    for (const mtlx::SlotInput& s : mtlx::kSlotInputs)
+        if (s.shader == shader && s.input == input) return std::string(s.slot);
+    std::string out;
+    for (size_t i = 0; i < input.size(); ++i) {
+        char c = input[i];
+        if (c >= 'A' && c <= 'Z') {
+            const char before = i ? input[i - 1] : '_';
+            if ((before >= 'a' && before <= 'z') || (before >= '0' && before <= '9')) out += '_';
+            c = char(c - 'A' + 'a');
+        }
+        out += c;
+    }
+    return out;
+}
 
 bool isMaterialXFile(const std::filesystem::path& file) {
     std::string ext = file.extension().string();

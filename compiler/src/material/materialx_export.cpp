@@ -142,20 +142,16 @@ private:
     Diagnostics diags_;
 };
 
-// The shader and input a slot feeds: the one whose slot the reader names `s.name`.
+// The shader and input a slot feeds: the one whose slot the reader names `s.name` (mtlx::slotName).
 xml_node Writer::target(const Slot& s, size_t index, std::string& input) {
     const std::string type = slotType(s.kind);
-    for (const mtlx::SlotInput& si : mtlx::kSlotInputs)
-        if (si.shader == "displacement" && si.slot == s.name && s.kind == SlotKind::Scalar) {
-            if (!displacement_) displacement_ = element(doc_.document_element(), "displacement", "DS_" + m_.name, "displacementshader");
-            input = si.input;
-            return displacement_;
-        }
+    if (s.kind == SlotKind::Scalar && mtlx::slotName("displacement", "displacement") == s.name) {
+        if (!displacement_) displacement_ = element(doc_.document_element(), "displacement", "DS_" + m_.name, "displacementshader");
+        input = "displacement";
+        return displacement_;
+    }
     for (const SurfaceInput& in : kStandardSurface) {
-        std::string named = std::string(in.name);
-        for (const mtlx::SlotInput& si : mtlx::kSlotInputs)
-            if (si.shader == "standard_surface" && si.input == in.name) named = si.slot;
-        if (named != s.name) continue;
+        if (mtlx::slotName("standard_surface", in.name) != s.name) continue;
         if (in.type != type)
             report(s, index,
                    "slot `" + s.name + "` feeds standard_surface `" + std::string(in.name) + "`, a " + std::string(in.type) + ", but a " +

@@ -27,6 +27,10 @@ inline constexpr SlotInput kSlotInputs[] = {
     {"displacement", "displacement", "height"},
 };
 
+// The slot a shader's input carries: the table above, else the input's name in snake_case. The reader names slots
+// by it and the writer picks the input whose slot has the name.
+std::string slotName(std::string_view shader, std::string_view input);
+
 // hextiling keys with no MaterialX input: a texture node carries them as hexc_<key> attributes.
 inline const std::vector<std::string> kNodeKeys = {"exponent",  "mode", "split_coordinates", "rotationsteps", "offsetsteps", "mask",
                                                    "maskscale", "taps", "falloffcontrast",   "blend"};
