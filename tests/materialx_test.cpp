@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -74,12 +76,21 @@ TEST(MaterialX, AHandWrittenDocumentCompilesToTheShadersOfItsJsonMaterial) {
 // JSON -> mtlx -> JSON: every example, whatever settings it uses (masks, steps, height blending, triplanar, a
 // template file with its own resources), reads back to the same shaders.
 TEST(MaterialX, TheExportOfEveryExampleReadsBackToTheSameShaders) {
-    for (const char* name : {"rock", "rock_normal", "rock_blend", "rock_triplanar", "tiles", "tiles_stepped", "engine_rock", "histogram"}) {
+    // Beyond the examples, rock variants: the histogram blend on albedo and roughness, a y-down (DirectX) normal map
+    // hex-tiled (flip_g), and the same map plain-tiled (the normalmap node has no flip: hexc_flip_y).
+    const std::map<std::string, std::function<void(Material&)>> variants = {
+        {"histogram", [](Material& m) { m.slots[0].hex.blend = m.slots[2].hex.blend = Blend::Histogram; }},
+        {"normal_y_down", [](Material& m) { m.slots[1].flipY = true; }},
+        {"normal_y_down_plain", [](Material& m) { m.slots[1].flipY = true, m.slots[1].hex.enabled = false; }},
+    };
+    for (const char* name : {"rock", "rock_normal", "rock_blend", "rock_triplanar", "tiles", "tiles_stepped", "engine_rock", "histogram",
+                             "normal_y_down", "normal_y_down_plain"}) {
         SCOPED_TRACE(name);
-        Material json = parsed(std::string("materials/") + (name == std::string("histogram") ? "rock" : name) + ".json");
-        if (name == std::string("histogram")) {  // rock with its albedo and roughness under the histogram blend
+        const auto variant = variants.find(name);
+        Material json = parsed(std::string("materials/") + (variant != variants.end() ? "rock" : name) + ".json");
+        if (variant != variants.end()) {
             json.name = name;
-            json.slots[0].hex.blend = json.slots[2].hex.blend = Blend::Histogram;
+            variant->second(json);
         }
         const std::filesystem::path out = scratch(std::string(name) + ".mtlx");
         MaterialXExport exported = exportMaterialX(json, out);
