@@ -196,6 +196,18 @@ const Case kColorCases[] = {
     {"scalar_height_blend_self",
      R"({"name": "height", "kind": "scalar", "texture": "textures/rock_height.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "falloff": 0.7}, "height_blend": {"slot": "height", "width": 0.05}})",
      false},
+    // lod "shared": one level per slot. Minified at exactly level 2 on a square texture it is the sampler's level; with
+    // per-tile scales each tile reads its own pair of levels, blended (as color_transforms does with gradients).
+    {"color_shared_lod_minified",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.7, "lod": "shared"}})",
+     true},
+    {"color_shared_lod_transforms",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "lod": "shared", "rotationrange": [0, 360], "scalerange": [0.5, 2]}})",
+     false},
+    {"scalar_shared_lod_height_blend_minified",
+     R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloffcontrast": 0, "lod": "shared"}, "height_blend": {"slot": "height", "width": 0.2}},
+                              {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})",
+     true},
     // Triplanar on the preview sphere; falloffcontrast 0 keeps each plane's weights exact (see ColorPath).
     {"color_triplanar",
      R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloffcontrast": 0, "falloff": 0.7}})",
@@ -464,6 +476,11 @@ const Case kNormalCases[] = {
      R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloffcontrast": 0}, "height_blend": {"slot": "height", "width": 0.15}},
                                {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})",
      false},
+    {"normal_shared_lod_minified",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "lod": "shared"}})", true},
+    {"normal_shared_lod_transforms",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "lod": "shared", "scalerange": [0.5, 2]}})",
+     false},
     // The surface gradient (x, y, z) of the planes' blended derivatives; falloffcontrast 0 as in ColorPath.
     {"normal_triplanar",
      R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"falloffcontrast": 0}})", false,
@@ -703,6 +720,7 @@ struct OddSize {
     int width, height;
     bool minified;
     bool histogram = false;  // "blend": "histogram": its Gaussian texture has the odd size, its table odd levels
+    bool sharedLod = false;  // "lod": "shared": the level from sqrt(width * height), between two levels here
 };
 void PrintTo(const OddSize& c, std::ostream* os) { *os << c.name; }
 
@@ -728,9 +746,9 @@ TEST_P(OddSizes, MatchReference) {
     REQUIRE_VULKAN();
     const auto& [c, target] = GetParam();
     const std::filesystem::path file = cropOfRock(c.width, c.height);
-    Material m =
-        material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": ")" + file.string() +
-                 R"(", "hextiling": {"tiling": 4, "rotation": 0, "blend": ")" + (c.histogram ? "histogram" : "falloff") + R"("}})");
+    Material m = material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": ")" + file.string() +
+                          R"(", "hextiling": {"tiling": 4, "rotation": 0, "blend": ")" + (c.histogram ? "histogram" : "falloff") +
+                          R"(", "lod": ")" + (c.sharedLod ? "shared" : "gradients") + R"("}})");
     const int larger = std::max(c.width, c.height), levels = std::bit_width(unsigned(larger));
     const double uvPerPixel = (c.minified ? 4.0 : 0.75) / (4.0 * larger);
     const View view{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}};
@@ -749,7 +767,9 @@ INSTANTIATE_TEST_SUITE_P(
                                      OddSize{"3x3_minified", 3, 3, true}, OddSize{"127x127_minified", 127, 127, true},
                                      OddSize{"127x80_histogram", 127, 80, false, true},
                                      OddSize{"127x80_histogram_minified", 127, 80, true, true},
-                                     OddSize{"3x3_histogram_minified", 3, 3, true, true}),
+                                     OddSize{"3x3_histogram_minified", 3, 3, true, true},
+                                     OddSize{"127x80_shared_lod_minified", 127, 80, true, false, true},
+                                     OddSize{"1x64_shared_lod_minified", 1, 64, true, false, true}),
                      testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
     [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
 

@@ -523,6 +523,45 @@ TEST(ReferenceColour, GradientsTurnWithEachTile) {
     EXPECT_GT(largestChange, 0.02);
 }
 
+// lod "shared" against per-tap gradients, over random points, gradient sizes (0.3 to 40 texels per pixel) and
+// directions, anisotropic footprints included, with rotation and the gain: on a square texture rotation keeps every
+// gradient's length in texels, so the shared level is each tap's own level and the values agree to rounding. On a
+// non-square texture they differ (the level is within half of log2(aspect) of the sampler's); the figures are printed
+// for docs/material-format.md#lod.
+TEST(ReferenceSharedLod, IsEachTapsLevelOnSquareTexturesOnly) {
+    const auto texture = [](int w, int h) {
+        return SampledTexture(floatTexture(w, h, [](double s, double t) {
+            return Rgba{0.5 + 0.5 * std::sin(40 * s) * std::cos(23 * t), 0.5 + 0.5 * std::sin(57 * s * t), 0.3, 1};
+        }));
+    };
+    Slot gradients = hexSlot(SlotKind::Color);
+    gradients.hex.mode = HashMode::Stable;
+    gradients.hex.falloff = 0.75;
+    Slot shared = gradients;
+    shared.hex.lod = Lod::Shared;
+    for (auto [w, h] : {std::pair{128, 128}, std::pair{128, 64}, std::pair{128, 32}}) {
+        const SampledTexture tex = texture(w, h);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> unit(0, 1);
+        double largest = 0, sum = 0;
+        const int n = 4000;
+        for (int i = 0; i < n; ++i) {
+            const Vec2 st{unit(rng) * 8, unit(rng) * 8};
+            const double texels = 0.3 * std::pow(2.0, unit(rng) * 7), a = unit(rng) * 2 * kPi, aniso = 1 + 3 * unit(rng);
+            const double g = texels / std::sqrt(double(w) * h);
+            const Vec2 dx{g * std::cos(a), g * std::sin(a)}, dy{-g / aniso * std::sin(a), g / aniso * std::cos(a)};
+            const double d = std::abs(evaluateAt(shared, tex, st, dx, dy).value[0] - evaluateAt(gradients, tex, st, dx, dy).value[0]);
+            largest = std::max(largest, d);
+            sum += d;
+        }
+        std::printf("  %dx%d: shared against per-tap gradients: max %.5f (%.2f/255), mean %.6f\n", w, h, largest, largest * 255, sum / n);
+        if (w == h)
+            EXPECT_LT(largest, 1e-12);
+        else
+            EXPECT_GT(largest, 1e-3);
+    }
+}
+
 // --- Weights visualisation -----------------------------------------------------------------------------------
 
 TEST(ReferenceWeights, AreListing7OfTheBlendWeights) {

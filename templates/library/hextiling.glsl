@@ -16,6 +16,7 @@ const vec4 hexcLuma = vec4(0.299, 0.587, 0.114, 0.0);
 struct HexcTiles {
     vec3 w;                      // barycentric weights of the three hex tiles, sum 1
     vec3 invScale;               // 1 / each tile's texture scale (1 without per-tile transforms)
+    bool scaled;                 // literal: false when invScale is 1 (no per-tile transforms)
     ivec2 v1, v2, v3;            // integer lattice ids of the three tile centres
     vec2 st1, st2, st3;          // per-tile sample coordinates (rotated and offset)
     vec2 dx1, dx2, dx3;          // per-tile d(st)/dx, rotated with the tile
@@ -125,6 +126,7 @@ HexcLattice hexcLattice() {
 HexcTiles hexcTilesPaper(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTiles t;
     t.invScale = vec3(1.0);
+    t.scaled = false;
     hexcTriangleGrid(st, t.w, t.v1, t.v2, t.v3);
     t.channel = hexcHexChannels(t.v1, t.v3);
     t.rot1 = l.rotate ? hexcRotationPaper(t.v1, l.rotation) : vec2(1.0, 0.0);
@@ -204,6 +206,7 @@ void hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out 
 // mesh supplies a small st relative to it, whose gradients are precise.
 HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l) {
     HexcTiles t;
+    t.scaled = l.transform;
     // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small, while 28 kx is exact:
     // 7 kx < 2^24, so |st.x| < 2^26.
     float kx = floor(st.x / 28.0), ky = floor(st.y);
@@ -230,6 +233,7 @@ float hexcTaper(vec2 f) {
 
 HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l) {
     HexcTiles t;
+    t.scaled = l.transform;
     int scale = l.maskScale;
     vec2 k = floor(st);
     vec2 q = (st - k) * float(scale);
@@ -264,6 +268,7 @@ float hexcValueNoise(uvec2 c, vec2 f, uint salt) {
 // origin, weighed by three bands of one value noise or by three noises (`triple`).
 HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTiles t;
+    t.scaled = l.transform;
     int scale = l.maskScale;
     vec2 k = floor(st);
     vec2 q = (st - k) * float(scale);
@@ -327,13 +332,14 @@ struct HexcBlend {
     int exponentInt;             // literal: > 0, gamma is this whole number
     int gainInt;                 // literal: > 0, the gain's k is this whole number
     int taps;                    // literal: 3, or 2 for the checker mask (no third fetch)
+    bool sharedLod;              // literal: lod "shared", every fetch at the slot's level of detail (hexcTileLods)
     bool height;                 // literal: blend by the heights in channel heightLuma of the height texture
     vec4 heightLuma;
     float heightWidth;
 };
 
 HexcBlend hexcBlend() {
-    return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, vec4(0.0), 1.0);
+    return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, vec4(0.0), 1.0);
 }
 
 // Two guards keep the weights finite, non-negative and normalised outside the paper's domain, and change
@@ -357,11 +363,30 @@ vec3 hexcHeightBlend(vec3 W, vec3 h, float width) {
     return Wh / (Wh.x + Wh.y + Wh.z);
 }
 
-// The heights of the tiles' samples from the height slot's texture (`luma` picks its channel); `taps` = 2 (the
-// checker) leaves the third, weightless tile unsampled.
-vec3 hexcTileHeights(texture2D tex, sampler samp, HexcTiles t, vec4 luma, int taps) {
-    return vec3(dot(textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1), luma), dot(textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2), luma),
-                taps > 2 ? dot(textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3), luma) : 0.0);
+// lod "shared" (docs/material-format.md#lod): the three tiles' levels of detail on `tex`, computed once. Rotation keeps
+// st lengths, so one length serves every tile: the sampler's rho = max(|dx|, |dy|) in texels, with st lengths
+// scaled by sqrt(width * height), which is exact on square textures and within half of log2(width / height) of
+// the sampler's level on others whatever the rotation; a tile's own texture scale shifts its level by log2 of it.
+vec3 hexcTileLods(texture2D tex, sampler samp, HexcTiles t, bool sharedLod) {
+    if (!sharedLod) return vec3(0.0);
+    vec2 size = vec2(textureSize(sampler2D(tex, samp), 0));
+    float lod = 0.5 * log2(max(max(dot(t.dx1, t.dx1), dot(t.dy1, t.dy1)) * size.x * size.y, 1e-30));
+    return t.scaled ? lod + log2(t.invScale / t.invScale.x) : vec3(lod);
+}
+
+// One tile's fetch: with its own gradients (the sampler picks the level, and filters anisotropically when the
+// sampler does), or at the level hexcTileLods gave (`sharedLod`, a literal).
+vec4 hexcFetch(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, float lod, bool sharedLod) {
+    return sharedLod ? textureLod(sampler2D(tex, samp), st, lod) : textureGrad(sampler2D(tex, samp), st, dx, dy);
+}
+
+// The heights of the tiles' samples from the height slot's texture (b.heightLuma picks its channel); b.taps = 2
+// (the checker) leaves the third, weightless tile unsampled.
+vec3 hexcTileHeights(texture2D tex, sampler samp, HexcTiles t, HexcBlend b) {
+    vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
+    return vec3(dot(hexcFetch(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod), b.heightLuma),
+                dot(hexcFetch(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod), b.heightLuma),
+                b.taps > 2 ? dot(hexcFetch(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod), b.heightLuma) : 0.0);
 }
 
 // The unit vector picking channel c (0 = r ... 3 = a): a scalar map's falloff metric, a height slot's height.
@@ -373,12 +398,13 @@ vec4 hexcChannel(int c) {
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
 // a unit vector picking the channel for scalar maps. `heightTex`: the height slot's texture (b.height).
 vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma, texture2D heightTex, out vec3 weights) {
-    vec4 c1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1);
-    vec4 c2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2);
-    vec4 c3 = b.taps > 2 ? textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3) : vec4(0.0);
+    vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
+    vec4 c1 = hexcFetch(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod);
+    vec4 c2 = hexcFetch(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod);
+    vec4 c3 = b.taps > 2 ? hexcFetch(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod) : vec4(0.0);
     vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
     vec3 W = hexcBlendWeights(t.w, Dw, b);
-    if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b.heightLuma, b.taps), b.heightWidth);
+    if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
     return W.x * c1 + W.y * c2 + W.z * c3;
 }
@@ -391,9 +417,10 @@ vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma,
 // from the slot's st gradients as the sampler computes it (Euclidean lengths), and the rows are interpolated in it.
 // `scalar` (a literal): one channel, in r, and no way back to take.
 vec4 hexcHistogram(texture2D tex, texture2D lut, sampler samp, HexcTiles t, HexcBlend b, vec2 dx, vec2 dy, bool scalar, out vec3 weights) {
-    vec3 g1 = textureGrad(sampler2D(tex, samp), t.st1, t.dx1, t.dy1).rgb;
-    vec3 g2 = textureGrad(sampler2D(tex, samp), t.st2, t.dx2, t.dy2).rgb;
-    vec3 g3 = b.taps > 2 ? textureGrad(sampler2D(tex, samp), t.st3, t.dx3, t.dy3).rgb : vec3(0.5);
+    vec3 lods = hexcTileLods(tex, samp, t, b.sharedLod);
+    vec3 g1 = hexcFetch(tex, samp, t.st1, t.dx1, t.dy1, lods.x, b.sharedLod).rgb;
+    vec3 g2 = hexcFetch(tex, samp, t.st2, t.dx2, t.dy2, lods.y, b.sharedLod).rgb;
+    vec3 g3 = b.taps > 2 ? hexcFetch(tex, samp, t.st3, t.dx3, t.dy3, lods.z, b.sharedLod).rgb : vec3(0.5);
     vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);
     weights = hexcShowWeights(W, t.channel);
     vec3 G = (W.x * (g1 - 0.5) + W.y * (g2 - 0.5) + W.z * (g3 - 0.5)) * inversesqrt(dot(W, W)) + 0.5;
@@ -420,9 +447,9 @@ vec2 hexcNormalToDeriv(vec3 vM, bool flipY) {
     return -vec2(vM.x, flipY ? -vM.y : vM.y) / zMa;
 }
 
-// Listing 10: sample a normal map with explicit gradients, return its derivative.
-vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, bool flipY) {
-    vec3 vM = 2.0 * textureGrad(sampler2D(tex, samp), st, dx, dy).xyz - 1.0;
+// Listing 10: sample a normal map with explicit gradients (or at `lod`, see hexcFetch), return its derivative.
+vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, float lod, bool sharedLod, bool flipY) {
+    vec3 vM = 2.0 * hexcFetch(tex, samp, st, dx, dy, lod, sharedLod).xyz - 1.0;
     return hexcNormalToDeriv(vM, flipY);
 }
 
@@ -430,12 +457,14 @@ vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, boo
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, texture2D heightTex, out vec3 weights) {
     // A tile scaled by s shows H(p / s), whose slope is the sampled one over s.
-    vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, flipY), t.rot1) * t.invScale.x;
-    vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, flipY), t.rot2) * t.invScale.y;
-    vec2 d3 = b.taps > 2 ? hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, flipY), t.rot3) * t.invScale.z : vec2(0.0);
+    vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
+    vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod, flipY), t.rot1) * t.invScale.x;
+    vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod, flipY), t.rot2) * t.invScale.y;
+    vec2 d3 = b.taps > 2 ? hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod, flipY), t.rot3) * t.invScale.z
+                         : vec2(0.0);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), b);
-    if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b.heightLuma, b.taps), b.heightWidth);
+    if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
     return W.x * d1 + W.y * d2 + W.z * d3;
 }
@@ -469,13 +498,14 @@ HexcTap hexcDitherTile(HexcTiles t, HexcBlend b, vec2 pixel) {
 vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec2 pixel, out vec3 weights) {
     HexcTap tap = hexcDitherTile(t, b, pixel);
     weights = hexcShowWeights(tap.pick, t.channel);
-    return textureGrad(sampler2D(tex, samp), tap.st, tap.dx, tap.dy);
+    return hexcFetch(tex, samp, tap.st, tap.dx, tap.dy, dot(tap.pick, hexcTileLods(tex, samp, t, b.sharedLod)), b.sharedLod);
 }
 
 vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, vec2 pixel, out vec3 weights) {
     HexcTap tap = hexcDitherTile(t, b, pixel);
     weights = hexcShowWeights(tap.pick, t.channel);
-    return hexcRotateFromTile(hexcSampleDeriv(tex, samp, tap.st, tap.dx, tap.dy, flipY), tap.rot) * tap.invScale;
+    float lod = dot(tap.pick, hexcTileLods(tex, samp, t, b.sharedLod));
+    return hexcRotateFromTile(hexcSampleDeriv(tex, samp, tap.st, tap.dx, tap.dy, lod, b.sharedLod, flipY), tap.rot) * tap.invScale;
 }
 
 // Plain tiling, for slots with hex-tiling disabled: one fetch, hardware gradients, or the given ones where

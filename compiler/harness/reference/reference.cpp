@@ -289,7 +289,11 @@ Rgba SampledTexture::bilinear(const Level& level, double s, double t) {
 Rgba SampledTexture::sample(double s, double t, double dsdx, double dtdx, double dsdy, double dtdy) const {
     const double w = levels_[0].width, h = levels_[0].height;
     const double rho = std::max(std::hypot(dsdx * w, dtdx * h), std::hypot(dsdy * w, dtdy * h));
-    const double lambda = std::min(std::log2(rho), double(levels() - 1));
+    return sampleLod(s, t, std::log2(rho));
+}
+
+Rgba SampledTexture::sampleLod(double s, double t, double lambda) const {
+    lambda = std::min(lambda, double(levels() - 1));
     if (!(lambda > 0)) return bilinear(levels_[0], s, t);  // magnification (also rho = 0, where log2 is -inf)
     const int lo = int(lambda), hi = std::min(lo + 1, levels() - 1);
     const Rgba a = bilinear(levels_[size_t(lo)], s, t);
@@ -382,6 +386,27 @@ SlotResult histogramBlend(const SampledTexture& lut, const std::array<Rgba, 3>& 
     return r;
 }
 
+namespace {
+
+// A tile's sample point, its gradients (rotated and scaled with the tile) and the tile's texture scale.
+struct Fetch {
+    Vec2 p, dx, dy;
+    double scale = 1;
+};
+
+// A tile's texel from `texture` (docs/material-format.md#lod): filtered with the tile's own gradients, or with lod
+// "shared" at one level for the slot: rho from the unrotated st gradients dx, dy, whose Euclidean lengths are taken
+// in texels of the geometric mean size sqrt(width * height), then the tile's scale (the texture at scale s shows
+// 1/s as many texels per unit of st).
+Rgba fetchTile(const SampledTexture& texture, const Fetch& f, const HexTiling& hex, Vec2 dx, Vec2 dy) {
+    if (hex.lod == Lod::Gradients) return texture.sample(f.p[0], f.p[1], f.dx[0], f.dx[1], f.dy[0], f.dy[1]);
+    const double size = std::sqrt(double(texture.width(0)) * texture.height(0));
+    const double rho = std::max(std::hypot(dx[0], dx[1]), std::hypot(dy[0], dy[1])) * size;
+    return texture.sampleLod(f.p[0], f.p[1], std::log2(rho / f.scale));
+}
+
+}  // namespace
+
 SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel,
                       const HeightSource* height, const SampledTexture* lut) {
     const HexTiling& hex = slot.hex;
@@ -402,9 +427,6 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
     const Taps taps = maskTaps(st, hex);
     // Listing 7's colours for the hex mask; the other masks show their weights in their own order.
     const auto shown = [&](const std::array<double, 3>& w) { return hex.mask == Mask::Hex ? hexColours(w, taps.id) : w; };
-    struct Fetch {
-        Vec2 p, dx, dy;
-    };
     std::array<Fetch, 3> fetch;
     std::array<Rgba, 3> samples;
     std::array<double, 3> delta;
@@ -419,7 +441,8 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
         f.dx = rot.toTile(dx);
         f.dy = rot.toTile(dy);
         for (Vec2* g : {&f.dx, &f.dy}) *g = {(*g)[0] / tile.scale, (*g)[1] / tile.scale};
-        const Rgba x = texture.sample(f.p[0], f.p[1], f.dx[0], f.dx[1], f.dy[0], f.dy[1]);
+        f.scale = tile.scale;
+        const Rgba x = fetchTile(texture, f, hex, dx, dy);
 
         double metric;
         if (normal) {
@@ -462,8 +485,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
         // The heights at each tile's own sample point, with its gradients: the tile's transform applies to them too.
         std::array<double, 3> h;
         for (size_t i = 0; i < 3; ++i) {
-            const Fetch& f = fetch[i];
-            h[i] = height->texture->sample(f.p[0], f.p[1], f.dx[0], f.dx[1], f.dy[0], f.dy[1])[size_t(height->channel)];
+            h[i] = fetchTile(*height->texture, fetch[i], hex, dx, dy)[size_t(height->channel)];
         }
         w = heightBlend(w, h, height->width, heightSum);
     }

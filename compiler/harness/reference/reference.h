@@ -49,6 +49,8 @@ public:
     // Filtered RGBA at normalised coordinates (s, t) (t = 0 is the top row) for the given screen-space gradients
     // of (s, t), like textureGrad().
     Rgba sample(double s, double t, double dsdx, double dtdx, double dsdy, double dtdy) const;
+    // The same at level of detail lambda, like textureLod().
+    Rgba sampleLod(double s, double t, double lambda) const;
 
     int levels() const { return int(levels_.size()); }
     int width(int level) const { return levels_[size_t(level)].width; }
@@ -148,7 +150,8 @@ private:
 // slot's colour space is the caller's to apply when loading. HashMode::Paper follows Listings 1, 2, 5 and 6;
 // HashMode::Stable its specification in docs/material-format.md; the checker and noise masks are specified for
 // stable mode only (the parser rejects paper mode with them). `pixel`: the pixel's integer position (column, row),
-// which the 1-tap variant's dither hashes. `height`: required when the slot has height_blend (unless taps is 1,
+// which the 1-tap variant's dither hashes. With lod "shared", every fetch samples at the level fetchTile in
+// reference.cpp defines (docs/material-format.md#lod) instead of the level of its own gradients. `height`: required when the slot has height_blend (unless taps is 1,
 // which cannot height-blend); its width is the one used, not slot.heightBlend's.
 //
 // The histogram blend (slot.hex.blend, docs/material-format.md#blend): `texture` is the slot's Gaussian texture and

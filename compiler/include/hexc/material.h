@@ -25,6 +25,10 @@ enum class Projection { Uv, Triplanar };
 // How a colour or scalar slot blends its tiles' samples (docs/material-format.md#blend): the paper's weighted average
 // under its luminance falloff, or Heitz and Neyret's histogram-preserving blend of a transformed texture hexc derives.
 enum class Blend { Falloff, Histogram };
+// How a hex-tiled slot's fetches pick their mip level (docs/material-format.md#lod): each with its tile's rotated
+// gradients (the sampler's own level and anisotropy), or one level of detail per slot computed in the shader and
+// passed to every fetch (textureLod: cheaper, isotropic).
+enum class Lod { Gradients, Shared };
 
 // Hex-tiling settings. Names follow MaterialX <hextiledimage> where the meaning is the same;
 // the paper's symbol is given for each.
@@ -37,9 +41,10 @@ struct HexTiling {
     double exponent = 7.0;               // gamma, exponent on the barycentric weights (Eq. 1)
     HashMode mode = HashMode::Stable;
     Mask mask = Mask::Hex;
-    int maskScale = 2;                       // checker and noise masks: cells per unit of st
-    int taps = 0;                            // 0: every tap of the mask, blended; 1: one dithered fetch
-    Blend blend = Blend::Falloff;            // normal slots always blend derivatives (Falloff)
+    int maskScale = 2;             // checker and noise masks: cells per unit of st
+    int taps = 0;                  // 0: every tap of the mask, blended; 1: one dithered fetch
+    Blend blend = Blend::Falloff;  // normal slots always blend derivatives (Falloff)
+    Lod lod = Lod::Gradients;
     Projection projection = Projection::Uv;  // material-wide
     double planeSharpness = 4;               // triplanar: exponent on |normal| per plane
     // Stable mode only: the slot also reads an origin (cell, offset) that the engine fills each frame from a
@@ -104,5 +109,6 @@ std::string_view toString(HashMode mode);
 std::string_view toString(Mask mask);
 std::string_view toString(Projection projection);
 std::string_view toString(Blend blend);
+std::string_view toString(Lod lod);
 
 }  // namespace hexc

@@ -115,8 +115,13 @@ public:
 
     std::string blendSettings(const SlotPlan& sp) const {
         std::vector<std::pair<std::string, std::string>> fields = {
-            {"metric", literal(sp.metric)},   {"gain", literal(sp.gain)}, {"exponentInt", literal(sp.exponentInt)},
-            {"gainInt", literal(sp.gainInt)}, {"taps", literal(sp.taps)}, {"height", literal(sp.heightMap.has_value())},
+            {"metric", literal(sp.metric)},
+            {"gain", literal(sp.gain)},
+            {"exponentInt", literal(sp.exponentInt)},
+            {"gainInt", literal(sp.gainInt)},
+            {"taps", literal(sp.taps)},
+            {"sharedLod", literal(sp.sharedLod)},
+            {"height", literal(sp.heightMap.has_value())},
         };
         if (sp.heightMap) fields.emplace_back("heightLuma", "hexcChannel(" + literal(plan_.slots[*sp.heightMap].slot->channel) + ")");
         addParam(fields, "falloff", sp.falloff);

@@ -237,6 +237,7 @@ void Writer::hexcAttributes(xml_node node, const Slot& s) {
         if (h.maskScale != d.maskScale) put("maskscale", std::to_string(h.maskScale));
         if (h.taps != d.taps) put("taps", std::to_string(h.taps));
         if (h.blend != d.blend) put("blend", std::string(toString(h.blend)));
+        if (h.lod != d.lod) put("lod", std::string(toString(h.lod)));
         if (s.kind == SlotKind::Normal && h.falloffcontrast != d.falloffcontrast) put("falloffcontrast", number(h.falloffcontrast));
     } else if (s.flipY) {
         put("flip_y", "true");

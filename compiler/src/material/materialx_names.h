@@ -33,7 +33,7 @@ std::string slotName(std::string_view shader, std::string_view input);
 
 // hextiling keys with no MaterialX input: a texture node carries them as hexc_<key> attributes.
 inline const std::vector<std::string> kNodeKeys = {"exponent",  "mode", "split_coordinates", "rotationsteps", "offsetsteps", "mask",
-                                                   "maskscale", "taps", "falloffcontrast",   "blend"};
+                                                   "maskscale", "taps", "falloffcontrast",   "blend",         "lod"};
 // Slot keys of the same kind: a plain normal map's flip (the normalmap node has no flip_g) and height blending.
 inline const std::vector<std::string> kSlotKeys = {"flip_y", "height_blend", "height_blend_width"};
 // Material-wide settings, as hexc_<key> attributes of the surfacematerial.

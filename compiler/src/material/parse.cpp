@@ -30,7 +30,7 @@ const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel"
 const std::vector<std::string> kHexKeys = {"enabled",    "tiling",     "rotation",          "falloff",       "falloffcontrast",
                                            "exponent",   "mode",       "split_coordinates", "rotationrange", "rotationsteps",
                                            "scalerange", "offset",     "offsetsteps",       "mask",          "maskscale",
-                                           "taps",       "projection", "planesharpness",    "blend"};
+                                           "taps",       "projection", "planesharpness",    "blend",         "lod"};
 const std::vector<std::string> kHeightKeys = {"slot", "width"};
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
@@ -52,6 +52,7 @@ const std::vector<std::string> kModes = {"stable", "paper"};
 const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
 const std::vector<std::string> kProjections = {"uv", "triplanar"};
 const std::vector<std::string> kBlends = {"falloff", "histogram"};
+const std::vector<std::string> kLods = {"gradients", "shared"};
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
 constexpr size_t kMaxSlots = 16;
 
@@ -399,6 +400,9 @@ private:
         if (v.contains("taps")) hex.taps = int(whole(v["taps"], pointer + "/taps", {1, 3, false, false, "in 1..3"}, hex.taps));
         if (v.contains("blend")) {
             if (int i = choice(v["blend"], pointer + "/blend", kBlends); i >= 0) hex.blend = Blend(i);
+        }
+        if (v.contains("lod")) {
+            if (int i = choice(v["lod"], pointer + "/lod", kLods); i >= 0) hex.lod = Lod(i);
         }
         transformSettings(v, pointer, hex);
         projectionSettings(v, pointer, hex, materialLevel);
@@ -840,6 +844,7 @@ std::string_view toString(ColorSpace space) { return kColorSpaces[size_t(space)]
 std::string_view toString(HashMode mode) { return kModes[size_t(mode)]; }
 std::string_view toString(Mask mask) { return kMasks[size_t(mask)]; }
 std::string_view toString(Blend blend) { return kBlends[size_t(blend)]; }
+std::string_view toString(Lod lod) { return kLods[size_t(lod)]; }
 std::string_view toString(Projection projection) { return kProjections[size_t(projection)]; }
 
 }  // namespace hexc

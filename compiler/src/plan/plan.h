@@ -76,6 +76,7 @@ struct SlotPlan {
     std::optional<size_t> heightMap;  // index into ShaderPlan::slots of the slot it height-blends by
     bool heightOnly = false;          // only the texture is used, as another slot's height map (no function, no lattice)
     bool histogram = false;           // blend histogram: its texture is the Gaussian one, and it reads a look-up table
+    bool sharedLod = false;           // lod "shared": one level of detail per slot, fetches with textureLod
     ParamRef falloff, falloffContrast, exponent, heightWidth;
 };
 
