@@ -43,7 +43,13 @@ int libraryCommand(const std::vector<std::string>& args) {
                                                                {"spirv-asm", LibraryTarget::SpirvAsm}};
     std::vector<LibraryTarget> chosen;
     for (const std::string& t : targets) chosen.push_back(names.at(t));
-    const std::vector<OutputFile> files = hexcLibrary(chosen);
+    std::vector<OutputFile> files;
+    try {
+        files = hexcLibrary(chosen);
+    } catch (const CompileError& e) {  // the embedded library does not compile: a bug in hexc, shown where it is
+        std::cerr << formatAll(e.diagnostics) << "hexc: the hex-tiling library does not compile\n";
+        return kInvalidInput;
+    }
     try {
         std::filesystem::create_directories(outDir);
         for (const OutputFile& f : files) writeAtomically(outDir, f.name, f.contents);
