@@ -700,6 +700,14 @@ std::string plot(const Results& r) {
     std::vector<PlotPoint> points;
     // Only errors measured against the same (stable) reference are comparable, so only those form the front.
     for (const Row& row : r.rows) points.push_back({row.name, row.view, row.ratio, row.error.mean, row.errorReference == HashMode::Stable});
+    // The listings compute what paper mode computes (PaperListing in tests/execution_test.cpp, to 1e-5), so their error is
+    // paper-rot-gain's; their run time is their own, over plain tiling under the same shading.
+    for (const Timed& listing : r.listing) {
+        const Row* plain = rowOf(r, listing.view, false, shadingOf(listing));
+        for (const Row& paper : r.rows)
+            if (listing.failure.empty() && plain && paper.view == listing.view && paper.name == "paper-rot-gain")
+                points.push_back({listing.name, listing.view, median(roundRatios(listing, *plain)), paper.error.mean, false});
+    }
     return scatterSvg("hexc on lavapipe: run time against error (albedo, 1024x1024)", "run time / plain tiling (same view)",
                       "mean abs error vs full-quality fp64 reference", series, points,
                       {{kRatioTargets[0].limit, strf("target: full quality <= %gx", kRatioTargets[0].limit)}},
