@@ -59,6 +59,7 @@ const RatioTarget kRatioTargets[] = {
     {"full quality, 3 slots", "stable-rot-gain", 3.2},
     {"full quality, one level of detail per slot", "stable-rot-gain-lod", 3.2},
     {"1 tap", "stable-rot-gain-1tap", 1.3},
+    {"1 tap, one level of detail per slot", "stable-rot-gain-1tap-lod", 1.3},
 };
 
 // A method is what a user writes in the material's "hextiling" object (on top of "tiling": kTiling), applied
@@ -107,6 +108,7 @@ const std::vector<Method>& methods() {
         {"stable-rot-gain-lod", with(fullQuality(HashMode::Stable), {{"lod", "shared"}})},
         // The seeds' variants.
         {"stable-rot-gain-1tap", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.75}, {"taps", 1}}},
+        {"stable-rot-gain-1tap-lod", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.75}, {"taps", 1}, {"lod", "shared"}}},
         {"stable-rot-gain-checker", with(fullQuality(HashMode::Stable), {{"mask", "checker"}})},
         {"stable-rot-gain-noise", with(fullQuality(HashMode::Stable), {{"mask", "noise"}, {"maskscale", 4}})},
         {"stable-rot-gain-noise3", with(fullQuality(HashMode::Stable), {{"mask", "noise3"}, {"maskscale", 4}})},
