@@ -64,8 +64,8 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     uint _2479 = _2475.z;
     uint _2483 = _2475.x + (_2477 * _2479);
     uint _2492 = _2477 + (_2479 * _2483);
-    uint3 _10631 = uint3(_2483, _2492, _2479 + (_2483 * _2492));
-    uint3 _2507 = _10631 ^ (_10631 >> uint3(16u));
+    uint3 _11451 = uint3(_2483, _2492, _2479 + (_2483 * _2492));
+    uint3 _2507 = _11451 ^ (_11451 >> uint3(16u));
     uint _2509 = _2507.y;
     uint _2511 = _2507.z;
     uint _2515 = _2507.x + (_2509 * _2511);
@@ -90,8 +90,8 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     uint _2875 = _2871.z;
     uint _2879 = _2871.x + (_2873 * _2875);
     uint _2888 = _2873 + (_2875 * _2879);
-    uint3 _10637 = uint3(_2879, _2888, _2875 + (_2879 * _2888));
-    uint3 _2903 = _10637 ^ (_10637 >> uint3(16u));
+    uint3 _11459 = uint3(_2879, _2888, _2875 + (_2879 * _2888));
+    uint3 _2903 = _11459 ^ (_11459 >> uint3(16u));
     uint _2905 = _2903.y;
     uint _2907 = _2903.z;
     uint _2911 = _2903.x + (_2905 * _2907);
@@ -110,8 +110,8 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     uint _3271 = _3267.z;
     uint _3275 = _3267.x + (_3269 * _3271);
     uint _3284 = _3269 + (_3271 * _3275);
-    uint3 _10642 = uint3(_3275, _3284, _3271 + (_3275 * _3284));
-    uint3 _3299 = _10642 ^ (_10642 >> uint3(16u));
+    uint3 _11464 = uint3(_3275, _3284, _3271 + (_3275 * _3284));
+    uint3 _3299 = _11464 ^ (_11464 >> uint3(16u));
     uint _3301 = _3299.y;
     uint _3303 = _3299.z;
     uint _3307 = _3299.x + (_3301 * _3303);
@@ -130,18 +130,18 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     float3 _3704 = (_2201 * _3686) * (_3686 * _3686);
     float3 _3615 = mix(float3(1.0), fast::max(float3(dot(_3501, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0)), dot(_3511, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0)), dot(_3525, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0))), float3(0.0)), float3(hexcParams.albedo_falloffcontrast)) * _3704;
     float _3627 = (_3615.x + _3615.y) + _3615.z;
-    float3 _10248;
+    float3 _11086;
     if (_3627 > 0.0)
     {
-        _10248 = _3615 / float3(_3627);
+        _11086 = _3615 / float3(_3627);
     }
     else
     {
-        _10248 = _3704 / float3((_3704.x + _3704.y) + _3704.z);
+        _11086 = _3704 / float3((_3704.x + _3704.y) + _3704.z);
     }
-    float3 _3755 = step(float3(0.5), _10248) * 2.0;
+    float3 _3755 = step(float3(0.5), _11086) * 2.0;
     float3 _3759 = (float3(1.0) - _3755) * 2.0;
-    float3 _3765 = fast::max(float3(0.0), fma(_10248, _3759, _3755));
+    float3 _3765 = fast::max(float3(0.0), fma(_11086, _3759, _3755));
     float3 _3784 = fma(_3759 * 0.25, _3765 * _3765, _3755 * 0.5);
     float3 _3795 = _3784 / float3((_3784.x + _3784.y) + _3784.z);
     float2 _3983 = dfdx(_1910);
@@ -157,18 +157,18 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     float4 _5619 = hexcTex_roughness.sample(hexcSampler, _3128, gradient2d(float2(fma(_4706, _3254, _4711 * _3256), fma(_4718, _3256, _4711 * _3254)) * 1.0, float2(fma(_4732, _3254, _4737 * _3256), fma(_4744, _3256, _4737 * _3254)) * 1.0));
     float3 _5709 = mix(float3(1.0), fast::max(float3(_5595.x, _5605.x, _5619.x), float3(0.0)), float3(hexcParams.roughness_falloffcontrast)) * _3704;
     float _5721 = (_5709.x + _5709.y) + _5709.z;
-    float3 _10379;
+    float3 _11212;
     if (_5721 > 0.0)
     {
-        _10379 = _5709 / float3(_5721);
+        _11212 = _5709 / float3(_5721);
     }
     else
     {
-        _10379 = _3704 / float3((_3704.x + _3704.y) + _3704.z);
+        _11212 = _3704 / float3((_3704.x + _3704.y) + _3704.z);
     }
-    float3 _5849 = step(float3(0.5), _10379) * 2.0;
+    float3 _5849 = step(float3(0.5), _11212) * 2.0;
     float3 _5853 = (float3(1.0) - _5849) * 2.0;
-    float3 _5859 = fast::max(float3(0.0), fma(_10379, _5853, _5849));
+    float3 _5859 = fast::max(float3(0.0), fma(_11212, _5853, _5849));
     float3 _5878 = fma(_5853 * 0.25, _5859 * _5859, _5849 * 0.5);
     float3 _5889 = _5878 / float3((_5878.x + _5878.y) + _5878.z);
     float _1789 = fast::clamp((((_5595 * _5889.x) + (_5605 * _5889.y)) + (_5619 * _5889.z)).x, 0.0199999995529651641845703125, 1.0);
@@ -203,16 +203,16 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     float3 _7733 = float3(dot(_7688, _7688), dot(_7702, _7702), dot(_7720, _7720));
     float3 _8073 = mix(float3(1.0), fast::max(sqrt(_7733 / (float3(1.0) + _7733)), float3(0.0)), float3(hexcParams.normal_falloffcontrast)) * _3704;
     float _8085 = (_8073.x + _8073.y) + _8073.z;
-    float3 _10555;
+    float3 _11383;
     if (_8085 > 0.0)
     {
-        _10555 = _8073 / float3(_8085);
+        _11383 = _8073 / float3(_8085);
     }
     else
     {
-        _10555 = _3704 / float3((_3704.x + _3704.y) + _3704.z);
+        _11383 = _3704 / float3((_3704.x + _3704.y) + _3704.z);
     }
-    float3 _8427 = fast::normalize(float3(-(((_7688 * _10555.x) + (_7702 * _10555.y)) + (_7720 * _10555.z)), 1.0));
+    float3 _8427 = fast::normalize(float3(-(((_7688 * _11383.x) + (_7702 * _11383.y)) + (_7720 * _11383.z)), 1.0));
     float3 _1837 = fast::normalize(((_1807 * _8427.x) - ((cross(_1794, _1807) * in.v_tangent.w) * _8427.y)) + (_1794 * _8427.z));
     float _1844 = fast::max(dot(_1837, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
     float _1857 = 2.0 / (((_1789 * _1789) * _1789) * _1789);
