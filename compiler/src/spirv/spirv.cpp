@@ -57,11 +57,11 @@ void appendGlslangLog(const std::string& log, const std::string& fallbackName, D
 spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_0;
 
 // spirv-opt's -O (44 passes), reordered so that the library's branches on a slot's settings go right after inlining,
-// and without the passes that then find nothing left to do. Each slot's settings reach the library as HexcLattice and
-// HexcBlend structs built member by member and passed by value; -O sees through them only at its first instruction
-// simplification, halfway through, so its first half walks the whole inlined library. tests/recipe_test.cpp holds
-// this recipe to no bigger SPIR-V than -O's, opcode by opcode, on every example, scene variant and a generated set;
-// on those it costs 0.8x of -O's instructions (docs/benchmarks.md).
+// and without the passes that then found nothing left to do on the examples. Each slot's settings reach the library
+// as HexcLattice and HexcBlend structs built member by member and passed by value; -O sees through them only at its
+// first instruction simplification, halfway through, so its first half walks the whole inlined library.
+// tests/recipe_test.cpp holds this recipe to no bigger SPIR-V than -O's, opcode by opcode, on every example, scene
+// variant and a generated set; on those it costs 0.8x of -O's instructions (docs/benchmarks.md).
 const std::vector<std::string> kSpecialiseEarly = {
     "--wrap-opkill",                     // -O's preparation for inlining: a discard in a called function,
     "--merge-return",                    // and returns before a function's end, can then be inlined
