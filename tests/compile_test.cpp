@@ -248,6 +248,29 @@ TEST(Compile, TargetSubset) {
     EXPECT_EQ(manifest["targets"].size(), 2u);
 }
 
+// The HLSL, GLSL and MSL targets emitted at once (each on a thread) give the files and diagnostics of one at a time:
+// every example, and a compile whose HLSL target fails (a register space shader model 5.0 does not have).
+TEST(Compile, TargetsEmittedAtOnceMatchOneAtATime) {
+    CompileOptions noSpace;
+    noSpace.hlslShaderModel = 50;
+    noSpace.layout.hlsl.space = 1;
+    for (const auto& [name, base] : {std::pair{"rock", CompileOptions{}}, std::pair{"tiles", CompileOptions{}},
+                                     std::pair{"rock_normal", CompileOptions{}}, std::pair{"rock", noSpace}}) {
+        CompileOptions alone = base, atOnce = base;
+        alone.concurrentTargets = false;
+        atOnce.concurrentTargets = true;
+        const CompileResult a = compile(load(std::string("materials/") + name + ".json"), alone);
+        const CompileResult b = compile(load(std::string("materials/") + name + ".json"), atOnce);
+        EXPECT_EQ(formatAll(a.diagnostics), formatAll(b.diagnostics)) << name;
+        ASSERT_EQ(a.files.size(), b.files.size()) << name;
+        for (size_t i = 0; i < a.files.size(); ++i) {
+            EXPECT_EQ(a.files[i].name, b.files[i].name);
+            EXPECT_TRUE(a.files[i].contents == b.files[i].contents) << a.files[i].name;
+        }
+    }
+    EXPECT_FALSE(compile(load("materials/rock.json"), noSpace).ok());
+}
+
 // The command line, run as a user would.
 std::filesystem::path freshDir(const std::string& name) {
     std::filesystem::path d = std::filesystem::temp_directory_path() / name;

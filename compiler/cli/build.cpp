@@ -196,6 +196,8 @@ ShaderCache::Stats compileInParallel(const Arguments& a, const std::vector<Job*>
     };
     const unsigned cores = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
     std::vector<std::thread> threads(std::min<size_t>(cores, pending.size()));
+    // One compile at a time leaves the other cores to its targets; more already use them.
+    options.concurrentTargets = threads.size() == 1 && cores > 1;
     for (auto& t : threads) t = std::thread(worker);
     for (auto& t : threads) t.join();
     if (cache.stats().misses) cache.trim();  // only what was stored can take the folder past its bound

@@ -7,9 +7,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <exception>
+#include <future>
 #include <map>
 #include <optional>
 #include <set>
+#include <thread>
 
 #include "backends/backends.h"
 #include "codegen/codegen.h"
@@ -172,11 +175,31 @@ TargetOutput emitTarget(Target t, const std::vector<uint32_t>& spirv, const Shad
     throw std::logic_error("unknown target");
 }
 
-// Each target from the optimised module.
+// Each target from the optimised module. With CompileOptions::concurrentTargets and more than one core, each target but
+// the last gets a thread of its own (each has its own SPIRV-Cross compiler, which SPIRV-Cross allows) and this thread
+// emits the last one and SPIR-V, which is quick. Results, and the first error in target order, are taken in target
+// order, so the outputs and diagnostics are those of one thread.
 std::map<Target, TargetOutput> emitTargets(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options,
                                            const std::vector<Target>& targets) {
     std::map<Target, TargetOutput> out;
-    for (Target t : targets) out[t] = emitTarget(t, spirv, plan, options);
+    if (!options.concurrentTargets || targets.size() < 2 || std::thread::hardware_concurrency() < 2) {
+        for (Target t : targets) out[t] = emitTarget(t, spirv, plan, options);
+        return out;
+    }
+    auto here = [&](Target t) { return t == Target::Spirv || t == targets.back(); };
+    std::map<Target, std::future<TargetOutput>> pending;
+    for (Target t : targets)
+        pending[t] = std::async(here(t) ? std::launch::deferred : std::launch::async, emitTarget, t, std::cref(spirv), std::cref(plan),
+                                std::cref(options));
+    for (Target t : targets)
+        if (here(t)) pending[t].wait();  // runs it, while the others run on theirs
+    std::exception_ptr first;
+    for (Target t : targets) try {
+            out[t] = pending[t].get();
+        } catch (...) {
+            if (!first) first = std::current_exception();
+        }
+    if (first) std::rethrow_exception(first);
     return out;
 }
 

@@ -47,6 +47,10 @@ struct CompileOptions {
     // Shader code compiled before (by this or another process, see cache.h) is taken from here, and new code stored;
     // outputs are the same with or without. Not owned; null: compile everything.
     ShaderCache* cache = nullptr;
+    // Emit the HLSL, GLSL and MSL targets at once, each on a thread, when the machine has more than one core; the
+    // outputs are the same either way. A caller that already compiles several materials at once (the command line
+    // does) turns it off, so as not to run more threads than cores.
+    bool concurrentTargets = true;
 };
 
 struct OutputFile {

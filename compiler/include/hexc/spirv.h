@@ -42,7 +42,8 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
 // Validates, optimises for performance and validates again. Diagnostics only on failure (a hexc bug).
 // freezeConstants: specialisation constants become constants first, so the optimiser folds them.
 // legalize: run the legalisation recipe first, which SPIR-V from glslang's HLSL front end needs.
-// performance: the -O recipe; off (--debug), the module is only validated (and frozen if asked).
+// performance: the performance passes (-O's, reordered to specialise early: spirv.cpp); off (--debug), the module is only
+// validated (and frozen if asked).
 SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstants = false, bool legalize = false, bool performance = true);
 
 // Validates a module for Vulkan 1.0 without friendly names, which cost more than the validation (quadratic in

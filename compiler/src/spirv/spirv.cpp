@@ -56,6 +56,41 @@ void appendGlslangLog(const std::string& log, const std::string& fallbackName, D
 
 spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_0;
 
+// spirv-opt's -O (44 passes), reordered so that the library's branches on a slot's settings go right after inlining,
+// and without the passes that then found nothing left to do on the examples. Each slot's settings reach the library
+// as HexcLattice and HexcBlend structs built member by member and passed by value; -O sees through them only at its
+// first instruction simplification, halfway through, so its first half walks the whole inlined library.
+// tests/recipe_test.cpp holds this recipe to no bigger SPIR-V than -O's, opcode by opcode, on every example, scene
+// variant and a generated set; on those it costs 0.8x of -O's instructions (docs/benchmarks.md).
+const std::vector<std::string> kSpecialiseEarly = {
+    "--wrap-opkill",                     // -O's preparation for inlining: a discard in a called function,
+    "--merge-return",                    // and returns before a function's end, can then be inlined
+    "--inline-entry-points-exhaustive",  // the slots' functions and the library into main
+    "--eliminate-dead-functions",        // the library's uncalled functions
+    "--private-to-local",                // a template's private globals become locals, which the next passes forward
+    "--scalar-replacement=100",          // the settings structs into one variable per member
+    "--convert-local-access-chains",     // member stores and loads become whole-variable ones
+    "--eliminate-local-single-block",    // a setting stored and read in one block: forwarded (most are)
+    "--eliminate-local-single-store",    // stored once: forwarded everywhere it dominates
+    "--ssa-rewrite",                     // the rest into SSA; simplifying before this leaves more code (more OpExtInst)
+    "--simplify-instructions",           // the settings' members read back from the structs built: constants
+    "--eliminate-dead-branches",         // the library's branches on them: gone, with their code
+    "--eliminate-dead-code-aggressive",  // what only the removed branches used
+    "--loop-unroll",                     // loops a template asks to unroll ([[unroll]])
+    "--redundancy-elimination",          // the lattice and samples repeated across slots and taps, computed once
+    "--simplify-instructions",           // what the shared values fold into
+    "--ssa-rewrite",                     // loads the folds exposed
+    "--vector-dce",                      // vector components nothing reads
+    "--eliminate-dead-branches",         // branches the folds made constant
+    "--if-conversion",                   // small ifs into selects, as -O ends
+    "--eliminate-dead-code-aggressive",
+    "--merge-blocks",
+    "--redundancy-elimination",
+    "--eliminate-dead-branches",
+    "--merge-blocks",
+    "--simplify-instructions",
+};
+
 // SPIRV-Tools' messages appended to `messages`, one line each, located by word.
 spvtools::MessageConsumer collectInto(std::string& messages) {
     return [&messages](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
@@ -161,10 +196,9 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& words, bool freezeConstan
     // and parameters, which Vulkan only accepts once they are inlined and forwarded. GLSL from glslang
     // is legal already, and the recipe would add about a tenth to the compile.
     if (legalize) optimizer.RegisterLegalizationPasses();
-    // Then the performance recipe (spirv-opt -O): inlines the per-slot functions and the library,
-    // breaks the HexcTiles struct into scalars, folds constants and removes library code the
-    // material never reaches, which is what keeps the emitted HLSL/GLSL/MSL short.
-    if (performance) optimizer.RegisterPerformancePasses();
+    // Then the performance recipe: inlines the per-slot functions and the library, folds the settings and removes
+    // library code the material never reaches, which is what keeps the emitted HLSL/GLSL/MSL short.
+    if (performance && !optimizer.RegisterPassesFromFlags(kSpecialiseEarly)) return fail("unknown spirv-opt pass");
     std::vector<uint32_t> optimized;
     spvtools::OptimizerOptions once;
     once.set_run_validator(false);

@@ -64,8 +64,8 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     uint _2664 = _2660.z;
     uint _2668 = _2660.x + (_2662 * _2664);
     uint _2677 = _2662 + (_2664 * _2668);
-    uint3 _11926 = uint3(_2668, _2677, _2664 + (_2668 * _2677));
-    uint3 _2692 = _11926 ^ (_11926 >> uint3(16u));
+    uint3 _12899 = uint3(_2668, _2677, _2664 + (_2668 * _2677));
+    uint3 _2692 = _12899 ^ (_12899 >> uint3(16u));
     uint _2694 = _2692.y;
     uint _2696 = _2692.z;
     uint _2700 = _2692.x + (_2694 * _2696);
@@ -90,8 +90,8 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     uint _3060 = _3056.z;
     uint _3064 = _3056.x + (_3058 * _3060);
     uint _3073 = _3058 + (_3060 * _3064);
-    uint3 _11932 = uint3(_3064, _3073, _3060 + (_3064 * _3073));
-    uint3 _3088 = _11932 ^ (_11932 >> uint3(16u));
+    uint3 _12907 = uint3(_3064, _3073, _3060 + (_3064 * _3073));
+    uint3 _3088 = _12907 ^ (_12907 >> uint3(16u));
     uint _3090 = _3088.y;
     uint _3092 = _3088.z;
     uint _3096 = _3088.x + (_3090 * _3092);
@@ -110,8 +110,8 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     uint _3456 = _3452.z;
     uint _3460 = _3452.x + (_3454 * _3456);
     uint _3469 = _3454 + (_3456 * _3460);
-    uint3 _11937 = uint3(_3460, _3469, _3456 + (_3460 * _3469));
-    uint3 _3484 = _11937 ^ (_11937 >> uint3(16u));
+    uint3 _12912 = uint3(_3460, _3469, _3456 + (_3460 * _3469));
+    uint3 _3484 = _12912 ^ (_12912 >> uint3(16u));
     uint _3486 = _3484.y;
     uint _3488 = _3484.z;
     uint _3492 = _3484.x + (_3486 * _3488);
@@ -130,18 +130,18 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     float3 _4031 = (_2386 * _4013) * (_4013 * _4013);
     float3 _3942 = mix(float3(1.0), fast::max(float3(dot(_3858, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0)), dot(_3879, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0)), dot(_3900, float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0))), float3(0.0)), float3(hexcParams.albedo_falloffcontrast)) * _4031;
     float _3954 = (_3942.x + _3942.y) + _3942.z;
-    float3 _11463;
+    float3 _12469;
     if (_3954 > 0.0)
     {
-        _11463 = _3942 / float3(_3954);
+        _12469 = _3942 / float3(_3954);
     }
     else
     {
-        _11463 = _4031 / float3((_4031.x + _4031.y) + _4031.z);
+        _12469 = _4031 / float3((_4031.x + _4031.y) + _4031.z);
     }
-    float3 _4082 = step(float3(0.5), _11463) * 2.0;
+    float3 _4082 = step(float3(0.5), _12469) * 2.0;
     float3 _4086 = (float3(1.0) - _4082) * 2.0;
-    float3 _4092 = fast::max(float3(0.0), fma(_11463, _4086, _4082));
+    float3 _4092 = fast::max(float3(0.0), fma(_12469, _4086, _4082));
     float3 _4111 = fma(_4086 * 0.25, _4092 * _4092, _4082 * 0.5);
     float3 _4122 = _4111 / float3((_4111.x + _4111.y) + _4111.z);
     float2 _4460 = dfdx(_2091);
@@ -157,18 +157,18 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     float4 _6290 = hexcTex_roughness.sample(hexcSampler, _3313, gradient2d(float2(fma(_5187, _3439, _5192 * _3441), fma(_5199, _3441, _5192 * _3439)) * 1.0, float2(fma(_5213, _3439, _5218 * _3441), fma(_5225, _3441, _5218 * _3439)) * 1.0));
     float3 _6332 = mix(float3(1.0), fast::max(float3(_6248.x, _6269.x, _6290.x), float3(0.0)), float3(hexcParams.roughness_falloffcontrast)) * _4031;
     float _6344 = (_6332.x + _6332.y) + _6332.z;
-    float3 _11619;
+    float3 _12615;
     if (_6344 > 0.0)
     {
-        _11619 = _6332 / float3(_6344);
+        _12615 = _6332 / float3(_6344);
     }
     else
     {
-        _11619 = _4031 / float3((_4031.x + _4031.y) + _4031.z);
+        _12615 = _4031 / float3((_4031.x + _4031.y) + _4031.z);
     }
-    float3 _6472 = step(float3(0.5), _11619) * 2.0;
+    float3 _6472 = step(float3(0.5), _12615) * 2.0;
     float3 _6476 = (float3(1.0) - _6472) * 2.0;
-    float3 _6482 = fast::max(float3(0.0), fma(_11619, _6476, _6472));
+    float3 _6482 = fast::max(float3(0.0), fma(_12615, _6476, _6472));
     float3 _6501 = fma(_6476 * 0.25, _6482 * _6482, _6472 * 0.5);
     float3 _6512 = _6501 / float3((_6501.x + _6501.y) + _6501.z);
     float _1965 = fast::clamp((((_6248 * _6512.x) + (_6269 * _6512.y)) + (_6290 * _6512.z)).x, 0.0199999995529651641845703125, 1.0);
@@ -203,16 +203,16 @@ fragment rock_frag_out rock_frag(rock_frag_in in [[stage_in]], constant HexcPara
     float3 _8534 = float3(dot(_8481, _8481), dot(_8499, _8499), dot(_8521, _8521));
     float3 _9004 = mix(float3(1.0), fast::max(sqrt(_8534 / (float3(1.0) + _8534)), float3(0.0)), float3(hexcParams.normal_falloffcontrast)) * _4031;
     float _9016 = (_9004.x + _9004.y) + _9004.z;
-    float3 _11830;
+    float3 _12816;
     if (_9016 > 0.0)
     {
-        _11830 = _9004 / float3(_9016);
+        _12816 = _9004 / float3(_9016);
     }
     else
     {
-        _11830 = _4031 / float3((_4031.x + _4031.y) + _4031.z);
+        _12816 = _4031 / float3((_4031.x + _4031.y) + _4031.z);
     }
-    float3 _9508 = fast::normalize(float3(-(((_8481 * _11830.x) + (_8499 * _11830.y)) + (_8521 * _11830.z)), 1.0));
+    float3 _9508 = fast::normalize(float3(-(((_8481 * _12816.x) + (_8499 * _12816.y)) + (_8521 * _12816.z)), 1.0));
     float3 _2013 = fast::normalize(((_1983 * _9508.x) - ((cross(_1970, _1983) * in.v_tangent.w) * _9508.y)) + (_1970 * _9508.z));
     float _2020 = fast::max(dot(_2013, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
     float _2033 = 2.0 / (((_1965 * _1965) * _1965) * _1965);
