@@ -376,7 +376,8 @@ vec3 hexcBlendWeights(vec3 w, vec3 Dw, HexcBlend b) {
 // G' = (1, 0, 0), TV = G_a + G_b <= Gup_a + Gup_b. One skipped (i): TV <= G_i + the gain's change on the two kept,
 // whose pre-gain weights grow by 1 / (1 - W_i): each g(cW) / g(W) lies in [1, c^k] (g's elasticity x g'(x) / g(x) is
 // in [0, k] for k >= 1, which the parser requires), so the kept pair's log-odds move by at most k ln c, their share
-// by at most a quarter of that (the logistic's slope): TV <= Gup_i + k/4 ln(1 / (1 - U_i)). Without the gain, k = 0.
+// by at most a quarter of that (the logistic's slope): TV <= Gup_i + k/4 ln(1 / (1 - U_i)). Without the gain, g(x) = x
+// and k = 0.
 // The heaviest tap (largest w) is always fetched; the other two together when Gup_a + Gup_b < e, else the one
 // with the smaller bound when that is < e.
 bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b) {
@@ -385,13 +386,16 @@ bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b) {
     vec3 others = vec3(wg.x + wg.y + wg.z) - wg;
     vec3 U = wg / max(wg + lo * others, vec3(1e-30));
     vec3 L = lo * wg / max(lo * wg + others, vec3(1e-30));
-    vec3 Gup = U, B = U;
+    vec3 gU = U, gL = L;
+    float k = 0.0;
     if (b.gain && (b.gainInt > 0 || b.falloff != 0.5)) {
-        vec3 gU = hexcGainCurve(U, b.falloff, b.gainInt), gL = hexcGainCurve(L, b.falloff, b.gainInt);
-        Gup = gU / max(gU + vec3(gL.x + gL.y + gL.z) - gL, vec3(1e-30));
-        // U_i = 1 only for a tap whose weight cannot be bounded: never skipped, so its term may be infinite.
-        B = Gup - 0.25 * hexcGainK(b.falloff, b.gainInt) * log(max(vec3(1.0) - U, vec3(1e-30)));
+        gU = hexcGainCurve(U, b.falloff, b.gainInt);
+        gL = hexcGainCurve(L, b.falloff, b.gainInt);
+        k = hexcGainK(b.falloff, b.gainInt);
     }
+    vec3 Gup = gU / max(gU + vec3(gL.x + gL.y + gL.z) - gL, vec3(1e-30));
+    // U_i = 1 only for a tap whose weight cannot be bounded: never skipped, so its term may be infinite.
+    vec3 B = Gup - 0.25 * k * log(max(vec3(1.0) - U, vec3(1e-30)));
     int d = w.x >= w.y && w.x >= w.z ? 0 : (w.y >= w.z ? 1 : 2);
     int a = d == 0 ? 1 : 0, c = d == 2 ? 1 : 2;
     bvec3 f = bvec3(true);
