@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <set>
+#include <sstream>
 
 #include "hexc/library.h"
 #include "hexc/material.h"
@@ -1031,6 +1033,38 @@ size_t fetches(Material m) {
 TEST(OneTap, SamplesOncePerSlot) {
     EXPECT_EQ(fetches(material(R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"taps": 1}})")),
               1u);
+}
+
+// Adaptive taps: each of the three fetches sits in a block that a conditional branch leads to, so a GPU with real
+// branches skips it; the optimiser must not have turned the branches into selects around unconditional fetches.
+TEST(AdaptiveTaps, EachFetchIsBehindABranch) {
+    for (const char* kind : {"color", "normal"}) {
+        Material m = material(std::string(R"({"name": "s", "kind": ")") + kind + R"(", "texture": "textures/rock_)" +
+                              (kind == std::string("color") ? "albedo" : "normal") + R"(.png", "hextiling": {"taps": "adaptive"}})");
+        m.templateName = "value";
+        CompileResult r = compile(m);
+        ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+        std::istringstream text(disassemble(r.spirv));
+        std::string line, block;
+        std::set<std::string> branchedTo;
+        std::vector<std::string> sampledIn;
+        while (std::getline(text, line)) {
+            std::istringstream words(line);
+            std::string first, second, third;
+            words >> first >> second >> third;
+            if (third == "OpLabel") block = first;
+            if (first == "OpBranchConditional") {
+                std::string other;
+                words >> other;
+                branchedTo.insert(third);
+                branchedTo.insert(other);
+            }
+            if (line.find("OpImageSample") != std::string::npos) sampledIn.push_back(block);
+        }
+        EXPECT_EQ(sampledIn.size(), 3u) << kind;
+        for (const std::string& b : sampledIn)
+            EXPECT_TRUE(branchedTo.count(b)) << kind << ": a fetch in block " << b << " runs unconditionally";
+    }
 }
 
 // What each variant fetches per pixel, counted in the SPIR-V: the checker mask's two taps, the height map's
