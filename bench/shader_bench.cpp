@@ -61,6 +61,9 @@ const RatioTarget kRatioTargets[] = {
     {"1 tap", "stable-rot-gain-1tap", 1.3},
     {"1 tap, one level of detail per slot", "stable-rot-gain-1tap-lod", 1.3},
 };
+// Adaptive taps on the full-quality material (issue 17): fetches per slot per pixel, and the albedo's largest change
+// against exact 3-tap.
+constexpr double kTargetFetches = 1.4, kTargetAdaptiveError = 1.0 / 255;
 
 // A method is what a user writes in the material's "hextiling" object (on top of "tiling": kTiling), applied
 // to every slot. "rot": rotation on (1) instead of off (0); "gain": falloff 0.75 (the paper's choice for
@@ -109,6 +112,8 @@ const std::vector<Method>& methods() {
         // The seeds' variants.
         {"stable-rot-gain-1tap", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.75}, {"taps", 1}}},
         {"stable-rot-gain-1tap-lod", {{"mode", "stable"}, {"rotation", 1}, {"falloff", 0.75}, {"taps", 1}, {"lod", "shared"}}},
+        // Each tap fetched only where its weight bound can move the result by 1/255 (docs/material-format.md#taps).
+        {"stable-rot-gain-adaptive", with(fullQuality(HashMode::Stable), {{"taps", "adaptive"}})},
         {"stable-rot-gain-checker", with(fullQuality(HashMode::Stable), {{"mask", "checker"}})},
         {"stable-rot-gain-noise", with(fullQuality(HashMode::Stable), {{"mask", "noise"}, {"maskscale", 4}})},
         {"stable-rot-gain-noise3", with(fullQuality(HashMode::Stable), {{"mask", "noise3"}, {"maskscale", 4}})},
@@ -199,6 +204,10 @@ struct Row : Timed {
     HashMode errorReference = HashMode::Stable;
     ErrorStats error{kNaN, kNaN, kNaN};
     Contrast contrast{kNaN, kNaN};
+    // Adaptive taps: fetches per slot per pixel (taps of non-zero weight in the weights output, which shows a skipped
+    // tap as exactly 0), and the albedo's error against the full-quality row's on the GPU (exact 3-tap).
+    double fetches = kNaN;
+    ErrorStats againstThreeTaps{kNaN, kNaN, kNaN};
 };
 
 // A row's contrast in its view moved by (shift, shift) uv.
@@ -453,6 +462,26 @@ void timeRound(vk::Runner& runner, Timed& t, const std::vector<Texture>& texture
     t.frameMs.insert(t.frameMs.end(), frameMs.begin(), frameMs.end());
 }
 
+// An adaptive row: the taps each slot fetches, counted on the GPU from its weights output (a tap is fetched exactly when
+// its weight is non-zero, since a fetched tap's weight is at least its lower bound, > 0 for falloffcontrast < 1), and
+// the albedo against the full-quality row's (the same settings with every tap).
+void measureAdaptive(vk::Runner& runner, const Results& results, Row& row) {
+    const View& view = kViews[row.view].view;
+    size_t fetched = 0;
+    for (const Slot& slot : row.material.slots) {
+        const Image w = vk::render(runner, row.material, vk::RenderOutput::Weights, slot.name, view, vk::ExecutedTarget::Spirv, 0, nullptr,
+                                   {}, row.method->compile);
+        for (size_t p = 0; p < w.rgba.size(); p += 4) fetched += (w.rgba[p] > 0) + (w.rgba[p + 1] > 0) + (w.rgba[p + 2] > 0);
+    }
+    row.fetches = double(fetched) / (double(view.width) * view.height * double(row.material.slots.size()));
+    const Row* full = fullQualityRow(results, row.view);
+    const auto albedo = [&](const Row& r) {
+        return vk::render(runner, r.material, vk::RenderOutput::Albedo, "albedo", view, vk::ExecutedTarget::Spirv, 0, nullptr, {},
+                          r.method->compile);
+    };
+    row.againstThreeTaps = compareRgb(albedo(row), albedo(*full));
+}
+
 void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) {
     const auto start = std::chrono::steady_clock::now();
     const References refs = references(materialDir);
@@ -523,6 +552,10 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
             row.contrast = contrast(luminances(image), refs.sourceLuminance[row.view]);
         });
     }
+    std::cout << "  adaptive taps" << std::endl;
+    for (Row& row : results.rows)
+        if (row.failure.empty() && albedoSlot(row.material).hex.adaptive())
+            attempt(row.failure, [&] { measureAdaptive(runner, results, row); });
     std::cout << "  contrast at other places" << std::endl;
     shiftedContrast(runner, refs, results);
     for (Row& row : results.rows)
@@ -551,6 +584,22 @@ std::vector<std::string> targetLines(const Results& results) {
                                                     : "NOT MET"));
         }
     return lines;
+}
+
+// The adaptive row's fetches and error against the targets, and what its fetch count promises a GPU with real branches
+// (lavapipe runs both sides of a branch under a mask, so its time cannot show it).
+std::string adaptiveLine(const Results& results, size_t view) {
+    const Row* row = nullptr;
+    for (const Row& r : results.rows)
+        if (r.view == view && r.name == "stable-rot-gain-adaptive") row = &r;
+    const double f = row ? row->fetches : kNaN, e = row ? row->againstThreeTaps.max : kNaN;
+    const auto met = [](double v, double target) { return std::isnan(v) ? "not measured" : v <= target ? "MET" : "NOT MET"; };
+    return strf(
+        "adaptive taps (stable-rot-gain-adaptive), %s: %s fetches per slot per pixel, target <= %.1f: %s; max error against "
+        "exact 3-tap %s/255, target <= 1/255: %s; fetch-bound speed-up of the texture work on a GPU with real branches "
+        "3 / %s = %sx",
+        kViews[view].name.c_str(), num(f, "%.3f").c_str(), kTargetFetches, met(f, kTargetFetches), num(e * 255, "%.3f").c_str(),
+        met(e, kTargetAdaptiveError), num(f, "%.3f").c_str(), num(3 / f, "%.2f").c_str());
 }
 
 std::string mainTable(const Results& results) {
@@ -659,6 +708,7 @@ std::string markdown(const Results& r) {
     std::string md =
         "# hexc shader benchmark\n\n" + r.machine + "\n" + r.settings + "\n## Run time, error, contrast\n\n" + mainTable(r) + "\n";
     for (const std::string& line : targetLines(r)) md += "- " + line + "\n";
+    for (size_t v = 0; v < kViews.size(); ++v) md += "- " + adaptiveLine(r, v) + "\n";
     md +=
         "\n## Against the paper's listings\n\nTime over bench/paper-listing.glsl's (Listings 1-10 as written, per slot, the same "
         "material and `lit` shading) and over plain tiling's, per round: median (min-max) of the " +
@@ -776,6 +826,7 @@ int run(const fs::path& resultsDir) {
     writeFile(resultsDir / "runtime-vs-error.svg", plot(results));
     std::cout << "\n" << mainTable(results) << "\n";
     for (const std::string& line : targetLines(results)) std::cout << line << "\n";
+    for (size_t v = 0; v < kViews.size(); ++v) std::cout << adaptiveLine(results, v) << "\n";
     std::cout << "\nWrote " << (resultsDir / "results.md").string() << ", results.csv, runtime-vs-error.svg\n";
     return 0;
 }

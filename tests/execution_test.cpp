@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <set>
+#include <sstream>
 
 #include "hexc/library.h"
 #include "hexc/material.h"
@@ -256,7 +258,7 @@ Draw on(vk::ExecutedTarget target, const CompileOptions& options = {}) {
 }
 
 // Each pixel's tolerance, from the reference's details of it.
-using PixelTolerance = std::function<double(const reference::SlotResult&)>;
+using PixelTolerance = std::function<double(const reference::SlotResult&, size_t pixel)>;
 
 // Runs a one-slot material on the GPU and compares `channels` channels of every pixel with the reference, each pixel
 // against its own tolerance.
@@ -273,7 +275,7 @@ Check checkAgainstReference(const Material& m, vk::RenderOutput output, const Vi
         // Scalar slots show (s, s, s, 1) of the channel they read.
         for (int c = 0; c < channels; ++c)
             cpu.rgba[p * 4 + size_t(c)] = float(ref[p].value[slot.kind == SlotKind::Scalar ? size_t(slot.channel) : size_t(c)]);
-        const double t = tolerance(ref[p]);
+        const double t = tolerance(ref[p], p);
         check.maxTolerance = std::max(check.maxTolerance, t);
         for (int c = 0; c < channels; ++c) {
             double e = std::fabs(double(gpu.rgba[p * 4 + size_t(c)]) - double(cpu.rgba[p * 4 + size_t(c)]));
@@ -294,7 +296,7 @@ Check checkAgainstReference(const Material& m, vk::RenderOutput output, const Vi
     // The height map is 8-bit linear data, sampled at the view's levels like the slot.
     const double eh = sampleError(level, false);
     const int blended = slot.kind == SlotKind::Scalar ? 1 : channels;
-    return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r) {
+    return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r, size_t) {
         return pixelTolerance(r, ex, em, slot.hex, blended) + (slot.heightBlend ? heightTolerance(r, eh, blended) : 0.0);
     });
 }
@@ -376,7 +378,7 @@ PixelTolerance histogramTolerance(const Slot& slot, const reference::SlotTexture
     const reference::SampledTexture& lut = *textures.lut;
     const std::array<double, 3> step = adjacentSteps(*textures.texture, level);
     const size_t channels = slot.kind == SlotKind::Scalar ? 1 : 3;
-    return [&lut, step, channels](const reference::SlotResult& r) {
+    return [&lut, step, channels](const reference::SlotResult& r, size_t) {
         const int n = lut.width(0), rows = lut.height(0);
         const int r0 = 1 + int(std::floor(std::clamp(r.lod, 0.0, rows - 2.0))), r1 = std::min(r0 + 1, rows - 1);
         std::array<double, 3> e{};
@@ -773,6 +775,128 @@ INSTANTIATE_TEST_SUITE_P(
                      testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
     [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
 
+// ---- Adaptive taps ----------------------------------------------------------------------------------------
+// "taps": "adaptive" skips a tap when its bound says the result moves by less than e = HexTiling::kAdaptiveError times
+// the spread of the taps' values (docs/material-format.md#taps). Three checks per case and target:
+// 1. which taps are fetched: the weights output shows a skipped tap's weight as exactly 0, the reference says which it
+//    skips. Both decide from the same bound, the GPU in float32, so they may differ only where a bound is within
+//    rounding of e: at most 1% of the pixels;
+// 2. the value against the adaptive reference: where both fetch the same taps, the same blend of the same samples, so
+//    the full blend's tolerance (pixelTolerance); elsewhere each is within e S of its exact 3-tap result, and those
+//    within the full blend's tolerance of each other: 2 e S plus that of the exact reference;
+// 3. the bound itself, on the GPU: adaptive against exact 3-tap on the same target and view, within e S. S: the spread
+//    of the values blended, 1 for 8-bit colour or scalars; a normal slot's derivative components are at most
+//    sqrt(2) max|d| in magnitude (a filtered sample's |x| / z is at most its texels' largest, then rotated), so
+//    S = 2 sqrt(2) max|d|. The bound is computed in float32 (relative error ~1e-6 on a threshold of 1/255) and the two
+//    blends round independently (a few 2^-24): 1e-6 more.
+struct AdaptiveCase {
+    const char* name;
+    const char* slot;  // "TAPS" stands for the taps setting, "TEXTURE" for an odd-sized crop of the rock albedo
+    bool minified;
+};
+void PrintTo(const AdaptiveCase& c, std::ostream* os) { *os << c.name; }
+
+const AdaptiveCase kAdaptiveCases[] = {
+    {"color_full_quality",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
+     false},
+    {"color_full_quality_minified",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
+     true},
+    {"color_no_gain",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 4TAPS}})",
+     false},
+    {"color_checker",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "maskscale": 3, "falloff": 0.7TAPS}})",
+     false},
+    {"color_odd_127x80",
+     R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "TEXTURE", "hextiling": {"tiling": 4, "rotation": 0, "falloff": 0.75TAPS}})",
+     false},
+    {"scalar_roughness",
+     R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
+     false},
+    {"scalar_roughness_shared_lod_minified",
+     R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75, "lod": "shared"TAPS}})",
+     true},
+    {"normal_full_quality",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
+     false},
+    {"normal_flip_y_minified",
+     R"({"name": "normal", "kind": "normal", "flip_y": true, "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
+     true},
+};
+
+Material adaptiveMaterial(const AdaptiveCase& c, bool adaptive) {
+    std::string slot = c.slot;
+    auto replace = [&](const std::string& what, const std::string& with) {
+        if (size_t at = slot.find(what); at != std::string::npos) slot.replace(at, what.size(), with);
+    };
+    replace("TAPS", adaptive ? R"(, "taps": "adaptive")" : "");
+    if (slot.find("TEXTURE") != std::string::npos) replace("TEXTURE", cropOfRock(127, 80).string());
+    return material(slot);
+}
+
+class AdaptiveTaps : public testing::TestWithParam<std::tuple<AdaptiveCase, vk::ExecutedTarget>> {};
+
+TEST_P(AdaptiveTaps, FetchLikeTheReferenceAndStayWithinTheBoundOfThreeTaps) {
+    REQUIRE_VULKAN();
+    const auto& [c, target] = GetParam();
+    const Material m = adaptiveMaterial(c, true), exact = adaptiveMaterial(c, false);
+    const Slot& slot = m.slots[0];
+    const bool normal = slot.kind == SlotKind::Normal;
+    const View view = c.minified ? kMinified : kMagnified;
+    const int level = c.minified ? 2 : 0;
+    const reference::SampledTexture tex = sampled(slot);
+    const TextureBounds b = bounds(tex);
+    const double e = HexTiling::kAdaptiveError, spread = normal ? 2 * std::sqrt(2.0) * b.maxDeriv : b.spread;
+    // As checkColor and checkNormal.
+    const double es = sampleError(level, slot.colorSpace == ColorSpace::Srgb),
+                 ed = 2 * sampleError(level, false) * (1 + b.maxDeriv) / b.minZ;
+    const double ex = normal ? ed : es, em = normal ? std::sqrt(2.0) * ed : es;
+    const int channels = normal ? 2 : slot.kind == SlotKind::Scalar ? 1 : 4;
+
+    // 1. The taps fetched.
+    const Image weights = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view, target);
+    const std::vector<reference::SlotResult> ref = reference::evaluateView(slot, tex, view);
+    const std::vector<reference::SlotResult> ref3 = reference::evaluateView(exact.slots[0], tex, view);
+    std::vector<bool> differs(ref.size());
+    size_t gpuFetches = 0, refFetches = 0, different = 0;
+    for (size_t p = 0; p < ref.size(); ++p)
+        for (size_t ch = 0; ch < 3; ++ch) {
+            const bool gpu = weights.rgba[p * 4 + ch] > 0, cpu = ref[p].weights[ch] > 0;
+            gpuFetches += gpu;
+            refFetches += ref[p].blend[ch] > 0;
+            if (gpu != cpu && !differs[p]) differs[p] = true, ++different;
+        }
+    const double n = double(ref.size());
+    std::printf("  %-28s %-5s: fetches per pixel %.3f (reference %.3f), %zu pixels fetch other taps\n", c.name, targetName(target).c_str(),
+                gpuFetches / n, refFetches / n, different);
+    EXPECT_LE(different, ref.size() / 100);
+    EXPECT_LT(gpuFetches / n, 3.0);  // something is skipped
+
+    // 2. The value against the adaptive reference.
+    const int blended = slot.kind == SlotKind::Scalar ? 1 : channels;
+    const vk::RenderOutput output = normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
+    Check check = checkAgainstReference(m, output, view, on(target), channels, [&](const reference::SlotResult& r, size_t p) {
+        return differs[p] ? 2 * e * spread + pixelTolerance(ref3[p], ex, em, slot.hex, blended) + 1e-6
+                          : pixelTolerance(r, ex, em, slot.hex, blended);
+    });
+    report(c.name, check);
+    EXPECT_LE(check.worstRatio, 1.0);
+
+    // 3. Against exact 3-tap on the GPU.
+    const Image adaptive = on(target)(m, output, view), full = on(target)(exact, output, view);
+    const Errors moved = compare(adaptive, full, channels == 1 ? 1 : normal ? 2 : 3);
+    const double bound = e * spread + 1e-6;
+    std::printf("  %-28s %-5s: adaptive against 3 taps max %.2e (%.2f/255), bound %.2e\n", c.name, targetName(target).c_str(), moved.max,
+                moved.max * 255, bound);
+    EXPECT_LE(moved.max, bound);
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, AdaptiveTaps, testing::Combine(testing::ValuesIn(kAdaptiveCases), kExecutedTargets), [](const auto& info) {
+    return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
+});
+
 // ---- Weights ----------------------------------------------------------------------------------------------
 // With falloffcontrast 0 the weights depend on the lattice alone. The GPU evaluates it in float32 on a uv that
 // the rasteriser interpolated, so st and the skewed coordinates carry a few ulps of their size (|skewed| <= 4 |st|):
@@ -912,6 +1036,38 @@ size_t fetches(Material m) {
 TEST(OneTap, SamplesOncePerSlot) {
     EXPECT_EQ(fetches(material(R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"taps": 1}})")),
               1u);
+}
+
+// Adaptive taps: each of the three fetches sits in a block that a conditional branch leads to, so a GPU with real
+// branches skips it; the optimiser must not have turned the branches into selects around unconditional fetches.
+TEST(AdaptiveTaps, EachFetchIsBehindABranch) {
+    for (const char* kind : {"color", "normal"}) {
+        Material m = material(std::string(R"({"name": "s", "kind": ")") + kind + R"(", "texture": "textures/rock_)" +
+                              (kind == std::string("color") ? "albedo" : "normal") + R"(.png", "hextiling": {"taps": "adaptive"}})");
+        m.templateName = "value";
+        CompileResult r = compile(m);
+        ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+        std::istringstream text(disassemble(r.spirv));
+        std::string line, block;
+        std::set<std::string> branchedTo;
+        std::vector<std::string> sampledIn;
+        while (std::getline(text, line)) {
+            std::istringstream words(line);
+            std::string first, second, third;
+            words >> first >> second >> third;
+            if (third == "OpLabel") block = first;
+            if (first == "OpBranchConditional") {
+                std::string other;
+                words >> other;
+                branchedTo.insert(third);
+                branchedTo.insert(other);
+            }
+            if (line.find("OpImageSample") != std::string::npos) sampledIn.push_back(block);
+        }
+        EXPECT_EQ(sampledIn.size(), 3u) << kind;
+        for (const std::string& b : sampledIn)
+            EXPECT_TRUE(branchedTo.count(b)) << kind << ": a fetch in block " << b << " runs unconditionally";
+    }
 }
 
 // What each variant fetches per pixel, counted in the SPIR-V: the checker mask's two taps, the height map's

@@ -207,13 +207,19 @@ TEST(Validation, TapsAreOneOrTheMasksCount) {
                                  "3 taps; expected 3 or 1 (one dithered fetch)"});
     EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"taps": 1.5},
   "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
-              std::vector<std::string>{"materials/t.json:1:37: error[HX106]: /hextiling/taps: expected a whole number in 1..3, got 1.5"});
+              std::vector<std::string>{
+                  "materials/t.json:1:37: error[HX106]: /hextiling/taps: expected a whole number in 1..3 or \"adaptive\", got 1.5"});
+    EXPECT_EQ(diagnose(R"({"name": "m", "hextiling": {"taps": "adaptiv"},
+  "slots": [{"name": "a", "kind": "color", "texture": "textures/rock_albedo.png"}]})"),
+              std::vector<std::string>{"materials/t.json:1:37: error[HX107]: /hextiling/taps: expected one of `adaptive`, got \"adaptiv\" "
+                                       "(did you mean `adaptive`?)"});
     // A slot may set the taps that fit its own mask, and taps 1 fits every mask.
     ParseResult ok = parseMaterial(R"({"name": "m", "hextiling": {"taps": 3}, "slots": [
   {"name": "a", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "checker", "taps": 2}},
   {"name": "b", "kind": "color", "texture": "textures/rock_albedo.png"},
   {"name": "c", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "noise", "taps": 1}},
-  {"name": "d", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "checker", "taps": 1}}]})",
+  {"name": "d", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "checker", "taps": 1}},
+  {"name": "e", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"mask": "checker", "taps": "adaptive"}}]})",
                                    "materials/t.json");
     ASSERT_TRUE(ok.material) << ok.diagnostics.size();
     EXPECT_EQ(ok.material->slots[0].hex.mask, Mask::Checker);
@@ -222,6 +228,7 @@ TEST(Validation, TapsAreOneOrTheMasksCount) {
     EXPECT_EQ(ok.material->slots[1].hex.taps, 3);
     EXPECT_EQ(ok.material->slots[2].hex.taps, 1);
     EXPECT_EQ(ok.material->slots[3].hex.taps, 1);
+    EXPECT_TRUE(ok.material->slots[4].hex.adaptive());
 }
 
 TEST(Validation, MasksOtherThanHexNeedStableMode) {

@@ -24,7 +24,8 @@ slot's; the schema has the ones it can state exactly, where both keys are in one
  8. taps is 1 or the mask's tap count (2 for "checker", 3 otherwise);
  9. split_coordinates does not work with the "noise" and "noise3" masks,
 10. nor with the material's "triplanar" projection;
-11. height_blend cannot be combined with taps 1.
+11. height_blend cannot be combined with taps 1 or "adaptive";
+12. taps "adaptive" needs falloff >= 0.5.
 
 Run it with the Debian interpreter (/usr/bin/python3), which has python3-jsonschema.
 """
@@ -153,6 +154,8 @@ def slot_problems(doc, slots):
         # Values the schema rejects (taps 4, mask "square") are left to it, not reported twice.
         if mask in MASK_TAPS and taps in (2, 3) and taps != MASK_TAPS[mask]:
             found.append(f"{at}: taps {taps} does not fit mask {mask!r}; expected {MASK_TAPS[mask]} or 1")
+        if taps == "adaptive" and is_number(merged.get("falloff", 0.5)) and merged.get("falloff", 0.5) < 0.5:
+            found.append(f"{at}: taps 'adaptive' needs falloff >= 0.5")
         if split and mask in ("noise", "noise3"):
             found.append(f"{at}: split_coordinates does not work with mask {mask!r}")
         if split and projection == "triplanar":
@@ -161,8 +164,8 @@ def slot_problems(doc, slots):
         height = slot.get("height_blend")
         if not isinstance(height, dict):
             continue
-        if is_number(taps) and taps == 1:
-            found.append(f"/slots/{i}/height_blend: height_blend cannot be combined with taps 1")
+        if (is_number(taps) and taps == 1) or taps == "adaptive":
+            found.append(f"/slots/{i}/height_blend: height_blend cannot be combined with taps {taps}")
         name = height.get("slot")
         if isinstance(name, str):
             if name not in kinds:

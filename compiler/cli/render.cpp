@@ -238,7 +238,7 @@ int renderCommand(const std::vector<std::string>& args) {
 // without height blending; the parser's rules).
 Material withBlend(Material material, Blend blend) {
     for (Slot& s : material.slots)
-        if (s.hex.enabled && s.kind != SlotKind::Normal && s.hex.taps != 1 && !s.heightBlend) s.hex.blend = blend;
+        if (s.hex.enabled && s.kind != SlotKind::Normal && s.hex.taps != 1 && !s.hex.adaptive() && !s.heightBlend) s.hex.blend = blend;
     return material;
 }
 

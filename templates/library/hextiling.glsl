@@ -308,14 +308,22 @@ vec3 hexcPowInt(vec3 x, int n) {
     return r;
 }
 
-// Listing 8 / Eq. 5: Perlin's gain with k = log(1 - r) / log(1/2), then renormalised. kInt > 0: k is that
-// whole number (r = 1 - 2^-k, e.g. the paper's 0.75 gives k = 2), a literal chosen by hexc.
-vec3 hexcGain3(vec3 x, float r, int kInt) {
-    float k = kInt > 0 ? float(kInt) : log(1.0 - r) / log(0.5);
+// Listing 8 / Eq. 5: Perlin's gain g with k = log(1 - r) / log(1/2). kInt > 0: k is that whole number
+// (r = 1 - 2^-k, e.g. the paper's 0.75 gives k = 2), a literal chosen by hexc.
+float hexcGainK(float r, int kInt) {
+    return kInt > 0 ? float(kInt) : log(1.0 - r) / log(0.5);
+}
+
+vec3 hexcGainCurve(vec3 x, float r, int kInt) {
     vec3 s = 2.0 * step(0.5, x);
     vec3 m = 2.0 * (1.0 - s);
     vec3 base = max(vec3(0.0), s + x * m);
-    vec3 res = 0.5 * s + 0.25 * m * (kInt > 0 ? hexcPowInt(base, kInt) : pow(base, vec3(k)));
+    return 0.5 * s + 0.25 * m * (kInt > 0 ? hexcPowInt(base, kInt) : pow(base, vec3(hexcGainK(r, kInt))));
+}
+
+// The gain, then renormalised.
+vec3 hexcGain3(vec3 x, float r, int kInt) {
+    vec3 res = hexcGainCurve(x, r, kInt);
     return res / (res.x + res.y + res.z);
 }
 
@@ -333,13 +341,15 @@ struct HexcBlend {
     int gainInt;                 // literal: > 0, the gain's k is this whole number
     int taps;                    // literal: 3, or 2 for the checker mask (no third fetch)
     bool sharedLod;              // literal: lod "shared", every fetch at the slot's level of detail (hexcTileLods)
+    bool adaptive;               // literal: "taps": "adaptive", fetch a tap only when it can matter (hexcAdaptiveTaps)
+    float adaptiveError;         // literal: the bound it keeps, epsilon below
     bool height;                 // literal: blend by the heights in channel heightLuma of the height texture
     vec4 heightLuma;
     float heightWidth;
 };
 
 HexcBlend hexcBlend() {
-    return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, vec4(0.0), 1.0);
+    return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, 1.0 / 255.0, false, vec4(0.0), 1.0);
 }
 
 // Two guards keep the weights finite, non-negative and normalised outside the paper's domain, and change
@@ -352,6 +362,50 @@ vec3 hexcBlendWeights(vec3 w, vec3 Dw, HexcBlend b) {
     W = sum > 0.0 ? W / sum : wg / (wg.x + wg.y + wg.z);
     if (b.gain && (b.gainInt > 0 || b.falloff != 0.5)) W = hexcGain3(W, b.falloff, b.gainInt);
     return W;
+}
+
+// Adaptive taps ("taps": "adaptive", docs/material-format.md#taps): which taps to fetch, decided from the lattice
+// weights alone, before any sample, so that the result moves by at most e = b.adaptiveError against all three.
+// With wg = w^gamma, the metric D_i in [1 - beta, 1] (luminance or channel in [0, 1]; a normal's slope sine always),
+// W = D wg / sum(D wg), and the final weights G = g(W) / sum(g(W)) (g the gain, monotone):
+//   W_i <= U_i = wg_i / (wg_i + (1 - beta) sum_{j != i} wg_j)     (D_i = 1, the others 1 - beta)
+//   W_i >= L_i = (1 - beta) wg_i / ((1 - beta) wg_i + sum_{j != i} wg_j)
+//   G_i <= Gup_i = g(U_i) / (g(U_i) + sum_{j != i} g(L_j))       (G_i rises with W_i, falls with the others)
+// A skipped tap gets wg_i = 0: the rest of the blend renormalises itself. The result moves by sum_j |G_j - G'_j| / 2
+// (the total variation TV) times the spread of the taps' values (<= 1 for values in [0, 1]). Two taps skipped:
+// G' = (1, 0, 0), TV = G_a + G_b <= Gup_a + Gup_b. One skipped (i): TV <= G_i + the gain's change on the two kept,
+// whose pre-gain weights grow by 1 / (1 - W_i): each g(cW) / g(W) lies in [1, c^k] (g's elasticity x g'(x) / g(x) is
+// in [0, k] for k >= 1, which the parser requires), so the kept pair's log-odds move by at most k ln c, their share
+// by at most a quarter of that (the logistic's slope): TV <= Gup_i + k/4 ln(1 / (1 - U_i)). Without the gain, g(x) = x
+// and k = 0.
+// The heaviest tap (largest w) is always fetched; the other two together when Gup_a + Gup_b < e, else the one
+// with the smaller bound when that is < e.
+bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b) {
+    vec3 wg = b.exponentInt > 0 ? hexcPowInt(w, b.exponentInt) : pow(w, vec3(b.exponent));
+    float lo = 1.0 - (b.metric ? b.falloffContrast : 0.0);
+    vec3 others = vec3(wg.x + wg.y + wg.z) - wg;
+    vec3 U = wg / max(wg + lo * others, vec3(1e-30));
+    vec3 L = lo * wg / max(lo * wg + others, vec3(1e-30));
+    vec3 gU = U, gL = L;
+    float k = 0.0;
+    if (b.gain && (b.gainInt > 0 || b.falloff != 0.5)) {
+        gU = hexcGainCurve(U, b.falloff, b.gainInt);
+        gL = hexcGainCurve(L, b.falloff, b.gainInt);
+        k = hexcGainK(b.falloff, b.gainInt);
+    }
+    vec3 Gup = gU / max(gU + vec3(gL.x + gL.y + gL.z) - gL, vec3(1e-30));
+    // U_i = 1 only for a tap whose weight cannot be bounded: never skipped, so its term may be infinite.
+    vec3 B = Gup - 0.25 * k * log(max(vec3(1.0) - U, vec3(1e-30)));
+    int d = w.x >= w.y && w.x >= w.z ? 0 : (w.y >= w.z ? 1 : 2);
+    int a = d == 0 ? 1 : 0, c = d == 2 ? 1 : 2;
+    bvec3 f = bvec3(true);
+    if (Gup[a] + Gup[c] < b.adaptiveError) {
+        f[a] = false;
+        f[c] = false;
+    } else if (min(B[a], B[c]) < b.adaptiveError) {
+        f[B[a] <= B[c] ? a : c] = false;
+    }
+    return f;
 }
 
 // Height blending (docs/material-format.md#height-blending): weights W reshaped by the tiles' heights h, so the
@@ -397,13 +451,18 @@ vec4 hexcChannel(int c) {
 
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
 // a unit vector picking the channel for scalar maps. `heightTex`: the height slot's texture (b.height).
+// Adaptive taps branch around each fetch, as a GPU needs to skip one: the gradients (textureGrad) or the level
+// (textureLod, lod "shared") are explicit, so a fetch in non-uniform control flow is defined. Without adaptive taps, the
+// branches are literals the optimiser folds.
 vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma, texture2D heightTex, out vec3 weights) {
+    bvec3 f = b.adaptive ? hexcAdaptiveTaps(t.w, b) : bvec3(true, true, b.taps > 2);
     vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
-    vec4 c1 = hexcFetch(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod);
-    vec4 c2 = hexcFetch(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod);
-    vec4 c3 = b.taps > 2 ? hexcFetch(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod) : vec4(0.0);
+    vec4 c1 = vec4(0.0), c2 = vec4(0.0), c3 = vec4(0.0);
+    if (f.x) c1 = hexcFetch(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod);
+    if (f.y) c2 = hexcFetch(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod);
+    if (f.z) c3 = hexcFetch(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod);
     vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
-    vec3 W = hexcBlendWeights(t.w, Dw, b);
+    vec3 W = hexcBlendWeights(t.w * vec3(f), Dw, b);  // a skipped tap weighs 0, the others renormalise
     if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
     return W.x * c1 + W.y * c2 + W.z * c3;
@@ -456,14 +515,15 @@ vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, flo
 // Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, texture2D heightTex, out vec3 weights) {
-    // A tile scaled by s shows H(p / s), whose slope is the sampled one over s.
+    // A tile scaled by s shows H(p / s), whose slope is the sampled one over s. Adaptive taps: as in hexcColor.
+    bvec3 f = b.adaptive ? hexcAdaptiveTaps(t.w, b) : bvec3(true, true, b.taps > 2);
     vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
-    vec2 d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod, flipY), t.rot1) * t.invScale.x;
-    vec2 d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod, flipY), t.rot2) * t.invScale.y;
-    vec2 d3 = b.taps > 2 ? hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod, flipY), t.rot3) * t.invScale.z
-                         : vec2(0.0);
+    vec2 d1 = vec2(0.0), d2 = vec2(0.0), d3 = vec2(0.0);
+    if (f.x) d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod, flipY), t.rot1) * t.invScale.x;
+    if (f.y) d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod, flipY), t.rot2) * t.invScale.y;
+    if (f.z) d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod, flipY), t.rot3) * t.invScale.z;
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-    vec3 W = hexcBlendWeights(t.w, sqrt(D / (1.0 + D)), b);
+    vec3 W = hexcBlendWeights(t.w * vec3(f), sqrt(D / (1.0 + D)), b);
     if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
     return W.x * d1 + W.y * d2 + W.z * d3;

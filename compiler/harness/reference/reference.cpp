@@ -354,6 +354,43 @@ std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, con
     return w;
 }
 
+std::array<bool, 3> adaptiveTaps(const std::array<double, 3>& barycentric, const HexTiling& hex) {
+    const double e = HexTiling::kAdaptiveError, beta = hex.falloffcontrast;
+    const bool gained = hex.falloff != 0.5;
+    const auto g = [&](double x) { return gained ? gain(x, hex.falloff) : x; };
+    std::array<double, 3> p;
+    for (size_t i = 0; i < 3; ++i) p[i] = std::pow(barycentric[i], hex.exponent);
+    // Tap i's weight before the gain is W_i = delta_i p_i / sum_j delta_j p_j with each delta in [1 - beta, 1] (Eq. 3-4
+    // for a metric in [0, 1]): largest with delta_i = 1 and the others 1 - beta, smallest the other way round.
+    std::array<double, 3> most, least;
+    for (size_t i = 0; i < 3; ++i) {
+        const double rest = p[0] + p[1] + p[2] - p[i];
+        most[i] = p[i] > 0 ? p[i] / (p[i] + (1 - beta) * rest) : 0;
+        least[i] = p[i] > 0 ? (1 - beta) * p[i] / ((1 - beta) * p[i] + rest) : 0;
+    }
+    // After the gain and its renormalisation: the gained weight of the largest W_i over the gained ones of the others'
+    // smallest.
+    std::array<double, 3> finalMost, cost;
+    for (size_t i = 0; i < 3; ++i) {
+        double others = 0;
+        for (size_t j = 0; j < 3; ++j)
+            if (j != i) others += g(least[j]);
+        finalMost[i] = most[i] > 0 ? g(most[i]) / (g(most[i]) + others) : 0;
+        // Skipped alone, the two kept taps' weights grow by 1 / (1 - W_i) before the gain: their shares move by at most
+        // k/4 ln(1 / (1 - W_i)) (docs/material-format.md#taps).
+        const double k = gained ? std::log(1 - hex.falloff) / std::log(0.5) : 0;
+        cost[i] = most[i] < 1 ? finalMost[i] + k / 4 * std::log(1 / (1 - most[i])) : INFINITY;
+    }
+    const size_t top = size_t(std::max_element(barycentric.begin(), barycentric.end()) - barycentric.begin());
+    const size_t a = top == 0 ? 1 : 0, b = top == 2 ? 1 : 2;
+    std::array<bool, 3> fetched{true, true, true};
+    if (finalMost[a] + finalMost[b] < e)
+        fetched[a] = fetched[b] = false;
+    else if (std::min(cost[a], cost[b]) < e)
+        fetched[cost[a] <= cost[b] ? a : b] = false;
+    return fetched;
+}
+
 // The histogram blend's way back (reference.h, evaluateAt): G of each channel, the level of detail, the table.
 Rgba inverseTransform(const SampledTexture& lut, const Rgba& G, double lod, bool scalar) {
     const double width = lut.width(0), rows = lut.height(0);
@@ -424,7 +461,12 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
     if (histogram && !lut)
         throw std::invalid_argument("reference: slot " + slot.name + " blends histograms but no look-up table was given");
 
-    const Taps taps = maskTaps(st, hex);
+    Taps taps = maskTaps(st, hex);
+    std::array<bool, 3> fetched{true, true, true};
+    if (hex.adaptive()) {
+        fetched = adaptiveTaps(taps.weight, hex);
+        for (size_t i = 0; i < 3; ++i) taps.weight[i] *= fetched[i];  // the blend of the fetched taps alone
+    }
     // Listing 7's colours for the hex mask; the other masks show their weights in their own order.
     const auto shown = [&](const std::array<double, 3>& w) { return hex.mask == Mask::Hex ? hexColours(w, taps.id) : w; };
     std::array<Fetch, 3> fetch;
@@ -442,7 +484,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
         f.dy = rot.toTile(dy);
         for (Vec2* g : {&f.dx, &f.dy}) *g = {(*g)[0] / tile.scale, (*g)[1] / tile.scale};
         f.scale = tile.scale;
-        const Rgba x = fetchTile(texture, f, hex, dx, dy);
+        const Rgba x = fetched[i] ? fetchTile(texture, f, hex, dx, dy) : Rgba{};
 
         double metric;
         if (normal) {

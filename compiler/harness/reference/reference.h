@@ -108,6 +108,11 @@ double gain(double x, double r);
 // barycentric weights and the metric delta(x_i) of their samples. hex supplies exponent (gamma) and falloff (r).
 std::array<double, 3> blendWeights(const std::array<double, 3>& barycentric, const std::array<double, 3>& delta, const HexTiling& hex);
 
+// `"taps": "adaptive"` (docs/material-format.md#taps): which of the three taps are fetched, from the mask's weights
+// alone: the heaviest always; the other two when a bound on what skipping them moves the result, known before sampling,
+// reaches hex.kAdaptiveError (for values in [0, 1]). A tap not fetched counts with weight 0 in the blend.
+std::array<bool, 3> adaptiveTaps(const std::array<double, 3>& barycentric, const HexTiling& hex);
+
 struct SlotResult {
     Rgba value;                     // colour/scalar slots: blended RGBA; normal slots: (dH/ds, dH/dt, 0, 1), or with the
                                     // triplanar projection the world-space surface gradient (x, y, z, 1)

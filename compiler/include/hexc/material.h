@@ -41,8 +41,8 @@ struct HexTiling {
     double exponent = 7.0;               // gamma, exponent on the barycentric weights (Eq. 1)
     HashMode mode = HashMode::Stable;
     Mask mask = Mask::Hex;
-    int maskScale = 2;             // checker and noise masks: cells per unit of st
-    int taps = 0;                  // 0: every tap of the mask, blended; 1: one dithered fetch
+    int maskScale = 2;  // checker and noise masks: cells per unit of st
+    int taps = 0;       // 0: every tap of the mask, blended; 1: one dithered fetch; kAdaptiveTaps: each tap fetched when it can matter
     Blend blend = Blend::Falloff;  // normal slots always blend derivatives (Falloff)
     Lod lod = Lod::Gradients;
     Projection projection = Projection::Uv;  // material-wide
@@ -56,7 +56,12 @@ struct HexTiling {
     std::array<double, 2> scaleRange{1, 1};          // texture scale drawn per tile
     double offset = 1.0;                             // amount of the random offset
     std::array<int, 2> offsetSteps{0, 0};            // > 0: offsets snapped to a grid of that many cells
+    // `"taps": "adaptive"` (docs/material-format.md#taps): a tap is skipped when a bound on its weight, known before
+    // sampling, shows it cannot move the result by more than kAdaptiveError.
+    static constexpr int kAdaptiveTaps = -1;
+    static constexpr double kAdaptiveError = 1.0 / 255;
     int maskTaps() const { return mask == Mask::Checker ? 2 : 3; }
+    bool adaptive() const { return taps == kAdaptiveTaps; }
     bool hasTransforms() const {
         return rotationRange != std::array<double, 2>{-180, 180} || rotationSteps != 0 || scaleRange != std::array<double, 2>{1, 1} ||
                offset != 1.0 || offsetSteps != std::array<int, 2>{0, 0};

@@ -38,7 +38,7 @@ nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
           {"mode", toString(h.mode)},
           {"split_coordinates", h.splitCoordinates},
           {"mask", toString(h.mask)},
-          {"taps", h.taps == 1 ? 1 : h.maskTaps()},
+          {"taps", h.adaptive() ? nlohmann::json("adaptive") : nlohmann::json(h.taps == 1 ? 1 : h.maskTaps())},
           {"projection", toString(h.projection)}}},
     };
     if (h.mask != Mask::Hex) slot["hextiling"]["maskscale"] = h.maskScale;

@@ -123,6 +123,10 @@ public:
             {"sharedLod", literal(sp.sharedLod)},
             {"height", literal(sp.heightMap.has_value())},
         };
+        if (sp.adaptive) {
+            fields.emplace_back("adaptive", literal(true));
+            fields.emplace_back("adaptiveError", literal(HexTiling::kAdaptiveError));
+        }
         if (sp.heightMap) fields.emplace_back("heightLuma", "hexcChannel(" + literal(plan_.slots[*sp.heightMap].slot->channel) + ")");
         addParam(fields, "falloff", sp.falloff);
         addParam(fields, "falloffContrast", sp.falloffContrast);

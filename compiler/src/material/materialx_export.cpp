@@ -235,7 +235,7 @@ void Writer::hexcAttributes(xml_node node, const Slot& s) {
         if (h.offsetSteps != d.offsetSteps) put("offsetsteps", numbers({double(h.offsetSteps[0]), double(h.offsetSteps[1])}));
         if (h.mask != d.mask) put("mask", std::string(toString(h.mask)));
         if (h.maskScale != d.maskScale) put("maskscale", std::to_string(h.maskScale));
-        if (h.taps != d.taps) put("taps", std::to_string(h.taps));
+        if (h.taps != d.taps) put("taps", h.adaptive() ? "adaptive" : std::to_string(h.taps));
         if (h.blend != d.blend) put("blend", std::string(toString(h.blend)));
         if (h.lod != d.lod) put("lod", std::string(toString(h.lod)));
         if (s.kind == SlotKind::Normal && h.falloffcontrast != d.falloffcontrast) put("falloffcontrast", number(h.falloffcontrast));

@@ -53,6 +53,7 @@ const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
 const std::vector<std::string> kProjections = {"uv", "triplanar"};
 const std::vector<std::string> kBlends = {"falloff", "histogram"};
 const std::vector<std::string> kLods = {"gradients", "shared"};
+const std::vector<std::string> kTaps = {"adaptive"};  // besides a count
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
 constexpr size_t kMaxSlots = 16;
 
@@ -397,7 +398,7 @@ private:
         if (v.contains("maskscale"))
             hex.maskScale = int(whole(v["maskscale"], pointer + "/maskscale",
                                       {1, 64, false, false, "in 1..64 (mask cells per texture repeat)"}, hex.maskScale));
-        if (v.contains("taps")) hex.taps = int(whole(v["taps"], pointer + "/taps", {1, 3, false, false, "in 1..3"}, hex.taps));
+        if (v.contains("taps")) taps(v["taps"], pointer + "/taps", hex);
         if (v.contains("blend")) {
             if (int i = choice(v["blend"], pointer + "/blend", kBlends); i >= 0) hex.blend = Blend(i);
         }
@@ -406,6 +407,15 @@ private:
         }
         transformSettings(v, pointer, hex);
         projectionSettings(v, pointer, hex, materialLevel);
+    }
+
+    // `taps`: a count, or "adaptive".
+    void taps(const json& t, const std::string& p, HexTiling& hex) {
+        if (t.is_string()) {
+            if (choice(t, p, kTaps) >= 0) hex.taps = HexTiling::kAdaptiveTaps;
+            return;
+        }
+        hex.taps = int(whole(t, p, {1, 3, false, false, "in 1..3 or \"adaptive\""}, hex.taps));
     }
 
     // `tiling`: one number for both axes or [u, v].
@@ -578,6 +588,10 @@ private:
             report(
                 Code::ConflictingSettings, pointer + (own ? "/hextiling/blend" : ""),
                 "`blend` \"histogram\" blends every tile's sample; it cannot be combined with `taps` 1 (one fetch has nothing to blend)");
+        else if (s.hex.enabled && s.kind != SlotKind::Normal && s.hex.adaptive())
+            report(Code::ConflictingSettings, pointer + (own ? "/hextiling/blend" : ""),
+                   "`blend` \"histogram\" cannot be combined with `taps` \"adaptive\": its look-up table can magnify a skipped tap's "
+                   "weight beyond the bound adaptive taps guarantee");
         if (s.kind == SlotKind::Normal || !s.hex.enabled) s.hex.blend = Blend::Falloff;
     }
 
@@ -599,6 +613,11 @@ private:
             report(Code::ConflictingSettings, at,
                    "`taps` " + std::to_string(hex.taps) + " does not fit mask `" + std::string(toString(hex.mask)) + "`, which has " +
                        std::to_string(hex.maskTaps()) + " taps; expected " + std::to_string(hex.maskTaps()) + " or 1 (one dithered fetch)");
+        // The bound on the gain's effect (docs/material-format.md#taps) needs its exponent k >= 1.
+        if (hex.enabled && hex.adaptive() && hex.falloff < 0.5)
+            report(Code::ConflictingSettings, at,
+                   "`taps` \"adaptive\" needs `falloff` >= 0.5: below, the gain's renormalisation can move the result by more than a "
+                   "skipped tap's weight, and no threshold bounds it");
         if (hex.splitCoordinates && (hex.mask == Mask::Noise || hex.mask == Mask::Noise3))
             report(Code::ConflictingSettings, at,
                    "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
@@ -637,9 +656,11 @@ private:
         HeightBlend h;
         if (requireKey(v, pointer, "slot", "the name of a scalar slot holding heights")) h.slot = string(v["slot"], pointer + "/slot");
         if (v.contains("width")) h.width = number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, h.width);
-        if (s.hex.taps == 1)
-            report(Code::ConflictingSettings, pointer, "`height_blend` needs every tile's height; it cannot be combined with `taps` 1", {},
-                   true);
+        if (s.hex.taps == 1 || s.hex.adaptive())
+            report(Code::ConflictingSettings, pointer,
+                   std::string("`height_blend` needs every tile's height; it cannot be combined with `taps` ") +
+                       (s.hex.adaptive() ? "\"adaptive\" (a tile's height can raise any weight)" : "1"),
+                   {}, true);
         if (!s.hex.enabled)
             report(Code::ConflictingSettings, pointer,
                    "`height_blend` weighs tiles, and this slot has hex-tiling disabled (`enabled`: false)", {}, true);

@@ -100,6 +100,7 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     sp.explicitGradients = triplanar;
     sp.taps = h.maskTaps();
     sp.sharedLod = h.lod == Lod::Shared;
+    sp.adaptive = h.enabled && h.adaptive();
     // One tap needs no falloff metric: it has a single sample to weigh.
     // The histogram blend weighs tiles by the lattice alone: a metric would break the variance its weights keep.
     sp.metric = h.taps != 1 && !sp.histogram && (all || h.falloffcontrast != 0);

@@ -72,6 +72,7 @@ struct SlotPlan {
     int exponentInt = 0;              // > 0: the exponent is this whole number, multiplied out (no pow, no uniform)
     int gainInt = 0;                  // > 0: the gain's k = log2(1 / (1 - falloff)) is this whole number, likewise
     int taps = 3;                     // fetches per sample: 3, or 2 for the checker mask
+    bool adaptive = false;            // "taps": "adaptive": each fetch behind a branch on its weight bound
     bool explicitGradients = false;   // plain sampling with the given gradients (triplanar planes: non-uniform flow)
     std::optional<size_t> heightMap;  // index into ShaderPlan::slots of the slot it height-blends by
     bool heightOnly = false;          // only the texture is used, as another slot's height map (no function, no lattice)
