@@ -6,11 +6,13 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include "hexc/compiler.h"
 #include "hexc/image.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
+#include "support.h"
 
 using namespace hexc;
 
@@ -192,4 +194,33 @@ TEST(Packing, ThePackedSlotsFetchOnce) {
     ASSERT_TRUE(on.ok() && off.ok());
     EXPECT_EQ(samples(off.spirv), 9);
     EXPECT_EQ(samples(on.spirv), 6);
+}
+
+// The command line writes the packed texture beside the shaders and names it in the depfile as an output; a texture
+// whose pixels change makes the material out of date (its texels are in the packed texture).
+TEST(Packing, TheCommandLineWritesAndDeclaresThePackedTexture) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "hexc_packing_cli";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "textures");
+    for (const char* t : {"rock_albedo.png", "rock_roughness.png"}) fs::copy_file(fs::path("materials/textures") / t, dir / "textures" / t);
+    std::ofstream(dir / "m.json") << R"({"name": "m", "pack": true, "slots": [)" << kAlbedo << "," << kRoughness << "]}";
+    const std::string args =
+        (dir / "m.json").string() + " -o " + (dir / "out").string() + " --no-cache --depfile " + (dir / "m.d").string();
+    ASSERT_EQ(hexc::test::runHexc(args), 0);
+    ASSERT_TRUE(fs::exists(dir / "out" / "m.albedo.packed.png"));
+    std::ifstream depfile(dir / "m.d");
+    const std::string deps(std::istreambuf_iterator<char>(depfile), {});
+    EXPECT_LT(deps.find("m.albedo.packed.png"), deps.find(':')) << deps;
+    const auto before = fs::last_write_time(dir / "out" / "m.albedo.packed.png");
+    // New roughness pixels, same size: the packed texture is written again.
+    Texture r = loadTexture(dir / "textures" / "rock_roughness.png", false);
+    Image flipped{r.width, r.height, std::vector<float>(r.rgba8.rbegin(), r.rgba8.rend())};
+    for (float& v : flipped.rgba) v /= 255.0f;
+    writeImage(flipped, dir / "textures" / "rock_roughness.png");
+    ASSERT_EQ(hexc::test::runHexc(args), 0);
+    const Texture packed = loadTexture(dir / "out" / "m.albedo.packed.png", false);
+    const Texture now = loadTexture(dir / "textures" / "rock_roughness.png", false);
+    EXPECT_EQ(packed.rgba8[3], now.rgba8[0]);
+    EXPECT_NE(fs::last_write_time(dir / "out" / "m.albedo.packed.png"), before);
 }
