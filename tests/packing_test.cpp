@@ -184,16 +184,19 @@ TEST(Packing, TheManifestListsThePackedTextureAndWhatEachSlotReads) {
 }
 
 // The packed slots share one set of fetches: 3 per tap set instead of 3 per slot.
+// With lod "shared" too, whose level the slots compute from the same texture's size.
 TEST(Packing, ThePackedSlotsFetchOnce) {
-    Material m = packed(kAlbedo + "," + kNormal + "," + kRoughness);
-    CompileOptions spirv;
-    spirv.targets = {Target::Spirv};
-    const CompileResult on = compile(m, spirv);
-    m.pack = false;
-    const CompileResult off = compile(m, spirv);
-    ASSERT_TRUE(on.ok() && off.ok());
-    EXPECT_EQ(samples(off.spirv), 9);
-    EXPECT_EQ(samples(on.spirv), 6);
+    for (const char* hex : {R"({"tiling": 4})", R"({"tiling": 4, "lod": "shared"})"}) {
+        Material m = packed(kAlbedo + "," + kNormal + "," + kRoughness, "lit", hex);
+        CompileOptions spirv;
+        spirv.targets = {Target::Spirv};
+        const CompileResult on = compile(m, spirv);
+        m.pack = false;
+        const CompileResult off = compile(m, spirv);
+        ASSERT_TRUE(on.ok() && off.ok());
+        EXPECT_EQ(samples(off.spirv), 9) << hex;
+        EXPECT_EQ(samples(on.spirv), 6) << hex;
+    }
 }
 
 // The command line writes the packed texture beside the shaders and names it in the depfile as an output; a texture

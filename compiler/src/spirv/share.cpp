@@ -10,8 +10,8 @@ namespace {
 
 using spirv::Instruction;
 
-constexpr uint16_t kOpFunction = 54, kOpFunctionEnd = 56, kOpSampledImage = 86, kOpImageSampleExplicitLod = 88, kOpLabel = 248,
-                   kOpBranch = 249, kOpBranchConditional = 250, kOpSwitch = 251;
+constexpr uint16_t kOpFunction = 54, kOpFunctionEnd = 56, kOpSampledImage = 86, kOpImageSampleExplicitLod = 88, kOpImage = 100,
+                   kOpImageQuerySizeLod = 103, kOpLabel = 248, kOpBranch = 249, kOpBranchConditional = 250, kOpSwitch = 251;
 
 bool derivative(uint16_t op) { return op >= 207 && op <= 215 && op != 209 && op != 212 && op != 215; }  // not the fwidths
 
@@ -64,6 +64,7 @@ void shareInFunction(std::vector<Instruction>& code, size_t begin, size_t end, s
                      std::vector<bool>& dropped) {
     const Cfg cfg = cfgOf(code, begin, end);
     std::map<uint32_t, std::vector<uint32_t>> sampledImage;                            // OpSampledImage result -> (image, sampler)
+    std::map<uint32_t, uint32_t> imageOf;                                              // OpImage result -> the image
     std::map<std::vector<uint32_t>, std::vector<std::pair<uint32_t, uint32_t>>> seen;  // key -> (block, result)
     uint32_t block = 0;
     for (size_t k = begin; k < end; ++k) {
@@ -73,7 +74,9 @@ void shareInFunction(std::vector<Instruction>& code, size_t begin, size_t end, s
         const uint16_t op = i.opcode();
         if (op == kOpLabel) block = i.words[1];
         if (op == kOpSampledImage) sampledImage[i.words[2]] = {i.words[3], i.words[4]};
-        if (op != kOpImageSampleExplicitLod && !derivative(op)) continue;
+        // textureSize (lod "shared") reads the image of a sampled image: the image it is.
+        if (op == kOpImage && sampledImage.count(i.words[3])) imageOf[i.words[2]] = sampledImage.at(i.words[3]).front();
+        if (op != kOpImageSampleExplicitLod && op != kOpImageQuerySizeLod && !derivative(op)) continue;
         std::vector<uint32_t> key = i.words;
         key[2] = 0;  // the result id
         if (op == kOpImageSampleExplicitLod) {
@@ -81,6 +84,7 @@ void shareInFunction(std::vector<Instruction>& code, size_t begin, size_t end, s
             key[3] = 0;
             key.insert(key.end(), pair.begin(), pair.end());
         }
+        if (op == kOpImageQuerySizeLod && imageOf.count(i.words[3])) key[3] = imageOf.at(i.words[3]);
         auto& earlier = seen[key];
         bool merged = false;
         for (const auto& [b, result] : earlier)
