@@ -897,6 +897,106 @@ INSTANTIATE_TEST_SUITE_P(Exec, AdaptiveTaps, testing::Combine(testing::ValuesIn(
     return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
 });
 
+// ---- Packed textures ---------------------------------------------------------------------------------------
+// "pack": true (docs/material-format.md#pack) under tests/templates/packed.glsl, which reads every slot and shows
+// them in one image: `color`'s RGB and `s3` in alpha, or scalars s0..s3 in R..A. The packed texture holds each slot's
+// texels byte for byte, so every slot is held to its unpacked tolerance against its own fp64 reference, which samples
+// the slot's own texture: an sRGB colour slot's sample error for RGB, the linear one for a scalar in the sRGB texture's
+// alpha (alpha stays linear), each slot blended with its own settings from the shared samples.
+struct PackedCase {
+    const char* name;
+    const char* slots;  // slot JSON objects; null: a colour slot and a scalar one on an odd-sized crop (packedOddCrop)
+    bool minified;
+    const char* hextiling = R"({"tiling": 4})";
+};
+void PrintTo(const PackedCase& c, std::ostream* os) { *os << c.name; }
+
+const char* const kPackedAlbedoRoughness =
+    R"({"name": "color", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloff": 0.75}},
+       {"name": "s3", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"falloff": 0.75}})";
+// Four scalars with blends of their own: each slot's weights come from its own channel of the shared samples.
+const char* const kPackedScalars =
+    R"({"name": "s0", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"falloff": 0.75}},
+       {"name": "s1", "kind": "scalar", "texture": "textures/rock_height.png", "hextiling": {"falloffcontrast": 0.3}},
+       {"name": "s2", "kind": "scalar", "channel": "g", "texture": "textures/rock_albedo.png", "hextiling": {"exponent": 3}},
+       {"name": "s3", "kind": "scalar", "channel": "b", "texture": "textures/rock_albedo.png", "hextiling": {"falloff": 0.9}})";
+
+std::string packedOddCrop() {
+    const std::string crop = cropOfRock(127, 80).string();
+    return R"({"name": "color", "kind": "color", "colorspace": "linear", "texture": ")" + crop + R"("},
+              {"name": "s3", "kind": "scalar", "channel": "g", "texture": ")" +
+           crop + R"("})";
+}
+
+// Each slot's output channels against its reference, each pixel within the slot's tolerance (pixelTolerance).
+Check checkPacked(const Material& m, const View& view, int level, const Draw& draw) {
+    const Image gpu = draw(m, vk::RenderOutput::Shaded, view);
+    Check check;
+    Image cpu = gpu;
+    for (const Slot& slot : m.slots) {
+        const bool colour = slot.kind == SlotKind::Color;
+        const size_t first = colour ? 0 : size_t(slot.name[1] - '0'), count = colour ? 3 : 1;
+        const double es = sampleError(level, slot.colorSpace == ColorSpace::Srgb);
+        const std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view);
+        for (size_t p = 0; p < ref.size(); ++p) {
+            const double t = pixelTolerance(ref[p], es, es, slot.hex, int(count));
+            check.maxTolerance = std::max(check.maxTolerance, t);
+            for (size_t c = 0; c < count; ++c) {
+                const double want = ref[p].value[colour ? c : size_t(slot.channel)];
+                cpu.rgba[p * 4 + first + c] = float(want);
+                double e = std::fabs(double(gpu.rgba[p * 4 + first + c]) - want);
+                if (!(e == e)) e = INFINITY;
+                if (e > check.errors.max) check.toleranceAtMax = t;
+                check.errors.max = std::max(check.errors.max, e);
+                check.worstRatio = std::max(check.worstRatio, e / t);
+            }
+        }
+    }
+    check.errors = compare(gpu, cpu, 4);
+    return check;
+}
+
+class PackedPath : public testing::TestWithParam<std::tuple<PackedCase, vk::ExecutedTarget>> {};
+
+TEST_P(PackedPath, EverySlotMatchesItsReference) {
+    REQUIRE_VULKAN();
+    const auto& [c, target] = GetParam();
+    ParseResult r = parseMaterial(R"({"name": "packed", "template": "../tests/templates/packed.glsl", "pack": true, "hextiling": )" +
+                                      std::string(c.hextiling) + R"(, "slots": [)" + (c.slots ? c.slots : packedOddCrop()) + "]}",
+                                  "materials/packed.json");
+    ASSERT_TRUE(r.material) << formatAll(r.diagnostics);
+    const Material& m = *r.material;
+    // Packed indeed: one texture for all slots.
+    CompileOptions spirvOnly;
+    spirvOnly.targets = {Target::Spirv};
+    const CompileResult compiled = compile(m, spirvOnly);
+    ASSERT_TRUE(compiled.ok()) << formatAll(compiled.diagnostics);
+    const auto manifest = nlohmann::json::parse(std::find_if(compiled.files.begin(), compiled.files.end(), [](const OutputFile& f) {
+                                                    return f.name.ends_with(".json");
+                                                })->contents);
+    ASSERT_EQ(manifest["packed_textures"].size(), 1u);
+    EXPECT_EQ(manifest["packed_textures"][0]["slots"].size(), m.slots.size());
+    const int larger = std::max(m.slots[0].width, m.slots[0].height), levels = std::bit_width(unsigned(larger));
+    const double tiling = m.slots[0].hex.tiling[0];
+    const double uvPerPixel = (c.minified ? 4.0 : 0.75) / (tiling * larger);
+    const View view{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}};
+    Check check = checkPacked(m, view, c.minified ? std::min(2, levels - 1) : 0, on(target));
+    report(c.name, check);
+    EXPECT_LE(check.worstRatio, 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Exec, PackedPath,
+    testing::Combine(testing::Values(PackedCase{"albedo_roughness", kPackedAlbedoRoughness, false},
+                                     PackedCase{"albedo_roughness_minified", kPackedAlbedoRoughness, true},
+                                     PackedCase{"four_scalars", kPackedScalars, false},
+                                     PackedCase{"four_scalars_minified", kPackedScalars, true},
+                                     // Odd size, rotation off as in OddSizes.
+                                     PackedCase{"odd_127x80", nullptr, false, R"({"tiling": 4, "rotation": 0})"},
+                                     PackedCase{"odd_127x80_minified", nullptr, true, R"({"tiling": 4, "rotation": 0})"}),
+                     testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
+    [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+
 // ---- Weights ----------------------------------------------------------------------------------------------
 // With falloffcontrast 0 the weights depend on the lattice alone. The GPU evaluates it in float32 on a uv that
 // the rasteriser interpolated, so st and the skewed coordinates carry a few ulps of their size (|skewed| <= 4 |st|):

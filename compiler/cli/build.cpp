@@ -275,11 +275,12 @@ std::string depfileFor(const Arguments& a, const Inputs& in) {
         if (a.options.vertex)
             for (Target t : targets) outs.push_back(a.outDir / shaderFileName(j.material.name, t, "vert"));
         if (a.options.emitGenerated) outs.push_back(a.outDir / (j.material.name + ".generated.frag"));
-        // The histogram blend's textures, of the slots the template reads: what the compile wrote, or the stamp lists.
+        // The histogram blend's textures and the packed textures, of the slots the template reads: what the compile wrote, or
+        // the stamp lists.
         std::vector<std::string> written = j.upToDate ? stampedOutputs(a.outDir, j.material.name) : std::vector<std::string>{};
         for (const OutputFile& f : j.result.files) written.push_back(f.name);
         for (const std::string& f : written)
-            if (f.ends_with(".pfm")) outs.push_back(a.outDir / f);
+            if (f.ends_with(".pfm") || f.ends_with(".packed.png")) outs.push_back(a.outDir / f);
         std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
         files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
         for (const auto& f : files)

@@ -43,10 +43,11 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
         for (const std::filesystem::path& f : inputFiles(material, options))
             h.add(std::filesystem::absolute(f).lexically_normal().string());
     // Of a texture the compile reads only its size (validation has checked its channels): new pixels leave the
-    // shaders as they are. A histogram slot's derived textures are made from its pixels: its bytes count.
+    // shaders as they are. A histogram slot's derived textures are made from its pixels, and so is a packed texture
+    // (whose alpha a colour slot's opaque texels leave free): their bytes count.
     for (const Slot& s : material.slots) {
         h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height));
-        if (s.hex.blend == Blend::Histogram) addFile(h, s.texturePath);
+        if (s.hex.blend == Blend::Histogram || material.pack) addFile(h, s.texturePath);
     }
     addFile(h, material.sourceFile);
     if (std::string t = options.templateFile.empty() ? material.templateName : options.templateFile.string(); t.ends_with(".glsl"))

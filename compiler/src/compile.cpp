@@ -25,6 +25,7 @@
 #include "hexc/spirv.h"
 #include "plan/plan.h"
 #include "spirv/combined.h"
+#include "spirv/share.h"
 #include "spirv/strings.h"
 
 namespace hexc {
@@ -212,6 +213,12 @@ ShaderCode compileCode(const std::string& glsl, const ShaderPlan& plan, const Co
     SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);
     append(diagnostics, optimized.diagnostics);
     if (optimized.words.empty()) return {};
+    // A packed texture's slots fetch it once per tap (spirv/share.h); --debug keeps each slot's function and fetches.
+    for (int round = 0; round < 2 && !plan.packs.empty() && !options.debug; ++round) {
+        optimized = optimizeSpirv(shareTextureReads(optimized.words), false, false, true);
+        append(diagnostics, optimized.diagnostics);
+        if (optimized.words.empty()) return {};
+    }
     return {optimized.words, emitTargets(optimized.words, plan, options, targets)};
 }
 
@@ -336,6 +343,52 @@ void addHistogramFiles(const Material& material, const ShaderPlan& plan, const C
     }
 }
 
+// A pack's texture (docs/material-format.md#pack) as PNG bytes: each slot's 8-bit texels, as loadTexture decodes its
+// file, copied into the pack's channels; alpha 255 where no slot fills it, the other unused channels 0. Level 0 only:
+// the mip chain is the engine's to build, as for any texture.
+std::string packedPng(const Material& material, const ShaderPlan& plan, const PackPlan& p) {
+    Texture packed{p.width, p.height, p.srgb, std::vector<uint8_t>(size_t(p.width) * p.height * 4, 0), {}};
+    for (size_t k = 3; k < packed.rgba8.size(); k += 4) packed.rgba8[k] = 255;
+    for (size_t k = 0; k < p.slots.size(); ++k) {
+        const Slot& s = *plan.slots[p.slots[k]].slot;
+        Texture source;
+        try {
+            source = loadTexture(s.texturePath, false);
+        } catch (const TextureError& e) {
+            throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
+        }
+        // To: the pack's channels; from: the slot's (a colour slot's RGB, a scalar's channel).
+        const size_t to = p.channels[k] == "rgb" ? 0 : std::string("rgba").find(p.channels[k]), count = p.channels[k].size();
+        const size_t from = s.kind == SlotKind::Scalar ? size_t(s.channel) : 0;
+        for (size_t t = 0; t < packed.rgba8.size(); t += 4)
+            for (size_t c = 0; c < count; ++c) packed.rgba8[t + to + c] = source.rgba8[t + from + c];
+    }
+    return pngBytes(packed);
+}
+
+// Everything a packed texture depends on: its slots' textures' bytes and extensions (how they decode), which channels
+// go where, and hexc's build.
+std::string packedKey(const ShaderPlan& plan, const PackPlan& p) {
+    ContentHash h;
+    for (const std::string& part : {std::string("hexc packed texture 1"), std::string(version()), buildId()}) h.add(part);
+    for (size_t k = 0; k < p.slots.size(); ++k) {
+        const Slot& s = *plan.slots[p.slots[k]].slot;
+        for (const std::string& part : {readFile(s.texturePath).value_or(""), s.texturePath.extension().string(),
+                                        std::string(toString(s.kind)), std::to_string(s.channel), p.channels[k]})
+            h.add(part);
+    }
+    return h.hex();
+}
+
+// The packed textures, written beside the shaders, through CompileOptions::cache like the histogram's.
+void addPackedFiles(const Material& material, const ShaderPlan& plan, const CompileOptions& options, CompileResult& result) {
+    for (const PackPlan& p : plan.packs) {
+        auto compute = [&]() -> std::optional<std::string> { return packedPng(material, plan, p); };
+        const std::optional<std::string> bytes = options.cache ? options.cache->getOrCompute(packedKey(plan, p), compute) : compute();
+        result.files.push_back({packedFileName(material.name, plan.slots[p.slots.front()].slot->name), bytes ? *bytes : compute().value()});
+    }
+}
+
 void run(const Material& material, const CompileOptions& options, CompileResult& result) {
     ShaderPlan plan = planShader(material, options);
     append(result.diagnostics, plan.diagnostics);
@@ -370,6 +423,7 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     for (OutputFile& f : result.files)
         if (!f.name.ends_with(".spv") && !f.name.ends_with(".json")) withBanner(f.contents, top);
     addHistogramFiles(material, plan, options, result);  // images: no banner
+    addPackedFiles(material, plan, options, result);
     result.files.push_back({material.name + ".manifest.json", manifest.dump(2) + "\n"});
     std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
 }

@@ -7,7 +7,7 @@
 // filling the slot's HexcLattice and HexcBlend (templates/library/hextiling.glsl) from the plan; ${heightmap}: the
 // slot whose texture holds its heights (itself when it blends by none); ${channel}: a scalar slot's channel
 // (0 = r ... 3 = a); ${flipy}, ${explicit}: literal switches; ${type}: the slot's result type; ${kind},
-// ${projection}; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
+// ${projection}; ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
 // Each slot gets `hexc_${name}(...)` and an overload with `out vec3 weights` (the weights output).
 
 //@ params
@@ -33,6 +33,10 @@ layout(set = ${set}, binding = ${binding}) uniform sampler hexcSampler;
 
 //@ texture
 layout(set = ${set}, binding = ${binding}) uniform texture2D hexcTex_${name};
+#define HEXC_HAS_${name} 1
+
+//@ has
+// A packed slot whose texture is another slot's (docs/material-format.md#pack).
 #define HEXC_HAS_${name} 1
 
 //@ lut
@@ -84,6 +88,28 @@ ${lattice}
     HexcBlend blend = hexcBlend();
 ${blend}
     return hexcHistogram(hexcTex_${name}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, false, weights);
+}
+
+//@ color.packed
+// The packed texture ${texture} holds this slot's RGB; its alpha another slot's channel, so the slot's alpha is 1, as
+// its opaque texture's was. The fetches are those of the pack's other slots (same lattice, same texture): hexc merges
+// them into one set of taps (spirv/share.h).
+vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return vec4(hexcColor(${texture}, hexcSampler, ${tiles}, blend, hexcLuma, ${texture}, weights).rgb, 1.0);
+}
+
+//@ scalar.packed
+// The packed texture ${texture} holds this slot's value in channel ${channel}.
+float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcColor(${texture}, hexcSampler, ${tiles}, blend, hexcChannel(${channel}), ${texture}, weights)[${channel}];
 }
 
 //@ scalar.histogram

@@ -256,6 +256,13 @@ void bindTemplateInputs(const nlohmann::json& manifest, ExecutedTarget target, c
     for (const nlohmann::json& r : listed) placeTemplateResource(r, target, own, request);
 }
 
+// The packed texture `name` as the engine loads it: the PNG the compile wrote, in the colour space the manifest gives.
+Texture packedTexture(const nlohmann::json& manifest, const CompileResult& compiled, const std::string& name) {
+    for (const nlohmann::json& p : manifest["packed_textures"])
+        if (p["name"] == name) return decodeTexture(outputFile(compiled, p["file"].get<std::string>()), p["colorspace"] == "srgb");
+    throw std::logic_error("the manifest lists no packed texture " + name);
+}
+
 }  // namespace
 
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
@@ -294,12 +301,15 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     request.uniformData = packParameters(manifest, parameters);
     bindTemplateInputs(manifest, target, own, request);
     // Textures in manifest order, which is binding order; a histogram slot's Gaussian texture in its place, its look-up
-    // table after every slot's (as the manifest lists them).
+    // table after every slot's (as the manifest lists them); a packed texture, as the compile wrote it, in its first
+    // slot's place (the other slots' own textures in theirs, which the shader does not read).
     std::vector<Texture> textures, luts;
     for (const auto& s : manifest["slots"]) {
         for (const Slot& slot : m.slots) {
             if (slot.name != s["name"]) continue;
-            Texture t = loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb);
+            Texture t = s.contains("packed") && s["packed"]["texture"] == slot.name + ".packed"
+                            ? packedTexture(manifest, compiled, slot.name + ".packed")
+                            : loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb);
             if (s.contains("histogram")) {
                 HistogramTransform h = histogramTransform(t, slot);
                 t = std::move(h.gaussian);

@@ -42,6 +42,7 @@ enum class Code {
     TextureUnreadable,
     TextureChannels,
     TextureColorSpace,
+    NotPacked,
     // templates and shader code
     UnknownTemplate,
     TemplateUnreadable,

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hexc {
@@ -56,6 +57,11 @@ struct TextureError : std::runtime_error {
 // Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...) and PFM. HDR and PFM load as float.
 // Throws TextureError with the file name and stb's reason on failure.
 Texture loadTexture(const std::filesystem::path& file, bool srgb);
+
+// An 8-bit RGBA texture as PNG bytes, the same bytes for the same texels; and PNG (or any stb format's) bytes decoded as
+// loadTexture decodes a file. The latter throws TextureError when they do not decode.
+std::string pngBytes(const Texture& texture);
+Texture decodeTexture(std::string_view bytes, bool srgb);
 
 // Whether writeImage writes this file's extension (.pfm or .png, any case).
 bool isImageExtension(const std::filesystem::path& file);

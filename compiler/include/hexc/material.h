@@ -95,6 +95,8 @@ struct Material {
     std::filesystem::path sourceFile;
     HexTiling hex;            // material-level settings (slots may override)
     std::vector<Slot> slots;  // in declaration order; binding order follows it
+    // Channel packing (docs/material-format.md#pack): slots with the same lattice share one texture hexc writes.
+    bool pack = false;
 };
 
 struct ParseResult {

@@ -113,7 +113,8 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     out.target = describeTarget(spirv, plan, out.entryPoint, locate, none, placed);
     out.target["version"] = std::to_string(options.glslVersion) + (options.glslEs ? " es" : "");
     // Combined samplers keep the texture's name, so the uniform to bind is the texture's variable.
-    for (size_t i = 0; i < plan.textureCount(); ++i) out.target["textures"][plan.textureName(i)]["uniform"] = plan.textureVariable(i);
+    for (size_t i = 0; i < plan.textureCount(); ++i)
+        if (plan.textureBound(i)) out.target["textures"][plan.textureName(i)]["uniform"] = plan.textureVariable(i);
     return out;
 }
 

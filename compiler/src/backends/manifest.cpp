@@ -19,6 +19,22 @@ nlohmann::json histogramEntry(const std::string& material, const Slot& s) {
               {"binding", "texture `" + s.name + ".lut`: hexc's sampler, level 0 read only (no mip chain needed)"}}}};
 }
 
+// A packed texture (docs/material-format.md#pack): its file, colour space, size and which channels each slot reads.
+nlohmann::json packedEntry(const std::string& material, const ShaderPlan& plan, const PackPlan& p) {
+    const std::string first = plan.slots[p.slots.front()].slot->name;
+    nlohmann::json slots = nlohmann::json::object();
+    for (size_t k = 0; k < p.slots.size(); ++k) slots[plan.slots[p.slots[k]].slot->name] = p.channels[k];
+    return {{"name", first + ".packed"},
+            {"file", packedFileName(material, first)},
+            {"format", "PNG, 8-bit RGBA, mip level 0 only (build the chain as for any texture)"},
+            {"colorspace", p.srgb ? "srgb" : "linear"},
+            {"note", p.srgb ? "an sRGB format decodes RGB only: alpha stays linear" : "a linear (UNORM) format"},
+            {"size", {p.width, p.height}},
+            {"slots", slots},
+            {"binding", "texture `" + first + ".packed` in each target's textures (slot `" + first +
+                            "`'s binding; the other slots' are unused): hexc's sampler, full mip chain"}};
+}
+
 nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
@@ -60,8 +76,13 @@ nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
 }  // namespace
 
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets) {
-    nlohmann::json slots = nlohmann::json::array();
+    nlohmann::json slots = nlohmann::json::array(), packed = nlohmann::json::array();
     for (const SlotPlan& sp : plan.slots) slots.push_back(slotEntry(material.name, sp));
+    for (const PackPlan& p : plan.packs) {
+        packed.push_back(packedEntry(material.name, plan, p));
+        for (size_t k = 0; k < p.slots.size(); ++k)
+            slots[p.slots[k]]["packed"] = {{"texture", packed.back()["name"]}, {"channels", p.channels[k]}};
+    }
     nlohmann::json members = nlohmann::json::array(), constants = nlohmann::json::array(), specialised = nlohmann::json::array();
     for (const ParamMember& p : plan.specialised) specialised.push_back({{"name", p.name}, {"value", p.value[0]}, {"slots", p.slots}});
     for (const ParamMember& p : plan.params) {
@@ -78,7 +99,7 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
             members.push_back(std::move(entry));
         }
     }
-    return {
+    nlohmann::json manifest = {
         {"hexc_version", version()},
         {"material", material.name},
         {"template", plan.templateShown},
@@ -99,6 +120,9 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
         {"specialised", specialised},
         {"targets", targets},
     };
+    // Only with packing: other manifests stay as they were.
+    if (!packed.empty()) manifest["packed_textures"] = packed;
+    return manifest;
 }
 
 }  // namespace hexc

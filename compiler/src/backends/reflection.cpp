@@ -132,7 +132,8 @@ nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPl
         if (hexcBlock) t["params"] = locate(ResourceKind::Params, 0);
         t["sampler"] = locate(ResourceKind::Sampler, 0);
         nlohmann::json textures = nlohmann::json::object();
-        for (size_t i = 0; i < plan.textureCount(); ++i) textures[plan.textureName(i)] = locate(ResourceKind::Texture, uint32_t(i));
+        for (size_t i = 0; i < plan.textureCount(); ++i)
+            if (plan.textureBound(i)) textures[plan.textureName(i)] = locate(ResourceKind::Texture, uint32_t(i));
         t["textures"] = textures;
     }
     if (!placed.empty()) t["template_resources"] = placed;

@@ -71,8 +71,12 @@ public:
         if (!members.empty()) out += expand("params", {{"set", set}, {"binding", std::to_string(b.params)}, {"members", members}}) + "\n";
         out += expand("sampler", {{"set", set}, {"binding", std::to_string(b.sampler)}}) + "\n";
         // Every texture first: a slot may read another's as its height map.
-        for (const SlotPlan& sp : plan_.slots)
-            out += expand("texture", {{"name", sp.slot->name}, {"set", set}, {"binding", std::to_string(sp.binding)}}) + "\n";
+        for (size_t i = 0; i < plan_.slots.size(); ++i) {
+            const SlotPlan& sp = plan_.slots[i];
+            out += expand(plan_.textureBound(i) ? "texture" : "has",
+                          {{"name", sp.slot->name}, {"set", set}, {"binding", std::to_string(sp.binding)}}) +
+                   "\n";
+        }
         for (size_t i = 0; i < plan_.luts.size(); ++i)
             out += expand("lut", {{"name", plan_.slots[plan_.luts[i]].slot->name},
                                   {"set", set},
@@ -144,7 +148,8 @@ public:
             {"type", sp.type},
             {"explicit", literal(sp.explicitGradients)},
             {"flipy", literal(s.flipY)},
-            {"channel", literal(s.channel)},
+            {"channel", literal(sp.pack ? sp.packedChannel : s.channel)},
+            {"texture", sp.pack ? "hexcTex_" + plan_.slots[plan_.packs[*sp.pack].slots.front()].slot->name : ""},
             {"heightmap", sp.heightMap ? plan_.slots[*sp.heightMap].slot->name : s.name},  // unread without height blending
             {"tiles", expand(l.section, {})},
             {"lattice", latticeSettings(l)},

@@ -34,6 +34,7 @@ constexpr CodeInfo kCatalogue[] = {
     {Code::TextureUnreadable, "HX121", Error},
     {Code::TextureChannels, "HX122", Error},
     {Code::TextureColorSpace, "HX123", Warning},
+    {Code::NotPacked, "HX124", Warning},
     {Code::UnknownTemplate, "HX200", Error},
     {Code::TemplateUnreadable, "HX201", Error},
     {Code::TemplateNoVersion, "HX202", Error},

@@ -196,6 +196,28 @@ std::string pfmBytes(const Image& image) {
     return out;
 }
 
+std::string pngBytes(const Texture& texture) {
+    std::string out;
+    auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+    };
+    if (!stbi_write_png_to_func(append, &out, texture.width, texture.height, 4, texture.rgba8.data(), texture.width * 4))
+        throw std::runtime_error("cannot encode a PNG");
+    return out;
+}
+
+Texture decodeTexture(std::string_view bytes, bool srgb) {
+    Texture t;
+    int channelsInFile = 0;
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(
+        stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &t.width, &t.height, &channelsInFile, 4),
+        stbi_image_free);
+    if (!data) throw TextureError(std::string("cannot decode an image: ") + (stbi_failure_reason() ? stbi_failure_reason() : "unknown"));
+    t.rgba8.assign(data.get(), data.get() + size_t(t.width) * t.height * 4);
+    t.srgb = srgb;
+    return t;
+}
+
 bool isImageExtension(const std::filesystem::path& file) {
     const std::string ext = lowerExtension(file);
     return ext == ".pfm" || ext == ".png";

@@ -25,7 +25,7 @@ namespace {
 
 using nlohmann::json;
 
-const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "slots"};
+const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "pack", "slots"};
 const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling", "height_blend"};
 const std::vector<std::string> kHexKeys = {"enabled",    "tiling",     "rotation",          "falloff",       "falloffcontrast",
                                            "exponent",   "mode",       "split_coordinates", "rotationrange", "rotationsteps",
@@ -124,6 +124,7 @@ public:
         }
         if (doc.contains("$schema")) string(doc["$schema"], "/$schema");
         if (doc.contains("hextiling")) hexSettings(doc["hextiling"], "/hextiling", m.hex, true);
+        if (doc.contains("pack")) m.pack = boolean(doc["pack"], "/pack", false);
         if (requireKey(doc, "", "slots", "an array of slots")) slots(doc["slots"], "/slots", m);
         return m;
     }

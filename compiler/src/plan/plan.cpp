@@ -6,18 +6,19 @@
 #include "common/templates.h"
 #include "common/text.h"
 #include "plan/macros.h"
+#include "plan/pack.h"
 #include "plan/template_fit.h"
 
 namespace hexc {
-namespace {
 
-// Slots share a lattice when everything the lattice computes from is the same.
 bool sameLattice(const HexTiling& a, const HexTiling& b) {
     return a.enabled == b.enabled && a.mode == b.mode && a.splitCoordinates == b.splitCoordinates && a.tiling == b.tiling &&
            a.rotation == b.rotation && a.rotationRange == b.rotationRange && a.rotationSteps == b.rotationSteps &&
            a.scaleRange == b.scaleRange && a.offset == b.offset && a.offsetSteps == b.offsetSteps && a.mask == b.mask &&
            a.maskScale == b.maskScale && a.projection == b.projection && a.planeSharpness == b.planeSharpness;
 }
+
+namespace {
 
 // Reads the template the options or the material name into plan.templateSource; false (with an error) when it
 // cannot be used.
@@ -279,6 +280,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     plan.bindings = HexcBindings(options.layout.vulkan);
     if (!loadTemplate(material, options, plan)) return plan;
     planSlots(material, options, plan);
+    if (material.pack) planPacks(plan);
     planParams(options.bake, plan);
     return plan;
 }

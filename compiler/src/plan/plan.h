@@ -78,7 +78,19 @@ struct SlotPlan {
     bool heightOnly = false;          // only the texture is used, as another slot's height map (no function, no lattice)
     bool histogram = false;           // blend histogram: its texture is the Gaussian one, and it reads a look-up table
     bool sharedLod = false;           // lod "shared": one level of detail per slot, fetches with textureLod
+    std::optional<size_t> pack;       // index into ShaderPlan::packs: the slot reads that packed texture
+    int packedChannel = 0;            // a packed scalar slot's channel in it (0 = r ... 3 = a); a colour slot reads rgb
     ParamRef falloff, falloffContrast, exponent, heightWidth;
+};
+
+// A texture hexc packs from several slots' textures (docs/material-format.md#pack). Its slots share a lattice and a
+// texture size, so the shader fetches it once per tap for all of them. It is bound at its first slot's binding; the
+// others' bindings stay unused, so that packing moves no other texture.
+struct PackPlan {
+    std::vector<size_t> slots;          // indexes into ShaderPlan::slots, in declaration order
+    std::vector<std::string> channels;  // per slot, the channels of the packed texture it reads: "rgb", or one of r, g, b, a
+    bool srgb = false;                  // RGB holds an sRGB colour slot: an sRGB format, whose alpha stays linear
+    int width = 0, height = 0;
 };
 
 struct ShaderPlan {
@@ -91,8 +103,9 @@ struct ShaderPlan {
     // The slots (indexes into `slots`) whose histogram blend reads a look-up table: texture slots.size() + i, after
     // every slot's texture, so that materials without one keep their bindings.
     std::vector<size_t> luts;
-    ResourceLayout layout;   // where hexc's resources go on each target
-    std::string entryPoint;  // the SPIR-V entry point, which HLSL and MSL keep
+    std::vector<PackPlan> packs;  // only with Material::pack
+    ResourceLayout layout;        // where hexc's resources go on each target
+    std::string entryPoint;       // the SPIR-V entry point, which HLSL and MSL keep
     HexcBindings bindings{layout.vulkan};
     std::vector<LatticePlan> lattices;
     std::vector<ParamMember> params;       // block members first, in block order, then baked constants
@@ -102,10 +115,14 @@ struct ShaderPlan {
 
     // hexc's textures, bound at firstTexture + i: each slot's, then the look-up tables.
     size_t textureCount() const { return slots.size() + luts.size(); }
-    // The manifest's name of texture i: the slot's, or "<slot>.lut" (a `.` no slot name has).
+    // The manifest's name of texture i: the slot's, "<slot>.packed" for the first slot of a pack, or "<slot>.lut" (a
+    // `.` no slot name has).
     std::string textureName(size_t i) const {
-        return i < slots.size() ? slots[i].slot->name : slots[luts[i - slots.size()]].slot->name + ".lut";
+        if (i >= slots.size()) return slots[luts[i - slots.size()]].slot->name + ".lut";
+        return slots[i].slot->name + (slots[i].pack ? ".packed" : "");
     }
+    // Whether texture i is bound: all are but the packed slots' after the first of their pack.
+    bool textureBound(size_t i) const { return i >= slots.size() || !slots[i].pack || packs[*slots[i].pack].slots.front() == i; }
     // Its variable in the generated GLSL: hexcTex_<slot> or hexcLut_<slot>.
     std::string textureVariable(size_t i) const {
         return i < slots.size() ? "hexcTex_" + slots[i].slot->name : "hexcLut_" + slots[luts[i - slots.size()]].slot->name;
@@ -113,5 +130,13 @@ struct ShaderPlan {
 };
 
 ShaderPlan planShader(const Material& material, const CompileOptions& options);
+
+// The file hexc writes a pack's texture to: "<material>.<its first slot>.packed.png".
+inline std::string packedFileName(const std::string& material, const std::string& firstSlot) {
+    return material + "." + firstSlot + ".packed.png";
+}
+
+// Slots share a lattice when everything the lattice computes from is the same.
+bool sameLattice(const HexTiling& a, const HexTiling& b);
 
 }  // namespace hexc

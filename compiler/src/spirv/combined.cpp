@@ -4,10 +4,9 @@
 // type, its load yields the sampled image, and each OpSampledImage is replaced by that load. The other targets are
 // emitted from the separate module (HLSL and MSL have separate samplers only, OpenGL GLSL combined ones only).
 #include "spirv/combined.h"
+#include "spirv/module.h"
 
 #include "hexc/spirv.h"
-
-#include <spirv-tools/libspirv.h>
 
 #include <algorithm>
 #include <map>
@@ -17,41 +16,12 @@
 namespace hexc {
 namespace {
 
+using spirv::Instruction;
+using spirv::Module;
+
 constexpr uint16_t kOpFunction = 54, kOpName = 5, kOpTypeSampledImage = 27, kOpTypePointer = 32, kOpVariable = 59, kOpLoad = 61,
                    kOpDecorate = 71, kOpSampledImage = 86;
 constexpr uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34, kUniformConstant = 0;
-
-struct Instruction {
-    std::vector<uint32_t> words;
-    std::vector<uint16_t> ids;  // word offsets of the id operands (result id excluded)
-    uint16_t opcode() const { return uint16_t(words[0] & 0xffff); }
-};
-
-struct Module {
-    std::vector<uint32_t> header;
-    std::vector<Instruction> code;
-};
-
-Module parse(const std::vector<uint32_t>& words) {
-    Module m;
-    m.header.assign(words.begin(), words.begin() + 5);
-    spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_0);
-    auto onInstruction = [](void* user, const spv_parsed_instruction_t* parsed) {
-        Instruction i{{parsed->words, parsed->words + parsed->num_words}, {}};
-        for (uint16_t k = 0; k < parsed->num_operands; ++k) {
-            const spv_operand_type_t type = parsed->operands[k].type;
-            if (type == SPV_OPERAND_TYPE_ID || type == SPV_OPERAND_TYPE_TYPE_ID || type == SPV_OPERAND_TYPE_MEMORY_SEMANTICS_ID ||
-                type == SPV_OPERAND_TYPE_SCOPE_ID)
-                i.ids.push_back(parsed->operands[k].offset);
-        }
-        static_cast<Module*>(user)->code.push_back(std::move(i));
-        return SPV_SUCCESS;
-    };
-    const spv_result_t result = spvBinaryParse(context, &m, words.data(), words.size(), nullptr, onInstruction, nullptr);
-    spvContextDestroy(context);
-    if (result != SPV_SUCCESS) throw std::runtime_error("combined samplers: the module does not parse");
-    return m;
-}
 
 // Variables by (set, binding), from the decorations.
 std::map<std::pair<uint32_t, uint32_t>, uint32_t> descriptors(const Module& m) {
@@ -119,7 +89,7 @@ std::vector<uint32_t> assemble(const std::vector<uint32_t>& header, std::vector<
 }  // namespace
 
 std::vector<uint32_t> combineSamplers(const std::vector<uint32_t>& words, const ShaderPlan& plan) {
-    Module m = parse(words);
+    Module m = spirv::parse(words, "combined samplers");
     const auto byBinding = descriptors(m);
     const auto found = byBinding.find({plan.bindings.set, plan.bindings.sampler});
     const uint32_t sampler = found == byBinding.end() ? 0 : found->second;

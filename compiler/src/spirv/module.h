@@ -1,0 +1,24 @@
+#pragma once
+// A SPIR-V module as a list of instructions, for the word-level rewrites hexc does after spirv-opt (combined.h,
+// share.h).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hexc::spirv {
+
+struct Instruction {
+    std::vector<uint32_t> words;
+    std::vector<uint16_t> ids;  // word offsets of the id operands (result id excluded)
+    uint16_t opcode() const { return uint16_t(words[0] & 0xffff); }
+};
+
+struct Module {
+    std::vector<uint32_t> header;
+    std::vector<Instruction> code;
+};
+
+// std::runtime_error naming `what` (the rewrite) when the module does not parse: a hexc bug.
+Module parse(const std::vector<uint32_t>& words, const std::string& what);
+
+}  // namespace hexc::spirv
