@@ -89,6 +89,8 @@ const std::vector<std::string> kSpecialiseEarly = {
     "--eliminate-dead-branches",
     "--merge-blocks",
     "--simplify-instructions",
+    "--vector-dce",                      // components the last folds left unread (triplanar: the planes' extracts)
+    "--eliminate-dead-code-aggressive",
 };
 
 // SPIRV-Tools' messages appended to `messages`, one line each, located by word.
