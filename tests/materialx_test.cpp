@@ -77,15 +77,16 @@ TEST(MaterialX, AHandWrittenDocumentCompilesToTheShadersOfItsJsonMaterial) {
 // template file with its own resources), reads back to the same shaders.
 TEST(MaterialX, TheExportOfEveryExampleReadsBackToTheSameShaders) {
     // Beyond the examples, rock variants: the histogram blend on albedo and roughness, a y-down (DirectX) normal map
-    // hex-tiled (flip_g), the same map plain-tiled (the normalmap node has no flip: hexc_flip_y), and lod "shared".
+    // hex-tiled (flip_g), the same map plain-tiled (the normalmap node has no flip: hexc_flip_y), lod "shared" and packing.
     const std::map<std::string, std::function<void(Material&)>> variants = {
         {"histogram", [](Material& m) { m.slots[0].hex.blend = m.slots[2].hex.blend = Blend::Histogram; }},
         {"normal_y_down", [](Material& m) { m.slots[1].flipY = true; }},
         {"normal_y_down_plain", [](Material& m) { m.slots[1].flipY = true, m.slots[1].hex.enabled = false; }},
         {"shared_lod", [](Material& m) { m.slots[0].hex.lod = m.slots[1].hex.lod = Lod::Shared; }},
+        {"pack", [](Material& m) { m.pack = true; }},
     };
     for (const char* name : {"rock", "rock_normal", "rock_blend", "rock_triplanar", "tiles", "tiles_stepped", "engine_rock", "histogram",
-                             "normal_y_down", "normal_y_down_plain", "shared_lod"}) {
+                             "normal_y_down", "normal_y_down_plain", "shared_lod", "pack"}) {
         SCOPED_TRACE(name);
         const auto variant = variants.find(name);
         Material json = parsed(std::string("materials/") + (variant != variants.end() ? "rock" : name) + ".json");

@@ -132,8 +132,9 @@ private:
         at("", material);
         at("/name", material, "name");
         hexcAttributes(material, mtlx::kMaterialKeys, [&](const std::string& key, const json& v, const char* attr) {
-            const std::string p = key == "template" ? "/template" : "/hextiling/" + key;
-            (key == "template" ? m["template"] : m["hextiling"][key]) = v;
+            const bool top = key == "template" || key == "pack";  // top-level keys of the material JSON
+            const std::string p = top ? "/" + key : "/hextiling/" + key;
+            (top ? m[key] : m["hextiling"][key]) = v;
             at(p, material, attr);
         });
         for (xml_node input : material.children("input")) {

@@ -120,6 +120,7 @@ private:
             material.append_attribute("hexc_projection") = std::string(toString(m_.hex.projection)).c_str();
         if (m_.hex.planeSharpness != HexTiling{}.planeSharpness)
             material.append_attribute("hexc_planesharpness") = number(m_.hex.planeSharpness).c_str();
+        if (m_.pack) material.append_attribute("hexc_pack") = "true";
         element(material, "input", "surfaceshader", "surfaceshader").append_attribute("nodename") = surface_.attribute("name").value();
         if (displacement_)
             element(material, "input", "displacementshader", "displacementshader").append_attribute("nodename") =
