@@ -8,7 +8,9 @@ namespace {
 using enum Diagnostic::Severity;
 
 // The catalogue. An id, once released, is never reused for another meaning; new codes take the next free number
-// of their group. docs/cli.md explains each one.
+// of their group. docs/cli.md explains each one. One code a line, whatever the table's length (clang-format would
+// pack them into columns).
+// clang-format off
 constexpr CodeInfo kCatalogue[] = {
     {Code::InputUnreadable, "HX100", Error},
     {Code::JsonSyntax, "HX101", Error},
@@ -49,6 +51,7 @@ constexpr CodeInfo kCatalogue[] = {
     {Code::TargetUnsupported, "HX300", Error},
     {Code::Internal, "HX900", Error},
 };
+// clang-format on
 
 // Indexed by the enum: every code has its entry, in order.
 constexpr bool inEnumOrder() {

@@ -89,7 +89,7 @@ const std::vector<std::string> kSpecialiseEarly = {
     "--eliminate-dead-branches",
     "--merge-blocks",
     "--simplify-instructions",
-    "--vector-dce",                      // components the last folds left unread (triplanar: the planes' extracts)
+    "--vector-dce",  // components the last folds left unread (triplanar: the planes' extracts)
     "--eliminate-dead-code-aggressive",
 };
 
