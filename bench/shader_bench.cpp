@@ -865,7 +865,7 @@ int main(int argc, char** argv) {
         return argc == 2 && std::string_view(argv[1]) == "--help" ? 0 : 2;
     }
     try {
-        return hexc::bench::run(argc > 1 ? argv[1] : "build/bench-results");
+        return hexc::bench::run(std::filesystem::absolute(argc > 1 ? argv[1] : "build/bench-results"));
     } catch (const hexc::CompileError& e) {
         std::cerr << "hexc-bench-shaders:\n" << hexc::formatAll(e.diagnostics);
     } catch (const std::exception& e) {
