@@ -357,8 +357,8 @@ std::string packedPng(const Material& material, const ShaderPlan& plan, const Pa
         } catch (const TextureError& e) {
             throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
         }
-        // To: the pack's channels; from: the slot's (a colour slot's RGB, a scalar's channel).
-        const size_t to = p.channels[k] == "rgb" ? 0 : std::string("rgba").find(p.channels[k]), count = p.channels[k].size();
+        // To: the pack's channels (the plan's packedChannel, 0 for RGB); from: the slot's (a colour slot's RGB, a scalar's channel).
+        const size_t to = size_t(plan.slots[p.slots[k]].packedChannel), count = p.channels[k].size();
         const size_t from = s.kind == SlotKind::Scalar ? size_t(s.channel) : 0;
         for (size_t t = 0; t < packed.rgba8.size(); t += 4)
             for (size_t c = 0; c < count; ++c) packed.rgba8[t + to + c] = source.rgba8[t + from + c];
@@ -385,7 +385,7 @@ void addPackedFiles(const Material& material, const ShaderPlan& plan, const Comp
     for (const PackPlan& p : plan.packs) {
         auto compute = [&]() -> std::optional<std::string> { return packedPng(material, plan, p); };
         const std::optional<std::string> bytes = options.cache ? options.cache->getOrCompute(packedKey(plan, p), compute) : compute();
-        result.files.push_back({packedFileName(material.name, plan.slots[p.slots.front()].slot->name), bytes ? *bytes : compute().value()});
+        result.files.push_back({packedFileName(material.name, plan.slots[p.slots.front()].slot->name), *bytes});
     }
 }
 
