@@ -181,9 +181,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     app.add_flag_callback(
         "--no-warnings", [&] { a.warnings = false; }, "do not print warnings");
     app.add_flag("--force", a.force, "compile every material, even those whose stamp says they are up to date");
-    app.add_option("-j,--jobs", a.jobs,
-                   "compile N materials at once (default: one per core; one material alone emits its targets on parallel threads, which -j "
-                   "1 turns off)")
+    app.add_option("-j,--jobs", a.jobs, "compile N materials at once (default: one per core; -j 1 also emits targets on one thread)")
         ->check(CLI::Range(1u, 256u))
         ->type_name("N");
     a.cacheDir = defaultCacheDir();
