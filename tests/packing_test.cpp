@@ -199,6 +199,20 @@ TEST(Packing, ThePackedSlotsFetchOnce) {
     }
 }
 
+// An engine's template that samples its own combined samplers (texture, textureLod on a sampler2D) beside the packed
+// slots: those samples are left as they are, the packed slots' three taps are shared.
+TEST(Packing, AnEngineTemplatesOwnSamplesStayBesidePackedOnes) {
+    Material m = packed(kAlbedo + "," + kRoughness, "templates/engine.glsl");
+    CompileOptions spirv;
+    spirv.targets = {Target::Spirv};
+    const CompileResult on = compile(m, spirv);
+    ASSERT_TRUE(on.ok()) << formatAll(on.diagnostics);
+    m.pack = false;
+    const CompileResult off = compile(m, spirv);
+    ASSERT_TRUE(off.ok()) << formatAll(off.diagnostics);
+    EXPECT_EQ(samples(off.spirv) - samples(on.spirv), 3);
+}
+
 // The command line writes the packed texture beside the shaders and names it in the depfile as an output; a texture
 // whose pixels change makes the material out of date (its texels are in the packed texture).
 TEST(Packing, TheCommandLineWritesAndDeclaresThePackedTexture) {

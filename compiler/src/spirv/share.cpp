@@ -79,10 +79,11 @@ void shareInFunction(std::vector<Instruction>& code, size_t begin, size_t end, s
         if (op != kOpImageSampleExplicitLod && op != kOpImageQuerySizeLod && !derivative(op)) continue;
         std::vector<uint32_t> key = i.words;
         key[2] = 0;  // the result id
-        if (op == kOpImageSampleExplicitLod) {
-            const auto& pair = sampledImage.at(i.words[3]);
+        // A sampled image made here is keyed by its image and sampler; one loaded whole (a template's combined sampler2D)
+        // by its own id, which is then the same only for the same load.
+        if (auto pair = sampledImage.find(i.words[3]); op == kOpImageSampleExplicitLod && pair != sampledImage.end()) {
             key[3] = 0;
-            key.insert(key.end(), pair.begin(), pair.end());
+            key.insert(key.end(), pair->second.begin(), pair->second.end());
         }
         if (op == kOpImageQuerySizeLod && imageOf.count(i.words[3])) key[3] = imageOf.at(i.words[3]);
         auto& earlier = seen[key];
