@@ -60,7 +60,7 @@ spv_target_env kTargetEnv = SPV_ENV_VULKAN_1_0;
 // and without the passes that then found nothing left to do on the examples. Each slot's settings reach the library
 // as HexcLattice and HexcBlend structs built member by member and passed by value; -O sees through them only at its
 // first instruction simplification, halfway through, so its first half walks the whole inlined library.
-// tests/recipe_test.cpp holds this recipe to no bigger SPIR-V than -O's, opcode by opcode, on every example, scene
+// tests/spirv/recipe_test.cpp holds this recipe to no bigger SPIR-V than -O's, opcode by opcode, on every example, scene
 // variant and a generated set; on those it costs 0.8x of -O's instructions (docs/benchmarks.md).
 const std::vector<std::string> kSpecialiseEarly = {
     "--wrap-opkill",                     // -O's preparation for inlining: a discard in a called function,
