@@ -559,7 +559,7 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
             const Image image = vk::render(runner, row.material, vk::RenderOutput::Albedo, "albedo", kViews[row.view].view,
                                            vk::ExecutedTarget::Spirv, 0, nullptr, {}, row.method->compile);
             // The histogram blend makes another image than the falloff reference: the execution tests compare it with its
-            // own reference (HistogramPath); here, its contrast.
+            // own reference (tests/execution/cases/histogram_*.json); here, its contrast.
             if (albedoSlot(row.material).hex.blend == Blend::Falloff)
                 row.error = compareRgb(image, refs.albedo.at({row.errorReference, row.view}));
             row.contrast = contrast(luminances(image), refs.sourceLuminance[row.view]);
