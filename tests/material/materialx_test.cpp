@@ -3,6 +3,7 @@
 // hexc cannot express is a located diagnostic. Execution on lavapipe: execution_test.cpp (MaterialX suite).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -199,10 +200,19 @@ TEST(MaterialX, WhatHexcCannotExpressIsReportedWhereItIs) {
     EXPECT_EQ(diagnose(image(R"(<input name="lumacoeffs" type="color3" value="0.2722287, 0.6740818, 0.0536895" />)"), kAlbedo),
               std::vector<std::string>{"materials/mtlx/t.mtlx:4:1: warning[HX119]: img/lumacoeffs: hexc weighs colour samples by Rec. 601 "
                                        "luma (0.299, 0.587, 0.114); `lumacoeffs` is not used"});
-    EXPECT_EQ(diagnose("<multiply name=\"img\" type=\"color3\" />", kAlbedo),
-              std::vector<std::string>{"materials/mtlx/t.mtlx:2:1: error[HX118]: img: node <multiply> cannot feed a slot (hexc compiles "
-                                       "image, tiledimage, hextiledimage and hextilednormalmap nodes, optionally under extract or "
-                                       "normalmap)"});
+    EXPECT_EQ(diagnose("<noise2d name=\"img\" type=\"color3\" />", kAlbedo),
+              std::vector<std::string>{"materials/mtlx/t.mtlx:2:1: error[HX118]: img: node <noise2d> cannot feed a slot (hexc compiles "
+                                       "image, tiledimage, hextiledimage and hextilednormalmap nodes, optionally under extract, "
+                                       "normalmap or a convert to color3)"});
+    // Value nodes that feed one another in a cycle: a diagnostic, not a hang.
+    EXPECT_EQ(diagnose(image(R"(<input name="tiling" type="vector2" nodename="a" />)") +
+                           R"(<add name="a" type="vector2"><input name="in1" type="vector2" nodename="b" /></add>
+<add name="b" type="vector2"><input name="in1" type="vector2" nodename="a" /></add>)",
+                       kAlbedo),
+              std::vector<std::string>{"materials/mtlx/t.mtlx:4:1: error[HX118]: img/tiling: `tiling` is not a constant: a/in1: the nodes "
+                                       "feeding it form a cycle or a chain deeper than 32 (hexc reads texture settings as values: "
+                                       "constants, interface inputs, and convert, combine2-4, add, subtract, multiply or divide of "
+                                       "those)"});
     // A value the JSON rules refuse is reported at the MaterialX input it came from.
     EXPECT_EQ(diagnose(image(R"(<input name="falloff" type="float" value="2" />)"), kAlbedo),
               std::vector<std::string>{"materials/mtlx/t.mtlx:4:36: error[HX106]: img/falloff: expected a number in [0.000001, 0.999999] "

@@ -12,11 +12,16 @@
 #include "hexc/materialx.h"
 #include "material/json_locator.h"
 #include "material/materialx_names.h"
+#include "material/materialx_nodes.h"
+#include "material/materialx_values.h"
 #include "material/parse.h"
 
 namespace hexc {
 namespace {
 
+using mtlx::isNumbers;
+using mtlx::value;
+using namespace mtlx::nodes;
 using nlohmann::json;
 using pugi::xml_node;
 
@@ -25,71 +30,6 @@ struct Place {
     std::string path;
     TextPos pos;
 };
-
-// The inputs each texture node may have; anything else is reported rather than dropped.
-const std::map<std::string, std::vector<std::string>, std::less<>> kNodeInputs = {
-    {"hextiledimage",
-     {"file", "default", "texcoord", "tiling", "rotation", "rotationrange", "scale", "scalerange", "offset", "offsetrange", "falloff",
-      "falloffcontrast", "lumacoeffs"}},
-    {"hextilednormalmap",
-     {"file", "default", "texcoord", "tiling", "rotation", "rotationrange", "scale", "scalerange", "offset", "offsetrange", "falloff",
-      "strength", "flip_g", "normal", "tangent", "bitangent"}},
-    {"image",
-     {"file", "layer", "default", "texcoord", "uaddressmode", "vaddressmode", "filtertype", "framerange", "frameoffset", "frameendaction"}},
-    {"tiledimage",
-     {"file", "default", "texcoord", "uvtiling", "uvoffset", "realworldimagesize", "realworldtilesize", "filtertype", "framerange",
-      "frameoffset", "frameendaction"}},
-};
-
-// Inputs hexc reads only at one value (what it does: repeat, filter linearly, one image, no normal scaling); an
-// empty category applies to every node.
-struct Fixed {
-    std::string_view category, input, value, why;
-};
-constexpr Fixed kFixed[] = {
-    {"", "layer", "", "hexc reads a whole image file"},
-    {"", "uaddressmode", "periodic", "hex-tiling repeats the texture"},
-    {"", "vaddressmode", "periodic", "hex-tiling repeats the texture"},
-    {"", "filtertype", "linear", "hexc samples with trilinear filtering"},
-    {"", "framerange", "", "hexc reads one image, not a sequence"},
-    {"", "frameoffset", "0", "hexc reads one image, not a sequence"},
-    {"", "uvoffset", "0, 0", "hexc has no uv offset"},
-    {"", "realworldimagesize", "1, 1", "hexc has no real-world units; use uvtiling"},
-    {"", "realworldtilesize", "1, 1", "hexc has no real-world units; use uvtiling"},
-    {"hextilednormalmap", "strength", "1", "hexc does not scale normals; the template can"},
-    {"normalmap", "scale", "1", "hexc does not scale normals; the template can"},
-    {"normalmap", "space", "tangent", "hexc reads tangent-space normal maps"},
-};
-
-// "0.5, 2" -> numbers; nullopt when any item is not a finite number.
-std::optional<std::vector<double>> numbers(std::string_view s) {
-    std::vector<double> out;
-    for (size_t begin = 0; begin <= s.size();) {
-        size_t end = std::min(s.find(',', begin), s.size());
-        std::string_view item = s.substr(begin, end - begin);
-        while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
-        while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
-        double x = 0;
-        auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), x);
-        if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() || !std::isfinite(x)) return std::nullopt;
-        out.push_back(x);
-        begin = end + 1;
-    }
-    return out;
-}
-
-// A MaterialX value string as JSON: a boolean, a number, an array of numbers, else the string itself (which the
-// JSON rules then report where a number was expected).
-json value(std::string_view s) {
-    if (s == "true" || s == "false") return s == "true";
-    if (std::optional<std::vector<double>> v = numbers(s)) return v->size() == 1 ? json(v->front()) : json(*v);
-    return std::string(s);
-}
-
-bool isNumbers(const json& v, size_t count) {
-    return count == 1 ? v.is_number()
-                      : v.is_array() && v.size() == count && std::all_of(v.begin(), v.end(), [](const json& x) { return x.is_number(); });
-}
 
 class Reader {
 public:
@@ -104,6 +44,14 @@ public:
         if (hasErrors(result.diagnostics) && m["slots"].empty()) return result;
         ParseResult checked = parseMaterialJson(m.dump(), file_);
         for (const Diagnostic& d : checked.diagnostics) result.diagnostics.push_back(relocate(d));
+        // Slots read from one image node (each channel under its own extract) say what is wrong with it once.
+        auto same = [](const Diagnostic& a, const Diagnostic& b) {
+            return a.code == b.code && a.loc.line == b.loc.line && a.loc.col == b.loc.col && a.message == b.message;
+        };
+        for (size_t i = 1; i < result.diagnostics.size(); ++i)
+            if (std::any_of(result.diagnostics.begin(), result.diagnostics.begin() + i,
+                            [&](const Diagnostic& d) { return same(d, result.diagnostics[i]); }))
+                result.diagnostics.erase(result.diagnostics.begin() + i--);
         if (!hasErrors(result.diagnostics)) result.material = std::move(checked.material);
         return result;
     }
@@ -150,6 +98,7 @@ private:
                 surface(shader, m);
         }
         if (m["slots"].empty()) at("/slots", material);
+        mtlx::uniqueSlotNames(m["slots"]);
         return m;
     }
 
@@ -157,10 +106,11 @@ private:
     // are the template's business, said once.
     void surface(xml_node shader, json& m) {
         const std::string category = shader.name();
-        static const std::vector<std::string> kShaders = {"standard_surface", "open_pbr_surface", "UsdPreviewSurface", "displacement"};
+        static const std::vector<std::string> kShaders = {"standard_surface", "open_pbr_surface", "gltf_pbr", "UsdPreviewSurface",
+                                                          "displacement"};
         if (std::find(kShaders.begin(), kShaders.end(), category) == kShaders.end()) {
             report(Code::MaterialXUnsupported, shader, "shader <" + category + "> is not supported",
-                   "expected <standard_surface>, <open_pbr_surface>, <UsdPreviewSurface> or <displacement>");
+                   "expected <standard_surface>, <open_pbr_surface>, <gltf_pbr>, <UsdPreviewSurface> or <displacement>");
             return;
         }
         std::string values;
@@ -169,7 +119,16 @@ private:
                 values += std::string(values.empty() ? "" : ", ") + input.attribute("name").value();
                 continue;
             }
-            if (xml_node node = source(input)) slot(node, mtlx::slotName(category, input.attribute("name").value()), m);
+            xml_node node = source(input);
+            if (!node) continue;
+            const std::string name = mtlx::slotName(category, input.attribute("name").value());
+            if (auto fed = fed_.find(node); fed != fed_.end())
+                report(Code::MaterialXIgnored, input,
+                       "`" + std::string(input.attribute("name").value()) + "` reads " + namePath(node) + " like slot `" + fed->second +
+                           "`: one slot serves both",
+                       "a template reads it as `" + fed->second + "`");
+            else
+                fed_[node] = name, slot(node, name, m);
         }
         if (!values.empty())
             report(Code::MaterialXIgnored, shader,
@@ -183,22 +142,30 @@ private:
         at(p, node);
         at(p + "/name", node);
         std::string category = node.name();
+        if (!hasNodedef(node)) return;
+        if (category == "convert") {  // the colour of a color4 image: its rgb, which a colour slot is
+            fixedInputs(node, {"in"});
+            if (!(node = inner(node))) return;
+            category = node.name();
+        }
         std::optional<int> channel;
         const bool normalmap = category == "normalmap";
         if (category == "extract" || normalmap) {
             if (category == "extract") channel = extractIndex(node, p);
             fixedInputs(node, normalmap ? std::vector<std::string>{"in", "scale", "space"} : std::vector<std::string>{"in", "index"});
-            xml_node in = node.find_child_by_attribute("input", "name", "in");
-            if (!in || !connected(in)) {
-                report(Code::MaterialXUnsupported, node, "<" + category + "> without a connected `in` input");
-                return;
-            }
-            if (!(node = source(in))) return;
+            if (!(node = inner(node))) return;
             category = node.name();
+        }
+        if (kConstantFactors.contains(category)) {
+            report(Code::MaterialXUnsupported, node, "a <" + category + "> between the image and the shader: hexc compiles the image alone",
+                   "connect the shader input to the image node, and apply the " + std::string(kConstantFactors.at(category)) +
+                       " in a hexc_template of your own or bake it into the texture");
+            return;
         }
         if (!kNodeInputs.contains(category)) {
             report(Code::MaterialXUnsupported, node, "node <" + category + "> cannot feed a slot",
-                   "hexc compiles image, tiledimage, hextiledimage and hextilednormalmap nodes, optionally under extract or normalmap");
+                   "hexc compiles image, tiledimage, hextiledimage and hextilednormalmap nodes, optionally under extract, normalmap or a "
+                   "convert to color3");
             return;
         }
         s["kind"] = normalmap || category == "hextilednormalmap"                             ? "normal"
@@ -207,6 +174,31 @@ private:
         if (channel) s["channel"] = std::string(1, "rgba"[*channel]);
         texture(node, s, p);
         m["slots"].push_back(std::move(s));
+    }
+
+    // The node a convert, extract or normalmap node reads.
+    xml_node inner(xml_node node) {
+        xml_node in = node.find_child_by_attribute("input", "name", "in");
+        if (!in || !connected(in)) {
+            report(Code::MaterialXUnsupported, node, "<" + std::string(node.name()) + "> without a connected `in` input");
+            return {};
+        }
+        xml_node from = source(in);
+        return from && hasNodedef(from) ? from : xml_node();
+    }
+
+    // A node MaterialX defines for its type (a slot's nodes; the category itself is checked where it is read).
+    bool hasNodedef(xml_node node) {
+        auto types = kNodeTypes.find(std::string_view(node.name()));
+        const std::string type = node.attribute("type").value();
+        if (types == kNodeTypes.end() || std::find(types->second.begin(), types->second.end(), type) != types->second.end()) return true;
+        std::string expected;
+        for (const std::string& t : types->second) expected += (expected.empty() ? "" : ", ") + t;
+        report(
+            Code::MaterialXUnsupported, node, "MaterialX has no <" + std::string(node.name()) + "> of type `" + type + "`",
+            "expected type " + expected +
+                (type == "float" && std::string_view(node.name()) == "hextiledimage" ? "; an <extract> of a channel gives a float" : ""));
+        return false;
     }
 
     std::optional<int> extractIndex(xml_node node, const std::string& p) {
@@ -265,6 +257,7 @@ private:
     std::filesystem::path file_;
     xml_node root_;
     std::map<std::string, Place> places_;  // JSON pointer -> where its value came from
+    std::map<xml_node, std::string> fed_;  // node read into a slot -> the slot's name
     Diagnostics diags_;
 };
 
@@ -322,8 +315,11 @@ void Reader::fixedInputs(xml_node node, const std::vector<std::string>& known) {
             continue;
         }
         if (name == "in") continue;  // normalmap's image, read as the slot's texture node
-        if (connected(input)) {
-            report(Code::MaterialXUnsupported, input, "`" + name + "` is connected: hexc reads texture settings as values");
+        // A missing interface input is inputValue's to report (HX113); anything else that stops folding, here.
+        if (mtlx::Folded f = mtlx::fold(input); f.blocker && !(f.blocker == input && input.attribute("interfacename"))) {
+            report(Code::MaterialXUnsupported, input, "`" + name + "` is not a constant: " + namePath(f.blocker) + ": " + f.why,
+                   "hexc reads texture settings as values: constants, interface inputs, and convert, combine2-4, add, subtract, "
+                   "multiply or divide of those");
             continue;
         }
         if ((name == "normal" || name == "tangent" || name == "bitangent") && category == "hextilednormalmap")
@@ -344,22 +340,16 @@ void Reader::texcoord(xml_node input) {
                "hexc's template passes the mesh uv (or the triplanar position)");
 }
 
-// An input's value (through `interfacename` to its nodegraph's input), or `fallback` when it has none.
+// An input's value (through `interfacename` to its nodegraph's input, or computed from the constant nodes it is
+// connected to), or `fallback` when it has none; fixedInputs reports one that cannot be computed.
 json Reader::inputValue(xml_node input, const json& fallback) {
     if (!input) return fallback;
-    if (pugi::xml_attribute name = input.attribute("interfacename")) {
-        xml_node graph = input.parent().parent();
-        xml_node outer = graph.find_child_by_attribute("input", "name", name.value());
-        if (!outer) {
-            report(Code::UnknownReference, input, "no nodegraph input `" + std::string(name.value()) + "`");
-            return fallback;
-        }
-        input = outer;
+    if (pugi::xml_attribute name = input.attribute("interfacename");
+        name && !input.parent().parent().find_child_by_attribute("input", "name", name.value())) {
+        report(Code::UnknownReference, input, "no nodegraph input `" + std::string(name.value()) + "`");
+        return fallback;
     }
-    pugi::xml_attribute v = input.attribute("value");
-    if (!v) return fallback;
-    const std::string_view type = input.attribute("type").value();
-    return type == "filename" || type == "string" ? json(std::string(v.value())) : value(v.value());
+    return mtlx::fold(input).value.value_or(fallback);
 }
 
 template <typename F>
@@ -418,11 +408,11 @@ void Reader::colorSpace(xml_node from, json& s, const std::string& p) {
     at(p + "/colorspace", from, "colorspace");
     if (space == "srgb_texture") {
         s["colorspace"] = "srgb";  // on a normal map, the JSON rules report it
-    } else if (space.empty() || space == "lin_rec709" || space == "lin_srgb" || space == "raw" || space == "Raw") {
+    } else if (space.empty() || space == "none" || space == "lin_rec709" || space == "lin_srgb" || space == "raw" || space == "Raw") {
         if (s["kind"] != "normal") s["colorspace"] = "linear";
     } else {
         report(Code::MaterialXUnsupported, from, "colour space `" + space + "` is not supported",
-               "expected srgb_texture, or lin_rec709 or raw for data stored as is");
+               "expected srgb_texture, or lin_rec709, raw or none for data stored as is");
     }
 }
 
@@ -515,22 +505,6 @@ std::optional<size_t> invalidUtf8(std::string_view s) {
 }
 
 }  // namespace
-
-std::string mtlx::slotName(std::string_view shader, std::string_view input) {
-    for (const mtlx::SlotInput& s : mtlx::kSlotInputs)
-        if (s.shader == shader && s.input == input) return std::string(s.slot);
-    std::string out;
-    for (size_t i = 0; i < input.size(); ++i) {
-        char c = input[i];
-        if (c >= 'A' && c <= 'Z') {
-            const char before = i ? input[i - 1] : '_';
-            if ((before >= 'a' && before <= 'z') || (before >= '0' && before <= '9')) out += '_';
-            c = char(c - 'A' + 'a');
-        }
-        out += c;
-    }
-    return out;
-}
 
 bool isMaterialXFile(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
