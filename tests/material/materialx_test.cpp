@@ -281,3 +281,70 @@ TEST(MaterialX, EveryMaterialOfADocumentIsCompiled) {
               std::string::npos)
         << err;
 }
+
+// materials/mtlx/corpus/: documents in the shapes MaterialX tools write, with stand-in textures of their own
+// (textures/generate.py). Beside each x.mtlx, x.expected holds a line `material NAME: SLOT ...` for each material
+// read (its slots in binding order), then every diagnostic of the document in order; a material read compiles.
+std::vector<std::string> corpusFiles() {
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator("materials/mtlx/corpus"))
+        if (entry.path().extension() == ".mtlx") files.push_back(entry.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+class Corpus : public testing::TestWithParam<std::string> {};
+
+TEST_P(Corpus, ReadsAsExpectedAndCompiles) {
+    std::filesystem::path file = GetParam();
+    const std::vector<ParseResult> results = parseMaterialXDocument(fileText(file), file);
+    std::vector<std::string> lines;
+    for (const ParseResult& r : results) {
+        if (r.material) {
+            std::string line = "material " + r.material->name + ":";
+            for (const Slot& s : r.material->slots) line += " " + s.name;
+            lines.push_back(line);
+        }
+        for (const Diagnostic& d : r.diagnostics) lines.push_back(d.format());
+    }
+    std::vector<std::string> expected;
+    std::ifstream in(file.replace_extension(".expected"));
+    ASSERT_TRUE(in) << file << " is missing";
+    for (std::string line; std::getline(in, line);) expected.push_back(line);
+    EXPECT_EQ(lines, expected);
+    for (const ParseResult& r : results)
+        if (r.material) {
+            CompileResult c = compile(*r.material);
+            EXPECT_TRUE(c.ok()) << formatAll(c.diagnostics);
+        }
+}
+
+INSTANTIATE_TEST_SUITE_P(Documents, Corpus, testing::ValuesIn(corpusFiles()),
+                         [](const auto& info) { return std::filesystem::path(info.param).stem().string(); });
+
+TEST(Corpus, EveryExpectationHasItsDocument) {
+    for (const auto& entry : std::filesystem::directory_iterator("materials/mtlx/corpus"))
+        if (entry.path().extension() == ".expected") {
+            std::filesystem::path file = entry.path();
+            EXPECT_TRUE(std::filesystem::exists(file.replace_extension(".mtlx"))) << entry.path();
+        }
+}
+
+// What the corpus's value nodes compute is what hexc reads: the onyx shape's converted interface float and
+// colorspace="none", the folded document's combine2, multiply, subtract, add and divide.
+TEST(Corpus, ValueNodesFeedingSettingsAreComputed) {
+    const Material onyx = parsed("materials/mtlx/corpus/onyx_shape.mtlx");
+    ASSERT_EQ(onyx.slots.size(), 2u);
+    EXPECT_EQ(onyx.slots[0].hex.tiling, (std::array<double, 2>{3.5, 3.5}));
+    EXPECT_EQ(onyx.slots[0].hex.rotation, 0.75);
+    EXPECT_EQ(onyx.slots[0].hex.falloff, 0.7);
+    EXPECT_EQ(onyx.slots[0].hex.scaleRange, (std::array<double, 2>{0.75, 1.5}));  // 1 + (0.5 - 1) 0.5, 1 + (2 - 1) 0.5
+    EXPECT_EQ(onyx.slots[1].colorSpace, ColorSpace::Linear);
+    EXPECT_EQ(onyx.slots[1].channel, 1);
+    const Material folded = parsed("materials/mtlx/corpus/folded_settings.mtlx");
+    ASSERT_EQ(folded.slots.size(), 2u);
+    EXPECT_EQ(folded.slots[0].hex.tiling, (std::array<double, 2>{3, 5}));
+    EXPECT_EQ(folded.slots[0].hex.rotationRange, (std::array<double, 2>{-30, 50}));
+    EXPECT_EQ(folded.slots[0].hex.falloff, 0.75);
+    EXPECT_EQ(folded.slots[1].hex.tiling, (std::array<double, 2>{1.5, 2.5}));
+}
