@@ -2,7 +2,9 @@
 // SPIR-V -> target source through SPIRV-Cross. One file per target holds only what differs: compiler
 // options, how hexc's fixed resource layout (plan.h) is pinned, and how the manifest addresses it.
 #include <cstdint>
+#include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -75,7 +77,26 @@ using IoName = nlohmann::json (*)(uint32_t location, bool input);
 nlohmann::json describeTarget(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const std::string& entryPoint, Locate locate,
                               IoName ioName, const nlohmann::json& placed);
 
+// The pass-through vertex stage's files on every target from its optimised module into `files`, and its description
+// for the manifest: each target's file and entry point, and the attributes feeding `inputs`.
+nlohmann::json emitVertexStage(const std::vector<uint32_t>& spirv, const std::vector<Varying>& inputs, const std::string& entry,
+                               const std::string& material, const CompileOptions& options, const std::vector<Target>& targets,
+                               std::vector<OutputFile>& files);
+
 // The manifest (manifest.cpp): material, slots, parameter block, and every target's description.
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets);
+// CompileOptions::manifestPathsFrom: where the compile's input files were, relative to the folder `from`.
+nlohmann::json sourcePaths(const Material& material, const ShaderPlan& plan, const std::filesystem::path& from);
+
+// The target table (targets.cpp): options.targets in target order, each once.
+std::vector<Target> sortedTargets(const CompileOptions& options);
+// A SPIR-V module as its file's bytes.
+std::string spirvBytes(const std::vector<uint32_t>& words);
+// Each target from the optimised module, the SPIR-V target with combined samplers when the layout asks for them.
+std::map<Target, TargetOutput> emitTargets(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options,
+                                           const std::vector<Target>& targets);
+
+// The banner (banner.cpp) on top of every shader source in `files`, after GLSL's `#version` line.
+void addBanners(std::vector<OutputFile>& files, const Material& material, const ShaderPlan& plan, const CompileOptions& options);
 
 }  // namespace hexc

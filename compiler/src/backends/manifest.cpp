@@ -125,4 +125,24 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
     return manifest;
 }
 
+namespace {
+
+// `file` relative to the folder `from`, with `/` separators, whatever the current folder is.
+std::string relativeTo(const std::filesystem::path& file, const std::filesystem::path& from) {
+    const std::filesystem::path base = std::filesystem::absolute(from).lexically_normal();
+    return std::filesystem::absolute(file).lexically_normal().lexically_relative(base).generic_string();
+}
+
+}  // namespace
+
+nlohmann::json sourcePaths(const Material& material, const ShaderPlan& plan, const std::filesystem::path& from) {
+    nlohmann::json textures = nlohmann::json::object();
+    for (const SlotPlan& sp : plan.slots) textures[sp.slot->name] = relativeTo(sp.slot->texturePath, from);
+    nlohmann::json source = {
+        {"relative_to", "this manifest's folder"}, {"material", relativeTo(material.sourceFile, from)}, {"textures", textures}};
+    if (!plan.templateFile.empty()) source["template"] = relativeTo(plan.templateFile, from);
+    if (!plan.layout.sourceFile.empty()) source["layout"] = relativeTo(plan.layout.sourceFile, from);
+    return source;
+}
+
 }  // namespace hexc

@@ -1,0 +1,117 @@
+// The target table: each target's name and file, the entry points every target accepts, and the emission of every
+// requested target from the optimised module.
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <exception>
+#include <future>
+#include <set>
+#include <thread>
+
+#include "backends/backends.h"
+#include "spirv/combined.h"
+
+namespace hexc {
+
+std::string_view toString(Target target) {
+    static const char* names[] = {"spirv", "hlsl", "glsl", "msl"};
+    return names[int(target)];
+}
+
+std::string shaderFileName(std::string_view material, Target target, std::string_view stage) {
+    static const char* const extensions[] = {"spv", "hlsl", "glsl", "metal"};
+    return std::string(material) + "." + std::string(stage) + "." + extensions[int(target)];
+}
+
+std::string defaultEntryPoint(std::string_view material) {
+    std::string name(material);
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    // An identifier cannot start with a digit; material names may.
+    return (std::isdigit(static_cast<unsigned char>(name[0])) ? "m" : "") + name + "_frag";
+}
+
+bool isEntryPointName(std::string_view name) {
+    static const std::set<std::string_view> reserved = {
+        "main0",  "void",      "float", "int",      "bool",    "struct", "return",   "if",      "else",    "for",    "while",
+        "do",     "in",        "out",   "inout",    "uniform", "const",  "true",     "false",   "discard", "vertex", "fragment",
+        "kernel", "namespace", "using", "template", "class",   "static", "register", "texture", "sampler"};
+    if (name.empty() || name.size() > 64 || std::isdigit(static_cast<unsigned char>(name[0])) || name.starts_with("gl_") ||
+        name.starts_with("__") || reserved.count(name))
+        return false;
+    return std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+std::string codeOptionsKey(const CompileOptions& options) {
+    std::string key;
+    for (Target t : std::set<Target>(options.targets.begin(), options.targets.end())) key += std::string(toString(t)) + ",";
+    return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
+           std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
+           (options.debug ? ",debug" : "");
+}
+
+std::vector<Target> sortedTargets(const CompileOptions& options) {
+    std::vector<Target> targets = options.targets;
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    return targets;
+}
+
+std::string spirvBytes(const std::vector<uint32_t>& words) {
+    std::string bytes(words.size() * 4, '\0');
+    std::memcpy(bytes.data(), words.data(), bytes.size());
+    return bytes;
+}
+
+namespace {
+
+TargetOutput emitTarget(Target t, const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
+    switch (t) {
+        case Target::Spirv: {
+            // The other targets are emitted from the separate module (combined.h).
+            const std::vector<uint32_t> words = plan.layout.vulkan.combined ? combineSamplers(spirv, plan) : spirv;
+            TargetOutput out = describeSpirv(words, plan);
+            out.source = spirvBytes(words);
+            return out;
+        }
+        case Target::Hlsl:
+            return emitHlsl(spirv, plan, options);
+        case Target::Glsl:
+            return emitGlsl(spirv, plan, options);
+        case Target::Msl:
+            return emitMsl(spirv, plan, options);
+    }
+    throw std::logic_error("unknown target");
+}
+
+}  // namespace
+
+// With CompileOptions::concurrentTargets and more than one core, each target but the last gets a thread of its own
+// (each has its own SPIRV-Cross compiler, which SPIRV-Cross allows) and this thread emits the last one and SPIR-V,
+// which is quick. Results, and the first error in target order, are taken in target order, so the outputs and
+// diagnostics are those of one thread.
+std::map<Target, TargetOutput> emitTargets(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options,
+                                           const std::vector<Target>& targets) {
+    std::map<Target, TargetOutput> out;
+    if (!options.concurrentTargets || targets.size() < 2 || std::thread::hardware_concurrency() < 2) {
+        for (Target t : targets) out[t] = emitTarget(t, spirv, plan, options);
+        return out;
+    }
+    auto here = [&](Target t) { return t == Target::Spirv || t == targets.back(); };
+    std::map<Target, std::future<TargetOutput>> pending;
+    for (Target t : targets)
+        pending[t] = std::async(here(t) ? std::launch::deferred : std::launch::async, emitTarget, t, std::cref(spirv), std::cref(plan),
+                                std::cref(options));
+    for (Target t : targets)
+        if (here(t)) pending[t].wait();  // runs it, while the others run on theirs
+    std::exception_ptr first;
+    for (Target t : targets) try {
+            out[t] = pending[t].get();
+        } catch (...) {
+            if (!first) first = std::current_exception();
+        }
+    if (first) std::rethrow_exception(first);
+    return out;
+}
+
+}  // namespace hexc

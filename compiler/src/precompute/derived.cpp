@@ -1,0 +1,116 @@
+// Histogram tables as PFM and packed textures as PNG, each through the shader cache.
+#include "precompute/derived.h"
+
+#include <nlohmann/json.hpp>
+
+#include "hexc/cache.h"
+#include "hexc/files.h"
+#include "hexc/hash.h"
+#include "hexc/histogram.h"
+#include "hexc/image.h"
+
+namespace hexc {
+namespace {
+
+nlohmann::json binary(std::string_view bytes) { return nlohmann::json::binary(std::vector<uint8_t>(bytes.begin(), bytes.end())); }
+
+// A histogram slot's derived textures (hexc/histogram.h) as PFM files' bytes: float32 keeps T and its inverse exact,
+// and hexc reads and writes PFM byte for byte. A texture that cannot be read stops the compile.
+nlohmann::json histogramFiles(const Material& material, const Slot& s) {
+    Texture source;
+    try {
+        source = loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb);
+    } catch (const TextureError& e) {
+        throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
+    }
+    const HistogramTransform t = histogramTransform(source, s);
+    nlohmann::json files;
+    for (const auto& [which, texture] : {std::pair{"gaussian", &t.gaussian}, std::pair{"lut", &t.lut}})
+        files[which] = binary(pfmBytes({texture->width, texture->height, texture->rgba32f}));
+    return files;
+}
+
+// Everything a slot's derived textures depend on: the texture's bytes, how they are decoded (the file's extension, the
+// colour space) and which channels are transformed (kind, channel), and hexc's build.
+std::string histogramKey(const Slot& s) {
+    ContentHash h;
+    for (const std::string& part : {std::string("hexc histogram 1"), std::string(version()), buildId(),
+                                    readFile(s.texturePath).value_or(""), s.texturePath.extension().string(),
+                                    std::string(toString(s.colorSpace)), std::string(toString(s.kind)), std::to_string(s.channel)})
+        h.add(part);
+    return h.hex();
+}
+
+void addHistogramFiles(const Material& material, const ShaderPlan& plan, ShaderCache* cache, std::vector<OutputFile>& out) {
+    for (size_t i : plan.luts) {
+        const Slot& s = *plan.slots[i].slot;
+        auto compute = [&]() -> std::optional<std::string> {
+            const std::vector<uint8_t> cbor = nlohmann::json::to_cbor(histogramFiles(material, s));
+            return std::string(cbor.begin(), cbor.end());
+        };
+        const std::optional<std::string> cached = cache ? cache->getOrCompute(histogramKey(s), compute) : compute();
+        nlohmann::json files = nlohmann::json::from_cbor(*cached, true, false);
+        const auto holds = [&](const char* which) { return files.is_object() && files.contains(which) && files[which].is_binary(); };
+        if (!holds("gaussian") || !holds("lut")) files = histogramFiles(material, s);  // an entry of another format
+        for (const char* which : {"gaussian", "lut"}) {
+            const auto& bytes = files[which].get_binary();
+            out.push_back({histogramFileName(material.name, s.name, which), std::string(bytes.begin(), bytes.end())});
+        }
+    }
+}
+
+// A pack's texture (docs/material-format.md#pack) as PNG bytes: each slot's 8-bit texels, as loadTexture decodes its
+// file, copied into the pack's channels; alpha 255 where no slot fills it, the other unused channels 0. Level 0 only:
+// the mip chain is the engine's to build, as for any texture.
+std::string packedPng(const Material& material, const ShaderPlan& plan, const PackPlan& p) {
+    Texture packed{p.width, p.height, p.srgb, std::vector<uint8_t>(size_t(p.width) * p.height * 4, 0), {}};
+    for (size_t k = 3; k < packed.rgba8.size(); k += 4) packed.rgba8[k] = 255;
+    for (size_t k = 0; k < p.slots.size(); ++k) {
+        const Slot& s = *plan.slots[p.slots[k]].slot;
+        Texture source;
+        try {
+            source = loadTexture(s.texturePath, false);
+        } catch (const TextureError& e) {
+            throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
+        }
+        // To: the pack's channels (the plan's packedChannel, 0 for RGB); from: the slot's (a colour slot's RGB, a scalar's channel).
+        const size_t to = size_t(plan.slots[p.slots[k]].packedChannel), count = p.channels[k].size();
+        const size_t from = s.kind == SlotKind::Scalar ? size_t(s.channel) : 0;
+        for (size_t t = 0; t < packed.rgba8.size(); t += 4)
+            for (size_t c = 0; c < count; ++c) packed.rgba8[t + to + c] = source.rgba8[t + from + c];
+    }
+    return pngBytes(packed);
+}
+
+// Everything a packed texture depends on: its slots' textures' bytes and extensions (how they decode), which channels
+// go where, and hexc's build.
+std::string packedKey(const ShaderPlan& plan, const PackPlan& p) {
+    ContentHash h;
+    for (const std::string& part : {std::string("hexc packed texture 1"), std::string(version()), buildId()}) h.add(part);
+    for (size_t k = 0; k < p.slots.size(); ++k) {
+        const Slot& s = *plan.slots[p.slots[k]].slot;
+        for (const std::string& part : {readFile(s.texturePath).value_or(""), s.texturePath.extension().string(),
+                                        std::string(toString(s.kind)), std::to_string(s.channel), p.channels[k]})
+            h.add(part);
+    }
+    return h.hex();
+}
+
+void addPackedFiles(const Material& material, const ShaderPlan& plan, ShaderCache* cache, std::vector<OutputFile>& out) {
+    for (const PackPlan& p : plan.packs) {
+        auto compute = [&]() -> std::optional<std::string> { return packedPng(material, plan, p); };
+        const std::optional<std::string> bytes = cache ? cache->getOrCompute(packedKey(plan, p), compute) : compute();
+        out.push_back({packedFileName(material.name, plan.slots[p.slots.front()].slot->name), *bytes});
+    }
+}
+
+}  // namespace
+
+std::vector<OutputFile> derivedTextureFiles(const Material& material, const ShaderPlan& plan, ShaderCache* cache) {
+    std::vector<OutputFile> files;
+    addHistogramFiles(material, plan, cache, files);
+    addPackedFiles(material, plan, cache, files);
+    return files;
+}
+
+}  // namespace hexc
