@@ -3,6 +3,7 @@
 // device, and running the hexc command line as a user would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -21,12 +22,18 @@ inline vk::Runner* runner(std::string* why) {
     return r.get();
 }
 
+// The running test's name as a file name: a parameterised test's name has a `/`.
+inline std::string testLogName() {
+    std::string name = testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    return name;
+}
+
 // Runs the hexc executable with `args`; returns its exit code and, if asked, what it wrote to stderr.
 // The log is named after the running test, so tests may run in parallel. `prefix`: shell commands run first
 // (e.g. `ulimit -v N;`) or a wrapper command (e.g. `timeout 20`).
 inline int runHexc(const std::string& args, std::string* err = nullptr, const std::string& prefix = "") {
-    std::filesystem::path log = std::filesystem::temp_directory_path() /
-                                (std::string("hexc_stderr_") + testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt");
+    std::filesystem::path log = std::filesystem::temp_directory_path() / ("hexc_stderr_" + testLogName() + ".txt");
     int status = std::system((prefix + " " + HEXC_EXE + " " + args + " 2> " + log.string() + " > /dev/null").c_str());
     if (err) {
         std::ifstream in(log);
@@ -37,8 +44,7 @@ inline int runHexc(const std::string& args, std::string* err = nullptr, const st
 
 // Runs hexc and returns what it printed on stdout.
 inline std::string runHexcStdout(const std::string& args) {
-    std::filesystem::path log = std::filesystem::temp_directory_path() /
-                                (std::string("hexc_stdout_") + testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt");
+    std::filesystem::path log = std::filesystem::temp_directory_path() / ("hexc_stdout_" + testLogName() + ".txt");
     std::system((std::string(HEXC_EXE) + " " + args + " > " + log.string() + " 2>/dev/null").c_str());
     std::ifstream in(log);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

@@ -1,12 +1,10 @@
 #!/usr/bin/env bash
-# Regenerates tests/golden/<material>/ from the example materials with the built hexc.
-# Run after an intended change to codegen or templates, then review the diff like any other change.
+# Regenerates every golden folder tests/golden/<name>/ (hexc run with the arguments in its args file) through the
+# golden test itself, so they are written exactly as it compares them. Run after an intended change to codegen, the
+# library, templates or backends, then review the diff like any other change. BUILD: the build folder (default build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-hexc=${HEXC:-build/hexc}
-for m in rock tiles rock_normal; do
-  rm -rf "tests/golden/$m"
-  "$hexc" -q "materials/$m.json" -o "tests/golden/$m"
-  rm -f "tests/golden/$m/.$m.hexc-stamp"  # the incremental-build stamp is not an output
-done
+build=${BUILD:-build}
+cmake --build "$build" --target hexc hexc-tests
+HEXC_UPDATE_GOLDEN=1 "$build/tests/hexc-tests" --gtest_filter='Features/Golden.*' --gtest_brief=1
 echo "golden outputs regenerated in tests/golden/"
