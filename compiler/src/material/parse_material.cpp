@@ -1,29 +1,18 @@
-// JSON -> Material: parse, validate and fill defaults. Every problem becomes a located diagnostic and
-// validation goes on after an error, so a user sees all problems in one run.
+// A material document -> Material: its keys, hex-tiling settings, slots and the rules across them, with defaults filled.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <map>
 
-#include <nlohmann/json.hpp>
-
-#include "hexc/files.h"
 #include "common/suggest.h"
-#include "common/templates.h"
-#include "common/text.h"
 #include "hexc/image.h"
-#include "hexc/layout.h"
-#include "hexc/material.h"
 #include "hexc/materialx.h"
-#include "hexc/scene.h"
-#include "material/json_locator.h"
+#include "material/names.h"
 #include "material/parse.h"
+#include "material/rules.h"
 
 namespace hexc {
 namespace {
-
-using nlohmann::json;
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "pack", "slots"};
 const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling", "height_blend"};
@@ -32,15 +21,9 @@ const std::vector<std::string> kHexKeys = {"enabled",    "tiling",     "rotation
                                            "scalerange", "offset",     "offsetsteps",       "mask",          "maskscale",
                                            "taps",       "projection", "planesharpness",    "blend",         "lod"};
 const std::vector<std::string> kHeightKeys = {"slot", "width"};
-const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
-const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
-const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
-
-// 1-64 letters, digits, `_` or `-`: material, scene and pass names become file names.
-bool isFileName(const std::string& name) {
-    return !name.empty() && name.size() <= 64 &&
-           std::all_of(name.begin(), name.end(), [](char c) { return isIdentifierChar(c) || c == '-'; });
-}
+const std::vector<std::string> kTaps = {"adaptive"};  // besides a count
+// 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
+constexpr size_t kMaxSlots = 16;
 
 // [a-z][a-z0-9_]{0,31} without `__` (reserved in GLSL): a slot name becomes the GLSL function hexc_<name>.
 bool isSlotName(const std::string& name) {
@@ -49,55 +32,10 @@ bool isSlotName(const std::string& name) {
            name.find("__") == std::string::npos && !name.starts_with("gl_");
 }
 const std::vector<std::string> kModes = {"stable", "paper"};
-const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
-const std::vector<std::string> kProjections = {"uv", "triplanar"};
-const std::vector<std::string> kBlends = {"falloff", "histogram"};
-const std::vector<std::string> kLods = {"gradients", "shared"};
-const std::vector<std::string> kTaps = {"adaptive"};  // besides a count
-// 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
-constexpr size_t kMaxSlots = 16;
 
-std::string typeName(const json& v) {
-    switch (v.type()) {
-        case json::value_t::object:
-            return "an object";
-        case json::value_t::array:
-            return "an array";
-        case json::value_t::string:
-            return "a string";
-        case json::value_t::boolean:
-            return "a boolean";
-        case json::value_t::null:
-            return "null";
-        default:
-            return "a number";
-    }
-}
-
-std::string ticked(const std::string& s) { return "`" + s + "`"; }
-
-std::string joinQuoted(const std::vector<std::string>& items) {
-    std::string out;
-    for (size_t i = 0; i < items.size(); ++i) {
-        if (i) out += i + 1 == items.size() ? " or " : ", ";
-        out += ticked(items[i]);
-    }
-    return out;
-}
-
-class Validator {
+class MaterialValidator : public JsonRules {
 public:
-    Validator(std::string_view text, const std::filesystem::path& file) : locator_(text), file_(file), dir_(file.parent_path()) {}
-
-    Diagnostics diags;
-
-    void report(Code code, const std::string& pointer, std::string message, std::string hint = {}, bool atKey = false) {
-        report(code, pointer, atKey ? locator_.key(pointer) : locator_.value(pointer), std::move(message), std::move(hint));
-    }
-
-    void report(Code code, const std::string& pointer, TextPos p, std::string message, std::string hint = {}) {
-        diags.push_back(Diagnostic::make(code, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)));
-    }
+    using JsonRules::JsonRules;
 
     Material run(const json& doc) {
         Material m;
@@ -129,244 +67,7 @@ public:
         return m;
     }
 
-    // A scene: its own keys, then each material file it lists, parsed on its own (their diagnostics name
-    // their own files).
-    Scene runScene(const json& doc) {
-        Scene scene;
-        scene.sourceFile = file_;
-        static const std::vector<std::string> kSceneKeys = {"$schema", "scene", "materials", "passes"};
-        if (!doc.is_object()) {
-            report(Code::WrongType, "", "expected a scene object, got " + typeName(doc));
-            return scene;
-        }
-        checkKeys(doc, "", kSceneKeys);
-        if (requireKey(doc, "", "scene", "the scene's name")) {
-            scene.name = string(doc["scene"], "/scene");
-            if (doc["scene"].is_string() && !isFileName(scene.name))
-                report(Code::InvalidName, "/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
-        }
-        if (requireKey(doc, "", "materials", "an array of material files")) sceneMaterials(doc["materials"], scene);
-        if (requireKey(doc, "", "passes", "an array of passes")) {
-            const json& passes = doc["passes"];
-            if (!passes.is_array() || passes.empty())
-                report(passes.is_array() ? Code::WrongCount : Code::WrongType, "/passes", "expected a non-empty array of passes");
-            for (size_t i = 0; passes.is_array() && i < passes.size(); ++i) scenePass(passes[i], pointerAppend("/passes", i), scene);
-        }
-        return scene;
-    }
-
-    // A layout file: each target's object of whole numbers, every key optional.
-    ResourceLayout runLayout(const json& doc) {
-        ResourceLayout layout;
-        layout.sourceFile = file_;
-        if (!doc.is_object()) {
-            report(Code::WrongType, "", "expected a layout object, got " + typeName(doc));
-            return layout;
-        }
-        std::vector<std::string> keys{"$schema"};
-        for (const LayoutField& f : layoutFields())
-            if (keys.back() != f.target) keys.push_back(f.target);
-        checkKeys(doc, "", keys);
-        for (size_t i = 1; i < keys.size(); ++i) {
-            const std::string p = "/" + keys[i];
-            if (!doc.contains(keys[i])) continue;
-            const json& t = doc[keys[i]];
-            if (!t.is_object()) {
-                report(Code::WrongType, p, "expected an object, got " + typeName(t));
-                continue;
-            }
-            std::vector<std::string> names;
-            for (const LayoutField& f : layoutFields())
-                if (f.target == keys[i]) names.push_back(f.key);
-            checkKeys(t, p, names);
-            for (const LayoutField& f : layoutFields())
-                if (f.target == keys[i] && t.contains(f.key)) {
-                    const Range range{0, double(f.max), false, false, "in [0, " + std::to_string(f.max) + "]"};
-                    f.field(layout) = uint32_t(whole(t[f.key], p + "/" + f.key, range, 0));
-                }
-        }
-        return layout;
-    }
-
 private:
-    // The scene's materials, each parsed (paths relative to the scene file) with its own diagnostics first.
-    void sceneMaterials(const json& list, Scene& scene) {
-        if (!list.is_array() || list.empty())
-            report(list.is_array() ? Code::WrongCount : Code::WrongType, "/materials", "expected a non-empty array of material file paths");
-        for (size_t i = 0; list.is_array() && i < list.size(); ++i) {
-            std::string p = pointerAppend("/materials", i);
-            std::string path = string(list[i], p);
-            if (list[i].is_string() && path.empty()) report(Code::InputUnreadable, p, "an empty path names no material file");
-            if (path.empty()) continue;
-            ParseResult r = parseMaterialFile(dir_ / path);
-            diags.insert(diags.end(), r.diagnostics.begin(), r.diagnostics.end());
-            if (!r.material) {
-                report(Code::InvalidSceneMaterial, p, "material " + (dir_ / path).string() + " is invalid (see above)");
-                continue;
-            }
-            for (const Material& other : scene.materials)
-                if (other.name == r.material->name)
-                    report(Code::DuplicateName, p, "two materials are named `" + other.name + "`; variant files would collide");
-            scene.materials.push_back(std::move(*r.material));
-        }
-    }
-
-    void scenePass(const json& v, const std::string& p, Scene& scene) {
-        static const std::vector<std::string> kPassKeys = {"name", "template", "slots", "materials"};
-        if (!v.is_object()) {
-            report(Code::WrongType, p, "expected a pass object, got " + typeName(v));
-            return;
-        }
-        checkKeys(v, p, kPassKeys);
-        ScenePass pass;
-        if (requireKey(v, p, "name", "a string")) {
-            pass.name = string(v["name"], p + "/name");
-            if (v["name"].is_string() && !isFileName(pass.name))
-                report(Code::InvalidName, p + "/name", "expected 1-64 letters, digits, `_` or `-`, got \"" + pass.name + "\"");
-            for (const ScenePass& other : scene.passes)
-                if (other.name == pass.name) report(Code::DuplicateName, p + "/name", "duplicate pass name \"" + pass.name + "\"");
-        }
-        if (v.contains("template")) {
-            pass.templateName = templateRef(v["template"], p + "/template");
-            if (pass.templateName.ends_with(".glsl")) pass.templateAsWritten = v["template"].get<std::string>();
-        }
-        pass.slots = names(v, p, "slots");
-        pass.materials = names(v, p, "materials");
-        std::vector<std::string> all;
-        for (const Material& m : scene.materials) all.push_back(m.name);
-        for (size_t j = 0; pass.materials && j < pass.materials->size(); ++j) {
-            const std::string& name = (*pass.materials)[j];
-            if (std::find(all.begin(), all.end(), name) != all.end()) continue;
-            std::string hint;
-            if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
-            report(Code::UnknownReference, pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
-        }
-        scene.passes.push_back(std::move(pass));
-    }
-
-    // An optional array of names under `key`.
-    std::optional<std::vector<std::string>> names(const json& obj, const std::string& pointer, const std::string& key) {
-        if (!obj.contains(key)) return std::nullopt;
-        std::vector<std::string> out;
-        const json& v = obj[key];
-        if (!v.is_array()) {
-            report(Code::WrongType, pointer + "/" + key, "expected an array of names, got " + typeName(v));
-            return out;
-        }
-        for (size_t i = 0; i < v.size(); ++i) out.push_back(string(v[i], pointerAppend(pointer + "/" + key, i)));
-        return out;
-    }
-
-    void checkKeys(const json& obj, const std::string& pointer, const std::vector<std::string>& known) {
-        for (const auto& [key, value] : obj.items()) {
-            if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-            std::string hint;
-            if (auto best = closestMatch(key, known)) hint = "did you mean " + ticked(*best) + "?";
-            report(Code::UnknownKey, pointerAppend(pointer, key), "unknown key " + ticked(key) + "; expected " + joinQuoted(known), hint,
-                   true);
-        }
-    }
-
-    bool requireKey(const json& obj, const std::string& pointer, const std::string& key, const std::string& what) {
-        if (obj.contains(key)) return true;
-        report(Code::MissingKey, pointer, "missing required key " + ticked(key) + " (" + what + ")");
-        return false;
-    }
-
-    std::string string(const json& v, const std::string& pointer) {
-        if (v.is_string()) return v.get<std::string>();
-        report(Code::WrongType, pointer, "expected a string, got " + typeName(v));
-        return {};
-    }
-
-    bool boolean(const json& v, const std::string& pointer, bool fallback) {
-        if (v.is_boolean()) return v.get<bool>();
-        report(Code::WrongType, pointer, "expected true or false, got " + typeName(v));
-        return fallback;
-    }
-
-    // A choice among fixed strings; returns the index, or -1 after reporting.
-    int choice(const json& v, const std::string& pointer, const std::vector<std::string>& options) {
-        if (!v.is_string()) {
-            report(Code::WrongType, pointer, "expected one of " + joinQuoted(options) + ", got " + typeName(v));
-            return -1;
-        }
-        std::string s = v.get<std::string>();
-        for (size_t i = 0; i < options.size(); ++i)
-            if (options[i] == s) return int(i);
-        std::string hint;
-        if (auto best = closestMatch(s, options)) hint = "did you mean " + ticked(*best) + "?";
-        report(Code::UnknownValue, pointer, "expected one of " + joinQuoted(options) + ", got \"" + s + "\"", hint);
-        return -1;
-    }
-
-    struct Range {
-        double lo, hi;
-        bool loOpen, hiOpen;
-        std::string text;  // as shown to the user, e.g. "in (0, 1)"
-        bool contains(double x) const { return (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi); }
-    };
-
-    double number(const json& v, const std::string& pointer, const Range& range, double fallback) {
-        if (!v.is_number()) {
-            report(Code::WrongType, pointer, "expected a number " + range.text + ", got " + typeName(v));
-            return fallback;
-        }
-        double x = v.get<double>();
-        if (!std::isfinite(x) || !range.contains(x)) {
-            std::ostringstream s;
-            s << "expected a number " << range.text << ", got " << v.dump();
-            report(Code::OutOfRange, pointer, s.str());
-            return fallback;
-        }
-        return x;
-    }
-
-    // A whole number in `range`.
-    double whole(const json& v, const std::string& pointer, const Range& range, double fallback) {
-        if (v.is_number() && v.get<double>() != std::floor(v.get<double>())) {
-            report(Code::OutOfRange, pointer, "expected a whole number " + range.text + ", got " + v.dump());
-            return fallback;
-        }
-        return number(v, pointer, range, fallback);
-    }
-
-    // An array of two numbers in `range` (whole numbers when `integer`).
-    void pair(const json& v, const std::string& pointer, const Range& range, std::array<double, 2>& out, bool integer = false) {
-        if (!v.is_array() || v.size() != 2) {
-            report(Code::WrongType, pointer,
-                   "expected an array of two numbers " + range.text + ", got " +
-                       (v.is_array() ? "an array of " + std::to_string(v.size()) : typeName(v)));
-            return;
-        }
-        for (size_t i = 0; i < 2; ++i)
-            out[i] =
-                integer ? whole(v[i], pointerAppend(pointer, i), range, out[i]) : number(v[i], pointerAppend(pointer, i), range, out[i]);
-    }
-
-    std::string templateRef(const json& v, const std::string& pointer) {
-        std::string name = string(v, pointer);
-        if (!v.is_string()) return "lit";
-        if (name.size() > 5 && name.ends_with(".glsl")) {
-            std::filesystem::path p = dir_ / name;
-            // A status check, not an open: opening a FIFO would block; the plan reads the file (readFile refuses
-            // what is not a regular file).
-            std::error_code ec;
-            if (!std::filesystem::is_regular_file(p, ec))
-                report(Code::TemplateUnreadable, pointer, "cannot read template file " + p.string() + ": " + whyNotRegular(p));
-            return p.string();
-        }
-        std::vector<std::string> names = builtinTemplateNames();
-        if (std::find(names.begin(), names.end(), name) != names.end()) return name;
-        std::string hint;
-        if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
-        std::string list;
-        for (const std::string& n : names) list += (list.empty() ? "" : ", ") + ticked(n);
-        report(Code::UnknownTemplate, pointer,
-               "unknown template \"" + name + "\"; expected a built-in template (" + list + ") or a path to a .glsl file", hint);
-        return "lit";
-    }
-
     // `materialLevel`: the top-level block, the only place for material-wide keys.
     void hexSettings(const json& v, const std::string& pointer, HexTiling& hex, bool materialLevel = false) {
         if (!v.is_object()) {
@@ -726,84 +427,13 @@ private:
                        std::to_string(info->channels) + " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));
     }
 
-    JsonLocator locator_;
-    std::filesystem::path file_, dir_;
     bool inheritedRangeWarned_ = false;  // HX116 for the material-level tiling is given once
 };
-
-// A comma right before the `]` or `}` at `offset` (JSON allows no trailing comma): where it is, to report it there
-// rather than at the bracket nlohmann stops on.
-std::optional<size_t> trailingComma(std::string_view text, size_t offset) {
-    if (offset == 0 || offset >= text.size() || (text[offset] != ']' && text[offset] != '}')) return std::nullopt;
-    size_t at = text.find_last_not_of(" \t\r\n", offset - 1);
-    if (at == std::string_view::npos || text[at] != ',') return std::nullopt;
-    return at;
-}
-
-// Parses JSON text; on a syntax error returns nullopt with the located diagnostic in *diags.
-std::optional<json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags) {
-    auto syntaxError = [&](size_t offset, std::string message) {
-        TextPos p = textPosition(text, offset);
-        diags->push_back(Diagnostic::make(Code::JsonSyntax, {file.string(), p.line, p.col}, "", std::move(message)));
-        return std::nullopt;
-    };
-    if (std::optional<size_t> at = excessiveNesting(text))
-        return syntaxError(*at, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (a material needs 5)");
-    try {
-        return json::parse(text);
-    } catch (const json::parse_error& e) {
-        // nlohmann's message carries its own "[json.exception...] parse error at line L, column C: " prefix;
-        // the position is recomputed from the byte offset (one past the offending character).
-        const size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-        if (std::optional<size_t> comma = trailingComma(text, offset))
-            return syntaxError(*comma, std::string("invalid JSON: a trailing comma before `") + text[offset] + "` (JSON allows none)");
-        std::string what = e.what();
-        if (auto colon = what.find(": ", what.find("column")); colon != std::string::npos) what = what.substr(colon + 2);
-        return syntaxError(offset, "invalid JSON: " + what);
-    } catch (const json::out_of_range& e) {
-        // The only range error the parser raises: a number literal beyond double, e.g. 1e999.
-        // nlohmann gives no offset here, so the literal is found in the text.
-        std::string what = e.what();
-        size_t q = what.find('\'');
-        std::string literal = q == std::string::npos ? "" : what.substr(q + 1, what.rfind('\'') - q - 1);
-        size_t at = literal.empty() ? 0 : text.find(literal);
-        return syntaxError(at == std::string_view::npos ? 0 : at, "number " + literal + " is out of range (expected a finite number)");
-    }
-}
-
-}  // namespace
-
-namespace {
-
-// Parses `text` and validates the document with `run`, whose result lands in `field` only when there is no error.
-template <typename Result, typename T>
-Result validate(std::string_view text, const std::filesystem::path& file, std::optional<T> Result::*field,
-                T (Validator::*run)(const json&)) {
-    Result result;
-    std::optional<json> doc = parseJson(text, file, &result.diagnostics);
-    if (!doc) return result;
-    Validator v(text, file);
-    T value = (v.*run)(*doc);
-    result.diagnostics = std::move(v.diags);
-    if (!hasErrors(result.diagnostics)) result.*field = std::move(value);
-    return result;
-}
-
-template <typename Result>
-Result readAndParse(const std::filesystem::path& file, const std::string& what,
-                    Result (*parse)(std::string_view, const std::filesystem::path&)) {
-    std::string why;
-    std::optional<std::string> text = readFile(file, &why);
-    if (text) return parse(*text, file);
-    Result r;
-    r.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {file.string()}, "", "cannot read " + what + " file: " + why));
-    return r;
-}
 
 }  // namespace
 
 ParseResult parseMaterialJson(std::string_view text, const std::filesystem::path& file) {
-    return validate(text, file, &ParseResult::material, &Validator::run);
+    return validate(text, file, &ParseResult::material, &MaterialValidator::run);
 }
 
 ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {
@@ -811,62 +441,5 @@ ParseResult parseMaterial(std::string_view text, const std::filesystem::path& fi
 }
 
 ParseResult parseMaterialFile(const std::filesystem::path& file) { return readAndParse(file, "material", &parseMaterial); }
-
-bool isSceneDocument(std::string_view text) {
-    Diagnostics ignored;
-    std::optional<json> doc = parseJson(text, {}, &ignored);
-    return doc && doc->is_object() && doc->contains("scene");
-}
-
-SceneParseResult parseSceneFile(const std::filesystem::path& file) { return readAndParse(file, "scene", &parseScene); }
-
-SceneParseResult parseScene(std::string_view text, const std::filesystem::path& file) {
-    return validate(text, file, &SceneParseResult::scene, &Validator::runScene);
-}
-
-LayoutParseResult parseLayout(std::string_view text, const std::filesystem::path& file) {
-    return validate(text, file, &LayoutParseResult::layout, &Validator::runLayout);
-}
-
-LayoutParseResult parseLayoutFile(const std::filesystem::path& file) { return readAndParse(file, "layout", &parseLayout); }
-
-const std::vector<LayoutField>& layoutFields() {
-    using L = ResourceLayout;
-    // Vulkan guarantees 4 descriptor sets (31 leaves room); 4095 keeps every other index well inside what targets accept.
-    static const std::vector<LayoutField> fields = {
-        {"vulkan", "set", 31, "hexc's Vulkan descriptor set, 0 to 31 (default 0)", [](L& l) -> uint32_t& { return l.vulkan.set; }},
-        {"vulkan", "binding", 4095, "hexc's first Vulkan binding: block, sampler, textures (default 0)",
-         [](L& l) -> uint32_t& { return l.vulkan.binding; }},
-        {"vulkan", "combined", 1, "1: hexc's SPIR-V textures as combined image samplers, no sampler (default 0)",
-         [](L& l) -> uint32_t& { return l.vulkan.combined; }},
-        {"hlsl", "space", 4095, "hexc's HLSL register space (needs --hlsl-sm 51+)", [](L& l) -> uint32_t& { return l.hlsl.space; }},
-        {"hlsl", "b", 4095, "hexc's first HLSL b register", [](L& l) -> uint32_t& { return l.hlsl.b; }},
-        {"hlsl", "t", 4095, "hexc's first HLSL t register", [](L& l) -> uint32_t& { return l.hlsl.t; }},
-        {"hlsl", "s", 4095, "hexc's first HLSL s register", [](L& l) -> uint32_t& { return l.hlsl.s; }},
-        {"hlsl", "u", 4095, "first HLSL u register (template storage)", [](L& l) -> uint32_t& { return l.hlsl.u; }},
-        {"msl", "buffer", 4095, "hexc's first MSL buffer index", [](L& l) -> uint32_t& { return l.msl.buffer; }},
-        {"msl", "texture", 4095, "hexc's first MSL texture index", [](L& l) -> uint32_t& { return l.msl.texture; }},
-        {"msl", "sampler", 4095, "hexc's first MSL sampler index", [](L& l) -> uint32_t& { return l.msl.sampler; }},
-        {"msl", "argument_buffers", 1, "1: a Metal argument buffer per descriptor set (default 0)",
-         [](L& l) -> uint32_t& { return l.msl.argumentBuffers; }},
-        {"glsl", "binding", 4095, "hexc's GLSL block binding and first texture unit", [](L& l) -> uint32_t& { return l.glsl.binding; }}};
-    return fields;
-}
-
-std::string toString(const ResourceLayout& l) {
-    auto n = [](uint32_t v) { return std::to_string(v); };
-    return "vulkan " + n(l.vulkan.set) + "/" + n(l.vulkan.binding) + (l.vulkan.combined ? " combined" : "") + " hlsl space" +
-           n(l.hlsl.space) + " b" + n(l.hlsl.b) + " t" + n(l.hlsl.t) + " s" + n(l.hlsl.s) + " u" + n(l.hlsl.u) + " msl " + n(l.msl.buffer) +
-           "/" + n(l.msl.texture) + "/" + n(l.msl.sampler) + (l.msl.argumentBuffers ? " argument buffers" : "") + " glsl " +
-           n(l.glsl.binding);
-}
-
-std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }
-std::string_view toString(ColorSpace space) { return kColorSpaces[size_t(space)]; }
-std::string_view toString(HashMode mode) { return kModes[size_t(mode)]; }
-std::string_view toString(Mask mask) { return kMasks[size_t(mask)]; }
-std::string_view toString(Blend blend) { return kBlends[size_t(blend)]; }
-std::string_view toString(Lod lod) { return kLods[size_t(lod)]; }
-std::string_view toString(Projection projection) { return kProjections[size_t(projection)]; }
 
 }  // namespace hexc

@@ -1,0 +1,11 @@
+#pragma once
+// Each setting's names in its enum's order, as a material spells them: one table per enum, read by the parser
+// (the index of the name is the value) and written by toString (hexc/material.h).
+#include <string>
+#include <vector>
+
+namespace hexc {
+
+extern const std::vector<std::string> kKinds, kChannels, kColorSpaces, kModes, kMasks, kProjections, kBlends, kLods;
+
+}  // namespace hexc

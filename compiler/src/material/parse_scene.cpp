@@ -1,0 +1,112 @@
+// A scene document -> Scene: its keys, its passes, and each material file it lists, parsed on its own.
+#include <algorithm>
+
+#include "common/suggest.h"
+#include "hexc/scene.h"
+#include "material/rules.h"
+
+namespace hexc {
+namespace {
+
+class SceneValidator : public JsonRules {
+public:
+    using JsonRules::JsonRules;
+
+    // A scene: its own keys, then each material file it lists, parsed on its own (their diagnostics name
+    // their own files).
+    Scene runScene(const json& doc) {
+        Scene scene;
+        scene.sourceFile = file_;
+        static const std::vector<std::string> kSceneKeys = {"$schema", "scene", "materials", "passes"};
+        if (!doc.is_object()) {
+            report(Code::WrongType, "", "expected a scene object, got " + typeName(doc));
+            return scene;
+        }
+        checkKeys(doc, "", kSceneKeys);
+        if (requireKey(doc, "", "scene", "the scene's name")) {
+            scene.name = string(doc["scene"], "/scene");
+            if (doc["scene"].is_string() && !isFileName(scene.name))
+                report(Code::InvalidName, "/scene", "expected 1-64 letters, digits, `_` or `-`, got \"" + scene.name + "\"");
+        }
+        if (requireKey(doc, "", "materials", "an array of material files")) sceneMaterials(doc["materials"], scene);
+        if (requireKey(doc, "", "passes", "an array of passes")) {
+            const json& passes = doc["passes"];
+            if (!passes.is_array() || passes.empty())
+                report(passes.is_array() ? Code::WrongCount : Code::WrongType, "/passes", "expected a non-empty array of passes");
+            for (size_t i = 0; passes.is_array() && i < passes.size(); ++i) scenePass(passes[i], pointerAppend("/passes", i), scene);
+        }
+        return scene;
+    }
+
+private:
+    // The scene's materials, each parsed (paths relative to the scene file) with its own diagnostics first.
+    void sceneMaterials(const json& list, Scene& scene) {
+        if (!list.is_array() || list.empty())
+            report(list.is_array() ? Code::WrongCount : Code::WrongType, "/materials", "expected a non-empty array of material file paths");
+        for (size_t i = 0; list.is_array() && i < list.size(); ++i) {
+            std::string p = pointerAppend("/materials", i);
+            std::string path = string(list[i], p);
+            if (list[i].is_string() && path.empty()) report(Code::InputUnreadable, p, "an empty path names no material file");
+            if (path.empty()) continue;
+            ParseResult r = parseMaterialFile(dir_ / path);
+            diags.insert(diags.end(), r.diagnostics.begin(), r.diagnostics.end());
+            if (!r.material) {
+                report(Code::InvalidSceneMaterial, p, "material " + (dir_ / path).string() + " is invalid (see above)");
+                continue;
+            }
+            for (const Material& other : scene.materials)
+                if (other.name == r.material->name)
+                    report(Code::DuplicateName, p, "two materials are named `" + other.name + "`; variant files would collide");
+            scene.materials.push_back(std::move(*r.material));
+        }
+    }
+
+    void scenePass(const json& v, const std::string& p, Scene& scene) {
+        static const std::vector<std::string> kPassKeys = {"name", "template", "slots", "materials"};
+        if (!v.is_object()) {
+            report(Code::WrongType, p, "expected a pass object, got " + typeName(v));
+            return;
+        }
+        checkKeys(v, p, kPassKeys);
+        ScenePass pass;
+        if (requireKey(v, p, "name", "a string")) {
+            pass.name = string(v["name"], p + "/name");
+            if (v["name"].is_string() && !isFileName(pass.name))
+                report(Code::InvalidName, p + "/name", "expected 1-64 letters, digits, `_` or `-`, got \"" + pass.name + "\"");
+            for (const ScenePass& other : scene.passes)
+                if (other.name == pass.name) report(Code::DuplicateName, p + "/name", "duplicate pass name \"" + pass.name + "\"");
+        }
+        if (v.contains("template")) {
+            pass.templateName = templateRef(v["template"], p + "/template");
+            if (pass.templateName.ends_with(".glsl")) pass.templateAsWritten = v["template"].get<std::string>();
+        }
+        pass.slots = names(v, p, "slots");
+        pass.materials = names(v, p, "materials");
+        std::vector<std::string> all;
+        for (const Material& m : scene.materials) all.push_back(m.name);
+        for (size_t j = 0; pass.materials && j < pass.materials->size(); ++j) {
+            const std::string& name = (*pass.materials)[j];
+            if (std::find(all.begin(), all.end(), name) != all.end()) continue;
+            std::string hint;
+            if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
+            report(Code::UnknownReference, pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
+        }
+        scene.passes.push_back(std::move(pass));
+    }
+};
+
+}  // namespace
+
+bool isSceneDocument(std::string_view text) {
+    Diagnostics ignored;
+    std::optional<nlohmann::json> doc = parseJson(text, {}, &ignored);
+    return doc && doc->is_object() && doc->contains("scene");
+}
+
+SceneParseResult parseSceneFile(const std::filesystem::path& file) { return readAndParse(file, "scene", &parseScene); }
+
+SceneParseResult parseScene(std::string_view text, const std::filesystem::path& file) {
+    return validate(text, file, &SceneParseResult::scene, &SceneValidator::runScene);
+}
+
+}  // namespace hexc
