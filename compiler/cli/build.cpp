@@ -262,31 +262,52 @@ Outputs collectOutputs(const Arguments& a, const Inputs& in) {
     return out;
 }
 
-// Every output as a target (the manifests, the shaders of each --targets and stage, the scene indexes) and every
-// file read.
-std::string depfileFor(const Arguments& a, const Inputs& in) {
-    std::vector<std::filesystem::path> outs, ins;
-    std::set<std::filesystem::path> seenIn;
-    const std::set<Target> targets(a.options.targets.begin(), a.options.targets.end());
+// Every file the run writes, known from planning alone: each job's (outputNames) and the scene indexes. They are what
+// --list-outputs prints and the depfile's targets, so no depfile names an output a build system was not told of.
+std::vector<std::filesystem::path> plannedOutputs(const Arguments& a, const Inputs& in, Diagnostics& diags) {
+    std::vector<std::filesystem::path> outs;
     for (const SceneSummary& s : in.scenes) outs.push_back(a.outDir / (s.scene.name + ".scene.json"));
     for (const Job& j : in.jobs) {
-        outs.push_back(a.outDir / (j.material.name + ".manifest.json"));
-        for (Target t : targets) outs.push_back(a.outDir / shaderFileName(j.material.name, t));
-        if (a.options.vertex)
-            for (Target t : targets) outs.push_back(a.outDir / shaderFileName(j.material.name, t, "vert"));
-        if (a.options.emitGenerated) outs.push_back(a.outDir / (j.material.name + ".generated.frag"));
-        // The histogram blend's textures and the packed textures, of the slots the template reads: what the compile wrote, or
-        // the stamp lists.
-        std::vector<std::string> written = j.upToDate ? stampedOutputs(a.outDir, j.material.name) : std::vector<std::string>{};
-        for (const OutputFile& f : j.result.files) written.push_back(f.name);
-        for (const std::string& f : written)
-            if (f.ends_with(".pfm") || f.ends_with(".packed.png")) outs.push_back(a.outDir / f);
+        OutputNames names = outputNames(j.material, a.options);
+        diags.insert(diags.end(), names.diagnostics.begin(), names.diagnostics.end());
+        for (const std::string& name : names.names) outs.push_back(a.outDir / name);
+    }
+    return outs;
+}
+
+// The depfile: every output as a target and every file read.
+std::string depfileFor(const Arguments& a, const Inputs& in) {
+    std::vector<std::filesystem::path> ins;
+    std::set<std::filesystem::path> seenIn;
+    for (const Job& j : in.jobs) {
         std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
         files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
         for (const auto& f : files)
             if (seenIn.insert(f).second) ins.push_back(f);
     }
-    return depfileText(outs, ins);
+    Diagnostics planned;  // the compile has reported these already
+    return depfileText(plannedOutputs(a, in, planned), ins);
+}
+
+// --list-outputs: {"outputs": [...], "inputs": [...]}, the files a build would write and those the list is decided
+// from (material and scene files, a user template, and a packing material's textures, whose pixels decide what packs:
+// a build system lists again when one changes). Writes nothing.
+int listOutputs(const Arguments& a, const Inputs& in) {
+    Diagnostics diags;
+    nlohmann::json list = {{"outputs", nlohmann::json::array()}, {"inputs", nlohmann::json::array()}};
+    for (const std::filesystem::path& f : plannedOutputs(a, in, diags)) list["outputs"].push_back(f.generic_string());
+    std::set<std::filesystem::path> seen;
+    for (const Job& j : in.jobs) {
+        std::set<std::filesystem::path> textures;
+        for (const Slot& s : j.material.slots) textures.insert(s.texturePath);
+        std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
+        files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
+        for (const auto& f : files)
+            if ((j.material.pack || !textures.contains(f)) && seen.insert(f).second) list["inputs"].push_back(f.generic_string());
+    }
+    if (!printDiagnostics(diags, a)) return kInvalidInput;
+    std::cout << list.dump(2) << "\n";
+    return kOk;
 }
 
 // The output folder, created if missing; throws with the reason in a user's words when it cannot be.
@@ -366,6 +387,7 @@ int buildCommand(const Arguments& a) {
     }
     Inputs in = readInputs(a);
     bool ok = inputsFit(a, in) && !in.failed;
+    if (ok && a.listOutputs) return listOutputs(a, in);
     if (!ok || !compileJobs(a, in.jobs, in.cache)) {
         std::cerr << "hexc: nothing written\n";
         return kInvalidInput;

@@ -173,6 +173,9 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     app.add_flag_callback(
         "--no-shared-lattice", [&] { a.options.shareLattice = false; }, "evaluate the lattice per slot even where slots could share it");
     app.add_option("--depfile", a.depfile, "write a make-style dependency file for Make and Ninja")->type_name("FILE");
+    app.add_flag("--list-outputs", a.listOutputs,
+                 "print, as JSON, the files a build would write (\"outputs\") and those that\n"
+                 "list depends on (\"inputs\"); compile and write nothing (docs/cli.md)");
     app.add_option("--variant", a.variants, "compile only this scene variant (repeatable)")
         ->type_name("MATERIAL.PASS")
         ->allow_extra_args(false);
@@ -201,6 +204,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         return kUsage;
     }
     a.materials.assign(materials.begin(), materials.end());
+    a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
     if (manifestPaths) a.options.manifestPathsFrom = a.outDir;
     applyNames(targets, glsl, msl, a.options);
     if (!resolveLayout(layoutFile, flags, a.options.layout)) return kInvalidInput;

@@ -26,6 +26,7 @@ struct Arguments {
     bool verbose = false;               // -v: what was compiled, skipped, shared, and why
     bool warnings = true;               // --no-warnings turns them off
     bool force = false;                 // --force: compile even what the stamps say is up to date
+    bool listOutputs = false;           // --list-outputs: print the files a build would write; compile nothing
     unsigned jobs = 0;                  // -j: materials compiled at once; 0: one per core
     std::filesystem::path cacheDir;     // --cache-dir; empty: no folder cache (--no-cache, or no home folder)
 };

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "hexc/compiler.h"
@@ -255,9 +256,92 @@ TEST(Depfile, ListsEveryInputWithMakeEscapes) {
     const std::string material = esc((dir / "tiles.json").string()), texture = esc((dir / "textures" / "tiles_albedo.png").string());
     // The rule, then an empty rule per input (gcc -MP), so that deleting an input re-runs hexc instead of stopping Make.
     // Every output is a target: the manifest and the four shaders.
-    std::string outputs = esc((out / "tiles.manifest.json").string());
-    for (const char* ext : {"spv", "hlsl", "glsl", "metal"}) outputs += " " + esc((out / ("tiles.frag." + std::string(ext))).string());
+    std::string outputs;
+    for (const char* ext : {"glsl", "hlsl", "metal", "spv"}) outputs += esc((out / ("tiles.frag." + std::string(ext))).string()) + " ";
+    outputs += esc((out / "tiles.manifest.json").string());
     EXPECT_EQ(read(out / "tiles.d"), outputs + ": " + material + " " + texture + "\n\n" + material + ":\n\n" + texture + ":\n");
+}
+
+// The targets of a depfile's first rule, unescaped.
+std::set<std::string> depfileTargets(const std::string& text) {
+    std::set<std::string> targets;
+    std::string path;
+    for (size_t i = 0; i < text.find(": "); ++i) {
+        if (text[i] == ' ') {
+            targets.insert(path);
+            path.clear();
+            continue;
+        }
+        if ((text[i] == '\\' && (text[i + 1] == ' ' || text[i + 1] == '#')) || (text[i] == '$' && text[i + 1] == '$')) ++i;
+        path += text[i];
+    }
+    targets.insert(path);
+    return targets;
+}
+
+// --list-outputs, run before the build, names exactly the files the build writes (the stamps apart) and the depfile's
+// targets, for every kind of output: a histogram slot the template reads (and one it does not: no tables), a packed
+// texture, a MaterialX document, a scene's variants and index, the vertex stage, the generated GLSL.
+TEST(Outputs, ListedBeforeTheBuildAreExactlyThoseWritten) {
+    const fs::path dir = copyOfMaterials("hexc_list_outputs"), out = dir / "out dir";
+    std::ofstream(dir / "h.json") << R"({"name": "h", "template": "unlit", "hextiling": {"blend": "histogram", "tiling": 3},
+        "slots": [{"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png"},
+                  {"name": "unread", "kind": "scalar", "texture": "textures/rock_height.png"}]})";
+    std::ofstream(dir / "p.json") << R"({"name": "p", "pack": true, "slots": [
+        {"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"},
+        {"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"}]})";
+    const std::string inputs = "'" + (dir / "h.json").string() + "' '" + (dir / "p.json").string() + "' '" +
+                               (dir / "mtlx/rock.mtlx").string() + "' '" + (dir / "scenes/forest.json").string() + "' -o '" + out.string() +
+                               "' --vertex --emit-generated";
+    const nlohmann::json list = nlohmann::json::parse(hexc::test::runHexcStdout(inputs + " --list-outputs"));
+    ASSERT_FALSE(fs::exists(out)) << "--list-outputs wrote its output folder";
+    std::set<std::string> listed;
+    for (const auto& o : list["outputs"]) listed.insert(o.get<std::string>());
+    EXPECT_EQ(listed.size(), list["outputs"].size()) << "an output listed twice";
+    for (const char* f : {"h.albedo.gaussian.pfm", "h.albedo.lut.pfm", "p.albedo.packed.png", "rock.vert.metal", "forest.scene.json",
+                          "tiles.shadow.frag.spv", "p.generated.frag"})
+        EXPECT_TRUE(listed.contains((out / f).string())) << f << " not listed";
+    EXPECT_FALSE(listed.contains((out / "h.unread.gaussian.pfm").string())) << "a slot the template does not read has no tables";
+    // The inputs the list is decided from: the material and scene files, and the textures of the packing material only.
+    const std::vector<std::string> decidedBy = list["inputs"];
+    EXPECT_NE(std::find(decidedBy.begin(), decidedBy.end(), (dir / "textures/rock_roughness.png").string()), decidedBy.end());
+    EXPECT_EQ(std::find(decidedBy.begin(), decidedBy.end(), (dir / "textures/tiles_albedo.png").string()), decidedBy.end());
+
+    std::string err;
+    ASSERT_EQ(runHexc(inputs + " --no-cache --depfile '" + (dir / "all.d").string() + "'", &err), 0) << err;
+    std::set<std::string> written;
+    for (const auto& e : fs::directory_iterator(out))
+        if (!e.path().filename().string().ends_with(".hexc-stamp")) written.insert(e.path().string());
+    EXPECT_EQ(written, listed);
+    EXPECT_EQ(depfileTargets(read(dir / "all.d")), listed);
+    // Once up to date (nothing compiled), the depfile still names them all.
+    ASSERT_EQ(runHexc(inputs + " --depfile '" + (dir / "again.d").string() + "'", &err), 0) << err;
+    EXPECT_EQ(depfileTargets(read(dir / "again.d")), listed);
+}
+
+// The library's outputNames is compile()'s file list, planned only; which slots pack depends on pixels: a colour
+// texture with one translucent texel keeps its alpha, and nothing packs.
+TEST(Outputs, OutputNamesAreTheFilesCompileReturns) {
+    const fs::path dir = copyOfMaterials("hexc_output_names");
+    Texture albedo = loadTexture(dir / "textures/rock_albedo.png", false);
+    for (const bool opaque : {true, false}) {
+        albedo.rgba8[4 * 17 + 3] = opaque ? 255 : 254;
+        std::ofstream(dir / "textures/a.png", std::ios::binary) << pngBytes(albedo);
+        std::ofstream(dir / "p.json") << R"({"name": "p", "pack": true, "slots": [
+            {"name": "albedo", "kind": "color", "texture": "textures/a.png"},
+            {"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"}]})";
+        ParseResult parsed = parseMaterial(read(dir / "p.json"), dir / "p.json");
+        ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
+        CompileOptions options;
+        options.targets = {Target::Msl, Target::Spirv};
+        options.vertex = true;
+        const CompileResult compiled = compile(*parsed.material, options);
+        ASSERT_TRUE(compiled.ok()) << formatAll(compiled.diagnostics);
+        std::vector<std::string> names;
+        for (const OutputFile& f : compiled.files) names.push_back(f.name);
+        EXPECT_EQ(outputNames(*parsed.material, options).names, names);
+        EXPECT_EQ(std::find(names.begin(), names.end(), "p.albedo.packed.png") != names.end(), opaque);
+    }
 }
 
 // The manifest names a material's template file as the material wrote it: compiling the same material from

@@ -69,6 +69,16 @@ struct CompileResult {
 // Never throws on bad input: problems (template errors included) come back as diagnostics.
 CompileResult compile(const Material& material, const CompileOptions& options = {});
 
+// The names of the files compile() writes for `material` with `options`, sorted, found by planning it only (no shader
+// is compiled): for a build system that declares every output before it runs hexc (hexc --list-outputs). Empty with
+// the errors when the plan fails. The histogram tables and packed textures depend on the template (the slots it reads)
+// and a pack on its textures' pixels (an opaque colour texture leaves alpha free).
+struct OutputNames {
+    std::vector<std::string> names;
+    Diagnostics diagnostics;
+};
+OutputNames outputNames(const Material& material, const CompileOptions& options = {});
+
 const char* version();
 
 // A shader source without the two banner lines compile() writes on top (after GLSL's #version line), which name
