@@ -1,30 +1,42 @@
-# hexc_add_materials(<target> MATERIALS <material.json|.mtlx>... OUTPUT_DIR <dir>
+# hexc_add_materials(<target> MATERIALS <material.json|.mtlx|scene.json>... OUTPUT_DIR <dir>
 #                    [TARGETS spirv|hlsl|glsl|msl ...] [OPTIONS <hexc option>...])
 #
-# One build rule per material, running hexc::hexc with a depfile, so a change to the material, a texture or a
-# template rebuilds that material only. Every output is declared (<dir>/<name>.frag.{spv,hlsl,glsl,metal} for the
-# chosen TARGETS, default all four, and <dir>/<name>.manifest.json), so a deleted output is rebuilt and other
-# rules can depend on the files. <name> is the material's "name" (each <surfacematerial>'s for a MaterialX
-# document, docs/materialx.md); CMake reads it at configure time and re-configures when a material file changes. <target> (ALL) builds them all; its HEXC_OUTPUTS property lists
-# the files.
-# The materials a file holds: a JSON material's "name", or each <surfacematerial>'s of a MaterialX document.
-function(_hexc_material_names file out)
-  file(READ ${file} text)
-  if(file MATCHES "\\.[mM][tT][lL][xX]$")
-    string(REGEX MATCHALL "<surfacematerial[^>]*>" elements "${text}")
-    set(names)
-    foreach(element IN LISTS elements)
-      if(element MATCHES "[ \t\r\n]name=\"([^\"]*)\"")
-        list(APPEND names ${CMAKE_MATCH_1})
-      endif()
-    endforeach()
-  else()
-    string(JSON names ERROR_VARIABLE error GET "${text}" name)
-    if(error)
-      message(FATAL_ERROR "hexc_add_materials: ${file} has no material name: ${error}")
-    endif()
+# One build rule per file, running hexc::hexc with a depfile, so a change to the material, a texture or a template
+# rebuilds that file's shaders only. Every output is declared: at configure time `hexc --list-outputs` (with the
+# same options) names the files each rule writes (shaders, manifests, histogram tables, packed textures, vertex
+# stages, scene variants and index), and CMake configures again when one of the files that list depends on changes
+# (the material, a scene, a template, a packing material's textures) or hexc does. So a deleted output is rebuilt,
+# other rules can depend on any of them, and no depfile names an undeclared output. <target> (ALL) builds them all;
+# its HEXC_OUTPUTS property lists the files. Uses no compiler: works in a project(... LANGUAGES NONE).
+
+# The hexc executable of the imported target, to run at configure time.
+function(_hexc_executable out)
+  get_target_property(configs hexc::hexc IMPORTED_CONFIGURATIONS)
+  list(GET configs 0 config)
+  get_target_property(exe hexc::hexc IMPORTED_LOCATION_${config})
+  set(${out} ${exe} PARENT_SCOPE)
+endfunction()
+
+# Fills <outputs> and <inputs> from `hexc <file> <args> --list-outputs`; stops the configure step with hexc's
+# diagnostics when the file does not plan.
+function(_hexc_list_outputs hexc file args outputs inputs)
+  execute_process(COMMAND ${hexc} ${file} ${args} --list-outputs
+    OUTPUT_VARIABLE json ERROR_VARIABLE errors RESULT_VARIABLE failed)
+  if(failed)
+    message(FATAL_ERROR "hexc_add_materials: ${file}:\n${errors}")
   endif()
-  set(${out} ${names} PARENT_SCOPE)
+  foreach(key IN ITEMS outputs inputs)
+    set(list)
+    string(JSON count LENGTH "${json}" ${key})
+    if(count GREATER 0)
+      math(EXPR last "${count} - 1")
+      foreach(i RANGE ${last})
+        string(JSON path GET "${json}" ${key} ${i})
+        list(APPEND list ${path})
+      endforeach()
+    endif()
+    set(${${key}} ${list} PARENT_SCOPE)
+  endforeach()
 endfunction()
 
 function(hexc_add_materials target)
@@ -36,42 +48,34 @@ function(hexc_add_materials target)
   if(NOT arg_TARGETS)
     set(arg_TARGETS spirv hlsl glsl msl)
   endif()
-  set(extension_spirv spv)
-  set(extension_hlsl hlsl)
-  set(extension_glsl glsl)
-  set(extension_msl metal)
   foreach(t IN LISTS arg_TARGETS)
-    if(NOT DEFINED extension_${t})
+    if(NOT t MATCHES "^(spirv|hlsl|glsl|msl)$")
       message(FATAL_ERROR "hexc_add_materials(${target}): unknown target `${t}`; expected spirv, hlsl, glsl or msl")
     endif()
   endforeach()
   list(JOIN arg_TARGETS "," targets)
   cmake_path(ABSOLUTE_PATH arg_OUTPUT_DIR BASE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR} NORMALIZE OUTPUT_VARIABLE out_dir)
+  _hexc_executable(hexc)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${hexc})
   set(all_outputs)
   set(depfile_dir ${CMAKE_CURRENT_BINARY_DIR}/hexc/${target})
   file(MAKE_DIRECTORY ${depfile_dir})
   foreach(material IN LISTS arg_MATERIALS)
     cmake_path(ABSOLUTE_PATH material BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR} NORMALIZE OUTPUT_VARIABLE file)
-    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file})
-    _hexc_material_names(${file} names)
-    if(NOT names)
-      message(FATAL_ERROR "hexc_add_materials(${target}): ${file} names no material")
-    endif()
-    set(outputs)
-    foreach(name IN LISTS names)
-      list(APPEND outputs ${out_dir}/${name}.manifest.json)
-      foreach(t IN LISTS arg_TARGETS)
-        list(APPEND outputs ${out_dir}/${name}.frag.${extension_${t}})
-      endforeach()
-    endforeach()
-    cmake_path(GET file STEM stem)
-    set(depfile ${depfile_dir}/${stem}.d)
-    list(JOIN names " " comment)
+    set(args -o ${out_dir} --targets ${targets} ${arg_OPTIONS})
+    _hexc_list_outputs(${hexc} ${file} "${args}" outputs inputs)
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file} ${inputs})
+    cmake_path(GET file FILENAME name)
+    # Named after the outputs: Ninja reads a rule's depfile before it runs the rule, and the one an earlier output set
+    # wrote would name an output no longer declared (a removed slot's tables) and stop the build.
+    string(MD5 set "${outputs}")
+    string(SUBSTRING ${set} 0 12 set)
+    set(depfile ${depfile_dir}/${name}.${set}.d)
     add_custom_command(OUTPUT ${outputs}
-      COMMAND hexc::hexc ${file} -o ${out_dir} --targets ${targets} --depfile ${depfile} -q ${arg_OPTIONS}
+      COMMAND hexc::hexc ${file} ${args} --depfile ${depfile} -q
       DEPENDS ${file} hexc::hexc
       DEPFILE ${depfile}
-      COMMENT "hexc: compiling ${comment}"
+      COMMENT "hexc: compiling ${name}"
       VERBATIM)
     list(APPEND all_outputs ${outputs})
   endforeach()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The consumer test: installs hexc from BUILD into a fresh prefix, builds tests/consumer/project against the
-# installed package with GENERATOR, and checks what each edit rebuilds (counted from the rules' "hexc: compiling"
-# lines):
+# The consumer test: installs hexc from BUILD into a fresh prefix, builds tests/consumer/project (an asset-only
+# project, LANGUAGES NONE) against the installed package with GENERATOR, and checks what each edit rebuilds
+# (counted from the rules' "hexc: compiling" lines) and that every build is clean; then builds
+# tests/consumer/library, which asks for the library component:
 #   tests/consumer/run.sh BUILD "Ninja"|"Unix Makefiles"
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -12,17 +13,34 @@ cmake --install "$build" --prefix "$work/prefix" > /dev/null
 
 src=$work/src
 cp -r tests/consumer/project "$src"
-mkdir -p "$src/materials/textures"
-cp materials/textures/rock_albedo.png "$src/materials/textures/stone.png"
-cp materials/textures/tiles_albedo.png "$src/materials/textures/moss.png"
-material() {  # NAME TEXTURE TILING
-  printf '{"name": "%s", "template": "unlit", "hextiling": {"tiling": %s},\n "slots": [{"name": "albedo", "kind": "color", "texture": "textures/%s"}]}\n' \
-    "$1" "$3" "$2" > "$src/materials/$1.json"
+tex=$src/materials/textures
+mkdir -p "$tex"
+cp materials/textures/rock_albedo.png "$tex/stone.png"
+cp materials/textures/tiles_albedo.png "$tex/moss.png"
+cp materials/textures/rock_albedo.png "$tex/gravel.png"
+cp materials/textures/rock_roughness.png "$tex/gravel_r.png"
+cp materials/textures/tiles_albedo.png "$tex/crate.png"
+cp materials/textures/rock_roughness.png "$tex/crate_r.png"
+cp materials/textures/tiles_albedo.png "$tex/pebble.png"
+slot() { printf '{"name": "%s", "kind": "%s", "texture": "textures/%s"}' "$@"; }
+material() {  # NAME TEXTURE TILING: unlit, one colour slot
+  printf '{"name": "%s", "template": "unlit", "hextiling": {"tiling": %s},\n "slots": [%s]}\n' "$1" "$3" "$(slot albedo color "$2")" \
+    > "$src/materials/$1.json"
 }
 material stone stone.png 4
 material moss moss.png 3
+material pebble pebble.png 2
+gravel() {  # SLOTS...: histogram blend, each slot's tables written (lit reads albedo and roughness)
+  printf '{"name": "gravel", "template": "lit", "hextiling": {"blend": "histogram"}, "slots": [%s]}\n' "$(IFS=,; echo "$*")" \
+    > "$src/materials/gravel.json"
+}
+gravel "$(slot albedo color gravel.png)" "$(slot roughness scalar gravel_r.png)"
+printf '{"name": "crate", "template": "lit", "pack": true, "slots": [%s, %s]}\n' "$(slot albedo color crate.png)" \
+  "$(slot roughness scalar crate_r.png)" > "$src/materials/crate.json"
+printf '{"scene": "yard", "materials": ["stone.json", "moss.json"],\n "passes": [{"name": "main"}, {"name": "depth", "template": "depth", "slots": []}]}\n' \
+  > "$src/materials/yard.json"
 mtlx() {  # TILING: slate, a MaterialX document (docs/materialx.md)
-  cat > "$src/materials/slate.mtlx" <<EOF
+  cat > "$src/materials/slate.mtlx" <<MTLX
 <?xml version="1.0"?>
 <materialx version="1.39">
   <hextiledimage name="slate_albedo" type="color3">
@@ -36,55 +54,108 @@ mtlx() {  # TILING: slate, a MaterialX document (docs/materialx.md)
     <input name="surfaceshader" type="surfaceshader" nodename="slate_surface" />
   </surfacematerial>
 </materialx>
-EOF
+MTLX
 }
 mtlx "2, 2"
-
-fail() { echo "consumer ($generator): $*" >&2; exit 1; }
-# Builds and checks which materials hexc compiled: expect NAME... (none for a no-op).
-expect() {
-  cmake --build "$work/bin" > "$work/log" 2>&1 || { cat "$work/log"; fail "build failed"; }
-  got=$(sed -n 's/.*hexc: compiling \([a-z]*\).*/\1/p' "$work/log" | sort | xargs)
-  [ "$got" = "$*" ] || { cat "$work/log"; fail "$step: expected hexc to compile [$*], it compiled [$got]"; }
-  echo "ok: $step: [$got]"
+# An RGB PNG of W x H whose texels depend on SEED, written with Python's standard library only.
+png() {  # FILE W H SEED
+  python3 - "$@" <<'PY'
+import struct, sys, zlib
+file, w, h, seed = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+rows = b"".join(b"\0" + bytes((x * 7 + y * 3 + seed * (c + 1)) % 256 for x in range(w) for c in range(3)) for y in range(h))
+chunk = lambda kind, data: struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+open(file, "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
+                       + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+PY
 }
 
-cmake -S "$src" -B "$work/bin" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" || { cat "$work/configure.log"; fail "configure failed"; }
-step="first build" expect moss slate stone
-for f in moss.manifest.json moss.frag.spv moss.frag.hlsl moss.frag.metal stone.frag.spv slate.frag.spv; do
-  [ -s "$work/bin/shaders/$f" ] || fail "first build: shaders/$f missing"
+fail() { echo "consumer ($generator): $*" >&2; exit 1; }
+out=$work/bin
+# Builds and checks which files' rules ran hexc: expect NAME... (none for a no-op). Every build is clean: no error
+# and no warning, from hexc, CMake (a re-configure) or the build tool.
+expect() {
+  cmake --build "$out" > "$work/log" 2>&1 || { cat "$work/log"; fail "$step: build failed"; }
+  ! grep -i "warning\|error" "$work/log" || fail "$step: the build printed the lines above"
+  got=$(sed -n 's/.*hexc: compiling \([a-z]*\).*/\1/p' "$work/log" | sort | xargs)
+  [ "$got" = "$*" ] || { cat "$work/log"; fail "$step: expected hexc to run for [$*], it ran for [$got]"; }
+  echo "ok: $step: [$got]"
+}
+# A file's hash, to tell rewritten bytes from refreshed times.
+sum() { sha256sum "$out/$1" | cut -d' ' -f1; }
+
+cmake -S "$src" -B "$out" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" 2>&1 ||
+  { cat "$work/configure.log"; fail "configure failed"; }
+! grep -i "warning" "$work/configure.log" || fail "the configure step printed warnings"
+step="first build" expect crate gravel moss pebble slate stone yard
+for f in shaders/{moss.manifest.json,moss.frag.spv,moss.frag.hlsl,moss.frag.metal,stone.frag.spv,slate.frag.spv} \
+  shaders/gravel.{albedo,roughness}.{gaussian,lut}.pfm shaders/crate.albedo.packed.png vertex/pebble.{frag,vert}.glsl \
+  scene/yard.scene.json scene/{stone,moss}.{main,depth}.frag.spv bundle.txt; do
+  [ -s "$out/$f" ] || fail "first build: $f missing"
 done
-[ ! -e "$work/bin/shaders/moss.frag.glsl" ] || fail "TARGETS spirv hlsl msl wrote a .glsl"
+[ ! -e "$out/shaders/moss.frag.glsl" ] || fail "TARGETS spirv hlsl msl wrote a .glsl"
 step="no-op rebuild" expect
+if [ "$generator" = Ninja ]; then
+  grep -q "ninja: no work to do" "$work/log" || { cat "$work/log"; fail "the no-op build did some work"; }
+fi
+
+# New pixels, same size: the histogram tables and the packed texture are derived again, the shaders keep their bytes;
+# a plain material's rule runs (its texture is newer) but hexc compiles nothing (its stamp is not rewritten).
+shaders_before=$(sum shaders/gravel.frag.spv)$(sum shaders/crate.frag.hlsl)
+lut_before=$(sum shaders/gravel.albedo.lut.pfm) packed_before=$(sum shaders/crate.albedo.packed.png)
+pebble_stamp=$(stat -c %y "$out/vertex/.pebble.hexc-stamp")  # written only when hexc compiles
+cp materials/textures/tiles_albedo.png "$tex/gravel.png"
+cp materials/textures/rock_height.png "$tex/crate_r.png"
+cp materials/textures/rock_albedo.png "$tex/pebble.png"
+step="pixels edited" expect crate gravel pebble
+[ "$(sum shaders/gravel.frag.spv)$(sum shaders/crate.frag.hlsl)" = "$shaders_before" ] || fail "new pixels changed the shaders"
+[ "$(sum shaders/gravel.albedo.lut.pfm)" != "$lut_before" ] || fail "gravel's look-up table was not derived again"
+[ "$(sum shaders/crate.albedo.packed.png)" != "$packed_before" ] || fail "crate's packed texture was not derived again"
+[ "$(stat -c %y "$out/vertex/.pebble.hexc-stamp")" = "$pebble_stamp" ] || fail "hexc compiled pebble for new pixels"
+step="after the pixel edit" expect
 
 material stone stone.png 5
-step="edited stone.json" expect stone
+step="edited stone.json (also in the scene)" expect stone yard
 
 mtlx "3, 3"
 step="edited slate.mtlx" expect slate
 
-rm "$work/bin/shaders/moss.frag.hlsl"
-step="deleted moss.frag.hlsl" expect moss
-[ -s "$work/bin/shaders/moss.frag.hlsl" ] || fail "moss.frag.hlsl was not regenerated"
+# The outputs the first issue was about: a histogram table and a packed texture, deleted.
+rm "$out/shaders/gravel.albedo.lut.pfm" "$out/shaders/crate.albedo.packed.png" "$out/vertex/pebble.vert.glsl"
+step="deleted a table, a packed texture and a vertex stage" expect crate gravel pebble
+for f in shaders/gravel.albedo.lut.pfm shaders/crate.albedo.packed.png vertex/pebble.vert.glsl; do
+  [ -s "$out/$f" ] || fail "$f was not regenerated"
+done
 
-# Another size: the shaders read a texture's size, so the material that reads it rebuilds, and only that one.
-cp materials/textures/rock_height.png "$src/materials/textures/moss.png"
-step="moss.png replaced" expect moss
+# Another size: the shaders read a texture's size, so the files that read it rebuild (moss and the scene), only they.
+moss_stamp=$(sum shaders/.moss.hexc-stamp)
+png "$tex/moss.png" 97 61 1
+step="moss.png resized" expect moss yard
+[ "$(sum shaders/.moss.hexc-stamp)" != "$moss_stamp" ] || fail "hexc did not compile moss for its texture's new size"
+
+# A slot removed: its tables go, from the folder and from the declared outputs.
+gravel "$(slot albedo color gravel.png)"
+step="gravel's roughness slot removed" expect gravel
+for f in shaders/gravel.roughness.{gaussian,lut}.pfm; do [ ! -e "$out/$f" ] || fail "stale $f left behind"; done
+step="after the slot removal" expect
 
 # Touched, not changed: hexc may run once (its stamp says the shaders stand) and must leave the build settled.
-touch "$src/materials/textures/moss.png"
-cmake --build "$work/bin" > "$work/log" 2>&1 || { cat "$work/log"; fail "build after touching moss.png failed"; }
+touch "$tex/moss.png"
+cmake --build "$out" > "$work/log" 2>&1 || { cat "$work/log"; fail "build after touching moss.png failed"; }
 step="moss.png touched, built again" expect
 
 # A renamed texture: the material names the new file; the old one is gone (no "No rule to make target").
-mv "$src/materials/textures/moss.png" "$src/materials/textures/moss2.png"
+cp "$tex/moss.png" "$tex/moss2.png"
 material moss moss2.png 3
-step="moss.png renamed" expect moss
+step="moss.png renamed" expect moss yard
 # Ninja settles at once. CMake 3.25's Makefile generator merges each depfile into its own dependency list
 # (compiler_depend.make) and keeps the old texture there, so Make re-runs the rule on later builds; hexc then
 # finds its stamp up to date and compiles nothing (docs/build-integration.md says so).
 if [ "$generator" = Ninja ]; then step="after the rename" expect; fi
 
-"$work/bin/compile_one" "$src/materials/stone.json" > "$work/compiled" || fail "compile_one failed"
+# The library component, in a project of its own (it needs a C++ compiler).
+cmake -S tests/consumer/library -B "$work/library" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" 2>&1 ||
+  { cat "$work/configure.log"; fail "configuring the library consumer failed"; }
+cmake --build "$work/library" > "$work/log" 2>&1 || { cat "$work/log"; fail "building compile_one failed"; }
+"$work/library/compile_one" "$src/materials/stone.json" > "$work/compiled" || fail "compile_one failed"
 grep -qx stone.frag.spv "$work/compiled" || fail "compile_one (hexc::compiler) did not compile stone: $(cat "$work/compiled")"
-echo "ok: hexc::compiler links and compiles"
+echo "ok: hexc::compiler (COMPONENTS library) links and compiles"
