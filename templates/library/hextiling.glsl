@@ -11,22 +11,26 @@ const float hexcPi = 3.14159265358979;
 // Listing 4, Eq. 4: Rec. 601 luminance weights.
 const vec4 hexcLuma = vec4(0.299, 0.587, 0.114, 0.0);
 
-// The per-pixel lattice data every slot with the same coordinate shares: Listing 1's weights and tile
-// ids, and per tile the sample coordinate, its screen-space gradients and the tile rotation.
+// One tap: a tile's sample point, its screen-space gradients (rotated and scaled with the tile), the tile's rotation
+// and 1 / its texture scale (1 without per-tile transforms).
+struct HexcTap {
+    vec2 st, dx, dy;
+    vec2 rot;                    // (cos, sin) of the tile's rotation angle
+    float invScale;
+};
+
+// The per-pixel lattice data every slot with the same coordinate shares: Listing 1's weights and tile ids, and
+// each tile's tap.
 struct HexcTiles {
     vec3 w;                      // barycentric weights of the three hex tiles, sum 1
-    vec3 invScale;               // 1 / each tile's texture scale (1 without per-tile transforms)
-    bool scaled;                 // literal: false when invScale is 1 (no per-tile transforms)
-    ivec2 v1, v2, v3;            // integer lattice ids of the three tile centres
-    vec2 st1, st2, st3;          // per-tile sample coordinates (rotated and offset)
-    vec2 dx1, dx2, dx3;          // per-tile d(st)/dx, rotated with the tile
-    vec2 dy1, dy2, dy3;          // per-tile d(st)/dy
-    vec2 rot1, rot2, rot3;       // (cos, sin) of each tile's rotation angle
+    bool scaled;                 // literal: false when every invScale is 1 (no per-tile transforms)
+    ivec2 id[3];                 // integer lattice ids of the three tile centres
+    HexcTap tap[3];
     ivec3 channel;               // the weights output's channel of each tile (Listing 7 for the hex mask)
 };
 
 // Listing 1, from skewed lattice coordinates: barycentric weights and the three tile ids.
-void hexcTriangle(vec2 skewed, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2 v3) {
+void hexcTriangle(vec2 skewed, out vec3 w, out ivec2 id[3]) {
     ivec2 baseId = ivec2(floor(skewed));
     vec3 temp = vec3(skewed - floor(skewed), 0.0);
     temp.z = 1.0 - temp.x - temp.y;
@@ -34,15 +38,15 @@ void hexcTriangle(vec2 skewed, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2
     float s2 = 2.0 * s - 1.0;
     w = vec3(-temp.z * s2, s - temp.y * s2, s - temp.x * s2);
     int si = int(s);
-    v1 = baseId + ivec2(si, si);
-    v2 = baseId + ivec2(si, 1 - si);
-    v3 = baseId + ivec2(1 - si, si);
+    id[0] = baseId + ivec2(si, si);
+    id[1] = baseId + ivec2(si, 1 - si);
+    id[2] = baseId + ivec2(1 - si, si);
 }
 
 // Listing 1: st *= 2 sqrt(3), then skew into the simplex grid with rows (1, -1/sqrt(3)) and (0, 2/sqrt(3)).
-void hexcTriangleGrid(vec2 st, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2 v3) {
+void hexcTriangleGrid(vec2 st, out vec3 w, out ivec2 id[3]) {
     st *= 2.0 * sqrt(3.0);
-    hexcTriangle(vec2(st.x - 0.57735027 * st.y, 1.15470054 * st.y), w, v1, v2, v3);
+    hexcTriangle(vec2(st.x - 0.57735027 * st.y, 1.15470054 * st.y), w, id);
 }
 
 // Listing 2: the paper's per-tile offset, fract(sin(M p) * 43758.5453) with M rows (127.1, 311.7), (269.5, 183.3).
@@ -121,24 +125,28 @@ HexcLattice hexcLattice() {
     return HexcLattice(0.0, false, false, vec2(-180.0, 180.0), 0, vec2(1.0), 1.0, ivec2(0), 1, false);
 }
 
-// Listings 3-4, shared part, `paper` mode: st_i = (st - c_i) R_i + c_i + hash(v_i), gradients rotated
-// with the tile. Derivatives of the continuous st are taken once, before the lattice.
+// Listings 3-4, shared part, `paper` mode: tile `id`'s tap at st_i = (st - c_i) R_i + c_i + hash(v_i), gradients
+// rotated with the tile.
+HexcTap hexcPaperTap(ivec2 id, vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
+    HexcTap p;
+    p.invScale = 1.0;
+    p.rot = l.rotate ? hexcRotationPaper(id, l.rotation) : vec2(1.0, 0.0);
+    vec2 c = hexcTileCentre(id);
+    p.st = hexcRotateToTile(st - c, p.rot) + c + hexcHashPaper(id);
+    p.dx = hexcRotateToTile(dSTdx, p.rot);
+    p.dy = hexcRotateToTile(dSTdy, p.rot);
+    return p;
+}
+
+// Derivatives of the continuous st are taken once, before the lattice.
 HexcTiles hexcTilesPaper(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTiles t;
-    t.invScale = vec3(1.0);
     t.scaled = false;
-    hexcTriangleGrid(st, t.w, t.v1, t.v2, t.v3);
-    t.channel = hexcHexChannels(t.v1, t.v3);
-    t.rot1 = l.rotate ? hexcRotationPaper(t.v1, l.rotation) : vec2(1.0, 0.0);
-    t.rot2 = l.rotate ? hexcRotationPaper(t.v2, l.rotation) : vec2(1.0, 0.0);
-    t.rot3 = l.rotate ? hexcRotationPaper(t.v3, l.rotation) : vec2(1.0, 0.0);
-    vec2 c1 = hexcTileCentre(t.v1), c2 = hexcTileCentre(t.v2), c3 = hexcTileCentre(t.v3);
-    t.st1 = hexcRotateToTile(st - c1, t.rot1) + c1 + hexcHashPaper(t.v1);
-    t.st2 = hexcRotateToTile(st - c2, t.rot2) + c2 + hexcHashPaper(t.v2);
-    t.st3 = hexcRotateToTile(st - c3, t.rot3) + c3 + hexcHashPaper(t.v3);
-    t.dx1 = hexcRotateToTile(dSTdx, t.rot1); t.dy1 = hexcRotateToTile(dSTdy, t.rot1);
-    t.dx2 = hexcRotateToTile(dSTdx, t.rot2); t.dy2 = hexcRotateToTile(dSTdy, t.rot2);
-    t.dx3 = hexcRotateToTile(dSTdx, t.rot3); t.dy3 = hexcRotateToTile(dSTdy, t.rot3);
+    hexcTriangleGrid(st, t.w, t.id);
+    t.channel = hexcHexChannels(t.id[0], t.id[2]);
+    t.tap[0] = hexcPaperTap(t.id[0], st, dSTdx, dSTdy, l);
+    t.tap[1] = hexcPaperTap(t.id[1], st, dSTdx, dSTdy, l);
+    t.tap[2] = hexcPaperTap(t.id[2], st, dSTdx, dSTdy, l);
     return t;
 }
 
@@ -189,21 +197,34 @@ vec2 hexcStableCentre(ivec2 local) {
     return vec2((float(local.x) + 0.5 * float(local.y)) / hexcStableScale, 0.25 * float(local.y));
 }
 
-// Places tile i: its transform from the hash of `id`, the sample point from `d` (st relative to the point the
+// A vector into the tile's frame: rotated with it, then scaled (the code of each only when its literal is set).
+vec2 hexcToTile(vec2 v, HexcTap p, HexcLattice l) {
+    v = l.rotate ? hexcRotateToTile(v, p.rot) : v;
+    return l.transform ? v * p.invScale : v;
+}
+
+// Places tile `id`: its transform from the hash of `id`, the sample point from `d` (st relative to the point the
 // tile rotates and scales about) and the gradients, rotated and scaled with the tile.
-void hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out vec2 st, out vec2 dx, out vec2 dy, out vec2 rot,
-                   out float invScale) {
+HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
+    HexcTap p;
     vec2 offset;
-    hexcStableTile(id, l, offset, rot, invScale);
-    st = (l.rotate ? hexcRotateToTile(d, rot) : d) * invScale + offset;
-    dx = (l.rotate ? hexcRotateToTile(dSTdx, rot) : dSTdx) * invScale;
-    dy = (l.rotate ? hexcRotateToTile(dSTdy, rot) : dSTdy) * invScale;
+    hexcStableTile(id, l, offset, p.rot, p.invScale);
+    p.st = hexcToTile(d, p, l) + offset;
+    p.dx = hexcToTile(dSTdx, p, l);
+    p.dy = hexcToTile(dSTdy, p, l);
+    return p;
+}
+
+// Stable mode's tile of local (reduced) id `local`: its id, local + shift in 32-bit unsigned arithmetic (ids are only
+// hashed, so they may wrap), and its tap.
+HexcTap hexcStableTap(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out ivec2 id) {
+    id = ivec2(uvec2(local) + shift);
+    return hexcPlaceTile(id, r - hexcStableCentre(local), dSTdx, dSTdy, l);
 }
 
 // st = (28, 1) * cell + st_local: `cell` is a split-coordinates origin (0 otherwise), whose lattice shift is
-// added to the ids in 32-bit unsigned arithmetic (ids are only hashed, so they may wrap). With split coordinates
-// the engine computes the cell and the offset in st from a double origin each frame (docs/precision.md) and the
-// mesh supplies a small st relative to it, whose gradients are precise.
+// added to the ids. With split coordinates the engine computes the cell and the offset in st from a double origin
+// each frame (docs/precision.md) and the mesh supplies a small st relative to it, whose gradients are precise.
 HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l) {
     HexcTiles t;
     t.scaled = l.transform;
@@ -211,17 +232,14 @@ HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLatti
     // 7 kx < 2^24, so |st.x| < 2^26.
     float kx = floor(st.x / 28.0), ky = floor(st.y);
     vec2 r = vec2(st.x - 28.0 * kx, st.y - ky);
-    ivec2 l1, l2, l3;
-    hexcTriangle(vec2(hexcStableScale * r.x - 2.0 * r.y, 4.0 * r.y), t.w, l1, l2, l3);
+    ivec2 local[3];
+    hexcTriangle(vec2(hexcStableScale * r.x - 2.0 * r.y, 4.0 * r.y), t.w, local);
     uvec2 c = uvec2(cell) + uvec2(ivec2(kx, ky));
     uvec2 shift = uvec2(97u * c.x - 2u * c.y, 4u * c.y);
-    t.v1 = ivec2(uvec2(l1) + shift);
-    t.v2 = ivec2(uvec2(l2) + shift);
-    t.v3 = ivec2(uvec2(l3) + shift);
-    t.channel = hexcHexChannels(t.v1, t.v3);
-    hexcPlaceTile(t.v1, r - hexcStableCentre(l1), dSTdx, dSTdy, l, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
-    hexcPlaceTile(t.v2, r - hexcStableCentre(l2), dSTdx, dSTdy, l, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
-    hexcPlaceTile(t.v3, r - hexcStableCentre(l3), dSTdx, dSTdy, l, t.st3, t.dx3, t.dy3, t.rot3, t.invScale.z);
+    t.tap[0] = hexcStableTap(local[0], shift, r, dSTdx, dSTdy, l, t.id[0]);
+    t.tap[1] = hexcStableTap(local[1], shift, r, dSTdx, dSTdy, l, t.id[1]);
+    t.tap[2] = hexcStableTap(local[2], shift, r, dSTdx, dSTdy, l, t.id[2]);
+    t.channel = hexcHexChannels(t.id[0], t.id[2]);
     return t;
 }
 
@@ -244,14 +262,14 @@ HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLatt
     // dividing by the larger keeps w^exponent from underflowing there.
     vec2 m = vec2(hexcTaper(fa), hexcTaper(fb)) + 1.0 / 16777216.0;
     t.w = vec3(m / max(m.x, m.y), 0.0);
-    t.v1 = ivec2(2u * (base + uvec2(ivec2(a))));
-    t.v2 = ivec2(2u * (base + uvec2(ivec2(b))) + 1u);
-    t.v3 = t.v2;
+    t.id[0] = ivec2(2u * (base + uvec2(ivec2(a))));
+    t.id[1] = ivec2(2u * (base + uvec2(ivec2(b))) + 1u);
+    t.id[2] = t.id[1];
     t.channel = ivec3(0, 1, 1);
     float s = 1.0 / float(scale);
-    hexcPlaceTile(t.v1, (fa - 0.5) * s, dSTdx, dSTdy, l, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
-    hexcPlaceTile(t.v2, (fb - 0.5) * s, dSTdx, dSTdy, l, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
-    t.st3 = t.st2; t.dx3 = t.dx2; t.dy3 = t.dy2; t.rot3 = t.rot2; t.invScale.z = t.invScale.y;
+    t.tap[0] = hexcPlaceTile(t.id[0], (fa - 0.5) * s, dSTdx, dSTdy, l);
+    t.tap[1] = hexcPlaceTile(t.id[1], (fb - 0.5) * s, dSTdx, dSTdy, l);
+    t.tap[2] = t.tap[1];
     return t;
 }
 
@@ -282,13 +300,11 @@ HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
         float p = clamp(4.0 * hexcValueNoise(c, f, 3u) - 1.0, 0.0, 2.0);
         t.w = max(vec3(0.0), 1.0 - abs(p - vec3(0.0, 1.0, 2.0)));
     }
-    t.v1 = ivec2(0, 0);
-    t.v2 = ivec2(1, 0);
-    t.v3 = ivec2(2, 0);
+    t.id = ivec2[3](ivec2(0, 0), ivec2(1, 0), ivec2(2, 0));
     t.channel = ivec3(0, 1, 2);
-    hexcPlaceTile(t.v1, st, dSTdx, dSTdy, l, t.st1, t.dx1, t.dy1, t.rot1, t.invScale.x);
-    hexcPlaceTile(t.v2, st, dSTdx, dSTdy, l, t.st2, t.dx2, t.dy2, t.rot2, t.invScale.y);
-    hexcPlaceTile(t.v3, st, dSTdx, dSTdy, l, t.st3, t.dx3, t.dy3, t.rot3, t.invScale.z);
+    t.tap[0] = hexcPlaceTile(t.id[0], st, dSTdx, dSTdy, l);
+    t.tap[1] = hexcPlaceTile(t.id[1], st, dSTdx, dSTdy, l);
+    t.tap[2] = hexcPlaceTile(t.id[2], st, dSTdx, dSTdy, l);
     return t;
 }
 
@@ -424,23 +440,40 @@ vec3 hexcHeightBlend(vec3 W, vec3 h, float width) {
 vec3 hexcTileLods(texture2D tex, sampler samp, HexcTiles t, bool sharedLod) {
     if (!sharedLod) return vec3(0.0);
     vec2 size = vec2(textureSize(sampler2D(tex, samp), 0));
-    float lod = 0.5 * log2(max(max(dot(t.dx1, t.dx1), dot(t.dy1, t.dy1)) * size.x * size.y, 1e-30));
-    return t.scaled ? lod + log2(t.invScale / t.invScale.x) : vec3(lod);
+    HexcTap p = t.tap[0];
+    float lod = 0.5 * log2(max(max(dot(p.dx, p.dx), dot(p.dy, p.dy)) * size.x * size.y, 1e-30));
+    vec3 invScale = vec3(p.invScale, t.tap[1].invScale, t.tap[2].invScale);
+    return t.scaled ? lod + log2(invScale / p.invScale) : vec3(lod);
 }
 
-// One tile's fetch: with its own gradients (the sampler picks the level, and filters anisotropically when the
+// One tap's fetch: with its own gradients (the sampler picks the level, and filters anisotropically when the
 // sampler does), or at the level hexcTileLods gave (`sharedLod`, a literal).
-vec4 hexcFetch(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, float lod, bool sharedLod) {
-    return sharedLod ? textureLod(sampler2D(tex, samp), st, lod) : textureGrad(sampler2D(tex, samp), st, dx, dy);
+vec4 hexcFetch(texture2D tex, sampler samp, HexcTap p, float lod, bool sharedLod) {
+    return sharedLod ? textureLod(sampler2D(tex, samp), p.st, lod) : textureGrad(sampler2D(tex, samp), p.st, p.dx, p.dy);
 }
 
-// The heights of the tiles' samples from the height slot's texture (b.heightLuma picks its channel); b.taps = 2
-// (the checker) leaves the third, weightless tile unsampled.
+// The taps a slot fetches: all (b.taps = 2, the checker, leaves out the third, weightless one), or with adaptive taps
+// those that can matter.
+bvec3 hexcFetched(vec3 w, HexcBlend b) {
+    return b.adaptive ? hexcAdaptiveTaps(w, b) : bvec3(true, true, b.taps > 2);
+}
+
+// The texels of the taps `f` picks (the others read 0), every path's fetches. Adaptive taps branch around each
+// fetch, as a GPU needs to skip one: the gradients (textureGrad) or the level (textureLod, lod "shared") are
+// explicit, so a fetch in non-uniform control flow is defined. Otherwise the branches are literals the optimiser folds.
+void hexcFetchTaps(texture2D tex, sampler samp, HexcTiles t, bvec3 f, bool sharedLod, out vec4 c[3]) {
+    vec3 lod = hexcTileLods(tex, samp, t, sharedLod);
+    c = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
+    if (f.x) c[0] = hexcFetch(tex, samp, t.tap[0], lod.x, sharedLod);
+    if (f.y) c[1] = hexcFetch(tex, samp, t.tap[1], lod.y, sharedLod);
+    if (f.z) c[2] = hexcFetch(tex, samp, t.tap[2], lod.z, sharedLod);
+}
+
+// The heights of the tiles' samples from the height slot's texture (b.heightLuma picks its channel).
 vec3 hexcTileHeights(texture2D tex, sampler samp, HexcTiles t, HexcBlend b) {
-    vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
-    return vec3(dot(hexcFetch(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod), b.heightLuma),
-                dot(hexcFetch(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod), b.heightLuma),
-                b.taps > 2 ? dot(hexcFetch(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod), b.heightLuma) : 0.0);
+    vec4 h[3];
+    hexcFetchTaps(tex, samp, t, bvec3(true, true, b.taps > 2), b.sharedLod, h);
+    return vec3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
 }
 
 // The unit vector picking channel c (0 = r ... 3 = a): a scalar map's falloff metric, a height slot's height.
@@ -451,21 +484,15 @@ vec4 hexcChannel(int c) {
 
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
 // a unit vector picking the channel for scalar maps. `heightTex`: the height slot's texture (b.height).
-// Adaptive taps branch around each fetch, as a GPU needs to skip one: the gradients (textureGrad) or the level
-// (textureLod, lod "shared") are explicit, so a fetch in non-uniform control flow is defined. Without adaptive taps, the
-// branches are literals the optimiser folds.
 vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma, texture2D heightTex, out vec3 weights) {
-    bvec3 f = b.adaptive ? hexcAdaptiveTaps(t.w, b) : bvec3(true, true, b.taps > 2);
-    vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
-    vec4 c1 = vec4(0.0), c2 = vec4(0.0), c3 = vec4(0.0);
-    if (f.x) c1 = hexcFetch(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod);
-    if (f.y) c2 = hexcFetch(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod);
-    if (f.z) c3 = hexcFetch(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod);
-    vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
+    bvec3 f = hexcFetched(t.w, b);
+    vec4 c[3];
+    hexcFetchTaps(tex, samp, t, f, b.sharedLod, c);
+    vec3 Dw = vec3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
     vec3 W = hexcBlendWeights(t.w * vec3(f), Dw, b);  // a skipped tap weighs 0, the others renormalise
     if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
-    return W.x * c1 + W.y * c2 + W.z * c3;
+    return W.x * c[0] + W.y * c[1] + W.z * c[2];
 }
 
 // The histogram-preserving blend (Heitz and Neyret 2018, Deliot and Heitz 2019; hexc/histogram.h). `tex` holds each
@@ -476,13 +503,12 @@ vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma,
 // from the slot's st gradients as the sampler computes it (Euclidean lengths), and the rows are interpolated in it.
 // `scalar` (a literal): one channel, in r, and no way back to take.
 vec4 hexcHistogram(texture2D tex, texture2D lut, sampler samp, HexcTiles t, HexcBlend b, vec2 dx, vec2 dy, bool scalar, out vec3 weights) {
-    vec3 lods = hexcTileLods(tex, samp, t, b.sharedLod);
-    vec3 g1 = hexcFetch(tex, samp, t.st1, t.dx1, t.dy1, lods.x, b.sharedLod).rgb;
-    vec3 g2 = hexcFetch(tex, samp, t.st2, t.dx2, t.dy2, lods.y, b.sharedLod).rgb;
-    vec3 g3 = b.taps > 2 ? hexcFetch(tex, samp, t.st3, t.dx3, t.dy3, lods.z, b.sharedLod).rgb : vec3(0.5);
+    vec4 g[3];
+    hexcFetchTaps(tex, samp, t, bvec3(true, true, b.taps > 2), b.sharedLod, g);
     vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);
     weights = hexcShowWeights(W, t.channel);
-    vec3 G = (W.x * (g1 - 0.5) + W.y * (g2 - 0.5) + W.z * (g3 - 0.5)) * inversesqrt(dot(W, W)) + 0.5;
+    // The checker's third tap weighs 0: its unfetched 0 adds nothing.
+    vec3 G = (W.x * (g[0].rgb - 0.5) + W.y * (g[1].rgb - 0.5) + W.z * (g[2].rgb - 0.5)) * inversesqrt(dot(W, W)) + 0.5;
     vec2 size = vec2(textureSize(sampler2D(tex, samp), 0));
     vec2 ex = dx * size, ey = dy * size;
     float lod = 0.5 * log2(max(max(dot(ex, ex), dot(ey, ey)), 1e-30));
@@ -506,22 +532,23 @@ vec2 hexcNormalToDeriv(vec3 vM, bool flipY) {
     return -vec2(vM.x, flipY ? -vM.y : vM.y) / zMa;
 }
 
-// Listing 10: sample a normal map with explicit gradients (or at `lod`, see hexcFetch), return its derivative.
-vec2 hexcSampleDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, float lod, bool sharedLod, bool flipY) {
-    vec3 vM = 2.0 * hexcFetch(tex, samp, st, dx, dy, lod, sharedLod).xyz - 1.0;
-    return hexcNormalToDeriv(vM, flipY);
+// Listings 3 and 10: a tap's normal-map texel as the derivative in st space, rotated back with its tile and, a tile scaled
+// by s showing H(p / s), divided by s (`scaled`, a literal).
+vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY) {
+    vec2 d = hexcRotateFromTile(hexcNormalToDeriv(2.0 * texel.xyz - 1.0, flipY), p.rot);
+    return scaled ? d * p.invScale : d;
 }
 
 // Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, texture2D heightTex, out vec3 weights) {
-    // A tile scaled by s shows H(p / s), whose slope is the sampled one over s. Adaptive taps: as in hexcColor.
-    bvec3 f = b.adaptive ? hexcAdaptiveTaps(t.w, b) : bvec3(true, true, b.taps > 2);
+    // One branch per tap around its fetch and its derivative (adaptive taps: see hexcFetchTaps).
+    bvec3 f = hexcFetched(t.w, b);
     vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
     vec2 d1 = vec2(0.0), d2 = vec2(0.0), d3 = vec2(0.0);
-    if (f.x) d1 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st1, t.dx1, t.dy1, lod.x, b.sharedLod, flipY), t.rot1) * t.invScale.x;
-    if (f.y) d2 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st2, t.dx2, t.dy2, lod.y, b.sharedLod, flipY), t.rot2) * t.invScale.y;
-    if (f.z) d3 = hexcRotateFromTile(hexcSampleDeriv(tex, samp, t.st3, t.dx3, t.dy3, lod.z, b.sharedLod, flipY), t.rot3) * t.invScale.z;
+    if (f.x) d1 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[0], lod.x, b.sharedLod), t.tap[0], t.scaled, flipY);
+    if (f.y) d2 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[1], lod.y, b.sharedLod), t.tap[1], t.scaled, flipY);
+    if (f.z) d3 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[2], lod.z, b.sharedLod), t.tap[2], t.scaled, flipY);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     vec3 W = hexcBlendWeights(t.w * vec3(f), sqrt(D / (1.0 + D)), b);
     if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);
@@ -534,38 +561,35 @@ vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY
 // same on every target), and samples only that tile, with the tile's own rotated gradients so the mip
 // level stays right. The falloff metric would need all three samples, so the weights are Eq. 1 without it.
 // `pixel`: the pixel's position (gl_FragCoord.xy; a parameter so the library needs no stage input).
-struct HexcTap {
-    vec2 st, dx, dy, rot;        // the picked tile's sample point, gradients and rotation
-    float invScale;
-    vec3 pick;                   // one-hot: which of the three tiles
-};
 
-HexcTap hexcDitherTile(HexcTiles t, HexcBlend b, vec2 pixel) {
+// a ? x : y, member by member (a select of a whole struct would need a branch).
+HexcTap hexcSelect(bool a, HexcTap x, HexcTap y) {
+    return HexcTap(a ? x.st : y.st, a ? x.dx : y.dx, a ? x.dy : y.dy, a ? x.rot : y.rot, a ? x.invScale : y.invScale);
+}
+
+// The picked tap, and which it is (one-hot in `pick`).
+HexcTap hexcDitherTile(HexcTiles t, HexcBlend b, vec2 pixel, out vec3 pick) {
     b.metric = false;
     vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);
     float u = float(hexcPcg3d(uvec3(uvec2(pixel), 2u)).x >> 8u) * (1.0 / 16777216.0);
     int i = u < W.x ? 0 : (u < W.x + W.y ? 1 : 2);
-    HexcTap tap;
-    tap.pick = vec3(equal(ivec3(0, 1, 2), ivec3(i)));
-    tap.st = i == 0 ? t.st1 : (i == 1 ? t.st2 : t.st3);
-    tap.dx = i == 0 ? t.dx1 : (i == 1 ? t.dx2 : t.dx3);
-    tap.dy = i == 0 ? t.dy1 : (i == 1 ? t.dy2 : t.dy3);
-    tap.rot = i == 0 ? t.rot1 : (i == 1 ? t.rot2 : t.rot3);
-    tap.invScale = dot(tap.pick, t.invScale);
-    return tap;
+    pick = vec3(equal(ivec3(0, 1, 2), ivec3(i)));
+    return hexcSelect(i == 0, t.tap[0], hexcSelect(i == 1, t.tap[1], t.tap[2]));
 }
 
 vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec2 pixel, out vec3 weights) {
-    HexcTap tap = hexcDitherTile(t, b, pixel);
-    weights = hexcShowWeights(tap.pick, t.channel);
-    return hexcFetch(tex, samp, tap.st, tap.dx, tap.dy, dot(tap.pick, hexcTileLods(tex, samp, t, b.sharedLod)), b.sharedLod);
+    vec3 pick;
+    HexcTap tap = hexcDitherTile(t, b, pixel, pick);
+    weights = hexcShowWeights(pick, t.channel);
+    return hexcFetch(tex, samp, tap, dot(pick, hexcTileLods(tex, samp, t, b.sharedLod)), b.sharedLod);
 }
 
 vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, vec2 pixel, out vec3 weights) {
-    HexcTap tap = hexcDitherTile(t, b, pixel);
-    weights = hexcShowWeights(tap.pick, t.channel);
-    float lod = dot(tap.pick, hexcTileLods(tex, samp, t, b.sharedLod));
-    return hexcRotateFromTile(hexcSampleDeriv(tex, samp, tap.st, tap.dx, tap.dy, lod, b.sharedLod, flipY), tap.rot) * tap.invScale;
+    vec3 pick;
+    HexcTap tap = hexcDitherTile(t, b, pixel, pick);
+    weights = hexcShowWeights(pick, t.channel);
+    float lod = dot(pick, hexcTileLods(tex, samp, t, b.sharedLod));
+    return hexcTapDeriv(hexcFetch(tex, samp, tap, lod, b.sharedLod), tap, t.scaled, flipY);
 }
 
 // Plain tiling, for slots with hex-tiling disabled: one fetch, hardware gradients, or the given ones where

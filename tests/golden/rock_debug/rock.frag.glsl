@@ -17,26 +17,21 @@ struct HexcLattice
     bool triple;
 };
 
+struct HexcTap
+{
+    vec2 st;
+    vec2 dx;
+    vec2 dy;
+    vec2 rot;
+    float invScale;
+};
+
 struct HexcTiles
 {
     vec3 w;
-    vec3 invScale;
     bool scaled;
-    ivec2 v1;
-    ivec2 v2;
-    ivec2 v3;
-    vec2 st1;
-    vec2 st2;
-    vec2 st3;
-    vec2 dx1;
-    vec2 dx2;
-    vec2 dx3;
-    vec2 dy1;
-    vec2 dy2;
-    vec2 dy3;
-    vec2 rot1;
-    vec2 rot2;
-    vec2 rot3;
+    ivec2 id[3];
+    HexcTap tap[3];
     ivec3 channel;
 };
 
@@ -76,189 +71,174 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec4 v_tangent;
 layout(location = 0) out vec4 o_color;
 
-#line 121 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 HexcLattice hexcLattice()
 {
-#line 121 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return HexcLattice(0.0, false, false, vec2(-180.0, 180.0), 0, vec2(1.0), 1.0, ivec2(0), 1, false);
 }
 
-#line 352 "hexc/hextiling.glsl"
+#line 368 "hexc/hextiling.glsl"
 HexcBlend hexcBlend()
 {
-#line 352 "hexc/hextiling.glsl"
+#line 368 "hexc/hextiling.glsl"
     return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, 0.0039215688593685626983642578125, false, vec4(0.0), 1.0);
 }
 
-#line 30 "hexc/hextiling.glsl"
-void hexcTriangle(vec2 skewed, out vec3 w, out ivec2 v1, out ivec2 v2, out ivec2 v3)
-{
-#line 30 "hexc/hextiling.glsl"
-    ivec2 baseId = ivec2(floor(skewed));
-#line 31 "hexc/hextiling.glsl"
-    vec3 temp = vec3(skewed - floor(skewed), 0.0);
-#line 32 "hexc/hextiling.glsl"
-    temp.z = (1.0 - temp.x) - temp.y;
-#line 33 "hexc/hextiling.glsl"
-    float s = step(0.0, -temp.z);
 #line 34 "hexc/hextiling.glsl"
-    float s2 = (2.0 * s) - 1.0;
-#line 35 "hexc/hextiling.glsl"
-    w = vec3((-temp.z) * s2, s - (temp.y * s2), s - (temp.x * s2));
-#line 36 "hexc/hextiling.glsl"
-    int si = int(s);
-#line 37 "hexc/hextiling.glsl"
-    v1 = baseId + ivec2(si, si);
-#line 38 "hexc/hextiling.glsl"
-    v2 = baseId + ivec2(si, 1 - si);
-#line 39 "hexc/hextiling.glsl"
-    v3 = baseId + ivec2(1 - si, si);
-}
-
-#line 74 "hexc/hextiling.glsl"
-ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
+void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
 {
-#line 74 "hexc/hextiling.glsl"
-    int d = v1.x - v1.y;
-#line 75 "hexc/hextiling.glsl"
-    int a = abs(d) % 3;
-#line 76 "hexc/hextiling.glsl"
-    int _356;
-    if ((d < 0) && (a != 0))
-    {
-#line 76 "hexc/hextiling.glsl"
-        _356 = 3 - a;
-    }
-    else
-    {
-        _356 = a;
-    }
-    int i1 = _356;
-#line 77 "hexc/hextiling.glsl"
-    int _368;
-    if (i1 < 2)
-    {
-#line 77 "hexc/hextiling.glsl"
-        _368 = i1 + 1;
-    }
-    else
-    {
-        _368 = 0;
-    }
-    int vh = _368;
-#line 78 "hexc/hextiling.glsl"
-    int _378;
-    if (i1 > 0)
-    {
-#line 78 "hexc/hextiling.glsl"
-        _378 = i1 - 1;
-    }
-    else
-    {
-        _378 = 2;
-    }
-    int vl = _378;
-#line 79 "hexc/hextiling.glsl"
-    return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
+#line 34 "hexc/hextiling.glsl"
+    ivec2 baseId = ivec2(floor(skewed));
+#line 35 "hexc/hextiling.glsl"
+    vec3 temp = vec3(skewed - floor(skewed), 0.0);
+#line 36 "hexc/hextiling.glsl"
+    temp.z = (1.0 - temp.x) - temp.y;
+#line 37 "hexc/hextiling.glsl"
+    float s = step(0.0, -temp.z);
+#line 38 "hexc/hextiling.glsl"
+    float s2 = (2.0 * s) - 1.0;
+#line 39 "hexc/hextiling.glsl"
+    w = vec3((-temp.z) * s2, s - (temp.y * s2), s - (temp.x * s2));
+#line 40 "hexc/hextiling.glsl"
+    int si = int(s);
+#line 41 "hexc/hextiling.glsl"
+    id[0] = baseId + ivec2(si, si);
+#line 42 "hexc/hextiling.glsl"
+    id[1] = baseId + ivec2(si, 1 - si);
+#line 43 "hexc/hextiling.glsl"
+    id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 189 "hexc/hextiling.glsl"
+#line 197 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 189 "hexc/hextiling.glsl"
+#line 197 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 158 "hexc/hextiling.glsl"
+#line 166 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 158 "hexc/hextiling.glsl"
-    v = (v * uvec3(1664525u)) + uvec3(1013904223u);
-#line 159 "hexc/hextiling.glsl"
-    v.x += (v.y * v.z);
-#line 160 "hexc/hextiling.glsl"
-    v.y += (v.z * v.x);
-#line 161 "hexc/hextiling.glsl"
-    v.z += (v.x * v.y);
-#line 162 "hexc/hextiling.glsl"
-    v ^= (v >> uvec3(16u));
-#line 163 "hexc/hextiling.glsl"
-    v.x += (v.y * v.z);
-#line 164 "hexc/hextiling.glsl"
-    v.y += (v.z * v.x);
-#line 165 "hexc/hextiling.glsl"
-    v.z += (v.x * v.y);
 #line 166 "hexc/hextiling.glsl"
+    v = (v * uvec3(1664525u)) + uvec3(1013904223u);
+#line 167 "hexc/hextiling.glsl"
+    v.x += (v.y * v.z);
+#line 168 "hexc/hextiling.glsl"
+    v.y += (v.z * v.x);
+#line 169 "hexc/hextiling.glsl"
+    v.z += (v.x * v.y);
+#line 170 "hexc/hextiling.glsl"
+    v ^= (v >> uvec3(16u));
+#line 171 "hexc/hextiling.glsl"
+    v.x += (v.y * v.z);
+#line 172 "hexc/hextiling.glsl"
+    v.y += (v.z * v.x);
+#line 173 "hexc/hextiling.glsl"
+    v.z += (v.x * v.y);
+#line 174 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 172 "hexc/hextiling.glsl"
+#line 180 "hexc/hextiling.glsl"
 void hexcStableTile(ivec2 id, HexcLattice l, inout vec2 offset, out vec2 rot, out float invScale)
 {
-#line 172 "hexc/hextiling.glsl"
+#line 180 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _557 = hexcPcg3d(param);
-    vec3 u = vec3(_557 >> uvec3(8u)) * 5.9604644775390625e-08;
-#line 173 "hexc/hextiling.glsl"
+    uvec3 _586 = hexcPcg3d(param);
+    vec3 u = vec3(_586 >> uvec3(8u)) * 5.9604644775390625e-08;
+#line 181 "hexc/hextiling.glsl"
     offset = u.xy;
-#line 174 "hexc/hextiling.glsl"
+#line 182 "hexc/hextiling.glsl"
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * l.rotation;
-#line 175 "hexc/hextiling.glsl"
+#line 183 "hexc/hextiling.glsl"
     invScale = 1.0;
-#line 176 "hexc/hextiling.glsl"
+#line 184 "hexc/hextiling.glsl"
     if (l.transform)
     {
-#line 177 "hexc/hextiling.glsl"
+#line 185 "hexc/hextiling.glsl"
         vec2 steps = vec2(l.offsetSteps);
-#line 178 "hexc/hextiling.glsl"
+#line 186 "hexc/hextiling.glsl"
         offset = mix(offset, floor(offset * steps) / steps, greaterThan(steps, vec2(0.0))) * l.offset;
-#line 179 "hexc/hextiling.glsl"
-        float _606;
+#line 187 "hexc/hextiling.glsl"
+        float _635;
         if (l.rotationSteps > 0)
         {
-#line 179 "hexc/hextiling.glsl"
-            _606 = floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps);
+#line 187 "hexc/hextiling.glsl"
+            _635 = floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps);
         }
         else
         {
-#line 179 "hexc/hextiling.glsl"
-            _606 = u.z;
+#line 187 "hexc/hextiling.glsl"
+            _635 = u.z;
         }
-        float a = _606;
-#line 180 "hexc/hextiling.glsl"
+        float a = _635;
+#line 188 "hexc/hextiling.glsl"
         angle = radians(mix(l.rotationRange.x, l.rotationRange.y, a)) * l.rotation;
-#line 181 "hexc/hextiling.glsl"
+#line 189 "hexc/hextiling.glsl"
         uvec3 param_1 = uvec3(uvec2(id), 1u);
-        uvec3 _641 = hexcPcg3d(param_1);
-        float v = float(_641.x >> 8u) * 5.9604644775390625e-08;
-#line 182 "hexc/hextiling.glsl"
+        uvec3 _670 = hexcPcg3d(param_1);
+        float v = float(_670.x >> 8u) * 5.9604644775390625e-08;
+#line 190 "hexc/hextiling.glsl"
         invScale = 1.0 / mix(l.scaleRange.x, l.scaleRange.y, v);
     }
-#line 184 "hexc/hextiling.glsl"
-    vec2 _656;
+#line 192 "hexc/hextiling.glsl"
+    vec2 _685;
     if (l.rotate)
     {
-#line 184 "hexc/hextiling.glsl"
-        _656 = vec2(cos(angle), sin(angle));
+#line 192 "hexc/hextiling.glsl"
+        _685 = vec2(cos(angle), sin(angle));
     }
     else
     {
-        _656 = vec2(1.0, 0.0);
+        _685 = vec2(1.0, 0.0);
     }
-    rot = _656;
+    rot = _685;
 }
 
-#line 90 "hexc/hextiling.glsl"
+#line 94 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 90 "hexc/hextiling.glsl"
+#line 94 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 197 "hexc/hextiling.glsl"
-void hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out vec2 st, out vec2 dx, out vec2 dy, inout vec2 rot, inout float invScale)
+#line 202 "hexc/hextiling.glsl"
+vec2 hexcToTile(inout vec2 v, HexcTap p, HexcLattice l)
 {
-#line 197 "hexc/hextiling.glsl"
+#line 202 "hexc/hextiling.glsl"
+    vec2 _717;
+    if (l.rotate)
+    {
+#line 202 "hexc/hextiling.glsl"
+        vec2 param = v;
+        vec2 param_1 = p.rot;
+        _717 = hexcRotateToTile(param, param_1);
+    }
+    else
+    {
+        _717 = v;
+    }
+    v = _717;
+#line 203 "hexc/hextiling.glsl"
+    vec2 _731;
+    if (l.transform)
+    {
+#line 203 "hexc/hextiling.glsl"
+        _731 = v * p.invScale;
+    }
+    else
+    {
+        _731 = v;
+    }
+#line 203 "hexc/hextiling.glsl"
+    return _731;
+}
+
+#line 211 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l)
+{
+#line 211 "hexc/hextiling.glsl"
     ivec2 param = id;
     HexcLattice param_1 = l;
     vec2 param_2;
@@ -266,658 +246,660 @@ void hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out 
     float param_4;
     hexcStableTile(param, param_1, param_2, param_3, param_4);
     vec2 offset = param_2;
-    rot = param_3;
-    invScale = param_4;
-#line 198 "hexc/hextiling.glsl"
-    vec2 _700;
-    if (l.rotate)
-    {
-#line 198 "hexc/hextiling.glsl"
-        vec2 param_5 = d;
-        vec2 param_6 = rot;
-        _700 = hexcRotateToTile(param_5, param_6);
-    }
-    else
-    {
-        _700 = d;
-    }
-    st = (_700 * invScale) + offset;
-#line 199 "hexc/hextiling.glsl"
-    vec2 _717;
-    if (l.rotate)
-    {
-#line 199 "hexc/hextiling.glsl"
-        vec2 param_7 = dSTdx;
-        vec2 param_8 = rot;
-        _717 = hexcRotateToTile(param_7, param_8);
-    }
-    else
-    {
-        _717 = dSTdx;
-    }
-    dx = _717 * invScale;
-#line 200 "hexc/hextiling.glsl"
-    vec2 _732;
-    if (l.rotate)
-    {
-#line 200 "hexc/hextiling.glsl"
-        vec2 param_9 = dSTdy;
-        vec2 param_10 = rot;
-        _732 = hexcRotateToTile(param_9, param_10);
-    }
-    else
-    {
-        _732 = dSTdy;
-    }
-    dy = _732 * invScale;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+#line 212 "hexc/hextiling.glsl"
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    HexcLattice param_7 = l;
+    vec2 _764 = hexcToTile(param_5, param_6, param_7);
+    p.st = _764 + offset;
+#line 213 "hexc/hextiling.glsl"
+    vec2 param_8 = dSTdx;
+    HexcTap param_9 = p;
+    HexcLattice param_10 = l;
+    vec2 _774 = hexcToTile(param_8, param_9, param_10);
+    p.dx = _774;
+#line 214 "hexc/hextiling.glsl"
+    vec2 param_11 = dSTdy;
+    HexcTap param_12 = p;
+    HexcLattice param_13 = l;
+    vec2 _782 = hexcToTile(param_11, param_12, param_13);
+    p.dy = _782;
+#line 215 "hexc/hextiling.glsl"
+    return p;
 }
 
-#line 209 "hexc/hextiling.glsl"
+#line 221 "hexc/hextiling.glsl"
+HexcTap hexcStableTap(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, HexcLattice l, inout ivec2 id)
+{
+#line 221 "hexc/hextiling.glsl"
+    id = ivec2(uvec2(local) + shift);
+#line 222 "hexc/hextiling.glsl"
+    ivec2 param = local;
+    ivec2 param_1 = id;
+    vec2 param_2 = r - hexcStableCentre(param);
+    vec2 param_3 = dSTdx;
+    vec2 param_4 = dSTdy;
+    HexcLattice param_5 = l;
+    return hexcPlaceTile(param_1, param_2, param_3, param_4, param_5);
+}
+
+#line 78 "hexc/hextiling.glsl"
+ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
+{
+#line 78 "hexc/hextiling.glsl"
+    int d = v1.x - v1.y;
+#line 79 "hexc/hextiling.glsl"
+    int a = abs(d) % 3;
+#line 80 "hexc/hextiling.glsl"
+    int _387;
+    if ((d < 0) && (a != 0))
+    {
+#line 80 "hexc/hextiling.glsl"
+        _387 = 3 - a;
+    }
+    else
+    {
+        _387 = a;
+    }
+    int i1 = _387;
+#line 81 "hexc/hextiling.glsl"
+    int _398;
+    if (i1 < 2)
+    {
+#line 81 "hexc/hextiling.glsl"
+        _398 = i1 + 1;
+    }
+    else
+    {
+        _398 = 0;
+    }
+    int vh = _398;
+#line 82 "hexc/hextiling.glsl"
+    int _408;
+    if (i1 > 0)
+    {
+#line 82 "hexc/hextiling.glsl"
+        _408 = i1 - 1;
+    }
+    else
+    {
+        _408 = 2;
+    }
+    int vl = _408;
+#line 83 "hexc/hextiling.glsl"
+    return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
+}
+
+#line 230 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l)
 {
-#line 209 "hexc/hextiling.glsl"
+#line 230 "hexc/hextiling.glsl"
     HexcTiles t;
     t.scaled = l.transform;
-#line 212 "hexc/hextiling.glsl"
+#line 233 "hexc/hextiling.glsl"
     float kx = floor(st.x / 28.0);
     float ky = floor(st.y);
-#line 213 "hexc/hextiling.glsl"
+#line 234 "hexc/hextiling.glsl"
     vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
-#line 215 "hexc/hextiling.glsl"
+#line 236 "hexc/hextiling.glsl"
     vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
     vec3 param_1;
-    ivec2 param_2;
-    ivec2 param_3;
-    ivec2 param_4;
-    hexcTriangle(param, param_1, param_2, param_3, param_4);
+    ivec2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
     t.w = param_1;
-    ivec2 l1 = param_2;
-    ivec2 l2 = param_3;
-    ivec2 l3 = param_4;
-#line 216 "hexc/hextiling.glsl"
+    ivec2 local[3] = param_2;
+#line 237 "hexc/hextiling.glsl"
     uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
-#line 217 "hexc/hextiling.glsl"
+#line 238 "hexc/hextiling.glsl"
     uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
-#line 218 "hexc/hextiling.glsl"
-    t.v1 = ivec2(uvec2(l1) + shift);
-#line 219 "hexc/hextiling.glsl"
-    t.v2 = ivec2(uvec2(l2) + shift);
-#line 220 "hexc/hextiling.glsl"
-    t.v3 = ivec2(uvec2(l3) + shift);
-#line 221 "hexc/hextiling.glsl"
-    ivec2 param_5 = t.v1;
-    ivec2 param_6 = t.v3;
-    t.channel = hexcHexChannels(param_5, param_6);
-#line 222 "hexc/hextiling.glsl"
-    ivec2 param_7 = l1;
-    ivec2 param_8 = t.v1;
-    vec2 param_9 = r - hexcStableCentre(param_7);
-    vec2 param_10 = dSTdx;
-    vec2 param_11 = dSTdy;
-    HexcLattice param_12 = l;
-    vec2 param_13;
-    vec2 param_14;
-    vec2 param_15;
-    vec2 param_16;
-    float param_17;
-    hexcPlaceTile(param_8, param_9, param_10, param_11, param_12, param_13, param_14, param_15, param_16, param_17);
-    t.st1 = param_13;
-    t.dx1 = param_14;
-    t.dy1 = param_15;
-    t.rot1 = param_16;
-    t.invScale.x = param_17;
-#line 223 "hexc/hextiling.glsl"
-    ivec2 param_18 = l2;
-    ivec2 param_19 = t.v2;
-    vec2 param_20 = r - hexcStableCentre(param_18);
-    vec2 param_21 = dSTdx;
-    vec2 param_22 = dSTdy;
-    HexcLattice param_23 = l;
-    vec2 param_24;
-    vec2 param_25;
-    vec2 param_26;
-    vec2 param_27;
-    float param_28;
-    hexcPlaceTile(param_19, param_20, param_21, param_22, param_23, param_24, param_25, param_26, param_27, param_28);
-    t.st2 = param_24;
-    t.dx2 = param_25;
-    t.dy2 = param_26;
-    t.rot2 = param_27;
-    t.invScale.y = param_28;
-#line 224 "hexc/hextiling.glsl"
-    ivec2 param_29 = l3;
-    ivec2 param_30 = t.v3;
-    vec2 param_31 = r - hexcStableCentre(param_29);
-    vec2 param_32 = dSTdx;
-    vec2 param_33 = dSTdy;
-    HexcLattice param_34 = l;
-    vec2 param_35;
-    vec2 param_36;
-    vec2 param_37;
-    vec2 param_38;
-    float param_39;
-    hexcPlaceTile(param_30, param_31, param_32, param_33, param_34, param_35, param_36, param_37, param_38, param_39);
-    t.st3 = param_35;
-    t.dx3 = param_36;
-    t.dy3 = param_37;
-    t.rot3 = param_38;
-    t.invScale.z = param_39;
-#line 225 "hexc/hextiling.glsl"
+#line 239 "hexc/hextiling.glsl"
+    ivec2 param_3 = local[0];
+    uvec2 param_4 = shift;
+    vec2 param_5 = r;
+    vec2 param_6 = dSTdx;
+    vec2 param_7 = dSTdy;
+    HexcLattice param_8 = l;
+    ivec2 param_9;
+    HexcTap _892 = hexcStableTap(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
+    t.id[0] = param_9;
+    t.tap[0] = _892;
+#line 240 "hexc/hextiling.glsl"
+    ivec2 param_10 = local[1];
+    uvec2 param_11 = shift;
+    vec2 param_12 = r;
+    vec2 param_13 = dSTdx;
+    vec2 param_14 = dSTdy;
+    HexcLattice param_15 = l;
+    ivec2 param_16;
+    HexcTap _910 = hexcStableTap(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
+    t.id[1] = param_16;
+    t.tap[1] = _910;
+#line 241 "hexc/hextiling.glsl"
+    ivec2 param_17 = local[2];
+    uvec2 param_18 = shift;
+    vec2 param_19 = r;
+    vec2 param_20 = dSTdx;
+    vec2 param_21 = dSTdy;
+    HexcLattice param_22 = l;
+    ivec2 param_23;
+    HexcTap _928 = hexcStableTap(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
+    t.id[2] = param_23;
+    t.tap[2] = _928;
+#line 242 "hexc/hextiling.glsl"
+    ivec2 param_24 = t.id[0];
+    ivec2 param_25 = t.id[2];
+    t.channel = hexcHexChannels(param_24, param_25);
+#line 243 "hexc/hextiling.glsl"
     return t;
 }
 
-#line 298 "hexc/hextiling.glsl"
+#line 314 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 298 "hexc/hextiling.glsl"
+#line 314 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
-#line 299 "hexc/hextiling.glsl"
+#line 315 "hexc/hextiling.glsl"
     if ((n & 1) != 0)
     {
-#line 299 "hexc/hextiling.glsl"
+#line 315 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 300 "hexc/hextiling.glsl"
+#line 316 "hexc/hextiling.glsl"
     x *= x;
-#line 301 "hexc/hextiling.glsl"
+#line 317 "hexc/hextiling.glsl"
     if ((n & 2) != 0)
     {
-#line 301 "hexc/hextiling.glsl"
+#line 317 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 302 "hexc/hextiling.glsl"
+#line 318 "hexc/hextiling.glsl"
     x *= x;
-#line 303 "hexc/hextiling.glsl"
+#line 319 "hexc/hextiling.glsl"
     if ((n & 4) != 0)
     {
-#line 303 "hexc/hextiling.glsl"
+#line 319 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 304 "hexc/hextiling.glsl"
+#line 320 "hexc/hextiling.glsl"
     x *= x;
-#line 305 "hexc/hextiling.glsl"
+#line 321 "hexc/hextiling.glsl"
     if ((n & 8) != 0)
     {
-#line 305 "hexc/hextiling.glsl"
+#line 321 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 306 "hexc/hextiling.glsl"
+#line 322 "hexc/hextiling.glsl"
     x *= x;
-#line 307 "hexc/hextiling.glsl"
+#line 323 "hexc/hextiling.glsl"
     if ((n & 16) != 0)
     {
-#line 307 "hexc/hextiling.glsl"
+#line 323 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 308 "hexc/hextiling.glsl"
+#line 324 "hexc/hextiling.glsl"
     return r;
 }
 
-#line 314 "hexc/hextiling.glsl"
+#line 330 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 314 "hexc/hextiling.glsl"
-    float _1012;
+#line 330 "hexc/hextiling.glsl"
+    float _1003;
     if (kInt > 0)
     {
-#line 314 "hexc/hextiling.glsl"
-        _1012 = float(kInt);
+#line 330 "hexc/hextiling.glsl"
+        _1003 = float(kInt);
     }
     else
     {
-#line 314 "hexc/hextiling.glsl"
-        _1012 = log(1.0 - r) / (-0.693147182464599609375);
+#line 330 "hexc/hextiling.glsl"
+        _1003 = log(1.0 - r) / (-0.693147182464599609375);
     }
-#line 314 "hexc/hextiling.glsl"
-    return _1012;
+#line 330 "hexc/hextiling.glsl"
+    return _1003;
 }
 
-#line 318 "hexc/hextiling.glsl"
+#line 334 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 318 "hexc/hextiling.glsl"
+#line 334 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
-#line 319 "hexc/hextiling.glsl"
+#line 335 "hexc/hextiling.glsl"
     vec3 m = (vec3(1.0) - s) * 2.0;
-#line 320 "hexc/hextiling.glsl"
+#line 336 "hexc/hextiling.glsl"
     vec3 base = max(vec3(0.0), s + (x * m));
-#line 321 "hexc/hextiling.glsl"
-    vec3 _1049;
+#line 337 "hexc/hextiling.glsl"
+    vec3 _1040;
     if (kInt > 0)
     {
-#line 321 "hexc/hextiling.glsl"
+#line 337 "hexc/hextiling.glsl"
         vec3 param = base;
         int param_1 = kInt;
-        vec3 _1056 = hexcPowInt(param, param_1);
-        _1049 = _1056;
+        vec3 _1047 = hexcPowInt(param, param_1);
+        _1040 = _1047;
     }
     else
     {
-#line 321 "hexc/hextiling.glsl"
+#line 337 "hexc/hextiling.glsl"
         float param_2 = r;
         int param_3 = kInt;
-        _1049 = pow(base, vec3(hexcGainK(param_2, param_3)));
+        _1040 = pow(base, vec3(hexcGainK(param_2, param_3)));
     }
-#line 321 "hexc/hextiling.glsl"
-    return (s * 0.5) + ((m * 0.25) * _1049);
+#line 337 "hexc/hextiling.glsl"
+    return (s * 0.5) + ((m * 0.25) * _1040);
 }
 
-#line 384 "hexc/hextiling.glsl"
+#line 400 "hexc/hextiling.glsl"
 bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b)
 {
-#line 384 "hexc/hextiling.glsl"
-    vec3 _1199;
+#line 400 "hexc/hextiling.glsl"
+    vec3 _1190;
     if (b.exponentInt > 0)
     {
-#line 384 "hexc/hextiling.glsl"
+#line 400 "hexc/hextiling.glsl"
         vec3 param = w;
         int param_1 = b.exponentInt;
-        vec3 _1207 = hexcPowInt(param, param_1);
-        _1199 = _1207;
+        vec3 _1198 = hexcPowInt(param, param_1);
+        _1190 = _1198;
     }
     else
     {
-#line 384 "hexc/hextiling.glsl"
-        _1199 = pow(w, vec3(b.exponent));
+#line 400 "hexc/hextiling.glsl"
+        _1190 = pow(w, vec3(b.exponent));
     }
-    vec3 wg = _1199;
-#line 385 "hexc/hextiling.glsl"
-    float _1218;
+    vec3 wg = _1190;
+#line 401 "hexc/hextiling.glsl"
+    float _1209;
     if (b.metric)
     {
-#line 385 "hexc/hextiling.glsl"
-        _1218 = b.falloffContrast;
+#line 401 "hexc/hextiling.glsl"
+        _1209 = b.falloffContrast;
     }
     else
     {
-        _1218 = 0.0;
+        _1209 = 0.0;
     }
-    float lo = 1.0 - _1218;
-#line 386 "hexc/hextiling.glsl"
+    float lo = 1.0 - _1209;
+#line 402 "hexc/hextiling.glsl"
     vec3 others = vec3((wg.x + wg.y) + wg.z) - wg;
-#line 387 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
     vec3 U = wg / max(wg + (others * lo), vec3(1.0000000031710768509710513471353e-30));
-#line 388 "hexc/hextiling.glsl"
+#line 404 "hexc/hextiling.glsl"
     vec3 L = (wg * lo) / max((wg * lo) + others, vec3(1.0000000031710768509710513471353e-30));
-#line 389 "hexc/hextiling.glsl"
+#line 405 "hexc/hextiling.glsl"
     vec3 gU = U;
     vec3 gL = L;
-#line 390 "hexc/hextiling.glsl"
+#line 406 "hexc/hextiling.glsl"
     float k = 0.0;
-#line 391 "hexc/hextiling.glsl"
-    bool _1279;
+#line 407 "hexc/hextiling.glsl"
+    bool _1270;
     if (b.gain)
     {
-#line 391 "hexc/hextiling.glsl"
-        bool _1271 = b.gainInt > 0;
-        bool _1278;
-        if (!_1271)
+#line 407 "hexc/hextiling.glsl"
+        bool _1262 = b.gainInt > 0;
+        bool _1269;
+        if (!_1262)
         {
-#line 391 "hexc/hextiling.glsl"
-            _1278 = b.falloff != 0.5;
+#line 407 "hexc/hextiling.glsl"
+            _1269 = b.falloff != 0.5;
         }
         else
         {
-            _1278 = _1271;
+            _1269 = _1262;
         }
-        _1279 = _1278;
+        _1270 = _1269;
     }
     else
     {
-        _1279 = b.gain;
+        _1270 = b.gain;
     }
-    if (_1279)
+    if (_1270)
     {
-#line 392 "hexc/hextiling.glsl"
+#line 408 "hexc/hextiling.glsl"
         vec3 param_2 = U;
         float param_3 = b.falloff;
         int param_4 = b.gainInt;
         gU = hexcGainCurve(param_2, param_3, param_4);
-#line 393 "hexc/hextiling.glsl"
+#line 409 "hexc/hextiling.glsl"
         vec3 param_5 = L;
         float param_6 = b.falloff;
         int param_7 = b.gainInt;
         gL = hexcGainCurve(param_5, param_6, param_7);
-#line 394 "hexc/hextiling.glsl"
+#line 410 "hexc/hextiling.glsl"
         float param_8 = b.falloff;
         int param_9 = b.gainInt;
         k = hexcGainK(param_8, param_9);
     }
-#line 396 "hexc/hextiling.glsl"
+#line 412 "hexc/hextiling.glsl"
     vec3 Gup = gU / max((gU + vec3((gL.x + gL.y) + gL.z)) - gL, vec3(1.0000000031710768509710513471353e-30));
-#line 398 "hexc/hextiling.glsl"
+#line 414 "hexc/hextiling.glsl"
     vec3 B = Gup - (log(max(vec3(1.0) - U, vec3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-#line 399 "hexc/hextiling.glsl"
-    bool _1339 = w.x >= w.y;
-    bool _1347;
-    if (_1339)
+#line 415 "hexc/hextiling.glsl"
+    bool _1330 = w.x >= w.y;
+    bool _1338;
+    if (_1330)
     {
-#line 399 "hexc/hextiling.glsl"
-        _1347 = w.x >= w.z;
+#line 415 "hexc/hextiling.glsl"
+        _1338 = w.x >= w.z;
     }
     else
     {
-        _1347 = _1339;
+        _1338 = _1330;
     }
-    int _1348;
-    if (_1347)
+    int _1339;
+    if (_1338)
     {
-        _1348 = 0;
+        _1339 = 0;
     }
     else
     {
-#line 399 "hexc/hextiling.glsl"
-        _1348 = (w.y >= w.z) ? 1 : 2;
+#line 415 "hexc/hextiling.glsl"
+        _1339 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1348;
-#line 400 "hexc/hextiling.glsl"
+    int d = _1339;
+#line 416 "hexc/hextiling.glsl"
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
-#line 401 "hexc/hextiling.glsl"
+#line 417 "hexc/hextiling.glsl"
     bvec3 f = bvec3(true);
-#line 402 "hexc/hextiling.glsl"
+#line 418 "hexc/hextiling.glsl"
     if ((Gup[a] + Gup[c]) < b.adaptiveError)
     {
-#line 403 "hexc/hextiling.glsl"
+#line 419 "hexc/hextiling.glsl"
         f[a] = false;
-#line 404 "hexc/hextiling.glsl"
+#line 420 "hexc/hextiling.glsl"
         f[c] = false;
     }
     else
     {
-#line 405 "hexc/hextiling.glsl"
+#line 421 "hexc/hextiling.glsl"
         if (min(B[a], B[c]) < b.adaptiveError)
         {
-#line 406 "hexc/hextiling.glsl"
+#line 422 "hexc/hextiling.glsl"
             f[(B[a] <= B[c]) ? a : c] = false;
         }
     }
-#line 408 "hexc/hextiling.glsl"
+#line 424 "hexc/hextiling.glsl"
     return f;
 }
 
-#line 425 "hexc/hextiling.glsl"
+#line 458 "hexc/hextiling.glsl"
+bvec3 hexcFetched(vec3 w, HexcBlend b)
+{
+#line 458 "hexc/hextiling.glsl"
+    bvec3 _1534;
+    if (b.adaptive)
+    {
+#line 458 "hexc/hextiling.glsl"
+        vec3 param = w;
+        HexcBlend param_1 = b;
+        _1534 = hexcAdaptiveTaps(param, param_1);
+    }
+    else
+    {
+#line 458 "hexc/hextiling.glsl"
+        _1534 = bvec3(true, true, b.taps > 2);
+    }
+#line 458 "hexc/hextiling.glsl"
+    return _1534;
+}
+
+#line 441 "hexc/hextiling.glsl"
 vec3 hexcTileLods(HexcTiles t, bool sharedLod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 425 "hexc/hextiling.glsl"
+#line 441 "hexc/hextiling.glsl"
     if (!sharedLod)
     {
-#line 425 "hexc/hextiling.glsl"
+#line 441 "hexc/hextiling.glsl"
         return vec3(0.0);
     }
-#line 426 "hexc/hextiling.glsl"
+#line 442 "hexc/hextiling.glsl"
     vec2 size = vec2(textureSize(SPIRV_Cross_Combinedtexsamp, 0));
-#line 427 "hexc/hextiling.glsl"
-    float lod = 0.5 * log2(max((max(dot(t.dx1, t.dx1), dot(t.dy1, t.dy1)) * size.x) * size.y, 1.0000000031710768509710513471353e-30));
-#line 428 "hexc/hextiling.glsl"
-    vec3 _1486;
+#line 443 "hexc/hextiling.glsl"
+    HexcTap p = t.tap[0];
+#line 444 "hexc/hextiling.glsl"
+    float lod = 0.5 * log2(max((max(dot(p.dx, p.dx), dot(p.dy, p.dy)) * size.x) * size.y, 1.0000000031710768509710513471353e-30));
+#line 445 "hexc/hextiling.glsl"
+    vec3 invScale = vec3(p.invScale, t.tap[1].invScale, t.tap[2].invScale);
+#line 446 "hexc/hextiling.glsl"
+    vec3 _1488;
     if (t.scaled)
     {
-#line 428 "hexc/hextiling.glsl"
-        _1486 = vec3(lod) + log2(t.invScale / vec3(t.invScale.x));
+#line 446 "hexc/hextiling.glsl"
+        _1488 = vec3(lod) + log2(invScale / vec3(p.invScale));
     }
     else
     {
-#line 428 "hexc/hextiling.glsl"
-        _1486 = vec3(lod);
+#line 446 "hexc/hextiling.glsl"
+        _1488 = vec3(lod);
     }
-#line 428 "hexc/hextiling.glsl"
-    return _1486;
+#line 446 "hexc/hextiling.glsl"
+    return _1488;
 }
 
-#line 434 "hexc/hextiling.glsl"
-vec4 hexcFetch(vec2 st, vec2 dx, vec2 dy, float lod, bool sharedLod, sampler2D SPIRV_Cross_Combinedtexsamp)
+#line 452 "hexc/hextiling.glsl"
+vec4 hexcFetch(HexcTap p, float lod, bool sharedLod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-    vec4 _1506;
+    vec4 _1507;
     if (sharedLod)
     {
-#line 434 "hexc/hextiling.glsl"
-        _1506 = textureLod(SPIRV_Cross_Combinedtexsamp, st, lod);
+#line 452 "hexc/hextiling.glsl"
+        _1507 = textureLod(SPIRV_Cross_Combinedtexsamp, p.st, lod);
     }
     else
     {
-#line 434 "hexc/hextiling.glsl"
-        _1506 = textureGrad(SPIRV_Cross_Combinedtexsamp, st, dx, dy);
+#line 452 "hexc/hextiling.glsl"
+        _1507 = textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
     }
-#line 434 "hexc/hextiling.glsl"
-    return _1506;
+#line 452 "hexc/hextiling.glsl"
+    return _1507;
 }
 
-#line 326 "hexc/hextiling.glsl"
+#line 465 "hexc/hextiling.glsl"
+void hexcFetchTaps(HexcTiles t, bvec3 f, bool sharedLod, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
+{
+#line 465 "hexc/hextiling.glsl"
+    HexcTiles param = t;
+    bool param_1 = sharedLod;
+    vec3 lod = hexcTileLods(param, param_1, SPIRV_Cross_Combinedtexsamp);
+#line 466 "hexc/hextiling.glsl"
+    c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
+#line 467 "hexc/hextiling.glsl"
+    if (f.x)
+    {
+#line 467 "hexc/hextiling.glsl"
+        HexcTap param_2 = t.tap[0];
+        float param_3 = lod.x;
+        bool param_4 = sharedLod;
+        c[0] = hexcFetch(param_2, param_3, param_4, SPIRV_Cross_Combinedtexsamp);
+    }
+#line 468 "hexc/hextiling.glsl"
+    if (f.y)
+    {
+#line 468 "hexc/hextiling.glsl"
+        HexcTap param_5 = t.tap[1];
+        float param_6 = lod.y;
+        bool param_7 = sharedLod;
+        c[1] = hexcFetch(param_5, param_6, param_7, SPIRV_Cross_Combinedtexsamp);
+    }
+#line 469 "hexc/hextiling.glsl"
+    if (f.z)
+    {
+#line 469 "hexc/hextiling.glsl"
+        HexcTap param_8 = t.tap[2];
+        float param_9 = lod.z;
+        bool param_10 = sharedLod;
+        c[2] = hexcFetch(param_8, param_9, param_10, SPIRV_Cross_Combinedtexsamp);
+    }
+}
+
+#line 342 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 326 "hexc/hextiling.glsl"
+#line 342 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
     vec3 res = hexcGainCurve(param, param_1, param_2);
-#line 327 "hexc/hextiling.glsl"
+#line 343 "hexc/hextiling.glsl"
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 359 "hexc/hextiling.glsl"
+#line 375 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights(vec3 w, vec3 Dw, HexcBlend b)
 {
-#line 359 "hexc/hextiling.glsl"
-    vec3 _1102;
+#line 375 "hexc/hextiling.glsl"
+    vec3 _1093;
     if (b.exponentInt > 0)
     {
-#line 359 "hexc/hextiling.glsl"
+#line 375 "hexc/hextiling.glsl"
         vec3 param = w;
         int param_1 = b.exponentInt;
-        vec3 _1110 = hexcPowInt(param, param_1);
-        _1102 = _1110;
+        vec3 _1101 = hexcPowInt(param, param_1);
+        _1093 = _1101;
     }
     else
     {
-#line 359 "hexc/hextiling.glsl"
-        _1102 = pow(w, vec3(b.exponent));
+#line 375 "hexc/hextiling.glsl"
+        _1093 = pow(w, vec3(b.exponent));
     }
-    vec3 wg = _1102;
-#line 360 "hexc/hextiling.glsl"
-    vec3 _1121;
+    vec3 wg = _1093;
+#line 376 "hexc/hextiling.glsl"
+    vec3 _1112;
     if (b.metric)
     {
-#line 360 "hexc/hextiling.glsl"
-        _1121 = mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(b.falloffContrast)) * wg;
+#line 376 "hexc/hextiling.glsl"
+        _1112 = mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(b.falloffContrast)) * wg;
     }
     else
     {
-        _1121 = wg;
+        _1112 = wg;
     }
-    vec3 W = _1121;
-#line 361 "hexc/hextiling.glsl"
+    vec3 W = _1112;
+#line 377 "hexc/hextiling.glsl"
     float sum = (W.x + W.y) + W.z;
-#line 362 "hexc/hextiling.glsl"
-    vec3 _1146;
+#line 378 "hexc/hextiling.glsl"
+    vec3 _1137;
     if (sum > 0.0)
     {
-#line 362 "hexc/hextiling.glsl"
-        _1146 = W / vec3(sum);
+#line 378 "hexc/hextiling.glsl"
+        _1137 = W / vec3(sum);
     }
     else
     {
-#line 362 "hexc/hextiling.glsl"
-        _1146 = wg / vec3((wg.x + wg.y) + wg.z);
+#line 378 "hexc/hextiling.glsl"
+        _1137 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1146;
-#line 363 "hexc/hextiling.glsl"
-    bool _1180;
+    W = _1137;
+#line 379 "hexc/hextiling.glsl"
+    bool _1171;
     if (b.gain)
     {
-#line 363 "hexc/hextiling.glsl"
-        bool _1172 = b.gainInt > 0;
-        bool _1179;
-        if (!_1172)
+#line 379 "hexc/hextiling.glsl"
+        bool _1163 = b.gainInt > 0;
+        bool _1170;
+        if (!_1163)
         {
-#line 363 "hexc/hextiling.glsl"
-            _1179 = b.falloff != 0.5;
+#line 379 "hexc/hextiling.glsl"
+            _1170 = b.falloff != 0.5;
         }
         else
         {
-            _1179 = _1172;
+            _1170 = _1163;
         }
-        _1180 = _1179;
+        _1171 = _1170;
     }
     else
     {
-        _1180 = b.gain;
+        _1171 = b.gain;
     }
-    if (_1180)
+    if (_1171)
     {
-#line 363 "hexc/hextiling.glsl"
+#line 379 "hexc/hextiling.glsl"
         vec3 param_2 = W;
         float param_3 = b.falloff;
         int param_4 = b.gainInt;
         W = hexcGain3(param_2, param_3, param_4);
     }
-#line 364 "hexc/hextiling.glsl"
+#line 380 "hexc/hextiling.glsl"
     return W;
 }
 
-#line 440 "hexc/hextiling.glsl"
+#line 475 "hexc/hextiling.glsl"
 vec3 hexcTileHeights(HexcTiles t, HexcBlend b, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 440 "hexc/hextiling.glsl"
+#line 475 "hexc/hextiling.glsl"
     HexcTiles param = t;
-    bool param_1 = b.sharedLod;
-    vec3 lod = hexcTileLods(param, param_1, SPIRV_Cross_Combinedtexsamp);
-#line 443 "hexc/hextiling.glsl"
-#line 441 "hexc/hextiling.glsl"
-    vec2 param_2 = t.st1;
-    vec2 param_3 = t.dx1;
-    vec2 param_4 = t.dy1;
-    float param_5 = lod.x;
-    bool param_6 = b.sharedLod;
-#line 442 "hexc/hextiling.glsl"
-    vec2 param_7 = t.st2;
-    vec2 param_8 = t.dx2;
-    vec2 param_9 = t.dy2;
-    float param_10 = lod.y;
-    bool param_11 = b.sharedLod;
-#line 443 "hexc/hextiling.glsl"
-    float _1574;
-    if (b.taps > 2)
-    {
-#line 443 "hexc/hextiling.glsl"
-        vec2 param_12 = t.st3;
-        vec2 param_13 = t.dx3;
-        vec2 param_14 = t.dy3;
-        float param_15 = lod.z;
-        bool param_16 = b.sharedLod;
-        _1574 = dot(hexcFetch(param_12, param_13, param_14, param_15, param_16, SPIRV_Cross_Combinedtexsamp), b.heightLuma);
-    }
-    else
-    {
-        _1574 = 0.0;
-    }
-#line 441 "hexc/hextiling.glsl"
-    return vec3(dot(hexcFetch(param_2, param_3, param_4, param_5, param_6, SPIRV_Cross_Combinedtexsamp), b.heightLuma), dot(hexcFetch(param_7, param_8, param_9, param_10, param_11, SPIRV_Cross_Combinedtexsamp), b.heightLuma), _1574);
+    bvec3 param_1 = bvec3(true, true, b.taps > 2);
+    bool param_2 = b.sharedLod;
+    vec4 param_3[3];
+    hexcFetchTaps(param, param_1, param_2, param_3, SPIRV_Cross_Combinedtexsamp);
+    vec4 h[3] = param_3;
+#line 476 "hexc/hextiling.glsl"
+    return vec3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
 }
 
-#line 415 "hexc/hextiling.glsl"
+#line 431 "hexc/hextiling.glsl"
 vec3 hexcHeightBlend(vec3 W, vec3 h, float width)
 {
-#line 415 "hexc/hextiling.glsl"
+#line 431 "hexc/hextiling.glsl"
     vec3 a = max(h, vec3(0.0)) * W;
-#line 416 "hexc/hextiling.glsl"
+#line 432 "hexc/hextiling.glsl"
     vec3 Wh = W * max((a - vec3(max(max(a.x, a.y), a.z))) + vec3(width), vec3(0.0));
-#line 417 "hexc/hextiling.glsl"
+#line 433 "hexc/hextiling.glsl"
     return Wh / vec3((Wh.x + Wh.y) + Wh.z);
 }
 
-#line 84 "hexc/hextiling.glsl"
+#line 88 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 84 "hexc/hextiling.glsl"
-#line 85 "hexc/hextiling.glsl"
-#line 84 "hexc/hextiling.glsl"
+#line 88 "hexc/hextiling.glsl"
+#line 89 "hexc/hextiling.glsl"
+#line 88 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 458 "hexc/hextiling.glsl"
+#line 488 "hexc/hextiling.glsl"
 vec4 hexcColor(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp, sampler2D SPIRV_Cross_CombinedheightTexsamp)
 {
-#line 458 "hexc/hextiling.glsl"
-    bvec3 _1629;
-    if (b.adaptive)
-    {
-#line 458 "hexc/hextiling.glsl"
-        vec3 param = t.w;
-        HexcBlend param_1 = b;
-        _1629 = hexcAdaptiveTaps(param, param_1);
-    }
-    else
-    {
-#line 458 "hexc/hextiling.glsl"
-        _1629 = bvec3(true, true, b.taps > 2);
-    }
-    bvec3 f = _1629;
-#line 459 "hexc/hextiling.glsl"
+#line 488 "hexc/hextiling.glsl"
+    vec3 param = t.w;
+    HexcBlend param_1 = b;
+    bvec3 f = hexcFetched(param, param_1);
+#line 490 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
-    bool param_3 = b.sharedLod;
-    vec3 lod = hexcTileLods(param_2, param_3, SPIRV_Cross_Combinedtexsamp);
-#line 460 "hexc/hextiling.glsl"
-    vec4 c1 = vec4(0.0);
-    vec4 c2 = vec4(0.0);
-    vec4 c3 = vec4(0.0);
-#line 461 "hexc/hextiling.glsl"
-    if (f.x)
-    {
-#line 461 "hexc/hextiling.glsl"
-        vec2 param_4 = t.st1;
-        vec2 param_5 = t.dx1;
-        vec2 param_6 = t.dy1;
-        float param_7 = lod.x;
-        bool param_8 = b.sharedLod;
-        c1 = hexcFetch(param_4, param_5, param_6, param_7, param_8, SPIRV_Cross_Combinedtexsamp);
-    }
-#line 462 "hexc/hextiling.glsl"
-    if (f.y)
-    {
-#line 462 "hexc/hextiling.glsl"
-        vec2 param_9 = t.st2;
-        vec2 param_10 = t.dx2;
-        vec2 param_11 = t.dy2;
-        float param_12 = lod.y;
-        bool param_13 = b.sharedLod;
-        c2 = hexcFetch(param_9, param_10, param_11, param_12, param_13, SPIRV_Cross_Combinedtexsamp);
-    }
-#line 463 "hexc/hextiling.glsl"
-    if (f.z)
-    {
-#line 463 "hexc/hextiling.glsl"
-        vec2 param_14 = t.st3;
-        vec2 param_15 = t.dx3;
-        vec2 param_16 = t.dy3;
-        float param_17 = lod.z;
-        bool param_18 = b.sharedLod;
-        c3 = hexcFetch(param_14, param_15, param_16, param_17, param_18, SPIRV_Cross_Combinedtexsamp);
-    }
-#line 464 "hexc/hextiling.glsl"
-    vec3 Dw = vec3(dot(c1, luma), dot(c2, luma), dot(c3, luma));
-#line 465 "hexc/hextiling.glsl"
-    vec3 param_19 = t.w * vec3(f);
-    vec3 param_20 = Dw;
-    HexcBlend param_21 = b;
-    vec3 W = hexcBlendWeights(param_19, param_20, param_21);
-#line 466 "hexc/hextiling.glsl"
+    bvec3 param_3 = f;
+    bool param_4 = b.sharedLod;
+    vec4 param_5[3];
+    hexcFetchTaps(param_2, param_3, param_4, param_5, SPIRV_Cross_Combinedtexsamp);
+    vec4 c[3] = param_5;
+#line 491 "hexc/hextiling.glsl"
+    vec3 Dw = vec3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
+#line 492 "hexc/hextiling.glsl"
+    vec3 param_6 = t.w * vec3(f);
+    vec3 param_7 = Dw;
+    HexcBlend param_8 = b;
+    vec3 W = hexcBlendWeights(param_6, param_7, param_8);
+#line 493 "hexc/hextiling.glsl"
     if (b.height)
     {
-#line 466 "hexc/hextiling.glsl"
-        HexcTiles param_22 = t;
-        HexcBlend param_23 = b;
-        vec3 param_24 = W;
-        vec3 param_25 = hexcTileHeights(param_22, param_23, SPIRV_Cross_CombinedheightTexsamp);
-        float param_26 = b.heightWidth;
-        W = hexcHeightBlend(param_24, param_25, param_26);
+#line 493 "hexc/hextiling.glsl"
+        HexcTiles param_9 = t;
+        HexcBlend param_10 = b;
+        vec3 param_11 = W;
+        vec3 param_12 = hexcTileHeights(param_9, param_10, SPIRV_Cross_CombinedheightTexsamp);
+        float param_13 = b.heightWidth;
+        W = hexcHeightBlend(param_11, param_12, param_13);
     }
-#line 467 "hexc/hextiling.glsl"
-    vec3 param_27 = W;
-    ivec3 param_28 = t.channel;
-    weights = hexcShowWeights(param_27, param_28);
-#line 468 "hexc/hextiling.glsl"
-    return ((c1 * W.x) + (c2 * W.y)) + (c3 * W.z);
+#line 494 "hexc/hextiling.glsl"
+    vec3 param_14 = W;
+    ivec3 param_15 = t.channel;
+    weights = hexcShowWeights(param_14, param_15);
+#line 495 "hexc/hextiling.glsl"
+    return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
 #line 20 "hexc/generated"
@@ -967,9 +949,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcBlend param_6 = blend;
     vec4 param_7 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_8;
-    vec4 _2076 = hexcColor(param_5, param_6, param_7, param_8, hexcTex_albedo, hexcTex_albedo);
+    vec4 _2021 = hexcColor(param_5, param_6, param_7, param_8, hexcTex_albedo, hexcTex_albedo);
     weights = param_8;
-    return _2076;
+    return _2021;
 }
 
 #line 41 "hexc/generated"
@@ -983,9 +965,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _2096 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _2041 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2096;
+    return _2041;
 }
 
 #line 44 "hexc/generated"
@@ -994,37 +976,37 @@ vec4 hexc_albedo(vec2 uv)
 #line 44 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _2104 = hexc_albedo(param, param_1);
+    vec4 _2049 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _2104;
+    return _2049;
 }
 
-#line 449 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 449 "hexc/hextiling.glsl"
-    vec4 _1603;
+#line 482 "hexc/hextiling.glsl"
+    vec4 _1634;
     if (c == 0)
     {
-        _1603 = vec4(1.0, 0.0, 0.0, 0.0);
+        _1634 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-#line 449 "hexc/hextiling.glsl"
-        vec4 _1610;
+#line 482 "hexc/hextiling.glsl"
+        vec4 _1641;
         if (c == 1)
         {
-            _1610 = vec4(0.0, 1.0, 0.0, 0.0);
+            _1641 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-#line 449 "hexc/hextiling.glsl"
-            _1610 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+#line 482 "hexc/hextiling.glsl"
+            _1641 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _1603 = _1610;
+        _1634 = _1641;
     }
-#line 449 "hexc/hextiling.glsl"
-    return _1603;
+#line 482 "hexc/hextiling.glsl"
+    return _1634;
 }
 
 #line 73 "hexc/generated"
@@ -1075,9 +1057,9 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcBlend param_7 = blend;
     vec4 param_8 = hexcChannel(param_5);
     vec3 param_9;
-    vec4 _2221 = hexcColor(param_6, param_7, param_8, param_9, hexcTex_roughness, hexcTex_roughness);
+    vec4 _2166 = hexcColor(param_6, param_7, param_8, param_9, hexcTex_roughness, hexcTex_roughness);
     weights = param_9;
-    return _2221.x;
+    return _2166.x;
 }
 
 #line 94 "hexc/generated"
@@ -1091,9 +1073,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _2241 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _2186 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2241;
+    return _2186;
 }
 
 #line 97 "hexc/generated"
@@ -1102,150 +1084,143 @@ float hexc_roughness(vec2 uv)
 #line 97 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _2249 = hexc_roughness(param, param_1);
+    float _2194 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _2249;
+    return _2194;
 }
 
-#line 504 "hexc/hextiling.glsl"
+#line 530 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 504 "hexc/hextiling.glsl"
+#line 530 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
-#line 505 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-#line 506 "hexc/hextiling.glsl"
-    float _1794;
+#line 532 "hexc/hextiling.glsl"
+    float _1763;
     if (flipY)
     {
-#line 506 "hexc/hextiling.glsl"
-        _1794 = -vM.y;
+#line 532 "hexc/hextiling.glsl"
+        _1763 = -vM.y;
     }
     else
     {
-#line 506 "hexc/hextiling.glsl"
-        _1794 = vM.y;
+#line 532 "hexc/hextiling.glsl"
+        _1763 = vM.y;
     }
-#line 506 "hexc/hextiling.glsl"
-    return (-vec2(vM.x, _1794)) / vec2(zMa);
+#line 532 "hexc/hextiling.glsl"
+    return (-vec2(vM.x, _1763)) / vec2(zMa);
 }
 
-#line 511 "hexc/hextiling.glsl"
-vec2 hexcSampleDeriv(vec2 st, vec2 dx, vec2 dy, float lod, bool sharedLod, bool flipY, sampler2D SPIRV_Cross_Combinedtexsamp)
-{
-#line 511 "hexc/hextiling.glsl"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    float param_3 = lod;
-    bool param_4 = sharedLod;
-    vec3 vM = (hexcFetch(param, param_1, param_2, param_3, param_4, SPIRV_Cross_Combinedtexsamp).xyz * 2.0) - vec3(1.0);
-#line 512 "hexc/hextiling.glsl"
-    vec3 param_5 = vM;
-    bool param_6 = flipY;
-    return hexcNormalToDeriv(param_5, param_6);
-}
-
-#line 98 "hexc/hextiling.glsl"
+#line 102 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 98 "hexc/hextiling.glsl"
+#line 102 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 519 "hexc/hextiling.glsl"
-vec2 hexcDeriv(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp, sampler2D SPIRV_Cross_CombinedheightTexsamp)
+#line 538 "hexc/hextiling.glsl"
+vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 519 "hexc/hextiling.glsl"
-    bvec3 _1837;
-    if (b.adaptive)
+#line 538 "hexc/hextiling.glsl"
+    vec3 param = (texel.xyz * 2.0) - vec3(1.0);
+    bool param_1 = flipY;
+    vec2 param_2 = hexcNormalToDeriv(param, param_1);
+    vec2 param_3 = p.rot;
+    vec2 d = hexcRotateFromTile(param_2, param_3);
+    vec2 _1796;
+    if (scaled)
     {
-#line 519 "hexc/hextiling.glsl"
-        vec3 param = t.w;
-        HexcBlend param_1 = b;
-        _1837 = hexcAdaptiveTaps(param, param_1);
+#line 539 "hexc/hextiling.glsl"
+        _1796 = d * p.invScale;
     }
     else
     {
-#line 519 "hexc/hextiling.glsl"
-        _1837 = bvec3(true, true, b.taps > 2);
+        _1796 = d;
     }
-    bvec3 f = _1837;
-#line 520 "hexc/hextiling.glsl"
+#line 539 "hexc/hextiling.glsl"
+    return _1796;
+}
+
+#line 546 "hexc/hextiling.glsl"
+vec2 hexcDeriv(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp, sampler2D SPIRV_Cross_CombinedheightTexsamp)
+{
+#line 546 "hexc/hextiling.glsl"
+    vec3 param = t.w;
+    HexcBlend param_1 = b;
+    bvec3 f = hexcFetched(param, param_1);
+#line 547 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bool param_3 = b.sharedLod;
     vec3 lod = hexcTileLods(param_2, param_3, SPIRV_Cross_Combinedtexsamp);
-#line 521 "hexc/hextiling.glsl"
+#line 548 "hexc/hextiling.glsl"
     vec2 d1 = vec2(0.0);
     vec2 d2 = vec2(0.0);
     vec2 d3 = vec2(0.0);
-#line 522 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 522 "hexc/hextiling.glsl"
-        vec2 param_4 = t.st1;
-        vec2 param_5 = t.dx1;
-        vec2 param_6 = t.dy1;
-        float param_7 = lod.x;
-        bool param_8 = b.sharedLod;
-        bool param_9 = flipY;
-        vec2 param_10 = hexcSampleDeriv(param_4, param_5, param_6, param_7, param_8, param_9, SPIRV_Cross_Combinedtexsamp);
-        vec2 param_11 = t.rot1;
-        d1 = hexcRotateFromTile(param_10, param_11) * t.invScale.x;
+#line 549 "hexc/hextiling.glsl"
+        HexcTap param_4 = t.tap[0];
+        float param_5 = lod.x;
+        bool param_6 = b.sharedLod;
+        vec4 param_7 = hexcFetch(param_4, param_5, param_6, SPIRV_Cross_Combinedtexsamp);
+        HexcTap param_8 = t.tap[0];
+        bool param_9 = t.scaled;
+        bool param_10 = flipY;
+        d1 = hexcTapDeriv(param_7, param_8, param_9, param_10);
     }
-#line 523 "hexc/hextiling.glsl"
+#line 550 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 523 "hexc/hextiling.glsl"
-        vec2 param_12 = t.st2;
-        vec2 param_13 = t.dx2;
-        vec2 param_14 = t.dy2;
-        float param_15 = lod.y;
-        bool param_16 = b.sharedLod;
+#line 550 "hexc/hextiling.glsl"
+        HexcTap param_11 = t.tap[1];
+        float param_12 = lod.y;
+        bool param_13 = b.sharedLod;
+        vec4 param_14 = hexcFetch(param_11, param_12, param_13, SPIRV_Cross_Combinedtexsamp);
+        HexcTap param_15 = t.tap[1];
+        bool param_16 = t.scaled;
         bool param_17 = flipY;
-        vec2 param_18 = hexcSampleDeriv(param_12, param_13, param_14, param_15, param_16, param_17, SPIRV_Cross_Combinedtexsamp);
-        vec2 param_19 = t.rot2;
-        d2 = hexcRotateFromTile(param_18, param_19) * t.invScale.y;
+        d2 = hexcTapDeriv(param_14, param_15, param_16, param_17);
     }
-#line 524 "hexc/hextiling.glsl"
+#line 551 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 524 "hexc/hextiling.glsl"
-        vec2 param_20 = t.st3;
-        vec2 param_21 = t.dx3;
-        vec2 param_22 = t.dy3;
-        float param_23 = lod.z;
-        bool param_24 = b.sharedLod;
-        bool param_25 = flipY;
-        vec2 param_26 = hexcSampleDeriv(param_20, param_21, param_22, param_23, param_24, param_25, SPIRV_Cross_Combinedtexsamp);
-        vec2 param_27 = t.rot3;
-        d3 = hexcRotateFromTile(param_26, param_27) * t.invScale.z;
+#line 551 "hexc/hextiling.glsl"
+        HexcTap param_18 = t.tap[2];
+        float param_19 = lod.z;
+        bool param_20 = b.sharedLod;
+        vec4 param_21 = hexcFetch(param_18, param_19, param_20, SPIRV_Cross_Combinedtexsamp);
+        HexcTap param_22 = t.tap[2];
+        bool param_23 = t.scaled;
+        bool param_24 = flipY;
+        d3 = hexcTapDeriv(param_21, param_22, param_23, param_24);
     }
-#line 525 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-#line 526 "hexc/hextiling.glsl"
-    vec3 param_28 = t.w * vec3(f);
-    vec3 param_29 = sqrt(D / (vec3(1.0) + D));
-    HexcBlend param_30 = b;
-    vec3 W = hexcBlendWeights(param_28, param_29, param_30);
-#line 527 "hexc/hextiling.glsl"
+#line 553 "hexc/hextiling.glsl"
+    vec3 param_25 = t.w * vec3(f);
+    vec3 param_26 = sqrt(D / (vec3(1.0) + D));
+    HexcBlend param_27 = b;
+    vec3 W = hexcBlendWeights(param_25, param_26, param_27);
+#line 554 "hexc/hextiling.glsl"
     if (b.height)
     {
-#line 527 "hexc/hextiling.glsl"
-        HexcTiles param_31 = t;
-        HexcBlend param_32 = b;
-        vec3 param_33 = W;
-        vec3 param_34 = hexcTileHeights(param_31, param_32, SPIRV_Cross_CombinedheightTexsamp);
-        float param_35 = b.heightWidth;
-        W = hexcHeightBlend(param_33, param_34, param_35);
+#line 554 "hexc/hextiling.glsl"
+        HexcTiles param_28 = t;
+        HexcBlend param_29 = b;
+        vec3 param_30 = W;
+        vec3 param_31 = hexcTileHeights(param_28, param_29, SPIRV_Cross_CombinedheightTexsamp);
+        float param_32 = b.heightWidth;
+        W = hexcHeightBlend(param_30, param_31, param_32);
     }
-#line 528 "hexc/hextiling.glsl"
-    vec3 param_36 = W;
-    ivec3 param_37 = t.channel;
-    weights = hexcShowWeights(param_36, param_37);
-#line 529 "hexc/hextiling.glsl"
+#line 555 "hexc/hextiling.glsl"
+    vec3 param_33 = W;
+    ivec3 param_34 = t.channel;
+    weights = hexcShowWeights(param_33, param_34);
+#line 556 "hexc/hextiling.glsl"
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
@@ -1296,9 +1271,9 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcBlend param_6 = blend;
     bool param_7 = false;
     vec3 param_8;
-    vec2 _2148 = hexcDeriv(param_5, param_6, param_7, param_8, hexcTex_normal, hexcTex_normal);
+    vec2 _2093 = hexcDeriv(param_5, param_6, param_7, param_8, hexcTex_normal, hexcTex_normal);
     weights = param_8;
-    return _2148;
+    return _2093;
 }
 
 #line 67 "hexc/generated"
@@ -1312,9 +1287,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _2167 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _2112 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2167;
+    return _2112;
 }
 
 #line 70 "hexc/generated"
@@ -1323,15 +1298,15 @@ vec2 hexc_normal(vec2 uv)
 #line 70 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _2175 = hexc_normal(param, param_1);
+    vec2 _2120 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _2175;
+    return _2120;
 }
 
-#line 584 "hexc/hextiling.glsl"
+#line 608 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 584 "hexc/hextiling.glsl"
+#line 608 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 
