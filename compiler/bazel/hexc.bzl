@@ -1,22 +1,30 @@
-"""hexc_material: one hexc material compiled in one Bazel action (docs/build-integration.md, "Bazel")."""
+"""hexc_material: one hexc material (or scene) compiled in one Bazel action; hexc_outputs: the files each writes,
+listed by hexc before the build (docs/build-integration.md, "Bazel")."""
 
 # hexc's --targets names and the extensions of the files they write (<name>.frag.<extension>).
 _EXTENSIONS = {"spirv": "spv", "hlsl": "hlsl", "glsl": "glsl", "msl": "metal"}
+
+# The names hexc keeps a stamp for: one per manifest "<name>.manifest.json" (a material, or a scene's variant).
+def _stamped(outs):
+    return [f[:-len(".manifest.json")] for f in outs if f.endswith(".manifest.json")]
 
 def _hexc_material_impl(ctx):
     name = ctx.attr.material_name or ctx.label.name
     for target in ctx.attr.targets:
         if target not in _EXTENSIONS:
             fail("unknown target `%s`; expected spirv, hlsl, glsl or msl" % target, "targets")
-    shaders = [ctx.actions.declare_file(name + ".manifest.json")]
-    shaders += [ctx.actions.declare_file("%s.frag.%s" % (name, _EXTENSIONS[t])) for t in ctx.attr.targets]
-    if ctx.attr.vertex:
-        shaders += [ctx.actions.declare_file("%s.vert.%s" % (name, _EXTENSIONS[t])) for t in ctx.attr.targets]
+    if ctx.attr.outs:
+        shaders = [ctx.actions.declare_file(f) for f in ctx.attr.outs]
+    else:
+        shaders = [ctx.actions.declare_file(name + ".manifest.json")]
+        shaders += [ctx.actions.declare_file("%s.frag.%s" % (name, _EXTENSIONS[t])) for t in ctx.attr.targets]
+        if ctx.attr.vertex:
+            shaders += [ctx.actions.declare_file("%s.vert.%s" % (name, _EXTENSIONS[t])) for t in ctx.attr.targets]
 
     # hexc always writes its stamp beside the outputs. It is declared, so the action leaves no undeclared file
     # behind; --force, because Bazel, not the stamp, decides when the action runs; --no-cache, because Bazel's own
     # action cache serves that purpose and an action reads nothing undeclared.
-    stamp = ctx.actions.declare_file("." + name + ".hexc-stamp")
+    stamps = [ctx.actions.declare_file("." + n + ".hexc-stamp") for n in _stamped(ctx.attr.outs) or [name]]
 
     args = ctx.actions.args()
     args.add(ctx.file.material)
@@ -30,7 +38,7 @@ def _hexc_material_impl(ctx):
         executable = ctx.executable.hexc,
         arguments = [args],
         inputs = [ctx.file.material] + ctx.files.textures + ctx.files.templates,
-        outputs = shaders + [stamp],
+        outputs = shaders + stamps,
         mnemonic = "HexcMaterial",
         progress_message = "hexc: compiling " + name,
     )
@@ -38,13 +46,19 @@ def _hexc_material_impl(ctx):
 
 hexc_material = rule(
     implementation = _hexc_material_impl,
-    doc = "Compiles one material with hexc: <name>.manifest.json and <name>.frag.{spv,hlsl,glsl,metal} " +
-          "(those of `targets`).",
+    doc = "Compiles one material (or scene) with hexc in one action; its files are `outs` (from hexc_outputs), " +
+          "or by default <name>.manifest.json and <name>.frag.{spv,hlsl,glsl,metal} (those of `targets`).",
     attrs = {
         "material": attr.label(
             allow_single_file = [".json", ".mtlx"],
             mandatory = True,
-            doc = "The material file: JSON, or a MaterialX document holding one material.",
+            doc = "The material file: JSON, or a MaterialX document holding one material; or a scene, whose " +
+                  "material files go in `textures` with the textures.",
+        ),
+        "outs": attr.string_list(
+            doc = "The files hexc writes, as hexc_outputs lists them (HEXC_OUTPUTS[\"<material path>\"]): " +
+                  "histogram tables, packed textures, a scene's variants and index included. Default: " +
+                  "<name>.manifest.json and the shaders of `targets` (and `vertex`).",
         ),
         "material_name": attr.string(
             doc = "The material's \"name\", which names the outputs; default: this target's name.",
@@ -75,6 +89,45 @@ hexc_material = rule(
         ),
         "options": attr.string_list(
             doc = "More hexc options, as written, e.g. [\"--bake\", \"--hlsl-sm\", \"60\"].",
+        ),
+    },
+)
+
+def _hexc_outputs_impl(rctx):
+    hexc = rctx.path(rctx.attr.hexc)
+
+    # Each file named is read through its label, so Bazel fetches this repository again when one changes.
+    for f in rctx.attr.srcs:
+        rctx.path(f)
+    lines = []
+    for material, options in rctx.attr.materials.items():
+        path = material.name if not material.package else material.package + "/" + material.name
+        command = [hexc, rctx.path(material), "-o", "out", "--list-outputs"] + [o for o in options.split(" ") if o]
+        result = rctx.execute(command)
+        if result.return_code != 0:
+            fail("hexc --list-outputs %s:\n%s" % (path, result.stderr))
+        outs = [f[len("out/"):] for f in json.decode(result.stdout)["outputs"]]
+        lines.append("    %s: %s," % (repr(path), repr(outs)))
+    rctx.file("BUILD", "")
+    rctx.file("outputs.bzl", "# Written by hexc_outputs.\nHEXC_OUTPUTS = {\n" + "\n".join(sorted(lines)) + "\n}\n")
+
+hexc_outputs = repository_rule(
+    implementation = _hexc_outputs_impl,
+    doc = "Runs `hexc --list-outputs` on each material when Bazel loads the workspace and writes " +
+          "@<name>//:outputs.bzl, whose HEXC_OUTPUTS maps each material's workspace path to the files hexc " +
+          "writes for it, for hexc_material's `outs`. Listed again when a material or a file of `srcs` changes.",
+    attrs = {
+        "hexc": attr.label(mandatory = True, allow_single_file = True, doc = "The hexc executable."),
+        "materials": attr.label_keyed_string_dict(
+            allow_files = True,
+            mandatory = True,
+            doc = "Each material (or scene) file, with the hexc options its hexc_material passes " +
+                  "(`--targets`, `--vertex`, `options`), space-separated.",
+        ),
+        "srcs": attr.label_list(
+            allow_files = True,
+            doc = "The files the lists depend on besides the materials: a scene's material files, a template, " +
+                  "a packing material's textures (their pixels decide what packs).",
         ),
     },
 )

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# The Bazel test: installs hexc from BUILD into a fresh prefix, builds tests/bazel/workspace (the rule
-# hexc_material, loaded from the installed share/hexc/bazel/) in Bazel's linux-sandbox, checks the outputs are
-# byte-identical to the command line's, then checks that a material whose texture is not declared fails to build
-# (outside a sandbox hexc would find the file and succeed):
+# The Bazel test: installs hexc from BUILD into a fresh prefix, builds tests/bazel/workspace (the rules
+# hexc_outputs and hexc_material, loaded from the installed share/hexc/bazel/) in Bazel's linux-sandbox: a plain
+# material with its vertex stage, a histogram one, a packing one, a MaterialX document and a scene. Checks that
+# each target's files are exactly, and byte for byte, those the command line writes (an output Bazel was not told
+# of would be missing), then which actions each edit runs, then that a material whose texture is not declared
+# fails to build (outside a sandbox hexc would find the file and succeed):
 #   tests/bazel/run.sh BUILD
 # Exits 77 (ctest's SKIP_RETURN_CODE) when bazel is not installed (Debian: bazel-bootstrap).
 set -euo pipefail
@@ -15,26 +17,61 @@ rm -rf "$work" && mkdir -p "$work"
 cmake --install "$build" --prefix "$work/prefix" > /dev/null
 
 ws=$work/workspace
-cp -r tests/bazel/workspace "$ws"
-sed -i "s|/opt/hexc|$work/prefix|" "$ws/WORKSPACE"
-mkdir -p "$ws/materials/textures"
-cp materials/rock.json "$ws/materials/"
-cp materials/textures/rock_{albedo,normal,roughness}.png "$ws/materials/textures/"
-
+source tests/bazel/common.sh
+workspace "$ws" "$work/prefix"
+trap 'in_bazel "$ws" "$work/root" shutdown' EXIT
 fail() { echo "bazel: $*" >&2; exit 1; }
-# --batch: no server outlives the test. Only Debian's system bazelrc (its install base) applies, not a user's.
-# linux-sandbox explicitly: a sandbox that cannot start fails the build instead of falling back to none.
-bazel_build() {
-  (cd "$ws" && bazel --batch --nohome_rc --noworkspace_rc --output_user_root="$work/root" \
-    build --spawn_strategy=linux-sandbox --nosandbox_debug //:rock) > "$work/log" 2>&1
+bazel_build() { build_all "$ws" "$work/root" "$work/exec.json" > "$work/log" 2>&1; }
+# Builds and checks which targets' hexc actions ran: expect NAME... (none for a no-op); every build is clean.
+expect() {
+  bazel_build || { cat "$work/log"; fail "$step: the build failed"; }
+  ! grep "WARNING\|ERROR" "$work/log" || fail "$step: the build printed the lines above"
+  got=$(python3 tests/bazel/hexc_actions.py "$work/exec.json" ran)
+  [ "$got" = "$*" ] || { cat "$work/log"; fail "$step: expected hexc to run for [$*], it ran for [$got]"; }
+  echo "ok: $step: [$got]"
+}
+# The files of a target: those hexc writes into DIR for the same material and options, each identical.
+same_as_cli() {  # TARGET MATERIAL OPTION...
+  local target=$1 material=$2 cli=$work/cli/$1
+  shift 2
+  (cd "$ws" && "$work/prefix/bin/hexc" "$material" -o "$cli" -q --no-cache "$@") || fail "the command line failed for $material"
+  for f in "$cli"/*; do cmp "$f" "$ws/bazel-bin/${f##*/}" || fail "$target: bazel-bin/${f##*/} differs from the command line's"; done
+  listed=$(sed -n "s/^$target: //p" "$work/files")
+  [ "$listed" = "$(ls "$cli" | sort | xargs)" ] || fail "$target's files [$listed] are not the command line's [$(ls "$cli" | xargs)]"
 }
 
-(cd "$ws" && "$work/prefix/bin/hexc" materials/rock.json -o "$work/cli" -q --vertex) || fail "the command line failed"
-bazel_build || { cat "$work/log"; fail "the sandboxed build failed"; }
-for f in rock.manifest.json rock.{frag,vert}.{spv,hlsl,glsl,metal}; do
-  cmp "$ws/bazel-bin/$f" "$work/cli/$f" || fail "bazel-bin/$f differs from the command line's"
-done
-echo "ok: sandboxed build, outputs identical to the command line's"
+step="first build" expect crate gravel rock slate yard
+# Each target's files, as Bazel knows them: "<target>: <file> ...".
+in_bazel "$ws" "$work/root" cquery --nosandbox_debug --output=starlark \
+  --starlark:expr='target.label.name + ": " + " ".join(sorted([f.basename for f in target.files.to_list()]))' //... \
+  > "$work/files" 2> "$work/log" || { cat "$work/log"; fail "cquery failed"; }
+same_as_cli rock materials/rock.json --vertex
+same_as_cli gravel materials/gravel.json --targets spirv,hlsl
+same_as_cli crate materials/crate.json
+same_as_cli slate materials/slate.mtlx
+same_as_cli yard materials/yard.json --targets spirv
+echo "ok: every target's files are the command line's, byte for byte, tables, packed texture, vertex stages and scene included"
+step="no-op build" expect
+
+# New pixels of gravel's albedo: gravel and the scene that uses it run; the shaders keep their bytes, the tables not.
+shader=$(sha256sum "$ws/bazel-bin/gravel.frag.spv") table=$(sha256sum "$ws/bazel-bin/gravel.albedo.lut.pfm")
+cp materials/textures/tiles_albedo.png "$ws/materials/textures/gravel_albedo.png"
+step="gravel_albedo.png's pixels edited" expect gravel yard
+[ "$(sha256sum "$ws/bazel-bin/gravel.frag.spv")" = "$shader" ] || fail "new pixels changed gravel's shader"
+[ "$(sha256sum "$ws/bazel-bin/gravel.albedo.lut.pfm")" != "$table" ] || fail "gravel's table was not derived again"
+
+chmod u+w "$ws/bazel-bin/crate.albedo.packed.png" && rm "$ws/bazel-bin/crate.albedo.packed.png"
+step="deleted crate.albedo.packed.png" expect crate
+[ -s "$ws/bazel-bin/crate.albedo.packed.png" ] || fail "crate.albedo.packed.png was not rebuilt"
+
+# A texture of another size, and a removed slot: hexc_outputs lists again and the outputs follow.
+tests/consumer/png.py "$ws/materials/textures/crate_roughness.png" 97 61 1
+step="crate_roughness.png resized" expect crate yard
+sed -i '/"roughness"/d; s/\(gravel_albedo.png" }\),/\1/' "$ws/materials/gravel.json"
+sed -i 's/\("texture": "textures\/gravel_albedo.png" }\),/\1/' "$ws/materials/gravel.json"
+step="gravel's roughness slot removed" expect gravel yard
+grep -q "gravel.roughness" "$work/root/"*/external/hexc_outputs/outputs.bzl && fail "gravel.roughness's tables are still declared"
+step="second build after the edits" expect
 
 # rock_normal.png stays in the workspace, only undeclared: the sandbox must hide it from the action.
 sed -i '/rock_normal.png/d' "$ws/BUILD"

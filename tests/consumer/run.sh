@@ -57,18 +57,6 @@ mtlx() {  # TILING: slate, a MaterialX document (docs/materialx.md)
 MTLX
 }
 mtlx "2, 2"
-# An RGB PNG of W x H whose texels depend on SEED, written with Python's standard library only.
-png() {  # FILE W H SEED
-  python3 - "$@" <<'PY'
-import struct, sys, zlib
-file, w, h, seed = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
-rows = b"".join(b"\0" + bytes((x * 7 + y * 3 + seed * (c + 1)) % 256 for x in range(w) for c in range(3)) for y in range(h))
-chunk = lambda kind, data: struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-open(file, "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-                       + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
-PY
-}
-
 fail() { echo "consumer ($generator): $*" >&2; exit 1; }
 out=$work/bin
 # Builds and checks which files' rules ran hexc: expect NAME... (none for a no-op). Every build is clean: no error
@@ -128,7 +116,7 @@ done
 
 # Another size: the shaders read a texture's size, so the files that read it rebuild (moss and the scene), only they.
 moss_stamp=$(sum shaders/.moss.hexc-stamp)
-png "$tex/moss.png" 97 61 1
+tests/consumer/png.py "$tex/moss.png" 97 61 1
 step="moss.png resized" expect moss yard
 [ "$(sum shaders/.moss.hexc-stamp)" != "$moss_stamp" ] || fail "hexc did not compile moss for its texture's new size"
 
