@@ -71,6 +71,11 @@ function(hexc_add_materials target)
     string(MD5 set "${outputs}")
     string(SUBSTRING ${set} 0 12 set)
     set(depfile ${depfile_dir}/${name}.${set}.d)
+    file(GLOB earlier ${depfile_dir}/${name}.*.d)
+    list(REMOVE_ITEM earlier ${depfile})
+    if(earlier)
+      file(REMOVE ${earlier})
+    endif()
     add_custom_command(OUTPUT ${outputs}
       COMMAND hexc::hexc ${file} ${args} --depfile ${depfile} -q
       DEPENDS ${file} hexc::hexc

@@ -124,6 +124,7 @@ step="moss.png resized" expect moss yard
 gravel "$(slot albedo color gravel.png)"
 step="gravel's roughness slot removed" expect gravel
 for f in shaders/gravel.roughness.{gaussian,lut}.pfm; do [ ! -e "$out/$f" ] || fail "stale $f left behind"; done
+[ "$(ls "$out/hexc/shaders/" | grep -c '^gravel\.json\.')" = 1 ] || fail "the depfile of gravel's earlier outputs was left behind"
 step="after the slot removal" expect
 
 # Touched, not changed: hexc may run once (its stamp says the shaders stand) and must leave the build settled.
