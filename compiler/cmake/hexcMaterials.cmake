@@ -17,13 +17,12 @@ function(_hexc_executable out)
   set(${out} ${exe} PARENT_SCOPE)
 endfunction()
 
-# Fills <outputs> and <inputs> from `hexc <file> <args> --list-outputs`; stops the configure step with hexc's
-# diagnostics when the file does not plan.
+# Fills <outputs> and <inputs> from `hexc <file> <args> --list-outputs`; stops the configure step when the file does
+# not plan, after hexc's diagnostics (printed as they are, not re-wrapped by message()).
 function(_hexc_list_outputs hexc file args outputs inputs)
-  execute_process(COMMAND ${hexc} ${file} ${args} --list-outputs
-    OUTPUT_VARIABLE json ERROR_VARIABLE errors RESULT_VARIABLE failed)
+  execute_process(COMMAND ${hexc} ${file} ${args} --list-outputs OUTPUT_VARIABLE json RESULT_VARIABLE failed)
   if(failed)
-    message(FATAL_ERROR "hexc_add_materials: ${file}:\n${errors}")
+    message(FATAL_ERROR "hexc_add_materials: hexc cannot list the outputs of ${file} (its diagnostics above)")
   endif()
   foreach(key IN ITEMS outputs inputs)
     set(list)

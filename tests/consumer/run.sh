@@ -141,6 +141,14 @@ step="moss.png renamed" expect moss yard
 # finds its stamp up to date and compiles nothing (docs/build-integration.md says so).
 if [ "$generator" = Ninja ]; then step="after the rename" expect; fi
 
+# A material hexc cannot read: the re-configure stops with hexc's located diagnostic; fixed, the build settles.
+good=$(cat "$src/materials/moss.json")
+sed -i 's/"kind": "color"/"kind": "colour"/' "$src/materials/moss.json"
+! cmake --build "$out" > "$work/log" 2>&1 || { cat "$work/log"; fail "a build with an invalid moss.json succeeded"; }
+grep -q 'moss.json:2:.*error\[HX107\]: /slots/0/kind: .*did you mean `color`' "$work/log" || { cat "$work/log"; fail "no located diagnostic"; }
+echo "$good" > "$src/materials/moss.json"
+step="moss.json broken and fixed" expect moss yard
+
 # The library component, in a project of its own (it needs a C++ compiler).
 cmake -S tests/consumer/library -B "$work/library" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; fail "configuring the library consumer failed"; }
