@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hexc/histogram.h"
 #include "hexc/library.h"
 #include "hexc/material.h"
 #include "reference/reference.h"
@@ -250,11 +251,13 @@ std::array<double, 3> adjacentSteps(const reference::SampledTexture& t, int leve
 //    largest difference between adjacent texels of channel k at the level read (adjacentSteps), plus 4 * 2^-24.
 // 2. The blend G = sum W_i (g_i - 0.5) / |W| + 0.5 moves by sum W_i / |W| <= sqrt(3) (Cauchy-Schwarz) times e_g; the
 //    weights' float32 rounding (a few ulp, relative 1e-6, times sum |g_i - 0.5| / |W| <= 3 sqrt(3)) adds 1e-5: e_G.
-// 3. The inverse reads entry x = G (N - 1) of rows r0 = 1 + floor(lod) and r0 + 1 (lod is exact in both views: 0 is
-//    clamped, 2 is a power of two): x moves by e_G (N - 1), so the value by that times D, the largest difference
+// 3. The inverse reads entry x = (G - g_0) / s of rows r0 = 1 + floor(lod) and r0 + 1 (g_0 = histogramLutGaussian(0),
+//    s the entries' step; lod is exact in both views: 0 is clamped, 2 is a power of two): x moves by e_G / s, so the
+//    value by that times D, the largest difference
 //    between adjacent entries within reach in either row; the filter's weight steps add 2^-9 D along x and 2^-9 D_v
 //    across rows, D_v the largest difference between the rows' entries there.
-// 4. Back to RGB, rgb_c = mean_c + sum_k q_k E_ck moves by sum_k |E_ck| e_k, plus float32 rounding (1e-6).
+// 4. Back to RGB, rgb_c = mean_c + sum_k q_k E_ck moves by sum_k |E_ck| e_k, plus float32 rounding (1e-6); the clamp
+//    to the texture's range moves nothing further apart.
 PixelTolerance histogramTolerance(const Slot& slot, const reference::SlotTextures& textures, int level) {
     const reference::SampledTexture& lut = *textures.lut;
     const std::array<double, 3> step = adjacentSteps(*textures.texture, level);
@@ -265,14 +268,15 @@ PixelTolerance histogramTolerance(const Slot& slot, const reference::SlotTexture
         std::array<double, 3> e{};
         for (size_t k = 0; k < channels; ++k) {
             const double eG = std::sqrt(3.0) * (2 * step[k] / 512 + 4 * 0x1p-24) + 1e-5;
-            const double x = std::clamp(r.gaussian[k], 0.0, 1.0) * (n - 1), reach = eG * (n - 1) + 1;
+            const double g0 = histogramLutGaussian(0), s = histogramLutGaussian(1) - g0;
+            const double x = std::clamp((r.gaussian[k] - g0) / s, 0.0, n - 1.0), reach = eG / s + 1;
             double d = 0, dv = 0;
             for (int i = std::max(0, int(std::floor(x - reach))); i <= std::min(n - 1, int(std::ceil(x + reach))); ++i) {
                 dv = std::max(dv, std::fabs(lut.texel(0, i, r1)[k] - lut.texel(0, i, r0)[k]));
                 if (i + 1 < n)
                     for (int row : {r0, r1}) d = std::max(d, std::fabs(lut.texel(0, i + 1, row)[k] - lut.texel(0, i, row)[k]));
             }
-            e[k] = d * (eG * (n - 1) + 1.0 / 512) + dv / 512;
+            e[k] = d * (eG / s + 1.0 / 512) + dv / 512;
         }
         if (channels == 1) return e[0] + 1e-6;
         double worst = 0;

@@ -394,15 +394,19 @@ std::array<bool, 3> adaptiveTaps(const std::array<double, 3>& barycentric, const
 // The histogram blend's way back (reference.h, evaluateAt): G of each channel, the level of detail, the table.
 Rgba inverseTransform(const SampledTexture& lut, const Rgba& G, double lod, bool scalar) {
     const double width = lut.width(0), rows = lut.height(0);
-    // Row 1 + lod, entry G (width - 1), at texel centres: s = (x + 0.5) / width, t = (y + 0.5) / rows.
+    // Row 1 + lod, entry x where histogramLutGaussian(x) = G, at texel centres: s = (x + 0.5) / width, t = (y + 0.5) / rows.
     const double t = (1.5 + std::clamp(lod, 0.0, rows - 2)) / rows;
     std::array<double, 3> q{};
-    for (size_t k = 0; k < (scalar ? 1 : 3); ++k)
-        q[k] = lut.sample((std::clamp(G[k], 0.0, 1.0) * (width - 1) + 0.5) / width, t, 0, 0, 0, 0)[k];
+    for (size_t k = 0; k < (scalar ? 1 : 3); ++k) {
+        const double x = std::clamp((G[k] - 0.5) * 6 / (2 * kHistogramLutSigmas) + 0.5, 0.0, 1.0) * (width - 1);
+        q[k] = lut.sample((x + 0.5) / width, t, 0, 0, 0, 0)[k];
+    }
     if (scalar) return {q[0], q[0], q[0], q[0]};
     Rgba rgb = lut.texel(0, 3, 0);
     for (size_t k = 0; k < 3; ++k)
         for (size_t c = 0; c < 3; ++c) rgb[c] += q[k] * lut.texel(0, int(k), 0)[c];
+    // Within the texture's range, which the sum over the axes may leave.
+    for (size_t c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c], lut.texel(0, 4, 0)[c], lut.texel(0, 5, 0)[c]);
     rgb[3] = 1;
     return rgb;
 }

@@ -18,21 +18,30 @@
 
 namespace hexc {
 
-// Entries per look-up table row: Gaussian values 0 .. 1 (mean -3 to +3 standard deviations) in equal steps.
+// Entries per look-up table row, in equal steps over the Gaussian values 0.5 +- kHistogramLutSigmas standard deviations:
+// 6.5 covers the extreme ranks of any texture below 2^32 texels (Phi^-1(0.5 / 2^32) = -6.34), so no texel's value is
+// out of the table's reach (the tails are kept).
 constexpr int kHistogramLutWidth = 512;
+constexpr double kHistogramLutSigmas = 6.5;
 
 struct HistogramTransform {
     // The texture's size, float RGBA: T of decorrelated channel k in channel k (a scalar slot: in r, g and b); alpha 1.
     Texture gaussian;
     // kHistogramLutWidth x (1 + levels of the Gaussian texture's full mip chain), float RGBA, linear values.
-    // Row 0, texels 0-2: the decorrelated axes in linear RGB, texel 3: the mean, so RGB = mean + sum_k q_k axis_k.
-    // Row 1 + l, texel i: q_k = T_k^-1 at Gaussian value i / (kHistogramLutWidth - 1), in channel k, for mip level l.
+    // Row 0, texels 0-2: the decorrelated axes in linear RGB, texel 3: the mean, so RGB = mean + sum_k q_k axis_k;
+    // texels 4 and 5: the texels' smallest and largest linear values per channel (a colour slot's result is kept
+    // within them: the sum over the axes can leave that box).
+    // Row 1 + l, texel i: q_k = T_k^-1 at Gaussian value histogramLutGaussian(i), in channel k, for mip level l.
     Texture lut;
 };
 
 // The transform of `source` (as loadTexture gives it, sRGB decoded to linear first) for `slot`: a colour slot's RGB,
-// a scalar slot's channel. Deterministic: the same texels give the same bytes.
+// a scalar slot's channel. Deterministic: the same texels give the same bytes; equal texels are ranked by a hash of
+// their position. It holds about 25 bytes per texel beside `source` (the result's Gaussian texture included).
 HistogramTransform histogramTransform(const Texture& source, const Slot& slot);
+
+// The Gaussian value of a table row's entry i: 0.5 + (2 i / (kHistogramLutWidth - 1) - 1) kHistogramLutSigmas / 6.
+double histogramLutGaussian(int entry);
 
 // The output files hexc writes for a histogram slot: "<material>.<slot>.gaussian.pfm" and "<material>.<slot>.lut.pfm".
 std::string histogramFileName(const std::string& material, const std::string& slot, const char* which);
