@@ -397,7 +397,11 @@ vec3 hexcBlendWeights(vec3 w, vec3 Dw, HexcBlend b) {
 // The heaviest tap (largest w) is always fetched; the other two together when Gup_a + Gup_b < e, else the one
 // with the smaller bound when that is < e.
 bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b) {
-    vec3 wg = b.exponentInt > 0 ? hexcPowInt(w, b.exponentInt) : pow(w, vec3(b.exponent));
+    // The bounds need only the weights' ratios: w over its largest keeps the largest wg at 1, where w^gamma itself
+    // (down to (1/3)^64 ~ 3e-31) would fall below the guards' 1e-30 and float32's normal range. A wg that underflows
+    // still has U_i < 2^-126 / (1 - beta): nothing.
+    vec3 wn = w / max(max(w.x, w.y), max(w.z, 1e-30));
+    vec3 wg = b.exponentInt > 0 ? hexcPowInt(wn, b.exponentInt) : pow(wn, vec3(b.exponent));
     float lo = 1.0 - (b.metric ? b.falloffContrast : 0.0);
     vec3 others = vec3(wg.x + wg.y + wg.z) - wg;
     vec3 U = wg / max(wg + lo * others, vec3(1e-30));
@@ -410,6 +414,15 @@ bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b) {
         k = hexcGainK(b.falloff, b.gainInt);
     }
     vec3 Gup = gU / max(gU + vec3(gL.x + gL.y + gL.z) - gL, vec3(1e-30));
+    // Where the gain is a pure power for tap i and the others (all three arguments below 0.5: g(x) = 0.5 (2x)^k), g
+    // underflows float32 (0.01^19 = 1e-38) and the guard above would shrink Gup_i; the ratio does not: take it before
+    // the power. U_i = 0 gives an infinite ratio, Gup_i = 0.
+    if (k > 0.0) {
+        vec3 r1 = L.yzx / max(U, vec3(1e-30)), r2 = L.zxy / max(U, vec3(1e-30));
+        vec3 p1 = b.gainInt > 0 ? hexcPowInt(r1, b.gainInt) : pow(r1, vec3(k));
+        vec3 p2 = b.gainInt > 0 ? hexcPowInt(r2, b.gainInt) : pow(r2, vec3(k));
+        Gup = mix(Gup, 1.0 / (1.0 + p1 + p2), lessThan(max(U, max(L.yzx, L.zxy)), vec3(0.5)));
+    }
     // U_i = 1 only for a tap whose weight cannot be bounded: never skipped, so its term may be infinite.
     vec3 B = Gup - 0.25 * k * log(max(vec3(1.0) - U, vec3(1e-30)));
     int d = w.x >= w.y && w.x >= w.z ? 0 : (w.y >= w.z ? 1 : 2);

@@ -627,6 +627,19 @@ const AdaptiveCase kAdaptiveCases[] = {
     {"normal_flip_y_minified",
      R"({"name": "normal", "kind": "normal", "flip_y": true, "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
      true},
+    // The corners of the settings: exponent 64 (w^64 down to 3e-31 at a lattice vertex), falloffcontrast near 1 and the
+    // gain near its step (falloff 0.99, exponent k = 6.6). The last case's settings are exact in float32 (1 - 2^-20 and
+    // 1 - 2^-19, k = 19): the gain raises a weight to the 19th power, so float32's rounding of 0.999999 (1.3% on 1 - r)
+    // would move its bounds by a quarter, and the GPU's choice of taps away from the reference's, for that reason alone.
+    {"color_exponent64_contrast0995_falloff099",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "exponent": 64, "falloffcontrast": 0.995, "falloff": 0.99TAPS}})",
+     false},
+    {"color_exponent64_contrast09_falloff09_minified",
+     R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 64, "falloffcontrast": 0.9, "falloff": 0.9TAPS}})",
+     true},
+    {"normal_exponent64_contrast_1_minus_2_20_falloff_1_minus_2_19",
+     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "exponent": 64, "falloffcontrast": 0.99999904632568359375, "falloff": 0.999998092651367188TAPS}})",
+     false},
 };
 
 Material adaptiveMaterial(const AdaptiveCase& c, bool adaptive) {
@@ -666,9 +679,11 @@ TEST_P(AdaptiveTaps, FetchLikeTheReferenceAndStayWithinTheBoundOfThreeTaps) {
     size_t gpuFetches = 0, refFetches = 0, different = 0;
     for (size_t p = 0; p < ref.size(); ++p)
         for (size_t ch = 0; ch < 3; ++ch) {
-            const bool gpu = weights.rgba[p * 4 + ch] > 0, cpu = ref[p].weights[ch] > 0;
+            // A fetched tap's weight can lie below float32's normal range (exponent 64 and a gain of k = 19 take a
+            // weight of 1e-3 to 1e-52): the GPU holds it as 0, so the reference's counts as 0 there too.
+            const bool gpu = weights.rgba[p * 4 + ch] > 0, cpu = ref[p].weights[ch] >= 0x1p-126;
             gpuFetches += gpu;
-            refFetches += ref[p].blend[ch] > 0;
+            refFetches += ref[p].blend[ch] >= 0x1p-126;
             if (gpu != cpu && !differs[p]) differs[p] = true, ++different;
         }
     const double n = double(ref.size());

@@ -1295,3 +1295,49 @@ TEST(ReferenceTriplanar, ViewEvaluatesThePreviewSphereAtEachPixel) {
 }
 
 }  // namespace
+
+// --- Adaptive taps ----------------------------------------------------------------------------------------------
+
+// The bound of docs/material-format.md#taps over the corners of the allowed settings (exponent 1 to 64,
+// falloffcontrast 0 to just below 1, falloff 0.5 to its largest): wherever adaptiveTaps skips taps, the blend of the
+// fetched taps alone moves from the blend of all three by a total variation TV = sum |G - G'| / 2 below e, whatever
+// each tap's metric in [1 - beta, 1] (the corners of that box, where TV is largest, and random points inside). The
+// value then moves by at most e times the spread of the taps' values. In fp64: what the GPU's float32 bound adds is
+// the execution tests' (AdaptiveTaps).
+TEST(ReferenceAdaptiveTaps, SkipOnlyTapsThatMoveTheBlendByLessThanE) {
+    std::mt19937 rng(33);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const double e = HexTiling::kAdaptiveError;
+    for (double gamma : {1.0, 7.0, 64.0})
+        for (double beta : {0.0, 0.6, 0.9, 0.995, 0.999999})
+            for (double falloff : {0.5, 0.75, 0.99, 0.999999}) {
+                HexTiling hex;
+                hex.taps = HexTiling::kAdaptiveTaps, hex.exponent = gamma, hex.falloffcontrast = beta, hex.falloff = falloff;
+                double worst = 0, fetches = 0;
+                const int points = 4000;
+                for (int p = 0; p < points; ++p) {
+                    // Barycentric weights, uniform over the triangle, half of them near an edge (one weight < 0.02).
+                    double a = unit(rng), b = unit(rng);
+                    if (a + b > 1) a = 1 - a, b = 1 - b;
+                    std::array<double, 3> w{a, b, 1 - a - b};
+                    if (p % 2) w[size_t(p / 2 % 3)] *= 0.02;
+                    const double sum = w[0] + w[1] + w[2];
+                    for (double& x : w) x /= sum;
+                    const std::array<bool, 3> f = adaptiveTaps(w, hex);
+                    fetches += f[0] + f[1] + f[2];
+                    if (f[0] && f[1] && f[2]) continue;
+                    const std::array<double, 3> kept{w[0] * f[0], w[1] * f[1], w[2] * f[2]};
+                    for (int corner = 0; corner < 12; ++corner) {
+                        std::array<double, 3> d;
+                        for (size_t i = 0; i < 3; ++i) d[i] = corner < 8 ? ((corner >> i) & 1 ? 1 : 1 - beta) : 1 - beta * unit(rng);
+                        const std::array<double, 3> all = blendWeights(w, d, hex), fetched = blendWeights(kept, d, hex);
+                        const double tv =
+                            (std::abs(all[0] - fetched[0]) + std::abs(all[1] - fetched[1]) + std::abs(all[2] - fetched[2])) / 2;
+                        worst = std::max(worst, tv);
+                    }
+                }
+                std::printf("  exponent %2.0f falloffcontrast %-8g falloff %-8g: fetches %.2f, largest TV %.4f e\n", gamma, beta, falloff,
+                            fetches / points, worst / e);
+                EXPECT_LT(worst, e) << "exponent " << gamma << " falloffcontrast " << beta << " falloff " << falloff;
+            }
+}

@@ -320,6 +320,11 @@ private:
             report(Code::ConflictingSettings, at,
                    "`taps` \"adaptive\" needs `falloff` >= 0.5: below, the gain's renormalisation can move the result by more than a "
                    "skipped tap's weight, and no threshold bounds it");
+        // At beta = 1 a tap's metric can be 0 (a black sample), so a tap of any positive weight can carry the whole blend.
+        if (hex.enabled && hex.adaptive() && hex.falloffcontrast >= 1)
+            report(Code::ConflictingSettings, at,
+                   "`taps` \"adaptive\" needs `falloffcontrast` < 1: at 1 a black sample weighs nothing, so a tap of any weight "
+                   "can carry the whole blend, and no threshold bounds a skipped one");
         if (hex.splitCoordinates && (hex.mask == Mask::Noise || hex.mask == Mask::Noise3))
             report(Code::ConflictingSettings, at,
                    "`split_coordinates` does not work with the noise masks: their copies are transformed about the origin");
