@@ -492,243 +492,286 @@ vec3 hexcGainCurve(vec3 x, float r, int kInt)
     return (s * 0.5) + ((m * 0.25) * _1040);
 }
 
-#line 400 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b)
 {
-#line 400 "hexc/hextiling.glsl"
-    vec3 _1190;
+#line 403 "hexc/hextiling.glsl"
+    vec3 wn = w / vec3(max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30)));
+#line 404 "hexc/hextiling.glsl"
+    vec3 _1204;
     if (b.exponentInt > 0)
     {
-#line 400 "hexc/hextiling.glsl"
-        vec3 param = w;
+#line 404 "hexc/hextiling.glsl"
+        vec3 param = wn;
         int param_1 = b.exponentInt;
-        vec3 _1198 = hexcPowInt(param, param_1);
-        _1190 = _1198;
+        vec3 _1212 = hexcPowInt(param, param_1);
+        _1204 = _1212;
     }
     else
     {
-#line 400 "hexc/hextiling.glsl"
-        _1190 = pow(w, vec3(b.exponent));
+#line 404 "hexc/hextiling.glsl"
+        _1204 = pow(wn, vec3(b.exponent));
     }
-    vec3 wg = _1190;
-#line 401 "hexc/hextiling.glsl"
-    float _1209;
+    vec3 wg = _1204;
+#line 405 "hexc/hextiling.glsl"
+    float _1223;
     if (b.metric)
     {
-#line 401 "hexc/hextiling.glsl"
-        _1209 = b.falloffContrast;
+#line 405 "hexc/hextiling.glsl"
+        _1223 = b.falloffContrast;
     }
     else
     {
-        _1209 = 0.0;
+        _1223 = 0.0;
     }
-    float lo = 1.0 - _1209;
-#line 402 "hexc/hextiling.glsl"
+    float lo = 1.0 - _1223;
+#line 406 "hexc/hextiling.glsl"
     vec3 others = vec3((wg.x + wg.y) + wg.z) - wg;
-#line 403 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     vec3 U = wg / max(wg + (others * lo), vec3(1.0000000031710768509710513471353e-30));
-#line 404 "hexc/hextiling.glsl"
+#line 408 "hexc/hextiling.glsl"
     vec3 L = (wg * lo) / max((wg * lo) + others, vec3(1.0000000031710768509710513471353e-30));
-#line 405 "hexc/hextiling.glsl"
+#line 409 "hexc/hextiling.glsl"
     vec3 gU = U;
     vec3 gL = L;
-#line 406 "hexc/hextiling.glsl"
+#line 410 "hexc/hextiling.glsl"
     float k = 0.0;
-#line 407 "hexc/hextiling.glsl"
-    bool _1270;
+#line 411 "hexc/hextiling.glsl"
+    bool _1283;
     if (b.gain)
     {
-#line 407 "hexc/hextiling.glsl"
-        bool _1262 = b.gainInt > 0;
-        bool _1269;
-        if (!_1262)
+#line 411 "hexc/hextiling.glsl"
+        bool _1275 = b.gainInt > 0;
+        bool _1282;
+        if (!_1275)
         {
-#line 407 "hexc/hextiling.glsl"
-            _1269 = b.falloff != 0.5;
+#line 411 "hexc/hextiling.glsl"
+            _1282 = b.falloff != 0.5;
         }
         else
         {
-            _1269 = _1262;
+            _1282 = _1275;
         }
-        _1270 = _1269;
+        _1283 = _1282;
     }
     else
     {
-        _1270 = b.gain;
+        _1283 = b.gain;
     }
-    if (_1270)
+    if (_1283)
     {
-#line 408 "hexc/hextiling.glsl"
+#line 412 "hexc/hextiling.glsl"
         vec3 param_2 = U;
         float param_3 = b.falloff;
         int param_4 = b.gainInt;
         gU = hexcGainCurve(param_2, param_3, param_4);
-#line 409 "hexc/hextiling.glsl"
+#line 413 "hexc/hextiling.glsl"
         vec3 param_5 = L;
         float param_6 = b.falloff;
         int param_7 = b.gainInt;
         gL = hexcGainCurve(param_5, param_6, param_7);
-#line 410 "hexc/hextiling.glsl"
+#line 414 "hexc/hextiling.glsl"
         float param_8 = b.falloff;
         int param_9 = b.gainInt;
         k = hexcGainK(param_8, param_9);
     }
-#line 412 "hexc/hextiling.glsl"
-    vec3 Gup = gU / max((gU + vec3((gL.x + gL.y) + gL.z)) - gL, vec3(1.0000000031710768509710513471353e-30));
-#line 414 "hexc/hextiling.glsl"
-    vec3 B = Gup - (log(max(vec3(1.0) - U, vec3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-#line 415 "hexc/hextiling.glsl"
-    bool _1330 = w.x >= w.y;
-    bool _1338;
-    if (_1330)
-    {
-#line 415 "hexc/hextiling.glsl"
-        _1338 = w.x >= w.z;
-    }
-    else
-    {
-        _1338 = _1330;
-    }
-    int _1339;
-    if (_1338)
-    {
-        _1339 = 0;
-    }
-    else
-    {
-#line 415 "hexc/hextiling.glsl"
-        _1339 = (w.y >= w.z) ? 1 : 2;
-    }
-    int d = _1339;
 #line 416 "hexc/hextiling.glsl"
+    vec3 Gup = gU / max((gU + vec3((gL.x + gL.y) + gL.z)) - gL, vec3(1.0000000031710768509710513471353e-30));
+#line 420 "hexc/hextiling.glsl"
+    if (k > 0.0)
+    {
+#line 421 "hexc/hextiling.glsl"
+        vec3 r1 = L.yzx / max(U, vec3(1.0000000031710768509710513471353e-30));
+        vec3 r2 = L.zxy / max(U, vec3(1.0000000031710768509710513471353e-30));
+#line 422 "hexc/hextiling.glsl"
+        vec3 _1348;
+        if (b.gainInt > 0)
+        {
+#line 422 "hexc/hextiling.glsl"
+            vec3 param_10 = r1;
+            int param_11 = b.gainInt;
+            vec3 _1356 = hexcPowInt(param_10, param_11);
+            _1348 = _1356;
+        }
+        else
+        {
+#line 422 "hexc/hextiling.glsl"
+            _1348 = pow(r1, vec3(k));
+        }
+        vec3 p1 = _1348;
+#line 423 "hexc/hextiling.glsl"
+        vec3 _1367;
+        if (b.gainInt > 0)
+        {
+#line 423 "hexc/hextiling.glsl"
+            vec3 param_12 = r2;
+            int param_13 = b.gainInt;
+            vec3 _1375 = hexcPowInt(param_12, param_13);
+            _1367 = _1375;
+        }
+        else
+        {
+#line 423 "hexc/hextiling.glsl"
+            _1367 = pow(r2, vec3(k));
+        }
+        vec3 p2 = _1367;
+#line 424 "hexc/hextiling.glsl"
+        Gup = mix(Gup, vec3(1.0) / ((vec3(1.0) + p1) + p2), lessThan(max(U, max(L.yzx, L.zxy)), vec3(0.5)));
+    }
+#line 427 "hexc/hextiling.glsl"
+    vec3 B = Gup - (log(max(vec3(1.0) - U, vec3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
+#line 428 "hexc/hextiling.glsl"
+    bool _1415 = w.x >= w.y;
+    bool _1423;
+    if (_1415)
+    {
+#line 428 "hexc/hextiling.glsl"
+        _1423 = w.x >= w.z;
+    }
+    else
+    {
+        _1423 = _1415;
+    }
+    int _1424;
+    if (_1423)
+    {
+        _1424 = 0;
+    }
+    else
+    {
+#line 428 "hexc/hextiling.glsl"
+        _1424 = (w.y >= w.z) ? 1 : 2;
+    }
+    int d = _1424;
+#line 429 "hexc/hextiling.glsl"
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
-#line 417 "hexc/hextiling.glsl"
+#line 430 "hexc/hextiling.glsl"
     bvec3 f = bvec3(true);
-#line 418 "hexc/hextiling.glsl"
+#line 431 "hexc/hextiling.glsl"
     if ((Gup[a] + Gup[c]) < b.adaptiveError)
     {
-#line 419 "hexc/hextiling.glsl"
+#line 432 "hexc/hextiling.glsl"
         f[a] = false;
-#line 420 "hexc/hextiling.glsl"
+#line 433 "hexc/hextiling.glsl"
         f[c] = false;
     }
     else
     {
-#line 421 "hexc/hextiling.glsl"
+#line 434 "hexc/hextiling.glsl"
         if (min(B[a], B[c]) < b.adaptiveError)
         {
-#line 422 "hexc/hextiling.glsl"
+#line 435 "hexc/hextiling.glsl"
             f[(B[a] <= B[c]) ? a : c] = false;
         }
     }
-#line 424 "hexc/hextiling.glsl"
+#line 437 "hexc/hextiling.glsl"
     return f;
 }
 
-#line 458 "hexc/hextiling.glsl"
+#line 471 "hexc/hextiling.glsl"
 bvec3 hexcFetched(vec3 w, HexcBlend b)
 {
-#line 458 "hexc/hextiling.glsl"
-    bvec3 _1534;
+#line 471 "hexc/hextiling.glsl"
+    bvec3 _1619;
     if (b.adaptive)
     {
-#line 458 "hexc/hextiling.glsl"
+#line 471 "hexc/hextiling.glsl"
         vec3 param = w;
         HexcBlend param_1 = b;
-        _1534 = hexcAdaptiveTaps(param, param_1);
+        _1619 = hexcAdaptiveTaps(param, param_1);
     }
     else
     {
-#line 458 "hexc/hextiling.glsl"
-        _1534 = bvec3(true, true, b.taps > 2);
+#line 471 "hexc/hextiling.glsl"
+        _1619 = bvec3(true, true, b.taps > 2);
     }
-#line 458 "hexc/hextiling.glsl"
-    return _1534;
+#line 471 "hexc/hextiling.glsl"
+    return _1619;
 }
 
-#line 441 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcTileLods(HexcTiles t, bool sharedLod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 441 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     if (!sharedLod)
     {
-#line 441 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
         return vec3(0.0);
     }
-#line 442 "hexc/hextiling.glsl"
+#line 455 "hexc/hextiling.glsl"
     vec2 size = vec2(textureSize(SPIRV_Cross_Combinedtexsamp, 0));
-#line 443 "hexc/hextiling.glsl"
+#line 456 "hexc/hextiling.glsl"
     HexcTap p = t.tap[0];
-#line 444 "hexc/hextiling.glsl"
+#line 457 "hexc/hextiling.glsl"
     float lod = 0.5 * log2(max((max(dot(p.dx, p.dx), dot(p.dy, p.dy)) * size.x) * size.y, 1.0000000031710768509710513471353e-30));
-#line 445 "hexc/hextiling.glsl"
+#line 458 "hexc/hextiling.glsl"
     vec3 invScale = vec3(p.invScale, t.tap[1].invScale, t.tap[2].invScale);
-#line 446 "hexc/hextiling.glsl"
-    vec3 _1488;
+#line 459 "hexc/hextiling.glsl"
+    vec3 _1573;
     if (t.scaled)
     {
-#line 446 "hexc/hextiling.glsl"
-        _1488 = vec3(lod) + log2(invScale / vec3(p.invScale));
+#line 459 "hexc/hextiling.glsl"
+        _1573 = vec3(lod) + log2(invScale / vec3(p.invScale));
     }
     else
     {
-#line 446 "hexc/hextiling.glsl"
-        _1488 = vec3(lod);
+#line 459 "hexc/hextiling.glsl"
+        _1573 = vec3(lod);
     }
-#line 446 "hexc/hextiling.glsl"
-    return _1488;
+#line 459 "hexc/hextiling.glsl"
+    return _1573;
 }
 
-#line 452 "hexc/hextiling.glsl"
+#line 465 "hexc/hextiling.glsl"
 vec4 hexcFetch(HexcTap p, float lod, bool sharedLod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-    vec4 _1507;
+    vec4 _1592;
     if (sharedLod)
     {
-#line 452 "hexc/hextiling.glsl"
-        _1507 = textureLod(SPIRV_Cross_Combinedtexsamp, p.st, lod);
+#line 465 "hexc/hextiling.glsl"
+        _1592 = textureLod(SPIRV_Cross_Combinedtexsamp, p.st, lod);
     }
     else
     {
-#line 452 "hexc/hextiling.glsl"
-        _1507 = textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
+#line 465 "hexc/hextiling.glsl"
+        _1592 = textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
     }
-#line 452 "hexc/hextiling.glsl"
-    return _1507;
+#line 465 "hexc/hextiling.glsl"
+    return _1592;
 }
 
-#line 465 "hexc/hextiling.glsl"
+#line 478 "hexc/hextiling.glsl"
 void hexcFetchTaps(HexcTiles t, bvec3 f, bool sharedLod, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 465 "hexc/hextiling.glsl"
+#line 478 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool param_1 = sharedLod;
     vec3 lod = hexcTileLods(param, param_1, SPIRV_Cross_Combinedtexsamp);
-#line 466 "hexc/hextiling.glsl"
+#line 479 "hexc/hextiling.glsl"
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
-#line 467 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 467 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
         HexcTap param_2 = t.tap[0];
         float param_3 = lod.x;
         bool param_4 = sharedLod;
         c[0] = hexcFetch(param_2, param_3, param_4, SPIRV_Cross_Combinedtexsamp);
     }
-#line 468 "hexc/hextiling.glsl"
+#line 481 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 468 "hexc/hextiling.glsl"
+#line 481 "hexc/hextiling.glsl"
         HexcTap param_5 = t.tap[1];
         float param_6 = lod.y;
         bool param_7 = sharedLod;
         c[1] = hexcFetch(param_5, param_6, param_7, SPIRV_Cross_Combinedtexsamp);
     }
-#line 469 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 469 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
         HexcTap param_8 = t.tap[2];
         float param_9 = lod.z;
         bool param_10 = sharedLod;
@@ -828,28 +871,28 @@ vec3 hexcBlendWeights(vec3 w, vec3 Dw, HexcBlend b)
     return W;
 }
 
-#line 475 "hexc/hextiling.glsl"
+#line 488 "hexc/hextiling.glsl"
 vec3 hexcTileHeights(HexcTiles t, HexcBlend b, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 475 "hexc/hextiling.glsl"
+#line 488 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bvec3 param_1 = bvec3(true, true, b.taps > 2);
     bool param_2 = b.sharedLod;
     vec4 param_3[3];
     hexcFetchTaps(param, param_1, param_2, param_3, SPIRV_Cross_Combinedtexsamp);
     vec4 h[3] = param_3;
-#line 476 "hexc/hextiling.glsl"
+#line 489 "hexc/hextiling.glsl"
     return vec3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
 }
 
-#line 431 "hexc/hextiling.glsl"
+#line 444 "hexc/hextiling.glsl"
 vec3 hexcHeightBlend(vec3 W, vec3 h, float width)
 {
-#line 431 "hexc/hextiling.glsl"
+#line 444 "hexc/hextiling.glsl"
     vec3 a = max(h, vec3(0.0)) * W;
-#line 432 "hexc/hextiling.glsl"
+#line 445 "hexc/hextiling.glsl"
     vec3 Wh = W * max((a - vec3(max(max(a.x, a.y), a.z))) + vec3(width), vec3(0.0));
-#line 433 "hexc/hextiling.glsl"
+#line 446 "hexc/hextiling.glsl"
     return Wh / vec3((Wh.x + Wh.y) + Wh.z);
 }
 
@@ -862,31 +905,31 @@ vec3 hexcShowWeights(vec3 W, ivec3 channel)
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 488 "hexc/hextiling.glsl"
+#line 501 "hexc/hextiling.glsl"
 vec4 hexcColor(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp, sampler2D SPIRV_Cross_CombinedheightTexsamp)
 {
-#line 488 "hexc/hextiling.glsl"
+#line 501 "hexc/hextiling.glsl"
     vec3 param = t.w;
     HexcBlend param_1 = b;
     bvec3 f = hexcFetched(param, param_1);
-#line 490 "hexc/hextiling.glsl"
+#line 503 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bvec3 param_3 = f;
     bool param_4 = b.sharedLod;
     vec4 param_5[3];
     hexcFetchTaps(param_2, param_3, param_4, param_5, SPIRV_Cross_Combinedtexsamp);
     vec4 c[3] = param_5;
-#line 491 "hexc/hextiling.glsl"
+#line 504 "hexc/hextiling.glsl"
     vec3 Dw = vec3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
-#line 492 "hexc/hextiling.glsl"
+#line 505 "hexc/hextiling.glsl"
     vec3 param_6 = t.w * vec3(f);
     vec3 param_7 = Dw;
     HexcBlend param_8 = b;
     vec3 W = hexcBlendWeights(param_6, param_7, param_8);
-#line 493 "hexc/hextiling.glsl"
+#line 506 "hexc/hextiling.glsl"
     if (b.height)
     {
-#line 493 "hexc/hextiling.glsl"
+#line 506 "hexc/hextiling.glsl"
         HexcTiles param_9 = t;
         HexcBlend param_10 = b;
         vec3 param_11 = W;
@@ -894,11 +937,11 @@ vec4 hexcColor(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sampler2D 
         float param_13 = b.heightWidth;
         W = hexcHeightBlend(param_11, param_12, param_13);
     }
-#line 494 "hexc/hextiling.glsl"
+#line 507 "hexc/hextiling.glsl"
     vec3 param_14 = W;
     ivec3 param_15 = t.channel;
     weights = hexcShowWeights(param_14, param_15);
-#line 495 "hexc/hextiling.glsl"
+#line 508 "hexc/hextiling.glsl"
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
@@ -949,9 +992,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcBlend param_6 = blend;
     vec4 param_7 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_8;
-    vec4 _2021 = hexcColor(param_5, param_6, param_7, param_8, hexcTex_albedo, hexcTex_albedo);
+    vec4 _2106 = hexcColor(param_5, param_6, param_7, param_8, hexcTex_albedo, hexcTex_albedo);
     weights = param_8;
-    return _2021;
+    return _2106;
 }
 
 #line 41 "hexc/generated"
@@ -965,9 +1008,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _2041 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _2126 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2041;
+    return _2126;
 }
 
 #line 44 "hexc/generated"
@@ -976,37 +1019,37 @@ vec4 hexc_albedo(vec2 uv)
 #line 44 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _2049 = hexc_albedo(param, param_1);
+    vec4 _2134 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _2049;
+    return _2134;
 }
 
-#line 482 "hexc/hextiling.glsl"
+#line 495 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 482 "hexc/hextiling.glsl"
-    vec4 _1634;
+#line 495 "hexc/hextiling.glsl"
+    vec4 _1719;
     if (c == 0)
     {
-        _1634 = vec4(1.0, 0.0, 0.0, 0.0);
+        _1719 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-#line 482 "hexc/hextiling.glsl"
-        vec4 _1641;
+#line 495 "hexc/hextiling.glsl"
+        vec4 _1726;
         if (c == 1)
         {
-            _1641 = vec4(0.0, 1.0, 0.0, 0.0);
+            _1726 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-#line 482 "hexc/hextiling.glsl"
-            _1641 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+#line 495 "hexc/hextiling.glsl"
+            _1726 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _1634 = _1641;
+        _1719 = _1726;
     }
-#line 482 "hexc/hextiling.glsl"
-    return _1634;
+#line 495 "hexc/hextiling.glsl"
+    return _1719;
 }
 
 #line 73 "hexc/generated"
@@ -1057,9 +1100,9 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcBlend param_7 = blend;
     vec4 param_8 = hexcChannel(param_5);
     vec3 param_9;
-    vec4 _2166 = hexcColor(param_6, param_7, param_8, param_9, hexcTex_roughness, hexcTex_roughness);
+    vec4 _2251 = hexcColor(param_6, param_7, param_8, param_9, hexcTex_roughness, hexcTex_roughness);
     weights = param_9;
-    return _2166.x;
+    return _2251.x;
 }
 
 #line 94 "hexc/generated"
@@ -1073,9 +1116,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _2186 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _2271 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2186;
+    return _2271;
 }
 
 #line 97 "hexc/generated"
@@ -1084,32 +1127,32 @@ float hexc_roughness(vec2 uv)
 #line 97 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _2194 = hexc_roughness(param, param_1);
+    float _2279 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _2194;
+    return _2279;
 }
 
-#line 530 "hexc/hextiling.glsl"
+#line 545 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 530 "hexc/hextiling.glsl"
+#line 545 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
-#line 531 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-#line 532 "hexc/hextiling.glsl"
-    float _1763;
+#line 547 "hexc/hextiling.glsl"
+    float _1848;
     if (flipY)
     {
-#line 532 "hexc/hextiling.glsl"
-        _1763 = -vM.y;
+#line 547 "hexc/hextiling.glsl"
+        _1848 = -vM.y;
     }
     else
     {
-#line 532 "hexc/hextiling.glsl"
-        _1763 = vM.y;
+#line 547 "hexc/hextiling.glsl"
+        _1848 = vM.y;
     }
-#line 532 "hexc/hextiling.glsl"
-    return (-vec2(vM.x, _1763)) / vec2(zMa);
+#line 547 "hexc/hextiling.glsl"
+    return (-vec2(vM.x, _1848)) / vec2(zMa);
 }
 
 #line 102 "hexc/hextiling.glsl"
@@ -1121,48 +1164,48 @@ vec2 hexcRotateFromTile(vec2 d, vec2 cs)
     return hexcRotateToTile(param, param_1);
 }
 
-#line 538 "hexc/hextiling.glsl"
+#line 553 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 538 "hexc/hextiling.glsl"
+#line 553 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1796;
+    vec2 _1881;
     if (scaled)
     {
-#line 539 "hexc/hextiling.glsl"
-        _1796 = d * p.invScale;
+#line 554 "hexc/hextiling.glsl"
+        _1881 = d * p.invScale;
     }
     else
     {
-        _1796 = d;
+        _1881 = d;
     }
-#line 539 "hexc/hextiling.glsl"
-    return _1796;
+#line 554 "hexc/hextiling.glsl"
+    return _1881;
 }
 
-#line 546 "hexc/hextiling.glsl"
+#line 561 "hexc/hextiling.glsl"
 vec2 hexcDeriv(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp, sampler2D SPIRV_Cross_CombinedheightTexsamp)
 {
-#line 546 "hexc/hextiling.glsl"
+#line 561 "hexc/hextiling.glsl"
     vec3 param = t.w;
     HexcBlend param_1 = b;
     bvec3 f = hexcFetched(param, param_1);
-#line 547 "hexc/hextiling.glsl"
+#line 562 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bool param_3 = b.sharedLod;
     vec3 lod = hexcTileLods(param_2, param_3, SPIRV_Cross_Combinedtexsamp);
-#line 548 "hexc/hextiling.glsl"
+#line 563 "hexc/hextiling.glsl"
     vec2 d1 = vec2(0.0);
     vec2 d2 = vec2(0.0);
     vec2 d3 = vec2(0.0);
-#line 549 "hexc/hextiling.glsl"
+#line 564 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 549 "hexc/hextiling.glsl"
+#line 564 "hexc/hextiling.glsl"
         HexcTap param_4 = t.tap[0];
         float param_5 = lod.x;
         bool param_6 = b.sharedLod;
@@ -1172,10 +1215,10 @@ vec2 hexcDeriv(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D
         bool param_10 = flipY;
         d1 = hexcTapDeriv(param_7, param_8, param_9, param_10);
     }
-#line 550 "hexc/hextiling.glsl"
+#line 565 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 550 "hexc/hextiling.glsl"
+#line 565 "hexc/hextiling.glsl"
         HexcTap param_11 = t.tap[1];
         float param_12 = lod.y;
         bool param_13 = b.sharedLod;
@@ -1185,10 +1228,10 @@ vec2 hexcDeriv(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D
         bool param_17 = flipY;
         d2 = hexcTapDeriv(param_14, param_15, param_16, param_17);
     }
-#line 551 "hexc/hextiling.glsl"
+#line 566 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 551 "hexc/hextiling.glsl"
+#line 566 "hexc/hextiling.glsl"
         HexcTap param_18 = t.tap[2];
         float param_19 = lod.z;
         bool param_20 = b.sharedLod;
@@ -1198,17 +1241,17 @@ vec2 hexcDeriv(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D
         bool param_24 = flipY;
         d3 = hexcTapDeriv(param_21, param_22, param_23, param_24);
     }
-#line 552 "hexc/hextiling.glsl"
+#line 567 "hexc/hextiling.glsl"
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-#line 553 "hexc/hextiling.glsl"
+#line 568 "hexc/hextiling.glsl"
     vec3 param_25 = t.w * vec3(f);
     vec3 param_26 = sqrt(D / (vec3(1.0) + D));
     HexcBlend param_27 = b;
     vec3 W = hexcBlendWeights(param_25, param_26, param_27);
-#line 554 "hexc/hextiling.glsl"
+#line 569 "hexc/hextiling.glsl"
     if (b.height)
     {
-#line 554 "hexc/hextiling.glsl"
+#line 569 "hexc/hextiling.glsl"
         HexcTiles param_28 = t;
         HexcBlend param_29 = b;
         vec3 param_30 = W;
@@ -1216,11 +1259,11 @@ vec2 hexcDeriv(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D
         float param_32 = b.heightWidth;
         W = hexcHeightBlend(param_30, param_31, param_32);
     }
-#line 555 "hexc/hextiling.glsl"
+#line 570 "hexc/hextiling.glsl"
     vec3 param_33 = W;
     ivec3 param_34 = t.channel;
     weights = hexcShowWeights(param_33, param_34);
-#line 556 "hexc/hextiling.glsl"
+#line 571 "hexc/hextiling.glsl"
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
@@ -1271,9 +1314,9 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcBlend param_6 = blend;
     bool param_7 = false;
     vec3 param_8;
-    vec2 _2093 = hexcDeriv(param_5, param_6, param_7, param_8, hexcTex_normal, hexcTex_normal);
+    vec2 _2178 = hexcDeriv(param_5, param_6, param_7, param_8, hexcTex_normal, hexcTex_normal);
     weights = param_8;
-    return _2093;
+    return _2178;
 }
 
 #line 67 "hexc/generated"
@@ -1287,9 +1330,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _2112 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _2197 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2112;
+    return _2197;
 }
 
 #line 70 "hexc/generated"
@@ -1298,15 +1341,15 @@ vec2 hexc_normal(vec2 uv)
 #line 70 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _2120 = hexc_normal(param, param_1);
+    vec2 _2205 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _2120;
+    return _2205;
 }
 
-#line 608 "hexc/hextiling.glsl"
+#line 623 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 608 "hexc/hextiling.glsl"
+#line 623 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

@@ -112,7 +112,7 @@ struct HexcParams
     float roughness_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1556 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1641 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct rock_frag_out
 {
@@ -563,248 +563,291 @@ float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const
     return (s * 0.5) + ((m * 0.25) * _1040);
 }
 
-#line 400 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcAdaptiveTaps(thread const float3& w, thread const HexcBlend& b)
 {
-#line 400 "hexc/hextiling.glsl"
-    float3 _1190;
+#line 403 "hexc/hextiling.glsl"
+    float3 wn = w / float3(fast::max(fast::max(w.x, w.y), fast::max(w.z, 1.0000000031710768509710513471353e-30)));
+#line 404 "hexc/hextiling.glsl"
+    float3 _1204;
     if (b.exponentInt > 0)
     {
-#line 400 "hexc/hextiling.glsl"
-        float3 param = w;
+#line 404 "hexc/hextiling.glsl"
+        float3 param = wn;
         int param_1 = b.exponentInt;
-        float3 _1198 = hexcPowInt(param, param_1);
-        _1190 = _1198;
+        float3 _1212 = hexcPowInt(param, param_1);
+        _1204 = _1212;
     }
     else
     {
-#line 400 "hexc/hextiling.glsl"
-        _1190 = pow(w, float3(b.exponent));
+#line 404 "hexc/hextiling.glsl"
+        _1204 = pow(wn, float3(b.exponent));
     }
-    float3 wg = _1190;
-#line 401 "hexc/hextiling.glsl"
-    float _1209;
+    float3 wg = _1204;
+#line 405 "hexc/hextiling.glsl"
+    float _1223;
     if (bool(b.metric))
     {
-#line 401 "hexc/hextiling.glsl"
-        _1209 = b.falloffContrast;
+#line 405 "hexc/hextiling.glsl"
+        _1223 = b.falloffContrast;
     }
     else
     {
-        _1209 = 0.0;
+        _1223 = 0.0;
     }
-    float lo = 1.0 - _1209;
-#line 402 "hexc/hextiling.glsl"
+    float lo = 1.0 - _1223;
+#line 406 "hexc/hextiling.glsl"
     float3 others = float3((wg.x + wg.y) + wg.z) - wg;
-#line 403 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 U = wg / fast::max(wg + (others * lo), float3(1.0000000031710768509710513471353e-30));
-#line 404 "hexc/hextiling.glsl"
+#line 408 "hexc/hextiling.glsl"
     float3 L = (wg * lo) / fast::max((wg * lo) + others, float3(1.0000000031710768509710513471353e-30));
-#line 405 "hexc/hextiling.glsl"
+#line 409 "hexc/hextiling.glsl"
     float3 gU = U;
     float3 gL = L;
-#line 406 "hexc/hextiling.glsl"
+#line 410 "hexc/hextiling.glsl"
     float k = 0.0;
-#line 407 "hexc/hextiling.glsl"
-    bool _1270;
+#line 411 "hexc/hextiling.glsl"
+    bool _1283;
     if (bool(b.gain))
     {
-#line 407 "hexc/hextiling.glsl"
-        bool _1262 = b.gainInt > 0;
-        bool _1269;
-        if (!_1262)
+#line 411 "hexc/hextiling.glsl"
+        bool _1275 = b.gainInt > 0;
+        bool _1282;
+        if (!_1275)
         {
-#line 407 "hexc/hextiling.glsl"
-            _1269 = b.falloff != 0.5;
+#line 411 "hexc/hextiling.glsl"
+            _1282 = b.falloff != 0.5;
         }
         else
         {
-            _1269 = _1262;
+            _1282 = _1275;
         }
-        _1270 = _1269;
+        _1283 = _1282;
     }
     else
     {
-        _1270 = bool(b.gain);
+        _1283 = bool(b.gain);
     }
-    if (_1270)
+    if (_1283)
     {
-#line 408 "hexc/hextiling.glsl"
+#line 412 "hexc/hextiling.glsl"
         float3 param_2 = U;
         float param_3 = b.falloff;
         int param_4 = b.gainInt;
         gU = hexcGainCurve(param_2, param_3, param_4);
-#line 409 "hexc/hextiling.glsl"
+#line 413 "hexc/hextiling.glsl"
         float3 param_5 = L;
         float param_6 = b.falloff;
         int param_7 = b.gainInt;
         gL = hexcGainCurve(param_5, param_6, param_7);
-#line 410 "hexc/hextiling.glsl"
+#line 414 "hexc/hextiling.glsl"
         float param_8 = b.falloff;
         int param_9 = b.gainInt;
         k = hexcGainK(param_8, param_9);
     }
-#line 412 "hexc/hextiling.glsl"
-    float3 Gup = gU / fast::max((gU + float3((gL.x + gL.y) + gL.z)) - gL, float3(1.0000000031710768509710513471353e-30));
-#line 414 "hexc/hextiling.glsl"
-    float3 B = Gup - (log(fast::max(float3(1.0) - U, float3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-#line 415 "hexc/hextiling.glsl"
-    bool _1330 = w.x >= w.y;
-    bool _1338;
-    if (_1330)
-    {
-#line 415 "hexc/hextiling.glsl"
-        _1338 = w.x >= w.z;
-    }
-    else
-    {
-        _1338 = _1330;
-    }
-    int _1339;
-    if (_1338)
-    {
-        _1339 = 0;
-    }
-    else
-    {
-#line 415 "hexc/hextiling.glsl"
-        _1339 = (w.y >= w.z) ? 1 : 2;
-    }
-    int d = _1339;
 #line 416 "hexc/hextiling.glsl"
+    float3 Gup = gU / fast::max((gU + float3((gL.x + gL.y) + gL.z)) - gL, float3(1.0000000031710768509710513471353e-30));
+#line 420 "hexc/hextiling.glsl"
+    if (k > 0.0)
+    {
+#line 421 "hexc/hextiling.glsl"
+        float3 r1 = L.yzx / fast::max(U, float3(1.0000000031710768509710513471353e-30));
+        float3 r2 = L.zxy / fast::max(U, float3(1.0000000031710768509710513471353e-30));
+#line 422 "hexc/hextiling.glsl"
+        float3 _1348;
+        if (b.gainInt > 0)
+        {
+#line 422 "hexc/hextiling.glsl"
+            float3 param_10 = r1;
+            int param_11 = b.gainInt;
+            float3 _1356 = hexcPowInt(param_10, param_11);
+            _1348 = _1356;
+        }
+        else
+        {
+#line 422 "hexc/hextiling.glsl"
+            _1348 = pow(r1, float3(k));
+        }
+        float3 p1 = _1348;
+#line 423 "hexc/hextiling.glsl"
+        float3 _1367;
+        if (b.gainInt > 0)
+        {
+#line 423 "hexc/hextiling.glsl"
+            float3 param_12 = r2;
+            int param_13 = b.gainInt;
+            float3 _1375 = hexcPowInt(param_12, param_13);
+            _1367 = _1375;
+        }
+        else
+        {
+#line 423 "hexc/hextiling.glsl"
+            _1367 = pow(r2, float3(k));
+        }
+        float3 p2 = _1367;
+#line 424 "hexc/hextiling.glsl"
+        Gup = select(Gup, float3(1.0) / ((float3(1.0) + p1) + p2), fast::max(U, fast::max(L.yzx, L.zxy)) < float3(0.5));
+    }
+#line 427 "hexc/hextiling.glsl"
+    float3 B = Gup - (log(fast::max(float3(1.0) - U, float3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
+#line 428 "hexc/hextiling.glsl"
+    bool _1415 = w.x >= w.y;
+    bool _1423;
+    if (_1415)
+    {
+#line 428 "hexc/hextiling.glsl"
+        _1423 = w.x >= w.z;
+    }
+    else
+    {
+        _1423 = _1415;
+    }
+    int _1424;
+    if (_1423)
+    {
+        _1424 = 0;
+    }
+    else
+    {
+#line 428 "hexc/hextiling.glsl"
+        _1424 = (w.y >= w.z) ? 1 : 2;
+    }
+    int d = _1424;
+#line 429 "hexc/hextiling.glsl"
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
-#line 417 "hexc/hextiling.glsl"
+#line 430 "hexc/hextiling.glsl"
     bool3 f = bool3(true);
-#line 418 "hexc/hextiling.glsl"
+#line 431 "hexc/hextiling.glsl"
     if ((Gup[a] + Gup[c]) < b.adaptiveError)
     {
-#line 419 "hexc/hextiling.glsl"
+#line 432 "hexc/hextiling.glsl"
         f[a] = false;
-#line 420 "hexc/hextiling.glsl"
+#line 433 "hexc/hextiling.glsl"
         f[c] = false;
     }
     else
     {
-#line 421 "hexc/hextiling.glsl"
+#line 434 "hexc/hextiling.glsl"
         if (fast::min(B[a], B[c]) < b.adaptiveError)
         {
-#line 422 "hexc/hextiling.glsl"
+#line 435 "hexc/hextiling.glsl"
             f[(B[a] <= B[c]) ? a : c] = false;
         }
     }
-#line 424 "hexc/hextiling.glsl"
+#line 437 "hexc/hextiling.glsl"
     return f;
 }
 
-#line 458 "hexc/hextiling.glsl"
+#line 471 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched(thread const float3& w, thread const HexcBlend& b)
 {
-#line 458 "hexc/hextiling.glsl"
-    bool3 _1534;
+#line 471 "hexc/hextiling.glsl"
+    bool3 _1619;
     if (bool(b.adaptive))
     {
-#line 458 "hexc/hextiling.glsl"
+#line 471 "hexc/hextiling.glsl"
         float3 param = w;
         HexcBlend param_1 = b;
-        _1534 = hexcAdaptiveTaps(param, param_1);
+        _1619 = hexcAdaptiveTaps(param, param_1);
     }
     else
     {
-#line 458 "hexc/hextiling.glsl"
-        _1534 = bool3(true, true, b.taps > 2);
+#line 471 "hexc/hextiling.glsl"
+        _1619 = bool3(true, true, b.taps > 2);
     }
-#line 458 "hexc/hextiling.glsl"
-    return _1534;
+#line 471 "hexc/hextiling.glsl"
+    return _1619;
 }
 
-#line 441 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& sharedLod)
 {
-#line 441 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     if (!sharedLod)
     {
-#line 441 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
         return float3(0.0);
     }
-#line 442 "hexc/hextiling.glsl"
+#line 455 "hexc/hextiling.glsl"
     float2 size = float2(int2(tex.get_width(), tex.get_height()));
-#line 443 "hexc/hextiling.glsl"
+#line 456 "hexc/hextiling.glsl"
     HexcTap p = t.tap[0];
-#line 444 "hexc/hextiling.glsl"
+#line 457 "hexc/hextiling.glsl"
     float lod = 0.5 * log2(fast::max((fast::max(dot(p.dx, p.dx), dot(p.dy, p.dy)) * size.x) * size.y, 1.0000000031710768509710513471353e-30));
-#line 445 "hexc/hextiling.glsl"
+#line 458 "hexc/hextiling.glsl"
     float3 invScale = float3(p.invScale, t.tap[1].invScale, t.tap[2].invScale);
-#line 446 "hexc/hextiling.glsl"
-    float3 _1488;
+#line 459 "hexc/hextiling.glsl"
+    float3 _1573;
     if (bool(t.scaled))
     {
-#line 446 "hexc/hextiling.glsl"
-        _1488 = float3(lod) + log2(invScale / float3(p.invScale));
+#line 459 "hexc/hextiling.glsl"
+        _1573 = float3(lod) + log2(invScale / float3(p.invScale));
     }
     else
     {
-#line 446 "hexc/hextiling.glsl"
-        _1488 = float3(lod);
+#line 459 "hexc/hextiling.glsl"
+        _1573 = float3(lod);
     }
-#line 446 "hexc/hextiling.glsl"
-    return _1488;
+#line 459 "hexc/hextiling.glsl"
+    return _1573;
 }
 
-#line 452 "hexc/hextiling.glsl"
+#line 465 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod, thread const bool& sharedLod)
 {
-    float4 _1507;
+    float4 _1592;
     if (sharedLod)
     {
-#line 452 "hexc/hextiling.glsl"
-        _1507 = tex.sample(samp, p.st, level(lod));
+#line 465 "hexc/hextiling.glsl"
+        _1592 = tex.sample(samp, p.st, level(lod));
     }
     else
     {
-#line 452 "hexc/hextiling.glsl"
-        _1507 = tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
+#line 465 "hexc/hextiling.glsl"
+        _1592 = tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
     }
-#line 452 "hexc/hextiling.glsl"
-    return _1507;
+#line 465 "hexc/hextiling.glsl"
+    return _1592;
 }
 
-#line 465 "hexc/hextiling.glsl"
+#line 478 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread const bool& sharedLod, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 465 "hexc/hextiling.glsl"
+#line 478 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool param_1 = sharedLod;
     float3 lod = hexcTileLods(tex, samp, param, param_1);
-#line 466 "hexc/hextiling.glsl"
-    c = _1556;
-#line 467 "hexc/hextiling.glsl"
+#line 479 "hexc/hextiling.glsl"
+    c = _1641;
+#line 480 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 467 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
         HexcTap param_2 = t.tap[0];
         float param_3 = lod.x;
         bool param_4 = sharedLod;
         c[0] = hexcFetch(tex, samp, param_2, param_3, param_4);
     }
-#line 468 "hexc/hextiling.glsl"
+#line 481 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 468 "hexc/hextiling.glsl"
+#line 481 "hexc/hextiling.glsl"
         HexcTap param_5 = t.tap[1];
         float param_6 = lod.y;
         bool param_7 = sharedLod;
         c[1] = hexcFetch(tex, samp, param_5, param_6, param_7);
     }
-#line 469 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 469 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
         HexcTap param_8 = t.tap[2];
         float param_9 = lod.z;
         bool param_10 = sharedLod;
@@ -906,11 +949,11 @@ float3 hexcBlendWeights(thread const float3& w, thread const float3& Dw, thread 
     return W;
 }
 
-#line 475 "hexc/hextiling.glsl"
+#line 488 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileHeights(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b)
 {
-#line 475 "hexc/hextiling.glsl"
+#line 488 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool3 param_1 = bool3(true, true, b.taps > 2);
     bool param_2 = bool(b.sharedLod);
@@ -918,19 +961,19 @@ float3 hexcTileHeights(texture2d<float> tex, sampler samp, thread const HexcTile
     hexcFetchTaps(tex, samp, param, param_1, param_2, param_3);
     spvUnsafeArray<float4, 3> h;
     h = param_3;
-#line 476 "hexc/hextiling.glsl"
+#line 489 "hexc/hextiling.glsl"
     return float3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
 }
 
-#line 431 "hexc/hextiling.glsl"
+#line 444 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcHeightBlend(thread const float3& W, thread const float3& h, thread const float& width)
 {
-#line 431 "hexc/hextiling.glsl"
+#line 444 "hexc/hextiling.glsl"
     float3 a = fast::max(h, float3(0.0)) * W;
-#line 432 "hexc/hextiling.glsl"
+#line 445 "hexc/hextiling.glsl"
     float3 Wh = W * fast::max((a - float3(fast::max(fast::max(a.x, a.y), a.z))) + float3(width), float3(0.0));
-#line 433 "hexc/hextiling.glsl"
+#line 446 "hexc/hextiling.glsl"
     return Wh / float3((Wh.x + Wh.y) + Wh.z);
 }
 
@@ -944,15 +987,15 @@ float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 488 "hexc/hextiling.glsl"
+#line 501 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const float4& luma, texture2d<float> heightTex, thread float3& weights)
 {
-#line 488 "hexc/hextiling.glsl"
+#line 501 "hexc/hextiling.glsl"
     float3 param = t.w;
     HexcBlend param_1 = b;
     bool3 f = hexcFetched(param, param_1);
-#line 490 "hexc/hextiling.glsl"
+#line 503 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bool3 param_3 = f;
     bool param_4 = bool(b.sharedLod);
@@ -960,17 +1003,17 @@ float4 hexcColor(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
     hexcFetchTaps(tex, samp, param_2, param_3, param_4, param_5);
     spvUnsafeArray<float4, 3> c;
     c = param_5;
-#line 491 "hexc/hextiling.glsl"
+#line 504 "hexc/hextiling.glsl"
     float3 Dw = float3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
-#line 492 "hexc/hextiling.glsl"
+#line 505 "hexc/hextiling.glsl"
     float3 param_6 = t.w * float3(f);
     float3 param_7 = Dw;
     HexcBlend param_8 = b;
     float3 W = hexcBlendWeights(param_6, param_7, param_8);
-#line 493 "hexc/hextiling.glsl"
+#line 506 "hexc/hextiling.glsl"
     if (bool(b.height))
     {
-#line 493 "hexc/hextiling.glsl"
+#line 506 "hexc/hextiling.glsl"
         HexcTiles param_9 = t;
         HexcBlend param_10 = b;
         float3 param_11 = W;
@@ -978,11 +1021,11 @@ float4 hexcColor(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         float param_13 = b.heightWidth;
         W = hexcHeightBlend(param_11, param_12, param_13);
     }
-#line 494 "hexc/hextiling.glsl"
+#line 507 "hexc/hextiling.glsl"
     float3 param_14 = W;
     int3 param_15 = t.channel;
     weights = hexcShowWeights(param_14, param_15);
-#line 495 "hexc/hextiling.glsl"
+#line 508 "hexc/hextiling.glsl"
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
@@ -1034,9 +1077,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     HexcBlend param_6 = blend;
     float4 param_7 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_8;
-    float4 _2021 = hexcColor(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
+    float4 _2106 = hexcColor(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
     weights = param_8;
-    return _2021;
+    return _2106;
 }
 
 #line 41 "hexc/generated"
@@ -1051,9 +1094,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _2041 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _2126 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _2041;
+    return _2126;
 }
 
 #line 44 "hexc/generated"
@@ -1063,38 +1106,38 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 44 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _2049 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _2134 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _2049;
+    return _2134;
 }
 
-#line 482 "hexc/hextiling.glsl"
+#line 495 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
-#line 482 "hexc/hextiling.glsl"
-    float4 _1634;
+#line 495 "hexc/hextiling.glsl"
+    float4 _1719;
     if (c == 0)
     {
-        _1634 = float4(1.0, 0.0, 0.0, 0.0);
+        _1719 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-#line 482 "hexc/hextiling.glsl"
-        float4 _1641;
+#line 495 "hexc/hextiling.glsl"
+        float4 _1726;
         if (c == 1)
         {
-            _1641 = float4(0.0, 1.0, 0.0, 0.0);
+            _1726 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-#line 482 "hexc/hextiling.glsl"
-            _1641 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+#line 495 "hexc/hextiling.glsl"
+            _1726 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _1634 = _1641;
+        _1719 = _1726;
     }
-#line 482 "hexc/hextiling.glsl"
-    return _1634;
+#line 495 "hexc/hextiling.glsl"
+    return _1719;
 }
 
 #line 73 "hexc/generated"
@@ -1146,9 +1189,9 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     HexcBlend param_7 = blend;
     float4 param_8 = hexcChannel(param_5);
     float3 param_9;
-    float4 _2166 = hexcColor(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
+    float4 _2251 = hexcColor(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
     weights = param_9;
-    return _2166.x;
+    return _2251.x;
 }
 
 #line 94 "hexc/generated"
@@ -1163,9 +1206,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, constant H
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _2186 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
+    float _2271 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _2186;
+    return _2271;
 }
 
 #line 97 "hexc/generated"
@@ -1175,33 +1218,33 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
 #line 97 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _2194 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _2279 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _2194;
+    return _2279;
 }
 
-#line 530 "hexc/hextiling.glsl"
+#line 545 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 530 "hexc/hextiling.glsl"
+#line 545 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
-#line 531 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-#line 532 "hexc/hextiling.glsl"
-    float _1763;
+#line 547 "hexc/hextiling.glsl"
+    float _1848;
     if (flipY)
     {
-#line 532 "hexc/hextiling.glsl"
-        _1763 = -vM.y;
+#line 547 "hexc/hextiling.glsl"
+        _1848 = -vM.y;
     }
     else
     {
-#line 532 "hexc/hextiling.glsl"
-        _1763 = vM.y;
+#line 547 "hexc/hextiling.glsl"
+        _1848 = vM.y;
     }
-#line 532 "hexc/hextiling.glsl"
-    return (-float2(vM.x, _1763)) / float2(zMa);
+#line 547 "hexc/hextiling.glsl"
+    return (-float2(vM.x, _1848)) / float2(zMa);
 }
 
 #line 102 "hexc/hextiling.glsl"
@@ -1214,50 +1257,50 @@ float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
     return hexcRotateToTile(param, param_1);
 }
 
-#line 538 "hexc/hextiling.glsl"
+#line 553 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 538 "hexc/hextiling.glsl"
+#line 553 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1796;
+    float2 _1881;
     if (scaled)
     {
-#line 539 "hexc/hextiling.glsl"
-        _1796 = d * p.invScale;
+#line 554 "hexc/hextiling.glsl"
+        _1881 = d * p.invScale;
     }
     else
     {
-        _1796 = d;
+        _1881 = d;
     }
-#line 539 "hexc/hextiling.glsl"
-    return _1796;
+#line 554 "hexc/hextiling.glsl"
+    return _1881;
 }
 
-#line 546 "hexc/hextiling.glsl"
+#line 561 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights)
 {
-#line 546 "hexc/hextiling.glsl"
+#line 561 "hexc/hextiling.glsl"
     float3 param = t.w;
     HexcBlend param_1 = b;
     bool3 f = hexcFetched(param, param_1);
-#line 547 "hexc/hextiling.glsl"
+#line 562 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bool param_3 = bool(b.sharedLod);
     float3 lod = hexcTileLods(tex, samp, param_2, param_3);
-#line 548 "hexc/hextiling.glsl"
+#line 563 "hexc/hextiling.glsl"
     float2 d1 = float2(0.0);
     float2 d2 = float2(0.0);
     float2 d3 = float2(0.0);
-#line 549 "hexc/hextiling.glsl"
+#line 564 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 549 "hexc/hextiling.glsl"
+#line 564 "hexc/hextiling.glsl"
         HexcTap param_4 = t.tap[0];
         float param_5 = lod.x;
         bool param_6 = bool(b.sharedLod);
@@ -1267,10 +1310,10 @@ float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         bool param_10 = flipY;
         d1 = hexcTapDeriv(param_7, param_8, param_9, param_10);
     }
-#line 550 "hexc/hextiling.glsl"
+#line 565 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 550 "hexc/hextiling.glsl"
+#line 565 "hexc/hextiling.glsl"
         HexcTap param_11 = t.tap[1];
         float param_12 = lod.y;
         bool param_13 = bool(b.sharedLod);
@@ -1280,10 +1323,10 @@ float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         bool param_17 = flipY;
         d2 = hexcTapDeriv(param_14, param_15, param_16, param_17);
     }
-#line 551 "hexc/hextiling.glsl"
+#line 566 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 551 "hexc/hextiling.glsl"
+#line 566 "hexc/hextiling.glsl"
         HexcTap param_18 = t.tap[2];
         float param_19 = lod.z;
         bool param_20 = bool(b.sharedLod);
@@ -1293,17 +1336,17 @@ float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         bool param_24 = flipY;
         d3 = hexcTapDeriv(param_21, param_22, param_23, param_24);
     }
-#line 552 "hexc/hextiling.glsl"
+#line 567 "hexc/hextiling.glsl"
     float3 D = float3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-#line 553 "hexc/hextiling.glsl"
+#line 568 "hexc/hextiling.glsl"
     float3 param_25 = t.w * float3(f);
     float3 param_26 = sqrt(D / (float3(1.0) + D));
     HexcBlend param_27 = b;
     float3 W = hexcBlendWeights(param_25, param_26, param_27);
-#line 554 "hexc/hextiling.glsl"
+#line 569 "hexc/hextiling.glsl"
     if (bool(b.height))
     {
-#line 554 "hexc/hextiling.glsl"
+#line 569 "hexc/hextiling.glsl"
         HexcTiles param_28 = t;
         HexcBlend param_29 = b;
         float3 param_30 = W;
@@ -1311,11 +1354,11 @@ float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         float param_32 = b.heightWidth;
         W = hexcHeightBlend(param_30, param_31, param_32);
     }
-#line 555 "hexc/hextiling.glsl"
+#line 570 "hexc/hextiling.glsl"
     float3 param_33 = W;
     int3 param_34 = t.channel;
     weights = hexcShowWeights(param_33, param_34);
-#line 556 "hexc/hextiling.glsl"
+#line 571 "hexc/hextiling.glsl"
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
@@ -1367,9 +1410,9 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     HexcBlend param_6 = blend;
     bool param_7 = false;
     float3 param_8;
-    float2 _2093 = hexcDeriv(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
+    float2 _2178 = hexcDeriv(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
     weights = param_8;
-    return _2093;
+    return _2178;
 }
 
 #line 67 "hexc/generated"
@@ -1384,9 +1427,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _2112 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _2197 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _2112;
+    return _2197;
 }
 
 #line 70 "hexc/generated"
@@ -1396,16 +1439,16 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
 #line 70 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _2120 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _2205 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _2120;
+    return _2205;
 }
 
-#line 608 "hexc/hextiling.glsl"
+#line 623 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 608 "hexc/hextiling.glsl"
+#line 623 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 
