@@ -4,6 +4,19 @@ listed by hexc before the build (docs/build-integration.md, "Bazel")."""
 # hexc's --targets names and the extensions of the files they write (<name>.frag.<extension>).
 _EXTENSIONS = {"spirv": "spv", "hlsl": "hlsl", "glsl": "glsl", "msl": "metal"}
 
+# Runs hexc ($1, with the arguments after $3), then checks that the files it wrote, the targets of its depfile ($2),
+# are the declared ones ($3): Bazel would drop any other without a word, and a shader would miss its table.
+_CHECKED_RUN = """
+hexc=$1 depfile=$2 declared=$3
+shift 3
+"$hexc" "$@" || exit
+written=$(sed -n '1s/: .*//p' "$depfile" | tr ' ' '\\n' | LC_ALL=C sort | tr '\\n' ' ')
+[ "$written" = "$declared " ] && exit 0
+echo "hexc_material: hexc wrote [$written] but the rule declares [$declared]: give hexc_material the outs" \\
+  "hexc_outputs lists with the same options" >&2
+exit 1
+"""
+
 # The names hexc keeps a stamp for: one per manifest "<name>.manifest.json" (a material, or a scene's variant).
 def _stamped(outs):
     return [f[:-len(".manifest.json")] for f in outs if f.endswith(".manifest.json")]
@@ -25,20 +38,22 @@ def _hexc_material_impl(ctx):
     # behind; --force, because Bazel, not the stamp, decides when the action runs; --no-cache, because Bazel's own
     # action cache serves that purpose and an action reads nothing undeclared.
     stamps = [ctx.actions.declare_file("." + n + ".hexc-stamp") for n in _stamped(ctx.attr.outs) or [name]]
+    depfile = ctx.actions.declare_file("." + ctx.label.name + ".hexc.d")
 
     args = ctx.actions.args()
     args.add(ctx.file.material)
     args.add("-o", shaders[0].dirname)
     args.add_joined("--targets", ctx.attr.targets, join_with = ",")
-    args.add_all(["--force", "--no-cache", "-q"])
+    args.add_all(["--force", "--no-cache", "-q", "--depfile", depfile])
     if ctx.attr.vertex:
         args.add("--vertex")
     args.add_all(ctx.attr.options)
-    ctx.actions.run(
-        executable = ctx.executable.hexc,
-        arguments = [args],
+    ctx.actions.run_shell(
+        command = _CHECKED_RUN,
+        arguments = [ctx.executable.hexc.path, depfile.path, " ".join(sorted([f.path for f in shaders])), args],
+        tools = [ctx.executable.hexc],
         inputs = [ctx.file.material] + ctx.files.textures + ctx.files.templates,
-        outputs = shaders + stamps,
+        outputs = shaders + stamps + [depfile],
         mnemonic = "HexcMaterial",
         progress_message = "hexc: compiling " + name,
     )

@@ -83,6 +83,15 @@ step="gravel's roughness slot removed" expect gravel yard
 grep -q "gravel.roughness" "$work/root/"*/external/hexc_outputs/outputs.bzl && fail "gravel.roughness's tables are still declared"
 step="second build after the edits" expect
 
+# A rule whose options differ from those hexc_outputs listed with: hexc writes a file the rule does not declare,
+# which Bazel would drop without a word; the rule fails instead, naming both lists.
+cp "$ws/BUILD" "$work/BUILD"
+sed -i 's/targets = \["spirv", "hlsl"\],/targets = ["spirv", "hlsl", "glsl"],/' "$ws/BUILD"
+! bazel_build || { cat "$work/log"; fail "gravel with a glsl target its outs do not list built"; }
+grep -q "hexc_material: hexc wrote \[.*gravel.frag.glsl.*\] but the rule declares" "$work/log" || { cat "$work/log"; fail "no word of gravel.frag.glsl"; }
+echo "ok: an output the rule does not declare fails the build: $(grep -o 'hexc_material: hexc wrote.\{0,60\}' "$work/log")..."
+cp "$work/BUILD" "$ws/BUILD"
+
 # rock_normal.png stays in the workspace, only undeclared: the sandbox must hide it from the action.
 sed -i '/rock_normal.png/d' "$ws/BUILD"
 [ -f "$ws/materials/textures/rock_normal.png" ] || fail "rock_normal.png is missing from the workspace"
