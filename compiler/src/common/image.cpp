@@ -187,6 +187,7 @@ Texture loadTexture(const std::filesystem::path& file, bool srgb) {
 
 std::string pfmBytes(const Image& image) {
     std::string out = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+    out.reserve(out.size() + size_t(image.width) * size_t(image.height) * 12);
     for (int y = image.height - 1; y >= 0; --y)  // PFM stores the bottom row first
         for (int x = 0; x < image.width; ++x)
             for (int c = 0; c < 3; ++c) {

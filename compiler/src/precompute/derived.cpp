@@ -16,17 +16,21 @@ nlohmann::json binary(std::string_view bytes) { return nlohmann::json::binary(st
 
 // A histogram slot's derived textures (hexc/histogram.h) as PFM files' bytes: float32 keeps T and its inverse exact,
 // and hexc reads and writes PFM byte for byte. A texture that cannot be read stops the compile.
-nlohmann::json histogramFiles(const Material& material, const Slot& s) {
-    Texture source;
+HistogramTransform transformOf(const Material& material, const Slot& s) {
     try {
-        source = loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb);
+        return histogramTransform(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb), s);
     } catch (const TextureError& e) {
         throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
     }
-    const HistogramTransform t = histogramTransform(source, s);
+}
+
+// The source texture is gone once the transform exists, and each texture's floats move into the image written (a
+// large texture's intermediate copies are what its memory goes to).
+nlohmann::json histogramFiles(const Material& material, const Slot& s) {
+    HistogramTransform t = transformOf(material, s);
     nlohmann::json files;
-    for (const auto& [which, texture] : {std::pair{"gaussian", &t.gaussian}, std::pair{"lut", &t.lut}})
-        files[which] = binary(pfmBytes({texture->width, texture->height, texture->rgba32f}));
+    for (auto& [which, texture] : {std::pair{"gaussian", &t.gaussian}, std::pair{"lut", &t.lut}})
+        files[which] = binary(pfmBytes({texture->width, texture->height, std::move(texture->rgba32f)}));
     return files;
 }
 
