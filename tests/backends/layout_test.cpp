@@ -73,10 +73,10 @@ TEST(Layout, EveryTargetAndTheManifestPutHexcsResourcesWhereItSays) {
         json targets = json::parse(file(r, ".manifest.json"))["targets"];
         // rock's slots in order: albedo, normal, roughness.
         EXPECT_EQ(targets["spirv"]["params"],
-                  (json{{"set", L.vulkan.set}, {"binding", L.vulkan.binding}, {"descriptor_type", "uniform_buffer"}}));
+                  (json{{"set", L.vulkan.set}, {"binding", L.vulkan.binding}, {"descriptor_type", "UNIFORM_BUFFER"}}));
         EXPECT_EQ(targets["spirv"]["textures"]["roughness"]["binding"], L.vulkan.binding + 4);
         EXPECT_EQ(targets["spirv"]["textures"]["roughness"]["descriptor_type"],
-                  L.vulkan.combined ? "combined_image_sampler" : "sampled_image");
+                  L.vulkan.combined ? "COMBINED_IMAGE_SAMPLER" : "SAMPLED_IMAGE");
         EXPECT_EQ(targets["spirv"]["sampler"].contains("combined_into_textures"), L.vulkan.combined == 1);
         // Combined: no sampler variable is left in the module, and each texture is a sampler2D.
         const std::string spirv = disassemble(spirvWords(file(r, ".spv")));
@@ -201,14 +201,17 @@ void expectTheEngineTemplateReadsBoth(const Material& m) {
     Image albedo = vk::render(gpu, m, vk::RenderOutput::Albedo, "albedo", view);
 
     const Texture shadow = flat(0.5f, 0, 0), environment = flat(0.5f, 0.25f, 1.0f), detail = flat(0.75f, 0, 0);
-    using R = vk::TemplateResource;
+    // Data and images only: each resource's descriptor type, set and binding come from the manifest alone (its
+    // `descriptor_type`), as an engine building its descriptor set layouts from it takes them.
+    auto data = [](std::vector<uint8_t> bytes) { return vk::TemplateResource{{}, 0, 0, std::move(bytes), nullptr}; };
+    auto image = [](const Texture& t) { return vk::TemplateResource{{}, 0, 0, {}, &t}; };
     vk::TemplateInputs own;
-    own.resources = {{"Frame", {R::Kind::UniformBuffer, 0, 0, bytes({0, 0, 1, 2.0f}), nullptr}},             // lightDir +z, exposure 2
-                     {"Object", {R::Kind::UniformBuffer, 0, 0, bytes({1.0f, 0.5f, 0.25f, 1.0f}), nullptr}},  // tint
-                     {"shadowMap", {R::Kind::CombinedImageSampler, 0, 0, {}, &shadow}},
-                     {"environment", {R::Kind::CombinedImageSampler, 0, 0, {}, &environment}},
-                     {"detail", {R::Kind::SampledImage, 0, 0, {}, &detail}},
-                     {"detailSampler", {R::Kind::Sampler, 0, 0, {}, nullptr}}};
+    own.resources = {{"Frame", data(bytes({0, 0, 1, 2.0f}))},             // lightDir +z, exposure 2
+                     {"Object", data(bytes({1.0f, 0.5f, 0.25f, 1.0f}))},  // tint
+                     {"shadowMap", image(shadow)},
+                     {"environment", image(environment)},
+                     {"detail", image(detail)},
+                     {"detailSampler", {}}};
     own.pushConstants = bytes({0.25f});  // ambient
     std::vector<std::pair<std::string, CompileOptions>> all(3);
     all[0].first = "default";

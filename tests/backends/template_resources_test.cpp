@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -126,12 +127,33 @@ TEST(TemplateResources, TheManifestSaysWhereEachTargetPutThem) {
             << name;
     }
     for (const json& res : m["targets"]["glsl"]["template_resources"]) {
-        if (!res.contains("texture_unit") || res["kind"] == "image") continue;  // combined images keep the image's name
+        if (!res.contains("texture_unit") || res["kind"] == "sampled_image") continue;  // combined images keep the image's name
         std::string name = res["name"];
         EXPECT_TRUE(std::regex_search(
             glsl, std::regex("binding = " + std::to_string(res["texture_unit"].get<int>()) + "\\) uniform \\w+ " + name + ";")))
             << name;
     }
+    // One vocabulary for hexc's resources and the template's: each one's Vulkan descriptor type, its kind the same in
+    // lower case; push constants give their byte range (engine.glsl: `layout(offset = 16) float ambient`).
+    std::map<std::string, std::string> types;
+    for (const json& res : m["targets"]["spirv"]["template_resources"]) {
+        if (res["kind"] == "push_constant") {
+            types[res["name"]] = res["offset"].dump() + "+" + res["size"].dump();
+            continue;
+        }
+        std::string lower = res["vulkan"]["descriptor_type"];
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](char c) { return char(std::tolower(c)); });
+        EXPECT_EQ(res["kind"], lower);
+        types[res["name"]] = res["vulkan"]["descriptor_type"];
+    }
+    EXPECT_EQ(types, (std::map<std::string, std::string>{{"Frame", "UNIFORM_BUFFER"},
+                                                         {"Object", "UNIFORM_BUFFER"},
+                                                         {"Push", "16+4"},
+                                                         {"shadowMap", "COMBINED_IMAGE_SAMPLER"},
+                                                         {"environment", "COMBINED_IMAGE_SAMPLER"},
+                                                         {"detail", "SAMPLED_IMAGE"},
+                                                         {"detailSampler", "SAMPLER"}}));
+    EXPECT_EQ(m["targets"]["spirv"]["sampler"]["descriptor_type"], "SAMPLER");
     // hexc's own resources keep their documented places.
     EXPECT_EQ(m["targets"]["hlsl"]["params"]["register"], "b0");
     EXPECT_EQ(m["targets"]["hlsl"]["textures"]["roughness"]["register"], "t1");
@@ -173,7 +195,9 @@ TEST(TemplateResources, OneInHexcsSetPastItsBindingsIsTheTemplates) {
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
     json placed = json::parse(file(r, "engine_rock.manifest.json"))["targets"]["spirv"]["template_resources"];
     bool found = false;
-    for (const json& res : placed) found |= res["name"] == "shadowMap" && res["vulkan"] == json{{"set", 0}, {"binding", 4}};
+    for (const json& res : placed)
+        found |= res["name"] == "shadowMap" && res["kind"] == "combined_image_sampler" &&
+                 res["vulkan"] == json{{"set", 0}, {"binding", 4}, {"descriptor_type", "COMBINED_IMAGE_SAMPLER"}};
     EXPECT_TRUE(found) << placed.dump();
 }
 

@@ -203,7 +203,11 @@ void bindHexcs(const nlohmann::json& manifest, ExecutedTarget target, RenderRequ
 void placeTemplateResource(const nlohmann::json& r, ExecutedTarget target, const TemplateInputs& own, RenderRequest& request) {
     using Kind = TemplateResource::Kind;
     if (r["kind"] == "push_constant") {
-        if (target == ExecutedTarget::Spirv) {
+        if (target == ExecutedTarget::Spirv) {  // the runner's fragment range starts at byte 16: the manifest's must too
+            if (r["offset"] != 16 || r["size"] != own.pushConstants.size())
+                throw std::invalid_argument("the manifest's push constant range " + r["offset"].dump() + "+" + r["size"].dump() +
+                                            " is not the fragment range the harness pushes (16+" +
+                                            std::to_string(own.pushConstants.size()) + ")");
             request.fragmentPushConstants = own.pushConstants;
         } else if (target == ExecutedTarget::Glsl) {  // a struct uniform: its std140 offsets are the block's from byte 16
             request.templateResources.push_back({Kind::UniformBuffer, 0, kGlDefaultBlockBinding, own.pushConstants, nullptr});
@@ -215,7 +219,14 @@ void placeTemplateResource(const nlohmann::json& r, ExecutedTarget target, const
         return;
     }
     if (r.value("combined_into_textures", false)) return;  // OpenGL: bound with its texture
+    // The caller gives the data and images; the descriptor types come from the manifest alone, as an engine that
+    // builds its VkDescriptorSetLayouts from it takes them.
+    static const std::map<std::string, Kind> kinds = {{"UNIFORM_BUFFER", Kind::UniformBuffer},
+                                                      {"COMBINED_IMAGE_SAMPLER", Kind::CombinedImageSampler},
+                                                      {"SAMPLED_IMAGE", Kind::SampledImage},
+                                                      {"SAMPLER", Kind::Sampler}};
     TemplateResource placed = own.resources.at(r["name"]);
+    placed.kind = kinds.at(r["vulkan"]["descriptor_type"]);
     if (target == ExecutedTarget::Spirv) {
         placed.set = r["vulkan"]["set"];
         placed.binding = r["vulkan"]["binding"];

@@ -28,18 +28,21 @@ enum class ResourceKind { Params, Sampler, Texture };
 
 // A resource the template declares itself (per-frame blocks, shadow maps, push constants...): anything but
 // hexc's own (plan.h, HexcBindings). Each target places them after hexc's, per register class.
-enum class ResourceClass { UniformBuffer, StorageBuffer, PushConstant, SampledImage, Image, Sampler, StorageImage };
+// Named after Vulkan's descriptor types: SampledImage a texture2D (SAMPLED_IMAGE), CombinedImageSampler a sampler2D.
+enum class ResourceClass { UniformBuffer, StorageBuffer, PushConstant, CombinedImageSampler, SampledImage, Sampler, StorageImage };
 struct TemplateResource {
     uint32_t id = 0;  // SPIR-V variable
     std::string name;
     ResourceClass cls = ResourceClass::UniformBuffer;
     uint32_t set = 0, binding = 0;  // as declared (none for push constants)
+    uint32_t offset = 0, size = 0;  // push constants: the byte range the block's members take (a VkPushConstantRange)
 };
 
 // The template's resources in (class, set, binding) order. One at a binding hexc's layout takes is a located error
 // (CompileError).
 std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, const ShaderPlan& plan);
-// {name, kind, set, binding} for the manifest; a target adds where it placed the resource.
+// {name, kind, vulkan: {set, binding, descriptor_type}} (push constants: {offset, size}) for the manifest; a target
+// adds where it placed the resource.
 nlohmann::json describe(const TemplateResource& r);
 
 struct TargetOutput {

@@ -35,10 +35,10 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerGLSL& c, const std::v
             case ResourceClass::StorageImage:
                 bind("image_unit", image++);
                 break;
-            case ResourceClass::SampledImage:
+            case ResourceClass::CombinedImageSampler:
                 bind("texture_unit", unit++);
                 break;
-            case ResourceClass::Image:
+            case ResourceClass::SampledImage:
                 where["texture_unit"] = units[r.id];
                 break;
             case ResourceClass::Sampler:

@@ -30,10 +30,10 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const Shader
             case ResourceClass::PushConstant:
                 assign(b.cbv, 'b', "register");
                 break;
-            case ResourceClass::SampledImage:
+            case ResourceClass::CombinedImageSampler:
                 assign(b.srv, 't', "register"), assign(b.sampler, 's', "sampler_register");
                 break;
-            case ResourceClass::Image:
+            case ResourceClass::SampledImage:
                 assign(b.srv, 't', "register");
                 break;
             case ResourceClass::Sampler:

@@ -5,18 +5,22 @@ namespace hexc {
 
 namespace {
 
-// A slot as the manifest lists it: its texture and the settings it was compiled with.
-// A histogram slot's derived textures (hexc/histogram.h): the files hexc writes and how an engine binds them.
+// A histogram slot's derived textures (hexc/histogram.h): the files hexc writes and how an engine binds them, in
+// structured fields (docs/manifest.schema.json).
 nlohmann::json histogramEntry(const std::string& material, const Slot& s) {
-    const std::string format = "PFM, RGB float32 (upload as RGBA float, alpha 1), linear values";
+    // PFM holds RGB float32; upload as RGBA float with alpha 1. Linear values: no sRGB format.
+    const nlohmann::json format = {
+        {"container", "pfm"}, {"channels", "rgb"}, {"type", "float32"}, {"upload", "rgba32f"}, {"colorspace", "linear"}};
     return {{"gaussian",
              {{"file", histogramFileName(material, s.name, "gaussian")},
               {"format", format},
-              {"binding", "the slot's texture, in place of " + s.texture + ": hexc's sampler, full mip chain"}}},
+              // In place of the slot's own texture, at its binding: hexc's sampler over a full mip chain.
+              {"binding", {{"texture", s.name}, {"replaces", s.texture}, {"sampler", "hexcSampler"}, {"mip_chain", "full"}}}}},
             {"lut",
              {{"file", histogramFileName(material, s.name, "lut")},
               {"format", format},
-              {"binding", "texture `" + s.name + ".lut`: hexc's sampler, level 0 read only (no mip chain needed)"}}}};
+              // Its own texture in each target's `textures`; only level 0 is read.
+              {"binding", {{"texture", s.name + ".lut"}, {"sampler", "hexcSampler"}, {"mip_chain", "level0"}}}}}};
 }
 
 // A packed texture (docs/material-format.md#pack): its file, colour space, size and which channels each slot reads.
@@ -24,15 +28,39 @@ nlohmann::json packedEntry(const std::string& material, const ShaderPlan& plan, 
     const std::string first = plan.slots[p.slots.front()].slot->name;
     nlohmann::json slots = nlohmann::json::object();
     for (size_t k = 0; k < p.slots.size(); ++k) slots[plan.slots[p.slots[k]].slot->name] = p.channels[k];
+    // An sRGB format decodes RGB only: alpha stays linear. The file holds level 0; the engine builds the chain.
     return {{"name", first + ".packed"},
             {"file", packedFileName(material, first)},
-            {"format", "PNG, 8-bit RGBA, mip level 0 only (build the chain as for any texture)"},
+            {"format", {{"container", "png"}, {"channels", "rgba"}, {"type", "unorm8"}, {"alpha", "linear"}, {"levels_in_file", 1}}},
             {"colorspace", p.srgb ? "srgb" : "linear"},
-            {"note", p.srgb ? "an sRGB format decodes RGB only: alpha stays linear" : "a linear (UNORM) format"},
             {"size", {p.width, p.height}},
             {"slots", slots},
-            {"binding", "texture `" + first + ".packed` in each target's textures (slot `" + first +
-                            "`'s binding; the other slots' are unused): hexc's sampler, full mip chain"}};
+            // At slot `first`'s binding in each target's textures; the other packed slots' bindings stay unused.
+            {"binding", {{"texture", first + ".packed"}, {"slot", first}, {"sampler", "hexcSampler"}, {"mip_chain", "full"}}}};
+}
+
+// Every setting a slot was compiled with, as the material format names it (docs/material-format.md).
+nlohmann::json hextilingEntry(const HexTiling& h) {
+    return {{"enabled", h.enabled},
+            {"tiling", {h.tiling[0], h.tiling[1]}},
+            {"rotation", h.rotation},
+            {"falloff", h.falloff},
+            {"falloffcontrast", h.falloffcontrast},
+            {"exponent", h.exponent},
+            {"mode", toString(h.mode)},
+            {"split_coordinates", h.splitCoordinates},
+            {"mask", toString(h.mask)},
+            {"maskscale", h.maskScale},
+            {"taps", h.adaptive() ? nlohmann::json("adaptive") : nlohmann::json(h.taps == 1 ? 1 : h.maskTaps())},
+            {"blend", toString(h.blend)},
+            {"lod", toString(h.lod)},
+            {"projection", toString(h.projection)},
+            {"planesharpness", h.planeSharpness},
+            {"rotationrange", {h.rotationRange[0], h.rotationRange[1]}},
+            {"rotationsteps", h.rotationSteps},
+            {"scalerange", {h.scaleRange[0], h.scaleRange[1]}},
+            {"offset", h.offset},
+            {"offsetsteps", {h.offsetSteps[0], h.offsetSteps[1]}}};
 }
 
 nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
@@ -44,28 +72,12 @@ nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
         {"texture", s.texture},
         {"size", {s.width, s.height}},
         {"colorspace", toString(s.colorSpace)},
-        {"hextiling",
-         {{"enabled", h.enabled},
-          {"tiling", {h.tiling[0], h.tiling[1]}},
-          {"rotation", h.rotation},
-          {"falloff", h.falloff},
-          {"falloffcontrast", h.falloffcontrast},
-          {"exponent", h.exponent},
-          {"mode", toString(h.mode)},
-          {"split_coordinates", h.splitCoordinates},
-          {"mask", toString(h.mask)},
-          {"taps", h.adaptive() ? nlohmann::json("adaptive") : nlohmann::json(h.taps == 1 ? 1 : h.maskTaps())},
-          {"projection", toString(h.projection)}}},
+        {"hextiling", hextilingEntry(h)},
     };
-    if (h.mask != Mask::Hex) slot["hextiling"]["maskscale"] = h.maskScale;
-    if (h.projection == Projection::Triplanar) slot["hextiling"]["planesharpness"] = h.planeSharpness;
     if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
     // Bound for another slot's height blending only: the shader has no function for it.
     if (sp.heightOnly) slot["height_map_only"] = true;
-    if (sp.histogram) {
-        slot["hextiling"]["blend"] = toString(h.blend);
-        slot["histogram"] = histogramEntry(material, s);
-    }
+    if (sp.histogram) slot["histogram"] = histogramEntry(material, s);
     if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
     if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
     // The texture channels the shader reads: what a packing tool may not reuse.

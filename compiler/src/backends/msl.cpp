@@ -65,9 +65,9 @@ spirv_cross::MSLResourceBinding fragmentBinding(uint32_t set, uint32_t binding) 
 
 // What a template resource of class `c` takes in MSL: a texture, a sampler (a sampler2D both), else a buffer.
 bool takesTexture(ResourceClass c) {
-    return c == ResourceClass::SampledImage || c == ResourceClass::Image || c == ResourceClass::StorageImage;
+    return c == ResourceClass::CombinedImageSampler || c == ResourceClass::SampledImage || c == ResourceClass::StorageImage;
 }
-bool takesSampler(ResourceClass c) { return c == ResourceClass::SampledImage || c == ResourceClass::Sampler; }
+bool takesSampler(ResourceClass c) { return c == ResourceClass::CombinedImageSampler || c == ResourceClass::Sampler; }
 
 // Where each resource went, by (set, binding): the manifest's address of it.
 using Placed = std::map<std::pair<uint32_t, uint32_t>, nlohmann::json>;

@@ -43,8 +43,8 @@ bool isHexcs(const TemplateResource& r, const HexcBindings& b, size_t textures) 
             return named && r.binding == b.params;
         case ResourceClass::Sampler:
             return named && r.binding == b.sampler;
-        case ResourceClass::Image:
-        case ResourceClass::SampledImage:  // the SPIR-V output's, with layout vulkan.combined
+        case ResourceClass::SampledImage:
+        case ResourceClass::CombinedImageSampler:  // the SPIR-V output's, with layout vulkan.combined
             return named && r.binding >= b.firstTexture && r.binding < b.firstTexture + textures;
         default:
             return false;
@@ -63,10 +63,25 @@ CompileError bindingConflict(const TemplateResource& t, const ShaderPlan& plan) 
             ": parameter block, sampler, textures); give it another set or binding, or move hexc's with --set/--binding")}};
 }
 
+// The manifest's `kind` of a resource: Vulkan's descriptor type in lower case (push_constant apart).
 const char* toString(ResourceClass cls) {
-    static const char* names[] = {"uniform_buffer", "storage_buffer", "push_constant", "sampled_image",
-                                  "image",          "sampler",        "storage_image"};
+    static const char* names[] = {"uniform_buffer", "storage_buffer", "push_constant", "combined_image_sampler",
+                                  "sampled_image",  "sampler",        "storage_image"};
     return names[size_t(cls)];
+}
+
+// Vulkan's name of a descriptor type, without VK_DESCRIPTOR_TYPE_: "COMBINED_IMAGE_SAMPLER".
+std::string descriptorType(ResourceClass cls) {
+    std::string name = toString(cls);
+    std::transform(name.begin(), name.end(), name.begin(), [](char c) { return char(std::toupper(c)); });
+    return name;
+}
+
+// A push constant block's byte range: from its first member's offset to the end of its last.
+void pushConstantRange(const spirv_cross::Compiler& c, const spirv_cross::Resource& r, TemplateResource& t) {
+    const spirv_cross::SPIRType& type = c.get_type(r.base_type_id);
+    t.offset = type.member_types.empty() ? 0 : c.type_struct_member_offset(type, 0);
+    t.size = uint32_t(c.get_declared_struct_size(type)) - t.offset;
 }
 
 }  // namespace
@@ -74,12 +89,9 @@ const char* toString(ResourceClass cls) {
 std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, const ShaderPlan& plan) {
     spirv_cross::ShaderResources res = c.get_shader_resources();
     const std::pair<ResourceClass, const spirv_cross::SmallVector<spirv_cross::Resource>*> lists[] = {
-        {ResourceClass::UniformBuffer, &res.uniform_buffers},
-        {ResourceClass::StorageBuffer, &res.storage_buffers},
-        {ResourceClass::PushConstant, &res.push_constant_buffers},
-        {ResourceClass::SampledImage, &res.sampled_images},
-        {ResourceClass::Image, &res.separate_images},
-        {ResourceClass::Sampler, &res.separate_samplers},
+        {ResourceClass::UniformBuffer, &res.uniform_buffers},      {ResourceClass::StorageBuffer, &res.storage_buffers},
+        {ResourceClass::PushConstant, &res.push_constant_buffers}, {ResourceClass::CombinedImageSampler, &res.sampled_images},
+        {ResourceClass::SampledImage, &res.separate_images},       {ResourceClass::Sampler, &res.separate_samplers},
         {ResourceClass::StorageImage, &res.storage_images}};
     std::vector<TemplateResource> out;
     for (const auto& [cls, list] : lists)
@@ -88,6 +100,7 @@ std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, 
                                c.get_decoration(r.id, spv::DecorationBinding)};
             if (cls == ResourceClass::PushConstant) {
                 t.name = c.get_name(r.base_type_id);  // its block's name, as for the other blocks
+                pushConstantRange(c, r, t);
                 out.push_back(std::move(t));
                 continue;
             }
@@ -104,7 +117,12 @@ std::vector<TemplateResource> templateResources(const spirv_cross::Compiler& c, 
 
 nlohmann::json describe(const TemplateResource& r) {
     nlohmann::json j = {{"name", r.name}, {"kind", toString(r.cls)}};
-    if (r.cls != ResourceClass::PushConstant) j["vulkan"] = {{"set", r.set}, {"binding", r.binding}};
+    if (r.cls == ResourceClass::PushConstant) {
+        j["offset"] = r.offset;
+        j["size"] = r.size;
+    } else {
+        j["vulkan"] = {{"set", r.set}, {"binding", r.binding}, {"descriptor_type", descriptorType(r.cls)}};
+    }
     return j;
 }
 
@@ -159,11 +177,11 @@ TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan&
     Locate locate = [&b, combined](ResourceKind kind, uint32_t index) -> nlohmann::json {
         if (kind == ResourceKind::Sampler && combined) return {{"combined_into_textures", true}};
         uint32_t binding = kind == ResourceKind::Params ? b.params : kind == ResourceKind::Sampler ? b.sampler : b.firstTexture + index;
-        const char* type = kind == ResourceKind::Params    ? "uniform_buffer"
-                           : kind == ResourceKind::Sampler ? "sampler"
-                           : combined                      ? "combined_image_sampler"
-                                                           : "sampled_image";
-        return {{"set", b.set}, {"binding", binding}, {"descriptor_type", type}};
+        const ResourceClass cls = kind == ResourceKind::Params    ? ResourceClass::UniformBuffer
+                                  : kind == ResourceKind::Sampler ? ResourceClass::Sampler
+                                  : combined                      ? ResourceClass::CombinedImageSampler
+                                                                  : ResourceClass::SampledImage;
+        return {{"set", b.set}, {"binding", binding}, {"descriptor_type", descriptorType(cls)}};
     };
     IoName none = [](uint32_t, bool) { return nlohmann::json(); };
     nlohmann::json placed = nlohmann::json::array();
