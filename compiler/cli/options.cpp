@@ -53,37 +53,31 @@ void applyNames(const std::vector<std::string>& targets, const std::string& glsl
     if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
 }
 
-// One flag per layout field (hexc/layout.h); a flag given overrides the layout file's value.
-struct LayoutFlag {
-    std::string name;
-    const LayoutField* field;
-    std::optional<uint32_t> value = {};
-};
+}  // namespace
 
-std::vector<LayoutFlag> layoutFlags() {
-    std::vector<LayoutFlag> flags;
+void LayoutOptions::add(CLI::App& app) {
+    const char* group = "Resource layout (docs/cli.md; flags override the file)";
+    app.add_option("--layout", file, "where hexc's resources go on each target, as a JSON file")->type_name("FILE.json")->group(group);
     for (const LayoutField& f : layoutFields()) {
         std::string name = std::string("--") + (std::string_view(f.target) == "vulkan" ? "" : std::string(f.target) + "-") + f.key;
         std::replace(name.begin(), name.end(), '_', '-');  // argument_buffers: --msl-argument-buffers
         flags.push_back({name, &f});
     }
-    return flags;
+    for (Flag& f : flags)  // bound once the vector is complete: its elements no longer move
+        app.add_option(f.name, f.value, f.field->help)->type_name("N")->check(CLI::Range(0u, f.field->max).description(""))->group(group);
 }
 
-// The layout file (if any) with the flags over it; false after printing the file's errors.
-bool resolveLayout(const std::filesystem::path& file, const std::vector<LayoutFlag>& flags, ResourceLayout& out) {
+bool LayoutOptions::resolve(ResourceLayout& out) const {
     if (!file.empty()) {
         LayoutParseResult parsed = parseLayoutFile(file);
         std::cerr << formatAll(parsed.diagnostics);
         if (!parsed.layout) return false;
         out = *parsed.layout;
     }
-    for (const LayoutFlag& f : flags)
+    for (const Flag& f : flags)
         if (f.value) f.field->field(out) = *f.value;
     return true;
 }
-
-}  // namespace
 
 std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args) {
     app.footer(kExitCodes);
@@ -145,18 +139,9 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
             ""))
         ->check(CLI::IsMember({"460", "450", "330", "310es", "300es"}));
     app.add_option("--msl-version", msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
-    std::filesystem::path layoutFile;
     bool manifestPaths = false;
-    std::vector<LayoutFlag> flags = layoutFlags();
-    const char* layoutGroup = "Resource layout (docs/cli.md; flags override the file)";
-    app.add_option("--layout", layoutFile, "where hexc's resources go on each target, as a JSON file")
-        ->type_name("FILE.json")
-        ->group(layoutGroup);
-    for (LayoutFlag& f : flags)
-        app.add_option(f.name, f.value, f.field->help)
-            ->type_name("N")
-            ->check(CLI::Range(0u, f.field->max).description(""))
-            ->group(layoutGroup);
+    LayoutOptions layout;
+    layout.add(app);
     app.add_flag("--vertex", a.options.vertex,
                  "also write the pass-through vertex stage <name>.vert.* that feeds the\nfragment shader's inputs");
     app.add_flag("--debug", a.options.debug,
@@ -207,7 +192,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
     if (manifestPaths) a.options.manifestPathsFrom = a.outDir;
     applyNames(targets, glsl, msl, a.options);
-    if (!resolveLayout(layoutFile, flags, a.options.layout)) return kInvalidInput;
+    if (!layout.resolve(a.options.layout)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {
         std::cerr << "hexc: HLSL register space " << space << " needs --hlsl-sm 51 or later (shader model 5.0 has no spaces)\n";
         return kUsage;

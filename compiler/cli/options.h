@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hexc/compiler.h"
+#include "hexc/layout.h"
 
 namespace CLI {
 class App;
@@ -34,6 +35,20 @@ struct Arguments {
 // A command line that parses but does not make sense (render.cpp's checks across options); exit kUsage.
 struct UsageError {
     std::string message;
+};
+
+// --layout FILE and one flag per layout field (hexc/layout.h), for every command that compiles.
+struct LayoutOptions {
+    struct Flag {
+        std::string name;
+        const LayoutField* field;
+        std::optional<uint32_t> value = {};
+    };
+    std::filesystem::path file;
+    std::vector<Flag> flags;
+    void add(CLI::App& app);  // once; the options stay bound to this object
+    // The layout file (if any) with the flags over it; false after printing the file's errors.
+    bool resolve(ResourceLayout& out) const;
 };
 
 // Parses `args` (without the program and command names) with CLI11 into what `app`'s options are bound to.

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -28,7 +29,10 @@ albedo: RGBA as sampled (linear); derivative: (dH/du, dH/dy, 0, 1), y = -v; norm
 encoded n * 0.5 + 0.5; weights: the three hex-tile weights (Listing 7). Triplanar materials are shown on
 the unit sphere, uv being longitude and latitude in radians; their derivative output is the world-space
 surface gradient (x, y, z, 1), and normal is not offered. PFM keeps floats exactly; PNG
-clamps to [0, 1] and stores 8 bits without sRGB encoding.
+clamps to [0, 1] and stores 8 bits. --encoding srgb writes what an engine's sRGB swapchain shows (the sRGB
+transfer function on RGB, alpha linear); the default, linear, writes the values the shader returns.
+A template that declares resources of its own (an engine's per-frame blocks, shadow maps...) is replaced by
+the built-in `lit` for --output shaded, with a note; --template picks another.
 )";
 
 const char* const kPreviewHelp = R"(hexc preview - one labelled picture of a material: plain tiling, both hex blends, hex weights
@@ -36,7 +40,10 @@ const char* const kPreviewHelp = R"(hexc preview - one labelled picture of a mat
 Four columns (plain tiling, hex tiling with the falloff blend, hex tiling with the histogram-preserving blend
 on its colour and scalar slots, the hex-tile weights of the first slot) at two distances: magnified
 (UV 0..0.5) and minified (UV 0..4, several texels per pixel, mip-mapped).
-Each cell is N x N pixels (default 256). Shaded with the material's template.
+Each cell is N x N pixels (default 256). Shaded with the material's template (or --template); one that
+declares resources of its own (an engine's) is replaced by the built-in `lit`, with a note. Written for display:
+sRGB-encoded, as an engine's sRGB swapchain shows the shader's values (--encoding linear: the values).
+A column that cannot apply (no slot can take the histogram blend) says so in its label.
 )";
 
 std::vector<double> numbers(const std::string& text, char sep, size_t count, const std::string& option) {
@@ -114,6 +121,62 @@ void drawLabel(Image& image, int x0, int y0, const std::string& text, int scale)
     }
 }
 
+enum class Encoding { Linear, Srgb };
+
+// The sRGB transfer function (IEC 61966-2-1) on RGB, as an sRGB swapchain encodes what a shader writes; alpha
+// stays linear. Negative values (no colour) become 0.
+void encodeSrgb(Image& image) {
+    for (size_t i = 0; i < image.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const double v = std::max(0.0, double(image.rgba[i]));
+        image.rgba[i] = float(v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
+    }
+}
+
+// What render and preview share beyond the image: the resource layout, a template and the encoding.
+struct ShowOptions {
+    LayoutOptions layout;
+    std::string templateFile, encoding;
+    void add(CLI::App& app, const char* defaultEncoding) {
+        encoding = defaultEncoding;
+        app.add_option("--template", templateFile, "shade with this template instead of the material's (a .glsl file or a built-in name)")
+            ->type_name("TEMPLATE");
+        app.add_option("--encoding", encoding,
+                       std::string("how colour is written: srgb (for display) or linear (default ") + defaultEncoding + ")")
+            ->check(CLI::IsMember({"linear", "srgb"}));
+        layout.add(app);
+    }
+    // The compile options they give; false after printing a layout file's errors.
+    bool resolve(CompileOptions& options) const { return layout.resolve(options.layout); }
+};
+
+// The built-in template a material is shown with when its own declares resources only an engine can fill.
+constexpr const char* kFallbackTemplate = "lit";
+
+// The material as shown with `templateName` (--template) if given, under `options`: a template that declares resources of its own is
+// replaced by the built-in kFallbackTemplate, named in a note. Throws CompileError when it does not compile.
+Material shownMaterial(Material material, const std::string& templateName, const CompileOptions& options) {
+    if (!templateName.empty()) {
+        material.templateName = templateName;
+        material.templateAsWritten.clear();
+    }
+    CompileOptions spirvOnly = options;
+    spirvOnly.targets = {Target::Spirv};
+    CompileResult compiled = compile(material, spirvOnly);
+    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
+    const auto manifest =
+        std::find_if(compiled.files.begin(), compiled.files.end(), [](const OutputFile& f) { return f.name.ends_with(".manifest.json"); });
+    const nlohmann::json own = nlohmann::json::parse(manifest->contents)["targets"]["spirv"].value("template_resources", nlohmann::json());
+    if (own.empty()) return material;
+    std::string names;
+    for (const nlohmann::json& r : own) names += (names.empty() ? "" : ", ") + r["name"].get<std::string>();
+    const std::string shown = material.templateAsWritten.empty() ? material.templateName : material.templateAsWritten;
+    std::cerr << "hexc: note: template `" << shown << "` declares resources of its own (" << names
+              << "): shown with the built-in template `" << kFallbackTemplate << "` (--template picks another)\n";
+    material.templateName = kFallbackTemplate;
+    return material;
+}
+
 }  // namespace
 
 namespace {
@@ -125,6 +188,7 @@ struct RenderArguments {
     vk::ExecutedTarget target = vk::ExecutedTarget::Spirv;
     bool reference = false;
     bool quiet = false;
+    ShowOptions show;
 };
 
 // `hexc render`'s command line; nullopt with `r` filled when it should run, else the exit code.
@@ -148,12 +212,13 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
         ->type_name("NAME");
     app.add_option("--size", size, "image size in pixels (default 512x512)")->type_name("WxH");
     app.add_option("--uv-rect", uvRect, "the UV rectangle the image covers (default 0,0,1,1)")->type_name("U0,V0,U1,V1");
-    app.add_option("--target", target, "the emitted source executed (HLSL and GLSL re-compiled by glslang)")
+    app.add_option("--target,--targets", target, "the emitted source executed (HLSL and GLSL re-compiled by glslang)")
         ->check(CLI::IsMember({"spirv", "hlsl", "glsl"}));
     app.add_flag("--reference", r.reference,
                  "write the fp64 CPU reference instead (no Vulkan needed): what the\n"
                  "GPU image should be, up to texture filtering precision");
     app.add_flag("-q,--quiet", r.quiet, "no progress line on a terminal");
+    r.show.add(app, "linear");
     if (std::optional<int> done = parseWith(app, args)) return done;
     r.output = outputs.at(output);
     r.target = targets.at(target);
@@ -217,53 +282,63 @@ int renderCommand(const std::vector<std::string>& args) {
         if (!material) return int(kInvalidInput);
         Progress progress(2, r.quiet);
         const std::string size = std::to_string(r.view.width) + "x" + std::to_string(r.view.height);
+        CompileOptions options;
+        if (!r.show.resolve(options)) return int(kInvalidInput);
+        Image image;
         if (r.reference) {
             progress.step("computing the fp64 reference, " + size + " pixels");
-            Image image = referenceImage(*material, r);
-            progress.step("writing " + r.out);
-            writeImage(image, r.out);
-            return int(kOk);
+            image = referenceImage(*material, r);
+        } else {
+            if (r.output == vk::RenderOutput::Shaded) *material = shownMaterial(*material, r.show.templateFile, options);
+            auto runner = makeRunner();
+            if (!runner) return int(kNoVulkan);
+            progress.step("rendering " + size + " pixels on " + runner->deviceName());
+            image = vk::render(*runner, *material, r.output, r.slot, r.view, r.target, 0, nullptr, {}, options);
         }
-        auto runner = makeRunner();
-        if (!runner) return int(kNoVulkan);
-        progress.step("rendering " + size + " pixels on " + runner->deviceName());
-        Image image = vk::render(*runner, *material, r.output, r.slot, r.view, r.target);
+        if (r.show.encoding == "srgb") encodeSrgb(image);
         progress.step("writing " + r.out);
         writeImage(image, r.out);
         return int(kOk);
     });
 }
 
-// The material with `blend` on every slot that can take it (hex-tiled colour and scalar slots blending every tap
-// without height blending; the parser's rules).
+// Whether a slot can take a blend other than its own: hex-tiled colour and scalar slots blending every tap without
+// height blending (the parser's rules).
+bool takesBlend(const Slot& s) {
+    return s.hex.enabled && s.kind != SlotKind::Normal && s.hex.taps != 1 && !s.hex.adaptive() && !s.heightBlend;
+}
+
 Material withBlend(Material material, Blend blend) {
     for (Slot& s : material.slots)
-        if (s.hex.enabled && s.kind != SlotKind::Normal && s.hex.taps != 1 && !s.hex.adaptive() && !s.heightBlend) s.hex.blend = blend;
+        if (takesBlend(s)) s.hex.blend = blend;
     return material;
 }
 
-// The preview sheet: plain tiling, both hex blends and the hex weights (columns) at two distances (rows), labelled.
-Image previewSheet(vk::Runner& runner, const Material& material, int cell, Progress& progress) {
+// A cell's label: on one line at scale 2 where it fits the cell, else on two lines at scale 1.
+void labelCell(Image& sheet, int x0, int y0, int cell, const std::string& column, const std::string& row) {
+    std::string line = column + ", " + row;
+    if (stb_easy_font_width(line.data()) * 2 <= cell - 12) return drawLabel(sheet, x0 + 6, y0 + 6, line, 2);
+    drawLabel(sheet, x0 + 6, y0 + 6, column + "\n" + row, 1);
+}
+
+// The preview sheet: plain tiling, both hex blends and the hex weights (columns) at two distances (rows), labelled;
+// each cell rendered under `options`, sRGB-encoded when `srgb`.
+Image previewSheet(vk::Runner& runner, const Material& material, int cell, const CompileOptions& options, bool srgb, Progress& progress) {
     Material plain = material;
     for (Slot& s : plain.slots) s.hex.enabled = false;
     const Material falloff = withBlend(material, Blend::Falloff), histogram = withBlend(material, Blend::Histogram);
+    const bool histogramApplies = std::any_of(material.slots.begin(), material.slots.end(), takesBlend);
     struct Column {
-        const char* label;
+        std::string label;
         const Material* material;
         vk::RenderOutput output;
     };
     const Column columns[] = {{"plain", &plain, vk::RenderOutput::Shaded},
                               {"falloff", &falloff, vk::RenderOutput::Shaded},
-                              {"histogram", &histogram, vk::RenderOutput::Shaded},
+                              {histogramApplies ? "histogram" : "histogram n/a: no slot takes it", &histogram, vk::RenderOutput::Shaded},
                               {"weights", &material, vk::RenderOutput::Weights}};
-    struct Row {
-        const char* label;
-        double extent;
-    };
-    const Row rows[] = {{"uv 0..0.5", 0.5}, {"uv 0..4", 4.0}};
-    // Labels on one line at scale 2 need about 220 px; smaller cells get two lines at scale 1.
-    const int band = 28, scale = cell >= 240 ? 2 : 1;
-    const char* const separator = scale == 2 ? ", " : "\n";
+    const std::pair<const char*, double> rows[] = {{"uv 0..0.5", 0.5}, {"uv 0..4", 4.0}};  // label, UV extent
+    const int band = 28;
     Image sheet;
     sheet.width = 4 * cell;
     sheet.height = 2 * (cell + band);
@@ -271,13 +346,15 @@ Image previewSheet(vk::Runner& runner, const Material& material, int cell, Progr
     for (size_t i = 3; i < sheet.rgba.size(); i += 4) sheet.rgba[i] = 1.0f;
     for (int r = 0; r < 2; ++r) {
         for (int c = 0; c < 4; ++c) {
-            progress.step(std::string("rendering ") + columns[c].label + ", " + rows[r].label);
-            View view{cell, cell, {0, 0, rows[r].extent, rows[r].extent}};
-            Image img = vk::render(runner, *columns[c].material, columns[c].output, "", view);
+            progress.step("rendering " + columns[c].label + ", " + rows[r].first);
+            View view{cell, cell, {0, 0, rows[r].second, rows[r].second}};
+            Image img =
+                vk::render(runner, *columns[c].material, columns[c].output, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, options);
+            if (srgb) encodeSrgb(img);
             int y0 = r * (cell + band) + band;
             for (int y = 0; y < cell; ++y)
                 for (int x = 0; x < cell; ++x) std::copy_n(img.at(x, y), 4, sheet.at(c * cell + x, y0 + y));
-            drawLabel(sheet, c * cell + 6, r * (cell + band) + 6, std::string(columns[c].label) + separator + rows[r].label, scale);
+            labelCell(sheet, c * cell, r * (cell + band), cell, columns[c].label, rows[r].first);
         }
     }
     return sheet;
@@ -288,22 +365,27 @@ int previewCommand(const std::vector<std::string>& args) {
         std::string materialPath, out;
         int cell = 256;
         bool quiet = false;
+        ShowOptions show;
         CLI::App app(kPreviewHelp, "hexc preview");
         app.add_option("material", materialPath, "the material file")->type_name("MATERIAL.json");
         app.add_option("-o,--out", out, "the PNG to write")->type_name("PREVIEW.png");
         app.add_option("--cell", cell, "each cell's size in pixels (default 256)")->check(CLI::Range(32, 2048))->type_name("N");
         app.add_flag("-q,--quiet", quiet, "no progress line on a terminal");
+        show.add(app, "srgb");
         if (std::optional<int> done = parseWith(app, args)) return *done;
         if (materialPath.empty()) throw UsageError{"no material given (see hexc preview --help)"};
         if (out.empty()) throw UsageError{"no output image given: use -o PREVIEW.png"};
         if (!isImageExtension(out)) throw UsageError{"-o " + out + ": hexc preview writes .png or .pfm"};
         auto material = loadMaterial(materialPath);
         if (!material) return int(kInvalidInput);
+        CompileOptions options;
+        if (!show.resolve(options)) return int(kInvalidInput);
+        const Material shown = shownMaterial(*material, show.templateFile, options);
         auto runner = makeRunner();
         if (!runner) return int(kNoVulkan);
 
         Progress progress(9, quiet);
-        Image sheet = previewSheet(*runner, *material, cell, progress);
+        Image sheet = previewSheet(*runner, shown, cell, options, show.encoding == "srgb", progress);
         progress.step("writing " + out);
         writeImage(sheet, out);
         return int(kOk);
