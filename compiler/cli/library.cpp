@@ -30,7 +30,7 @@ int libraryCommand(const std::vector<std::string>& args) {
     CLI::App app{kLibraryHelp, "hexc library"};
     std::vector<std::string> targets;
     std::filesystem::path outDir;
-    app.add_option("-t,--target", targets, "hlsl, glsl, msl (or metal), spirv-asm; repeatable or comma-separated")
+    app.add_option("-t,--target,--targets", targets, "hlsl, glsl, msl (or metal), spirv-asm; repeatable or comma-separated")
         ->required()
         ->delimiter(',')
         ->check(CLI::IsMember({"hlsl", "glsl", "msl", "metal", "spirv-asm"}));

@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include "hexc/cache.h"
+#include "hexc/suggest.h"
 
 #include <CLI/CLI.hpp>
 
@@ -40,7 +41,7 @@ const char* const kExitCodes = R"(Exit codes:
   3  an output could not be written
   4  render, preview: no Vulkan device, or the device failed)";
 
-// Fills the compile options from the checked names of --targets, --glsl-version and --msl-version.
+// Fills the compile options from the checked names of --target, --glsl-version and --msl-version.
 void applyNames(const std::vector<std::string>& targets, const std::string& glsl, const std::string& msl, CompileOptions& o) {
     static const std::map<std::string, Target> names = {
         {"spirv", Target::Spirv}, {"hlsl", Target::Hlsl}, {"glsl", Target::Glsl}, {"msl", Target::Msl}};
@@ -51,6 +52,20 @@ void applyNames(const std::vector<std::string>& targets, const std::string& glsl
         o.glslVersion = uint32_t(std::stoi(glsl));
     }
     if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
+}
+
+// "; did you mean `--vertex`?" for the first unexpected argument that looks like a misspelt option, else "".
+std::string suggestOption(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::Option* o : app.get_options()) {
+        for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+        for (const std::string& n : o->get_snames()) names.push_back("-" + n);
+    }
+    for (const std::string& arg : app.remaining()) {
+        if (!arg.starts_with("--")) continue;
+        if (auto best = closestMatch(arg.substr(0, arg.find('=')), names)) return "; did you mean `" + *best + "`?";
+    }
+    return "";
 }
 
 }  // namespace
@@ -91,6 +106,9 @@ std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args
     } catch (const CLI::Success&) {
         std::cout << app.help();
         return kOk;
+    } catch (const CLI::ExtrasError& e) {
+        std::cerr << "hexc: " << e.what() << suggestOption(app) << " (see " << app.get_name() << " --help)\n";
+        return kUsage;
     } catch (const CLI::ParseError& e) {
         std::cerr << "hexc: " << e.what() << " (see " << app.get_name() << " --help)\n";
         return kUsage;
@@ -105,7 +123,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     // Required by hand below, after CLI11 has reported unknown options (it checks requirements first).
     app.add_option("materials", materials, "material or scene files")->type_name("FILE.json");
     app.add_option("-o,--out", a.outDir, "output folder (created if missing)")->type_name("DIR");
-    app.add_option("--targets", targets, "subset of spirv,hlsl,glsl,msl (metal: msl; default: all four)")
+    app.add_option("--target,--targets", targets, "spirv, hlsl, glsl, msl (or metal); repeatable or comma-separated\n(default: all four)")
         ->delimiter(',')
         ->allow_extra_args(false)
         ->transform(CLI::Transformer(std::map<std::string, std::string>{{"metal", "msl"}}).description(""))

@@ -1,12 +1,3 @@
 #pragma once
-#include <optional>
-#include <string>
-#include <vector>
-
-namespace hexc {
-
-// The candidate closest to `word` by edit distance, if close enough to be a plausible typo
-// (at most a third of the word's length, and at least 1, edits).
-std::optional<std::string> closestMatch(const std::string& word, const std::vector<std::string>& candidates);
-
-}  // namespace hexc
+// closestMatch is public (the command line suggests option names with it too).
+#include "hexc/suggest.h"

@@ -1,0 +1,44 @@
+// The command line as a user types it: one spelling of the target option everywhere, suggestions for mistyped
+// options.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "support.h"
+
+namespace hexc {
+namespace {
+
+using hexc::test::runHexc;
+
+// --target and --targets are one option in compile mode, as in render and library.
+TEST(CommandLine, TargetAndTargetsAreOneOption) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_target_spelling";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(runHexc("materials/rock.json -q --no-cache --target hlsl -o " + (dir / "a").string(), &err), 0) << err;
+    ASSERT_EQ(runHexc("materials/rock.json -q --no-cache --targets hlsl,msl -o " + (dir / "b").string(), &err), 0) << err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "a" / "rock.frag.hlsl"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "a" / "rock.frag.spv"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "b" / "rock.frag.metal"));
+    EXPECT_EQ(runHexc("library --targets glsl -o " + (dir / "lib").string(), &err), 0) << err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "lib" / "hexc_hextiling.glsl"));
+}
+
+// An unknown option names the closest known one of the same command; a word far from all of them gets no guess.
+TEST(CommandLine, UnknownOptionsGetADidYouMean) {
+    std::string err;
+    EXPECT_EQ(runHexc("materials/rock.json -o /tmp/hexc_never --vertx", &err), 2);
+    EXPECT_EQ(err, "hexc: The following argument was not expected: --vertx; did you mean `--vertex`? (see hexc --help)\n");
+    EXPECT_EQ(runHexc("render materials/rock.json -o /tmp/x.png --uv-rec=0,0,1,1", &err), 2);
+    EXPECT_EQ(err, "hexc: The following argument was not expected: --uv-rec=0,0,1,1; did you mean `--uv-rect`? (see hexc render --help)\n");
+    EXPECT_EQ(runHexc("preview materials/rock.json -o /tmp/x.png --encodng srgb", &err), 2);
+    EXPECT_EQ(err,
+              "hexc: The following arguments were not expected: srgb --encodng; did you mean `--encoding`? (see hexc preview --help)\n");
+    EXPECT_EQ(runHexc("materials/rock.json -o /tmp/hexc_never --frobnicate", &err), 2);
+    EXPECT_EQ(err, "hexc: The following argument was not expected: --frobnicate (see hexc --help)\n");
+    EXPECT_FALSE(std::filesystem::exists("/tmp/hexc_never"));
+}
+
+}  // namespace
+}  // namespace hexc
