@@ -203,6 +203,14 @@ TEST(TextureFormats, AColourSpaceThatDisagreesWithTheFormatWarns) {
     EXPECT_EQ(diagnose(unorm, "color", "linear"), "");
     EXPECT_EQ(diagnose(srgb, "color", ""), "");
     EXPECT_NE(diagnose(srgb, "scalar", "").find("warning[HX123]"), std::string::npos);
+    // A legacy DDS (no DX10 header) has no sRGB flag: an 8-bit texture may be either, so neither colour space warns;
+    // a DX10 header says, and is held to it.
+    const fs::path legacy = dds("legacy.dds", 0, 4, 4, texels(4, 4)), dx10 = dds("dx10.dds", 28, 4, 4, texels(4, 4));
+    EXPECT_EQ(diagnose(legacy, "color", ""), "");
+    EXPECT_EQ(diagnose(legacy, "color", "linear"), "");
+    EXPECT_EQ(diagnose(dx10, "color", ""),
+              "materials/t.json:1:67: warning[HX123]: /slots/0/texture: " + dx10.string() +
+                  " is DDS R8G8B8A8, but the slot's colorspace is \"srgb\"; its format stores linear values\n");
 }
 
 // Each container compiles from the command line; the decodable ones render (the fp64 reference needs no GPU).

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 namespace hexc::containers {
@@ -101,6 +102,9 @@ const Format* find(const Format (&table)[N], uint32_t code) {
 struct Header {
     int width = 0, height = 0, mips = 1;
     const Format* format = nullptr;
+    // Whether the format says sRGB or not: a legacy DDS (no DX10 header) has no sRGB flag, so its 8-bit and block
+    // formats may hold either (engines decide by the slot); only its float formats are known to be linear.
+    bool colorSpaceStated = true;
     uint64_t dataOffset = 0;  // of level 0
     std::string problem;      // why the file cannot be used, when it cannot
 };
@@ -170,6 +174,7 @@ Header ddsHeader(const std::vector<unsigned char>& b) {
             h.problem = "a DDS array, cube or 3D texture is not a 2D texture";
     } else {
         h.format = ddsLegacyFormat(b, &h.problem);
+        h.colorSpaceStated = h.format && std::string_view(h.format->name).ends_with("float");
     }
     return h;
 }
@@ -265,7 +270,8 @@ std::optional<TextureInfo> info(Kind kind, const std::filesystem::path& file, st
     }
     const std::string names = h.format->channels;
     const char* container = kind == Kind::Ktx2 ? "KTX2 " : "DDS ";
-    return TextureInfo{h.width, h.height, int(names.size()), names, h.mips, h.format->srgb, container + std::string(h.format->name)};
+    const std::optional<bool> srgb = h.colorSpaceStated ? std::optional<bool>(h.format->srgb) : std::nullopt;
+    return TextureInfo{h.width, h.height, int(names.size()), names, h.mips, srgb, container + std::string(h.format->name)};
 }
 
 Texture load(Kind kind, const std::filesystem::path& file, bool srgb) {
