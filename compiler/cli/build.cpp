@@ -55,7 +55,7 @@ std::string whyNotInScene(const std::string& variant, const std::vector<SceneSum
 
 // Errors always; warnings unless --no-warnings, and a slot a scene pass leaves out on purpose only with -v.
 bool printDiagnostics(const Diagnostics& diags, const Arguments& a, bool passReadsFewer = false) {
-    for (const Diagnostic& d : diags) {
+    for (const Diagnostic& d : byPosition(diags)) {
         const bool expected = passReadsFewer && d.code == Code::SlotNotRead && !a.verbose;
         if (d.severity == Diagnostic::Severity::Error || (a.warnings && !expected)) std::cerr << d.format() << "\n";
     }

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace hexc::cli {
 namespace {
@@ -92,6 +93,15 @@ bool LayoutOptions::resolve(ResourceLayout& out) const {
     for (const Flag& f : flags)
         if (f.value) f.field->field(out) = *f.value;
     return true;
+}
+
+Diagnostics byPosition(Diagnostics diags) {
+    std::map<std::string, size_t> files;
+    for (const Diagnostic& d : diags) files.emplace(d.loc.file, files.size());
+    std::stable_sort(diags.begin(), diags.end(), [&files](const Diagnostic& a, const Diagnostic& b) {
+        return std::tuple(files.at(a.loc.file), a.loc.line, a.loc.col) < std::tuple(files.at(b.loc.file), b.loc.line, b.loc.col);
+    });
+    return diags;
 }
 
 std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args) {

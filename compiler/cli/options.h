@@ -51,6 +51,9 @@ struct LayoutOptions {
     bool resolve(ResourceLayout& out) const;
 };
 
+// `diags` as a run prints them: each file's together, in the order files first appear, by line and column.
+Diagnostics byPosition(Diagnostics diags);
+
 // Parses `args` (without the program and command names) with CLI11 into what `app`'s options are bound to.
 // Returns the exit code when the command is done: kOk after printing --help or --version, kUsage after printing
 // "hexc: <what is wrong>"; nullopt when the command should run.

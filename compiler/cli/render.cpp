@@ -65,7 +65,7 @@ std::vector<double> numbers(const std::string& text, char sep, size_t count, con
 // Parses the material, reporting diagnostics; nullopt on error.
 std::optional<Material> loadMaterial(const std::string& path) {
     ParseResult r = parseMaterialFile(path);
-    for (const Diagnostic& d : r.diagnostics) std::cerr << d.format() << "\n";
+    std::cerr << formatAll(byPosition(r.diagnostics));
     return r.material;
 }
 
@@ -85,7 +85,7 @@ int guarded(Body body) {
         std::cerr << "hexc: " << e.message << "\n";
         return kUsage;
     } catch (const CompileError& e) {
-        std::cerr << formatAll(e.diagnostics);
+        std::cerr << formatAll(byPosition(e.diagnostics));
         return kInvalidInput;
     } catch (const std::invalid_argument& e) {
         std::cerr << "hexc: " << e.what() << "\n";
@@ -121,8 +121,6 @@ void drawLabel(Image& image, int x0, int y0, const std::string& text, int scale)
     }
 }
 
-enum class Encoding { Linear, Srgb };
-
 // The sRGB transfer function (IEC 61966-2-1) on RGB, as an sRGB swapchain encodes what a shader writes; alpha
 // stays linear. Negative values (no colour) become 0.
 void encodeSrgb(Image& image) {
@@ -153,8 +151,9 @@ struct ShowOptions {
 // The built-in template a material is shown with when its own declares resources only an engine can fill.
 constexpr const char* kFallbackTemplate = "lit";
 
-// The material as shown with `templateName` (--template) if given, under `options`: a template that declares resources of its own is
-// replaced by the built-in kFallbackTemplate, named in a note. Throws CompileError when it does not compile.
+// The material as shown with `templateName` (--template) if given, under `options`: a template that declares
+// resources of its own is replaced by the built-in kFallbackTemplate, named in a note. Throws CompileError when it
+// does not compile.
 Material shownMaterial(Material material, const std::string& templateName, const CompileOptions& options) {
     if (!templateName.empty()) {
         material.templateName = templateName;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "support.h"
 
@@ -38,6 +39,21 @@ TEST(CommandLine, UnknownOptionsGetADidYouMean) {
     EXPECT_EQ(runHexc("materials/rock.json -o /tmp/hexc_never --frobnicate", &err), 2);
     EXPECT_EQ(err, "hexc: The following argument was not expected: --frobnicate (see hexc --help)\n");
     EXPECT_FALSE(std::filesystem::exists("/tmp/hexc_never"));
+}
+
+// A run's diagnostics come sorted by position in their file, whatever order the checks found them in (the parser
+// reports unknown keys in key order: `zeta` before... `alpha`).
+TEST(CommandLine, DiagnosticsAreSortedByPosition) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_sorted";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "m.json") << "{\"name\": \"m\", \"zeta\": 1,\n \"slots\": [],\n \"alpha\": 2}\n";
+    std::string err;
+    EXPECT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / "out").string(), &err), 1);
+    const std::string file = (dir / "m.json").string();
+    const size_t zeta = err.find(file + ":1:15: error[HX103]: /zeta"), alpha = err.find(file + ":3:2: error[HX103]: /alpha");
+    ASSERT_NE(zeta, std::string::npos) << err;
+    ASSERT_NE(alpha, std::string::npos) << err;
+    EXPECT_LT(zeta, alpha) << err;
 }
 
 }  // namespace

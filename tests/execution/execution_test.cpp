@@ -1342,7 +1342,7 @@ TEST(RenderCommand, Errors) {
     EXPECT_EQ(runHexc("render materials/rock_triplanar.json --output normal -o /tmp/x.png", &err), 1);
     EXPECT_EQ(err, "hexc: slot `normal` is triplanar: it returns a world-space surface gradient; use the derivative output\n");
     // A template with resources of its own cannot be drawn without them (it crashed lavapipe): shaded with the
-    // built-in lit, named in a note (tests/preview_test.cpp); its slots as they are.
+    // built-in lit, named in a note (tests/cli/preview_test.cpp); its slots as they are.
     EXPECT_EQ(runHexc("render materials/engine_rock.json --size 16x16 -o /tmp/x.png", &err), 0);
     EXPECT_NE(err.find("declares resources of its own (Frame, Object, Push, shadowMap"), std::string::npos) << err;
     EXPECT_EQ(runHexc("render materials/engine_rock.json --output albedo --size 16x16 -o /tmp/x.png", &err), 0) << err;
