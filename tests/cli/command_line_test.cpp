@@ -56,5 +56,27 @@ TEST(CommandLine, DiagnosticsAreSortedByPosition) {
     EXPECT_LT(zeta, alpha) << err;
 }
 
+// A template that calls `hexc_rougness` reads no slot `roughness`: the warning that the slot is left out points at
+// the call and suggests the slot's function, beside glslang's error for the undefined function.
+TEST(CommandLine, ATemplateTypoNamesTheSlotItMeant) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_template_typo";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "t.glsl") << "#version 450\n#include <hexc>\nlayout(location = 0) in vec2 v_uv;\n"
+                                     "layout(location = 0) out vec4 o_color;\n"
+                                     "void main() { o_color = hexc_albedo(v_uv) * hexc_rougness(v_uv); }\n";
+    std::ofstream(dir / "m.json") << R"({"name": "m", "template": "t.glsl", "slots": [
+        {"name": "albedo", "kind": "color", "texture": ")"
+                                  << std::filesystem::absolute("materials/textures/rock_albedo.png").string() << R"("},
+        {"name": "roughness", "kind": "scalar", "texture": ")"
+                                  << std::filesystem::absolute("materials/textures/rock_roughness.png").string() << R"("}]})";
+    std::string err;
+    EXPECT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / "out").string(), &err), 1);
+    const std::string templ = (dir / "t.glsl").string();
+    EXPECT_NE(err.find(templ + ":5:45: warning[HX204]: slot `roughness` is not read by template " + templ +
+                       "; it is left out; the template calls `hexc_rougness`, which no slot defines (did you mean `hexc_roughness`?)\n"),
+              std::string::npos)
+        << err;
+}
+
 }  // namespace
 }  // namespace hexc

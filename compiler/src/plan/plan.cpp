@@ -1,8 +1,11 @@
 #include "plan/plan.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "hexc/files.h"
+#include "hexc/suggest.h"
 #include "common/templates.h"
 #include "common/text.h"
 #include "plan/macros.h"
@@ -127,6 +130,28 @@ LatticePlan planLattice(const HexTiling& h, bool all) {
     return l;
 }
 
+// A slot the template does not read, as a warning; where the template calls a `hexc_<name>` no slot has and the
+// unread slot's is the closest, at that call, with "did you mean" (a typo in the template, not an unused slot).
+Diagnostic slotNotRead(const Material& material, const Slot& slot, const ShaderPlan& plan) {
+    const std::string message = "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out";
+    const std::string& text = plan.templateSource;
+    std::vector<std::string> names;
+    for (const Slot& s : material.slots) names.push_back("hexc_" + s.name);
+    for (size_t at = text.find("hexc_"); at != std::string::npos; at = text.find("hexc_", at + 1)) {
+        if (at > 0 && (std::isalnum(static_cast<unsigned char>(text[at - 1])) || text[at - 1] == '_')) continue;
+        size_t end = at + 5;
+        while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) ++end;
+        const std::string called = text.substr(at, end - at);
+        if (std::find(names.begin(), names.end(), called) != names.end() || closestMatch(called, names) != "hexc_" + slot.name) continue;
+        const size_t lineStart = text.rfind('\n', at) == std::string::npos ? 0 : text.rfind('\n', at) + 1;
+        const int line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
+        return Diagnostic::make(Code::SlotNotRead, {plan.templateName, line, int(at - lineStart) + 1}, "",
+                                message + "; the template calls `" + called + "`, which no slot defines",
+                                "did you mean `hexc_" + slot.name + "`?");
+    }
+    return Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "", message);
+}
+
 // plan.slots and plan.lattices; a slot joins the first lattice computed from the same settings when sharing.
 void planSlots(const Material& material, const CompileOptions& options, ShaderPlan& plan) {
     SlotUse use = slotUse(material, plan.templateSource);
@@ -135,9 +160,7 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
         if (!use.needed[i]) {
-            plan.diagnostics.push_back(
-                Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "",
-                                 "slot `" + slot.name + "` is not read by template " + plan.templateName + "; it is left out"));
+            plan.diagnostics.push_back(slotNotRead(material, slot, plan));
             continue;
         }
         SlotPlan sp;
