@@ -353,8 +353,8 @@ struct HexcBlend {
     float exponent;              // gamma of Eq. 1
     bool metric;                 // literal: the falloff metric is computed
     bool gain;                   // literal: the gain is applied
-    int exponentInt;             // literal: > 0, gamma is this whole number
-    int gainInt;                 // literal: > 0, the gain's k is this whole number
+    int exponentInt;             // literal: > 0, gamma is this whole number (multiplied out); 0: a pow per pixel
+    int gainInt;                 // literal: > 0, the gain's k is this whole number; 0 with gain: a log and a pow
     int taps;                    // literal: 3, or 2 for the checker mask (no third fetch)
     bool sharedLod;              // literal: lod "shared", every fetch at the slot's level of detail (hexcTileLods)
     bool adaptive;               // literal: "taps": "adaptive", fetch a tap only when it can matter (hexcAdaptiveTaps)

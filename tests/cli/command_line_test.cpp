@@ -78,5 +78,27 @@ TEST(CommandLine, ATemplateTypoNamesTheSlotItMeant) {
         << err;
 }
 
+// The library for hand-written shaders carries its settings' documentation on every text target: each struct's
+// comment, and each field's default (the neutral constructor's value) and meaning, which says when a pow is left in.
+TEST(CommandLine, TheLibraryDocumentsItsSettings) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_library_docs";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(runHexc("library --target hlsl,glsl,msl -o " + dir.string(), &err), 0) << err;
+    for (const char* name : {"hexc_hextiling.hlsl", "hexc_hextiling.glsl", "hexc_hextiling.metal"}) {
+        std::ifstream in(dir / name);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_NE(
+            text.find("    int exponentInt;  // = 0; literal: > 0, gamma is this whole number (multiplied out); 0: a pow per pixel\n"),
+            std::string::npos)
+            << name;
+        EXPECT_NE(
+            text.find("// How a slot weighs its tiles' samples, filled by each generated slot function from hexcBlend() (the neutral\n"),
+            std::string::npos)
+            << name;
+        EXPECT_NE(text.find("  // = 0.5; r of Eq. 5 / Listing 8\n"), std::string::npos) << name;  // falloff
+    }
+}
+
 }  // namespace
 }  // namespace hexc
