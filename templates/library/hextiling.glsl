@@ -24,6 +24,7 @@ struct HexcTap {
 struct HexcTiles {
     vec3 w;                      // barycentric weights of the three hex tiles, sum 1
     bool scaled;                 // literal: false when every invScale is 1 (no per-tile transforms)
+    vec2 dx, dy;                 // the st gradients, before any tile's transform
     ivec2 id[3];                 // integer lattice ids of the three tile centres
     HexcTap tap[3];
     ivec3 channel;               // the weights output's channel of each tile (Listing 7 for the hex mask)
@@ -119,10 +120,11 @@ struct HexcLattice {
     ivec2 offsetSteps;           // literal
     int maskScale;               // literal: checker and noise masks, cells per unit of st
     bool triple;                 // literal: the noise mask draws three noises
+    float aspect;                // literal: the texture's width / height; tiles turn in st with u scaled by it (not in paper mode)
 };
 
 HexcLattice hexcLattice() {
-    return HexcLattice(0.0, false, false, vec2(-180.0, 180.0), 0, vec2(1.0), 1.0, ivec2(0), 1, false);
+    return HexcLattice(0.0, false, false, vec2(-180.0, 180.0), 0, vec2(1.0), 1.0, ivec2(0), 1, false, 1.0);
 }
 
 // Listings 3-4, shared part, `paper` mode: tile `id`'s tap at st_i = (st - c_i) R_i + c_i + hash(v_i), gradients
@@ -141,6 +143,8 @@ HexcTap hexcPaperTap(ivec2 id, vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
 // Derivatives of the continuous st are taken once, before the lattice.
 HexcTiles hexcTilesPaper(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
     t.scaled = false;
     hexcTriangleGrid(st, t.w, t.id);
     t.channel = hexcHexChannels(t.id[0], t.id[2]);
@@ -158,8 +162,10 @@ HexcTiles hexcTilesPaper(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
 //    [0, 28) x [0, 1) by exact subtractions before any product, and the ids come back as exact integers.
 // 2. Offset and rotation come from pcg3d (Jarzynski and Olano 2020) of the integer tile id: 32-bit
 //    integer arithmetic, the same bits everywhere, where the paper's fract(sin(x) * 43758.5453) is not.
-// 3. The sample point is taken relative to the tile centre, st_i = (st - c_i) R_i + offset_i, so the
-//    texture coordinate stays below 2 in magnitude whatever st is.
+// 3. The tile centre is added back modulo the texture's period, from integer remainders:
+//    st_i = (st - c_i) R_i / s_i + (c_i mod 1) + offset_i, so the texture coordinate stays below 3 in magnitude
+//    whatever st is, and offset 0 without rotation reads the plain texture. (R_i turns texel-isotropic space,
+//    hexcToTile.)
 const float hexcStableScale = 97.0 / 28.0;
 
 uvec3 hexcPcg3d(uvec3 v) {
@@ -197,19 +203,32 @@ vec2 hexcStableCentre(ivec2 local) {
     return vec2((float(local.x) + 0.5 * float(local.y)) / hexcStableScale, 0.25 * float(local.y));
 }
 
-// A vector into the tile's frame: rotated with it, then scaled (the code of each only when its literal is set).
+// The same centre modulo the texture's period 1, which the tile's sample point adds back: c.x = (28 l.x + 14 l.y) / 97
+// and c.y = l.y / 4, so their fractions are integer remainders, exact (l.x >= -2 and l.y >= 0: the numerator plus
+// 2 * 97 is positive). The global centre differs by the whole st units (28 kx, ky) of the reduction and of the cell.
+vec2 hexcStableCentreInPeriod(ivec2 local) {
+    return vec2(float((28 * local.x + 14 * local.y + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
+}
+
+// A vector into the tile's frame: rotated with it in texel-isotropic space (u scaled by the aspect before and back
+// after), then scaled; the code of each only when its literal is set (an aspect of 1 is a constant comparison).
 vec2 hexcToTile(vec2 v, HexcTap p, HexcLattice l) {
-    v = l.rotate ? hexcRotateToTile(v, p.rot) : v;
+    if (l.rotate) {
+        bool square = l.aspect == 1.0;
+        v = hexcRotateToTile(square ? v : vec2(v.x * l.aspect, v.y), p.rot);
+        v = square ? v : vec2(v.x / l.aspect, v.y);
+    }
     return l.transform ? v * p.invScale : v;
 }
 
-// Places tile `id`: its transform from the hash of `id`, the sample point from `d` (st relative to the point the
-// tile rotates and scales about) and the gradients, rotated and scaled with the tile.
-HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
+// Places tile `id`: its transform from the hash of `id`, the sample point from `d` (st relative to the point c the
+// tile rotates and scales about) and the gradients, rotated and scaled with the tile; `c` (modulo the texture's
+// period) is added back, so that offset 0 without rotation or scale reads the texture where st does.
+HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTap p;
     vec2 offset;
     hexcStableTile(id, l, offset, p.rot, p.invScale);
-    p.st = hexcToTile(d, p, l) + offset;
+    p.st = hexcToTile(d, p, l) + c + offset;
     p.dx = hexcToTile(dSTdx, p, l);
     p.dy = hexcToTile(dSTdy, p, l);
     return p;
@@ -219,7 +238,7 @@ HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
 // hashed, so they may wrap), and its tap.
 HexcTap hexcStableTap(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out ivec2 id) {
     id = ivec2(uvec2(local) + shift);
-    return hexcPlaceTile(id, r - hexcStableCentre(local), dSTdx, dSTdy, l);
+    return hexcPlaceTile(id, r - hexcStableCentre(local), hexcStableCentreInPeriod(local), dSTdx, dSTdy, l);
 }
 
 // st = (28, 1) * cell + st_local: `cell` is a split-coordinates origin (0 otherwise), whose lattice shift is
@@ -227,6 +246,8 @@ HexcTap hexcStableTap(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, 
 // each frame (docs/precision.md) and the mesh supplies a small st relative to it, whose gradients are precise.
 HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l) {
     HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
     t.scaled = l.transform;
     // st = (28 kx + r.x, ky + r.y); each subtraction is exact (Sterbenz) and r is small, while 28 kx is exact:
     // 7 kx < 2^24, so |st.x| < 2^26.
@@ -251,6 +272,8 @@ float hexcTaper(vec2 f) {
 
 HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l) {
     HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
     t.scaled = l.transform;
     int scale = l.maskScale;
     vec2 k = floor(st);
@@ -267,8 +290,9 @@ HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLatt
     t.id[2] = t.id[1];
     t.channel = ivec3(0, 1, 1);
     float s = 1.0 / float(scale);
-    t.tap[0] = hexcPlaceTile(t.id[0], (fa - 0.5) * s, dSTdx, dSTdy, l);
-    t.tap[1] = hexcPlaceTile(t.id[1], (fb - 0.5) * s, dSTdx, dSTdy, l);
+    // The cells' centres in the unit of st holding it: (a + 1/2) / scale and b / scale.
+    t.tap[0] = hexcPlaceTile(t.id[0], (fa - 0.5) * s, (a + 0.5) * s, dSTdx, dSTdy, l);
+    t.tap[1] = hexcPlaceTile(t.id[1], (fb - 0.5) * s, b * s, dSTdx, dSTdy, l);
     t.tap[2] = t.tap[1];
     return t;
 }
@@ -286,6 +310,8 @@ float hexcValueNoise(uvec2 c, vec2 f, uint salt) {
 // origin, weighed by three bands of one value noise or by three noises (`triple`).
 HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
     t.scaled = l.transform;
     int scale = l.maskScale;
     vec2 k = floor(st);
@@ -302,9 +328,9 @@ HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     }
     t.id = ivec2[3](ivec2(0, 0), ivec2(1, 0), ivec2(2, 0));
     t.channel = ivec3(0, 1, 2);
-    t.tap[0] = hexcPlaceTile(t.id[0], st, dSTdx, dSTdy, l);
-    t.tap[1] = hexcPlaceTile(t.id[1], st, dSTdx, dSTdy, l);
-    t.tap[2] = hexcPlaceTile(t.id[2], st, dSTdx, dSTdy, l);
+    t.tap[0] = hexcPlaceTile(t.id[0], st, vec2(0.0), dSTdx, dSTdy, l);
+    t.tap[1] = hexcPlaceTile(t.id[1], st, vec2(0.0), dSTdx, dSTdy, l);
+    t.tap[2] = hexcPlaceTile(t.id[2], st, vec2(0.0), dSTdx, dSTdy, l);
     return t;
 }
 
@@ -446,17 +472,16 @@ vec3 hexcHeightBlend(vec3 W, vec3 h, float width) {
     return Wh / (Wh.x + Wh.y + Wh.z);
 }
 
-// lod "shared" (docs/material-format.md#lod): the three tiles' levels of detail on `tex`, computed once. Rotation keeps
-// st lengths, so one length serves every tile: the sampler's rho = max(|dx|, |dy|) in texels, with st lengths
-// scaled by sqrt(width * height), which is exact on square textures and within half of log2(width / height) of
-// the sampler's level on others whatever the rotation; a tile's own texture scale shifts its level by log2 of it.
+// lod "shared" (docs/material-format.md#lod): the three tiles' levels of detail on `tex`, computed once: the sampler's
+// rho = max(|dx|, |dy|) of the unrotated gradients in texels. A tile turns the texels (hexcToTile), which keeps their
+// lengths, so that is each tile's own level (the paper's mode, turning st, is off by up to log2 of the
+// aspect); a tile's own texture scale shifts its level by log2 of it.
 vec3 hexcTileLods(texture2D tex, sampler samp, HexcTiles t, bool sharedLod) {
     if (!sharedLod) return vec3(0.0);
     vec2 size = vec2(textureSize(sampler2D(tex, samp), 0));
-    HexcTap p = t.tap[0];
-    float lod = 0.5 * log2(max(max(dot(p.dx, p.dx), dot(p.dy, p.dy)) * size.x * size.y, 1e-30));
-    vec3 invScale = vec3(p.invScale, t.tap[1].invScale, t.tap[2].invScale);
-    return t.scaled ? lod + log2(invScale / p.invScale) : vec3(lod);
+    vec2 ex = t.dx * size, ey = t.dy * size;
+    float lod = 0.5 * log2(max(max(dot(ex, ex), dot(ey, ey)), 1e-30));
+    return t.scaled ? lod + log2(vec3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale)) : vec3(lod);
 }
 
 // One tap's fetch: with its own gradients (the sampler picks the level, and filters anisotropically when the

@@ -1191,19 +1191,20 @@ TEST(Properties, RampNormalMapRotatesWithEachTile) {
 // rotation, and the two conventions must give one image. Derivatives are (dH/du, dH/dy) with y up the texture
 // (y = -v), the convention of a green-up map and of the tangent frame the templates use.
 namespace analytic {
-constexpr int kSize = 256;
 const double kTwoPi = 2 * 3.14159265358979323846;
 double h(double s, double t) { return (0.6 * std::sin(kTwoPi * s) * std::cos(kTwoPi * t) + 0.3 * std::sin(kTwoPi * (s + 2 * t))) / kTwoPi; }
 double hs(double s, double t) { return 0.6 * std::cos(kTwoPi * s) * std::cos(kTwoPi * t) + 0.3 * std::cos(kTwoPi * (s + 2 * t)); }
 double ht(double s, double t) { return -0.6 * std::sin(kTwoPi * s) * std::sin(kTwoPi * t) + 0.6 * std::cos(kTwoPi * (s + 2 * t)); }
 
-// texel(s, t) at each texel centre (row 0 at t = 0, the top), written as a float texture.
-std::filesystem::path write(const char* name, const std::function<std::array<float, 4>(double, double)>& texel) {
+// texel(s, t) at each texel centre (row 0 at t = 0, the top), written as a width x height float texture.
+std::filesystem::path write(const std::string& name, int width, int height,
+                            const std::function<std::array<float, 4>(double, double)>& texel) {
     Image image;
-    image.width = image.height = kSize;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            auto v = texel((x + 0.5) / kSize, (y + 0.5) / kSize);
+    image.width = width;
+    image.height = height;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            auto v = texel((x + 0.5) / width, (y + 0.5) / height);
             image.rgba.insert(image.rgba.end(), v.begin(), v.end());
         }
     std::filesystem::path file = std::filesystem::temp_directory_path() / name;
@@ -1211,12 +1212,16 @@ std::filesystem::path write(const char* name, const std::function<std::array<flo
     return file;
 }
 
-// A normal map of h whose green axis points up the texture (greenUp) or down it, encoded n * 0.5 + 0.5 with
-// n = (-dh/dx, -dh/dy, 1) / 2 (Listing 9 divides by z, so n need not be unit length).
-std::filesystem::path normalMap(bool greenUp) {
-    return write(greenUp ? "hexc_analytic_green_up.pfm" : "hexc_analytic_green_down.pfm", [&](double s, double t) {
+// A width x height normal map of h whose green axis points up the texture (greenUp) or down it, encoded n * 0.5 + 0.5
+// with n = (-dh/dx, -dh/dy, 1) / 2 (Listing 9 divides by z, so n need not be unit length). Its slopes are per unit of
+// texel-isotropic space, x = s * width / height and y = t, as a baker writes them with square texels.
+std::filesystem::path normalMap(bool greenUp, int width, int height) {
+    const std::string name =
+        std::string(greenUp ? "hexc_analytic_green_up_" : "hexc_analytic_green_down_") + std::to_string(width) + ".pfm";
+    const double aspect = double(width) / height;
+    return write(name, width, height, [&](double s, double t) {
         double dy = greenUp ? -ht(s, t) : ht(s, t);
-        return std::array<float, 4>{float(0.5 - 0.25 * hs(s, t)), float(0.5 - 0.25 * dy), 0.75f, 1.0f};
+        return std::array<float, 4>{float(0.5 - 0.25 * hs(s, t) / aspect), float(0.5 - 0.25 * dy), 0.75f, 1.0f};
     });
 }
 }  // namespace analytic
@@ -1224,6 +1229,7 @@ std::filesystem::path normalMap(bool greenUp) {
 struct AnalyticCase {
     const char* name;
     const char* settings;
+    int width = 256, height = 256;  // of the textures
 };
 
 class AnalyticNormals : public testing::TestWithParam<std::tuple<AnalyticCase, vk::ExecutedTarget>> {};
@@ -1232,7 +1238,9 @@ TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
     REQUIRE_VULKAN();
     const auto [which, target] = GetParam();
     const char* settings = which.settings;
-    std::filesystem::path height = analytic::write("hexc_analytic_height.pfm", [](double s, double t) {
+    const int tw = which.width, th = which.height;
+    const double aspect = double(tw) / th;
+    std::filesystem::path height = analytic::write("hexc_analytic_height_" + std::to_string(tw) + ".pfm", tw, th, [](double s, double t) {
         float v = float(analytic::h(s, t));
         return std::array<float, 4>{v, v, v, 1.0f};
     });
@@ -1241,13 +1249,13 @@ TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
         return material(std::string(R"({"name": "s", "kind": ")") + kind + R"(", "colorspace": "linear", "texture": ")" + file.string() +
                         "\", " + extra + hex + "}");
     };
-    // 512 pixels over two texture periods: a pixel step of 1/256 in st.
-    const View view{512, 512, {0.0, 0.0, 2.0, 2.0}};
+    // One texel a pixel over two texture periods.
+    const View view{2 * tw, 2 * th, {0.0, 0.0, 2.0, 2.0}};
     vk::Runner& gpu = *runner(&whyNoVulkan);
-    Image up =
-        vk::render(gpu, slot("normal", analytic::normalMap(true), R"("flip_y": false, )"), vk::RenderOutput::Derivative, "", view, target);
-    Image down =
-        vk::render(gpu, slot("normal", analytic::normalMap(false), R"("flip_y": true, )"), vk::RenderOutput::Derivative, "", view, target);
+    Image up = vk::render(gpu, slot("normal", analytic::normalMap(true, tw, th), R"("flip_y": false, )"), vk::RenderOutput::Derivative, "",
+                          view, target);
+    Image down = vk::render(gpu, slot("normal", analytic::normalMap(false, tw, th), R"("flip_y": true, )"), vk::RenderOutput::Derivative,
+                            "", view, target);
     Image H = vk::render(gpu, slot("scalar", height, ""), vk::RenderOutput::Albedo, "", view, target);
     Image W = vk::render(gpu, slot("scalar", height, ""), vk::RenderOutput::Weights, "", view, target);
     // Both conventions decode to the same derivative up to the float32 rounding of their texels: 0.5 - x and 0.5 + x
@@ -1255,8 +1263,10 @@ TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
     // 2^-23 = 2.4e-7, and d = -n / z with z = 0.5 doubles it; filtering is a convex combination (no growth), and the
     // rotation and blend add a few float32 ulps of |d| <= 1.5. 1e-6.
     EXPECT_LE(compare(up, down, 2).max, 1e-6);
-    // Checked at pixels where one tile's weight is >= 0.9999 there and at the four neighbours the central difference
-    // reads. Tolerance, per component, T = 1/256 a texel (and a pixel step):
+    // The derivative is in texel-isotropic space (x = s * aspect, y = -t), where the tiles turn: compared with H's
+    // gradient there, (dH/ds / aspect, -dH/dt). Checked at pixels where one tile's weight is >= 0.9999 there and at the
+    // four neighbours the central difference reads. Tolerance, per component, T = a texel (and a pixel step) in that
+    // space, 1 / height (whose derivatives of h are those in st or, along x, smaller by the aspect); for T = 1/256:
     // - H is filtered bilinearly: its slope at a point is that of the interpolant, off by at most (T / 2) max|h''|, and
     //   max|h''| = 2 pi * 1.8 (h_tt), so 11.3 / 512 = 0.022 (the central difference averages it but, in a rotated
     //   tile, need not cancel it);
@@ -1267,8 +1277,11 @@ TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
     // - the other tiles (weights <= 1e-4 at all five pixels): in H's difference <= 2 * 1e-4 * 2 max|h| (0.29) / 2T =
     //   0.0074, in the derivative <= 1e-4 * 2 max|grad h| (3.0) = 3e-4;
     // - float32 H (ulp 1.5e-8) over 2T: 4e-6.
-    // Sum 0.033; 0.035.
-    const double bound = 0.035, step = 2.0 / view.width;
+    // Sum 0.033, plus 0.002.
+    const double T = 1.0 / th;
+    const double bound =
+        T / 2 * 11.3 + 0.0025 + T * T / 8 * 118 + 2 * 11.3 * T / 512 + 0.0074 / (256 * T) + 3e-4 + 4e-6 / (256 * T) + 0.002;
+    const double stepS = 2.0 / view.width, stepT = 2.0 / view.height;
     auto pure = [&](int i, int j, int c) { return W.at(i, j)[c] >= 0.9999f; };
     std::vector<double> errors;
     for (int j = 1; j + 1 < view.height; ++j)
@@ -1276,8 +1289,8 @@ TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
             const float* w = W.at(i, j);
             int c = int(std::max_element(w, w + 3) - w);
             if (!pure(i, j, c) || !pure(i - 1, j, c) || !pure(i + 1, j, c) || !pure(i, j - 1, c) || !pure(i, j + 1, c)) continue;
-            double du = (H.at(i + 1, j)[0] - H.at(i - 1, j)[0]) / (2 * step), dv = (H.at(i, j + 1)[0] - H.at(i, j - 1)[0]) / (2 * step);
-            errors.push_back(std::max(std::fabs(up.at(i, j)[0] - du), std::fabs(up.at(i, j)[1] + dv)));
+            double du = (H.at(i + 1, j)[0] - H.at(i - 1, j)[0]) / (2 * stepS), dv = (H.at(i, j + 1)[0] - H.at(i, j - 1)[0]) / (2 * stepT);
+            errors.push_back(std::max(std::fabs(up.at(i, j)[0] - du / aspect), std::fabs(up.at(i, j)[1] + dv)));
         }
     ASSERT_GT(errors.size(), size_t(view.width * view.height / 8));
     std::sort(errors.begin(), errors.end());
@@ -1291,7 +1304,10 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Combine(testing::Values(AnalyticCase{"stable", R"("mode": "stable", "rotation": 1)"},
                                      AnalyticCase{"paper", R"("mode": "paper", "rotation": 1)"},
                                      AnalyticCase{"unrotated", R"("mode": "stable", "rotation": 0)"},
-                                     AnalyticCase{"checker2taps", R"("mode": "stable", "rotation": 1, "mask": "checker", "taps": 2)"}),
+                                     AnalyticCase{"checker2taps", R"("mode": "stable", "rotation": 1, "mask": "checker", "taps": 2)"},
+                                     // Non-square: the tiles turn its texels (the paper's mode turns st and would shear it).
+                                     AnalyticCase{"stable_300x170", R"("mode": "stable", "rotation": 1)", 300, 170},
+                                     AnalyticCase{"turned_60_to_120_300x170", R"("rotationrange": [60, 120])", 300, 170}),
                      testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
     [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
 

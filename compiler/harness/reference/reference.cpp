@@ -53,21 +53,37 @@ Vec2 tileCentre(TileId id) { return {(id[0] + 0.5 * id[1]) / (2 * sqrt3), id[1] 
 // Listing 6: the tile's rotation. R = [[c, -s], [s, c]] rotates by +angle.
 struct Rotation {
     double c, s;
-    // R^T p: the paper's mul(p, R) with p a row vector, which turns st (and its gradients) into the tile's frame.
-    Vec2 toTile(Vec2 p) const { return {c * p[0] + s * p[1], -s * p[0] + c * p[1]}; }
-    // A derivative (dH/du, dH/dy), y = -v, sampled in the tile's frame, back to st. The tile reads h(R^T st + c), so
-    // the st gradient is R grad h (the paper's mul(R, d), for y along +v); with F = diag(1, -1) for y along -v it is
-    // F R F = R^T: the same rotation as toTile.
-    Vec2 fromTile(Vec2 d) const { return toTile(d); }
+    // The texture's width / height: stable mode turns a tile in texel-isotropic space, where a unit of length spans
+    // as many texels along u as along v: q = A st with A = diag(aspect, 1). The paper (aspect 1) turns st itself.
+    double aspect = 1;
+    // R^T p: the paper's mul(p, R) with p a row vector, which turns a point of that space into the tile's frame.
+    Vec2 rotate(Vec2 p) const { return {c * p[0] + s * p[1], -s * p[0] + c * p[1]}; }
+    // st (and its gradients) into the tile's frame: A^-1 R^T A, a rotation of the texture's texels.
+    Vec2 toTile(Vec2 p) const {
+        const Vec2 q = rotate({p[0] * aspect, p[1]});
+        return {q[0] / aspect, q[1]};
+    }
+    // A derivative (dH/dx, dH/dy), y = -v, sampled in the tile's frame, back: the slopes of a normal map are per unit
+    // of texel-isotropic space (square texels, as a baker writes them), where the tile reads h(R^T q + c). So the
+    // gradient is R grad h (the paper's mul(R, d), for y along +v); with F = diag(1, -1) for y along -v it is
+    // F R F = R^T: the same rotation as into the tile, without the aspect.
+    Vec2 fromTile(Vec2 d) const { return rotate(d); }
 };
 
 // `stable` mode, from its specification in docs/material-format.md (#mode): the lattice scale is 97/28
-// instead of 2 sqrt(3), offsets and angles come from pcg3d of the tile id, and the sample point is taken
-// relative to the tile centre. Evaluated here in double without the exact reduction the shader does: the
+// instead of 2 sqrt(3), offsets and angles come from pcg3d of the tile id, and the tile centre is added back modulo
+// the texture's period. Evaluated here in double without the exact reduction the shader does: the
 // reduction is an implementation detail this oracle checks, not something it repeats.
 constexpr double kStableScale = 97.0 / 28.0;
 
 Vec2 stableCentre(TileId id) { return {(id[0] + 0.5 * id[1]) / kStableScale, id[1] / 4.0}; }
+
+// The same centre modulo the texture's period 1, which is what stable mode adds back to a tile's sample point: c.x is
+// (28 id.x + 14 id.y) / 97 and c.y is id.y / 4, so their fractions are integer remainders, exact for any id.
+Vec2 stableCentreInPeriod(TileId id) {
+    const auto floorMod = [](int64_t a, int64_t m) { return double(((a % m) + m) % m); };
+    return {floorMod(28 * id[0] + 14 * id[1], 97) / 97, floorMod(id[1], 4) / 4};
+}
 
 // pcg3d (Jarzynski and Olano 2020), 32-bit unsigned arithmetic with wrap-around.
 std::array<uint32_t, 3> pcg3d(std::array<uint32_t, 3> v) {
@@ -124,8 +140,8 @@ std::array<double, 3> hexColours(const std::array<double, 3>& w, const std::arra
 // checker repeats its second tile, with weight 0, as the third.
 struct Taps {
     std::array<TileId, 3> id;
-    std::array<Vec2, 3> local;     // st relative to the point the tile turns and scales about
-    std::array<Vec2, 3> shift;     // added back after the transform: paper mode's tile centre (Listing 3), else 0
+    std::array<Vec2, 3> local;     // st relative to the point c the tile turns and scales about
+    std::array<Vec2, 3> shift;     // c, added back after the transform: the paper's as is (Listing 3), else modulo 1
     std::array<double, 3> weight;  // the mask's weights
 };
 
@@ -136,7 +152,7 @@ Taps hexTaps(Vec2 st, HashMode mode) {
     for (size_t i = 0; i < 3; ++i) {
         const Vec2 c = paper ? tileCentre(tri.id[i]) : stableCentre(tri.id[i]);
         taps.local[i] = {st[0] - c[0], st[1] - c[1]};
-        taps.shift[i] = paper ? c : Vec2{0, 0};
+        taps.shift[i] = paper ? c : stableCentreInPeriod(tri.id[i]);
     }
     return taps;
 }
@@ -165,10 +181,14 @@ Taps checkerTaps(Vec2 st, int scale) {
         // reads its low 32 bits, which is the shader's wrap-around.
         taps.id[size_t(grid)] = {2 * (frame.base[0] + int64_t(corner[0])) + grid, 2 * (frame.base[1] + int64_t(corner[1])) + grid};
         taps.local[size_t(grid)] = {(f[0] - 0.5) / scale, (f[1] - 0.5) / scale};
+        // The cell's centre, corner + 1/2 - shift in q, modulo 1 in st (the frame's base is whole st units).
+        const Vec2 centre{(corner[0] + 0.5 - shift) / scale, (corner[1] + 0.5 - shift) / scale};
+        taps.shift[size_t(grid)] = {centre[0] - std::floor(centre[0]), centre[1] - std::floor(centre[1])};
         taps.weight[size_t(grid)] = std::min({f[0], 1 - f[0], f[1], 1 - f[1]}) + kTiny;
     }
     taps.id[2] = taps.id[1];
     taps.local[2] = taps.local[1];
+    taps.shift[2] = taps.shift[1];
     // Over the larger weight: the same after Eq. 1 normalises, but w^gamma cannot underflow where both weights are
     // near 2^-24 (the points where borders of A and B cross) for any exponent up to 64.
     const double top = std::max(taps.weight[0], taps.weight[1]);
@@ -436,13 +456,12 @@ struct Fetch {
 };
 
 // A tile's texel from `texture` (docs/material-format.md#lod): filtered with the tile's own gradients, or with lod
-// "shared" at one level for the slot: rho from the unrotated st gradients dx, dy, whose Euclidean lengths are taken
-// in texels of the geometric mean size sqrt(width * height), then the tile's scale (the texture at scale s shows
-// 1/s as many texels per unit of st).
+// "shared" at one level for the slot: rho, as the sampler defines it, of the unrotated st gradients dx, dy (lengths
+// in texels), over the tile's scale (the texture at scale s shows 1/s as many texels per unit of st).
 Rgba fetchTile(const SampledTexture& texture, const Fetch& f, const HexTiling& hex, Vec2 dx, Vec2 dy) {
     if (hex.lod == Lod::Gradients) return texture.sample(f.p[0], f.p[1], f.dx[0], f.dx[1], f.dy[0], f.dy[1]);
-    const double size = std::sqrt(double(texture.width(0)) * texture.height(0));
-    const double rho = std::max(std::hypot(dx[0], dx[1]), std::hypot(dy[0], dy[1])) * size;
+    const double w = texture.width(0), h = texture.height(0);
+    const double rho = std::max(std::hypot(dx[0] * w, dx[1] * h), std::hypot(dy[0] * w, dy[1] * h));
     return texture.sampleLod(f.p[0], f.p[1], std::log2(rho / f.scale));
 }
 
@@ -478,7 +497,9 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
     std::array<double, 3> delta;
     for (size_t i = 0; i < 3; ++i) {
         const TileTransform tile = tileTransform(taps.id[i], hex);
-        const Rotation rot{std::cos(tile.angle), std::sin(tile.angle)};
+        // The paper's mode turns st as Listing 3 does; stable mode turns the texels (Rotation::aspect).
+        const double aspect = hex.mode == HashMode::Paper ? 1 : double(texture.width(0)) / texture.height(0);
+        const Rotation rot{std::cos(tile.angle), std::sin(tile.angle), aspect};
         // Rotate into the tile's frame, scale (the texture is scaled by tile.scale: sample at the point / scale),
         // then shift by the tile's offset; the gradients rotate and scale with it (Listings 3 and 4).
         const Vec2 rotated = rot.toTile(taps.local[i]);

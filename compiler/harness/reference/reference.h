@@ -154,7 +154,8 @@ private:
 // (Eq. 3) of the derivative (Listing 9, flipped with slot.flipY). The texture's own srgb flag decides decoding; the
 // slot's colour space is the caller's to apply when loading. HashMode::Paper follows Listings 1, 2, 5 and 6;
 // HashMode::Stable its specification in docs/material-format.md; the checker and noise masks are specified for
-// stable mode only (the parser rejects paper mode with them). `pixel`: the pixel's integer position (column, row),
+// stable mode only (the parser rejects paper mode with them); in those, tiles turn in texel-isotropic space (the
+// texture's aspect, docs/material-format.md#per-tile-transforms). `pixel`: the pixel's integer position (column, row),
 // which the 1-tap variant's dither hashes. With lod "shared", every fetch samples at the level fetchTile in
 // reference.cpp defines (docs/material-format.md#lod) instead of the level of its own gradients. `height`: required when the slot has height_blend (unless taps is 1,
 // which cannot height-blend); its width is the one used, not slot.heightBlend's.

@@ -101,7 +101,8 @@ public:
         if (ref) to[token] = read(*ref);
     }
 
-    std::string latticeSettings(const LatticePlan& l) const {
+    // The lattice's settings, and the slot's texture aspect (its tiles turn in texel-isotropic space).
+    std::string latticeSettings(const LatticePlan& l, double aspect) const {
         std::vector<std::pair<std::string, std::string>> fields = {
             {"rotate", literal(l.rotate)},
             {"transform", literal(l.transform)},
@@ -114,6 +115,7 @@ public:
         addParam(fields, "rotationRange", l.rotationRange);
         addParam(fields, "scaleRange", l.scaleRange);
         addParam(fields, "offset", l.offset);
+        if (aspect != 1) fields.emplace_back("aspect", literal(aspect));
         return set("lattice", fields);
     }
 
@@ -152,7 +154,7 @@ public:
             {"texture", sp.pack ? "hexcTex_" + plan_.slots[plan_.packs[*sp.pack].slots.front()].slot->name : ""},
             {"heightmap", sp.heightMap ? plan_.slots[*sp.heightMap].slot->name : s.name},  // unread without height blending
             {"tiles", expand(l.section, {})},
-            {"lattice", latticeSettings(l)},
+            {"lattice", latticeSettings(l, sp.aspect)},
             {"blend", blendSettings(sp)},
         };
         addParam(t, "tiling", l.tiling);

@@ -105,6 +105,8 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     sp.taps = h.maskTaps();
     sp.sharedLod = h.lod == Lod::Shared;
     sp.adaptive = h.enabled && h.adaptive();
+    // Tiles turn in texel-isotropic space (docs/material-format.md#per-tile-transforms); the paper's mode turns st.
+    if (h.mode != HashMode::Paper && slot.width > 0 && slot.height > 0) sp.aspect = double(slot.width) / slot.height;
     // One tap needs no falloff metric: it has a single sample to weigh.
     // The histogram blend weighs tiles by the lattice alone: a metric would break the variance its weights keep.
     sp.metric = h.taps != 1 && !sp.histogram && (all || h.falloffcontrast != 0);

@@ -80,6 +80,7 @@ struct SlotPlan {
     bool sharedLod = false;           // lod "shared": one level of detail per slot, fetches with textureLod
     std::optional<size_t> pack;       // index into ShaderPlan::packs: the slot reads that packed texture
     int packedChannel = 0;            // a packed scalar slot's channel in it (0 = r ... 3 = a); a colour slot reads rgb
+    double aspect = 1;                // its texture's width / height, which tiles turn in (not in paper mode): a literal
     ParamRef falloff, falloffContrast, exponent, heightWidth;
 };
 

@@ -12,6 +12,7 @@ struct HexcLattice
     int2 offsetSteps;
     int maskScale;
     bool triple;
+    float aspect;
 };
 
 struct HexcTap
@@ -27,6 +28,8 @@ struct HexcTiles
 {
     float3 w;
     bool scaled;
+    float2 dx;
+    float2 dy;
     int2 id[3];
     HexcTap tap[3];
     int3 channel;
@@ -50,9 +53,9 @@ struct HexcBlend
     float heightWidth;
 };
 
-static const HexcLattice _505 = { 0.0f, false, false, float2(-180.0f, 180.0f), 0, 1.0f.xx, 1.0f, int2(0, 0), 1, false };
-static const HexcBlend _1086 = { 0.5f, 0.0f, 7.0f, false, false, 0, 0, 3, false, false, 0.0039215688593685626983642578125f, false, 0.0f.xxxx, 1.0f };
-static const float4 _1641[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const HexcLattice _509 = { 0.0f, false, false, float2(-180.0f, 180.0f), 0, 1.0f.xx, 1.0f, int2(0, 0), 1, false, 1.0f };
+static const HexcBlend _1154 = { 0.5f, 0.0f, 7.0f, false, false, 0, 0, 3, false, false, 0.0039215688593685626983642578125f, false, 0.0f.xxxx, 1.0f };
+static const float4 _1699[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -92,176 +95,202 @@ uint2 spvTextureSize(Texture2D<float4> Tex, uint Level, out uint Param)
     return ret;
 }
 
-#line 125 "hexc/hextiling.glsl"
+#line 127 "hexc/hextiling.glsl"
 HexcLattice hexcLattice()
 {
-#line 125 "hexc/hextiling.glsl"
-    return _505;
+#line 127 "hexc/hextiling.glsl"
+    return _509;
 }
 
-#line 368 "hexc/hextiling.glsl"
+#line 394 "hexc/hextiling.glsl"
 HexcBlend hexcBlend()
 {
-#line 368 "hexc/hextiling.glsl"
-    return _1086;
+#line 394 "hexc/hextiling.glsl"
+    return _1154;
 }
 
-#line 34 "hexc/hextiling.glsl"
+#line 35 "hexc/hextiling.glsl"
 void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
 {
-#line 34 "hexc/hextiling.glsl"
-    int2 baseId = int2(floor(skewed));
 #line 35 "hexc/hextiling.glsl"
-    float3 temp = float3(skewed - floor(skewed), 0.0f);
+    int2 baseId = int2(floor(skewed));
 #line 36 "hexc/hextiling.glsl"
-    temp.z = (1.0f - temp.x) - temp.y;
+    float3 temp = float3(skewed - floor(skewed), 0.0f);
 #line 37 "hexc/hextiling.glsl"
-    float s = step(0.0f, -temp.z);
+    temp.z = (1.0f - temp.x) - temp.y;
 #line 38 "hexc/hextiling.glsl"
-    float s2 = (2.0f * s) - 1.0f;
+    float s = step(0.0f, -temp.z);
 #line 39 "hexc/hextiling.glsl"
-    w = float3((-temp.z) * s2, s - (temp.y * s2), s - (temp.x * s2));
+    float s2 = (2.0f * s) - 1.0f;
 #line 40 "hexc/hextiling.glsl"
-    int si = int(s);
+    w = float3((-temp.z) * s2, s - (temp.y * s2), s - (temp.x * s2));
 #line 41 "hexc/hextiling.glsl"
-    id[0] = baseId + int2(si, si);
+    int si = int(s);
 #line 42 "hexc/hextiling.glsl"
-    id[1] = baseId + int2(si, 1 - si);
+    id[0] = baseId + int2(si, si);
 #line 43 "hexc/hextiling.glsl"
+    id[1] = baseId + int2(si, 1 - si);
+#line 44 "hexc/hextiling.glsl"
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 197 "hexc/hextiling.glsl"
+#line 203 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 197 "hexc/hextiling.glsl"
+#line 203 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 166 "hexc/hextiling.glsl"
+#line 210 "hexc/hextiling.glsl"
+float2 hexcStableCentreInPeriod(int2 local)
+{
+#line 210 "hexc/hextiling.glsl"
+    return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
+}
+
+#line 172 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 166 "hexc/hextiling.glsl"
-    v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
-#line 167 "hexc/hextiling.glsl"
-    v.x += (v.y * v.z);
-#line 168 "hexc/hextiling.glsl"
-    v.y += (v.z * v.x);
-#line 169 "hexc/hextiling.glsl"
-    v.z += (v.x * v.y);
-#line 170 "hexc/hextiling.glsl"
-    v ^= (v >> uint3(16u, 16u, 16u));
-#line 171 "hexc/hextiling.glsl"
-    v.x += (v.y * v.z);
 #line 172 "hexc/hextiling.glsl"
-    v.y += (v.z * v.x);
+    v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
 #line 173 "hexc/hextiling.glsl"
-    v.z += (v.x * v.y);
+    v.x += (v.y * v.z);
 #line 174 "hexc/hextiling.glsl"
+    v.y += (v.z * v.x);
+#line 175 "hexc/hextiling.glsl"
+    v.z += (v.x * v.y);
+#line 176 "hexc/hextiling.glsl"
+    v ^= (v >> uint3(16u, 16u, 16u));
+#line 177 "hexc/hextiling.glsl"
+    v.x += (v.y * v.z);
+#line 178 "hexc/hextiling.glsl"
+    v.y += (v.z * v.x);
+#line 179 "hexc/hextiling.glsl"
+    v.z += (v.x * v.y);
+#line 180 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 180 "hexc/hextiling.glsl"
+#line 186 "hexc/hextiling.glsl"
 void hexcStableTile(int2 id, HexcLattice l, inout float2 offset, out float2 rot, out float invScale)
 {
-#line 180 "hexc/hextiling.glsl"
+#line 186 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _586 = hexcPcg3d(param);
-    float3 u = float3(_586 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
-#line 181 "hexc/hextiling.glsl"
+    uint3 _590 = hexcPcg3d(param);
+    float3 u = float3(_590 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+#line 187 "hexc/hextiling.glsl"
     offset = u.xy;
-#line 182 "hexc/hextiling.glsl"
+#line 188 "hexc/hextiling.glsl"
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * l.rotation;
-#line 183 "hexc/hextiling.glsl"
+#line 189 "hexc/hextiling.glsl"
     invScale = 1.0f;
-#line 184 "hexc/hextiling.glsl"
+#line 190 "hexc/hextiling.glsl"
     if (l.transform)
     {
-#line 185 "hexc/hextiling.glsl"
+#line 191 "hexc/hextiling.glsl"
         float2 steps = float2(l.offsetSteps);
-#line 186 "hexc/hextiling.glsl"
-        float2 _620 = floor(offset * steps) / steps;
-        bool2 _624 = bool2(steps.x > 0.0f.xx.x, steps.y > 0.0f.xx.y);
-        offset = float2(_624.x ? _620.x : offset.x, _624.y ? _620.y : offset.y) * l.offset;
-#line 187 "hexc/hextiling.glsl"
-        float _635;
+#line 192 "hexc/hextiling.glsl"
+        float2 _624 = floor(offset * steps) / steps;
+        bool2 _628 = bool2(steps.x > 0.0f.xx.x, steps.y > 0.0f.xx.y);
+        offset = float2(_628.x ? _624.x : offset.x, _628.y ? _624.y : offset.y) * l.offset;
+#line 193 "hexc/hextiling.glsl"
+        float _639;
         if (l.rotationSteps > 0)
         {
-#line 187 "hexc/hextiling.glsl"
-            _635 = floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps);
+#line 193 "hexc/hextiling.glsl"
+            _639 = floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps);
         }
         else
         {
-#line 187 "hexc/hextiling.glsl"
-            _635 = u.z;
+#line 193 "hexc/hextiling.glsl"
+            _639 = u.z;
         }
-        float a = _635;
-#line 188 "hexc/hextiling.glsl"
+        float a = _639;
+#line 194 "hexc/hextiling.glsl"
         angle = radians(lerp(l.rotationRange.x, l.rotationRange.y, a)) * l.rotation;
-#line 189 "hexc/hextiling.glsl"
+#line 195 "hexc/hextiling.glsl"
         uint3 param_1 = uint3(uint2(id), 1u);
-        uint3 _670 = hexcPcg3d(param_1);
-        float v = float(_670.x >> 8u) * 5.9604644775390625e-08f;
-#line 190 "hexc/hextiling.glsl"
+        uint3 _674 = hexcPcg3d(param_1);
+        float v = float(_674.x >> 8u) * 5.9604644775390625e-08f;
+#line 196 "hexc/hextiling.glsl"
         invScale = 1.0f / lerp(l.scaleRange.x, l.scaleRange.y, v);
     }
-#line 192 "hexc/hextiling.glsl"
-    float2 _685;
+#line 198 "hexc/hextiling.glsl"
+    float2 _689;
     if (l.rotate)
     {
-#line 192 "hexc/hextiling.glsl"
-        _685 = float2(cos(angle), sin(angle));
+#line 198 "hexc/hextiling.glsl"
+        _689 = float2(cos(angle), sin(angle));
     }
     else
     {
-        _685 = float2(1.0f, 0.0f);
+        _689 = float2(1.0f, 0.0f);
     }
-    rot = _685;
+    rot = _689;
 }
 
-#line 94 "hexc/hextiling.glsl"
+#line 95 "hexc/hextiling.glsl"
 float2 hexcRotateToTile(float2 v, float2 cs)
 {
-#line 94 "hexc/hextiling.glsl"
+#line 95 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 202 "hexc/hextiling.glsl"
+#line 216 "hexc/hextiling.glsl"
 float2 hexcToTile(inout float2 v, HexcTap p, HexcLattice l)
 {
-#line 202 "hexc/hextiling.glsl"
-    float2 _717;
+#line 216 "hexc/hextiling.glsl"
     if (l.rotate)
     {
-#line 202 "hexc/hextiling.glsl"
-        float2 param = v;
+#line 217 "hexc/hextiling.glsl"
+        bool square = l.aspect == 1.0f;
+#line 218 "hexc/hextiling.glsl"
+        float2 _753;
+        if (square)
+        {
+            _753 = v;
+        }
+        else
+        {
+#line 218 "hexc/hextiling.glsl"
+            _753 = float2(v.x * l.aspect, v.y);
+        }
+#line 218 "hexc/hextiling.glsl"
+        float2 param = _753;
         float2 param_1 = p.rot;
-        _717 = hexcRotateToTile(param, param_1);
+        v = hexcRotateToTile(param, param_1);
+#line 219 "hexc/hextiling.glsl"
+        float2 _773;
+        if (square)
+        {
+            _773 = v;
+        }
+        else
+        {
+#line 219 "hexc/hextiling.glsl"
+            _773 = float2(v.x / l.aspect, v.y);
+        }
+        v = _773;
     }
-    else
-    {
-        _717 = v;
-    }
-    v = _717;
-#line 203 "hexc/hextiling.glsl"
-    float2 _731;
+#line 221 "hexc/hextiling.glsl"
+    float2 _789;
     if (l.transform)
     {
-#line 203 "hexc/hextiling.glsl"
-        _731 = v * p.invScale;
+#line 221 "hexc/hextiling.glsl"
+        _789 = v * p.invScale;
     }
     else
     {
-        _731 = v;
+        _789 = v;
     }
-#line 203 "hexc/hextiling.glsl"
-    return _731;
+#line 221 "hexc/hextiling.glsl"
+    return _789;
 }
 
-#line 211 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile(int2 id, float2 d, float2 dSTdx, float2 dSTdy, HexcLattice l)
+#line 230 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, HexcLattice l)
 {
-#line 211 "hexc/hextiling.glsl"
+#line 230 "hexc/hextiling.glsl"
     int2 param = id;
     HexcLattice param_1 = l;
     float2 param_2;
@@ -272,113 +301,119 @@ HexcTap hexcPlaceTile(int2 id, float2 d, float2 dSTdx, float2 dSTdy, HexcLattice
     HexcTap p;
     p.rot = param_3;
     p.invScale = param_4;
-#line 212 "hexc/hextiling.glsl"
+#line 231 "hexc/hextiling.glsl"
     float2 param_5 = d;
     HexcTap param_6 = p;
     HexcLattice param_7 = l;
-    float2 _764 = hexcToTile(param_5, param_6, param_7);
-    p.st = _764 + offset;
-#line 213 "hexc/hextiling.glsl"
+    float2 _822 = hexcToTile(param_5, param_6, param_7);
+    p.st = (_822 + c) + offset;
+#line 232 "hexc/hextiling.glsl"
     float2 param_8 = dSTdx;
     HexcTap param_9 = p;
     HexcLattice param_10 = l;
-    float2 _774 = hexcToTile(param_8, param_9, param_10);
-    p.dx = _774;
-#line 214 "hexc/hextiling.glsl"
+    float2 _834 = hexcToTile(param_8, param_9, param_10);
+    p.dx = _834;
+#line 233 "hexc/hextiling.glsl"
     float2 param_11 = dSTdy;
     HexcTap param_12 = p;
     HexcLattice param_13 = l;
-    float2 _782 = hexcToTile(param_11, param_12, param_13);
-    p.dy = _782;
-#line 215 "hexc/hextiling.glsl"
+    float2 _842 = hexcToTile(param_11, param_12, param_13);
+    p.dy = _842;
+#line 234 "hexc/hextiling.glsl"
     return p;
 }
 
-#line 221 "hexc/hextiling.glsl"
+#line 240 "hexc/hextiling.glsl"
 HexcTap hexcStableTap(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, HexcLattice l, inout int2 id)
 {
-#line 221 "hexc/hextiling.glsl"
+#line 240 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
-#line 222 "hexc/hextiling.glsl"
+#line 241 "hexc/hextiling.glsl"
     int2 param = local;
-    int2 param_1 = id;
-    float2 param_2 = r - hexcStableCentre(param);
-    float2 param_3 = dSTdx;
-    float2 param_4 = dSTdy;
-    HexcLattice param_5 = l;
-    return hexcPlaceTile(param_1, param_2, param_3, param_4, param_5);
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    HexcLattice param_7 = l;
+    return hexcPlaceTile(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 78 "hexc/hextiling.glsl"
+#line 79 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 78 "hexc/hextiling.glsl"
-    int d = v1.x - v1.y;
 #line 79 "hexc/hextiling.glsl"
-    int a = abs(d) % 3;
+    int d = v1.x - v1.y;
 #line 80 "hexc/hextiling.glsl"
-    int _387;
+    int a = abs(d) % 3;
+#line 81 "hexc/hextiling.glsl"
+    int _391;
     if ((d < 0) && (a != 0))
     {
-#line 80 "hexc/hextiling.glsl"
-        _387 = 3 - a;
+#line 81 "hexc/hextiling.glsl"
+        _391 = 3 - a;
     }
     else
     {
-        _387 = a;
+        _391 = a;
     }
-    int i1 = _387;
-#line 81 "hexc/hextiling.glsl"
-    int _398;
+    int i1 = _391;
+#line 82 "hexc/hextiling.glsl"
+    int _402;
     if (i1 < 2)
     {
-#line 81 "hexc/hextiling.glsl"
-        _398 = i1 + 1;
+#line 82 "hexc/hextiling.glsl"
+        _402 = i1 + 1;
     }
     else
     {
-        _398 = 0;
+        _402 = 0;
     }
-    int vh = _398;
-#line 82 "hexc/hextiling.glsl"
-    int _408;
+    int vh = _402;
+#line 83 "hexc/hextiling.glsl"
+    int _412;
     if (i1 > 0)
     {
-#line 82 "hexc/hextiling.glsl"
-        _408 = i1 - 1;
+#line 83 "hexc/hextiling.glsl"
+        _412 = i1 - 1;
     }
     else
     {
-        _408 = 2;
+        _412 = 2;
     }
-    int vl = _408;
-#line 83 "hexc/hextiling.glsl"
+    int vl = _412;
+#line 84 "hexc/hextiling.glsl"
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 230 "hexc/hextiling.glsl"
+#line 249 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable(float2 st, float2 dSTdx, float2 dSTdy, int2 cell, HexcLattice l)
 {
-#line 230 "hexc/hextiling.glsl"
+#line 249 "hexc/hextiling.glsl"
     HexcTiles t;
+    t.dx = dSTdx;
+#line 250 "hexc/hextiling.glsl"
+    t.dy = dSTdy;
+#line 251 "hexc/hextiling.glsl"
     t.scaled = l.transform;
-#line 233 "hexc/hextiling.glsl"
+#line 254 "hexc/hextiling.glsl"
     float kx = floor(st.x / 28.0f);
     float ky = floor(st.y);
-#line 234 "hexc/hextiling.glsl"
+#line 255 "hexc/hextiling.glsl"
     float2 r = float2(st.x - (28.0f * kx), st.y - ky);
-#line 236 "hexc/hextiling.glsl"
+#line 257 "hexc/hextiling.glsl"
     float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
     float3 param_1;
     int2 param_2[3];
     hexcTriangle(param, param_1, param_2);
     t.w = param_1;
     int2 local[3] = param_2;
-#line 237 "hexc/hextiling.glsl"
+#line 258 "hexc/hextiling.glsl"
     uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-#line 238 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
     uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-#line 239 "hexc/hextiling.glsl"
+#line 260 "hexc/hextiling.glsl"
     int2 param_3 = local[0];
     uint2 param_4 = shift;
     float2 param_5 = r;
@@ -386,10 +421,10 @@ HexcTiles hexcTilesStable(float2 st, float2 dSTdx, float2 dSTdy, int2 cell, Hexc
     float2 param_7 = dSTdy;
     HexcLattice param_8 = l;
     int2 param_9;
-    HexcTap _892 = hexcStableTap(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
+    HexcTap _960 = hexcStableTap(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
     t.id[0] = param_9;
-    t.tap[0] = _892;
-#line 240 "hexc/hextiling.glsl"
+    t.tap[0] = _960;
+#line 261 "hexc/hextiling.glsl"
     int2 param_10 = local[1];
     uint2 param_11 = shift;
     float2 param_12 = r;
@@ -397,10 +432,10 @@ HexcTiles hexcTilesStable(float2 st, float2 dSTdx, float2 dSTdy, int2 cell, Hexc
     float2 param_14 = dSTdy;
     HexcLattice param_15 = l;
     int2 param_16;
-    HexcTap _910 = hexcStableTap(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
+    HexcTap _978 = hexcStableTap(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
     t.id[1] = param_16;
-    t.tap[1] = _910;
-#line 241 "hexc/hextiling.glsl"
+    t.tap[1] = _978;
+#line 262 "hexc/hextiling.glsl"
     int2 param_17 = local[2];
     uint2 param_18 = shift;
     float2 param_19 = r;
@@ -408,397 +443,396 @@ HexcTiles hexcTilesStable(float2 st, float2 dSTdx, float2 dSTdy, int2 cell, Hexc
     float2 param_21 = dSTdy;
     HexcLattice param_22 = l;
     int2 param_23;
-    HexcTap _928 = hexcStableTap(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
+    HexcTap _996 = hexcStableTap(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
     t.id[2] = param_23;
-    t.tap[2] = _928;
-#line 242 "hexc/hextiling.glsl"
+    t.tap[2] = _996;
+#line 263 "hexc/hextiling.glsl"
     int2 param_24 = t.id[0];
     int2 param_25 = t.id[2];
     t.channel = hexcHexChannels(param_24, param_25);
-#line 243 "hexc/hextiling.glsl"
+#line 264 "hexc/hextiling.glsl"
     return t;
 }
 
-#line 314 "hexc/hextiling.glsl"
+#line 340 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 314 "hexc/hextiling.glsl"
+#line 340 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
-#line 315 "hexc/hextiling.glsl"
+#line 341 "hexc/hextiling.glsl"
     if ((n & 1) != 0)
     {
-#line 315 "hexc/hextiling.glsl"
+#line 341 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 316 "hexc/hextiling.glsl"
+#line 342 "hexc/hextiling.glsl"
     x *= x;
-#line 317 "hexc/hextiling.glsl"
+#line 343 "hexc/hextiling.glsl"
     if ((n & 2) != 0)
     {
-#line 317 "hexc/hextiling.glsl"
+#line 343 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 318 "hexc/hextiling.glsl"
+#line 344 "hexc/hextiling.glsl"
     x *= x;
-#line 319 "hexc/hextiling.glsl"
+#line 345 "hexc/hextiling.glsl"
     if ((n & 4) != 0)
     {
-#line 319 "hexc/hextiling.glsl"
+#line 345 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 320 "hexc/hextiling.glsl"
+#line 346 "hexc/hextiling.glsl"
     x *= x;
-#line 321 "hexc/hextiling.glsl"
+#line 347 "hexc/hextiling.glsl"
     if ((n & 8) != 0)
     {
-#line 321 "hexc/hextiling.glsl"
+#line 347 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 322 "hexc/hextiling.glsl"
+#line 348 "hexc/hextiling.glsl"
     x *= x;
-#line 323 "hexc/hextiling.glsl"
+#line 349 "hexc/hextiling.glsl"
     if ((n & 16) != 0)
     {
-#line 323 "hexc/hextiling.glsl"
+#line 349 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 324 "hexc/hextiling.glsl"
+#line 350 "hexc/hextiling.glsl"
     return r;
 }
 
-#line 330 "hexc/hextiling.glsl"
+#line 356 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 330 "hexc/hextiling.glsl"
-    float _1003;
+#line 356 "hexc/hextiling.glsl"
+    float _1071;
     if (kInt > 0)
     {
-#line 330 "hexc/hextiling.glsl"
-        _1003 = float(kInt);
+#line 356 "hexc/hextiling.glsl"
+        _1071 = float(kInt);
     }
     else
     {
-#line 330 "hexc/hextiling.glsl"
-        _1003 = log(1.0f - r) / (-0.693147182464599609375f);
+#line 356 "hexc/hextiling.glsl"
+        _1071 = log(1.0f - r) / (-0.693147182464599609375f);
     }
-#line 330 "hexc/hextiling.glsl"
-    return _1003;
+#line 356 "hexc/hextiling.glsl"
+    return _1071;
 }
 
-#line 334 "hexc/hextiling.glsl"
+#line 360 "hexc/hextiling.glsl"
 float3 hexcGainCurve(float3 x, float r, int kInt)
 {
-#line 334 "hexc/hextiling.glsl"
+#line 360 "hexc/hextiling.glsl"
     float3 s = step(0.5f.xxx, x) * 2.0f;
-#line 335 "hexc/hextiling.glsl"
+#line 361 "hexc/hextiling.glsl"
     float3 m = (1.0f.xxx - s) * 2.0f;
-#line 336 "hexc/hextiling.glsl"
+#line 362 "hexc/hextiling.glsl"
     float3 base = max(0.0f.xxx, s + (x * m));
-#line 337 "hexc/hextiling.glsl"
-    float3 _1040;
+#line 363 "hexc/hextiling.glsl"
+    float3 _1108;
     if (kInt > 0)
     {
-#line 337 "hexc/hextiling.glsl"
+#line 363 "hexc/hextiling.glsl"
         float3 param = base;
         int param_1 = kInt;
-        float3 _1047 = hexcPowInt(param, param_1);
-        _1040 = _1047;
+        float3 _1115 = hexcPowInt(param, param_1);
+        _1108 = _1115;
     }
     else
     {
-#line 337 "hexc/hextiling.glsl"
+#line 363 "hexc/hextiling.glsl"
         float param_2 = r;
         int param_3 = kInt;
-        _1040 = pow(base, hexcGainK(param_2, param_3).xxx);
+        _1108 = pow(base, hexcGainK(param_2, param_3).xxx);
     }
-#line 337 "hexc/hextiling.glsl"
-    return (s * 0.5f) + ((m * 0.25f) * _1040);
+#line 363 "hexc/hextiling.glsl"
+    return (s * 0.5f) + ((m * 0.25f) * _1108);
 }
 
-#line 403 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 bool3 hexcAdaptiveTaps(float3 w, HexcBlend b)
 {
-#line 403 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     float3 wn = w / max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30f)).xxx;
-#line 404 "hexc/hextiling.glsl"
-    float3 _1204;
+#line 430 "hexc/hextiling.glsl"
+    float3 _1272;
     if (b.exponentInt > 0)
     {
-#line 404 "hexc/hextiling.glsl"
+#line 430 "hexc/hextiling.glsl"
         float3 param = wn;
         int param_1 = b.exponentInt;
-        float3 _1212 = hexcPowInt(param, param_1);
-        _1204 = _1212;
+        float3 _1280 = hexcPowInt(param, param_1);
+        _1272 = _1280;
     }
     else
     {
-#line 404 "hexc/hextiling.glsl"
-        _1204 = pow(wn, b.exponent.xxx);
+#line 430 "hexc/hextiling.glsl"
+        _1272 = pow(wn, b.exponent.xxx);
     }
-    float3 wg = _1204;
-#line 405 "hexc/hextiling.glsl"
-    float _1223;
+    float3 wg = _1272;
+#line 431 "hexc/hextiling.glsl"
+    float _1291;
     if (b.metric)
     {
-#line 405 "hexc/hextiling.glsl"
-        _1223 = b.falloffContrast;
+#line 431 "hexc/hextiling.glsl"
+        _1291 = b.falloffContrast;
     }
     else
     {
-        _1223 = 0.0f;
+        _1291 = 0.0f;
     }
-    float lo = 1.0f - _1223;
-#line 406 "hexc/hextiling.glsl"
+    float lo = 1.0f - _1291;
+#line 432 "hexc/hextiling.glsl"
     float3 others = ((wg.x + wg.y) + wg.z).xxx - wg;
-#line 407 "hexc/hextiling.glsl"
+#line 433 "hexc/hextiling.glsl"
     float3 U = wg / max(wg + (others * lo), 1.0000000031710768509710513471353e-30f.xxx);
-#line 408 "hexc/hextiling.glsl"
+#line 434 "hexc/hextiling.glsl"
     float3 L = (wg * lo) / max((wg * lo) + others, 1.0000000031710768509710513471353e-30f.xxx);
-#line 409 "hexc/hextiling.glsl"
+#line 435 "hexc/hextiling.glsl"
     float3 gU = U;
     float3 gL = L;
-#line 410 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
     float k = 0.0f;
-#line 411 "hexc/hextiling.glsl"
-    bool _1283;
+#line 437 "hexc/hextiling.glsl"
+    bool _1351;
     if (b.gain)
     {
-#line 411 "hexc/hextiling.glsl"
-        bool _1275 = b.gainInt > 0;
-        bool _1282;
-        if (!_1275)
+#line 437 "hexc/hextiling.glsl"
+        bool _1343 = b.gainInt > 0;
+        bool _1350;
+        if (!_1343)
         {
-#line 411 "hexc/hextiling.glsl"
-            _1282 = b.falloff != 0.5f;
+#line 437 "hexc/hextiling.glsl"
+            _1350 = b.falloff != 0.5f;
         }
         else
         {
-            _1282 = _1275;
+            _1350 = _1343;
         }
-        _1283 = _1282;
+        _1351 = _1350;
     }
     else
     {
-        _1283 = b.gain;
+        _1351 = b.gain;
     }
-    if (_1283)
+    if (_1351)
     {
-#line 412 "hexc/hextiling.glsl"
+#line 438 "hexc/hextiling.glsl"
         float3 param_2 = U;
         float param_3 = b.falloff;
         int param_4 = b.gainInt;
         gU = hexcGainCurve(param_2, param_3, param_4);
-#line 413 "hexc/hextiling.glsl"
+#line 439 "hexc/hextiling.glsl"
         float3 param_5 = L;
         float param_6 = b.falloff;
         int param_7 = b.gainInt;
         gL = hexcGainCurve(param_5, param_6, param_7);
-#line 414 "hexc/hextiling.glsl"
+#line 440 "hexc/hextiling.glsl"
         float param_8 = b.falloff;
         int param_9 = b.gainInt;
         k = hexcGainK(param_8, param_9);
     }
-#line 416 "hexc/hextiling.glsl"
+#line 442 "hexc/hextiling.glsl"
     float3 Gup = gU / max((gU + ((gL.x + gL.y) + gL.z).xxx) - gL, 1.0000000031710768509710513471353e-30f.xxx);
-#line 420 "hexc/hextiling.glsl"
+#line 446 "hexc/hextiling.glsl"
     if (k > 0.0f)
     {
-#line 421 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
         float3 r1 = L.yzx / max(U, 1.0000000031710768509710513471353e-30f.xxx);
         float3 r2 = L.zxy / max(U, 1.0000000031710768509710513471353e-30f.xxx);
-#line 422 "hexc/hextiling.glsl"
-        float3 _1348;
+#line 448 "hexc/hextiling.glsl"
+        float3 _1416;
         if (b.gainInt > 0)
         {
-#line 422 "hexc/hextiling.glsl"
+#line 448 "hexc/hextiling.glsl"
             float3 param_10 = r1;
             int param_11 = b.gainInt;
-            float3 _1356 = hexcPowInt(param_10, param_11);
-            _1348 = _1356;
+            float3 _1424 = hexcPowInt(param_10, param_11);
+            _1416 = _1424;
         }
         else
         {
-#line 422 "hexc/hextiling.glsl"
-            _1348 = pow(r1, k.xxx);
+#line 448 "hexc/hextiling.glsl"
+            _1416 = pow(r1, k.xxx);
         }
-        float3 p1 = _1348;
-#line 423 "hexc/hextiling.glsl"
-        float3 _1367;
+        float3 p1 = _1416;
+#line 449 "hexc/hextiling.glsl"
+        float3 _1435;
         if (b.gainInt > 0)
         {
-#line 423 "hexc/hextiling.glsl"
+#line 449 "hexc/hextiling.glsl"
             float3 param_12 = r2;
             int param_13 = b.gainInt;
-            float3 _1375 = hexcPowInt(param_12, param_13);
-            _1367 = _1375;
+            float3 _1443 = hexcPowInt(param_12, param_13);
+            _1435 = _1443;
         }
         else
         {
-#line 423 "hexc/hextiling.glsl"
-            _1367 = pow(r2, k.xxx);
+#line 449 "hexc/hextiling.glsl"
+            _1435 = pow(r2, k.xxx);
         }
-        float3 p2 = _1367;
-#line 424 "hexc/hextiling.glsl"
-        float3 _1389 = 1.0f.xxx / ((1.0f.xxx + p1) + p2);
-        float3 _1396 = max(U, max(L.yzx, L.zxy));
-        bool3 _1398 = bool3(_1396.x < 0.5f.xxx.x, _1396.y < 0.5f.xxx.y, _1396.z < 0.5f.xxx.z);
-        Gup = float3(_1398.x ? _1389.x : Gup.x, _1398.y ? _1389.y : Gup.y, _1398.z ? _1389.z : Gup.z);
+        float3 p2 = _1435;
+#line 450 "hexc/hextiling.glsl"
+        float3 _1457 = 1.0f.xxx / ((1.0f.xxx + p1) + p2);
+        float3 _1464 = max(U, max(L.yzx, L.zxy));
+        bool3 _1466 = bool3(_1464.x < 0.5f.xxx.x, _1464.y < 0.5f.xxx.y, _1464.z < 0.5f.xxx.z);
+        Gup = float3(_1466.x ? _1457.x : Gup.x, _1466.y ? _1457.y : Gup.y, _1466.z ? _1457.z : Gup.z);
     }
-#line 427 "hexc/hextiling.glsl"
+#line 453 "hexc/hextiling.glsl"
     float3 B = Gup - (log(max(1.0f.xxx - U, 1.0000000031710768509710513471353e-30f.xxx)) * (0.25f * k));
-#line 428 "hexc/hextiling.glsl"
-    bool _1415 = w.x >= w.y;
-    bool _1423;
-    if (_1415)
+#line 454 "hexc/hextiling.glsl"
+    bool _1483 = w.x >= w.y;
+    bool _1491;
+    if (_1483)
     {
-#line 428 "hexc/hextiling.glsl"
-        _1423 = w.x >= w.z;
+#line 454 "hexc/hextiling.glsl"
+        _1491 = w.x >= w.z;
     }
     else
     {
-        _1423 = _1415;
+        _1491 = _1483;
     }
-    int _1424;
-    if (_1423)
+    int _1492;
+    if (_1491)
     {
-        _1424 = 0;
+        _1492 = 0;
     }
     else
     {
-#line 428 "hexc/hextiling.glsl"
-        _1424 = (w.y >= w.z) ? 1 : 2;
+#line 454 "hexc/hextiling.glsl"
+        _1492 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1424;
-#line 429 "hexc/hextiling.glsl"
+    int d = _1492;
+#line 455 "hexc/hextiling.glsl"
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
-#line 430 "hexc/hextiling.glsl"
+#line 456 "hexc/hextiling.glsl"
     bool3 f = bool3(true, true, true);
-#line 431 "hexc/hextiling.glsl"
+#line 457 "hexc/hextiling.glsl"
     if ((Gup[a] + Gup[c]) < b.adaptiveError)
     {
-#line 432 "hexc/hextiling.glsl"
+#line 458 "hexc/hextiling.glsl"
         f[a] = false;
-#line 433 "hexc/hextiling.glsl"
+#line 459 "hexc/hextiling.glsl"
         f[c] = false;
     }
     else
     {
-#line 434 "hexc/hextiling.glsl"
+#line 460 "hexc/hextiling.glsl"
         if (min(B[a], B[c]) < b.adaptiveError)
         {
-#line 435 "hexc/hextiling.glsl"
+#line 461 "hexc/hextiling.glsl"
             f[(B[a] <= B[c]) ? a : c] = false;
         }
     }
-#line 437 "hexc/hextiling.glsl"
+#line 463 "hexc/hextiling.glsl"
     return f;
 }
 
-#line 471 "hexc/hextiling.glsl"
+#line 496 "hexc/hextiling.glsl"
 bool3 hexcFetched(float3 w, HexcBlend b)
 {
-#line 471 "hexc/hextiling.glsl"
-    bool3 _1619;
+#line 496 "hexc/hextiling.glsl"
+    bool3 _1677;
     if (b.adaptive)
     {
-#line 471 "hexc/hextiling.glsl"
+#line 496 "hexc/hextiling.glsl"
         float3 param = w;
         HexcBlend param_1 = b;
-        _1619 = hexcAdaptiveTaps(param, param_1);
+        _1677 = hexcAdaptiveTaps(param, param_1);
     }
     else
     {
-#line 471 "hexc/hextiling.glsl"
-        _1619 = bool3(true, true, b.taps > 2);
+#line 496 "hexc/hextiling.glsl"
+        _1677 = bool3(true, true, b.taps > 2);
     }
-#line 471 "hexc/hextiling.glsl"
-    return _1619;
+#line 496 "hexc/hextiling.glsl"
+    return _1677;
 }
 
-#line 454 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
 float3 hexcTileLods(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool sharedLod)
 {
-#line 454 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
     if (!sharedLod)
     {
-#line 454 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
         return 0.0f.xxx;
     }
-#line 455 "hexc/hextiling.glsl"
-    uint _1537_dummy_parameter;
-    float2 size = float2(int2(spvTextureSize(tex, uint(0), _1537_dummy_parameter)));
-#line 456 "hexc/hextiling.glsl"
-    HexcTap p = t.tap[0];
-#line 457 "hexc/hextiling.glsl"
-    float lod = 0.5f * log2(max((max(dot(p.dx, p.dx), dot(p.dy, p.dy)) * size.x) * size.y, 1.0000000031710768509710513471353e-30f));
-#line 458 "hexc/hextiling.glsl"
-    float3 invScale = float3(p.invScale, t.tap[1].invScale, t.tap[2].invScale);
-#line 459 "hexc/hextiling.glsl"
-    float3 _1573;
+#line 481 "hexc/hextiling.glsl"
+    uint _1604_dummy_parameter;
+    float2 size = float2(int2(spvTextureSize(tex, uint(0), _1604_dummy_parameter)));
+#line 482 "hexc/hextiling.glsl"
+    float2 ex = t.dx * size;
+    float2 ey = t.dy * size;
+#line 483 "hexc/hextiling.glsl"
+    float lod = 0.5f * log2(max(max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30f));
+#line 484 "hexc/hextiling.glsl"
+    float3 _1629;
     if (t.scaled)
     {
-#line 459 "hexc/hextiling.glsl"
-        _1573 = lod.xxx + log2(invScale / p.invScale.xxx);
+#line 484 "hexc/hextiling.glsl"
+        _1629 = lod.xxx + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
     }
     else
     {
-#line 459 "hexc/hextiling.glsl"
-        _1573 = lod.xxx;
+#line 484 "hexc/hextiling.glsl"
+        _1629 = lod.xxx;
     }
-#line 459 "hexc/hextiling.glsl"
-    return _1573;
+#line 484 "hexc/hextiling.glsl"
+    return _1629;
 }
 
-#line 465 "hexc/hextiling.glsl"
+#line 490 "hexc/hextiling.glsl"
 float4 hexcFetch(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod, bool sharedLod)
 {
-    float4 _1592;
+    float4 _1650;
     if (sharedLod)
     {
-#line 465 "hexc/hextiling.glsl"
-        _1592 = tex.SampleLevel(samp, p.st, lod);
+#line 490 "hexc/hextiling.glsl"
+        _1650 = tex.SampleLevel(samp, p.st, lod);
     }
     else
     {
-#line 465 "hexc/hextiling.glsl"
-        _1592 = tex.SampleGrad(samp, p.st, p.dx, p.dy);
+#line 490 "hexc/hextiling.glsl"
+        _1650 = tex.SampleGrad(samp, p.st, p.dx, p.dy);
     }
-#line 465 "hexc/hextiling.glsl"
-    return _1592;
+#line 490 "hexc/hextiling.glsl"
+    return _1650;
 }
 
-#line 478 "hexc/hextiling.glsl"
+#line 503 "hexc/hextiling.glsl"
 void hexcFetchTaps(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, bool sharedLod, out float4 c[3])
 {
-#line 478 "hexc/hextiling.glsl"
+#line 503 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool param_1 = sharedLod;
     float3 lod = hexcTileLods(tex, samp, param, param_1);
-#line 479 "hexc/hextiling.glsl"
-    c = _1641;
-#line 480 "hexc/hextiling.glsl"
+#line 504 "hexc/hextiling.glsl"
+    c = _1699;
+#line 505 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 480 "hexc/hextiling.glsl"
+#line 505 "hexc/hextiling.glsl"
         HexcTap param_2 = t.tap[0];
         float param_3 = lod.x;
         bool param_4 = sharedLod;
         c[0] = hexcFetch(tex, samp, param_2, param_3, param_4);
     }
-#line 481 "hexc/hextiling.glsl"
+#line 506 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 481 "hexc/hextiling.glsl"
+#line 506 "hexc/hextiling.glsl"
         HexcTap param_5 = t.tap[1];
         float param_6 = lod.y;
         bool param_7 = sharedLod;
         c[1] = hexcFetch(tex, samp, param_5, param_6, param_7);
     }
-#line 482 "hexc/hextiling.glsl"
+#line 507 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 482 "hexc/hextiling.glsl"
+#line 507 "hexc/hextiling.glsl"
         HexcTap param_8 = t.tap[2];
         float param_9 = lod.z;
         bool param_10 = sharedLod;
@@ -806,160 +840,160 @@ void hexcFetchTaps(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 
     }
 }
 
-#line 342 "hexc/hextiling.glsl"
+#line 368 "hexc/hextiling.glsl"
 float3 hexcGain3(float3 x, float r, int kInt)
 {
-#line 342 "hexc/hextiling.glsl"
+#line 368 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
     float3 res = hexcGainCurve(param, param_1, param_2);
-#line 343 "hexc/hextiling.glsl"
+#line 369 "hexc/hextiling.glsl"
     return res / ((res.x + res.y) + res.z).xxx;
 }
 
-#line 375 "hexc/hextiling.glsl"
+#line 401 "hexc/hextiling.glsl"
 float3 hexcBlendWeights(float3 w, float3 Dw, HexcBlend b)
 {
-#line 375 "hexc/hextiling.glsl"
-    float3 _1093;
+#line 401 "hexc/hextiling.glsl"
+    float3 _1161;
     if (b.exponentInt > 0)
     {
-#line 375 "hexc/hextiling.glsl"
+#line 401 "hexc/hextiling.glsl"
         float3 param = w;
         int param_1 = b.exponentInt;
-        float3 _1101 = hexcPowInt(param, param_1);
-        _1093 = _1101;
+        float3 _1169 = hexcPowInt(param, param_1);
+        _1161 = _1169;
     }
     else
     {
-#line 375 "hexc/hextiling.glsl"
-        _1093 = pow(w, b.exponent.xxx);
+#line 401 "hexc/hextiling.glsl"
+        _1161 = pow(w, b.exponent.xxx);
     }
-    float3 wg = _1093;
-#line 376 "hexc/hextiling.glsl"
-    float3 _1112;
+    float3 wg = _1161;
+#line 402 "hexc/hextiling.glsl"
+    float3 _1180;
     if (b.metric)
     {
-#line 376 "hexc/hextiling.glsl"
-        _1112 = lerp(1.0f.xxx, max(Dw, 0.0f.xxx), b.falloffContrast.xxx) * wg;
+#line 402 "hexc/hextiling.glsl"
+        _1180 = lerp(1.0f.xxx, max(Dw, 0.0f.xxx), b.falloffContrast.xxx) * wg;
     }
     else
     {
-        _1112 = wg;
+        _1180 = wg;
     }
-    float3 W = _1112;
-#line 377 "hexc/hextiling.glsl"
+    float3 W = _1180;
+#line 403 "hexc/hextiling.glsl"
     float sum = (W.x + W.y) + W.z;
-#line 378 "hexc/hextiling.glsl"
-    float3 _1137;
+#line 404 "hexc/hextiling.glsl"
+    float3 _1205;
     if (sum > 0.0f)
     {
-#line 378 "hexc/hextiling.glsl"
-        _1137 = W / sum.xxx;
+#line 404 "hexc/hextiling.glsl"
+        _1205 = W / sum.xxx;
     }
     else
     {
-#line 378 "hexc/hextiling.glsl"
-        _1137 = wg / ((wg.x + wg.y) + wg.z).xxx;
+#line 404 "hexc/hextiling.glsl"
+        _1205 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1137;
-#line 379 "hexc/hextiling.glsl"
-    bool _1171;
+    W = _1205;
+#line 405 "hexc/hextiling.glsl"
+    bool _1239;
     if (b.gain)
     {
-#line 379 "hexc/hextiling.glsl"
-        bool _1163 = b.gainInt > 0;
-        bool _1170;
-        if (!_1163)
+#line 405 "hexc/hextiling.glsl"
+        bool _1231 = b.gainInt > 0;
+        bool _1238;
+        if (!_1231)
         {
-#line 379 "hexc/hextiling.glsl"
-            _1170 = b.falloff != 0.5f;
+#line 405 "hexc/hextiling.glsl"
+            _1238 = b.falloff != 0.5f;
         }
         else
         {
-            _1170 = _1163;
+            _1238 = _1231;
         }
-        _1171 = _1170;
+        _1239 = _1238;
     }
     else
     {
-        _1171 = b.gain;
+        _1239 = b.gain;
     }
-    if (_1171)
+    if (_1239)
     {
-#line 379 "hexc/hextiling.glsl"
+#line 405 "hexc/hextiling.glsl"
         float3 param_2 = W;
         float param_3 = b.falloff;
         int param_4 = b.gainInt;
         W = hexcGain3(param_2, param_3, param_4);
     }
-#line 380 "hexc/hextiling.glsl"
+#line 406 "hexc/hextiling.glsl"
     return W;
 }
 
-#line 488 "hexc/hextiling.glsl"
+#line 513 "hexc/hextiling.glsl"
 float3 hexcTileHeights(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlend b)
 {
-#line 488 "hexc/hextiling.glsl"
+#line 513 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool3 param_1 = bool3(true, true, b.taps > 2);
     bool param_2 = b.sharedLod;
     float4 param_3[3];
     hexcFetchTaps(tex, samp, param, param_1, param_2, param_3);
     float4 h[3] = param_3;
-#line 489 "hexc/hextiling.glsl"
+#line 514 "hexc/hextiling.glsl"
     return float3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
 }
 
-#line 444 "hexc/hextiling.glsl"
+#line 470 "hexc/hextiling.glsl"
 float3 hexcHeightBlend(float3 W, float3 h, float width)
 {
-#line 444 "hexc/hextiling.glsl"
+#line 470 "hexc/hextiling.glsl"
     float3 a = max(h, 0.0f.xxx) * W;
-#line 445 "hexc/hextiling.glsl"
+#line 471 "hexc/hextiling.glsl"
     float3 Wh = W * max((a - max(max(a.x, a.y), a.z).xxx) + width.xxx, 0.0f.xxx);
-#line 446 "hexc/hextiling.glsl"
+#line 472 "hexc/hextiling.glsl"
     return Wh / ((Wh.x + Wh.y) + Wh.z).xxx;
 }
 
-#line 88 "hexc/hextiling.glsl"
+#line 89 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 88 "hexc/hextiling.glsl"
-    int3 _440 = channel.x.xxx;
-    int3 _450 = channel.y.xxx;
 #line 89 "hexc/hextiling.glsl"
-    int3 _459 = channel.z.xxx;
-#line 88 "hexc/hextiling.glsl"
-    return ((float3(bool3(int3(0, 1, 2).x == _440.x, int3(0, 1, 2).y == _440.y, int3(0, 1, 2).z == _440.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _450.x, int3(0, 1, 2).y == _450.y, int3(0, 1, 2).z == _450.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _459.x, int3(0, 1, 2).y == _459.y, int3(0, 1, 2).z == _459.z)) * W.z);
+    int3 _444 = channel.x.xxx;
+    int3 _454 = channel.y.xxx;
+#line 90 "hexc/hextiling.glsl"
+    int3 _463 = channel.z.xxx;
+#line 89 "hexc/hextiling.glsl"
+    return ((float3(bool3(int3(0, 1, 2).x == _444.x, int3(0, 1, 2).y == _444.y, int3(0, 1, 2).z == _444.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _454.x, int3(0, 1, 2).y == _454.y, int3(0, 1, 2).z == _454.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _463.x, int3(0, 1, 2).y == _463.y, int3(0, 1, 2).z == _463.z)) * W.z);
 }
 
-#line 501 "hexc/hextiling.glsl"
+#line 526 "hexc/hextiling.glsl"
 float4 hexcColor(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlend b, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 501 "hexc/hextiling.glsl"
+#line 526 "hexc/hextiling.glsl"
     float3 param = t.w;
     HexcBlend param_1 = b;
     bool3 f = hexcFetched(param, param_1);
-#line 503 "hexc/hextiling.glsl"
+#line 528 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bool3 param_3 = f;
     bool param_4 = b.sharedLod;
     float4 param_5[3];
     hexcFetchTaps(tex, samp, param_2, param_3, param_4, param_5);
     float4 c[3] = param_5;
-#line 504 "hexc/hextiling.glsl"
+#line 529 "hexc/hextiling.glsl"
     float3 Dw = float3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
-#line 505 "hexc/hextiling.glsl"
+#line 530 "hexc/hextiling.glsl"
     float3 param_6 = t.w * float3(f);
     float3 param_7 = Dw;
     HexcBlend param_8 = b;
     float3 W = hexcBlendWeights(param_6, param_7, param_8);
-#line 506 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
     if (b.height)
     {
-#line 506 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
         HexcTiles param_9 = t;
         HexcBlend param_10 = b;
         float3 param_11 = W;
@@ -967,11 +1001,11 @@ float4 hexcColor(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlen
         float param_13 = b.heightWidth;
         W = hexcHeightBlend(param_11, param_12, param_13);
     }
-#line 507 "hexc/hextiling.glsl"
+#line 532 "hexc/hextiling.glsl"
     float3 param_14 = W;
     int3 param_15 = t.channel;
     weights = hexcShowWeights(param_14, param_15);
-#line 508 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
@@ -1022,9 +1056,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcBlend param_6 = blend;
     float4 param_7 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_8;
-    float4 _2106 = hexcColor(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
+    float4 _2164 = hexcColor(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
     weights = param_8;
-    return _2106;
+    return _2164;
 }
 
 #line 41 "hexc/generated"
@@ -1038,9 +1072,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _2126 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _2184 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2126;
+    return _2184;
 }
 
 #line 44 "hexc/generated"
@@ -1049,38 +1083,38 @@ float4 hexc_albedo(float2 uv)
 #line 44 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _2134 = hexc_albedo(param, param_1);
+    float4 _2192 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _2134;
+    return _2192;
 }
 
-#line 495 "hexc/hextiling.glsl"
+#line 520 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
-#line 495 "hexc/hextiling.glsl"
-    float4 _1719;
+#line 520 "hexc/hextiling.glsl"
+    float4 _1777;
     if (c == 0)
     {
-        _1719 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _1777 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-#line 495 "hexc/hextiling.glsl"
-        float4 _1726;
+#line 520 "hexc/hextiling.glsl"
+        float4 _1784;
         if (c == 1)
         {
-            _1726 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _1784 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-#line 495 "hexc/hextiling.glsl"
-            bool4 _1736 = (c == 2).xxxx;
-            _1726 = float4(_1736.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _1736.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _1736.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _1736.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+#line 520 "hexc/hextiling.glsl"
+            bool4 _1794 = (c == 2).xxxx;
+            _1784 = float4(_1794.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _1794.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _1794.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _1794.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _1719 = _1726;
+        _1777 = _1784;
     }
-#line 495 "hexc/hextiling.glsl"
-    return _1719;
+#line 520 "hexc/hextiling.glsl"
+    return _1777;
 }
 
 #line 73 "hexc/generated"
@@ -1131,9 +1165,9 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     HexcBlend param_7 = blend;
     float4 param_8 = hexcChannel(param_5);
     float3 param_9;
-    float4 _2251 = hexcColor(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
+    float4 _2309 = hexcColor(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
     weights = param_9;
-    return _2251.x;
+    return _2309.x;
 }
 
 #line 94 "hexc/generated"
@@ -1147,9 +1181,9 @@ float hexc_roughness(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float _2271 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _2329 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2271;
+    return _2329;
 }
 
 #line 97 "hexc/generated"
@@ -1158,85 +1192,85 @@ float hexc_roughness(float2 uv)
 #line 97 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _2279 = hexc_roughness(param, param_1);
+    float _2337 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _2279;
+    return _2337;
 }
 
-#line 545 "hexc/hextiling.glsl"
+#line 570 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 545 "hexc/hextiling.glsl"
+#line 570 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
-#line 546 "hexc/hextiling.glsl"
+#line 571 "hexc/hextiling.glsl"
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-#line 547 "hexc/hextiling.glsl"
-    float _1848;
+#line 572 "hexc/hextiling.glsl"
+    float _1906;
     if (flipY)
     {
-#line 547 "hexc/hextiling.glsl"
-        _1848 = -vM.y;
+#line 572 "hexc/hextiling.glsl"
+        _1906 = -vM.y;
     }
     else
     {
-#line 547 "hexc/hextiling.glsl"
-        _1848 = vM.y;
+#line 572 "hexc/hextiling.glsl"
+        _1906 = vM.y;
     }
-#line 547 "hexc/hextiling.glsl"
-    return (-float2(vM.x, _1848)) / zMa.xx;
+#line 572 "hexc/hextiling.glsl"
+    return (-float2(vM.x, _1906)) / zMa.xx;
 }
 
-#line 102 "hexc/hextiling.glsl"
+#line 103 "hexc/hextiling.glsl"
 float2 hexcRotateFromTile(float2 d, float2 cs)
 {
-#line 102 "hexc/hextiling.glsl"
+#line 103 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 553 "hexc/hextiling.glsl"
+#line 578 "hexc/hextiling.glsl"
 float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 553 "hexc/hextiling.glsl"
+#line 578 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0f) - 1.0f.xxx;
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1881;
+    float2 _1939;
     if (scaled)
     {
-#line 554 "hexc/hextiling.glsl"
-        _1881 = d * p.invScale;
+#line 579 "hexc/hextiling.glsl"
+        _1939 = d * p.invScale;
     }
     else
     {
-        _1881 = d;
+        _1939 = d;
     }
-#line 554 "hexc/hextiling.glsl"
-    return _1881;
+#line 579 "hexc/hextiling.glsl"
+    return _1939;
 }
 
-#line 561 "hexc/hextiling.glsl"
+#line 586 "hexc/hextiling.glsl"
 float2 hexcDeriv(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlend b, bool flipY, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 561 "hexc/hextiling.glsl"
+#line 586 "hexc/hextiling.glsl"
     float3 param = t.w;
     HexcBlend param_1 = b;
     bool3 f = hexcFetched(param, param_1);
-#line 562 "hexc/hextiling.glsl"
+#line 587 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bool param_3 = b.sharedLod;
     float3 lod = hexcTileLods(tex, samp, param_2, param_3);
-#line 563 "hexc/hextiling.glsl"
+#line 588 "hexc/hextiling.glsl"
     float2 d1 = 0.0f.xx;
     float2 d2 = 0.0f.xx;
     float2 d3 = 0.0f.xx;
-#line 564 "hexc/hextiling.glsl"
+#line 589 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 564 "hexc/hextiling.glsl"
+#line 589 "hexc/hextiling.glsl"
         HexcTap param_4 = t.tap[0];
         float param_5 = lod.x;
         bool param_6 = b.sharedLod;
@@ -1246,10 +1280,10 @@ float2 hexcDeriv(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlen
         bool param_10 = flipY;
         d1 = hexcTapDeriv(param_7, param_8, param_9, param_10);
     }
-#line 565 "hexc/hextiling.glsl"
+#line 590 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 565 "hexc/hextiling.glsl"
+#line 590 "hexc/hextiling.glsl"
         HexcTap param_11 = t.tap[1];
         float param_12 = lod.y;
         bool param_13 = b.sharedLod;
@@ -1259,10 +1293,10 @@ float2 hexcDeriv(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlen
         bool param_17 = flipY;
         d2 = hexcTapDeriv(param_14, param_15, param_16, param_17);
     }
-#line 566 "hexc/hextiling.glsl"
+#line 591 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 566 "hexc/hextiling.glsl"
+#line 591 "hexc/hextiling.glsl"
         HexcTap param_18 = t.tap[2];
         float param_19 = lod.z;
         bool param_20 = b.sharedLod;
@@ -1272,17 +1306,17 @@ float2 hexcDeriv(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlen
         bool param_24 = flipY;
         d3 = hexcTapDeriv(param_21, param_22, param_23, param_24);
     }
-#line 567 "hexc/hextiling.glsl"
+#line 592 "hexc/hextiling.glsl"
     float3 D = float3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-#line 568 "hexc/hextiling.glsl"
+#line 593 "hexc/hextiling.glsl"
     float3 param_25 = t.w * float3(f);
     float3 param_26 = sqrt(D / (1.0f.xxx + D));
     HexcBlend param_27 = b;
     float3 W = hexcBlendWeights(param_25, param_26, param_27);
-#line 569 "hexc/hextiling.glsl"
+#line 594 "hexc/hextiling.glsl"
     if (b.height)
     {
-#line 569 "hexc/hextiling.glsl"
+#line 594 "hexc/hextiling.glsl"
         HexcTiles param_28 = t;
         HexcBlend param_29 = b;
         float3 param_30 = W;
@@ -1290,11 +1324,11 @@ float2 hexcDeriv(Texture2D<float4> tex, SamplerState samp, HexcTiles t, HexcBlen
         float param_32 = b.heightWidth;
         W = hexcHeightBlend(param_30, param_31, param_32);
     }
-#line 570 "hexc/hextiling.glsl"
+#line 595 "hexc/hextiling.glsl"
     float3 param_33 = W;
     int3 param_34 = t.channel;
     weights = hexcShowWeights(param_33, param_34);
-#line 571 "hexc/hextiling.glsl"
+#line 596 "hexc/hextiling.glsl"
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
@@ -1345,9 +1379,9 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcBlend param_6 = blend;
     bool param_7 = false;
     float3 param_8;
-    float2 _2178 = hexcDeriv(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
+    float2 _2236 = hexcDeriv(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
     weights = param_8;
-    return _2178;
+    return _2236;
 }
 
 #line 67 "hexc/generated"
@@ -1361,9 +1395,9 @@ float2 hexc_normal(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float2 _2197 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    float2 _2255 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2197;
+    return _2255;
 }
 
 #line 70 "hexc/generated"
@@ -1372,15 +1406,15 @@ float2 hexc_normal(float2 uv)
 #line 70 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _2205 = hexc_normal(param, param_1);
+    float2 _2263 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _2205;
+    return _2263;
 }
 
-#line 623 "hexc/hextiling.glsl"
+#line 648 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 623 "hexc/hextiling.glsl"
+#line 648 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

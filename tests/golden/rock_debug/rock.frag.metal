@@ -65,6 +65,7 @@ struct HexcLattice
     int2 offsetSteps;
     int maskScale;
     short triple;
+    float aspect;
 };
 
 struct HexcTap
@@ -80,6 +81,8 @@ struct HexcTiles
 {
     float3 w;
     short scaled;
+    float2 dx;
+    float2 dy;
     spvUnsafeArray<int2, 3> id;
     spvUnsafeArray<HexcTap, 3> tap;
     int3 channel;
@@ -112,7 +115,7 @@ struct HexcParams
     float roughness_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1641 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1699 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct rock_frag_out
 {
@@ -126,183 +129,210 @@ struct rock_frag_in
     float4 v_tangent [[user(locn2)]];
 };
 
-#line 125 "hexc/hextiling.glsl"
+#line 127 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcLattice hexcLattice()
 {
-#line 125 "hexc/hextiling.glsl"
-    return HexcLattice{ 0.0, false, false, float2(-180.0, 180.0), 0, float2(1.0), 1.0, int2(0), 1, false };
+#line 127 "hexc/hextiling.glsl"
+    return HexcLattice{ 0.0, false, false, float2(-180.0, 180.0), 0, float2(1.0), 1.0, int2(0), 1, false, 1.0 };
 }
 
-#line 368 "hexc/hextiling.glsl"
+#line 394 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcBlend hexcBlend()
 {
-#line 368 "hexc/hextiling.glsl"
+#line 394 "hexc/hextiling.glsl"
     return HexcBlend{ 0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, 0.0039215688593685626983642578125, false, float4(0.0), 1.0 };
 }
 
-#line 34 "hexc/hextiling.glsl"
+#line 35 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsafeArray<int2, 3>& id)
 {
-#line 34 "hexc/hextiling.glsl"
-    int2 baseId = int2(floor(skewed));
 #line 35 "hexc/hextiling.glsl"
-    float3 temp = float3(skewed - floor(skewed), 0.0);
+    int2 baseId = int2(floor(skewed));
 #line 36 "hexc/hextiling.glsl"
-    temp.z = (1.0 - temp.x) - temp.y;
+    float3 temp = float3(skewed - floor(skewed), 0.0);
 #line 37 "hexc/hextiling.glsl"
-    float s = step(0.0, -temp.z);
+    temp.z = (1.0 - temp.x) - temp.y;
 #line 38 "hexc/hextiling.glsl"
-    float s2 = (2.0 * s) - 1.0;
+    float s = step(0.0, -temp.z);
 #line 39 "hexc/hextiling.glsl"
-    w = float3((-temp.z) * s2, s - (temp.y * s2), s - (temp.x * s2));
+    float s2 = (2.0 * s) - 1.0;
 #line 40 "hexc/hextiling.glsl"
-    int si = int(s);
+    w = float3((-temp.z) * s2, s - (temp.y * s2), s - (temp.x * s2));
 #line 41 "hexc/hextiling.glsl"
-    id[0] = baseId + int2(si, si);
+    int si = int(s);
 #line 42 "hexc/hextiling.glsl"
-    id[1] = baseId + int2(si, 1 - si);
+    id[0] = baseId + int2(si, si);
 #line 43 "hexc/hextiling.glsl"
+    id[1] = baseId + int2(si, 1 - si);
+#line 44 "hexc/hextiling.glsl"
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 197 "hexc/hextiling.glsl"
+#line 203 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 197 "hexc/hextiling.glsl"
+#line 203 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 166 "hexc/hextiling.glsl"
+#line 210 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+float2 hexcStableCentreInPeriod(thread const int2& local)
+{
+#line 210 "hexc/hextiling.glsl"
+    return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
+}
+
+#line 172 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 166 "hexc/hextiling.glsl"
-    v = (v * uint3(1664525u)) + uint3(1013904223u);
-#line 167 "hexc/hextiling.glsl"
-    v.x += (v.y * v.z);
-#line 168 "hexc/hextiling.glsl"
-    v.y += (v.z * v.x);
-#line 169 "hexc/hextiling.glsl"
-    v.z += (v.x * v.y);
-#line 170 "hexc/hextiling.glsl"
-    v ^= (v >> uint3(16u));
-#line 171 "hexc/hextiling.glsl"
-    v.x += (v.y * v.z);
 #line 172 "hexc/hextiling.glsl"
-    v.y += (v.z * v.x);
+    v = (v * uint3(1664525u)) + uint3(1013904223u);
 #line 173 "hexc/hextiling.glsl"
-    v.z += (v.x * v.y);
+    v.x += (v.y * v.z);
 #line 174 "hexc/hextiling.glsl"
+    v.y += (v.z * v.x);
+#line 175 "hexc/hextiling.glsl"
+    v.z += (v.x * v.y);
+#line 176 "hexc/hextiling.glsl"
+    v ^= (v >> uint3(16u));
+#line 177 "hexc/hextiling.glsl"
+    v.x += (v.y * v.z);
+#line 178 "hexc/hextiling.glsl"
+    v.y += (v.z * v.x);
+#line 179 "hexc/hextiling.glsl"
+    v.z += (v.x * v.y);
+#line 180 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 180 "hexc/hextiling.glsl"
+#line 186 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcStableTile(thread const int2& id, thread const HexcLattice& l, thread float2& offset, thread float2& rot, thread float& invScale)
 {
-#line 180 "hexc/hextiling.glsl"
+#line 186 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _586 = hexcPcg3d(param);
-    float3 u = float3(_586 >> uint3(8u)) * 5.9604644775390625e-08;
-#line 181 "hexc/hextiling.glsl"
+    uint3 _590 = hexcPcg3d(param);
+    float3 u = float3(_590 >> uint3(8u)) * 5.9604644775390625e-08;
+#line 187 "hexc/hextiling.glsl"
     offset = u.xy;
-#line 182 "hexc/hextiling.glsl"
+#line 188 "hexc/hextiling.glsl"
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * l.rotation;
-#line 183 "hexc/hextiling.glsl"
+#line 189 "hexc/hextiling.glsl"
     invScale = 1.0;
-#line 184 "hexc/hextiling.glsl"
+#line 190 "hexc/hextiling.glsl"
     if (bool(l.transform))
     {
-#line 185 "hexc/hextiling.glsl"
+#line 191 "hexc/hextiling.glsl"
         float2 steps = float2(l.offsetSteps);
-#line 186 "hexc/hextiling.glsl"
+#line 192 "hexc/hextiling.glsl"
         offset = select(offset, floor(offset * steps) / steps, steps > float2(0.0)) * l.offset;
-#line 187 "hexc/hextiling.glsl"
-        float _635;
+#line 193 "hexc/hextiling.glsl"
+        float _639;
         if (l.rotationSteps > 0)
         {
-#line 187 "hexc/hextiling.glsl"
-            _635 = floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps);
+#line 193 "hexc/hextiling.glsl"
+            _639 = floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps);
         }
         else
         {
-#line 187 "hexc/hextiling.glsl"
-            _635 = u.z;
+#line 193 "hexc/hextiling.glsl"
+            _639 = u.z;
         }
-        float a = _635;
-#line 188 "hexc/hextiling.glsl"
+        float a = _639;
+#line 194 "hexc/hextiling.glsl"
         angle = radians(mix(l.rotationRange.x, l.rotationRange.y, a)) * l.rotation;
-#line 189 "hexc/hextiling.glsl"
+#line 195 "hexc/hextiling.glsl"
         uint3 param_1 = uint3(uint2(id), 1u);
-        uint3 _670 = hexcPcg3d(param_1);
-        float v = float(_670.x >> 8u) * 5.9604644775390625e-08;
-#line 190 "hexc/hextiling.glsl"
+        uint3 _674 = hexcPcg3d(param_1);
+        float v = float(_674.x >> 8u) * 5.9604644775390625e-08;
+#line 196 "hexc/hextiling.glsl"
         invScale = 1.0 / mix(l.scaleRange.x, l.scaleRange.y, v);
     }
-#line 192 "hexc/hextiling.glsl"
-    float2 _685;
+#line 198 "hexc/hextiling.glsl"
+    float2 _689;
     if (bool(l.rotate))
     {
-#line 192 "hexc/hextiling.glsl"
-        _685 = float2(cos(angle), sin(angle));
+#line 198 "hexc/hextiling.glsl"
+        _689 = float2(cos(angle), sin(angle));
     }
     else
     {
-        _685 = float2(1.0, 0.0);
+        _689 = float2(1.0, 0.0);
     }
-    rot = _685;
+    rot = _689;
 }
 
-#line 94 "hexc/hextiling.glsl"
+#line 95 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 94 "hexc/hextiling.glsl"
+#line 95 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 202 "hexc/hextiling.glsl"
+#line 216 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile(thread float2& v, thread const HexcTap& p, thread const HexcLattice& l)
 {
-#line 202 "hexc/hextiling.glsl"
-    float2 _717;
+#line 216 "hexc/hextiling.glsl"
     if (bool(l.rotate))
     {
-#line 202 "hexc/hextiling.glsl"
-        float2 param = v;
+#line 217 "hexc/hextiling.glsl"
+        bool square = l.aspect == 1.0;
+#line 218 "hexc/hextiling.glsl"
+        float2 _753;
+        if (square)
+        {
+            _753 = v;
+        }
+        else
+        {
+#line 218 "hexc/hextiling.glsl"
+            _753 = float2(v.x * l.aspect, v.y);
+        }
+#line 218 "hexc/hextiling.glsl"
+        float2 param = _753;
         float2 param_1 = p.rot;
-        _717 = hexcRotateToTile(param, param_1);
+        v = hexcRotateToTile(param, param_1);
+#line 219 "hexc/hextiling.glsl"
+        float2 _773;
+        if (square)
+        {
+            _773 = v;
+        }
+        else
+        {
+#line 219 "hexc/hextiling.glsl"
+            _773 = float2(v.x / l.aspect, v.y);
+        }
+        v = _773;
     }
-    else
-    {
-        _717 = v;
-    }
-    v = _717;
-#line 203 "hexc/hextiling.glsl"
-    float2 _731;
+#line 221 "hexc/hextiling.glsl"
+    float2 _789;
     if (bool(l.transform))
     {
-#line 203 "hexc/hextiling.glsl"
-        _731 = v * p.invScale;
+#line 221 "hexc/hextiling.glsl"
+        _789 = v * p.invScale;
     }
     else
     {
-        _731 = v;
+        _789 = v;
     }
-#line 203 "hexc/hextiling.glsl"
-    return _731;
+#line 221 "hexc/hextiling.glsl"
+    return _789;
 }
 
-#line 211 "hexc/hextiling.glsl"
+#line 230 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile(thread const int2& id, thread const float2& d, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l)
+HexcTap hexcPlaceTile(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l)
 {
-#line 211 "hexc/hextiling.glsl"
+#line 230 "hexc/hextiling.glsl"
     int2 param = id;
     HexcLattice param_1 = l;
     float2 param_2;
@@ -313,105 +343,111 @@ HexcTap hexcPlaceTile(thread const int2& id, thread const float2& d, thread cons
     HexcTap p;
     p.rot = param_3;
     p.invScale = param_4;
-#line 212 "hexc/hextiling.glsl"
+#line 231 "hexc/hextiling.glsl"
     float2 param_5 = d;
     HexcTap param_6 = p;
     HexcLattice param_7 = l;
-    float2 _764 = hexcToTile(param_5, param_6, param_7);
-    p.st = _764 + offset;
-#line 213 "hexc/hextiling.glsl"
+    float2 _822 = hexcToTile(param_5, param_6, param_7);
+    p.st = (_822 + c) + offset;
+#line 232 "hexc/hextiling.glsl"
     float2 param_8 = dSTdx;
     HexcTap param_9 = p;
     HexcLattice param_10 = l;
-    float2 _774 = hexcToTile(param_8, param_9, param_10);
-    p.dx = _774;
-#line 214 "hexc/hextiling.glsl"
+    float2 _834 = hexcToTile(param_8, param_9, param_10);
+    p.dx = _834;
+#line 233 "hexc/hextiling.glsl"
     float2 param_11 = dSTdy;
     HexcTap param_12 = p;
     HexcLattice param_13 = l;
-    float2 _782 = hexcToTile(param_11, param_12, param_13);
-    p.dy = _782;
-#line 215 "hexc/hextiling.glsl"
+    float2 _842 = hexcToTile(param_11, param_12, param_13);
+    p.dy = _842;
+#line 234 "hexc/hextiling.glsl"
     return p;
 }
 
-#line 221 "hexc/hextiling.glsl"
+#line 240 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcStableTap(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l, thread int2& id)
 {
-#line 221 "hexc/hextiling.glsl"
+#line 240 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
-#line 222 "hexc/hextiling.glsl"
+#line 241 "hexc/hextiling.glsl"
     int2 param = local;
-    int2 param_1 = id;
-    float2 param_2 = r - hexcStableCentre(param);
-    float2 param_3 = dSTdx;
-    float2 param_4 = dSTdy;
-    HexcLattice param_5 = l;
-    return hexcPlaceTile(param_1, param_2, param_3, param_4, param_5);
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    HexcLattice param_7 = l;
+    return hexcPlaceTile(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 78 "hexc/hextiling.glsl"
+#line 79 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 78 "hexc/hextiling.glsl"
-    int d = v1.x - v1.y;
 #line 79 "hexc/hextiling.glsl"
-    int a = abs(d) % 3;
+    int d = v1.x - v1.y;
 #line 80 "hexc/hextiling.glsl"
-    int _387;
+    int a = abs(d) % 3;
+#line 81 "hexc/hextiling.glsl"
+    int _391;
     if ((d < 0) && (a != 0))
     {
-#line 80 "hexc/hextiling.glsl"
-        _387 = 3 - a;
+#line 81 "hexc/hextiling.glsl"
+        _391 = 3 - a;
     }
     else
     {
-        _387 = a;
+        _391 = a;
     }
-    int i1 = _387;
-#line 81 "hexc/hextiling.glsl"
-    int _398;
+    int i1 = _391;
+#line 82 "hexc/hextiling.glsl"
+    int _402;
     if (i1 < 2)
     {
-#line 81 "hexc/hextiling.glsl"
-        _398 = i1 + 1;
+#line 82 "hexc/hextiling.glsl"
+        _402 = i1 + 1;
     }
     else
     {
-        _398 = 0;
+        _402 = 0;
     }
-    int vh = _398;
-#line 82 "hexc/hextiling.glsl"
-    int _408;
+    int vh = _402;
+#line 83 "hexc/hextiling.glsl"
+    int _412;
     if (i1 > 0)
     {
-#line 82 "hexc/hextiling.glsl"
-        _408 = i1 - 1;
+#line 83 "hexc/hextiling.glsl"
+        _412 = i1 - 1;
     }
     else
     {
-        _408 = 2;
+        _412 = 2;
     }
-    int vl = _408;
-#line 83 "hexc/hextiling.glsl"
+    int vl = _412;
+#line 84 "hexc/hextiling.glsl"
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 230 "hexc/hextiling.glsl"
+#line 249 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, thread const HexcLattice& l)
 {
-#line 230 "hexc/hextiling.glsl"
+#line 249 "hexc/hextiling.glsl"
     HexcTiles t;
+    t.dx = dSTdx;
+#line 250 "hexc/hextiling.glsl"
+    t.dy = dSTdy;
+#line 251 "hexc/hextiling.glsl"
     t.scaled = short(bool(l.transform));
-#line 233 "hexc/hextiling.glsl"
+#line 254 "hexc/hextiling.glsl"
     float kx = floor(st.x / 28.0);
     float ky = floor(st.y);
-#line 234 "hexc/hextiling.glsl"
+#line 255 "hexc/hextiling.glsl"
     float2 r = float2(st.x - (28.0 * kx), st.y - ky);
-#line 236 "hexc/hextiling.glsl"
+#line 257 "hexc/hextiling.glsl"
     float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
     float3 param_1;
     spvUnsafeArray<int2, 3> param_2;
@@ -419,11 +455,11 @@ HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, t
     t.w = param_1;
     spvUnsafeArray<int2, 3> local;
     local = param_2;
-#line 237 "hexc/hextiling.glsl"
+#line 258 "hexc/hextiling.glsl"
     uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-#line 238 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
     uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-#line 239 "hexc/hextiling.glsl"
+#line 260 "hexc/hextiling.glsl"
     int2 param_3 = local[0];
     uint2 param_4 = shift;
     float2 param_5 = r;
@@ -431,10 +467,10 @@ HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, t
     float2 param_7 = dSTdy;
     HexcLattice param_8 = l;
     int2 param_9;
-    HexcTap _892 = hexcStableTap(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
+    HexcTap _960 = hexcStableTap(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
     t.id[0] = param_9;
-    t.tap[0] = _892;
-#line 240 "hexc/hextiling.glsl"
+    t.tap[0] = _960;
+#line 261 "hexc/hextiling.glsl"
     int2 param_10 = local[1];
     uint2 param_11 = shift;
     float2 param_12 = r;
@@ -442,10 +478,10 @@ HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, t
     float2 param_14 = dSTdy;
     HexcLattice param_15 = l;
     int2 param_16;
-    HexcTap _910 = hexcStableTap(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
+    HexcTap _978 = hexcStableTap(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
     t.id[1] = param_16;
-    t.tap[1] = _910;
-#line 241 "hexc/hextiling.glsl"
+    t.tap[1] = _978;
+#line 262 "hexc/hextiling.glsl"
     int2 param_17 = local[2];
     uint2 param_18 = shift;
     float2 param_19 = r;
@@ -453,401 +489,400 @@ HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, t
     float2 param_21 = dSTdy;
     HexcLattice param_22 = l;
     int2 param_23;
-    HexcTap _928 = hexcStableTap(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
+    HexcTap _996 = hexcStableTap(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
     t.id[2] = param_23;
-    t.tap[2] = _928;
-#line 242 "hexc/hextiling.glsl"
+    t.tap[2] = _996;
+#line 263 "hexc/hextiling.glsl"
     int2 param_24 = t.id[0];
     int2 param_25 = t.id[2];
     t.channel = hexcHexChannels(param_24, param_25);
-#line 243 "hexc/hextiling.glsl"
+#line 264 "hexc/hextiling.glsl"
     return t;
 }
 
-#line 314 "hexc/hextiling.glsl"
+#line 340 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 314 "hexc/hextiling.glsl"
+#line 340 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
-#line 315 "hexc/hextiling.glsl"
+#line 341 "hexc/hextiling.glsl"
     if ((n & 1) != 0)
     {
-#line 315 "hexc/hextiling.glsl"
+#line 341 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 316 "hexc/hextiling.glsl"
+#line 342 "hexc/hextiling.glsl"
     x *= x;
-#line 317 "hexc/hextiling.glsl"
+#line 343 "hexc/hextiling.glsl"
     if ((n & 2) != 0)
     {
-#line 317 "hexc/hextiling.glsl"
+#line 343 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 318 "hexc/hextiling.glsl"
+#line 344 "hexc/hextiling.glsl"
     x *= x;
-#line 319 "hexc/hextiling.glsl"
+#line 345 "hexc/hextiling.glsl"
     if ((n & 4) != 0)
     {
-#line 319 "hexc/hextiling.glsl"
+#line 345 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 320 "hexc/hextiling.glsl"
+#line 346 "hexc/hextiling.glsl"
     x *= x;
-#line 321 "hexc/hextiling.glsl"
+#line 347 "hexc/hextiling.glsl"
     if ((n & 8) != 0)
     {
-#line 321 "hexc/hextiling.glsl"
+#line 347 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 322 "hexc/hextiling.glsl"
+#line 348 "hexc/hextiling.glsl"
     x *= x;
-#line 323 "hexc/hextiling.glsl"
+#line 349 "hexc/hextiling.glsl"
     if ((n & 16) != 0)
     {
-#line 323 "hexc/hextiling.glsl"
+#line 349 "hexc/hextiling.glsl"
         r *= x;
     }
-#line 324 "hexc/hextiling.glsl"
+#line 350 "hexc/hextiling.glsl"
     return r;
 }
 
-#line 330 "hexc/hextiling.glsl"
+#line 356 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcGainK(thread const float& r, thread const int& kInt)
 {
-#line 330 "hexc/hextiling.glsl"
-    float _1003;
+#line 356 "hexc/hextiling.glsl"
+    float _1071;
     if (kInt > 0)
     {
-#line 330 "hexc/hextiling.glsl"
-        _1003 = float(kInt);
+#line 356 "hexc/hextiling.glsl"
+        _1071 = float(kInt);
     }
     else
     {
-#line 330 "hexc/hextiling.glsl"
-        _1003 = log(1.0 - r) / (-0.693147182464599609375);
+#line 356 "hexc/hextiling.glsl"
+        _1071 = log(1.0 - r) / (-0.693147182464599609375);
     }
-#line 330 "hexc/hextiling.glsl"
-    return _1003;
+#line 356 "hexc/hextiling.glsl"
+    return _1071;
 }
 
-#line 334 "hexc/hextiling.glsl"
+#line 360 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 334 "hexc/hextiling.glsl"
+#line 360 "hexc/hextiling.glsl"
     float3 s = step(float3(0.5), x) * 2.0;
-#line 335 "hexc/hextiling.glsl"
+#line 361 "hexc/hextiling.glsl"
     float3 m = (float3(1.0) - s) * 2.0;
-#line 336 "hexc/hextiling.glsl"
+#line 362 "hexc/hextiling.glsl"
     float3 base = fast::max(float3(0.0), s + (x * m));
-#line 337 "hexc/hextiling.glsl"
-    float3 _1040;
+#line 363 "hexc/hextiling.glsl"
+    float3 _1108;
     if (kInt > 0)
     {
-#line 337 "hexc/hextiling.glsl"
+#line 363 "hexc/hextiling.glsl"
         float3 param = base;
         int param_1 = kInt;
-        float3 _1047 = hexcPowInt(param, param_1);
-        _1040 = _1047;
+        float3 _1115 = hexcPowInt(param, param_1);
+        _1108 = _1115;
     }
     else
     {
-#line 337 "hexc/hextiling.glsl"
+#line 363 "hexc/hextiling.glsl"
         float param_2 = r;
         int param_3 = kInt;
-        _1040 = pow(base, float3(hexcGainK(param_2, param_3)));
+        _1108 = pow(base, float3(hexcGainK(param_2, param_3)));
     }
-#line 337 "hexc/hextiling.glsl"
-    return (s * 0.5) + ((m * 0.25) * _1040);
+#line 363 "hexc/hextiling.glsl"
+    return (s * 0.5) + ((m * 0.25) * _1108);
 }
 
-#line 403 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcAdaptiveTaps(thread const float3& w, thread const HexcBlend& b)
 {
-#line 403 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     float3 wn = w / float3(fast::max(fast::max(w.x, w.y), fast::max(w.z, 1.0000000031710768509710513471353e-30)));
-#line 404 "hexc/hextiling.glsl"
-    float3 _1204;
+#line 430 "hexc/hextiling.glsl"
+    float3 _1272;
     if (b.exponentInt > 0)
     {
-#line 404 "hexc/hextiling.glsl"
+#line 430 "hexc/hextiling.glsl"
         float3 param = wn;
         int param_1 = b.exponentInt;
-        float3 _1212 = hexcPowInt(param, param_1);
-        _1204 = _1212;
+        float3 _1280 = hexcPowInt(param, param_1);
+        _1272 = _1280;
     }
     else
     {
-#line 404 "hexc/hextiling.glsl"
-        _1204 = pow(wn, float3(b.exponent));
+#line 430 "hexc/hextiling.glsl"
+        _1272 = pow(wn, float3(b.exponent));
     }
-    float3 wg = _1204;
-#line 405 "hexc/hextiling.glsl"
-    float _1223;
+    float3 wg = _1272;
+#line 431 "hexc/hextiling.glsl"
+    float _1291;
     if (bool(b.metric))
     {
-#line 405 "hexc/hextiling.glsl"
-        _1223 = b.falloffContrast;
+#line 431 "hexc/hextiling.glsl"
+        _1291 = b.falloffContrast;
     }
     else
     {
-        _1223 = 0.0;
+        _1291 = 0.0;
     }
-    float lo = 1.0 - _1223;
-#line 406 "hexc/hextiling.glsl"
+    float lo = 1.0 - _1291;
+#line 432 "hexc/hextiling.glsl"
     float3 others = float3((wg.x + wg.y) + wg.z) - wg;
-#line 407 "hexc/hextiling.glsl"
+#line 433 "hexc/hextiling.glsl"
     float3 U = wg / fast::max(wg + (others * lo), float3(1.0000000031710768509710513471353e-30));
-#line 408 "hexc/hextiling.glsl"
+#line 434 "hexc/hextiling.glsl"
     float3 L = (wg * lo) / fast::max((wg * lo) + others, float3(1.0000000031710768509710513471353e-30));
-#line 409 "hexc/hextiling.glsl"
+#line 435 "hexc/hextiling.glsl"
     float3 gU = U;
     float3 gL = L;
-#line 410 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
     float k = 0.0;
-#line 411 "hexc/hextiling.glsl"
-    bool _1283;
+#line 437 "hexc/hextiling.glsl"
+    bool _1351;
     if (bool(b.gain))
     {
-#line 411 "hexc/hextiling.glsl"
-        bool _1275 = b.gainInt > 0;
-        bool _1282;
-        if (!_1275)
+#line 437 "hexc/hextiling.glsl"
+        bool _1343 = b.gainInt > 0;
+        bool _1350;
+        if (!_1343)
         {
-#line 411 "hexc/hextiling.glsl"
-            _1282 = b.falloff != 0.5;
+#line 437 "hexc/hextiling.glsl"
+            _1350 = b.falloff != 0.5;
         }
         else
         {
-            _1282 = _1275;
+            _1350 = _1343;
         }
-        _1283 = _1282;
+        _1351 = _1350;
     }
     else
     {
-        _1283 = bool(b.gain);
+        _1351 = bool(b.gain);
     }
-    if (_1283)
+    if (_1351)
     {
-#line 412 "hexc/hextiling.glsl"
+#line 438 "hexc/hextiling.glsl"
         float3 param_2 = U;
         float param_3 = b.falloff;
         int param_4 = b.gainInt;
         gU = hexcGainCurve(param_2, param_3, param_4);
-#line 413 "hexc/hextiling.glsl"
+#line 439 "hexc/hextiling.glsl"
         float3 param_5 = L;
         float param_6 = b.falloff;
         int param_7 = b.gainInt;
         gL = hexcGainCurve(param_5, param_6, param_7);
-#line 414 "hexc/hextiling.glsl"
+#line 440 "hexc/hextiling.glsl"
         float param_8 = b.falloff;
         int param_9 = b.gainInt;
         k = hexcGainK(param_8, param_9);
     }
-#line 416 "hexc/hextiling.glsl"
+#line 442 "hexc/hextiling.glsl"
     float3 Gup = gU / fast::max((gU + float3((gL.x + gL.y) + gL.z)) - gL, float3(1.0000000031710768509710513471353e-30));
-#line 420 "hexc/hextiling.glsl"
+#line 446 "hexc/hextiling.glsl"
     if (k > 0.0)
     {
-#line 421 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
         float3 r1 = L.yzx / fast::max(U, float3(1.0000000031710768509710513471353e-30));
         float3 r2 = L.zxy / fast::max(U, float3(1.0000000031710768509710513471353e-30));
-#line 422 "hexc/hextiling.glsl"
-        float3 _1348;
+#line 448 "hexc/hextiling.glsl"
+        float3 _1416;
         if (b.gainInt > 0)
         {
-#line 422 "hexc/hextiling.glsl"
+#line 448 "hexc/hextiling.glsl"
             float3 param_10 = r1;
             int param_11 = b.gainInt;
-            float3 _1356 = hexcPowInt(param_10, param_11);
-            _1348 = _1356;
+            float3 _1424 = hexcPowInt(param_10, param_11);
+            _1416 = _1424;
         }
         else
         {
-#line 422 "hexc/hextiling.glsl"
-            _1348 = pow(r1, float3(k));
+#line 448 "hexc/hextiling.glsl"
+            _1416 = pow(r1, float3(k));
         }
-        float3 p1 = _1348;
-#line 423 "hexc/hextiling.glsl"
-        float3 _1367;
+        float3 p1 = _1416;
+#line 449 "hexc/hextiling.glsl"
+        float3 _1435;
         if (b.gainInt > 0)
         {
-#line 423 "hexc/hextiling.glsl"
+#line 449 "hexc/hextiling.glsl"
             float3 param_12 = r2;
             int param_13 = b.gainInt;
-            float3 _1375 = hexcPowInt(param_12, param_13);
-            _1367 = _1375;
+            float3 _1443 = hexcPowInt(param_12, param_13);
+            _1435 = _1443;
         }
         else
         {
-#line 423 "hexc/hextiling.glsl"
-            _1367 = pow(r2, float3(k));
+#line 449 "hexc/hextiling.glsl"
+            _1435 = pow(r2, float3(k));
         }
-        float3 p2 = _1367;
-#line 424 "hexc/hextiling.glsl"
+        float3 p2 = _1435;
+#line 450 "hexc/hextiling.glsl"
         Gup = select(Gup, float3(1.0) / ((float3(1.0) + p1) + p2), fast::max(U, fast::max(L.yzx, L.zxy)) < float3(0.5));
     }
-#line 427 "hexc/hextiling.glsl"
+#line 453 "hexc/hextiling.glsl"
     float3 B = Gup - (log(fast::max(float3(1.0) - U, float3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-#line 428 "hexc/hextiling.glsl"
-    bool _1415 = w.x >= w.y;
-    bool _1423;
-    if (_1415)
+#line 454 "hexc/hextiling.glsl"
+    bool _1483 = w.x >= w.y;
+    bool _1491;
+    if (_1483)
     {
-#line 428 "hexc/hextiling.glsl"
-        _1423 = w.x >= w.z;
+#line 454 "hexc/hextiling.glsl"
+        _1491 = w.x >= w.z;
     }
     else
     {
-        _1423 = _1415;
+        _1491 = _1483;
     }
-    int _1424;
-    if (_1423)
+    int _1492;
+    if (_1491)
     {
-        _1424 = 0;
+        _1492 = 0;
     }
     else
     {
-#line 428 "hexc/hextiling.glsl"
-        _1424 = (w.y >= w.z) ? 1 : 2;
+#line 454 "hexc/hextiling.glsl"
+        _1492 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1424;
-#line 429 "hexc/hextiling.glsl"
+    int d = _1492;
+#line 455 "hexc/hextiling.glsl"
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
-#line 430 "hexc/hextiling.glsl"
+#line 456 "hexc/hextiling.glsl"
     bool3 f = bool3(true);
-#line 431 "hexc/hextiling.glsl"
+#line 457 "hexc/hextiling.glsl"
     if ((Gup[a] + Gup[c]) < b.adaptiveError)
     {
-#line 432 "hexc/hextiling.glsl"
+#line 458 "hexc/hextiling.glsl"
         f[a] = false;
-#line 433 "hexc/hextiling.glsl"
+#line 459 "hexc/hextiling.glsl"
         f[c] = false;
     }
     else
     {
-#line 434 "hexc/hextiling.glsl"
+#line 460 "hexc/hextiling.glsl"
         if (fast::min(B[a], B[c]) < b.adaptiveError)
         {
-#line 435 "hexc/hextiling.glsl"
+#line 461 "hexc/hextiling.glsl"
             f[(B[a] <= B[c]) ? a : c] = false;
         }
     }
-#line 437 "hexc/hextiling.glsl"
+#line 463 "hexc/hextiling.glsl"
     return f;
 }
 
-#line 471 "hexc/hextiling.glsl"
+#line 496 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched(thread const float3& w, thread const HexcBlend& b)
 {
-#line 471 "hexc/hextiling.glsl"
-    bool3 _1619;
+#line 496 "hexc/hextiling.glsl"
+    bool3 _1677;
     if (bool(b.adaptive))
     {
-#line 471 "hexc/hextiling.glsl"
+#line 496 "hexc/hextiling.glsl"
         float3 param = w;
         HexcBlend param_1 = b;
-        _1619 = hexcAdaptiveTaps(param, param_1);
+        _1677 = hexcAdaptiveTaps(param, param_1);
     }
     else
     {
-#line 471 "hexc/hextiling.glsl"
-        _1619 = bool3(true, true, b.taps > 2);
+#line 496 "hexc/hextiling.glsl"
+        _1677 = bool3(true, true, b.taps > 2);
     }
-#line 471 "hexc/hextiling.glsl"
-    return _1619;
+#line 496 "hexc/hextiling.glsl"
+    return _1677;
 }
 
-#line 454 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& sharedLod)
 {
-#line 454 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
     if (!sharedLod)
     {
-#line 454 "hexc/hextiling.glsl"
+#line 480 "hexc/hextiling.glsl"
         return float3(0.0);
     }
-#line 455 "hexc/hextiling.glsl"
+#line 481 "hexc/hextiling.glsl"
     float2 size = float2(int2(tex.get_width(), tex.get_height()));
-#line 456 "hexc/hextiling.glsl"
-    HexcTap p = t.tap[0];
-#line 457 "hexc/hextiling.glsl"
-    float lod = 0.5 * log2(fast::max((fast::max(dot(p.dx, p.dx), dot(p.dy, p.dy)) * size.x) * size.y, 1.0000000031710768509710513471353e-30));
-#line 458 "hexc/hextiling.glsl"
-    float3 invScale = float3(p.invScale, t.tap[1].invScale, t.tap[2].invScale);
-#line 459 "hexc/hextiling.glsl"
-    float3 _1573;
+#line 482 "hexc/hextiling.glsl"
+    float2 ex = t.dx * size;
+    float2 ey = t.dy * size;
+#line 483 "hexc/hextiling.glsl"
+    float lod = 0.5 * log2(fast::max(fast::max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30));
+#line 484 "hexc/hextiling.glsl"
+    float3 _1629;
     if (bool(t.scaled))
     {
-#line 459 "hexc/hextiling.glsl"
-        _1573 = float3(lod) + log2(invScale / float3(p.invScale));
+#line 484 "hexc/hextiling.glsl"
+        _1629 = float3(lod) + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
     }
     else
     {
-#line 459 "hexc/hextiling.glsl"
-        _1573 = float3(lod);
+#line 484 "hexc/hextiling.glsl"
+        _1629 = float3(lod);
     }
-#line 459 "hexc/hextiling.glsl"
-    return _1573;
+#line 484 "hexc/hextiling.glsl"
+    return _1629;
 }
 
-#line 465 "hexc/hextiling.glsl"
+#line 490 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod, thread const bool& sharedLod)
 {
-    float4 _1592;
+    float4 _1650;
     if (sharedLod)
     {
-#line 465 "hexc/hextiling.glsl"
-        _1592 = tex.sample(samp, p.st, level(lod));
+#line 490 "hexc/hextiling.glsl"
+        _1650 = tex.sample(samp, p.st, level(lod));
     }
     else
     {
-#line 465 "hexc/hextiling.glsl"
-        _1592 = tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
+#line 490 "hexc/hextiling.glsl"
+        _1650 = tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
     }
-#line 465 "hexc/hextiling.glsl"
-    return _1592;
+#line 490 "hexc/hextiling.glsl"
+    return _1650;
 }
 
-#line 478 "hexc/hextiling.glsl"
+#line 503 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread const bool& sharedLod, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 478 "hexc/hextiling.glsl"
+#line 503 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool param_1 = sharedLod;
     float3 lod = hexcTileLods(tex, samp, param, param_1);
-#line 479 "hexc/hextiling.glsl"
-    c = _1641;
-#line 480 "hexc/hextiling.glsl"
+#line 504 "hexc/hextiling.glsl"
+    c = _1699;
+#line 505 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 480 "hexc/hextiling.glsl"
+#line 505 "hexc/hextiling.glsl"
         HexcTap param_2 = t.tap[0];
         float param_3 = lod.x;
         bool param_4 = sharedLod;
         c[0] = hexcFetch(tex, samp, param_2, param_3, param_4);
     }
-#line 481 "hexc/hextiling.glsl"
+#line 506 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 481 "hexc/hextiling.glsl"
+#line 506 "hexc/hextiling.glsl"
         HexcTap param_5 = t.tap[1];
         float param_6 = lod.y;
         bool param_7 = sharedLod;
         c[1] = hexcFetch(tex, samp, param_5, param_6, param_7);
     }
-#line 482 "hexc/hextiling.glsl"
+#line 507 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 482 "hexc/hextiling.glsl"
+#line 507 "hexc/hextiling.glsl"
         HexcTap param_8 = t.tap[2];
         float param_9 = lod.z;
         bool param_10 = sharedLod;
@@ -855,105 +890,105 @@ void hexcFetchTaps(texture2d<float> tex, sampler samp, thread const HexcTiles& t
     }
 }
 
-#line 342 "hexc/hextiling.glsl"
+#line 368 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGain3(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 342 "hexc/hextiling.glsl"
+#line 368 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
     float3 res = hexcGainCurve(param, param_1, param_2);
-#line 343 "hexc/hextiling.glsl"
+#line 369 "hexc/hextiling.glsl"
     return res / float3((res.x + res.y) + res.z);
 }
 
-#line 375 "hexc/hextiling.glsl"
+#line 401 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights(thread const float3& w, thread const float3& Dw, thread const HexcBlend& b)
 {
-#line 375 "hexc/hextiling.glsl"
-    float3 _1093;
+#line 401 "hexc/hextiling.glsl"
+    float3 _1161;
     if (b.exponentInt > 0)
     {
-#line 375 "hexc/hextiling.glsl"
+#line 401 "hexc/hextiling.glsl"
         float3 param = w;
         int param_1 = b.exponentInt;
-        float3 _1101 = hexcPowInt(param, param_1);
-        _1093 = _1101;
+        float3 _1169 = hexcPowInt(param, param_1);
+        _1161 = _1169;
     }
     else
     {
-#line 375 "hexc/hextiling.glsl"
-        _1093 = pow(w, float3(b.exponent));
+#line 401 "hexc/hextiling.glsl"
+        _1161 = pow(w, float3(b.exponent));
     }
-    float3 wg = _1093;
-#line 376 "hexc/hextiling.glsl"
-    float3 _1112;
+    float3 wg = _1161;
+#line 402 "hexc/hextiling.glsl"
+    float3 _1180;
     if (bool(b.metric))
     {
-#line 376 "hexc/hextiling.glsl"
-        _1112 = mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(b.falloffContrast)) * wg;
+#line 402 "hexc/hextiling.glsl"
+        _1180 = mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(b.falloffContrast)) * wg;
     }
     else
     {
-        _1112 = wg;
+        _1180 = wg;
     }
-    float3 W = _1112;
-#line 377 "hexc/hextiling.glsl"
+    float3 W = _1180;
+#line 403 "hexc/hextiling.glsl"
     float sum = (W.x + W.y) + W.z;
-#line 378 "hexc/hextiling.glsl"
-    float3 _1137;
+#line 404 "hexc/hextiling.glsl"
+    float3 _1205;
     if (sum > 0.0)
     {
-#line 378 "hexc/hextiling.glsl"
-        _1137 = W / float3(sum);
+#line 404 "hexc/hextiling.glsl"
+        _1205 = W / float3(sum);
     }
     else
     {
-#line 378 "hexc/hextiling.glsl"
-        _1137 = wg / float3((wg.x + wg.y) + wg.z);
+#line 404 "hexc/hextiling.glsl"
+        _1205 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1137;
-#line 379 "hexc/hextiling.glsl"
-    bool _1171;
+    W = _1205;
+#line 405 "hexc/hextiling.glsl"
+    bool _1239;
     if (bool(b.gain))
     {
-#line 379 "hexc/hextiling.glsl"
-        bool _1163 = b.gainInt > 0;
-        bool _1170;
-        if (!_1163)
+#line 405 "hexc/hextiling.glsl"
+        bool _1231 = b.gainInt > 0;
+        bool _1238;
+        if (!_1231)
         {
-#line 379 "hexc/hextiling.glsl"
-            _1170 = b.falloff != 0.5;
+#line 405 "hexc/hextiling.glsl"
+            _1238 = b.falloff != 0.5;
         }
         else
         {
-            _1170 = _1163;
+            _1238 = _1231;
         }
-        _1171 = _1170;
+        _1239 = _1238;
     }
     else
     {
-        _1171 = bool(b.gain);
+        _1239 = bool(b.gain);
     }
-    if (_1171)
+    if (_1239)
     {
-#line 379 "hexc/hextiling.glsl"
+#line 405 "hexc/hextiling.glsl"
         float3 param_2 = W;
         float param_3 = b.falloff;
         int param_4 = b.gainInt;
         W = hexcGain3(param_2, param_3, param_4);
     }
-#line 380 "hexc/hextiling.glsl"
+#line 406 "hexc/hextiling.glsl"
     return W;
 }
 
-#line 488 "hexc/hextiling.glsl"
+#line 513 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileHeights(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b)
 {
-#line 488 "hexc/hextiling.glsl"
+#line 513 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool3 param_1 = bool3(true, true, b.taps > 2);
     bool param_2 = bool(b.sharedLod);
@@ -961,41 +996,41 @@ float3 hexcTileHeights(texture2d<float> tex, sampler samp, thread const HexcTile
     hexcFetchTaps(tex, samp, param, param_1, param_2, param_3);
     spvUnsafeArray<float4, 3> h;
     h = param_3;
-#line 489 "hexc/hextiling.glsl"
+#line 514 "hexc/hextiling.glsl"
     return float3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
 }
 
-#line 444 "hexc/hextiling.glsl"
+#line 470 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcHeightBlend(thread const float3& W, thread const float3& h, thread const float& width)
 {
-#line 444 "hexc/hextiling.glsl"
+#line 470 "hexc/hextiling.glsl"
     float3 a = fast::max(h, float3(0.0)) * W;
-#line 445 "hexc/hextiling.glsl"
+#line 471 "hexc/hextiling.glsl"
     float3 Wh = W * fast::max((a - float3(fast::max(fast::max(a.x, a.y), a.z))) + float3(width), float3(0.0));
-#line 446 "hexc/hextiling.glsl"
+#line 472 "hexc/hextiling.glsl"
     return Wh / float3((Wh.x + Wh.y) + Wh.z);
 }
 
-#line 88 "hexc/hextiling.glsl"
+#line 89 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 88 "hexc/hextiling.glsl"
 #line 89 "hexc/hextiling.glsl"
-#line 88 "hexc/hextiling.glsl"
+#line 90 "hexc/hextiling.glsl"
+#line 89 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 501 "hexc/hextiling.glsl"
+#line 526 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const float4& luma, texture2d<float> heightTex, thread float3& weights)
 {
-#line 501 "hexc/hextiling.glsl"
+#line 526 "hexc/hextiling.glsl"
     float3 param = t.w;
     HexcBlend param_1 = b;
     bool3 f = hexcFetched(param, param_1);
-#line 503 "hexc/hextiling.glsl"
+#line 528 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bool3 param_3 = f;
     bool param_4 = bool(b.sharedLod);
@@ -1003,17 +1038,17 @@ float4 hexcColor(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
     hexcFetchTaps(tex, samp, param_2, param_3, param_4, param_5);
     spvUnsafeArray<float4, 3> c;
     c = param_5;
-#line 504 "hexc/hextiling.glsl"
+#line 529 "hexc/hextiling.glsl"
     float3 Dw = float3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
-#line 505 "hexc/hextiling.glsl"
+#line 530 "hexc/hextiling.glsl"
     float3 param_6 = t.w * float3(f);
     float3 param_7 = Dw;
     HexcBlend param_8 = b;
     float3 W = hexcBlendWeights(param_6, param_7, param_8);
-#line 506 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
     if (bool(b.height))
     {
-#line 506 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
         HexcTiles param_9 = t;
         HexcBlend param_10 = b;
         float3 param_11 = W;
@@ -1021,11 +1056,11 @@ float4 hexcColor(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         float param_13 = b.heightWidth;
         W = hexcHeightBlend(param_11, param_12, param_13);
     }
-#line 507 "hexc/hextiling.glsl"
+#line 532 "hexc/hextiling.glsl"
     float3 param_14 = W;
     int3 param_15 = t.channel;
     weights = hexcShowWeights(param_14, param_15);
-#line 508 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
@@ -1077,9 +1112,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     HexcBlend param_6 = blend;
     float4 param_7 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_8;
-    float4 _2106 = hexcColor(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
+    float4 _2164 = hexcColor(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
     weights = param_8;
-    return _2106;
+    return _2164;
 }
 
 #line 41 "hexc/generated"
@@ -1094,9 +1129,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _2126 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _2184 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _2126;
+    return _2184;
 }
 
 #line 44 "hexc/generated"
@@ -1106,38 +1141,38 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 44 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _2134 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _2192 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _2134;
+    return _2192;
 }
 
-#line 495 "hexc/hextiling.glsl"
+#line 520 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
-#line 495 "hexc/hextiling.glsl"
-    float4 _1719;
+#line 520 "hexc/hextiling.glsl"
+    float4 _1777;
     if (c == 0)
     {
-        _1719 = float4(1.0, 0.0, 0.0, 0.0);
+        _1777 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-#line 495 "hexc/hextiling.glsl"
-        float4 _1726;
+#line 520 "hexc/hextiling.glsl"
+        float4 _1784;
         if (c == 1)
         {
-            _1726 = float4(0.0, 1.0, 0.0, 0.0);
+            _1784 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-#line 495 "hexc/hextiling.glsl"
-            _1726 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+#line 520 "hexc/hextiling.glsl"
+            _1784 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _1719 = _1726;
+        _1777 = _1784;
     }
-#line 495 "hexc/hextiling.glsl"
-    return _1719;
+#line 520 "hexc/hextiling.glsl"
+    return _1777;
 }
 
 #line 73 "hexc/generated"
@@ -1189,9 +1224,9 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     HexcBlend param_7 = blend;
     float4 param_8 = hexcChannel(param_5);
     float3 param_9;
-    float4 _2251 = hexcColor(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
+    float4 _2309 = hexcColor(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
     weights = param_9;
-    return _2251.x;
+    return _2309.x;
 }
 
 #line 94 "hexc/generated"
@@ -1206,9 +1241,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, constant H
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _2271 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
+    float _2329 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _2271;
+    return _2329;
 }
 
 #line 97 "hexc/generated"
@@ -1218,89 +1253,89 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
 #line 97 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _2279 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _2337 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _2279;
+    return _2337;
 }
 
-#line 545 "hexc/hextiling.glsl"
+#line 570 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 545 "hexc/hextiling.glsl"
+#line 570 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
-#line 546 "hexc/hextiling.glsl"
+#line 571 "hexc/hextiling.glsl"
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-#line 547 "hexc/hextiling.glsl"
-    float _1848;
+#line 572 "hexc/hextiling.glsl"
+    float _1906;
     if (flipY)
     {
-#line 547 "hexc/hextiling.glsl"
-        _1848 = -vM.y;
+#line 572 "hexc/hextiling.glsl"
+        _1906 = -vM.y;
     }
     else
     {
-#line 547 "hexc/hextiling.glsl"
-        _1848 = vM.y;
+#line 572 "hexc/hextiling.glsl"
+        _1906 = vM.y;
     }
-#line 547 "hexc/hextiling.glsl"
-    return (-float2(vM.x, _1848)) / float2(zMa);
+#line 572 "hexc/hextiling.glsl"
+    return (-float2(vM.x, _1906)) / float2(zMa);
 }
 
-#line 102 "hexc/hextiling.glsl"
+#line 103 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
 {
-#line 102 "hexc/hextiling.glsl"
+#line 103 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 553 "hexc/hextiling.glsl"
+#line 578 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 553 "hexc/hextiling.glsl"
+#line 578 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1881;
+    float2 _1939;
     if (scaled)
     {
-#line 554 "hexc/hextiling.glsl"
-        _1881 = d * p.invScale;
+#line 579 "hexc/hextiling.glsl"
+        _1939 = d * p.invScale;
     }
     else
     {
-        _1881 = d;
+        _1939 = d;
     }
-#line 554 "hexc/hextiling.glsl"
-    return _1881;
+#line 579 "hexc/hextiling.glsl"
+    return _1939;
 }
 
-#line 561 "hexc/hextiling.glsl"
+#line 586 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights)
 {
-#line 561 "hexc/hextiling.glsl"
+#line 586 "hexc/hextiling.glsl"
     float3 param = t.w;
     HexcBlend param_1 = b;
     bool3 f = hexcFetched(param, param_1);
-#line 562 "hexc/hextiling.glsl"
+#line 587 "hexc/hextiling.glsl"
     HexcTiles param_2 = t;
     bool param_3 = bool(b.sharedLod);
     float3 lod = hexcTileLods(tex, samp, param_2, param_3);
-#line 563 "hexc/hextiling.glsl"
+#line 588 "hexc/hextiling.glsl"
     float2 d1 = float2(0.0);
     float2 d2 = float2(0.0);
     float2 d3 = float2(0.0);
-#line 564 "hexc/hextiling.glsl"
+#line 589 "hexc/hextiling.glsl"
     if (f.x)
     {
-#line 564 "hexc/hextiling.glsl"
+#line 589 "hexc/hextiling.glsl"
         HexcTap param_4 = t.tap[0];
         float param_5 = lod.x;
         bool param_6 = bool(b.sharedLod);
@@ -1310,10 +1345,10 @@ float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         bool param_10 = flipY;
         d1 = hexcTapDeriv(param_7, param_8, param_9, param_10);
     }
-#line 565 "hexc/hextiling.glsl"
+#line 590 "hexc/hextiling.glsl"
     if (f.y)
     {
-#line 565 "hexc/hextiling.glsl"
+#line 590 "hexc/hextiling.glsl"
         HexcTap param_11 = t.tap[1];
         float param_12 = lod.y;
         bool param_13 = bool(b.sharedLod);
@@ -1323,10 +1358,10 @@ float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         bool param_17 = flipY;
         d2 = hexcTapDeriv(param_14, param_15, param_16, param_17);
     }
-#line 566 "hexc/hextiling.glsl"
+#line 591 "hexc/hextiling.glsl"
     if (f.z)
     {
-#line 566 "hexc/hextiling.glsl"
+#line 591 "hexc/hextiling.glsl"
         HexcTap param_18 = t.tap[2];
         float param_19 = lod.z;
         bool param_20 = bool(b.sharedLod);
@@ -1336,17 +1371,17 @@ float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         bool param_24 = flipY;
         d3 = hexcTapDeriv(param_21, param_22, param_23, param_24);
     }
-#line 567 "hexc/hextiling.glsl"
+#line 592 "hexc/hextiling.glsl"
     float3 D = float3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-#line 568 "hexc/hextiling.glsl"
+#line 593 "hexc/hextiling.glsl"
     float3 param_25 = t.w * float3(f);
     float3 param_26 = sqrt(D / (float3(1.0) + D));
     HexcBlend param_27 = b;
     float3 W = hexcBlendWeights(param_25, param_26, param_27);
-#line 569 "hexc/hextiling.glsl"
+#line 594 "hexc/hextiling.glsl"
     if (bool(b.height))
     {
-#line 569 "hexc/hextiling.glsl"
+#line 594 "hexc/hextiling.glsl"
         HexcTiles param_28 = t;
         HexcBlend param_29 = b;
         float3 param_30 = W;
@@ -1354,11 +1389,11 @@ float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, 
         float param_32 = b.heightWidth;
         W = hexcHeightBlend(param_30, param_31, param_32);
     }
-#line 570 "hexc/hextiling.glsl"
+#line 595 "hexc/hextiling.glsl"
     float3 param_33 = W;
     int3 param_34 = t.channel;
     weights = hexcShowWeights(param_33, param_34);
-#line 571 "hexc/hextiling.glsl"
+#line 596 "hexc/hextiling.glsl"
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
@@ -1410,9 +1445,9 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     HexcBlend param_6 = blend;
     bool param_7 = false;
     float3 param_8;
-    float2 _2178 = hexcDeriv(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
+    float2 _2236 = hexcDeriv(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
     weights = param_8;
-    return _2178;
+    return _2236;
 }
 
 #line 67 "hexc/generated"
@@ -1427,9 +1462,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _2197 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _2255 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _2197;
+    return _2255;
 }
 
 #line 70 "hexc/generated"
@@ -1439,16 +1474,16 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
 #line 70 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _2205 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _2263 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _2205;
+    return _2263;
 }
 
-#line 623 "hexc/hextiling.glsl"
+#line 648 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 623 "hexc/hextiling.glsl"
+#line 648 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 
