@@ -213,7 +213,7 @@ void expectTheEngineTemplateReadsBoth(const Material& m) {
                      {"detail", image(detail)},
                      {"detailSampler", {}}};
     own.pushConstants = bytes({0.25f});  // ambient
-    std::vector<std::pair<std::string, CompileOptions>> all(3);
+    std::vector<std::pair<std::string, CompileOptions>> all(4);
     all[0].first = "default";
     all[1] = {"shifted", {}};
     all[1].second.layout = layouts()[1].layout;
@@ -222,6 +222,13 @@ void expectTheEngineTemplateReadsBoth(const Material& m) {
     all[2] = {"engine.json", {}};
     all[2].second.layout = *example.layout;
     all[2].second.hlslShaderModel = 51;
+    // The template's per-frame block at b0 (in HLSL space 1, its Vulkan set) and buffer(0), hexc's after it.
+    all[3] = {"template bases", {}};
+    ResourceLayout& bases = all[3].second.layout;
+    bases.hlsl.b = 3, bases.hlsl.t = 4, bases.hlsl.s = 3, bases.hlsl.templateB = bases.hlsl.templateT = bases.hlsl.templateS = 0;
+    bases.hlsl.templateSpaces = 1;
+    bases.msl.buffer = 4, bases.msl.texture = 4, bases.msl.sampler = 3, bases.msl.templateBuffer = 0;
+    all[3].second.hlslShaderModel = 51;
     for (const auto& [name, options] : all)
         for (vk::ExecutedTarget target : {vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl}) {
             const char* targetName = target == vk::ExecutedTarget::Hlsl ? "HLSL" : target == vk::ExecutedTarget::Glsl ? "GLSL" : "SPIR-V";

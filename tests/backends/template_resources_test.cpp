@@ -218,6 +218,57 @@ TEST(TemplateResources, CombinedSamplersAndATemplateReadingHexcsSampler) {
     EXPECT_TRUE(compileEngine("materials/templates/engine.glsl", "", combined).ok());
 }
 
+// The layout gives the template's resources bases of their own: an engine's per-frame block at b0 and buffer(0),
+// hexc's moved out of the way; with template_spaces, Vulkan set N becomes HLSL space N.
+TEST(TemplateResources, TheLayoutPlacesTheTemplatesOwn) {
+    CompileOptions options;
+    ResourceLayout& l = options.layout;
+    l.hlsl.b = 3, l.hlsl.t = 4, l.hlsl.s = 3, l.hlsl.templateB = l.hlsl.templateT = l.hlsl.templateS = 0;
+    l.msl.buffer = 4, l.msl.texture = 4, l.msl.sampler = 3, l.msl.templateBuffer = l.msl.templateTexture = l.msl.templateSampler = 0;
+    CompileResult r = compileEngine("materials/templates/engine.glsl", "", options);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    const std::string hlsl = file(r, "engine_rock.frag.hlsl"), msl = file(r, "engine_rock.frag.metal");
+    auto has = [](const std::string& text, const std::string& pattern) { return std::regex_search(text, std::regex(pattern)); };
+    EXPECT_TRUE(has(hlsl, R"(cbuffer Frame : register\(b0\))")) << hlsl;
+    EXPECT_TRUE(has(hlsl, R"(cbuffer Object : register\(b1\))"));
+    EXPECT_TRUE(has(hlsl, R"(cbuffer HexcParams : register\(b3\))"));
+    EXPECT_TRUE(has(hlsl, R"(\bshadowMap : register\(t0\))"));
+    EXPECT_TRUE(has(hlsl, R"(\bhexcTex_albedo : register\(t4\))"));
+    EXPECT_TRUE(has(msl, R"(constant Frame& frame \[\[buffer\(0\)\]\])")) << msl;
+    EXPECT_TRUE(has(msl, R"(constant HexcParams& hexcParams \[\[buffer\(4\)\]\])"));
+    EXPECT_TRUE(has(msl, R"(texture2d<float> shadowMap \[\[texture\(0\)\]\])"));
+    const json m = json::parse(file(r, "engine_rock.manifest.json"));
+    EXPECT_EQ(m["targets"]["hlsl"]["template_resources"][0]["register"], "b0");
+    EXPECT_EQ(m["targets"]["msl"]["template_resources"][0]["buffer"], 0);
+
+    CompileOptions spaces;
+    spaces.hlslShaderModel = 51;
+    spaces.layout.hlsl.templateSpaces = 1;
+    r = compileEngine("materials/templates/engine.glsl", "", spaces);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    const std::string spaced = file(r, "engine_rock.frag.hlsl");
+    EXPECT_TRUE(has(spaced, R"(cbuffer Frame : register\(b0, space1\))")) << spaced;
+    EXPECT_TRUE(has(spaced, R"(cbuffer Object : register\(b0, space2\))"));
+    EXPECT_TRUE(has(spaced, R"(\bshadowMap : register\(t0, space1\))"));
+    EXPECT_TRUE(has(spaced, R"(cbuffer HexcParams : register\(b0, space0\))"));
+}
+
+// A template base onto hexc's registers or indices is an error naming both settings.
+TEST(TemplateResources, TemplateBasesOntoHexcsAreErrors) {
+    CompileOptions options;
+    options.layout.hlsl.templateB = 0;
+    CompileResult r = compileEngine("materials/templates/engine.glsl", "", options);
+    EXPECT_EQ(formatAll(r.diagnostics),
+              "--hlsl-template-b: error[HX210]: `Frame` would take HLSL register b0 in space 0, which one of hexc's resources takes; "
+              "move the template's b registers (hlsl.template_b) or hexc's (hlsl.b)\n");
+    options = {};
+    options.layout.msl.templateTexture = 1;
+    r = compileEngine("materials/templates/engine.glsl", "", options);
+    EXPECT_EQ(formatAll(r.diagnostics),
+              "--msl-template-texture: error[HX210]: `shadowMap` would take MSL texture index 1, which one of hexc's resources takes; "
+              "move the template's (msl.template_texture) or hexc's (msl.texture)\n");
+}
+
 // Layout msl.argument_buffers: one argument buffer per descriptor set at [[buffer(set)]], every resource at the
 // [[id]] the manifest gives, no id twice in one buffer, push constants a buffer after them.
 TEST(TemplateResources, MslArgumentBuffersHoldWhatTheManifestSays) {

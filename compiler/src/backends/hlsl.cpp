@@ -1,18 +1,60 @@
 // HLSL: by default the cbuffer in b0, the shared sampler in s0, slot i's texture in t<i>, all in space0 (the
-// layout moves each class and the space); the template's own resources after them, in the same space.
+// layout moves each class and the space); the template's own resources after them, in the same space, or where the
+// layout's template bases and spaces put them.
 #include <spirv_hlsl.hpp>
+
+#include <map>
+#include <set>
+#include <tuple>
 
 #include "backends/backends.h"
 
 namespace hexc {
 namespace {
 
-// The template's resources after hexc's, each register class counted on from hexc's last, in hexc's space.
+// A located error for a layout that puts a template resource on one of hexc's registers (HX210).
+CompileError registerConflict(const ShaderPlan& plan, const std::string& name, char cls, uint32_t reg, uint32_t space) {
+    const std::string key = std::string("template_") + cls, file = plan.layout.sourceFile.string();
+    return CompileError{{Diagnostic::make(Code::TemplateSetConflict, {file.empty() ? "--hlsl-template-" + std::string(1, cls) : file},
+                                          file.empty() ? "" : "/hlsl/" + key,
+                                          "`" + name + "` would take HLSL register " + cls + std::to_string(reg) + " in space " +
+                                              std::to_string(space) + ", which one of hexc's resources takes; move the template's " + cls +
+                                              " registers (hlsl." + key + ") or hexc's (hlsl." + cls + ")")}};
+}
+
+// The template's registers: in hexc's space, or with templateSpaces in the space of the resource's Vulkan set; each
+// class from the layout's template base, else (in hexc's space) after hexc's last register of that class.
+class TemplateRegisters {
+public:
+    explicit TemplateRegisters(const ShaderPlan& plan) : plan_(plan), l_(plan.layout.hlsl) {
+        hexcs_ = {{l_.space, 'b', l_.b}, {l_.space, 's', l_.s}};
+        for (uint32_t i = 0; i < plan.textureCount(); ++i) hexcs_.insert({l_.space, 't', l_.t + i});
+    }
+    uint32_t space(const TemplateResource& r) const { return l_.templateSpaces && r.cls != ResourceClass::PushConstant ? r.set : l_.space; }
+    uint32_t take(const TemplateResource& r, char cls) {
+        const uint32_t in = space(r);
+        const uint32_t reg = next_.try_emplace({in, cls}, first(in, cls)).first->second++;
+        if (hexcs_.count({in, cls, reg})) throw registerConflict(plan_, r.name, cls, reg, in);
+        return reg;
+    }
+
+private:
+    uint32_t first(uint32_t space, char cls) const {
+        const size_t k = std::string_view("btsu").find(cls);
+        const uint32_t bases[4] = {l_.templateB, l_.templateT, l_.templateS, l_.templateU};
+        const uint32_t after[4] = {l_.b + 1, l_.t + uint32_t(plan_.textureCount()), l_.s + 1, l_.u};
+        return bases[k] != ResourceLayout::kAfterHexc ? bases[k] : space == l_.space ? after[k] : 0;
+    }
+    const ShaderPlan& plan_;
+    const ResourceLayout::Hlsl& l_;
+    std::set<std::tuple<uint32_t, char, uint32_t>> hexcs_;  // space, class, register
+    std::map<std::pair<uint32_t, char>, uint32_t> next_;    // the next free register per space and class
+};
+
+// The template's resources where TemplateRegisters puts them.
 template <typename Binding>
 nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const ShaderPlan& plan, Binding binding) {
-    const ResourceLayout::Hlsl& l = plan.layout.hlsl;
-    uint32_t next[4] = {l.b + 1, l.t + uint32_t(plan.textureCount()), l.s + 1, l.u};  // b, t, s, u
-    auto take = [&](char cls) { return next[std::string_view("btsu").find(cls)]++; };
+    TemplateRegisters registers(plan);
     nlohmann::json placed = nlohmann::json::array();
     for (const TemplateResource& r : templateResources(c, plan)) {
         const bool push = r.cls == ResourceClass::PushConstant;
@@ -21,8 +63,8 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const Shader
                  : binding(r.set, r.binding);
         nlohmann::json where = describe(r);
         auto assign = [&](spirv_cross::HLSLResourceBinding::Binding& field, char cls, const char* key) {
-            field.register_binding = take(cls);
-            field.register_space = l.space;
+            field.register_binding = registers.take(r, cls);
+            field.register_space = registers.space(r);
             where[key] = cls + std::to_string(field.register_binding);
         };
         switch (r.cls) {
@@ -44,7 +86,7 @@ nlohmann::json placeTemplateResources(spirv_cross::CompilerHLSL& c, const Shader
                 assign(b.uav, 'u', "register");
                 break;
         }
-        where["space"] = l.space;
+        where["space"] = registers.space(r);
         c.add_hlsl_resource_binding(b);
         placed.push_back(std::move(where));
     }
@@ -74,10 +116,11 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     spirv_cross::CompilerHLSL c(spirv);
     configureHlsl(c, options);
     const ResourceLayout::Hlsl& l = plan.layout.hlsl;
-    if (l.space != 0 && options.hlslShaderModel < 51)
+    if ((l.space != 0 || l.templateSpaces) && options.hlslShaderModel < 51)
         throw CompileError{{Diagnostic::make(
             Code::TargetUnsupported, {plan.layout.sourceFile.empty() ? "--hlsl-space" : plan.layout.sourceFile.string()}, "",
-            "HLSL register space " + std::to_string(l.space) + " needs shader model 5.1 or later (--hlsl-sm 51); 5.0 has no spaces")}};
+            (l.space != 0 ? "HLSL register space " + std::to_string(l.space) : std::string("hlsl.template_spaces")) +
+                " needs shader model 5.1 or later (--hlsl-sm 51); 5.0 has no spaces")}};
     auto binding = [](uint32_t set, uint32_t b) {
         spirv_cross::HLSLResourceBinding r;
         r.stage = spv::ExecutionModelFragment;

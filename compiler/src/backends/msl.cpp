@@ -72,7 +72,8 @@ bool takesSampler(ResourceClass c) { return c == ResourceClass::CombinedImageSam
 // Where each resource went, by (set, binding): the manifest's address of it.
 using Placed = std::map<std::pair<uint32_t, uint32_t>, nlohmann::json>;
 
-// hexc's resources at the layout's bases; the template's after hexc's last buffer, texture and sampler.
+// hexc's resources at the layout's bases; the template's from the layout's template bases, else after hexc's last
+// buffer, texture and sampler. A template index hexc's resource takes is a located error (HX210).
 Placed placeDirect(spirv_cross::CompilerMSL& c, const ShaderPlan& plan, const std::vector<TemplateResource>& own) {
     const ResourceLayout::Msl& l = plan.layout.msl;
     const uint32_t set = plan.bindings.set;
@@ -86,7 +87,19 @@ Placed placeDirect(spirv_cross::CompilerMSL& c, const ShaderPlan& plan, const st
     bind(set, plan.bindings.params, "buffer", l.buffer);
     bind(set, plan.bindings.sampler, "sampler", l.sampler);
     for (uint32_t i = 0; i < plan.textureCount(); ++i) bind(set, plan.bindings.firstTexture + i, "texture", l.texture + i);
-    uint32_t buffer = l.buffer + 1, texture = l.texture + uint32_t(plan.textureCount()), sampler = l.sampler + 1;
+    auto base = [](uint32_t templateBase, uint32_t after) { return templateBase != ResourceLayout::kAfterHexc ? templateBase : after; };
+    uint32_t buffer = base(l.templateBuffer, l.buffer + 1), texture = base(l.templateTexture, l.texture + uint32_t(plan.textureCount())),
+             sampler = base(l.templateSampler, l.sampler + 1);
+    auto checked = [&](const TemplateResource& r, std::string_view kind, uint32_t index) {
+        const bool hexcs = kind == "texture" ? index >= l.texture && index < l.texture + plan.textureCount()
+                                             : index == (kind == "buffer" ? l.buffer : l.sampler);
+        if (!hexcs) return index;
+        const std::string file = plan.layout.sourceFile.string(), key = "template_" + std::string(kind);
+        throw CompileError{{Diagnostic::make(
+            Code::TemplateSetConflict, {file.empty() ? "--msl-template-" + std::string(kind) : file}, file.empty() ? "" : "/msl/" + key,
+            "`" + r.name + "` would take MSL " + std::string(kind) + " index " + std::to_string(index) +
+                ", which one of hexc's resources takes; move the template's (msl." + key + ") or hexc's (msl." + std::string(kind) + ")")}};
+    };
     for (const TemplateResource& r : own) {
         const bool push = r.cls == ResourceClass::PushConstant;
         spirv_cross::MSLResourceBinding b =
@@ -94,9 +107,9 @@ Placed placeDirect(spirv_cross::CompilerMSL& c, const ShaderPlan& plan, const st
                  : fragmentBinding(r.set, r.binding);
         nlohmann::json& where = placed[{b.desc_set, b.binding}];
         const bool textured = takesTexture(r.cls), sampling = takesSampler(r.cls);
-        if (textured) where["texture"] = b.msl_texture = texture++;
-        if (sampling) where["sampler"] = b.msl_sampler = sampler++;
-        if (!textured && !sampling) where["buffer"] = b.msl_buffer = buffer++;
+        if (textured) where["texture"] = b.msl_texture = checked(r, "texture", texture++);
+        if (sampling) where["sampler"] = b.msl_sampler = checked(r, "sampler", sampler++);
+        if (!textured && !sampling) where["buffer"] = b.msl_buffer = checked(r, "buffer", buffer++);
         c.add_msl_resource_binding(b);
     }
     return placed;

@@ -65,9 +65,25 @@ const std::vector<LayoutField>& layoutFields() {
         {"hlsl", "t", 4095, "hexc's first HLSL t register", [](L& l) -> uint32_t& { return l.hlsl.t; }},
         {"hlsl", "s", 4095, "hexc's first HLSL s register", [](L& l) -> uint32_t& { return l.hlsl.s; }},
         {"hlsl", "u", 4095, "first HLSL u register (template storage)", [](L& l) -> uint32_t& { return l.hlsl.u; }},
+        {"hlsl", "template_b", 4095, "the template's first HLSL b register (default: after hexc's)",
+         [](L& l) -> uint32_t& { return l.hlsl.templateB; }},
+        {"hlsl", "template_t", 4095, "the template's first HLSL t register (default: after hexc's)",
+         [](L& l) -> uint32_t& { return l.hlsl.templateT; }},
+        {"hlsl", "template_s", 4095, "the template's first HLSL s register (default: after hexc's)",
+         [](L& l) -> uint32_t& { return l.hlsl.templateS; }},
+        {"hlsl", "template_u", 4095, "the template's first HLSL u register (default: after hexc's)",
+         [](L& l) -> uint32_t& { return l.hlsl.templateU; }},
+        {"hlsl", "template_spaces", 1, "1: a template resource in Vulkan set N in HLSL space N (needs --hlsl-sm 51+)",
+         [](L& l) -> uint32_t& { return l.hlsl.templateSpaces; }},
         {"msl", "buffer", 4095, "hexc's first MSL buffer index", [](L& l) -> uint32_t& { return l.msl.buffer; }},
         {"msl", "texture", 4095, "hexc's first MSL texture index", [](L& l) -> uint32_t& { return l.msl.texture; }},
         {"msl", "sampler", 4095, "hexc's first MSL sampler index", [](L& l) -> uint32_t& { return l.msl.sampler; }},
+        {"msl", "template_buffer", 4095, "the template's first MSL buffer index (default: after hexc's)",
+         [](L& l) -> uint32_t& { return l.msl.templateBuffer; }},
+        {"msl", "template_texture", 4095, "the template's first MSL texture index (default: after hexc's)",
+         [](L& l) -> uint32_t& { return l.msl.templateTexture; }},
+        {"msl", "template_sampler", 4095, "the template's first MSL sampler index (default: after hexc's)",
+         [](L& l) -> uint32_t& { return l.msl.templateSampler; }},
         {"msl", "argument_buffers", 1, "1: a Metal argument buffer per descriptor set (default 0)",
          [](L& l) -> uint32_t& { return l.msl.argumentBuffers; }},
         {"glsl", "binding", 4095, "hexc's GLSL block binding and first texture unit", [](L& l) -> uint32_t& { return l.glsl.binding; }}};
@@ -76,10 +92,16 @@ const std::vector<LayoutField>& layoutFields() {
 
 std::string toString(const ResourceLayout& l) {
     auto n = [](uint32_t v) { return std::to_string(v); };
+    // Template bases only when set, so that a layout without them reads (and stamps) as before.
+    auto base = [](const char* key, uint32_t v) {
+        return v == ResourceLayout::kAfterHexc ? "" : " template_" + std::string(key) + std::to_string(v);
+    };
     return "vulkan " + n(l.vulkan.set) + "/" + n(l.vulkan.binding) + (l.vulkan.combined ? " combined" : "") + " hlsl space" +
-           n(l.hlsl.space) + " b" + n(l.hlsl.b) + " t" + n(l.hlsl.t) + " s" + n(l.hlsl.s) + " u" + n(l.hlsl.u) + " msl " + n(l.msl.buffer) +
-           "/" + n(l.msl.texture) + "/" + n(l.msl.sampler) + (l.msl.argumentBuffers ? " argument buffers" : "") + " glsl " +
-           n(l.glsl.binding);
+           n(l.hlsl.space) + " b" + n(l.hlsl.b) + " t" + n(l.hlsl.t) + " s" + n(l.hlsl.s) + " u" + n(l.hlsl.u) +
+           base("b", l.hlsl.templateB) + base("t", l.hlsl.templateT) + base("s", l.hlsl.templateS) + base("u", l.hlsl.templateU) +
+           (l.hlsl.templateSpaces ? " template_spaces" : "") + " msl " + n(l.msl.buffer) + "/" + n(l.msl.texture) + "/" + n(l.msl.sampler) +
+           base("buffer", l.msl.templateBuffer) + base("texture", l.msl.templateTexture) + base("sampler", l.msl.templateSampler) +
+           (l.msl.argumentBuffers ? " argument buffers" : "") + " glsl " + n(l.glsl.binding);
 }
 
 }  // namespace hexc
