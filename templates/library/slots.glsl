@@ -197,3 +197,35 @@ ${type} hexc_${name}(vec3 position, vec3 normal, out vec3 weights) {
     return hexcFinish(value, p.n);
 }
 ${type} hexc_${name}(vec3 position, vec3 normal) { vec3 weights; return hexc_${name}(position, normal, weights); }
+
+//@ lattice.materialx
+hexcTilesMaterialX(st, dx, dy, lattice)
+
+//@ color.materialx
+// MaterialX mode (templates/library/materialx.glsl): ${luma} its lumacoeffs, ${srgb} whether the texture is sRGB.
+vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcMxColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${luma}, ${srgb}, weights);
+}
+
+//@ scalar.materialx
+// MaterialX's extract of a hextiledimage: the colour blended by its luma, then the channel.
+float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcMxColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${luma}, ${srgb}, weights)[${channel}];
+}
+
+//@ normal.materialx
+vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
+    HexcLattice lattice = hexcLattice();
+${lattice}
+    HexcBlend blend = hexcBlend();
+${blend}
+    return hexcMxDeriv(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, weights);
+}

@@ -376,6 +376,63 @@ INSTANTIATE_TEST_SUITE_P(Exec, MaterialXDocuments,
                          testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl),
                          [](const auto& info) { return targetName(info.param); });
 
+// ---- MaterialX mode -------------------------------------------------------------------------------------------
+
+// MaterialX mode (docs/materialx.md#materialx-mode) against its own reference (reference/materialx.cpp), with rotation,
+// scale and offset ranges, falloff, falloff contrast and luma weights all away from their defaults, magnified and
+// minified, on every target. Colour: the blend R = sum W_j x_j with W_j proportional to c_j w_j^7, c_j = 1 + beta (l_j
+// - 1) >= 1 - beta; a luma error e_m (<= e_s: the weights sum to 1) moves c_j by beta e_m, and R by at most
+// e_m beta / (1 - beta) sum_j W_j |x_j - R| (as pixelTolerance), times the steepest slope of Schlick's gain, which is
+// max(r / (1 - r), (1 - r) / r) at its ends. Normal: each tile's gradient -R(angle) m / |m_z| errs by the derivative
+// rule's e_d per component before the rotation, so by sqrt(2) e_d after it; its weights do not depend on the samples.
+double materialxTolerance(const reference::SlotResult& r, double ex, const HexTiling& hex, int channels) {
+    const double rr = std::clamp(hex.falloff, 0.001, 0.999), k = hex.falloff == 0.5 ? 1.0 : std::max(rr / (1 - rr), (1 - rr) / rr);
+    double spread = 0;
+    for (int c = 0; c < channels; ++c) {
+        double sum = 0;
+        for (size_t j = 0; j < 3; ++j) sum += r.blend[j] * std::fabs(r.samples[j][size_t(c)] - r.value[size_t(c)]);
+        spread = std::max(spread, sum);
+    }
+    return ex + ex * k * hex.falloffcontrast / (1.0 - hex.falloffcontrast) * spread;
+}
+
+class MaterialXMode : public testing::TestWithParam<vk::ExecutedTarget> {};
+
+TEST_P(MaterialXMode, HextiledimageAndHextilednormalmapMatchTheirReference) {
+    REQUIRE_VULKAN();
+    const std::string transforms =
+        R"("mode": "materialx", "tiling": 4, "rotation": 0.8, "rotationrange": [20, 200], "scalerange": [0.7, 1.6],
+        "offset": 0.6, "falloff": 0.7)";
+    const Material color = material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/rock_albedo.png",
+        "hextiling": {)" + transforms +
+                                    R"(, "falloffcontrast": 0.4, "lumacoeffs": [0.2126, 0.7152, 0.0722]}})");
+    const Material normal = material(R"({"name": "normal", "kind": "normal", "flip_y": true, "texture": "textures/rock_normal.png",
+        "hextiling": {)" + transforms +
+                                     "}}");
+    const TextureBounds b = bounds(sampled(normal.slots[0]));
+    for (bool minified : {false, true}) {
+        const View& view = minified ? kMinified : kMagnified;
+        // A tile scaled by s shows 1 / s as many texels per pixel: 0.75 / 0.7 (magnified) and 4 / 0.7 (minified) read
+        // levels up to 1 and 3.
+        const int level = int(std::ceil(std::log2((minified ? 4.0 : 0.75) / color.slots[0].hex.scaleRange[0])));
+        const double es = sampleError(level, false), ed = 2 * es * (1 + b.maxDeriv) / b.minZ;
+        Check c =
+            checkAgainstReference(color, vk::RenderOutput::Albedo, view, on(GetParam()), 4,
+                                  [&](const reference::SlotResult& r, size_t) { return materialxTolerance(r, es, color.slots[0].hex, 4); });
+        report(minified ? "materialx color minified" : "materialx color", c);
+        EXPECT_LE(c.worstRatio, 1.0);
+        if (!minified) {
+            EXPECT_LE(c.errors.max, 2.0 / 255);  // MaterialX's own shader agrees with hexc's modes to 2/255 magnified
+        }
+        Check n = checkAgainstReference(normal, vk::RenderOutput::Derivative, view, on(GetParam()), 2,
+                                        [&](const reference::SlotResult&, size_t) { return std::sqrt(2.0) * ed; });
+        report(minified ? "materialx normal minified" : "materialx normal", n);
+        EXPECT_LE(n.worstRatio, 1.0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, MaterialXMode, kExecutedTargets, [](const auto& info) { return targetName(info.param); });
+
 // ---- GLSL versions ------------------------------------------------------------------------------------------
 
 // Every OpenGL GLSL version hexc emits, executed (compiled again by glslang, as the Glsl target above) on rock's

@@ -123,18 +123,6 @@ Vec2 normalToDerivative(const Rgba& texel, bool flipY) {
     return {-x / zm, -(flipY ? -y : y) / zm};
 }
 
-// Listing 7: each hex tile shows one of three colours, (id.x - id.y) mod 3, with a floor-mod (the listing adds 3
-// to the negative results of HLSL's truncating %). A step to a neighbour, (+-1, 0), (0, +-1) or +-(1, -1),
-// changes it by +-1 or +-2, never by 3, so neighbouring tiles (and the three tiles of a triangle) always differ.
-// This restates the listing's swizzle: its vh/vl choice (on vertex1.x < vertex3.x) gives vertex2 and vertex3
-// exactly these indices.
-std::array<double, 3> hexColours(const std::array<double, 3>& w, const std::array<TileId, 3>& id) {
-    std::array<double, 3> out{};
-    // The difference of the 32-bit ids the shader keeps (exact while |id| < 2^31).
-    for (int i = 0; i < 3; ++i) out[size_t(floorMod3(int32_t(uint32_t(id[i][0]) - uint32_t(id[i][1]))))] = w[i];
-    return out;
-}
-
 // What a mask decides at st (docs/material-format.md#mask): three tiles, tile i sampled at
 // toTile(local[i]) / scale + shift[i] + offset with its own transform, and their weights before Eq. 1. The
 // checker repeats its second tile, with weight 0, as the third.
@@ -239,6 +227,18 @@ std::array<double, 3> heightBlend(const std::array<double, 3>& w, const std::arr
 }
 
 }  // namespace
+
+// Listing 7: each hex tile shows one of three colours, (id.x - id.y) mod 3, with a floor-mod (the listing adds 3
+// to the negative results of HLSL's truncating %). A step to a neighbour, (+-1, 0), (0, +-1) or +-(1, -1),
+// changes it by +-1 or +-2, never by 3, so neighbouring tiles (and the three tiles of a triangle) always differ.
+// This restates the listing's swizzle: its vh/vl choice (on vertex1.x < vertex3.x) gives vertex2 and vertex3
+// exactly these indices.
+std::array<double, 3> hexColours(const std::array<double, 3>& w, const std::array<TileId, 3>& id) {
+    std::array<double, 3> out{};
+    // The difference of the 32-bit ids the shader keeps (exact while |id| < 2^31).
+    for (int i = 0; i < 3; ++i) out[size_t(floorMod3(int32_t(uint32_t(id[i][0]) - uint32_t(id[i][1]))))] = w[i];
+    return out;
+}
 
 SampledTexture::SampledTexture(const Texture& texture) {
     const size_t count = size_t(std::max(texture.width, 0)) * size_t(std::max(texture.height, 0));
@@ -478,6 +478,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
         const Rgba value = normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
         return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
     }
+    if (hex.mode == HashMode::MaterialX) return evaluateMaterialX(slot, texture, st, dx, dy);
     const bool heightBlended = slot.heightBlend && hex.taps != 1;  // 1 tap cannot height-blend (the parser rejects it)
     if (heightBlended && !height) throw std::invalid_argument("reference: slot " + slot.name + " height-blends but no heights were given");
     const bool histogram = hex.blend == Blend::Histogram;  // the parser leaves it on colour and scalar slots only

@@ -101,6 +101,9 @@ double valueNoise(Vec2 st, int maskScale, uint32_t salt);
 // The 1-tap variant's per-pixel dither value in [0, 1): pcg3d of (column, row, 2), top 24 bits.
 double ditherValue(std::array<uint32_t, 2> pixel);
 
+// Listing 7: weights w of tiles `id` as the weights output shows them, tile i in channel (id.x - id.y) mod 3.
+std::array<double, 3> hexColours(const std::array<double, 3>& w, const std::array<TileId, 3>& id);
+
 // Eq. 5 (Perlin and Hoffert's gain) with k = log(1 - r) / log(0.5); the identity when r = 0.5.
 double gain(double x, double r);
 
@@ -167,6 +170,13 @@ private:
 // interpolated linearly in lod and entries in G; the channels return to RGB with the table's row 0.
 SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel = {0, 0},
                       const HeightSource* height = nullptr, const SampledTexture* lut = nullptr);
+
+// HashMode::MaterialX (reference/materialx.cpp, docs/materialx.md#materialx-mode): MaterialX 1.39's hextiledimage
+// (colour and scalar slots: the colour blended by luma, then the channel) or hextilednormalmap (normal slots: the
+// blended surface gradient as (dH/ds, dH/dt, 0, 1)), written from MaterialX's definition of the nodes. Its tile hash
+// is defined by its float32 evaluation (like Listing 2's), the rest is double. An sRGB texture is sampled decoded, as
+// the sampler does, and each tap encoded again before the blend, which is decoded.
+SlotResult evaluateMaterialX(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy);
 
 // evaluateAt at st = uv * slot.hex.tiling, with uv gradients.
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx, double dudy, double dvdy,

@@ -16,7 +16,9 @@ enum class ColorSpace { Srgb, Linear };
 // How tile offsets and rotations are derived from the lattice ids. `Stable` (the default): an integer
 // hash of exactly reduced lattice ids, identical on every target and precise far from the origin
 // (templates/library/hextiling.glsl, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
-enum class HashMode { Stable, Paper };
+// `MaterialX`: MaterialX 1.39's hextiledimage and hextilednormalmap (templates/library/materialx.glsl,
+// docs/materialx.md).
+enum class HashMode { Stable, Paper, MaterialX };
 // What decides the blend weights (docs/material-format.md#mask): the paper's hex lattice (3 taps), two offset
 // square grids (2 taps), or three globally transformed copies under one or three value noises (3 taps).
 enum class Mask { Hex, Checker, Noise, Noise3 };
@@ -55,7 +57,9 @@ struct HexTiling {
     int rotationSteps = 0;                           // > 0: that many evenly spaced angles in the range
     std::array<double, 2> scaleRange{1, 1};          // texture scale drawn per tile
     double offset = 1.0;                             // amount of the random offset
-    std::array<int, 2> offsetSteps{0, 0};            // > 0: offsets snapped to a grid of that many cells
+    // MaterialX mode: the luma weights of its colour blend (MaterialX `lumacoeffs`; its default, ACEScg's).
+    std::array<double, 3> lumacoeffs{0.2722287, 0.6740818, 0.0536895};
+    std::array<int, 2> offsetSteps{0, 0};  // > 0: offsets snapped to a grid of that many cells
     // `"taps": "adaptive"` (docs/material-format.md#taps): a tap is skipped when a bound on its weight, known before
     // sampling, shows it cannot move the result by more than kAdaptiveError.
     static constexpr int kAdaptiveTaps = -1;

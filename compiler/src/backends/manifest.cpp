@@ -74,6 +74,7 @@ nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
         {"colorspace", toString(s.colorSpace)},
         {"hextiling", hextilingEntry(h)},
     };
+    if (h.mode == HashMode::MaterialX && s.kind != SlotKind::Normal) slot["hextiling"]["lumacoeffs"] = h.lumacoeffs;
     if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
     // Bound for another slot's height blending only: the shader has no function for it.
     if (sp.heightOnly) slot["height_map_only"] = true;

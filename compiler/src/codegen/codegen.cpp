@@ -156,6 +156,9 @@ public:
             {"tiles", expand(l.section, {})},
             {"lattice", latticeSettings(l, sp.aspect)},
             {"blend", blendSettings(sp)},
+            {"luma",
+             "vec3(" + literal(s.hex.lumacoeffs[0]) + ", " + literal(s.hex.lumacoeffs[1]) + ", " + literal(s.hex.lumacoeffs[2]) + ")"},
+            {"srgb", literal(s.colorSpace == ColorSpace::Srgb)},
         };
         addParam(t, "tiling", l.tiling);
         addParam(t, "planesharpness", l.planeSharpness);
@@ -174,6 +177,9 @@ std::string injectedCode(const ShaderPlan& plan) {
     static const std::regex callsLibrary("\\bhexc[A-Z]");
     const bool library = !plan.slots.empty() || std::regex_search(plan.templateSource, callsLibrary);
     std::string out = library ? lineDirective(1, "hexc/hextiling.glsl") + *embeddedText("hextiling.glsl") : "";
+    // MaterialX mode's functions, only for a material that has a slot in it.
+    if (std::any_of(plan.lattices.begin(), plan.lattices.end(), [](const LatticePlan& l) { return l.section == "lattice.materialx"; }))
+        out += lineDirective(1, "hexc/materialx.glsl") + *embeddedText("materialx.glsl");
     out += lineDirective(1, "hexc/generated") + "\n";
     if (plan.slots.empty()) return out;
     Emitter emit(plan);

@@ -8,7 +8,7 @@ namespace hexc {
 const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
 const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
-const std::vector<std::string> kModes = {"stable", "paper"};
+const std::vector<std::string> kModes = {"stable", "paper", "materialx"};
 const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
 const std::vector<std::string> kProjections = {"uv", "triplanar"};
 const std::vector<std::string> kBlends = {"falloff", "histogram"};

@@ -16,10 +16,10 @@ namespace {
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "pack", "slots"};
 const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling", "height_blend"};
-const std::vector<std::string> kHexKeys = {"enabled",    "tiling",     "rotation",          "falloff",       "falloffcontrast",
-                                           "exponent",   "mode",       "split_coordinates", "rotationrange", "rotationsteps",
-                                           "scalerange", "offset",     "offsetsteps",       "mask",          "maskscale",
-                                           "taps",       "projection", "planesharpness",    "blend",         "lod"};
+const std::vector<std::string> kHexKeys = {
+    "enabled",           "tiling",        "rotation",      "falloff",        "falloffcontrast", "exponent",    "mode",
+    "split_coordinates", "rotationrange", "rotationsteps", "scalerange",     "offset",          "offsetsteps", "mask",
+    "maskscale",         "taps",          "projection",    "planesharpness", "blend",           "lod",         "lumacoeffs"};
 const std::vector<std::string> kHeightKeys = {"slot", "width"};
 const std::vector<std::string> kTaps = {"adaptive"};  // besides a count
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
@@ -31,7 +31,6 @@ bool isSlotName(const std::string& name) {
     return !name.empty() && name.size() <= 32 && name[0] >= 'a' && name[0] <= 'z' && std::all_of(name.begin(), name.end(), lowerOrDigit) &&
            name.find("__") == std::string::npos && !name.starts_with("gl_");
 }
-const std::vector<std::string> kModes = {"stable", "paper"};
 
 class MaterialValidator : public JsonRules {
 public:
@@ -92,6 +91,7 @@ private:
         if (v.contains("mode")) {
             if (int i = choice(v["mode"], pointer + "/mode", kModes); i >= 0) hex.mode = HashMode(i);
         }
+        if (v.contains("lumacoeffs")) hex.lumacoeffs = lumaCoeffs(v["lumacoeffs"], pointer + "/lumacoeffs", hex.lumacoeffs);
         if (v.contains("split_coordinates"))
             hex.splitCoordinates = boolean(v["split_coordinates"], pointer + "/split_coordinates", hex.splitCoordinates);
         if (v.contains("mask")) {
@@ -297,8 +297,42 @@ private:
         if (s.kind == SlotKind::Normal || !s.hex.enabled) s.hex.blend = Blend::Falloff;
     }
 
+    // Three weights in [0, 1].
+    std::array<double, 3> lumaCoeffs(const json& v, const std::string& pointer, std::array<double, 3> fallback) {
+        if (!v.is_array() || v.size() != 3) {
+            report(Code::WrongType, pointer, "expected 3 numbers (luma weights of r, g, b), got " + typeName(v));
+            return fallback;
+        }
+        for (size_t i = 0; i < 3; ++i)
+            fallback[i] = number(v[i], pointerAppend(pointer, i), {0, 1, false, false, "in [0, 1]"}, fallback[i]);
+        return fallback;
+    }
+
+    // MaterialX mode is MaterialX's nodes exactly: what they have no input for is refused.
+    void materialxRules(const HexTiling& hex, const std::string& at) {
+        std::string other;
+        if (hex.mask != Mask::Hex)
+            other = "mask `" + std::string(toString(hex.mask)) + "`";
+        else if (hex.taps != 0)
+            other = "`taps`";
+        else if (hex.exponent != 7)
+            other = "`exponent` other than 7";
+        else if (hex.rotationSteps != 0 || hex.offsetSteps != std::array<int, 2>{0, 0})
+            other = "rotation or offset steps";
+        else if (hex.splitCoordinates)
+            other = "`split_coordinates`";
+        else if (hex.blend != Blend::Falloff)
+            other = "blend `histogram`";
+        else if (hex.lod != Lod::Gradients)
+            other = "lod `shared`";
+        if (!other.empty())
+            report(Code::ConflictingSettings, at, other + " does not exist in mode `materialx`, which is MaterialX's hextiledimage exactly",
+                   "use mode `stable`");
+    }
+
     // Rules across a slot's merged hex-tiling settings, reported at `at`.
     void settingRules(const HexTiling& hex, const std::string& at) {
+        if (hex.mode == HashMode::MaterialX && hex.enabled) materialxRules(hex, at);
         // Checked on the merged settings: the paper's lattice has no exact period to split at, and its tile
         // transforms are Listings 2 and 6 exactly.
         if (hex.splitCoordinates && hex.mode == HashMode::Paper)
@@ -374,6 +408,8 @@ private:
         if (s.hex.blend == Blend::Histogram)
             report(Code::ConflictingSettings, pointer,
                    "`height_blend` cannot be combined with `blend` \"histogram\", whose weights must keep the blend's variance");
+        if (s.hex.mode == HashMode::MaterialX)
+            report(Code::ConflictingSettings, pointer, "`height_blend` does not exist in mode `materialx`", "use mode `stable`");
         s.heightBlend = h;
     }
 

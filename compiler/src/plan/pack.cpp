@@ -11,13 +11,13 @@ namespace {
 // be packed. Packing copies 8-bit texels, so the packed texture samples exactly as the slots' own would: float and
 // block-compressed textures are not packed. A colour slot returns its texture's alpha, so only an opaque one leaves
 // alpha free. Normal slots blend derivatives of 2-3 channels on their own path, and the histogram blend, height
-// blending, one tap and triplanar planes fetch on paths of their own.
+// blending, one tap, triplanar planes and MaterialX mode fetch on paths of their own.
 int packChannels(const ShaderPlan& plan, size_t i) {
     const SlotPlan& sp = plan.slots[i];
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
     if (sp.heightOnly || s.kind == SlotKind::Normal || !h.enabled || h.taps == 1 || sp.histogram || s.heightBlend ||
-        h.projection == Projection::Triplanar)
+        h.projection == Projection::Triplanar || h.mode == HashMode::MaterialX)
         return 0;
     for (const SlotPlan& other : plan.slots)
         if (other.heightMap == i) return 0;

@@ -96,7 +96,12 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     SlotPlan sp;
     sp.slot = &slot;
     sp.histogram = h.enabled && h.blend == Blend::Histogram;  // the parser has left it only on colour and scalar slots
-    sp.section = std::string(toString(slot.kind)) + (!h.enabled ? ".plain" : h.taps == 1 ? ".hex1" : sp.histogram ? ".histogram" : ".hex");
+    const bool materialx = h.enabled && h.mode == HashMode::MaterialX;
+    sp.section = std::string(toString(slot.kind)) + (!h.enabled     ? ".plain"
+                                                     : materialx    ? ".materialx"
+                                                     : h.taps == 1  ? ".hex1"
+                                                     : sp.histogram ? ".histogram"
+                                                                    : ".hex");
     sp.coordinates = triplanar ? "triplanar" : h.splitCoordinates ? "uv.split" : "uv";
     // A triplanar normal slot returns a world-space surface gradient.
     sp.type = triplanar && slot.kind == SlotKind::Normal ? "vec3" : kTypes[size_t(slot.kind)];
@@ -122,7 +127,9 @@ SlotPlan planSlot(const Slot& slot, bool all) {
 LatticePlan planLattice(const HexTiling& h, bool all) {
     static const char* kMaskLattices[] = {"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"};
     LatticePlan l;
-    l.section = h.mode == HashMode::Paper ? "lattice.paper" : kMaskLattices[size_t(h.mask)];
+    l.section = h.mode == HashMode::Paper       ? "lattice.paper"
+                : h.mode == HashMode::MaterialX ? "lattice.materialx"
+                                                : kMaskLattices[size_t(h.mask)];
     l.rotate = all || h.rotation != 0;
     l.transform = h.hasTransforms();
     l.rotationSteps = h.rotationSteps;
