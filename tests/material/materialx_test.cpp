@@ -8,6 +8,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <regex>
 
 #include <nlohmann/json.hpp>
 
@@ -197,7 +198,12 @@ TEST(MaterialX, WhatHexcCannotExpressIsReportedWhereItIs) {
     EXPECT_EQ(diagnose(image(R"(<input name="filtertype" type="string" value="closest" />)", "image"), kAlbedo),
               std::vector<std::string>{"materials/mtlx/t.mtlx:4:1: error[HX118]: img/filtertype: `filtertype` must be \"linear\": "
                                        "hexc samples with trilinear filtering"});
-    EXPECT_EQ(diagnose(image(R"(<input name="lumacoeffs" type="color3" value="0.2722287, 0.6740818, 0.0536895" />)"), kAlbedo),
+    // MaterialX mode (a document's default) weighs by `lumacoeffs`; hexc's own modes by Rec. 601 luma.
+    EXPECT_EQ(diagnose(image(R"(<input name="lumacoeffs" type="color3" value="0.2126, 0.7152, 0.0722" />)"), kAlbedo),
+              std::vector<std::string>{});
+    EXPECT_EQ(diagnose(std::regex_replace(image(R"(<input name="lumacoeffs" type="color3" value="0.2126, 0.7152, 0.0722" />)"),
+                                          std::regex("type=\"color3\">"), "type=\"color3\" hexc_mode=\"stable\">"),
+                       kAlbedo),
               std::vector<std::string>{"materials/mtlx/t.mtlx:4:1: warning[HX119]: img/lumacoeffs: hexc weighs colour samples by Rec. 601 "
                                        "luma (0.299, 0.587, 0.114); `lumacoeffs` is not used"});
     EXPECT_EQ(diagnose("<noise2d name=\"img\" type=\"color3\" />", kAlbedo),
@@ -244,7 +250,7 @@ TEST(MaterialX, TheCommandLineExportsAndCompilesDocuments) {
     const std::string first = fileText(out);
     ASSERT_EQ(runHexc("export-mtlx materials/rock.json -o " + out), 0);
     EXPECT_EQ(fileText(out), first);  // byte-identical
-    EXPECT_NE(first.find("<hextiledimage name=\"albedo\" type=\"color3\">"), std::string::npos);
+    EXPECT_NE(first.find("<hextiledimage name=\"albedo\" type=\"color3\" hexc_mode=\"stable\">"), std::string::npos);
     std::string err;
     EXPECT_EQ(runHexc(out + " -o " + (dir / "shaders").string() + " --no-cache", &err), 0) << err;
     EXPECT_TRUE(std::filesystem::exists(dir / "shaders" / "rock.frag.spv"));
@@ -260,7 +266,7 @@ TEST(MaterialX, EveryMaterialOfADocumentIsCompiled) {
     std::string text = fileText("materials/mtlx/rock.mtlx");
     const std::string prefix = std::filesystem::absolute("materials/textures").string() + "/";
     text.replace(text.find("../textures/"), 12, prefix);
-    const std::string second = R"(<surfacematerial name="rock_copy" type="material">
+    const std::string second = R"(<surfacematerial name="rock_copy" type="material" hexc_mode="stable">
     <input name="surfaceshader" type="surfaceshader" nodename="SR_rock" />
   </surfacematerial>
 </materialx>)";

@@ -76,9 +76,11 @@ private:
     }
 
     json material(xml_node material) {
-        json m = {{"name", material.attribute("name").value()}, {"slots", json::array()}};
+        json m = {{"name", material.attribute("name").value()}, {"slots", json::array()}, {"hextiling", {{"mode", "materialx"}}}};
+        material_ = material;
         at("", material);
         at("/name", material, "name");
+        at("/hextiling/mode", material);  // MaterialX's meaning, unless a hexc_mode attribute says otherwise
         hexcAttributes(material, mtlx::kMaterialKeys, [&](const std::string& key, const json& v, const char* attr) {
             const bool top = key == "template" || key == "pack";  // top-level keys of the material JSON
             const std::string p = top ? "/" + key : "/hextiling/" + key;
@@ -218,7 +220,7 @@ private:
     std::map<std::string, xml_node> inputsOf(xml_node node);
     void fixedInputs(xml_node node, const std::vector<std::string>& known);
     void texcoord(xml_node input);
-    void luma(xml_node input);
+    void luma(xml_node input, xml_node node, json& hex, const std::string& h);
     json inputValue(xml_node input, const json& fallback);
     template <typename F>
     void hexcAttributes(xml_node node, const std::vector<std::string>& keys, F&& each);
@@ -257,6 +259,7 @@ private:
     std::filesystem::path file_;
     xml_node root_;
     std::map<std::string, Place> places_;  // JSON pointer -> where its value came from
+    xml_node material_;                    // the <surfacematerial> being read
     std::map<xml_node, std::string> fed_;  // node read into a slot -> the slot's name
     Diagnostics diags_;
 };
@@ -434,7 +437,7 @@ void Reader::hexSettings(xml_node node, const std::map<std::string, xml_node>& i
     set("falloff", "falloff", 0.5);
     if (category == "hextiledimage") {
         set("falloffcontrast", "falloffcontrast", 0.5);
-        if (inputs.contains("lumacoeffs")) luma(inputs.at("lumacoeffs"));
+        if (inputs.contains("lumacoeffs")) luma(inputs.at("lumacoeffs"), node, hex, h);
     } else {
         auto flip = inputs.find("flip_g");
         s["flip_y"] = inputValue(flip == inputs.end() ? xml_node() : flip->second, false);
@@ -472,9 +475,17 @@ void Reader::hexTransforms(const std::map<std::string, xml_node>& inputs, xml_no
     hex["offset"] = isNumbers(O, 1) && isNumbers(OR, 2) && OR[1] != json(1.0) ? json(O.get<double>() * OR[1].get<double>()) : O;
 }
 
-// hexc's colour path weighs by Rec. 601 luma (paper Eq. 4), whatever the document's working space.
-void Reader::luma(xml_node input) {
+// MaterialX mode weighs colours by `lumacoeffs`; hexc's own modes by Rec. 601 luma (paper Eq. 4), whatever the
+// document's working space.
+void Reader::luma(xml_node input, xml_node node, json& hex, const std::string& h) {
     json v = inputValue(input, json());
+    const char* mode =
+        node.attribute("hexc_mode") ? node.attribute("hexc_mode").value() : material_.attribute("hexc_mode").as_string("materialx");
+    if (std::string_view(mode) == "materialx") {
+        hex["lumacoeffs"] = v;
+        at(h + "/lumacoeffs", input, "value");
+        return;
+    }
     for (size_t i = 0; isNumbers(v, 3) && i < 3; ++i)
         if (std::fabs(v[i].get<double>() - mtlx::kLuma[i]) > 5e-4) v = json();
     if (!isNumbers(v, 3))

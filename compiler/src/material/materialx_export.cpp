@@ -218,7 +218,8 @@ void Writer::hexInputs(xml_node node, const Slot& s) {
         return;
     }
     input(node, "falloffcontrast", "float", number(h.falloffcontrast));
-    input(node, "lumacoeffs", "color3", numbers({mtlx::kLuma[0], mtlx::kLuma[1], mtlx::kLuma[2]}));
+    const std::array<double, 3> luma = h.mode == HashMode::MaterialX ? h.lumacoeffs : mtlx::kLuma;
+    input(node, "lumacoeffs", "color3", numbers({luma[0], luma[1], luma[2]}));
 }
 
 // Settings MaterialX has no input for, where they differ from hexc's defaults.
@@ -228,9 +229,9 @@ void Writer::hexcAttributes(xml_node node, const Slot& s) {
     auto put = [&](const char* key, const std::string& value) {
         node.append_attribute(("hexc_" + std::string(key)).c_str()) = value.c_str();
     };
+    if (h.mode != HashMode::MaterialX) put("mode", std::string(toString(h.mode)));  // a document's default is MaterialX's
     if (h.enabled) {
         if (h.exponent != d.exponent) put("exponent", number(h.exponent));
-        if (h.mode != d.mode) put("mode", std::string(toString(h.mode)));
         if (h.splitCoordinates) put("split_coordinates", "true");
         if (h.rotationSteps != d.rotationSteps) put("rotationsteps", std::to_string(h.rotationSteps));
         if (h.offsetSteps != d.offsetSteps) put("offsetsteps", numbers({double(h.offsetSteps[0]), double(h.offsetSteps[1])}));

@@ -62,7 +62,7 @@ inline const std::vector<std::string> kNodeKeys = {"exponent",  "mode", "split_c
 // Slot keys of the same kind: a plain normal map's flip (the normalmap node has no flip_g) and height blending.
 inline const std::vector<std::string> kSlotKeys = {"flip_y", "height_blend", "height_blend_width"};
 // Material-wide settings, as hexc_<key> attributes of the surfacematerial.
-inline const std::vector<std::string> kMaterialKeys = {"template", "projection", "planesharpness", "pack"};
+inline const std::vector<std::string> kMaterialKeys = {"template", "projection", "planesharpness", "pack", "mode"};
 
 // The luma weights hexc's colour path uses (Rec. 601, paper Eq. 4); MaterialX's `lumacoeffs` names them.
 inline constexpr std::array<double, 3> kLuma = {0.299, 0.587, 0.114};
