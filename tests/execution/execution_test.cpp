@@ -43,16 +43,20 @@ double sampleError(int deepestLevel, bool srgb) { return (1.2 + deepestLevel * (
 // multiplies weight changes by at most its steepest slope, k = log2(1 / (1 - r)) (1 when r <= 0.5). Per pixel,
 // with W_j, x_j and R from the reference:
 //     |R_gpu - R_ref| <= e_x + e_m * k * beta / (1 - beta) * max_c sum_j W_j |x_jc - R_c|.
-double pixelTolerance(const reference::SlotResult& r, double ex, double em, const HexTiling& hex, int channels) {
-    if (!hex.enabled) return ex;
-    double k = std::max(1.0, std::log2(1.0 / (1.0 - hex.falloff)));
+// `k`: the gain's steepest slope.
+double blendTolerance(const reference::SlotResult& r, double ex, double em, double beta, double k, int channels) {
     double spread = 0;
     for (int c = 0; c < channels; ++c) {
         double sum = 0;
         for (size_t j = 0; j < 3; ++j) sum += r.blend[j] * std::fabs(r.samples[j][size_t(c)] - r.value[size_t(c)]);
         spread = std::max(spread, sum);
     }
-    return ex + em * k * hex.falloffcontrast / (1.0 - hex.falloffcontrast) * spread;
+    return ex + em * k * beta / (1.0 - beta) * spread;
+}
+
+double pixelTolerance(const reference::SlotResult& r, double ex, double em, const HexTiling& hex, int channels) {
+    if (!hex.enabled) return ex;
+    return blendTolerance(r, ex, em, hex.falloffcontrast, std::max(1.0, std::log2(1.0 / (1.0 - hex.falloff))), channels);
 }
 
 // ---- Fixtures ---------------------------------------------------------------------------------------------
@@ -387,13 +391,7 @@ INSTANTIATE_TEST_SUITE_P(Exec, MaterialXDocuments,
 // rule's e_d per component before the rotation, so by sqrt(2) e_d after it; its weights do not depend on the samples.
 double materialxTolerance(const reference::SlotResult& r, double ex, const HexTiling& hex, int channels) {
     const double rr = std::clamp(hex.falloff, 0.001, 0.999), k = hex.falloff == 0.5 ? 1.0 : std::max(rr / (1 - rr), (1 - rr) / rr);
-    double spread = 0;
-    for (int c = 0; c < channels; ++c) {
-        double sum = 0;
-        for (size_t j = 0; j < 3; ++j) sum += r.blend[j] * std::fabs(r.samples[j][size_t(c)] - r.value[size_t(c)]);
-        spread = std::max(spread, sum);
-    }
-    return ex + ex * k * hex.falloffcontrast / (1.0 - hex.falloffcontrast) * spread;
+    return blendTolerance(r, ex, ex, hex.falloffcontrast, k, channels);
 }
 
 class MaterialXMode : public testing::TestWithParam<vk::ExecutedTarget> {};
