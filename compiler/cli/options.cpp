@@ -42,8 +42,9 @@ const char* const kExitCodes = R"(Exit codes:
   3  an output could not be written
   4  render, preview: no Vulkan device, or the device failed)";
 
-// Fills the compile options from the checked names of --target, --glsl-version and --msl-version.
-void applyNames(const std::vector<std::string>& targets, const std::string& glsl, const std::string& msl, CompileOptions& o) {
+// Fills the compile options from the checked names of --target, --glsl-version, --msl-version and --line-directives.
+void applyNames(const std::vector<std::string>& targets, const std::string& glsl, const std::string& msl, const std::string& lines,
+                CompileOptions& o) {
     static const std::map<std::string, Target> names = {
         {"spirv", Target::Spirv}, {"hlsl", Target::Hlsl}, {"glsl", Target::Glsl}, {"msl", Target::Msl}};
     if (!targets.empty()) o.targets.clear();
@@ -53,6 +54,8 @@ void applyNames(const std::vector<std::string>& targets, const std::string& glsl
         o.glslVersion = uint32_t(std::stoi(glsl));
     }
     if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
+    for (LineDirectives mode : {LineDirectives::None, LineDirectives::Functions, LineDirectives::Statements})
+        if (toString(mode) == lines) o.lineDirectives = mode;
 }
 
 // "; did you mean `--vertex`?" for the first unexpected argument that looks like a misspelt option, else "".
@@ -129,7 +132,7 @@ std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args
 std::optional<int> parseArguments(const std::vector<std::string>& args, Arguments& a) {
     CLI::App app(kDescription, "hexc");
     std::vector<std::string> materials, targets;
-    std::string glsl, msl;
+    std::string glsl, msl, lines;
     // Required by hand below, after CLI11 has reported unknown options (it checks requirements first).
     app.add_option("materials", materials, "material or scene files")->type_name("FILE.json");
     app.add_option("-o,--out", a.outDir, "output folder (created if missing)")->type_name("DIR");
@@ -172,9 +175,14 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     layout.add(app);
     app.add_flag("--vertex", a.options.vertex,
                  "also write the pass-through vertex stage <name>.vert.* that feeds the\nfragment shader's inputs");
-    app.add_flag("--debug", a.options.debug,
-                 "readable outputs (like glslc/dxc -O0): no optimisation, hexc's\n"
-                 "functions kept by name, #line references to the template and library");
+    CLI::Option* debug = app.add_flag("--debug", a.options.debug,
+                                      "readable outputs (like glslc/dxc -O0): no optimisation, hexc's\n"
+                                      "functions kept by name, #line references to the template and library");
+    app.add_option("--line-directives", lines,
+                   "with --debug: a #line at the start of each function (functions, the\n"
+                   "default), before each statement (statements) or nowhere (none)")
+        ->check(CLI::IsMember({"none", "functions", "statements"}))
+        ->needs(debug);
     app.add_flag("--emit-generated", a.options.emitGenerated, "also write the generated Vulkan GLSL fed to glslang: <name>.generated.frag");
     app.add_flag("--manifest-paths", manifestPaths,
                  "the manifest also gives where the material, its textures, template and\nlayout file are, relative to the output folder");
@@ -219,7 +227,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     a.materials.assign(materials.begin(), materials.end());
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
     if (manifestPaths) a.options.manifestPathsFrom = a.outDir;
-    applyNames(targets, glsl, msl, a.options);
+    applyNames(targets, glsl, msl, lines, a.options);
     if (!layout.resolve(a.options.layout)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {
         std::cerr << "hexc: HLSL register space " << space << " needs --hlsl-sm 51 or later (shader model 5.0 has no spaces)\n";

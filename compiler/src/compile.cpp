@@ -21,8 +21,8 @@ void append(Diagnostics& to, const Diagnostics& from) { to.insert(to.end(), from
 // The generated GLSL through glslang and spirv-opt, then each target.
 ShaderCode compileCode(const std::string& glsl, const ShaderPlan& plan, const CompileOptions& options, const std::vector<Target>& targets,
                        Diagnostics& diagnostics) {
-    SpirvResult front =
-        compileToSpirv(glsl, ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl, plan.entryPoint, {}, options.debug);
+    SpirvResult front = compileToSpirv(glsl, ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl, plan.entryPoint, {},
+                                       options.debug ? plan.templateShown : "");
     append(diagnostics, front.diagnostics);
     if (front.words.empty()) return {};
     SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);

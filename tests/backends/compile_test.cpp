@@ -563,7 +563,7 @@ TEST(Readable, DebugOutputsKeepHexcsFunctionsAndLines) {
         EXPECT_NE(text->find("hexcColor("), std::string::npos);
         EXPECT_NE(text->find("#line 1"), std::string::npos);
         EXPECT_NE(text->find("\"hexc/hextiling.glsl\""), std::string::npos);
-        EXPECT_NE(text->find("debug (unoptimised)"), std::string::npos);
+        EXPECT_NE(text->find("debug (unoptimised, line directives: functions)"), std::string::npos);
     }
     EXPECT_NE(hlsl.find("float4 hexcColor(Texture2D<float4> tex, SamplerState samp"), std::string::npos);
     for (const std::string& text : {file(release, ".frag.hlsl").contents, file(release, ".frag.glsl").contents}) {
@@ -573,8 +573,8 @@ TEST(Readable, DebugOutputsKeepHexcsFunctionsAndLines) {
     // The generated Vulkan GLSL, beside them, is what glslang compiled: it compiles again to the same SPIR-V.
     const std::string generated = file(r, ".generated.frag").contents;
     EXPECT_EQ(withoutBanner(generated), r.glsl);
-    SpirvResult again =
-        compileToSpirv(generated, ShaderStage::Fragment, "rock.generated.frag", SourceLanguage::Glsl, "rock_frag", {}, true);
+    SpirvResult again = compileToSpirv(generated, ShaderStage::Fragment, "rock.generated.frag", SourceLanguage::Glsl, "rock_frag", {},
+                                       "rock.generated.frag");
     EXPECT_FALSE(again.words.empty()) << formatAll(again.diagnostics);
 }
 

@@ -92,11 +92,13 @@ TEST(ShaderCache, NamingTheEntryPointAfterwardsGivesWhatCompilingWithItGives) {
         CompileOptions options;
         options.entryPoint = c.entry;
         options.debug = c.debug;
+        // Every OpLine to the text targets, as emitting them straight from the module below does.
+        options.lineDirectives = LineDirectives::Statements;
         options.layout.msl.argumentBuffers = c.argumentBuffers;
         const CompileResult r = compileWith(m, nullptr, options);
         const ShaderPlan plan = planShader(m, options);
         SpirvResult front = compileToSpirv(generateGlsl(plan), ShaderStage::Fragment, plan.templateName, SourceLanguage::Glsl,
-                                           plan.entryPoint, {}, c.debug);
+                                           plan.entryPoint, {}, c.debug ? plan.templateShown : "");
         SpirvResult direct = optimizeSpirv(front.words, false, false, !c.debug);
         EXPECT_EQ(direct.words, r.spirv);
         EXPECT_EQ(spirvWords(file(r, ".frag.spv")), direct.words);

@@ -16,6 +16,11 @@ class ShaderCache;
 enum class Target { Spirv, Hlsl, Glsl, Msl };
 std::string_view toString(Target target);
 
+// How often --debug's text outputs carry a `#line` (CompileOptions::lineDirectives), like Slang's -line-directive-mode.
+enum class LineDirectives { None, Functions, Statements };
+
+std::string_view toString(LineDirectives mode);  // "none", "functions", "statements"
+
 struct CompileOptions {
     std::vector<Target> targets{Target::Spirv, Target::Hlsl, Target::Glsl, Target::Msl};
     std::filesystem::path templateFile;  // overrides the material's template when set (--template)
@@ -39,6 +44,9 @@ struct CompileOptions {
     // Readable outputs (like glslc/dxc -O0): no optimisation, so hexc's functions keep their names, and #line
     // directives back to the template and library where the target has them. Not for shipping: slower.
     bool debug = false;
+    // With debug, how often HLSL, GLSL and MSL say where their code came from (`#line`): never, at the start of each
+    // function (hexc's functions, the template's), or before each statement, as the SPIR-V's OpLine always do.
+    LineDirectives lineDirectives = LineDirectives::Functions;
     // Also write the generated Vulkan GLSL fed to glslang, "<material>.generated.frag" (glslangValidator reads it).
     bool emitGenerated = false;
     // When set (the output folder): the manifest's "source" gives the material file, its textures, a template file and

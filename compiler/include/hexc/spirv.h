@@ -34,10 +34,11 @@ constexpr unsigned kGlDefaultBlockBinding = 48, kGlTextureShift = 64;
 // Compiles one Vulkan GLSL (or HLSL) shader to SPIR-V 1.0 for Vulkan 1.0, unoptimised. `name` labels
 // the source in diagnostics when it has no #line names. HLSL registers land as above (HLSL 5.0 has no spaces: set
 // `layout.hlsl.space`); OpenGL bindings as above. `entryPoint`: the HLSL function to compile, or the name a GLSL
-// shader's `main` gets in the module. `debugInfo`: keep source lines (OpLine) for readable outputs.
+// shader's `main` gets in the module. `debugName` non-empty: keep source lines (OpLine) for readable outputs, the
+// source named `debugName` in them (where `name` may be a path only this machine has).
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name,
                            SourceLanguage language = SourceLanguage::Glsl, const std::string& entryPoint = "main",
-                           const ResourceLayout& layout = {}, bool debugInfo = false);
+                           const ResourceLayout& layout = {}, std::string_view debugName = {});
 
 // Validates, optimises for performance and validates again. Diagnostics only on failure (a hexc bug).
 // freezeConstants: specialisation constants become constants first, so the optimiser folds them.

@@ -56,6 +56,9 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
 TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan);
 
+// Whether the text targets carry `#line` directives (--debug, unless --line-directives none).
+inline bool emitsLineDirectives(const CompileOptions& o) { return o.debug && o.lineDirectives != LineDirectives::None; }
+
 // Each target's SPIRV-Cross options from hexc's (version, shader model), for the fragment and the vertex stage alike.
 void configureHlsl(spirv_cross::CompilerHLSL& c, const CompileOptions& options);
 void configureGlsl(spirv_cross::CompilerGLSL& c, const CompileOptions& options);

@@ -11,8 +11,10 @@ std::string banner(const Material& material, const ShaderPlan& plan, const Compi
     std::string targets = "hlsl sm " + std::to_string(options.hlslShaderModel / 10) + "." + std::to_string(options.hlslShaderModel % 10) +
                           ", glsl " + std::to_string(options.glslVersion) + (options.glslEs ? " es" : "") + ", msl " +
                           std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor);
-    std::string code = std::string(options.debug ? "debug (unoptimised)" : "optimised") + (options.bake ? ", baked" : "") +
-                       (options.specialize ? "" : ", not specialised") + (options.shareLattice ? "" : ", no shared lattice");
+    std::string code =
+        std::string(options.debug ? "debug (unoptimised, line directives: " + std::string(toString(options.lineDirectives)) + ")" : "optimised") +
+        (options.bake ? ", baked" : "") + (options.specialize ? "" : ", not specialised") +
+        (options.shareLattice ? "" : ", no shared lattice");
     return kBannerStart + std::string(version()) + " from " + (from.empty() ? material.name : from) + " (material " + material.name +
            ", template " + plan.templateShown + "). Do not edit: change the material and run hexc again.\n" + "// Settings: " + targets +
            "; " + code + "; layout " + toString(options.layout) + ".\n";

@@ -61,7 +61,7 @@ void configureGlsl(spirv_cross::CompilerGLSL& c, const CompileOptions& options) 
     glsl.es = options.glslEs;
     glsl.vulkan_semantics = false;
     glsl.enable_420pack_extension = false;
-    glsl.emit_line_directives = options.debug;
+    glsl.emit_line_directives = emitsLineDirectives(options);
     c.set_common_options(glsl);
 }
 

@@ -108,7 +108,7 @@ void configureHlsl(spirv_cross::CompilerHLSL& c, const CompileOptions& options) 
     hlsl.shader_model = options.hlslShaderModel;
     c.set_hlsl_options(hlsl);
     spirv_cross::CompilerGLSL::Options common = c.get_common_options();
-    common.emit_line_directives = options.debug;
+    common.emit_line_directives = emitsLineDirectives(options);
     c.set_common_options(common);
 }
 

@@ -18,7 +18,7 @@ void configureMsl(spirv_cross::CompilerMSL& c, const CompileOptions& options) {
     msl.argument_buffers = options.layout.msl.argumentBuffers != 0;
     c.set_msl_options(msl);
     spirv_cross::CompilerGLSL::Options common = c.get_common_options();
-    common.emit_line_directives = options.debug;
+    common.emit_line_directives = emitsLineDirectives(options);
     c.set_common_options(common);
 }
 

@@ -10,12 +10,18 @@
 
 #include "backends/backends.h"
 #include "spirv/combined.h"
+#include "spirv/lines.h"
 
 namespace hexc {
 
 std::string_view toString(Target target) {
     static const char* names[] = {"spirv", "hlsl", "glsl", "msl"};
     return names[int(target)];
+}
+
+std::string_view toString(LineDirectives mode) {
+    static const char* names[] = {"none", "functions", "statements"};
+    return names[int(mode)];
 }
 
 std::string shaderFileName(std::string_view material, Target target, std::string_view stage) {
@@ -47,7 +53,7 @@ std::string codeOptionsKey(const CompileOptions& options) {
     for (Target t : std::set<Target>(options.targets.begin(), options.targets.end())) key += std::string(toString(t)) + ",";
     return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
            std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
-           (options.debug ? ",debug" : "");
+           (options.debug ? ",debug," + std::string(toString(options.lineDirectives)) : "");
 }
 
 std::vector<Target> sortedTargets(const CompileOptions& options) {
@@ -65,7 +71,9 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
 
 namespace {
 
-TargetOutput emitTarget(Target t, const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
+// `text`: the module the HLSL, GLSL and MSL targets are written from, with the source lines they are to show.
+TargetOutput emitTarget(Target t, const std::vector<uint32_t>& spirv, const std::vector<uint32_t>& text, const ShaderPlan& plan,
+                        const CompileOptions& options) {
     switch (t) {
         case Target::Spirv: {
             // The other targets are emitted from the separate module (combined.h).
@@ -75,11 +83,11 @@ TargetOutput emitTarget(Target t, const std::vector<uint32_t>& spirv, const Shad
             return out;
         }
         case Target::Hlsl:
-            return emitHlsl(spirv, plan, options);
+            return emitHlsl(text, plan, options);
         case Target::Glsl:
-            return emitGlsl(spirv, plan, options);
+            return emitGlsl(text, plan, options);
         case Target::Msl:
-            return emitMsl(spirv, plan, options);
+            return emitMsl(text, plan, options);
     }
     throw std::logic_error("unknown target");
 }
@@ -93,15 +101,18 @@ TargetOutput emitTarget(Target t, const std::vector<uint32_t>& spirv, const Shad
 std::map<Target, TargetOutput> emitTargets(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options,
                                            const std::vector<Target>& targets) {
     std::map<Target, TargetOutput> out;
+    const bool fewerLines = options.debug && options.lineDirectives == LineDirectives::Functions;
+    const std::vector<uint32_t> text = fewerLines ? functionLinesOnly(spirv) : std::vector<uint32_t>();
+    const std::vector<uint32_t>& textSpirv = fewerLines ? text : spirv;
     if (!options.concurrentTargets || targets.size() < 2 || std::thread::hardware_concurrency() < 2) {
-        for (Target t : targets) out[t] = emitTarget(t, spirv, plan, options);
+        for (Target t : targets) out[t] = emitTarget(t, spirv, textSpirv, plan, options);
         return out;
     }
     auto here = [&](Target t) { return t == Target::Spirv || t == targets.back(); };
     std::map<Target, std::future<TargetOutput>> pending;
     for (Target t : targets)
-        pending[t] = std::async(here(t) ? std::launch::deferred : std::launch::async, emitTarget, t, std::cref(spirv), std::cref(plan),
-                                std::cref(options));
+        pending[t] = std::async(here(t) ? std::launch::deferred : std::launch::async, emitTarget, t, std::cref(spirv), std::cref(textSpirv),
+                                std::cref(plan), std::cref(options));
     for (Target t : targets)
         if (here(t)) pending[t].wait();  // runs it, while the others run on theirs
     std::exception_ptr first;

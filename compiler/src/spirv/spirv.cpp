@@ -1,11 +1,13 @@
 #include "hexc/spirv.h"
 
+#include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <mutex>
 #include <sstream>
@@ -118,7 +120,7 @@ std::string asEs310(const std::string& source, EShLanguage lang, const std::stri
 }  // namespace
 
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name, SourceLanguage language,
-                           const std::string& entryPoint, const ResourceLayout& layout, bool debugInfo) {
+                           const std::string& entryPoint, const ResourceLayout& layout, std::string_view debugName) {
     initializeGlslang();
     SpirvResult result;
     EShLanguage lang = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
@@ -168,7 +170,12 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     glslang::SpvOptions options;
     options.disableOptimizer = true;  // SPIRV-Tools runs next, with passes chosen in optimizeSpirv
     options.validate = false;
-    options.generateDebugInfo = debugInfo;
+    options.generateDebugInfo = !debugName.empty();
+    // Source string 0 (the template) named in the module's lines, so a target's `#line` names it rather than "". A `"`
+    // cannot stand in a `#line` name: it becomes `'` there.
+    std::string lineName(debugName);
+    std::replace(lineName.begin(), lineName.end(), '"', '\'');
+    if (options.generateDebugInfo) program.getIntermediate(lang)->setSourceFile(lineName.c_str());
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(*program.getIntermediate(lang), result.words, &logger, &options);
     if (std::string log = logger.getAllMessages(); log.find("error") != std::string::npos) {
