@@ -22,6 +22,12 @@ inline vk::Runner* runner(std::string* why) {
     return r.get();
 }
 
+// A file's bytes ("" when it cannot be read).
+inline std::string readFile(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 // The running test's name as a file name: a parameterised test's name has a `/`.
 inline std::string testLogName() {
     std::string name = testing::UnitTest::GetInstance()->current_test_info()->name();

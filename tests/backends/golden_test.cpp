@@ -15,16 +15,12 @@
 #include "support.h"
 
 namespace fs = std::filesystem;
+using hexc::test::readFile;
 using hexc::test::runHexc;
 
 namespace {
 
 const fs::path kGolden = "tests/golden";
-
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // Every folder of tests/golden with an args file, by name.
 std::vector<std::string> goldenNames() {
