@@ -8,9 +8,11 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <new>
 #include <sstream>
 
 #include "options.h"
+#include "hexc/budgets.h"
 #include "progress.h"
 #include "hexc/material.h"
 #include "reference/reference.h"
@@ -76,9 +78,10 @@ std::unique_ptr<vk::Runner> makeRunner() {
     return runner;
 }
 
-// Runs a command body, mapping failures to the documented exit codes.
+// Runs a command body, mapping failures to the documented exit codes. `material` names the input an out-of-memory
+// condition is reported against (the body fills it in once it knows it).
 template <typename Body>
-int guarded(Body body) {
+int guarded(const std::string& material, Body body) {
     try {
         return body();
     } catch (const UsageError& e) {
@@ -93,6 +96,12 @@ int guarded(Body body) {
     } catch (const TextureError& e) {  // a texture that passed validation (its header) but does not decode
         std::cerr << "hexc: " << e.what() << "\n";
         return kInvalidInput;
+    } catch (const std::bad_alloc&) {  // an input larger than this machine holds, within the budgets: not an output's fault
+        std::cerr << Diagnostic::make(Code::OutOfMemory, {material}, "",
+                                      "out of memory: its textures or the image need more than this machine has")
+                         .format()
+                  << "\n";
+        return kInvalidInput;
     } catch (const vk::VulkanError& e) {
         std::cerr << "hexc: Vulkan: " << e.what() << "\n";
         return kNoVulkan;
@@ -100,6 +109,18 @@ int guarded(Body body) {
         std::cerr << "hexc: " << e.what() << "\n";
         return kWriteFailed;
     }
+}
+
+// Refuses, before any texture is decoded, one over the budget of `stage` among the material's slots (or `only` and its
+// height slot).
+void checkTexelBudget(const Material& material, TextureStage stage, const Slot* only = nullptr) {
+    Diagnostics over;
+    for (const Slot& s : material.slots) {
+        if (only && s.name != only->name && !(only->heightBlend && s.name == only->heightBlend->slot)) continue;
+        if (stage == TextureStage::Histogram && s.hex.blend != Blend::Histogram) continue;  // the slots it runs for
+        if (std::optional<Diagnostic> d = overTexelBudget(material, s, stage)) over.push_back(*d);
+    }
+    if (!over.empty()) throw CompileError{over};
 }
 
 // Draws text with stb_easy_font's quads, scaled, in white on whatever is there.
@@ -242,23 +263,10 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
     return std::nullopt;
 }
 
-// The reference holds a texture as fp64 RGBA with its mips: 32 bytes per texel, 4/3 of that with the chain, so
-// 4096 x 4096 takes 716 MB and 16384 x 16384 would take 11.5 GB. Larger textures are refused before loading.
-constexpr int64_t kReferenceTexels = 4096 * 4096;
-
-void checkReferenceSize(const Material& material, const Slot& slot) {
-    for (const Slot& s : material.slots) {
-        if (s.name != slot.name && !(slot.heightBlend && s.name == slot.heightBlend->slot)) continue;
-        if (int64_t(s.width) * s.height > kReferenceTexels)
-            throw TextureError(s.texturePath.string() + ": " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-                               " is too large for --reference (at most 4096x4096 texels: it holds them in fp64)");
-    }
-}
-
 // The fp64 reference image of the slot `r` shows, as the GPU would show it.
 Image referenceImage(const Material& material, const RenderArguments& r) {
     const Slot& s = vk::slotForOutput(material, r.output, r.slot);
-    checkReferenceSize(material, s);
+    checkTexelBudget(material, TextureStage::Reference, &s);
     reference::SampledTexture texture(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb));
     const reference::Heights heights(material, s);
     Image image =
@@ -274,8 +282,8 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
 }  // namespace
 
 int renderCommand(const std::vector<std::string>& args) {
-    return guarded([&] {
-        RenderArguments r;
+    RenderArguments r;
+    return guarded(r.material, [&] {
         if (std::optional<int> done = parseRender(args, r)) return *done;
         auto material = loadMaterial(r.material);
         if (!material) return int(kInvalidInput);
@@ -289,6 +297,7 @@ int renderCommand(const std::vector<std::string>& args) {
             image = referenceImage(*material, r);
         } else {
             if (r.output == vk::RenderOutput::Shaded) *material = shownMaterial(*material, r.show.templateFile, options);
+            checkTexelBudget(*material, TextureStage::Render);
             auto runner = makeRunner();
             if (!runner) return int(kNoVulkan);
             progress.step("rendering " + size + " pixels on " + runner->deviceName());
@@ -360,8 +369,9 @@ Image previewSheet(vk::Runner& runner, const Material& material, int cell, const
 }
 
 int previewCommand(const std::vector<std::string>& args) {
-    return guarded([&] {
-        std::string materialPath, out;
+    std::string materialPath;
+    return guarded(materialPath, [&] {
+        std::string out;
         int cell = 256;
         bool quiet = false;
         ShowOptions show;
@@ -380,6 +390,8 @@ int previewCommand(const std::vector<std::string>& args) {
         CompileOptions options;
         if (!show.resolve(options)) return int(kInvalidInput);
         const Material shown = shownMaterial(*material, show.templateFile, options);
+        checkTexelBudget(shown, TextureStage::Render);
+        checkTexelBudget(withBlend(shown, Blend::Histogram), TextureStage::Histogram);  // its histogram column
         auto runner = makeRunner();
         if (!runner) return int(kNoVulkan);
 

@@ -2,6 +2,8 @@
 #include <spirv_cross_error_handling.hpp>
 
 #include <algorithm>
+#include <new>
+#include <optional>
 
 #include "backends/backends.h"
 #include "backends/shader_code.h"
@@ -11,6 +13,7 @@
 #include "hexc/spirv.h"
 #include "plan/plan.h"
 #include "precompute/derived.h"
+#include "spirv/module.h"
 #include "spirv/share.h"
 
 namespace hexc {
@@ -25,6 +28,10 @@ ShaderCode compileCode(const std::string& glsl, const ShaderPlan& plan, const Co
                                        options.debug ? plan.templateShown : "");
     append(diagnostics, front.diagnostics);
     if (front.words.empty()) return {};
+    if (std::optional<Diagnostic> d = spirv::beyondOptimiserBound(front.words, plan.templateName)) {
+        diagnostics.push_back(*d);
+        return {};
+    }
     SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);
     append(diagnostics, optimized.diagnostics);
     if (optimized.words.empty()) return {};
@@ -119,6 +126,9 @@ CompileResult compile(const Material& material, const CompileOptions& options) {
     } catch (const spirv_cross::CompilerError& e) {
         result.diagnostics.push_back(
             Diagnostic::make(Code::TargetUnsupported, {material.sourceFile.string()}, "", std::string("SPIRV-Cross: ") + e.what()));
+    } catch (const std::bad_alloc&) {  // what the budgets do not foresee (a huge template, many large textures at once)
+        result.diagnostics.push_back(Diagnostic::make(Code::OutOfMemory, {material.sourceFile.string()}, "",
+                                                      "out of memory compiling this material (docs/cli.md#budgets)"));
     } catch (const std::exception& e) {
         // compile() never throws: anything else is hexc's own fault, reported as such.
         result.diagnostics.push_back(

@@ -43,6 +43,7 @@ enum class Code {
     TextureChannels,
     TextureColorSpace,
     NotPacked,
+    TextureTooLarge,
     // templates and shader code
     UnknownTemplate,
     TemplateUnreadable,
@@ -59,6 +60,7 @@ enum class Code {
     TargetUnsupported,
     // hexc itself
     Internal,
+    OutOfMemory,
 };
 
 struct Diagnostic {
@@ -95,6 +97,8 @@ std::span<const CodeInfo> codeCatalogue();
 std::string_view toString(Code code);  // its id, "HX104"
 
 bool hasErrors(const Diagnostics& diags);
+// One line each, at most 100 per file, then a line counting the rest per file. Diagnostic::make shortens a value it
+// quotes (`...`) and the path to 200 bytes, saying how long they were.
 std::string formatAll(const Diagnostics& diags);
 
 // Thrown only by stages that cannot continue; carries the located problems.

@@ -1,6 +1,7 @@
 #include "hexc/diagnostics.h"
 
 #include <iterator>
+#include <map>
 
 namespace hexc {
 namespace {
@@ -37,6 +38,7 @@ constexpr CodeInfo kCatalogue[] = {
     {Code::TextureChannels, "HX122", Error},
     {Code::TextureColorSpace, "HX123", Warning},
     {Code::NotPacked, "HX124", Warning},
+    {Code::TextureTooLarge, "HX125", Error},
     {Code::UnknownTemplate, "HX200", Error},
     {Code::TemplateUnreadable, "HX201", Error},
     {Code::TemplateNoVersion, "HX202", Error},
@@ -50,6 +52,7 @@ constexpr CodeInfo kCatalogue[] = {
     {Code::TemplateSetConflict, "HX210", Error},
     {Code::TargetUnsupported, "HX300", Error},
     {Code::Internal, "HX900", Error},
+    {Code::OutOfMemory, "HX901", Error},
 };
 // clang-format on
 
@@ -59,7 +62,36 @@ constexpr bool inEnumOrder() {
         if (kCatalogue[i].code != Code(i)) return false;
     return true;
 }
-static_assert(inEnumOrder() && std::size(kCatalogue) == size_t(Code::Internal) + 1, "kCatalogue must list every Code in enum order");
+static_assert(inEnumOrder() && std::size(kCatalogue) == size_t(Code::OutOfMemory) + 1, "kCatalogue must list every Code in enum order");
+
+// A value a diagnostic quotes back (a name, a key, a JSON path) is shown up to this many bytes: a 60 MB name is the
+// input's mistake, not something to print whole.
+constexpr size_t kMaxQuoted = 200;
+// Diagnostics printed per file: the first ones show what is wrong; thousands more from one generated file would bury
+// them and take the terminal's time.
+constexpr size_t kMaxPerFile = 100;
+
+// `text` cut to kMaxQuoted bytes (not inside a UTF-8 character) with the length it had.
+std::string shortened(std::string_view text) {
+    if (text.size() <= kMaxQuoted) return std::string(text);
+    size_t end = kMaxQuoted;
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+    return std::string(text.substr(0, end)) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+
+// Every `quoted` or "quoted" span of the message shortened.
+std::string withQuotesShortened(const std::string& message) {
+    if (message.size() <= kMaxQuoted) return message;
+    std::string out;
+    size_t at = 0;
+    for (size_t open; (open = message.find_first_of("`\"", at)) != std::string::npos;) {
+        const size_t close = message.find(message[open], open + 1);
+        if (close == std::string::npos) break;
+        out += message.substr(at, open + 1 - at) + shortened(std::string_view(message).substr(open + 1, close - open - 1)) + message[open];
+        at = close + 1;
+    }
+    return out + message.substr(at);
+}
 
 }  // namespace
 
@@ -68,7 +100,8 @@ std::span<const CodeInfo> codeCatalogue() { return kCatalogue; }
 std::string_view toString(Code code) { return kCatalogue[size_t(code)].id; }
 
 Diagnostic Diagnostic::make(Code code, SourceLoc loc, std::string path, std::string message, std::string hint) {
-    return Diagnostic(code, kCatalogue[size_t(code)].severity, std::move(loc), std::move(path), std::move(message), std::move(hint));
+    return Diagnostic(code, kCatalogue[size_t(code)].severity, std::move(loc), shortened(path), withQuotesShortened(message),
+                      withQuotesShortened(hint));
 }
 
 std::string Diagnostic::format() const {
@@ -90,7 +123,15 @@ bool hasErrors(const Diagnostics& diags) {
 
 std::string formatAll(const Diagnostics& diags) {
     std::string out;
-    for (const Diagnostic& d : diags) out += d.format() + "\n";
+    std::map<std::string, size_t> shown, hidden;  // per file
+    for (const Diagnostic& d : diags)
+        if (shown[d.loc.file] < kMaxPerFile)
+            out += d.format() + "\n", ++shown[d.loc.file];
+        else
+            ++hidden[d.loc.file];
+    for (const auto& [file, count] : hidden)
+        out += (file.empty() ? "hexc" : file) + ": " + std::to_string(count) + " more diagnostics not shown (the first " +
+               std::to_string(kMaxPerFile) + " are)\n";
     return out;
 }
 

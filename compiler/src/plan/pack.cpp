@@ -2,17 +2,23 @@
 
 #include <algorithm>
 
+#include "hexc/budgets.h"
 #include "hexc/image.h"
 
 namespace hexc {
 namespace {
+
+void notPacked(ShaderPlan& plan, size_t i, const std::string& why) {
+    plan.diagnostics.push_back(Diagnostic::make(Code::NotPacked, {plan.slots[i].slot->texturePath.string()}, "",
+                                                "slot `" + plan.slots[i].slot->name + "` is not packed: " + why));
+}
 
 // The channels a slot takes in a packed texture: 3 (a colour slot's RGB), 1 (a scalar's channel), or 0 when it cannot
 // be packed. Packing copies 8-bit texels, so the packed texture samples exactly as the slots' own would: float and
 // block-compressed textures are not packed. A colour slot returns its texture's alpha, so only an opaque one leaves
 // alpha free. Normal slots blend derivatives of 2-3 channels on their own path, and the histogram blend, height
 // blending, one tap, triplanar planes and MaterialX mode fetch on paths of their own.
-int packChannels(const ShaderPlan& plan, size_t i) {
+int packChannels(ShaderPlan& plan, size_t i) {
     const SlotPlan& sp = plan.slots[i];
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
@@ -21,6 +27,12 @@ int packChannels(const ShaderPlan& plan, size_t i) {
         return 0;
     for (const SlotPlan& other : plan.slots)
         if (other.heightMap == i) return 0;
+    if (int64_t(s.width) * s.height > texelBudget(TextureStage::Packing)) {
+        notPacked(plan, i,
+                  "its texture is " + std::to_string(s.width) + "x" + std::to_string(s.height) + "; packing takes " +
+                      texelBudgetText(TextureStage::Packing));
+        return 0;
+    }
     Texture t;
     try {
         t = loadTexture(s.texturePath, false);
@@ -32,11 +44,6 @@ int packChannels(const ShaderPlan& plan, size_t i) {
     for (size_t p = 3; p < t.rgba8.size(); p += 4)
         if (t.rgba8[p] != 255) return 0;
     return 3;
-}
-
-void notPacked(ShaderPlan& plan, size_t i, const std::string& why) {
-    plan.diagnostics.push_back(Diagnostic::make(Code::NotPacked, {plan.slots[i].slot->texturePath.string()}, "",
-                                                "slot `" + plan.slots[i].slot->name + "` is not packed: " + why));
 }
 
 // Packs of one lattice's slots `group` (declaration order, one texture size): each colour slot with the next linear

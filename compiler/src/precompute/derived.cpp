@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hexc/budgets.h"
 #include "hexc/cache.h"
 #include "hexc/files.h"
 #include "hexc/hash.h"
@@ -17,6 +18,7 @@ nlohmann::json binary(std::string_view bytes) { return nlohmann::json::binary(st
 // A histogram slot's derived textures (hexc/histogram.h) as PFM files' bytes: float32 keeps T and its inverse exact,
 // and hexc reads and writes PFM byte for byte. A texture that cannot be read stops the compile.
 HistogramTransform transformOf(const Material& material, const Slot& s) {
+    if (std::optional<Diagnostic> d = overTexelBudget(material, s, TextureStage::Histogram)) throw CompileError{{*d}};
     try {
         return histogramTransform(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb), s);
     } catch (const TextureError& e) {
