@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer target for SECONDS (default 60) from a build configured with clang and -DHEXC_FUZZ=ON:
-#   tests/fuzz/run.sh build-asan 60
+#   tests/fuzz/run.sh build-asan 60      (300 or more for a longer run: docs/verification.md)
 # Seeds: the example, invalid and scene materials (parse, compile), the MaterialX documents (mtlx), the built-in
-# templates (template) and the bare KTX2 and DDS magic (texture), plus the corpus each target grew in earlier runs
+# templates (template) and one byte per container (texture: KTX2, DDS, EXR), plus the corpus each target grew in earlier runs
 # (BUILD/fuzz-corpus/TARGET). A crash stops the run with the
 # input saved as BUILD/fuzz-artifacts/TARGET/crash-*; add it to tests/fuzz/regressions/TARGET/ once fixed.
 set -euo pipefail
@@ -17,16 +17,18 @@ for target in parse mtlx compile template texture; do
   elif [ "$target" = mtlx ]; then
     cp materials/mtlx/*.mtlx materials/mtlx/invalid/*.mtlx "$seeds"/
   elif [ "$target" = texture ]; then
-    printf '\001' > "$seeds/ktx2" && printf '\000' > "$seeds/dds"  # the container's magic is added by the target
+    printf '\000' > "$seeds/ktx2" && printf '\001' > "$seeds/dds"  # the container's magic is added by the target
+    printf '\002' > "$seeds/exr"
   else
     cp materials/*.json materials/invalid/*.json materials/scenes/*.json "$seeds"/
   fi
   echo "fuzz_$target: ${seconds} s"
   # -rss_limit_mb: hexc's inputs are capped; a run that needs more is a finding. -timeout: one input, seconds.
   log=$build/fuzz-$target.log
-  dict=tests/fuzz/material.dict
-  [ "$target" = mtlx ] && dict=tests/fuzz/mtlx.dict
-  if ! "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -dict="$dict" \
+  dict=tests/fuzz/material.dict max_len=16384
+  # MaterialX documents need room to be slow: quadratic locating showed only past tens of KB.
+  [ "$target" = mtlx ] && dict=tests/fuzz/mtlx.dict max_len=65536
+  if ! "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -dict="$dict" -max_len="$max_len" \
       -rss_limit_mb=4096 -timeout=30 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" "$seeds" > "$log" 2>&1; then
     tail -n 60 "$log"
     echo "fuzz_$target failed: the input is in $artifacts/" >&2

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -193,6 +194,30 @@ Header header(Kind kind, const std::filesystem::path& file) {
     return h;
 }
 
+// Scanlines per chunk by compression (NONE, RLE, ZIPS, ZIP, PIZ, PXR24, B44, B44A, DWAA, DWAB), the OpenEXR file layout.
+constexpr int kExrLinesPerChunk[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
+
+// Why an EXR header cannot be used, or empty: its data window as a size of 1..65536 (in 64 bits: the window's corners
+// are any 32-bit integers), and level 0's chunk table in the file. Each chunk takes an 8-byte offset and at least an
+// 8-byte chunk header, so a file too short for those cannot hold the image whatever its compression.
+std::string exrProblem(const EXRHeader& h, const std::filesystem::path& file, int64_t width, int64_t height) {
+    if (width < 1 || height < 1 || width > 65536 || height > 65536)
+        return "the data window gives " + std::to_string(width) + "x" + std::to_string(height) + " (sizes are 1..65536)";
+    if (h.compression_type < 0 || h.compression_type >= int(std::size(kExrLinesPerChunk))) return "an unknown compression";
+    int64_t chunks = 0;
+    if (h.tiled) {
+        if (h.tile_size_x < 1 || h.tile_size_y < 1) return "a tile size under 1";
+        chunks = (width + h.tile_size_x - 1) / h.tile_size_x * ((height + h.tile_size_y - 1) / h.tile_size_y);
+    } else {
+        const int lines = kExrLinesPerChunk[h.compression_type];
+        chunks = (height + lines - 1) / lines;
+    }
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(file, ec);
+    if (ec || uint64_t(h.header_len) + uint64_t(chunks) * 16 > size) return "the file is truncated (level 0 does not fit)";
+    return {};
+}
+
 std::optional<TextureInfo> exrInfo(const std::filesystem::path& file, std::string* error) {
     EXRVersion version;
     EXRHeader h;
@@ -205,17 +230,23 @@ std::optional<TextureInfo> exrInfo(const std::filesystem::path& file, std::strin
         FreeEXRHeader(&h);
         return std::nullopt;
     }
+    const int64_t width = int64_t(h.data_window.max_x) - h.data_window.min_x + 1;
+    const int64_t height = int64_t(h.data_window.max_y) - h.data_window.min_y + 1;
+    const std::string problem = exrProblem(h, file, width, height);
     TextureInfo info;
-    info.width = h.data_window.max_x - h.data_window.min_x + 1;
-    info.height = h.data_window.max_y - h.data_window.min_y + 1;
-    info.channels = std::min(h.num_channels, 4);
+    info.width = int(width), info.height = int(height), info.channels = std::clamp(h.num_channels, 0, 4);
     info.channelNames = std::string("rgba").substr(0, size_t(info.channels));
     info.format = "OpenEXR";
     FreeEXRHeader(&h);
+    if (!problem.empty()) {
+        *error = "OpenEXR: " + problem;
+        return std::nullopt;
+    }
     return info;
 }
 
 Texture loadExr(const std::filesystem::path& file) {
+    if (std::string why; !exrInfo(file, &why)) throw TextureError(file.string() + ": " + why);
     float* rgba = nullptr;
     const char* err = nullptr;
     Texture t;

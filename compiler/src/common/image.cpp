@@ -48,6 +48,7 @@ struct PfmHeader {
     bool littleEndian = true;
 };
 
+// The header, checked like every container's: a size of 1..65536 and the texels in the file.
 PfmHeader readPfmHeader(std::ifstream& in, const std::filesystem::path& file) {
     if (!in) failRead(file, "cannot open for reading");
     std::string magic;
@@ -55,10 +56,14 @@ PfmHeader readPfmHeader(std::ifstream& in, const std::filesystem::path& file) {
     double scale = 0;
     in >> magic >> h.width >> h.height >> scale;
     in.get();  // the single whitespace character that ends the header
-    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || scale == 0)
+    if (!in || (magic != "PF" && magic != "Pf") || h.width <= 0 || h.height <= 0 || h.width > 65536 || h.height > 65536 || scale == 0)
         failRead(file, "not a PFM file (bad header)");
     h.channels = magic == "PF" ? 3 : 1;
     h.littleEndian = scale < 0;
+    const uint64_t dataBytes = uint64_t(h.width) * uint64_t(h.height) * h.channels * 4;
+    std::error_code ec;
+    const uint64_t fileBytes = std::filesystem::file_size(file, ec);
+    if (ec || dataBytes > fileBytes - uint64_t(in.tellg())) failRead(file, "PFM file is truncated");
     return h;
 }
 
@@ -67,11 +72,6 @@ Texture loadPfm(const std::filesystem::path& file) {
     const PfmHeader header = readPfmHeader(in, file);
     const int width = header.width, height = header.height;
     const int channels = header.channels;
-    // Check the size before allocating, so a corrupt header cannot ask for gigabytes.
-    const uint64_t dataBytes = uint64_t(width) * uint64_t(height) * channels * 4;
-    std::error_code ec;
-    const uint64_t fileBytes = std::filesystem::file_size(file, ec);
-    if (ec || dataBytes > fileBytes - uint64_t(in.tellg())) failRead(file, "PFM file is truncated");
     std::vector<uint32_t> words(size_t(width) * height * channels);
     in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * 4));
     if (in.gcount() != std::streamsize(words.size() * 4)) failRead(file, "PFM file is truncated");
@@ -130,6 +130,42 @@ bool truncatedPng(const std::filesystem::path& file) {
     return true;
 }
 
+uint64_t littleEndian(const unsigned char* p, int bytes) {
+    uint64_t v = 0;
+    for (int i = bytes - 1; i >= 0; --i) v = v << 8 | p[i];
+    return v;
+}
+
+// What the headers of stb's formats say that stbi_info does not check: a PNG's size outside 1..65536 (beyond stb's own
+// limit, stbi_info says only "unknown image type"), and an uncompressed BMP or TGA whose texels are not all in the file.
+// Empty when there is nothing wrong with it. 64-bit arithmetic throughout: every field is the file's to choose.
+std::string stbHeaderProblem(const std::filesystem::path& file) {
+    unsigned char b[54] = {};
+    std::ifstream in(file, std::ios::binary);
+    in.read(reinterpret_cast<char*>(b), sizeof b);
+    const size_t got = size_t(in.gcount());
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(file, ec);
+    const auto sized = [](int64_t w, int64_t h) { return std::to_string(w) + "x" + std::to_string(h) + " (sizes are 1..65536)"; };
+    if (got >= 24 && std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) == 0) {
+        const int64_t w = int64_t(b[16]) << 24 | b[17] << 16 | b[18] << 8 | b[19],
+                      h = int64_t(b[20]) << 24 | b[21] << 16 | b[22] << 8 | b[23];
+        if (w < 1 || h < 1 || w > 65536 || h > 65536) return "the PNG header gives " + sized(w, h);
+    }
+    uint64_t needed = 0;  // bytes of an uncompressed file's header and texels
+    if (got >= 54 && b[0] == 'B' && b[1] == 'M' && littleEndian(b + 14, 4) >= 40 &&
+        (littleEndian(b + 30, 4) == 0 || littleEndian(b + 30, 4) == 3)) {
+        const uint64_t w = uint64_t(std::llabs(int32_t(littleEndian(b + 18, 4)))),
+                       h = uint64_t(std::llabs(int32_t(littleEndian(b + 22, 4))));
+        needed = littleEndian(b + 10, 4) + (w * littleEndian(b + 28, 2) + 31) / 32 * 4 * h;  // rows padded to 4 bytes
+    } else if (got >= 18 && lowerExtension(file) == ".tga" && b[2] >= 1 && b[2] <= 3) {      // colour-mapped, true-colour, grey
+        const uint64_t colourMap = b[1] ? littleEndian(b + 5, 2) * ((b[7] + 7) / 8) : 0;
+        needed = 18 + b[0] + colourMap + littleEndian(b + 12, 2) * littleEndian(b + 14, 2) * ((b[16] + 7) / 8);
+    }
+    if (ec || needed > size) return "the file is truncated (its texels do not fit)";
+    return {};
+}
+
 }  // namespace
 
 std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::string* error) {
@@ -146,14 +182,22 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
             std::ifstream in(file, std::ios::binary);
             PfmHeader h = readPfmHeader(in, file);
             return TextureInfo{h.width, h.height, h.channels, h.channels == 3 ? "rgb" : "r", 1, std::nullopt};
-        } catch (const std::runtime_error&) {
-            *error = "not a PFM file (bad header)";
+        } catch (const TextureError& e) {
+            *error = std::string(e.what()).substr(file.string().size() + 2);  // the reason, without the file name
             return std::nullopt;
         }
+    }
+    if (std::string problem = stbHeaderProblem(file); !problem.empty()) {
+        *error = problem;
+        return std::nullopt;
     }
     if (!stbi_info(file.string().c_str(), &info.width, &info.height, &info.channels)) {
         const char* reason = stbi_failure_reason();
         *error = reason ? reason : "cannot read image";
+        return std::nullopt;
+    }
+    if (info.width < 1 || info.height < 1 || info.width > 65536 || info.height > 65536) {
+        *error = "the header gives " + std::to_string(info.width) + "x" + std::to_string(info.height) + " (sizes are 1..65536)";
         return std::nullopt;
     }
     if (truncatedPng(file)) {
