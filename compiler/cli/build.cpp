@@ -55,10 +55,12 @@ std::string whyNotInScene(const std::string& variant, const std::vector<SceneSum
 
 // Errors always; warnings unless --no-warnings, and a slot a scene pass leaves out on purpose only with -v.
 bool printDiagnostics(const Diagnostics& diags, const Arguments& a, bool passReadsFewer = false) {
+    Diagnostics shown;
     for (const Diagnostic& d : byPosition(diags)) {
         const bool expected = passReadsFewer && d.code == Code::SlotNotRead && !a.verbose;
-        if (d.severity == Diagnostic::Severity::Error || (a.warnings && !expected)) std::cerr << d.format() << "\n";
+        if (d.severity == Diagnostic::Severity::Error || (a.warnings && !expected)) shown.push_back(d);
     }
+    std::cerr << formatAll(shown);
     return !hasErrors(diags);
 }
 
@@ -319,12 +321,13 @@ void makeOutputFolder(const std::filesystem::path& dir) {
     if (ec) throw std::runtime_error("cannot create the output folder " + dir.string() + ": " + ec.message());
 }
 
-// Writes every output, then the stamps (a crash before them leaves the jobs to be compiled again next time),
-// removes what the replaced stamps listed and none lists now, then writes the depfile. Returns the bytes
-// written; throws when something cannot be written.
+// Removes the temporaries of killed writers, writes every output, then the stamps (a crash before them leaves the
+// jobs to be compiled again next time), removes what the replaced stamps listed and none lists now, then writes the
+// depfile. Returns the bytes written; throws when something cannot be written.
 size_t writeOutputs(const Arguments& a, const Outputs& out, const std::string& depfile) {
     size_t bytes = 0;
     makeOutputFolder(a.outDir);
+    removeDeadTemporaries(a.outDir);
     std::set<std::string> before;  // what the stamps about to be replaced listed
     for (const auto& [name, text] : out.stamps)
         for (std::string& o : stampedOutputs(a.outDir, name)) before.insert(std::move(o));
@@ -337,8 +340,9 @@ size_t writeOutputs(const Arguments& a, const Outputs& out, const std::string& d
     // A build system ran hexc because an input looks newer than these outputs (a touched texture): with their
     // times refreshed, Make sees them up to date next time instead of running hexc on every build.
     std::error_code ec;
-    for (const std::string& o : out.settled)
-        std::filesystem::last_write_time(a.outDir / o, std::filesystem::file_time_type::clock::now(), ec);
+    for (const std::string& o : out.settled)  // plain names from trusted stamps; a symlink's target is not ours to touch
+        if (std::filesystem::is_regular_file(std::filesystem::symlink_status(a.outDir / o, ec)))
+            std::filesystem::last_write_time(a.outDir / o, std::filesystem::file_time_type::clock::now(), ec);
     if (!a.depfile.empty())
         writeAtomically(a.depfile.parent_path().empty() ? "." : a.depfile.parent_path(), a.depfile.filename().string(), depfile);
     return bytes;

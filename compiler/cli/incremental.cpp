@@ -61,19 +61,42 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
 
 std::string stampName(const std::string& name) { return "." + name + ".hexc-stamp"; }
 
+namespace {
+
+// A stamp: its hash line, one output name per line, and a seal: the hash of the lines above it. A stamp whose seal
+// does not match (a list cut short or edited, a file from elsewhere) is not trusted, as if there were none: the
+// material compiles again and writes every output. Only plain names (a file in the folder) are ever read from one.
+std::string stampSeal(const std::vector<std::string>& lines) {
+    ContentHash h;
+    h.add("hexc stamp");
+    for (const std::string& line : lines) h.add(line);
+    return "seal " + h.hex();
+}
+
+}  // namespace
+
 std::string stampText(const std::string& hash, const std::vector<std::string>& outputs) {
-    std::string text = hash + "\n";
-    for (const auto& o : outputs) text += o + "\n";
-    return text;
+    std::vector<std::string> lines{hash};
+    lines.insert(lines.end(), outputs.begin(), outputs.end());
+    std::string text;
+    for (const auto& line : lines) text += line + "\n";
+    return text + stampSeal(lines) + "\n";
 }
 
 namespace {
 
-// A stamp: its hash line, then one output name per line.
+bool plainName(const std::string& name) {
+    return !name.empty() && name != "." && name != ".." && name.find_first_of(std::string("/\0", 2)) == std::string::npos;
+}
+
+// A trusted stamp's hash line and outputs; empty for none, or one that is not trusted.
 std::vector<std::string> stampLines(const std::filesystem::path& file) {
     std::ifstream in(file);
     std::vector<std::string> lines;
     for (std::string line; std::getline(in, line);) lines.push_back(line);
+    if (lines.size() < 2 || lines.back() != stampSeal({lines.begin(), lines.end() - 1})) return {};
+    lines.pop_back();
+    if (!std::all_of(lines.begin() + 1, lines.end(), plainName)) return {};
     return lines;
 }
 
@@ -101,7 +124,7 @@ void removeStaleOutputs(const std::filesystem::path& dir, const std::set<std::st
         if (!lines.empty()) live.insert(lines.begin() + 1, lines.end());
     }
     for (const std::string& name : before)
-        if (!live.contains(name) && name.find('/') == std::string::npos && std::filesystem::is_regular_file(dir / name, ec))
+        if (!live.contains(name) && std::filesystem::is_regular_file(dir / name, ec))  // plain names: from stampLines
             std::filesystem::remove(dir / name, ec);
 }
 

@@ -6,9 +6,26 @@
 #include "options.h"
 #include "render.h"
 
+#include <csignal>
+
+#include "hexc/files.h"
+
 using namespace hexc;
 
+namespace {
+
+// Interrupted (Ctrl-C, a build system's kill): the temporaries being written are removed, then the signal ends the
+// process as it would have.
+extern "C" void interrupted(int signal) {
+    removeOwnTemporaries();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) std::signal(s, interrupted);
     std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && args[0] == "render") return cli::renderCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "preview") return cli::previewCommand({args.begin() + 1, args.end()});

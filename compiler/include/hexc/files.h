@@ -26,4 +26,12 @@ std::string whyNotRegular(const std::filesystem::path& file);
 // temporary and throws std::runtime_error naming `file`.
 void writeFileAtomically(const std::filesystem::path& file, const std::function<bool(const std::filesystem::path&)>& write);
 
+// Removes the temporaries writeFileAtomically is writing in this process, for a SIGINT or SIGTERM handler before the
+// process ends: async-signal-safe (no allocation, no locks; unlink only).
+void removeOwnTemporaries();
+
+// Removes from `dir` the temporaries of writers that are no longer running (killed before they could rename or
+// remove them): their pid is in the name, and no process has it.
+void removeDeadTemporaries(const std::filesystem::path& dir);
+
 }  // namespace hexc

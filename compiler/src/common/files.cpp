@@ -1,6 +1,7 @@
 #include "hexc/files.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -20,7 +21,61 @@ struct Fd {
     }
 };
 
+// The temporaries this process is writing, for removeOwnTemporaries, which a signal handler calls: fixed storage
+// and atomics only. A writer past kInFlight (more threads than that writing at once) is not tracked: its temporary
+// is removed by a later run as a dead writer's.
+constexpr size_t kInFlight = 64;
+struct InFlight {
+    std::atomic<int> state{0};  // 0 free, 1 being filled, 2 holds a path
+    char path[4096];
+};
+InFlight inFlight[kInFlight];
+
+// Registers `temp`; returns its entry, or kInFlight when none was free or the path is too long.
+size_t track(const std::filesystem::path& temp) {
+    const std::string& path = temp.native();
+    if (path.size() >= sizeof inFlight[0].path) return kInFlight;
+    for (size_t i = 0; i < kInFlight; ++i) {
+        int free = 0;
+        if (!inFlight[i].state.compare_exchange_strong(free, 1)) continue;
+        std::memcpy(inFlight[i].path, path.c_str(), path.size() + 1);
+        inFlight[i].state = 2;
+        return i;
+    }
+    return kInFlight;
+}
+
+void untrack(size_t entry) {
+    if (entry < kInFlight) inFlight[entry].state = 0;
+}
+
+// A temporary writeFileAtomically names: ".<name>.<pid>.<n>.tmp"; the writer's pid, or 0 when `file` is not one.
+pid_t temporaryWriter(const std::string& file) {
+    if (!file.starts_with(".") || !file.ends_with(".tmp")) return 0;
+    const size_t counter = file.rfind('.', file.size() - 5), pid = counter == std::string::npos ? counter : file.rfind('.', counter - 1);
+    if (pid == std::string::npos || pid == 0) return 0;
+    const std::string digits = file.substr(pid + 1, counter - pid - 1);
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
+    return pid_t(std::stol(digits));
+}
+
 }  // namespace
+
+void removeOwnTemporaries() {
+    for (InFlight& f : inFlight)
+        if (f.state == 2) ::unlink(f.path);
+}
+
+void removeDeadTemporaries(const std::filesystem::path& dir) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        const pid_t writer = temporaryWriter(entry.path().filename().string());
+        // kill(pid, 0) fails with ESRCH only when no such process exists; a live one (even another program that
+        // reused the pid) keeps its file.
+        if (writer > 0 && writer != ::getpid() && ::kill(writer, 0) != 0 && errno == ESRCH && entry.is_regular_file(ec))
+            std::filesystem::remove(entry.path(), ec);
+    }
+}
 
 std::optional<std::string> readFile(const std::filesystem::path& file, std::string* whyNot) {
     auto fail = [&](std::string why) -> std::optional<std::string> {
@@ -67,11 +122,14 @@ void writeFileAtomically(const std::filesystem::path& file, const std::function<
     static std::atomic<unsigned> counter{0};
     std::filesystem::path temp =
         file.parent_path() / ("." + file.filename().string() + "." + std::to_string(::getpid()) + "." + std::to_string(counter++) + ".tmp");
-    if (!write(temp)) {
+    const size_t entry = track(temp);
+    const bool written = write(temp);
+    if (written) std::filesystem::rename(temp, file, ec);
+    untrack(entry);
+    if (!written) {
         std::filesystem::remove(temp, ec);
         throw std::runtime_error("cannot write " + file.string());
     }
-    std::filesystem::rename(temp, file, ec);
     if (ec) {
         std::string why = ec.message();
         std::filesystem::remove(temp, ec);
