@@ -1,5 +1,7 @@
 #include "material/json_locator.h"
 
+#include <algorithm>
+
 namespace hexc {
 
 std::string pointerAppend(const std::string& pointer, std::string_view token) {
@@ -39,6 +41,46 @@ TextPos textPosition(std::string_view text, size_t offset) {
     TextPos p;
     advance(p, text, byteOrderMarkSize(text), offset);
     return p;
+}
+
+LineIndex::LineIndex(std::string_view text) : text_(text), bom_(byteOrderMarkSize(text)), lineStarts_{bom_} {
+    size_t chars = 0;
+    for (size_t i = bom_; i < text.size(); ++i) {
+        if ((i - bom_) % kStride == 0) checkpoints_.push_back(chars);
+        if (text[i] == '\n') lineStarts_.push_back(i + 1);
+        chars += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;
+    }
+    checkpoints_.push_back(chars);  // for offsets at the end
+}
+
+size_t LineIndex::charsBefore(size_t offset) const {
+    const size_t k = std::min((offset - bom_) / kStride, checkpoints_.size() - 1);
+    size_t chars = checkpoints_[k];
+    for (size_t i = bom_ + k * kStride; i < offset; ++i) chars += (static_cast<unsigned char>(text_[i]) & 0xC0) != 0x80;
+    return chars;
+}
+
+TextPos LineIndex::at(size_t offset) const {
+    offset = std::clamp(offset, bom_, std::max(bom_, text_.size()));
+    const size_t line = size_t(std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset) - lineStarts_.begin()) - 1;
+    return {int(line + 1), int(charsBefore(offset) - charsBefore(lineStarts_[line]) + 1)};
+}
+
+std::map<std::string, size_t, std::less<>> xmlAttributeOffsets(std::string_view text, size_t tagStart) {
+    std::map<std::string, size_t, std::less<>> offsets;
+    const size_t end = std::min(text.find('>', tagStart), text.size());
+    auto space = [&](size_t i) { return text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n'; };
+    for (size_t at = tagStart; at < end;) {  // name = "value" or 'value', the name being what stands before the `=`
+        const size_t eq = text.find('=', at);
+        if (eq >= end) break;
+        size_t nameEnd = eq, nameStart;
+        while (nameEnd > at && space(nameEnd - 1)) --nameEnd;
+        for (nameStart = nameEnd; nameStart > at && !space(nameStart - 1);) --nameStart;
+        offsets.emplace(std::string(text.substr(nameStart, nameEnd - nameStart)), nameStart);
+        const size_t quote = text.find_first_of("\"'", eq), close = quote >= end ? end : text.find(text[quote], quote + 1);
+        at = close >= end ? end : close + 1;
+    }
+    return offsets;
 }
 
 std::optional<size_t> excessiveNesting(std::string_view text) {

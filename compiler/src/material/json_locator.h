@@ -58,6 +58,27 @@ private:
 // 1-based line and column (in characters) of a byte offset; works on any text, valid JSON or not.
 TextPos textPosition(std::string_view text, size_t offset);
 
+// textPosition for many offsets in any order: built once per document (linear), each look-up a binary search over the
+// line starts and a count of at most kStride bytes, so a document with a diagnostic on every line stays linear.
+class LineIndex {
+public:
+    explicit LineIndex(std::string_view text);
+    TextPos at(size_t offset) const;
+
+private:
+    static constexpr size_t kStride = 256;
+    size_t charsBefore(size_t offset) const;  // characters (not UTF-8 continuation bytes) in [bom, offset)
+
+    std::string_view text_;            // must outlive the index
+    size_t bom_;                       // byteOrderMarkSize
+    std::vector<size_t> lineStarts_;   // byte offset of each line's first byte
+    std::vector<size_t> checkpoints_;  // charsBefore(bom_ + k * kStride)
+};
+
+// The byte offset of each attribute name in the XML start tag at `tagStart` (for the MaterialX reader, which pugixml
+// gives only element offsets); read once per element, however many of its attributes are reported.
+std::map<std::string, size_t, std::less<>> xmlAttributeOffsets(std::string_view text, size_t tagStart);
+
 // "/a/b" + "c~d/e" -> "/a/b/c~0d~1e"
 std::string pointerAppend(const std::string& pointer, std::string_view token);
 std::string pointerAppend(const std::string& pointer, size_t index);

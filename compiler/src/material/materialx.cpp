@@ -242,12 +242,13 @@ private:
     Place place(xml_node node, const char* attribute = nullptr) const {
         size_t offset = node.offset_debug() < 0 ? 0 : size_t(node.offset_debug());
         if (offset > 0 && offset <= text_.size() && text_[offset - 1] == '<') --offset;  // pugixml points past the `<`
-        if (attribute) {
-            size_t at = text_.find(std::string(attribute) + "=", offset);
-            if (at != std::string_view::npos && at < text_.find('>', offset)) offset = at;
-        }
+        // The last element's path and attribute offsets are kept: with many attributes, finding each (or `name`) for
+        // every report of the element would be quadratic.
+        if (node != last_) last_ = node, lastPath_ = namePath(node), lastAttributes_ = xmlAttributeOffsets(text_, offset);
+        if (attribute)
+            if (auto a = lastAttributes_.find(std::string_view(attribute)); a != lastAttributes_.end()) offset = a->second;
         const bool own = attribute && std::string_view(attribute) != "value";  // an input's value is the input
-        return {namePath(node) + (own ? "/@" + std::string(attribute) : ""), textPosition(text_, offset)};
+        return {lastPath_ + (own ? "/@" + std::string(attribute) : ""), lines_.at(offset)};
     }
     void at(const std::string& pointer, xml_node node, const char* attribute = nullptr) { places_[pointer] = place(node, attribute); }
     void report(Code code, xml_node node, std::string message, std::string hint = {}) {
@@ -256,6 +257,10 @@ private:
     }
 
     std::string_view text_;
+    LineIndex lines_{text_};
+    mutable xml_node last_;  // place()'s last element, its path and attribute offsets
+    mutable std::string lastPath_;
+    mutable std::map<std::string, size_t, std::less<>> lastAttributes_;
     std::filesystem::path file_;
     xml_node root_;
     std::map<std::string, Place> places_;  // JSON pointer -> where its value came from
