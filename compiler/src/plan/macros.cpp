@@ -172,6 +172,9 @@ std::vector<std::pair<std::string, int>> logicalLines(const std::string& source)
     return out;
 }
 
+// Keywords a `(` follows that call nothing.
+const std::set<std::string> kNotCalls = {"if", "for", "while", "switch", "return", "layout"};
+
 }  // namespace
 
 MacroExpansion boundMacroExpansion(const std::string& source) {
@@ -191,6 +194,10 @@ MacroExpansion boundMacroExpansion(const std::string& source) {
         Tokens tokens = tokenize(line);
         out.tokens += measure.size(tokens, 0, tokens.size(), {}, 0).c;
         if (out.line == 0 && !(out.tokens <= kMaxExpandedTokens)) out.line = number;
+        for (size_t i = 0; i + 1 < tokens.size(); ++i)
+            out.calls += tokens[i + 1] == "(" && identifierChar(tokens[i][0]) && !std::isdigit(static_cast<unsigned char>(tokens[i][0])) &&
+                         !kNotCalls.contains(tokens[i]);
+        if (out.callsLine == 0 && out.calls > kMaxTemplateCalls) out.callsLine = number;
     }
     return out;
 }

@@ -10,12 +10,19 @@ namespace hexc {
 // compiled in 1.6 s here), far above any template an engine writes (the built-in `lit` is about 2,000 tokens).
 constexpr double kMaxExpandedTokens = 4'000'000;
 
+// Templates calling more functions are refused too: glslang's call graph is quadratic in calls (10,000 took 17 s) and
+// spirv-opt's inliner in functions times calls. Counted as written, `name(` outside directives, so constructors and
+// built-ins count too (the built-in `lit` has 30).
+constexpr int kMaxTemplateCalls = 4000;
+
 struct MacroExpansion {
     double tokens = 0;  // the tokens after expansion (infinite past what a double holds)
     int line = 0;       // the line at which the running total first exceeded kMaxExpandedTokens; 0 if it never did
+    int calls = 0;      // `name(` outside directives, macros unexpanded
+    int callsLine = 0;  // the line at which calls first exceeded kMaxTemplateCalls; 0 if they never did
 };
 
-// Walks the source once, keeping the macros defined so far, and sums each line's expanded size. Each macro's size
+// Walks the source once, keeping the macros defined so far, and sums each line's expanded size and calls. Each macro's size
 // is memoised as an affine function of its parameters' sizes, so nested invocations (`D(D(D(x)))`) and chains cost
 // time linear in the source. Token pasting (`##`) is counted as written.
 MacroExpansion boundMacroExpansion(const std::string& source);

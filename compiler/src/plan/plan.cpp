@@ -59,11 +59,17 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
         error(Code::TemplateNoInclude, "a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
     std::vector<TemplateSlot> declared = readTemplateSlots(plan.templateSource, plan.templateName, plan.diagnostics);
     for (Diagnostic& d : checkTemplateFit(declared, material, ref)) plan.diagnostics.push_back(std::move(d));
-    if (MacroExpansion e = boundMacroExpansion(plan.templateSource); e.line) {
+    const MacroExpansion e = boundMacroExpansion(plan.templateSource);
+    if (e.line) {
         plan.diagnostics.push_back(Diagnostic::make(Code::TemplateTooLarge, {plan.templateName, e.line, 0}, "",
                                                     "the template's macros expand to more than " + std::to_string(int(kMaxExpandedTokens)) +
                                                         " tokens by this line; hexc refuses it rather than stall the preprocessor"));
     }
+    if (e.callsLine)
+        plan.diagnostics.push_back(Diagnostic::make(Code::TemplateTooLarge, {plan.templateName, e.callsLine, 0}, "",
+                                                    "the template makes more than " + std::to_string(kMaxTemplateCalls) +
+                                                        " calls by this line; glslang's call graph and spirv-opt's inliner grow "
+                                                        "quadratically with them, so hexc refuses it rather than stall"));
     return !hasErrors(plan.diagnostics);
 }
 
