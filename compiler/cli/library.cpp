@@ -51,7 +51,9 @@ int libraryCommand(const std::vector<std::string>& args) {
         return kInvalidInput;
     }
     try {
-        std::filesystem::create_directories(outDir);
+        if (std::error_code ec; !std::filesystem::create_directories(outDir, ec) && !std::filesystem::is_directory(outDir))
+            throw std::runtime_error("cannot write to " + outDir.string() + ": " +
+                                     (std::filesystem::exists(outDir) ? "it is a file, not a folder" : ec.message()));
         for (const OutputFile& f : files) writeAtomically(outDir, f.name, f.contents);
     } catch (const std::exception& e) {
         std::cerr << "hexc: " << e.what() << "\n";

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
-#include <regex>
 #include <sstream>
 
 #include "common/templates.h"
+#include "common/text.h"
 
 namespace hexc {
 namespace {
@@ -174,8 +174,7 @@ private:
 
 std::string injectedCode(const ShaderPlan& plan) {
     // A variant that reads no slot and calls no hexc function (a depth pass) is spared the library's parse.
-    static const std::regex callsLibrary("\\bhexc[A-Z]");
-    const bool library = !plan.slots.empty() || std::regex_search(plan.templateSource, callsLibrary);
+    const bool library = !plan.slots.empty() || containsNameStarting(plan.templateSource, "hexc");
     std::string out = library ? lineDirective(1, "hexc/hextiling.glsl") + *embeddedText("hextiling.glsl") : "";
     // MaterialX mode's functions, only for a material that has a slot in it.
     if (std::any_of(plan.lattices.begin(), plan.lattices.end(), [](const LatticePlan& l) { return l.section == "lattice.materialx"; }))

@@ -16,6 +16,15 @@ inline bool containsWord(std::string_view text, std::string_view word) {
     return false;
 }
 
+// True when an identifier starts with `prefix` followed by an upper-case letter (regex \bprefix[A-Z]).
+inline bool containsNameStarting(std::string_view text, std::string_view prefix) {
+    for (size_t at = text.find(prefix); at != std::string_view::npos; at = text.find(prefix, at + 1)) {
+        const size_t next = at + prefix.size();
+        if ((at == 0 || !isIdentifierChar(text[at - 1])) && next < text.size() && text[next] >= 'A' && text[next] <= 'Z') return true;
+    }
+    return false;
+}
+
 // The number of lines of `text` that read `line`, ignoring trailing blanks and a CR.
 inline int countLines(std::string_view text, std::string_view line) {
     int count = 0;

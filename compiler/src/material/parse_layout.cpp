@@ -13,6 +13,7 @@ public:
     ResourceLayout runLayout(const json& doc) {
         ResourceLayout layout;
         layout.sourceFile = file_;
+        duplicateKeys();
         if (!doc.is_object()) {
             report(Code::WrongType, "", "expected a layout object, got " + typeName(doc));
             return layout;

@@ -39,10 +39,7 @@ public:
     Material run(const json& doc) {
         Material m;
         m.sourceFile = file_;
-        for (const auto& d : locator_.duplicates())
-            report(Code::DuplicateKey, d.pointer, d.second,
-                   "duplicate key " + ticked(d.pointer.substr(d.pointer.rfind('/') + 1)) + " (first at line " +
-                       std::to_string(d.first.line) + ")");
+        duplicateKeys();
         if (!doc.is_object()) {
             report(Code::WrongType, "", "expected a material object, got " + typeName(doc));
             return m;
@@ -437,7 +434,11 @@ private:
     void texture(Slot& s, const std::string& pointer) {
         s.texturePath = dir_ / s.texture;
         std::error_code ec;
-        if (s.texture.empty() || !std::filesystem::is_regular_file(s.texturePath, ec)) {
+        if (s.texture.find('\0') != std::string::npos) {  // the file system would see the path up to it, another file
+            report(Code::TextureNotFound, pointer, "a texture path holds a NUL character (\\u0000)");
+            return;
+        }
+        if (s.texture.empty() || !std::filesystem::exists(s.texturePath, ec)) {
             report(Code::TextureNotFound, pointer, "texture file not found: " + s.texturePath.string());
             return;
         }

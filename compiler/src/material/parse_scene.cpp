@@ -17,6 +17,7 @@ public:
     Scene runScene(const json& doc) {
         Scene scene;
         scene.sourceFile = file_;
+        duplicateKeys();
         static const std::vector<std::string> kSceneKeys = {"$schema", "scene", "materials", "passes"};
         if (!doc.is_object()) {
             report(Code::WrongType, "", "expected a scene object, got " + typeName(doc));
@@ -91,7 +92,24 @@ private:
             if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
             report(Code::UnknownReference, pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
         }
+        passSlots(pass, p, scene);
         scene.passes.push_back(std::move(pass));
+    }
+
+    // Each slot a pass keeps is a slot of one of the pass's materials (else it keeps nothing: a misspelling).
+    void passSlots(const ScenePass& pass, const std::string& p, const Scene& scene) {
+        std::vector<std::string> all;
+        for (const Material& m : scene.materials)
+            if (!pass.materials || std::find(pass.materials->begin(), pass.materials->end(), m.name) != pass.materials->end())
+                for (const Slot& s : m.slots) all.push_back(s.name);
+        for (size_t j = 0; pass.slots && !all.empty() && j < pass.slots->size(); ++j) {
+            const std::string& name = (*pass.slots)[j];
+            if (std::find(all.begin(), all.end(), name) != all.end()) continue;
+            std::string hint;
+            if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
+            report(Code::UnknownReference, pointerAppend(p + "/slots", j), "no material of this pass has a slot named `" + name + "`",
+                   hint);
+        }
     }
 };
 

@@ -59,6 +59,13 @@ std::optional<std::vector<std::string>> JsonRules::names(const json& obj, const 
     return out;
 }
 
+void JsonRules::duplicateKeys() {
+    for (const auto& d : locator_.duplicates())
+        report(Code::DuplicateKey, d.pointer, d.second,
+               "duplicate key " + ticked(d.pointer.substr(d.pointer.rfind('/') + 1)) + " (first at line " + std::to_string(d.first.line) +
+                   ")");
+}
+
 void JsonRules::checkKeys(const json& obj, const std::string& pointer, const std::vector<std::string>& known) {
     for (const auto& [key, value] : obj.items()) {
         if (std::find(known.begin(), known.end(), key) != known.end()) continue;

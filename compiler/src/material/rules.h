@@ -39,6 +39,9 @@ public:
         diags.push_back(Diagnostic::make(code, {file_.string(), p.line, p.col}, pointer, std::move(message), std::move(hint)));
     }
 
+    // Keys nlohmann merged silently (the last one would win): in materials, scenes and layouts alike.
+    void duplicateKeys();
+
 protected:
     using json = nlohmann::json;
 
