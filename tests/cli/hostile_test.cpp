@@ -1,14 +1,20 @@
 // Hostile inputs: each case runs the hexc command line under a time and address-space bound and asserts the
 // exit code, the located message where one applies, and that nothing was written.
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <tinyexr.h>
+#include <unistd.h>
 
+#include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "hexc/image.h"
 #include "support.h"
 
 namespace fs = std::filesystem;
@@ -137,7 +143,10 @@ TEST_F(Hostile, ATextureTooLargeForTheReferenceIsRefusedBeforeLoading) {
     fs::path m = write("m.json", R"({"name": "m", "slots": [{"name": "albedo", "kind": "color", "texture": ")" + tex.string() + "\"}]}");
     Outcome o = runBounded("render " + m.string() + " --reference --output albedo --size 8x8 -o " + (dir_ / "out" / "r.pfm").string());
     EXPECT_EQ(o.exit, 1) << o.err;
-    EXPECT_NE(o.err.find("16384x16384 is too large for --reference"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("m.json:1:52: error[HX125]: /slots/0/texture: "), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("huge.png is 16384x16384 (268435456 texels), more than --reference takes: at most 4096x4096 texels"),
+              std::string::npos)
+        << o.err;
     expectNothingWritten();
 }
 
@@ -247,6 +256,332 @@ TEST_F(Hostile, ATemplatePathWithAQuoteKeepsErrorsLocated) {
     EXPECT_NE(o.err.find(t.string() + ":" + std::to_string(line) + ":"), std::string::npos) << o.err;
     EXPECT_NE(o.err.find("undeclared identifier"), std::string::npos) << o.err;
     expectNothingWritten();
+}
+
+// --- Budgets and container headers (docs/cli.md#budgets): refused from the header, before anything is decoded. ---
+
+// rock_albedo.png with its IHDR size replaced (stb checks no CRC): a few KB that claim `side` x `side` texels.
+std::string pngClaiming(uint32_t side) {
+    std::ifstream in("materials/textures/rock_albedo.png", std::ios::binary);
+    std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const char be[4] = {char(side >> 24), char(side >> 16), char(side >> 8), char(side)};
+    for (size_t at : {16u, 20u}) png.replace(at, 4, std::string(be, 4));
+    return png;
+}
+
+// A one-slot material on `texture` with `hextiling` as the slot's settings.
+std::string materialOn(const fs::path& texture, const std::string& hextiling = "{}") {
+    return R"({"name": "m", "slots": [{"name": "albedo", "kind": "color", "hextiling": )" + hextiling + R"(, "texture": ")" +
+           texture.string() + "\"}]}";
+}
+
+TEST_F(Hostile, TheHistogramBudgetRefusesAHugeTextureBeforeDecoding) {
+    // 16384 x 16384 texels in a few KB: the precomputation would need 24 GB. Refused at its budget, located at the slot.
+    fs::path m = write("m.json", materialOn(write("huge.png", pngClaiming(16384)), R"({"blend": "histogram"})"));
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("m.json:1:"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("error[HX125]: /slots/0/texture: "), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("huge.png is 16384x16384 (268435456 texels)"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("at most 4096x4096 texels"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, RenderAndPreviewRefuseATextureOverTheirBudgetBeforeLoadingIt) {
+    // A sparse KTX2 of 65536 x 65536 RGBA8 (16 GiB of level 0, all in the file's length) and a PNG header of 16384 x
+    // 16384: both valid containers, both over render's 8192 x 8192. Exit 1 with the file named, not 3, and no Vulkan needed.
+    std::string ktx(104, '\0');
+    ktx.replace(0, 12,
+                "\xAB"
+                "KTX 20\xBB\r\n\x1A\n",
+                12);
+    auto put = [&](size_t at, uint32_t v) { std::memcpy(&ktx[at], &v, 4); };
+    put(12, 37), put(16, 1), put(20, 65536), put(24, 65536), put(40, 1), put(80, 104);  // RGBA8, size, 1 level, data at 104
+    fs::path ktx2 = write("sparse.ktx2", ktx);
+    fs::resize_file(ktx2, 104 + (uint64_t(65536) * 65536 * 4));
+    for (const fs::path& tex : {ktx2, write("huge.png", pngClaiming(16384))}) {
+        fs::path m = write("m.json", materialOn(tex));
+        for (const std::string& command : {"render " + m.string() + " --output albedo --size 8x8 -o " + (dir_ / "out" / "r.png").string(),
+                                           "preview " + m.string() + " --cell 32 -o " + (dir_ / "out" / "p.png").string()}) {
+            Outcome o = runBounded(command);
+            EXPECT_EQ(o.exit, 1) << command << ": " << o.err;
+            EXPECT_NE(o.err.find("error[HX125]"), std::string::npos) << o.err;
+            EXPECT_NE(o.err.find(tex.filename().string() + " is "), std::string::npos) << o.err;
+            EXPECT_NE(o.err.find("more than hexc render and preview takes: at most 8192x8192 texels"), std::string::npos) << o.err;
+        }
+    }
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, PreviewRefusesItsHistogramColumnOverThatBudget) {
+    // 6000 x 6000 fits render's budget but not the histogram blend's, which preview's third column runs on every slot.
+    fs::path m = write("m.json", materialOn(write("big.png", pngClaiming(6000))));
+    Outcome o = runBounded("preview " + m.string() + " --cell 32 -o " + (dir_ / "out" / "p.png").string());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("m.json:1:"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("more than the histogram blend's precomputation takes"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, PackingLeavesAnOverBudgetSlotUnpacked) {
+    // Packing would decode it (4 bytes a texel, 1 GiB); the slot stays bound on its own, with the reason (HX124).
+    fs::path big = write("big.png", pngClaiming(16384));
+    fs::path m =
+        write("m.json", R"({"name": "m", "pack": true, "slots": [{"name": "albedo", "kind": "color", "texture": ")" + big.string() +
+                            R"("}, {"name": "rough", "kind": "scalar", "colorspace": "linear", "texture": ")" + big.string() + "\"}]}");
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 0) << o.err;
+    EXPECT_NE(o.err.find("warning[HX124]: slot `albedo` is not packed: its texture is 16384x16384; packing takes at most 8192x8192"),
+              std::string::npos)
+        << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out" / "m.albedo.packed.png"));
+}
+
+TEST_F(Hostile, ContainerHeadersAreCheckedBeforeDecoding) {
+    // Each claims far more than it holds, or a size outside 1..65536: a located HX121 with the reason, in milliseconds.
+    std::string bmp(54, '\0');
+    auto le = [](std::string& b, size_t at, uint32_t v) { std::memcpy(&b[at], &v, 4); };
+    bmp[0] = 'B', bmp[1] = 'M';
+    le(bmp, 10, 54), le(bmp, 14, 40), le(bmp, 18, 20000), le(bmp, 22, 20000), bmp[26] = 1, bmp[28] = 32;  // 1.6 GB of texels
+    std::string tga(18, '\0');
+    tga[2] = 2, tga[12] = tga[13] = tga[14] = tga[15] = char(0xff), tga[16] = 32;  // true-colour 65535 x 65535, no texels
+    const std::pair<std::string, std::string> cases[] = {
+        {write("claims.bmp", bmp).string(), "truncated (its texels do not fit)"},
+        {write("claims.tga", tga).string(), "truncated (its texels do not fit)"},
+        {write("wide.png", pngClaiming(1u << 25)).string(), "the PNG header gives 33554432x33554432 (sizes are 1..65536)"},
+        {write("zero.png", pngClaiming(0)).string(), "the PNG header gives 0x0"},
+        {write("huge.pfm", "PF\n999999 999999\n-1.0\n" + std::string(64, '\0')).string(), "not a PFM file (bad header)"},
+        {write("short.pfm", "PF\n4000 4000\n-1.0\n" + std::string(64, '\0')).string(), "PFM file is truncated"},
+    };
+    for (const auto& [tex, why] : cases) {
+        fs::path m = write("m.json", materialOn(tex));
+        Outcome o = runBounded(m.string() + out());
+        EXPECT_EQ(o.exit, 1) << tex << ": " << o.err;
+        EXPECT_NE(o.err.find("m.json:1:"), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find("error[HX121]"), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find(why), std::string::npos) << tex << ": " << o.err;
+    }
+    expectNothingWritten();
+}
+
+// An EXR of 19 x 13 written by tinyexr, its data window then set to (x0, y0) - (x1, y1).
+std::string exrWithWindow(const fs::path& file, int32_t x0, int32_t y0, int32_t x1, int32_t y1) {
+    std::vector<float> rgba(19 * 13 * 4, 0.5f);
+    EXPECT_EQ(SaveEXR(rgba.data(), 19, 13, 4, 0, file.c_str(), nullptr), TINYEXR_SUCCESS);
+    std::ifstream in(file, std::ios::binary);
+    std::string exr((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t at = exr.find(std::string("dataWindow\0box2i\0", 17)) + 17 + 4;  // after the name, type and size
+    const int32_t box[4] = {x0, y0, x1, y1};
+    exr.replace(at, 16, std::string(reinterpret_cast<const char*>(box), 16));
+    return exr;
+}
+
+TEST_F(Hostile, ExrDataWindowsAreCheckedIn64Bits) {
+    const int32_t lo = INT32_MIN, hi = INT32_MAX;
+    const struct {
+        int32_t x0, y0, x1, y1;
+        const char* why;
+    } cases[] = {
+        {0, 0, -100, 12, "the data window gives -99x13"},
+        {5, 0, 4, 12, "the data window gives 0x13"},
+        {lo, 0, hi, 12, "the data window gives 4294967296x13"},                // 2^31 - 1 - (-2^31) + 1: overflows 32 bits
+        {0, 0, 65534, 65534, "the file is truncated (level 0 does not fit)"},  // 65535 x 65535 claimed by ~400 bytes
+    };
+    for (const auto& c : cases) {
+        fs::path tex = dir_ / "w.exr";
+        const std::string exr = exrWithWindow(tex, c.x0, c.y0, c.x1, c.y1);
+        write("w.exr", exr);
+        Outcome o = runBounded(write("m.json", materialOn(tex)).string() + out());
+        EXPECT_EQ(o.exit, 1) << c.why << ": " << o.err;
+        EXPECT_NE(o.err.find(std::string("OpenEXR: ") + c.why), std::string::npos) << o.err;
+    }
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, TexturePathsThatAreFoldersOrHoldNulAreNamedAsSuch) {
+    fs::create_directories(dir_ / "folder.png");
+    Outcome o = runBounded(write("m.json", materialOn(dir_ / "folder.png")).string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("error[HX121]"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("folder.png: is a directory"), std::string::npos) << o.err;
+    // "rock_albedo.png\u0000.txt": the file system would open rock_albedo.png.
+    const std::string nul = fs::absolute("materials/textures/rock_albedo.png").string() + "\\u0000.txt";
+    o = runBounded(write("nul.json", materialOn(nul)).string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("nul.json:1:"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("a texture path holds a NUL character"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, OutOfMemoryIsReportedAsSuchNotAsAWriteFailure) {
+    // A 4096 x 4096 texture is within every budget, but preview's histogram column and the GPU upload need more than a
+    // 700 MiB address space (the binary maps ~300 MiB): an input too large for this machine is exit 1, the file named.
+#ifdef HEXC_SANITIZED
+    GTEST_SKIP() << "an address-space bound means nothing under ASan";
+#endif
+    // One grey: the precomputation's memory depends on the size, not the texels, and the PNG encodes in a moment.
+    hexc::Texture t{4096, 4096, false, std::vector<uint8_t>(size_t(4096) * 4096 * 4, 128), {}};
+    fs::path m = write("m.json", materialOn(write("big.png", hexc::pngBytes(t)), R"({"blend": "histogram"})"));
+    std::string err;
+    int exit =
+        hexc::test::runHexc(m.string() + out(), &err, "ulimit -v " + std::to_string(700 * 1024) + "; timeout " + std::to_string(kSeconds));
+    EXPECT_EQ(exit, 1) << err;
+    EXPECT_NE(err.find("m.json: error[HX901]: out of memory"), std::string::npos) << err;
+    expectNothingWritten();
+}
+
+// --- The output folder keeps its promises. ---
+
+// The stamp of material `m` in the test's output folder.
+fs::path stampOf(const fs::path& out) { return out / ".m.hexc-stamp"; }
+
+TEST_F(Hostile, AnEditedStampIsNotTrustedAndTouchesNothingOutside) {
+    fs::path m = write("m.json", material());
+    ASSERT_EQ(runBounded(m.string() + out()).exit, 0);
+    fs::path outside = write("outside.txt", "keep");
+    const auto outsideTime = fs::last_write_time(outside);
+    std::ifstream in(stampOf(dir_ / "out"));
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    in.close();
+    ASSERT_GE(lines.size(), 3u);
+    // The list shortened by its manifest (deleted too), and a name outside the folder in its place; the hash kept.
+    fs::remove(dir_ / "out" / "m.manifest.json");
+    std::string edited;
+    for (const std::string& l : lines) edited += (l == "m.manifest.json" ? "../outside.txt" : l.starts_with("seal ") ? "" : l) + "\n";
+    std::ofstream(stampOf(dir_ / "out")) << edited;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // a refreshed time would differ
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 0) << o.err;
+    EXPECT_TRUE(fs::exists(dir_ / "out" / "m.manifest.json")) << "the untrusted stamp kept a deleted output missing";
+    EXPECT_EQ(fs::last_write_time(outside), outsideTime);
+    std::ifstream keep(outside);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(keep), {}), "keep");
+}
+
+// A pid no process has: the largest below pid_max that kill(pid, 0) says does not exist.
+pid_t deadPid() {
+    for (pid_t pid = 4194303; pid > 1000; --pid)
+        if (::kill(pid, 0) != 0 && errno == ESRCH) return pid;
+    return 0;
+}
+
+TEST_F(Hostile, TemporariesOfDeadWritersAreRemovedAndLiveOnesKept) {
+    const std::string dead = ".m.manifest.json." + std::to_string(deadPid()) + ".0.tmp";
+    const std::string live = ".m.manifest.json." + std::to_string(::getppid()) + ".0.tmp";  // a running process
+    write("out/" + dead, "half");
+    write("out/" + live, "half");
+    write("out/.notours.tmp", "x");
+    Outcome o = runBounded(write("m.json", material()).string() + out());
+    EXPECT_EQ(o.exit, 0) << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out" / dead));
+    EXPECT_TRUE(fs::exists(dir_ / "out" / live));
+    EXPECT_TRUE(fs::exists(dir_ / "out" / ".notours.tmp"));
+}
+
+TEST_F(Hostile, AnInterruptedBuildLeavesNoTemporary) {
+    // SIGINT and SIGTERM at times spread over a scene build of many variants (writing takes most of its end): whenever
+    // a signal lands, no temporary of the killed run stays.
+    fs::path m = write("m.json", material());
+    for (int i = 0; i < 8; ++i) {
+        const std::string signal = i % 2 ? "TERM" : "INT";
+        const std::string cmd = "timeout -s " + signal + " " + std::to_string(0.15 + 0.1 * i) + " " + HEXC_EXE + " -q --force " +
+                                m.string() + out() + " 2>/dev/null";
+        std::system(cmd.c_str());
+        for (const auto& f : fs::directory_iterator(dir_ / "out"))
+            EXPECT_FALSE(f.path().extension() == ".tmp") << signal << ": " << f.path();
+    }
+}
+
+// --- Diagnostics stay linear and bounded. ---
+
+TEST_F(Hostile, MaterialXDiagnosticsAreLinearAndCapped) {
+    // 80,000 unknown inputs (3.7 MB), and 100,000 unknown hexc_ attributes on one node: once over 60 s and 20 s.
+    std::ifstream in("materials/mtlx/rock.mtlx");
+    const std::string rock(std::istreambuf_iterator<char>(in), {});
+    const size_t node = rock.find("<hextiledimage");
+    ASSERT_NE(node, std::string::npos);
+    std::string inputs, attributes;
+    for (int i = 0; i < 80000; ++i) inputs += "<input name=\"junk" + std::to_string(i) + "\" type=\"float\" value=\"1\" />\n";
+    for (int i = 0; i < 100000; ++i) attributes += " hexc_x" + std::to_string(i) + "=\"1\"";
+    std::string manyInputs = rock, manyAttributes = rock;
+    manyInputs.insert(manyInputs.find('>', node) + 1, "\n" + inputs);
+    manyAttributes.insert(node + 14, attributes);
+    for (const auto& [name, text] : {std::pair{"inputs.mtlx", manyInputs}, std::pair{"attributes.mtlx", manyAttributes}}) {
+        fs::path f = dir_ / name;
+        std::ofstream(f) << text;
+        Outcome o = runBounded(f.string() + out());
+        EXPECT_EQ(o.exit, 1) << name << ": " << o.err.substr(0, 400);
+        EXPECT_NE(o.err.find(f.string() + ":"), std::string::npos) << o.err.substr(0, 400);
+        // 100 lines shown, then the count of the rest.
+        size_t lines = 0;
+        for (char c : o.err) lines += c == '\n';
+        EXPECT_LE(lines, 103u) << name;
+        EXPECT_NE(o.err.find("more diagnostics not shown (the first 100 are)"), std::string::npos) << o.err.substr(o.err.size() - 300);
+    }
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, AHugeNameIsQuotedBackShortened) {
+    // 60 MB would pass the 64 MiB input limit; the name is the input's mistake, printed back in 200 bytes with its length.
+    const std::string name(60 << 20, 'x');
+    fs::path m = write("m.json", R"({"name": ")" + name + R"(", "slots": [{"name": "albedo", "kind": "color", "texture": ")" +
+                                     fs::absolute("materials/textures/rock_albedo.png").string() + "\"}]}");
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err.substr(0, 400);
+    EXPECT_NE(o.err.find("error[HX108]"), std::string::npos) << o.err.substr(0, 400);
+    EXPECT_NE(o.err.find("x... (62914560 bytes)"), std::string::npos) << o.err.substr(0, 400);
+    EXPECT_LT(o.err.size(), 2000u);
+    expectNothingWritten();
+}
+
+// --- Templates: a bound on what they ask of the optimiser. ---
+
+TEST_F(Hostile, ATemplateWithThousandsOfFunctionsIsRefusedBeforeTheInliner) {
+    // 10,000 one-line functions, each called once: spirv-opt's inliner ran past 60 s on them.
+    std::string functions, calls = "float sum = 0.0;";
+    for (int i = 0; i < 10000; ++i) {
+        functions += "float f" + std::to_string(i) + "(float x) { return x + " + std::to_string(i) + ".0; }\n";
+        calls += " sum = f" + std::to_string(i) + "(sum);";
+    }
+    std::ifstream in("templates/builtin/unlit.glsl");
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    text.insert(text.find("void main() {"), functions);
+    text.insert(text.find("void main() {") + 13, " " + calls);
+    fs::path t = write("many.glsl", text);
+    Outcome o = runBounded(write("m.json", material()).string() + " --template " + t.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err.substr(0, 400);
+    // Located at the line that passes 4,000 calls: main()'s, after the template's own 17 lines and the 10,000 functions.
+    EXPECT_NE(o.err.find(t.string() + ":"), std::string::npos) << o.err.substr(0, 400);
+    EXPECT_NE(o.err.find("error[HX209]: the template makes more than 4000 calls by this line"), std::string::npos) << o.err.substr(0, 400);
+    expectNothingWritten();
+}
+
+// --- Scene and layout files. ---
+
+TEST_F(Hostile, SceneAndLayoutFilesReportDuplicateKeysAndUnknownSlots) {
+    fs::path m = write("m.json", material());
+    fs::path scene = write("s.json", R"({"scene": "s", "materials": ["m.json"], "passes": [{"name": "main", "name": "other"},
+  {"name": "shadow", "slots": ["albdeo"]}]})");
+    Outcome o = runBounded(scene.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("s.json:1:69: error[HX102]: /passes/0/name: duplicate key `name` (first at line 1)"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("s.json:2:32: error[HX113]: /passes/1/slots/0: no material of this pass has a slot named `albdeo` (did you mean "
+                         "`albedo`?)"),
+              std::string::npos)
+        << o.err;
+    fs::path layout = write("l.json", "{\"hlsl\": {\"t\": 1},\n \"hlsl\": {\"t\": 2}}");
+    o = runBounded(m.string() + " --layout " + layout.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("l.json:2:2: error[HX102]: /hlsl: duplicate key `hlsl`"), std::string::npos) << o.err;
+    expectNothingWritten();
+}
+
+TEST_F(Hostile, LibraryIntoAFileSaysSo) {
+    fs::path file = write("file", "keep");
+    Outcome o = runBounded("library -t glsl -o " + file.string());
+    EXPECT_EQ(o.exit, 3) << o.err;
+    EXPECT_NE(o.err.find("hexc: cannot write to " + file.string() + ": it is a file, not a folder"), std::string::npos) << o.err;
 }
 
 }  // namespace
