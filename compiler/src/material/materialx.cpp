@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <charconv>
 #include <map>
+#include <set>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
@@ -44,14 +46,13 @@ public:
         if (hasErrors(result.diagnostics) && m["slots"].empty()) return result;
         ParseResult checked = parseMaterialJson(m.dump(), file_);
         for (const Diagnostic& d : checked.diagnostics) result.diagnostics.push_back(relocate(d));
-        // Slots read from one image node (each channel under its own extract) say what is wrong with it once.
-        auto same = [](const Diagnostic& a, const Diagnostic& b) {
-            return a.code == b.code && a.loc.line == b.loc.line && a.loc.col == b.loc.col && a.message == b.message;
-        };
-        for (size_t i = 1; i < result.diagnostics.size(); ++i)
-            if (std::any_of(result.diagnostics.begin(), result.diagnostics.begin() + i,
-                            [&](const Diagnostic& d) { return same(d, result.diagnostics[i]); }))
-                result.diagnostics.erase(result.diagnostics.begin() + i--);
+        // Slots read from one image node (each channel under its own extract) say what is wrong with it once; a set
+        // keeps this linear in the diagnostics (a document can hold 80,000).
+        std::set<std::tuple<Code, int, int, std::string>> seen;
+        Diagnostics once;
+        for (Diagnostic& d : result.diagnostics)
+            if (seen.emplace(d.code, d.loc.line, d.loc.col, d.message).second) once.push_back(std::move(d));
+        result.diagnostics = std::move(once);
         if (!hasErrors(result.diagnostics)) result.material = std::move(checked.material);
         return result;
     }
