@@ -11,7 +11,7 @@ struct Budget {
     const char* why;   // what it holds per texel
 };
 
-// Each side is the largest power of two whose footprint stays near 1.5 GB on the stage's worst texture format.
+// Each side keeps the stage within about 1.5 GB on its worst texture format (the histogram blend well within it).
 Budget budget(TextureStage stage) {
     switch (stage) {
         case TextureStage::Histogram:  // ~25 bytes a texel beside the decoded texture; a whole run 855 MB at 4096 x 4096
