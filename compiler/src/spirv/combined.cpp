@@ -19,17 +19,13 @@ namespace {
 using spirv::Instruction;
 using spirv::Module;
 
-constexpr uint16_t kOpFunction = 54, kOpName = 5, kOpTypeSampledImage = 27, kOpTypePointer = 32, kOpVariable = 59, kOpLoad = 61,
-                   kOpDecorate = 71, kOpSampledImage = 86;
-constexpr uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34, kUniformConstant = 0;
-
 // Variables by (set, binding), from the decorations.
 std::map<std::pair<uint32_t, uint32_t>, uint32_t> descriptors(const Module& m) {
     std::map<uint32_t, uint32_t> set, binding;
     for (const Instruction& i : m.code)
-        if (i.opcode() == kOpDecorate && i.words.size() == 4) {
-            if (i.words[2] == kDecorationDescriptorSet) set[i.words[1]] = i.words[3];
-            if (i.words[2] == kDecorationBinding) binding[i.words[1]] = i.words[3];
+        if (i.opcode() == spv::OpDecorate && i.words.size() == 4) {
+            if (i.words[2] == spv::DecorationDescriptorSet) set[i.words[1]] = i.words[3];
+            if (i.words[2] == spv::DecorationBinding) binding[i.words[1]] = i.words[3];
         }
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> out;
     for (const auto& [id, b] : binding) out[{set[id], b}] = id;
@@ -39,18 +35,19 @@ std::map<std::pair<uint32_t, uint32_t>, uint32_t> descriptors(const Module& m) {
 // The id of `OpTypePointer UniformConstant pointee`, added after the instruction defining `pointee` if missing.
 uint32_t uniformPointer(Module& m, uint32_t pointee) {
     for (const Instruction& i : m.code)
-        if (i.opcode() == kOpTypePointer && i.words[2] == kUniformConstant && i.words[3] == pointee) return i.words[1];
+        if (i.opcode() == spv::OpTypePointer && i.words[2] == spv::StorageClassUniformConstant && i.words[3] == pointee) return i.words[1];
     const uint32_t id = m.header[3]++;
     auto defined =
         std::find_if(m.code.begin(), m.code.end(), [&](const Instruction& i) { return i.words.size() > 1 && i.words[1] == pointee; });
-    m.code.insert(defined + 1, Instruction{{(4u << 16) | kOpTypePointer, id, kUniformConstant, pointee}, {3}});
+    m.code.insert(defined + 1,
+                  Instruction{{(4u << spv::WordCountShift) | spv::OpTypePointer, id, spv::StorageClassUniformConstant, pointee}, {3}});
     return id;
 }
 
 // The sampled image type of image type `image` (optimised hexc modules sample every texture, so it exists).
 uint32_t sampledImageType(const Module& m, uint32_t image) {
     for (const Instruction& i : m.code)
-        if (i.opcode() == kOpTypeSampledImage && i.words[2] == image) return i.words[1];
+        if (i.opcode() == spv::OpTypeSampledImage && i.words[2] == image) return i.words[1];
     throw std::runtime_error("combined samplers: a texture is never sampled");
 }
 
@@ -62,9 +59,9 @@ std::map<uint32_t, uint32_t> textureImages(const Module& m, const std::map<std::
         const auto var = byBinding.find({plan.bindings.set, plan.bindings.firstTexture + uint32_t(t)});
         if (var == byBinding.end()) continue;  // a slot the shader does not read
         for (const Instruction& i : m.code)
-            if (i.opcode() == kOpVariable && i.words[2] == var->second)
+            if (i.opcode() == spv::OpVariable && i.words[2] == var->second)
                 for (const Instruction& p : m.code)
-                    if (p.opcode() == kOpTypePointer && p.words[1] == i.words[1]) imageOf[var->second] = p.words[3];
+                    if (p.opcode() == spv::OpTypePointer && p.words[1] == i.words[1]) imageOf[var->second] = p.words[3];
     }
     return imageOf;
 }
@@ -74,13 +71,12 @@ std::map<uint32_t, uint32_t> textureImages(const Module& m, const std::map<std::
 std::vector<uint32_t> assemble(const std::vector<uint32_t>& header, std::vector<Instruction> code,
                                const std::map<uint32_t, uint32_t>& moved) {
     auto last = std::stable_partition(code.begin(), code.end(),
-                                      [&](const Instruction& i) { return !(i.opcode() == kOpVariable && moved.count(i.words[2])); });
+                                      [&](const Instruction& i) { return !(i.opcode() == spv::OpVariable && moved.count(i.words[2])); });
     std::vector<Instruction> variables(std::make_move_iterator(last), std::make_move_iterator(code.end()));
     code.erase(last, code.end());
-    auto functions = std::find_if(code.begin(), code.end(), [](const Instruction& i) { return i.opcode() == kOpFunction; });
+    auto functions = std::find_if(code.begin(), code.end(), [](const Instruction& i) { return i.opcode() == spv::OpFunction; });
     code.insert(functions, std::make_move_iterator(variables.begin()), std::make_move_iterator(variables.end()));
-    std::vector<uint32_t> out = header;
-    for (const Instruction& i : code) out.insert(out.end(), i.words.begin(), i.words.end());
+    const std::vector<uint32_t> out = Module{header, std::move(code)}.words();
     if (std::string errors = validationErrors(out); !errors.empty())
         throw std::runtime_error("combined samplers: the rewritten module is invalid:\n" + errors);
     return out;
@@ -102,22 +98,22 @@ std::vector<uint32_t> combineSamplers(const std::vector<uint32_t>& words, const 
     std::set<uint32_t> samplerLoads;
     std::vector<Instruction> kept;
     for (Instruction& i : m.code) {
-        const uint16_t op = i.opcode();
-        if (op == kOpVariable && pointerOf.count(i.words[2])) i.words[1] = pointerOf[i.words[2]];
-        if (op == kOpLoad && pointerOf.count(i.words[3])) {
+        const spv::Op op = i.opcode();
+        if (op == spv::OpVariable && pointerOf.count(i.words[2])) i.words[1] = pointerOf[i.words[2]];
+        if (op == spv::OpLoad && pointerOf.count(i.words[3])) {
             i.words[1] = sampledOf[i.words[3]];
             loadType[i.words[2]] = i.words[1];
         }
-        if (op == kOpLoad && i.words[3] == sampler) {
+        if (op == spv::OpLoad && i.words[3] == sampler) {
             samplerLoads.insert(i.words[2]);
             continue;
         }
-        if (op == kOpSampledImage && loadType.count(i.words[3]) && samplerLoads.count(i.words[4])) {
+        if (op == spv::OpSampledImage && loadType.count(i.words[3]) && samplerLoads.count(i.words[4])) {
             replaced[i.words[2]] = i.words[3];
             continue;
         }
         const bool aboutSampler =
-            (op == kOpVariable && i.words[2] == sampler) || ((op == kOpDecorate || op == kOpName) && i.words[1] == sampler);
+            (op == spv::OpVariable && i.words[2] == sampler) || ((op == spv::OpDecorate || op == spv::OpName) && i.words[1] == sampler);
         if (!aboutSampler || sampler == 0) kept.push_back(std::move(i));
     }
     for (Instruction& i : kept)
@@ -128,8 +124,8 @@ std::vector<uint32_t> combineSamplers(const std::vector<uint32_t>& words, const 
                     "combined samplers (layout vulkan.combined): the template reads hexcSampler or a hexcTex_ texture itself, "
                     "which a combined image sampler cannot give; sample its own textures with its own sampler, or keep "
                     "separate samplers")}};
-            if (auto r = replaced.find(i.words[at]); r != replaced.end()) i.words[at] = r->second;
         }
+    for (Instruction& i : kept) i.replaceIds(replaced);
     return assemble(m.header, std::move(kept), pointerOf);
 }
 

@@ -15,8 +15,8 @@ std::optional<Diagnostic> beyondOptimiserBound(const std::vector<uint32_t>& word
     for (size_t at = 5; at < words.size();) {
         const uint32_t count = words[at] >> 16, opcode = words[at] & 0xffff;
         if (count == 0) break;  // glslang's output always parses; nothing more to count in one that does not
-        functions += opcode == 54;
-        calls += opcode == 57;
+        functions += opcode == spv::OpFunction;
+        calls += opcode == spv::OpFunctionCall;
         at += count;
     }
     if (functions <= kMaxFunctions && calls <= kMaxCalls) return std::nullopt;
@@ -25,6 +25,17 @@ std::optional<Diagnostic> beyondOptimiserBound(const std::vector<uint32_t>& word
                                 " calls; hexc optimises at most " + std::to_string(kMaxFunctions) + " functions and " +
                                 std::to_string(kMaxCalls) +
                                 " calls (spirv-opt's inliner would take minutes), fewer in the template would do");
+}
+
+void Instruction::replaceIds(const std::map<uint32_t, uint32_t>& replaced) {
+    for (uint16_t at : ids)
+        if (auto r = replaced.find(words[at]); r != replaced.end()) words[at] = r->second;
+}
+
+std::vector<uint32_t> Module::words() const {
+    std::vector<uint32_t> out = header;
+    for (const Instruction& i : code) out.insert(out.end(), i.words.begin(), i.words.end());
+    return out;
 }
 
 Module parse(const std::vector<uint32_t>& words, const std::string& what) {

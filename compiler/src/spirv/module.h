@@ -1,8 +1,11 @@
 #pragma once
 // A SPIR-V module as a list of instructions, for the word-level rewrites hexc does after spirv-opt (combined.h,
 // share.h).
+#include <spirv.hpp>
+
 #include <cstdint>
 #include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -13,12 +16,16 @@ namespace hexc::spirv {
 struct Instruction {
     std::vector<uint32_t> words;
     std::vector<uint16_t> ids;  // word offsets of the id operands (result id excluded)
-    uint16_t opcode() const { return uint16_t(words[0] & 0xffff); }
+    spv::Op opcode() const { return spv::Op(words[0] & spv::OpCodeMask); }
+    // Each id operand found in `replaced` becomes the id it maps to.
+    void replaceIds(const std::map<uint32_t, uint32_t>& replaced);
 };
 
 struct Module {
     std::vector<uint32_t> header;
     std::vector<Instruction> code;
+    // The module's words: the header, then each instruction's.
+    std::vector<uint32_t> words() const;
 };
 
 // An error naming `templateName` (HX209) when glslang's module holds more functions or calls than spirv-opt's inliner

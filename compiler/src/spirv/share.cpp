@@ -10,10 +10,11 @@ namespace {
 
 using spirv::Instruction;
 
-constexpr uint16_t kOpFunction = 54, kOpFunctionEnd = 56, kOpSampledImage = 86, kOpImageSampleExplicitLod = 88, kOpImage = 100,
-                   kOpImageQuerySizeLod = 103, kOpLabel = 248, kOpBranch = 249, kOpBranchConditional = 250, kOpSwitch = 251;
-
-bool derivative(uint16_t op) { return op >= 207 && op <= 215 && op != 209 && op != 212 && op != 215; }  // not the fwidths
+// A screen-space derivative, not an fwidth (a sum of two).
+bool derivative(spv::Op op) {
+    return op == spv::OpDPdx || op == spv::OpDPdy || op == spv::OpDPdxFine || op == spv::OpDPdyFine || op == spv::OpDPdxCoarse ||
+           op == spv::OpDPdyCoarse;
+}
 
 // One function's blocks: each block's successors, and the block of each instruction.
 struct Cfg {
@@ -42,16 +43,16 @@ Cfg cfgOf(const std::vector<Instruction>& code, size_t begin, size_t end) {
     uint32_t block = 0;
     for (size_t k = begin; k < end; ++k) {
         const Instruction& i = code[k];
-        const uint16_t op = i.opcode();
-        if (op == kOpLabel) {
+        const spv::Op op = i.opcode();
+        if (op == spv::OpLabel) {
             block = i.words[1];
             if (!cfg.entry) cfg.entry = block;
             cfg.successors[block];
-        } else if (op == kOpBranch) {
+        } else if (op == spv::OpBranch) {
             cfg.successors[block] = {i.words[1]};
-        } else if (op == kOpBranchConditional) {
+        } else if (op == spv::OpBranchConditional) {
             cfg.successors[block] = {i.words[2], i.words[3]};
-        } else if (op == kOpSwitch) {
+        } else if (op == spv::OpSwitch) {
             cfg.successors[block] = {i.words[2]};  // the default, then (32-bit literal, label) pairs
             for (size_t w = 4; w < i.words.size(); w += 2) cfg.successors[block].push_back(i.words[w]);
         }
@@ -69,23 +70,22 @@ void shareInFunction(std::vector<Instruction>& code, size_t begin, size_t end, s
     uint32_t block = 0;
     for (size_t k = begin; k < end; ++k) {
         Instruction& i = code[k];
-        for (uint16_t at : i.ids)
-            if (auto r = replaced.find(i.words[at]); r != replaced.end()) i.words[at] = r->second;
-        const uint16_t op = i.opcode();
-        if (op == kOpLabel) block = i.words[1];
-        if (op == kOpSampledImage) sampledImage[i.words[2]] = {i.words[3], i.words[4]};
+        i.replaceIds(replaced);
+        const spv::Op op = i.opcode();
+        if (op == spv::OpLabel) block = i.words[1];
+        if (op == spv::OpSampledImage) sampledImage[i.words[2]] = {i.words[3], i.words[4]};
         // textureSize (lod "shared") reads the image of a sampled image: the image it is.
-        if (op == kOpImage && sampledImage.count(i.words[3])) imageOf[i.words[2]] = sampledImage.at(i.words[3]).front();
-        if (op != kOpImageSampleExplicitLod && op != kOpImageQuerySizeLod && !derivative(op)) continue;
+        if (op == spv::OpImage && sampledImage.count(i.words[3])) imageOf[i.words[2]] = sampledImage.at(i.words[3]).front();
+        if (op != spv::OpImageSampleExplicitLod && op != spv::OpImageQuerySizeLod && !derivative(op)) continue;
         std::vector<uint32_t> key = i.words;
         key[2] = 0;  // the result id
         // A sampled image made here is keyed by its image and sampler; one loaded whole (a template's combined sampler2D)
         // by its own id, which is then the same only for the same load.
-        if (auto pair = sampledImage.find(i.words[3]); op == kOpImageSampleExplicitLod && pair != sampledImage.end()) {
+        if (auto pair = sampledImage.find(i.words[3]); op == spv::OpImageSampleExplicitLod && pair != sampledImage.end()) {
             key[3] = 0;
             key.insert(key.end(), pair->second.begin(), pair->second.end());
         }
-        if (op == kOpImageQuerySizeLod && imageOf.count(i.words[3])) key[3] = imageOf.at(i.words[3]);
+        if (op == spv::OpImageQuerySizeLod && imageOf.count(i.words[3])) key[3] = imageOf.at(i.words[3]);
         auto& earlier = seen[key];
         bool merged = false;
         for (const auto& [b, result] : earlier)
@@ -105,21 +105,20 @@ std::vector<uint32_t> shareTextureReads(const std::vector<uint32_t>& words) {
     std::map<uint32_t, uint32_t> replaced;
     std::vector<bool> dropped(m.code.size());
     for (size_t k = 0; k < m.code.size(); ++k) {
-        if (m.code[k].opcode() != kOpFunction) continue;
+        if (m.code[k].opcode() != spv::OpFunction) continue;
         size_t end = k;
-        while (m.code[end].opcode() != kOpFunctionEnd) ++end;
+        while (m.code[end].opcode() != spv::OpFunctionEnd) ++end;
         shareInFunction(m.code, k, end, replaced, dropped);
         k = end;
     }
-    std::vector<uint32_t> out = m.header;
+    std::vector<Instruction> kept;
     for (size_t k = 0; k < m.code.size(); ++k) {
         if (dropped[k]) continue;
-        Instruction& i = m.code[k];
-        for (uint16_t at : i.ids)  // uses before the definition they repeat (OpPhi of a loop)
-            if (auto r = replaced.find(i.words[at]); r != replaced.end()) i.words[at] = r->second;
-        out.insert(out.end(), i.words.begin(), i.words.end());
+        m.code[k].replaceIds(replaced);  // uses before the definition they repeat (OpPhi of a loop)
+        kept.push_back(std::move(m.code[k]));
     }
-    return out;
+    m.code = std::move(kept);
+    return m.words();
 }
 
 }  // namespace hexc
