@@ -49,8 +49,9 @@ TEST(Cli, UsageErrors) {
     std::string err;
     EXPECT_EQ(runHexc("materials/rock.json", &err), 2);
     EXPECT_EQ(err, "hexc: no output folder given: use -o DIR (see hexc --help)\n");
+    // `--targets` is an alias of `--target`, whose name the message uses.
     EXPECT_EQ(runHexc("materials/rock.json -o x --targets hlsl,dxil", &err), 2);
-    EXPECT_EQ(err, "hexc: --targets: dxil not in {spirv,hlsl,glsl,msl} (see hexc --help)\n");
+    EXPECT_EQ(err, "hexc: --target: dxil not in {spirv,hlsl,glsl,msl} (see hexc --help)\n");
     EXPECT_EQ(runHexc("--frobnicate", &err), 2);
     EXPECT_EQ(err, "hexc: The following argument was not expected: --frobnicate (see hexc --help)\n");
     EXPECT_EQ(runHexc("materials/rock.json -o x --hlsl-sm 52", &err), 2);
