@@ -12,7 +12,8 @@ std::string banner(const Material& material, const ShaderPlan& plan, const Compi
                           ", glsl " + std::to_string(options.glslVersion) + (options.glslEs ? " es" : "") + ", msl " +
                           std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor);
     std::string code =
-        std::string(options.debug ? "debug (unoptimised, line directives: " + std::string(toString(options.lineDirectives)) + ")" : "optimised") +
+        std::string(options.debug ? "debug (unoptimised, line directives: " + std::string(toString(options.lineDirectives)) + ")"
+                                  : "optimised") +
         (options.bake ? ", baked" : "") + (options.specialize ? "" : ", not specialised") +
         (options.shareLattice ? "" : ", no shared lattice");
     return kBannerStart + std::string(version()) + " from " + (from.empty() ? material.name : from) + " (material " + material.name +
