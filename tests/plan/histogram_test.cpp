@@ -264,7 +264,7 @@ Texture texture(int w, int h, const std::function<std::array<double, 3>(int, int
 
 // Slate: six grey levels in patches about 9 texels wide (few values, each shared by thousands of texels).
 Texture slate() {
-    return texture(131, 97, [](int x, int y) {
+    return texture(523, 389, [](int x, int y) {
         const double level = std::floor(std::min(5.999, 6 * valueNoise(x, y, 9, 1)));
         const double v = (40 + 22 * level) / 255;
         return std::array<double, 3>{v, v, 1.02 * v};
@@ -274,7 +274,7 @@ Texture slate() {
 // Leaf: saturated greens with dark veins and rare yellow-white highlights: a colour distribution far from a box, so
 // the sum over the principal axes can leave the texture's range.
 Texture leaf() {
-    return texture(113, 89, [](int x, int y) {
+    return texture(453, 357, [](int x, int y) {
         const double n = valueNoise(x, y, 7, 2), vein = std::abs(std::sin(0.45 * x + 0.8 * valueNoise(x, y, 13, 3) * 6));
         if (unit(uint32_t(x), uint32_t(y), 4) < 0.004) return std::array<double, 3>{1.0, 1.0, 0.75};
         const double dark = vein < 0.08 ? 0.15 : 1.0;
@@ -284,7 +284,7 @@ Texture leaf() {
 
 // Granite: a grey mean with heavy (Cauchy) tails: most texels near 0.45, a few percent anywhere up to 0 and 1.
 Texture granite() {
-    return texture(127, 101, [](int x, int y) {
+    return texture(509, 403, [](int x, int y) {
         const double c = std::tan(std::numbers::pi * (unit(uint32_t(x), uint32_t(y), 5) - 0.5));
         const double v = 0.45 + 0.04 * c + 0.05 * (valueNoise(x, y, 5, 6) - 0.5);
         return std::array<double, 3>{v * 1.05, v, v * 0.95};
@@ -316,13 +316,18 @@ Stats stats(const Image& image) {
 }  // namespace
 
 // The histogram blend against the falloff blend at its edges: a few-valued, a heavy-tailed and a leaf-like texture,
-// close (0.75 texel per pixel) and far (8 and 32 texels per pixel, levels 3 and 5). Measured against the plain texture
-// rendered the same way: the share of its variance each blend keeps, and the range each stays in. The claims of
-// docs/material-format.md#blend: the result stays within the texture's range per channel (the sum over the colour
-// axes left it by up to 73/255 on the leaf, and the tail clamp cut the granite's specks); far away the histogram blend
-// keeps 0.6 to 1.1 of the variance (equal texels ranked in raster order painted a ramp: 1.49 on the slate at 32
-// texels per pixel); close up, on a heavy-tailed texture it keeps less than the falloff blend (filtering between an
-// isolated extreme texel and its neighbours in Gaussian space pulls it towards the mean).
+// close (0.75 texel per pixel) and far (7.37 and 29.3 texels per pixel, about levels 3 and 5). Measured against the
+// plain texture rendered the same way: the share of its variance each blend keeps, and the range each stays in. The
+// textures are large enough (about 500 x 400) that level 5 still holds some 200 texels, and the far distances are not
+// whole numbers of texels per pixel, so that the plain render's pixels meet its texels at every bilinear phase, as the
+// tiles' random offsets do: at 8 and 32 texels per pixel every pixel of the plain render sits at one phase, and its
+// variance, the measure's denominator, moved with the view's origin. The claims of docs/material-format.md#blend:
+// the result stays within the texture's range per channel; a few-valued texture keeps as much variance far away as
+// with the falloff blend (equal texels ranked in raster order painted a ramp: 1.49 of the variance on the slate, 5.2
+// in an outside measure); far away every texture keeps 0.6 to 1.6 of it (the per-level table is exact for a texture
+// that is a transform of a Gaussian field; veins and isolated specks are not, and keep up to 1.50 measured); close
+// up, on a heavy-tailed texture it keeps less than the falloff blend (filtering between an isolated extreme texel and
+// its neighbours in Gaussian space pulls it towards the mean).
 TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
     struct Case {
         const char* name;
@@ -342,7 +347,7 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
                                                          for (uint8_t b : c.texture.rgba8) v.push_back(b / 255.0f);
                                                          return v;
                                                      }()});
-        for (double texelsPerPixel : {0.75, 8.0, 32.0}) {
+        for (double texelsPerPixel : {0.75, 7.37, 29.3}) {
             const int pixels = texelsPerPixel < 1 ? 96 : texelsPerPixel < 10 ? 48 : 32;
             const double span = pixels * texelsPerPixel / c.texture.width;
             const View view{pixels, pixels, {0.31, 0.17, 0.31 + span, 0.17 + span * c.texture.width / c.texture.height}};
@@ -362,7 +367,9 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
             const double kept = g.variance / p.variance;
             if (texelsPerPixel > 1) {
                 EXPECT_GE(kept, 0.6) << c.name << " at " << texelsPerPixel;
-                EXPECT_LE(kept, 1.1) << c.name << " at " << texelsPerPixel;
+                EXPECT_LE(kept, 1.6) << c.name << " at " << texelsPerPixel;
+                // Measured 0.03 to 0.04 apart; a ramp from ordered ties adds half the variance and more.
+                if (c.name == std::string("slate")) EXPECT_NEAR(kept, f.variance / p.variance, 0.2) << "at " << texelsPerPixel;
             } else if (c.name == std::string("granite")) {
                 EXPECT_LT(kept, f.variance / p.variance);
             }
