@@ -21,6 +21,9 @@ const std::vector<std::string> kHexKeys = {
     "split_coordinates", "rotationrange", "rotationsteps", "scalerange",     "offset",          "offsetsteps", "mask",
     "maskscale",         "taps",          "projection",    "planesharpness", "blend",           "lod",         "lumacoeffs"};
 const std::vector<std::string> kHeightKeys = {"slot", "width"};
+// Keys of one level that a user may write one level up or down: a slot's own, and the material's own.
+const std::vector<std::string> kSlotOnlyKeys = {"texture", "kind", "channel", "colorspace", "flip_y", "height_blend"};
+const std::vector<std::string> kMaterialOnlyKeys = {"template", "pack", "slots"};
 const std::vector<std::string> kTaps = {"adaptive"};  // besides a count
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
 constexpr size_t kMaxSlots = 16;
@@ -44,7 +47,7 @@ public:
             report(Code::WrongType, "", "expected a material object, got " + typeName(doc));
             return m;
         }
-        checkKeys(doc, "", kMaterialKeys);
+        checkKeys(doc, "", kMaterialKeys, {{&kHexKeys, "the top-level `hextiling` or a slot's"}, {&kSlotOnlyKeys, "a slot of `slots`"}});
         if (requireKey(doc, "", "name", "a string")) {
             m.name = string(doc["name"], "/name");
             if (doc["name"].is_string() && !isFileName(m.name))
@@ -70,7 +73,9 @@ private:
             report(Code::WrongType, pointer, "expected an object of hex-tiling settings, got " + typeName(v));
             return;
         }
-        checkKeys(v, pointer, kHexKeys);
+        checkKeys(v, pointer, kHexKeys,
+                  {{&kSlotOnlyKeys, materialLevel ? "a slot of `slots`" : "the slot, one level up"},
+                   {&kMaterialOnlyKeys, "the material's top level"}});
         if (v.contains("enabled")) hex.enabled = boolean(v["enabled"], pointer + "/enabled", hex.enabled);
         if (v.contains("tiling")) tiling(v["tiling"], pointer + "/tiling", hex);
         if (v.contains("rotation"))
@@ -213,7 +218,7 @@ private:
             report(Code::WrongType, pointer, "expected a slot object, got " + typeName(v));
             return s;
         }
-        checkKeys(v, pointer, kSlotKeys);
+        checkKeys(v, pointer, kSlotKeys, {{&kHexKeys, "the slot's `hextiling`"}, {&kMaterialOnlyKeys, "the material's top level"}});
         if (requireKey(v, pointer, "name", "a string")) {
             s.name = string(v["name"], pointer + "/name");
             if (v["name"].is_string() && !isSlotName(s.name)) {

@@ -66,11 +66,19 @@ void JsonRules::duplicateKeys() {
                    ")");
 }
 
-void JsonRules::checkKeys(const json& obj, const std::string& pointer, const std::vector<std::string>& known) {
+void JsonRules::checkKeys(const json& obj, const std::string& pointer, const std::vector<std::string>& known,
+                          const std::vector<OtherLevel>& others) {
+    const auto has = [](const std::vector<std::string>& keys, const std::string& key) {
+        return std::find(keys.begin(), keys.end(), key) != keys.end();
+    };
     for (const auto& [key, value] : obj.items()) {
-        if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+        if (has(known, key)) continue;
         std::string hint;
-        if (auto best = closestMatch(key, known)) hint = "did you mean " + ticked(*best) + "?";
+        const auto other = std::find_if(others.begin(), others.end(), [&](const OtherLevel& o) { return has(*o.keys, key); });
+        if (other != others.end())
+            hint = ticked(key) + " belongs in " + other->where;
+        else if (auto best = closestMatch(key, known))
+            hint = "did you mean " + ticked(*best) + "?";
         report(Code::UnknownKey, pointerAppend(pointer, key), "unknown key " + ticked(key) + "; expected " + joinQuoted(known), hint, true);
     }
 }

@@ -52,8 +52,16 @@ protected:
         bool contains(double x) const { return (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi); }
     };
 
-    // Unknown keys of `obj` (with the closest known one as a hint), and a missing required one.
-    void checkKeys(const json& obj, const std::string& pointer, const std::vector<std::string>& known);
+    // Where else in the document a key is known: its keys and how to name the place ("the slot's `hextiling`").
+    struct OtherLevel {
+        const std::vector<std::string>* keys;
+        std::string where;
+    };
+
+    // Unknown keys of `obj`, and a missing required one. An unknown key known at another level gets a hint naming where
+    // it belongs (a user who writes `blend` in a slot meant its `hextiling`), else the closest known one.
+    void checkKeys(const json& obj, const std::string& pointer, const std::vector<std::string>& known,
+                   const std::vector<OtherLevel>& others = {});
     bool requireKey(const json& obj, const std::string& pointer, const std::string& key, const std::string& what);
 
     // Each value read as its type, or reported with `fallback` (or empty) returned.
