@@ -146,6 +146,10 @@ Inputs readInputs(const Arguments& a) {
             parsed[0].diagnostics.push_back(
                 Diagnostic::make(Code::InputUnreadable, {path.string()}, "", "cannot read material file: " + why));
         for (ParseResult& p : parsed) {
+            if (p.partial) {  // the template's problems in the same run as the material's
+                const Diagnostics t = checkTemplate(*p.partial, a.options);
+                p.diagnostics.insert(p.diagnostics.end(), t.begin(), t.end());
+            }
             if (printDiagnostics(p.diagnostics, a) && p.material)
                 in.jobs.push_back({std::move(*p.material)});
             else

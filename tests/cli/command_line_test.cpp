@@ -78,6 +78,26 @@ TEST(CommandLine, ATemplateTypoNamesTheSlotItMeant) {
         << err;
 }
 
+// A material with an error of its own and a template it does not fit: both in one run, in position order.
+TEST(CommandLine, TemplateFitErrorsComeWithTheMaterialsOwn) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_template_fit_at_once";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "t.glsl") << "#version 450\n// hexc slot albedo normal\n#include <hexc>\nlayout(location = 0) in vec2 v_uv;\n"
+                                     "layout(location = 0) out vec4 o_color;\n"
+                                     "void main() { o_color = vec4(hexc_albedo(v_uv), 0.0, 1.0); }\n";
+    std::ofstream(dir / "m.json") << R"({"name": "m", "template": "t.glsl", "slots": [
+        {"name": "albedo", "kind": "color", "hextiling": {"falloff": 2}, "texture": ")"
+                                  << std::filesystem::absolute("materials/textures/rock_albedo.png").string() << R"("}]})";
+    std::string err;
+    EXPECT_EQ(runHexc((dir / "m.json").string() + " -o " + (dir / "out").string(), &err), 1);
+    const std::string m = (dir / "m.json").string();
+    EXPECT_EQ(err, m + ":2:36: error[HX208]: /slots/0/kind: template `" + (dir / "t.glsl").string() +
+                       "` reads `albedo` as a normal slot; this one is `color`\n" + m +
+                       ":2:70: error[HX106]: /slots/0/hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 2\n"
+                       "hexc: nothing written\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
 // The library for hand-written shaders carries its settings' documentation on every text target: each struct's
 // comment, and each field's default (the neutral constructor's value) and meaning, which says when a pow is left in.
 TEST(CommandLine, TheLibraryDocumentsItsSettings) {

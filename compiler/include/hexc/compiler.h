@@ -87,6 +87,10 @@ struct OutputNames {
 };
 OutputNames outputNames(const Material& material, const CompileOptions& options = {});
 
+// The template's own problems and how the material fits it (the slots it declares and their kinds), without compiling:
+// compile() reports them too, and a caller whose material has errors (ParseResult::partial) reports them beside those.
+Diagnostics checkTemplate(const Material& material, const CompileOptions& options = {});
+
 const char* version();
 
 // A shader source without the two banner lines compile() writes on top (after GLSL's #version line), which name

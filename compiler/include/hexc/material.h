@@ -106,6 +106,9 @@ struct Material {
 struct ParseResult {
     std::optional<Material> material;  // set only when there are no errors
     Diagnostics diagnostics;
+    // With errors: what could be read, for the checks that need only its slots' names and kinds and its template
+    // (checkTemplate in hexc/compiler.h), so that a run reports the template's problems beside the material's.
+    std::optional<Material> partial;
 };
 
 // Parses and validates a material: JSON, or a MaterialX document when `file` ends in .mtlx (hexc/materialx.h).

@@ -60,7 +60,7 @@ public:
     // A problem of the whole document, as its only result.
     std::vector<ParseResult> problem(xml_node node, std::string message, std::string hint = {}) {
         report(Code::MaterialXUnsupported, node, std::move(message), std::move(hint));
-        return {ParseResult{std::nullopt, std::move(diags_)}};
+        return {ParseResult{std::nullopt, std::move(diags_), std::nullopt}};
     }
 
 private:
@@ -536,7 +536,8 @@ namespace {
 std::vector<ParseResult> readDocument(std::string_view text, const std::filesystem::path& file, bool one) {
     auto failed = [&](Code code, size_t offset, std::string message) {
         TextPos p = textPosition(text, offset);
-        return std::vector<ParseResult>{{std::nullopt, {Diagnostic::make(code, {file.string(), p.line, p.col}, "", std::move(message))}}};
+        return std::vector<ParseResult>{
+            {std::nullopt, {Diagnostic::make(code, {file.string(), p.line, p.col}, "", std::move(message))}, std::nullopt}};
     };
     if (std::optional<size_t> at = invalidUtf8(text))
         return failed(Code::XmlSyntax, *at, "invalid UTF-8 (byte 0x" + hexByte(text[*at]) + "); MaterialX documents are UTF-8");

@@ -480,7 +480,7 @@ private:
 }  // namespace
 
 ParseResult parseMaterialJson(std::string_view text, const std::filesystem::path& file) {
-    return validate(text, file, &ParseResult::material, &MaterialValidator::run);
+    return validate(text, file, &ParseResult::material, &MaterialValidator::run, &ParseResult::partial);
 }
 
 ParseResult parseMaterial(std::string_view text, const std::filesystem::path& file) {

@@ -86,17 +86,20 @@ protected:
 std::optional<nlohmann::json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags);
 
 // Parses `text` and validates the document with a `Validator`'s `run`, whose result lands in `field` only when there is
-// no error.
+// no error, else in `partial` when given.
 template <typename Validator, typename Result, typename T>
 Result validate(std::string_view text, const std::filesystem::path& file, std::optional<T> Result::*field,
-                T (Validator::*run)(const nlohmann::json&)) {
+                T (Validator::*run)(const nlohmann::json&), std::optional<T> Result::*partial = nullptr) {
     Result result;
     std::optional<nlohmann::json> doc = parseJson(text, file, &result.diagnostics);
     if (!doc) return result;
     Validator v(text, file);
     T value = (v.*run)(*doc);
     result.diagnostics = std::move(v.diags);
-    if (!hasErrors(result.diagnostics)) result.*field = std::move(value);
+    if (!hasErrors(result.diagnostics))
+        result.*field = std::move(value);
+    else if (partial)
+        result.*partial = std::move(value);
     return result;
 }
 

@@ -310,6 +310,12 @@ void planParams(bool bake, ShaderPlan& plan) {
 
 }  // namespace
 
+Diagnostics checkTemplate(const Material& material, const CompileOptions& options) {
+    ShaderPlan plan;
+    loadTemplate(material, options, plan);
+    return plan.diagnostics;
+}
+
 ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     ShaderPlan plan;
     plan.materialName = material.name;
