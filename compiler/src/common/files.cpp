@@ -92,6 +92,7 @@ std::optional<std::string> readFile(const std::filesystem::path& file, std::stri
         return fail("larger than hexc's input limit of " + std::to_string(kMaxInputBytes >> 20) + " MiB");
     // Read what is there, up to the limit: a file that grows while read is cut off and reported, not followed.
     std::string bytes;
+    bytes.reserve(size_t(st.st_size));  // one allocation for a file that does not grow
     char buffer[65536];
     for (;;) {
         ssize_t n = ::read(in.fd, buffer, sizeof buffer);

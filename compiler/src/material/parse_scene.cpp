@@ -115,10 +115,37 @@ private:
 
 }  // namespace
 
+namespace {
+
+// Looks for a top-level "scene" key while the text is read (SAX), without building the document: a material is
+// then parsed once, by its own parser, however large.
+struct SceneKeyFinder : nlohmann::json_sax<nlohmann::json> {
+    int depth = 0;
+    bool found = false;
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return ++depth, true; }
+    bool end_object() override { return --depth, true; }
+    bool start_array(std::size_t) override { return ++depth, true; }
+    bool end_array() override { return --depth, true; }
+    bool key(string_t& k) override {
+        found = depth == 1 && k == "scene";
+        return !found;  // stops reading once found
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+};
+
+}  // namespace
+
 bool isSceneDocument(std::string_view text) {
-    Diagnostics ignored;
-    std::optional<nlohmann::json> doc = parseJson(text, {}, &ignored);
-    return doc && doc->is_object() && doc->contains("scene");
+    SceneKeyFinder finder;
+    nlohmann::json::sax_parse(text, &finder);
+    return finder.found;
 }
 
 SceneParseResult parseSceneFile(const std::filesystem::path& file) { return readAndParse(file, "scene", &parseScene); }
