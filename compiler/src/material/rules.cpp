@@ -71,7 +71,8 @@ void JsonRules::checkKeys(const json& obj, const std::string& pointer, const std
     const auto has = [](const std::vector<std::string>& keys, const std::string& key) {
         return std::find(keys.begin(), keys.end(), key) != keys.end();
     };
-    for (const auto& [key, value] : obj.items()) {
+    for (const auto& item : obj.items()) {
+        const std::string& key = item.key();
         if (has(known, key)) continue;
         std::string hint;
         const auto other = std::find_if(others.begin(), others.end(), [&](const OtherLevel& o) { return has(*o.keys, key); });
