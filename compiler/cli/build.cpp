@@ -124,7 +124,7 @@ void addScene(const std::filesystem::path& path, std::string_view text, const Ar
         summary.variants.push_back(v.name);
         const ScenePass& pass = *std::find_if(parsed.scene->passes.begin(), parsed.scene->passes.end(),
                                               [&](const ScenePass& p) { return p.name == v.passName; });
-        in.jobs.push_back({std::move(v.material), {path}, !pass.templateName.empty() && !pass.slots});
+        in.jobs.push_back({std::move(v.material), {path}, pass.templ && !pass.slots});
     }
     in.scenes.push_back(std::move(summary));
 }

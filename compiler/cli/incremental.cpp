@@ -19,8 +19,7 @@ void addFile(ContentHash& h, const std::filesystem::path& file) { h.add(readFile
 std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options) {
     std::vector<std::filesystem::path> files{material.sourceFile};
     for (const Slot& s : material.slots) files.push_back(s.texturePath);
-    std::string templ = options.templateFile.empty() ? material.templateName : options.templateFile.string();
-    if (templ.ends_with(".glsl")) files.push_back(templ);
+    if (const TemplateRef t = effectiveTemplate(material, options); t.file) files.push_back(t.name);
     if (!options.layout.sourceFile.empty()) files.push_back(options.layout.sourceFile);
     return files;
 }
@@ -35,7 +34,7 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
           toString(options.layout) + "," + options.entryPoint + (options.vertex ? ",vertex" : "") +
           (options.emitGenerated ? ",generated" : "") + (options.manifestPathsFrom.empty() ? "" : ",paths"));
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).
-    h.add(material.name + "|" + material.templateName);
+    h.add(material.name + "|" + material.templ.path());
     // The banner names the material file; --manifest-paths gives where every input was (the stamp's folder is the
     // output folder they are relative to).
     h.add(material.sourceFile.filename().string());
@@ -50,11 +49,10 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
         if (s.hex.blend == Blend::Histogram || material.pack) addFile(h, s.texturePath);
     }
     addFile(h, material.sourceFile);
-    if (std::string t = options.templateFile.empty() ? material.templateName : options.templateFile.string(); t.ends_with(".glsl"))
-        addFile(h, t);
+    if (const TemplateRef t = effectiveTemplate(material, options); t.file) addFile(h, t.name);
     for (const auto& f : extra) addFile(h, f);
     // Built-in templates are part of the binary; hash their text too, not only the version.
-    for (const std::string& f : {std::string("hextiling.glsl"), std::string("slots.glsl"), material.templateName + ".glsl"})
+    for (const std::string& f : {std::string("hextiling.glsl"), std::string("slots.glsl"), material.templ.name + ".glsl"})
         if (const std::string* text = embeddedText(f)) h.add(*text);
     return h.hex();
 }

@@ -176,10 +176,7 @@ constexpr const char* kFallbackTemplate = "lit";
 // resources of its own is replaced by the built-in kFallbackTemplate, named in a note. Throws CompileError when it
 // does not compile.
 Material shownMaterial(Material material, const std::string& templateName, const CompileOptions& options) {
-    if (!templateName.empty()) {
-        material.templateName = templateName;
-        material.templateAsWritten.clear();
-    }
+    if (!templateName.empty()) material.templ = TemplateRef::parse(templateName);
     CompileOptions spirvOnly = options;
     spirvOnly.targets = {Target::Spirv};
     CompileResult compiled = compile(material, spirvOnly);
@@ -190,10 +187,10 @@ Material shownMaterial(Material material, const std::string& templateName, const
     if (own.empty()) return material;
     std::string names;
     for (const nlohmann::json& r : own) names += (names.empty() ? "" : ", ") + r["name"].get<std::string>();
-    const std::string shown = material.templateAsWritten.empty() ? material.templateName : material.templateAsWritten;
+    const std::string shown = material.templ.file ? material.templ.asWritten : material.templ.name;
     std::cerr << "hexc: note: template `" << shown << "` declares resources of its own (" << names
               << "): shown with the built-in template `" << kFallbackTemplate << "` (--template picks another)\n";
-    material.templateName = kFallbackTemplate;
+    material.templ = TemplateRef::builtin(kFallbackTemplate);
     return material;
 }
 

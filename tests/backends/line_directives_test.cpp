@@ -78,7 +78,7 @@ TEST(LineDirectives, EachModeOnEveryTextTarget) {
         // Functions: one before each function and one at its first statement; every file the code comes from named.
         EXPECT_EQ(functions.mostInAFunction, 1u) << target;
         EXPECT_EQ(std::set<std::string>(functions.files.begin(), functions.files.end()),
-                  (std::set<std::string>{"templates/lit.glsl", "hexc/hextiling.glsl", "hexc/generated"}))
+                  (std::set<std::string>{"templates/builtin/lit.glsl", "hexc/hextiling.glsl", "hexc/generated"}))
             << target;
         // ... so at most two per function: one before it, one in its body.
         EXPECT_LE(functions.count, 2 * functions.functions) << target;

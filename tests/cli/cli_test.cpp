@@ -131,7 +131,7 @@ TEST(Cli, WarningsAndVerbosity) {
     EXPECT_EQ(runHexc(scene + " -v", &err), 0);
     EXPECT_NE(err.find("hexc: rock.weights: up to date"), std::string::npos) << err;
     EXPECT_EQ(runHexc("materials/scenes/forest.json -v -o " + freshDir("hexc_cli_scene_v").string(), &err), 0);
-    EXPECT_NE(err.find("warning[HX204]: slot `normal` is not read by template templates/weights.glsl"), std::string::npos) << err;
+    EXPECT_NE(err.find("warning[HX204]: slot `normal` is not read by template templates/builtin/weights.glsl"), std::string::npos) << err;
     EXPECT_NE(err.find("hexc: rock_normal.depth: compiled (no stamp"), std::string::npos) << err;
     EXPECT_NE(err.find("hexc: tiles.depth: compiled (no stamp from an earlier build matches its inputs, options and hexc); its shader "
                        "code is identical to rock.depth's"),

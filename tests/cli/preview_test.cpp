@@ -43,7 +43,7 @@ TEST(PreviewCommand, AnEngineMaterialInDisplayEncoding) {
 
     // The plain column, top row (uv 0..0.5), as the library renders it in linear values.
     Material m = *parseMaterialFile("materials/engine_rock.json").material;
-    m.templateName = "lit";
+    m.templ = TemplateRef::builtin("lit");
     for (Slot& s : m.slots) s.hex.enabled = false;
     const Image linear = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Shaded, "", {cell, cell, {0, 0, 0.5, 0.5}});
     int darker = 0, offByOne = 0;

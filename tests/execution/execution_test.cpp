@@ -1042,7 +1042,7 @@ TEST(OneTap, PicksTheSameTileAndSampleAsTheReference) {
 
 // Texture fetches in the first slot's `value` shader, counted in its SPIR-V.
 size_t fetches(Material m) {
-    m.templateName = "value";
+    m.templ = TemplateRef::builtin("value");
     CompileResult r = compile(m);
     if (!r.ok()) throw std::runtime_error(formatAll(r.diagnostics));
     std::string text = disassemble(r.spirv);
@@ -1062,7 +1062,7 @@ TEST(AdaptiveTaps, EachFetchIsBehindABranch) {
     for (const char* kind : {"color", "normal"}) {
         Material m = material(std::string(R"({"name": "s", "kind": ")") + kind + R"(", "texture": "textures/rock_)" +
                               (kind == std::string("color") ? "albedo" : "normal") + R"(.png", "hextiling": {"taps": "adaptive"}})");
-        m.templateName = "value";
+        m.templ = TemplateRef::builtin("value");
         CompileResult r = compile(m);
         ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
         std::istringstream text(disassemble(r.spirv));

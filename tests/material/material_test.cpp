@@ -423,7 +423,7 @@ TEST(Material, ExamplesParseWithDefaultsAndOverrides) {
     EXPECT_TRUE(r.diagnostics.empty());
     const Material& m = *r.material;
     EXPECT_EQ(m.name, "rock");
-    EXPECT_EQ(m.templateName, "lit");
+    EXPECT_EQ(m.templ.path(), "templates/builtin/lit.glsl");
     ASSERT_EQ(m.slots.size(), 3u);
     EXPECT_EQ(m.slots[0].kind, SlotKind::Color);
     EXPECT_EQ(m.slots[0].colorSpace, ColorSpace::Srgb);

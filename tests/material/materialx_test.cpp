@@ -35,7 +35,7 @@ std::string pathsOf(const Material& a, const Material& b, std::string text) {
             text.replace(at, from.size(), to);
     };
     for (size_t i = 0; i < a.slots.size() && i < b.slots.size(); ++i) replace(b.slots[i].texture, a.slots[i].texture);
-    replace(b.templateAsWritten, a.templateAsWritten);
+    replace(b.templ.asWritten, a.templ.asWritten);
     return text;
 }
 

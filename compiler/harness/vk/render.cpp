@@ -105,7 +105,7 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
     // A height-blended slot also reads its height slot's texture.
     for (const Slot& s : material.slots)
         if (shown.heightBlend && s.name == shown.heightBlend->slot && s.name != shown.name) m.slots.push_back(s);
-    m.templateName = output == RenderOutput::Weights ? "weights" : "value";
+    m.templ = TemplateRef::builtin(output == RenderOutput::Weights ? "weights" : "value");
     return m;
 }
 

@@ -87,6 +87,9 @@ struct OutputNames {
 };
 OutputNames outputNames(const Material& material, const CompileOptions& options = {});
 
+// The template a compile of `material` uses: --template's file (CompileOptions::templateFile), else the material's.
+TemplateRef effectiveTemplate(const Material& material, const CompileOptions& options);
+
 // The template's own problems and how the material fits it (the slots it declares and their kinds), without compiling:
 // compile() reports them too, and a caller whose material has errors (ParseResult::partial) reports them beside those.
 Diagnostics checkTemplate(const Material& material, const CompileOptions& options = {});

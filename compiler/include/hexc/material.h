@@ -92,10 +92,24 @@ struct Slot {
     int line = 0, col = 0;      // where the slot's kind (else the slot) is in the material file; 0 when built in code
 };
 
+// A shader template as a material, a scene pass or --template names it, told apart once, where it is read: one of
+// hexc's built-in templates (embedded; its source is templates/builtin/<name>.glsl) or a .glsl file of the user's.
+struct TemplateRef {
+    std::string name = "lit";  // a built-in's name, or the file's path resolved against the naming document's folder
+    bool file = false;
+    std::string asWritten;  // a file as the document names it (the manifest shows it so); empty for a built-in
+    // How diagnostics, banners and #line directives name it: a built-in by its source's path in hexc
+    // ("templates/builtin/lit.glsl"), a file by its resolved path.
+    std::string path() const { return file ? name : "templates/builtin/" + name + ".glsl"; }
+    // `written` as a document or command line gives it: a name ending in .glsl is a file, resolved against `dir`;
+    // anything else a built-in's name (which the caller checks).
+    static TemplateRef parse(const std::string& written, const std::filesystem::path& dir = {});
+    static TemplateRef builtin(std::string name) { return {std::move(name), false, {}}; }
+};
+
 struct Material {
-    std::string name;               // output file stem
-    std::string templateName;       // a built-in template name, or a path to a .glsl file
-    std::string templateAsWritten;  // a template file as the material (or scene pass) names it, for the manifest
+    std::string name;   // output file stem
+    TemplateRef templ;  // the built-in `lit` unless the material names another
     std::filesystem::path sourceFile;
     HexTiling hex;            // material-level settings (slots may override)
     std::vector<Slot> slots;  // in declaration order; binding order follows it

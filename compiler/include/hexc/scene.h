@@ -14,8 +14,7 @@ namespace hexc {
 
 struct ScenePass {
     std::string name;                                   // identifier; variant files are "<material>.<pass>.*"
-    std::string templateName;                           // empty: each material's own template
-    std::string templateAsWritten;                      // a template file as the scene names it
+    std::optional<TemplateRef> templ;                   // unset: each material's own template
     std::optional<std::vector<std::string>> slots;      // the slots the pass reads; unset: all
     std::optional<std::vector<std::string>> materials;  // the materials it renders (by name); unset: all
 };

@@ -113,9 +113,9 @@ private:
 
     void materialElement(xml_node root) {
         xml_node material = element(root, "surfacematerial", m_.name, "material");
-        const bool file = m_.templateName.ends_with(".glsl");
-        if (m_.templateName != "lit")
-            material.append_attribute("hexc_template") = (file ? relative(m_.templateName) : m_.templateName).c_str();
+        const TemplateRef& t = m_.templ;
+        if (t.file || t.name != TemplateRef{}.name)
+            material.append_attribute("hexc_template") = (t.file ? relative(t.name) : t.name).c_str();
         if (m_.hex.projection != Projection::Uv)
             material.append_attribute("hexc_projection") = std::string(toString(m_.hex.projection)).c_str();
         if (m_.hex.planeSharpness != HexTiling{}.planeSharpness)

@@ -54,11 +54,7 @@ public:
                 report(Code::InvalidName, "/name",
                        "expected 1-64 letters, digits, `_` or `-` (it names the output files), got \"" + m.name + "\"");
         }
-        m.templateName = "lit";
-        if (doc.contains("template")) {
-            m.templateName = templateRef(doc["template"], "/template");
-            if (m.templateName.ends_with(".glsl")) m.templateAsWritten = doc["template"].get<std::string>();
-        }
+        if (doc.contains("template")) m.templ = templateRef(doc["template"], "/template");
         if (doc.contains("$schema")) string(doc["$schema"], "/$schema");
         if (doc.contains("hextiling")) hexSettings(doc["hextiling"], "/hextiling", m.hex, true);
         if (doc.contains("pack")) m.pack = boolean(doc["pack"], "/pack", false);

@@ -77,10 +77,7 @@ private:
             for (const ScenePass& other : scene.passes)
                 if (other.name == pass.name) report(Code::DuplicateName, p + "/name", "duplicate pass name \"" + pass.name + "\"");
         }
-        if (v.contains("template")) {
-            pass.templateName = templateRef(v["template"], p + "/template");
-            if (pass.templateName.ends_with(".glsl")) pass.templateAsWritten = v["template"].get<std::string>();
-        }
+        if (v.contains("template")) pass.templ = templateRef(v["template"], p + "/template");
         pass.slots = names(v, p, "slots");
         pass.materials = names(v, p, "materials");
         std::vector<std::string> all;

@@ -150,27 +150,32 @@ void JsonRules::pair(const json& v, const std::string& pointer, const Range& ran
         out[i] = integer ? whole(v[i], pointerAppend(pointer, i), range, out[i]) : number(v[i], pointerAppend(pointer, i), range, out[i]);
 }
 
-std::string JsonRules::templateRef(const json& v, const std::string& pointer) {
+TemplateRef TemplateRef::parse(const std::string& written, const std::filesystem::path& dir) {
+    if (written.size() > 5 && written.ends_with(".glsl")) return {(dir / written).string(), true, written};
+    return builtin(written);
+}
+
+TemplateRef JsonRules::templateRef(const json& v, const std::string& pointer) {
     std::string name = string(v, pointer);
-    if (!v.is_string()) return "lit";
-    if (name.size() > 5 && name.ends_with(".glsl")) {
-        std::filesystem::path p = dir_ / name;
+    if (!v.is_string()) return {};
+    const TemplateRef ref = TemplateRef::parse(name, dir_);
+    if (ref.file) {
         // A status check, not an open: opening a FIFO would block; the plan reads the file (readFile refuses
         // what is not a regular file).
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(p, ec))
-            report(Code::TemplateUnreadable, pointer, "cannot read template file " + p.string() + ": " + whyNotRegular(p));
-        return p.string();
+        if (!std::filesystem::is_regular_file(ref.name, ec))
+            report(Code::TemplateUnreadable, pointer, "cannot read template file " + ref.name + ": " + whyNotRegular(ref.name));
+        return ref;
     }
     std::vector<std::string> names = builtinTemplateNames();
-    if (std::find(names.begin(), names.end(), name) != names.end()) return name;
+    if (std::find(names.begin(), names.end(), name) != names.end()) return ref;
     std::string hint;
     if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
     std::string list;
     for (const std::string& n : names) list += (list.empty() ? "" : ", ") + ticked(n);
     report(Code::UnknownTemplate, pointer,
            "unknown template \"" + name + "\"; expected a built-in template (" + list + ") or a path to a .glsl file", hint);
-    return "lit";
+    return {};
 }
 
 namespace {

@@ -76,7 +76,7 @@ protected:
     void pair(const json& v, const std::string& pointer, const Range& range, std::array<double, 2>& out, bool integer = false);
     std::optional<std::vector<std::string>> names(const json& obj, const std::string& pointer, const std::string& key);
     // A built-in template's name, or a .glsl file relative to the document (which must exist).
-    std::string templateRef(const json& v, const std::string& pointer);
+    TemplateRef templateRef(const json& v, const std::string& pointer);
 
     JsonLocator locator_;
     std::filesystem::path file_, dir_;

@@ -29,36 +29,34 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
     auto error = [&](Code code, std::string message) {
         plan.diagnostics.push_back(Diagnostic::make(code, {plan.templateName}, "", std::move(message)));
     };
-    std::string ref = options.templateFile.empty() ? material.templateName : options.templateFile.string();
-    if (ref.ends_with(".glsl")) {
-        plan.templateName = ref;
-        plan.templateFile = ref;
+    const TemplateRef ref = effectiveTemplate(material, options);
+    plan.templateName = ref.path();
+    if (ref.file) {
+        plan.templateFile = ref.name;
         std::string why;
-        std::optional<std::string> text = readFile(ref, &why);
+        std::optional<std::string> text = readFile(ref.name, &why);
         if (!text) {
             error(Code::TemplateUnreadable, "cannot read template file: " + why);
             return false;
         }
         plan.templateSource = std::move(*text);
     } else {
-        plan.templateName = "templates/" + ref + ".glsl";
-        const std::string* text = embeddedText(ref + ".glsl");
+        const std::string* text = embeddedText(ref.name + ".glsl");
         if (!text) {
-            error(Code::UnknownTemplate, "no built-in template `" + ref + "`");
+            error(Code::UnknownTemplate, "no built-in template `" + ref.name + "`");
             return false;
         }
         plan.templateSource = *text;
     }
     // The manifest names a material's own template as the material wrote it, so it does not depend on where hexc
     // was run from; a --template file as given.
-    const bool written = options.templateFile.empty() && !material.templateAsWritten.empty();
-    plan.templateShown = written ? material.templateAsWritten : plan.templateName;
+    plan.templateShown = ref.file ? ref.asWritten : plan.templateName;
     if (!plan.templateSource.starts_with("#version") || plan.templateSource.find('\n') == std::string::npos)
         error(Code::TemplateNoVersion, "a template must start with a `#version` line");
     if (countLines(plan.templateSource, "#include <hexc>") != 1)
         error(Code::TemplateNoInclude, "a template must contain the line `#include <hexc>` exactly once (where hexc injects its code)");
     std::vector<TemplateSlot> declared = readTemplateSlots(plan.templateSource, plan.templateName, plan.diagnostics);
-    for (Diagnostic& d : checkTemplateFit(declared, material, ref)) plan.diagnostics.push_back(std::move(d));
+    for (Diagnostic& d : checkTemplateFit(declared, material, ref.name)) plan.diagnostics.push_back(std::move(d));
     const MacroExpansion e = boundMacroExpansion(plan.templateSource);
     if (e.line) {
         plan.diagnostics.push_back(Diagnostic::make(Code::TemplateTooLarge, {plan.templateName, e.line, 0}, "",
@@ -309,6 +307,10 @@ void planParams(bool bake, ShaderPlan& plan) {
 }
 
 }  // namespace
+
+TemplateRef effectiveTemplate(const Material& material, const CompileOptions& options) {
+    return options.templateFile.empty() ? material.templ : TemplateRef::parse(options.templateFile.string());
+}
 
 Diagnostics checkTemplate(const Material& material, const CompileOptions& options) {
     ShaderPlan plan;

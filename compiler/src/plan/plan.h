@@ -96,7 +96,7 @@ struct PackPlan {
 
 struct ShaderPlan {
     std::string materialName;
-    std::string templateName;            // as shown in diagnostics: "templates/lit.glsl" or the user's path
+    std::string templateName;            // as shown in diagnostics: "templates/builtin/lit.glsl" or the user's path
     std::string templateShown;           // as the manifest lists it: the built-in's name as above, else as the material wrote it
     std::filesystem::path templateFile;  // the template file read; empty for a built-in template
     std::string templateSource;

@@ -13,10 +13,7 @@ std::vector<Variant> sceneVariants(const Scene& scene) {
                 continue;
             Variant v{material.name + "." + pass.name, material.name, pass.name, material};
             v.material.name = v.name;
-            if (!pass.templateName.empty()) {
-                v.material.templateName = pass.templateName;
-                v.material.templateAsWritten = pass.templateAsWritten;
-            }
+            if (pass.templ) v.material.templ = *pass.templ;
             // A pass that names its slots gets a shader without the others: no fetches, no parameters.
             if (pass.slots)
                 std::erase_if(v.material.slots, [&](const Slot& s) {
