@@ -3,6 +3,7 @@
 #include "vk/resources.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstring>
 #include <string>
@@ -219,8 +220,11 @@ VkRenderPass createRenderPass(VulkanContext& ctx, Cleanup& cleanup) {
     return pass;
 }
 
-VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipelineLayout layout, VkRenderPass pass, Cleanup& cleanup) {
-    VkPipelineShaderStageCreateInfo stages[2]{};
+namespace {
+
+// The vertex and fragment stages, each from a shader module of its own, at the request's entry points.
+std::array<VkPipelineShaderStageCreateInfo, 2> shaderStages(VulkanContext& ctx, const RenderRequest& req, Cleanup& cleanup) {
+    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
     stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
     stages[0].module = createShaderModule(ctx, req.vertexSpirv, cleanup);
@@ -229,6 +233,24 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].pName = req.fragmentEntry.c_str();
     stages[1].module = createShaderModule(ctx, req.fragmentSpirv, cleanup);
+    return stages;
+}
+
+// Filled triangles, neither face culled.
+VkPipelineRasterizationStateCreateInfo rasterizationState() {
+    VkPipelineRasterizationStateCreateInfo raster{};
+    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1;
+    return raster;
+}
+
+}  // namespace
+
+VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipelineLayout layout, VkRenderPass pass, Cleanup& cleanup) {
+    const std::array<VkPipelineShaderStageCreateInfo, 2> stages = shaderStages(ctx, req, cleanup);
 
     VkPipelineVertexInputStateCreateInfo vertexInput{};
     vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
@@ -245,12 +267,7 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     viewportState.scissorCount = 1;
     viewportState.pScissors = &scissor;
 
-    VkPipelineRasterizationStateCreateInfo raster{};
-    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1;
+    const VkPipelineRasterizationStateCreateInfo raster = rasterizationState();
 
     VkPipelineMultisampleStateCreateInfo multisample{};
     multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
@@ -275,7 +292,7 @@ VkPipeline createPipeline(VulkanContext& ctx, const RenderRequest& req, VkPipeli
     VkGraphicsPipelineCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
     info.stageCount = 2;
-    info.pStages = stages;
+    info.pStages = stages.data();
     info.pVertexInputState = &vertexInput;
     info.pInputAssemblyState = &assembly;
     info.pViewportState = &viewportState;
