@@ -176,37 +176,34 @@ Rgba fetchTile(const SampledTexture& texture, const Fetch& f, const HexTiling& h
     return texture.sampleLod(f.p[0], f.p[1], std::log2(rho / f.scale));
 }
 
-}  // namespace
+// A derivative as evaluateAt returns it: (dH/ds, dH/dt, 0, 1).
+Rgba asValue(Vec2 d) { return Rgba{d[0], d[1], 0, 1}; }
 
-SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel,
-                      const HeightSource* height, const SampledTexture* lut) {
-    const HexTiling& hex = slot.hex;
-    const bool normal = slot.kind == SlotKind::Normal;
-    const auto asValue = [](Vec2 d) { return Rgba{d[0], d[1], 0, 1}; };
+// The slot without hex-tiling: one sample at st.
+SlotResult untiled(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy) {
+    const Rgba x = texture.sample(st[0], st[1], dx[0], dx[1], dy[0], dy[1]);
+    const Rgba value = slot.kind == SlotKind::Normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
+    return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
+}
 
-    if (!hex.enabled) {
-        const Rgba x = texture.sample(st[0], st[1], dx[0], dx[1], dy[0], dy[1]);
-        const Rgba value = normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
-        return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
-    }
-    if (hex.mode == HashMode::MaterialX) return evaluateMaterialX(slot, texture, st, dx, dy);
-    const bool heightBlended = slot.heightBlend && hex.taps != 1;  // 1 tap cannot height-blend (the parser rejects it)
-    if (heightBlended && !height) throw std::invalid_argument("reference: slot " + slot.name + " height-blends but no heights were given");
-    const bool histogram = hex.blend == Blend::Histogram;  // the parser leaves it on colour and scalar slots only
-    if (histogram && !lut)
-        throw std::invalid_argument("reference: slot " + slot.name + " blends histograms but no look-up table was given");
+// Listing 7's colours for the hex mask; the other masks show their weights in their own order.
+std::array<double, 3> shown(const HexTiling& hex, const Taps& taps, const std::array<double, 3>& w) {
+    return hex.mask == Mask::Hex ? hexColours(w, taps.id) : w;
+}
 
-    Taps taps = maskTaps(st, hex);
-    std::array<bool, 3> fetched{true, true, true};
-    if (hex.adaptive()) {
-        fetched = adaptiveTaps(taps.weight, hex);
-        for (size_t i = 0; i < 3; ++i) taps.weight[i] *= fetched[i];  // the blend of the fetched taps alone
-    }
-    // Listing 7's colours for the hex mask; the other masks show their weights in their own order.
-    const auto shown = [&](const std::array<double, 3>& w) { return hex.mask == Mask::Hex ? hexColours(w, taps.id) : w; };
+// The three tiles, each sampled with its own transform: where it was fetched, its sample in the form of evaluateAt's
+// value (a normal slot's derivative rotated back to st) and delta(x_i), its metric's factor in Eq. 1. A tap not
+// fetched reads the texel (0, 0, 0, 0).
+struct Tiles {
     std::array<Fetch, 3> fetch;
     std::array<Rgba, 3> samples;
     std::array<double, 3> delta;
+};
+
+Tiles sampleTiles(const Slot& slot, const SampledTexture& texture, const Taps& taps, const std::array<bool, 3>& fetched, Vec2 dx, Vec2 dy) {
+    const HexTiling& hex = slot.hex;
+    const bool normal = slot.kind == SlotKind::Normal;
+    Tiles tiles;
     for (size_t i = 0; i < 3; ++i) {
         const TileTransform tile = tileTransform(taps.id[i], hex);
         // The paper's mode turns st as Listing 3 does; stable mode turns the texels (Rotation::aspect).
@@ -215,7 +212,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
         // Rotate into the tile's frame, scale (the texture is scaled by tile.scale: sample at the point / scale),
         // then shift by the tile's offset; the gradients rotate and scale with it (Listings 3 and 4).
         const Vec2 rotated = rot.toTile(taps.local[i]);
-        Fetch& f = fetch[i];
+        Fetch& f = tiles.fetch[i];
         f.p = {rotated[0] / tile.scale + taps.shift[i][0] + tile.offset[0], rotated[1] / tile.scale + taps.shift[i][1] + tile.offset[1]};
         f.dx = rot.toTile(dx);
         f.dy = rot.toTile(dy);
@@ -231,47 +228,80 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
             const Vec2 d{r[0] / tile.scale, r[1] / tile.scale};
             const double d2 = d[0] * d[0] + d[1] * d[1];
             metric = std::sqrt(d2 / (1 + d2));  // Eq. 3: sine of the normal's angle to +Z
-            samples[i] = asValue(d);
+            tiles.samples[i] = asValue(d);
         } else {
             metric = slot.kind == SlotKind::Color ? 0.299 * x[0] + 0.587 * x[1] + 0.114 * x[2]  // Eq. 4
                                                   : x[size_t(slot.channel)];
-            samples[i] = x;
+            tiles.samples[i] = x;
         }
         // hexc's guard: a negative metric (HDR texels below 0) counts as 0, so no weight turns negative.
-        delta[i] = (1 - hex.falloffcontrast) + hex.falloffcontrast * std::max(metric, 0.0);
+        tiles.delta[i] = (1 - hex.falloffcontrast) + hex.falloffcontrast * std::max(metric, 0.0);
     }
+    return tiles;
+}
 
-    if (hex.taps == 1) {
-        // One dithered tap: the pixel's hash u in [0, 1) picks the tile whose share of Eq. 1's weights (without
-        // the metric, which one sample cannot weigh) covers it; that tile's sample is the result. A two-tap mask
-        // has no third tile: u beyond W_0 + W_1 (by rounding) picks the second.
-        const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);
-        const double u = ditherValue(pixel);
-        const size_t pick = std::min<size_t>(u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2, size_t(hex.maskTaps() - 1));
-        std::array<double, 3> oneHot{};
-        oneHot[pick] = 1;
-        return {samples[pick], shown(oneHot), {samples[pick], samples[pick], samples[pick]}, oneHot};
-    }
-    if (histogram) {
-        const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);  // no metric: see hexcHistogram
-        SlotResult r = histogramBlend(*lut, samples, w, dx, dy, texture.width(0), texture.height(0), slot.kind == SlotKind::Scalar);
-        r.weights = shown(w);
-        return r;
-    }
-    std::array<double, 3> w = blendWeights(taps.weight, delta, hex);
+// One dithered tap: the pixel's hash u in [0, 1) picks the tile whose share of Eq. 1's weights (without
+// the metric, which one sample cannot weigh) covers it; that tile's sample is the result. A two-tap mask
+// has no third tile: u beyond W_0 + W_1 (by rounding) picks the second.
+SlotResult ditheredTap(const HexTiling& hex, const Taps& taps, const std::array<Rgba, 3>& samples, std::array<uint32_t, 2> pixel) {
+    const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);
+    const double u = ditherValue(pixel);
+    const size_t pick = std::min<size_t>(u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2, size_t(hex.maskTaps() - 1));
+    std::array<double, 3> oneHot{};
+    oneHot[pick] = 1;
+    return {samples[pick], shown(hex, taps, oneHot), {samples[pick], samples[pick], samples[pick]}, oneHot};
+}
+
+// The tiles' samples blended with Eq. 1's weights (and the gain), then, when height-blended, by their heights.
+SlotResult blendTiles(const Slot& slot, const Taps& taps, const Tiles& tiles, Vec2 dx, Vec2 dy, bool heightBlended,
+                      const HeightSource* height) {
+    const HexTiling& hex = slot.hex;
+    std::array<double, 3> w = blendWeights(taps.weight, tiles.delta, hex);
     double heightSum = 1;
     if (heightBlended) {
         // The heights at each tile's own sample point, with its gradients: the tile's transform applies to them too.
         std::array<double, 3> h;
         for (size_t i = 0; i < 3; ++i) {
-            h[i] = fetchTile(*height->texture, fetch[i], hex, dx, dy)[size_t(height->channel)];
+            h[i] = fetchTile(*height->texture, tiles.fetch[i], hex, dx, dy)[size_t(height->channel)];
         }
         w = heightBlend(w, h, height->width, heightSum);
     }
+    const std::array<Rgba, 3>& samples = tiles.samples;
     Rgba value{};
     for (size_t c = 0; c < 4; ++c) value[c] = w[0] * samples[0][c] + w[1] * samples[1][c] + w[2] * samples[2][c];
-    if (normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
-    return {value, shown(w), samples, w, heightSum};
+    if (slot.kind == SlotKind::Normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
+    return {value, shown(hex, taps, w), samples, w, heightSum};
+}
+
+}  // namespace
+
+SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel,
+                      const HeightSource* height, const SampledTexture* lut) {
+    const HexTiling& hex = slot.hex;
+    if (!hex.enabled) return untiled(slot, texture, st, dx, dy);
+    if (hex.mode == HashMode::MaterialX) return evaluateMaterialX(slot, texture, st, dx, dy);
+    const bool heightBlended = slot.heightBlend && hex.taps != 1;  // 1 tap cannot height-blend (the parser rejects it)
+    if (heightBlended && !height) throw std::invalid_argument("reference: slot " + slot.name + " height-blends but no heights were given");
+    const bool histogram = hex.blend == Blend::Histogram;  // the parser leaves it on colour and scalar slots only
+    if (histogram && !lut)
+        throw std::invalid_argument("reference: slot " + slot.name + " blends histograms but no look-up table was given");
+
+    Taps taps = maskTaps(st, hex);
+    std::array<bool, 3> fetched{true, true, true};
+    if (hex.adaptive()) {
+        fetched = adaptiveTaps(taps.weight, hex);
+        for (size_t i = 0; i < 3; ++i) taps.weight[i] *= fetched[i];  // the blend of the fetched taps alone
+    }
+    const Tiles tiles = sampleTiles(slot, texture, taps, fetched, dx, dy);
+
+    if (hex.taps == 1) return ditheredTap(hex, taps, tiles.samples, pixel);
+    if (histogram) {
+        const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);  // no metric: see hexcHistogram
+        SlotResult r = histogramBlend(*lut, tiles.samples, w, dx, dy, texture.width(0), texture.height(0), slot.kind == SlotKind::Scalar);
+        r.weights = shown(hex, taps, w);
+        return r;
+    }
+    return blendTiles(slot, taps, tiles, dx, dy, heightBlended, height);
 }
 
 SlotTextures::SlotTextures(const Slot& slot) {
