@@ -129,14 +129,23 @@ std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args
     return std::nullopt;
 }
 
-std::optional<int> parseArguments(const std::vector<std::string>& args, Arguments& a) {
-    CLI::App app(kDescription, "hexc");
+namespace {
+
+// What some of the compile mode's options are bound to, checked and applied to the Arguments after parsing
+// (resolveArguments).
+struct Unresolved {
     std::vector<std::string> materials, targets;
-    std::string glsl, msl, lines;
-    // Required by hand below, after CLI11 has reported unknown options (it checks requirements first).
-    app.add_option("materials", materials, "material or scene files")->type_name("FILE.json");
+    std::string glsl, msl, lines;  // names CLI11 has checked (applyNames)
+    bool manifestPaths = false;
+    LayoutOptions layout;
+};
+
+// The inputs, the output folder, the targets, the template and the entry point.
+void addInputOptions(CLI::App& app, Arguments& a, Unresolved& u) {
+    // Required by hand (resolveArguments), after CLI11 has reported unknown options (it checks requirements first).
+    app.add_option("materials", u.materials, "material or scene files")->type_name("FILE.json");
     app.add_option("-o,--out", a.outDir, "output folder (created if missing)")->type_name("DIR");
-    app.add_option("--target,--targets", targets, "spirv, hlsl, glsl, msl (or metal); repeatable or comma-separated\n(default: all four)")
+    app.add_option("--target,--targets", u.targets, "spirv, hlsl, glsl, msl (or metal); repeatable or comma-separated\n(default: all four)")
         ->delimiter(',')
         ->allow_extra_args(false)
         ->transform(CLI::Transformer(std::map<std::string, std::string>{{"metal", "msl"}}).description(""))
@@ -148,6 +157,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         ->type_name("NAME")
         ->check(CLI::Validator([](std::string& n) { return isEntryPointName(n) ? "" : "expected an identifier (not reserved), got " + n; },
                                ""));
+}
+
+// The targets' versions: HLSL shader model, GLSL and MSL versions.
+void addVersionOptions(CLI::App& app, Arguments& a, Unresolved& u) {
     // dxc and Slang write shader models 6_0 or 6.0; glslc-style tools 60: all name the same model.
     app.add_option("--hlsl-sm", a.options.hlslShaderModel, "HLSL shader model: 50, 51, 60 ... 66, also as 6.0 or 6_0 (default 50)")
         ->transform(CLI::Validator(
@@ -161,7 +174,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
             },
             ""))
         ->type_name("MODEL");
-    app.add_option("--glsl-version", glsl, "GLSL version: 460, 450 (default), 330, 310es, 300es (WebGL 2)")
+    app.add_option("--glsl-version", u.glsl, "GLSL version: 460, 450 (default), 330, 310es, 300es (WebGL 2)")
         ->transform(CLI::Validator(
             [](std::string& v) {  // "300 es", "300_es" as other tools write it
                 if (v.size() == 6 && (v[3] == ' ' || v[3] == '_') && v.ends_with("es")) v.erase(3, 1);
@@ -169,22 +182,24 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
             },
             ""))
         ->check(CLI::IsMember({"460", "450", "330", "310es", "300es"}));
-    app.add_option("--msl-version", msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
-    bool manifestPaths = false;
-    LayoutOptions layout;
-    layout.add(app);
+    app.add_option("--msl-version", u.msl, "MSL version (default 2.0)")->check(CLI::IsMember({"2.0", "2.1", "2.2", "2.3", "2.4"}));
+}
+
+// What the outputs hold: the vertex stage, debug code and its #line directives, the generated GLSL, the manifest's
+// paths, baked settings, specialisation and the shared lattice.
+void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
     app.add_flag("--vertex", a.options.vertex,
                  "also write the pass-through vertex stage <name>.vert.* that feeds the\nfragment shader's inputs");
     CLI::Option* debug = app.add_flag("--debug", a.options.debug,
                                       "readable outputs (like glslc/dxc -O0): no optimisation, hexc's\n"
                                       "functions kept by name, #line references to the template and library");
-    app.add_option("--line-directives", lines,
+    app.add_option("--line-directives", u.lines,
                    "with --debug: a #line at the start of each function (functions, the\n"
                    "default), before each statement (statements) or nowhere (none)")
         ->check(CLI::IsMember({"none", "functions", "statements"}))
         ->needs(debug);
     app.add_flag("--emit-generated", a.options.emitGenerated, "also write the generated Vulkan GLSL fed to glslang: <name>.generated.frag");
-    app.add_flag("--manifest-paths", manifestPaths,
+    app.add_flag("--manifest-paths", u.manifestPaths,
                  "the manifest also gives where the material, its textures, template and\nlayout file are, relative to the output folder");
     app.add_flag("--bake", a.options.bake,
                  "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
@@ -193,6 +208,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
         "emit every feature even when a setting turns it off; the uniforms decide");
     app.add_flag_callback(
         "--no-shared-lattice", [&] { a.options.shareLattice = false; }, "evaluate the lattice per slot even where slots could share it");
+}
+
+// How a build runs and what it prints: the depfile, the outputs' list, scene variants, messages, stamps and jobs.
+void addBuildOptions(CLI::App& app, Arguments& a) {
     app.add_option("--depfile", a.depfile, "write a make-style dependency file for Make and Ninja")->type_name("FILE");
     app.add_flag("--list-outputs", a.listOutputs,
                  "print, as JSON, the files a build would write (\"outputs\") and those that\n"
@@ -208,6 +227,10 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     app.add_option("-j,--jobs", a.jobs, "compile N materials at once (default: one per core; -j 1 also emits targets on one thread)")
         ->check(CLI::Range(1u, 256u))
         ->type_name("N");
+}
+
+// The shader cache's folder, or none.
+void addCacheOptions(CLI::App& app, Arguments& a) {
     a.cacheDir = defaultCacheDir();
     app.add_option("--cache-dir", a.cacheDir,
                    "keep compiled shader code here, shared by runs and processes (default:\n$XDG_CACHE_HOME/hexc or ~/.cache/hexc; " +
@@ -216,24 +239,42 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     app.add_flag_callback(
         "--no-cache", [&] { a.cacheDir.clear(); },
         "no cache folder: compile all code anew (identical code in one batch is\nstill compiled once)");
-    app.set_version_flag("--version",
-                         [] { return std::string("hexc ") + version() + " (build " + buildId() + ")\n" + toolchainVersions(); });
-    if (std::optional<int> done = parseWith(app, args)) return done;
-    if (materials.empty() || a.outDir.empty()) {
-        std::cerr << "hexc: " << (materials.empty() ? "no material or scene given" : "no output folder given: use -o DIR")
+}
+
+// The checks CLI11 cannot make, then the names and the layout applied to `a`.
+std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
+    if (u.materials.empty() || a.outDir.empty()) {
+        std::cerr << "hexc: " << (u.materials.empty() ? "no material or scene given" : "no output folder given: use -o DIR")
                   << " (see hexc --help)\n";
         return kUsage;
     }
-    a.materials.assign(materials.begin(), materials.end());
+    a.materials.assign(u.materials.begin(), u.materials.end());
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
-    if (manifestPaths) a.options.manifestPathsFrom = a.outDir;
-    applyNames(targets, glsl, msl, lines, a.options);
-    if (!layout.resolve(a.options.layout)) return kInvalidInput;
+    if (u.manifestPaths) a.options.manifestPathsFrom = a.outDir;
+    applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
+    if (!u.layout.resolve(a.options.layout)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {
         std::cerr << "hexc: HLSL register space " << space << " needs --hlsl-sm 51 or later (shader model 5.0 has no spaces)\n";
         return kUsage;
     }
     return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<int> parseArguments(const std::vector<std::string>& args, Arguments& a) {
+    CLI::App app(kDescription, "hexc");
+    Unresolved u;
+    addInputOptions(app, a, u);
+    addVersionOptions(app, a, u);
+    u.layout.add(app);
+    addShaderOptions(app, a, u);
+    addBuildOptions(app, a);
+    addCacheOptions(app, a);
+    app.set_version_flag("--version",
+                         [] { return std::string("hexc ") + version() + " (build " + buildId() + ")\n" + toolchainVersions(); });
+    if (std::optional<int> done = parseWith(app, args)) return done;
+    return resolveArguments(u, a);
 }
 
 }  // namespace hexc::cli

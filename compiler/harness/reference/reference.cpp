@@ -1,54 +1,17 @@
 // The CPU oracle, from the paper's equations; see reference.h for what it models and where lavapipe may differ.
+// The lattice and the masks are in lattice.cpp, texture sampling in texture.cpp.
 #include "reference/reference.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include "hexc/histogram.h"
+#include "reference/internal.h"
 
 namespace hexc::reference {
 namespace {
-
-using std::numbers::pi;
-using std::numbers::sqrt3;
-
-// The exact sRGB EOTF, as Vulkan applies it to _SRGB formats before filtering.
-double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-
-// a + (b - a) * t rather than a * (1 - t) + b * t: returns a exactly when a == b, so constant textures and
-// constant mip levels filter to exactly their value.
-double lerp(double a, double b, double t) { return a + (b - a) * t; }
-
-Rgba lerp(const Rgba& a, const Rgba& b, double t) {
-    return {lerp(a[0], b[0], t), lerp(a[1], b[1], t), lerp(a[2], b[2], t), lerp(a[3], b[3], t)};
-}
-
-// REPEAT addressing of an integer texel coordinate (Vulkan's imod: the result is never negative).
-int wrap(double i, int size) {
-    const long long m = (long long)i % size;
-    return int(m < 0 ? m + size : m);
-}
-
-int floorMod3(int x) {
-    const int m = x % 3;  // C++ truncates toward zero, like HLSL's %
-    return m < 0 ? m + 3 : m;
-}
-
-// Float32 product rounded on its own: the volatile store keeps the compiler from fusing it with the following
-// addition into an FMA, which a GPU evaluating Listing 2 as written does not do.
-float product(float a, float b) {
-    volatile float p = a * b;
-    return p;
-}
-
-float fract(float x) { return x - std::floor(x); }
-
-// Listing 5: the tile centre in st, ((x + y/2) / (2 sqrt(3)), (y sqrt(3)/2) / (2 sqrt(3)) = y/4). Listing 1's skew
-// maps st to lattice coordinates (2 sqrt(3) s - 2 t, 4 t); this is its inverse at the integer point id.
-Vec2 tileCentre(TileId id) { return {(id[0] + 0.5 * id[1]) / (2 * sqrt3), id[1] / 4.0}; }
 
 // Listing 6: the tile's rotation. R = [[c, -s], [s, c]] rotates by +angle.
 struct Rotation {
@@ -70,50 +33,6 @@ struct Rotation {
     Vec2 fromTile(Vec2 d) const { return rotate(d); }
 };
 
-// `stable` mode, from its specification in docs/material-format.md (#mode): the lattice scale is 97/28
-// instead of 2 sqrt(3), offsets and angles come from pcg3d of the tile id, and the tile centre is added back modulo
-// the texture's period. Evaluated here in double without the exact reduction the shader does: the
-// reduction is an implementation detail this oracle checks, not something it repeats.
-constexpr double kStableScale = 97.0 / 28.0;
-
-Vec2 stableCentre(TileId id) { return {(id[0] + 0.5 * id[1]) / kStableScale, id[1] / 4.0}; }
-
-// The same centre modulo the texture's period 1, which is what stable mode adds back to a tile's sample point: c.x is
-// (28 id.x + 14 id.y) / 97 and c.y is id.y / 4, so their fractions are integer remainders, exact for any id.
-Vec2 stableCentreInPeriod(TileId id) {
-    const auto floorMod = [](int64_t a, int64_t m) { return double(((a % m) + m) % m); };
-    return {floorMod(28 * id[0] + 14 * id[1], 97) / 97, floorMod(id[1], 4) / 4};
-}
-
-// pcg3d (Jarzynski and Olano 2020), 32-bit unsigned arithmetic with wrap-around.
-std::array<uint32_t, 3> pcg3d(std::array<uint32_t, 3> v) {
-    for (uint32_t& x : v) x = x * 1664525u + 1013904223u;
-    auto mix = [&v] {
-        v[0] += v[1] * v[2];
-        v[1] += v[2] * v[0];
-        v[2] += v[0] * v[1];
-    };
-    mix();
-    for (uint32_t& x : v) x ^= x >> 16u;
-    mix();
-    return v;
-}
-
-// 2^-24: the step of the random numbers below, and the masks' floor under a weight or a maximum.
-constexpr double kTiny = 1.0 / 16777216.0;
-
-// A random number in [0, 1): the top 24 bits of a pcg3d word.
-double random24(uint32_t word) { return (word >> 8) * kTiny; }
-
-double paperAngle(TileId id, double strength) {
-    // In double: an int product could overflow for far-away tiles, and the sum is exact here for |id| < 2^26.
-    const double x = id[0], y = id[1];
-    double angle = std::abs(x * y) + std::abs(x + y) + pi;  // positive, so fmod needs no correction below 0
-    angle = std::fmod(angle, 2 * pi);
-    if (angle > pi) angle -= 2 * pi;
-    return angle * strength;
-}
-
 // Listing 9: a tangent-space normal texel (in [0, 1], 0.5 = zero) to the height derivative dH/dst. The third
 // component is kept away from 0 so that the derivative stays within [-128, 128]. flipY: green points down.
 Vec2 normalToDerivative(const Rgba& texel, bool flipY) {
@@ -121,96 +40,6 @@ Vec2 normalToDerivative(const Rgba& texel, bool flipY) {
     // 1e-20: hexc's guard for a zero vector, which Listing 9 would turn into 0/0.
     const double zm = std::max({std::abs(z), std::max(std::abs(x), std::abs(y)) / 128, 1e-20});
     return {-x / zm, -(flipY ? -y : y) / zm};
-}
-
-// What a mask decides at st (docs/material-format.md#mask): three tiles, tile i sampled at
-// toTile(local[i]) / scale + shift[i] + offset with its own transform, and their weights before Eq. 1. The
-// checker repeats its second tile, with weight 0, as the third.
-struct Taps {
-    std::array<TileId, 3> id;
-    std::array<Vec2, 3> local;     // st relative to the point c the tile turns and scales about
-    std::array<Vec2, 3> shift;     // c, added back after the transform: the paper's as is (Listing 3), else modulo 1
-    std::array<double, 3> weight;  // the mask's weights
-};
-
-Taps hexTaps(Vec2 st, HashMode mode) {
-    const Triangle tri = lattice(st, mode);
-    const bool paper = mode == HashMode::Paper;
-    Taps taps{tri.id, {}, {}, tri.weight};
-    for (size_t i = 0; i < 3; ++i) {
-        const Vec2 c = paper ? tileCentre(tri.id[i]) : stableCentre(tri.id[i]);
-        taps.local[i] = {st[0] - c[0], st[1] - c[1]};
-        taps.shift[i] = paper ? c : stableCentreInPeriod(tri.id[i]);
-    }
-    return taps;
-}
-
-// The checker and noise masks' cells: st = (kx, ky) + r and q = r * scale, so that the cell holding st + shift / scale
-// is scale * (kx, ky) + floor(q + shift), with the same integers however far st is from the origin.
-struct MaskFrame {
-    std::array<int64_t, 2> base;  // scale * (kx, ky)
-    Vec2 q;
-};
-
-MaskFrame maskFrame(Vec2 st, int scale) {
-    const double kx = std::floor(st[0]), ky = std::floor(st[1]);
-    return {{scale * int64_t(kx), scale * int64_t(ky)}, {(st[0] - kx) * scale, (st[1] - ky) * scale}};
-}
-
-// Two square grids, B shifted by half a cell; each cell is a tile with its own transform, sampled about its centre.
-Taps checkerTaps(Vec2 st, int scale) {
-    const MaskFrame frame = maskFrame(st, scale);
-    Taps taps{};
-    for (int64_t grid = 0; grid < 2; ++grid) {
-        const double shift = 0.5 * double(grid);
-        const Vec2 corner{std::floor(frame.q[0] + shift), std::floor(frame.q[1] + shift)};
-        const Vec2 f{frame.q[0] + shift - corner[0], frame.q[1] + shift - corner[1]};
-        // 2A and 2B + (1, 1): the grids never share an id. TileId is wider than the shader's 32 bits; the hash
-        // reads its low 32 bits, which is the shader's wrap-around.
-        taps.id[size_t(grid)] = {2 * (frame.base[0] + int64_t(corner[0])) + grid, 2 * (frame.base[1] + int64_t(corner[1])) + grid};
-        taps.local[size_t(grid)] = {(f[0] - 0.5) / scale, (f[1] - 0.5) / scale};
-        // The cell's centre, corner + 1/2 - shift in q, modulo 1 in st (the frame's base is whole st units).
-        const Vec2 centre{(corner[0] + 0.5 - shift) / scale, (corner[1] + 0.5 - shift) / scale};
-        taps.shift[size_t(grid)] = {centre[0] - std::floor(centre[0]), centre[1] - std::floor(centre[1])};
-        taps.weight[size_t(grid)] = std::min({f[0], 1 - f[0], f[1], 1 - f[1]}) + kTiny;
-    }
-    taps.id[2] = taps.id[1];
-    taps.local[2] = taps.local[1];
-    taps.shift[2] = taps.shift[1];
-    // Over the larger weight: the same after Eq. 1 normalises, but w^gamma cannot underflow where both weights are
-    // near 2^-24 (the points where borders of A and B cross) for any exponent up to 64.
-    const double top = std::max(taps.weight[0], taps.weight[1]);
-    for (size_t i = 0; i < 2; ++i) taps.weight[i] /= top;
-    return taps;
-}
-
-// Three copies of the texture, each with one transform drawn like a tile's, about the st origin.
-Taps noiseTaps(Vec2 st, const HexTiling& hex) {
-    Taps taps{{TileId{0, 0}, TileId{1, 0}, TileId{2, 0}}, {st, st, st}, {}, {}};
-    if (hex.mask == Mask::Noise) {
-        // Three bands of one noise: pure copy 0 below 1/4, 1 at 1/2, 2 above 3/4.
-        const double p = std::clamp(4 * valueNoise(st, hex.maskScale, 3) - 1, 0.0, 2.0);
-        for (size_t i = 0; i < 3; ++i) taps.weight[i] = std::max(0.0, 1 - std::abs(p - double(i)));
-    } else {
-        std::array<double, 3> n;
-        for (size_t k = 0; k < 3; ++k) n[k] = valueNoise(st, hex.maskScale, uint32_t(4 + k));
-        const double top = std::max({n[0], n[1], n[2], kTiny});
-        for (size_t k = 0; k < 3; ++k) taps.weight[k] = n[k] / top;
-    }
-    return taps;
-}
-
-Taps maskTaps(Vec2 st, const HexTiling& hex) {
-    switch (hex.mask) {
-        case Mask::Hex:
-            return hexTaps(st, hex.mode);
-        case Mask::Checker:
-            return checkerTaps(st, hex.maskScale);
-        case Mask::Noise:
-        case Mask::Noise3:
-            return noiseTaps(st, hex);
-    }
-    throw std::invalid_argument("reference: unknown mask");
 }
 
 // docs/material-format.md#height-blending: each weight times how far its tile's weighted height comes within
@@ -227,124 +56,6 @@ std::array<double, 3> heightBlend(const std::array<double, 3>& w, const std::arr
 }
 
 }  // namespace
-
-// Listing 7: each hex tile shows one of three colours, (id.x - id.y) mod 3, with a floor-mod (the listing adds 3
-// to the negative results of HLSL's truncating %). A step to a neighbour, (+-1, 0), (0, +-1) or +-(1, -1),
-// changes it by +-1 or +-2, never by 3, so neighbouring tiles (and the three tiles of a triangle) always differ.
-// This restates the listing's swizzle: its vh/vl choice (on vertex1.x < vertex3.x) gives vertex2 and vertex3
-// exactly these indices.
-std::array<double, 3> hexColours(const std::array<double, 3>& w, const std::array<TileId, 3>& id) {
-    std::array<double, 3> out{};
-    // The difference of the 32-bit ids the shader keeps (exact while |id| < 2^31).
-    for (int i = 0; i < 3; ++i) out[size_t(floorMod3(int32_t(uint32_t(id[i][0]) - uint32_t(id[i][1]))))] = w[i];
-    return out;
-}
-
-SampledTexture::SampledTexture(const Texture& texture) {
-    const size_t count = size_t(std::max(texture.width, 0)) * size_t(std::max(texture.height, 0));
-    if (count == 0 || (texture.isFloat() ? texture.rgba32f.size() : texture.rgba8.size()) != count * 4)
-        throw std::invalid_argument("reference: texture of " + std::to_string(texture.width) + "x" + std::to_string(texture.height) +
-                                    " texels has no or the wrong amount of data");
-
-    Level base{texture.width, texture.height, std::vector<Rgba>(count)};
-    std::array<double, 256> fromByte;  // 8-bit value -> linear colour channel
-    for (int i = 0; i < 256; ++i) fromByte[size_t(i)] = texture.srgb ? srgbToLinear(i / 255.0) : i / 255.0;
-    for (size_t i = 0; i < count; ++i) {
-        Rgba& t = base.texels[i];
-        if (texture.isFloat()) {
-            for (size_t c = 0; c < 4; ++c) t[c] = texture.rgba32f[i * 4 + c];
-        } else {
-            for (size_t c = 0; c < 3; ++c) t[c] = fromByte[texture.rgba8[i * 4 + c]];
-            t[3] = texture.rgba8[i * 4 + 3] / 255.0;  // alpha is linear in _SRGB formats
-        }
-    }
-    levels_.push_back(std::move(base));
-
-    while (levels_.back().width > 1 || levels_.back().height > 1) levels_.push_back(halve(levels_.back()));
-}
-
-// The next mip level as the runner builds it, by vkCmdBlitImage with VK_FILTER_LINEAR from the level above: the size
-// halves (rounding down, at least 1), and each texel is the bilinear sample of the level above at its centre mapped
-// into it, (i + 0.5) * size / next size, clamped to the edge. At an even size that is the 2x2 average; at an odd one
-// the texels are resampled (127 -> 63 texels reads at steps of 2.016).
-SampledTexture::Level SampledTexture::halve(const Level& prev) {
-    Level next{std::max(1, prev.width / 2), std::max(1, prev.height / 2), {}};
-    struct Tap {
-        int i0, i1;
-        double f;  // weight of i1
-    };
-    const auto taps = [](int dst, int src, int i) {
-        const double x = (i + 0.5) * src / dst - 0.5;
-        const int x0 = int(std::floor(x));
-        return Tap{std::clamp(x0, 0, src - 1), std::clamp(x0 + 1, 0, src - 1), x - x0};
-    };
-    next.texels.resize(size_t(next.width) * size_t(next.height));
-    const auto at = [&](int px, int py) { return prev.texels[size_t(py) * prev.width + px]; };
-    for (int y = 0; y < next.height; ++y) {
-        const Tap ty = taps(next.height, prev.height, y);
-        for (int x = 0; x < next.width; ++x) {
-            const Tap tx = taps(next.width, prev.width, x);
-            const Rgba top = lerp(at(tx.i0, ty.i0), at(tx.i1, ty.i0), tx.f), bottom = lerp(at(tx.i0, ty.i1), at(tx.i1, ty.i1), tx.f);
-            next.texels[size_t(y) * next.width + x] = lerp(top, bottom, ty.f);
-        }
-    }
-    return next;
-}
-
-const Rgba& SampledTexture::texel(int level, int x, int y) const {
-    const Level& l = levels_[size_t(level)];
-    return l.texels[size_t(y) * l.width + x];
-}
-
-Rgba SampledTexture::bilinear(const Level& level, double s, double t) {
-    // Texel centres sit at (i + 0.5) / size.
-    const double x = s * level.width - 0.5, y = t * level.height - 0.5;
-    const double xf = std::floor(x), yf = std::floor(y);
-    const int x0 = wrap(xf, level.width), x1 = wrap(xf + 1, level.width);
-    const int y0 = wrap(yf, level.height), y1 = wrap(yf + 1, level.height);
-    const auto at = [&](int px, int py) { return level.texels[size_t(py) * level.width + px]; };
-    return lerp(lerp(at(x0, y0), at(x1, y0), x - xf), lerp(at(x0, y1), at(x1, y1), x - xf), y - yf);
-}
-
-Rgba SampledTexture::sample(double s, double t, double dsdx, double dtdx, double dsdy, double dtdy) const {
-    const double w = levels_[0].width, h = levels_[0].height;
-    const double rho = std::max(std::hypot(dsdx * w, dtdx * h), std::hypot(dsdy * w, dtdy * h));
-    return sampleLod(s, t, std::log2(rho));
-}
-
-Rgba SampledTexture::sampleLod(double s, double t, double lambda) const {
-    lambda = std::min(lambda, double(levels() - 1));
-    if (!(lambda > 0)) return bilinear(levels_[0], s, t);  // magnification (also rho = 0, where log2 is -inf)
-    const int lo = int(lambda), hi = std::min(lo + 1, levels() - 1);
-    const Rgba a = bilinear(levels_[size_t(lo)], s, t);
-    if (hi == lo) return a;  // lambda clamped to the last level
-    return lerp(a, bilinear(levels_[size_t(hi)], s, t), lambda - lo);
-}
-
-Triangle triangleGrid(Vec2 st) {
-    // Scale so that neighbouring tile centres are 1 / (2 sqrt(3)) apart in st, then skew the triangle lattice
-    // onto the integer grid: each unit square of the skewed space holds two lattice triangles.
-    const double sx = st[0] * 2 * sqrt3, sy = st[1] * 2 * sqrt3;
-    return triangleInSkewed(sx - sy / sqrt3, sy * (2 / sqrt3));
-}
-
-Triangle triangleInSkewed(double kx, double ky) {
-    const double bx = std::floor(kx), by = std::floor(ky);
-    const double fx = kx - bx, fy = ky - by;
-    const int64_t baseX = int64_t(bx), baseY = int64_t(by);
-    const double z = 1 - fx - fy;
-    if (z > 0)  // lower triangle: corners base, base + (0, 1), base + (1, 0)
-        return {{TileId{baseX, baseY}, TileId{baseX, baseY + 1}, TileId{baseX + 1, baseY}}, {z, fy, fx}};
-    // upper triangle: corners base + (1, 1), base + (1, 0), base + (0, 1)
-    return {{TileId{baseX + 1, baseY + 1}, TileId{baseX + 1, baseY}, TileId{baseX, baseY + 1}}, {-z, 1 - fy, 1 - fx}};
-}
-
-Vec2 tileOffset(TileId id) {
-    const float x = float(id[0]), y = float(id[1]);
-    const float r0 = product(127.1f, x) + product(311.7f, y);
-    const float r1 = product(269.5f, x) + product(183.3f, y);
-    return {fract(product(std::sin(r0), 43758.5453f)), fract(product(std::sin(r1), 43758.5453f))};
-}
 
 double gain(double x, double r) {
     const double k = std::log(1 - r) / std::log(0.5);
@@ -465,37 +176,34 @@ Rgba fetchTile(const SampledTexture& texture, const Fetch& f, const HexTiling& h
     return texture.sampleLod(f.p[0], f.p[1], std::log2(rho / f.scale));
 }
 
-}  // namespace
+// A derivative as evaluateAt returns it: (dH/ds, dH/dt, 0, 1).
+Rgba asValue(Vec2 d) { return Rgba{d[0], d[1], 0, 1}; }
 
-SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel,
-                      const HeightSource* height, const SampledTexture* lut) {
-    const HexTiling& hex = slot.hex;
-    const bool normal = slot.kind == SlotKind::Normal;
-    const auto asValue = [](Vec2 d) { return Rgba{d[0], d[1], 0, 1}; };
+// The slot without hex-tiling: one sample at st.
+SlotResult untiled(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy) {
+    const Rgba x = texture.sample(st[0], st[1], dx[0], dx[1], dy[0], dy[1]);
+    const Rgba value = slot.kind == SlotKind::Normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
+    return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
+}
 
-    if (!hex.enabled) {
-        const Rgba x = texture.sample(st[0], st[1], dx[0], dx[1], dy[0], dy[1]);
-        const Rgba value = normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
-        return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
-    }
-    if (hex.mode == HashMode::MaterialX) return evaluateMaterialX(slot, texture, st, dx, dy);
-    const bool heightBlended = slot.heightBlend && hex.taps != 1;  // 1 tap cannot height-blend (the parser rejects it)
-    if (heightBlended && !height) throw std::invalid_argument("reference: slot " + slot.name + " height-blends but no heights were given");
-    const bool histogram = hex.blend == Blend::Histogram;  // the parser leaves it on colour and scalar slots only
-    if (histogram && !lut)
-        throw std::invalid_argument("reference: slot " + slot.name + " blends histograms but no look-up table was given");
+// Listing 7's colours for the hex mask; the other masks show their weights in their own order.
+std::array<double, 3> shown(const HexTiling& hex, const Taps& taps, const std::array<double, 3>& w) {
+    return hex.mask == Mask::Hex ? hexColours(w, taps.id) : w;
+}
 
-    Taps taps = maskTaps(st, hex);
-    std::array<bool, 3> fetched{true, true, true};
-    if (hex.adaptive()) {
-        fetched = adaptiveTaps(taps.weight, hex);
-        for (size_t i = 0; i < 3; ++i) taps.weight[i] *= fetched[i];  // the blend of the fetched taps alone
-    }
-    // Listing 7's colours for the hex mask; the other masks show their weights in their own order.
-    const auto shown = [&](const std::array<double, 3>& w) { return hex.mask == Mask::Hex ? hexColours(w, taps.id) : w; };
+// The three tiles, each sampled with its own transform: where it was fetched, its sample in the form of evaluateAt's
+// value (a normal slot's derivative rotated back to st) and delta(x_i), its metric's factor in Eq. 1. A tap not
+// fetched reads the texel (0, 0, 0, 0).
+struct Tiles {
     std::array<Fetch, 3> fetch;
     std::array<Rgba, 3> samples;
     std::array<double, 3> delta;
+};
+
+Tiles sampleTiles(const Slot& slot, const SampledTexture& texture, const Taps& taps, const std::array<bool, 3>& fetched, Vec2 dx, Vec2 dy) {
+    const HexTiling& hex = slot.hex;
+    const bool normal = slot.kind == SlotKind::Normal;
+    Tiles tiles;
     for (size_t i = 0; i < 3; ++i) {
         const TileTransform tile = tileTransform(taps.id[i], hex);
         // The paper's mode turns st as Listing 3 does; stable mode turns the texels (Rotation::aspect).
@@ -504,7 +212,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
         // Rotate into the tile's frame, scale (the texture is scaled by tile.scale: sample at the point / scale),
         // then shift by the tile's offset; the gradients rotate and scale with it (Listings 3 and 4).
         const Vec2 rotated = rot.toTile(taps.local[i]);
-        Fetch& f = fetch[i];
+        Fetch& f = tiles.fetch[i];
         f.p = {rotated[0] / tile.scale + taps.shift[i][0] + tile.offset[0], rotated[1] / tile.scale + taps.shift[i][1] + tile.offset[1]};
         f.dx = rot.toTile(dx);
         f.dy = rot.toTile(dy);
@@ -520,47 +228,80 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
             const Vec2 d{r[0] / tile.scale, r[1] / tile.scale};
             const double d2 = d[0] * d[0] + d[1] * d[1];
             metric = std::sqrt(d2 / (1 + d2));  // Eq. 3: sine of the normal's angle to +Z
-            samples[i] = asValue(d);
+            tiles.samples[i] = asValue(d);
         } else {
             metric = slot.kind == SlotKind::Color ? 0.299 * x[0] + 0.587 * x[1] + 0.114 * x[2]  // Eq. 4
                                                   : x[size_t(slot.channel)];
-            samples[i] = x;
+            tiles.samples[i] = x;
         }
         // hexc's guard: a negative metric (HDR texels below 0) counts as 0, so no weight turns negative.
-        delta[i] = (1 - hex.falloffcontrast) + hex.falloffcontrast * std::max(metric, 0.0);
+        tiles.delta[i] = (1 - hex.falloffcontrast) + hex.falloffcontrast * std::max(metric, 0.0);
     }
+    return tiles;
+}
 
-    if (hex.taps == 1) {
-        // One dithered tap: the pixel's hash u in [0, 1) picks the tile whose share of Eq. 1's weights (without
-        // the metric, which one sample cannot weigh) covers it; that tile's sample is the result. A two-tap mask
-        // has no third tile: u beyond W_0 + W_1 (by rounding) picks the second.
-        const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);
-        const double u = ditherValue(pixel);
-        const size_t pick = std::min<size_t>(u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2, size_t(hex.maskTaps() - 1));
-        std::array<double, 3> oneHot{};
-        oneHot[pick] = 1;
-        return {samples[pick], shown(oneHot), {samples[pick], samples[pick], samples[pick]}, oneHot};
-    }
-    if (histogram) {
-        const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);  // no metric: see hexcHistogram
-        SlotResult r = histogramBlend(*lut, samples, w, dx, dy, texture.width(0), texture.height(0), slot.kind == SlotKind::Scalar);
-        r.weights = shown(w);
-        return r;
-    }
-    std::array<double, 3> w = blendWeights(taps.weight, delta, hex);
+// One dithered tap: the pixel's hash u in [0, 1) picks the tile whose share of Eq. 1's weights (without
+// the metric, which one sample cannot weigh) covers it; that tile's sample is the result. A two-tap mask
+// has no third tile: u beyond W_0 + W_1 (by rounding) picks the second.
+SlotResult ditheredTap(const HexTiling& hex, const Taps& taps, const std::array<Rgba, 3>& samples, std::array<uint32_t, 2> pixel) {
+    const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);
+    const double u = ditherValue(pixel);
+    const size_t pick = std::min<size_t>(u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2, size_t(hex.maskTaps() - 1));
+    std::array<double, 3> oneHot{};
+    oneHot[pick] = 1;
+    return {samples[pick], shown(hex, taps, oneHot), {samples[pick], samples[pick], samples[pick]}, oneHot};
+}
+
+// The tiles' samples blended with Eq. 1's weights (and the gain), then, when height-blended, by their heights.
+SlotResult blendTiles(const Slot& slot, const Taps& taps, const Tiles& tiles, Vec2 dx, Vec2 dy, bool heightBlended,
+                      const HeightSource* height) {
+    const HexTiling& hex = slot.hex;
+    std::array<double, 3> w = blendWeights(taps.weight, tiles.delta, hex);
     double heightSum = 1;
     if (heightBlended) {
         // The heights at each tile's own sample point, with its gradients: the tile's transform applies to them too.
         std::array<double, 3> h;
         for (size_t i = 0; i < 3; ++i) {
-            h[i] = fetchTile(*height->texture, fetch[i], hex, dx, dy)[size_t(height->channel)];
+            h[i] = fetchTile(*height->texture, tiles.fetch[i], hex, dx, dy)[size_t(height->channel)];
         }
         w = heightBlend(w, h, height->width, heightSum);
     }
+    const std::array<Rgba, 3>& samples = tiles.samples;
     Rgba value{};
     for (size_t c = 0; c < 4; ++c) value[c] = w[0] * samples[0][c] + w[1] * samples[1][c] + w[2] * samples[2][c];
-    if (normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
-    return {value, shown(w), samples, w, heightSum};
+    if (slot.kind == SlotKind::Normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
+    return {value, shown(hex, taps, w), samples, w, heightSum};
+}
+
+}  // namespace
+
+SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel,
+                      const HeightSource* height, const SampledTexture* lut) {
+    const HexTiling& hex = slot.hex;
+    if (!hex.enabled) return untiled(slot, texture, st, dx, dy);
+    if (hex.mode == HashMode::MaterialX) return evaluateMaterialX(slot, texture, st, dx, dy);
+    const bool heightBlended = slot.heightBlend && hex.taps != 1;  // 1 tap cannot height-blend (the parser rejects it)
+    if (heightBlended && !height) throw std::invalid_argument("reference: slot " + slot.name + " height-blends but no heights were given");
+    const bool histogram = hex.blend == Blend::Histogram;  // the parser leaves it on colour and scalar slots only
+    if (histogram && !lut)
+        throw std::invalid_argument("reference: slot " + slot.name + " blends histograms but no look-up table was given");
+
+    Taps taps = maskTaps(st, hex);
+    std::array<bool, 3> fetched{true, true, true};
+    if (hex.adaptive()) {
+        fetched = adaptiveTaps(taps.weight, hex);
+        for (size_t i = 0; i < 3; ++i) taps.weight[i] *= fetched[i];  // the blend of the fetched taps alone
+    }
+    const Tiles tiles = sampleTiles(slot, texture, taps, fetched, dx, dy);
+
+    if (hex.taps == 1) return ditheredTap(hex, taps, tiles.samples, pixel);
+    if (histogram) {
+        const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);  // no metric: see hexcHistogram
+        SlotResult r = histogramBlend(*lut, tiles.samples, w, dx, dy, texture.width(0), texture.height(0), slot.kind == SlotKind::Scalar);
+        r.weights = shown(hex, taps, w);
+        return r;
+    }
+    return blendTiles(slot, taps, tiles, dx, dy, heightBlended, height);
 }
 
 SlotTextures::SlotTextures(const Slot& slot) {
@@ -638,37 +379,6 @@ SurfacePoint previewSphere(double u, double v, double dudx, double dvdx, double 
     const Vec3 du{cv * cu, 0, -cv * su}, dv{-sv * su, cv, -sv * cu};  // dP/du, dP/dv
     const auto chain = [&](double a, double b) { return Vec3{du[0] * a + dv[0] * b, du[1] * a + dv[1] * b, du[2] * a + dv[2] * b}; };
     return {p, p, chain(dudx, dvdx), chain(dudy, dvdy)};
-}
-
-double valueNoise(Vec2 st, int maskScale, uint32_t salt) {
-    const MaskFrame frame = maskFrame(st, maskScale);
-    const Vec2 corner{std::floor(frame.q[0]), std::floor(frame.q[1])};
-    // The cell in 32-bit unsigned arithmetic, as the shader has it (conversion to uint32_t is modulo 2^32).
-    const uint32_t cx = uint32_t(frame.base[0] + int64_t(corner[0])), cy = uint32_t(frame.base[1] + int64_t(corner[1]));
-    const auto h = [&](uint32_t i, uint32_t j) { return random24(pcg3d({cx + i, cy + j, salt})[0]); };
-    const auto fade = [](double f) { return f * f * f * (f * (6 * f - 15) + 10); };  // quintic: C2 across cells
-    const double sx = fade(frame.q[0] - corner[0]), sy = fade(frame.q[1] - corner[1]);
-    return lerp(lerp(h(0, 0), h(1, 0), sx), lerp(h(0, 1), h(1, 1), sx), sy);
-}
-
-double ditherValue(std::array<uint32_t, 2> pixel) { return random24(pcg3d({pixel[0], pixel[1], 2u})[0]); }
-
-Triangle lattice(Vec2 st, HashMode mode) {
-    return mode == HashMode::Paper ? triangleGrid(st) : triangleInSkewed(kStableScale * st[0] - 2 * st[1], 4 * st[1]);
-}
-
-TileTransform tileTransform(TileId id, const HexTiling& hex) {
-    if (hex.mode == HashMode::Paper) return {tileOffset(id), paperAngle(id, hex.rotation)};
-    // Three numbers in [0, 1) from the top 24 bits of pcg3d(id, 0), a fourth from pcg3d(id, 1).
-    const auto h = pcg3d({uint32_t(id[0]), uint32_t(id[1]), 0u});
-    const double ux = random24(h[0]), uy = random24(h[1]), uz = random24(h[2]);
-    if (!hex.hasTransforms()) return {{ux, uy}, (uz * 2 - 1) * pi * hex.rotation};
-    auto snap = [](double u, int steps) { return steps > 0 ? std::floor(u * steps) / steps : u; };
-    const Vec2 offset{snap(ux, hex.offsetSteps[0]) * hex.offset, snap(uy, hex.offsetSteps[1]) * hex.offset};
-    const double a = snap(uz, hex.rotationSteps);
-    const double degrees = hex.rotationRange[0] + (hex.rotationRange[1] - hex.rotationRange[0]) * a;
-    const double v = random24(pcg3d({uint32_t(id[0]), uint32_t(id[1]), 1u})[0]);
-    return {offset, degrees * pi / 180 * hex.rotation, hex.scaleRange[0] + (hex.scaleRange[1] - hex.scaleRange[0]) * v};
 }
 
 std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view, const HeightSource* height,

@@ -274,20 +274,9 @@ Texture packedTexture(const nlohmann::json& manifest, const CompileResult& compi
     throw std::logic_error("the manifest lists no packed texture " + name);
 }
 
-}  // namespace
-
-Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
-             ExecutedTarget target, int timedFrames, std::vector<double>* frameMs, const ParameterValues& parameters,
-             const CompileOptions& compileOptions, const TemplateInputs& own) {
-    Material m = renderedMaterial(material, output, slotName);
-    CompileOptions options = compileOptions;
-    options.targets = {Target::Spirv, target == ExecutedTarget::Hlsl ? Target::Hlsl : Target::Glsl};
-    CompileResult compiled = compile(m, options);
-    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
-    nlohmann::json manifest = nlohmann::json::parse(outputFile(compiled, ".manifest.json"));
-
-    RenderRequest request;
-    request.vertexSpirv = vertexShader();
+// The executed target's fragment shader as SPIR-V: the .spv file, or the HLSL or OpenGL GLSL source compiled again.
+void setFragmentShader(RenderRequest& request, const CompileResult& compiled, const nlohmann::json& manifest, const Material& m,
+                       ExecutedTarget target, const CompileOptions& options) {
     switch (target) {
         case ExecutedTarget::Spirv:  // the .spv file, as an engine loads it (combined samplers are in it only)
             request.fragmentSpirv = spirvWords(outputFile(compiled, ".spv"));
@@ -305,15 +294,12 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
             request.combinedSamplers = true;
             break;
     }
-    // Bound where the manifest says, as an engine would.
-    bindHexcs(manifest, target, request);
-    // glslang keeps an HLSL entry point's name; OpenGL GLSL's is `main`.
-    request.fragmentEntry = manifest["targets"][manifestTarget(target)]["entry_point"];
-    request.uniformData = packParameters(manifest, parameters);
-    bindTemplateInputs(manifest, target, own, request);
-    // Textures in manifest order, which is binding order; a histogram slot's Gaussian texture in its place, its look-up
-    // table after every slot's (as the manifest lists them); a packed texture, as the compile wrote it, in its first
-    // slot's place (the other slots' own textures in theirs, which the shader does not read).
+}
+
+// Textures in manifest order, which is binding order; a histogram slot's Gaussian texture in its place, its look-up
+// table after every slot's (as the manifest lists them); a packed texture, as the compile wrote it, in its first
+// slot's place (the other slots' own textures in theirs, which the shader does not read).
+std::vector<Texture> boundTextures(const nlohmann::json& manifest, const CompileResult& compiled, const Material& m) {
     std::vector<Texture> textures, luts;
     for (const auto& s : manifest["slots"]) {
         for (const Slot& slot : m.slots) {
@@ -330,6 +316,31 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
         }
     }
     textures.insert(textures.end(), std::make_move_iterator(luts.begin()), std::make_move_iterator(luts.end()));
+    return textures;
+}
+
+}  // namespace
+
+Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
+             ExecutedTarget target, int timedFrames, std::vector<double>* frameMs, const ParameterValues& parameters,
+             const CompileOptions& compileOptions, const TemplateInputs& own) {
+    Material m = renderedMaterial(material, output, slotName);
+    CompileOptions options = compileOptions;
+    options.targets = {Target::Spirv, target == ExecutedTarget::Hlsl ? Target::Hlsl : Target::Glsl};
+    CompileResult compiled = compile(m, options);
+    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
+    nlohmann::json manifest = nlohmann::json::parse(outputFile(compiled, ".manifest.json"));
+
+    RenderRequest request;
+    request.vertexSpirv = vertexShader();
+    setFragmentShader(request, compiled, manifest, m, target, options);
+    // Bound where the manifest says, as an engine would.
+    bindHexcs(manifest, target, request);
+    // glslang keeps an HLSL entry point's name; OpenGL GLSL's is `main`.
+    request.fragmentEntry = manifest["targets"][manifestTarget(target)]["entry_point"];
+    request.uniformData = packParameters(manifest, parameters);
+    bindTemplateInputs(manifest, target, own, request);
+    const std::vector<Texture> textures = boundTextures(manifest, compiled, m);
     for (const Texture& t : textures) request.textures.push_back(&t);
     setView(request, view);
     request.timedFrames = timedFrames;

@@ -32,7 +32,7 @@ struct VulkanError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-struct VulkanContext;  // instance, device and long-lived objects; defined in runner.cpp
+struct VulkanContext;  // instance, device and long-lived objects; defined in vk/context.h
 
 // A resource of the fragment shader's own, beside hexc's (a template's per-frame block, shadow map...).
 struct TemplateResource {
