@@ -81,7 +81,8 @@ std::vector<SourceLine> Assembly::renamed(const std::vector<SourceLine>& lines, 
                                           const std::string& slot) {
     const Library& lib = library();
     std::vector<SourceLine> out = lines;
-    for (SourceLine& line : out)
+    for (SourceLine& line : out) {
+        if (line.text.find("exc") == std::string::npos) continue;  // names no piece: they all start with hexc or Hexc
         line.text = renameIn(line.text, [&](std::string_view word) -> std::optional<PieceName> {
             auto it = lib.byName.find(word);
             if (it == lib.byName.end() || it->second == self) return std::nullopt;
@@ -92,13 +93,14 @@ std::vector<SourceLine> Assembly::renamed(const std::vector<SourceLine>& lines, 
             PieceName n = form(it->second, settings, slot);
             return n.name == word && n.dropped.empty() ? std::nullopt : std::optional<PieceName>(n);
         });
+    }
     return out;
 }
 
 void Assembly::useGeneral(size_t piece) {
     if (general_[piece]) return;
     general_[piece] = true;
-    renamed(library().pieces[piece].lines, piece, nullptr, "");
+    for (size_t used : library().pieces[piece].uses) useGeneral(used);
 }
 
 PieceName Assembly::form(size_t piece, const Settings* settings, const std::string& slot) {

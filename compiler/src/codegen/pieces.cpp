@@ -129,6 +129,8 @@ const Library& library() {
             out.byName[p.name] = i;
             for (const SourceLine& line : p.lines) {
                 const std::string_view code = codeOf(line.text);
+                for (std::string_view word : identifiers(code))
+                    if (auto it = out.byName.find(word); it != out.byName.end() && it->second != i) p.uses.push_back(it->second);
                 p.lattice = p.lattice || code.find("HexcLattice l,") != code.npos || code.find("HexcLattice l)") != code.npos;
                 p.blend = p.blend || code.find("HexcBlend b,") != code.npos || code.find("HexcBlend b)") != code.npos;
             }

@@ -21,6 +21,7 @@ struct Piece {
     std::string file;                     // as `#line` names it: "hexc/hextiling.glsl"
     std::vector<SourceLine> lines;        // the comment right above it, then its code
     bool lattice = false, blend = false;  // it takes the settings `HexcLattice l`, `HexcBlend b`
+    std::vector<size_t> uses;             // the pieces its code names (indexes into Library::pieces)
 };
 
 struct Library {
