@@ -35,6 +35,21 @@ inline std::string testLogName() {
     return name;
 }
 
+// A copy of the hexc executable at `to` that is another build to hexc (buildId): its linker build id (the
+// NT_GNU_BUILD_ID note, "GNU" after its name size 4 and type 3) changed, or a byte appended when it has none.
+inline void copyAsAnotherBuild(const std::filesystem::path& to) {
+    std::string bytes = readFile(HEXC_EXE);
+    const std::string header("\x04\0\0\0", 4), type("\x03\0\0\0GNU\0", 8);
+    size_t at = bytes.find(type);
+    while (at != std::string::npos && (at < 8 || bytes.compare(at - 8, 4, header) != 0)) at = bytes.find(type, at + 1);
+    if (at == std::string::npos)
+        bytes += '\0';
+    else
+        bytes[at + type.size()] ^= 1;  // the first byte of the id
+    std::ofstream(to, std::ios::binary) << bytes;
+    std::filesystem::permissions(to, std::filesystem::perms::owner_all);
+}
+
 // Runs the hexc executable with `args`; returns its exit code and, if asked, what it wrote to stderr.
 // The log is named after the running test, so tests may run in parallel. `prefix`: shell commands run first
 // (e.g. `ulimit -v N;`) or a wrapper command (e.g. `timeout 20`).

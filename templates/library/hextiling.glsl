@@ -2,6 +2,15 @@
 // Injected by hexc at the template's `#include <hexc>` line. Every name here starts with `hexc` followed
 // by an upper-case letter, so it never collides with the generated per-slot functions `hexc_<slot>`.
 //
+// hexc injects it piece by piece (compiler/src/codegen/pieces.h): the constants, structs and functions a shader
+// reaches, each function in the form a slot's settings make of it. The settings hexc fixes (the fields marked
+// "literal" below, e.g. l.rotate, b.exponentInt) are folded into a copy of each function that reads them,
+// `<function>_<slot>`, with only the branches they take (codegen/specialise.h); without specialisation
+// (--no-specialize, `hexc library`) this text is the general library. So that the folding can see them, a function
+// takes its settings as `HexcLattice l` and `HexcBlend b` and never writes them; a setting decides code in an
+// `if (...) {` block (with `} else {`), an `if (...) statement;` or a whole `x = c ? a : b;` or `return c ? a : b;`;
+// and a top-level item starts at column 0, a multi-line one ending with a `}` at column 0.
+//
 // Conventions: texture space is (u, v) with v down the image. A normal slot's derivative is (dH/du, dH/dy) with
 // y = -v, up the image: a green-up (OpenGL) map gives it as sampled, a green-down (DirectX) map once flip_y negates
 // its green. The paper's HLSL `mul(v, R)` with R = float2x2(cs, -si, si, cs) (rows) is written out as
@@ -90,6 +99,12 @@ vec3 hexcShowWeights(vec3 W, ivec3 channel) {
            W.z * vec3(equal(ivec3(0, 1, 2), ivec3(channel.z)));
 }
 
+// The unit vector picking channel c (0 = r ... 3 = a): a scalar map's falloff metric, a height slot's height.
+vec4 hexcChannel(int c) {
+    // Selects of constants rather than a vector comparison: with a literal c, the optimiser folds them.
+    return c == 0 ? vec4(1.0, 0.0, 0.0, 0.0) : c == 1 ? vec4(0.0, 1.0, 0.0, 0.0) : c == 2 ? vec4(0.0, 0.0, 1.0, 0.0) : vec4(0.0, 0.0, 0.0, 1.0);
+}
+
 // mul(v, R): into the tile's rotated frame (by -angle).
 vec2 hexcRotateToTile(vec2 v, vec2 cs) {
     return vec2(v.x * cs.x + v.y * cs.y, -v.x * cs.y + v.y * cs.x);
@@ -104,8 +119,8 @@ vec2 hexcRotateFromTile(vec2 d, vec2 cs) {
 }
 
 // What a lattice computes its tiles from, filled by each generated slot function from hexcLattice() (the neutral
-// values). Fields marked "literal" are set from constants chosen by hexc, so the optimiser removes the code of a
-// feature left out rather than computing a no-op at run time: rotation turned off, or no per-tile transforms.
+// values). Fields marked "literal" are set from constants chosen by hexc, so that the code of a feature left out is
+// not emitted rather than computing a no-op at run time: rotation turned off, or no per-tile transforms.
 struct HexcLattice {
     float rotation;              // rotStrength of Listings 3, 4, 6
     bool rotate;                 // literal: false, no rotation code
@@ -214,9 +229,12 @@ vec2 hexcStableCentreInPeriod(ivec2 local) {
 // after), then scaled; the code of each only when its literal is set (an aspect of 1 is a constant comparison).
 vec2 hexcToTile(vec2 v, HexcTap p, HexcLattice l) {
     if (l.rotate) {
-        bool square = l.aspect == 1.0;
-        v = hexcRotateToTile(square ? v : vec2(v.x * l.aspect, v.y), p.rot);
-        v = square ? v : vec2(v.x / l.aspect, v.y);
+        if (l.aspect == 1.0) {
+            v = hexcRotateToTile(v, p.rot);
+        } else {
+            v = hexcRotateToTile(vec2(v.x * l.aspect, v.y), p.rot);
+            v = vec2(v.x / l.aspect, v.y);
+        }
     }
     return l.transform ? v * p.invScale : v;
 }
@@ -371,8 +389,8 @@ vec3 hexcGain3(vec3 x, float r, int kInt) {
 
 // How a slot weighs its tiles' samples, filled by each generated slot function from hexcBlend() (the neutral
 // values). Fields marked "literal" are set from constants chosen by hexc: metric and gain are false when
-// falloffcontrast is 0 or falloff is 0.5, so the optimiser removes the metric (and the samples' luminance)
-// or the gain instead of computing a no-op; a whole-number exponent or gain exponent (> 0) replaces a pow.
+// falloffcontrast is 0 or falloff is 0.5, so that the metric (and the samples' luminance) or the gain is not
+// emitted instead of computing a no-op; a whole-number exponent or gain exponent (> 0) replaces a pow.
 struct HexcBlend {
     float falloff;               // r of Eq. 5 / Listing 8
     float falloffContrast;       // beta of Eq. 3-4
@@ -394,12 +412,18 @@ HexcBlend hexcBlend() {
     return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, 1.0 / 255.0, false, vec4(0.0), 1.0);
 }
 
-// Two guards keep the weights finite, non-negative and normalised outside the paper's domain, and change
-// nothing inside it: a negative metric (HDR texels with negative values) counts as 0, and when every
-// weighted term is 0 (falloffcontrast 1 over three black samples) the metric is ignored.
-vec3 hexcBlendWeights(vec3 w, vec3 Dw, HexcBlend b) {
+// The falloff metric's factor of each tap (Eqs. 3-4) from its luminance, channel or slope Dw; 1 without the metric.
+// A negative metric (HDR texels with negative values) counts as 0.
+vec3 hexcMetric(vec3 Dw, HexcBlend b) {
+    return b.metric ? mix(vec3(1.0), max(Dw, vec3(0.0)), b.falloffContrast) : vec3(1.0);
+}
+
+// The tiles' weights from the lattice's w, each tap's metric factor M (hexcMetric) and the gain. A guard keeps them
+// finite and normalised outside the paper's domain, and changes nothing inside it: when every weighted term is 0
+// (falloffcontrast 1 over three black samples) the metric is ignored.
+vec3 hexcBlendWeights(vec3 w, vec3 M, HexcBlend b) {
     vec3 wg = b.exponentInt > 0 ? hexcPowInt(w, b.exponentInt) : pow(w, vec3(b.exponent));
-    vec3 W = b.metric ? mix(vec3(1.0), max(Dw, vec3(0.0)), b.falloffContrast) * wg : wg;
+    vec3 W = M * wg;
     float sum = W.x + W.y + W.z;
     W = sum > 0.0 ? W / sum : wg / (wg.x + wg.y + wg.z);
     if (b.gain && (b.gainInt > 0 || b.falloff != 0.5)) W = hexcGain3(W, b.falloff, b.gainInt);
@@ -428,7 +452,7 @@ bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b) {
     // still has U_i < 2^-126 / (1 - beta): nothing.
     vec3 wn = w / max(max(w.x, w.y), max(w.z, 1e-30));
     vec3 wg = b.exponentInt > 0 ? hexcPowInt(wn, b.exponentInt) : pow(wn, vec3(b.exponent));
-    float lo = 1.0 - (b.metric ? b.falloffContrast : 0.0);
+    float lo = b.metric ? 1.0 - b.falloffContrast : 1.0;
     vec3 others = vec3(wg.x + wg.y + wg.z) - wg;
     vec3 U = wg / max(wg + lo * others, vec3(1e-30));
     vec3 L = lo * wg / max(lo * wg + others, vec3(1e-30));
@@ -476,18 +500,21 @@ vec3 hexcHeightBlend(vec3 W, vec3 h, float width) {
 // rho = max(|dx|, |dy|) of the unrotated gradients in texels. A tile turns the texels (hexcToTile), which keeps their
 // lengths, so that is each tile's own level (the paper's mode, turning st, is off by up to log2 of the
 // aspect); a tile's own texture scale shifts its level by log2 of it.
-vec3 hexcTileLods(texture2D tex, sampler samp, HexcTiles t, bool sharedLod) {
-    if (!sharedLod) return vec3(0.0);
-    vec2 size = vec2(textureSize(sampler2D(tex, samp), 0));
-    vec2 ex = t.dx * size, ey = t.dy * size;
-    float lod = 0.5 * log2(max(max(dot(ex, ex), dot(ey, ey)), 1e-30));
-    return t.scaled ? lod + log2(vec3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale)) : vec3(lod);
+vec3 hexcTileLods(texture2D tex, sampler samp, HexcTiles t, HexcBlend b) {
+    vec3 lods = vec3(0.0);  // unread without b.sharedLod
+    if (b.sharedLod) {
+        vec2 size = vec2(textureSize(sampler2D(tex, samp), 0));
+        vec2 ex = t.dx * size, ey = t.dy * size;
+        float lod = 0.5 * log2(max(max(dot(ex, ex), dot(ey, ey)), 1e-30));
+        lods = t.scaled ? lod + log2(vec3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale)) : vec3(lod);
+    }
+    return lods;
 }
 
 // One tap's fetch: with its own gradients (the sampler picks the level, and filters anisotropically when the
-// sampler does), or at the level hexcTileLods gave (`sharedLod`, a literal).
-vec4 hexcFetch(texture2D tex, sampler samp, HexcTap p, float lod, bool sharedLod) {
-    return sharedLod ? textureLod(sampler2D(tex, samp), p.st, lod) : textureGrad(sampler2D(tex, samp), p.st, p.dx, p.dy);
+// sampler does), or at the level hexcTileLods gave (`b.sharedLod`).
+vec4 hexcFetch(texture2D tex, sampler samp, HexcTap p, float lod, HexcBlend b) {
+    return b.sharedLod ? textureLod(sampler2D(tex, samp), p.st, lod) : textureGrad(sampler2D(tex, samp), p.st, p.dx, p.dy);
 }
 
 // The taps a slot fetches: all (b.taps = 2, the checker, leaves out the third, weightless one), or with adaptive taps
@@ -499,25 +526,19 @@ bvec3 hexcFetched(vec3 w, HexcBlend b) {
 // The texels of the taps `f` picks (the others read 0), every path's fetches. Adaptive taps branch around each
 // fetch, as a GPU needs to skip one: the gradients (textureGrad) or the level (textureLod, lod "shared") are
 // explicit, so a fetch in non-uniform control flow is defined. Otherwise the branches are literals the optimiser folds.
-void hexcFetchTaps(texture2D tex, sampler samp, HexcTiles t, bvec3 f, bool sharedLod, out vec4 c[3]) {
-    vec3 lod = hexcTileLods(tex, samp, t, sharedLod);
+void hexcFetchTaps(texture2D tex, sampler samp, HexcTiles t, bvec3 f, HexcBlend b, out vec4 c[3]) {
+    vec3 lod = hexcTileLods(tex, samp, t, b);
     c = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
-    if (f.x) c[0] = hexcFetch(tex, samp, t.tap[0], lod.x, sharedLod);
-    if (f.y) c[1] = hexcFetch(tex, samp, t.tap[1], lod.y, sharedLod);
-    if (f.z) c[2] = hexcFetch(tex, samp, t.tap[2], lod.z, sharedLod);
+    if (f.x) c[0] = hexcFetch(tex, samp, t.tap[0], lod.x, b);
+    if (f.y) c[1] = hexcFetch(tex, samp, t.tap[1], lod.y, b);
+    if (f.z) c[2] = hexcFetch(tex, samp, t.tap[2], lod.z, b);
 }
 
 // The heights of the tiles' samples from the height slot's texture (b.heightLuma picks its channel).
 vec3 hexcTileHeights(texture2D tex, sampler samp, HexcTiles t, HexcBlend b) {
     vec4 h[3];
-    hexcFetchTaps(tex, samp, t, bvec3(true, true, b.taps > 2), b.sharedLod, h);
+    hexcFetchTaps(tex, samp, t, bvec3(true, true, b.taps > 2), b, h);
     return vec3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
-}
-
-// The unit vector picking channel c (0 = r ... 3 = a): a scalar map's falloff metric, a height slot's height.
-vec4 hexcChannel(int c) {
-    // Selects of constants rather than a vector comparison: with a literal c, the optimiser folds them.
-    return c == 0 ? vec4(1.0, 0.0, 0.0, 0.0) : c == 1 ? vec4(0.0, 1.0, 0.0, 0.0) : c == 2 ? vec4(0.0, 0.0, 1.0, 0.0) : vec4(0.0, 0.0, 0.0, 1.0);
 }
 
 // Listing 4: colour path. `luma` selects the falloff metric: Rec. 601 luminance for colour (Eq. 4),
@@ -525,9 +546,9 @@ vec4 hexcChannel(int c) {
 vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma, texture2D heightTex, out vec3 weights) {
     bvec3 f = hexcFetched(t.w, b);
     vec4 c[3];
-    hexcFetchTaps(tex, samp, t, f, b.sharedLod, c);
+    hexcFetchTaps(tex, samp, t, f, b, c);
     vec3 Dw = vec3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
-    vec3 W = hexcBlendWeights(t.w * vec3(f), Dw, b);  // a skipped tap weighs 0, the others renormalise
+    vec3 W = hexcBlendWeights(t.w * vec3(f), hexcMetric(Dw, b), b);  // a skipped tap weighs 0, the others renormalise
     if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
     return W.x * c[0] + W.y * c[1] + W.z * c[2];
@@ -544,7 +565,7 @@ vec4 hexcColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec4 luma,
 // r, within its range already, and no way back to take.
 vec4 hexcHistogram(texture2D tex, texture2D lut, sampler samp, HexcTiles t, HexcBlend b, vec2 dx, vec2 dy, bool scalar, out vec3 weights) {
     vec4 g[3];
-    hexcFetchTaps(tex, samp, t, bvec3(true, true, b.taps > 2), b.sharedLod, g);
+    hexcFetchTaps(tex, samp, t, bvec3(true, true, b.taps > 2), b, g);
     vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);
     weights = hexcShowWeights(W, t.channel);
     // The checker's third tap weighs 0: its unfetched 0 adds nothing.
@@ -584,13 +605,13 @@ vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY) {
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, texture2D heightTex, out vec3 weights) {
     // One branch per tap around its fetch and its derivative (adaptive taps: see hexcFetchTaps).
     bvec3 f = hexcFetched(t.w, b);
-    vec3 lod = hexcTileLods(tex, samp, t, b.sharedLod);
+    vec3 lod = hexcTileLods(tex, samp, t, b);
     vec2 d1 = vec2(0.0), d2 = vec2(0.0), d3 = vec2(0.0);
-    if (f.x) d1 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[0], lod.x, b.sharedLod), t.tap[0], t.scaled, flipY);
-    if (f.y) d2 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[1], lod.y, b.sharedLod), t.tap[1], t.scaled, flipY);
-    if (f.z) d3 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[2], lod.z, b.sharedLod), t.tap[2], t.scaled, flipY);
+    if (f.x) d1 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[0], lod.x, b), t.tap[0], t.scaled, flipY);
+    if (f.y) d2 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[1], lod.y, b), t.tap[1], t.scaled, flipY);
+    if (f.z) d3 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[2], lod.z, b), t.tap[2], t.scaled, flipY);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-    vec3 W = hexcBlendWeights(t.w * vec3(f), sqrt(D / (1.0 + D)), b);
+    vec3 W = hexcBlendWeights(t.w * vec3(f), hexcMetric(sqrt(D / (1.0 + D)), b), b);
     if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);
     weights = hexcShowWeights(W, t.channel);
     return W.x * d1 + W.y * d2 + W.z * d3;
@@ -609,8 +630,7 @@ HexcTap hexcSelect(bool a, HexcTap x, HexcTap y) {
 
 // The picked tap, and which it is (one-hot in `pick`).
 HexcTap hexcDitherTile(HexcTiles t, HexcBlend b, vec2 pixel, out vec3 pick) {
-    b.metric = false;
-    vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);
+    vec3 W = hexcBlendWeights(t.w, vec3(1.0), b);  // no metric: one sample
     float u = float(hexcPcg3d(uvec3(uvec2(pixel), 2u)).x >> 8u) * (1.0 / 16777216.0);
     int i = u < W.x ? 0 : (u < W.x + W.y ? 1 : 2);
     pick = vec3(equal(ivec3(0, 1, 2), ivec3(i)));
@@ -621,15 +641,15 @@ vec4 hexcColor1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec2 pixe
     vec3 pick;
     HexcTap tap = hexcDitherTile(t, b, pixel, pick);
     weights = hexcShowWeights(pick, t.channel);
-    return hexcFetch(tex, samp, tap, dot(pick, hexcTileLods(tex, samp, t, b.sharedLod)), b.sharedLod);
+    return hexcFetch(tex, samp, tap, dot(pick, hexcTileLods(tex, samp, t, b)), b);
 }
 
 vec2 hexcDeriv1(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, vec2 pixel, out vec3 weights) {
     vec3 pick;
     HexcTap tap = hexcDitherTile(t, b, pixel, pick);
     weights = hexcShowWeights(pick, t.channel);
-    float lod = dot(pick, hexcTileLods(tex, samp, t, b.sharedLod));
-    return hexcTapDeriv(hexcFetch(tex, samp, tap, lod, b.sharedLod), tap, t.scaled, flipY);
+    float lod = dot(pick, hexcTileLods(tex, samp, t, b));
+    return hexcTapDeriv(hexcFetch(tex, samp, tap, lod, b), tap, t.scaled, flipY);
 }
 
 // Plain tiling, for slots with hex-tiling disabled: one fetch, hardware gradients, or the given ones where

@@ -3,8 +3,11 @@
 // (`uv`, `uv.split`, `triplanar`), which defines the public `hexc_${name}` from it; plus the resource sections.
 // Tokens `${...}` are replaced in one pass; one codegen does not know is an error. ${name}: the slot's name;
 // ${set}, ${binding}: hexc's descriptors (plan.h, HexcBindings); ${tiling}, ${planesharpness}, ${origincell}, ${originoffset}: the parameters (uniform members or
-// constants) the coordinates read; ${tiles}: the slot's `lattice.*` section; ${lattice}, ${blend}: `set` lines
-// filling the slot's HexcLattice and HexcBlend (templates/library/hextiling.glsl) from the plan; ${heightmap}: the
+// constants) the coordinates read; ${tiles}: the slot's `lattice.*` section; ${settings}: the `settings.*` sections,
+// which build the HexcLattice `lattice` and HexcBlend `blend` (templates/library/hextiling.glsl) the library's functions
+// take: in general code with every setting of the slot, else with its parameters only, the functions having the fixed
+// settings folded in (a struct without parameters is left out, and the calls drop it: codegen/assembly.h); ${fields}:
+// the `set` lines filling one; ${heightmap}: the
 // slot whose texture holds its heights (itself when it blends by none); ${channel}: a scalar slot's channel
 // (0 = r ... 3 = a); ${flipy}, ${explicit}: literal switches; ${type}: the slot's result type; ${kind},
 // ${projection}; ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
@@ -45,6 +48,14 @@ layout(set = ${set}, binding = ${binding}) uniform texture2D hexcLut_${name};
 //@ set
     ${struct}.${field} = ${value};
 
+//@ settings.lattice
+    HexcLattice lattice = hexcLattice();
+${fields}
+
+//@ settings.blend
+    HexcBlend blend = hexcBlend();
+${fields}
+
 //@ lattice.paper
 hexcTilesPaper(st, dx, dy, lattice)
 
@@ -59,19 +70,13 @@ hexcTilesNoise(st, dx, dy, lattice)
 
 //@ color.hex
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, hexcLuma, hexcTex_${heightmap}, weights);
 }
 
 //@ color.hex1
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, gl_FragCoord.xy, weights);
 }
 
@@ -83,10 +88,7 @@ vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 //@ color.histogram
 // The histogram-preserving blend: hexcTex_ holds the Gaussian texture hexc derived, hexcLut_ the inverse transform.
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcHistogram(hexcTex_${name}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, false, weights);
 }
 
@@ -95,49 +97,34 @@ ${blend}
 // its opaque texture's was. The fetches are those of the pack's other slots (same lattice, same texture): hexc merges
 // them into one set of taps (spirv/share.h).
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return vec4(hexcColor(${texture}, hexcSampler, ${tiles}, blend, hexcLuma, ${texture}, weights).rgb, 1.0);
 }
 
 //@ scalar.packed
 // The packed texture ${texture} holds this slot's value in channel ${channel}.
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcColor(${texture}, hexcSampler, ${tiles}, blend, hexcChannel(${channel}), ${texture}, weights)[${channel}];
 }
 
 //@ scalar.histogram
 // The Gaussian texture holds the slot's channel in r.
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcHistogram(hexcTex_${name}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, true, weights).r;
 }
 
 //@ scalar.hex
 // Scalar maps weigh tiles by their own channel.
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, hexcChannel(${channel}), hexcTex_${heightmap}, weights)[${channel}];
 }
 
 //@ scalar.hex1
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, gl_FragCoord.xy, weights)[${channel}];
 }
 
@@ -148,19 +135,13 @@ float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 
 //@ normal.hex
 vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcDeriv(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, hexcTex_${heightmap}, weights);
 }
 
 //@ normal.hex1
 vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcDeriv1(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, gl_FragCoord.xy, weights);
 }
 
@@ -204,28 +185,19 @@ hexcTilesMaterialX(st, dx, dy, lattice)
 //@ color.materialx
 // MaterialX mode (templates/library/materialx.glsl): ${luma} its lumacoeffs, ${srgb} whether the texture is sRGB.
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcMxColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${luma}, ${srgb}, weights);
 }
 
 //@ scalar.materialx
 // MaterialX's extract of a hextiledimage: the colour blended by its luma, then the channel.
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcMxColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${luma}, ${srgb}, weights)[${channel}];
 }
 
 //@ normal.materialx
 vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    HexcLattice lattice = hexcLattice();
-${lattice}
-    HexcBlend blend = hexcBlend();
-${blend}
+${settings}
     return hexcMxDeriv(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, weights);
 }

@@ -333,8 +333,9 @@ TEST(Readable, EveryTextOutputSaysWhoWroteItFromWhatAndHow) {
     }
 }
 
-// --debug keeps hexc's functions by name on every target, with #line references into the library and template;
-// the optimised default has neither, and keeps none of the library's function definitions.
+// --debug keeps hexc's functions by name on every target, with #line references into the library and template: each
+// slot's, with its settings folded in (`<function>_<slot>`); the optimised default has neither, and keeps none of the
+// library's function definitions.
 TEST(Readable, DebugOutputsKeepHexcsFunctionsAndLines) {
     CompileOptions debug;
     debug.debug = true;
@@ -344,15 +345,16 @@ TEST(Readable, DebugOutputsKeepHexcsFunctionsAndLines) {
     for (const std::string* text : {&hlsl, &glsl, &msl}) {
         EXPECT_NE(text->find("hexc_albedo("), std::string::npos);
         EXPECT_NE(text->find("hexcAt_normal("), std::string::npos);
-        EXPECT_NE(text->find("hexcColor("), std::string::npos);
+        EXPECT_NE(text->find("hexcColor_albedo("), std::string::npos);
+        EXPECT_NE(text->find("hexcDeriv_normal("), std::string::npos);
         EXPECT_NE(text->find("#line 1"), std::string::npos);
         EXPECT_NE(text->find("\"hexc/hextiling.glsl\""), std::string::npos);
         EXPECT_NE(text->find("debug (unoptimised, line directives: functions)"), std::string::npos);
     }
-    EXPECT_NE(hlsl.find("float4 hexcColor(Texture2D<float4> tex, SamplerState samp"), std::string::npos);
+    EXPECT_NE(hlsl.find("float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp"), std::string::npos);
     for (const std::string& text : {file(release, ".frag.hlsl").contents, file(release, ".frag.glsl").contents}) {
         EXPECT_EQ(text.find("#line"), std::string::npos);
-        EXPECT_EQ(text.find("hexcColor("), std::string::npos);
+        EXPECT_EQ(text.find("hexcColor_albedo("), std::string::npos);
     }
     // The generated Vulkan GLSL, beside them, is what glslang compiled: it compiles again to the same SPIR-V.
     const std::string generated = file(r, ".generated.frag").contents;

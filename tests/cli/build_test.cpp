@@ -189,8 +189,7 @@ TEST(Incremental, AnotherHexcBuildDoesNotTrustTheStamp) {
     ASSERT_EQ(runHexc(dir.string() + "/tiles.json -o " + out.string(), &err), 0) << err;
     // The same version string in a different binary (as a rebuilt hexc, or one linked with newer glslang).
     fs::path other = dir / "hexc-other";
-    fs::copy_file(HEXC_EXE, other);
-    { std::ofstream(other, std::ios::app) << '\0'; }
+    hexc::test::copyAsAnotherBuild(other);
     fs::path log = dir / "other.txt";
     int status = std::system((other.string() + " " + dir.string() + "/tiles.json -o " + out.string() + " 2> " + log.string()).c_str());
     std::ifstream in(log);

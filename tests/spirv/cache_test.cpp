@@ -258,8 +258,7 @@ TEST(ShaderCache, CommandLineHitsAndAnotherBuildMisses) {
     EXPECT_NE(readFile(dir / "out" / "rock.manifest.json").value().find("7.0"), std::string::npos);
 
     const fs::path other = dir / "hexc-other";
-    fs::copy_file(HEXC_EXE, other);
-    { std::ofstream(other, std::ios::app) << '\0'; }
+    hexc::test::copyAsAnotherBuild(other);
     const fs::path log = dir / "other.txt";
     const int status = std::system((other.string() + " " + args + " --force 2> " + log.string()).c_str());
     err = readFile(log).value_or("");

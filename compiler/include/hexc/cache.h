@@ -12,8 +12,9 @@
 
 namespace hexc {
 
-// A hash of the running executable (16 hex digits). libhexc, glslang, SPIRV-Tools and SPIRV-Cross are linked into
-// it statically, so a rebuilt or upgraded hexc never trusts a stamp or cache entry of another build.
+// The running executable's identity (16 hex digits): a hash of the linker's build id, which is a hash of the whole
+// executable file, or of the file itself when it has none. libhexc, glslang, SPIRV-Tools and SPIRV-Cross are linked
+// into it statically, so a rebuilt or upgraded hexc never trusts a stamp or cache entry of another build.
 const std::string& buildId();
 
 // Where the folder cache goes unless told: $XDG_CACHE_HOME/hexc, else $HOME/.cache/hexc; empty when neither is set.

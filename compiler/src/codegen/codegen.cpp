@@ -5,6 +5,8 @@
 #include <map>
 #include <sstream>
 
+#include "codegen/assembly.h"
+#include "codegen/pieces.h"
 #include "common/templates.h"
 #include "common/text.h"
 
@@ -31,11 +33,12 @@ std::string literal(int v) { return std::to_string(v); }
 
 class Emitter {
 public:
-    explicit Emitter(const ShaderPlan& plan) : plan_(plan), sections_(snippetSections("slots.glsl")) {}
+    explicit Emitter(const ShaderPlan& plan) : plan_(plan) {}
 
     // The section expanded, without its final newline.
     std::string expand(const std::string& section, const Tokens& values) const {
-        std::string text = expandTokens(sections_.at(section), values, section);
+        static const std::map<std::string, std::string> sections = snippetSections("slots.glsl");
+        std::string text = expandTokens(sections.at(section), values, section);
         if (text.ends_with('\n')) text.pop_back();
         return text;
     }
@@ -85,66 +88,12 @@ public:
         return out;
     }
 
-    // `set` lines filling `structName`: each field with a value (a feature switch, or a parameter the plan has).
-    std::string set(const std::string& structName, const std::vector<std::pair<std::string, std::string>>& fields) const {
-        std::string out;
-        for (const auto& [field, value] : fields)
-            out += (out.empty() ? "" : "\n") + expand("set", {{"struct", structName}, {"field", field}, {"value", value}});
-        return out;
-    }
-
-    void addParam(std::vector<std::pair<std::string, std::string>>& to, const std::string& field, ParamRef ref) const {
-        if (ref) to.emplace_back(field, read(*ref));
-    }
-
-    void addParam(Tokens& to, const std::string& token, ParamRef ref) const {
-        if (ref) to[token] = read(*ref);
-    }
-
-    // The lattice's settings, and the slot's texture aspect (its tiles turn in texel-isotropic space).
-    std::string latticeSettings(const LatticePlan& l, double aspect) const {
-        std::vector<std::pair<std::string, std::string>> fields = {
-            {"rotate", literal(l.rotate)},
-            {"transform", literal(l.transform)},
-            {"rotationSteps", literal(l.rotationSteps)},
-            {"offsetSteps", "ivec2(" + literal(l.offsetSteps[0]) + ", " + literal(l.offsetSteps[1]) + ")"},
-            {"maskScale", literal(l.maskScale)},
-            {"triple", literal(l.triple)},
-        };
-        addParam(fields, "rotation", l.rotation);
-        addParam(fields, "rotationRange", l.rotationRange);
-        addParam(fields, "scaleRange", l.scaleRange);
-        addParam(fields, "offset", l.offset);
-        if (aspect != 1) fields.emplace_back("aspect", literal(aspect));
-        return set("lattice", fields);
-    }
-
-    std::string blendSettings(const SlotPlan& sp) const {
-        std::vector<std::pair<std::string, std::string>> fields = {
-            {"metric", literal(sp.metric)},
-            {"gain", literal(sp.gain)},
-            {"exponentInt", literal(sp.exponentInt)},
-            {"gainInt", literal(sp.gainInt)},
-            {"taps", literal(sp.taps)},
-            {"sharedLod", literal(sp.sharedLod)},
-            {"height", literal(sp.heightMap.has_value())},
-        };
-        if (sp.adaptive) {
-            fields.emplace_back("adaptive", literal(true));
-            fields.emplace_back("adaptiveError", literal(HexTiling::kAdaptiveError));
-        }
-        if (sp.heightMap) fields.emplace_back("heightLuma", "hexcChannel(" + literal(plan_.slots[*sp.heightMap].slot->channel) + ")");
-        addParam(fields, "falloff", sp.falloff);
-        addParam(fields, "falloffContrast", sp.falloffContrast);
-        addParam(fields, "exponent", sp.exponent);
-        addParam(fields, "heightWidth", sp.heightWidth);
-        return set("blend", fields);
-    }
-
-    // The slot's sampling and coordinates functions.
-    std::string slot(const SlotPlan& sp) const {
+    // The slot's sampling and coordinates functions, their library calls resolved in `assembly`: to functions with the
+    // slot's fixed settings folded in, or (plan.general) to the general ones, which read every setting from the structs.
+    std::string slot(const SlotPlan& sp, Assembly& assembly) const {
         const Slot& s = *sp.slot;
         const LatticePlan& l = plan_.lattices[sp.lattice];
+        Settings fixed;
         Tokens t = {
             {"name", s.name},
             {"type", sp.type},
@@ -154,8 +103,7 @@ public:
             {"texture", sp.pack ? "hexcTex_" + plan_.slots[plan_.packs[*sp.pack].slots.front()].slot->name : ""},
             {"heightmap", sp.heightMap ? plan_.slots[*sp.heightMap].slot->name : s.name},  // unread without height blending
             {"tiles", expand(l.section, {})},
-            {"lattice", latticeSettings(l, sp.aspect)},
-            {"blend", blendSettings(sp)},
+            {"settings", settings(l, sp, fixed)},
             {"luma",
              "vec3(" + literal(s.hex.lumacoeffs[0]) + ", " + literal(s.hex.lumacoeffs[1]) + ", " + literal(s.hex.lumacoeffs[2]) + ")"},
             {"srgb", literal(s.colorSpace == ColorSpace::Srgb)},
@@ -164,33 +112,111 @@ public:
         addParam(t, "planesharpness", l.planeSharpness);
         addParam(t, "origincell", l.originCell);
         addParam(t, "originoffset", l.originOffset);
-        return expand(sp.section, t) + "\n\n" + expand(sp.coordinates, t) + "\n";
+        std::string sampling = expand(sp.section, t);
+        for (size_t empty; (empty = sampling.find("\n\n")) != std::string::npos;) sampling.erase(empty, 1);  // ${settings}, ${fields} empty
+        return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, s.name) + "\n";
     }
 
 private:
+    // A field of HexcLattice or HexcBlend and its value: a literal hexc fixes, or (`param`) a parameter's read.
+    struct Field {
+        std::string name, value;
+        bool param = false;
+    };
+    using Fields = std::vector<Field>;
+
+    void addParam(Fields& to, const std::string& field, ParamRef ref) const {
+        if (ref) to.push_back({field, read(*ref), true});
+    }
+
+    void addParam(Tokens& to, const std::string& token, ParamRef ref) const {
+        if (ref) to[token] = read(*ref);
+    }
+
+    // The slot's HexcLattice `lattice` and HexcBlend `blend`, built for the library's functions: in general code with
+    // every field the plan gives; otherwise with its parameters only, and every other field's value (the plan's, else
+    // the neutral one) in `fixed`, as the library names it, to fold into the functions.
+    std::string settings(const LatticePlan& l, const SlotPlan& sp, Settings& fixed) const {
+        const std::pair<const char*, Fields> structs[] = {{"lattice", latticeSettings(l, sp.aspect)}, {"blend", blendSettings(sp)}};
+        std::string out;
+        for (const auto& [name, fields] : structs) {
+            const std::string prefix = name[0] + std::string(".");
+            std::string lines;
+            if (!plan_.general)
+                for (const auto& [field, value] : library().neutral.at(name[0] == 'l' ? "HexcLattice" : "HexcBlend"))
+                    if (std::none_of(fields.begin(), fields.end(), [&](const Field& f) { return f.param && f.name == field; }))
+                        fixed[prefix + field] = value;
+            for (const Field& f : fields) {
+                if (!plan_.general && !f.param) fixed[prefix + f.name] = f.value;
+                if (plan_.general || f.param)
+                    lines += (lines.empty() ? "" : "\n") + expand("set", {{"struct", name}, {"field", f.name}, {"value", f.value}});
+            }
+            if (plan_.general || !lines.empty())
+                out += (out.empty() ? "" : "\n") + expand("settings." + std::string(name), {{"fields", lines}});
+        }
+        return out;
+    }
+
+    // The lattice's settings, and the slot's texture aspect (its tiles turn in texel-isotropic space).
+    Fields latticeSettings(const LatticePlan& l, double aspect) const {
+        Fields fields = {
+            {"rotate", literal(l.rotate)},
+            {"transform", literal(l.transform)},
+            {"rotationSteps", literal(l.rotationSteps)},
+            {"offsetSteps", "ivec2(" + literal(l.offsetSteps[0]) + ", " + literal(l.offsetSteps[1]) + ")"},
+            {"maskScale", literal(l.maskScale)},
+            {"triple", literal(l.triple)},
+            {"aspect", literal(aspect)},
+        };
+        addParam(fields, "rotation", l.rotation);
+        addParam(fields, "rotationRange", l.rotationRange);
+        addParam(fields, "scaleRange", l.scaleRange);
+        addParam(fields, "offset", l.offset);
+        return fields;
+    }
+
+    Fields blendSettings(const SlotPlan& sp) const {
+        Fields fields = {
+            {"metric", literal(sp.metric)},
+            {"gain", literal(sp.gain)},
+            {"exponentInt", literal(sp.exponentInt)},
+            {"gainInt", literal(sp.gainInt)},
+            {"taps", literal(sp.taps)},
+            {"sharedLod", literal(sp.sharedLod)},
+            {"height", literal(sp.heightMap.has_value())},
+            {"adaptive", literal(sp.adaptive)},
+            {"adaptiveError", literal(HexTiling::kAdaptiveError)},
+        };
+        if (sp.heightMap) fields.push_back({"heightLuma", "hexcChannel(" + literal(plan_.slots[*sp.heightMap].slot->channel) + ")"});
+        addParam(fields, "falloff", sp.falloff);
+        addParam(fields, "falloffContrast", sp.falloffContrast);
+        addParam(fields, "exponent", sp.exponent);
+        addParam(fields, "heightWidth", sp.heightWidth);
+        return fields;
+    }
+
     const ShaderPlan& plan_;
-    std::map<std::string, std::string> sections_;
 };
 
+// hexc's resources, the library code the slots' functions and the template reach (which may read the resources), then
+// the slots' functions.
 std::string injectedCode(const ShaderPlan& plan) {
-    // A variant that reads no slot and calls no hexc function (a depth pass) is spared the library's parse.
-    const bool library = !plan.slots.empty() || containsNameStarting(plan.templateSource, "hexc");
-    std::string out = library ? lineDirective(1, "hexc/hextiling.glsl") + *embeddedText("hextiling.glsl") : "";
-    // MaterialX mode's functions, only for a material that has a slot in it.
-    if (std::any_of(plan.lattices.begin(), plan.lattices.end(), [](const LatticePlan& l) { return l.section == "lattice.materialx"; }))
-        out += lineDirective(1, "hexc/materialx.glsl") + *embeddedText("materialx.glsl");
-    out += lineDirective(1, "hexc/generated") + "\n";
-    if (plan.slots.empty()) return out;
-    Emitter emit(plan);
-    out += emit.resources();
-    const SlotPlan& first = *std::find_if(plan.slots.begin(), plan.slots.end(), [](const SlotPlan& sp) { return !sp.heightOnly; });
-    out += emit.expand("first", {{"name", first.slot->name},
-                                 {"kind", std::string(toString(first.slot->kind))},
-                                 {"projection", std::string(toString(first.projection))}}) +
-           "\n";
-    for (const SlotPlan& sp : plan.slots)
-        if (!sp.heightOnly) out += emit.slot(sp);
-    return out;
+    Assembly assembly;
+    std::string resources = "\n", functions;
+    if (!plan.slots.empty()) {
+        Emitter emit(plan);
+        resources += emit.resources();
+        const SlotPlan& first = *std::find_if(plan.slots.begin(), plan.slots.end(), [](const SlotPlan& sp) { return !sp.heightOnly; });
+        resources += emit.expand("first", {{"name", first.slot->name},
+                                           {"kind", std::string(toString(first.slot->kind))},
+                                           {"projection", std::string(toString(first.projection))}}) +
+                     "\n";
+        for (const SlotPlan& sp : plan.slots)
+            if (!sp.heightOnly) functions += emit.slot(sp, assembly);
+    }
+    assembly.use(plan.templateSource, nullptr, "");  // what the template calls itself, as it is
+    const int next = 1 + int(std::count(resources.begin(), resources.end(), '\n'));
+    return lineDirective(1, "hexc/generated") + resources + assembly.text() + lineDirective(next, "hexc/generated") + functions;
 }
 
 }  // namespace

@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <vector>
+
+#if __has_include(<link.h>)
+#include <link.h>
+#endif
 
 #include "hexc/hash.h"
 #include "hexc/files.h"
@@ -21,13 +26,43 @@ std::string checksum(std::string_view payload) {
     return h.hex();
 }
 
+// The linker's build id of the running executable, its NT_GNU_BUILD_ID note (a hash the linker takes of the whole
+// file it writes), read in memory; empty when it has none.
+std::string linkerBuildId() {
+    std::string id;
+#if __has_include(<link.h>)
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void* out) {
+            for (int i = 0; i < info->dlpi_phnum; ++i) {
+                if (info->dlpi_phdr[i].p_type != PT_NOTE) continue;
+                const char* at = reinterpret_cast<const char*>(info->dlpi_addr + info->dlpi_phdr[i].p_vaddr);
+                for (const char* end = at + info->dlpi_phdr[i].p_memsz; at + sizeof(ElfW(Nhdr)) <= end;) {
+                    const auto* note = reinterpret_cast<const ElfW(Nhdr)*>(at);
+                    const char* name = at + sizeof(ElfW(Nhdr));
+                    const char* desc = name + ((note->n_namesz + 3) & ~3u);
+                    if (note->n_type == NT_GNU_BUILD_ID && note->n_namesz == 4 && std::memcmp(name, "GNU", 4) == 0)
+                        static_cast<std::string*>(out)->assign(desc, note->n_descsz);
+                    at = desc + ((note->n_descsz + 3) & ~3u);
+                }
+            }
+            return 1;  // the first object is the executable itself
+        },
+        &id);
+#endif
+    return id;
+}
+
 }  // namespace
 
 const std::string& buildId() {
     static const std::string id = [] {
-        std::ifstream in("/proc/self/exe", std::ios::binary | std::ios::ate);
-        std::string bytes(size_t(std::max<std::streamoff>(in.tellg(), 0)), '\0');
-        in.seekg(0).read(bytes.data(), std::streamsize(bytes.size()));
+        // Without a linker's build id, a hash of the executable's file (14 MB: 30 M instructions of a cold start).
+        std::string bytes = linkerBuildId();
+        if (bytes.empty()) {
+            std::ifstream in("/proc/self/exe", std::ios::binary | std::ios::ate);
+            bytes.assign(size_t(std::max<std::streamoff>(in.tellg(), 0)), '\0');
+            in.seekg(0).read(bytes.data(), std::streamsize(bytes.size()));
+        }
         ContentHash h;
         h.add(bytes);
         return h.hex(16);

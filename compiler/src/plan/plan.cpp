@@ -324,6 +324,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     plan.layout = options.layout;
     plan.entryPoint = options.entryPoint.empty() ? defaultEntryPoint(material.name) : options.entryPoint;
     plan.bindings = HexcBindings(options.layout.vulkan);
+    plan.general = !options.specialize;
     if (!loadTemplate(material, options, plan)) return plan;
     planSlots(material, options, plan);
     if (material.pack) planPacks(plan);

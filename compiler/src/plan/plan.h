@@ -112,7 +112,10 @@ struct ShaderPlan {
     std::vector<ParamMember> params;       // block members first, in block order, then baked constants
     std::vector<ParamMember> specialised;  // settings fixed in the code as whole-number exponents
     uint32_t paramBlockSize = 0;           // std140 size, rounded up to 16
-    Diagnostics diagnostics;               // warnings (e.g. a slot the template never reads) or errors
+    // --no-specialize (CompileOptions::specialize false): the slots call the library's general functions with every
+    // setting in their HexcLattice and HexcBlend, rather than functions with the settings folded in (codegen).
+    bool general = false;
+    Diagnostics diagnostics;  // warnings (e.g. a slot the template never reads) or errors
 
     // hexc's textures, bound at firstTexture + i: each slot's, then the look-up tables.
     size_t textureCount() const { return slots.size() + luts.size(); }

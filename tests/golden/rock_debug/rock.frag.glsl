@@ -74,24 +74,24 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec4 v_tangent;
 layout(location = 0) out vec4 o_color;
 
-#line 127 "hexc/hextiling.glsl"
+#line 142 "hexc/hextiling.glsl"
 HexcLattice hexcLattice()
 {
-#line 127 "hexc/hextiling.glsl"
+#line 142 "hexc/hextiling.glsl"
     return HexcLattice(0.0, false, false, vec2(-180.0, 180.0), 0, vec2(1.0), 1.0, ivec2(0), 1, false, 1.0);
 }
 
-#line 394 "hexc/hextiling.glsl"
+#line 412 "hexc/hextiling.glsl"
 HexcBlend hexcBlend()
 {
-#line 394 "hexc/hextiling.glsl"
+#line 412 "hexc/hextiling.glsl"
     return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, 0.0039215688593685626983642578125, false, vec4(0.0), 1.0);
 }
 
-#line 35 "hexc/hextiling.glsl"
+#line 44 "hexc/hextiling.glsl"
 void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
 {
-#line 35 "hexc/hextiling.glsl"
+#line 44 "hexc/hextiling.glsl"
     ivec2 baseId = ivec2(floor(skewed));
     vec3 temp = vec3(skewed - floor(skewed), 0.0);
     temp.z = (1.0 - temp.x) - temp.y;
@@ -104,24 +104,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 203 "hexc/hextiling.glsl"
+#line 218 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 203 "hexc/hextiling.glsl"
+#line 218 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 210 "hexc/hextiling.glsl"
+#line 225 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 210 "hexc/hextiling.glsl"
+#line 225 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 172 "hexc/hextiling.glsl"
+#line 187 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 172 "hexc/hextiling.glsl"
+#line 187 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -133,133 +133,69 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 186 "hexc/hextiling.glsl"
-void hexcStableTile(ivec2 id, HexcLattice l, inout vec2 offset, out vec2 rot, out float invScale)
+#line 201 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, HexcLattice l, out vec2 offset, out vec2 rot, out float invScale)
 {
-#line 186 "hexc/hextiling.glsl"
+#line 201 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _590 = hexcPcg3d(param);
-    vec3 u = vec3(_590 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _601 = hexcPcg3d(param);
+    vec3 u = vec3(_601 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * l.rotation;
     invScale = 1.0;
-    if (l.transform)
-    {
-        vec2 steps = vec2(l.offsetSteps);
-        offset = mix(offset, floor(offset * steps) / steps, greaterThan(steps, vec2(0.0))) * l.offset;
-        float _639;
-        if (l.rotationSteps > 0)
-        {
-            _639 = floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps);
-        }
-        else
-        {
-            _639 = u.z;
-        }
-        float a = _639;
-        angle = radians(mix(l.rotationRange.x, l.rotationRange.y, a)) * l.rotation;
-        uvec3 param_1 = uvec3(uvec2(id), 1u);
-        uvec3 _674 = hexcPcg3d(param_1);
-        float v = float(_674.x >> 8u) * 5.9604644775390625e-08;
-        invScale = 1.0 / mix(l.scaleRange.x, l.scaleRange.y, v);
-    }
-    vec2 _689;
-    if (l.rotate)
-    {
-        _689 = vec2(cos(angle), sin(angle));
-    }
-    else
-    {
-        _689 = vec2(1.0, 0.0);
-    }
-    rot = _689;
+    rot = vec2(cos(angle), sin(angle));
 }
 
-#line 95 "hexc/hextiling.glsl"
+#line 110 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 95 "hexc/hextiling.glsl"
+#line 110 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 216 "hexc/hextiling.glsl"
-vec2 hexcToTile(inout vec2 v, HexcTap p, HexcLattice l)
+#line 233 "hexc/hextiling.glsl"
+vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 216 "hexc/hextiling.glsl"
-    if (l.rotate)
-    {
-        bool square = l.aspect == 1.0;
-        vec2 _753;
-        if (square)
-        {
-            _753 = v;
-        }
-        else
-        {
-            _753 = vec2(v.x * l.aspect, v.y);
-        }
-        vec2 param = _753;
-        vec2 param_1 = p.rot;
-        v = hexcRotateToTile(param, param_1);
-        vec2 _773;
-        if (square)
-        {
-            _773 = v;
-        }
-        else
-        {
-            _773 = vec2(v.x / l.aspect, v.y);
-        }
-        v = _773;
-    }
-    vec2 _789;
-    if (l.transform)
-    {
-        _789 = v * p.invScale;
-    }
-    else
-    {
-        _789 = v;
-    }
-    return _789;
+#line 233 "hexc/hextiling.glsl"
+    vec2 param = v;
+    vec2 param_1 = p.rot;
+    v = hexcRotateToTile(param, param_1);
+    return v;
 }
 
-#line 230 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, HexcLattice l)
+#line 248 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, HexcLattice l)
 {
-#line 230 "hexc/hextiling.glsl"
+#line 248 "hexc/hextiling.glsl"
     ivec2 param = id;
     HexcLattice param_1 = l;
     vec2 param_2;
     vec2 param_3;
     float param_4;
-    hexcStableTile(param, param_1, param_2, param_3, param_4);
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
     vec2 offset = param_2;
     HexcTap p;
     p.rot = param_3;
     p.invScale = param_4;
     vec2 param_5 = d;
     HexcTap param_6 = p;
-    HexcLattice param_7 = l;
-    vec2 _822 = hexcToTile(param_5, param_6, param_7);
-    p.st = (_822 + c) + offset;
-    vec2 param_8 = dSTdx;
-    HexcTap param_9 = p;
-    HexcLattice param_10 = l;
-    vec2 _834 = hexcToTile(param_8, param_9, param_10);
-    p.dx = _834;
-    vec2 param_11 = dSTdy;
-    HexcTap param_12 = p;
-    HexcLattice param_13 = l;
-    vec2 _842 = hexcToTile(param_11, param_12, param_13);
-    p.dy = _842;
+    vec2 _697 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_697 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _707 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _707;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _713 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _713;
     return p;
 }
 
-#line 240 "hexc/hextiling.glsl"
-HexcTap hexcStableTap(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, HexcLattice l, inout ivec2 id)
+#line 258 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, HexcLattice l, inout ivec2 id)
 {
-#line 240 "hexc/hextiling.glsl"
+#line 258 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -269,56 +205,56 @@ HexcTap hexcStableTap(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, 
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
     HexcLattice param_7 = l;
-    return hexcPlaceTile(param_2, param_3, param_4, param_5, param_6, param_7);
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 79 "hexc/hextiling.glsl"
+#line 88 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 79 "hexc/hextiling.glsl"
+#line 88 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _391;
+    int _377;
     if ((d < 0) && (a != 0))
     {
-        _391 = 3 - a;
+        _377 = 3 - a;
     }
     else
     {
-        _391 = a;
+        _377 = a;
     }
-    int i1 = _391;
-    int _402;
+    int i1 = _377;
+    int _388;
     if (i1 < 2)
     {
-        _402 = i1 + 1;
+        _388 = i1 + 1;
     }
     else
     {
-        _402 = 0;
+        _388 = 0;
     }
-    int vh = _402;
-    int _412;
+    int vh = _388;
+    int _398;
     if (i1 > 0)
     {
-        _412 = i1 - 1;
+        _398 = i1 - 1;
     }
     else
     {
-        _412 = 2;
+        _398 = 2;
     }
-    int vl = _412;
+    int vl = _398;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 249 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l)
+#line 267 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l)
 {
-#line 249 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
-    t.scaled = l.transform;
+    t.scaled = false;
     float kx = floor(st.x / 28.0);
     float ky = floor(st.y);
     vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
@@ -337,9 +273,9 @@ HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLatti
     vec2 param_7 = dSTdy;
     HexcLattice param_8 = l;
     ivec2 param_9;
-    HexcTap _960 = hexcStableTap(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
+    HexcTap _830 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
     t.id[0] = param_9;
-    t.tap[0] = _960;
+    t.tap[0] = _830;
     ivec2 param_10 = local[1];
     uvec2 param_11 = shift;
     vec2 param_12 = r;
@@ -347,9 +283,9 @@ HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLatti
     vec2 param_14 = dSTdy;
     HexcLattice param_15 = l;
     ivec2 param_16;
-    HexcTap _978 = hexcStableTap(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
+    HexcTap _848 = hexcStableTap_albedo(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
     t.id[1] = param_16;
-    t.tap[1] = _978;
+    t.tap[1] = _848;
     ivec2 param_17 = local[2];
     uvec2 param_18 = shift;
     vec2 param_19 = r;
@@ -357,19 +293,75 @@ HexcTiles hexcTilesStable(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLatti
     vec2 param_21 = dSTdy;
     HexcLattice param_22 = l;
     ivec2 param_23;
-    HexcTap _996 = hexcStableTap(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
+    HexcTap _866 = hexcStableTap_albedo(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
     t.id[2] = param_23;
-    t.tap[2] = _996;
+    t.tap[2] = _866;
     ivec2 param_24 = t.id[0];
     ivec2 param_25 = t.id[2];
     t.channel = hexcHexChannels(param_24, param_25);
     return t;
 }
 
-#line 340 "hexc/hextiling.glsl"
+#line 523 "hexc/hextiling.glsl"
+bvec3 hexcFetched_albedo(vec3 w)
+{
+#line 523 "hexc/hextiling.glsl"
+    return bvec3(true);
+}
+
+#line 504 "hexc/hextiling.glsl"
+vec3 hexcTileLods_albedo(HexcTiles t)
+{
+#line 504 "hexc/hextiling.glsl"
+    vec3 lods = vec3(0.0);
+    return lods;
+}
+
+#line 517 "hexc/hextiling.glsl"
+vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
+{
+#line 517 "hexc/hextiling.glsl"
+    return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
+}
+
+#line 530 "hexc/hextiling.glsl"
+void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
+{
+#line 530 "hexc/hextiling.glsl"
+    HexcTiles param = t;
+    vec3 lod = hexcTileLods_albedo(param);
+    c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
+    if (f.x)
+    {
+        HexcTap param_1 = t.tap[0];
+        float param_2 = lod.x;
+        c[0] = hexcFetch_albedo(param_1, param_2, SPIRV_Cross_Combinedtexsamp);
+    }
+    if (f.y)
+    {
+        HexcTap param_3 = t.tap[1];
+        float param_4 = lod.y;
+        c[1] = hexcFetch_albedo(param_3, param_4, SPIRV_Cross_Combinedtexsamp);
+    }
+    if (f.z)
+    {
+        HexcTap param_5 = t.tap[2];
+        float param_6 = lod.z;
+        c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
+    }
+}
+
+#line 418 "hexc/hextiling.glsl"
+vec3 hexcMetric_albedo(vec3 Dw, HexcBlend b)
+{
+#line 418 "hexc/hextiling.glsl"
+    return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(b.falloffContrast));
+}
+
+#line 358 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 340 "hexc/hextiling.glsl"
+#line 358 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -398,278 +390,50 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 356 "hexc/hextiling.glsl"
+#line 374 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 356 "hexc/hextiling.glsl"
-    float _1071;
+#line 374 "hexc/hextiling.glsl"
+    float _942;
     if (kInt > 0)
     {
-        _1071 = float(kInt);
+        _942 = float(kInt);
     }
     else
     {
-        _1071 = log(1.0 - r) / (-0.693147182464599609375);
+        _942 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _1071;
+    return _942;
 }
 
-#line 360 "hexc/hextiling.glsl"
+#line 378 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 360 "hexc/hextiling.glsl"
+#line 378 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
     vec3 m = (vec3(1.0) - s) * 2.0;
     vec3 base = max(vec3(0.0), s + (x * m));
-    vec3 _1108;
+    vec3 _979;
     if (kInt > 0)
     {
         vec3 param = base;
         int param_1 = kInt;
-        vec3 _1115 = hexcPowInt(param, param_1);
-        _1108 = _1115;
+        vec3 _986 = hexcPowInt(param, param_1);
+        _979 = _986;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _1108 = pow(base, vec3(hexcGainK(param_2, param_3)));
+        _979 = pow(base, vec3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _1108);
+    return (s * 0.5) + ((m * 0.25) * _979);
 }
 
-#line 429 "hexc/hextiling.glsl"
-bvec3 hexcAdaptiveTaps(vec3 w, HexcBlend b)
-{
-#line 429 "hexc/hextiling.glsl"
-    vec3 wn = w / vec3(max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30)));
-    vec3 _1272;
-    if (b.exponentInt > 0)
-    {
-        vec3 param = wn;
-        int param_1 = b.exponentInt;
-        vec3 _1280 = hexcPowInt(param, param_1);
-        _1272 = _1280;
-    }
-    else
-    {
-        _1272 = pow(wn, vec3(b.exponent));
-    }
-    vec3 wg = _1272;
-    float _1291;
-    if (b.metric)
-    {
-        _1291 = b.falloffContrast;
-    }
-    else
-    {
-        _1291 = 0.0;
-    }
-    float lo = 1.0 - _1291;
-    vec3 others = vec3((wg.x + wg.y) + wg.z) - wg;
-    vec3 U = wg / max(wg + (others * lo), vec3(1.0000000031710768509710513471353e-30));
-    vec3 L = (wg * lo) / max((wg * lo) + others, vec3(1.0000000031710768509710513471353e-30));
-    vec3 gU = U;
-    vec3 gL = L;
-    float k = 0.0;
-    bool _1351;
-    if (b.gain)
-    {
-        bool _1343 = b.gainInt > 0;
-        bool _1350;
-        if (!_1343)
-        {
-            _1350 = b.falloff != 0.5;
-        }
-        else
-        {
-            _1350 = _1343;
-        }
-        _1351 = _1350;
-    }
-    else
-    {
-        _1351 = b.gain;
-    }
-    if (_1351)
-    {
-        vec3 param_2 = U;
-        float param_3 = b.falloff;
-        int param_4 = b.gainInt;
-        gU = hexcGainCurve(param_2, param_3, param_4);
-        vec3 param_5 = L;
-        float param_6 = b.falloff;
-        int param_7 = b.gainInt;
-        gL = hexcGainCurve(param_5, param_6, param_7);
-        float param_8 = b.falloff;
-        int param_9 = b.gainInt;
-        k = hexcGainK(param_8, param_9);
-    }
-    vec3 Gup = gU / max((gU + vec3((gL.x + gL.y) + gL.z)) - gL, vec3(1.0000000031710768509710513471353e-30));
-    if (k > 0.0)
-    {
-        vec3 r1 = L.yzx / max(U, vec3(1.0000000031710768509710513471353e-30));
-        vec3 r2 = L.zxy / max(U, vec3(1.0000000031710768509710513471353e-30));
-        vec3 _1416;
-        if (b.gainInt > 0)
-        {
-            vec3 param_10 = r1;
-            int param_11 = b.gainInt;
-            vec3 _1424 = hexcPowInt(param_10, param_11);
-            _1416 = _1424;
-        }
-        else
-        {
-            _1416 = pow(r1, vec3(k));
-        }
-        vec3 p1 = _1416;
-        vec3 _1435;
-        if (b.gainInt > 0)
-        {
-            vec3 param_12 = r2;
-            int param_13 = b.gainInt;
-            vec3 _1443 = hexcPowInt(param_12, param_13);
-            _1435 = _1443;
-        }
-        else
-        {
-            _1435 = pow(r2, vec3(k));
-        }
-        vec3 p2 = _1435;
-        Gup = mix(Gup, vec3(1.0) / ((vec3(1.0) + p1) + p2), lessThan(max(U, max(L.yzx, L.zxy)), vec3(0.5)));
-    }
-    vec3 B = Gup - (log(max(vec3(1.0) - U, vec3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-    bool _1483 = w.x >= w.y;
-    bool _1491;
-    if (_1483)
-    {
-        _1491 = w.x >= w.z;
-    }
-    else
-    {
-        _1491 = _1483;
-    }
-    int _1492;
-    if (_1491)
-    {
-        _1492 = 0;
-    }
-    else
-    {
-        _1492 = (w.y >= w.z) ? 1 : 2;
-    }
-    int d = _1492;
-    int a = int(d == 0);
-    int c = (d == 2) ? 1 : 2;
-    bvec3 f = bvec3(true);
-    if ((Gup[a] + Gup[c]) < b.adaptiveError)
-    {
-        f[a] = false;
-        f[c] = false;
-    }
-    else
-    {
-        if (min(B[a], B[c]) < b.adaptiveError)
-        {
-            f[(B[a] <= B[c]) ? a : c] = false;
-        }
-    }
-    return f;
-}
-
-#line 496 "hexc/hextiling.glsl"
-bvec3 hexcFetched(vec3 w, HexcBlend b)
-{
-#line 496 "hexc/hextiling.glsl"
-    bvec3 _1677;
-    if (b.adaptive)
-    {
-        vec3 param = w;
-        HexcBlend param_1 = b;
-        _1677 = hexcAdaptiveTaps(param, param_1);
-    }
-    else
-    {
-        _1677 = bvec3(true, true, b.taps > 2);
-    }
-    return _1677;
-}
-
-#line 480 "hexc/hextiling.glsl"
-vec3 hexcTileLods(HexcTiles t, bool sharedLod, sampler2D SPIRV_Cross_Combinedtexsamp)
-{
-#line 480 "hexc/hextiling.glsl"
-    if (!sharedLod)
-    {
-        return vec3(0.0);
-    }
-    vec2 size = vec2(textureSize(SPIRV_Cross_Combinedtexsamp, 0));
-    vec2 ex = t.dx * size;
-    vec2 ey = t.dy * size;
-    float lod = 0.5 * log2(max(max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30));
-    vec3 _1629;
-    if (t.scaled)
-    {
-        _1629 = vec3(lod) + log2(vec3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
-    }
-    else
-    {
-        _1629 = vec3(lod);
-    }
-    return _1629;
-}
-
-#line 490 "hexc/hextiling.glsl"
-vec4 hexcFetch(HexcTap p, float lod, bool sharedLod, sampler2D SPIRV_Cross_Combinedtexsamp)
-{
-    vec4 _1650;
-    if (sharedLod)
-    {
-#line 490 "hexc/hextiling.glsl"
-        _1650 = textureLod(SPIRV_Cross_Combinedtexsamp, p.st, lod);
-    }
-    else
-    {
-        _1650 = textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
-    }
-    return _1650;
-}
-
-#line 503 "hexc/hextiling.glsl"
-void hexcFetchTaps(HexcTiles t, bvec3 f, bool sharedLod, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
-{
-#line 503 "hexc/hextiling.glsl"
-    HexcTiles param = t;
-    bool param_1 = sharedLod;
-    vec3 lod = hexcTileLods(param, param_1, SPIRV_Cross_Combinedtexsamp);
-    c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
-    if (f.x)
-    {
-        HexcTap param_2 = t.tap[0];
-        float param_3 = lod.x;
-        bool param_4 = sharedLod;
-        c[0] = hexcFetch(param_2, param_3, param_4, SPIRV_Cross_Combinedtexsamp);
-    }
-    if (f.y)
-    {
-        HexcTap param_5 = t.tap[1];
-        float param_6 = lod.y;
-        bool param_7 = sharedLod;
-        c[1] = hexcFetch(param_5, param_6, param_7, SPIRV_Cross_Combinedtexsamp);
-    }
-    if (f.z)
-    {
-        HexcTap param_8 = t.tap[2];
-        float param_9 = lod.z;
-        bool param_10 = sharedLod;
-        c[2] = hexcFetch(param_8, param_9, param_10, SPIRV_Cross_Combinedtexsamp);
-    }
-}
-
-#line 368 "hexc/hextiling.glsl"
+#line 386 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 368 "hexc/hextiling.glsl"
+#line 386 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -677,132 +441,60 @@ vec3 hexcGain3(vec3 x, float r, int kInt)
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 401 "hexc/hextiling.glsl"
-vec3 hexcBlendWeights(vec3 w, vec3 Dw, HexcBlend b)
+#line 425 "hexc/hextiling.glsl"
+vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 401 "hexc/hextiling.glsl"
-    vec3 _1161;
-    if (b.exponentInt > 0)
-    {
-        vec3 param = w;
-        int param_1 = b.exponentInt;
-        vec3 _1169 = hexcPowInt(param, param_1);
-        _1161 = _1169;
-    }
-    else
-    {
-        _1161 = pow(w, vec3(b.exponent));
-    }
-    vec3 wg = _1161;
-    vec3 _1180;
-    if (b.metric)
-    {
-        _1180 = mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(b.falloffContrast)) * wg;
-    }
-    else
-    {
-        _1180 = wg;
-    }
-    vec3 W = _1180;
+#line 425 "hexc/hextiling.glsl"
+    vec3 param = w;
+    int param_1 = 7;
+    vec3 _1041 = hexcPowInt(param, param_1);
+    vec3 wg = _1041;
+    vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1205;
+    vec3 _1057;
     if (sum > 0.0)
     {
-        _1205 = W / vec3(sum);
+        _1057 = W / vec3(sum);
     }
     else
     {
-        _1205 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1057 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1205;
-    bool _1239;
-    if (b.gain)
-    {
-        bool _1231 = b.gainInt > 0;
-        bool _1238;
-        if (!_1231)
-        {
-            _1238 = b.falloff != 0.5;
-        }
-        else
-        {
-            _1238 = _1231;
-        }
-        _1239 = _1238;
-    }
-    else
-    {
-        _1239 = b.gain;
-    }
-    if (_1239)
-    {
-        vec3 param_2 = W;
-        float param_3 = b.falloff;
-        int param_4 = b.gainInt;
-        W = hexcGain3(param_2, param_3, param_4);
-    }
+    W = _1057;
+    vec3 param_2 = W;
+    float param_3 = 0.5;
+    int param_4 = 2;
+    W = hexcGain3(param_2, param_3, param_4);
     return W;
 }
 
-#line 513 "hexc/hextiling.glsl"
-vec3 hexcTileHeights(HexcTiles t, HexcBlend b, sampler2D SPIRV_Cross_Combinedtexsamp)
-{
-#line 513 "hexc/hextiling.glsl"
-    HexcTiles param = t;
-    bvec3 param_1 = bvec3(true, true, b.taps > 2);
-    bool param_2 = b.sharedLod;
-    vec4 param_3[3];
-    hexcFetchTaps(param, param_1, param_2, param_3, SPIRV_Cross_Combinedtexsamp);
-    vec4 h[3] = param_3;
-    return vec3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
-}
-
-#line 470 "hexc/hextiling.glsl"
-vec3 hexcHeightBlend(vec3 W, vec3 h, float width)
-{
-#line 470 "hexc/hextiling.glsl"
-    vec3 a = max(h, vec3(0.0)) * W;
-    vec3 Wh = W * max((a - vec3(max(max(a.x, a.y), a.z))) + vec3(width), vec3(0.0));
-    return Wh / vec3((Wh.x + Wh.y) + Wh.z);
-}
-
-#line 89 "hexc/hextiling.glsl"
+#line 98 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 89 "hexc/hextiling.glsl"
+#line 98 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 526 "hexc/hextiling.glsl"
-vec4 hexcColor(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp, sampler2D SPIRV_Cross_CombinedheightTexsamp)
+#line 547 "hexc/hextiling.glsl"
+vec4 hexcColor_albedo(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 526 "hexc/hextiling.glsl"
+#line 547 "hexc/hextiling.glsl"
     vec3 param = t.w;
-    HexcBlend param_1 = b;
-    bvec3 f = hexcFetched(param, param_1);
-    HexcTiles param_2 = t;
-    bvec3 param_3 = f;
-    bool param_4 = b.sharedLod;
-    vec4 param_5[3];
-    hexcFetchTaps(param_2, param_3, param_4, param_5, SPIRV_Cross_Combinedtexsamp);
-    vec4 c[3] = param_5;
+    bvec3 f = hexcFetched_albedo(param);
+    HexcTiles param_1 = t;
+    bvec3 param_2 = f;
+    vec4 param_3[3];
+    hexcFetchTaps_albedo(param_1, param_2, param_3, SPIRV_Cross_Combinedtexsamp);
+    vec4 c[3] = param_3;
     vec3 Dw = vec3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
+    vec3 param_4 = Dw;
+    HexcBlend param_5 = b;
     vec3 param_6 = t.w * vec3(f);
-    vec3 param_7 = Dw;
-    HexcBlend param_8 = b;
-    vec3 W = hexcBlendWeights(param_6, param_7, param_8);
-    if (b.height)
-    {
-        HexcTiles param_9 = t;
-        HexcBlend param_10 = b;
-        vec3 param_11 = W;
-        vec3 param_12 = hexcTileHeights(param_9, param_10, SPIRV_Cross_CombinedheightTexsamp);
-        float param_13 = b.heightWidth;
-        W = hexcHeightBlend(param_11, param_12, param_13);
-    }
-    vec3 param_14 = W;
-    ivec3 param_15 = t.channel;
-    weights = hexcShowWeights(param_14, param_15);
+    vec3 param_7 = hexcMetric_albedo(param_4, param_5);
+    vec3 W = hexcBlendWeights_albedo(param_6, param_7);
+    vec3 param_8 = W;
+    ivec3 param_9 = t.channel;
+    weights = hexcShowWeights(param_8, param_9);
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
@@ -811,107 +503,81 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
 #line 20 "hexc/generated"
     HexcLattice lattice = hexcLattice();
-    lattice.rotate = true;
-    lattice.transform = false;
-    lattice.rotationSteps = 0;
-    lattice.offsetSteps = ivec2(0);
-    lattice.maskScale = 2;
-    lattice.triple = false;
     lattice.rotation = hexcParams.albedo_rotation;
     HexcBlend blend = hexcBlend();
-    blend.metric = true;
-    blend.gain = true;
-    blend.exponentInt = 7;
-    blend.gainInt = 2;
-    blend.taps = 3;
-    blend.sharedLod = false;
-    blend.height = false;
     blend.falloffContrast = hexcParams.albedo_falloffcontrast;
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     ivec2 param_3 = cell;
     HexcLattice param_4 = lattice;
-    HexcTiles param_5 = hexcTilesStable(param, param_1, param_2, param_3, param_4);
+    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
     HexcBlend param_6 = blend;
     vec4 param_7 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_8;
-    vec4 _2164 = hexcColor(param_5, param_6, param_7, param_8, hexcTex_albedo, hexcTex_albedo);
+    vec4 _1493 = hexcColor_albedo(param_5, param_6, param_7, param_8, hexcTex_albedo);
     weights = param_8;
-    return _2164;
+    return _1493;
 }
 
-#line 41 "hexc/generated"
+#line 28 "hexc/generated"
 vec4 hexc_albedo(vec2 uv, out vec3 weights)
 {
-#line 41 "hexc/generated"
+#line 28 "hexc/generated"
     vec2 st = uv * hexcParams.albedo_tiling;
     vec2 param = st;
     vec2 param_1 = dFdx(st);
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _2184 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1513 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2184;
+    return _1513;
 }
 
-#line 44 "hexc/generated"
+#line 31 "hexc/generated"
 vec4 hexc_albedo(vec2 uv)
 {
-#line 44 "hexc/generated"
+#line 31 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _2192 = hexc_albedo(param, param_1);
+    vec4 _1521 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _2192;
+    return _1521;
 }
 
-#line 520 "hexc/hextiling.glsl"
+#line 105 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 520 "hexc/hextiling.glsl"
-    vec4 _1777;
+#line 105 "hexc/hextiling.glsl"
+    vec4 _458;
     if (c == 0)
     {
-        _1777 = vec4(1.0, 0.0, 0.0, 0.0);
+        _458 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _1784;
+        vec4 _465;
         if (c == 1)
         {
-            _1784 = vec4(0.0, 1.0, 0.0, 0.0);
+            _465 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _1784 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _465 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _1777 = _1784;
+        _458 = _465;
     }
-    return _1777;
+    return _458;
 }
 
-#line 73 "hexc/generated"
+#line 47 "hexc/generated"
 float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 73 "hexc/generated"
+#line 47 "hexc/generated"
     HexcLattice lattice = hexcLattice();
-    lattice.rotate = true;
-    lattice.transform = false;
-    lattice.rotationSteps = 0;
-    lattice.offsetSteps = ivec2(0);
-    lattice.maskScale = 2;
-    lattice.triple = false;
     lattice.rotation = hexcParams.albedo_rotation;
     HexcBlend blend = hexcBlend();
-    blend.metric = true;
-    blend.gain = true;
-    blend.exponentInt = 7;
-    blend.gainInt = 2;
-    blend.taps = 3;
-    blend.sharedLod = false;
-    blend.height = false;
     blend.falloffContrast = hexcParams.roughness_falloffcontrast;
     vec2 param = st;
     vec2 param_1 = dx;
@@ -919,220 +585,217 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     ivec2 param_3 = cell;
     HexcLattice param_4 = lattice;
     int param_5 = 0;
-    HexcTiles param_6 = hexcTilesStable(param, param_1, param_2, param_3, param_4);
+    HexcTiles param_6 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
     HexcBlend param_7 = blend;
     vec4 param_8 = hexcChannel(param_5);
     vec3 param_9;
-    vec4 _2309 = hexcColor(param_6, param_7, param_8, param_9, hexcTex_roughness, hexcTex_roughness);
+    vec4 _1612 = hexcColor_albedo(param_6, param_7, param_8, param_9, hexcTex_roughness);
     weights = param_9;
-    return _2309.x;
+    return _1612.x;
 }
 
-#line 94 "hexc/generated"
+#line 55 "hexc/generated"
 float hexc_roughness(vec2 uv, out vec3 weights)
 {
-#line 94 "hexc/generated"
+#line 55 "hexc/generated"
     vec2 st = uv * hexcParams.albedo_tiling;
     vec2 param = st;
     vec2 param_1 = dFdx(st);
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _2329 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1632 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2329;
+    return _1632;
 }
 
-#line 97 "hexc/generated"
+#line 58 "hexc/generated"
 float hexc_roughness(vec2 uv)
 {
-#line 97 "hexc/generated"
+#line 58 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _2337 = hexc_roughness(param, param_1);
+    float _1640 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _2337;
+    return _1640;
 }
 
-#line 570 "hexc/hextiling.glsl"
+#line 591 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 570 "hexc/hextiling.glsl"
+#line 591 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1906;
+    float _1275;
     if (flipY)
     {
-        _1906 = -vM.y;
+        _1275 = -vM.y;
     }
     else
     {
-        _1906 = vM.y;
+        _1275 = vM.y;
     }
-    return (-vec2(vM.x, _1906)) / vec2(zMa);
+    return (-vec2(vM.x, _1275)) / vec2(zMa);
 }
 
-#line 103 "hexc/hextiling.glsl"
+#line 118 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 103 "hexc/hextiling.glsl"
+#line 118 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 578 "hexc/hextiling.glsl"
+#line 599 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 578 "hexc/hextiling.glsl"
+#line 599 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1939;
+    vec2 _1308;
     if (scaled)
     {
-        _1939 = d * p.invScale;
+        _1308 = d * p.invScale;
     }
     else
     {
-        _1939 = d;
+        _1308 = d;
     }
-    return _1939;
+    return _1308;
 }
 
-#line 586 "hexc/hextiling.glsl"
-vec2 hexcDeriv(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp, sampler2D SPIRV_Cross_CombinedheightTexsamp)
+#line 425 "hexc/hextiling.glsl"
+vec3 hexcBlendWeights_normal(vec3 w, vec3 M)
 {
-#line 586 "hexc/hextiling.glsl"
+#line 425 "hexc/hextiling.glsl"
+    vec3 param = w;
+    int param_1 = 7;
+    vec3 _1089 = hexcPowInt(param, param_1);
+    vec3 wg = _1089;
+    vec3 W = M * wg;
+    float sum = (W.x + W.y) + W.z;
+    vec3 _1105;
+    if (sum > 0.0)
+    {
+        _1105 = W / vec3(sum);
+    }
+    else
+    {
+        _1105 = wg / vec3((wg.x + wg.y) + wg.z);
+    }
+    W = _1105;
+    return W;
+}
+
+#line 607 "hexc/hextiling.glsl"
+vec2 hexcDeriv_normal(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
+{
+#line 607 "hexc/hextiling.glsl"
     vec3 param = t.w;
-    HexcBlend param_1 = b;
-    bvec3 f = hexcFetched(param, param_1);
-    HexcTiles param_2 = t;
-    bool param_3 = b.sharedLod;
-    vec3 lod = hexcTileLods(param_2, param_3, SPIRV_Cross_Combinedtexsamp);
+    bvec3 f = hexcFetched_albedo(param);
+    HexcTiles param_1 = t;
+    vec3 lod = hexcTileLods_albedo(param_1);
     vec2 d1 = vec2(0.0);
     vec2 d2 = vec2(0.0);
     vec2 d3 = vec2(0.0);
     if (f.x)
     {
-        HexcTap param_4 = t.tap[0];
-        float param_5 = lod.x;
-        bool param_6 = b.sharedLod;
-        vec4 param_7 = hexcFetch(param_4, param_5, param_6, SPIRV_Cross_Combinedtexsamp);
-        HexcTap param_8 = t.tap[0];
-        bool param_9 = t.scaled;
-        bool param_10 = flipY;
-        d1 = hexcTapDeriv(param_7, param_8, param_9, param_10);
+        HexcTap param_2 = t.tap[0];
+        float param_3 = lod.x;
+        vec4 param_4 = hexcFetch_albedo(param_2, param_3, SPIRV_Cross_Combinedtexsamp);
+        HexcTap param_5 = t.tap[0];
+        bool param_6 = t.scaled;
+        bool param_7 = flipY;
+        d1 = hexcTapDeriv(param_4, param_5, param_6, param_7);
     }
     if (f.y)
     {
+        HexcTap param_8 = t.tap[1];
+        float param_9 = lod.y;
+        vec4 param_10 = hexcFetch_albedo(param_8, param_9, SPIRV_Cross_Combinedtexsamp);
         HexcTap param_11 = t.tap[1];
-        float param_12 = lod.y;
-        bool param_13 = b.sharedLod;
-        vec4 param_14 = hexcFetch(param_11, param_12, param_13, SPIRV_Cross_Combinedtexsamp);
-        HexcTap param_15 = t.tap[1];
-        bool param_16 = t.scaled;
-        bool param_17 = flipY;
-        d2 = hexcTapDeriv(param_14, param_15, param_16, param_17);
+        bool param_12 = t.scaled;
+        bool param_13 = flipY;
+        d2 = hexcTapDeriv(param_10, param_11, param_12, param_13);
     }
     if (f.z)
     {
-        HexcTap param_18 = t.tap[2];
-        float param_19 = lod.z;
-        bool param_20 = b.sharedLod;
-        vec4 param_21 = hexcFetch(param_18, param_19, param_20, SPIRV_Cross_Combinedtexsamp);
-        HexcTap param_22 = t.tap[2];
-        bool param_23 = t.scaled;
-        bool param_24 = flipY;
-        d3 = hexcTapDeriv(param_21, param_22, param_23, param_24);
+        HexcTap param_14 = t.tap[2];
+        float param_15 = lod.z;
+        vec4 param_16 = hexcFetch_albedo(param_14, param_15, SPIRV_Cross_Combinedtexsamp);
+        HexcTap param_17 = t.tap[2];
+        bool param_18 = t.scaled;
+        bool param_19 = flipY;
+        d3 = hexcTapDeriv(param_16, param_17, param_18, param_19);
     }
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-    vec3 param_25 = t.w * vec3(f);
-    vec3 param_26 = sqrt(D / (vec3(1.0) + D));
-    HexcBlend param_27 = b;
-    vec3 W = hexcBlendWeights(param_25, param_26, param_27);
-    if (b.height)
-    {
-        HexcTiles param_28 = t;
-        HexcBlend param_29 = b;
-        vec3 param_30 = W;
-        vec3 param_31 = hexcTileHeights(param_28, param_29, SPIRV_Cross_CombinedheightTexsamp);
-        float param_32 = b.heightWidth;
-        W = hexcHeightBlend(param_30, param_31, param_32);
-    }
-    vec3 param_33 = W;
-    ivec3 param_34 = t.channel;
-    weights = hexcShowWeights(param_33, param_34);
+    vec3 param_20 = sqrt(D / (vec3(1.0) + D));
+    HexcBlend param_21 = b;
+    vec3 param_22 = t.w * vec3(f);
+    vec3 param_23 = hexcMetric_albedo(param_20, param_21);
+    vec3 W = hexcBlendWeights_normal(param_22, param_23);
+    vec3 param_24 = W;
+    ivec3 param_25 = t.channel;
+    weights = hexcShowWeights(param_24, param_25);
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 46 "hexc/generated"
+#line 33 "hexc/generated"
 vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 46 "hexc/generated"
+#line 33 "hexc/generated"
     HexcLattice lattice = hexcLattice();
-    lattice.rotate = true;
-    lattice.transform = false;
-    lattice.rotationSteps = 0;
-    lattice.offsetSteps = ivec2(0);
-    lattice.maskScale = 2;
-    lattice.triple = false;
     lattice.rotation = hexcParams.albedo_rotation;
     HexcBlend blend = hexcBlend();
-    blend.metric = true;
-    blend.gain = false;
-    blend.exponentInt = 7;
-    blend.gainInt = 0;
-    blend.taps = 3;
-    blend.sharedLod = false;
-    blend.height = false;
     blend.falloffContrast = hexcParams.normal_falloffcontrast;
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     ivec2 param_3 = cell;
     HexcLattice param_4 = lattice;
-    HexcTiles param_5 = hexcTilesStable(param, param_1, param_2, param_3, param_4);
+    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
     HexcBlend param_6 = blend;
     bool param_7 = false;
     vec3 param_8;
-    vec2 _2236 = hexcDeriv(param_5, param_6, param_7, param_8, hexcTex_normal, hexcTex_normal);
+    vec2 _1552 = hexcDeriv_normal(param_5, param_6, param_7, param_8, hexcTex_normal);
     weights = param_8;
-    return _2236;
+    return _1552;
 }
 
-#line 67 "hexc/generated"
+#line 41 "hexc/generated"
 vec2 hexc_normal(vec2 uv, out vec3 weights)
 {
-#line 67 "hexc/generated"
+#line 41 "hexc/generated"
     vec2 st = uv * hexcParams.albedo_tiling;
     vec2 param = st;
     vec2 param_1 = dFdx(st);
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _2255 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _1571 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2255;
+    return _1571;
 }
 
-#line 70 "hexc/generated"
+#line 44 "hexc/generated"
 vec2 hexc_normal(vec2 uv)
 {
-#line 70 "hexc/generated"
+#line 44 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _2263 = hexc_normal(param, param_1);
+    vec2 _1579 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _2263;
+    return _1579;
 }
 
-#line 648 "hexc/hextiling.glsl"
+#line 668 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 648 "hexc/hextiling.glsl"
+#line 668 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

@@ -46,13 +46,6 @@ struct spvUnsafeArray
     }
 };
 
-// Implementation of the GLSL radians() function
-template<typename T>
-inline T radians(T d)
-{
-    return d * T(0.01745329251);
-}
-
 struct HexcLattice
 {
     float rotation;
@@ -115,7 +108,7 @@ struct HexcParams
     float roughness_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1699 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1153 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct rock_frag_out
 {
@@ -129,27 +122,27 @@ struct rock_frag_in
     float4 v_tangent [[user(locn2)]];
 };
 
-#line 127 "hexc/hextiling.glsl"
+#line 142 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcLattice hexcLattice()
 {
-#line 127 "hexc/hextiling.glsl"
+#line 142 "hexc/hextiling.glsl"
     return HexcLattice{ 0.0, false, false, float2(-180.0, 180.0), 0, float2(1.0), 1.0, int2(0), 1, false, 1.0 };
 }
 
-#line 394 "hexc/hextiling.glsl"
+#line 412 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcBlend hexcBlend()
 {
-#line 394 "hexc/hextiling.glsl"
+#line 412 "hexc/hextiling.glsl"
     return HexcBlend{ 0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, 0.0039215688593685626983642578125, false, float4(0.0), 1.0 };
 }
 
-#line 35 "hexc/hextiling.glsl"
+#line 44 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsafeArray<int2, 3>& id)
 {
-#line 35 "hexc/hextiling.glsl"
+#line 44 "hexc/hextiling.glsl"
     int2 baseId = int2(floor(skewed));
     float3 temp = float3(skewed - floor(skewed), 0.0);
     temp.z = (1.0 - temp.x) - temp.y;
@@ -162,27 +155,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 203 "hexc/hextiling.glsl"
+#line 218 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 203 "hexc/hextiling.glsl"
+#line 218 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 210 "hexc/hextiling.glsl"
+#line 225 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 210 "hexc/hextiling.glsl"
+#line 225 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 172 "hexc/hextiling.glsl"
+#line 187 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 172 "hexc/hextiling.glsl"
+#line 187 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -194,138 +187,74 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 186 "hexc/hextiling.glsl"
+#line 201 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-void hexcStableTile(thread const int2& id, thread const HexcLattice& l, thread float2& offset, thread float2& rot, thread float& invScale)
+void hexcStableTile_albedo(thread const int2& id, thread const HexcLattice& l, thread float2& offset, thread float2& rot, thread float& invScale)
 {
-#line 186 "hexc/hextiling.glsl"
+#line 201 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _590 = hexcPcg3d(param);
-    float3 u = float3(_590 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _601 = hexcPcg3d(param);
+    float3 u = float3(_601 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * l.rotation;
     invScale = 1.0;
-    if (bool(l.transform))
-    {
-        float2 steps = float2(l.offsetSteps);
-        offset = select(offset, floor(offset * steps) / steps, steps > float2(0.0)) * l.offset;
-        float _639;
-        if (l.rotationSteps > 0)
-        {
-            _639 = floor(u.z * float(l.rotationSteps)) / float(l.rotationSteps);
-        }
-        else
-        {
-            _639 = u.z;
-        }
-        float a = _639;
-        angle = radians(mix(l.rotationRange.x, l.rotationRange.y, a)) * l.rotation;
-        uint3 param_1 = uint3(uint2(id), 1u);
-        uint3 _674 = hexcPcg3d(param_1);
-        float v = float(_674.x >> 8u) * 5.9604644775390625e-08;
-        invScale = 1.0 / mix(l.scaleRange.x, l.scaleRange.y, v);
-    }
-    float2 _689;
-    if (bool(l.rotate))
-    {
-        _689 = float2(cos(angle), sin(angle));
-    }
-    else
-    {
-        _689 = float2(1.0, 0.0);
-    }
-    rot = _689;
+    rot = float2(cos(angle), sin(angle));
 }
 
-#line 95 "hexc/hextiling.glsl"
+#line 110 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 95 "hexc/hextiling.glsl"
+#line 110 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 216 "hexc/hextiling.glsl"
+#line 233 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-float2 hexcToTile(thread float2& v, thread const HexcTap& p, thread const HexcLattice& l)
+float2 hexcToTile_albedo(thread float2& v, thread const HexcTap& p)
 {
-#line 216 "hexc/hextiling.glsl"
-    if (bool(l.rotate))
-    {
-        bool square = l.aspect == 1.0;
-        float2 _753;
-        if (square)
-        {
-            _753 = v;
-        }
-        else
-        {
-            _753 = float2(v.x * l.aspect, v.y);
-        }
-        float2 param = _753;
-        float2 param_1 = p.rot;
-        v = hexcRotateToTile(param, param_1);
-        float2 _773;
-        if (square)
-        {
-            _773 = v;
-        }
-        else
-        {
-            _773 = float2(v.x / l.aspect, v.y);
-        }
-        v = _773;
-    }
-    float2 _789;
-    if (bool(l.transform))
-    {
-        _789 = v * p.invScale;
-    }
-    else
-    {
-        _789 = v;
-    }
-    return _789;
+#line 233 "hexc/hextiling.glsl"
+    float2 param = v;
+    float2 param_1 = p.rot;
+    v = hexcRotateToTile(param, param_1);
+    return v;
 }
 
-#line 230 "hexc/hextiling.glsl"
+#line 248 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l)
+HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l)
 {
-#line 230 "hexc/hextiling.glsl"
+#line 248 "hexc/hextiling.glsl"
     int2 param = id;
     HexcLattice param_1 = l;
     float2 param_2;
     float2 param_3;
     float param_4;
-    hexcStableTile(param, param_1, param_2, param_3, param_4);
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
     float2 offset = param_2;
     HexcTap p;
     p.rot = param_3;
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    HexcLattice param_7 = l;
-    float2 _822 = hexcToTile(param_5, param_6, param_7);
-    p.st = (_822 + c) + offset;
-    float2 param_8 = dSTdx;
-    HexcTap param_9 = p;
-    HexcLattice param_10 = l;
-    float2 _834 = hexcToTile(param_8, param_9, param_10);
-    p.dx = _834;
-    float2 param_11 = dSTdy;
-    HexcTap param_12 = p;
-    HexcLattice param_13 = l;
-    float2 _842 = hexcToTile(param_11, param_12, param_13);
-    p.dy = _842;
+    float2 _697 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_697 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _707 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _707;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _713 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _713;
     return p;
 }
 
-#line 240 "hexc/hextiling.glsl"
+#line 258 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcStableTap(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l, thread int2& id)
+HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l, thread int2& id)
 {
-#line 240 "hexc/hextiling.glsl"
+#line 258 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -335,58 +264,58 @@ HexcTap hexcStableTap(thread const int2& local, thread const uint2& shift, threa
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
     HexcLattice param_7 = l;
-    return hexcPlaceTile(param_2, param_3, param_4, param_5, param_6, param_7);
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 79 "hexc/hextiling.glsl"
+#line 88 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 79 "hexc/hextiling.glsl"
+#line 88 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _391;
+    int _377;
     if ((d < 0) && (a != 0))
     {
-        _391 = 3 - a;
+        _377 = 3 - a;
     }
     else
     {
-        _391 = a;
+        _377 = a;
     }
-    int i1 = _391;
-    int _402;
+    int i1 = _377;
+    int _388;
     if (i1 < 2)
     {
-        _402 = i1 + 1;
+        _388 = i1 + 1;
     }
     else
     {
-        _402 = 0;
+        _388 = 0;
     }
-    int vh = _402;
-    int _412;
+    int vh = _388;
+    int _398;
     if (i1 > 0)
     {
-        _412 = i1 - 1;
+        _398 = i1 - 1;
     }
     else
     {
-        _412 = 2;
+        _398 = 2;
     }
-    int vl = _412;
+    int vl = _398;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 249 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, thread const HexcLattice& l)
+HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, thread const HexcLattice& l)
 {
-#line 249 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
-    t.scaled = short(bool(l.transform));
+    t.scaled = short(false);
     float kx = floor(st.x / 28.0);
     float ky = floor(st.y);
     float2 r = float2(st.x - (28.0 * kx), st.y - ky);
@@ -406,9 +335,9 @@ HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, t
     float2 param_7 = dSTdy;
     HexcLattice param_8 = l;
     int2 param_9;
-    HexcTap _960 = hexcStableTap(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
+    HexcTap _830 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
     t.id[0] = param_9;
-    t.tap[0] = _960;
+    t.tap[0] = _830;
     int2 param_10 = local[1];
     uint2 param_11 = shift;
     float2 param_12 = r;
@@ -416,9 +345,9 @@ HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, t
     float2 param_14 = dSTdy;
     HexcLattice param_15 = l;
     int2 param_16;
-    HexcTap _978 = hexcStableTap(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
+    HexcTap _848 = hexcStableTap_albedo(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
     t.id[1] = param_16;
-    t.tap[1] = _978;
+    t.tap[1] = _848;
     int2 param_17 = local[2];
     uint2 param_18 = shift;
     float2 param_19 = r;
@@ -426,20 +355,81 @@ HexcTiles hexcTilesStable(thread const float2& st, thread const float2& dSTdx, t
     float2 param_21 = dSTdy;
     HexcLattice param_22 = l;
     int2 param_23;
-    HexcTap _996 = hexcStableTap(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
+    HexcTap _866 = hexcStableTap_albedo(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
     t.id[2] = param_23;
-    t.tap[2] = _996;
+    t.tap[2] = _866;
     int2 param_24 = t.id[0];
     int2 param_25 = t.id[2];
     t.channel = hexcHexChannels(param_24, param_25);
     return t;
 }
 
-#line 340 "hexc/hextiling.glsl"
+#line 523 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+bool3 hexcFetched_albedo(thread const float3& w)
+{
+#line 523 "hexc/hextiling.glsl"
+    return bool3(true);
+}
+
+#line 504 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+float3 hexcTileLods_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
+{
+#line 504 "hexc/hextiling.glsl"
+    float3 lods = float3(0.0);
+    return lods;
+}
+
+#line 517 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
+{
+#line 517 "hexc/hextiling.glsl"
+    return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
+}
+
+#line 530 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
+{
+#line 530 "hexc/hextiling.glsl"
+    HexcTiles param = t;
+    float3 lod = hexcTileLods_albedo(tex, samp, param);
+    c = _1153;
+    if (f.x)
+    {
+        HexcTap param_1 = t.tap[0];
+        float param_2 = lod.x;
+        c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
+    }
+    if (f.y)
+    {
+        HexcTap param_3 = t.tap[1];
+        float param_4 = lod.y;
+        c[1] = hexcFetch_albedo(tex, samp, param_3, param_4);
+    }
+    if (f.z)
+    {
+        HexcTap param_5 = t.tap[2];
+        float param_6 = lod.z;
+        c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
+    }
+}
+
+#line 418 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+float3 hexcMetric_albedo(thread const float3& Dw, thread const HexcBlend& b)
+{
+#line 418 "hexc/hextiling.glsl"
+    return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(b.falloffContrast));
+}
+
+#line 358 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 340 "hexc/hextiling.glsl"
+#line 358 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -468,286 +458,53 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 356 "hexc/hextiling.glsl"
+#line 374 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcGainK(thread const float& r, thread const int& kInt)
 {
-#line 356 "hexc/hextiling.glsl"
-    float _1071;
+#line 374 "hexc/hextiling.glsl"
+    float _942;
     if (kInt > 0)
     {
-        _1071 = float(kInt);
+        _942 = float(kInt);
     }
     else
     {
-        _1071 = log(1.0 - r) / (-0.693147182464599609375);
+        _942 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _1071;
+    return _942;
 }
 
-#line 360 "hexc/hextiling.glsl"
+#line 378 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 360 "hexc/hextiling.glsl"
+#line 378 "hexc/hextiling.glsl"
     float3 s = step(float3(0.5), x) * 2.0;
     float3 m = (float3(1.0) - s) * 2.0;
     float3 base = fast::max(float3(0.0), s + (x * m));
-    float3 _1108;
+    float3 _979;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _1115 = hexcPowInt(param, param_1);
-        _1108 = _1115;
+        float3 _986 = hexcPowInt(param, param_1);
+        _979 = _986;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _1108 = pow(base, float3(hexcGainK(param_2, param_3)));
+        _979 = pow(base, float3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _1108);
+    return (s * 0.5) + ((m * 0.25) * _979);
 }
 
-#line 429 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-bool3 hexcAdaptiveTaps(thread const float3& w, thread const HexcBlend& b)
-{
-#line 429 "hexc/hextiling.glsl"
-    float3 wn = w / float3(fast::max(fast::max(w.x, w.y), fast::max(w.z, 1.0000000031710768509710513471353e-30)));
-    float3 _1272;
-    if (b.exponentInt > 0)
-    {
-        float3 param = wn;
-        int param_1 = b.exponentInt;
-        float3 _1280 = hexcPowInt(param, param_1);
-        _1272 = _1280;
-    }
-    else
-    {
-        _1272 = pow(wn, float3(b.exponent));
-    }
-    float3 wg = _1272;
-    float _1291;
-    if (bool(b.metric))
-    {
-        _1291 = b.falloffContrast;
-    }
-    else
-    {
-        _1291 = 0.0;
-    }
-    float lo = 1.0 - _1291;
-    float3 others = float3((wg.x + wg.y) + wg.z) - wg;
-    float3 U = wg / fast::max(wg + (others * lo), float3(1.0000000031710768509710513471353e-30));
-    float3 L = (wg * lo) / fast::max((wg * lo) + others, float3(1.0000000031710768509710513471353e-30));
-    float3 gU = U;
-    float3 gL = L;
-    float k = 0.0;
-    bool _1351;
-    if (bool(b.gain))
-    {
-        bool _1343 = b.gainInt > 0;
-        bool _1350;
-        if (!_1343)
-        {
-            _1350 = b.falloff != 0.5;
-        }
-        else
-        {
-            _1350 = _1343;
-        }
-        _1351 = _1350;
-    }
-    else
-    {
-        _1351 = bool(b.gain);
-    }
-    if (_1351)
-    {
-        float3 param_2 = U;
-        float param_3 = b.falloff;
-        int param_4 = b.gainInt;
-        gU = hexcGainCurve(param_2, param_3, param_4);
-        float3 param_5 = L;
-        float param_6 = b.falloff;
-        int param_7 = b.gainInt;
-        gL = hexcGainCurve(param_5, param_6, param_7);
-        float param_8 = b.falloff;
-        int param_9 = b.gainInt;
-        k = hexcGainK(param_8, param_9);
-    }
-    float3 Gup = gU / fast::max((gU + float3((gL.x + gL.y) + gL.z)) - gL, float3(1.0000000031710768509710513471353e-30));
-    if (k > 0.0)
-    {
-        float3 r1 = L.yzx / fast::max(U, float3(1.0000000031710768509710513471353e-30));
-        float3 r2 = L.zxy / fast::max(U, float3(1.0000000031710768509710513471353e-30));
-        float3 _1416;
-        if (b.gainInt > 0)
-        {
-            float3 param_10 = r1;
-            int param_11 = b.gainInt;
-            float3 _1424 = hexcPowInt(param_10, param_11);
-            _1416 = _1424;
-        }
-        else
-        {
-            _1416 = pow(r1, float3(k));
-        }
-        float3 p1 = _1416;
-        float3 _1435;
-        if (b.gainInt > 0)
-        {
-            float3 param_12 = r2;
-            int param_13 = b.gainInt;
-            float3 _1443 = hexcPowInt(param_12, param_13);
-            _1435 = _1443;
-        }
-        else
-        {
-            _1435 = pow(r2, float3(k));
-        }
-        float3 p2 = _1435;
-        Gup = select(Gup, float3(1.0) / ((float3(1.0) + p1) + p2), fast::max(U, fast::max(L.yzx, L.zxy)) < float3(0.5));
-    }
-    float3 B = Gup - (log(fast::max(float3(1.0) - U, float3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-    bool _1483 = w.x >= w.y;
-    bool _1491;
-    if (_1483)
-    {
-        _1491 = w.x >= w.z;
-    }
-    else
-    {
-        _1491 = _1483;
-    }
-    int _1492;
-    if (_1491)
-    {
-        _1492 = 0;
-    }
-    else
-    {
-        _1492 = (w.y >= w.z) ? 1 : 2;
-    }
-    int d = _1492;
-    int a = int(d == 0);
-    int c = (d == 2) ? 1 : 2;
-    bool3 f = bool3(true);
-    if ((Gup[a] + Gup[c]) < b.adaptiveError)
-    {
-        f[a] = false;
-        f[c] = false;
-    }
-    else
-    {
-        if (fast::min(B[a], B[c]) < b.adaptiveError)
-        {
-            f[(B[a] <= B[c]) ? a : c] = false;
-        }
-    }
-    return f;
-}
-
-#line 496 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-bool3 hexcFetched(thread const float3& w, thread const HexcBlend& b)
-{
-#line 496 "hexc/hextiling.glsl"
-    bool3 _1677;
-    if (bool(b.adaptive))
-    {
-        float3 param = w;
-        HexcBlend param_1 = b;
-        _1677 = hexcAdaptiveTaps(param, param_1);
-    }
-    else
-    {
-        _1677 = bool3(true, true, b.taps > 2);
-    }
-    return _1677;
-}
-
-#line 480 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-float3 hexcTileLods(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& sharedLod)
-{
-#line 480 "hexc/hextiling.glsl"
-    if (!sharedLod)
-    {
-        return float3(0.0);
-    }
-    float2 size = float2(int2(tex.get_width(), tex.get_height()));
-    float2 ex = t.dx * size;
-    float2 ey = t.dy * size;
-    float lod = 0.5 * log2(fast::max(fast::max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30));
-    float3 _1629;
-    if (bool(t.scaled))
-    {
-        _1629 = float3(lod) + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
-    }
-    else
-    {
-        _1629 = float3(lod);
-    }
-    return _1629;
-}
-
-#line 490 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-float4 hexcFetch(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod, thread const bool& sharedLod)
-{
-    float4 _1650;
-    if (sharedLod)
-    {
-#line 490 "hexc/hextiling.glsl"
-        _1650 = tex.sample(samp, p.st, level(lod));
-    }
-    else
-    {
-        _1650 = tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
-    }
-    return _1650;
-}
-
-#line 503 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-void hexcFetchTaps(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread const bool& sharedLod, thread spvUnsafeArray<float4, 3>& c)
-{
-#line 503 "hexc/hextiling.glsl"
-    HexcTiles param = t;
-    bool param_1 = sharedLod;
-    float3 lod = hexcTileLods(tex, samp, param, param_1);
-    c = _1699;
-    if (f.x)
-    {
-        HexcTap param_2 = t.tap[0];
-        float param_3 = lod.x;
-        bool param_4 = sharedLod;
-        c[0] = hexcFetch(tex, samp, param_2, param_3, param_4);
-    }
-    if (f.y)
-    {
-        HexcTap param_5 = t.tap[1];
-        float param_6 = lod.y;
-        bool param_7 = sharedLod;
-        c[1] = hexcFetch(tex, samp, param_5, param_6, param_7);
-    }
-    if (f.z)
-    {
-        HexcTap param_8 = t.tap[2];
-        float param_9 = lod.z;
-        bool param_10 = sharedLod;
-        c[2] = hexcFetch(tex, samp, param_8, param_9, param_10);
-    }
-}
-
-#line 368 "hexc/hextiling.glsl"
+#line 386 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGain3(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 368 "hexc/hextiling.glsl"
+#line 386 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -755,139 +512,64 @@ float3 hexcGain3(thread const float3& x, thread const float& r, thread const int
     return res / float3((res.x + res.y) + res.z);
 }
 
-#line 401 "hexc/hextiling.glsl"
+#line 425 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-float3 hexcBlendWeights(thread const float3& w, thread const float3& Dw, thread const HexcBlend& b)
+float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
 {
-#line 401 "hexc/hextiling.glsl"
-    float3 _1161;
-    if (b.exponentInt > 0)
-    {
-        float3 param = w;
-        int param_1 = b.exponentInt;
-        float3 _1169 = hexcPowInt(param, param_1);
-        _1161 = _1169;
-    }
-    else
-    {
-        _1161 = pow(w, float3(b.exponent));
-    }
-    float3 wg = _1161;
-    float3 _1180;
-    if (bool(b.metric))
-    {
-        _1180 = mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(b.falloffContrast)) * wg;
-    }
-    else
-    {
-        _1180 = wg;
-    }
-    float3 W = _1180;
+#line 425 "hexc/hextiling.glsl"
+    float3 param = w;
+    int param_1 = 7;
+    float3 _1041 = hexcPowInt(param, param_1);
+    float3 wg = _1041;
+    float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1205;
+    float3 _1057;
     if (sum > 0.0)
     {
-        _1205 = W / float3(sum);
+        _1057 = W / float3(sum);
     }
     else
     {
-        _1205 = wg / float3((wg.x + wg.y) + wg.z);
+        _1057 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1205;
-    bool _1239;
-    if (bool(b.gain))
-    {
-        bool _1231 = b.gainInt > 0;
-        bool _1238;
-        if (!_1231)
-        {
-            _1238 = b.falloff != 0.5;
-        }
-        else
-        {
-            _1238 = _1231;
-        }
-        _1239 = _1238;
-    }
-    else
-    {
-        _1239 = bool(b.gain);
-    }
-    if (_1239)
-    {
-        float3 param_2 = W;
-        float param_3 = b.falloff;
-        int param_4 = b.gainInt;
-        W = hexcGain3(param_2, param_3, param_4);
-    }
+    W = _1057;
+    float3 param_2 = W;
+    float param_3 = 0.5;
+    int param_4 = 2;
+    W = hexcGain3(param_2, param_3, param_4);
     return W;
 }
 
-#line 513 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-float3 hexcTileHeights(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b)
-{
-#line 513 "hexc/hextiling.glsl"
-    HexcTiles param = t;
-    bool3 param_1 = bool3(true, true, b.taps > 2);
-    bool param_2 = bool(b.sharedLod);
-    spvUnsafeArray<float4, 3> param_3;
-    hexcFetchTaps(tex, samp, param, param_1, param_2, param_3);
-    spvUnsafeArray<float4, 3> h;
-    h = param_3;
-    return float3(dot(h[0], b.heightLuma), dot(h[1], b.heightLuma), dot(h[2], b.heightLuma));
-}
-
-#line 470 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-float3 hexcHeightBlend(thread const float3& W, thread const float3& h, thread const float& width)
-{
-#line 470 "hexc/hextiling.glsl"
-    float3 a = fast::max(h, float3(0.0)) * W;
-    float3 Wh = W * fast::max((a - float3(fast::max(fast::max(a.x, a.y), a.z))) + float3(width), float3(0.0));
-    return Wh / float3((Wh.x + Wh.y) + Wh.z);
-}
-
-#line 89 "hexc/hextiling.glsl"
+#line 98 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 89 "hexc/hextiling.glsl"
+#line 98 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 526 "hexc/hextiling.glsl"
+#line 547 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-float4 hexcColor(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const float4& luma, texture2d<float> heightTex, thread float3& weights)
+float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const float4& luma, texture2d<float> heightTex, thread float3& weights)
 {
-#line 526 "hexc/hextiling.glsl"
+#line 547 "hexc/hextiling.glsl"
     float3 param = t.w;
-    HexcBlend param_1 = b;
-    bool3 f = hexcFetched(param, param_1);
-    HexcTiles param_2 = t;
-    bool3 param_3 = f;
-    bool param_4 = bool(b.sharedLod);
-    spvUnsafeArray<float4, 3> param_5;
-    hexcFetchTaps(tex, samp, param_2, param_3, param_4, param_5);
+    bool3 f = hexcFetched_albedo(param);
+    HexcTiles param_1 = t;
+    bool3 param_2 = f;
+    spvUnsafeArray<float4, 3> param_3;
+    hexcFetchTaps_albedo(tex, samp, param_1, param_2, param_3);
     spvUnsafeArray<float4, 3> c;
-    c = param_5;
+    c = param_3;
     float3 Dw = float3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
+    float3 param_4 = Dw;
+    HexcBlend param_5 = b;
     float3 param_6 = t.w * float3(f);
-    float3 param_7 = Dw;
-    HexcBlend param_8 = b;
-    float3 W = hexcBlendWeights(param_6, param_7, param_8);
-    if (bool(b.height))
-    {
-        HexcTiles param_9 = t;
-        HexcBlend param_10 = b;
-        float3 param_11 = W;
-        float3 param_12 = hexcTileHeights(heightTex, samp, param_9, param_10);
-        float param_13 = b.heightWidth;
-        W = hexcHeightBlend(param_11, param_12, param_13);
-    }
-    float3 param_14 = W;
-    int3 param_15 = t.channel;
-    weights = hexcShowWeights(param_14, param_15);
+    float3 param_7 = hexcMetric_albedo(param_4, param_5);
+    float3 W = hexcBlendWeights_albedo(param_6, param_7);
+    float3 param_8 = W;
+    int3 param_9 = t.channel;
+    weights = hexcShowWeights(param_8, param_9);
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
@@ -897,111 +579,85 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
 {
 #line 20 "hexc/generated"
     HexcLattice lattice = hexcLattice();
-    lattice.rotate = short(true);
-    lattice.transform = short(false);
-    lattice.rotationSteps = 0;
-    lattice.offsetSteps = int2(0);
-    lattice.maskScale = 2;
-    lattice.triple = short(false);
     lattice.rotation = hexcParams.albedo_rotation;
     HexcBlend blend = hexcBlend();
-    blend.metric = short(true);
-    blend.gain = short(true);
-    blend.exponentInt = 7;
-    blend.gainInt = 2;
-    blend.taps = 3;
-    blend.sharedLod = short(false);
-    blend.height = short(false);
     blend.falloffContrast = hexcParams.albedo_falloffcontrast;
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     int2 param_3 = cell;
     HexcLattice param_4 = lattice;
-    HexcTiles param_5 = hexcTilesStable(param, param_1, param_2, param_3, param_4);
+    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
     HexcBlend param_6 = blend;
     float4 param_7 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_8;
-    float4 _2164 = hexcColor(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
+    float4 _1493 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
     weights = param_8;
-    return _2164;
+    return _1493;
 }
 
-#line 41 "hexc/generated"
+#line 28 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant HexcParams& hexcParams, texture2d<float> hexcTex_albedo, sampler hexcSampler)
 {
-#line 41 "hexc/generated"
+#line 28 "hexc/generated"
     float2 st = uv * hexcParams.albedo_tiling;
     float2 param = st;
     float2 param_1 = dfdx(st);
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _2184 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1513 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _2184;
+    return _1513;
 }
 
-#line 44 "hexc/generated"
+#line 31 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, texture2d<float> hexcTex_albedo, sampler hexcSampler)
 {
-#line 44 "hexc/generated"
+#line 31 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _2192 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1521 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _2192;
+    return _1521;
 }
 
-#line 520 "hexc/hextiling.glsl"
+#line 105 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
-#line 520 "hexc/hextiling.glsl"
-    float4 _1777;
+#line 105 "hexc/hextiling.glsl"
+    float4 _458;
     if (c == 0)
     {
-        _1777 = float4(1.0, 0.0, 0.0, 0.0);
+        _458 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        float4 _1784;
+        float4 _465;
         if (c == 1)
         {
-            _1784 = float4(0.0, 1.0, 0.0, 0.0);
+            _465 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _1784 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+            _465 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _1777 = _1784;
+        _458 = _465;
     }
-    return _1777;
+    return _458;
 }
 
-#line 73 "hexc/generated"
+#line 47 "hexc/generated"
 static inline __attribute__((always_inline))
 float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_roughness)
 {
-#line 73 "hexc/generated"
+#line 47 "hexc/generated"
     HexcLattice lattice = hexcLattice();
-    lattice.rotate = short(true);
-    lattice.transform = short(false);
-    lattice.rotationSteps = 0;
-    lattice.offsetSteps = int2(0);
-    lattice.maskScale = 2;
-    lattice.triple = short(false);
     lattice.rotation = hexcParams.albedo_rotation;
     HexcBlend blend = hexcBlend();
-    blend.metric = short(true);
-    blend.gain = short(true);
-    blend.exponentInt = 7;
-    blend.gainInt = 2;
-    blend.taps = 3;
-    blend.sharedLod = short(false);
-    blend.height = short(false);
     blend.falloffContrast = hexcParams.roughness_falloffcontrast;
     float2 param = st;
     float2 param_1 = dx;
@@ -1009,230 +665,228 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     int2 param_3 = cell;
     HexcLattice param_4 = lattice;
     int param_5 = 0;
-    HexcTiles param_6 = hexcTilesStable(param, param_1, param_2, param_3, param_4);
+    HexcTiles param_6 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
     HexcBlend param_7 = blend;
     float4 param_8 = hexcChannel(param_5);
     float3 param_9;
-    float4 _2309 = hexcColor(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
+    float4 _1612 = hexcColor_albedo(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
     weights = param_9;
-    return _2309.x;
+    return _1612.x;
 }
 
-#line 94 "hexc/generated"
+#line 55 "hexc/generated"
 static inline __attribute__((always_inline))
 float hexc_roughness(thread const float2& uv, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_roughness)
 {
-#line 94 "hexc/generated"
+#line 55 "hexc/generated"
     float2 st = uv * hexcParams.albedo_tiling;
     float2 param = st;
     float2 param_1 = dfdx(st);
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _2329 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1632 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _2329;
+    return _1632;
 }
 
-#line 97 "hexc/generated"
+#line 58 "hexc/generated"
 static inline __attribute__((always_inline))
 float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_roughness)
 {
-#line 97 "hexc/generated"
+#line 58 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _2337 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1640 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _2337;
+    return _1640;
 }
 
-#line 570 "hexc/hextiling.glsl"
+#line 591 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 570 "hexc/hextiling.glsl"
+#line 591 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1906;
+    float _1275;
     if (flipY)
     {
-        _1906 = -vM.y;
+        _1275 = -vM.y;
     }
     else
     {
-        _1906 = vM.y;
+        _1275 = vM.y;
     }
-    return (-float2(vM.x, _1906)) / float2(zMa);
+    return (-float2(vM.x, _1275)) / float2(zMa);
 }
 
-#line 103 "hexc/hextiling.glsl"
+#line 118 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
 {
-#line 103 "hexc/hextiling.glsl"
+#line 118 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 578 "hexc/hextiling.glsl"
+#line 599 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 578 "hexc/hextiling.glsl"
+#line 599 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1939;
+    float2 _1308;
     if (scaled)
     {
-        _1939 = d * p.invScale;
+        _1308 = d * p.invScale;
     }
     else
     {
-        _1939 = d;
+        _1308 = d;
     }
-    return _1939;
+    return _1308;
 }
 
-#line 586 "hexc/hextiling.glsl"
+#line 425 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-float2 hexcDeriv(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights)
+float3 hexcBlendWeights_normal(thread const float3& w, thread const float3& M)
 {
-#line 586 "hexc/hextiling.glsl"
+#line 425 "hexc/hextiling.glsl"
+    float3 param = w;
+    int param_1 = 7;
+    float3 _1089 = hexcPowInt(param, param_1);
+    float3 wg = _1089;
+    float3 W = M * wg;
+    float sum = (W.x + W.y) + W.z;
+    float3 _1105;
+    if (sum > 0.0)
+    {
+        _1105 = W / float3(sum);
+    }
+    else
+    {
+        _1105 = wg / float3((wg.x + wg.y) + wg.z);
+    }
+    W = _1105;
+    return W;
+}
+
+#line 607 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights)
+{
+#line 607 "hexc/hextiling.glsl"
     float3 param = t.w;
-    HexcBlend param_1 = b;
-    bool3 f = hexcFetched(param, param_1);
-    HexcTiles param_2 = t;
-    bool param_3 = bool(b.sharedLod);
-    float3 lod = hexcTileLods(tex, samp, param_2, param_3);
+    bool3 f = hexcFetched_albedo(param);
+    HexcTiles param_1 = t;
+    float3 lod = hexcTileLods_albedo(tex, samp, param_1);
     float2 d1 = float2(0.0);
     float2 d2 = float2(0.0);
     float2 d3 = float2(0.0);
     if (f.x)
     {
-        HexcTap param_4 = t.tap[0];
-        float param_5 = lod.x;
-        bool param_6 = bool(b.sharedLod);
-        float4 param_7 = hexcFetch(tex, samp, param_4, param_5, param_6);
-        HexcTap param_8 = t.tap[0];
-        bool param_9 = bool(t.scaled);
-        bool param_10 = flipY;
-        d1 = hexcTapDeriv(param_7, param_8, param_9, param_10);
+        HexcTap param_2 = t.tap[0];
+        float param_3 = lod.x;
+        float4 param_4 = hexcFetch_albedo(tex, samp, param_2, param_3);
+        HexcTap param_5 = t.tap[0];
+        bool param_6 = bool(t.scaled);
+        bool param_7 = flipY;
+        d1 = hexcTapDeriv(param_4, param_5, param_6, param_7);
     }
     if (f.y)
     {
+        HexcTap param_8 = t.tap[1];
+        float param_9 = lod.y;
+        float4 param_10 = hexcFetch_albedo(tex, samp, param_8, param_9);
         HexcTap param_11 = t.tap[1];
-        float param_12 = lod.y;
-        bool param_13 = bool(b.sharedLod);
-        float4 param_14 = hexcFetch(tex, samp, param_11, param_12, param_13);
-        HexcTap param_15 = t.tap[1];
-        bool param_16 = bool(t.scaled);
-        bool param_17 = flipY;
-        d2 = hexcTapDeriv(param_14, param_15, param_16, param_17);
+        bool param_12 = bool(t.scaled);
+        bool param_13 = flipY;
+        d2 = hexcTapDeriv(param_10, param_11, param_12, param_13);
     }
     if (f.z)
     {
-        HexcTap param_18 = t.tap[2];
-        float param_19 = lod.z;
-        bool param_20 = bool(b.sharedLod);
-        float4 param_21 = hexcFetch(tex, samp, param_18, param_19, param_20);
-        HexcTap param_22 = t.tap[2];
-        bool param_23 = bool(t.scaled);
-        bool param_24 = flipY;
-        d3 = hexcTapDeriv(param_21, param_22, param_23, param_24);
+        HexcTap param_14 = t.tap[2];
+        float param_15 = lod.z;
+        float4 param_16 = hexcFetch_albedo(tex, samp, param_14, param_15);
+        HexcTap param_17 = t.tap[2];
+        bool param_18 = bool(t.scaled);
+        bool param_19 = flipY;
+        d3 = hexcTapDeriv(param_16, param_17, param_18, param_19);
     }
     float3 D = float3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
-    float3 param_25 = t.w * float3(f);
-    float3 param_26 = sqrt(D / (float3(1.0) + D));
-    HexcBlend param_27 = b;
-    float3 W = hexcBlendWeights(param_25, param_26, param_27);
-    if (bool(b.height))
-    {
-        HexcTiles param_28 = t;
-        HexcBlend param_29 = b;
-        float3 param_30 = W;
-        float3 param_31 = hexcTileHeights(heightTex, samp, param_28, param_29);
-        float param_32 = b.heightWidth;
-        W = hexcHeightBlend(param_30, param_31, param_32);
-    }
-    float3 param_33 = W;
-    int3 param_34 = t.channel;
-    weights = hexcShowWeights(param_33, param_34);
+    float3 param_20 = sqrt(D / (float3(1.0) + D));
+    HexcBlend param_21 = b;
+    float3 param_22 = t.w * float3(f);
+    float3 param_23 = hexcMetric_albedo(param_20, param_21);
+    float3 W = hexcBlendWeights_normal(param_22, param_23);
+    float3 param_24 = W;
+    int3 param_25 = t.channel;
+    weights = hexcShowWeights(param_24, param_25);
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 46 "hexc/generated"
+#line 33 "hexc/generated"
 static inline __attribute__((always_inline))
 float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_normal)
 {
-#line 46 "hexc/generated"
+#line 33 "hexc/generated"
     HexcLattice lattice = hexcLattice();
-    lattice.rotate = short(true);
-    lattice.transform = short(false);
-    lattice.rotationSteps = 0;
-    lattice.offsetSteps = int2(0);
-    lattice.maskScale = 2;
-    lattice.triple = short(false);
     lattice.rotation = hexcParams.albedo_rotation;
     HexcBlend blend = hexcBlend();
-    blend.metric = short(true);
-    blend.gain = short(false);
-    blend.exponentInt = 7;
-    blend.gainInt = 0;
-    blend.taps = 3;
-    blend.sharedLod = short(false);
-    blend.height = short(false);
     blend.falloffContrast = hexcParams.normal_falloffcontrast;
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     int2 param_3 = cell;
     HexcLattice param_4 = lattice;
-    HexcTiles param_5 = hexcTilesStable(param, param_1, param_2, param_3, param_4);
+    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
     HexcBlend param_6 = blend;
     bool param_7 = false;
     float3 param_8;
-    float2 _2236 = hexcDeriv(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
+    float2 _1552 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
     weights = param_8;
-    return _2236;
+    return _1552;
 }
 
-#line 67 "hexc/generated"
+#line 41 "hexc/generated"
 static inline __attribute__((always_inline))
 float2 hexc_normal(thread const float2& uv, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_normal)
 {
-#line 67 "hexc/generated"
+#line 41 "hexc/generated"
     float2 st = uv * hexcParams.albedo_tiling;
     float2 param = st;
     float2 param_1 = dfdx(st);
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _2255 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1571 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _2255;
+    return _1571;
 }
 
-#line 70 "hexc/generated"
+#line 44 "hexc/generated"
 static inline __attribute__((always_inline))
 float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_normal)
 {
-#line 70 "hexc/generated"
+#line 44 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _2263 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1579 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _2263;
+    return _1579;
 }
 
-#line 648 "hexc/hextiling.glsl"
+#line 668 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 648 "hexc/hextiling.glsl"
+#line 668 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

@@ -1,0 +1,153 @@
+// Code generation per slot: the library's pieces, their specialisation by a slot's settings, and which of them a
+// shader gets.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "codegen/assembly.h"
+#include "codegen/codegen.h"
+#include "hexc/compiler.h"
+#include "plan/plan.h"
+
+using namespace hexc;
+
+namespace {
+
+std::vector<SourceLine> numbered(const std::vector<std::string>& texts) {
+    std::vector<SourceLine> out;
+    for (const std::string& t : texts) out.push_back({int(out.size()) + 1, t});
+    return out;
+}
+
+std::vector<std::string> texts(const std::vector<SourceLine>& lines) {
+    std::vector<std::string> out;
+    for (const SourceLine& l : lines) out.push_back(l.text);
+    return out;
+}
+
+const Settings kSettings = {{"l.rotate", "true"}, {"l.aspect", "1.0"}, {"b.gainInt", "2"}, {"b.metric", "false"}, {"b.taps", "3"}};
+
+TEST(Specialise, DecidesConditionsOnTheSettingsOnly) {
+    EXPECT_EQ(decide("l.rotate", kSettings), 1);
+    EXPECT_EQ(decide("!l.rotate", kSettings), 0);
+    EXPECT_EQ(decide("l.aspect == 1.0 && b.gainInt > 0", kSettings), 1);
+    EXPECT_EQ(decide("b.metric || (b.taps > 2 && !b.metric)", kSettings), 1);
+    // One decided operand decides || and &&; otherwise a run-time value leaves it open.
+    EXPECT_EQ(decide("b.gainInt > 0 || b.falloff != 0.5", kSettings), 1);
+    EXPECT_EQ(decide("b.metric && sum > 0.0", kSettings), 0);
+    EXPECT_EQ(decide("b.gain && (b.gainInt > 0 || b.falloff != 0.5)", kSettings), -1);
+    EXPECT_EQ(decide("f.x", kSettings), -1);
+    EXPECT_EQ(decide("b.taps + 1 > 2", kSettings), -1);  // arithmetic: not decided here
+}
+
+TEST(Specialise, KeepsTheBranchTaken) {
+    const std::vector<SourceLine> in = numbered({
+        "vec2 f(vec2 v, HexcLattice l) {",
+        "    if (l.rotate) {",
+        "        if (l.aspect == 1.0) {",
+        "            v = r(v);  // square",
+        "        } else {",
+        "            v = s(v, l.aspect);",
+        "        }",
+        "    }",
+        "    if (!l.rotate) v = -v;",
+        "    if (v.x > 0.0) v = l.offset * v;",
+        "    return l.transform ? v * 2.0 : v;",
+        "}",
+    });
+    const std::vector<SourceLine> out = specialise(in, {{"l.rotate", "true"}, {"l.aspect", "1.0"}, {"l.transform", "false"}});
+    EXPECT_EQ(texts(out), (std::vector<std::string>{"vec2 f(vec2 v, HexcLattice l) {", "    v = r(v);  // square",
+                                                    "    if (v.x > 0.0) v = l.offset * v;", "    return v;", "}"}));
+    EXPECT_EQ(out[1].number, 4);  // where it is in the library, for #line
+}
+
+TEST(Specialise, FoldsSelectsAndReadsOfSettings) {
+    const std::vector<SourceLine> in = numbered({
+        "    vec3 wg = b.gainInt > 0 ? p(w, b.gainInt) : pow(w, vec3(b.exponent));",
+        "    float lo = b.metric ? 1.0 - b.falloffContrast : (c ? 1.0 : 2.0);",
+        "    int a = d == 0 ? 1 : 0;",
+        "    x = q(b.taps > 2, p.b.taps);  // b.taps stays in a comment",
+    });
+    EXPECT_EQ(texts(specialise(in, kSettings)), (std::vector<std::string>{
+                                                    "    vec3 wg = p(w, 2);",
+                                                    "    float lo = (c ? 1.0 : 2.0);",
+                                                    "    int a = d == 0 ? 1 : 0;",
+                                                    "    x = q(3 > 2, p.b.taps);  // b.taps stays in a comment",
+                                                }));
+}
+
+// An `else if` chain keeps its branches; only its reads of settings become values.
+TEST(Specialise, LeavesElseIfChainsAsTheyAre) {
+    const std::vector<SourceLine> in = numbered({"    if (b.metric) {", "        a();", "    } else if (x) {", "        b();", "    }"});
+    EXPECT_EQ(texts(specialise(in, kSettings)),
+              (std::vector<std::string>{"    if (false) {", "        a();", "    } else if (x) {", "        b();", "    }"}));
+}
+
+// The library's conventions the specialisation relies on: every piece parsed, settings read through `l` and `b`, and
+// never written (a specialised function reads its slot's settings as constants).
+TEST(Specialise, TheLibraryFollowsItsConventions) {
+    const Library& lib = library();
+    ASSERT_GT(lib.pieces.size(), 50u);
+    for (const Piece& p : lib.pieces) {
+        SCOPED_TRACE(p.name);
+        EXPECT_TRUE(p.name.starts_with("hexc") || p.name.starts_with("Hexc"));
+        for (const SourceLine& line : p.lines) {
+            const std::string code(codeOf(line.text));
+            for (const char* setting : {" l.", "(l.", " b.", "(b.", "!b.", "!l."})
+                for (size_t at = code.find(setting); at != std::string::npos; at = code.find(setting, at + 1)) {
+                    const size_t end = code.find_first_of(" ;,)", at + 3);
+                    EXPECT_FALSE(end != std::string::npos && code.compare(end, 3, " = ") == 0) << "a setting written: " << code;
+                }
+            EXPECT_EQ(code.find("HexcLattice lattice"), std::string::npos) << code;
+            EXPECT_EQ(code.find("HexcBlend blend"), std::string::npos) << code;
+        }
+    }
+    EXPECT_TRUE(lib.pieces[lib.byName.at("hexcColor")].blend);
+    EXPECT_TRUE(lib.pieces[lib.byName.at("hexcTilesStable")].lattice);
+    for (const char* overloaded : {"hexcLift", "hexcFinish"}) {  // three overloads each, one piece
+        const Piece& p = lib.pieces[lib.byName.at(overloaded)];
+        EXPECT_EQ(std::count_if(p.lines.begin(), p.lines.end(),
+                                [&](const SourceLine& l) { return l.text.find(" " + p.name + "(") != l.text.npos; }),
+                  3);
+    }
+    EXPECT_EQ(lib.neutral.at("HexcLattice").front(), (std::pair<std::string, std::string>{"rotation", "0.0"}));
+}
+
+ShaderPlan rockPlan(const CompileOptions& options, Material& storage) {
+    ParseResult r = parseMaterialFile("materials/rock.json");
+    EXPECT_TRUE(r.material) << formatAll(r.diagnostics);
+    storage = *r.material;
+    return planShader(storage, options);
+}
+
+// rock: each slot's functions carry its fixed settings, its parameters in the structs; what no slot uses is not there;
+// a form two slots make alike is emitted once.
+TEST(Specialise, EachSlotGetsOnlyWhatItUses) {
+    Material m;
+    const std::string glsl = generateGlsl(rockPlan({}, m));
+    for (const char* name : {"vec4 hexcColor_albedo(", "vec2 hexcDeriv_normal(", "hexcTilesStable_albedo(", "lattice.rotation = "})
+        EXPECT_NE(glsl.find(name), std::string::npos) << name;
+    for (const char* name : {"hexcAdaptiveTaps(", "hexcHeightBlend", "hexcTilesPaper", "hexcHistogram", "hexcMx", "HexcPlanes",
+                             "textureLod", "hexcColor(", "hexcTilesStable(", "blend.metric", "lattice.rotate ="})
+        EXPECT_EQ(glsl.find(name), std::string::npos) << name;
+    // Its three slots share a lattice, and albedo and roughness a blend but for its parameters: their functions are the
+    // albedo's, once.
+    for (const char* name : {"hexcTilesStable_normal", "hexcTilesStable_roughness", "hexcColor_roughness"})
+        EXPECT_EQ(glsl.find(name), std::string::npos) << name;
+    EXPECT_NE(glsl.find("hexcColor_albedo(hexcTex_roughness, hexcSampler, hexcTilesStable_albedo(st, dx, dy, cell, lattice), blend"),
+              std::string::npos);
+    EXPECT_EQ(generateGlsl(rockPlan({}, m)), glsl);
+}
+
+TEST(Specialise, WithoutSpecialisationTheGeneralFunctions) {
+    Material m;
+    CompileOptions options;
+    options.specialize = false;
+    const std::string glsl = generateGlsl(rockPlan(options, m));
+    EXPECT_NE(glsl.find("vec4 hexcColor(texture2D tex"), std::string::npos);
+    EXPECT_NE(glsl.find("blend.metric = true;"), std::string::npos);
+    EXPECT_EQ(glsl.find("hexcColor_"), std::string::npos);
+    EXPECT_EQ(glsl.find("hexcMx"), std::string::npos);  // only what the slots and the template reach
+}
+
+}  // namespace
