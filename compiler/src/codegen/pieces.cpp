@@ -41,7 +41,7 @@ void addPieces(const std::string& text, const std::string& file, std::vector<Pie
         }
         const std::string name = declaredName(line.text);
         const bool overload = !out.empty() && out.back().name == name;  // kept together: one name, one piece
-        if (!overload) out.push_back({name, file, {}});
+        if (!overload) out.push_back({name, file, {}, false, false, {}});
         Piece& piece = out.back();
         piece.lines.insert(piece.lines.end(), comment.begin(), comment.end());
         comment.clear();
