@@ -157,6 +157,7 @@ void Server::Impl::routes() {
     http.Get(R"(/api/texture/([a-z][a-z0-9_]*(\.lut|\.gaussian)?))",
              [this](const httplib::Request& req, httplib::Response& res) { answer(res, session.texture(req.matches[1])); });
     bodyRoute("/api/compile", [this](const std::string& body) { return session.compile(body); });
+    bodyRoute("/api/cost", [this](const std::string& body) { return session.cost(body); });
     bodyRoute("/api/save", [this](const std::string& body) { return session.save(body); });
     if (!capture) return;
     http.Post("/api/capture", [this](const httplib::Request& req, httplib::Response& res) {

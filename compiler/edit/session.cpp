@@ -77,7 +77,7 @@ Json program(const Material& m, ShaderCache& cache) {
 }
 
 // The shader as `hexc MATERIAL -o DIR` ships it, compiled anew: SPIR-V instructions and texture fetches per pixel.
-Json cost(const Material& m) {
+Json shippedCost(const Material& m) {
     CompileOptions options;
     options.targets = {Target::Spirv};
     const auto start = std::chrono::steady_clock::now();
@@ -182,7 +182,6 @@ Reply Session::compile(const std::string& body) {
         auto plain = std::async(std::launch::async, [&] { return program(cli::plainTiled(shown), cache_); });
         Json weights = program(vk::renderedMaterial(m, vk::RenderOutput::Weights, s.name), cache_);
         Json value = program(vk::renderedMaterial(m, values, s.name), cache_);
-        Json costs = cost(*p.material);
         Json programs = {{"hex", hex.get()}, {"plain", plain.get()}, {"weights", weights}, {"values", value}};
         compiled_ = m;
         return json({{"ok", true},
@@ -191,13 +190,22 @@ Reply Session::compile(const std::string& body) {
                      {"template", shown.templateName},
                      {"note", note},
                      {"slot", s.name},
-                     {"programs", programs},
-                     {"cost", costs}});
+                     {"programs", programs}});
     } catch (const CompileError& e) {
         return json({{"ok", false}, {"diagnostics", toJson(e.diagnostics)}});
     } catch (const std::invalid_argument& e) {  // a view the material cannot give (renderedMaterial)
         return json({{"ok", false}, {"diagnostics", toJson({Diagnostic::make(Code::WrongSlotKind, {file_.string()}, "", e.what())})}});
     }
+}
+
+Reply Session::cost(const std::string& body) {
+    const Json request = Json::parse(body, nullptr, false);
+    if (!request.is_object() || !request.contains("document") || !request["document"].is_object())
+        return badRequest("expected {\"document\": the material}");
+    std::lock_guard lock(costMutex_);  // not the page's compiles': the cost line follows the new frame, never holds it up
+    Parsed p = parse(request["document"]);
+    if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
+    return json({{"ok", true}, {"cost", shippedCost(*p.material)}});
 }
 
 Reply Session::save(const std::string& body) {

@@ -32,9 +32,11 @@ public:
     // {"file", "text", "version"}: the material file as it is on disk.
     Reply material();
     // POST {"document": the material as JSON, "slot": the slot the weights and values views show}: the document as it
-    // would be saved, parsed and compiled into the page's programs, with the cost of the shipped shader; or its
-    // diagnostics.
+    // would be saved, parsed and compiled into the page's programs; or its diagnostics.
     Reply compile(const std::string& body);
+    // POST {"document"}: texture fetches per pixel and SPIR-V instructions of the shader `hexc MATERIAL -o DIR` writes,
+    // and the time its compile takes (compiled anew, not from a cache).
+    Reply cost(const std::string& body);
     // POST {"document", "version"}: writes the document into the material file, keeping its text where unchanged; refused
     // when the file changed on disk since `version` or the document does not compile.
     Reply save(const std::string& body);
@@ -56,7 +58,8 @@ private:
     std::optional<Texture> loadSlotTexture(const std::string& name, std::string* whyNot);
 
     std::filesystem::path file_, root_;
-    std::mutex mutex_;  // the page's requests come on several threads
+    std::mutex mutex_;      // the page's requests come on several threads
+    std::mutex costMutex_;  // cost() is apart: it reads only the file and the document
     ShaderCache cache_;
     std::optional<Material> compiled_;  // the last document that compiled: its textures are served
 };

@@ -216,6 +216,25 @@ class Page(unittest.TestCase):
         wait_idle(DRIVER)
         self.assertEqual(read_view(SIZE, SIZE), after)
 
+    def test_the_cost_line_counts_the_shipped_shader(self):
+        server = self.serve(self.material)
+        load(server)
+        line = wait_for(lambda: "fetches/pixel" in DRIVER.find_element("id", "cost").text and DRIVER.find_element("id", "cost").text, "the cost line")
+        # What `hexc MATERIAL -o DIR` writes, disassembled by SPIRV-Tools' spirv-dis: texture fetches and the instructions
+        # inside its functions (spirv-opt inlines all into main, so each runs at most once per pixel).
+        out = os.path.join(self.folder, "shipped")
+        subprocess.run([HEXC, self.material, "-o", out, "--target", "spirv", "-q", "--no-cache"], check=True)
+        text = subprocess.run(["spirv-dis", os.path.join(out, "rock.frag.spv")], check=True, capture_output=True, text=True).stdout
+        fetches = instructions = 0
+        inside = False
+        for words in (l.split() for l in text.splitlines()):
+            op = words[2] if len(words) > 2 and words[1] == "=" else (words[0] if words else "")
+            inside |= op == "OpFunction"
+            instructions += inside and op.startswith("Op")
+            inside &= op != "OpFunctionEnd"
+            fetches += op.startswith("OpImageSample") or op in ("OpImageFetch", "OpImageGather")
+        self.assertRegex(line, r"^%d fetches/pixel · %d SPIR-V instructions · compiled in \d+ ms$" % (fetches, instructions))
+
     def test_a_broken_edit_shows_the_located_diagnostic(self):
         server = self.serve(self.material)
         state = load(server)

@@ -64,8 +64,11 @@ async function loadTextures(programs, fresh) {
   }
 }
 
-function costLine(r) {
-  $('template').textContent = r.note ? `shown with template ${r.template}: ${r.note}` : `template ${r.template}`;
+// The cost of the shader as it ships, asked for once the new frame is drawn (its compile is not the page's).
+async function costLine(seq) {
+  $('cost').textContent = 'cost: compiling the shipped shader…';
+  const r = await api('/api/cost', { document: state.doc });
+  if (seq !== compileSeq) return;
   const c = r.cost;
   $('cost').textContent = c ? `${c.fetches} fetches/pixel · ${c.instructions} SPIR-V instructions · compiled in ${c.compile_ms.toFixed(0)} ms` : '';
 }
@@ -90,10 +93,11 @@ async function compile(freshTextures = false) {
     await loadTextures(r.programs, freshTextures);
     const failed = Object.entries(r.programs).flatMap(([name, p]) => p.fragment ? [] : p.diagnostics.map(d => ({ text: `${name}: ${d.text}` })));
     showDiagnostics([...r.diagnostics, ...failed], 'warning');
-    costLine(r);
+    $('template').textContent = r.note ? `shown with template ${r.template}: ${r.note}` : `template ${r.template}`;
     status(state.dirty ? 'edited (not saved)' : 'saved');
     hexc.status = 'ready';
     draw();
+    costLine(seq);
   } catch (e) {
     showDiagnostics([{ text: String(e.message || e) }], 'error');
     hexc.status = 'error';
