@@ -235,6 +235,24 @@ class Page(unittest.TestCase):
             fetches += op.startswith("OpImageSample") or op in ("OpImageFetch", "OpImageGather")
         self.assertRegex(line, r"^%d fetches/pixel · %d SPIR-V instructions · compiled in \d+ ms$" % (fetches, instructions))
 
+    def test_capture_writes_the_same_frame_every_time(self):
+        frames = [os.path.join(self.folder, "frame%d.png" % i) for i in range(2)]
+        for frame in frames:
+            run = subprocess.run([HEXC, "edit", self.material, "--capture", frame, "--size", "64x48"], capture_output=True, text=True, timeout=600)
+            self.assertEqual(run.returncode, 0, run.stderr)
+        with open(frames[0], "rb") as a, open(frames[1], "rb") as b:
+            png = a.read()
+            self.assertEqual(png, b.read())  # a deterministic camera and renderer: the same bytes
+        self.assertEqual(png[:8], b"\x89PNG\r\n\x1a\n")
+        self.assertEqual(struct.unpack(">II", png[16:24]), (64, 48))
+        with open(self.material, "wb") as f:  # a material that does not compile: its diagnostics, exit 1, no file
+            f.write(self.original.replace(b'"kind": "scalar"', b'"kind": "scalr"'))
+        broken = os.path.join(self.folder, "broken.png")
+        run = subprocess.run([HEXC, "edit", self.material, "--capture", broken, "--size", "64x48"], capture_output=True, text=True, timeout=600)
+        self.assertEqual(run.returncode, 1, run.stderr)
+        self.assertRegex(run.stderr, r"rock\.json:\d+:\d+: error\[HX1\d\d\]: /slots/2/kind")
+        self.assertFalse(os.path.exists(broken))
+
     def test_a_broken_edit_shows_the_located_diagnostic(self):
         server = self.serve(self.material)
         state = load(server)

@@ -10,7 +10,7 @@ const captureSize = query.get('capture');  // "WxH": one frame with the default 
 // Everything a reload keeps: the camera, the light, the split, what is shown, the selected slot.
 const state = {
   doc: null, version: null, dirty: false, schema: null,
-  view: { shape: 'plane', output: 'split', camera: { azimuth: -70, elevation: 30, distance: 1.5 }, light: { azimuth: 45, elevation: 55 },
+  view: { shape: 'plane', output: 'split', camera: { azimuth: -70, elevation: 25, distance: 2.5 }, light: { azimuth: 45, elevation: 55 },
           split: [1 / 3, 2 / 3], rect: [0, 0, 1, 1] },
 };
 
