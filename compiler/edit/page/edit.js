@@ -79,8 +79,10 @@ async function compile(freshTextures = false) {
   hexc.pending++;
   status('compiling…');
   try {
+    const timing = { sent: performance.now() };  // where a structural edit's time goes (bench/edit_latency.py)
     const r = await api('/api/compile', { document: state.doc, slot: state.doc.slots?.[panel.slot]?.name });
     if (seq !== compileSeq) return;  // a later edit is being compiled
+    timing.answered = performance.now();
     hexc.compiles++;
     if (!r.ok) {
       showDiagnostics(r.diagnostics || [{ text: r.message }], 'error');
@@ -90,7 +92,10 @@ async function compile(freshTextures = false) {
     }
     renderer.setPrograms(r.programs);
     hexc.programs = Object.keys(renderer.programs);
+    timing.linked = performance.now();
     await loadTextures(r.programs, freshTextures);
+    timing.textures = performance.now();
+    hexc.timing = timing;
     const failed = Object.entries(r.programs).flatMap(([name, p]) => p.fragment ? [] : p.diagnostics.map(d => ({ text: `${name}: ${d.text}` })));
     showDiagnostics([...r.diagnostics, ...failed], 'warning');
     $('template').textContent = r.note ? `shown with template ${r.template}: ${r.note}` : `template ${r.template}`;
