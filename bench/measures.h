@@ -1,11 +1,12 @@
 #pragma once
-// What the shader benchmark measures besides time: error against a reference image, contrast against the
-// source texture, and what a fragment shader executes per pixel (read from its SPIR-V).
+// What the shader benchmark measures besides time: error against a reference image and contrast against the
+// source texture (what a fragment shader executes per pixel is hexc::countOps, hexc/spirv.h).
 #include <map>
 #include <string>
 #include <vector>
 
 #include "hexc/image.h"
+#include "hexc/spirv.h"
 
 namespace hexc::bench {
 
@@ -25,14 +26,5 @@ struct Contrast {
     double varianceRatio = 0, histogramEmd = 0;
 };
 Contrast contrast(const std::vector<double>& rendered, const std::vector<double>& source);
-
-// Per-pixel work of a shader without loops (spirv-opt inlines everything into main): every instruction
-// executes at most once. Counts come from hexc::disassemble's text.
-struct ShaderOps {
-    int instructions = 0;                 // inside function bodies
-    int textureSamples = 0;               // OpImageSample*, OpImageFetch, OpImageGather
-    std::map<std::string, int> extended;  // GLSL.std.450 instruction (e.g. "Pow") -> scalar operations
-};
-ShaderOps countOps(const std::string& disassembly);
 
 }  // namespace hexc::bench

@@ -1,6 +1,7 @@
 // hexc: a thin command line over libhexc: compile (cli/build), render and preview (cli/render), library,
-// export-mtlx (cli/export).
+// export-mtlx (cli/export), edit (compiler/edit).
 #include "build.h"
+#include "edit.h"
 #include "export.h"
 #include "library.h"
 #include "options.h"
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
     if (!args.empty() && args[0] == "render") return cli::renderCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "preview") return cli::previewCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "library") return cli::libraryCommand({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "edit") return edit::editCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "export-mtlx") return cli::exportCommand({args.begin() + 1, args.end()});
     cli::Arguments a;
     if (std::optional<int> done = cli::parseArguments(args, a)) return *done;

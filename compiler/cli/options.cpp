@@ -21,6 +21,7 @@ const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V
   hexc preview MATERIAL.json -o PREVIEW.png [--cell N]     (hexc preview --help)
   hexc library --target hlsl|glsl|msl|spirv-asm -o DIR   (hexc library --help)
   hexc export-mtlx MATERIAL.json -o MATERIAL.mtlx          (hexc export-mtlx --help)
+  hexc edit MATERIAL.json [--port N]                       (hexc edit --help: tune it live in a browser)
 
 Reads each material (JSON, docs/material-format.md, or MaterialX, docs/materialx.md), injects hex-tiling
 into every texture slot of its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:

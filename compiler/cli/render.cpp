@@ -169,31 +169,6 @@ struct ShowOptions {
     bool resolve(CompileOptions& options) const { return layout.resolve(options.layout); }
 };
 
-// The built-in template a material is shown with when its own declares resources only an engine can fill.
-constexpr const char* kFallbackTemplate = "lit";
-
-// The material as shown with `templateName` (--template) if given, under `options`: a template that declares
-// resources of its own is replaced by the built-in kFallbackTemplate, named in a note. Throws CompileError when it
-// does not compile.
-Material shownMaterial(Material material, const std::string& templateName, const CompileOptions& options) {
-    if (!templateName.empty()) material.templ = TemplateRef::parse(templateName);
-    CompileOptions spirvOnly = options;
-    spirvOnly.targets = {Target::Spirv};
-    CompileResult compiled = compile(material, spirvOnly);
-    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
-    const auto manifest =
-        std::find_if(compiled.files.begin(), compiled.files.end(), [](const OutputFile& f) { return f.name.ends_with(".manifest.json"); });
-    const nlohmann::json own = nlohmann::json::parse(manifest->contents)["targets"]["spirv"].value("template_resources", nlohmann::json());
-    if (own.empty()) return material;
-    std::string names;
-    for (const nlohmann::json& r : own) names += (names.empty() ? "" : ", ") + r["name"].get<std::string>();
-    const std::string shown = material.templ.file ? material.templ.asWritten : material.templ.name;
-    std::cerr << "hexc: note: template `" << shown << "` declares resources of its own (" << names
-              << "): shown with the built-in template `" << kFallbackTemplate << "` (--template picks another)\n";
-    material.templ = TemplateRef::builtin(kFallbackTemplate);
-    return material;
-}
-
 }  // namespace
 
 namespace {
@@ -278,6 +253,45 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
 
 }  // namespace
 
+// The built-in template a material is shown with when its own declares resources only an engine can fill.
+constexpr const char* kFallbackTemplate = "lit";
+
+Material shownMaterial(Material material, const std::string& templateName, const CompileOptions& options, std::string* note) {
+    if (!templateName.empty()) material.templ = TemplateRef::parse(templateName);
+    CompileOptions spirvOnly = options;
+    spirvOnly.targets = {Target::Spirv};
+    CompileResult compiled = compile(material, spirvOnly);
+    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
+    const auto manifest =
+        std::find_if(compiled.files.begin(), compiled.files.end(), [](const OutputFile& f) { return f.name.ends_with(".manifest.json"); });
+    const nlohmann::json own = nlohmann::json::parse(manifest->contents)["targets"]["spirv"].value("template_resources", nlohmann::json());
+    note->clear();
+    if (own.empty()) return material;
+    std::string names;
+    for (const nlohmann::json& r : own) names += (names.empty() ? "" : ", ") + r["name"].get<std::string>();
+    *note = "template `" + material.templ.written() + "` declares resources of its own (" + names +
+            "): shown with the built-in template `" + kFallbackTemplate + "`";
+    material.templ = TemplateRef::builtin(kFallbackTemplate);
+    return material;
+}
+
+Material plainTiled(Material material) {
+    for (Slot& s : material.slots) s.hex.enabled = false;
+    return material;
+}
+
+namespace {
+
+// shownMaterial, its note printed as the command line says it, with what picks another template.
+Material shownWithNote(const Material& material, const std::string& templateName, const CompileOptions& options) {
+    std::string note;
+    Material shown = shownMaterial(material, templateName, options, &note);
+    if (!note.empty()) std::cerr << "hexc: note: " << note << " (--template picks another)\n";
+    return shown;
+}
+
+}  // namespace
+
 int renderCommand(const std::vector<std::string>& args) {
     RenderArguments r;
     return guarded(r.material, [&] {
@@ -293,7 +307,7 @@ int renderCommand(const std::vector<std::string>& args) {
             progress.step("computing the fp64 reference, " + size + " pixels");
             image = referenceImage(*material, r);
         } else {
-            if (r.output == vk::RenderOutput::Shaded) *material = shownMaterial(*material, r.show.templateFile, options);
+            if (r.output == vk::RenderOutput::Shaded) *material = shownWithNote(*material, r.show.templateFile, options);
             checkTexelBudget(*material, TextureStage::Render);
             auto runner = makeRunner();
             if (!runner) return int(kNoVulkan);
@@ -329,8 +343,7 @@ void labelCell(Image& sheet, int x0, int y0, int cell, const std::string& column
 // The preview sheet: plain tiling, both hex blends and the hex weights (columns) at two distances (rows), labelled;
 // each cell rendered under `options`, sRGB-encoded when `srgb`.
 Image previewSheet(vk::Runner& runner, const Material& material, int cell, const CompileOptions& options, bool srgb, Progress& progress) {
-    Material plain = material;
-    for (Slot& s : plain.slots) s.hex.enabled = false;
+    const Material plain = plainTiled(material);
     const Material falloff = withBlend(material, Blend::Falloff), histogram = withBlend(material, Blend::Histogram);
     const bool histogramApplies = std::any_of(material.slots.begin(), material.slots.end(), takesBlend);
     struct Column {
@@ -386,7 +399,7 @@ int previewCommand(const std::vector<std::string>& args) {
         if (!material) return int(kInvalidInput);
         CompileOptions options;
         if (!show.resolve(options)) return int(kInvalidInput);
-        const Material shown = shownMaterial(*material, show.templateFile, options);
+        const Material shown = shownWithNote(*material, show.templateFile, options);
         checkTexelBudget(shown, TextureStage::Render);
         checkTexelBudget(withBlend(shown, Blend::Histogram), TextureStage::Histogram);  // its histogram column
         auto runner = makeRunner();

@@ -101,6 +101,8 @@ struct TemplateRef {
     // How diagnostics, banners and #line directives name it: a built-in by its source's path in hexc
     // ("templates/builtin/lit.glsl"), a file by its resolved path.
     std::string path() const { return file ? name : "templates/builtin/" + name + ".glsl"; }
+    // As a user named it: a built-in's name, a file as written.
+    const std::string& written() const { return file ? asWritten : name; }
     // `written` as a document or command line gives it: a name ending in .glsl is a file, resolved against `dir`;
     // anything else a built-in's name (which the caller checks).
     static TemplateRef parse(const std::string& written, const std::filesystem::path& dir = {});

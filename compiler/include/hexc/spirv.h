@@ -3,6 +3,7 @@
 // HLSL/GLSL with it): glslang front ends (GLSL and HLSL, in process) and SPIRV-Tools validation and
 // optimisation. Errors come back as diagnostics located at the file and line glslang reports.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,5 +58,14 @@ std::vector<uint32_t> spirvWords(std::string_view bytes);
 
 // Human-readable SPIR-V, for tests and debugging.
 std::string disassemble(const std::vector<uint32_t>& words);
+
+// Per-pixel work of a shader without loops (spirv-opt inlines everything into main): every instruction
+// executes at most once (a branch's, such as adaptive taps', at most). Counts come from disassemble's text.
+struct ShaderOps {
+    int instructions = 0;                 // inside function bodies
+    int textureSamples = 0;               // OpImageSample*, OpImageFetch, OpImageGather: texture fetches per pixel
+    std::map<std::string, int> extended;  // GLSL.std.450 instruction (e.g. "Pow") -> scalar operations
+};
+ShaderOps countOps(const std::string& disassembly);
 
 }  // namespace hexc

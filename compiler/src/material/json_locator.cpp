@@ -124,6 +124,16 @@ TextPos JsonLocator::value(const std::string& pointer) const {
     }
 }
 
+std::optional<JsonLocator::Span> JsonLocator::valueSpan(const std::string& pointer) const {
+    if (auto it = valueSpans_.find(pointer); it != valueSpans_.end()) return it->second;
+    return std::nullopt;
+}
+
+std::optional<size_t> JsonLocator::keyOffset(const std::string& pointer) const {
+    if (auto it = keyOffsets_.find(pointer); it != keyOffsets_.end()) return it->second;
+    return std::nullopt;
+}
+
 TextPos JsonLocator::key(const std::string& pointer) const {
     if (auto it = keys_.find(pointer); it != keys_.end()) return it->second;
     return value(pointer);
@@ -141,6 +151,7 @@ void JsonLocator::parseString() {
 
 void JsonLocator::parseValue(const std::string& pointer) {
     values_.emplace(pointer, here());
+    const size_t begin = pos_;
     char c = text_[pos_];
     if (c == '{') {
         ++pos_;
@@ -156,6 +167,7 @@ void JsonLocator::parseValue(const std::string& pointer) {
                 duplicates_.push_back({child, it->second, keyPos});
             else
                 keys_.emplace(child, keyPos);
+            keyOffsets_[child] = start;  // the last one, as nlohmann keeps
             skipSpace();
             ++pos_;  // ':'
             skipSpace();
@@ -182,6 +194,7 @@ void JsonLocator::parseValue(const std::string& pointer) {
         // number, true, false, null
         while (pos_ < text_.size() && std::string_view(",]} \t\r\n").find(text_[pos_]) == std::string_view::npos) ++pos_;
     }
+    valueSpans_[pointer] = {begin, std::min(pos_, text_.size())};
 }
 
 }  // namespace hexc

@@ -39,6 +39,14 @@ public:
     };
     const std::vector<Duplicate>& duplicates() const { return duplicates_; }
 
+    // Byte offsets of the value at `pointer`, [begin, end), and of the key naming it (objects' members only); nullopt
+    // when the pointer is not in the text. For rewriting a document while keeping what did not change (json_text.h).
+    struct Span {
+        size_t begin = 0, end = 0;
+    };
+    std::optional<Span> valueSpan(const std::string& pointer) const;
+    std::optional<size_t> keyOffset(const std::string& pointer) const;
+
 private:
     void parseValue(const std::string& pointer);
     void parseString();
@@ -52,6 +60,8 @@ private:
     size_t scanned_ = 0;
     TextPos scannedPos_;
     std::map<std::string, TextPos> values_, keys_;
+    std::map<std::string, Span> valueSpans_;
+    std::map<std::string, size_t> keyOffsets_;
     std::vector<Duplicate> duplicates_;
 };
 

@@ -1,0 +1,96 @@
+#include "edit.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "capture.h"
+#include "hexc/materialx.h"
+#include "options.h"
+#include "server.h"
+#include "session.h"
+
+namespace hexc::edit {
+
+namespace {
+
+const char* const kEditHelp = R"(hexc edit - tune a material live in a browser page, and save it
+
+  hexc edit materials/rock.json            prints the address to open: http://127.0.0.1:PORT/?token=...
+
+Serves a page (WebGL 2) that renders the material with hexc's own GLSL ES 3.00 output: a panel with every
+hex-tiling setting of the material and of each slot (range, default, unit, reset), sliders that take effect
+without recompiling, and settings that change the shader's structure (mask, taps, blend, kind ...) recompiled
+here. A ground plane from one tile to hundreds, a sphere, a cube, or texture space; a split between plain
+tiling, hex-tiling and the weights; a movable light; the cost of the shader as it ships. Save writes the
+material back, keeping its text where unchanged; an edit of the file in another editor, or of a texture,
+reloads the page. The material's template is used unless it declares resources of its own (an engine's),
+then the built-in `lit`, as the page says.
+
+Safe by default: it listens on 127.0.0.1 only, every request needs the token of the printed address (a cookie
+after the first load) and this server's own host name, and it serves its page, the material and the
+material's textures only, from the material's folder (--root widens it). docs/edit.md has the details.
+)";
+
+// `--capture`'s size: WxH, each 16 to kMaxCaptureSide.
+bool parseSize(const std::string& text, CaptureOptions& c) {
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> c.width >> x >> c.height) || x != 'x' || !in.eof()) return false;
+    return c.width >= 16 && c.height >= 16 && c.width <= kMaxCaptureSide && c.height <= kMaxCaptureSide;
+}
+
+}  // namespace
+
+int editCommand(const std::vector<std::string>& args) {
+    CLI::App app(kEditHelp, "hexc edit");
+    std::filesystem::path material, root;
+    int port = 0;
+    CaptureOptions capture;
+    std::string size = "1280x720";
+    app.add_option("material", material, "the material to edit (JSON)")->type_name("MATERIAL.json");
+    app.add_option("--port", port, "the port to listen on (default: any free one; the address says which)")
+        ->check(CLI::Range(0, 65535))
+        ->type_name("N");
+    app.add_option("--root", root, "the folder whose files may be served (default: the material's folder)")->type_name("DIR");
+    app.add_option("--capture", capture.out, "render one frame in headless Chromium, write it and exit")->type_name("OUT.png");
+    app.add_option("--size", size, "with --capture: the frame's size (default 1280x720)")->type_name("WxH");
+    app.add_option("--browser", capture.browser, "with --capture: the Chromium to start (default chromium)")->type_name("PATH");
+    if (std::optional<int> done = cli::parseWith(app, args)) return *done;
+    if (material.empty()) {
+        std::cerr << "hexc: no material given (see hexc edit --help)\n";
+        return cli::kUsage;
+    }
+    if (isMaterialXFile(material)) {
+        std::cerr << "hexc: hexc edit edits JSON materials; `hexc " << material.string() << " -o DIR` compiles a MaterialX document\n";
+        return cli::kUsage;
+    }
+    if (!parseSize(size, capture)) {
+        std::cerr << "hexc: --size expects WxH, each from 16 to " << kMaxCaptureSide << ", got " << size << "\n";
+        return cli::kUsage;
+    }
+    if (!capture.out.empty() && capture.out.extension() != ".png") {
+        std::cerr << "hexc: --capture " << capture.out.string() << ": hexc edit captures .png\n";
+        return cli::kUsage;
+    }
+    // Reported now too; a material with errors is still served (the page shows them and reloads once the file is
+    // fixed), one that cannot be read is not.
+    const ParseResult parsed = parseMaterialFile(material);
+    std::cerr << formatAll(cli::byPosition(parsed.diagnostics));
+    if (!parsed.material && !std::filesystem::is_regular_file(material)) return cli::kInvalidInput;
+    if (root.empty()) root = material.has_parent_path() ? material.parent_path() : ".";
+    Session session(material, root);
+    Capture capturing(capture);
+    try {
+        Server server(session, port, capture.out.empty() ? Server::CaptureHandler{} : capturing.handler());
+        if (!capture.out.empty()) return capturing.run(server);
+        std::cout << "hexc: editing " << material.string() << "; open " << server.url() << " (Ctrl-C stops)" << std::endl;
+        server.run();
+    } catch (const std::exception& e) {
+        std::cerr << "hexc: " << e.what() << "\n";
+        return cli::kWriteFailed;
+    }
+    return cli::kOk;
+}
+
+}  // namespace hexc::edit

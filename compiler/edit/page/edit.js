@@ -1,0 +1,318 @@
+// hexc edit's page: loads the material, has the server compile it into WebGL programs, draws it, applies the panel's
+// edits (uniforms at once, structural ones by compiling again), saves, and follows the file on disk.
+import { View } from './view.js';
+import { Panel, effective } from './panel.js';
+
+const $ = id => document.getElementById(id);
+const query = new URLSearchParams(location.search);
+const captureSize = query.get('capture');  // "WxH": one frame with the default camera, posted back to hexc edit
+
+// Everything a reload keeps: the camera, the light, the split, what is shown, the selected slot.
+const state = {
+  doc: null, version: null, dirty: false, schema: null,
+  view: { shape: 'plane', output: 'split', camera: { azimuth: -70, elevation: 25, distance: 2.5 }, light: { azimuth: 45, elevation: 55 },
+          split: [1 / 3, 2 / 3], rect: [0, 0, 1, 1] },
+};
+
+// What the tests and the benchmark read: how far the page is, what it shows, and its pixels.
+const hexc = window.hexcEdit = { status: 'loading', compiles: 0, frames: 0, liveEdits: 0, pending: 0, shown: [], lastFrame: 0, editAt: 0 };
+
+async function api(path, body) {
+  const response = await fetch(path, body === undefined ? {} : { method: 'POST', body: JSON.stringify(body) });
+  const text = await response.text();
+  try { return { status: response.status, ...JSON.parse(text) }; } catch { return { status: response.status, message: text }; }
+}
+
+function status(text, error = false) {
+  $('status').textContent = text;
+  $('status').className = error ? 'error' : '';
+}
+
+// Diagnostics over the view, never instead of it: the last program that compiled keeps drawing.
+function showDiagnostics(list, kind) {
+  hexc.shown = list.map(d => d.text);
+  $('diagnostics').hidden = list.length === 0;
+  $('diagnostics').className = kind;
+  $('diagnostics').textContent = hexc.shown.join('\n');
+}
+
+function setPointer(doc, pointer, value) {
+  const keys = pointer.split('/').slice(1);
+  let at = doc;
+  for (const k of keys.slice(0, -1)) at = at[k] ??= {};
+  const last = keys[keys.length - 1];
+  if (value === undefined) delete at[last]; else at[last] = value;
+}
+
+let renderer, panel;
+
+async function texture(name, srgb) {
+  const response = await fetch(`/api/texture/${name}`);
+  if (!response.ok) throw new Error(await response.text());
+  const h = k => response.headers.get(k);
+  return { width: Number(h('X-Hexc-Width')), height: Number(h('X-Hexc-Height')), format: h('X-Hexc-Format'), srgb,
+           texels: await response.arrayBuffer() };
+}
+
+// Fetches the textures the programs read that are not loaded yet (all of them after a change on disk).
+async function loadTextures(programs, fresh) {
+  const slots = programs.hex?.manifest?.slots || [];
+  for (const name of renderer.textureSources()) {
+    if (!fresh && renderer.textures[name]) continue;
+    const slot = slots.find(s => s.name === name);
+    renderer.setTexture(name, await texture(name, !!slot && slot.colorspace === 'srgb'));
+  }
+}
+
+// The cost of the shader as it ships, asked for once the new frame is drawn (its compile is not the page's).
+async function costLine(seq) {
+  $('cost').textContent = 'cost: compiling the shipped shader…';
+  const r = await api('/api/cost', { document: state.doc });
+  if (seq !== compileSeq) return;
+  const c = r.cost;
+  $('cost').textContent = c ? `${c.fetches} fetches/pixel · ${c.instructions} SPIR-V instructions · compiled in ${c.compile_ms.toFixed(0)} ms` : '';
+}
+
+let compileSeq = 0;
+async function compile(freshTextures = false) {
+  const seq = ++compileSeq;
+  hexc.pending++;
+  status('compiling…');
+  try {
+    const timing = { sent: performance.now() };  // where a structural edit's time goes (bench/edit_latency.py)
+    const r = await api('/api/compile', { document: state.doc, slot: state.doc.slots?.[panel.slot]?.name });
+    if (seq !== compileSeq) return;  // a later edit is being compiled
+    timing.answered = performance.now();
+    hexc.compiles++;
+    if (!r.ok) {
+      showDiagnostics(r.diagnostics || [{ text: r.message }], 'error');
+      status('the material does not compile: the view shows its last version', true);
+      hexc.status = 'error';
+      return draw();
+    }
+    renderer.setPrograms(r.programs);
+    hexc.programs = Object.keys(renderer.programs);
+    timing.linked = performance.now();
+    await loadTextures(r.programs, freshTextures);
+    timing.textures = performance.now();
+    hexc.timing = timing;
+    const failed = Object.entries(r.programs).flatMap(([name, p]) => p.fragment ? [] : p.diagnostics.map(d => ({ text: `${name}: ${d.text}` })));
+    showDiagnostics([...r.diagnostics, ...failed], 'warning');
+    $('template').textContent = r.note ? `shown with template ${r.template}: ${r.note}` : `template ${r.template}`;
+    status(state.dirty ? 'edited (not saved)' : 'saved');
+    hexc.status = 'ready';
+    draw();
+    costLine(seq);
+  } catch (e) {
+    showDiagnostics([{ text: String(e.message || e) }], 'error');
+    hexc.status = 'error';
+    status('error', true);
+    draw();
+  } finally {
+    hexc.pending--;
+  }
+}
+
+let compileTimer = null;
+function scheduleCompile() {
+  clearTimeout(compileTimer);
+  compileTimer = setTimeout(compile, 120);  // one compile for a burst of structural edits
+}
+
+// A panel edit: the document changes; a setting that is a uniform in every program is set there and drawn at once,
+// anything else compiles again.
+function onEdit(pointer, value, target) {
+  hexc.editAt = performance.now();
+  setPointer(state.doc, pointer, value);
+  state.dirty = true;
+  $('save').disabled = false;
+  status('edited (not saved)');
+  const names = target.slots.map(i => `${state.doc.slots[i].name}_${target.key}`);
+  if (names.every(n => renderer.member(n))) {
+    const p = state.schema.$defs.hextiling.properties[target.key];
+    target.slots.forEach((i, k) => {
+      const v = target.key === 'heightwidth' ? state.doc.slots[i].height_blend.width : effective(state.doc, i, target.key, p.default);
+      renderer.setParam(names[k], v);
+    });
+    hexc.liveEdits++;
+    draw();
+  } else {
+    scheduleCompile();
+  }
+  if (value === undefined) panel.render(state.doc);  // a reset shows the default again
+}
+
+function regions() {
+  const [a, b] = state.view.split;
+  return state.view.output === 'split' ? [['plain', 0, a], ['hex', a, b], ['weights', b, 1]] : [[state.view.output, 0, 1]];
+}
+
+function labels() {
+  const names = { plain: 'plain tiling', hex: 'hex-tiling', weights: 'weights', values: 'slot values' };
+  const slot = state.doc?.slots?.[panel.slot]?.name;
+  $('labels').replaceChildren(...regions().map(([name, left]) => {
+    const span = document.createElement('span');
+    span.style.left = `calc(${left * 100}% + 8px)`;
+    span.textContent = name === 'weights' || name === 'values' ? `${names[name]} (${slot})` : names[name];
+    return span;
+  }));
+  state.view.split.forEach((x, i) => { $(`divider-${i}`).style.left = `${x * 100}%`; $(`divider-${i}`).hidden = state.view.output !== 'split'; });
+}
+
+let drawRequested = false;
+function draw() {
+  if (drawRequested) return;
+  drawRequested = true;
+  requestAnimationFrame(() => {
+    drawRequested = false;
+    const canvas = $('canvas');
+    if (!captureSize) {
+      canvas.width = Math.max(1, Math.round(canvas.clientWidth * devicePixelRatio));
+      canvas.height = Math.max(1, Math.round(canvas.clientHeight * devicePixelRatio));
+    }
+    renderer.draw(state.view, regions());
+    renderer.gl.readPixels(0, 0, 1, 1, renderer.gl.RGBA, renderer.gl.UNSIGNED_BYTE, new Uint8Array(4));  // the frame is done
+    hexc.frames++;
+    hexc.lastFrame = performance.now();
+    labels();
+    if (captureSize && hexc.status !== 'loading') postCapture();
+  });
+}
+
+let captured = false;
+async function postCapture() {
+  if (captured || hexc.pending) return;
+  captured = true;
+  const [w, h] = captureSize.split('x').map(Number);
+  const headers = { 'X-Hexc-Width': String(w), 'X-Hexc-Height': String(h) };
+  if (hexc.status === 'error') headers['X-Hexc-Error'] = '1';  // the body is then what the page shows
+  await fetch('/api/capture', { method: 'POST', headers, body: hexc.status === 'error' ? hexc.shown.join('\n') : renderer.readCanvas() });
+}
+
+async function load() {
+  const r = await api('/api/material');
+  state.version = r.version;
+  $('title').textContent = `hexc edit: ${r.file}`;
+  try {
+    state.doc = JSON.parse(r.text);
+  } catch {
+    showDiagnostics(r.diagnostics?.length ? r.diagnostics : [{ text: `${r.file} is not JSON` }], 'error');
+    hexc.status = 'error';
+    return draw();
+  }
+  state.dirty = false;
+  $('save').disabled = true;
+  panel.render(state.doc);
+  await compile(true);
+}
+
+async function save() {
+  const r = await api('/api/save', { document: state.doc, version: state.version });
+  if (r.ok) {
+    state.version = r.version;
+    state.dirty = false;
+    $('save').disabled = true;
+    status('saved');
+  } else if (r.conflict) {
+    status(r.message, true);
+    await load();
+  } else {
+    showDiagnostics(r.diagnostics || [], 'error');
+    status(r.message || 'not saved', true);
+  }
+}
+
+// The file and its textures on disk: a change made elsewhere reloads the material; the view and the panel's slot stay.
+async function watch() {
+  try {
+    const r = await api('/api/version');
+    if (r.version && r.version !== state.version && !hexc.pending) {
+      status('changed on disk: reloading');
+      await load();
+    }
+  } catch { status('hexc edit is not running', true); }
+  setTimeout(watch, 700);
+}
+
+function controls() {
+  const distance = $('distance'), lo = Math.log(0.05), hi = Math.log(400);  // one texel up close to hundreds of repeats
+  distance.value = String((Math.log(state.view.camera.distance) - lo) / (hi - lo));
+  distance.addEventListener('input', () => { state.view.camera.distance = Math.exp(lo + Number(distance.value) * (hi - lo)); draw(); });
+  const bind = (id, get, set) => { $(id).value = String(get()); $(id).addEventListener('input', () => { set(Number($(id).value)); draw(); }); };
+  bind('elevation', () => state.view.camera.elevation, v => { state.view.camera.elevation = v; });
+  bind('light-azimuth', () => state.view.light.azimuth, v => { state.view.light.azimuth = v; });
+  bind('light-elevation', () => state.view.light.elevation, v => { state.view.light.elevation = v; });
+  for (const id of ['shape', 'output']) {
+    $(id).value = state.view[id];
+    $(id).addEventListener('change', () => { state.view[id] = $(id).value; draw(); });
+  }
+  $('save').addEventListener('click', save);
+  $('screenshot').addEventListener('click', () => $('canvas').toBlob(b => {
+    const a = document.createElement('a');
+    a.href = URL.createObjectURL(b);
+    a.download = `${state.doc?.name || 'material'}.png`;
+    a.click();
+  }));
+  interaction();
+}
+
+// Dragging the view orbits the camera; dragging a divider moves the split; the wheel changes the distance.
+function interaction() {
+  let drag = null;
+  const viewport = $('viewport');
+  viewport.addEventListener('pointerdown', e => {
+    drag = e.target.classList.contains('divider') ? { divider: Number(e.target.id.slice(-1)) } : { x: e.clientX, y: e.clientY };
+    viewport.setPointerCapture(e.pointerId);
+  });
+  viewport.addEventListener('pointermove', e => {
+    if (!drag) return;
+    const box = viewport.getBoundingClientRect();
+    if (drag.divider !== undefined) {
+      const s = state.view.split, x = Math.min(1, Math.max(0, (e.clientX - box.left) / box.width));
+      s[drag.divider] = drag.divider === 0 ? Math.min(x, s[1]) : Math.max(x, s[0]);
+    } else {
+      state.view.camera.azimuth -= (e.clientX - drag.x) * 0.4;
+      state.view.camera.elevation = Math.min(89, Math.max(2, state.view.camera.elevation + (e.clientY - drag.y) * 0.3));
+      Object.assign(drag, { x: e.clientX, y: e.clientY });
+    }
+    draw();
+  });
+  viewport.addEventListener('pointerup', () => { drag = null; });
+  viewport.addEventListener('wheel', e => {
+    e.preventDefault();
+    state.view.camera.distance = Math.min(400, Math.max(0.05, state.view.camera.distance * Math.exp(e.deltaY * 0.001)));
+    draw();
+  }, { passive: false });
+}
+
+// For tests and the benchmark: the view state, and the pixels of the current view as floats (rows bottom first).
+hexc.drawPending = () => drawRequested;
+hexc.view = () => state.view;
+hexc.setView = v => { Object.assign(state.view, v); draw(); };
+hexc.readFloat = (w, h) => Array.from(renderer.readFloat(state.view, regions(), w, h));
+hexc.selectSlot = name => { panel.slot = state.doc.slots.findIndex(s => s.name === name); panel.render(state.doc); return compile(); };
+
+async function start() {
+  if (captureSize) {
+    document.body.classList.add('capture');
+    const [w, h] = captureSize.split('x').map(Number);
+    Object.assign($('canvas'), { width: w, height: h });
+  }
+  try {
+    const names = ['view.vert.glsl', 'display.vert.glsl', 'display.frag.glsl'];
+    const [schema, ...sources] = await Promise.all([api('/api/schema'), ...names.map(n => fetch(`/api/shader/${n}`).then(r => r.text()))]);
+    state.schema = schema;
+    renderer = new View($('canvas'), Object.fromEntries(names.map((n, i) => [n, sources[i]])));
+    panel = new Panel($('panel'), schema, onEdit);
+    panel.onSlot = () => compile();
+    controls();
+    await load();
+  } catch (e) {
+    showDiagnostics([{ text: String(e.message || e) }], 'error');
+    hexc.status = 'error';
+    if (captureSize) postCapture();
+  }
+  if (!captureSize) watch();
+}
+
+start();

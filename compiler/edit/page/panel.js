@@ -1,0 +1,159 @@
+// The settings panel, made from the material schema (materials/material.schema.json) and the document: one control per
+// hex-tiling setting of the material and of the selected slot, with its range, default, unit and a reset, and the
+// slot's own keys. A control reports (pointer, value) edits; which of them are uniforms is the page's to decide.
+
+// Slider spans for settings the schema leaves unbounded (or bounds far beyond what is useful to drag through); the
+// number box beside each slider takes any value the schema allows.
+const kSpans = { tiling: [0.1, 64, 'log'], rotation: [0, 2], rotationrange: [-360, 360], scalerange: [0.1, 10, 'log'],
+                 rotationsteps: [0, 24], offsetsteps: [0, 64] };
+
+// The effective value of `key` at a level: the slot's own, else the material's, else the schema's default.
+export function effective(doc, slotIndex, key, schemaDefault) {
+  const own = slotIndex === null ? undefined : doc.slots[slotIndex].hextiling?.[key];
+  if (own !== undefined) return own;
+  return doc.hextiling?.[key] !== undefined ? doc.hextiling[key] : schemaDefault;
+}
+
+function element(tag, attributes = {}, ...children) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attributes)) if (v !== undefined) e.setAttribute(k, v);
+  for (const c of children) e.append(c);
+  return e;
+}
+
+// A value rounded to what the slider resolves, so that the file gets 0.3 rather than 0.30000000000000004.
+function rounded(x, integer) {
+  return integer ? Math.round(x) : Number(x.toPrecision(4));
+}
+
+// What a schema property allows: the range of a number (or of each array item), its components and whether whole.
+function describe(p) {
+  if (p.oneOf && p.oneOf.some(o => o.type === 'array')) return { ...describe(p.oneOf.find(o => o.type === 'array')), either: true };
+  if (p.type === 'array') {
+    const item = p.items || {};
+    return { ...describe(item), count: p.minItems };
+  }
+  const integer = p.type === 'integer';
+  const min = p.minimum ?? p.exclusiveMinimum;
+  return { integer, min, max: p.maximum, exclusiveMin: p.exclusiveMinimum !== undefined, count: 1 };
+}
+
+export class Panel {
+  constructor(root, schema, onEdit) {
+    this.root = root;
+    this.schema = schema;
+    this.onEdit = onEdit;  // (pointer, value or undefined to remove, {slots, key}) => void
+    this.slot = 0;
+  }
+
+  get hextiling() { return this.schema.$defs.hextiling.properties; }
+
+  render(doc) {
+    this.doc = doc;
+    const slots = Array.isArray(doc.slots) ? doc.slots.length : 0;  // an invalid document still shows what it has
+    this.slot = Math.max(0, Math.min(this.slot, slots - 1));
+    this.root.replaceChildren(this.section('Material', null), ...(slots ? [this.slotSection()] : []));
+  }
+
+  // Material-wide settings (slotIndex null) or one slot's overrides, each key of the schema's hextiling.
+  section(title, slotIndex) {
+    const box = element('section', { class: 'settings' }, element('h2', {}, title));
+    for (const [key, p] of Object.entries(this.hextiling)) {
+      if (slotIndex !== null && (key === 'projection' || key === 'planesharpness')) continue;  // material-wide only
+      const base = slotIndex === null ? '/hextiling' : `/slots/${slotIndex}/hextiling`;
+      const own = slotIndex === null ? this.doc.hextiling?.[key] : this.doc.slots[slotIndex].hextiling?.[key];
+      const inherited = slotIndex === null ? p.default : effective(this.doc, null, key, p.default);
+      const slots = slotIndex === null ? (this.doc.slots || []).map((s, i) => i).filter(i => this.doc.slots[i].hextiling?.[key] === undefined)
+                                       : [slotIndex];
+      box.append(this.control(key, p, `${base}/${key}`, own, inherited, { slots, key }));
+    }
+    return box;
+  }
+
+  slotSection() {
+    const i = this.slot, slot = this.doc.slots[i];
+    const picker = element('select', { id: 'slot-select', 'aria-label': 'slot' });
+    this.doc.slots.forEach((s, k) => picker.append(element('option', { value: k }, `${s.name} (${s.kind})`)));
+    picker.value = String(i);
+    picker.addEventListener('change', () => { this.slot = Number(picker.value); this.render(this.doc); this.onSlot?.(this.slot); });
+    const slotDefs = this.schema.$defs.slot.properties;
+    const box = element('section', { class: 'settings' }, element('h2', {}, 'Slot ', picker),
+                        element('div', { class: 'texture' }, `texture ${slot.texture}`));
+    const keys = ['kind', 'colorspace', ...(slot.kind === 'scalar' ? ['channel'] : []), ...(slot.kind === 'normal' ? ['flip_y'] : [])];
+    for (const key of keys) box.append(this.control(key, slotDefs[key], `/slots/${i}/${key}`, slot[key], slotDefs[key].default, { slots: [i], key }));
+    if (slot.height_blend) {
+      const w = slotDefs.height_blend.properties.width;
+      box.append(this.control('height_blend width', w, `/slots/${i}/height_blend/width`, slot.height_blend.width, w.default,
+                              { slots: [i], key: 'heightwidth' }));
+    }
+    box.append(this.section(`${slot.name}: hex-tiling overrides`, i));
+    return box;
+  }
+
+  // One setting: its editor, the value's default (inherited for a slot) and unit, and a reset that removes the key.
+  control(label, p, pointer, own, inherited, target) {
+    const value = own !== undefined ? own : inherited;
+    const row = element('div', { class: own !== undefined ? 'control own' : 'control', 'data-pointer': pointer });
+    const unit = p['x-unit'] ? ` ${p['x-unit']}` : '';
+    const shown = inherited === undefined ? '(the mask\'s)' : JSON.stringify(inherited);
+    const reset = element('button', { class: 'reset', title: 'remove this key: back to the default' }, '↺');
+    reset.disabled = own === undefined;
+    reset.addEventListener('click', () => this.onEdit(pointer, undefined, target));
+    row.append(element('label', { title: p.description || '' }, label), this.editor(label, p, pointer, value, target), reset,
+               element('span', { class: 'default' }, `${unit ? unit.trim() + ', ' : ''}default ${shown}`));
+    return row;
+  }
+
+  editor(label, p, pointer, value, target) {
+    const choices = p.enum || (p.oneOf && p.oneOf.some(o => o.const) ? [1, 2, 3, 'adaptive'] : null);
+    if (p.type === 'boolean') {
+      const box = element('input', { type: 'checkbox' });
+      box.checked = !!value;
+      box.addEventListener('change', () => this.onEdit(pointer, box.checked, target));
+      return box;
+    }
+    if (choices) {
+      const select = element('select', {});
+      if (value === undefined) select.append(element('option', { value: '' }, '(default)'));
+      for (const c of choices) select.append(element('option', { value: JSON.stringify(c) }, String(c)));
+      select.value = value === undefined ? '' : JSON.stringify(value);
+      select.addEventListener('change', () => this.onEdit(pointer, JSON.parse(select.value), target));
+      return select;
+    }
+    return this.sliders(label, p, pointer, value, target);
+  }
+
+  // A slider and a number box per component; an edit writes the whole value (a number, or the array).
+  sliders(label, p, pointer, value, target) {
+    const d = describe(p), span = kSpans[label] || [];
+    const count = d.either ? 2 : d.count;
+    const values = Array.isArray(value) ? [...value] : Array(count).fill(value);
+    const min = span[0] ?? d.min ?? 0, max = span[1] ?? d.max ?? 1, log = span[2] === 'log';
+    const toSlider = x => log ? Math.log(x / min) / Math.log(max / min) : (x - min) / (max - min);
+    const fromSlider = t => log ? min * Math.pow(max / min, t) : min + t * (max - min);
+    const box = element('span', { class: 'sliders' });
+    const write = () => {
+      const out = !d.either || Array.isArray(value) || values[0] !== values[1] ? values.slice(0, count) : values[0];
+      this.onEdit(pointer, count === 1 ? values[0] : out, target);
+    };
+    for (let k = 0; k < count; ++k) {
+      const slider = element('input', { type: 'range', min: 0, max: 1, step: d.integer ? 1 / Math.max(1, max - min) : 0.001 });
+      const number = element('input', { type: 'number', step: d.integer ? 1 : 'any', min: d.exclusiveMin ? undefined : d.min, max: d.max });
+      slider.value = String(toSlider(values[k]));
+      number.value = String(values[k]);
+      slider.addEventListener('input', () => {
+        values[k] = rounded(fromSlider(Number(slider.value)), d.integer);
+        number.value = String(values[k]);
+        write();
+      });
+      number.addEventListener('change', () => {
+        if (number.value === '' || !Number.isFinite(Number(number.value))) return;
+        values[k] = d.integer ? Math.round(Number(number.value)) : Number(number.value);
+        slider.value = String(toSlider(values[k]));
+        write();
+      });
+      box.append(slider, number);
+    }
+    return box;
+  }
+}

@@ -1,0 +1,191 @@
+#include "server.h"
+
+#include <httplib.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <random>
+#include <stdexcept>
+
+#include "page_files.h"
+
+namespace hexc::edit {
+
+namespace {
+
+// 128 random bits as hex, from the system's entropy source, as Jupyter's token.
+std::string randomToken() {
+    std::random_device device;
+    std::string token;
+    for (int i = 0; i < 4; ++i) {
+        char part[9];
+        std::snprintf(part, sizeof part, "%08x", unsigned(device()));
+        token += part;
+    }
+    return token;
+}
+
+// Compares without stopping at the first difference, so that timing tells nothing about the token.
+bool sameSecret(const std::string& a, const std::string& b) {
+    unsigned diff = unsigned(a.size() ^ b.size());
+    for (size_t i = 0; i < a.size(); ++i) diff |= unsigned(a[i] ^ b[i % std::max<size_t>(b.size(), 1)]);
+    return diff == 0;
+}
+
+void answer(httplib::Response& res, const Reply& reply) {
+    res.status = reply.status;
+    for (const auto& [name, value] : reply.headers) res.set_header(name, value);
+    res.set_content(reply.body, reply.contentType.c_str());
+}
+
+void refuse(httplib::Response& res, int status, const std::string& why) { answer(res, {status, "hexc edit: " + why + "\n", "text/plain"}); }
+
+const std::string& pageFile(const std::string& name) {
+    static const std::string none;
+    auto it = pageFiles().find(name);
+    return it == pageFiles().end() ? none : it->second;
+}
+
+std::string contentType(const std::string& name) {
+    if (name.ends_with(".html")) return "text/html; charset=utf-8";
+    if (name.ends_with(".js")) return "text/javascript; charset=utf-8";
+    if (name.ends_with(".css")) return "text/css; charset=utf-8";
+    if (name.ends_with(".json")) return "application/json";
+    return "text/plain; charset=utf-8";
+}
+
+}  // namespace
+
+struct Server::Impl {
+    Impl(Session& s, CaptureHandler c) : session(s), capture(std::move(c)) {}
+    Session& session;
+    CaptureHandler capture;
+    httplib::Server http;
+    std::string token = randomToken();
+    int port = 0;
+    std::string url;
+
+    std::string cookieName() const { return "hexc_edit_" + std::to_string(port); }
+
+    // Whether the request carries the token: in the query (the printed address) or the cookie its first load set.
+    bool authorised(const httplib::Request& req) const {
+        if (req.has_param("token")) return sameSecret(req.get_param_value("token"), token);
+        const std::string cookies = req.get_header_value("Cookie"), name = cookieName() + "=";
+        for (size_t at = cookies.find(name); at != std::string::npos; at = cookies.find(name, at + 1)) {
+            if (at > 0 && cookies[at - 1] != ' ' && cookies[at - 1] != ';') continue;
+            const size_t begin = at + name.size(), end = std::min(cookies.find(';', begin), cookies.size());
+            if (sameSecret(cookies.substr(begin, end - begin), token)) return true;
+        }
+        return false;
+    }
+
+    // Refuses, before any route runs: another Host than this server's own names (a DNS rebinding page's requests carry
+    // its own host name), a missing or wrong token, and a path that tries to leave the routes.
+    httplib::Server::HandlerResponse guard(const httplib::Request& req, httplib::Response& res) const {
+        const std::string host = req.get_header_value("Host"), p = ":" + std::to_string(port);
+        if (host != "127.0.0.1" + p && host != "localhost" + p) {
+            refuse(res, 403, "wrong Host header `" + host + "`: open 127.0.0.1" + p + " or localhost" + p);
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        if (!authorised(req)) {
+            refuse(res, 403, "missing or wrong token: open the address hexc edit printed");
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        std::string target = req.target;
+        std::transform(target.begin(), target.end(), target.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        for (const char* bad : {"..", "%2e", "%2f", "%5c", "\\", "//"})
+            if (target.find(bad) != std::string::npos || req.path.find(bad) != std::string::npos) {
+                refuse(res, 403, "path refused: hexc edit serves its page, the material and its textures only");
+                return httplib::Server::HandlerResponse::Handled;
+            }
+        return httplib::Server::HandlerResponse::Unhandled;
+    }
+
+    void routes();
+    void bodyRoute(const std::string& path, std::function<Reply(const std::string&)> handle);
+};
+
+void Server::Impl::bodyRoute(const std::string& path, std::function<Reply(const std::string&)> handle) {
+    http.Post(path, [handle](const httplib::Request& req, httplib::Response& res) {
+        if (req.body.size() > kMaxDocumentBytes) return refuse(res, 413, "request too large");
+        answer(res, handle(req.body));
+    });
+}
+
+namespace {
+
+// What escapes a route is a hexc bug: the page gets it as an internal diagnostic, and the server goes on.
+void internalError(const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
+    std::string what = "unknown exception";
+    try {
+        std::rethrow_exception(error);
+    } catch (const std::exception& e) {
+        what = e.what();
+    } catch (...) {
+    }
+    const Diagnostic d = Diagnostic::make(Code::Internal, {req.path}, "", "hexc edit failed: " + what);
+    answer(
+        res,
+        {500, nlohmann::json({{"ok", false}, {"diagnostics", {{{"text", d.format()}, {"code", std::string(toString(d.code))}}}}}).dump()});
+}
+
+}  // namespace
+
+void Server::Impl::routes() {
+    http.Get("/", [this](const httplib::Request& req, httplib::Response& res) {
+        // The token in the address becomes a cookie, so that the page's own requests carry it.
+        if (req.has_param("token")) res.set_header("Set-Cookie", cookieName() + "=" + token + "; HttpOnly; SameSite=Strict; Path=/");
+        answer(res, {200, pageFile("index.html"), contentType("index.html")});
+    });
+    http.Get(R"(/([a-z]+\.(js|css)))", [](const httplib::Request& req, httplib::Response& res) {
+        const std::string name = req.matches[1];
+        if (pageFile(name).empty()) return refuse(res, 404, "no such file: " + name);
+        answer(res, {200, pageFile(name), contentType(name)});
+    });
+    http.Get("/api/schema", [](const httplib::Request&, httplib::Response& res) {
+        answer(res, {200, pageFile("material.schema.json"), "application/json"});
+    });
+    http.Get(R"(/api/shader/([a-z]+\.(vert|frag)\.glsl))", [](const httplib::Request& req, httplib::Response& res) {
+        const std::string name = req.matches[1];
+        if (pageFile(name).empty()) return refuse(res, 404, "no such shader: " + name);
+        answer(res, {200, pageFile(name), "text/plain; charset=utf-8"});
+    });
+    http.Get("/api/material", [this](const httplib::Request&, httplib::Response& res) { answer(res, session.material()); });
+    http.Get("/api/version", [this](const httplib::Request&, httplib::Response& res) {
+        answer(res, {200, nlohmann::json({{"version", session.version()}}).dump()});
+    });
+    http.Get(R"(/api/texture/([a-z][a-z0-9_]*(\.lut|\.gaussian)?))",
+             [this](const httplib::Request& req, httplib::Response& res) { answer(res, session.texture(req.matches[1])); });
+    bodyRoute("/api/compile", [this](const std::string& body) { return session.compile(body); });
+    bodyRoute("/api/cost", [this](const std::string& body) { return session.cost(body); });
+    bodyRoute("/api/save", [this](const std::string& body) { return session.save(body); });
+    if (!capture) return;
+    http.Post("/api/capture", [this](const httplib::Request& req, httplib::Response& res) {
+        const int width = std::atoi(req.get_header_value("X-Hexc-Width").c_str());
+        const int height = std::atoi(req.get_header_value("X-Hexc-Height").c_str());
+        answer(res, capture(width, height, req.body, req.has_header("X-Hexc-Error")));
+    });
+}
+
+Server::Server(Session& session, int port, CaptureHandler capture) : impl_(std::make_unique<Impl>(session, std::move(capture))) {
+    Impl& s = *impl_;
+    s.http.set_payload_max_length(kMaxRequestBytes);
+    s.http.set_default_headers({{"Cache-Control", "no-store"},
+                                {"X-Content-Type-Options", "nosniff"},
+                                {"Referrer-Policy", "no-referrer"},  // the address holds the token
+                                {"Content-Security-Policy", "default-src 'self'; img-src 'self' blob: data:; frame-ancestors 'none'"}});
+    s.http.set_exception_handler(internalError);
+    s.http.set_pre_routing_handler([&s](const httplib::Request& req, httplib::Response& res) { return s.guard(req, res); });
+    s.port = port == 0 ? s.http.bind_to_any_port("127.0.0.1") : (s.http.bind_to_port("127.0.0.1", port) ? port : -1);
+    if (s.port <= 0) throw std::runtime_error("cannot listen on 127.0.0.1:" + std::to_string(port) + " (in use?)");
+    s.url = "http://127.0.0.1:" + std::to_string(s.port) + "/?token=" + s.token;
+    s.routes();
+}
+
+Server::~Server() = default;
+int Server::port() const { return impl_->port; }
+const std::string& Server::url() const { return impl_->url; }
+void Server::run() { impl_->http.listen_after_bind(); }
+void Server::stop() { impl_->http.stop(); }
+
+}  // namespace hexc::edit

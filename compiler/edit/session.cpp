@@ -1,0 +1,264 @@
+#include "session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <future>
+
+#include "hexc/compiler.h"
+#include "hexc/files.h"
+#include "hexc/histogram.h"
+#include "hexc/json_text.h"
+#include "hexc/spirv.h"
+#include "options.h"
+#include "outputs.h"
+#include "render.h"
+#include "vk/render.h"
+
+namespace hexc::edit {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+Reply json(const Json& value, int status = 200) { return {status, value.dump()}; }
+
+Json toJson(const Diagnostic& d) {
+    return {{"code", std::string(toString(d.code))},
+            {"severity", d.severity == Diagnostic::Severity::Error ? "error" : "warning"},
+            {"file", d.loc.file},
+            {"line", d.loc.line},
+            {"col", d.loc.col},
+            {"path", d.path},
+            {"message", d.message},
+            {"hint", d.hint},
+            {"text", d.format()}};
+}
+
+Json toJson(const Diagnostics& diags) {
+    Json out = Json::array();
+    for (const Diagnostic& d : cli::byPosition(diags)) out.push_back(toJson(d));
+    return out;
+}
+
+// A request the page should never send (not JSON, wrong shape): a diagnostic about the request, status 400.
+Reply badRequest(const std::string& what) {
+    return json({{"ok", false}, {"diagnostics", toJson(Diagnostics{Diagnostic::make(Code::InputUnreadable, {"request"}, "", what)})}}, 400);
+}
+
+// The page's programs: GLSL ES 3.00 for WebGL 2, every setting a uniform (no specialisation, a lattice per slot) so
+// that a slider sets one member of the parameter block; packing left out, as it changes no texel and would need the
+// packed textures.
+CompileOptions pageOptions() {
+    CompileOptions o;
+    o.targets = {Target::Glsl};
+    o.glslEs = true;
+    o.glslVersion = 300;
+    o.specialize = false;
+    o.shareLattice = false;
+    o.concurrentTargets = false;
+    return o;
+}
+
+const OutputFile* fileEndingIn(const CompileResult& r, const std::string& suffix) {
+    auto it = std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& f) { return f.name.ends_with(suffix); });
+    return it == r.files.end() ? nullptr : &*it;
+}
+
+// A program for the page: the fragment shader and its manifest, or the diagnostics that stopped it.
+Json program(const Material& m, ShaderCache& cache) {
+    CompileOptions options = pageOptions();
+    options.cache = &cache;
+    CompileResult r = compile(m, options);
+    if (!r.ok()) return {{"diagnostics", toJson(r.diagnostics)}};
+    return {{"fragment", fileEndingIn(r, ".frag.glsl")->contents},
+            {"manifest", Json::parse(fileEndingIn(r, ".manifest.json")->contents)},
+            {"diagnostics", toJson(r.diagnostics)}};
+}
+
+// The shader as `hexc MATERIAL -o DIR` ships it, compiled anew: SPIR-V instructions and texture fetches per pixel.
+Json shippedCost(const Material& m) {
+    CompileOptions options;
+    options.targets = {Target::Spirv};
+    const auto start = std::chrono::steady_clock::now();
+    CompileResult r = compile(m, options);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (!r.ok()) return nullptr;
+    const ShaderOps ops = countOps(disassemble(r.spirv));
+    return {{"fetches", ops.textureSamples}, {"instructions", ops.instructions}, {"compile_ms", ms}};
+}
+
+// The slot the weights and values views show: the one asked for, else the first.
+const Slot& shownSlot(const Material& m, const std::string& name) {
+    auto it = std::find_if(m.slots.begin(), m.slots.end(), [&](const Slot& s) { return s.name == name; });
+    return it == m.slots.end() ? m.slots.front() : *it;
+}
+
+// Size and modification time of a file, as a version stamp; "-" when it cannot be read.
+std::string stamp(const fs::path& file) {
+    std::error_code ec;
+    const auto size = fs::file_size(file, ec);
+    if (ec) return "-";
+    const auto time = fs::last_write_time(file, ec);
+    return std::to_string(size) + "@" + std::to_string(time.time_since_epoch().count());
+}
+
+// A texture's texels for the page: RGBA, 8-bit or float, its size in headers.
+Reply texels(const Texture& t) {
+    Reply r{200,
+            t.isFloat() ? std::string(reinterpret_cast<const char*>(t.rgba32f.data()), t.rgba32f.size() * 4)
+                        : std::string(t.rgba8.begin(), t.rgba8.end()),
+            "application/octet-stream"};
+    r.headers = {{"X-Hexc-Width", std::to_string(t.width)},
+                 {"X-Hexc-Height", std::to_string(t.height)},
+                 {"X-Hexc-Format", t.isFloat() ? "rgba32f" : "rgba8"}};
+    return r;
+}
+
+}  // namespace
+
+Session::Session(fs::path material, fs::path root) : file_(std::move(material)), root_(std::move(root)) {}
+
+Reply Session::material() {
+    std::string why;
+    std::optional<std::string> text = readFile(file_, &why);
+    if (!text) return json({{"diagnostics", toJson({Diagnostic::make(Code::InputUnreadable, {file_.string()}, "", why)})}}, 500);
+    // The file's own diagnostics, for the page to show when it is not JSON (it has no document to compile then).
+    return json({{"file", file_.string()},
+                 {"text", *text},
+                 {"version", version()},
+                 {"diagnostics", toJson(parseMaterial(*text, file_).diagnostics)}});
+}
+
+Session::Parsed Session::parse(const nlohmann::ordered_json& edited) {
+    Parsed p;
+    // Parsed as it would be written, so that the diagnostics locate into the file as saved.
+    std::optional<std::string> onDisk = readFile(file_);
+    std::optional<std::string> text = onDisk ? rewriteJsonText(*onDisk, edited) : std::nullopt;
+    p.text = text ? *text : edited.dump(2) + "\n";  // a file that is not JSON any more is written anew
+    ParseResult parsed = parseMaterial(p.text, file_);
+    p.diagnostics = parsed.diagnostics;
+    if (parsed.material) {
+        Diagnostics outside = confined(*parsed.material);
+        p.diagnostics.insert(p.diagnostics.end(), outside.begin(), outside.end());
+        if (outside.empty()) p.material = std::move(parsed.material);
+    }
+    return p;
+}
+
+Diagnostics Session::confined(const Material& material) const {
+    Diagnostics out;
+    std::error_code ec;
+    const fs::path root = fs::weakly_canonical(root_, ec);
+    for (const Slot& s : material.slots) {
+        const fs::path real = fs::weakly_canonical(s.texturePath, ec);  // symlinks resolved
+        const auto [r, t] = std::mismatch(root.begin(), root.end(), real.begin(), real.end());
+        if (!ec && r == root.end()) continue;
+        out.push_back(Diagnostic::make(Code::TextureUnreadable, {file_.string(), s.line, s.col}, "",
+                                       "texture `" + s.texture + "` of slot `" + s.name + "` is outside the folder hexc edit serves (" +
+                                           root_.string() + "), or is a link out of it",
+                                       "--root names a folder that holds it"));
+    }
+    return out;
+}
+
+Reply Session::compile(const std::string& body) {
+    const Json request = Json::parse(body, nullptr, false);  // in the page's key order
+    if (!request.is_object() || !request.contains("document") || !request["document"].is_object())
+        return badRequest("expected {\"document\": the material, \"slot\": a slot name}");
+    std::lock_guard lock(mutex_);
+    Parsed p = parse(request["document"]);
+    if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
+    Material m = *p.material;
+    m.pack = false;
+    try {
+        std::string note;
+        const Material shown = cli::shownMaterial(m, "", pageOptions(), &note);
+        const std::string slot = request.value("slot", "");
+        const Slot& s = shownSlot(m, slot);
+        const vk::RenderOutput values = s.kind == SlotKind::Normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
+        // Five compiles, two at a time on this two-core machine's kind: the shader cache holds what repeats.
+        auto hex = std::async(std::launch::async, [&] { return program(shown, cache_); });
+        auto plain = std::async(std::launch::async, [&] { return program(cli::plainTiled(shown), cache_); });
+        Json weights = program(vk::renderedMaterial(m, vk::RenderOutput::Weights, s.name), cache_);
+        Json value = program(vk::renderedMaterial(m, values, s.name), cache_);
+        Json programs = {{"hex", hex.get()}, {"plain", plain.get()}, {"weights", weights}, {"values", value}};
+        compiled_ = m;
+        return json({{"ok", true},
+                     {"text", p.text},
+                     {"diagnostics", toJson(p.diagnostics)},
+                     {"template", shown.templ.written()},
+                     {"note", note},
+                     {"slot", s.name},
+                     {"programs", programs}});
+    } catch (const CompileError& e) {
+        return json({{"ok", false}, {"diagnostics", toJson(e.diagnostics)}});
+    } catch (const std::invalid_argument& e) {  // a view the material cannot give (renderedMaterial)
+        return json({{"ok", false}, {"diagnostics", toJson({Diagnostic::make(Code::WrongSlotKind, {file_.string()}, "", e.what())})}});
+    }
+}
+
+Reply Session::cost(const std::string& body) {
+    const Json request = Json::parse(body, nullptr, false);
+    if (!request.is_object() || !request.contains("document") || !request["document"].is_object())
+        return badRequest("expected {\"document\": the material}");
+    std::lock_guard lock(costMutex_);  // not the page's compiles': the cost line follows the new frame, never holds it up
+    Parsed p = parse(request["document"]);
+    if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
+    return json({{"ok", true}, {"cost", shippedCost(*p.material)}});
+}
+
+Reply Session::save(const std::string& body) {
+    const Json request = Json::parse(body, nullptr, false);  // in the page's key order
+    if (!request.is_object() || !request.contains("document") || !request["document"].is_object() || !request.contains("version"))
+        return badRequest("expected {\"document\": the material, \"version\": the file's version it was edited from}");
+    std::lock_guard lock(mutex_);
+    if (request["version"] != version())
+        return json({{"ok", false}, {"conflict", true}, {"message", file_.string() + " changed on disk; it was reloaded"}}, 409);
+    Parsed p = parse(request["document"]);
+    if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}, {"message", "not saved: fix the errors first"}});
+    try {
+        cli::writeAtomically(file_.has_parent_path() ? file_.parent_path() : ".", file_.filename().string(), p.text);
+    } catch (const std::exception& e) {
+        return json({{"ok", false}, {"message", e.what()}}, 500);
+    }
+    return json({{"ok", true}, {"version", version()}, {"text", p.text}});
+}
+
+std::optional<Texture> Session::loadSlotTexture(const std::string& name, std::string* whyNot) {
+    const size_t dot = name.find('.');
+    const std::string slotName = name.substr(0, dot), derived = dot == std::string::npos ? "" : name.substr(dot + 1);
+    auto it = std::find_if(compiled_->slots.begin(), compiled_->slots.end(), [&](const Slot& s) { return s.name == slotName; });
+    if (it == compiled_->slots.end()) {
+        *whyNot = "no slot `" + slotName + "` in the material";
+        return std::nullopt;
+    }
+    // Raw texels: the page uploads a colour slot's into an sRGB format, which decodes them as it samples.
+    if (derived.empty()) return loadTexture(it->texturePath, false);
+    // The histogram blend's Gaussian texture and look-up table, as hexc writes them beside the shader.
+    HistogramTransform h = histogramTransform(loadTexture(it->texturePath, it->colorSpace == ColorSpace::Srgb), *it);
+    return derived == "lut" ? std::move(h.lut) : std::move(h.gaussian);
+}
+
+Reply Session::texture(const std::string& name) {
+    std::lock_guard lock(mutex_);
+    if (!compiled_) return {404, "no material compiled yet", "text/plain"};
+    if (Diagnostics outside = confined(*compiled_); !outside.empty()) return {403, formatAll(outside), "text/plain"};
+    std::string why;
+    try {
+        if (std::optional<Texture> t = loadSlotTexture(name, &why)) return texels(*t);
+    } catch (const TextureError& e) {
+        why = e.what();
+    }
+    return {404, why, "text/plain"};
+}
+
+std::string Session::version() {
+    std::string v = stamp(file_);
+    ParseResult parsed = parseMaterialFile(file_);  // the textures the file names now
+    if (parsed.material)
+        for (const Slot& s : parsed.material->slots) v += "," + stamp(s.texturePath);
+    return v;
+}
+
+}  // namespace hexc::edit

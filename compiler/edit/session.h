@@ -1,0 +1,67 @@
+#pragma once
+// What `hexc edit` serves about its one material: the document, its shaders compiled for the page (GLSL ES 3.00), its
+// textures as uploaded, the cost of the shader as it ships, and saving. Every answer is JSON or pixels; bad input from
+// the page is an answer with diagnostics, never an exception out of here.
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "hexc/cache.h"
+#include "hexc/image.h"
+#include "hexc/material.h"
+
+namespace hexc::edit {
+
+// An HTTP answer: its status, body and content type, and headers beside them.
+struct Reply {
+    int status = 200;
+    std::string body;
+    std::string contentType = "application/json";
+    std::map<std::string, std::string> headers = {};
+};
+
+class Session {
+public:
+    // `material`: the JSON material edited; `root`: the folder whose files may be served (its textures must be inside).
+    Session(std::filesystem::path material, std::filesystem::path root);
+
+    // {"file", "text", "version"}: the material file as it is on disk.
+    Reply material();
+    // POST {"document": the material as JSON, "slot": the slot the weights and values views show}: the document as it
+    // would be saved, parsed and compiled into the page's programs; or its diagnostics.
+    Reply compile(const std::string& body);
+    // POST {"document"}: texture fetches per pixel and SPIR-V instructions of the shader `hexc MATERIAL -o DIR` writes,
+    // and the time its compile takes (compiled anew, not from a cache).
+    Reply cost(const std::string& body);
+    // POST {"document", "version"}: writes the document into the material file, keeping its text where unchanged; refused
+    // when the file changed on disk since `version` or the document does not compile.
+    Reply save(const std::string& body);
+    // A texture of the last compiled document as the page uploads it, RGBA texels: a slot's ("albedo"), or the Gaussian
+    // texture or look-up table its histogram blend reads ("albedo.gaussian", "albedo.lut").
+    Reply texture(const std::string& name);
+    // Changes whenever the material file or one of its textures does (size and modification time).
+    std::string version();
+
+private:
+    struct Parsed {
+        std::string text;  // the document as it would be written
+        std::optional<Material> material;
+        Diagnostics diagnostics;
+    };
+    Parsed parse(const nlohmann::ordered_json& edited);
+    // Diagnostics for textures outside root_ (or reached through a symlink that leaves it).
+    Diagnostics confined(const Material& material) const;
+    std::optional<Texture> loadSlotTexture(const std::string& name, std::string* whyNot);
+
+    std::filesystem::path file_, root_;
+    std::mutex mutex_;      // the page's requests come on several threads
+    std::mutex costMutex_;  // cost() is apart: it reads only the file and the document
+    ShaderCache cache_;
+    std::optional<Material> compiled_;  // the last document that compiled: its textures are served
+};
+
+}  // namespace hexc::edit

@@ -1,0 +1,147 @@
+"""hexc edit's server refuses what it must, over plain HTTP (no browser): each rule of docs/edit.md#safety.
+
+Usage: security_test.py HEXC  (from the source root; materials/rock.json is copied into a temporary folder)
+"""
+import json
+import os
+import shutil
+import socket
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from edit_support import Server  # noqa: E402
+
+HEXC = None
+
+
+class Security(unittest.TestCase):
+    def setUp(self):
+        self.folder = tempfile.mkdtemp(prefix="hexc-edit-security-")
+        shutil.copytree("materials/textures", os.path.join(self.folder, "textures"))
+        self.material = os.path.join(self.folder, "rock.json")
+        shutil.copy("materials/rock.json", self.material)
+        with open(self.material, "rb") as f:
+            self.original = f.read()
+        self.server = Server(HEXC, self.material)
+
+    def tearDown(self):
+        self.server.stop()
+        shutil.rmtree(self.folder, ignore_errors=True)
+
+    def document(self):
+        return json.loads(self.original)
+
+    def test_listens_on_loopback_only(self):
+        with socket.socket() as s:
+            s.settimeout(5)
+            self.assertEqual(s.connect_ex(("127.0.0.1", self.server.port)), 0)
+        addresses = {a[4][0] for a in socket.getaddrinfo(socket.gethostname(), None, socket.AF_INET)} - {"127.0.0.1", "127.0.1.1"}
+        for address in addresses:  # the machine's other addresses reach nothing
+            with socket.socket() as s:
+                s.settimeout(5)
+                self.assertNotEqual(s.connect_ex((address, self.server.port)), 0, address)
+
+    def test_token_is_required(self):
+        self.assertEqual(self.server.request("GET", "/")[0], 200)
+        for path in ("/", "/edit.js", "/api/material", "/api/schema", "/api/texture/albedo"):
+            self.assertEqual(self.server.request("GET", path, token=False)[0], 403, path)
+            self.assertEqual(self.server.request("GET", path, token="0" * 32)[0], 403, path)
+            self.assertEqual(self.server.request("GET", path, token=self.server.token[:-1])[0], 403, path)
+        self.assertEqual(self.server.request("POST", "/api/save", {"document": self.document(), "version": ""}, token=False)[0], 403)
+
+    def test_first_load_sets_a_cookie_that_carries_the_token(self):
+        status, headers, _ = self.server.request("GET", "/")
+        cookie = headers["Set-Cookie"].split(";")[0]
+        self.assertIn("HttpOnly", headers["Set-Cookie"])
+        self.assertIn("SameSite=Strict", headers["Set-Cookie"])
+        self.assertEqual(self.server.request("GET", "/api/material", headers={"Cookie": cookie}, token=False)[0], 200)
+        name = cookie.split("=")[0]
+        self.assertEqual(self.server.request("GET", "/api/material", headers={"Cookie": name + "=" + "f" * 32}, token=False)[0], 403)
+
+    def test_host_header_is_checked(self):
+        port = self.server.port
+        self.assertEqual(self.server.request("GET", "/", host="localhost:%d" % port)[0], 200)
+        for host in ("evil.example:%d" % port, "127.0.0.1", "localhost", "127.0.0.1:%d" % (port + 1), "127.0.0.1:%d.evil" % port):
+            self.assertEqual(self.server.request("GET", "/api/material", host=host)[0], 403, host)
+
+    def test_paths_outside_the_routes_are_refused(self):
+        for path in ("/../rock.json", "/%2e%2e/rock.json", "/%2E%2E/%2e%2e/etc/passwd", "/api/texture/..%2f..%2fetc%2fpasswd",
+                     "//etc/passwd", "/api/texture/albedo/../../rock.json", "/edit.js/..", "/.%2e/textures/rock_albedo.png"):
+            status, _, body = self.server.request("GET", path)
+            self.assertEqual(status, 403, path)
+            self.assertNotIn(b"root:", body)
+        for path in ("/etc/passwd", "/rock.json", "/textures/rock_albedo.png", "/api/texture/nothing", "/CMakeLists.txt"):
+            status, _, body = self.server.request("GET", path)
+            self.assertEqual(status, 404, path)
+
+    def test_a_texture_linked_out_of_the_folder_is_refused(self):
+        outside = tempfile.mkdtemp(prefix="hexc-edit-outside-")
+        try:
+            shutil.copy("materials/textures/rock_albedo.png", os.path.join(outside, "secret.png"))
+            os.symlink(os.path.join(outside, "secret.png"), os.path.join(self.folder, "textures", "linked.png"))
+            doc = self.document()
+            doc["slots"][0]["texture"] = "textures/linked.png"
+            status, r = self.server.json("POST", "/api/compile", {"document": doc})
+            self.assertFalse(r["ok"])
+            self.assertIn("is outside the folder hexc edit serves", r["diagnostics"][0]["text"])
+            self.assertRegex(r["diagnostics"][0]["text"], r"rock\.json:\d+:\d+: error\[HX1\d\d\]")
+            for texture in ("/api/texture/albedo", "/api/texture/albedo.gaussian"):
+                self.assertIn(self.server.request("GET", texture)[0], (403, 404), texture)
+            doc["slots"][0]["texture"] = "../../../../../../../../etc/passwd"
+            status, r = self.server.json("POST", "/api/compile", {"document": doc})
+            self.assertFalse(r["ok"])
+            status, r = self.server.json("POST", "/api/save", {"document": doc, "version": self.server.json("GET", "/api/version")[1]["version"]})
+            self.assertFalse(r["ok"])
+            self.assert_material_unchanged()
+        finally:
+            shutil.rmtree(outside, ignore_errors=True)
+
+    def test_oversized_requests_are_refused(self):
+        big = b"{" + b" " * (17 << 20) + b"}"  # more than a capture's 16 MiB
+        self.assertEqual(self.server.request("POST", "/api/compile", big)[0], 413)
+        document = json.dumps({"document": self.document(), "padding": "x" * (2 << 20)}).encode()  # over the 1 MiB of a material
+        self.assertEqual(self.server.request("POST", "/api/save", document)[0], 413)
+        self.assert_material_unchanged()
+
+    def test_bad_input_gets_a_diagnostic(self):
+        for body in (b"", b"not json", b"[1, 2]", b'{"document": 3}', b'{"document": {}}', b'{"document": {"name": 1}}'):
+            status, _, data = self.server.request("POST", "/api/compile", body)
+            self.assertIn(status, (200, 400), body)
+            r = json.loads(data)
+            self.assertFalse(r["ok"], body)
+            self.assertRegex(r["diagnostics"][0]["text"], r"error\[HX\d{3}\]", body)
+        status, _, data = self.server.request("POST", "/api/save", b'{"document": {"name": "x"}}')
+        self.assertEqual(status, 400)
+        self.assertEqual(self.server.request("GET", "/api/material")[0], 200)  # still serving
+        self.assert_material_unchanged()
+
+    def test_save_writes_the_material_file_only(self):
+        before = sorted(os.listdir(self.folder))
+        doc = self.document()
+        doc["name"] = "../../elsewhere"  # a name is not a path: it is a diagnostic, and nothing is written
+        version = self.server.json("GET", "/api/version")[1]["version"]
+        status, r = self.server.json("POST", "/api/save", {"document": doc, "version": version})
+        self.assertFalse(r["ok"])
+        self.assertIn("/name", " ".join(d["text"] for d in r["diagnostics"]))
+        self.assert_material_unchanged()
+        doc = self.document()
+        doc["hextiling"]["falloff"] = 0.7
+        status, r = self.server.json("POST", "/api/save", {"document": doc, "version": version})
+        self.assertTrue(r["ok"], r)
+        self.assertEqual(sorted(os.listdir(self.folder)), before)
+        with open(self.material, "rb") as f:
+            self.assertEqual(f.read(), self.original.replace(b'"falloff": 0.75', b'"falloff": 0.7'))
+        # A save from a version that is no longer on disk is refused: the page reloads instead.
+        status, r = self.server.json("POST", "/api/save", {"document": self.document(), "version": version})
+        self.assertEqual(status, 409)
+
+    def assert_material_unchanged(self):
+        with open(self.material, "rb") as f:
+            self.assertEqual(f.read(), self.original)
+
+
+if __name__ == "__main__":
+    HEXC = os.path.abspath(sys.argv.pop(1))
+    unittest.main(verbosity=2)
