@@ -117,6 +117,27 @@ std::string asEs310(const std::string& source, EShLanguage lang, const std::stri
     return ok ? "#version 310 es\n" + source.substr(kEs300.size()) : "";
 }
 
+// Where resources without a set, space or binding of their own go.
+void mapResources(glslang::TShader& shader, SourceLanguage language, const ResourceLayout& layout) {
+    const bool hlsl = language == SourceLanguage::Hlsl, openGl = language == SourceLanguage::OpenGlGlsl;
+    // Sources without a set or space (HLSL 5.0, OpenGL) go to the layout's set or space, OpenGL's to set 0.
+    shader.setResourceSetBinding({std::to_string(hlsl ? layout.hlsl.space : openGl ? 0 : HexcBindings(layout.vulkan).set)});
+    if (hlsl) {
+        shader.setShiftBinding(glslang::EResSampler, kHlslSamplerShift);
+        shader.setShiftBinding(glslang::EResTexture, kHlslTextureShift);
+        shader.setShiftBinding(glslang::EResUav, kHlslUavShift);
+    } else if (openGl) {
+        // GLSL 330 carries no binding or varying location qualifiers (OpenGL matches by name): glslang numbers
+        // what is missing in declaration order. Relaxed rules take loose uniforms into one block.
+        shader.setAutoMapBindings(true);
+        shader.setAutoMapLocations(true);
+        shader.setShiftBinding(glslang::EResTexture, kGlTextureShift);
+        shader.setEnvInputVulkanRulesRelaxed();
+        shader.setGlobalUniformSet(0);
+        shader.setGlobalUniformBinding(kGlDefaultBlockBinding);
+    }
+}
+
 }  // namespace
 
 SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const std::string& name, SourceLanguage language,
@@ -138,23 +159,7 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     shader.setEntryPoint(entryPoint.c_str());
     // GLSL's function is `main` whatever the module calls its entry point.
     if (!hlsl) shader.setSourceEntryPoint("main");
-    // Sources without a set or space (HLSL 5.0, OpenGL) go to the layout's set or space, OpenGL's to set 0.
-    const bool openGl = language == SourceLanguage::OpenGlGlsl;
-    shader.setResourceSetBinding({std::to_string(hlsl ? layout.hlsl.space : openGl ? 0 : HexcBindings(layout.vulkan).set)});
-    if (hlsl) {
-        shader.setShiftBinding(glslang::EResSampler, kHlslSamplerShift);
-        shader.setShiftBinding(glslang::EResTexture, kHlslTextureShift);
-        shader.setShiftBinding(glslang::EResUav, kHlslUavShift);
-    } else if (openGl) {
-        // GLSL 330 carries no binding or varying location qualifiers (OpenGL matches by name): glslang numbers
-        // what is missing in declaration order. Relaxed rules take loose uniforms into one block.
-        shader.setAutoMapBindings(true);
-        shader.setAutoMapLocations(true);
-        shader.setShiftBinding(glslang::EResTexture, kGlTextureShift);
-        shader.setEnvInputVulkanRulesRelaxed();
-        shader.setGlobalUniformSet(0);
-        shader.setGlobalUniformBinding(kGlDefaultBlockBinding);
-    }
+    mapResources(shader, language, layout);
     auto messages = EShMessages(EShMsgSpvRules | EShMsgVulkanRules | (hlsl ? EShMsgReadHlsl | EShMsgHlslOffsets : 0));
     if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
         appendGlslangLog(shader.getInfoLog(), name, result.diagnostics);
