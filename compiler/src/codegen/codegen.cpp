@@ -143,9 +143,9 @@ private:
             const std::string prefix = name[0] + std::string(".");
             std::string lines;
             if (!plan_.general)
-                for (const auto& [field, value] : library().neutral.at(name[0] == 'l' ? "HexcLattice" : "HexcBlend"))
-                    if (std::none_of(fields.begin(), fields.end(), [&](const Field& f) { return f.param && f.name == field; }))
-                        fixed[prefix + field] = value;
+                for (const auto& neutral : library().neutral.at(name[0] == 'l' ? "HexcLattice" : "HexcBlend"))
+                    if (std::none_of(fields.begin(), fields.end(), [&](const Field& f) { return f.param && f.name == neutral.first; }))
+                        fixed[prefix + neutral.first] = neutral.second;
             for (const Field& f : fields) {
                 if (!plan_.general && !f.param) fixed[prefix + f.name] = f.value;
                 if (plan_.general || f.param)
