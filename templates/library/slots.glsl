@@ -1,4 +1,5 @@
-// hexc per-slot snippets. codegen picks, per slot, a sampling section (`//@ <kind>.<hex|hex1|plain>`), which
+// hexc per-slot snippets. codegen picks, per slot, a sampling section
+// (`//@ <kind>.<hex|hex1|plain|histogram|packed|materialx>`), which
 // defines `hexcAt_${name}` (the slot at st with its gradients and split-coordinates cell), and a coordinates section
 // (`uv`, `uv.split`, `triplanar`), which defines the public `hexc_${name}` from it; plus the resource sections.
 // Tokens `${...}` are replaced in one pass; one codegen does not know is an error. ${name}: the slot's name;

@@ -8,7 +8,7 @@ argument stands for the *.json files directly in it, except *.schema.json. Print
 closing "N passed, M failed" line; exits 1 if any expectation fails, 2 on usage errors.
 
 Besides the schema, this applies the format rules JSON Schema cannot express, as hexc does
-(compiler/src/material/parse.cpp):
+(compiler/src/material/parse_material.cpp):
 
  1. numbers are finite (Python's json module would otherwise accept NaN, Infinity and 1e999);
  2. slot names are unique within a material;
