@@ -100,7 +100,7 @@ std::vector<Input> extremeInputs() {
         writeImage(image, p);
         return p;
     };
-    auto hash = [](int x, int y) { return float((x * 73856093 ^ y * 19349663) % 1000) / 1000.0f; };
+    auto hash = [](int x, int y) { return float((uint32_t(x) * 73856093u ^ uint32_t(y) * 19349663u) % 1000) / 1000.0f; };
     return {
         {"black", "color",
          write("black", floatTexture(16,

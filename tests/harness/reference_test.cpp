@@ -531,7 +531,7 @@ TEST(ReferenceColour, GradientsTurnWithEachTile) {
 TEST(ReferenceSharedLod, IsEachTapsLevelOnAnyTexture) {
     using Texels = std::function<Rgba(int x, int y, int w, int h)>;
     const auto noise = [](int x, int y, int c) {
-        return (uint32_t(x * 73856093 ^ y * 19349663 ^ c * 83492791) * 2654435761u >> 8) / 16777216.0;
+        return ((uint32_t(x) * 73856093u ^ uint32_t(y) * 19349663u ^ uint32_t(c) * 83492791u) * 2654435761u >> 8) / 16777216.0;
     };
     const std::pair<const char*, Texels> textures[] = {
         {"smooth",
