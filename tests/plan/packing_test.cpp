@@ -141,6 +141,34 @@ TEST(Packing, ALinearColourSlotPacksIntoALinearTexture) {
     EXPECT_FALSE(p.packs[0].srgb);
 }
 
+// The plan packs from the facts the parser read in each texture's header (8-bit, its channels): an RGB albedo and a
+// grey roughness pack with no texel decoded, so files replaced by ones that do not decode after parsing change nothing
+// in the plan; the compile, which copies the texels, then names the file instead of reading past it.
+TEST(Packing, TheHeaderDecidesWithoutDecodingAndTheCompileChecksTheTexels) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_packing_header";
+    std::filesystem::create_directories(dir);
+    for (const char* name : {"rock_albedo.png", "rock_roughness.png"})
+        std::filesystem::copy_file(std::string("materials/textures/") + name, dir / name,
+                                   std::filesystem::copy_options::overwrite_existing);
+    const std::string albedo = R"({"name": "albedo", "kind": "color", "texture": ")" + (dir / "rock_albedo.png").string() + R"("})";
+    const std::string roughness =
+        R"({"name": "roughness", "kind": "scalar", "texture": ")" + (dir / "rock_roughness.png").string() + R"("})";
+    const Material m = packed(albedo + "," + roughness);
+    EXPECT_EQ(m.slots[0].channelNames, "rgb");
+    EXPECT_EQ(m.slots[1].channelNames, "r");
+    // The albedo becomes a 1x1 PNG (decodes, but not to the header's size); the roughness, bytes that are no image.
+    writeImage(Image{1, 1, {0.5f, 0.5f, 0.5f, 1}}, dir / "rock_albedo.png");
+    std::ofstream(dir / "rock_roughness.png", std::ios::binary) << "not a PNG";
+    EXPECT_EQ(packsOf(plan(m)), (std::vector<std::vector<std::string>>{{"albedo:rgb", "roughness:a"}}));
+    const CompileResult r = compile(m);
+    ASSERT_FALSE(r.ok());
+    EXPECT_TRUE(r.files.empty());
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].code, Code::TextureUnreadable) << formatAll(r.diagnostics);
+    EXPECT_NE(r.diagnostics[0].message.find("rock_albedo.png changed while hexc read it"), std::string::npos) << formatAll(r.diagnostics);
+    std::filesystem::remove_all(dir);
+}
+
 TEST(Packing, ThePackedTextureHoldsTheSlotsTexelsAndIsDeterministic) {
     const Material m = packed(kAlbedo + "," + kNormal + "," + kRoughness);
     const CompileResult a = compile(m), b = compile(m);

@@ -43,6 +43,7 @@ struct TextureInfo {
     int mipLevels = 1;         // stored in the file (KTX2, DDS); hexc's uploads make their own chain
     std::optional<bool> srgb;  // whether the file's format says sRGB, where it says (KTX2, DDS); float files hold linear values
     std::string format = {};   // the container's pixel format, for messages ("BC7 sRGB"); empty for stb's formats
+    bool eightBit = false;     // stb's 8-bit formats: loadTexture gives rgba8, alpha 255 where the file has none
 };
 
 // Size and channel count of an image file without decoding it (the formats loadTexture reads);

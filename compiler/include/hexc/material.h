@@ -89,6 +89,8 @@ struct Slot {
     HexTiling hex;       // material settings with this slot's overrides applied
     std::optional<HeightBlend> heightBlend;
     int width = 0, height = 0;  // of the texture file
+    std::string channelNames;   // the texture file's channels, from its header (TextureInfo::channelNames)
+    bool eightBit = false;      // the file decodes to 8-bit texels (TextureInfo::eightBit)
     int line = 0, col = 0;      // where the slot's kind (else the slot) is in the material file; 0 when built in code
 };
 

@@ -206,6 +206,7 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
     }
     static const char* const kNames[] = {"", "r", "ra", "rgb", "rgba"};  // stb: grey, grey + alpha, RGB, RGBA
     info.channelNames = kNames[std::clamp(info.channels, 0, 4)];
+    info.eightBit = !stbi_is_hdr(file.string().c_str());
     return info;
 }
 

@@ -453,6 +453,8 @@ private:
         }
         s.width = info->width;
         s.height = info->height;
+        s.channelNames = info->channelNames;
+        s.eightBit = info->eightBit;
         if (s.kind == SlotKind::Normal && info->channels < 3)
             report(Code::TextureChannels, pointer,
                    "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));

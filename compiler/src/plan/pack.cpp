@@ -33,6 +33,10 @@ int packChannels(ShaderPlan& plan, size_t i) {
                       texelBudgetText(TextureStage::Packing));
         return 0;
     }
+    // The header decides where it can: an 8-bit scalar takes its channel, and an 8-bit colour file without alpha
+    // leaves alpha free. Otherwise the texels do: float ones do not pack, and a colour texture's alpha must be opaque.
+    if (s.eightBit && s.kind == SlotKind::Scalar) return 1;
+    if (s.eightBit && s.channelNames.find('a') == std::string::npos) return 3;
     Texture t;
     try {
         t = loadTexture(s.texturePath, false);

@@ -79,6 +79,11 @@ std::string packedPng(const Material& material, const ShaderPlan& plan, const Pa
         } catch (const TextureError& e) {
             throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
         }
+        // The plan packed it from its header: a file replaced since then must not be read past its texels.
+        if (source.rgba8.size() != packed.rgba8.size())
+            throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "",
+                                                 s.texturePath.string() + " changed while hexc read it: it no longer holds " +
+                                                     std::to_string(p.width) + "x" + std::to_string(p.height) + " 8-bit texels")}};
         // To: the pack's channels (the plan's packedChannel, 0 for RGB); from: the slot's (a colour slot's RGB, a scalar's channel).
         const size_t to = size_t(plan.slots[p.slots[k]].packedChannel), count = p.channels[k].size();
         const size_t from = s.kind == SlotKind::Scalar ? size_t(s.channel) : 0;
