@@ -4,6 +4,7 @@
 #include <chrono>
 #include <future>
 
+#include "hexc/budgets.h"
 #include "hexc/compiler.h"
 #include "hexc/files.h"
 #include "hexc/histogram.h"
@@ -231,6 +232,13 @@ std::optional<Texture> Session::loadSlotTexture(const std::string& name, std::st
     auto it = std::find_if(compiled_->slots.begin(), compiled_->slots.end(), [&](const Slot& s) { return s.name == slotName; });
     if (it == compiled_->slots.end()) {
         *whyNot = "no slot `" + slotName + "` in the material";
+        return std::nullopt;
+    }
+    // The budgets `hexc preview` keeps, checked from the header before anything is decoded: the page uploads a slot's
+    // texture with its mips, and the tables are the histogram blend's precomputation.
+    const TextureStage stage = derived.empty() ? TextureStage::Render : TextureStage::Histogram;
+    if (std::optional<Diagnostic> over = overTexelBudget(*compiled_, *it, stage)) {
+        *whyNot = over->format();
         return std::nullopt;
     }
     // Raw texels: the page uploads a colour slot's into an sRGB format, which decodes them as it samples.

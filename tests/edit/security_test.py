@@ -7,8 +7,11 @@ import os
 import shutil
 import socket
 import sys
+import struct
 import tempfile
+import time
 import unittest
+import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from edit_support import Server  # noqa: E402
@@ -98,6 +101,25 @@ class Security(unittest.TestCase):
         finally:
             shutil.rmtree(outside, ignore_errors=True)
 
+    def test_textures_over_the_budgets_are_refused_before_decoding(self):
+        # Valid grey PNGs of some tens of KB that the material compiles with (a compile decodes no texels): 9000 x 9000,
+        # over the 8192 x 8192 the page uploads (324 MB as RGBA), and 5000 x 5000, whose histogram tables (asked for by
+        # name) would be over their 4096 x 4096 (about 600 MB of precomputation). Each is refused from its header,
+        # HX125, in well under the second decoding it would take.
+        for side, texture in ((9000, "albedo"), (5000, "albedo.gaussian")):
+            name = "big%d.png" % side
+            write_grey_png(os.path.join(self.folder, "textures", name), side)
+            doc = self.document()
+            doc["slots"][0]["texture"] = "textures/" + name
+            status, r = self.server.json("POST", "/api/compile", {"document": doc})
+            self.assertTrue(r["ok"], r)
+            start = time.monotonic()
+            status, _, body = self.server.request("GET", "/api/texture/" + texture)
+            self.assertNotEqual(status, 200, texture)
+            self.assertIn(b"error[HX125]", body, texture)
+            self.assertIn(b"%s is %dx%d" % (name.encode(), side, side), body, texture)
+            self.assertLess(time.monotonic() - start, 1.0, texture)
+
     def test_oversized_requests_are_refused(self):
         big = b"{" + b" " * (17 << 20) + b"}"  # more than a capture's 16 MiB
         self.assertEqual(self.server.request("POST", "/api/compile", big)[0], 413)
@@ -140,6 +162,17 @@ class Security(unittest.TestCase):
     def assert_material_unchanged(self):
         with open(self.material, "rb") as f:
             self.assertEqual(f.read(), self.original)
+
+
+def write_grey_png(path, side):
+    """A valid 8-bit grey PNG of side x side zeros, compressed row by row (a few tens of KB)."""
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    packer, row = zlib.compressobj(9), bytes(side + 1)  # filter byte 0, then the row
+    idat = b"".join(packer.compress(row) for _ in range(side)) + packer.flush()
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", side, side, 8, 0, 0, 0, 0)) + chunk(b"IDAT", idat) +
+                chunk(b"IEND", b""))
 
 
 if __name__ == "__main__":

@@ -12,9 +12,9 @@
 namespace hexc {
 
 enum class TextureStage {
-    Histogram,  // the histogram blend's precomputation (compile, render, preview)
+    Histogram,  // the histogram blend's precomputation (compile, render, preview, edit's page)
     Packing,    // "pack": true decodes each slot's texture and the packed one (compile)
-    Render,     // hexc render and preview upload every slot's texture to lavapipe, which holds it with its mips
+    Render,     // hexc render and preview upload every slot's texture to lavapipe, which holds it with its mips; edit's page, to WebGL
     Reference,  // hexc render --reference holds the texture in fp64 with its mips
 };
 
