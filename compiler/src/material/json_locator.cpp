@@ -118,24 +118,24 @@ TextPos JsonLocator::here() {
 TextPos JsonLocator::value(const std::string& pointer) const {
     std::string p = pointer;
     for (;;) {
-        if (auto it = values_.find(p); it != values_.end()) return it->second;
+        if (auto it = values_.find(p); it != values_.end()) return it->second.pos;
         if (p.empty()) return {1, 1};
         p.erase(p.rfind('/'));
     }
 }
 
 std::optional<JsonLocator::Span> JsonLocator::valueSpan(const std::string& pointer) const {
-    if (auto it = valueSpans_.find(pointer); it != valueSpans_.end()) return it->second;
+    if (auto it = values_.find(pointer); it != values_.end()) return it->second.span;
     return std::nullopt;
 }
 
 std::optional<size_t> JsonLocator::keyOffset(const std::string& pointer) const {
-    if (auto it = keyOffsets_.find(pointer); it != keyOffsets_.end()) return it->second;
+    if (auto it = keys_.find(pointer); it != keys_.end()) return it->second.offset;
     return std::nullopt;
 }
 
 TextPos JsonLocator::key(const std::string& pointer) const {
-    if (auto it = keys_.find(pointer); it != keys_.end()) return it->second;
+    if (auto it = keys_.find(pointer); it != keys_.end()) return it->second.pos;
     return value(pointer);
 }
 
@@ -150,8 +150,7 @@ void JsonLocator::parseString() {
 }
 
 void JsonLocator::parseValue(const std::string& pointer) {
-    values_.emplace(pointer, here());
-    const size_t begin = pos_;
+    Value& located = values_.emplace(pointer, Value{here(), {pos_, pos_}}).first->second;  // no insertion moves it
     char c = text_[pos_];
     if (c == '{') {
         ++pos_;
@@ -163,11 +162,10 @@ void JsonLocator::parseValue(const std::string& pointer) {
             // The raw key between the quotes; escapes are rare in material keys and kept as written.
             std::string key(text_.substr(start + 1, pos_ - start - 2));
             std::string child = pointerAppend(pointer, key);
-            if (auto it = keys_.find(child); it != keys_.end())
-                duplicates_.push_back({child, it->second, keyPos});
-            else
-                keys_.emplace(child, keyPos);
-            keyOffsets_[child] = start;  // the last one, as nlohmann keeps
+            if (auto [it, added] = keys_.try_emplace(child, Key{keyPos, start}); !added) {
+                duplicates_.push_back({child, it->second.pos, keyPos});
+                it->second.offset = start;  // the last one's text, as nlohmann keeps its value
+            }
             skipSpace();
             ++pos_;  // ':'
             skipSpace();
@@ -194,7 +192,7 @@ void JsonLocator::parseValue(const std::string& pointer) {
         // number, true, false, null
         while (pos_ < text_.size() && std::string_view(",]} \t\r\n").find(text_[pos_]) == std::string_view::npos) ++pos_;
     }
-    valueSpans_[pointer] = {begin, std::min(pos_, text_.size())};
+    located.span.end = std::min(pos_, text_.size());
 }
 
 }  // namespace hexc

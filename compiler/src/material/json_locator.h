@@ -59,9 +59,17 @@ private:
     // whole document is one line.
     size_t scanned_ = 0;
     TextPos scannedPos_;
-    std::map<std::string, TextPos> values_, keys_;
-    std::map<std::string, Span> valueSpans_;
-    std::map<std::string, size_t> keyOffsets_;
+    // One entry a value and one a key (a document may hold millions of values): where each starts, and its bytes.
+    struct Value {
+        TextPos pos;
+        Span span;
+    };
+    struct Key {
+        TextPos pos;
+        size_t offset = 0;
+    };
+    std::map<std::string, Value> values_;
+    std::map<std::string, Key> keys_;
     std::vector<Duplicate> duplicates_;
 };
 
