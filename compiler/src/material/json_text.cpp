@@ -1,6 +1,7 @@
 #include "hexc/json_text.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "material/json_locator.h"
 
@@ -41,24 +42,35 @@ public:
     // The text of the value at `pointer`, which is `original` in the text, made to hold `edited`.
     std::string value(const std::string& pointer, const Json& original, const Json& edited) const {
         const JsonLocator::Span span = *locator_.valueSpan(pointer);
-        if (original == edited) return std::string(text_.substr(span.begin, span.end - span.begin));
+        if (original == edited) return slice(span.begin, span.end);
         if (original.is_object() && edited.is_object()) return object(pointer, span, original, edited);
         if (original.is_array() && edited.is_array() && original.size() == edited.size()) {
-            std::string out;
-            size_t at = span.begin;
-            for (size_t i = 0; i < original.size(); ++i) {
-                const std::string child = pointerAppend(pointer, i);
-                const JsonLocator::Span c = *locator_.valueSpan(child);
-                out += std::string(text_.substr(at, c.begin - at)) + value(child, original[i], edited[i]);
-                at = c.end;
-            }
-            return out + std::string(text_.substr(at, span.end - at));
+            std::vector<Child> children;
+            for (size_t i = 0; i < original.size(); ++i) children.push_back({pointerAppend(pointer, i), original[i], edited[i]});
+            return inPlace(span, children);
         }
         return written(edited);
     }
 
 private:
     std::string slice(size_t from, size_t to) const { return std::string(text_.substr(from, to - from)); }
+
+    struct Child {
+        std::string pointer;
+        const Json& original;
+        const Json& edited;
+    };
+    // The text of `span` with each child's value made to hold its edit, and what stands between them as written.
+    std::string inPlace(JsonLocator::Span span, const std::vector<Child>& children) const {
+        std::string out;
+        size_t at = span.begin;
+        for (const Child& c : children) {
+            const JsonLocator::Span s = *locator_.valueSpan(c.pointer);
+            out += slice(at, s.begin) + value(c.pointer, c.original, c.edited);
+            at = s.end;
+        }
+        return out + slice(at, span.end);
+    }
 
     // An object: with the same keys in the same order, only its members' values change, between the text's own
     // spacing; else its members are laid out again in `edited`'s order, each kept one as written, with the spacing
@@ -67,17 +79,10 @@ private:
         std::vector<std::string> keys, editedKeys;
         for (auto it = original.begin(); it != original.end(); ++it) keys.push_back(it.key());
         for (auto it = edited.begin(); it != edited.end(); ++it) editedKeys.push_back(it.key());
-        const bool sameKeys = keys == editedKeys;
-        if (sameKeys) {
-            std::string out;
-            size_t at = span.begin;
-            for (const std::string& key : keys) {
-                const std::string child = pointerAppend(pointer, key);
-                const JsonLocator::Span c = *locator_.valueSpan(child);
-                out += slice(at, c.begin) + value(child, original[key], edited[key]);
-                at = c.end;
-            }
-            return out + slice(at, span.end);
+        if (keys == editedKeys) {
+            std::vector<Child> children;
+            for (const std::string& key : keys) children.push_back({pointerAppend(pointer, key), original[key], edited[key]});
+            return inPlace(span, children);
         }
         if (edited.empty()) return "{}";
         std::string open = "{ ", between = ", ", close = " }";
