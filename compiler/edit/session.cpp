@@ -47,6 +47,14 @@ Reply badRequest(const std::string& what) {
     return json({{"ok", false}, {"diagnostics", toJson(Diagnostics{Diagnostic::make(Code::InputUnreadable, {"request"}, "", what)})}}, 400);
 }
 
+// A request's body as JSON, in the page's key order, when it is an object whose "document" is one; nullopt otherwise
+// (a request the page never sends).
+std::optional<Json> withDocument(const std::string& body) {
+    Json request = Json::parse(body, nullptr, false);
+    if (!request.is_object() || !request.contains("document") || !request["document"].is_object()) return std::nullopt;
+    return request;
+}
+
 // The page's programs: GLSL ES 3.00 for WebGL 2, every setting a uniform (no specialisation, a lattice per slot) so
 // that a slider sets one member of the parameter block; packing left out, as it changes no texel and would need the
 // packed textures.
@@ -164,18 +172,17 @@ Diagnostics Session::confined(const Material& material) const {
 }
 
 Reply Session::compile(const std::string& body) {
-    const Json request = Json::parse(body, nullptr, false);  // in the page's key order
-    if (!request.is_object() || !request.contains("document") || !request["document"].is_object())
-        return badRequest("expected {\"document\": the material, \"slot\": a slot name}");
+    const std::optional<Json> request = withDocument(body);
+    if (!request) return badRequest("expected {\"document\": the material, \"slot\": a slot name}");
     std::lock_guard lock(mutex_);
-    Parsed p = parse(request["document"]);
+    Parsed p = parse(request->at("document"));
     if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
     Material m = *p.material;
     m.pack = false;
     try {
         std::string note;
         const Material shown = cli::shownMaterial(m, "", pageOptions(), &note);
-        const std::string slot = request.value("slot", "");
+        const std::string slot = request->value("slot", "");
         const Slot& s = shownSlot(m, slot);
         const vk::RenderOutput values = s.kind == SlotKind::Normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
         // Five compiles, two at a time on this two-core machine's kind: the shader cache holds what repeats.
@@ -200,23 +207,22 @@ Reply Session::compile(const std::string& body) {
 }
 
 Reply Session::cost(const std::string& body) {
-    const Json request = Json::parse(body, nullptr, false);
-    if (!request.is_object() || !request.contains("document") || !request["document"].is_object())
-        return badRequest("expected {\"document\": the material}");
+    const std::optional<Json> request = withDocument(body);
+    if (!request) return badRequest("expected {\"document\": the material}");
     std::lock_guard lock(costMutex_);  // not the page's compiles': the cost line follows the new frame, never holds it up
-    Parsed p = parse(request["document"]);
+    Parsed p = parse(request->at("document"));
     if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
     return json({{"ok", true}, {"cost", shippedCost(*p.material)}});
 }
 
 Reply Session::save(const std::string& body) {
-    const Json request = Json::parse(body, nullptr, false);  // in the page's key order
-    if (!request.is_object() || !request.contains("document") || !request["document"].is_object() || !request.contains("version"))
+    const std::optional<Json> request = withDocument(body);
+    if (!request || !request->contains("version"))
         return badRequest("expected {\"document\": the material, \"version\": the file's version it was edited from}");
     std::lock_guard lock(mutex_);
-    if (request["version"] != version())
+    if (request->at("version") != version())
         return json({{"ok", false}, {"conflict", true}, {"message", file_.string() + " changed on disk; it was reloaded"}}, 409);
-    Parsed p = parse(request["document"]);
+    Parsed p = parse(request->at("document"));
     if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}, {"message", "not saved: fix the errors first"}});
     try {
         cli::writeAtomically(file_.has_parent_path() ? file_.parent_path() : ".", file_.filename().string(), p.text);
