@@ -1045,10 +1045,7 @@ size_t fetches(Material m) {
     m.templ = TemplateRef::builtin("value");
     CompileResult r = compile(m);
     if (!r.ok()) throw std::runtime_error(formatAll(r.diagnostics));
-    std::string text = disassemble(r.spirv);
-    size_t samples = 0;
-    for (size_t p = 0; (p = text.find("OpImageSample", p)) != std::string::npos; ++p) ++samples;
-    return samples;
+    return size_t(countOps(disassemble(r.spirv)).textureSamples);
 }
 
 TEST(OneTap, SamplesOncePerSlot) {

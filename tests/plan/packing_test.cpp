@@ -58,12 +58,7 @@ const OutputFile& file(const CompileResult& r, const std::string& suffix) {
     throw std::runtime_error("no output " + suffix);
 }
 
-int samples(const std::vector<uint32_t>& spirv) {
-    const std::string text = disassemble(spirv);
-    int n = 0;
-    for (size_t at = 0; (at = text.find("OpImageSample", at)) != std::string::npos; ++at) ++n;
-    return n;
-}
+int samples(const std::vector<uint32_t>& spirv) { return countOps(disassemble(spirv)).textureSamples; }
 
 }  // namespace
 
