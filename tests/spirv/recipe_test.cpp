@@ -1,6 +1,7 @@
 // The optimisation recipe hexc runs (optimizeSpirv) against spirv-opt's -O, which it replaces to compile faster: on
-// every example, every scene variant and a set of generated materials, its SPIR-V must be no bigger than -O's, in
-// words and in the count of every opcode (OpExtInst counted per instruction, so a pow cannot hide behind a sqrt).
+// every example, every scene variant and a set of generated materials, its SPIR-V must be valid (compile() validates a
+// module before the passes only) and no bigger than -O's, in words and in the count of every opcode (OpExtInst counted
+// per instruction, so a pow cannot hide behind a sqrt).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +49,7 @@ void expectNoBiggerThanO(const Material& material, const CompileOptions& options
     const std::vector<uint32_t> input = options.bake ? optimizeSpirv(front.words, true, false, false).words : front.words;
     const std::vector<uint32_t> recipe = optimizeSpirv(input).words, reference = withPerformancePasses(input);
     ASSERT_FALSE(recipe.empty());
+    EXPECT_EQ(validationErrors(recipe), "");
     EXPECT_LE(recipe.size(), reference.size());
     const std::map<std::string, size_t> ours = opcodeCounts(recipe), theirs = opcodeCounts(reference);
     for (const auto& [opcode, count] : ours) {
