@@ -5,7 +5,8 @@
 // hexc injects it piece by piece (compiler/src/codegen/pieces.h): the constants, structs and functions a shader
 // reaches, each function in the form a slot's settings make of it. The settings hexc fixes (the fields marked
 // "literal" below, e.g. l.rotate, b.exponentInt) are folded into a copy of each function that reads them,
-// `<function>_<slot>`, with only the branches they take (codegen/specialise.h); without specialisation
+// `<function>_<slot>`, with only the branches they take (codegen/specialise.h), and the others become the reads of
+// the slot's parameters, so that the copy takes neither settings struct; without specialisation
 // (--no-specialize, `hexc library`) this text is the general library. So that the folding can see them, a function
 // takes its settings as `HexcLattice l` and `HexcBlend b` and never writes them; a setting decides code in an
 // `if (...) {` block (with `} else {`), an `if (...) statement;` or a whole `x = c ? a : b;` or `return c ? a : b;`;

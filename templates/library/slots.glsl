@@ -6,8 +6,8 @@
 // ${set}, ${binding}: hexc's descriptors (plan.h, HexcBindings); ${tiling}, ${planesharpness}, ${origincell}, ${originoffset}: the parameters (uniform members or
 // constants) the coordinates read; ${tiles}: the slot's `lattice.*` section; ${settings}: the `settings.*` sections,
 // which build the HexcLattice `lattice` and HexcBlend `blend` (templates/library/hextiling.glsl) the library's functions
-// take: in general code with every setting of the slot, else with its parameters only, the functions having the fixed
-// settings folded in (a struct without parameters is left out, and the calls drop it: codegen/assembly.h); ${fields}:
+// take, in general code, with every setting of the slot; otherwise empty: every setting, a parameter's as its read, is
+// folded into the functions, which take no struct, and the calls drop it (codegen/assembly.h); ${fields}:
 // the `set` lines filling one; ${heightmap}: the
 // slot whose texture holds its heights (itself when it blends by none); ${channel}: a scalar slot's channel
 // (0 = r ... 3 = a); ${flipy}, ${explicit}: literal switches; ${type}: the slot's result type; ${kind},

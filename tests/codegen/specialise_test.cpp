@@ -125,16 +125,18 @@ ShaderPlan rockPlan(const CompileOptions& options, Material& storage) {
 TEST(Specialise, EachSlotGetsOnlyWhatItUses) {
     Material m;
     const std::string glsl = generateGlsl(rockPlan({}, m));
-    for (const char* name : {"vec4 hexcColor_albedo(", "vec2 hexcDeriv_normal(", "hexcTilesStable_albedo(", "lattice.rotation = "})
+    for (const char* name : {"vec4 hexcColor_albedo(", "vec2 hexcDeriv_normal(", "hexcTilesStable_albedo("})
         EXPECT_NE(glsl.find(name), std::string::npos) << name;
+    // No settings struct: a parameter's setting is read where the function used it, a literal's folded away.
+    EXPECT_NE(glsl.find("* hexcPi * hexcParams.albedo_rotation;"), std::string::npos);
     for (const char* name : {"hexcAdaptiveTaps(", "hexcHeightBlend", "hexcTilesPaper", "hexcHistogram", "hexcMx", "HexcPlanes",
-                             "textureLod", "hexcColor(", "hexcTilesStable(", "blend.metric", "lattice.rotate ="})
+                             "textureLod", "hexcColor(", "hexcTilesStable(", "HexcLattice", "HexcBlend", "lattice.", "blend."})
         EXPECT_EQ(glsl.find(name), std::string::npos) << name;
-    // Its three slots share a lattice, and albedo and roughness a blend but for its parameters: their functions are the
-    // albedo's, once.
-    for (const char* name : {"hexcTilesStable_normal", "hexcTilesStable_roughness", "hexcColor_roughness"})
+    // Its three slots share a lattice: its functions are the albedo's, once. Albedo and roughness blend alike but for
+    // their falloffcontrast parameters: the roughness's own colour function shares the albedo's weights.
+    for (const char* name : {"hexcTilesStable_normal", "hexcTilesStable_roughness", "hexcBlendWeights_roughness"})
         EXPECT_EQ(glsl.find(name), std::string::npos) << name;
-    EXPECT_NE(glsl.find("hexcColor_albedo(hexcTex_roughness, hexcSampler, hexcTilesStable_albedo(st, dx, dy, cell, lattice), blend"),
+    EXPECT_NE(glsl.find("hexcColor_roughness(hexcTex_roughness, hexcSampler, hexcTilesStable_albedo(st, dx, dy, cell), hexcChannel(0)"),
               std::string::npos);
     EXPECT_EQ(generateGlsl(rockPlan({}, m)), glsl);
 }

@@ -36,18 +36,23 @@ std::string renameIn(const std::string& text, const std::function<std::optional<
     return out;
 }
 
-// Takes the parameters `HexcLattice l` and `HexcBlend b` out of the definition of `p` in `lines` where its code no longer
-// reads them (the settings it read are values now, and its callees take them no more); returns their positions.
-std::vector<size_t> withoutSettings(std::vector<SourceLine>& lines, const Piece& p) {
+// The index in `lines` of the definition of `p` (after the comment above it).
+size_t definitionOf(const std::vector<SourceLine>& lines, const Piece& p) {
     auto definition = std::find_if(lines.begin(), lines.end(), [&](const SourceLine& l) {
         return !l.text.empty() && l.text[0] != ' ' && l.text[0] != '/' && codeOf(l.text).find(p.name + "(") != std::string_view::npos;
     });
     if (definition == lines.end()) throw std::logic_error("hexc library: no definition of " + p.name);
+    return size_t(definition - lines.begin());
+}
+
+// Takes the parameters `HexcLattice l` and `HexcBlend b` out of `definition` where `body` no longer reads them (the
+// settings it read are values now, and its callees take them no more); returns their positions.
+std::vector<size_t> withoutSettings(SourceLine& definition, const std::vector<SourceLine>& body) {
     std::string read;  // the one-letter names the body reads: `l`, `b`, or a local of that name, which keeps a parameter
-    for (auto line = definition + 1; line != lines.end(); ++line)
-        for (std::string_view word : identifiers(codeOf(line->text)))
-            if (word.size() == 1 && line->text[size_t(word.data() - line->text.data()) - 1] != '.') read += word;
-    std::string& text = definition->text;
+    for (const SourceLine& line : body)
+        for (std::string_view word : identifiers(codeOf(line.text)))
+            if (word.size() == 1 && line.text[size_t(word.data() - line.text.data()) - 1] != '.') read += word;
+    std::string& text = definition.text;
     const size_t open = text.find('('), close = closingBracket(text, open);
     const std::vector<std::string> params = splitList(std::string_view(text).substr(open + 1, close - open - 2));
     std::vector<size_t> dropped;
@@ -109,8 +114,20 @@ PieceName Assembly::form(size_t piece, const Settings* settings, const std::stri
     Settings own;  // only those of the settings structs the piece takes: `b` may name something else elsewhere
     for (const auto& [key, value] : *settings)
         if ((key.starts_with("l.") && p.lattice) || (key.starts_with("b.") && p.blend)) own.emplace(key, value);
-    std::vector<SourceLine> lines = renamed(own.empty() ? p.lines : specialise(p.lines, own), piece, settings, slot);
-    const std::vector<size_t> dropped = own.empty() ? std::vector<size_t>() : withoutSettings(lines, p);
+    std::vector<SourceLine> lines = own.empty() ? p.lines : specialise(p.lines, own);
+    std::vector<size_t> dropped;
+    if (own.empty()) {
+        lines = renamed(lines, piece, settings, slot);
+    } else {
+        // The body first: its calls drop the settings their callees no longer take; then the definition drops those it
+        // no longer reads, and only then names the types of the parameters it keeps (an unused settings struct is left out).
+        const size_t head = definitionOf(lines, p) + 1;
+        std::vector<SourceLine> body = renamed({lines.begin() + head, lines.end()}, piece, settings, slot);
+        lines.resize(head);
+        dropped = withoutSettings(lines.back(), body);
+        lines = renamed(lines, piece, settings, slot);
+        lines.insert(lines.end(), body.begin(), body.end());
+    }
     PieceName& name = names_[{piece, slot}];
     if (lines == p.lines) {
         useGeneral(piece);

@@ -118,41 +118,38 @@ public:
     }
 
 private:
-    // A field of HexcLattice or HexcBlend and its value: a literal hexc fixes, or (`param`) a parameter's read.
+    // A field of HexcLattice or HexcBlend and its value: a literal hexc fixes, or a parameter's read.
     struct Field {
         std::string name, value;
-        bool param = false;
     };
     using Fields = std::vector<Field>;
 
     void addParam(Fields& to, const std::string& field, ParamRef ref) const {
-        if (ref) to.push_back({field, read(*ref), true});
+        if (ref) to.push_back({field, read(*ref)});
     }
 
     void addParam(Tokens& to, const std::string& token, ParamRef ref) const {
         if (ref) to[token] = read(*ref);
     }
 
-    // The slot's HexcLattice `lattice` and HexcBlend `blend`, built for the library's functions: in general code with
-    // every field the plan gives; otherwise with its parameters only, and every other field's value (the plan's, else
-    // the neutral one) in `fixed`, as the library names it, to fold into the functions.
+    // The slot's HexcLattice `lattice` and HexcBlend `blend`, built for the library's functions in general code, with
+    // every field the plan gives. Otherwise no struct is built: every field's value (the plan's, a parameter's read, else
+    // the neutral one) goes to `fixed`, as the library names it, to fold into the functions, which then take neither.
     std::string settings(const LatticePlan& l, const SlotPlan& sp, Settings& fixed) const {
         const std::pair<const char*, Fields> structs[] = {{"lattice", latticeSettings(l, sp.aspect)}, {"blend", blendSettings(sp)}};
         std::string out;
         for (const auto& [name, fields] : structs) {
             const std::string prefix = name[0] + std::string(".");
-            std::string lines;
-            if (!plan_.general)
-                for (const auto& neutral : library().neutral.at(name[0] == 'l' ? "HexcLattice" : "HexcBlend"))
-                    if (std::none_of(fields.begin(), fields.end(), [&](const Field& f) { return f.param && f.name == neutral.first; }))
-                        fixed[prefix + neutral.first] = neutral.second;
-            for (const Field& f : fields) {
-                if (!plan_.general && !f.param) fixed[prefix + f.name] = f.value;
-                if (plan_.general || f.param)
-                    lines += (lines.empty() ? "" : "\n") + expand("set", {{"struct", name}, {"field", f.name}, {"value", f.value}});
+            if (!plan_.general) {
+                for (const auto& [field, value] : library().neutral.at(name[0] == 'l' ? "HexcLattice" : "HexcBlend"))
+                    fixed[prefix + field] = value;
+                for (const Field& f : fields) fixed[prefix + f.name] = f.value;
+                continue;
             }
-            if (plan_.general || !lines.empty())
-                out += (out.empty() ? "" : "\n") + expand("settings." + std::string(name), {{"fields", lines}});
+            std::string lines;
+            for (const Field& f : fields)
+                lines += (lines.empty() ? "" : "\n") + expand("set", {{"struct", name}, {"field", f.name}, {"value", f.value}});
+            out += (out.empty() ? "" : "\n") + expand("settings." + std::string(name), {{"fields", lines}});
         }
         return out;
     }

@@ -3,21 +3,6 @@
 // Settings: hlsl sm 5.0, glsl 450, msl 2.0; debug (unoptimised, line directives: functions); layout vulkan 0/0 hlsl space0 b0 t0 s0 u0 msl 0/0/0 glsl 0.
 #extension GL_GOOGLE_cpp_style_line_directive : require
 
-struct HexcLattice
-{
-    float rotation;
-    bool rotate;
-    bool transform;
-    vec2 rotationRange;
-    int rotationSteps;
-    vec2 scaleRange;
-    float offset;
-    ivec2 offsetSteps;
-    int maskScale;
-    bool triple;
-    float aspect;
-};
-
 struct HexcTap
 {
     vec2 st;
@@ -38,24 +23,6 @@ struct HexcTiles
     ivec3 channel;
 };
 
-struct HexcBlend
-{
-    float falloff;
-    float falloffContrast;
-    float exponent;
-    bool metric;
-    bool gain;
-    int exponentInt;
-    int gainInt;
-    int taps;
-    bool sharedLod;
-    bool adaptive;
-    float adaptiveError;
-    bool height;
-    vec4 heightLuma;
-    float heightWidth;
-};
-
 layout(binding = 0, std140) uniform HexcParams
 {
     vec2 albedo_tiling;
@@ -74,24 +41,10 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec4 v_tangent;
 layout(location = 0) out vec4 o_color;
 
-#line 142 "hexc/hextiling.glsl"
-HexcLattice hexcLattice()
-{
-#line 142 "hexc/hextiling.glsl"
-    return HexcLattice(0.0, false, false, vec2(-180.0, 180.0), 0, vec2(1.0), 1.0, ivec2(0), 1, false, 1.0);
-}
-
-#line 412 "hexc/hextiling.glsl"
-HexcBlend hexcBlend()
-{
-#line 412 "hexc/hextiling.glsl"
-    return HexcBlend(0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, 0.0039215688593685626983642578125, false, vec4(0.0), 1.0);
-}
-
-#line 44 "hexc/hextiling.glsl"
+#line 45 "hexc/hextiling.glsl"
 void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
 {
-#line 44 "hexc/hextiling.glsl"
+#line 45 "hexc/hextiling.glsl"
     ivec2 baseId = ivec2(floor(skewed));
     vec3 temp = vec3(skewed - floor(skewed), 0.0);
     temp.z = (1.0 - temp.x) - temp.y;
@@ -104,24 +57,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 218 "hexc/hextiling.glsl"
+#line 219 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 218 "hexc/hextiling.glsl"
+#line 219 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 225 "hexc/hextiling.glsl"
+#line 226 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 225 "hexc/hextiling.glsl"
+#line 226 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 187 "hexc/hextiling.glsl"
+#line 188 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 187 "hexc/hextiling.glsl"
+#line 188 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -133,69 +86,68 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 201 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(ivec2 id, HexcLattice l, out vec2 offset, out vec2 rot, out float invScale)
+#line 202 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
 {
-#line 201 "hexc/hextiling.glsl"
+#line 202 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _601 = hexcPcg3d(param);
-    vec3 u = vec3(_601 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _589 = hexcPcg3d(param);
+    vec3 u = vec3(_589 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * l.rotation;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
     rot = vec2(cos(angle), sin(angle));
 }
 
-#line 110 "hexc/hextiling.glsl"
+#line 111 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 110 "hexc/hextiling.glsl"
+#line 111 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 233 "hexc/hextiling.glsl"
+#line 234 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 233 "hexc/hextiling.glsl"
+#line 234 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 248 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, HexcLattice l)
+#line 249 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
 {
-#line 248 "hexc/hextiling.glsl"
+#line 249 "hexc/hextiling.glsl"
     ivec2 param = id;
-    HexcLattice param_1 = l;
+    vec2 param_1;
     vec2 param_2;
-    vec2 param_3;
-    float param_4;
-    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
-    vec2 offset = param_2;
+    float param_3;
+    hexcStableTile_albedo(param, param_1, param_2, param_3);
+    vec2 offset = param_1;
     HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    vec2 param_5 = d;
-    HexcTap param_6 = p;
-    vec2 _697 = hexcToTile_albedo(param_5, param_6);
-    p.st = (_697 + c) + offset;
-    vec2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    vec2 _707 = hexcToTile_albedo(param_7, param_8);
-    p.dx = _707;
-    vec2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    vec2 _713 = hexcToTile_albedo(param_9, param_10);
-    p.dy = _713;
+    p.rot = param_2;
+    p.invScale = param_3;
+    vec2 param_4 = d;
+    HexcTap param_5 = p;
+    vec2 _687 = hexcToTile_albedo(param_4, param_5);
+    p.st = (_687 + c) + offset;
+    vec2 param_6 = dSTdx;
+    HexcTap param_7 = p;
+    vec2 _697 = hexcToTile_albedo(param_6, param_7);
+    p.dx = _697;
+    vec2 param_8 = dSTdy;
+    HexcTap param_9 = p;
+    vec2 _703 = hexcToTile_albedo(param_8, param_9);
+    p.dy = _703;
     return p;
 }
 
-#line 258 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, HexcLattice l, inout ivec2 id)
+#line 259 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 258 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -204,53 +156,52 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    HexcLattice param_7 = l;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
 }
 
-#line 88 "hexc/hextiling.glsl"
+#line 89 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 88 "hexc/hextiling.glsl"
+#line 89 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _377;
+    int _374;
     if ((d < 0) && (a != 0))
     {
-        _377 = 3 - a;
+        _374 = 3 - a;
     }
     else
     {
-        _377 = a;
+        _374 = a;
     }
-    int i1 = _377;
-    int _388;
+    int i1 = _374;
+    int _385;
     if (i1 < 2)
     {
-        _388 = i1 + 1;
+        _385 = i1 + 1;
     }
     else
     {
-        _388 = 0;
+        _385 = 0;
     }
-    int vh = _388;
-    int _398;
+    int vh = _385;
+    int _395;
     if (i1 > 0)
     {
-        _398 = i1 - 1;
+        _395 = i1 - 1;
     }
     else
     {
-        _398 = 2;
+        _395 = 2;
     }
-    int vl = _398;
+    int vl = _395;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 267 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLattice l)
+#line 268 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 267 "hexc/hextiling.glsl"
+#line 268 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -271,63 +222,60 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, He
     vec2 param_5 = r;
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
-    HexcLattice param_8 = l;
-    ivec2 param_9;
-    HexcTap _830 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
-    t.id[0] = param_9;
-    t.tap[0] = _830;
-    ivec2 param_10 = local[1];
-    uvec2 param_11 = shift;
-    vec2 param_12 = r;
-    vec2 param_13 = dSTdx;
-    vec2 param_14 = dSTdy;
-    HexcLattice param_15 = l;
-    ivec2 param_16;
-    HexcTap _848 = hexcStableTap_albedo(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
-    t.id[1] = param_16;
-    t.tap[1] = _848;
-    ivec2 param_17 = local[2];
-    uvec2 param_18 = shift;
-    vec2 param_19 = r;
-    vec2 param_20 = dSTdx;
-    vec2 param_21 = dSTdy;
-    HexcLattice param_22 = l;
-    ivec2 param_23;
-    HexcTap _866 = hexcStableTap_albedo(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
-    t.id[2] = param_23;
-    t.tap[2] = _866;
-    ivec2 param_24 = t.id[0];
-    ivec2 param_25 = t.id[2];
-    t.channel = hexcHexChannels(param_24, param_25);
+    ivec2 param_8;
+    HexcTap _817 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _817;
+    ivec2 param_9 = local[1];
+    uvec2 param_10 = shift;
+    vec2 param_11 = r;
+    vec2 param_12 = dSTdx;
+    vec2 param_13 = dSTdy;
+    ivec2 param_14;
+    HexcTap _833 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _833;
+    ivec2 param_15 = local[2];
+    uvec2 param_16 = shift;
+    vec2 param_17 = r;
+    vec2 param_18 = dSTdx;
+    vec2 param_19 = dSTdy;
+    ivec2 param_20;
+    HexcTap _849 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _849;
+    ivec2 param_21 = t.id[0];
+    ivec2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 523 "hexc/hextiling.glsl"
+#line 524 "hexc/hextiling.glsl"
 bvec3 hexcFetched_albedo(vec3 w)
 {
-#line 523 "hexc/hextiling.glsl"
+#line 524 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 504 "hexc/hextiling.glsl"
+#line 505 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t)
 {
-#line 504 "hexc/hextiling.glsl"
+#line 505 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 517 "hexc/hextiling.glsl"
+#line 518 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 517 "hexc/hextiling.glsl"
+#line 518 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 530 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 530 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -351,17 +299,17 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     }
 }
 
-#line 418 "hexc/hextiling.glsl"
-vec3 hexcMetric_albedo(vec3 Dw, HexcBlend b)
+#line 419 "hexc/hextiling.glsl"
+vec3 hexcMetric_albedo(vec3 Dw)
 {
-#line 418 "hexc/hextiling.glsl"
-    return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(b.falloffContrast));
+#line 419 "hexc/hextiling.glsl"
+    return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 358 "hexc/hextiling.glsl"
+#line 359 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 358 "hexc/hextiling.glsl"
+#line 359 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -390,50 +338,50 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 374 "hexc/hextiling.glsl"
+#line 375 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 374 "hexc/hextiling.glsl"
-    float _942;
+#line 375 "hexc/hextiling.glsl"
+    float _925;
     if (kInt > 0)
     {
-        _942 = float(kInt);
+        _925 = float(kInt);
     }
     else
     {
-        _942 = log(1.0 - r) / (-0.693147182464599609375);
+        _925 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _942;
+    return _925;
 }
 
-#line 378 "hexc/hextiling.glsl"
+#line 379 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 378 "hexc/hextiling.glsl"
+#line 379 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
     vec3 m = (vec3(1.0) - s) * 2.0;
     vec3 base = max(vec3(0.0), s + (x * m));
-    vec3 _979;
+    vec3 _962;
     if (kInt > 0)
     {
         vec3 param = base;
         int param_1 = kInt;
-        vec3 _986 = hexcPowInt(param, param_1);
-        _979 = _986;
+        vec3 _969 = hexcPowInt(param, param_1);
+        _962 = _969;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _979 = pow(base, vec3(hexcGainK(param_2, param_3)));
+        _962 = pow(base, vec3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _979);
+    return (s * 0.5) + ((m * 0.25) * _962);
 }
 
-#line 386 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 386 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -441,26 +389,26 @@ vec3 hexcGain3(vec3 x, float r, int kInt)
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 425 "hexc/hextiling.glsl"
+#line 426 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 425 "hexc/hextiling.glsl"
+#line 426 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1041 = hexcPowInt(param, param_1);
-    vec3 wg = _1041;
+    vec3 _1034 = hexcPowInt(param, param_1);
+    vec3 wg = _1034;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1057;
+    vec3 _1050;
     if (sum > 0.0)
     {
-        _1057 = W / vec3(sum);
+        _1050 = W / vec3(sum);
     }
     else
     {
-        _1057 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1050 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1057;
+    W = _1050;
     vec3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -468,17 +416,17 @@ vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
     return W;
 }
 
-#line 98 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 98 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 547 "hexc/hextiling.glsl"
-vec4 hexcColor_albedo(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
+#line 548 "hexc/hextiling.glsl"
+vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 547 "hexc/hextiling.glsl"
+#line 548 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -488,13 +436,12 @@ vec4 hexcColor_albedo(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sam
     vec4 c[3] = param_3;
     vec3 Dw = vec3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
     vec3 param_4 = Dw;
-    HexcBlend param_5 = b;
-    vec3 param_6 = t.w * vec3(f);
-    vec3 param_7 = hexcMetric_albedo(param_4, param_5);
-    vec3 W = hexcBlendWeights_albedo(param_6, param_7);
-    vec3 param_8 = W;
-    ivec3 param_9 = t.channel;
-    weights = hexcShowWeights(param_8, param_9);
+    vec3 param_5 = t.w * vec3(f);
+    vec3 param_6 = hexcMetric_albedo(param_4);
+    vec3 W = hexcBlendWeights_albedo(param_5, param_6);
+    vec3 param_7 = W;
+    ivec3 param_8 = t.channel;
+    weights = hexcShowWeights(param_7, param_8);
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
@@ -502,199 +449,223 @@ vec4 hexcColor_albedo(HexcTiles t, HexcBlend b, vec4 luma, out vec3 weights, sam
 vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
 #line 20 "hexc/generated"
-    HexcLattice lattice = hexcLattice();
-    lattice.rotation = hexcParams.albedo_rotation;
-    HexcBlend blend = hexcBlend();
-    blend.falloffContrast = hexcParams.albedo_falloffcontrast;
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     ivec2 param_3 = cell;
-    HexcLattice param_4 = lattice;
-    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
-    HexcBlend param_6 = blend;
-    vec4 param_7 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_8;
-    vec4 _1493 = hexcColor_albedo(param_5, param_6, param_7, param_8, hexcTex_albedo);
-    weights = param_8;
-    return _1493;
+    HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
+    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_6;
+    vec4 _1529 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
+    weights = param_6;
+    return _1529;
 }
 
-#line 28 "hexc/generated"
+#line 24 "hexc/generated"
 vec4 hexc_albedo(vec2 uv, out vec3 weights)
 {
-#line 28 "hexc/generated"
+#line 24 "hexc/generated"
     vec2 st = uv * hexcParams.albedo_tiling;
     vec2 param = st;
     vec2 param_1 = dFdx(st);
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _1513 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1550 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1513;
+    return _1550;
 }
 
-#line 31 "hexc/generated"
+#line 27 "hexc/generated"
 vec4 hexc_albedo(vec2 uv)
 {
-#line 31 "hexc/generated"
+#line 27 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1521 = hexc_albedo(param, param_1);
+    vec4 _1558 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1521;
+    return _1558;
 }
 
-#line 105 "hexc/hextiling.glsl"
+#line 106 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 105 "hexc/hextiling.glsl"
-    vec4 _458;
+#line 106 "hexc/hextiling.glsl"
+    vec4 _455;
     if (c == 0)
     {
-        _458 = vec4(1.0, 0.0, 0.0, 0.0);
+        _455 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _465;
+        vec4 _462;
         if (c == 1)
         {
-            _465 = vec4(0.0, 1.0, 0.0, 0.0);
+            _462 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _465 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _462 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _458 = _465;
+        _455 = _462;
     }
-    return _458;
+    return _455;
 }
 
-#line 47 "hexc/generated"
+#line 419 "hexc/hextiling.glsl"
+vec3 hexcMetric_roughness(vec3 Dw)
+{
+#line 419 "hexc/hextiling.glsl"
+    return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.roughness_falloffcontrast));
+}
+
+#line 548 "hexc/hextiling.glsl"
+vec4 hexcColor_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
+{
+#line 548 "hexc/hextiling.glsl"
+    vec3 param = t.w;
+    bvec3 f = hexcFetched_albedo(param);
+    HexcTiles param_1 = t;
+    bvec3 param_2 = f;
+    vec4 param_3[3];
+    hexcFetchTaps_albedo(param_1, param_2, param_3, SPIRV_Cross_Combinedtexsamp);
+    vec4 c[3] = param_3;
+    vec3 Dw = vec3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
+    vec3 param_4 = Dw;
+    vec3 param_5 = t.w * vec3(f);
+    vec3 param_6 = hexcMetric_roughness(param_4);
+    vec3 W = hexcBlendWeights_albedo(param_5, param_6);
+    vec3 param_7 = W;
+    ivec3 param_8 = t.channel;
+    weights = hexcShowWeights(param_7, param_8);
+    return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
+}
+
+#line 39 "hexc/generated"
 float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 47 "hexc/generated"
-    HexcLattice lattice = hexcLattice();
-    lattice.rotation = hexcParams.albedo_rotation;
-    HexcBlend blend = hexcBlend();
-    blend.falloffContrast = hexcParams.roughness_falloffcontrast;
+#line 39 "hexc/generated"
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     ivec2 param_3 = cell;
-    HexcLattice param_4 = lattice;
-    int param_5 = 0;
-    HexcTiles param_6 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
-    HexcBlend param_7 = blend;
-    vec4 param_8 = hexcChannel(param_5);
-    vec3 param_9;
-    vec4 _1612 = hexcColor_albedo(param_6, param_7, param_8, param_9, hexcTex_roughness);
-    weights = param_9;
-    return _1612.x;
+    int param_4 = 0;
+    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
+    vec4 param_6 = hexcChannel(param_4);
+    vec3 param_7;
+    vec4 _1621 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
+    weights = param_7;
+    return _1621.x;
 }
 
-#line 55 "hexc/generated"
+#line 43 "hexc/generated"
 float hexc_roughness(vec2 uv, out vec3 weights)
 {
-#line 55 "hexc/generated"
+#line 43 "hexc/generated"
     vec2 st = uv * hexcParams.albedo_tiling;
     vec2 param = st;
     vec2 param_1 = dFdx(st);
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _1632 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1641 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1632;
+    return _1641;
 }
 
-#line 58 "hexc/generated"
+#line 46 "hexc/generated"
 float hexc_roughness(vec2 uv)
 {
-#line 58 "hexc/generated"
+#line 46 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _1640 = hexc_roughness(param, param_1);
+    float _1649 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _1640;
+    return _1649;
 }
 
-#line 591 "hexc/hextiling.glsl"
+#line 592 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 591 "hexc/hextiling.glsl"
+#line 592 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1275;
+    float _1331;
     if (flipY)
     {
-        _1275 = -vM.y;
+        _1331 = -vM.y;
     }
     else
     {
-        _1275 = vM.y;
+        _1331 = vM.y;
     }
-    return (-vec2(vM.x, _1275)) / vec2(zMa);
+    return (-vec2(vM.x, _1331)) / vec2(zMa);
 }
 
-#line 118 "hexc/hextiling.glsl"
+#line 119 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 118 "hexc/hextiling.glsl"
+#line 119 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 599 "hexc/hextiling.glsl"
+#line 600 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 599 "hexc/hextiling.glsl"
+#line 600 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1308;
+    vec2 _1364;
     if (scaled)
     {
-        _1308 = d * p.invScale;
+        _1364 = d * p.invScale;
     }
     else
     {
-        _1308 = d;
+        _1364 = d;
     }
-    return _1308;
+    return _1364;
 }
 
-#line 425 "hexc/hextiling.glsl"
+#line 419 "hexc/hextiling.glsl"
+vec3 hexcMetric_normal(vec3 Dw)
+{
+#line 419 "hexc/hextiling.glsl"
+    return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.normal_falloffcontrast));
+}
+
+#line 426 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_normal(vec3 w, vec3 M)
 {
-#line 425 "hexc/hextiling.glsl"
+#line 426 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1089 = hexcPowInt(param, param_1);
-    vec3 wg = _1089;
+    vec3 _1082 = hexcPowInt(param, param_1);
+    vec3 wg = _1082;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1105;
+    vec3 _1098;
     if (sum > 0.0)
     {
-        _1105 = W / vec3(sum);
+        _1098 = W / vec3(sum);
     }
     else
     {
-        _1105 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1098 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1105;
+    W = _1098;
     return W;
 }
 
-#line 607 "hexc/hextiling.glsl"
-vec2 hexcDeriv_normal(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
+#line 608 "hexc/hextiling.glsl"
+vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 607 "hexc/hextiling.glsl"
+#line 608 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -734,68 +705,61 @@ vec2 hexcDeriv_normal(HexcTiles t, HexcBlend b, bool flipY, out vec3 weights, sa
     }
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     vec3 param_20 = sqrt(D / (vec3(1.0) + D));
-    HexcBlend param_21 = b;
-    vec3 param_22 = t.w * vec3(f);
-    vec3 param_23 = hexcMetric_albedo(param_20, param_21);
-    vec3 W = hexcBlendWeights_normal(param_22, param_23);
-    vec3 param_24 = W;
-    ivec3 param_25 = t.channel;
-    weights = hexcShowWeights(param_24, param_25);
+    vec3 param_21 = t.w * vec3(f);
+    vec3 param_22 = hexcMetric_normal(param_20);
+    vec3 W = hexcBlendWeights_normal(param_21, param_22);
+    vec3 param_23 = W;
+    ivec3 param_24 = t.channel;
+    weights = hexcShowWeights(param_23, param_24);
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 33 "hexc/generated"
+#line 29 "hexc/generated"
 vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 33 "hexc/generated"
-    HexcLattice lattice = hexcLattice();
-    lattice.rotation = hexcParams.albedo_rotation;
-    HexcBlend blend = hexcBlend();
-    blend.falloffContrast = hexcParams.normal_falloffcontrast;
+#line 29 "hexc/generated"
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     ivec2 param_3 = cell;
-    HexcLattice param_4 = lattice;
-    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
-    HexcBlend param_6 = blend;
-    bool param_7 = false;
-    vec3 param_8;
-    vec2 _1552 = hexcDeriv_normal(param_5, param_6, param_7, param_8, hexcTex_normal);
-    weights = param_8;
-    return _1552;
+    HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
+    bool param_5 = false;
+    vec3 param_6;
+    vec2 _1575 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
+    weights = param_6;
+    return _1575;
 }
 
-#line 41 "hexc/generated"
+#line 33 "hexc/generated"
 vec2 hexc_normal(vec2 uv, out vec3 weights)
 {
-#line 41 "hexc/generated"
+#line 33 "hexc/generated"
     vec2 st = uv * hexcParams.albedo_tiling;
     vec2 param = st;
     vec2 param_1 = dFdx(st);
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _1571 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _1594 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1571;
+    return _1594;
 }
 
-#line 44 "hexc/generated"
+#line 36 "hexc/generated"
 vec2 hexc_normal(vec2 uv)
 {
-#line 44 "hexc/generated"
+#line 36 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _1579 = hexc_normal(param, param_1);
+    vec2 _1602 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _1579;
+    return _1602;
 }
 
-#line 668 "hexc/hextiling.glsl"
+#line 669 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 668 "hexc/hextiling.glsl"
+#line 669 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

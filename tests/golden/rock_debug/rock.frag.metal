@@ -46,21 +46,6 @@ struct spvUnsafeArray
     }
 };
 
-struct HexcLattice
-{
-    float rotation;
-    short rotate;
-    short transform;
-    float2 rotationRange;
-    int rotationSteps;
-    float2 scaleRange;
-    float offset;
-    int2 offsetSteps;
-    int maskScale;
-    short triple;
-    float aspect;
-};
-
 struct HexcTap
 {
     float2 st;
@@ -81,24 +66,6 @@ struct HexcTiles
     int3 channel;
 };
 
-struct HexcBlend
-{
-    float falloff;
-    float falloffContrast;
-    float exponent;
-    short metric;
-    short gain;
-    int exponentInt;
-    int gainInt;
-    int taps;
-    short sharedLod;
-    short adaptive;
-    float adaptiveError;
-    short height;
-    float4 heightLuma;
-    float heightWidth;
-};
-
 struct HexcParams
 {
     float2 albedo_tiling;
@@ -108,7 +75,7 @@ struct HexcParams
     float roughness_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1153 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1147 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct rock_frag_out
 {
@@ -122,27 +89,11 @@ struct rock_frag_in
     float4 v_tangent [[user(locn2)]];
 };
 
-#line 142 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcLattice hexcLattice()
-{
-#line 142 "hexc/hextiling.glsl"
-    return HexcLattice{ 0.0, false, false, float2(-180.0, 180.0), 0, float2(1.0), 1.0, int2(0), 1, false, 1.0 };
-}
-
-#line 412 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcBlend hexcBlend()
-{
-#line 412 "hexc/hextiling.glsl"
-    return HexcBlend{ 0.5, 0.0, 7.0, false, false, 0, 0, 3, false, false, 0.0039215688593685626983642578125, false, float4(0.0), 1.0 };
-}
-
-#line 44 "hexc/hextiling.glsl"
+#line 45 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsafeArray<int2, 3>& id)
 {
-#line 44 "hexc/hextiling.glsl"
+#line 45 "hexc/hextiling.glsl"
     int2 baseId = int2(floor(skewed));
     float3 temp = float3(skewed - floor(skewed), 0.0);
     temp.z = (1.0 - temp.x) - temp.y;
@@ -155,27 +106,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 218 "hexc/hextiling.glsl"
+#line 219 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 218 "hexc/hextiling.glsl"
+#line 219 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 225 "hexc/hextiling.glsl"
+#line 226 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 225 "hexc/hextiling.glsl"
+#line 226 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 187 "hexc/hextiling.glsl"
+#line 188 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 187 "hexc/hextiling.glsl"
+#line 188 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -187,74 +138,73 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 201 "hexc/hextiling.glsl"
+#line 202 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-void hexcStableTile_albedo(thread const int2& id, thread const HexcLattice& l, thread float2& offset, thread float2& rot, thread float& invScale)
+void hexcStableTile_albedo(thread const int2& id, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
 {
-#line 201 "hexc/hextiling.glsl"
+#line 202 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _601 = hexcPcg3d(param);
-    float3 u = float3(_601 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _589 = hexcPcg3d(param);
+    float3 u = float3(_589 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * l.rotation;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
     rot = float2(cos(angle), sin(angle));
 }
 
-#line 110 "hexc/hextiling.glsl"
+#line 111 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 110 "hexc/hextiling.glsl"
+#line 111 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 233 "hexc/hextiling.glsl"
+#line 234 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile_albedo(thread float2& v, thread const HexcTap& p)
 {
-#line 233 "hexc/hextiling.glsl"
+#line 234 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 248 "hexc/hextiling.glsl"
+#line 249 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l)
+HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, constant HexcParams& hexcParams)
 {
-#line 248 "hexc/hextiling.glsl"
+#line 249 "hexc/hextiling.glsl"
     int2 param = id;
-    HexcLattice param_1 = l;
+    float2 param_1;
     float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
-    float2 offset = param_2;
+    float param_3;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, hexcParams);
+    float2 offset = param_1;
     HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _697 = hexcToTile_albedo(param_5, param_6);
-    p.st = (_697 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _707 = hexcToTile_albedo(param_7, param_8);
-    p.dx = _707;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _713 = hexcToTile_albedo(param_9, param_10);
-    p.dy = _713;
+    p.rot = param_2;
+    p.invScale = param_3;
+    float2 param_4 = d;
+    HexcTap param_5 = p;
+    float2 _687 = hexcToTile_albedo(param_4, param_5);
+    p.st = (_687 + c) + offset;
+    float2 param_6 = dSTdx;
+    HexcTap param_7 = p;
+    float2 _697 = hexcToTile_albedo(param_6, param_7);
+    p.dx = _697;
+    float2 param_8 = dSTdy;
+    HexcTap param_9 = p;
+    float2 _703 = hexcToTile_albedo(param_8, param_9);
+    p.dy = _703;
     return p;
 }
 
-#line 258 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread const HexcLattice& l, thread int2& id)
+HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
 {
-#line 258 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -263,55 +213,54 @@ HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    HexcLattice param_7 = l;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, hexcParams);
 }
 
-#line 88 "hexc/hextiling.glsl"
+#line 89 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 88 "hexc/hextiling.glsl"
+#line 89 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _377;
+    int _374;
     if ((d < 0) && (a != 0))
     {
-        _377 = 3 - a;
+        _374 = 3 - a;
     }
     else
     {
-        _377 = a;
+        _374 = a;
     }
-    int i1 = _377;
-    int _388;
+    int i1 = _374;
+    int _385;
     if (i1 < 2)
     {
-        _388 = i1 + 1;
+        _385 = i1 + 1;
     }
     else
     {
-        _388 = 0;
+        _385 = 0;
     }
-    int vh = _388;
-    int _398;
+    int vh = _385;
+    int _395;
     if (i1 > 0)
     {
-        _398 = i1 - 1;
+        _395 = i1 - 1;
     }
     else
     {
-        _398 = 2;
+        _395 = 2;
     }
-    int vl = _398;
+    int vl = _395;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 267 "hexc/hextiling.glsl"
+#line 268 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, thread const HexcLattice& l)
+HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
 {
-#line 267 "hexc/hextiling.glsl"
+#line 268 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -333,70 +282,67 @@ HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& d
     float2 param_5 = r;
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
-    HexcLattice param_8 = l;
-    int2 param_9;
-    HexcTap _830 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, param_9);
-    t.id[0] = param_9;
-    t.tap[0] = _830;
-    int2 param_10 = local[1];
-    uint2 param_11 = shift;
-    float2 param_12 = r;
-    float2 param_13 = dSTdx;
-    float2 param_14 = dSTdy;
-    HexcLattice param_15 = l;
-    int2 param_16;
-    HexcTap _848 = hexcStableTap_albedo(param_10, param_11, param_12, param_13, param_14, param_15, param_16);
-    t.id[1] = param_16;
-    t.tap[1] = _848;
-    int2 param_17 = local[2];
-    uint2 param_18 = shift;
-    float2 param_19 = r;
-    float2 param_20 = dSTdx;
-    float2 param_21 = dSTdy;
-    HexcLattice param_22 = l;
-    int2 param_23;
-    HexcTap _866 = hexcStableTap_albedo(param_17, param_18, param_19, param_20, param_21, param_22, param_23);
-    t.id[2] = param_23;
-    t.tap[2] = _866;
-    int2 param_24 = t.id[0];
-    int2 param_25 = t.id[2];
-    t.channel = hexcHexChannels(param_24, param_25);
+    int2 param_8;
+    HexcTap _817 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    t.id[0] = param_8;
+    t.tap[0] = _817;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _833 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    t.id[1] = param_14;
+    t.tap[1] = _833;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _849 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    t.id[2] = param_20;
+    t.tap[2] = _849;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 523 "hexc/hextiling.glsl"
+#line 524 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_albedo(thread const float3& w)
 {
-#line 523 "hexc/hextiling.glsl"
+#line 524 "hexc/hextiling.glsl"
     return bool3(true);
 }
 
-#line 504 "hexc/hextiling.glsl"
+#line 505 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
 {
-#line 504 "hexc/hextiling.glsl"
+#line 505 "hexc/hextiling.glsl"
     float3 lods = float3(0.0);
     return lods;
 }
 
-#line 517 "hexc/hextiling.glsl"
+#line 518 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
-#line 517 "hexc/hextiling.glsl"
+#line 518 "hexc/hextiling.glsl"
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 530 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 530 "hexc/hextiling.glsl"
+#line 531 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _1153;
+    c = _1147;
     if (f.x)
     {
         HexcTap param_1 = t.tap[0];
@@ -417,19 +363,19 @@ void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcT
     }
 }
 
-#line 418 "hexc/hextiling.glsl"
+#line 419 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-float3 hexcMetric_albedo(thread const float3& Dw, thread const HexcBlend& b)
+float3 hexcMetric_albedo(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 418 "hexc/hextiling.glsl"
-    return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(b.falloffContrast));
+#line 419 "hexc/hextiling.glsl"
+    return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 358 "hexc/hextiling.glsl"
+#line 359 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 358 "hexc/hextiling.glsl"
+#line 359 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -458,53 +404,53 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 374 "hexc/hextiling.glsl"
+#line 375 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcGainK(thread const float& r, thread const int& kInt)
 {
-#line 374 "hexc/hextiling.glsl"
-    float _942;
+#line 375 "hexc/hextiling.glsl"
+    float _925;
     if (kInt > 0)
     {
-        _942 = float(kInt);
+        _925 = float(kInt);
     }
     else
     {
-        _942 = log(1.0 - r) / (-0.693147182464599609375);
+        _925 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _942;
+    return _925;
 }
 
-#line 378 "hexc/hextiling.glsl"
+#line 379 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 378 "hexc/hextiling.glsl"
+#line 379 "hexc/hextiling.glsl"
     float3 s = step(float3(0.5), x) * 2.0;
     float3 m = (float3(1.0) - s) * 2.0;
     float3 base = fast::max(float3(0.0), s + (x * m));
-    float3 _979;
+    float3 _962;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _986 = hexcPowInt(param, param_1);
-        _979 = _986;
+        float3 _969 = hexcPowInt(param, param_1);
+        _962 = _969;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _979 = pow(base, float3(hexcGainK(param_2, param_3)));
+        _962 = pow(base, float3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _979);
+    return (s * 0.5) + ((m * 0.25) * _962);
 }
 
-#line 386 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGain3(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 386 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -512,27 +458,27 @@ float3 hexcGain3(thread const float3& x, thread const float& r, thread const int
     return res / float3((res.x + res.y) + res.z);
 }
 
-#line 425 "hexc/hextiling.glsl"
+#line 426 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
 {
-#line 425 "hexc/hextiling.glsl"
+#line 426 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1041 = hexcPowInt(param, param_1);
-    float3 wg = _1041;
+    float3 _1034 = hexcPowInt(param, param_1);
+    float3 wg = _1034;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1057;
+    float3 _1050;
     if (sum > 0.0)
     {
-        _1057 = W / float3(sum);
+        _1050 = W / float3(sum);
     }
     else
     {
-        _1057 = wg / float3((wg.x + wg.y) + wg.z);
+        _1050 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1057;
+    W = _1050;
     float3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -540,19 +486,19 @@ float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
     return W;
 }
 
-#line 98 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 98 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 547 "hexc/hextiling.glsl"
+#line 548 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const float4& luma, texture2d<float> heightTex, thread float3& weights)
+float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 547 "hexc/hextiling.glsl"
+#line 548 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -563,13 +509,12 @@ float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTil
     c = param_3;
     float3 Dw = float3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
     float3 param_4 = Dw;
-    HexcBlend param_5 = b;
-    float3 param_6 = t.w * float3(f);
-    float3 param_7 = hexcMetric_albedo(param_4, param_5);
-    float3 W = hexcBlendWeights_albedo(param_6, param_7);
-    float3 param_8 = W;
-    int3 param_9 = t.channel;
-    weights = hexcShowWeights(param_8, param_9);
+    float3 param_5 = t.w * float3(f);
+    float3 param_6 = hexcMetric_albedo(param_4, hexcParams);
+    float3 W = hexcBlendWeights_albedo(param_5, param_6);
+    float3 param_7 = W;
+    int3 param_8 = t.channel;
+    weights = hexcShowWeights(param_7, param_8);
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
@@ -578,210 +523,238 @@ static inline __attribute__((always_inline))
 float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d<float> hexcTex_albedo, sampler hexcSampler)
 {
 #line 20 "hexc/generated"
-    HexcLattice lattice = hexcLattice();
-    lattice.rotation = hexcParams.albedo_rotation;
-    HexcBlend blend = hexcBlend();
-    blend.falloffContrast = hexcParams.albedo_falloffcontrast;
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     int2 param_3 = cell;
-    HexcLattice param_4 = lattice;
-    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
-    HexcBlend param_6 = blend;
-    float4 param_7 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_8;
-    float4 _1493 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_5, param_6, param_7, hexcTex_albedo, param_8);
-    weights = param_8;
-    return _1493;
+    HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
+    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_6;
+    float4 _1529 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
+    weights = param_6;
+    return _1529;
 }
 
-#line 28 "hexc/generated"
+#line 24 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant HexcParams& hexcParams, texture2d<float> hexcTex_albedo, sampler hexcSampler)
 {
-#line 28 "hexc/generated"
+#line 24 "hexc/generated"
     float2 st = uv * hexcParams.albedo_tiling;
     float2 param = st;
     float2 param_1 = dfdx(st);
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _1513 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1550 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _1513;
+    return _1550;
 }
 
-#line 31 "hexc/generated"
+#line 27 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, texture2d<float> hexcTex_albedo, sampler hexcSampler)
 {
-#line 31 "hexc/generated"
+#line 27 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1521 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1558 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _1521;
+    return _1558;
 }
 
-#line 105 "hexc/hextiling.glsl"
+#line 106 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
-#line 105 "hexc/hextiling.glsl"
-    float4 _458;
+#line 106 "hexc/hextiling.glsl"
+    float4 _455;
     if (c == 0)
     {
-        _458 = float4(1.0, 0.0, 0.0, 0.0);
+        _455 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        float4 _465;
+        float4 _462;
         if (c == 1)
         {
-            _465 = float4(0.0, 1.0, 0.0, 0.0);
+            _462 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _465 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+            _462 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _458 = _465;
+        _455 = _462;
     }
-    return _458;
+    return _455;
 }
 
-#line 47 "hexc/generated"
+#line 419 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+float3 hexcMetric_roughness(thread const float3& Dw, constant HexcParams& hexcParams)
+{
+#line 419 "hexc/hextiling.glsl"
+    return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.roughness_falloffcontrast));
+}
+
+#line 548 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+float4 hexcColor_roughness(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
+{
+#line 548 "hexc/hextiling.glsl"
+    float3 param = t.w;
+    bool3 f = hexcFetched_albedo(param);
+    HexcTiles param_1 = t;
+    bool3 param_2 = f;
+    spvUnsafeArray<float4, 3> param_3;
+    hexcFetchTaps_albedo(tex, samp, param_1, param_2, param_3);
+    spvUnsafeArray<float4, 3> c;
+    c = param_3;
+    float3 Dw = float3(dot(c[0], luma), dot(c[1], luma), dot(c[2], luma));
+    float3 param_4 = Dw;
+    float3 param_5 = t.w * float3(f);
+    float3 param_6 = hexcMetric_roughness(param_4, hexcParams);
+    float3 W = hexcBlendWeights_albedo(param_5, param_6);
+    float3 param_7 = W;
+    int3 param_8 = t.channel;
+    weights = hexcShowWeights(param_7, param_8);
+    return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
+}
+
+#line 39 "hexc/generated"
 static inline __attribute__((always_inline))
 float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_roughness)
 {
-#line 47 "hexc/generated"
-    HexcLattice lattice = hexcLattice();
-    lattice.rotation = hexcParams.albedo_rotation;
-    HexcBlend blend = hexcBlend();
-    blend.falloffContrast = hexcParams.roughness_falloffcontrast;
+#line 39 "hexc/generated"
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     int2 param_3 = cell;
-    HexcLattice param_4 = lattice;
-    int param_5 = 0;
-    HexcTiles param_6 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
-    HexcBlend param_7 = blend;
-    float4 param_8 = hexcChannel(param_5);
-    float3 param_9;
-    float4 _1612 = hexcColor_albedo(hexcTex_roughness, hexcSampler, param_6, param_7, param_8, hexcTex_roughness, param_9);
-    weights = param_9;
-    return _1612.x;
+    int param_4 = 0;
+    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
+    float4 param_6 = hexcChannel(param_4);
+    float3 param_7;
+    float4 _1621 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
+    weights = param_7;
+    return _1621.x;
 }
 
-#line 55 "hexc/generated"
+#line 43 "hexc/generated"
 static inline __attribute__((always_inline))
 float hexc_roughness(thread const float2& uv, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_roughness)
 {
-#line 55 "hexc/generated"
+#line 43 "hexc/generated"
     float2 st = uv * hexcParams.albedo_tiling;
     float2 param = st;
     float2 param_1 = dfdx(st);
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _1632 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1641 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _1632;
+    return _1641;
 }
 
-#line 58 "hexc/generated"
+#line 46 "hexc/generated"
 static inline __attribute__((always_inline))
 float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_roughness)
 {
-#line 58 "hexc/generated"
+#line 46 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1640 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1649 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _1640;
+    return _1649;
 }
 
-#line 591 "hexc/hextiling.glsl"
+#line 592 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 591 "hexc/hextiling.glsl"
+#line 592 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1275;
+    float _1331;
     if (flipY)
     {
-        _1275 = -vM.y;
+        _1331 = -vM.y;
     }
     else
     {
-        _1275 = vM.y;
+        _1331 = vM.y;
     }
-    return (-float2(vM.x, _1275)) / float2(zMa);
+    return (-float2(vM.x, _1331)) / float2(zMa);
 }
 
-#line 118 "hexc/hextiling.glsl"
+#line 119 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
 {
-#line 118 "hexc/hextiling.glsl"
+#line 119 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 599 "hexc/hextiling.glsl"
+#line 600 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 599 "hexc/hextiling.glsl"
+#line 600 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1308;
+    float2 _1364;
     if (scaled)
     {
-        _1308 = d * p.invScale;
+        _1364 = d * p.invScale;
     }
     else
     {
-        _1308 = d;
+        _1364 = d;
     }
-    return _1308;
+    return _1364;
 }
 
-#line 425 "hexc/hextiling.glsl"
+#line 419 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+float3 hexcMetric_normal(thread const float3& Dw, constant HexcParams& hexcParams)
+{
+#line 419 "hexc/hextiling.glsl"
+    return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.normal_falloffcontrast));
+}
+
+#line 426 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_normal(thread const float3& w, thread const float3& M)
 {
-#line 425 "hexc/hextiling.glsl"
+#line 426 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1089 = hexcPowInt(param, param_1);
-    float3 wg = _1089;
+    float3 _1082 = hexcPowInt(param, param_1);
+    float3 wg = _1082;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1105;
+    float3 _1098;
     if (sum > 0.0)
     {
-        _1105 = W / float3(sum);
+        _1098 = W / float3(sum);
     }
     else
     {
-        _1105 = wg / float3((wg.x + wg.y) + wg.z);
+        _1098 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1105;
+    W = _1098;
     return W;
 }
 
-#line 607 "hexc/hextiling.glsl"
+#line 608 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const HexcBlend& b, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights)
+float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 607 "hexc/hextiling.glsl"
+#line 608 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -821,72 +794,65 @@ float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTil
     }
     float3 D = float3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     float3 param_20 = sqrt(D / (float3(1.0) + D));
-    HexcBlend param_21 = b;
-    float3 param_22 = t.w * float3(f);
-    float3 param_23 = hexcMetric_albedo(param_20, param_21);
-    float3 W = hexcBlendWeights_normal(param_22, param_23);
-    float3 param_24 = W;
-    int3 param_25 = t.channel;
-    weights = hexcShowWeights(param_24, param_25);
+    float3 param_21 = t.w * float3(f);
+    float3 param_22 = hexcMetric_normal(param_20, hexcParams);
+    float3 W = hexcBlendWeights_normal(param_21, param_22);
+    float3 param_23 = W;
+    int3 param_24 = t.channel;
+    weights = hexcShowWeights(param_23, param_24);
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 33 "hexc/generated"
+#line 29 "hexc/generated"
 static inline __attribute__((always_inline))
 float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_normal)
 {
-#line 33 "hexc/generated"
-    HexcLattice lattice = hexcLattice();
-    lattice.rotation = hexcParams.albedo_rotation;
-    HexcBlend blend = hexcBlend();
-    blend.falloffContrast = hexcParams.normal_falloffcontrast;
+#line 29 "hexc/generated"
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     int2 param_3 = cell;
-    HexcLattice param_4 = lattice;
-    HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, param_4);
-    HexcBlend param_6 = blend;
-    bool param_7 = false;
-    float3 param_8;
-    float2 _1552 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_5, param_6, param_7, hexcTex_normal, param_8);
-    weights = param_8;
-    return _1552;
+    HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
+    bool param_5 = false;
+    float3 param_6;
+    float2 _1575 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
+    weights = param_6;
+    return _1575;
 }
 
-#line 41 "hexc/generated"
+#line 33 "hexc/generated"
 static inline __attribute__((always_inline))
 float2 hexc_normal(thread const float2& uv, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_normal)
 {
-#line 41 "hexc/generated"
+#line 33 "hexc/generated"
     float2 st = uv * hexcParams.albedo_tiling;
     float2 param = st;
     float2 param_1 = dfdx(st);
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _1571 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1594 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _1571;
+    return _1594;
 }
 
-#line 44 "hexc/generated"
+#line 36 "hexc/generated"
 static inline __attribute__((always_inline))
 float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_normal)
 {
-#line 44 "hexc/generated"
+#line 36 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1579 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1602 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _1579;
+    return _1602;
 }
 
-#line 668 "hexc/hextiling.glsl"
+#line 669 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 668 "hexc/hextiling.glsl"
+#line 669 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 
