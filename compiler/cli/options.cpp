@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <tuple>
 
 namespace hexc::cli {
@@ -106,6 +107,15 @@ Diagnostics byPosition(Diagnostics diags) {
         return std::tuple(files.at(a.loc.file), a.loc.line, a.loc.col) < std::tuple(files.at(b.loc.file), b.loc.line, b.loc.col);
     });
     return diags;
+}
+
+std::optional<std::pair<int, int>> parseSize(const std::string& text, int least, int most) {
+    int width = 0, height = 0;
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> width >> x >> height) || x != 'x' || !in.eof()) return std::nullopt;
+    if (width < least || height < least || width > most || height > most) return std::nullopt;
+    return std::pair{width, height};
 }
 
 std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args) {

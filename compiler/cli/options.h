@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hexc/compiler.h"
@@ -50,6 +51,9 @@ struct LayoutOptions {
     // The layout file (if any) with the flags over it; false after printing the file's errors.
     bool resolve(ResourceLayout& out) const;
 };
+
+// A `--size WxH`: two whole numbers from `least` to `most`, as (width, height); nullopt when `text` is not that.
+std::optional<std::pair<int, int>> parseSize(const std::string& text, int least, int most);
 
 // `diags` as a run prints them: each file's together, in the order files first appear, by line and column.
 Diagnostics byPosition(Diagnostics diags);

@@ -10,6 +10,7 @@
 #include <map>
 #include <new>
 #include <sstream>
+#include <tuple>
 
 #include "options.h"
 #include "hexc/budgets.h"
@@ -215,11 +216,9 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
     r.output = outputs.at(output);
     r.target = targets.at(target);
     if (!size.empty()) {
-        auto wh = numbers(size, 'x', 2, "--size");
-        if (wh[0] < 1 || wh[1] < 1 || wh[0] > 8192 || wh[1] > 8192 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
-            throw UsageError{"--size expects WxH with whole numbers from 1 to 8192, got " + size};
-        r.view.width = int(wh[0]);
-        r.view.height = int(wh[1]);
+        const std::optional<std::pair<int, int>> wh = parseSize(size, 1, 8192);
+        if (!wh) throw UsageError{"--size expects WxH with whole numbers from 1 to 8192, got " + size};
+        std::tie(r.view.width, r.view.height) = *wh;
     }
     if (!uvRect.empty()) {
         auto u = numbers(uvRect, ',', 4, "--uv-rect");

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <tuple>
 
 #include "capture.h"
 #include "hexc/materialx.h"
@@ -32,14 +33,6 @@ after the first load) and this server's own host name, and it serves its page, t
 material's textures only, from the material's folder (--root widens it). docs/edit.md has the details.
 )";
 
-// `--capture`'s size: WxH, each 16 to kMaxCaptureSide.
-bool parseSize(const std::string& text, CaptureOptions& c) {
-    char x = 0;
-    std::istringstream in(text);
-    if (!(in >> c.width >> x >> c.height) || x != 'x' || !in.eof()) return false;
-    return c.width >= 16 && c.height >= 16 && c.width <= kMaxCaptureSide && c.height <= kMaxCaptureSide;
-}
-
 }  // namespace
 
 int editCommand(const std::vector<std::string>& args) {
@@ -65,10 +58,12 @@ int editCommand(const std::vector<std::string>& args) {
         std::cerr << "hexc: hexc edit edits JSON materials; `hexc " << material.string() << " -o DIR` compiles a MaterialX document\n";
         return cli::kUsage;
     }
-    if (!parseSize(size, capture)) {
+    const std::optional<std::pair<int, int>> wh = cli::parseSize(size, 16, kMaxCaptureSide);
+    if (!wh) {
         std::cerr << "hexc: --size expects WxH, each from 16 to " << kMaxCaptureSide << ", got " << size << "\n";
         return cli::kUsage;
     }
+    std::tie(capture.width, capture.height) = *wh;
     if (!capture.out.empty() && capture.out.extension() != ".png") {
         std::cerr << "hexc: --capture " << capture.out.string() << ": hexc edit captures .png\n";
         return cli::kUsage;
