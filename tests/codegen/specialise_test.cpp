@@ -28,16 +28,33 @@ std::vector<std::string> texts(const std::vector<SourceLine>& lines) {
 const Settings kSettings = {{"l.rotate", "true"}, {"l.aspect", "1.0"}, {"b.gainInt", "2"}, {"b.metric", "false"}, {"b.taps", "3"}};
 
 TEST(Specialise, DecidesConditionsOnTheSettingsOnly) {
-    EXPECT_EQ(decide("l.rotate", kSettings), 1);
-    EXPECT_EQ(decide("!l.rotate", kSettings), 0);
-    EXPECT_EQ(decide("l.aspect == 1.0 && b.gainInt > 0", kSettings), 1);
-    EXPECT_EQ(decide("b.metric || (b.taps > 2 && !b.metric)", kSettings), 1);
+    EXPECT_EQ(decide("l.rotate", kSettings).taken, 1);
+    EXPECT_EQ(decide("!l.rotate", kSettings).taken, 0);
+    EXPECT_EQ(decide("l.aspect == 1.0 && b.gainInt > 0", kSettings).taken, 1);
+    EXPECT_EQ(decide("b.metric || (b.taps > 2 && !b.metric)", kSettings).taken, 1);
     // One decided operand decides || and &&; otherwise a run-time value leaves it open.
-    EXPECT_EQ(decide("b.gainInt > 0 || b.falloff != 0.5", kSettings), 1);
-    EXPECT_EQ(decide("b.metric && sum > 0.0", kSettings), 0);
-    EXPECT_EQ(decide("b.gain && (b.gainInt > 0 || b.falloff != 0.5)", kSettings), -1);
-    EXPECT_EQ(decide("f.x", kSettings), -1);
-    EXPECT_EQ(decide("b.taps + 1 > 2", kSettings), -1);  // arithmetic: not decided here
+    EXPECT_EQ(decide("b.gainInt > 0 || b.falloff != 0.5", kSettings).taken, 1);
+    EXPECT_EQ(decide("b.metric && sum > 0.0", kSettings).taken, 0);
+    EXPECT_EQ(decide("b.gain && (b.gainInt > 0 || b.falloff != 0.5)", kSettings).taken, -1);
+    EXPECT_EQ(decide("f.x", kSettings).taken, -1);
+    EXPECT_EQ(decide("b.taps + 1 > 2", kSettings).taken, -1);  // arithmetic: not decided here
+}
+
+// What the settings decide drops out of a condition they leave open; one not read here is left as it is.
+TEST(Specialise, KeepsWhatTheSettingsLeaveOpen) {
+    const Settings s = {{"b.adaptive", "false"}, {"b.taps", "3"}, {"b.gain", "true"}, {"b.gainInt", "0"}, {"b.falloff", "hexcParams.r"}};
+    EXPECT_EQ(decide("!b.adaptive || f.x", {{"b.adaptive", "true"}}).rest, "f.x");
+    EXPECT_EQ(decide("(b.adaptive && f.z) || (!b.adaptive && b.taps > 2)", {{"b.adaptive", "true"}, {"b.taps", "3"}}).rest, "(f.z)");
+    EXPECT_EQ(decide("(b.adaptive && f.z) || (!b.adaptive && b.taps > 2)", s).taken, 1);
+    EXPECT_EQ(decide("b.gain && (b.gainInt > 0 || b.falloff != 0.5)", s).rest, "(hexcParams.r != 0.5)");
+    EXPECT_EQ(decide("!(b.gain && x)", s).rest, "!(x)");
+    EXPECT_EQ(decide("b.taps + 1 > 2", s).rest, "");
+    const std::vector<SourceLine> in = numbered({
+        "    if (!b.adaptive || f.x) c = t(0);  // a tap",
+        "    W = b.gain && (b.gainInt > 0 || b.falloff != 0.5) ? g(W) : W;",
+    });
+    EXPECT_EQ(texts(specialise(in, {{"b.adaptive", "true"}, {"b.gain", "true"}, {"b.gainInt", "0"}, {"b.falloff", "hexcParams.r"}})),
+              (std::vector<std::string>{"    if (f.x) c = t(0);  // a tap", "    W = (hexcParams.r != 0.5) ? g(W) : W;"}));
 }
 
 TEST(Specialise, KeepsTheBranchTaken) {

@@ -9,10 +9,12 @@
 namespace hexc {
 namespace {
 
-// A condition's value: a bool or a number the settings give, or unknown (read at run time).
+// A condition's value: a bool or a number the settings give, or unknown (read at run time), with its text: an unknown's
+// with what the settings decide in it folded away.
 struct Value {
     enum Kind { Unknown, Bool, Number } kind = Unknown;
     double number = 0;  // a bool as 0 or 1
+    std::string text;
 };
 
 std::optional<double> numberIn(const std::string& text) {
@@ -25,10 +27,12 @@ std::optional<double> numberIn(const std::string& text) {
 Value valueOf(const std::string& token, const Settings& settings) {
     auto it = settings.find(token);
     const std::string& text = it == settings.end() ? token : it->second;
-    if (text == "true" || text == "false") return {Value::Bool, double(text == "true")};
-    if (std::optional<double> n = numberIn(text)) return {Value::Number, *n};
-    return {};
+    if (text == "true" || text == "false") return {Value::Bool, double(text == "true"), text};
+    if (std::optional<double> n = numberIn(text)) return {Value::Number, *n, text};
+    return {Value::Unknown, 0, text};
 }
+
+Value boolean(bool b) { return {Value::Bool, double(b), b ? "true" : "false"}; }
 
 // Recursive descent over a condition's tokens: || over && over ! over comparisons of operands (a setting, a literal or
 // a parenthesised condition). Anything else in it (arithmetic, a call, an index) makes it undecided.
@@ -36,9 +40,10 @@ class Condition {
 public:
     Condition(std::string_view text, const Settings& settings) : settings_(settings) { tokenize(text); }
 
-    Value evaluate() {
+    // nullopt when the condition is not one this reads.
+    std::optional<Value> evaluate() {
         Value v = either();
-        return ok_ && at_ == tokens_.size() ? v : Value{};
+        return ok_ && at_ == tokens_.size() ? std::optional<Value>(v) : std::nullopt;
     }
 
 private:
@@ -59,7 +64,8 @@ private:
         if (at_ < tokens_.size() && tokens_[at_] == token) return ++at_, true;
         return false;
     }
-    // a || b, and below a && b: decided by one decided operand (true for ||, false for &&) or by all.
+    // a || b, and below a && b: decided by one decided operand (true for ||, false for &&) or by all; an operand that
+    // does not decide it drops out of its text.
     Value either() {
         Value v = both();
         while (take("||")) v = combine(v, both(), true);
@@ -70,16 +76,19 @@ private:
         while (take("&&")) v = combine(v, negation(), false);
         return v;
     }
-    static Value combine(Value a, Value b, bool orElse) {
+    static Value combine(const Value& a, const Value& b, bool orElse) {
         const double wins = orElse ? 1 : 0;
-        if ((a.kind == Value::Bool && a.number == wins) || (b.kind == Value::Bool && b.number == wins)) return {Value::Bool, wins};
-        if (a.kind == Value::Bool && b.kind == Value::Bool) return {Value::Bool, 1 - wins};
-        return {};
+        if ((a.kind == Value::Bool && a.number == wins) || (b.kind == Value::Bool && b.number == wins)) return boolean(wins);
+        if (a.kind == Value::Bool && b.kind == Value::Bool) return boolean(!wins);
+        if (a.kind == Value::Bool) return b;
+        if (b.kind == Value::Bool) return a;
+        return {Value::Unknown, 0, a.text + (orElse ? " || " : " && ") + b.text};
     }
     Value negation() {
         if (!take("!")) return comparison();
         Value v = negation();
-        return v.kind == Value::Bool ? Value{Value::Bool, 1 - v.number} : Value{};
+        if (v.kind == Value::Bool) return boolean(!v.number);
+        return {Value::Unknown, 0, "!" + (v.text.find(' ') == std::string::npos ? v.text : "(" + v.text + ")")};
     }
     Value comparison() {
         Value a = operand();
@@ -87,15 +96,10 @@ private:
         for (const char* op : kOps) {
             if (!take(op)) continue;
             Value b = operand();
-            if (a.kind == Value::Unknown || a.kind != b.kind) return {};
+            if (a.kind == Value::Unknown || a.kind != b.kind) return {Value::Unknown, 0, a.text + " " + op + " " + b.text};
             const double x = a.number, y = b.number;
             const std::string_view o = op;
-            return {Value::Bool, double(o == "=="   ? x == y
-                                        : o == "!=" ? x != y
-                                        : o == "<=" ? x <= y
-                                        : o == ">=" ? x >= y
-                                        : o == "<"  ? x < y
-                                                    : x > y)};
+            return boolean(o == "==" ? x == y : o == "!=" ? x != y : o == "<=" ? x <= y : o == ">=" ? x >= y : o == "<" ? x < y : x > y);
         }
         return a;
     }
@@ -103,6 +107,7 @@ private:
         if (take("(")) {
             Value v = either();
             ok_ = ok_ && take(")");
+            if (v.kind == Value::Unknown) v.text = "(" + v.text + ")";
             return v;
         }
         if (at_ >= tokens_.size() || !(isIdentifierChar(tokens_[at_][0]))) {
@@ -137,7 +142,8 @@ size_t topLevel(std::string_view text, size_t from, char ch) {
     return std::string_view::npos;
 }
 
-// `code` with a statement `... = c ? x : y;` or `return c ? x : y;` whose condition the settings decide as x or y.
+// `code` with a statement `... = c ? x : y;` or `return c ? x : y;` whose condition the settings decide as x or y; one
+// they leave open keeps what of it they do not decide.
 std::string foldSelect(const std::string& code, const Settings& settings) {
     const std::string_view t = trimmed(code);
     size_t start = t.starts_with("return ") ? 6 : std::string_view::npos;
@@ -147,12 +153,14 @@ std::string foldSelect(const std::string& code, const Settings& settings) {
     if (start == std::string_view::npos || end == std::string_view::npos) return code;
     const size_t question = topLevel(t.substr(0, end), start, '?');
     if (question == std::string_view::npos) return code;
-    const int taken = decide(t.substr(start, question - start), settings);
+    const Decision d = decide(t.substr(start, question - start), settings);
     const size_t colon = topLevel(t.substr(0, end), question + 1, ':');
-    if (taken < 0 || colon == std::string_view::npos) return code;
-    const std::string_view branch = taken ? t.substr(question + 1, colon - question - 1) : t.substr(colon + 1, end - colon - 1);
     const size_t indent = code.find_first_not_of(' ');
-    return code.substr(0, indent) + std::string(t.substr(0, start)) + " " + std::string(trimmed(branch)) + std::string(t.substr(end));
+    const std::string head = code.substr(0, indent) + std::string(t.substr(0, start)) + " ";
+    if (d.taken < 0 && !d.rest.empty()) return head + d.rest + " " + std::string(t.substr(question));
+    if (d.taken < 0 || colon == std::string_view::npos) return code;
+    const std::string_view branch = d.taken ? t.substr(question + 1, colon - question - 1) : t.substr(colon + 1, end - colon - 1);
+    return head + std::string(trimmed(branch)) + std::string(t.substr(end));
 }
 
 // Each read of a setting (`l.field`, `b.field`, not itself a member of something) replaced by its value.
@@ -201,12 +209,17 @@ private:
         out.push_back({l.number, substitute(foldSelect(text.substr(0, code), settings_), settings_) + text.substr(code)});
     }
 
-    // The `if` at line i when the settings decide it: its branch taken emitted, the index past it returned; else i.
+    // The `if` at line i when the settings decide it: its branch taken emitted, the index past it returned. One they leave
+    // open: the line with what of its condition they do not decide, i + 1. Else i.
     size_t branch(const std::vector<SourceLine>& in, size_t i, size_t end, size_t dedent) {
         const std::string code(codeOf(in[i].text));
         const size_t indent = code.find_first_not_of(' '), open = indent + 3, close = closingBracket(code, open);
         if (close == std::string::npos) return i;
-        const int taken = decide(std::string_view(code).substr(open + 1, close - open - 2), settings_);
+        const auto [taken, undecided] = decide(std::string_view(code).substr(open + 1, close - open - 2), settings_);
+        if (taken < 0 && !undecided.empty()) {
+            line({in[i].number, code.substr(0, open + 1) + undecided + in[i].text.substr(close - 1)}, dedent);
+            return i + 1;
+        }
         const std::string rest(trimmed(std::string_view(code).substr(close)));
         if (taken < 0 || rest.empty()) return i;
         if (rest != "{") {  // `if (c) statement;`
@@ -230,9 +243,11 @@ private:
 
 }  // namespace
 
-int decide(std::string_view condition, const Settings& settings) {
-    Value v = Condition(condition, settings).evaluate();
-    return v.kind == Value::Bool ? int(v.number) : -1;
+Decision decide(std::string_view condition, const Settings& settings) {
+    const std::optional<Value> v = Condition(condition, settings).evaluate();
+    if (!v) return {};
+    if (v->kind == Value::Bool) return {int(v->number), ""};
+    return {-1, v->text};
 }
 
 std::vector<SourceLine> specialise(const std::vector<SourceLine>& lines, const Settings& settings) {

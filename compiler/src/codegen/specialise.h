@@ -19,7 +19,13 @@ using Settings = std::map<std::string, std::string>;
 // or y, and every other read of a setting becomes its value. Comments are left as they are.
 std::vector<SourceLine> specialise(const std::vector<SourceLine>& lines, const Settings& settings);
 
-// The condition's value under `settings`: 1 true, 0 false, -1 when it reads anything else (a run-time value).
-int decide(std::string_view condition, const Settings& settings);
+// A condition under `settings`: `taken` 1 true, 0 false, -1 when it reads anything else (a run-time value); then `rest`
+// is the condition without what the settings decide in it (`!false || f.x` -> `f.x`), or empty when it is not a
+// condition read here (arithmetic, a call, an index).
+struct Decision {
+    int taken = -1;
+    std::string rest;
+};
+Decision decide(std::string_view condition, const Settings& settings);
 
 }  // namespace hexc
