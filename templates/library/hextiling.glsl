@@ -526,13 +526,14 @@ bvec3 hexcFetched(vec3 w, HexcBlend b) {
 
 // The texels of the taps `f` picks (the others read 0), every path's fetches. Adaptive taps branch around each
 // fetch, as a GPU needs to skip one: the gradients (textureGrad) or the level (textureLod, lod "shared") are
-// explicit, so a fetch in non-uniform control flow is defined. Otherwise the branches are literals the optimiser folds.
+// explicit, so a fetch in non-uniform control flow is defined. Otherwise `f` is every tap (the checker's two): the
+// branches read that from the settings, so that codegen folds them.
 void hexcFetchTaps(texture2D tex, sampler samp, HexcTiles t, bvec3 f, HexcBlend b, out vec4 c[3]) {
     vec3 lod = hexcTileLods(tex, samp, t, b);
     c = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
-    if (f.x) c[0] = hexcFetch(tex, samp, t.tap[0], lod.x, b);
-    if (f.y) c[1] = hexcFetch(tex, samp, t.tap[1], lod.y, b);
-    if (f.z) c[2] = hexcFetch(tex, samp, t.tap[2], lod.z, b);
+    if (!b.adaptive || f.x) c[0] = hexcFetch(tex, samp, t.tap[0], lod.x, b);
+    if (!b.adaptive || f.y) c[1] = hexcFetch(tex, samp, t.tap[1], lod.y, b);
+    if ((b.adaptive && f.z) || (!b.adaptive && b.taps > 2)) c[2] = hexcFetch(tex, samp, t.tap[2], lod.z, b);
 }
 
 // The heights of the tiles' samples from the height slot's texture (b.heightLuma picks its channel).
@@ -604,13 +605,13 @@ vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY) {
 // Listing 3: normal-map derivative path. Each sampled derivative is rotated back with its tile's
 // rotation before blending; the falloff metric is the sine of the slope angle (Eq. 3).
 vec2 hexcDeriv(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, bool flipY, texture2D heightTex, out vec3 weights) {
-    // One branch per tap around its fetch and its derivative (adaptive taps: see hexcFetchTaps).
+    // One branch per tap around its fetch and its derivative (adaptive taps: see hexcFetchTaps), folded without them.
     bvec3 f = hexcFetched(t.w, b);
     vec3 lod = hexcTileLods(tex, samp, t, b);
     vec2 d1 = vec2(0.0), d2 = vec2(0.0), d3 = vec2(0.0);
-    if (f.x) d1 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[0], lod.x, b), t.tap[0], t.scaled, flipY);
-    if (f.y) d2 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[1], lod.y, b), t.tap[1], t.scaled, flipY);
-    if (f.z) d3 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[2], lod.z, b), t.tap[2], t.scaled, flipY);
+    if (!b.adaptive || f.x) d1 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[0], lod.x, b), t.tap[0], t.scaled, flipY);
+    if (!b.adaptive || f.y) d2 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[1], lod.y, b), t.tap[1], t.scaled, flipY);
+    if ((b.adaptive && f.z) || (!b.adaptive && b.taps > 2)) d3 = hexcTapDeriv(hexcFetch(tex, samp, t.tap[2], lod.z, b), t.tap[2], t.scaled, flipY);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     vec3 W = hexcBlendWeights(t.w * vec3(f), hexcMetric(sqrt(D / (1.0 + D)), b), b);
     if (b.height) W = hexcHeightBlend(W, hexcTileHeights(heightTex, samp, t, b), b.heightWidth);

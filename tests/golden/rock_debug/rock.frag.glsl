@@ -272,31 +272,22 @@ vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsam
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 531 "hexc/hextiling.glsl"
+#line 532 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 531 "hexc/hextiling.glsl"
+#line 532 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
-    if (f.x)
-    {
-        HexcTap param_1 = t.tap[0];
-        float param_2 = lod.x;
-        c[0] = hexcFetch_albedo(param_1, param_2, SPIRV_Cross_Combinedtexsamp);
-    }
-    if (f.y)
-    {
-        HexcTap param_3 = t.tap[1];
-        float param_4 = lod.y;
-        c[1] = hexcFetch_albedo(param_3, param_4, SPIRV_Cross_Combinedtexsamp);
-    }
-    if (f.z)
-    {
-        HexcTap param_5 = t.tap[2];
-        float param_6 = lod.z;
-        c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
-    }
+    HexcTap param_1 = t.tap[0];
+    float param_2 = lod.x;
+    c[0] = hexcFetch_albedo(param_1, param_2, SPIRV_Cross_Combinedtexsamp);
+    HexcTap param_3 = t.tap[1];
+    float param_4 = lod.y;
+    c[1] = hexcFetch_albedo(param_3, param_4, SPIRV_Cross_Combinedtexsamp);
+    HexcTap param_5 = t.tap[2];
+    float param_6 = lod.z;
+    c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
 }
 
 #line 419 "hexc/hextiling.glsl"
@@ -423,10 +414,10 @@ vec3 hexcShowWeights(vec3 W, ivec3 channel)
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
 vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -456,9 +447,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_6;
-    vec4 _1529 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
+    vec4 _1505 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
     weights = param_6;
-    return _1529;
+    return _1505;
 }
 
 #line 24 "hexc/generated"
@@ -471,9 +462,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _1550 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1526 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1550;
+    return _1526;
 }
 
 #line 27 "hexc/generated"
@@ -482,9 +473,9 @@ vec4 hexc_albedo(vec2 uv)
 #line 27 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1558 = hexc_albedo(param, param_1);
+    vec4 _1534 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1558;
+    return _1534;
 }
 
 #line 106 "hexc/hextiling.glsl"
@@ -519,10 +510,10 @@ vec3 hexcMetric_roughness(vec3 Dw)
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
 vec4 hexcColor_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -553,9 +544,9 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_6 = hexcChannel(param_4);
     vec3 param_7;
-    vec4 _1621 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
+    vec4 _1597 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
     weights = param_7;
-    return _1621.x;
+    return _1597.x;
 }
 
 #line 43 "hexc/generated"
@@ -568,9 +559,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _1641 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1617 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1641;
+    return _1617;
 }
 
 #line 46 "hexc/generated"
@@ -579,27 +570,27 @@ float hexc_roughness(vec2 uv)
 #line 46 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _1649 = hexc_roughness(param, param_1);
+    float _1625 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _1649;
+    return _1625;
 }
 
-#line 592 "hexc/hextiling.glsl"
+#line 593 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 592 "hexc/hextiling.glsl"
+#line 593 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1331;
+    float _1319;
     if (flipY)
     {
-        _1331 = -vM.y;
+        _1319 = -vM.y;
     }
     else
     {
-        _1331 = vM.y;
+        _1319 = vM.y;
     }
-    return (-vec2(vM.x, _1331)) / vec2(zMa);
+    return (-vec2(vM.x, _1319)) / vec2(zMa);
 }
 
 #line 119 "hexc/hextiling.glsl"
@@ -611,25 +602,25 @@ vec2 hexcRotateFromTile(vec2 d, vec2 cs)
     return hexcRotateToTile(param, param_1);
 }
 
-#line 600 "hexc/hextiling.glsl"
+#line 601 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 600 "hexc/hextiling.glsl"
+#line 601 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1364;
+    vec2 _1352;
     if (scaled)
     {
-        _1364 = d * p.invScale;
+        _1352 = d * p.invScale;
     }
     else
     {
-        _1364 = d;
+        _1352 = d;
     }
-    return _1364;
+    return _1352;
 }
 
 #line 419 "hexc/hextiling.glsl"
@@ -662,10 +653,10 @@ vec3 hexcBlendWeights_normal(vec3 w, vec3 M)
     return W;
 }
 
-#line 608 "hexc/hextiling.glsl"
+#line 609 "hexc/hextiling.glsl"
 vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 608 "hexc/hextiling.glsl"
+#line 609 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -673,36 +664,27 @@ vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV
     vec2 d1 = vec2(0.0);
     vec2 d2 = vec2(0.0);
     vec2 d3 = vec2(0.0);
-    if (f.x)
-    {
-        HexcTap param_2 = t.tap[0];
-        float param_3 = lod.x;
-        vec4 param_4 = hexcFetch_albedo(param_2, param_3, SPIRV_Cross_Combinedtexsamp);
-        HexcTap param_5 = t.tap[0];
-        bool param_6 = t.scaled;
-        bool param_7 = flipY;
-        d1 = hexcTapDeriv(param_4, param_5, param_6, param_7);
-    }
-    if (f.y)
-    {
-        HexcTap param_8 = t.tap[1];
-        float param_9 = lod.y;
-        vec4 param_10 = hexcFetch_albedo(param_8, param_9, SPIRV_Cross_Combinedtexsamp);
-        HexcTap param_11 = t.tap[1];
-        bool param_12 = t.scaled;
-        bool param_13 = flipY;
-        d2 = hexcTapDeriv(param_10, param_11, param_12, param_13);
-    }
-    if (f.z)
-    {
-        HexcTap param_14 = t.tap[2];
-        float param_15 = lod.z;
-        vec4 param_16 = hexcFetch_albedo(param_14, param_15, SPIRV_Cross_Combinedtexsamp);
-        HexcTap param_17 = t.tap[2];
-        bool param_18 = t.scaled;
-        bool param_19 = flipY;
-        d3 = hexcTapDeriv(param_16, param_17, param_18, param_19);
-    }
+    HexcTap param_2 = t.tap[0];
+    float param_3 = lod.x;
+    vec4 param_4 = hexcFetch_albedo(param_2, param_3, SPIRV_Cross_Combinedtexsamp);
+    HexcTap param_5 = t.tap[0];
+    bool param_6 = t.scaled;
+    bool param_7 = flipY;
+    d1 = hexcTapDeriv(param_4, param_5, param_6, param_7);
+    HexcTap param_8 = t.tap[1];
+    float param_9 = lod.y;
+    vec4 param_10 = hexcFetch_albedo(param_8, param_9, SPIRV_Cross_Combinedtexsamp);
+    HexcTap param_11 = t.tap[1];
+    bool param_12 = t.scaled;
+    bool param_13 = flipY;
+    d2 = hexcTapDeriv(param_10, param_11, param_12, param_13);
+    HexcTap param_14 = t.tap[2];
+    float param_15 = lod.z;
+    vec4 param_16 = hexcFetch_albedo(param_14, param_15, SPIRV_Cross_Combinedtexsamp);
+    HexcTap param_17 = t.tap[2];
+    bool param_18 = t.scaled;
+    bool param_19 = flipY;
+    d3 = hexcTapDeriv(param_16, param_17, param_18, param_19);
     vec3 D = vec3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     vec3 param_20 = sqrt(D / (vec3(1.0) + D));
     vec3 param_21 = t.w * vec3(f);
@@ -725,9 +707,9 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     vec3 param_6;
-    vec2 _1575 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
+    vec2 _1551 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
     weights = param_6;
-    return _1575;
+    return _1551;
 }
 
 #line 33 "hexc/generated"
@@ -740,9 +722,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _1594 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _1570 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1594;
+    return _1570;
 }
 
 #line 36 "hexc/generated"
@@ -751,15 +733,15 @@ vec2 hexc_normal(vec2 uv)
 #line 36 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _1602 = hexc_normal(param, param_1);
+    vec2 _1578 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _1602;
+    return _1578;
 }
 
-#line 669 "hexc/hextiling.glsl"
+#line 670 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 669 "hexc/hextiling.glsl"
+#line 670 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

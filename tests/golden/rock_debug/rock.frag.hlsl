@@ -284,31 +284,22 @@ float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, flo
     return tex.SampleGrad(samp, p.st, p.dx, p.dy);
 }
 
-#line 531 "hexc/hextiling.glsl"
+#line 532 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 531 "hexc/hextiling.glsl"
+#line 532 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
     c = _1147;
-    if (f.x)
-    {
-        HexcTap param_1 = t.tap[0];
-        float param_2 = lod.x;
-        c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
-    }
-    if (f.y)
-    {
-        HexcTap param_3 = t.tap[1];
-        float param_4 = lod.y;
-        c[1] = hexcFetch_albedo(tex, samp, param_3, param_4);
-    }
-    if (f.z)
-    {
-        HexcTap param_5 = t.tap[2];
-        float param_6 = lod.z;
-        c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
-    }
+    HexcTap param_1 = t.tap[0];
+    float param_2 = lod.x;
+    c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
+    HexcTap param_3 = t.tap[1];
+    float param_4 = lod.y;
+    c[1] = hexcFetch_albedo(tex, samp, param_3, param_4);
+    HexcTap param_5 = t.tap[2];
+    float param_6 = lod.z;
+    c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
 #line 419 "hexc/hextiling.glsl"
@@ -438,10 +429,10 @@ float3 hexcShowWeights(float3 W, int3 channel)
     return ((float3(bool3(int3(0, 1, 2).x == _427.x, int3(0, 1, 2).y == _427.y, int3(0, 1, 2).z == _427.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _437.x, int3(0, 1, 2).y == _437.y, int3(0, 1, 2).z == _437.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _446.x, int3(0, 1, 2).y == _446.y, int3(0, 1, 2).z == _446.z)) * W.z);
 }
 
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
 float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -471,9 +462,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_6;
-    float4 _1529 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
+    float4 _1505 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
     weights = param_6;
-    return _1529;
+    return _1505;
 }
 
 #line 24 "hexc/generated"
@@ -486,9 +477,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _1550 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _1526 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1550;
+    return _1526;
 }
 
 #line 27 "hexc/generated"
@@ -497,9 +488,9 @@ float4 hexc_albedo(float2 uv)
 #line 27 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1558 = hexc_albedo(param, param_1);
+    float4 _1534 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _1558;
+    return _1534;
 }
 
 #line 106 "hexc/hextiling.glsl"
@@ -535,10 +526,10 @@ float3 hexcMetric_roughness(float3 Dw)
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_roughness_falloffcontrast.xxx);
 }
 
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
 float4 hexcColor_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -569,9 +560,9 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _1621 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
+    float4 _1597 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
     weights = param_7;
-    return _1621.x;
+    return _1597.x;
 }
 
 #line 43 "hexc/generated"
@@ -584,9 +575,9 @@ float hexc_roughness(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float _1641 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1617 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1641;
+    return _1617;
 }
 
 #line 46 "hexc/generated"
@@ -595,27 +586,27 @@ float hexc_roughness(float2 uv)
 #line 46 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1649 = hexc_roughness(param, param_1);
+    float _1625 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _1649;
+    return _1625;
 }
 
-#line 592 "hexc/hextiling.glsl"
+#line 593 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 592 "hexc/hextiling.glsl"
+#line 593 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _1331;
+    float _1319;
     if (flipY)
     {
-        _1331 = -vM.y;
+        _1319 = -vM.y;
     }
     else
     {
-        _1331 = vM.y;
+        _1319 = vM.y;
     }
-    return (-float2(vM.x, _1331)) / zMa.xx;
+    return (-float2(vM.x, _1319)) / zMa.xx;
 }
 
 #line 119 "hexc/hextiling.glsl"
@@ -627,25 +618,25 @@ float2 hexcRotateFromTile(float2 d, float2 cs)
     return hexcRotateToTile(param, param_1);
 }
 
-#line 600 "hexc/hextiling.glsl"
+#line 601 "hexc/hextiling.glsl"
 float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 600 "hexc/hextiling.glsl"
+#line 601 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0f) - 1.0f.xxx;
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1364;
+    float2 _1352;
     if (scaled)
     {
-        _1364 = d * p.invScale;
+        _1352 = d * p.invScale;
     }
     else
     {
-        _1364 = d;
+        _1352 = d;
     }
-    return _1364;
+    return _1352;
 }
 
 #line 419 "hexc/hextiling.glsl"
@@ -678,10 +669,10 @@ float3 hexcBlendWeights_normal(float3 w, float3 M)
     return W;
 }
 
-#line 608 "hexc/hextiling.glsl"
+#line 609 "hexc/hextiling.glsl"
 float2 hexcDeriv_normal(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool flipY, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 608 "hexc/hextiling.glsl"
+#line 609 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -689,36 +680,27 @@ float2 hexcDeriv_normal(Texture2D<float4> tex, SamplerState samp, HexcTiles t, b
     float2 d1 = 0.0f.xx;
     float2 d2 = 0.0f.xx;
     float2 d3 = 0.0f.xx;
-    if (f.x)
-    {
-        HexcTap param_2 = t.tap[0];
-        float param_3 = lod.x;
-        float4 param_4 = hexcFetch_albedo(tex, samp, param_2, param_3);
-        HexcTap param_5 = t.tap[0];
-        bool param_6 = t.scaled;
-        bool param_7 = flipY;
-        d1 = hexcTapDeriv(param_4, param_5, param_6, param_7);
-    }
-    if (f.y)
-    {
-        HexcTap param_8 = t.tap[1];
-        float param_9 = lod.y;
-        float4 param_10 = hexcFetch_albedo(tex, samp, param_8, param_9);
-        HexcTap param_11 = t.tap[1];
-        bool param_12 = t.scaled;
-        bool param_13 = flipY;
-        d2 = hexcTapDeriv(param_10, param_11, param_12, param_13);
-    }
-    if (f.z)
-    {
-        HexcTap param_14 = t.tap[2];
-        float param_15 = lod.z;
-        float4 param_16 = hexcFetch_albedo(tex, samp, param_14, param_15);
-        HexcTap param_17 = t.tap[2];
-        bool param_18 = t.scaled;
-        bool param_19 = flipY;
-        d3 = hexcTapDeriv(param_16, param_17, param_18, param_19);
-    }
+    HexcTap param_2 = t.tap[0];
+    float param_3 = lod.x;
+    float4 param_4 = hexcFetch_albedo(tex, samp, param_2, param_3);
+    HexcTap param_5 = t.tap[0];
+    bool param_6 = t.scaled;
+    bool param_7 = flipY;
+    d1 = hexcTapDeriv(param_4, param_5, param_6, param_7);
+    HexcTap param_8 = t.tap[1];
+    float param_9 = lod.y;
+    float4 param_10 = hexcFetch_albedo(tex, samp, param_8, param_9);
+    HexcTap param_11 = t.tap[1];
+    bool param_12 = t.scaled;
+    bool param_13 = flipY;
+    d2 = hexcTapDeriv(param_10, param_11, param_12, param_13);
+    HexcTap param_14 = t.tap[2];
+    float param_15 = lod.z;
+    float4 param_16 = hexcFetch_albedo(tex, samp, param_14, param_15);
+    HexcTap param_17 = t.tap[2];
+    bool param_18 = t.scaled;
+    bool param_19 = flipY;
+    d3 = hexcTapDeriv(param_16, param_17, param_18, param_19);
     float3 D = float3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     float3 param_20 = sqrt(D / (1.0f.xxx + D));
     float3 param_21 = t.w * float3(f);
@@ -741,9 +723,9 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     float3 param_6;
-    float2 _1575 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
+    float2 _1551 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
     weights = param_6;
-    return _1575;
+    return _1551;
 }
 
 #line 33 "hexc/generated"
@@ -756,9 +738,9 @@ float2 hexc_normal(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float2 _1594 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    float2 _1570 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1594;
+    return _1570;
 }
 
 #line 36 "hexc/generated"
@@ -767,15 +749,15 @@ float2 hexc_normal(float2 uv)
 #line 36 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1602 = hexc_normal(param, param_1);
+    float2 _1578 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _1602;
+    return _1578;
 }
 
-#line 669 "hexc/hextiling.glsl"
+#line 670 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 669 "hexc/hextiling.glsl"
+#line 670 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

@@ -335,32 +335,23 @@ float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 531 "hexc/hextiling.glsl"
+#line 532 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 531 "hexc/hextiling.glsl"
+#line 532 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
     c = _1147;
-    if (f.x)
-    {
-        HexcTap param_1 = t.tap[0];
-        float param_2 = lod.x;
-        c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
-    }
-    if (f.y)
-    {
-        HexcTap param_3 = t.tap[1];
-        float param_4 = lod.y;
-        c[1] = hexcFetch_albedo(tex, samp, param_3, param_4);
-    }
-    if (f.z)
-    {
-        HexcTap param_5 = t.tap[2];
-        float param_6 = lod.z;
-        c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
-    }
+    HexcTap param_1 = t.tap[0];
+    float param_2 = lod.x;
+    c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
+    HexcTap param_3 = t.tap[1];
+    float param_4 = lod.y;
+    c[1] = hexcFetch_albedo(tex, samp, param_3, param_4);
+    HexcTap param_5 = t.tap[2];
+    float param_6 = lod.z;
+    c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
 #line 419 "hexc/hextiling.glsl"
@@ -494,11 +485,11 @@ float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -530,9 +521,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_6;
-    float4 _1529 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
+    float4 _1505 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
     weights = param_6;
-    return _1529;
+    return _1505;
 }
 
 #line 24 "hexc/generated"
@@ -546,9 +537,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _1550 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1526 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _1550;
+    return _1526;
 }
 
 #line 27 "hexc/generated"
@@ -558,9 +549,9 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 27 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1558 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1534 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _1558;
+    return _1534;
 }
 
 #line 106 "hexc/hextiling.glsl"
@@ -597,11 +588,11 @@ float3 hexcMetric_roughness(thread const float3& Dw, constant HexcParams& hexcPa
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_roughness(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 548 "hexc/hextiling.glsl"
+#line 549 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -634,9 +625,9 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _1621 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
+    float4 _1597 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
     weights = param_7;
-    return _1621.x;
+    return _1597.x;
 }
 
 #line 43 "hexc/generated"
@@ -650,9 +641,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, constant H
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _1641 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1617 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _1641;
+    return _1617;
 }
 
 #line 46 "hexc/generated"
@@ -662,28 +653,28 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
 #line 46 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1649 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1625 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _1649;
+    return _1625;
 }
 
-#line 592 "hexc/hextiling.glsl"
+#line 593 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 592 "hexc/hextiling.glsl"
+#line 593 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1331;
+    float _1319;
     if (flipY)
     {
-        _1331 = -vM.y;
+        _1319 = -vM.y;
     }
     else
     {
-        _1331 = vM.y;
+        _1319 = vM.y;
     }
-    return (-float2(vM.x, _1331)) / float2(zMa);
+    return (-float2(vM.x, _1319)) / float2(zMa);
 }
 
 #line 119 "hexc/hextiling.glsl"
@@ -696,26 +687,26 @@ float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
     return hexcRotateToTile(param, param_1);
 }
 
-#line 600 "hexc/hextiling.glsl"
+#line 601 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 600 "hexc/hextiling.glsl"
+#line 601 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1364;
+    float2 _1352;
     if (scaled)
     {
-        _1364 = d * p.invScale;
+        _1352 = d * p.invScale;
     }
     else
     {
-        _1364 = d;
+        _1352 = d;
     }
-    return _1364;
+    return _1352;
 }
 
 #line 419 "hexc/hextiling.glsl"
@@ -750,11 +741,11 @@ float3 hexcBlendWeights_normal(thread const float3& w, thread const float3& M)
     return W;
 }
 
-#line 608 "hexc/hextiling.glsl"
+#line 609 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 608 "hexc/hextiling.glsl"
+#line 609 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -762,36 +753,27 @@ float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTil
     float2 d1 = float2(0.0);
     float2 d2 = float2(0.0);
     float2 d3 = float2(0.0);
-    if (f.x)
-    {
-        HexcTap param_2 = t.tap[0];
-        float param_3 = lod.x;
-        float4 param_4 = hexcFetch_albedo(tex, samp, param_2, param_3);
-        HexcTap param_5 = t.tap[0];
-        bool param_6 = bool(t.scaled);
-        bool param_7 = flipY;
-        d1 = hexcTapDeriv(param_4, param_5, param_6, param_7);
-    }
-    if (f.y)
-    {
-        HexcTap param_8 = t.tap[1];
-        float param_9 = lod.y;
-        float4 param_10 = hexcFetch_albedo(tex, samp, param_8, param_9);
-        HexcTap param_11 = t.tap[1];
-        bool param_12 = bool(t.scaled);
-        bool param_13 = flipY;
-        d2 = hexcTapDeriv(param_10, param_11, param_12, param_13);
-    }
-    if (f.z)
-    {
-        HexcTap param_14 = t.tap[2];
-        float param_15 = lod.z;
-        float4 param_16 = hexcFetch_albedo(tex, samp, param_14, param_15);
-        HexcTap param_17 = t.tap[2];
-        bool param_18 = bool(t.scaled);
-        bool param_19 = flipY;
-        d3 = hexcTapDeriv(param_16, param_17, param_18, param_19);
-    }
+    HexcTap param_2 = t.tap[0];
+    float param_3 = lod.x;
+    float4 param_4 = hexcFetch_albedo(tex, samp, param_2, param_3);
+    HexcTap param_5 = t.tap[0];
+    bool param_6 = bool(t.scaled);
+    bool param_7 = flipY;
+    d1 = hexcTapDeriv(param_4, param_5, param_6, param_7);
+    HexcTap param_8 = t.tap[1];
+    float param_9 = lod.y;
+    float4 param_10 = hexcFetch_albedo(tex, samp, param_8, param_9);
+    HexcTap param_11 = t.tap[1];
+    bool param_12 = bool(t.scaled);
+    bool param_13 = flipY;
+    d2 = hexcTapDeriv(param_10, param_11, param_12, param_13);
+    HexcTap param_14 = t.tap[2];
+    float param_15 = lod.z;
+    float4 param_16 = hexcFetch_albedo(tex, samp, param_14, param_15);
+    HexcTap param_17 = t.tap[2];
+    bool param_18 = bool(t.scaled);
+    bool param_19 = flipY;
+    d3 = hexcTapDeriv(param_16, param_17, param_18, param_19);
     float3 D = float3(dot(d1, d1), dot(d2, d2), dot(d3, d3));
     float3 param_20 = sqrt(D / (float3(1.0) + D));
     float3 param_21 = t.w * float3(f);
@@ -815,9 +797,9 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     bool param_5 = false;
     float3 param_6;
-    float2 _1575 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
+    float2 _1551 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
     weights = param_6;
-    return _1575;
+    return _1551;
 }
 
 #line 33 "hexc/generated"
@@ -831,9 +813,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _1594 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1570 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _1594;
+    return _1570;
 }
 
 #line 36 "hexc/generated"
@@ -843,16 +825,16 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
 #line 36 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1602 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1578 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _1602;
+    return _1578;
 }
 
-#line 669 "hexc/hextiling.glsl"
+#line 670 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 669 "hexc/hextiling.glsl"
+#line 670 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 
