@@ -79,6 +79,7 @@ const std::vector<std::string> kSpecialiseEarly = {
     "--eliminate-dead-branches",         // the library's branches on them: gone, with their code
     "--eliminate-dead-code-aggressive",  // what only the removed branches used
     "--loop-unroll",                     // loops a template asks to unroll ([[unroll]])
+    "--merge-blocks",                    // the blocks inlining split: redundancy elimination copies its table per block
     "--redundancy-elimination",          // the lattice and samples repeated across slots and taps, computed once
     "--simplify-instructions",           // what the shared values fold into
     "--ssa-rewrite",                     // loads the folds exposed
