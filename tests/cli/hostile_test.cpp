@@ -21,10 +21,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Generous bounds for a 2-core machine running the suite in parallel; a case that needs more is a bug. The
-// address-space bound includes the binary's own mappings (about 300 MiB with glslang and the C++ runtime).
+// Generous bounds for a 2-core machine running the suite in parallel; a case that needs more is a bug.
 constexpr int kSeconds = 20;
-constexpr int kMiB = 1536;
 
 struct Outcome {
     int exit;         // 124: killed by the time bound
@@ -35,6 +33,8 @@ Outcome runBounded(const std::string& args) {
 #ifdef HEXC_SANITIZED
     const std::string memory;  // ASan reserves terabytes of address space for its shadow; it checks memory itself
 #else
+    // The address-space bound includes the binary's own mappings (about 300 MiB with glslang and the C++ runtime).
+    constexpr int kMiB = 1536;
     const std::string memory = "ulimit -v " + std::to_string(kMiB * 1024) + "; ";
 #endif
     std::string err;
