@@ -115,19 +115,15 @@ PieceName Assembly::form(size_t piece, const Settings* settings, const std::stri
     for (const auto& [key, value] : *settings)
         if ((key.starts_with("l.") && p.lattice) || (key.starts_with("b.") && p.blend)) own.emplace(key, value);
     std::vector<SourceLine> lines = own.empty() ? p.lines : specialise(p.lines, own);
-    std::vector<size_t> dropped;
-    if (own.empty()) {
-        lines = renamed(lines, piece, settings, slot);
-    } else {
-        // The body first: its calls drop the settings their callees no longer take; then the definition drops those it
-        // no longer reads, and only then names the types of the parameters it keeps (an unused settings struct is left out).
-        const size_t head = definitionOf(lines, p) + 1;
-        std::vector<SourceLine> body = renamed({lines.begin() + head, lines.end()}, piece, settings, slot);
-        lines.resize(head);
-        dropped = withoutSettings(lines.back(), body);
-        lines = renamed(lines, piece, settings, slot);
-        lines.insert(lines.end(), body.begin(), body.end());
-    }
+    // The body first: its calls drop the settings their callees no longer take; then a specialised definition drops
+    // those it no longer reads, and only then names the types of the parameters it keeps (an unused settings struct is
+    // left out).
+    const size_t head = own.empty() ? 0 : definitionOf(lines, p) + 1;
+    std::vector<SourceLine> body = renamed({lines.begin() + head, lines.end()}, piece, settings, slot);
+    lines.resize(head);
+    const std::vector<size_t> dropped = own.empty() ? std::vector<size_t>() : withoutSettings(lines.back(), body);
+    lines = renamed(lines, piece, settings, slot);
+    lines.insert(lines.end(), body.begin(), body.end());
     PieceName& name = names_[{piece, slot}];
     if (lines == p.lines) {
         useGeneral(piece);
