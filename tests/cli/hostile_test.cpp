@@ -382,10 +382,10 @@ TEST_F(Hostile, ExrDataWindowsAreCheckedIn64Bits) {
         int32_t x0, y0, x1, y1;
         const char* why;
     } cases[] = {
-        {0, 0, -100, 12, "the data window gives -99x13"},
-        {5, 0, 4, 12, "the data window gives 0x13"},
-        {lo, 0, hi, 12, "the data window gives 4294967296x13"},                // 2^31 - 1 - (-2^31) + 1: overflows 32 bits
-        {0, 0, 65534, 65534, "the file is truncated (level 0 does not fit)"},  // 65535 x 65535 claimed by ~400 bytes
+        {0, 0, -100, 12, "Invalid data window in image header"},
+        {5, 0, 4, 12, "Invalid data window in image header"},
+        {lo, 0, hi, 12, "Invalid data window in image header"},  // 2^31 - 1 - (-2^31) + 1: overflows 32 bits
+        {0, 0, 65534, 65534, "Early end of file"},               // 65535 x 65535 claimed by ~400 bytes
     };
     for (const auto& c : cases) {
         fs::path tex = dir_ / "w.exr";
@@ -393,7 +393,29 @@ TEST_F(Hostile, ExrDataWindowsAreCheckedIn64Bits) {
         write("w.exr", exr);
         Outcome o = runBounded(write("m.json", materialOn(tex)).string() + out());
         EXPECT_EQ(o.exit, 1) << c.why << ": " << o.err;
-        EXPECT_NE(o.err.find(std::string("OpenEXR: ") + c.why), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find("OpenEXR: "), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find(c.why), std::string::npos) << o.err;
+    }
+    expectNothingWritten();
+}
+
+// Every EXR that fuzz_texture once crashed on (its first byte picks the container, 2 = EXR, whose magic it stands
+// for) is refused with a located message by compile and render alike: tinyexr asserted on such headers and aborted.
+TEST_F(Hostile, FuzzFoundExrFilesAreRefusedNotFatal) {
+    for (const auto& found : fs::directory_iterator("tests/fuzz/regressions/texture")) {
+        std::ifstream in(found.path(), std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (bytes.empty() || bytes[0] % 3 != 2) continue;
+        const fs::path tex = write("f.exr", std::string("\x76\x2f\x31\x01", 4) + bytes.substr(1));
+        const fs::path m = write("m.json", materialOn(tex));
+        for (const std::string& command : {m.string() + out(), "render " + m.string() + " --reference --output albedo --size 8x8 -o " +
+                                                                   (dir_ / "out" / "r.pfm").string()}) {
+            Outcome o = runBounded(command);
+            EXPECT_EQ(o.exit, 1) << found.path() << ": " << command << ": " << o.err;
+            EXPECT_NE(o.err.find("m.json:1:"), std::string::npos) << o.err;
+            EXPECT_NE(o.err.find("error[HX121]"), std::string::npos) << o.err;
+            EXPECT_NE(o.err.find("OpenEXR: "), std::string::npos) << o.err;
+        }
     }
     expectNothingWritten();
 }

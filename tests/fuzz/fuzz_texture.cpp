@@ -1,5 +1,5 @@
-// libFuzzer target: hexc's own binary parsing, the KTX2 and DDS readers and its checks of OpenEXR headers (data window,
-// chunk table against the file's length) before tinyexr decodes. The first byte picks the container, whose magic is
+// libFuzzer target: hexc's own binary parsing, the KTX2 and DDS readers, and EXR reading through the OpenEXR library
+// (with hexc's size limits; it reports a malformed file by exception, where tinyexr asserted). The first byte picks the container, whose magic is
 // put in front of the rest (the header and data), so the fuzzer spends its time past the magic. stb's formats are its
 // parsers, fuzzed upstream; hexc's own checks of their headers are plain arithmetic (tests/hostile_test.cpp).
 #include <unistd.h>

@@ -1,6 +1,10 @@
 #include "common/containers.h"
 
-#include <tinyexr.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfVersion.h>
 
 #include <algorithm>
 #include <array>
@@ -8,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <mutex>
 #include <string_view>
 #include <vector>
 
@@ -194,70 +199,89 @@ Header header(Kind kind, const std::filesystem::path& file) {
     return h;
 }
 
-// Scanlines per chunk by compression (NONE, RLE, ZIPS, ZIP, PIZ, PXR24, B44, B44A, DWAA, DWAB), the OpenEXR file layout.
-constexpr int kExrLinesPerChunk[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
+// OpenEXR through the OpenEXR library (Debian's, fuzzed upstream), which reports a malformed file with an exception
+// where tinyexr asserts and aborts the process. Its sanity check refuses a data window or tile past these sizes
+// before allocating for it; the limits are process-wide, set once.
+void limitExrSizes() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        Imf::Header::setMaxImageSize(65536, 65536);
+        Imf::Header::setMaxTileSize(65536, 65536);
+    });
+}
 
-// Why an EXR header cannot be used, or empty: its data window as a size of 1..65536 (in 64 bits: the window's corners
-// are any 32-bit integers), and level 0's chunk table in the file. Each chunk takes an 8-byte offset and at least an
-// 8-byte chunk header, so a file too short for those cannot hold the image whatever its compression.
-std::string exrProblem(const EXRHeader& h, const std::filesystem::path& file, int64_t width, int64_t height) {
+// The channels hexc decodes, as tinyexr's LoadEXR did: one channel is grey in all four, else R, G and B (A if there).
+struct ExrChannels {
+    std::vector<std::string> names;  // the file's channel per RGBA component, one entry for a grey file
+    int count = 0;                   // the file's channels, up to 4, as TextureInfo::channels
+};
+
+ExrChannels exrChannels(const Imf::Header& h) {
+    ExrChannels c;
+    std::vector<std::string> all;
+    for (auto it = h.channels().begin(); it != h.channels().end(); ++it) all.emplace_back(it.name());
+    c.count = int(std::min<size_t>(all.size(), 4));
+    if (all.size() == 1) {
+        c.names = all;
+        return c;
+    }
+    for (const char* name : {"R", "G", "B", "A"})
+        if (h.channels().findChannel(name)) c.names.emplace_back(name);
+    if (c.names.size() < 3 || c.names[0] != "R" || c.names[1] != "G" || c.names[2] != "B") c.names.clear();
+    return c;
+}
+
+// Why an opened EXR cannot be used, or empty: a single part, a data window of 1..65536 a side (the window's corners
+// are any 32-bit integers, hence 64 bits), channels hexc can decode.
+std::string exrProblem(const Imf::InputFile& in, int64_t width, int64_t height) {
+    if (Imf::isMultiPart(in.version()) || Imf::isNonImage(in.version())) return "a multi-part or deep file (hexc reads single-part images)";
     if (width < 1 || height < 1 || width > 65536 || height > 65536)
         return "the data window gives " + std::to_string(width) + "x" + std::to_string(height) + " (sizes are 1..65536)";
-    if (h.compression_type < 0 || h.compression_type >= int(std::size(kExrLinesPerChunk))) return "an unknown compression";
-    int64_t chunks = 0;
-    if (h.tiled) {
-        if (h.tile_size_x < 1 || h.tile_size_y < 1) return "a tile size under 1";
-        chunks = (width + h.tile_size_x - 1) / h.tile_size_x * ((height + h.tile_size_y - 1) / h.tile_size_y);
-    } else {
-        const int lines = kExrLinesPerChunk[h.compression_type];
-        chunks = (height + lines - 1) / lines;
-    }
-    std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(file, ec);
-    if (ec || uint64_t(h.header_len) + uint64_t(chunks) * 16 > size) return "the file is truncated (level 0 does not fit)";
+    if (exrChannels(in.header()).names.empty()) return "no R, G and B channels and not a single channel";
     return {};
 }
 
 std::optional<TextureInfo> exrInfo(const std::filesystem::path& file, std::string* error) {
-    EXRVersion version;
-    EXRHeader h;
-    InitEXRHeader(&h);
-    const char* err = nullptr;
-    if (ParseEXRVersionFromFile(&version, file.c_str()) != TINYEXR_SUCCESS || version.multipart || version.non_image ||
-        ParseEXRHeaderFromFile(&h, &version, file.c_str(), &err) != TINYEXR_SUCCESS) {
-        *error = std::string("not a single-part OpenEXR image") + (err ? std::string(" (") + err + ")" : "");
-        if (err) FreeEXRErrorMessage(err);
-        FreeEXRHeader(&h);
+    limitExrSizes();
+    try {
+        Imf::InputFile in(file.c_str());
+        const Imath::Box2i w = in.header().dataWindow();
+        const int64_t width = int64_t(w.max.x) - w.min.x + 1, height = int64_t(w.max.y) - w.min.y + 1;
+        if (const std::string problem = exrProblem(in, width, height); !problem.empty()) {
+            *error = "OpenEXR: " + problem;
+            return std::nullopt;
+        }
+        TextureInfo info;
+        info.width = int(width), info.height = int(height), info.channels = exrChannels(in.header()).count;
+        info.channelNames = std::string("rgba").substr(0, size_t(info.channels));
+        info.format = "OpenEXR";
+        return info;
+    } catch (const std::exception& e) {
+        *error = std::string("OpenEXR: ") + e.what();
         return std::nullopt;
     }
-    const int64_t width = int64_t(h.data_window.max_x) - h.data_window.min_x + 1;
-    const int64_t height = int64_t(h.data_window.max_y) - h.data_window.min_y + 1;
-    const std::string problem = exrProblem(h, file, width, height);
-    TextureInfo info;
-    info.width = int(width), info.height = int(height), info.channels = std::clamp(h.num_channels, 0, 4);
-    info.channelNames = std::string("rgba").substr(0, size_t(info.channels));
-    info.format = "OpenEXR";
-    FreeEXRHeader(&h);
-    if (!problem.empty()) {
-        *error = "OpenEXR: " + problem;
-        return std::nullopt;
-    }
-    return info;
 }
 
 Texture loadExr(const std::filesystem::path& file) {
     if (std::string why; !exrInfo(file, &why)) throw TextureError(file.string() + ": " + why);
-    float* rgba = nullptr;
-    const char* err = nullptr;
-    Texture t;
-    if (LoadEXR(&rgba, &t.width, &t.height, file.c_str(), &err) != TINYEXR_SUCCESS) {
-        std::string why = err ? err : "cannot decode";
-        if (err) FreeEXRErrorMessage(err);
-        throw TextureError(file.string() + ": OpenEXR: " + why);
+    try {
+        Imf::InputFile in(file.c_str());
+        const Imath::Box2i window = in.header().dataWindow();
+        Texture t;
+        t.width = window.max.x - window.min.x + 1, t.height = window.max.y - window.min.y + 1;
+        t.rgba32f.assign(size_t(t.width) * t.height * 4, 1.0f);  // alpha 1 where the file has none
+        const std::vector<std::string> names = exrChannels(in.header()).names;
+        Imf::FrameBuffer fb;
+        for (size_t c = 0; c < names.size(); ++c)
+            fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, t.rgba32f.data() + c, window, 4 * sizeof(float)));
+        in.setFrameBuffer(fb);
+        in.readPixels(window.min.y, window.max.y);
+        if (names.size() == 1)
+            for (size_t i = 0; i < t.rgba32f.size(); i += 4) std::fill_n(&t.rgba32f[i + 1], 3, t.rgba32f[i]);
+        return t;
+    } catch (const std::exception& e) {
+        throw TextureError(file.string() + ": OpenEXR: " + e.what());
     }
-    std::unique_ptr<float, void (*)(void*)> owned(rgba, std::free);
-    t.rgba32f.assign(rgba, rgba + size_t(t.width) * t.height * 4);
-    return t;
 }
 
 Texture decode(const Header& h, const std::filesystem::path& file, bool srgb) {

@@ -1,7 +1,7 @@
 #pragma once
 // Texture files that pipelines hand over besides stb's formats: GPU containers (KTX2, DDS, with block-compressed
 // formats and mips) and OpenEXR. Compiling needs only their headers; render and preview decode level 0 where
-// that is simple (uncompressed 8-bit or 32-bit float RGBA, and any EXR through tinyexr).
+// that is simple (uncompressed 8-bit or 32-bit float RGBA, and any EXR through the OpenEXR library).
 #include <filesystem>
 #include <optional>
 #include <string>
