@@ -48,10 +48,18 @@ Reply badRequest(const std::string& what) {
 }
 
 // A request's body as JSON, in the page's key order, when it is an object whose "document" is one; nullopt otherwise
-// (a request the page never sends).
-std::optional<Json> withDocument(const std::string& body) {
+// (a request the page never sends), with the reply that refuses it: `expected` says what the request holds.
+std::optional<Json> withDocument(const std::string& body, const std::string& expected, Reply* refused) {
+    // Checked before parsing: what handles the document (comparing, dumping) recurses once per level.
+    if (nestsTooDeep(body)) {
+        *refused = badRequest("the request nests deeper than a material may (32 levels)");
+        return std::nullopt;
+    }
     Json request = Json::parse(body, nullptr, false);
-    if (!request.is_object() || !request.contains("document") || !request["document"].is_object()) return std::nullopt;
+    if (!request.is_object() || !request.contains("document") || !request["document"].is_object()) {
+        *refused = badRequest("expected " + expected);
+        return std::nullopt;
+    }
     return request;
 }
 
@@ -172,8 +180,9 @@ Diagnostics Session::confined(const Material& material) const {
 }
 
 Reply Session::compile(const std::string& body) {
-    const std::optional<Json> request = withDocument(body);
-    if (!request) return badRequest("expected {\"document\": the material, \"slot\": a slot name}");
+    Reply refused;
+    const std::optional<Json> request = withDocument(body, "{\"document\": the material, \"slot\": a slot name}", &refused);
+    if (!request) return refused;
     std::lock_guard lock(mutex_);
     Parsed p = parse(request->at("document"));
     if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
@@ -207,8 +216,9 @@ Reply Session::compile(const std::string& body) {
 }
 
 Reply Session::cost(const std::string& body) {
-    const std::optional<Json> request = withDocument(body);
-    if (!request) return badRequest("expected {\"document\": the material}");
+    Reply refused;
+    const std::optional<Json> request = withDocument(body, "{\"document\": the material}", &refused);
+    if (!request) return refused;
     std::lock_guard lock(costMutex_);  // not the page's compiles': the cost line follows the new frame, never holds it up
     Parsed p = parse(request->at("document"));
     if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
@@ -216,9 +226,11 @@ Reply Session::cost(const std::string& body) {
 }
 
 Reply Session::save(const std::string& body) {
-    const std::optional<Json> request = withDocument(body);
-    if (!request || !request->contains("version"))
-        return badRequest("expected {\"document\": the material, \"version\": the file's version it was edited from}");
+    const std::string expected = "{\"document\": the material, \"version\": the file's version it was edited from}";
+    Reply refused;
+    const std::optional<Json> request = withDocument(body, expected, &refused);
+    if (!request) return refused;
+    if (!request->contains("version")) return badRequest("expected " + expected);
     std::lock_guard lock(mutex_);
     if (request->at("version") != version())
         return json({{"ok", false}, {"conflict", true}, {"message", file_.string() + " changed on disk; it was reloaded"}}, 409);

@@ -139,6 +139,28 @@ class Security(unittest.TestCase):
         self.assertEqual(self.server.request("GET", "/api/material")[0], 200)  # still serving
         self.assert_material_unchanged()
 
+    def test_deeply_nested_requests_are_refused_before_parsing(self):
+        # 25,000 levels in 50 KB, within the size limit: the save path's rewrite recursed per level and overflowed.
+        deep = "[" * 25000 + "]" * 25000
+        version = self.server.json("GET", "/api/version")[1]["version"]
+        for route, extra in (("/api/compile", ', "slot": "albedo"'), ("/api/cost", ""), ("/api/save", ', "version": %s' % json.dumps(version))):
+            body = ('{"document": {"name": "rock", "x": %s}%s}' % (deep, extra)).encode()
+            status, _, data = self.server.request("POST", route, body)
+            self.assertEqual(status, 400, route)
+            self.assertIn("nests deeper", json.loads(data)["diagnostics"][0]["text"], route)
+        # A file whose keys are spelled with escapes: they name the members they decode to, and a save keeps them.
+        escaped = self.original.replace(b'"falloff"', b'"f\\u0061lloff"')
+        with open(self.material, "wb") as f:
+            f.write(escaped)
+        time.sleep(0.05)
+        version = self.server.json("GET", "/api/version")[1]["version"]
+        doc = self.document()
+        doc["hextiling"]["falloff"] = 0.7
+        status, r = self.server.json("POST", "/api/save", {"document": doc, "version": version})
+        self.assertEqual(status, 200, r)
+        with open(self.material, "rb") as f:
+            self.assertEqual(f.read(), escaped.replace(b'"f\\u0061lloff": 0.75', b'"f\\u0061lloff": 0.7'))
+
     def test_save_writes_the_material_file_only(self):
         before = sorted(os.listdir(self.folder))
         doc = self.document()

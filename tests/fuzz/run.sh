@@ -9,13 +9,15 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:?usage: tests/fuzz/run.sh BUILD_DIR [SECONDS]}
 seconds=${2:-60}
-for target in parse mtlx compile template texture; do
+for target in parse mtlx compile template texture json_text; do
   corpus=$build/fuzz-corpus/$target seeds=$build/fuzz-seeds/$target artifacts=$build/fuzz-artifacts/$target
   mkdir -p "$corpus" "$seeds" "$artifacts"
   if [ "$target" = template ]; then
     cp templates/builtin/*.glsl "$seeds"/
   elif [ "$target" = mtlx ]; then
     cp materials/mtlx/*.mtlx materials/mtlx/invalid/*.mtlx "$seeds"/
+  elif [ "$target" = json_text ]; then
+    for m in materials/*.json; do { cat "$m"; printf '\000'; cat "$m"; } > "$seeds/$(basename "$m")"; done  # a file, NUL, its edit
   elif [ "$target" = texture ]; then
     printf '\000' > "$seeds/ktx2" && printf '\001' > "$seeds/dds"  # the container's magic is added by the target
     printf '\002' > "$seeds/exr"

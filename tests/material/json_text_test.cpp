@@ -80,4 +80,34 @@ TEST(JsonText, WhatIsNotJsonIsRefused) {
     EXPECT_NE(why.find("nests deeper"), std::string::npos) << why;
 }
 
+// An edit nested past the limit is refused rather than walked: 100,000 levels (a 200 KB request) overflowed the
+// stack in the rewrite's recursion.
+TEST(JsonText, EditsNestingTooDeeplyAreRefused) {
+    Json deep = Json::array();
+    for (int i = 0; i < 100000; ++i) deep = Json::array({std::move(deep)});
+    Json edited = Json::parse(kMaterial);
+    edited["extra"] = std::move(deep);
+    std::string why;
+    EXPECT_FALSE(rewriteJsonText(kMaterial, edited, &why));
+    EXPECT_NE(why.find("nests deeper"), std::string::npos) << why;
+    EXPECT_TRUE(hexc::nestsTooDeep(std::string(100000, '[')));
+    EXPECT_FALSE(hexc::nestsTooDeep(kMaterial));
+}
+
+// A key spelled with escapes is the key it decodes to: its member is rewritten in place like any other.
+TEST(JsonText, KeysSpelledWithEscapesAreTheirDecodedKeys) {
+    const std::string text = R"({ "n\u0061me": "rock", "hextiling": { "r\u006ftation": 1.0 } })";
+    Json edited = Json::parse(text);
+    edited["hextiling"]["rotation"] = 0.5;
+    edited["extra"] = 1;
+    std::string why;
+    std::optional<std::string> out = rewriteJsonText(text, edited, &why);
+    ASSERT_TRUE(out) << why;
+    EXPECT_EQ(*out, R"({ "n\u0061me": "rock", "hextiling": { "r\u006ftation": 0.5 }, "extra": 1 })");
+    edited.erase("name");
+    out = rewriteJsonText(text, edited, &why);
+    ASSERT_TRUE(out) << why;
+    EXPECT_EQ(*out, R"({ "hextiling": { "r\u006ftation": 0.5 }, "extra": 1 })");
+}
+
 }  // namespace

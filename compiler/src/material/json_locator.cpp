@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 namespace hexc {
 
 std::string pointerAppend(const std::string& pointer, std::string_view token) {
@@ -149,6 +151,15 @@ void JsonLocator::parseString() {
     ++pos_;  // closing quote
 }
 
+namespace {
+// A key as nlohmann reads it: the text between the quotes, its escapes decoded ("n\\u0061me" is "name"), so that
+// pointers match the parsed document's. Escapes are rare in material keys: only those keys are decoded.
+std::string keyText(std::string_view quoted) {
+    if (quoted.find('\\') == std::string_view::npos) return std::string(quoted.substr(1, quoted.size() - 2));
+    return nlohmann::json::parse(quoted).get<std::string>();  // the document already parsed, so this string does
+}
+}  // namespace
+
 void JsonLocator::parseValue(const std::string& pointer) {
     Value& located = values_.emplace(pointer, Value{here(), {pos_, pos_}}).first->second;  // no insertion moves it
     char c = text_[pos_];
@@ -159,8 +170,7 @@ void JsonLocator::parseValue(const std::string& pointer) {
             TextPos keyPos = here();
             size_t start = pos_;
             parseString();
-            // The raw key between the quotes; escapes are rare in material keys and kept as written.
-            std::string key(text_.substr(start + 1, pos_ - start - 2));
+            std::string key = keyText(text_.substr(start, pos_ - start));
             std::string child = pointerAppend(pointer, key);
             if (auto [it, added] = keys_.try_emplace(child, Key{keyPos, start}); !added) {
                 duplicates_.push_back({child, it->second.pos, keyPos});

@@ -28,6 +28,19 @@ std::string written(const Json& value) {
     return value.dump();
 }
 
+// Whether `value` has more than `limit` levels of arrays and objects, walked without recursion.
+bool deeperThan(const Json& value, int limit) {
+    std::vector<std::pair<const Json*, int>> todo{{&value, 1}};
+    while (!todo.empty()) {
+        auto [v, depth] = todo.back();
+        todo.pop_back();
+        if (!v->is_structured()) continue;
+        if (depth > limit) return true;
+        for (const Json& child : *v) todo.push_back({&child, depth + 1});
+    }
+    return false;
+}
+
 class Rewriter {
 public:
     explicit Rewriter(std::string_view text) : text_(text), locator_(text) {}
@@ -113,12 +126,15 @@ private:
 
 }  // namespace
 
+bool nestsTooDeep(std::string_view text) { return excessiveNesting(text).has_value(); }
+
 std::optional<std::string> rewriteJsonText(std::string_view text, const nlohmann::ordered_json& edited, std::string* whyNot) {
     auto fail = [&](const std::string& why) -> std::optional<std::string> {
         if (whyNot) *whyNot = why;
         return std::nullopt;
     };
-    if (excessiveNesting(text)) return fail("it nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    if (excessiveNesting(text) || deeperThan(edited, kMaxJsonDepth))
+        return fail("it nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     Json original = Json::parse(text, nullptr, false);
     if (original.is_discarded()) return fail("it is not JSON");
     std::string out = Rewriter(text).document(original, edited);
