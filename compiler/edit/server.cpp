@@ -79,6 +79,20 @@ struct Server::Impl {
         return false;
     }
 
+    // Why a request comes from another origin than this server's page, or empty. Another page on 127.0.0.1 (another
+    // port) is the same site, so the browser sends it the cookie: what the browser says of the request's origin is
+    // checked. A browser sends Sec-Fetch-Site (and Origin on POST); a tool such as curl sends neither and needs the token.
+    std::string crossOrigin(const httplib::Request& req) const {
+        const std::string site = req.get_header_value("Sec-Fetch-Site"), origin = req.get_header_value("Origin");
+        const bool navigation = req.method == "GET" && req.path == "/" && req.get_header_value("Sec-Fetch-Mode") == "navigate";
+        if (!site.empty() && site != "same-origin" && !(navigation && site == "none"))
+            return "a request from another site or page (Sec-Fetch-Site: " + site + "): open the address hexc edit printed";
+        const std::string p = ":" + std::to_string(port);
+        if (!origin.empty() && origin != "http://127.0.0.1" + p && origin != "http://localhost" + p)
+            return "a request from another origin (" + origin + "): open the address hexc edit printed";
+        return {};
+    }
+
     // Refuses, before any route runs: another Host than this server's own names (a DNS rebinding page's requests carry
     // its own host name), a missing or wrong token, and a path that tries to leave the routes.
     httplib::Server::HandlerResponse guard(const httplib::Request& req, httplib::Response& res) const {
@@ -89,6 +103,17 @@ struct Server::Impl {
         }
         if (!authorised(req)) {
             refuse(res, 403, "missing or wrong token: open the address hexc edit printed");
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        if (const std::string why = crossOrigin(req); !why.empty()) {
+            refuse(res, 403, why);
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        // This runs before the body is read: a body that would be inflated or read in chunks without a stated length
+        // (the page never sends one) is refused before it costs memory.
+        if (req.has_header("Transfer-Encoding") ||
+            (req.has_header("Content-Encoding") && req.get_header_value("Content-Encoding") != "identity")) {
+            refuse(res, 415, "compressed or chunked request bodies are refused: send the body as it is, with its length");
             return httplib::Server::HandlerResponse::Handled;
         }
         std::string target = req.target;
@@ -170,6 +195,13 @@ void Server::Impl::routes() {
 Server::Server(Session& session, int port, CaptureHandler capture) : impl_(std::make_unique<Impl>(session, std::move(capture))) {
     Impl& s = *impl_;
     s.http.set_payload_max_length(kMaxRequestBytes);
+    // A client that opens a connection and sends slowly holds a worker until a read times out: more workers than a page
+    // uses (it sends a few requests at once), and short timeouts, so that a few such clients block nothing. Debian's
+    // cpp-httplib 0.11.4 is compiled with its own caps on a header line (8 KB) and has no cap on their count.
+    s.http.new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
+    s.http.set_read_timeout(2);
+    s.http.set_write_timeout(5);
+    s.http.set_keep_alive_timeout(2);
     s.http.set_default_headers({{"Cache-Control", "no-store"},
                                 {"X-Content-Type-Options", "nosniff"},
                                 {"Referrer-Policy", "no-referrer"},  // the address holds the token

@@ -15,6 +15,7 @@ namespace hexc::edit {
 constexpr int kMaxCaptureSide = 2048;
 constexpr size_t kMaxRequestBytes = size_t(kMaxCaptureSide) * kMaxCaptureSide * 4 + 4096;
 constexpr size_t kMaxDocumentBytes = 1 << 20;
+constexpr size_t kWorkers = 32;  // connections served at once
 
 class Server {
 public:

@@ -291,6 +291,42 @@ class Page(unittest.TestCase):
         os.utime(texture, (os.stat(texture).st_atime, os.stat(texture).st_mtime + 5))  # a texture tool rewrote it
         wait_idle(DRIVER, state["compiles"] + 1, "the reload after a texture changed")
 
+    def test_a_page_on_another_port_gets_nothing(self):
+        # After the artist opened the page (its cookie set), a page served from another port of 127.0.0.1 is the same
+        # site, so Chromium sends it the cookie. Whether a cross-origin image or script loads is visible to that page
+        # (onload / onerror) for resources of a type that loads, such as the page's own style sheet and script: each must
+        # be refused, and a save it posts must change nothing.
+        server = self.serve(self.material)
+        load(server)
+        origin = "http://127.0.0.1:%d" % server.port
+        page = ("<!doctype html><title>waiting</title><body><script>"
+                "const results = {}; const done = () => { if (Object.keys(results).length == 3) document.title = JSON.stringify(results); };"
+                "for (const [name, tag, path] of [['style', 'link', '/edit.css'], ['script', 'script', '/edit.js']]) {"
+                "  const e = document.createElement(tag); e.onload = () => { results[name] = 'loaded'; done(); };"
+                "  e.onerror = () => { results[name] = 'refused'; done(); };"
+                "  if (tag == 'link') { e.rel = 'stylesheet'; e.href = '%s' + path; } else e.src = '%s' + path; document.body.appendChild(e); }"
+                "fetch('%s/api/save', {method: 'POST', credentials: 'include', mode: 'no-cors', headers: {'Content-Type': 'text/plain'},"
+                "  body: JSON.stringify({document: {name: 'taken'}, version: 0})}).then(() => { results.save = 'sent'; done(); },"
+                "  () => { results.save = 'failed'; done(); });"
+                "</script></body>") % (origin, origin, origin)
+        other = os.path.join(self.folder, "other")
+        os.makedirs(other)
+        with open(os.path.join(other, "index.html"), "w") as f:
+            f.write(page)
+        attacker = subprocess.Popen([sys.executable, "-u", "-m", "http.server", "0", "--bind", "127.0.0.1", "--directory", other],
+                                    stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+        try:
+            port = int(wait_for(lambda: attacker.stdout.readline().split(" port ")[1].split(" ")[0], "the other page's server"))
+            DRIVER.get("http://127.0.0.1:%d/index.html" % port)
+            results = json.loads(wait_for(lambda: DRIVER.title if DRIVER.title.startswith("{") else None, "the other page's requests"))
+        finally:
+            attacker.terminate()
+            attacker.wait()
+        self.assertEqual((results["style"], results["script"]), ("refused", "refused"), results)
+        self.assertEqual(server.request("GET", "/api/version")[0], 200)  # still serving
+        with open(self.material, "rb") as f:
+            self.assertEqual(f.read(), self.original)
+
 
 if __name__ == "__main__":
     HEXC = os.path.abspath(sys.argv.pop(1))

@@ -139,6 +139,49 @@ class Security(unittest.TestCase):
         self.assertEqual(self.server.request("GET", "/api/material")[0], 200)  # still serving
         self.assert_material_unchanged()
 
+    def test_requests_from_other_origins_are_refused(self):
+        # Another page on 127.0.0.1 is the same site: the browser sends it the cookie, and says where it comes from.
+        other = "http://127.0.0.1:%d" % (self.server.port + 1)
+        for headers in ({"Sec-Fetch-Site": "same-site"}, {"Sec-Fetch-Site": "cross-site"}, {"Origin": other},
+                        {"Origin": "null"}, {"Sec-Fetch-Site": "none"}):
+            for method, path, body in (("GET", "/api/material", None), ("POST", "/api/save", {"document": self.document(), "version": "x"})):
+                status, _, data = self.server.request(method, path, body, headers=headers)
+                self.assertEqual(status, 403, (headers, path))
+                self.assertIn(b"another", data)
+        same = {"Sec-Fetch-Site": "same-origin", "Origin": "http://127.0.0.1:%d" % self.server.port}
+        self.assertEqual(self.server.request("GET", "/api/material", headers=same)[0], 200)
+        # A typed address (Sec-Fetch-Site: none) opens the page, and only the page.
+        self.assertEqual(self.server.request("GET", "/", headers={"Sec-Fetch-Site": "none", "Sec-Fetch-Mode": "navigate"})[0], 200)
+        self.assert_material_unchanged()
+
+    def test_compressed_and_chunked_bodies_are_refused_unread(self):
+        # 809 bytes of brotli or 1 MB of gzip inflate to gigabytes: refused from the headers, before the body is read.
+        bomb = zlib.compress(b" " * (64 << 20), 9)
+        start = time.monotonic()
+        for encoding in ("gzip", "deflate", "br"):
+            status, _, data = self.server.request("POST", "/api/compile", bomb, headers={"Content-Encoding": encoding})
+            self.assertEqual(status, 415, encoding)
+        connection = socket.create_connection(("127.0.0.1", self.server.port), timeout=10)
+        connection.sendall(b"POST /api/compile?token=%s HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nTransfer-Encoding: chunked\r\n\r\n"
+                           % (self.server.token.encode(), self.server.port) + b"100000\r\n" + b" " * 4096)
+        self.assertIn(b" 415 ", connection.recv(4096))
+        connection.close()
+        self.assertLess(time.monotonic() - start, 5.0)
+        self.assertEqual(self.server.request("GET", "/api/version")[0], 200)
+
+    def test_slow_clients_block_nothing(self):
+        # Clients that connect and send a header line now and then (no token needed for that) each hold a worker.
+        slow = []
+        for _ in range(16):
+            s = socket.create_connection(("127.0.0.1", self.server.port), timeout=10)
+            s.sendall(b"GET /api/version HTTP/1.1\r\n")
+            slow.append(s)
+        start = time.monotonic()
+        self.assertEqual(self.server.request("GET", "/api/version")[0], 200)
+        self.assertLess(time.monotonic() - start, 1.0)
+        for s in slow:
+            s.close()
+
     def test_deeply_nested_requests_are_refused_before_parsing(self):
         # 25,000 levels in 50 KB, within the size limit: the save path's rewrite recursed per level and overflowed.
         deep = "[" * 25000 + "]" * 25000
