@@ -281,6 +281,52 @@ std::vector<std::filesystem::path> plannedOutputs(const Arguments& a, const Inpu
     return outs;
 }
 
+// Whether outputs named `name` (letters, digits, `_`, `-`) are Windows devices, whatever their extension: `con.frag.hlsl`
+// cannot be created there.
+bool reservedOnWindows(std::string name) {
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    static const std::set<std::string> devices = {"con",  "prn",  "aux",  "nul",  "com1", "com2", "com3", "com4", "com5", "com6", "com7",
+                                                  "com8", "com9", "lpt1", "lpt2", "lpt3", "lpt4", "lpt5", "lpt6", "lpt7", "lpt8", "lpt9"};
+    return devices.contains(name);
+}
+
+// No file the run writes may be one it reads (writing it would destroy the build's own input: a template named like
+// an output, a depfile pointed at the material); no two materials or scenes may name their outputs alike but for case
+// (one file on macOS and Windows) or as a Windows device. Checked before anything is compiled or written.
+bool outputsFit(const Arguments& a, const Inputs& in) {
+    bool ok = true;
+    auto refuse = [&](const std::string& why) {
+        std::cerr << "hexc: error: " << why << "\n";
+        ok = false;
+    };
+    Diagnostics planned;  // the compile reports these
+    std::vector<std::filesystem::path> outs = plannedOutputs(a, in, planned), ins;
+    std::vector<std::string> names;
+    for (const Job& j : in.jobs) {
+        outs.push_back(a.outDir / stampName(j.material.name));
+        for (const auto& f : inputFiles(j.material, a.options)) ins.push_back(f);
+        ins.insert(ins.end(), j.extraInputs.begin(), j.extraInputs.end());
+        names.push_back(j.material.name);
+    }
+    if (!a.depfile.empty()) outs.push_back(a.depfile);
+    std::error_code ec;
+    for (const std::filesystem::path& out : outs)
+        for (const std::filesystem::path& input : ins)  // equivalent() follows links and sees hard links
+            if (std::filesystem::equivalent(out, input, ec))
+                refuse("the output " + out.string() + " is the input " + input.string() +
+                       ": writing it would destroy it; choose another -o or --depfile");
+    for (const SceneSummary& s : in.scenes) names.push_back(s.scene.name);
+    std::map<std::string, std::string> folded;  // lower-cased name -> the name as written
+    for (const std::string& name : names) {
+        std::string lower = name;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (auto [it, added] = folded.try_emplace(lower, name); !added && it->second != name)
+            refuse("outputs named `" + it->second + "` and `" + name + "` differ only in case: one file on macOS and Windows");
+        if (reservedOnWindows(name)) refuse("outputs named `" + name + "`: a device name on Windows, where they cannot be written");
+    }
+    return ok;
+}
+
 // The depfile: every output as a target and every file read.
 std::string depfileFor(const Arguments& a, const Inputs& in) {
     std::vector<std::filesystem::path> ins;
@@ -394,7 +440,7 @@ int buildCommand(const Arguments& a) {
         return kWriteFailed;
     }
     Inputs in = readInputs(a);
-    bool ok = inputsFit(a, in) && !in.failed;
+    bool ok = inputsFit(a, in) && !in.failed && outputsFit(a, in);
     if (ok && a.listOutputs) return listOutputs(a, in);
     if (!ok || !compileJobs(a, in.jobs, in.cache)) {
         std::cerr << "hexc: nothing written\n";

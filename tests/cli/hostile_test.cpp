@@ -420,6 +420,49 @@ TEST_F(Hostile, FuzzFoundExrFilesAreRefusedNotFatal) {
     expectNothingWritten();
 }
 
+// An output that is one of the run's inputs is refused before anything is written: the file keeps its bytes.
+TEST_F(Hostile, OutputsNeverOverwriteInputs) {
+    const std::string lit = hexc::test::readFile("templates/builtin/lit.glsl");
+    const fs::path templ = write("out/m.frag.glsl", lit);  // named as hexc names the GLSL output, in the output folder
+    const fs::path m = write("m.json", material(R"(, "template": "out/m.frag.glsl")"));
+    const std::string text = hexc::test::readFile(m);
+    fs::create_symlink(m, dir_ / "link.d");
+    const struct {
+        std::string args, output;
+    } cases[] = {
+        {m.string() + out(), "m.frag.glsl"},                                                    // the template
+        {m.string() + " -o " + (dir_ / "o2").string() + " --depfile " + m.string(), "m.json"},  // the depfile at the material
+        {m.string() + " -o " + (dir_ / "o3").string() + " --depfile " + (dir_ / "link.d").string(), "link.d"},  // through a link
+    };
+    for (const auto& c : cases) {
+        Outcome o = runBounded(c.args);
+        EXPECT_EQ(o.exit, 1) << c.args << ": " << o.err;
+        EXPECT_NE(o.err.find("the output "), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find(c.output), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find("writing it would destroy it"), std::string::npos) << o.err;
+    }
+    EXPECT_EQ(hexc::test::readFile(templ), lit);
+    EXPECT_EQ(hexc::test::readFile(m), text);
+    EXPECT_FALSE(fs::exists(dir_ / "o2"));
+    EXPECT_FALSE(fs::exists(dir_ / "o3"));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "out"), fs::directory_iterator()), 1);  // the template alone
+}
+
+// Outputs that would be one file on a case-insensitive file system, or a Windows device, are refused.
+TEST_F(Hostile, OutputNamesPortableToEveryFileSystem) {
+    const fs::path a = write("a.json", material()), b = write("b.json", material().replace(9, 3, "\"M\""));
+    Outcome o = runBounded(a.string() + " " + b.string() + out());
+    EXPECT_EQ(o.exit, 1) << o.err;
+    EXPECT_NE(o.err.find("outputs named `m` and `M` differ only in case"), std::string::npos) << o.err;
+    for (const char* device : {"con", "NUL", "com1", "Lpt9"}) {
+        const fs::path d = write("d.json", material().replace(9, 3, "\"" + std::string(device) + "\""));
+        o = runBounded(d.string() + out());
+        EXPECT_EQ(o.exit, 1) << device << ": " << o.err;
+        EXPECT_NE(o.err.find("a device name on Windows"), std::string::npos) << o.err;
+    }
+    expectNothingWritten();
+}
+
 TEST_F(Hostile, TexturePathsThatAreFoldersOrHoldNulAreNamedAsSuch) {
     fs::create_directories(dir_ / "folder.png");
     Outcome o = runBounded(write("m.json", materialOn(dir_ / "folder.png")).string() + out());
