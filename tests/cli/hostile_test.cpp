@@ -496,6 +496,25 @@ TEST_F(Hostile, OutOfMemoryIsReportedAsSuchNotAsAWriteFailure) {
     expectNothingWritten();
 }
 
+// A material whose reading needs more memory than the process may have: HX901 naming the file, not std::bad_alloc
+// ending the process (exit 134). 500,000 small nested arrays (12 MB) take the parse and the locator past 450 MiB of
+// address space, in which the binary (~300 MiB mapped) compiles rock.json.
+TEST_F(Hostile, MaterialsTooLargeForMemoryAreReportedNotFatal) {
+#ifdef HEXC_SANITIZED
+    GTEST_SKIP() << "an address-space bound means nothing under ASan";
+#endif
+    std::string padding;
+    for (int i = 0; i < 500000; ++i) padding += (i ? ",[" : "[") + std::to_string(i) + ",[1,2,3,[4,[5]]]]";
+    fs::path m = write("m.json", material(R"(, "padding": [)" + padding + "]"));
+    for (const std::string& command : {m.string() + out(), "export-mtlx " + m.string() + " -o " + (dir_ / "out" / "m.mtlx").string()}) {
+        std::string err;
+        int exit = hexc::test::runHexc(command, &err, "ulimit -v " + std::to_string(450 * 1024) + "; timeout " + std::to_string(kSeconds));
+        EXPECT_EQ(exit, 1) << command << ": " << err;
+        EXPECT_NE(err.find("m.json: error[HX901]: out of memory reading this document (11 MiB)"), std::string::npos) << err;
+    }
+    expectNothingWritten();
+}
+
 // --- The output folder keeps its promises. ---
 
 // The stamp of material `m` in the test's output folder.

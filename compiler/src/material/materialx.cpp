@@ -17,6 +17,7 @@
 #include "material/materialx_nodes.h"
 #include "material/materialx_values.h"
 #include "material/parse.h"
+#include "material/rules.h"
 
 namespace hexc {
 namespace {
@@ -566,12 +567,23 @@ std::vector<ParseResult> readDocument(std::string_view text, const std::filesyst
 
 }  // namespace
 
+namespace {
+// readDocument, or HX901 when the document needs more memory than the process has.
+std::vector<ParseResult> readWithinMemory(std::string_view text, const std::filesystem::path& file, bool one) {
+    try {
+        return readDocument(text, file, one);
+    } catch (const std::bad_alloc&) {
+        return {ParseResult{std::nullopt, {outOfMemoryReading(file, text)}, std::nullopt}};
+    }
+}
+}  // namespace
+
 ParseResult parseMaterialX(std::string_view text, const std::filesystem::path& file) {
-    return std::move(readDocument(text, file, true).front());
+    return std::move(readWithinMemory(text, file, true).front());
 }
 
 std::vector<ParseResult> parseMaterialXDocument(std::string_view text, const std::filesystem::path& file) {
-    return readDocument(text, file, false);
+    return readWithinMemory(text, file, false);
 }
 
 }  // namespace hexc

@@ -85,21 +85,30 @@ protected:
 // Parses JSON text; on a syntax error returns nullopt with the located diagnostic in *diags.
 std::optional<nlohmann::json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags);
 
+// HX901 for a document whose reading needs more memory than the process has (a huge material under a memory limit):
+// what a parser gives instead of letting std::bad_alloc end the process.
+Diagnostic outOfMemoryReading(const std::filesystem::path& file, std::string_view text);
+
 // Parses `text` and validates the document with a `Validator`'s `run`, whose result lands in `field` only when there is
 // no error, else in `partial` when given.
 template <typename Validator, typename Result, typename T>
 Result validate(std::string_view text, const std::filesystem::path& file, std::optional<T> Result::*field,
                 T (Validator::*run)(const nlohmann::json&), std::optional<T> Result::*partial = nullptr) {
     Result result;
-    std::optional<nlohmann::json> doc = parseJson(text, file, &result.diagnostics);
-    if (!doc) return result;
-    Validator v(text, file);
-    T value = (v.*run)(*doc);
-    result.diagnostics = std::move(v.diags);
-    if (!hasErrors(result.diagnostics))
-        result.*field = std::move(value);
-    else if (partial)
-        result.*partial = std::move(value);
+    try {
+        std::optional<nlohmann::json> doc = parseJson(text, file, &result.diagnostics);
+        if (!doc) return result;
+        Validator v(text, file);
+        T value = (v.*run)(*doc);
+        result.diagnostics = std::move(v.diags);
+        if (!hasErrors(result.diagnostics))
+            result.*field = std::move(value);
+        else if (partial)
+            result.*partial = std::move(value);
+    } catch (const std::bad_alloc&) {  // what was built is freed by now
+        result = Result{};
+        result.diagnostics.push_back(outOfMemoryReading(file, text));
+    }
     return result;
 }
 
