@@ -259,10 +259,8 @@ Outputs collectOutputs(const Arguments& a, const Inputs& in) {
             for (std::string& o : stampedOutputs(a.outDir, j.material.name)) out.settled.push_back(std::move(o));
             continue;
         }
-        std::vector<std::string> written;
-        for (const OutputFile& f : j.result.files) written.push_back(f.name);
         out.files.insert(out.files.end(), j.result.files.begin(), j.result.files.end());
-        out.stamps[j.material.name] = stampText(j.hash, written);
+        out.stamps[j.material.name] = stampText(j.hash, j.result.files);
     }
     for (const SceneSummary& s : in.scenes) addSceneIndex(a, s, in.jobs, out);
     return out;

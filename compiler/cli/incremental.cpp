@@ -61,7 +61,8 @@ std::string stampName(const std::string& name) { return "." + name + ".hexc-stam
 
 namespace {
 
-// A stamp: its hash line, one output name per line, and a seal: the hash of the lines above it. A stamp whose seal
+// A stamp: its hash line, one line per output (its name, a tab, the hash of what it holds), and a seal: the hash of
+// the lines above it. A stamp whose seal
 // does not match (a list cut short or edited, a file from elsewhere) is not trusted, as if there were none: the
 // material compiles again and writes every output. Only plain names (a file in the folder) are ever read from one.
 std::string stampSeal(const std::vector<std::string>& lines) {
@@ -73,9 +74,17 @@ std::string stampSeal(const std::vector<std::string>& lines) {
 
 }  // namespace
 
-std::string stampText(const std::string& hash, const std::vector<std::string>& outputs) {
+// An output's line in a stamp: its name and the hash of its bytes, so that a file another build replaced (a shared
+// folder, two builds at once) is seen as not this stamp's.
+std::string outputLine(const std::string& name, std::string_view contents) {
+    ContentHash h;
+    h.add(contents);
+    return name + "\t" + h.hex();
+}
+
+std::string stampText(const std::string& hash, const std::vector<OutputFile>& outputs) {
     std::vector<std::string> lines{hash};
-    lines.insert(lines.end(), outputs.begin(), outputs.end());
+    for (const OutputFile& f : outputs) lines.push_back(outputLine(f.name, f.contents));
     std::string text;
     for (const auto& line : lines) text += line + "\n";
     return text + stampSeal(lines) + "\n";
@@ -87,15 +96,22 @@ bool plainName(const std::string& name) {
     return !name.empty() && name != "." && name != ".." && name.find_first_of(std::string("/\0", 2)) == std::string::npos;
 }
 
-// A trusted stamp's hash line and outputs; empty for none, or one that is not trusted.
+// A trusted stamp's hash line and output lines; empty for none, or one that is not trusted.
 std::vector<std::string> stampLines(const std::filesystem::path& file) {
     std::ifstream in(file);
     std::vector<std::string> lines;
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     if (lines.size() < 2 || lines.back() != stampSeal({lines.begin(), lines.end() - 1})) return {};
     lines.pop_back();
-    if (!std::all_of(lines.begin() + 1, lines.end(), plainName)) return {};
+    if (!std::all_of(lines.begin() + 1, lines.end(), [](const std::string& l) { return plainName(l.substr(0, l.find('\t'))); })) return {};
     return lines;
+}
+
+// The outputs a trusted stamp lists, by name.
+std::vector<std::string> stampedNames(const std::filesystem::path& file) {
+    std::vector<std::string> lines = stampLines(file), names;
+    for (size_t i = 1; i < lines.size(); ++i) names.push_back(lines[i].substr(0, lines[i].find('\t')));
+    return names;
 }
 
 }  // namespace
@@ -103,13 +119,15 @@ std::vector<std::string> stampLines(const std::filesystem::path& file) {
 bool upToDate(const std::filesystem::path& dir, const std::string& name, const std::string& hash) {
     std::vector<std::string> lines = stampLines(dir / stampName(name));
     if (lines.empty() || lines[0] != hash) return false;
-    return std::all_of(lines.begin() + 1, lines.end(), [&](const std::string& o) { return std::filesystem::exists(dir / o); });
+    return std::all_of(lines.begin() + 1, lines.end(), [&](const std::string& line) {
+        const std::string output = line.substr(0, line.find('\t'));
+        const std::optional<std::string> contents = readFile(dir / output);
+        return contents && outputLine(output, *contents) == line;
+    });
 }
 
 std::vector<std::string> stampedOutputs(const std::filesystem::path& dir, const std::string& name) {
-    std::vector<std::string> lines = stampLines(dir / stampName(name));
-    if (!lines.empty()) lines.erase(lines.begin());
-    return lines;
+    return stampedNames(dir / stampName(name));
 }
 
 void removeStaleOutputs(const std::filesystem::path& dir, const std::set<std::string>& before) {
@@ -118,8 +136,7 @@ void removeStaleOutputs(const std::filesystem::path& dir, const std::set<std::st
     for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
         const std::string file = entry.path().filename().string();
         if (!file.starts_with(".") || !file.ends_with(".hexc-stamp")) continue;
-        std::vector<std::string> lines = stampLines(entry.path());
-        if (!lines.empty()) live.insert(lines.begin() + 1, lines.end());
+        for (std::string& o : stampedNames(entry.path())) live.insert(std::move(o));
     }
     for (const std::string& name : before)
         if (!live.contains(name) && std::filesystem::is_regular_file(dir / name, ec))  // plain names: from stampLines

@@ -19,14 +19,16 @@ std::vector<std::filesystem::path> inputFiles(const Material& material, const Co
 // XXH3 (128 bit) of everything a compile depends on, as 32 hex digits; `extra` adds e.g. a scene file.
 std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::filesystem::path>& extra);
 
-// The stamp `dir/.<name>.hexc-stamp` records the hash and the outputs of the last successful compile.
+// The stamp `dir/.<name>.hexc-stamp` records the hash and the outputs of the last successful compile; the outputs are
+// up to date when the hash matches and each still holds what the stamp says it held.
 bool upToDate(const std::filesystem::path& dir, const std::string& name, const std::string& hash);
 // The outputs the stamp of `name` in `dir` lists; empty when there is none.
 std::vector<std::string> stampedOutputs(const std::filesystem::path& dir, const std::string& name);
 // Removes the files in `before` that no stamp in `dir` lists any more: what an earlier build wrote and this one
 // does not (another --targets, a scene shader whose code changed). Only plain names from hexc's stamps are touched.
 void removeStaleOutputs(const std::filesystem::path& dir, const std::set<std::string>& before);
-std::string stampText(const std::string& hash, const std::vector<std::string>& outputs);
+// A stamp's text: `hash`, and each output's name with the hash of what it holds (checked by upToDate).
+std::string stampText(const std::string& hash, const std::vector<OutputFile>& outputs);
 std::string stampName(const std::string& name);
 
 }  // namespace hexc::cli

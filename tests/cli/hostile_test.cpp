@@ -1,7 +1,9 @@
 // Hostile inputs: each case runs the hexc command line under a time and address-space bound and asserts the
 // exit code, the located message where one applies, and that nothing was written.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <tinyexr.h>
 #include <unistd.h>
@@ -544,24 +546,54 @@ TEST_F(Hostile, AnEditedStampIsNotTrustedAndTouchesNothingOutside) {
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(keep), {}), "keep");
 }
 
-// A pid no process has: the largest below pid_max that kill(pid, 0) says does not exist.
-pid_t deadPid() {
-    for (pid_t pid = 4194303; pid > 1000; --pid)
-        if (::kill(pid, 0) != 0 && errno == ESRCH) return pid;
-    return 0;
-}
-
 TEST_F(Hostile, TemporariesOfDeadWritersAreRemovedAndLiveOnesKept) {
-    const std::string dead = ".m.manifest.json." + std::to_string(deadPid()) + ".0.tmp";
-    const std::string live = ".m.manifest.json." + std::to_string(::getppid()) + ".0.tmp";  // a running process
-    write("out/" + dead, "half");
-    write("out/" + live, "half");
-    write("out/.notours.tmp", "x");
+    // Named as hexc names them: ".<file>.<16 random hex digits>.tmp". A dead writer's is old and unlocked; a live
+    // writer (here this test, as it could be a build in another container) holds its lock; a fresh one may be a writer
+    // between creating and locking it; what hexc did not name is not its own.
+    const std::string dead = ".m.manifest.json.0123456789abcdef.tmp", live = ".m.manifest.json.fedcba9876543210.tmp",
+                      fresh = ".m.frag.spv.00000000000000aa.tmp";
+    for (const std::string& name : {dead, live, fresh, std::string(".notours.tmp")}) write("out/" + name, "half");
+    const auto old = fs::file_time_type::clock::now() - std::chrono::minutes(1);
+    fs::last_write_time(dir_ / "out" / dead, old);
+    fs::last_write_time(dir_ / "out" / live, old);
+    const int held = ::open((dir_ / "out" / live).c_str(), O_RDONLY);
+    ASSERT_EQ(::flock(held, LOCK_EX), 0);
     Outcome o = runBounded(write("m.json", material()).string() + out());
+    ::close(held);
     EXPECT_EQ(o.exit, 0) << o.err;
     EXPECT_FALSE(fs::exists(dir_ / "out" / dead));
     EXPECT_TRUE(fs::exists(dir_ / "out" / live));
+    EXPECT_TRUE(fs::exists(dir_ / "out" / fresh));
     EXPECT_TRUE(fs::exists(dir_ / "out" / ".notours.tmp"));
+}
+
+// A stamp names what each output held: an output another build wrote over (a shared folder) is not up to date.
+TEST_F(Hostile, AStampChecksWhatItsOutputsHold) {
+    fs::path m = write("m.json", material());
+    ASSERT_EQ(runBounded(m.string() + out()).exit, 0);
+    const std::string glsl = hexc::test::readFile(dir_ / "out" / "m.frag.glsl");
+    std::ofstream(dir_ / "out" / "m.frag.glsl", std::ios::trunc) << "// another build's\n";
+    Outcome o = runBounded(m.string() + out());
+    EXPECT_EQ(o.exit, 0) << o.err;
+    EXPECT_NE(o.err.find("1 compiled, 0 up to date"), std::string::npos) << o.err;
+    EXPECT_EQ(hexc::test::readFile(dir_ / "out" / "m.frag.glsl"), glsl);
+    o = runBounded(m.string() + out());
+    EXPECT_NE(o.err.find("0 compiled, 1 up to date"), std::string::npos) << o.err;
+}
+
+// Builds in separate PID namespaces (containers sharing a folder) see the same pids: each writes into one folder at
+// once, and none fails on another's temporary or removes it as dead.
+TEST_F(Hostile, BuildsInSeparatePidNamespacesShareAFolder) {
+    if (std::system("unshare --pid --fork true 2>/dev/null") != 0) GTEST_SKIP() << "unshare --pid needs root";
+    fs::path m = write("m.json", material());
+    std::string script;
+    for (int i = 0; i < 16; ++i)
+        script += "unshare --pid --fork " + std::string(HEXC_EXE) + " -q --force " + m.string() + out() + " || echo failed >> " +
+                  (dir_ / "failures").string() + " &\n";
+    ASSERT_EQ(std::system((script + "wait\n").c_str()), 0);
+    EXPECT_FALSE(fs::exists(dir_ / "failures")) << hexc::test::readFile(dir_ / "failures");
+    for (const auto& f : fs::directory_iterator(dir_ / "out")) EXPECT_FALSE(f.path().extension() == ".tmp") << f.path();
+    EXPECT_NE(runBounded(m.string() + out()).err.find("0 compiled, 1 up to date"), std::string::npos);  // a consistent set
 }
 
 TEST_F(Hostile, AnInterruptedBuildLeavesNoTemporary) {

@@ -20,7 +20,8 @@ std::optional<std::string> readFile(const std::filesystem::path& file, std::stri
 // file" (a FIFO, a device).
 std::string whyNotRegular(const std::filesystem::path& file);
 
-// Outputs are written under a temporary name unique to the writer in the same folder, then renamed; an existing
+// Outputs are written under a random temporary name in the same folder (created exclusively, and locked by the writer
+// until it is renamed), then renamed; an existing
 // target that is not a regular file (symlink, device, FIFO, folder) is refused with std::runtime_error.
 // Calls write(temporary path) and renames the result to `file`; a failed write or rename removes the
 // temporary and throws std::runtime_error naming `file`.
@@ -31,7 +32,8 @@ void writeFileAtomically(const std::filesystem::path& file, const std::function<
 void removeOwnTemporaries();
 
 // Removes from `dir` the temporaries of writers that are no longer running (killed before they could rename or
-// remove them): their pid is in the name, and no process has it.
+// remove them): those older than a few seconds whose lock no writer holds, wherever it runs (a lock is seen across
+// PID namespaces, and over NFS).
 void removeDeadTemporaries(const std::filesystem::path& dir);
 
 }  // namespace hexc

@@ -1,11 +1,14 @@
 #include "hexc/files.h"
 
 #include <fcntl.h>
-#include <signal.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <random>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -49,15 +52,30 @@ void untrack(size_t entry) {
     if (entry < kInFlight) inFlight[entry].state = 0;
 }
 
-// A temporary writeFileAtomically names: ".<name>.<pid>.<n>.tmp"; the writer's pid, or 0 when `file` is not one.
-pid_t temporaryWriter(const std::string& file) {
-    if (!file.starts_with(".") || !file.ends_with(".tmp")) return 0;
-    const size_t counter = file.rfind('.', file.size() - 5), pid = counter == std::string::npos ? counter : file.rfind('.', counter - 1);
-    if (pid == std::string::npos || pid == 0) return 0;
-    const std::string digits = file.substr(pid + 1, counter - pid - 1);
-    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
-    return pid_t(std::stol(digits));
+// A temporary's tag, 16 hex digits: random, so that writers on other machines or in other PID namespaces sharing a
+// folder never pick the same name (a pid is unique only in its namespace). splitmix64 of a per-process random seed
+// and a counter.
+std::string temporaryTag() {
+    static const uint64_t seed = (uint64_t(std::random_device{}()) << 32) ^ std::random_device{}();
+    static std::atomic<uint64_t> counter{0};
+    uint64_t z = seed + 0x9e3779b97f4a7c15ull * ++counter;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    char tag[17];
+    std::snprintf(tag, sizeof tag, "%016llx", static_cast<unsigned long long>(z ^ (z >> 31)));
+    return tag;
 }
+
+// Whether `file` is named as writeFileAtomically names temporaries: ".<name>.<16 hex digits>.tmp".
+bool isTemporary(const std::string& file) {
+    if (!file.starts_with(".") || !file.ends_with(".tmp") || file.size() < 23) return false;
+    const std::string tag = file.substr(file.size() - 20, 16);
+    return file[file.size() - 21] == '.' && tag.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
+// A writer holds an exclusive lock on its temporary from creating it to renaming it; a temporary older than this that
+// no one holds is a dead writer's (the age covers the moment between creating the file and locking it).
+constexpr auto kTemporaryGrace = std::chrono::seconds(10);
 
 }  // namespace
 
@@ -68,12 +86,13 @@ void removeOwnTemporaries() {
 
 void removeDeadTemporaries(const std::filesystem::path& dir) {
     std::error_code ec;
+    const auto before = std::filesystem::file_time_type::clock::now() - kTemporaryGrace;
     for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-        const pid_t writer = temporaryWriter(entry.path().filename().string());
-        // kill(pid, 0) fails with ESRCH only when no such process exists; a live one (even another program that
-        // reused the pid) keeps its file.
-        if (writer > 0 && writer != ::getpid() && ::kill(writer, 0) != 0 && errno == ESRCH && entry.is_regular_file(ec))
-            std::filesystem::remove(entry.path(), ec);
+        if (!isTemporary(entry.path().filename().string()) || !entry.is_regular_file(ec) || entry.last_write_time(ec) > before) continue;
+        // The lock is the writer's, wherever it runs (another container, another machine over NFS): one that cannot be
+        // taken belongs to a live writer, which keeps its file.
+        Fd f{::open(entry.path().c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC)};
+        if (f.fd >= 0 && ::flock(f.fd, LOCK_EX | LOCK_NB) == 0) std::filesystem::remove(entry.path(), ec);
     }
 }
 
@@ -118,12 +137,19 @@ void writeFileAtomically(const std::filesystem::path& file, const std::function<
     std::filesystem::file_status status = std::filesystem::symlink_status(file, ec);
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
         throw std::runtime_error("cannot write " + file.string() + ": it exists and is not a regular file");
-    // A hidden name in the target folder, so the rename stays on one file system and is atomic; unique per
-    // process and call, so concurrent writers into one folder never share or rename each other's temporary.
-    static std::atomic<unsigned> counter{0};
-    std::filesystem::path temp =
-        file.parent_path() / ("." + file.filename().string() + "." + std::to_string(::getpid()) + "." + std::to_string(counter++) + ".tmp");
+    // A hidden name in the target folder, so the rename stays on one file system and is atomic; random, and created
+    // exclusively, so concurrent writers into one folder never share or rename each other's temporary. Locked until
+    // renamed, so that other writers' removeDeadTemporaries leave it alone.
+    std::filesystem::path temp;
+    Fd held{-1};
+    for (int attempt = 0; held.fd < 0 && attempt < 8; ++attempt) {
+        temp = file.parent_path() / ("." + file.filename().string() + "." + temporaryTag() + ".tmp");
+        held.fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (held.fd < 0 && errno != EEXIST) break;
+    }
+    if (held.fd < 0) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
     const size_t entry = track(temp);
+    ::flock(held.fd, LOCK_EX);
     const bool written = write(temp);
     if (written) std::filesystem::rename(temp, file, ec);
     untrack(entry);
