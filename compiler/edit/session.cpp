@@ -237,7 +237,10 @@ Reply Session::save(const std::string& body) {
     Parsed p = parse(request->at("document"));
     if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}, {"message", "not saved: fix the errors first"}});
     try {
-        cli::writeAtomically(file_.has_parent_path() ? file_.parent_path() : ".", file_.filename().string(), p.text);
+        // A material reached through a link is saved where the link leads, and the link stays a link.
+        std::error_code ec;
+        const std::filesystem::path target = std::filesystem::is_symlink(file_, ec) ? std::filesystem::canonical(file_) : file_;
+        cli::writeAtomically(target.has_parent_path() ? target.parent_path() : ".", target.filename().string(), p.text);
     } catch (const std::exception& e) {
         return json({{"ok", false}, {"message", e.what()}}, 500);
     }

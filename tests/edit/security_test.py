@@ -204,6 +204,30 @@ class Security(unittest.TestCase):
         with open(self.material, "rb") as f:
             self.assertEqual(f.read(), escaped.replace(b'"f\\u0061lloff": 0.75', b'"f\\u0061lloff": 0.7'))
 
+    def test_save_keeps_the_files_mode_and_follows_a_link(self):
+        # The material is private (0600) and opened through a link: a save replaces the file the link leads to, keeps its
+        # mode and the link, and leaves no temporary.
+        real = os.path.join(self.folder, "real")
+        os.makedirs(real)
+        shutil.copytree(os.path.join(self.folder, "textures"), os.path.join(real, "textures"))
+        target = os.path.join(real, "rock.json")
+        shutil.copy(self.material, target)
+        os.chmod(target, 0o600)
+        link = os.path.join(self.folder, "link.json")
+        os.symlink(target, link)
+        self.server.stop()
+        self.server = Server(HEXC, link)
+        doc = self.document()
+        doc["hextiling"]["falloff"] = 0.7
+        status, r = self.server.json("POST", "/api/save", {"document": doc, "version": self.server.json("GET", "/api/version")[1]["version"]})
+        self.assertEqual(status, 200, r)
+        self.assertTrue(os.path.islink(link))
+        self.assertEqual(os.stat(target).st_mode & 0o777, 0o600)
+        with open(target, "rb") as f:
+            self.assertEqual(f.read(), self.original.replace(b'"falloff": 0.75', b'"falloff": 0.7'))
+        self.assertEqual(sorted(os.listdir(real)), ["rock.json", "textures"])
+        self.assertNotIn(".tmp", " ".join(os.listdir(self.folder)))
+
     def test_save_writes_the_material_file_only(self):
         before = sorted(os.listdir(self.folder))
         doc = self.document()

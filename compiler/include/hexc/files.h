@@ -21,7 +21,7 @@ std::optional<std::string> readFile(const std::filesystem::path& file, std::stri
 std::string whyNotRegular(const std::filesystem::path& file);
 
 // Outputs are written under a random temporary name in the same folder (created exclusively, and locked by the writer
-// until it is renamed), then renamed; an existing
+// until it is renamed), then renamed, keeping the permissions of a file it replaces; an existing
 // target that is not a regular file (symlink, device, FIFO, folder) is refused with std::runtime_error.
 // Calls write(temporary path) and renames the result to `file`; a failed write or rename removes the
 // temporary and throws std::runtime_error naming `file`.

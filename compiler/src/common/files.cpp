@@ -150,6 +150,8 @@ void writeFileAtomically(const std::filesystem::path& file, const std::function<
     if (held.fd < 0) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
     const size_t entry = track(temp);
     ::flock(held.fd, LOCK_EX);
+    // A file replaced keeps its permissions (a material kept private stays private); a new one gets the umask's.
+    if (struct stat st; ::stat(file.c_str(), &st) == 0) ::fchmod(held.fd, st.st_mode & 07777);
     const bool written = write(temp);
     if (written) std::filesystem::rename(temp, file, ec);
     untrack(entry);

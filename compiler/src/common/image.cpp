@@ -211,6 +211,8 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
 }
 
 Texture loadTexture(const std::filesystem::path& file, bool srgb) {
+    // Only regular files, as textureInfo: a file swapped for a FIFO since would make its readers wait forever.
+    if (std::error_code ec; !std::filesystem::is_regular_file(file, ec)) throw TextureError(file.string() + ": " + whyNotRegular(file));
     if (containers::Kind kind = containers::kindOf(file); kind != containers::Kind::None) return containers::load(kind, file, srgb);
     if (lowerExtension(file) == ".pfm") return loadPfm(file);
 
