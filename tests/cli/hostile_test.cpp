@@ -675,6 +675,20 @@ TEST_F(Hostile, ATemplateWithThousandsOfFunctionsIsRefusedBeforeTheInliner) {
     expectNothingWritten();
 }
 
+// 4,000 functions nothing calls (a library of helpers a template includes whole) cost the optimiser next to nothing:
+// they are no reason to refuse it.
+TEST_F(Hostile, UnusedFunctionsInATemplateAreNotCounted) {
+    std::string functions;
+    for (int i = 0; i < 4000; ++i) functions += "float g" + std::to_string(i) + "(float x) { return x * " + std::to_string(i) + ".0; }\n";
+    std::ifstream in("templates/builtin/unlit.glsl");
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    text.insert(text.find("void main() {"), functions);
+    fs::path t = write("unused.glsl", text);
+    Outcome o = runBounded(write("m.json", material()).string() + " --template " + t.string() + out());
+    EXPECT_EQ(o.exit, 0) << o.err.substr(0, 400);
+    EXPECT_TRUE(fs::exists(dir_ / "out" / "m.frag.spv"));
+}
+
 // --- Scene and layout files. ---
 
 TEST_F(Hostile, SceneAndLayoutFilesReportDuplicateKeysAndUnknownSlots) {

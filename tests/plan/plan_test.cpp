@@ -210,3 +210,13 @@ TEST(Macros, FindsTheLineWhereTheBoundIsPassed) {
     EXPECT_EQ(e.tokens, double(1 << 21) + double(1 << 22));
     EXPECT_EQ(e.line, 33);
 }
+
+// Calls as the optimiser meets them: not the names declarations define, nor built-in types' constructors.
+TEST(Macros, CountsCallsNotDeclarationsOrConstructors) {
+    const char* source =
+        "float f(float x) { return g(x) + vec3(1.0).x + h(x) * float(2); }\n"
+        "vec4 k(ivec2 c, dmat2x3 m) { if (true) { return vec4(f(1.0)); } else t(0); }\n"
+        "const vec2 table[2] = vec2[2](vec2(0.0), vec2(1.0));\n"
+        "void main() {\n  k(ivec2(0), dmat2x3(0.0));\n}\n";
+    EXPECT_EQ(boundMacroExpansion(source).calls, 5);  // g, h, f, t, k
+}

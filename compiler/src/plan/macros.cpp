@@ -174,6 +174,29 @@ std::vector<std::pair<std::string, int>> logicalLines(const std::string& source)
 
 // Keywords a `(` follows that call nothing.
 const std::set<std::string> kNotCalls = {"if", "for", "while", "switch", "return", "layout"};
+// Keywords an expression (and so a call) may follow; any other word before `name(` makes it a declaration
+// (`float f(`), which calls nothing.
+const std::set<std::string> kBeforeExpressions = {"return", "else", "case", "do"};
+
+// A built-in type, whose `type(` constructs a value and calls nothing: float, int, uint, bool, double, [iubd]vecN, [d]matN[xM].
+bool builtinType(const std::string& name) {
+    static const std::set<std::string> scalars = {"float", "int", "uint", "bool", "double"};
+    if (scalars.contains(name)) return true;
+    std::string rest = name;
+    if (rest.size() > 4 && std::string("iubd").find(rest[0]) != std::string::npos && rest.substr(1, 3) == "vec") rest = rest.substr(1);
+    if (rest.size() == 4 && rest.starts_with("vec")) return rest[3] >= '2' && rest[3] <= '4';
+    if (rest.starts_with("dmat")) rest = rest.substr(1);
+    const bool square = rest.size() == 4, sized = rest.size() == 6 && rest[4] == 'x' && rest[5] >= '2' && rest[5] <= '4';
+    return rest.starts_with("mat") && (square || sized) && rest[3] >= '2' && rest[3] <= '4';
+}
+
+// Whether tokens[i] `(` is a call: a name, not a keyword, type constructor or the name a declaration defines.
+bool isCall(const Tokens& tokens, size_t i) {
+    const std::string& name = tokens[i];
+    if (tokens[i + 1] != "(" || !identifierChar(name[0]) || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
+    if (kNotCalls.contains(name) || builtinType(name)) return false;
+    return i == 0 || !identifierChar(tokens[i - 1][0]) || kBeforeExpressions.contains(tokens[i - 1]);
+}
 
 }  // namespace
 
@@ -194,9 +217,7 @@ MacroExpansion boundMacroExpansion(const std::string& source) {
         Tokens tokens = tokenize(line);
         out.tokens += measure.size(tokens, 0, tokens.size(), {}, 0).c;
         if (out.line == 0 && !(out.tokens <= kMaxExpandedTokens)) out.line = number;
-        for (size_t i = 0; i + 1 < tokens.size(); ++i)
-            out.calls += tokens[i + 1] == "(" && identifierChar(tokens[i][0]) && !std::isdigit(static_cast<unsigned char>(tokens[i][0])) &&
-                         !kNotCalls.contains(tokens[i]);
+        for (size_t i = 0; i + 1 < tokens.size(); ++i) out.calls += isCall(tokens, i);
         if (out.callsLine == 0 && out.calls > kMaxTemplateCalls) out.callsLine = number;
     }
     return out;

@@ -11,14 +11,15 @@ namespace hexc {
 constexpr double kMaxExpandedTokens = 4'000'000;
 
 // Templates calling more functions are refused too: glslang's call graph is quadratic in calls (10,000 took 17 s) and
-// spirv-opt's inliner in functions times calls. Counted as written, `name(` outside directives, so constructors and
-// built-ins count too (the built-in `lit` has 30).
+// spirv-opt's inliner in functions times calls. Counted as written, `name(` outside directives that neither a
+// declaration defines (`float f(`) nor a built-in type constructs (`vec3(`): built-in functions count too (the
+// built-in `lit` makes 18).
 constexpr int kMaxTemplateCalls = 4000;
 
 struct MacroExpansion {
     double tokens = 0;  // the tokens after expansion (infinite past what a double holds)
     int line = 0;       // the line at which the running total first exceeded kMaxExpandedTokens; 0 if it never did
-    int calls = 0;      // `name(` outside directives, macros unexpanded
+    int calls = 0;      // calls outside directives, macros unexpanded (see kMaxTemplateCalls)
     int callsLine = 0;  // the line at which calls first exceeded kMaxTemplateCalls; 0 if they never did
 };
 

@@ -28,9 +28,10 @@ struct Module {
     std::vector<uint32_t> words() const;
 };
 
-// An error naming `templateName` (HX209) when glslang's module holds more functions or calls than spirv-opt's inliner
-// is given: its work grows with functions times calls (10,000 one-line functions take over a minute), and hexc's own
-// code for the largest material stays far below the bounds. nullopt when within them.
+// An error naming `templateName` (HX209) when the functions glslang's module reaches from its entry point make more
+// calls than spirv-opt's inliner is given: its work grows with functions times calls (10,000 one-line functions, each
+// called once, take over a minute), and hexc's own code for the largest material stays far below the bound; functions
+// nothing calls do not count. nullopt when within it.
 std::optional<Diagnostic> beyondOptimiserBound(const std::vector<uint32_t>& words, const std::string& templateName);
 
 // std::runtime_error naming `what` (the rewrite) when the module does not parse: a hexc bug.
