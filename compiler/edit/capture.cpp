@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <iostream>
 #include <thread>
 
@@ -106,7 +107,13 @@ int Capture::wait(int browser) {
 }
 
 int Capture::run(Server& server) {
-    const std::filesystem::path profile = std::filesystem::temp_directory_path() / ("hexc-edit-" + std::to_string(getpid()));
+    // The browser's profile in a folder mkdtemp makes: a name no one can guess or take first, readable by us alone.
+    std::string folder = (std::filesystem::temp_directory_path() / "hexc-edit-XXXXXX").string();
+    if (!::mkdtemp(folder.data())) {
+        std::cerr << "hexc: cannot make a folder for the browser's profile in " << std::filesystem::temp_directory_path().string() << "\n";
+        return cli::kWriteFailed;
+    }
+    const std::filesystem::path profile = folder;
     std::vector<std::string> argv = {options_.browser};
     for (const std::string& f : headlessChromiumFlags()) argv.push_back(f);
     argv.push_back("--user-data-dir=" + profile.string());  // a fresh profile, removed after
