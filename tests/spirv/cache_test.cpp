@@ -214,6 +214,24 @@ TEST(ShaderCache, AKeyIsComputedOnceAndFailuresAreNotKept) {
     EXPECT_EQ(failed, 2);
 }
 
+// What a cache keeps in memory stays within its bound (a long `hexc edit` session asks for many large entries): the
+// oldest are dropped and computed again when asked for, the newest is kept even when larger than the bound alone.
+TEST(ShaderCache, MemoryStaysWithinTheBound) {
+    ShaderCache cache({}, 2500);
+    int computed = 0;
+    auto get = [&](const std::string& key, size_t size) {
+        return cache.getOrCompute(key, [&] { return ++computed, std::optional<std::string>(std::string(size, 'x')); });
+    };
+    for (int i = 0; i < 10; ++i) get("k" + std::to_string(i), 1000);  // 10,000 bytes asked for
+    EXPECT_EQ(computed, 10);
+    get("k9", 1000), get("k8", 1000);  // the two newest are kept
+    EXPECT_EQ(computed, 10);
+    get("k0", 1000);  // long dropped: computed again
+    EXPECT_EQ(computed, 11);
+    get("big", 10000), get("big", 10000);
+    EXPECT_EQ(computed, 12);
+}
+
 // The folder keeps its most recently used entries within the bound.
 TEST(ShaderCache, TrimRemovesTheLeastRecentlyUsed) {
     const fs::path dir = freshFolder("hexc_cache_trim");

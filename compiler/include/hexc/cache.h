@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <deque>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -26,7 +27,8 @@ class ShaderCache {
 public:
     // `dir` empty: in memory only. Several processes may share one folder: entries are written whole under a
     // temporary name and renamed, and an entry that is cut short or altered is found out by its checksum and
-    // compiled again.
+    // compiled again. The entries kept in memory stay within maxBytes too (a long `hexc edit` session makes many),
+    // the oldest dropped first.
     explicit ShaderCache(std::filesystem::path dir = {}, uint64_t maxBytes = kDefaultCacheBytes);
 
     // The value under `key`: from memory, else from the folder, else compute()'s, stored. Threads asking for a key
@@ -55,6 +57,8 @@ private:
     mutable std::mutex mutex_;
     std::condition_variable done_;
     std::map<std::string, std::optional<std::string>> memory_;  // nullopt: being computed
+    std::deque<std::string> memoryOrder_;                       // the keys with values, oldest first
+    uint64_t memoryBytes_ = 0;                                  // their values' sizes
     Stats stats_;
 };
 

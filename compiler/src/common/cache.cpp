@@ -106,10 +106,19 @@ std::optional<std::string> ShaderCache::getOrCompute(const std::string& key, con
     }
     std::lock_guard lock(mutex_);
     ++(found ? stats_.hits : stats_.misses);
-    if (value)
+    if (value) {
         memory_[key] = value;
-    else
+        memoryOrder_.push_back(key);
+        memoryBytes_ += value->size();
+        while (memoryBytes_ > maxBytes_ && memoryOrder_.size() > 1) {  // the newest stays, whatever its size
+            auto oldest = memory_.find(memoryOrder_.front());
+            memoryBytes_ -= oldest->second->size();
+            memory_.erase(oldest);
+            memoryOrder_.pop_front();
+        }
+    } else {
         memory_.erase(key);  // a failed compile: the next caller tries again
+    }
     done_.notify_all();
     return value;
 }
