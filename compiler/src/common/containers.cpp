@@ -241,8 +241,40 @@ std::string exrProblem(const Imf::InputFile& in, int64_t width, int64_t height) 
     return {};
 }
 
+// Why the header's attributes do not fit in the file, or empty. The OpenEXR library allocates an attribute's stated
+// size before reading it, so a 400-byte file could make it ask for 2 GB: each size is checked against the bytes that
+// follow it first. Attributes are `name\0type\0` (names and types at most 255 bytes), a 32-bit size, then the value;
+// an empty name ends the header.
+std::string exrHeaderProblem(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(file, ec);
+    in.seekg(8);  // the magic number and the version field
+    auto text = [&](std::string* out) {
+        for (char c; out->size() <= 255 && in.get(c);) {
+            if (c == '\0') return true;
+            *out += c;
+        }
+        return false;
+    };
+    for (std::string name; text(&name) && !name.empty(); name.clear()) {
+        std::string type;
+        uint32_t bytes = 0;
+        if (!text(&type) || !in.read(reinterpret_cast<char*>(&bytes), 4)) break;
+        const uint64_t at = uint64_t(in.tellg());
+        if (bytes > size - at)
+            return "the header's attribute `" + name + "` claims " + std::to_string(bytes) + " bytes past the file's end";
+        in.seekg(std::streamoff(bytes), std::ios::cur);
+    }
+    return in ? std::string() : "the header is truncated or malformed";
+}
+
 std::optional<TextureInfo> exrInfo(const std::filesystem::path& file, std::string* error) {
     limitExrSizes();
+    if (const std::string problem = exrHeaderProblem(file); !problem.empty()) {
+        *error = "OpenEXR: " + problem;
+        return std::nullopt;
+    }
     try {
         Imf::InputFile in(file.c_str());
         const Imath::Box2i w = in.header().dataWindow();
