@@ -92,6 +92,7 @@ struct Slot {
     std::string channelNames;   // the texture file's channels, from its header (TextureInfo::channelNames)
     bool eightBit = false;      // the file decodes to 8-bit texels (TextureInfo::eightBit)
     int line = 0, col = 0;      // where the slot's kind (else the slot) is in the material file; 0 when built in code
+    bool kindStated = true;     // false in a partial material whose kind is not one hexc knows: not checked against a template
 };
 
 // A shader template as a material, a scene pass or --template names it, told apart once, where it is read: one of

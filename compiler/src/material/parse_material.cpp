@@ -227,12 +227,19 @@ private:
         }
         bool kindKnown = false;
         if (requireKey(v, pointer, "kind", "one of " + joinQuoted(kKinds))) {
-            if (int i = choice(v["kind"], pointer + "/kind", kKinds); i >= 0) {
-                s.kind = SlotKind(i);
-                kindKnown = true;
-                TextPos at = locator_.value(pointer + "/kind");  // where a template-fit error points
-                s.line = at.line, s.col = at.col;
-            }
+            // What other tools call them: a texture's role or its data.
+            static const std::map<std::string, std::string> kKindsMeant = {
+                {"float", "scalar"},      {"grey", "scalar"},      {"gray", "scalar"},     {"greyscale", "scalar"}, {"grayscale", "scalar"},
+                {"mono", "scalar"},       {"mask", "scalar"},      {"height", "scalar"},   {"roughness", "scalar"}, {"metallic", "scalar"},
+                {"ao", "scalar"},         {"occlusion", "scalar"}, {"colour", "color"},    {"rgb", "color"},        {"rgba", "color"},
+                {"albedo", "color"},      {"diffuse", "color"},    {"basecolor", "color"}, {"base_color", "color"}, {"normalmap", "normal"},
+                {"normal_map", "normal"}, {"tangent", "normal"},   {"bump", "normal"}};
+            const int i = choice(v["kind"], pointer + "/kind", kKinds, kKindsMeant);
+            kindKnown = i >= 0;
+            s.kind = kindKnown ? SlotKind(i) : s.kind;
+            s.kindStated = kindKnown;
+            TextPos at = locator_.value(pointer + "/kind");  // where a template-fit error points
+            s.line = at.line, s.col = at.col;
         }
         s.colorSpace = s.kind == SlotKind::Color ? ColorSpace::Srgb : ColorSpace::Linear;
         if (v.contains("channel")) {
@@ -434,20 +441,22 @@ private:
 
     void texture(Slot& s, const std::string& pointer) {
         s.texturePath = dir_ / s.texture;
+        // Shown as the path it names (`err/../tex/x.png` as `tex/x.png`); read as written, where a link in it counts.
+        const std::string shown = s.texturePath.lexically_normal().string();
         std::error_code ec;
         if (s.texture.find('\0') != std::string::npos) {  // the file system would see the path up to it, another file
             report(Code::TextureNotFound, pointer, "a texture path holds a NUL character (\\u0000)");
             return;
         }
         if (s.texture.empty() || !std::filesystem::exists(s.texturePath, ec)) {
-            report(Code::TextureNotFound, pointer, "texture file not found: " + s.texturePath.string());
+            report(Code::TextureNotFound, pointer, "texture file not found: " + shown);
             return;
         }
         std::string why;
         std::optional<TextureInfo> info = textureInfo(s.texturePath, &why);
         if (!info) {
             report(Code::TextureUnreadable, pointer,
-                   "cannot read texture " + s.texturePath.string() + ": " + why +
+                   "cannot read texture " + shown + ": " + why +
                        " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM, PFM, OpenEXR, KTX2 or DDS)");
             return;
         }
@@ -457,19 +466,19 @@ private:
         s.eightBit = info->eightBit;
         if (s.kind == SlotKind::Normal && info->channels < 3)
             report(Code::TextureChannels, pointer,
-                   "a normal map needs 3 channels (xyz), " + s.texturePath.string() + " has " + std::to_string(info->channels));
+                   "a normal map needs 3 channels (xyz), " + shown + " has " + std::to_string(info->channels));
         // A channel the file lacks reads whatever the engine's upload puts there (0, 1 or a copy of grey): a scalar
         // slot reading one is a mistake. A grey + alpha file has r and a.
         if (info->srgb && *info->srgb != (s.colorSpace == ColorSpace::Srgb))
             report(Code::TextureColorSpace, pointer,
-                   s.texturePath.string() + " is " + info->format + ", but the slot's colorspace is " +
+                   shown + " is " + info->format + ", but the slot's colorspace is " +
                        (*info->srgb ? "\"linear\"; a sampler would decode it from sRGB" : "\"srgb\"; its format stores linear values"));
         std::vector<std::string> has;
         for (char c : info->channelNames) has.emplace_back(1, c);
         if (s.kind == SlotKind::Scalar && std::find(has.begin(), has.end(), kChannels[size_t(s.channel)]) == has.end())
             report(Code::TextureChannels, pointer.substr(0, pointer.rfind('/')) + "/channel",
-                   "channel `" + kChannels[size_t(s.channel)] + "` of " + s.texturePath.string() + ", which has " +
-                       std::to_string(info->channels) + " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));
+                   "channel `" + kChannels[size_t(s.channel)] + "` of " + shown + ", which has " + std::to_string(info->channels) +
+                       " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));
     }
 
     bool inheritedRangeWarned_ = false;  // HX116 for the material-level tiling is given once

@@ -102,7 +102,8 @@ bool JsonRules::boolean(const json& v, const std::string& pointer, bool fallback
     return fallback;
 }
 
-int JsonRules::choice(const json& v, const std::string& pointer, const std::vector<std::string>& options) {
+int JsonRules::choice(const json& v, const std::string& pointer, const std::vector<std::string>& options,
+                      const std::map<std::string, std::string>& meant) {
     if (!v.is_string()) {
         report(Code::WrongType, pointer, "expected one of " + joinQuoted(options) + ", got " + typeName(v));
         return -1;
@@ -110,8 +111,12 @@ int JsonRules::choice(const json& v, const std::string& pointer, const std::vect
     std::string s = v.get<std::string>();
     for (size_t i = 0; i < options.size(); ++i)
         if (options[i] == s) return int(i);
-    std::string hint;
-    if (auto best = closestMatch(s, options)) hint = "did you mean " + ticked(*best) + "?";
+    std::string hint, lower = s;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (auto it = meant.find(lower); it != meant.end())
+        hint = "did you mean " + ticked(it->second) + "?";
+    else if (auto best = closestMatch(s, options))
+        hint = "did you mean " + ticked(*best) + "?";
     report(Code::UnknownValue, pointer, "expected one of " + joinQuoted(options) + ", got \"" + s + "\"", hint);
     return -1;
 }

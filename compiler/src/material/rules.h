@@ -3,6 +3,7 @@
 // diagnostic with its JSON path, and validation goes on after an error, so a user sees all problems in one run.
 // Each document's validator (parse_material.cpp, parse_scene.cpp, parse_layout.cpp) builds on JsonRules.
 #include <array>
+#include <map>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -67,8 +68,10 @@ protected:
     // Each value read as its type, or reported with `fallback` (or empty) returned.
     std::string string(const json& v, const std::string& pointer);
     bool boolean(const json& v, const std::string& pointer, bool fallback);
-    // A choice among fixed strings; returns the index, or -1 after reporting.
-    int choice(const json& v, const std::string& pointer, const std::vector<std::string>& options);
+    // A choice among fixed strings; returns the index, or -1 after reporting, with a did-you-mean from the closest
+    // spelling or, where one is given, from the words users write for an option (`meant`: "float" -> "scalar").
+    int choice(const json& v, const std::string& pointer, const std::vector<std::string>& options,
+               const std::map<std::string, std::string>& meant = {});
     double number(const json& v, const std::string& pointer, const Range& range, double fallback);
     // A whole number in `range`.
     double whole(const json& v, const std::string& pointer, const Range& range, double fallback);

@@ -162,7 +162,10 @@ Diagnostic slotNotRead(const Material& material, const Slot& slot, const ShaderP
                                 message + "; the template calls `" + called + "`, which no slot defines",
                                 "did you mean `hexc_" + slot.name + "`?");
     }
-    return Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "", message);
+    // At the slot (its kind, which every slot states), so that an editor shows which one.
+    const size_t index = size_t(&slot - material.slots.data());
+    return Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string(), slot.line, slot.col}, "/slots/" + std::to_string(index),
+                            message);
 }
 
 // plan.slots and plan.lattices; a slot joins the first lattice computed from the same settings when sharing.

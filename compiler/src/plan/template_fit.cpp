@@ -44,7 +44,7 @@ Diagnostics checkTemplateFit(const std::vector<TemplateSlot>& declared, const Ma
             const Slot& s = material.slots[i];
             if (s.name != t.name) continue;
             found = true;
-            if (s.kind != t.kind)
+            if (s.kind != t.kind && s.kindStated)
                 out.push_back(Diagnostic::make(Code::TemplateMismatch, {material.sourceFile.string(), s.line, s.col},
                                                "/slots/" + std::to_string(i) + "/kind",
                                                "template `" + templateName + "` reads `" + s.name + "` as a " + kindName(t.kind) +
