@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Stage times for .ci/test and .ci/sanitize (sourced, not run). `stage NAME COMMAND...` runs COMMAND, which may be a
 # shell function, and records how long it took; when the outermost script exits, passed or failed, it prints every
 # stage's time as a table at the end of the log. A nested script (.ci/sanitize under .ci/test) adds its rows to the
