@@ -1,6 +1,6 @@
 """What the tests of `hexc edit` share: a server on a free port, raw HTTP requests to it, headless Chromium on its page.
 
-The browser is Debian's chromium, driven by Debian's chromium-driver through python3-selenium (.ci/setup installs the
+The browser is Debian's chromium, driven by Debian's chromium-driver through python3-selenium (.ci/setup-test installs the
 three; Debian builds the driver from the same Chromium release). Without them a browser test exits 77, which CTest counts
 as skipped, unless HEXC_REQUIRE_BROWSER=1 (as .ci/test sets it), when it fails.
 """

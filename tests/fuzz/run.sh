@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# Runs each libFuzzer target for SECONDS (default 60) from a build configured with clang and -DHEXC_FUZZ=ON:
+# Runs each libFuzzer target (or those named) for SECONDS (default 60) from a build configured with clang and -DHEXC_FUZZ=ON:
 #   tests/fuzz/run.sh build-asan 60      (300 or more for a longer run: docs/verification.md)
+#   tests/fuzz/run.sh build-asan 60 mtlx texture
 # Seeds: the example, invalid and scene materials (parse, compile), the MaterialX documents (mtlx), the built-in
 # templates (template) and one byte per container (texture: KTX2, DDS, EXR), plus the corpus each target grew in earlier runs
 # (BUILD/fuzz-corpus/TARGET). A crash stops the run with the
 # input saved as BUILD/fuzz-artifacts/TARGET/crash-*; add it to tests/fuzz/regressions/TARGET/ once fixed.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-build=${1:?usage: tests/fuzz/run.sh BUILD_DIR [SECONDS]}
+build=${1:?usage: tests/fuzz/run.sh BUILD_DIR [SECONDS [TARGET...]]}
 seconds=${2:-60}
-for target in parse mtlx compile template texture json_text; do
+targets=("${@:3}")
+[ ${#targets[@]} -gt 0 ] || targets=(parse mtlx compile template texture json_text)
+for target in "${targets[@]}"; do
   corpus=$build/fuzz-corpus/$target seeds=$build/fuzz-seeds/$target artifacts=$build/fuzz-artifacts/$target
   mkdir -p "$corpus" "$seeds" "$artifacts"
   if [ "$target" = template ]; then
