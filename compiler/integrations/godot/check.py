@@ -83,6 +83,9 @@ def main(argv):
             manifest = ec.manifest(pkg)
             shader = next(pkg.glob("*.shader")).read_text()
             rect = rect_for(manifest)
+            if origin == "top-left":  # the package as a user loads it, lit by Godot: docs/engines.md's screenshot
+                jobs.append({"shader": str(next(pkg.glob("*.shader"))), "textures": textures(material, pkg, manifest),
+                             "out": str(work / f"{Path(material).stem}_lit.png"), "light": [0.4, 0.4, 0.8]})
             for f in manifest["functions"]:
                 if f["returns"] == "vec2":
                     continue  # the derivative: its normal function is checked
