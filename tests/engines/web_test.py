@@ -4,6 +4,7 @@ known light is lit from the light's side, with the package written for either uv
 
 Usage: web_test.py HEXC ENGINE [--screenshot PNG]   (from the source root; ENGINE is threejs or babylon)
 """
+import itertools
 import json
 import math
 import os
@@ -35,7 +36,8 @@ def package(material, origin):
         name = json.load(f)["name"]
     folder = os.path.join(PACKAGES, "%s-%s" % (name, origin))
     if not os.path.isdir(folder):
-        subprocess.run([HEXC, material, "--engine", ENGINE, "--uv-origin", origin, "-o", folder, "-q"], check=True)
+        origin_flag = ["--uv-bottom-left"] if origin == "bottom-left" else []
+        subprocess.run([HEXC, material, "--engine", ENGINE, *origin_flag, "-o", folder, "-q"], check=True)
     return "/pkg/%s-%s/%s.%s.js" % (name, origin, name, MODULE_SUFFIX[ENGINE])
 
 
@@ -93,10 +95,10 @@ class Engine(unittest.TestCase):
         # (material, slot, the engine input the driver reads, the reference's output, texels per uv unit)
         cases = (("albedo", rock, "albedo", "albedo", 1024), ("roughness", rock, "roughness", "albedo", 1024),
                  ("normal", dome, "normal", "normal", 128))
-        for slot, material, engine_input, output, texels in cases:
-            with self.subTest(slot=slot):
+        for (slot, material, engine_input, output, texels), origin in itertools.product(cases, ORIGINS):
+            with self.subTest(slot=slot, origin=origin):
                 rect = [0.3, 0.45, 0.3 + SIZE * 0.75 / texels, 0.45 + SIZE * 0.75 / texels]
-                got = PAGE.render(module=package(material, "top-left"), width=SIZE, height=SIZE, uv=engine_uv(rect, "top-left"),
+                got = PAGE.render(module=package(material, origin), width=SIZE, height=SIZE, uv=engine_uv(rect, origin),
                                   input=engine_input, encoding="linear")
                 ref = reference(material, slot, output, rect)
                 hex, texture, srgb = slot_of(material, slot)
@@ -117,7 +119,8 @@ class Engine(unittest.TestCase):
                     tolerance = blend_tolerance(E_S, E_S, hex, spread) + 0.5 / 255
                 errors = [abs(g[c] / 255 - r[c]) for gr, rr in zip(got, ref) for g, r in zip(gr, rr) for c in range(3)]
                 worst, mean = max(errors), sum(errors) / len(errors)
-                print("  %s %-9s max error %.2f/255, mean %.3f/255, bound %.2f/255" % (ENGINE, slot, worst * 255, mean * 255, tolerance * 255))
+                print("  %s %-9s %-11s max error %.2f/255, mean %.3f/255, bound %.2f/255" % (ENGINE, slot, origin, worst * 255, mean * 255,
+                                                                                        tolerance * 255))
                 self.assertLessEqual(worst, tolerance)
                 self.assertGreater(max(r[c] for row in ref for r in row for c in range(3)) - min(r[c] for row in ref for r in row for c in range(3)),
                                    10 * tolerance)  # not flat
@@ -148,13 +151,37 @@ class Engine(unittest.TestCase):
                     self.assertGreater(r, 0.9)
                     self.assertGreater(sum(towards) / len(towards), sum(away) / len(away) + 0.1)
 
+    def test_package_files_and_a_slot_without_input(self):
+        """The package is what --list-outputs declares; a slot the engine has no input for is reported (HX301) and
+        listed in the module's data, not dropped silently."""
+        folder = os.path.join(PACKAGES, "unmapped")
+        os.makedirs(folder)
+        material = os.path.join(folder, "wet.json")
+        textures = os.path.abspath("materials/textures")
+        with open(material, "w") as f:
+            json.dump({"name": "wet", "slots": [
+                {"name": "albedo", "texture": os.path.join(textures, "rock_albedo.png"), "kind": "color"},
+                {"name": "wetness", "texture": os.path.join(textures, "rock_roughness.png"), "kind": "scalar", "channel": "r"}]}, f)
+        out = os.path.join(folder, "out")
+        listed = subprocess.run([HEXC, material, "--engine", ENGINE, "-o", out, "--list-outputs"], check=True, capture_output=True, text=True)
+        run = subprocess.run([HEXC, material, "--engine", ENGINE, "-o", out], check=True, capture_output=True, text=True)
+        self.assertIn("warning[HX301]", run.stderr)
+        self.assertIn("/slots/1", run.stderr)
+        self.assertEqual(sorted(os.path.join(out, n) for n in os.listdir(out) if not n.startswith(".")),
+                         sorted(os.path.abspath(p) if os.path.isabs(p) else p for p in json.loads(listed.stdout)["outputs"]))
+        with open(os.path.join(out, "wet.%s.js" % MODULE_SUFFIX[ENGINE])) as f:
+            module = f.read()
+        data = json.loads(module[module.index("const hexc = ") + len("const hexc = "):module.index(";\n", module.index("const hexc = "))])
+        self.assertEqual(data["unmapped"], ["wetness"])
+        self.assertEqual([s["name"] for s in data["slots"]], ["albedo"])
+
     def test_lit_screenshot(self):
-        """The rock, lit by the engine from the upper right, sRGB as a canvas shows it: written for docs/engines.md."""
+        """The rock on a sphere, lit by the engine from the upper right, sRGB as a canvas shows it: for docs/engines.md."""
         if not SCREENSHOT:
             self.skipTest("no --screenshot")
         size = 192
-        got = PAGE.render(module=package("materials/rock.json", "bottom-left"), width=size, height=size, uv=[0, 1, 0.5, 0.5],
-                          light=[1.0, 1.0, 1.5], encoding="srgb")
+        got = PAGE.render(module=package("materials/rock.json", "bottom-left"), width=size, height=size, uv=[0, 1, 1, 0],
+                          light=[1.0, 1.0, 1.5], encoding="srgb", sphere=True)
         write_png(SCREENSHOT, size, size, [[c for p in row for c in p[:3]] for row in got])
 
 

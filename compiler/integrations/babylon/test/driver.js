@@ -5,14 +5,16 @@ import { Camera } from '@babylonjs/core/Cameras/camera.js';
 import { FreeCamera } from '@babylonjs/core/Cameras/freeCamera.js';
 import { Engine } from '@babylonjs/core/Engines/engine.js';
 import { DirectionalLight } from '@babylonjs/core/Lights/directionalLight.js';
+import { HemisphericLight } from '@babylonjs/core/Lights/hemisphericLight.js';
 import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
 import { Color3, Color4 } from '@babylonjs/core/Maths/math.color.js';
 import { Vector3 } from '@babylonjs/core/Maths/math.vector.js';
+import { CreateSphere } from '@babylonjs/core/Meshes/Builders/sphereBuilder.js';
 import { Mesh } from '@babylonjs/core/Meshes/mesh.js';
 import { VertexData } from '@babylonjs/core/Meshes/mesh.vertexData.js';
 import { Scene } from '@babylonjs/core/scene.js';
 
-// Babylon's world is left-handed: the camera at z = -1 looks along +z, x right and y up on screen; the square faces -z.
+// Babylon's world is left-handed: the camera at z = -3 looks along +z, x right and y up on screen; the square faces -z.
 const kProbes = {
   albedo: 'baseColor', // the base colour PBRMaterial reads the albedo from (surfaceAlbedo is then scaled by 1 - F0)
   roughness: 'vec3(roughness)',
@@ -49,7 +51,8 @@ function square(scene, uv) {
 }
 
 window.hexcDriver = {
-  async render({ module, width, height, uv, input, light, encoding }) {
+  // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light.
+  async render({ module, width, height, uv, input, light, encoding, sphere }) {
     const errors = [];
     const consoleError = console.error;
     console.error = (...args) => { errors.push(args.join(' ')); consoleError(...args); };
@@ -64,7 +67,7 @@ window.hexcDriver = {
       scene.clearColor = new Color4(0, 0, 0, 1);
       scene.ambientColor = new Color3(0, 0, 0);
       scene.imageProcessingConfiguration.isEnabled = encoding === 'srgb';
-      const camera = new FreeCamera('camera', new Vector3(0, 0, -1), scene);
+      const camera = new FreeCamera('camera', new Vector3(0, 0, -3), scene); // orthographic: the distance only clears the sphere
       camera.setTarget(Vector3.Zero());
       camera.mode = Camera.ORTHOGRAPHIC_CAMERA;
       Object.assign(camera, { orthoLeft: -1, orthoRight: 1, orthoTop: 1, orthoBottom: -1, minZ: 0.1, maxZ: 10 });
@@ -72,7 +75,8 @@ window.hexcDriver = {
       material.backFaceCulling = false;
       if (input) new Probe(material, input);
       if (light) new DirectionalLight('sun', new Vector3(-light[0], -light[1], light[2]), scene).intensity = 2.5; // towards the light: (x, y, -z)
-      square(scene, uv).material = material;
+      (sphere ? CreateSphere('sphere', { diameter: 1.9, segments: 48 }, scene) : square(scene, uv)).material = material;
+      if (sphere) new HemisphericLight('sky', new Vector3(0, 1, 0), scene).intensity = 0.4;
       await Promise.race([scene.whenReadyAsync(), new Promise((_, reject) => setTimeout(() => reject(new Error('not ready: ' + errors.join('\n'))), 60000))]);
       scene.render();
       const gl = engine._gl;

@@ -30,7 +30,8 @@ function square(uv) {
 }
 
 window.hexcDriver = {
-  async render({ module, width, height, uv, input, light, encoding }) {
+  // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light.
+  async render({ module, width, height, uv, input, light, encoding, sphere }) {
     const pkg = await import(module);
     const canvas = document.createElement('canvas');
     canvas.width = width;
@@ -41,14 +42,15 @@ window.hexcDriver = {
     const material = await pkg.createMaterial({ metalness: 0, roughness: 1 });
     if (input) probe(material, input);
     const scene = new THREE.Scene();
-    scene.add(new THREE.Mesh(square(uv), material));
+    scene.add(new THREE.Mesh(sphere ? new THREE.SphereGeometry(0.95, 96, 48) : square(uv), material));
+    if (sphere) scene.add(new THREE.AmbientLight(0xffffff, 0.4));
     if (light) {
       const sun = new THREE.DirectionalLight(0xffffff, 2.5);
       sun.position.set(...light);
       scene.add(sun);
     }
     const camera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0.1, 10);
-    camera.position.z = 1;
+    camera.position.z = 3; // orthographic: only keeps the sphere (radius 0.95) beyond the near plane
     renderer.render(scene, camera);
     const gl = renderer.getContext();
     const pixels = new Uint8Array(width * height * 4);
