@@ -16,7 +16,7 @@ import threading
 import zlib
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "edit"))
-from edit_support import TIMEOUT, browser_or_skip, quit_browser, read_pfm, wait_for  # noqa: E402,F401
+from edit_support import browser_or_skip, quit_browser, read_pfm, wait_for  # noqa: E402,F401
 from page_test import E_S, blend_tolerance, srgb_to_linear, write_png  # noqa: E402,F401
 
 NODE_MODULES = os.path.join("tests", "node", "node_modules")
@@ -143,21 +143,21 @@ def texture_bounds(path, srgb):
     return max(h - l for h, l in zip(hi, lo)), max_deriv, min_z
 
 
-def write_dome_normal_map(path, size=64, slope=0.4):
-    """A green-up normal map of one smooth dome, H = A (1 - r^2)^2 inside r < 1 (r from the texture's centre in units of
-    0.45 of its side), flat outside; A makes the steepest slope `slope` (|dH/dr| peaks at r = 1/sqrt(3)). y runs up the
-    image, so the dome's texels on the image's upper side have green above 0.5."""
-    radius = 0.45 * size
+def write_dome_normal_map(path, width=64, height=64, slope=0.4, directx=False):
+    """A normal map of one smooth dome, H = A (1 - r^2)^2 inside r < 1 (r from the texture's centre in units of 0.45 of
+    its shorter side, in texels), flat outside; A makes the steepest slope `slope` (|dH/dr| peaks at r = 1/sqrt(3)).
+    Green up (y up the image), or down with `directx`."""
+    radius = 0.45 * min(width, height)
     peak = 4 / math.sqrt(3) * (2 / 3)  # max of 4 r (1 - r^2) over [0, 1]
     rows = []
-    for j in range(size):
+    for j in range(height):
         row = []
-        for i in range(size):
-            x, y = (i + 0.5 - size / 2) / radius, (size / 2 - (j + 0.5)) / radius  # y up the image
+        for i in range(width):
+            x, y = (i + 0.5 - width / 2) / radius, (height / 2 - (j + 0.5)) / radius  # y up the image
             r2 = x * x + y * y
             g = slope / peak * 4 * (1 - r2) if r2 < 1 else 0.0  # dH/dx = -g x, dH/dy = -g y (in units of the radius)
-            n = [g * x, g * y, 1.0]  # (-dH/dx, -dH/dy, 1): tilted away from the centre
+            n = [g * x, -g * y if directx else g * y, 1.0]  # (-dH/dx, -dH/dy, 1): tilted away from the centre
             length = math.sqrt(sum(c * c for c in n))
             row += [round((c / length * 0.5 + 0.5) * 255) for c in n]
         rows.append(row)
-    write_png(path, size, size, rows)
+    write_png(path, width, height, rows)

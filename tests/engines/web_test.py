@@ -76,6 +76,23 @@ def dome_material(folder):
     return path
 
 
+def mixed_material(folder):
+    """Packed slots (rock's albedo and roughness in one texture), and a non-square (96x64) DirectX-convention dome normal
+    map: what an engine package must bind and orient besides rock's plain case."""
+    os.makedirs(os.path.join(folder, "textures"), exist_ok=True)
+    write_dome_normal_map(os.path.join(folder, "textures", "dome_dx.png"), 96, 64, directx=True)
+    textures = os.path.abspath("materials/textures")
+    path = os.path.join(folder, "mixed.json")
+    with open(path, "w") as f:
+        json.dump({"name": "mixed", "pack": True, "hextiling": {"tiling": [4, 4], "rotation": 1.0, "falloff": 0.75},
+                   "slots": [{"name": "albedo", "texture": os.path.join(textures, "rock_albedo.png"), "kind": "color"},
+                             {"name": "roughness", "texture": os.path.join(textures, "rock_roughness.png"), "kind": "scalar",
+                              "channel": "r"},
+                             {"name": "normal", "texture": "textures/dome_dx.png", "kind": "normal", "flip_y": True,
+                              "hextiling": {"tiling": [2, 2]}}]}, f)
+    return path
+
+
 def correlation(a, b):
     ma, mb = sum(a) / len(a), sum(b) / len(b)
     cov = sum((x - ma) * (y - mb) for x, y in zip(a, b))
@@ -91,12 +108,13 @@ class Engine(unittest.TestCase):
 
     def test_values_match_the_reference(self):
         """Each slot through the engine's input, unlit, against the fp64 reference (linear values, 8-bit canvas)."""
-        rock, dome = "materials/rock.json", dome_material(PACKAGES)
-        # (material, slot, the engine input the driver reads, the reference's output, texels per uv unit)
+        rock, dome, mixed = "materials/rock.json", dome_material(PACKAGES), mixed_material(PACKAGES)
+        # (material, slot, the engine input the driver reads, the reference's output, texels per uv unit along u)
         cases = (("albedo", rock, "albedo", "albedo", 1024), ("roughness", rock, "roughness", "albedo", 1024),
-                 ("normal", dome, "normal", "normal", 128))
+                 ("normal", dome, "normal", "normal", 128), ("albedo", mixed, "albedo", "albedo", 1024),
+                 ("roughness", mixed, "roughness", "albedo", 1024), ("normal", mixed, "normal", "normal", 192))
         for (slot, material, engine_input, output, texels), origin in itertools.product(cases, ORIGINS):
-            with self.subTest(slot=slot, origin=origin):
+            with self.subTest(material=os.path.basename(material), slot=slot, origin=origin):
                 rect = [0.3, 0.45, 0.3 + SIZE * 0.75 / texels, 0.45 + SIZE * 0.75 / texels]
                 got = PAGE.render(module=package(material, origin), width=SIZE, height=SIZE, uv=engine_uv(rect, origin),
                                   input=engine_input, encoding="linear")
@@ -119,8 +137,8 @@ class Engine(unittest.TestCase):
                     tolerance = blend_tolerance(E_S, E_S, hex, spread) + 0.5 / 255
                 errors = [abs(g[c] / 255 - r[c]) for gr, rr in zip(got, ref) for g, r in zip(gr, rr) for c in range(3)]
                 worst, mean = max(errors), sum(errors) / len(errors)
-                print("  %s %-9s %-11s max error %.2f/255, mean %.3f/255, bound %.2f/255" % (ENGINE, slot, origin, worst * 255, mean * 255,
-                                                                                        tolerance * 255))
+                print("  %s %-10s %-9s %-11s max error %.2f/255, mean %.3f/255, bound %.2f/255"
+                      % (ENGINE, os.path.basename(material), slot, origin, worst * 255, mean * 255, tolerance * 255))
                 self.assertLessEqual(worst, tolerance)
                 self.assertGreater(max(r[c] for row in ref for r in row for c in range(3)) - min(r[c] for row in ref for r in row for c in range(3)),
                                    10 * tolerance)  # not flat
