@@ -15,6 +15,7 @@ import tempfile
 import time
 import unittest
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from web_support import (E_S, FileServer, Page, blend_tolerance, read_pfm, texture_bounds, write_dome_normal_map,  # noqa: E402
                          write_png)
