@@ -219,6 +219,17 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
         "emit every feature even when a setting turns it off; the uniforms decide");
     app.add_flag_callback(
         "--no-shared-lattice", [&] { a.options.shareLattice = false; }, "evaluate the lattice per slot even where slots could share it");
+    app.add_flag("--functions", a.options.functions,
+                 "write the material's functions for an engine's own material instead of a\n"
+                 "shader: hexc_<slot>(uv), hexc_<slot>_normal(uv); no main (docs/engines.md)");
+    app.add_option("--engine,--engines", a.options.engines,
+                   "write a package for each engine instead of shaders: godot3, godot4, filament\n"
+                   "(DIR/<engine>/...; functions with every setting baked; docs/engines.md)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"godot3", "godot4", "filament"}));
+    app.add_flag_callback(
+        "--uv-bottom-left", [&] { a.options.uvOrigin = UvOrigin::BottomLeft; },
+        "the engine's uv (0,0) is the image's bottom-left, v up (OpenGL's); hexc\nsamples at (u, 1 - v) itself (docs/conventions.md)");
 }
 
 // How a build runs and what it prints: the depfile, the outputs' list, scene variants, messages, stamps and jobs.
@@ -263,6 +274,11 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
     if (u.manifestPaths) a.options.manifestPathsFrom = a.outDir;
     applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
+    if (!a.options.engines.empty() && (a.listOutputs || !a.depfile.empty())) {
+        std::cerr << "hexc: --engine does not declare its outputs yet: not with --list-outputs or --depfile\n";
+        return kUsage;
+    }
+    if (a.options.functions && u.targets.empty()) a.options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};  // no SPIR-V form
     if (!u.layout.resolve(a.options.layout)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {
         std::cerr << "hexc: HLSL register space " << space << " needs --hlsl-sm 51 or later (shader model 5.0 has no spaces)\n";

@@ -10,16 +10,25 @@
 #include "codegen/codegen.h"
 #include "hexc/cache.h"
 #include "hexc/compiler.h"
+#include "hexc/engines.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
 #include "precompute/derived.h"
 #include "spirv/module.h"
+#include "spirv/keep.h"
 #include "spirv/share.h"
 
 namespace hexc {
 namespace {
 
 void append(Diagnostics& to, const Diagnostics& from) { to.insert(to.end(), from.begin(), from.end()); }
+
+// The engine functions as glslang names them: each takes the texture coordinate.
+std::vector<std::string> engineSignatures(const ShaderPlan& plan) {
+    std::vector<std::string> names;
+    for (const EngineFunction& f : engineFunctions(plan)) names.push_back(f.name + "(vf2;");
+    return names;
+}
 
 // The generated GLSL through glslang and spirv-opt, then each target.
 ShaderCode compileCode(const std::string& glsl, const ShaderPlan& plan, const CompileOptions& options, const std::vector<Target>& targets,
@@ -32,6 +41,7 @@ ShaderCode compileCode(const std::string& glsl, const ShaderPlan& plan, const Co
         diagnostics.push_back(*d);
         return {};
     }
+    if (plan.functions) front.words = keepFunctions(front.words, engineSignatures(plan));
     SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);
     append(diagnostics, optimized.diagnostics);
     if (optimized.words.empty()) return {};
@@ -93,19 +103,29 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
         throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {"--debug"}, "",
                                              "--debug keeps hexc's functions, which take a texture and a sampler apart; combined image "
                                              "samplers (layout vulkan.combined) need the optimised, inlined shader")}};
-    result.glsl = generateGlsl(plan);
     const std::vector<Target> targets = sortedTargets(options);
+    if (plan.functions && targets.front() == Target::Spirv)
+        throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {"--functions"}, "",
+                                             "the functions output is source to include in an engine's material: HLSL, GLSL or MSL, "
+                                             "not SPIR-V")}};
+    result.glsl = generateGlsl(plan);
     ShaderCode code = fragmentCode(result.glsl, plan, options, targets, result.diagnostics);
     if (code.spirv.empty()) return;
     result.spirv = std::move(code.spirv);
 
     nlohmann::json described = nlohmann::json::object();
+    const char* stage = plan.functions ? "functions" : "frag";
     for (auto& [t, out] : code.targets) {
-        out.target["file"] = shaderFileName(material.name, t);
+        out.target["file"] = shaderFileName(material.name, t, stage);
+        if (plan.functions) {
+            out.source = functionsOnly(out.source, t, plan.entryPoint);
+            for (const char* key : {"entry_point", "stage", "inputs", "outputs"}) out.target.erase(key);
+        }
         described[std::string(toString(t))] = std::move(out.target);
-        result.files.push_back({shaderFileName(material.name, t), std::move(out.source)});
+        result.files.push_back({shaderFileName(material.name, t, stage), std::move(out.source)});
     }
     nlohmann::json manifest = buildManifest(material, plan, described);
+    if (plan.functions) manifest["functions"] = functionsEntry(plan);
     if (options.vertex) manifest["vertex"] = vertexStage(material, plan, options, targets, result.spirv, result.files);
     if (!options.manifestPathsFrom.empty()) manifest["source"] = sourcePaths(material, plan, options.manifestPathsFrom);
     if (options.emitGenerated) result.files.push_back({material.name + ".generated.frag", result.glsl});
@@ -115,9 +135,29 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
 }
 
+// Each engine's package (hexc/engines.h), every file under its engine's folder.
+CompileResult compileEngines(const Material& material, const CompileOptions& options) {
+    CompileOptions each = options;
+    each.engines.clear();
+    CompileResult all;
+    for (const std::string& name : options.engines) {
+        std::optional<Engine> engine = engineNamed(name);
+        CompileResult r = engine ? compileForEngine(material, *engine, each) : CompileResult{};
+        if (!engine)
+            r.diagnostics.push_back(
+                Diagnostic::make(Code::TargetUnsupported, {"--engine"}, "", "hexc has no package for engine `" + name + "`"));
+        append(all.diagnostics, r.diagnostics);
+        for (OutputFile& f : r.files) all.files.push_back(std::move(f));
+    }
+    if (!all.ok()) all.files.clear();
+    std::sort(all.files.begin(), all.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+    return all;
+}
+
 }  // namespace
 
 CompileResult compile(const Material& material, const CompileOptions& options) {
+    if (!options.engines.empty()) return compileEngines(material, options);
     CompileResult result;
     try {
         run(material, options, result);

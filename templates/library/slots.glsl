@@ -11,7 +11,7 @@
 // the `set` lines filling one; ${heightmap}: the
 // slot whose texture holds its heights (itself when it blends by none); ${channel}: a scalar slot's channel
 // (0 = r ... 3 = a); ${flipy}, ${explicit}: literal switches; ${type}: the slot's result type; ${kind},
-// ${projection}; ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
+// ${projection}; ${uv}: the uv in hexc's convention (origin top-left, v down), from the engine's (CompileOptions::uvOrigin); ${calls}: the `engine.call.*` lines; ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
 // Each slot gets `hexc_${name}(...)` and an overload with `out vec3 weights` (the weights output).
 
 //@ params
@@ -153,7 +153,7 @@ vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 
 //@ uv
 ${type} hexc_${name}(vec2 uv, out vec3 weights) {
-    vec2 st = uv * ${tiling};
+    vec2 st = ${uv} * ${tiling};
     return hexcAt_${name}(st, dFdx(st), dFdy(st), ivec2(0), weights);
 }
 ${type} hexc_${name}(vec2 uv) { vec3 weights; return hexc_${name}(uv, weights); }
@@ -161,7 +161,7 @@ ${type} hexc_${name}(vec2 uv) { vec3 weights; return hexc_${name}(uv, weights); 
 //@ uv.split
 // uv relative to the per-frame origin, whose cell and offset the engine fills (docs/precision.md).
 ${type} hexc_${name}(vec2 uv, out vec3 weights) {
-    vec2 st = uv * ${tiling};
+    vec2 st = ${uv} * ${tiling};
     return hexcAt_${name}(${originoffset} + st, dFdx(st), dFdy(st), ${origincell}, weights);
 }
 ${type} hexc_${name}(vec2 uv) { vec3 weights; return hexc_${name}(uv, weights); }
@@ -202,3 +202,35 @@ vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
     return hexcMxDeriv(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, weights);
 }
+
+//@ uv.topleft
+uv
+
+//@ uv.bottomleft
+vec2(uv.x, 1.0 - uv.y)
+
+//@ engine.normal
+// A normal slot's tangent-space normal, as a green-up (OpenGL convention) normal map texel holds it: x along +u, y up
+// the image, z out of the surface; what an engine's normal input takes.
+vec3 hexc_${name}_normal(vec2 uv) {
+    return hexcDerivToNormal(hexc_${name}(uv));
+}
+
+//@ engine.calls
+// The `functions` template's main calls every engine function once, so that each is kept (as a function: hexc marks
+// them not to be inlined) and its resources declared; the text from main on is cut from the outputs.
+vec4 hexcEngineCalls(vec2 uv) {
+    vec4 sum = vec4(0.0);
+${calls}
+    return sum;
+}
+
+//@ engine.call.color
+    sum += hexc_${name}(uv);
+
+//@ engine.call.scalar
+    sum.x += hexc_${name}(uv);
+
+//@ engine.call.normal
+    sum.xy += hexc_${name}(uv);
+    sum.xyz += hexc_${name}_normal(uv);

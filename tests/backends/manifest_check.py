@@ -48,6 +48,7 @@ def main(argv):
         "engine_layout": ["--layout", layout, "--hlsl-sm", "51"],
         "combined": ["--combined", "1"],
         "argument_buffers": ["--msl-argument-buffers", "1", "--vertex", "--manifest-paths"],
+        "functions": ["--functions", "--uv-bottom-left"],
     }
     validator = jsonschema.Draft202012Validator(schema)
     shutil.rmtree(work, ignore_errors=True)
@@ -59,6 +60,8 @@ def main(argv):
         for source in inputs:
             out = work / name / Path(source).name
             run = subprocess.run([hexc, source, "-o", str(out), "--no-cache", "-q", *options], capture_output=True, text=True)
+            if run.returncode != 0 and name == "functions" and "projected triplanar" in run.stderr:
+                continue  # the functions output refuses triplanar materials, as documented
             if run.returncode != 0:
                 print(f"FAIL {source} ({name}): hexc exited {run.returncode}: {run.stderr.strip()}")
                 failed += 1

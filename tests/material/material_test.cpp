@@ -124,9 +124,9 @@ TEST(Validation, NormalMapNeedsThreeChannels) {
 
 TEST(Validation, TemplateTypoSuggestsTheBuiltin) {
     EXPECT_EQ(diagnose(std::string(R"({"name": "m", "template": "litt", "slots": [)") + kSlot + "]}"),
-              std::vector<std::string>{
-                  "materials/t.json:1:27: error[HX200]: /template: unknown template \"litt\"; expected a built-in "
-                  "template (`depth`, `lit`, `shadow`, `unlit`, `value`, `weights`) or a path to a .glsl file (did you mean `lit`?)"});
+              std::vector<std::string>{"materials/t.json:1:27: error[HX200]: /template: unknown template \"litt\"; expected a built-in "
+                                       "template (`depth`, `functions`, `lit`, `shadow`, `unlit`, `value`, `weights`) or a path to a .glsl "
+                                       "file (did you mean `lit`?)"});
 }
 
 TEST(Validation, MissingTemplateFile) {

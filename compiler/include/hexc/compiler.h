@@ -16,6 +16,12 @@ class ShaderCache;
 enum class Target { Spirv, Hlsl, Glsl, Msl };
 std::string_view toString(Target target);
 
+// Where the engine's texture coordinates put uv (0, 0) (docs/conventions.md). hexc's own convention is the top-left
+// texel with v down the image; with BottomLeft (OpenGL's, v up) hexc samples at (u, 1 - v) itself.
+enum class UvOrigin { TopLeft, BottomLeft };
+
+std::string_view toString(UvOrigin origin);  // "top-left", "bottom-left"
+
 // How often --debug's text outputs carry a `#line` (CompileOptions::lineDirectives), like Slang's -line-directive-mode.
 enum class LineDirectives { None, Functions, Statements };
 
@@ -39,6 +45,15 @@ struct CompileOptions {
     ResourceLayout layout;  // where hexc's own resources go on each target
     // The fragment entry point on every target but OpenGL GLSL (always `main`); empty: defaultEntryPoint(material).
     std::string entryPoint;
+    UvOrigin uvOrigin = UvOrigin::TopLeft;
+    // Engine-ready functions instead of a shader (docs/engines.md): the material's specialised function per slot,
+    // hexc_<slot>(uv) and for a normal slot also hexc_<slot>_normal(uv), with the resources they read declared, no
+    // main and no stage inputs or outputs: "<material>.functions.{hlsl,glsl,metal}" (no SPIR-V target). The template
+    // is the built-in `functions`.
+    bool functions = false;
+    // Engine packages (hexc/engines.h, --engine): when set, compile() writes each one's files under "<engine>/"
+    // instead of the targets' shaders.
+    std::vector<std::string> engines;
     // Also emit the pass-through vertex stage that feeds the fragment shader's inputs ("<material>.vert.*").
     bool vertex = false;
     // Readable outputs (like glslc/dxc -O0): no optimisation, so hexc's functions keep their names, and #line
@@ -101,7 +116,8 @@ const char* version();
 std::string withoutBanner(std::string source);
 
 // The options that change what glslang, spirv-opt and SPIRV-Cross make of the generated GLSL, in one line for keys
-// (the shader cache's, the stamps'): the targets, HLSL shader model, GLSL and MSL versions, --bake and --debug.
+// (the shader cache's, the stamps'): the targets, HLSL shader model, GLSL and MSL versions, --bake, --debug,
+// --functions and the uv origin.
 std::string codeOptionsKey(const CompileOptions& options);
 
 // The shader tool chain hexc is built with, one per line: "glslang 12.0.0", "SPIRV-Tools v2022.4 ...",

@@ -102,6 +102,13 @@ std::string spirvBytes(const std::vector<uint32_t>& words);
 std::map<Target, TargetOutput> emitTargets(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options,
                                            const std::vector<Target>& targets);
 
+// The manifest's "functions" (manifest.cpp): each engine function, its slot, what it returns and in which convention.
+nlohmann::json functionsEntry(const ShaderPlan& plan);
+
+// The functions output (functions.cpp): `source`, a target's code of the `functions` template, without the entry point
+// `entry`, its stage input and output, and GLSL's #version line.
+std::string functionsOnly(const std::string& source, Target target, const std::string& entry);
+
 // The banner (banner.cpp) on top of every shader source in `files`, after GLSL's `#version` line.
 void addBanners(std::vector<OutputFile>& files, const Material& material, const ShaderPlan& plan, const CompileOptions& options);
 

@@ -15,7 +15,8 @@ std::string banner(const Material& material, const ShaderPlan& plan, const Compi
         std::string(options.debug ? "debug (unoptimised, line directives: " + std::string(toString(options.lineDirectives)) + ")"
                                   : "optimised") +
         (options.bake ? ", baked" : "") + (options.specialize ? "" : ", not specialised") +
-        (options.shareLattice ? "" : ", no shared lattice");
+        (options.shareLattice ? "" : ", no shared lattice") + (plan.functions ? ", functions" : "") +
+        (plan.uvBottomLeft ? ", uv origin bottom-left" : "");
     return kBannerStart + std::string(version()) + " from " + (from.empty() ? material.name : from) + " (material " + material.name +
            ", template " + plan.templateShown + "). Do not edit: change the material and run hexc again.\n" + "// Settings: " + targets +
            "; " + code + "; layout " + toString(options.layout) + ".\n";

@@ -1,3 +1,5 @@
+#include <sstream>
+
 #include "backends/backends.h"
 #include "hexc/histogram.h"
 
@@ -81,9 +83,40 @@ nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
     if (sp.histogram) slot["histogram"] = histogramEntry(material, s);
     if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
     if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
+    if (s.kind == SlotKind::Normal) slot["normal_green"] = s.flipY ? "down (DirectX)" : "up (OpenGL)";
     // The texture channels the shader reads: what a packing tool may not reuse.
     slot["reads"] = s.kind == SlotKind::Color ? "rgba" : s.kind == SlotKind::Normal ? "rgb" : std::string(1, "rgba"[s.channel]);
     return slot;
+}
+
+// The template's own words on its stage inputs: its comment from "// Stage inputs:" to the next line that is not a
+// continuation of it (empty when it has none).
+std::string stageInputs(const std::string& templateSource) {
+    const size_t at = templateSource.find("// Stage inputs:");
+    if (at == std::string::npos) return "";
+    std::istringstream in(templateSource.substr(at + 17));
+    std::string text, line;
+    for (bool first = true; std::getline(in, line); first = false) {
+        if (!first && (!line.starts_with("// ") || line.starts_with("// hexc slot") || line.starts_with("// Slots"))) break;
+        text += (text.empty() ? "" : " ") + (first ? line : line.substr(3));
+    }
+    return text;
+}
+
+// What the shader's inputs and outputs mean: uv origin and direction, normal maps, tangent sign, colour spaces
+// (docs/conventions.md).
+nlohmann::json conventionsEntry(const ShaderPlan& plan) {
+    const bool up = plan.uvBottomLeft;
+    return {{"uv_origin", up ? "bottom-left" : "top-left"},
+            {"v_direction", up ? "up the image" : "down the image"},
+            {"texture_rows", "uploaded as the file stores them, top row first (no flip)"},
+            {"normal_maps", "green up (OpenGL) unless the slot's flip_y (green down, DirectX): slots[].normal_green"},
+            {"tangent_sign", "the bitangent cross(N, T) * w runs along +v of the uv the shader takes (MikkTSpace)"},
+            {"derivative", "a normal slot's value: (dH/du, dH/dy), y up the image"},
+            {"tangent_normal", "x along +u, y up the image, z out of the surface (green up)"},
+            {"stage_inputs", stageInputs(plan.templateSource)},
+            {"texture_color_space", "an srgb slot's texture is bound in an sRGB format, decoded before filtering"},
+            {"output_color_space", "linear: an sRGB render target or the engine encodes it"}};
 }
 
 }  // namespace
@@ -116,6 +149,7 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
         {"hexc_version", version()},
         {"material", material.name},
         {"template", plan.templateShown},
+        {"conventions", conventionsEntry(plan)},
         // The state hexc's one sampler (hexcSampler) must have: the blend assumes trilinear filtering over a full
         // mip chain and repeat addressing (tiles sample outside [0, 1)); anisotropic filtering may be added.
         {"sampler",
@@ -136,6 +170,23 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
     // Only with packing: other manifests stay as they were.
     if (!packed.empty()) manifest["packed_textures"] = packed;
     return manifest;
+}
+
+nlohmann::json functionsEntry(const ShaderPlan& plan) {
+    nlohmann::json functions = nlohmann::json::array();
+    for (const EngineFunction& f : engineFunctions(plan)) {
+        const SlotKind kind = f.slot->slot->kind;
+        const char* value = f.tangentNormal            ? "tangent-space normal, unit length: x along +u, y up the image, z out (green up)"
+                            : kind == SlotKind::Normal ? "height derivative (dH/du, dH/dy), y up the image (as docs/conventions.md)"
+                            : kind == SlotKind::Scalar ? "the scalar value"
+                                                       : "RGBA, linear";
+        functions.push_back({{"name", f.name},
+                             {"slot", f.slot->slot->name},
+                             {"parameters", "vec2 uv"},
+                             {"returns", f.tangentNormal ? "vec3" : f.slot->type},
+                             {"value", value}});
+    }
+    return functions;
 }
 
 namespace {

@@ -24,6 +24,8 @@ std::string_view toString(LineDirectives mode) {
     return names[int(mode)];
 }
 
+std::string_view toString(UvOrigin origin) { return origin == UvOrigin::TopLeft ? "top-left" : "bottom-left"; }
+
 std::string shaderFileName(std::string_view material, Target target, std::string_view stage) {
     static const char* const extensions[] = {"spv", "hlsl", "glsl", "metal"};
     return std::string(material) + "." + std::string(stage) + "." + extensions[int(target)];
@@ -48,12 +50,24 @@ bool isEntryPointName(std::string_view name) {
     return std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : " ") + n;
+    return out;
+}
+
+}  // namespace
+
 std::string codeOptionsKey(const CompileOptions& options) {
     std::string key;
     for (Target t : std::set<Target>(options.targets.begin(), options.targets.end())) key += std::string(toString(t)) + ",";
     return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
            std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
-           (options.debug ? ",debug," + std::string(toString(options.lineDirectives)) : "");
+           (options.debug ? ",debug," + std::string(toString(options.lineDirectives)) : "") + (options.functions ? ",functions" : "") +
+           (options.engines.empty() ? "" : ",engines " + joined(options.engines)) +
+           (options.uvOrigin == UvOrigin::TopLeft ? "" : ",uv " + std::string(toString(options.uvOrigin)));
 }
 
 std::vector<Target> sortedTargets(const CompileOptions& options) {

@@ -107,6 +107,7 @@ public:
             {"luma",
              "vec3(" + literal(s.hex.lumacoeffs[0]) + ", " + literal(s.hex.lumacoeffs[1]) + ", " + literal(s.hex.lumacoeffs[2]) + ")"},
             {"srgb", literal(s.colorSpace == ColorSpace::Srgb)},
+            {"uv", expand(plan_.uvBottomLeft ? "uv.bottomleft" : "uv.topleft", {})},
         };
         addParam(t, "tiling", l.tiling);
         addParam(t, "planesharpness", l.planeSharpness);
@@ -115,6 +116,20 @@ public:
         std::string sampling = expand(sp.section, t);
         for (size_t empty; (empty = sampling.find("\n\n")) != std::string::npos;) sampling.erase(empty, 1);  // ${settings}, ${fields} empty
         return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, s.name) + "\n";
+    }
+
+    // The functions output's code after the slots' (templates/builtin/functions.glsl): each normal slot's
+    // tangent-space normal, and hexcEngineCalls, which calls every engine function once.
+    std::string engineFunctions() const {
+        std::string normals, calls;
+        for (const SlotPlan& sp : plan_.slots) {
+            if (sp.heightOnly) continue;
+            const Tokens name = {{"name", sp.slot->name}};
+            if (sp.slot->kind == SlotKind::Normal) normals += expand("engine.normal", name) + "\n\n";
+            calls += expand("engine.call." + std::string(toString(sp.slot->kind)), name) + "\n";
+        }
+        if (calls.ends_with('\n')) calls.pop_back();
+        return normals + expand("engine.calls", {{"calls", calls}}) + "\n";
     }
 
 private:
@@ -211,6 +226,7 @@ std::string injectedCode(const ShaderPlan& plan) {
         for (const SlotPlan& sp : plan.slots)
             if (!sp.heightOnly) functions += emit.slot(sp, assembly);
     }
+    if (plan.functions) functions += assembly.use(Emitter(plan).engineFunctions(), nullptr, "");  // also for a pass without slots
     assembly.use(plan.templateSource, nullptr, "");  // what the template calls itself, as it is
     const int next = 1 + int(std::count(resources.begin(), resources.end(), '\n'));
     return lineDirective(1, "hexc/generated") + resources + assembly.text() + lineDirective(next, "hexc/generated") + functions;

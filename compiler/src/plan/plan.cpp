@@ -77,12 +77,12 @@ struct SlotUse {
     std::vector<bool> read, needed;
 };
 
-SlotUse slotUse(const Material& material, const std::string& templateSource) {
+SlotUse slotUse(const Material& material, const std::string& templateSource, bool all) {
     bool readsFirst = containsWord(templateSource, "HEXC_FIRST_SLOT");
     SlotUse use{std::vector<bool>(material.slots.size()), std::vector<bool>(material.slots.size())};
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
-        if (!containsWord(templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
+        if (!all && !containsWord(templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
         use.read[i] = use.needed[i] = true;
         if (slot.heightBlend)
             for (size_t j = 0; j < material.slots.size(); ++j)
@@ -167,7 +167,7 @@ Diagnostic slotNotRead(const Material& material, const Slot& slot, const ShaderP
 
 // plan.slots and plan.lattices; a slot joins the first lattice computed from the same settings when sharing.
 void planSlots(const Material& material, const CompileOptions& options, ShaderPlan& plan) {
-    SlotUse use = slotUse(material, plan.templateSource);
+    SlotUse use = slotUse(material, plan.templateSource, plan.functions);
     std::vector<const HexTiling*> latticeKeys;
     uint32_t binding = plan.bindings.firstTexture;
     for (size_t i = 0; i < material.slots.size(); ++i) {
@@ -306,9 +306,19 @@ void planParams(bool bake, ShaderPlan& plan) {
     params.finish();
 }
 
+// The functions output's functions take texture coordinates: a triplanar material's take a position and a normal.
+void refuseTriplanar(const Material& material, ShaderPlan& plan) {
+    if (material.hex.projection == Projection::Triplanar)
+        plan.diagnostics.push_back(Diagnostic::make(Code::TargetUnsupported, {material.sourceFile.string()}, "/hextiling/projection",
+                                                    "the functions output (--functions, --engine) takes texture coordinates; this "
+                                                    "material is projected triplanar",
+                                                    "compile it as a shader, or use the uv projection"));
+}
+
 }  // namespace
 
 TemplateRef effectiveTemplate(const Material& material, const CompileOptions& options) {
+    if (options.functions) return TemplateRef::builtin("functions");
     return options.templateFile.empty() ? material.templ : TemplateRef::parse(options.templateFile.string());
 }
 
@@ -325,11 +335,25 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     plan.entryPoint = options.entryPoint.empty() ? defaultEntryPoint(material.name) : options.entryPoint;
     plan.bindings = HexcBindings(options.layout.vulkan);
     plan.general = !options.specialize;
+    plan.uvBottomLeft = options.uvOrigin == UvOrigin::BottomLeft;
     if (!loadTemplate(material, options, plan)) return plan;
+    // The built-in `functions` named by a material is the functions output, as with --functions.
+    plan.functions = options.functions || plan.templateName == TemplateRef::builtin("functions").path();
     planSlots(material, options, plan);
+    if (plan.functions) refuseTriplanar(material, plan);
     if (material.pack) planPacks(plan);
     planParams(options.bake, plan);
     return plan;
+}
+
+std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan) {
+    std::vector<EngineFunction> functions;
+    for (const SlotPlan& sp : plan.slots) {
+        if (sp.heightOnly) continue;
+        functions.push_back({"hexc_" + sp.slot->name, &sp, false});
+        if (sp.slot->kind == SlotKind::Normal) functions.push_back({"hexc_" + sp.slot->name + "_normal", &sp, true});
+    }
+    return functions;
 }
 
 }  // namespace hexc

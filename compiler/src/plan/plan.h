@@ -115,7 +115,9 @@ struct ShaderPlan {
     // --no-specialize (CompileOptions::specialize false): the slots call the library's general functions with every
     // setting in their HexcLattice and HexcBlend, rather than functions with the settings folded in (codegen).
     bool general = false;
-    Diagnostics diagnostics;  // warnings (e.g. a slot the template never reads) or errors
+    bool uvBottomLeft = false;  // CompileOptions::uvOrigin: the slots' functions take OpenGL's uv (v up)
+    bool functions = false;     // CompileOptions::functions: the `functions` template, every slot read
+    Diagnostics diagnostics;    // warnings (e.g. a slot the template never reads) or errors
 
     // hexc's textures, bound at firstTexture + i: each slot's, then the look-up tables.
     size_t textureCount() const { return slots.size() + luts.size(); }
@@ -134,6 +136,15 @@ struct ShaderPlan {
 };
 
 ShaderPlan planShader(const Material& material, const CompileOptions& options);
+
+// The functions output's functions (CompileOptions::functions), in slot order: hexc_<slot>, and hexc_<slot>_normal
+// after a normal slot's. Each takes the texture coordinate (vec2 uv).
+struct EngineFunction {
+    std::string name;
+    const SlotPlan* slot;
+    bool tangentNormal;  // hexc_<slot>_normal: a normal slot's tangent-space normal, not its derivative
+};
+std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan);
 
 // The file hexc writes a pack's texture to: "<material>.<its first slot>.packed.png".
 inline std::string packedFileName(const std::string& material, const std::string& firstSlot) {

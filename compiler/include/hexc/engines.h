@@ -1,0 +1,23 @@
+#pragma once
+// Engine packages (docs/engines.md): a material's functions (CompileOptions::functions) wrapped in an engine's own
+// material model, so that the engine's lighting, shadows and environment light the hex-tiled slots.
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "hexc/compiler.h"
+
+namespace hexc {
+
+enum class Engine { Godot3, Godot4, Filament };
+
+std::string_view toString(Engine engine);                  // "godot3", "godot4", "filament"
+std::optional<Engine> engineNamed(std::string_view name);  // nullopt for a name hexc has no package for
+std::vector<std::string_view> engineNames();
+
+// The package of `material` for `engine`: the files under "<engine>/" (its shader or material source, the manifest of
+// the functions it holds, the textures hexc derives), compiled with `options` as the functions output in the engine's
+// GLSL dialect, every setting baked. A slot no engine input takes is a warning, its function kept but not called.
+CompileResult compileForEngine(const Material& material, Engine engine, CompileOptions options);
+
+}  // namespace hexc

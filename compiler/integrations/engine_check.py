@@ -1,0 +1,188 @@
+"""What the engine tests share (compiler/integrations/<engine>/check.py): PNG and PFM reading, hexc's fp64 reference,
+the derived bound of an engine's 8-bit sRGB output against it, and the dome normal map of the lighting test.
+Python's standard library only."""
+import json
+import math
+import struct
+import subprocess
+import zlib
+from pathlib import Path
+
+
+def read_png(path):
+    """An 8-bit, non-interlaced grey, RGB or RGBA PNG as (width, height, channels, rows of bytes)."""
+    data = Path(path).read_bytes()
+    at, idat = 8, b""
+    while at < len(data):
+        length, kind = struct.unpack(">I4s", data[at:at + 8])
+        body = data[at + 8:at + 8 + length]
+        if kind == b"IHDR":
+            w, h, depth, colour = struct.unpack(">IIBB", body[:10])
+            assert depth == 8 and colour in (0, 2, 6), f"{path}: PNG colour type {colour}, depth {depth}"
+        elif kind == b"IDAT":
+            idat += body
+        at += 12 + length
+    n = {0: 1, 2: 3, 6: 4}[colour]
+    raw, stride, rows, prev = zlib.decompress(idat), w * n, [], bytearray(w * n)
+    for y in range(h):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - n] if i >= n else 0
+            b, c = prev[i], prev[i - n] if i >= n else 0
+            p = a + b - c
+            pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else b if abs(p - b) <= abs(p - c) else c][f]
+            line[i] = (line[i] + pred) & 255
+        rows.append(line)
+        prev = line
+    return w, h, n, rows
+
+
+def write_png(path, w, h, pixel):
+    """An RGB PNG whose pixel (x, y), y = 0 the top row, is pixel(x, y) -> (r, g, b) bytes."""
+    rows = b"".join(b"\0" + bytes(c for x in range(w) for c in pixel(x, y)) for y in range(h))
+    chunk = lambda kind, body: struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+    Path(path).write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)) +
+                           chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+
+
+def read_pfm(path):
+    """A colour PFM as (width, height, rows top first of [r, g, b] floats)."""
+    data = Path(path).read_bytes()
+    parts = data.split(b"\n", 3)
+    w, h = map(int, parts[1].split())
+    scale = float(parts[2])
+    fmt = "<" if scale < 0 else ">"
+    floats = struct.unpack(fmt + "f" * (w * h * 3), parts[3][:w * h * 12])
+    rows = [[floats[(y * w + x) * 3:(y * w + x) * 3 + 3] for x in range(w)] for y in range(h)]
+    return w, h, rows[::-1]  # PFM stores the bottom row first
+
+
+def reference(hexc, material, output, slot, size, rect, out):
+    """hexc's fp64 CPU reference of `slot` (`output`: albedo or normal) over uv `rect`, linear, as a PFM."""
+    subprocess.run([hexc, "render", str(material), "--reference", "-q", "--output", output, "--slot", slot, "--size",
+                    f"{size}x{size}", "--uv-rect", ",".join(map(str, rect)), "-o", str(out)], check=True)
+    return read_pfm(out)
+
+
+def srgb(x):
+    x = min(max(x, 0.0), 1.0)
+    return 12.92 * x if x <= 0.0031308 else 1.055 * x ** (1 / 2.4) - 0.055
+
+
+# The bound on |engine - 255 srgb(reference)| at a pixel, in 8-bit steps (the engines here write sRGB-encoded 8-bit
+# pixels of the linear value the function returns):
+#   0.5   the engine rounds its output to 8 bits (the reference is compared as floats);
+#   filtering: llvmpipe filters an 8-bit texture in fixed point: a bilinear fetch is two lerps whose weights have 8-bit
+#   fractions (each off by at most 1/512 of the texel range) and its result has 8 bits (off by 0.5/255): e = 2/512 +
+#   0.5/255 in the texture's value (linear, after an sRGB texture's decoding); the blend of three fetches by weights
+#   summing to 1 stays within e. A normal map's value is a normal's component n * 0.5 + 0.5: a texel error e is 2e on
+#   n, which moves the slope -n.xy / n.z by at most 2e (1 + |n.xy| / n.z) / n.z <= 4e / n.z^2 on the pixel's normal,
+#   and normalize(-d, 1) moves by no more than d does: so 2e / n.z^2 in the output's n * 0.5 + 0.5;
+#   the blend's weights depend on the taps' own values (falloffcontrast c, exponent g, gain k = log2(1 / (1 - falloff))):
+#   a tap's weight goes as (1 - c + c l)^g of its luminance l, d ln w / dl <= g c / (1 - c), and the value
+#   v = sum w_i s_i / sum w_i moves by (w_i / sum w)(s_i - v) d ln w_i / dl <= g c / (4 (1 - c)) per unit of l
+#   (w (1 - w) <= 1/4, |s_i - v| <= 1); the gain's curve is at most k steep: so a tap's error e becomes up to
+#   e (1 + max(k, 1) g c / (4 (1 - c))) in the blend (`amplification`);
+#   the engine's own colour buffer before its sRGB output: `relative`, e.g. 2^-11 of the value for a half float.
+#   Both are carried through the sRGB encoding at the pixel's value: 255 * (srgb(v + err) - srgb(v)) is the largest
+#   the encoding makes of err above v, and below v the step down (srgb is concave, so that one is larger): both taken.
+FILTER_ERROR = 2 / 512 + 0.5 / 255
+
+
+def bound(value, err):
+    return 0.5 + 255 * max(srgb(value + err) - srgb(value), srgb(value) - srgb(max(value - err, 0.0)))
+
+
+def amplification(slot):
+    """How much the blend can magnify a tap's error (above), from the slot's settings in the manifest."""
+    h = slot["hextiling"]
+    if not h["enabled"]:
+        return 1.0
+    c, g = h["falloffcontrast"], h["exponent"]
+    k = math.log2(1 / (1 - h["falloff"])) if h["falloff"] < 1 else 16
+    return 1 + max(k, 1) * g * c / (4 * (1 - c))
+
+
+def compare(engine_png, ref, normal, relative, amplify):
+    """Per channel of RGB: (mean error, max error, max error / bound, pixels over bound) of the engine's 8-bit sRGB
+    image against the linear reference."""
+    w, h, n, rows = read_png(engine_png)
+    rw, rh, ref_rows = ref
+    assert (w, h) == (rw, rh), f"engine image {w}x{h}, reference {rw}x{rh}"
+    total = worst = worst_ratio = 0.0
+    over = 0
+    for y in range(h):
+        for x in range(w):
+            v = ref_rows[y][x]
+            nz = max(2 * v[2] - 1, 0.05) if normal else 1.0
+            err = amplify * (2 * FILTER_ERROR / (nz * nz) if normal else FILTER_ERROR)
+            for c in range(3):
+                e = abs(rows[y][x * n + c] - 255 * srgb(v[c]))
+                b = bound(v[c], err + relative * abs(v[c]))
+                total += e
+                worst = max(worst, e)
+                worst_ratio = max(worst_ratio, e / b)
+                over += e > b
+    return {"mean": total / (w * h * 3), "max": worst, "max_over_bound": worst_ratio, "pixels_over_bound": over}
+
+
+def dome_normal_map(path, size):
+    """A hemisphere bump, green up (OpenGL): at image point (x right, y up from the centre) the normal of a dome of
+    radius 0.4 of the image, flat outside it."""
+    def pixel(i, j):
+        x, y = (i + 0.5) / size - 0.5, 0.5 - (j + 0.5) / size
+        r2 = x * x + y * y
+        nx = ny = 0.0
+        if r2 < 0.4 * 0.4 * 0.95:
+            z = math.sqrt(0.16 - r2)
+            nx, ny = x / math.sqrt(0.16), y / math.sqrt(0.16)
+        nz = math.sqrt(max(1 - nx * nx - ny * ny, 0))
+        return tuple(round(255 * (c * 0.5 + 0.5)) for c in (nx, ny, nz))
+    write_png(path, size, size, pixel)
+
+
+def mixed_material(folder):
+    """The engine tests' second material, written into `folder`: 300 x 170 textures (non-square), a DirectX-convention
+    normal map (green down: flip_y) of bumps, and an sRGB albedo and a roughness that hexc packs into one texture
+    (albedo's RGB, roughness in alpha), all hex-tiled with rotation."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    w, h = 300, 170
+
+    def albedo(x, y):
+        return ((x * 255) // w, (y * 255) // h, 128 + 100 * (((x // 20) + (y // 20)) % 2) - 50)
+
+    def roughness(x, y):
+        v = 60 + int(120 * (0.5 + 0.5 * math.sin(x * 0.09) * math.cos(y * 0.13)))
+        return (v, v, v)
+
+    def normal(x, y):  # the slope of sin(2 pi x / 50) sin(2 pi y / 34), y of the map down the image (DirectX)
+        k = 0.6
+        dx = k * math.cos(2 * math.pi * x / 50) * math.sin(2 * math.pi * y / 34)
+        dy = k * math.sin(2 * math.pi * x / 50) * math.cos(2 * math.pi * y / 34)
+        n = (-dx, -dy, 1.0)
+        length = math.sqrt(sum(c * c for c in n))
+        return tuple(round(255 * (c / length * 0.5 + 0.5)) for c in n)
+
+    for name, pixel in {"albedo": albedo, "roughness": roughness, "normal": normal}.items():
+        write_png(folder / f"mixed_{name}.png", w, h, pixel)
+    material = {"name": "mixed", "pack": True, "hextiling": {"tiling": [3, 3], "rotation": 1.0},
+                "slots": [{"name": "albedo", "kind": "color", "texture": "mixed_albedo.png", "colorspace": "srgb"},
+                          {"name": "roughness", "kind": "scalar", "texture": "mixed_roughness.png", "channel": "r"},
+                          {"name": "normal", "kind": "normal", "texture": "mixed_normal.png", "flip_y": True}]}
+    (folder / "mixed.json").write_text(json.dumps(material, indent=2))
+    return folder / "mixed.json"
+
+
+def quadrant_means(png):
+    """The mean grey of the dome's right, left, top and bottom parts (a tenth of the image each side of the centre)."""
+    w, h, n, rows = read_png(png)
+    def mean(x0, x1, y0, y1):
+        vals = [sum(rows[y][x * n + c] for c in range(3)) / 3 for y in range(int(y0 * h), int(y1 * h)) for x in range(int(x0 * w), int(x1 * w))]
+        return sum(vals) / len(vals)
+    return {"right": mean(0.6, 0.75, 0.45, 0.55), "left": mean(0.25, 0.4, 0.45, 0.55),
+            "top": mean(0.45, 0.55, 0.25, 0.4), "bottom": mean(0.45, 0.55, 0.6, 0.75)}
+
+
+def manifest(package_dir):
+    return json.loads(next(Path(package_dir).glob("*.manifest.json")).read_text())

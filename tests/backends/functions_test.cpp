@@ -1,0 +1,101 @@
+// The functions output (--functions, docs/engines.md): each slot's function by name on every target, no entry point
+// or stage variables left, and the text compiles again once a consumer's main calls every function, as an engine's
+// material would.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "hexc/compiler.h"
+#include "hexc/spirv.h"
+
+using namespace hexc;
+
+namespace {
+
+CompileResult compileFunctions(const std::string& name, UvOrigin origin = UvOrigin::TopLeft) {
+    ParseResult p = parseMaterialFile("materials/" + name + ".json");
+    if (!p.material) throw std::runtime_error(formatAll(p.diagnostics));
+    CompileOptions options;
+    options.functions = true;
+    options.uvOrigin = origin;
+    options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};
+    CompileResult r = compile(*p.material, options);
+    EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    return r;
+}
+
+std::string contents(const CompileResult& r, const std::string& name) {
+    for (const OutputFile& f : r.files)
+        if (f.name == name) return f.contents;
+    ADD_FAILURE() << "no " << name;
+    return "";
+}
+
+// `sum` accumulating every function's value at `uv`: what an engine's material reads.
+std::string calls(const nlohmann::json& functions) {
+    static const std::map<std::string, std::string> swizzle = {{"vec4", ""}, {"vec3", ".xyz"}, {"vec2", ".xy"}, {"float", ".x"}};
+    std::string out;
+    for (const auto& f : functions) out += "    sum" + swizzle.at(f["returns"]) + " += " + f["name"].get<std::string>() + "(uv);\n";
+    return out;
+}
+
+class Functions : public testing::TestWithParam<const char*> {};
+
+TEST_P(Functions, EachSlotsFunctionCompilesInAConsumersShader) {
+    const std::string name = GetParam();
+    CompileResult r = compileFunctions(name);
+    ASSERT_TRUE(r.ok());
+    const auto manifest = nlohmann::json::parse(contents(r, name + ".manifest.json"));
+    ASSERT_FALSE(manifest["functions"].empty());
+    EXPECT_FALSE(manifest["targets"].contains("spirv"));
+    for (const char* file : {".functions.glsl", ".functions.hlsl", ".functions.metal"}) {
+        const std::string text = contents(r, name + file);
+        for (const auto& f : manifest["functions"])
+            EXPECT_NE(text.find(" " + f["name"].get<std::string>() + "("), std::string::npos) << file;
+        for (const char* gone : {"void main()", "frag_main", "fragment ", "SPIRV_Cross_Input", "hexcEngine", "#version"})
+            EXPECT_EQ(text.find(gone), std::string::npos) << file << " keeps " << gone;
+    }
+    const std::string sum = calls(manifest["functions"]);
+    const std::string glsl =
+        "#version 450\n" + contents(r, name + ".functions.glsl") +
+        "\nlayout(location = 0) in vec2 uv;\nlayout(location = 0) out vec4 sum;\nvoid main() {\n    sum = vec4(0.0);\n" + sum + "}\n";
+    SpirvResult g = compileToSpirv(glsl, ShaderStage::Fragment, "consumer.glsl", SourceLanguage::OpenGlGlsl);
+    EXPECT_FALSE(g.words.empty()) << formatAll(g.diagnostics);
+    const std::string hlsl = contents(r, name + ".functions.hlsl") +
+                             "\nfloat4 consumer(float2 uv : TEXCOORD0) : SV_Target {\n    float4 sum = 0.0f;\n" + sum +
+                             "    return sum;\n}\n";
+    SpirvResult h = compileToSpirv(hlsl, ShaderStage::Fragment, "consumer.hlsl", SourceLanguage::Hlsl, "consumer");
+    EXPECT_FALSE(h.words.empty()) << formatAll(h.diagnostics);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, Functions, testing::Values("rock", "tiles", "rock_normal"));
+
+TEST(Functions, BottomLeftOriginSamplesTheFlippedCoordinate) {
+    const std::string top = contents(compileFunctions("rock"), "rock.functions.glsl");
+    const std::string bottom = contents(compileFunctions("rock", UvOrigin::BottomLeft), "rock.functions.glsl");
+    EXPECT_EQ(top.find("1.0 - uv.y"), std::string::npos);
+    EXPECT_NE(bottom.find("vec2(uv.x, 1.0 - uv.y)"), std::string::npos);
+}
+
+TEST(Functions, TriplanarMaterialsAreRefused) {
+    ParseResult p = parseMaterialFile("materials/rock_triplanar.json");
+    ASSERT_TRUE(p.material);
+    CompileOptions options;
+    options.functions = true;
+    options.targets = {Target::Glsl};
+    CompileResult r = compile(*p.material, options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(formatAll(r.diagnostics).find("/hextiling/projection: the functions output"), std::string::npos) << formatAll(r.diagnostics);
+    EXPECT_TRUE(r.files.empty());
+}
+
+TEST(Functions, SpirvIsRefused) {
+    ParseResult p = parseMaterialFile("materials/rock.json");
+    CompileOptions options;
+    options.functions = true;
+    CompileResult r = compile(*p.material, options);  // the default targets include SPIR-V
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(formatAll(r.diagnostics).find("not SPIR-V"), std::string::npos);
+}
+
+}  // namespace
