@@ -39,7 +39,7 @@ def package(material, origin):
     if not os.path.isdir(folder):
         origin_flag = ["--uv-bottom-left"] if origin == "bottom-left" else []
         subprocess.run([HEXC, material, "--engine", ENGINE, *origin_flag, "-o", folder, "-q"], check=True)
-    return "/pkg/%s-%s/%s.%s.js" % (name, origin, name, MODULE_SUFFIX[ENGINE])
+    return "/pkg/%s-%s/%s/%s.%s.js" % (name, origin, ENGINE, name, MODULE_SUFFIX[ENGINE])
 
 
 def engine_uv(rect, origin):
@@ -171,8 +171,8 @@ class Engine(unittest.TestCase):
                     self.assertGreater(sum(towards) / len(towards), sum(away) / len(away) + 0.1)
 
     def test_package_files_and_a_slot_without_input(self):
-        """The package is what --list-outputs declares; a slot the engine has no input for is reported (HX301) and
-        listed in the module's data, not dropped silently."""
+        """The package's files; a slot the engine has no input for is reported (HX204) and listed in the module's
+        data, not dropped silently."""
         folder = os.path.join(PACKAGES, "unmapped")
         os.makedirs(folder)
         material = os.path.join(folder, "wet.json")
@@ -182,15 +182,16 @@ class Engine(unittest.TestCase):
                 {"name": "albedo", "texture": os.path.join(textures, "rock_albedo.png"), "kind": "color"},
                 {"name": "wetness", "texture": os.path.join(textures, "rock_roughness.png"), "kind": "scalar", "channel": "r"}]}, f)
         out = os.path.join(folder, "out")
-        listed = subprocess.run([HEXC, material, "--engine", ENGINE, "-o", out, "--list-outputs"], check=True, capture_output=True, text=True)
         run = subprocess.run([HEXC, material, "--engine", ENGINE, "-o", out], check=True, capture_output=True, text=True)
-        self.assertIn("warning[HX301]", run.stderr)
-        self.assertIn("/slots/1", run.stderr)
-        self.assertEqual(sorted(os.path.join(out, n) for n in os.listdir(out) if not n.startswith(".")),
-                         sorted(os.path.abspath(p) if os.path.isabs(p) else p for p in json.loads(listed.stdout)["outputs"]))
-        with open(os.path.join(out, "wet.%s.js" % MODULE_SUFFIX[ENGINE])) as f:
+        self.assertIn("warning[HX204]", run.stderr)
+        self.assertIn("slot `wetness` has no %s input" % {"threejs": "three.js", "babylon": "Babylon.js"}[ENGINE], run.stderr)
+        suffix = MODULE_SUFFIX[ENGINE]
+        self.assertEqual(sorted(os.listdir(os.path.join(out, ENGINE))),
+                         sorted(["wet.albedo.png", "wet.manifest.json", "wet.%s.js" % suffix, "wet.wetness.png"]))
+        with open(os.path.join(out, ENGINE, "wet.%s.js" % suffix)) as f:
             module = f.read()
-        data = json.loads(module[module.index("const hexc = ") + len("const hexc = "):module.index(";\n", module.index("const hexc = "))])
+        start = module.index("const hexc = ") + len("const hexc = ")
+        data = json.loads(module[start:module.index(";\n", start)])
         self.assertEqual(data["unmapped"], ["wetness"])
         self.assertEqual([s["name"] for s in data["slots"]], ["albedo"])
 

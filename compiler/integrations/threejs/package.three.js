@@ -15,13 +15,17 @@ const hexc = /* hexc:data */ null;
 // What replaces the chunk of each role's input, given the slot's call. The normal map keeps three.js's chunk (normalScale,
 // its tbn with T along +u and B along +v) and reads hexc's tangent-space normal instead of the texture.
 const kNormalRead = 'vec3 mapN = texture2D( normalMap, vNormalMapUv ).xyz * 2.0 - 1.0;';
+function replaced(text, what, by) {
+  if (!text.includes(what)) throw new Error(`hexc: this three.js has no \`${what}\` (the package is written for r187)`);
+  return text.replace(what, by);
+}
 const roles = {
   albedo: ['map_fragment', (call) => `diffuseColor *= ${call};`],
   roughness: ['roughnessmap_fragment', (call) => `float roughnessFactor = roughness * ${call};`],
-  metalness: ['metalnessmap_fragment', (call) => `float metalnessFactor = metalness * ${call};`],
-  occlusion: ['aomap_fragment', (call) => `reflectedLight.indirectDiffuse *= ${call};`],
-  emissive: ['emissivemap_fragment', (call) => `totalEmissiveRadiance *= ${call}.rgb;`],
-  normal: ['normal_fragment_maps', (call) => THREE.ShaderChunk.normal_fragment_maps.replace(kNormalRead, `vec3 mapN = ${call};`)],
+  metallic: ['metalnessmap_fragment', (call) => `float metalnessFactor = metalness * ${call};`],
+  ao: ['aomap_fragment', (call) => `reflectedLight.indirectDiffuse *= ${call};`],
+  emission: ['emissivemap_fragment', (call) => `totalEmissiveRadiance *= ${call}.rgb;`],
+  normal: ['normal_fragment_maps', (call) => replaced(THREE.ShaderChunk.normal_fragment_maps, kNormalRead, `vec3 mapN = ${call};`)],
 };
 
 // The uv hexc's functions take, from three.js's (v up the image, origin at the bottom-left).
@@ -56,11 +60,10 @@ export function applyHexc(material, textures) {
   material.onBeforeCompile = (shader, renderer) => {
     previous.call(material, shader, renderer);
     for (const [uniform, texture] of Object.entries(textures)) shader.uniforms[uniform] = { value: texture };
-    let fragment = shader.fragmentShader.replace('void main() {', `${hexc.glsl}\nvoid main() {`);
+    let fragment = replaced(shader.fragmentShader, 'void main() {', `${hexc.glsl}\nvoid main() {`);
     for (const slot of hexc.slots) {
       const [chunk, code] = roles[slot.role];
-      if (!fragment.includes(`#include <${chunk}>`)) throw new Error(`hexc: ${material.type} has no ${chunk} for slot ${slot.name}`);
-      fragment = fragment.replace(`#include <${chunk}>`, code(slot.call.replace('UV', hexcUv())));
+      fragment = replaced(fragment, `#include <${chunk}>`, code(slot.call.replace('UV', hexcUv())));
     }
     shader.fragmentShader = fragment;
   };
