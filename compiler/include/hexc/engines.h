@@ -14,6 +14,8 @@ enum class Engine { Godot3, Godot4, Filament, Threejs, Babylon };
 std::string_view toString(Engine engine);                  // "godot3", "godot4", "filament", "threejs", "babylon"
 std::optional<Engine> engineNamed(std::string_view name);  // nullopt for a name hexc has no package for
 std::vector<std::string_view> engineNames();
+// three.js and Babylon.js: their packages (ES modules) copy the slots' textures beside them.
+bool isWebEngine(Engine engine);
 
 // The package of `material` for `engine`: the files under "<engine>/" (its shader or material source, the manifest of
 // the functions it holds, the textures hexc derives), compiled with `options` as the functions output in the engine's

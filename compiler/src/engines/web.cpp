@@ -99,14 +99,16 @@ std::string withoutPrecision(const std::string& glsl) {
 }
 
 // The slots the engine fills (name, role, the call of their function with UV for the uv, their texture's uniform),
-// and those it has no input for.
+// and those it has no input for: a role the engine lacks, or a second slot of one role (each input takes one slot).
 void wire(const Material& material, const WebEngine& web, const nlohmann::json& manifest, nlohmann::json& data, Diagnostics& diagnostics) {
     data["slots"] = data["unmapped"] = nlohmann::json::array();
     for (const auto& f : manifest["functions"]) {
         const Slot& slot = slotNamed(material, f["slot"]);
         if (slot.kind == SlotKind::Normal && f["returns"] != "vec3") continue;  // the derivative: the engine takes the normal
         const std::string role = slotRole(slot.name, slot.kind);
-        if (std::find(web.roles.begin(), web.roles.end(), role) == web.roles.end()) {
+        const bool taken =
+            std::any_of(data["slots"].begin(), data["slots"].end(), [&](const nlohmann::json& s) { return s["role"] == role; });
+        if (taken || std::find(web.roles.begin(), web.roles.end(), role) == web.roles.end()) {
             data["unmapped"].push_back(slot.name);
             diagnostics.push_back(unusedSlot(material, slot.name, web.shown, f["name"]));
             continue;
@@ -143,8 +145,10 @@ std::vector<OutputFile> webPackage(const Material& material, Engine engine, cons
         if (slot == material.slots.end()) continue;  // a packed texture, written by the compile
         std::string why;
         std::optional<std::string> bytes = readFile(slot->texturePath, &why);
-        if (!bytes) throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", why)}};
-        files.push_back({file, std::move(*bytes)});
+        if (bytes)
+            files.push_back({file, std::move(*bytes)});
+        else  // the caller writes nothing then
+            diagnostics.push_back(Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", why));
     }
     return files;
 }

@@ -8,8 +8,6 @@
 
 namespace hexc {
 
-bool isWebEngine(Engine engine);
-
 // The package's files, named without the "<engine>/" folder: the module, and a copy of each slot texture the
 // functions read (a packed texture is among the functions output's files already). `manifest` and `glsl` are the
 // functions output's for GLSL ES 3.00. A slot the engine has no input for is reported in `diagnostics`.
