@@ -89,8 +89,8 @@ def srgb(x):
 FILTER_ERROR = 2 / 512 + 0.5 / 255
 
 
-def bound(value, err):
-    return 0.5 + 255 * max(srgb(value + err) - srgb(value), srgb(value) - srgb(max(value - err, 0.0)))
+def bound(value, err, encode=srgb):
+    return 0.5 + 255 * max(encode(value + err) - encode(value), encode(value) - encode(max(value - err, 0.0)))
 
 
 def amplification(slot):
@@ -103,9 +103,13 @@ def amplification(slot):
     return 1 + max(k, 1) * g * c / (4 * (1 - c))
 
 
-def compare(engine_png, ref, normal, relative, amplify):
-    """Per channel of RGB: (mean error, max error, max error / bound, pixels over bound) of the engine's 8-bit sRGB
-    image against the linear reference."""
+def linear(x):
+    return min(max(x, 0.0), 1.0)
+
+
+def compare(engine_png, ref, normal, relative, amplify, encode=srgb):
+    """Per channel of RGB: (mean error, max error, max error / bound, pixels over bound) of the engine's 8-bit image,
+    `encode`d (srgb, or linear as it is), against the linear reference."""
     w, h, n, rows = read_png(engine_png)
     rw, rh, ref_rows = ref
     assert (w, h) == (rw, rh), f"engine image {w}x{h}, reference {rw}x{rh}"
@@ -117,8 +121,8 @@ def compare(engine_png, ref, normal, relative, amplify):
             nz = max(2 * v[2] - 1, 0.05) if normal else 1.0
             err = amplify * (2 * FILTER_ERROR / (nz * nz) if normal else FILTER_ERROR)
             for c in range(3):
-                e = abs(rows[y][x * n + c] - 255 * srgb(v[c]))
-                b = bound(v[c], err + relative * abs(v[c]))
+                e = abs(rows[y][x * n + c] - 255 * encode(v[c]))
+                b = bound(v[c], err + relative * abs(v[c]), encode)
                 total += e
                 worst = max(worst, e)
                 worst_ratio = max(worst_ratio, e / b)
@@ -172,6 +176,16 @@ def mixed_material(folder):
                           {"name": "normal", "kind": "normal", "texture": "mixed_normal.png", "flip_y": True}]}
     (folder / "mixed.json").write_text(json.dumps(material, indent=2))
     return folder / "mixed.json"
+
+
+def dome_material(folder):
+    """The dome normal map as a material of one normal slot, without hex-tiling (so the dome stays whole), in `folder`."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    dome_normal_map(folder / "dome_normal.png", 128)
+    material = {"name": "dome", "hextiling": {"enabled": False}, "slots": [{"name": "normal", "kind": "normal", "texture": "dome_normal.png"}]}
+    (folder / "dome.json").write_text(json.dumps(material))
+    return folder / "dome.json"
 
 
 def quadrant_means(png):

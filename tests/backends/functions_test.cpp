@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hexc/compiler.h"
+#include "hexc/engines.h"
 #include "hexc/spirv.h"
 
 using namespace hexc;
@@ -96,6 +97,55 @@ TEST(Functions, SpirvIsRefused) {
     CompileResult r = compile(*p.material, options);  // the default targets include SPIR-V
     EXPECT_FALSE(r.ok());
     EXPECT_NE(formatAll(r.diagnostics).find("not SPIR-V"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+std::string package(const std::string& name, Engine engine, Diagnostics* diagnostics = nullptr) {
+    ParseResult p = parseMaterialFile("materials/" + name + ".json");
+    CompileResult r = compileForEngine(*p.material, engine, {});
+    EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    if (diagnostics) *diagnostics = r.diagnostics;
+    const std::string dir(toString(engine));
+    for (const OutputFile& f : r.files)
+        if (f.name.starts_with(dir + "/" + name + ".") && !f.name.ends_with(".json") && !f.name.ends_with(".png")) return f.contents;
+    ADD_FAILURE() << "no package source";
+    return "";
+}
+
+TEST(EnginePackages, GodotGetsItsDialectAndItsInputs) {
+    for (Engine engine : {Engine::Godot3, Engine::Godot4}) {
+        const std::string text = package("rock", engine);
+        EXPECT_TRUE(text.starts_with("shader_type spatial;"));
+        // Godot's shading language has no layout qualifiers, uint literals or fma, and declares the textures itself.
+        for (const char* refused : {"layout(", "fma(", "97u", "#version"}) EXPECT_EQ(text.find(refused), std::string::npos) << refused;
+        EXPECT_NE(text.find("ALBEDO = (hexc_albedo(UV)).rgb;"), std::string::npos);
+        EXPECT_NE(text.find("ROUGHNESS = hexc_roughness(UV);"), std::string::npos);
+        EXPECT_NE(text.find(engine == Engine::Godot3 ? "NORMALMAP = hexc_normal_normal(UV)" : "NORMAL_MAP = hexc_normal_normal(UV)"),
+                  std::string::npos);
+        EXPECT_NE(text.find(engine == Engine::Godot3 ? "uniform sampler2D hexcTex_albedo : hint_albedo;" : "hexcTex_albedo : source_color"),
+                  std::string::npos);
+    }
+}
+
+TEST(EnginePackages, FilamentReadsMaterialParamsAndSetsTheNormalFirst) {
+    const std::string text = package("rock", Engine::Filament);
+    EXPECT_NE(text.find("{ type : sampler2d, name : hexcTex_albedo }"), std::string::npos);
+    EXPECT_NE(text.find("materialParams_hexcTex_albedo"), std::string::npos);
+    EXPECT_EQ(text.find("uniform "), std::string::npos);
+    const size_t normal = text.find("material.normal = hexc_normal_normal(uv);"), prepare = text.find("prepareMaterial(material);");
+    ASSERT_NE(normal, std::string::npos);
+    EXPECT_LT(normal, prepare);
+    EXPECT_GT(text.find("material.baseColor = hexc_albedo(uv);"), prepare);
+}
+
+TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {
+    Diagnostics d;
+    const std::string text = package("rock_blend", Engine::Godot3, &d);  // `height`: no Godot input has its name
+    EXPECT_NE(formatAll(d).find("warning[HX204]: slot `height` has no godot3 input"), std::string::npos) << formatAll(d);
+    EXPECT_NE(text.find("float hexc_height(vec2 uv)"), std::string::npos);  // kept for the user to call
 }
 
 }  // namespace

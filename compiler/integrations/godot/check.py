@@ -72,17 +72,16 @@ def main(argv):
     materials = materials + [ec.mixed_material(work / "mixed")]
     start = time.monotonic()
     jobs, checks = [], []
-    dome = work / "dome"
-    dome.mkdir(parents=True)
-    ec.dome_normal_map(dome / "dome_normal.png", 128)
-    (dome / "dome.json").write_text(json.dumps({"name": "dome", "hextiling": {"enabled": False}, "slots": [
-        {"name": "normal", "kind": "normal", "texture": "dome_normal.png"}]}))
+    dome = ec.dome_material(work / "dome")
     for material in materials:
         for origin in ORIGINS:
             pkg = package(hexc, material, work, origin)
             manifest = ec.manifest(pkg)
             shader = next(pkg.glob("*.shader")).read_text()
             rect = rect_for(manifest)
+            if origin == "top-left":  # the package as a user loads it, lit by Godot: docs/engines.md's screenshot
+                jobs.append({"shader": str(next(pkg.glob("*.shader"))), "textures": textures(material, pkg, manifest),
+                             "out": str(work / f"{Path(material).stem}_lit.png"), "light": [0.4, 0.4, 0.8]})
             for f in manifest["functions"]:
                 if f["returns"] == "vec2":
                     continue  # the derivative: its normal function is checked
@@ -92,7 +91,7 @@ def main(argv):
                 jobs.append({"shader": str(view), "textures": textures(material, pkg, manifest), "out": str(out)})
                 checks.append((material, origin, f, rect, out))
     for origin in ORIGINS:
-        pkg = package(hexc, dome / "dome.json", work, origin)
+        pkg = package(hexc, dome, work, origin)
         manifest = ec.manifest(pkg)
         shader = next(pkg.glob("*.shader")).read_text()
         if origin == "bottom-left":  # a GL-convention mesh: its uv of the image point UV is (u, 1 - v)
@@ -100,7 +99,7 @@ def main(argv):
         (pkg / "dome_lit.shader").write_text(shader)
         for side, light in {"right": [1, 0, 0.5], "top": [0, 1, 0.5]}.items():
             out = pkg / f"dome_{side}.png"
-            jobs.append({"shader": str(pkg / "dome_lit.shader"), "textures": textures(dome / "dome.json", pkg, manifest),
+            jobs.append({"shader": str(pkg / "dome_lit.shader"), "textures": textures(dome, pkg, manifest),
                          "out": str(out), "light": light})
             checks.append((None, origin, side, None, out))
     render(project, jobs)
