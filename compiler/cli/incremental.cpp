@@ -5,6 +5,7 @@
 
 #include "hexc/files.h"
 #include "hexc/cache.h"
+#include "hexc/engines.h"
 #include "hexc/hash.h"
 #include "hexc/templates.h"
 
@@ -43,10 +44,14 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
             h.add(std::filesystem::absolute(f).lexically_normal().string());
     // Of a texture the compile reads only its size (validation has checked its channels): new pixels leave the
     // shaders as they are. A histogram slot's derived textures are made from its pixels, and so is a packed texture
-    // (whose alpha a colour slot's opaque texels leave free): their bytes count.
+    // (whose alpha a colour slot's opaque texels leave free): their bytes count, and the web engines' packages copy them.
+    const bool copied = std::any_of(options.engines.begin(), options.engines.end(), [](const std::string& e) {
+        const std::optional<Engine> engine = engineNamed(e);
+        return engine && isWebEngine(*engine);
+    });
     for (const Slot& s : material.slots) {
         h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height));
-        if (s.hex.blend == Blend::Histogram || material.pack) addFile(h, s.texturePath);
+        if (s.hex.blend == Blend::Histogram || material.pack || copied) addFile(h, s.texturePath);
     }
     addFile(h, material.sourceFile);
     if (const TemplateRef t = effectiveTemplate(material, options); t.file) addFile(h, t.name);

@@ -223,10 +223,11 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
                  "write the material's functions for an engine's own material instead of a\n"
                  "shader: hexc_<slot>(uv), hexc_<slot>_normal(uv); no main (docs/engines.md)");
     app.add_option("--engine,--engines", a.options.engines,
-                   "write a package for each engine instead of shaders: godot3, godot4, filament\n"
-                   "(DIR/<engine>/...; functions with every setting baked; docs/engines.md)")
+                   "write a package for each engine instead of shaders: godot3, godot4, filament,\n"
+                   "threejs, babylon (DIR/<engine>/...; functions with every setting baked;\n"
+                   "docs/engines.md)")
         ->delimiter(',')
-        ->check(CLI::IsMember({"godot3", "godot4", "filament"}));
+        ->check(CLI::IsMember({"godot3", "godot4", "filament", "threejs", "babylon"}));
     app.add_flag_callback(
         "--uv-bottom-left", [&] { a.options.uvOrigin = UvOrigin::BottomLeft; },
         "the engine's uv (0,0) is the image's bottom-left, v up (OpenGL's); hexc\nsamples at (u, 1 - v) itself (docs/conventions.md)");

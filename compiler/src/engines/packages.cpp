@@ -13,11 +13,13 @@
 
 #include "codegen/codegen.h"
 #include "common/templates.h"
+#include "engines/roles.h"
+#include "engines/web.h"
 
 namespace hexc {
 namespace {
 
-const char* const kNames[] = {"godot3", "godot4", "filament"};
+const char* const kNames[] = {"godot3", "godot4", "filament", "threejs", "babylon"};
 const char* const kTemplates[] = {"godot3.shader", "godot4.gdshader", "filament.mat"};
 const char* const kExtensions[] = {".shader", ".gdshader", ".mat"};
 
@@ -101,22 +103,17 @@ std::string declarations(const std::vector<TextureUse>& used, Engine engine) {
     return out;
 }
 
-// The engine input a slot's name gives it (docs/engines.md, "Slots and engine inputs"), as the statement that sets
-// it from `value`; empty when the engine has none.
+// The engine input a slot's role gives it, as the statement that sets it from `value`; empty when the engine has none.
 std::string input(const std::string& slot, SlotKind kind, Engine engine, const std::string& value) {
-    static const std::map<std::string, std::string> roles = {
-        {"albedo", "albedo"},       {"basecolor", "albedo"},  {"base_color", "albedo"},  {"diffuse", "albedo"},
-        {"roughness", "roughness"}, {"metallic", "metallic"}, {"metalness", "metallic"}, {"ao", "ao"},
-        {"occlusion", "ao"},        {"emission", "emission"}, {"emissive", "emission"}};
     static const std::map<std::string, std::array<std::string, 2>> inputs = {
         {"albedo", {"ALBEDO = (%).rgb;", "material.baseColor = %;"}},
         {"roughness", {"ROUGHNESS = %;", "material.roughness = %;"}},
         {"metallic", {"METALLIC = %;", "material.metallic = %;"}},
         {"ao", {"AO = %;", "material.ambientOcclusion = %;"}},
         {"emission", {"EMISSION = (%).rgb;", "material.emissive = vec4((%).rgb, 0.0);"}}};
-    auto role = roles.find(slot);
-    if (role == roles.end() || (kind == SlotKind::Color) != (role->second == "albedo" || role->second == "emission")) return "";
-    std::string s = inputs.at(role->second)[engine == Engine::Filament ? 1 : 0];
+    const std::string role = slotRole(slot, kind);
+    if (role.empty()) return "";
+    std::string s = inputs.at(role)[engine == Engine::Filament ? 1 : 0];
     return s.replace(s.find('%'), 1, value);
 }
 
@@ -150,10 +147,7 @@ Wiring wire(const Material& material, const nlohmann::json& functions, Engine en
             statement = input(slot, s.kind, engine, call);
         }
         if (statement.empty()) {
-            w.unused.push_back(Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "",
-                                                "slot `" + slot + "` has no " + std::string(toString(engine)) +
-                                                    " input (docs/engines.md#slots-and-engine-inputs); its function `" + name +
-                                                    "` is in the package but not called"));
+            w.unused.push_back(unusedSlot(material, slot, toString(engine), name));
             continue;
         }
         w.inputs += indent + statement + "\n";
@@ -162,14 +156,56 @@ Wiring wire(const Material& material, const nlohmann::json& functions, Engine en
     return w;
 }
 
+// The package's files under "<engine>/": the functions output's (but the GLSL the package holds) and the package's.
+std::vector<OutputFile> inFolder(Engine engine, std::vector<OutputFile> files, std::vector<OutputFile> package) {
+    std::vector<OutputFile> out;
+    for (OutputFile& f : files)
+        if (!f.name.ends_with(".functions.glsl")) out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
+    for (OutputFile& f : package) out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
+    return out;
+}
+
+// A web engine's package (engines/web.h): the functions output in GLSL ES 3.00 inside the engine's ES module.
+CompileResult compileForWeb(const Material& material, Engine engine, CompileOptions options) {
+    options.glslVersion = 300;
+    options.glslEs = true;
+    CompileResult r = compile(material, options);
+    if (!r.ok()) return r;
+    const auto file = [&](std::string_view suffix) {
+        return std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& f) { return f.name.ends_with(suffix); })->contents;
+    };
+    std::vector<OutputFile> package = webPackage(material, engine, nlohmann::json::parse(file(".manifest.json")), file(".functions.glsl"),
+                                                 options.uvOrigin == UvOrigin::BottomLeft, r.diagnostics);
+    r.files = r.ok() ? inFolder(engine, std::move(r.files), std::move(package)) : std::vector<OutputFile>{};
+    return r;
+}
+
 }  // namespace
+
+std::string slotRole(const std::string& slot, SlotKind kind) {
+    static const std::map<std::string, std::string> roles = {
+        {"albedo", "albedo"},       {"basecolor", "albedo"},  {"base_color", "albedo"},  {"diffuse", "albedo"},
+        {"roughness", "roughness"}, {"metallic", "metallic"}, {"metalness", "metallic"}, {"ao", "ao"},
+        {"occlusion", "ao"},        {"emission", "emission"}, {"emissive", "emission"}};
+    if (kind == SlotKind::Normal) return "normal";
+    auto role = roles.find(slot);
+    if (role == roles.end() || (kind == SlotKind::Color) != (role->second == "albedo" || role->second == "emission")) return "";
+    return role->second;
+}
+
+Diagnostic unusedSlot(const Material& material, const std::string& slot, std::string_view engine, const std::string& function) {
+    return Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "",
+                            "slot `" + slot + "` has no " + std::string(engine) +
+                                " input (docs/engines.md#slots-and-engine-inputs); its function `" + function +
+                                "` is in the package but not called");
+}
 
 std::string_view toString(Engine engine) { return kNames[int(engine)]; }
 
 std::vector<std::string_view> engineNames() { return {std::begin(kNames), std::end(kNames)}; }
 
 std::optional<Engine> engineNamed(std::string_view name) {
-    for (int i = 0; i < 3; ++i)
+    for (size_t i = 0; i < std::size(kNames); ++i)
         if (name == kNames[i]) return Engine(i);
     return std::nullopt;
 }
@@ -178,6 +214,7 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
     options.functions = true;
     options.bake = true;  // the engine's material has no block for hexc's parameters
     options.targets = {Target::Glsl};
+    if (isWebEngine(engine)) return compileForWeb(material, engine, options);
     options.glslVersion = 330;
     options.glslEs = false;
     CompileResult r = compile(material, options);

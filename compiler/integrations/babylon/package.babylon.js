@@ -1,0 +1,106 @@
+// hexc package for Babylon.js: a material plugin that gives a PBRMaterial this material's hex-tiled slots, keeping
+// Babylon's lighting, shadows, environment and image processing.
+//
+//   import { createMaterial } from './MATERIAL.babylon.js';
+//   mesh.material = await createMaterial('rock', scene);        // a PBRMaterial with the plugin
+//   // or: new HexcPlugin(existingPbrMaterial, await loadTextures(scene));
+//
+// Conventions (docs/engines.md#babylonjs): the mesh's uv as Babylon has it, (0, 0) at the bottom-left of the image and
+// v up; hexc's textures are loaded here, as hexc samples them (invertY off; sRGB ones with useSRGBBuffer, so that they
+// are filtered in linear as hexc filters them); the tangent frame is built from the screen-space derivatives of the
+// world position and uv (T along +u, B along +v); the values are linear, and Babylon's image processing encodes them.
+import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
+import { PBRMaterial } from '@babylonjs/core/Materials/PBR/pbrMaterial.js';
+import { Texture } from '@babylonjs/core/Materials/Textures/texture.js';
+
+// The material's data, written by hexc: its slots, which Babylon input each fills, and their GLSL ES 3.00 code.
+const hexc = /* hexc:data */ null;
+
+// The uv hexc's functions take, from Babylon's (v up the image, origin at the bottom-left).
+const kUv = hexc.uv_origin === 'bottom-left' ? 'vHexcUv' : 'vec2(vHexcUv.x, 1.0 - vHexcUv.y)';
+
+// The tangent frame from screen-space derivatives (Schüler's cotangent frame), its sign taken from the triangle's
+// orientation on screen so that T runs along +u and B along +v in Babylon's left-handed world as in a right-handed one.
+const kTangentFrame = `
+vec3 hexcPerturb(vec3 N, vec3 p, vec2 uv, vec3 n) {
+  vec3 dp1 = dFdx(p), dp2 = dFdy(p);
+  vec2 duv1 = dFdx(uv), duv2 = dFdy(uv);
+  vec3 dp2perp = cross(dp2, N), dp1perp = cross(N, dp1);
+  vec3 T = dp2perp * duv1.x + dp1perp * duv2.x;
+  vec3 B = dp2perp * duv1.y + dp1perp * duv2.y;
+  float scale = sign(dot(cross(dp1, dp2), N)) * inversesqrt(max(max(dot(T, T), dot(B, B)), 1e-30));
+  return normalize(T * scale * n.x + B * scale * n.y + N * n.z);
+}`;
+
+// Where each role's value enters PBRMaterial's fragment shader: a regular expression over its code (a plugin's "!"
+// injection point) and what replaces the match, given the slot's call.
+const roles = {
+  albedo: ['vec3 surfaceAlbedo=albedoOpacityOut\\.surfaceAlbedo;', (call) => `vec3 surfaceAlbedo=albedoOpacityOut.surfaceAlbedo*${call}.rgb;`],
+  // Babylon's microSurface is 1 - roughness; both are read after this point.
+  roughness: ['float roughness=reflectivityOut\\.roughness;',
+    (call) => `float roughness=reflectivityOut.roughness*${call};microSurface=1.0-roughness;`],
+  // After the geometric normal is final (pbrBlockNormalFinal) and before anything reads it.
+  normal: ['albedoOpacityOutParams albedoOpacityOut;', (call) => `normalW=hexcPerturb(normalW,vPositionW,vHexcUv,${call});albedoOpacityOutParams albedoOpacityOut;`],
+};
+
+// Loads the slots' textures as hexc samples them: repeat, trilinear, the image's first row at t = 0 (invertY off,
+// whatever the uv origin: hexc flips v itself for bottom-left), sRGB ones decoded by the sampler before filtering.
+export async function loadTextures(scene, base = import.meta.url) {
+  const textures = {};
+  await Promise.all(hexc.textures.map((t) => new Promise((resolve, reject) => {
+    textures[t.uniform] = new Texture(new URL(t.file, base).href, scene, {
+      noMipmap: false, invertY: false, samplingMode: Texture.TRILINEAR_SAMPLINGMODE, useSRGBBuffer: t.colorspace === 'srgb',
+      onLoad: resolve, onError: (message) => reject(new Error(`hexc: ${t.file}: ${message}`)),
+    });
+  })));
+  return textures;
+}
+
+// The plugin: hexc's functions and textures in PBRMaterial's shaders, each slot's value at its role's input.
+export class HexcPlugin extends MaterialPluginBase {
+  constructor(material, textures) {
+    super(material, 'Hexc', 200, { HEXC: false });
+    this.textures = textures;
+    this._enable(true);
+    for (const name of hexc.unmapped) console.warn(`hexc: Babylon.js has no input for slot ${name} of ${hexc.material}`);
+  }
+
+  getClassName() { return 'HexcPlugin'; }
+
+  prepareDefines(defines) { defines.HEXC = true; }
+
+  getAttributes(attributes) { if (!attributes.includes('uv')) attributes.push('uv'); }
+
+  getSamplers(samplers) { samplers.push(...Object.keys(this.textures)); }
+
+  getUniforms() { return { ubo: [] }; }
+
+  isReadyForSubMesh() { return Object.values(this.textures).every((t) => t.isReady()); }
+
+  bindForSubMesh(uniformBuffer) {
+    for (const [uniform, texture] of Object.entries(this.textures)) uniformBuffer.setTexture(uniform, texture);
+  }
+
+  getCustomCode(shaderType) {
+    if (shaderType === 'vertex') {
+      return { CUSTOM_VERTEX_DEFINITIONS: '#ifndef UV1\nattribute vec2 uv;\n#endif\nvarying vec2 vHexcUv;', CUSTOM_VERTEX_MAIN_END: 'vHexcUv = uv;' };
+    }
+    const code = { CUSTOM_FRAGMENT_DEFINITIONS: `varying vec2 vHexcUv;\n${hexc.glsl}\n${kTangentFrame}` };
+    for (const slot of hexc.slots) {
+      const [point, replace] = roles[slot.role];
+      code[`!${point}`] = replace(slot.call.replace('UV', kUv));
+    }
+    return code;
+  }
+}
+
+// A PBRMaterial named `name` with the plugin; metallic 0 and roughness 1 unless `parameters` say otherwise (the
+// roughness slot multiplies Babylon's roughness).
+export async function createMaterial(name, scene, parameters = {}, base = import.meta.url) {
+  const material = new PBRMaterial(name, scene);
+  Object.assign(material, { metallic: 0, roughness: 1 }, parameters);
+  new HexcPlugin(material, await loadTextures(scene, base));
+  return material;
+}
+
+export const data = hexc;

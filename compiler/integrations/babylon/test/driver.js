@@ -1,0 +1,94 @@
+// The Babylon.js test driver: draws a package's material on a camera-facing square and reads the canvas back.
+// `render` draws the uv rectangle given in Babylon's uv (v up), top row first; `input` replaces the output by one input
+// as PBRMaterial's shader holds it after the package filled it (linear values, after lighting and image processing).
+import { Camera } from '@babylonjs/core/Cameras/camera.js';
+import { FreeCamera } from '@babylonjs/core/Cameras/freeCamera.js';
+import { Engine } from '@babylonjs/core/Engines/engine.js';
+import { DirectionalLight } from '@babylonjs/core/Lights/directionalLight.js';
+import { HemisphericLight } from '@babylonjs/core/Lights/hemisphericLight.js';
+import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
+import { Color3, Color4 } from '@babylonjs/core/Maths/math.color.js';
+import { Vector3 } from '@babylonjs/core/Maths/math.vector.js';
+import { CreateSphere } from '@babylonjs/core/Meshes/Builders/sphereBuilder.js';
+import { Mesh } from '@babylonjs/core/Meshes/mesh.js';
+import { VertexData } from '@babylonjs/core/Meshes/mesh.vertexData.js';
+import { Scene } from '@babylonjs/core/scene.js';
+
+// Babylon's world is left-handed: the camera at z = -3 looks along +z, x right and y up on screen; the square faces -z.
+const kProbes = {
+  albedo: 'baseColor', // the base colour PBRMaterial reads the albedo from (surfaceAlbedo is then scaled by 1 - F0)
+  roughness: 'vec3(roughness)',
+  normal: 'vec3(normalW.x, normalW.y, -normalW.z) * 0.5 + 0.5', // world to the square's tangent space: T = +x, B = +y, N = -z
+};
+
+class Probe extends MaterialPluginBase {
+  constructor(material, input) {
+    super(material, 'HexcProbe', 300, { HEXC_PROBE: false });
+    this.input = input;
+    this._enable(true);
+  }
+
+  getClassName() { return 'HexcProbe'; }
+
+  prepareDefines(defines) { defines.HEXC_PROBE = true; }
+
+  getCustomCode(shaderType) {
+    return shaderType === 'fragment' ? { CUSTOM_FRAGMENT_BEFORE_FRAGCOLOR: `finalColor = vec4(${kProbes[this.input]}, 1.0);` } : null;
+  }
+}
+
+// A 2x2 square at z = 0; its corners' uv span `uv` = [u0, vTop, u1, vBottom].
+function square(scene, uv) {
+  const [u0, vTop, u1, vBottom] = uv;
+  const data = new VertexData();
+  data.positions = [-1, 1, 0, 1, 1, 0, -1, -1, 0, 1, -1, 0];
+  data.normals = [0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1];
+  data.uvs = [u0, vTop, u1, vTop, u0, vBottom, u1, vBottom];
+  data.indices = [0, 1, 2, 1, 3, 2];
+  const mesh = new Mesh('square', scene);
+  data.applyToMesh(mesh);
+  return mesh;
+}
+
+window.hexcDriver = {
+  // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light.
+  async render({ module, width, height, uv, input, light, encoding, sphere }) {
+    const errors = [];
+    const consoleError = console.error;
+    console.error = (...args) => { errors.push(args.join(' ')); consoleError(...args); };
+    const canvas = document.createElement('canvas');
+    canvas.width = width;
+    canvas.height = height;
+    document.body.appendChild(canvas);
+    const engine = new Engine(canvas, false, { preserveDrawingBuffer: true, adaptToDeviceRatio: false });
+    try {
+      const pkg = await import(module);
+      const scene = new Scene(engine);
+      scene.clearColor = new Color4(0, 0, 0, 1);
+      scene.ambientColor = new Color3(0, 0, 0);
+      scene.imageProcessingConfiguration.isEnabled = encoding === 'srgb';
+      const camera = new FreeCamera('camera', new Vector3(0, 0, -3), scene); // orthographic: the distance only clears the sphere
+      camera.setTarget(Vector3.Zero());
+      camera.mode = Camera.ORTHOGRAPHIC_CAMERA;
+      Object.assign(camera, { orthoLeft: -1, orthoRight: 1, orthoTop: 1, orthoBottom: -1, minZ: 0.1, maxZ: 10 });
+      const material = await pkg.createMaterial('hexc', scene);
+      material.backFaceCulling = false;
+      if (input) new Probe(material, input);
+      if (light) new DirectionalLight('sun', new Vector3(-light[0], -light[1], light[2]), scene).intensity = 2.5; // towards the light: (x, y, -z)
+      (sphere ? CreateSphere('sphere', { diameter: 1.9, segments: 48 }, scene) : square(scene, uv)).material = material;
+      if (sphere) new HemisphericLight('sky', new Vector3(0, 1, 0), scene).intensity = 0.4;
+      await Promise.race([scene.whenReadyAsync(), new Promise((_, reject) => setTimeout(() => reject(new Error('not ready: ' + errors.join('\n'))), 60000))]);
+      scene.render();
+      const gl = engine._gl;
+      const pixels = new Uint8Array(width * height * 4);
+      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      let text = '';
+      for (let i = 0; i < pixels.length; i += 0x8000) text += String.fromCharCode(...pixels.subarray(i, i + 0x8000));
+      return { pixels: btoa(text), errors: JSON.stringify(errors) };
+    } finally {
+      console.error = consoleError;
+      engine.dispose();
+      canvas.remove();
+    }
+  },
+};

@@ -1,0 +1,81 @@
+// hexc package for three.js: a MeshStandardMaterial (or any built-in material with the same shader chunks) whose
+// slots are this material's hex-tiled functions, keeping three.js's lighting, shadows and environment.
+//
+//   import { createMaterial } from './MATERIAL.three.js';
+//   mesh.material = await createMaterial({ metalness: 0 });   // MeshStandardMaterial parameters
+//
+// Conventions (docs/engines.md#threejs): the mesh's uv as three.js has it, (0, 0) at the bottom-left of the image and
+// v up; hexc's textures are loaded here, as hexc samples them; the tangent frame is three.js's own (its getTangentFrame
+// or the geometry's tangents), its bitangent along +v; the values are linear and three.js encodes the canvas output.
+import * as THREE from 'three';
+
+// The material's data, written by hexc: its slots, which three.js input each fills, and their GLSL ES 3.00 code.
+const hexc = /* hexc:data */ null;
+
+// What replaces the chunk of each role's input, given the slot's call. The normal map keeps three.js's chunk (normalScale,
+// its tbn with T along +u and B along +v) and reads hexc's tangent-space normal instead of the texture.
+const kNormalRead = 'vec3 mapN = texture2D( normalMap, vNormalMapUv ).xyz * 2.0 - 1.0;';
+function replaced(text, what, by) {
+  if (!text.includes(what)) throw new Error(`hexc: this three.js has no \`${what}\` (the package is written for r187)`);
+  return text.replace(what, by);
+}
+const roles = {
+  albedo: ['map_fragment', (call) => `diffuseColor *= ${call};`],
+  roughness: ['roughnessmap_fragment', (call) => `float roughnessFactor = roughness * ${call};`],
+  metallic: ['metalnessmap_fragment', (call) => `float metalnessFactor = metalness * ${call};`],
+  ao: ['aomap_fragment', (call) => `reflectedLight.indirectDiffuse *= ${call};`],
+  emission: ['emissivemap_fragment', (call) => `totalEmissiveRadiance *= ${call}.rgb;`],
+  normal: ['normal_fragment_maps', (call) => replaced(THREE.ShaderChunk.normal_fragment_maps, kNormalRead, `vec3 mapN = ${call};`)],
+};
+
+// The uv hexc's functions take, from three.js's (v up the image, origin at the bottom-left).
+function hexcUv() {
+  return hexc.uv_origin === 'bottom-left' ? 'vUv' : 'vec2(vUv.x, 1.0 - vUv.y)';
+}
+
+// Loads the slots' textures, as hexc samples them: repeat, trilinear, sRGB decoded by the sampler where the slot is
+// sRGB, and the image's first row at t = 0 (flipY off, whatever the uv origin: hexc flips v itself for bottom-left).
+export async function loadTextures(base = import.meta.url, loader = new THREE.TextureLoader()) {
+  const textures = {};
+  await Promise.all(hexc.textures.map(async (t) => {
+    const texture = await loader.loadAsync(new URL(t.file, base).href);
+    texture.flipY = false;
+    texture.wrapS = texture.wrapT = THREE.RepeatWrapping;
+    texture.magFilter = THREE.LinearFilter;
+    texture.minFilter = THREE.LinearMipmapLinearFilter;
+    texture.colorSpace = t.colorspace === 'srgb' ? THREE.SRGBColorSpace : THREE.NoColorSpace;
+    textures[t.uniform] = texture;
+  }));
+  return textures;
+}
+
+// Gives `material` the hex-tiled slots: its shader chunks for each slot's role read hexc's functions instead.
+export function applyHexc(material, textures) {
+  material.defines = { ...material.defines, USE_UV: '' };
+  // three.js builds the tangent frame and the normal uniforms only for a material with a normal map: the hexc
+  // texture stands in for it (its texels are never read through it).
+  const normal = hexc.slots.find((s) => s.role === 'normal');
+  if (normal && !material.normalMap) material.normalMap = textures[normal.uniform];
+  const previous = material.onBeforeCompile;
+  material.onBeforeCompile = (shader, renderer) => {
+    previous.call(material, shader, renderer);
+    for (const [uniform, texture] of Object.entries(textures)) shader.uniforms[uniform] = { value: texture };
+    let fragment = replaced(shader.fragmentShader, 'void main() {', `${hexc.glsl}\nvoid main() {`);
+    for (const slot of hexc.slots) {
+      const [chunk, code] = roles[slot.role];
+      fragment = replaced(fragment, `#include <${chunk}>`, code(slot.call.replace('UV', hexcUv())));
+    }
+    shader.fragmentShader = fragment;
+  };
+  const key = material.customProgramCacheKey.bind(material);
+  material.customProgramCacheKey = () => `${key()}|hexc:${hexc.material}:${hexc.uv_origin}`;
+  for (const name of hexc.unmapped) console.warn(`hexc: three.js has no input for slot ${name} of ${hexc.material}`);
+  return material;
+}
+
+// A MeshStandardMaterial with `parameters`, its slots hex-tiled.
+export async function createMaterial(parameters = {}, base = import.meta.url) {
+  return applyHexc(new THREE.MeshStandardMaterial(parameters), await loadTextures(base));
+}
+
+export const data = hexc;

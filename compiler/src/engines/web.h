@@ -1,0 +1,17 @@
+#pragma once
+// The web engines' packages (three.js, Babylon.js; docs/engines.md): the engine's ES module
+// (compiler/integrations/<engine>/package.<engine>.js) filled with the material's functions in GLSL ES 3.00, the
+// textures they read and the engine input each slot fills; beside it, the slots' textures it loads.
+#include <nlohmann/json.hpp>
+
+#include "hexc/engines.h"
+
+namespace hexc {
+
+// The package's files, named without the "<engine>/" folder: the module, and a copy of each slot texture the
+// functions read (a packed texture is among the functions output's files already). `manifest` and `glsl` are the
+// functions output's for GLSL ES 3.00. A slot the engine has no input for is reported in `diagnostics`.
+std::vector<OutputFile> webPackage(const Material& material, Engine engine, const nlohmann::json& manifest, const std::string& glsl,
+                                   bool uvBottomLeft, Diagnostics& diagnostics);
+
+}  // namespace hexc

@@ -1,0 +1,231 @@
+"""hexc's packages for the web engines (three.js, Babylon.js), run in headless Chromium (WebGL 2 on SwiftShader): each
+slot's value through the engine's own material input matches hexc's fp64 reference, and a dome normal map under a
+known light is lit from the light's side, with the package written for either uv origin.
+
+Usage: web_test.py HEXC ENGINE [--screenshot PNG]   (from the source root; ENGINE is threejs or babylon)
+"""
+import itertools
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from web_support import (E_S, FileServer, Page, blend_tolerance, read_pfm, texture_bounds, write_dome_normal_map,  # noqa: E402
+                         write_png)
+
+HEXC = ENGINE = SCREENSHOT = None
+SERVER = PAGE = None
+PACKAGES = None
+
+# Rock's textures are 256^2 at tiling 4: 1024 texels per uv unit. 96 pixels over 96 * 0.75 / 1024 uv is 0.75 texel per
+# pixel: magnified, every fetch reads mip level 0 only, so the mip chain the engine builds plays no part.
+SIZE = 96
+MODULE_SUFFIX = {"threejs": "three", "babylon": "babylon"}  # the package's module: <material>.<suffix>.js
+ORIGINS = ("top-left", "bottom-left")
+
+
+def package(material, origin):
+    """The folder hexc writes `material`'s package for ENGINE into, for the given uv origin; its module's URL."""
+    with open(material) as f:
+        name = json.load(f)["name"]
+    folder = os.path.join(PACKAGES, "%s-%s" % (name, origin))
+    if not os.path.isdir(folder):
+        origin_flag = ["--uv-bottom-left"] if origin == "bottom-left" else []
+        subprocess.run([HEXC, material, "--engine", ENGINE, *origin_flag, "-o", folder, "-q"], check=True)
+    return "/pkg/%s-%s/%s/%s.%s.js" % (name, origin, ENGINE, name, MODULE_SUFFIX[ENGINE])
+
+
+def engine_uv(rect, origin):
+    """The engine's uv (v up the image) at the top and bottom edges of hexc's uv rectangle [u0, v0, u1, v1] (v down the
+    image): [u0, v at the top, u1, v at the bottom]. With the origin at the bottom-left hexc takes the engine's uv as it
+    is and flips v itself (v_hexc = 1 - v); with the origin at the top-left the package does."""
+    u0, v0, u1, v1 = rect
+    return [u0, 1 - v0, u1, 1 - v1]
+
+
+def reference(material, slot, output, rect, size=SIZE):
+    path = os.path.join(PACKAGES, "%s-%s-%s.pfm" % (os.path.basename(material), slot, output))
+    subprocess.run([HEXC, "render", material, "--reference", "--output", output, "--slot", slot, "--size", "%dx%d" % (size, size),
+                    "--uv-rect", ",".join(map(str, rect)), "-o", path, "-q"], check=True)
+    return read_pfm(path)[2]
+
+
+def slot_of(material, name):
+    with open(material) as f:
+        doc = json.load(f)
+    entry = next(s for s in doc["slots"] if s["name"] == name)
+    texture = os.path.join(os.path.dirname(material), entry["texture"])
+    srgb = entry.get("colorspace", "srgb" if entry["kind"] == "color" else "linear") == "srgb"
+    return {**doc.get("hextiling", {}), **entry.get("hextiling", {})}, texture, srgb
+
+
+def dome_material(folder):
+    """One rotated, hex-tiled normal slot of a dome normal map (web_support.write_dome_normal_map)."""
+    os.makedirs(os.path.join(folder, "textures"), exist_ok=True)
+    write_dome_normal_map(os.path.join(folder, "textures", "dome_normal.png"))
+    path = os.path.join(folder, "dome.json")
+    with open(path, "w") as f:
+        json.dump({"name": "dome", "hextiling": {"tiling": [2, 2], "rotation": 1.0},
+                   "slots": [{"name": "normal", "texture": "textures/dome_normal.png", "kind": "normal"}]}, f)
+    return path
+
+
+def mixed_material(folder):
+    """Packed slots (rock's albedo and roughness in one texture), and a non-square (96x64) DirectX-convention dome normal
+    map: what an engine package must bind and orient besides rock's plain case."""
+    os.makedirs(os.path.join(folder, "textures"), exist_ok=True)
+    write_dome_normal_map(os.path.join(folder, "textures", "dome_dx.png"), 96, 64, directx=True)
+    textures = os.path.abspath("materials/textures")
+    path = os.path.join(folder, "mixed.json")
+    with open(path, "w") as f:
+        json.dump({"name": "mixed", "pack": True, "hextiling": {"tiling": [4, 4], "rotation": 1.0, "falloff": 0.75},
+                   "slots": [{"name": "albedo", "texture": os.path.join(textures, "rock_albedo.png"), "kind": "color"},
+                             {"name": "roughness", "texture": os.path.join(textures, "rock_roughness.png"), "kind": "scalar",
+                              "channel": "r"},
+                             {"name": "normal", "texture": "textures/dome_dx.png", "kind": "normal", "flip_y": True,
+                              "hextiling": {"tiling": [2, 2]}}]}, f)
+    return path
+
+
+def correlation(a, b):
+    ma, mb = sum(a) / len(a), sum(b) / len(b)
+    cov = sum((x - ma) * (y - mb) for x, y in zip(a, b))
+    return cov / math.sqrt(sum((x - ma) ** 2 for x in a) * sum((y - mb) ** 2 for y in b))
+
+
+class Engine(unittest.TestCase):
+    def setUp(self):
+        self.started = time.monotonic()
+
+    def tearDown(self):
+        print("  %s: %.1f s" % (self.id().rsplit(".", 1)[-1], time.monotonic() - self.started))
+
+    def test_values_match_the_reference(self):
+        """Each slot through the engine's input, unlit, against the fp64 reference (linear values, 8-bit canvas)."""
+        rock, dome, mixed = "materials/rock.json", dome_material(PACKAGES), mixed_material(PACKAGES)
+        # (material, slot, the engine input the driver reads, the reference's output, texels per uv unit along u)
+        cases = (("albedo", rock, "albedo", "albedo", 1024), ("roughness", rock, "roughness", "albedo", 1024),
+                 ("normal", dome, "normal", "normal", 128), ("albedo", mixed, "albedo", "albedo", 1024),
+                 ("roughness", mixed, "roughness", "albedo", 1024), ("normal", mixed, "normal", "normal", 192))
+        for (slot, material, engine_input, output, texels), origin in itertools.product(cases, ORIGINS):
+            with self.subTest(material=os.path.basename(material), slot=slot, origin=origin):
+                rect = [0.3, 0.45, 0.3 + SIZE * 0.75 / texels, 0.45 + SIZE * 0.75 / texels]
+                got = PAGE.render(module=package(material, origin), width=SIZE, height=SIZE, uv=engine_uv(rect, origin),
+                                  input=engine_input, encoding="linear")
+                ref = reference(material, slot, output, rect)
+                hex, texture, srgb = slot_of(material, slot)
+                spread, max_deriv, min_z = texture_bounds(texture, srgb)
+                # The canvas is RGBA8 and takes the linear value as it is: rounding to 8 bits adds at most 0.5/255.
+                # Texture filtering as in hexc edit's page test (tests/edit/page_test.py): E_S per sample, through the
+                # blend's weights by blend_tolerance. SwiftShader and ANGLE filter as lavapipe does at level 0, and an
+                # sRGB texture is decoded before filtering (three.js: SRGB8_ALPHA8; Babylon: useSRGBBuffer).
+                if output == "normal":
+                    # Listing 9's derivative d = -xy / z is off by at most ed = 2 E_S (1 + max|d|) / min z per texel, the
+                    # slope metric by sqrt(2) ed, the blend's samples spread by 2 max|d| per component. n = (-d, 1) / |(-d, 1)|
+                    # moves by at most |dd| (the normalisation's derivative has norm 1 / |(-d, 1)| <= 1), and |dd| <=
+                    # sqrt(2) times the per-component bound; the encoding n * 0.5 + 0.5 halves it. The engine's tangent frame
+                    # on this camera-facing square is exact to float32 rounding (T = +x, B = +y, N = +z).
+                    ed = 2 * E_S * (1 + max_deriv) / min_z
+                    tolerance = 0.5 * math.sqrt(2) * blend_tolerance(ed, math.sqrt(2) * ed, hex, 2 * max_deriv) + 0.5 / 255
+                else:
+                    tolerance = blend_tolerance(E_S, E_S, hex, spread) + 0.5 / 255
+                errors = [abs(g[c] / 255 - r[c]) for gr, rr in zip(got, ref) for g, r in zip(gr, rr) for c in range(3)]
+                worst, mean = max(errors), sum(errors) / len(errors)
+                print("  %s %-10s %-9s %-11s max error %.2f/255, mean %.3f/255, bound %.2f/255"
+                      % (ENGINE, os.path.basename(material), slot, origin, worst * 255, mean * 255, tolerance * 255))
+                self.assertLessEqual(worst, tolerance)
+                self.assertGreater(max(r[c] for row in ref for r in row for c in range(3)) - min(r[c] for row in ref for r in row for c in range(3)),
+                                   10 * tolerance)  # not flat
+
+    def test_dome_is_lit_from_the_light_side(self):
+        """A dome normal map, hex-tiled with rotation, under one directional light from +x, then from +y (up the
+        screen), for a package of each uv origin: the brightness follows n . L of the reference's normals, and the
+        side of each dome that faces the light is the brighter one."""
+        dome = dome_material(PACKAGES)
+        rect = [0.1, 0.2, 1.1, 1.2]  # 128 texels across 96 pixels at tiling 2: minified a little, several domes
+        normals = reference(dome, "normal", "normal", rect)  # tangent space, y up the screen
+        for origin in ORIGINS:
+            for light in ([1.0, 0.0, 1.0], [0.0, 1.0, 1.0]):
+                with self.subTest(origin=origin, light=light):
+                    got = PAGE.render(module=package(dome, origin), width=SIZE, height=SIZE, uv=engine_uv(rect, origin), light=light,
+                                      encoding="linear")
+                    brightness = [p[0] / 255 for row in got for p in row]
+                    axis = 0 if light[0] else 1
+                    tilt = [2 * n[axis] - 1 for row in normals for n in row]  # the normal's component towards the light
+                    towards = [b for b, t in zip(brightness, tilt) if t > 0.05]
+                    away = [b for b, t in zip(brightness, tilt) if t < -0.05]
+                    r = correlation(brightness, tilt)
+                    print("  %s %s light %s: correlation with the reference's tilt %.3f, mean towards %.3f, away %.3f"
+                          % (ENGINE, origin, light, r, sum(towards) / len(towards), sum(away) / len(away)))
+                    # Lambert on a grey surface is linear in n . L = (n_axis + n_z) / sqrt(2); n_z varies far less than
+                    # n_axis over a dome of slope 0.4 (1 - n_z <= 0.08 where |n_axis| reaches 0.37), so the brightness
+                    # follows the tilt closely; a normal lit upside down follows it with the opposite sign.
+                    self.assertGreater(r, 0.9)
+                    self.assertGreater(sum(towards) / len(towards), sum(away) / len(away) + 0.1)
+
+    def test_package_files_and_a_slot_without_input(self):
+        """The package's files; a slot the engine has no input for is reported (HX204) and listed in the module's
+        data, not dropped silently."""
+        folder = os.path.join(PACKAGES, "unmapped")
+        os.makedirs(folder)
+        material = os.path.join(folder, "wet.json")
+        textures = os.path.abspath("materials/textures")
+        with open(material, "w") as f:
+            json.dump({"name": "wet", "slots": [
+                {"name": "albedo", "texture": os.path.join(textures, "rock_albedo.png"), "kind": "color"},
+                {"name": "wetness", "texture": os.path.join(textures, "rock_roughness.png"), "kind": "scalar", "channel": "r"}]}, f)
+        out = os.path.join(folder, "out")
+        run = subprocess.run([HEXC, material, "--engine", ENGINE, "-o", out], check=True, capture_output=True, text=True)
+        self.assertIn("warning[HX204]", run.stderr)
+        self.assertIn("slot `wetness` has no %s input" % {"threejs": "three.js", "babylon": "Babylon.js"}[ENGINE], run.stderr)
+        suffix = MODULE_SUFFIX[ENGINE]
+        self.assertEqual(sorted(os.listdir(os.path.join(out, ENGINE))),
+                         sorted(["wet.albedo.png", "wet.manifest.json", "wet.%s.js" % suffix, "wet.wetness.png"]))
+        with open(os.path.join(out, ENGINE, "wet.%s.js" % suffix)) as f:
+            module = f.read()
+        start = module.index("const hexc = ") + len("const hexc = ")
+        data = json.loads(module[start:module.index(";\n", start)])
+        self.assertEqual(data["unmapped"], ["wetness"])
+        self.assertEqual([s["name"] for s in data["slots"]], ["albedo"])
+
+    def test_lit_screenshot(self):
+        """The rock on a sphere, lit by the engine from the upper right, sRGB as a canvas shows it: for docs/engines.md."""
+        if not SCREENSHOT:
+            self.skipTest("no --screenshot")
+        size = 192
+        got = PAGE.render(module=package("materials/rock.json", "bottom-left"), width=size, height=size, uv=[0, 1, 1, 0],
+                          light=[1.0, 1.0, 1.5], encoding="srgb", sphere=True)
+        write_png(SCREENSHOT, size, size, [[c for p in row for c in p[:3]] for row in got])
+
+
+def main():
+    global HEXC, ENGINE, SCREENSHOT, SERVER, PAGE, PACKAGES
+    args = sys.argv[1:]
+    if "--screenshot" in args:
+        i = args.index("--screenshot")
+        SCREENSHOT = os.path.abspath(args[i + 1])
+        del args[i:i + 2]
+    HEXC, ENGINE = os.path.abspath(args[0]), args[1]
+    PACKAGES = tempfile.mkdtemp(prefix="hexc-%s-" % ENGINE)
+    SERVER = FileServer(PACKAGES)
+    try:
+        PAGE = Page(SERVER, ENGINE)
+        try:
+            result = unittest.main(argv=[sys.argv[0], "-v"], exit=False).result
+        finally:
+            PAGE.quit()
+    finally:
+        SERVER.stop()
+        shutil.rmtree(PACKAGES, ignore_errors=True)
+    sys.exit(0 if result.wasSuccessful() else 1)
+
+
+if __name__ == "__main__":
+    main()
