@@ -431,6 +431,45 @@ TEST_P(MaterialXMode, HextiledimageAndHextilednormalmapMatchTheirReference) {
 
 INSTANTIATE_TEST_SUITE_P(Exec, MaterialXMode, kExecutedTargets, [](const auto& info) { return targetName(info.param); });
 
+// Falloffs 1 - 2^-k (0.75, 0.875), whose gain stable mode multiplies out (k whole): in both modes the gain is the one
+// the reference applies, Perlin's in stable mode, Schlick's in MaterialX mode (which has no such shortcut), colour and
+// normal, magnified, on every target, with the tolerances above.
+class IntegerGain : public testing::TestWithParam<vk::ExecutedTarget> {};
+
+TEST_P(IntegerGain, EachModeAppliesItsGain) {
+    REQUIRE_VULKAN();
+    for (const std::string mode : {"stable", "materialx"})
+        for (const std::string falloff : {"0.75", "0.875"}) {
+            const std::string hex = R"("mode": ")" + mode + R"(", "tiling": 4, "rotation": 0.5, "falloff": )" + falloff;
+            const Material color =
+                material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/rock_albedo.png",
+                "hextiling": {)" +
+                         hex + R"(, "falloffcontrast": 0.4}})");
+            const Material normal =
+                material(R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {)" + hex + "}}");
+            const std::string name = mode + " falloff " + falloff;
+            Check c, n;
+            if (mode == "stable") {
+                c = checkColor(color, false, on(GetParam()));
+                n = checkNormal(normal, false, on(GetParam()));
+            } else {
+                const double es = sampleError(0, false),
+                             ed = 2 * es * (1 + bounds(sampled(normal.slots[0])).maxDeriv) / bounds(sampled(normal.slots[0])).minZ;
+                c = checkAgainstReference(
+                    color, vk::RenderOutput::Albedo, kMagnified, on(GetParam()), 4,
+                    [&](const reference::SlotResult& r, size_t) { return materialxTolerance(r, es, color.slots[0].hex, 4); });
+                n = checkAgainstReference(normal, vk::RenderOutput::Derivative, kMagnified, on(GetParam()), 2,
+                                          [&](const reference::SlotResult&, size_t) { return std::sqrt(2.0) * ed; });
+            }
+            report((name + " color").c_str(), c);
+            report((name + " normal").c_str(), n);
+            EXPECT_LE(c.worstRatio, 1.0) << name;
+            EXPECT_LE(n.worstRatio, 1.0) << name;
+        }
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, IntegerGain, kExecutedTargets, [](const auto& info) { return targetName(info.param); });
+
 // ---- GLSL versions ------------------------------------------------------------------------------------------
 
 // Every OpenGL GLSL version hexc emits, executed (compiled again by glslang, as the Glsl target above) on rock's
