@@ -39,10 +39,12 @@ double schlick(double x, double r) {
     return x < 0.5 ? x / (a + 1) : (a - x) / (a - 1);
 }
 
-// luma_i w_i^7 normalised, then (falloff != 0.5) each through the gain and normalised again.
+// luma_i w_i^7 normalised, then (falloff != 0.5) each through the gain and normalised again. Every luma 0 (MaterialX:
+// 0 / 0): the weights of luma 1, the limit as the three lumas fall to 0 together.
 std::array<double, 3> weights(const std::array<double, 3>& luma, const std::array<double, 3>& w, double falloff) {
     std::array<double, 3> W;
     for (size_t i = 0; i < 3; ++i) W[i] = luma[i] * std::pow(w[i], 7);
+    if (W[0] + W[1] + W[2] == 0) return weights({1, 1, 1}, w, falloff);
     for (int pass = 0; pass < (falloff != 0.5 ? 2 : 1); ++pass) {
         if (pass == 1)
             for (double& x : W) x = schlick(x, falloff);
@@ -87,9 +89,10 @@ SlotResult evaluateMaterialX(const Slot& slot, const SampledTexture& texture, Ve
         if (normal) {
             // MaterialX's tangent frame turned about N by -angle: the normal's xy by R(+angle); its surface gradient.
             const Vec2 m = rotate({2 * x[0] - 1, (slot.flipY ? 1 - x[1] : x[1]) * 2 - 1}, t.angle);
+            // A zero-length texel (MaterialX: NaN) is the flat normal, gradient 0.
             const double z = 2 * x[2] - 1, length = std::sqrt(m[0] * m[0] + m[1] * m[1] + z * z);
             const double g = std::max(1e-8, std::fabs(z / length)) * length;
-            out.samples[i] = {-m[0] / g, -m[1] / g, 0, 1};
+            out.samples[i] = length > 0 ? Rgba{-m[0] / g, -m[1] / g, 0, 1} : Rgba{0, 0, 0, 1};
             continue;
         }
         for (size_t c = 0; srgb && c < 3; ++c) x[c] = encode(x[c]);

@@ -74,8 +74,8 @@ struct HexcParams
     float albedo_falloffcontrast;
 };
 
-constant float _2937 = {};
-constant float4 _2938 = {};
+constant float _3017 = {};
+constant float4 _3018 = {};
 
 struct preview_tiles_frag_out
 {
@@ -92,82 +92,91 @@ struct preview_tiles_frag_in
 fragment preview_tiles_frag_out preview_tiles_frag(preview_tiles_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_albedo [[texture(0)]], texture2d<float> hexcTex_roughness [[texture(1)]], texture2d<float> hexcTex_normal [[texture(2)]], sampler hexcSampler [[sampler(0)]])
 {
     preview_tiles_frag_out out = {};
-    float2 _1298 = in.v_uv * hexcParams.albedo_tiling;
-    float2 _1300 = dfdx(_1298);
-    float2 _1302 = dfdy(_1298);
-    float2 _1371 = _1298 * 3.4641015529632568359375;
-    float _1375 = _1371.y;
-    float2 _1381 = float2(fma(-0.57735025882720947265625, _1375, _1371.x), 1.1547005176544189453125 * _1375);
-    float2 _1392 = floor(_1381);
-    int2 _1393 = int2(_1392);
-    float2 _1397 = _1381 - _1392;
-    float _1398 = _1397.x;
-    float _1399 = _1397.y;
-    float _1410 = -((1.0 - _1398) - _1399);
-    float _1411 = step(0.0, _1410);
-    float _1414 = fma(2.0, _1411, -1.0);
-    float3 _1432 = float3(_1410 * _1414, fma(-_1399, _1414, _1411), fma(-_1398, _1414, _1411));
-    int _1434 = int(_1411);
-    int _1444 = 1 - _1434;
-    spvUnsafeArray<int2, 3> _2606 = spvUnsafeArray<int2, 3>({ _1393 + int2(_1434), _1393 + int2(_1434, _1444), _1393 + int2(_1444, _1434) });
-    spvUnsafeArray<int2, 3> _2584;
-    _2584 = _2606;
-    spvUnsafeArray<HexcTap, 3> _2586;
-    for (int _2864 = 0; _2864 < 3; )
+    float2 _1320 = in.v_uv * hexcParams.albedo_tiling;
+    float2 _1322 = dfdx(_1320);
+    float2 _1324 = dfdy(_1320);
+    float2 _1393 = _1320 * 3.4641015529632568359375;
+    float _1397 = _1393.y;
+    float2 _1403 = float2(fma(-0.57735025882720947265625, _1397, _1393.x), 1.1547005176544189453125 * _1397);
+    float2 _1414 = floor(_1403);
+    int2 _1415 = int2(_1414);
+    float2 _1419 = _1403 - _1414;
+    float _1420 = _1419.x;
+    float _1421 = _1419.y;
+    float _1432 = -((1.0 - _1420) - _1421);
+    float _1433 = step(0.0, _1432);
+    float _1436 = fma(2.0, _1433, -1.0);
+    float3 _1454 = float3(_1432 * _1436, fma(-_1421, _1436, _1433), fma(-_1420, _1436, _1433));
+    int _1456 = int(_1433);
+    int _1466 = 1 - _1456;
+    spvUnsafeArray<int2, 3> _2672 = spvUnsafeArray<int2, 3>({ _1415 + int2(_1456), _1415 + int2(_1456, _1466), _1415 + int2(_1466, _1456) });
+    spvUnsafeArray<int2, 3> _2650;
+    _2650 = _2672;
+    spvUnsafeArray<HexcTap, 3> _2652;
+    for (int _2936 = 0; _2936 < 3; )
     {
-        float3 _1612 = fract(float3((float2(_2584[_2864]) + float2(0.123450003564357757568359375)).xyx) * float3(0.103100001811981201171875, 0.10300000011920928955078125, 0.097300000488758087158203125));
-        float3 _1621 = _1612 + float3(dot(_1612, _1612.yzx + float3(33.3300018310546875)));
-        float2 _1630 = fract((_1621.xx + _1621.yz) * _1621.zy);
-        float _1545 = radians(mix(hexcParams.albedo_rotationrange.x, hexcParams.albedo_rotationrange.y, _1630.x)) * hexcParams.albedo_rotation;
-        float _1547 = cos(_1545);
-        float _1549 = sin(_1545);
-        float _1559 = 1.0 / mix(hexcParams.albedo_scalerange.x, hexcParams.albedo_scalerange.y, _1630.y);
-        float _1638 = float(_2584[_2864].y);
-        float2 _1645 = float2(fma(0.5, _1638, float(_2584[_2864].x)), _1638 * 0.866025447845458984375);
-        float2 _1565 = fma(in.v_uv, hexcParams.albedo_tiling, _1645 * float2(-0.288675129413604736328125));
-        float _1653 = _1565.x;
-        float _1658 = _1565.y;
-        float _1678 = _1300.x;
-        float _1683 = _1300.y;
-        float _1703 = _1302.x;
-        float _1708 = _1302.y;
-        _2586[_2864] = HexcTap{ fma(_1645, float2(0.288675129413604736328125), float2(fma(_1547, _1653, -(_1549 * _1658)), fma(_1549, _1653, _1547 * _1658)) * _1559) + (_1630 * hexcParams.albedo_offset), float2(fma(_1547, _1678, -(_1549 * _1683)), fma(_1549, _1678, _1547 * _1683)) * _1559, float2(fma(_1547, _1703, -(_1549 * _1708)), fma(_1549, _1703, _1547 * _1708)) * _1559, float2(_1547, _1549), _1559 };
-        _2864++;
+        float3 _1634 = fract(float3((float2(_2650[_2936]) + float2(0.123450003564357757568359375)).xyx) * float3(0.103100001811981201171875, 0.10300000011920928955078125, 0.097300000488758087158203125));
+        float3 _1643 = _1634 + float3(dot(_1634, _1634.yzx + float3(33.3300018310546875)));
+        float2 _1652 = fract((_1643.xx + _1643.yz) * _1643.zy);
+        float _1567 = radians(mix(hexcParams.albedo_rotationrange.x, hexcParams.albedo_rotationrange.y, _1652.x)) * hexcParams.albedo_rotation;
+        float _1569 = cos(_1567);
+        float _1571 = sin(_1567);
+        float _1581 = 1.0 / mix(hexcParams.albedo_scalerange.x, hexcParams.albedo_scalerange.y, _1652.y);
+        float _1660 = float(_2650[_2936].y);
+        float2 _1667 = float2(fma(0.5, _1660, float(_2650[_2936].x)), _1660 * 0.866025447845458984375);
+        float2 _1587 = fma(in.v_uv, hexcParams.albedo_tiling, _1667 * float2(-0.288675129413604736328125));
+        float _1675 = _1587.x;
+        float _1680 = _1587.y;
+        float _1700 = _1322.x;
+        float _1705 = _1322.y;
+        float _1725 = _1324.x;
+        float _1730 = _1324.y;
+        _2652[_2936] = HexcTap{ fma(_1667, float2(0.288675129413604736328125), float2(fma(_1569, _1675, -(_1571 * _1680)), fma(_1571, _1675, _1569 * _1680)) * _1581) + (_1652 * hexcParams.albedo_offset), float2(fma(_1569, _1700, -(_1571 * _1705)), fma(_1571, _1700, _1569 * _1705)) * _1581, float2(fma(_1569, _1725, -(_1571 * _1730)), fma(_1571, _1725, _1569 * _1730)) * _1581, float2(_1569, _1571), _1581 };
+        _2936++;
         continue;
     }
-    float3 _1778 = hexcTex_albedo.sample(hexcSampler, _2586[0].st, gradient2d(_2586[0].dx, _2586[0].dy)).xyz;
-    float3 _1891 = select(_1778 * 12.9200000762939453125, (pow(fast::max(_1778, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1778 > float3(0.003130800090730190277099609375));
-    float4 _2802;
-    _2802.x = _1891.x;
-    _2802.y = _1891.y;
-    _2802.z = _1891.z;
-    float3 _1787 = hexcTex_albedo.sample(hexcSampler, _2586[1].st, gradient2d(_2586[1].dx, _2586[1].dy)).xyz;
-    float3 _1904 = select(_1787 * 12.9200000762939453125, (pow(fast::max(_1787, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1787 > float3(0.003130800090730190277099609375));
-    float4 _2808;
-    _2808.x = _1904.x;
-    _2808.y = _1904.y;
-    _2808.z = _1904.z;
-    float3 _1796 = hexcTex_albedo.sample(hexcSampler, _2586[2].st, gradient2d(_2586[2].dx, _2586[2].dy)).xyz;
-    float3 _1917 = select(_1796 * 12.9200000762939453125, (pow(fast::max(_1796, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1796 > float3(0.003130800090730190277099609375));
-    float4 _2814;
-    _2814.x = _1917.x;
-    _2814.y = _1917.y;
-    _2814.z = _1917.z;
-    float3 _1986 = _1432 * _1432;
-    float3 _1932 = mix(float3(1.0), float3(dot(_2802.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_2808.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_2814.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125))), float3(hexcParams.albedo_falloffcontrast)) * ((_1432 * _1986) * (_1986 * _1986));
-    float3 _1943 = _1932 / float3((_1932.x + _1932.y) + _1932.z);
-    float3 _1849 = ((_2802.xyz * _1943.x) + (_2808.xyz * _1943.y)) + (_2814.xyz * _1943.z);
-    float3 _2362 = select(_1849 * float3(0.077399380505084991455078125), pow(fast::max(_1849 + float3(0.054999999701976776123046875), float3(0.0)) * float3(0.947867333889007568359375), float3(2.400000095367431640625)), _1849 > float3(0.040449999272823333740234375));
-    float _1178 = fast::clamp(hexcTex_roughness.sample(hexcSampler, (in.v_uv * hexcParams.roughness_tiling)).x, 0.0199999995529651641845703125, 1.0);
-    float3 _1183 = fast::normalize(in.v_normal);
-    float3 _1196 = fast::normalize(in.v_tangent.xyz - (_1183 * dot(_1183, in.v_tangent.xyz)));
-    float3 _2481 = (hexcTex_normal.sample(hexcSampler, (in.v_uv * hexcParams.normal_tiling)).xyz * 2.0) - float3(1.0);
-    float3 _2510 = abs(_2481);
-    float3 _2545 = fast::normalize(float3(-((-float2(_2481.xy)) / float2(fast::max(fast::max(_2510.z, 0.0078125 * fast::max(_2510.x, _2510.y)), 9.9999996826552253889678874634872e-21))), 1.0));
-    float3 _1225 = fast::normalize(((_1196 * _2545.x) - ((cross(_1183, _1196) * in.v_tangent.w) * _2545.y)) + (_1183 * _2545.z));
-    float _1232 = fast::max(dot(_1225, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
-    float _1245 = 2.0 / (((_1178 * _1178) * _1178) * _1178);
-    out.o_color = float4((float4(_2362, _2937).xyz * (0.1500000059604644775390625 + _1232)) + float3(0.039999999105930328369140625 * (((pow(fast::max(dot(_1225, float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625)), 0.0), _1245 - 2.0) * (_1245 + 6.0)) * 0.0397887341678142547607421875) * _1232)), 1.0);
+    float3 _1800 = hexcTex_albedo.sample(hexcSampler, _2652[0].st, gradient2d(_2652[0].dx, _2652[0].dy)).xyz;
+    float3 _1913 = select(_1800 * 12.9200000762939453125, (pow(fast::max(_1800, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1800 > float3(0.003130800090730190277099609375));
+    float4 _2868;
+    _2868.x = _1913.x;
+    _2868.y = _1913.y;
+    _2868.z = _1913.z;
+    float3 _1809 = hexcTex_albedo.sample(hexcSampler, _2652[1].st, gradient2d(_2652[1].dx, _2652[1].dy)).xyz;
+    float3 _1926 = select(_1809 * 12.9200000762939453125, (pow(fast::max(_1809, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1809 > float3(0.003130800090730190277099609375));
+    float4 _2874;
+    _2874.x = _1926.x;
+    _2874.y = _1926.y;
+    _2874.z = _1926.z;
+    float3 _1818 = hexcTex_albedo.sample(hexcSampler, _2652[2].st, gradient2d(_2652[2].dx, _2652[2].dy)).xyz;
+    float3 _1939 = select(_1818 * 12.9200000762939453125, (pow(fast::max(_1818, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1818 > float3(0.003130800090730190277099609375));
+    float4 _2880;
+    _2880.x = _1939.x;
+    _2880.y = _1939.y;
+    _2880.z = _1939.z;
+    float3 _2030 = _1454 * _1454;
+    float3 _2048 = (_1454 * _2030) * (_2030 * _2030);
+    float3 _1958 = mix(float3(1.0), float3(dot(_2868.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_2874.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_2880.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125))), float3(hexcParams.albedo_falloffcontrast)) * _2048;
+    float _1966 = (_1958.x + _1958.y) + _1958.z;
+    float3 _2955;
+    if (_1966 > 0.0)
+    {
+        _2955 = _1958 / float3(_1966);
+    }
+    else
+    {
+        _2955 = _2048 / float3((_2048.x + _2048.y) + _2048.z);
+    }
+    float3 _1871 = ((_2868.xyz * _2955.x) + (_2874.xyz * _2955.y)) + (_2880.xyz * _2955.z);
+    float _1200 = fast::clamp(hexcTex_roughness.sample(hexcSampler, (in.v_uv * hexcParams.roughness_tiling)).x, 0.0199999995529651641845703125, 1.0);
+    float3 _1205 = fast::normalize(in.v_normal);
+    float3 _1218 = fast::normalize(in.v_tangent.xyz - (_1205 * dot(_1205, in.v_tangent.xyz)));
+    float3 _2547 = (hexcTex_normal.sample(hexcSampler, (in.v_uv * hexcParams.normal_tiling)).xyz * 2.0) - float3(1.0);
+    float3 _2576 = abs(_2547);
+    float3 _2611 = fast::normalize(float3(-((-float2(_2547.xy)) / float2(fast::max(fast::max(_2576.z, 0.0078125 * fast::max(_2576.x, _2576.y)), 9.9999996826552253889678874634872e-21))), 1.0));
+    float3 _1247 = fast::normalize(((_1218 * _2611.x) - ((cross(_1205, _1218) * in.v_tangent.w) * _2611.y)) + (_1205 * _2611.z));
+    float _1254 = fast::max(dot(_1247, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
+    float _1267 = 2.0 / (((_1200 * _1200) * _1200) * _1200);
+    out.o_color = float4((float4(select(_1871 * float3(0.077399380505084991455078125), pow(fast::max(_1871 + float3(0.054999999701976776123046875), float3(0.0)) * float3(0.947867333889007568359375), float3(2.400000095367431640625)), _1871 > float3(0.040449999272823333740234375)), _3017).xyz * (0.1500000059604644775390625 + _1254)) + float3(0.039999999105930328369140625 * (((pow(fast::max(dot(_1247, float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625)), 0.0), _1267 - 2.0) * (_1267 + 6.0)) * 0.0397887341678142547607421875) * _1254)), 1.0);
     return out;
 }
 
