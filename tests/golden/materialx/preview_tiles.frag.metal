@@ -74,8 +74,7 @@ struct HexcParams
     float albedo_falloffcontrast;
 };
 
-constant float _3017 = {};
-constant float4 _3018 = {};
+constant float _2934 = {};
 
 struct preview_tiles_frag_out
 {
@@ -92,91 +91,76 @@ struct preview_tiles_frag_in
 fragment preview_tiles_frag_out preview_tiles_frag(preview_tiles_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_albedo [[texture(0)]], texture2d<float> hexcTex_roughness [[texture(1)]], texture2d<float> hexcTex_normal [[texture(2)]], sampler hexcSampler [[sampler(0)]])
 {
     preview_tiles_frag_out out = {};
-    float2 _1320 = in.v_uv * hexcParams.albedo_tiling;
-    float2 _1322 = dfdx(_1320);
-    float2 _1324 = dfdy(_1320);
-    float2 _1393 = _1320 * 3.4641015529632568359375;
-    float _1397 = _1393.y;
-    float2 _1403 = float2(fma(-0.57735025882720947265625, _1397, _1393.x), 1.1547005176544189453125 * _1397);
-    float2 _1414 = floor(_1403);
-    int2 _1415 = int2(_1414);
-    float2 _1419 = _1403 - _1414;
-    float _1420 = _1419.x;
-    float _1421 = _1419.y;
-    float _1432 = -((1.0 - _1420) - _1421);
-    float _1433 = step(0.0, _1432);
-    float _1436 = fma(2.0, _1433, -1.0);
-    float3 _1454 = float3(_1432 * _1436, fma(-_1421, _1436, _1433), fma(-_1420, _1436, _1433));
-    int _1456 = int(_1433);
-    int _1466 = 1 - _1456;
-    spvUnsafeArray<int2, 3> _2672 = spvUnsafeArray<int2, 3>({ _1415 + int2(_1456), _1415 + int2(_1456, _1466), _1415 + int2(_1466, _1456) });
-    spvUnsafeArray<int2, 3> _2650;
-    _2650 = _2672;
-    spvUnsafeArray<HexcTap, 3> _2652;
-    for (int _2936 = 0; _2936 < 3; )
+    float2 _1294 = in.v_uv * hexcParams.albedo_tiling;
+    float2 _1296 = dfdx(_1294);
+    float2 _1298 = dfdy(_1294);
+    float2 _1367 = _1294 * 3.4641015529632568359375;
+    float _1371 = _1367.y;
+    float2 _1377 = float2(fma(-0.57735025882720947265625, _1371, _1367.x), 1.1547005176544189453125 * _1371);
+    float2 _1388 = floor(_1377);
+    int2 _1389 = int2(_1388);
+    float2 _1393 = _1377 - _1388;
+    float _1394 = _1393.x;
+    float _1395 = _1393.y;
+    float _1406 = -((1.0 - _1394) - _1395);
+    float _1407 = step(0.0, _1406);
+    float _1410 = fma(2.0, _1407, -1.0);
+    float3 _1428 = float3(_1406 * _1410, fma(-_1395, _1410, _1407), fma(-_1394, _1410, _1407));
+    int _1430 = int(_1407);
+    int _1440 = 1 - _1430;
+    spvUnsafeArray<int2, 3> _2611 = spvUnsafeArray<int2, 3>({ _1389 + int2(_1430), _1389 + int2(_1430, _1440), _1389 + int2(_1440, _1430) });
+    spvUnsafeArray<int2, 3> _2589;
+    _2589 = _2611;
+    spvUnsafeArray<HexcTap, 3> _2591;
+    for (int _2858 = 0; _2858 < 3; )
     {
-        float3 _1634 = fract(float3((float2(_2650[_2936]) + float2(0.123450003564357757568359375)).xyx) * float3(0.103100001811981201171875, 0.10300000011920928955078125, 0.097300000488758087158203125));
-        float3 _1643 = _1634 + float3(dot(_1634, _1634.yzx + float3(33.3300018310546875)));
-        float2 _1652 = fract((_1643.xx + _1643.yz) * _1643.zy);
-        float _1567 = radians(mix(hexcParams.albedo_rotationrange.x, hexcParams.albedo_rotationrange.y, _1652.x)) * hexcParams.albedo_rotation;
-        float _1569 = cos(_1567);
-        float _1571 = sin(_1567);
-        float _1581 = 1.0 / mix(hexcParams.albedo_scalerange.x, hexcParams.albedo_scalerange.y, _1652.y);
-        float _1660 = float(_2650[_2936].y);
-        float2 _1667 = float2(fma(0.5, _1660, float(_2650[_2936].x)), _1660 * 0.866025447845458984375);
-        float2 _1587 = fma(in.v_uv, hexcParams.albedo_tiling, _1667 * float2(-0.288675129413604736328125));
-        float _1675 = _1587.x;
-        float _1680 = _1587.y;
-        float _1700 = _1322.x;
-        float _1705 = _1322.y;
-        float _1725 = _1324.x;
-        float _1730 = _1324.y;
-        _2652[_2936] = HexcTap{ fma(_1667, float2(0.288675129413604736328125), float2(fma(_1569, _1675, -(_1571 * _1680)), fma(_1571, _1675, _1569 * _1680)) * _1581) + (_1652 * hexcParams.albedo_offset), float2(fma(_1569, _1700, -(_1571 * _1705)), fma(_1571, _1700, _1569 * _1705)) * _1581, float2(fma(_1569, _1725, -(_1571 * _1730)), fma(_1571, _1725, _1569 * _1730)) * _1581, float2(_1569, _1571), _1581 };
-        _2936++;
+        float3 _1608 = fract(float3((float2(_2589[_2858]) + float2(0.123450003564357757568359375)).xyx) * float3(0.103100001811981201171875, 0.10300000011920928955078125, 0.097300000488758087158203125));
+        float3 _1617 = _1608 + float3(dot(_1608, _1608.yzx + float3(33.3300018310546875)));
+        float2 _1626 = fract((_1617.xx + _1617.yz) * _1617.zy);
+        float _1541 = radians(mix(hexcParams.albedo_rotationrange.x, hexcParams.albedo_rotationrange.y, _1626.x)) * hexcParams.albedo_rotation;
+        float _1543 = cos(_1541);
+        float _1545 = sin(_1541);
+        float _1555 = 1.0 / mix(hexcParams.albedo_scalerange.x, hexcParams.albedo_scalerange.y, _1626.y);
+        float _1634 = float(_2589[_2858].y);
+        float2 _1641 = float2(fma(0.5, _1634, float(_2589[_2858].x)), _1634 * 0.866025447845458984375);
+        float2 _1561 = fma(in.v_uv, hexcParams.albedo_tiling, _1641 * float2(-0.288675129413604736328125));
+        float _1649 = _1561.x;
+        float _1654 = _1561.y;
+        float _1674 = _1296.x;
+        float _1679 = _1296.y;
+        float _1699 = _1298.x;
+        float _1704 = _1298.y;
+        _2591[_2858] = HexcTap{ fma(_1641, float2(0.288675129413604736328125), float2(fma(_1543, _1649, -(_1545 * _1654)), fma(_1545, _1649, _1543 * _1654)) * _1555) + (_1626 * hexcParams.albedo_offset), float2(fma(_1543, _1674, -(_1545 * _1679)), fma(_1545, _1674, _1543 * _1679)) * _1555, float2(fma(_1543, _1699, -(_1545 * _1704)), fma(_1545, _1699, _1543 * _1704)) * _1555, float2(_1543, _1545), _1555 };
+        _2858++;
         continue;
     }
-    float3 _1800 = hexcTex_albedo.sample(hexcSampler, _2652[0].st, gradient2d(_2652[0].dx, _2652[0].dy)).xyz;
-    float3 _1913 = select(_1800 * 12.9200000762939453125, (pow(fast::max(_1800, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1800 > float3(0.003130800090730190277099609375));
-    float4 _2868;
-    _2868.x = _1913.x;
-    _2868.y = _1913.y;
-    _2868.z = _1913.z;
-    float3 _1809 = hexcTex_albedo.sample(hexcSampler, _2652[1].st, gradient2d(_2652[1].dx, _2652[1].dy)).xyz;
-    float3 _1926 = select(_1809 * 12.9200000762939453125, (pow(fast::max(_1809, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1809 > float3(0.003130800090730190277099609375));
-    float4 _2874;
-    _2874.x = _1926.x;
-    _2874.y = _1926.y;
-    _2874.z = _1926.z;
-    float3 _1818 = hexcTex_albedo.sample(hexcSampler, _2652[2].st, gradient2d(_2652[2].dx, _2652[2].dy)).xyz;
-    float3 _1939 = select(_1818 * 12.9200000762939453125, (pow(fast::max(_1818, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1818 > float3(0.003130800090730190277099609375));
-    float4 _2880;
-    _2880.x = _1939.x;
-    _2880.y = _1939.y;
-    _2880.z = _1939.z;
-    float3 _2030 = _1454 * _1454;
-    float3 _2048 = (_1454 * _2030) * (_2030 * _2030);
-    float3 _1958 = mix(float3(1.0), float3(dot(_2868.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_2874.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_2880.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125))), float3(hexcParams.albedo_falloffcontrast)) * _2048;
-    float _1966 = (_1958.x + _1958.y) + _1958.z;
-    float3 _2955;
-    if (_1966 > 0.0)
+    float3 _1769 = hexcTex_albedo.sample(hexcSampler, _2591[0].st, gradient2d(_2591[0].dx, _2591[0].dy)).xyz;
+    float3 _1773 = hexcTex_albedo.sample(hexcSampler, _2591[1].st, gradient2d(_2591[1].dx, _2591[1].dy)).xyz;
+    float3 _1777 = hexcTex_albedo.sample(hexcSampler, _2591[2].st, gradient2d(_2591[2].dx, _2591[2].dy)).xyz;
+    float3 _1932 = _1428 * _1428;
+    float3 _1950 = (_1428 * _1932) * (_1932 * _1932);
+    float3 _1860 = mix(float3(1.0), float3(dot(_1769, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_1773, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_1777, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125))), float3(hexcParams.albedo_falloffcontrast)) * _1950;
+    float _1868 = (_1860.x + _1860.y) + _1860.z;
+    float3 _2877;
+    if (_1868 > 0.0)
     {
-        _2955 = _1958 / float3(_1966);
+        _2877 = _1860 / float3(_1868);
     }
     else
     {
-        _2955 = _2048 / float3((_2048.x + _2048.y) + _2048.z);
+        _2877 = _1950 / float3((_1950.x + _1950.y) + _1950.z);
     }
-    float3 _1871 = ((_2868.xyz * _2955.x) + (_2874.xyz * _2955.y)) + (_2880.xyz * _2955.z);
-    float _1200 = fast::clamp(hexcTex_roughness.sample(hexcSampler, (in.v_uv * hexcParams.roughness_tiling)).x, 0.0199999995529651641845703125, 1.0);
-    float3 _1205 = fast::normalize(in.v_normal);
-    float3 _1218 = fast::normalize(in.v_tangent.xyz - (_1205 * dot(_1205, in.v_tangent.xyz)));
-    float3 _2547 = (hexcTex_normal.sample(hexcSampler, (in.v_uv * hexcParams.normal_tiling)).xyz * 2.0) - float3(1.0);
-    float3 _2576 = abs(_2547);
-    float3 _2611 = fast::normalize(float3(-((-float2(_2547.xy)) / float2(fast::max(fast::max(_2576.z, 0.0078125 * fast::max(_2576.x, _2576.y)), 9.9999996826552253889678874634872e-21))), 1.0));
-    float3 _1247 = fast::normalize(((_1218 * _2611.x) - ((cross(_1205, _1218) * in.v_tangent.w) * _2611.y)) + (_1205 * _2611.z));
-    float _1254 = fast::max(dot(_1247, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
-    float _1267 = 2.0 / (((_1200 * _1200) * _1200) * _1200);
-    out.o_color = float4((float4(select(_1871 * float3(0.077399380505084991455078125), pow(fast::max(_1871 + float3(0.054999999701976776123046875), float3(0.0)) * float3(0.947867333889007568359375), float3(2.400000095367431640625)), _1871 > float3(0.040449999272823333740234375)), _3017).xyz * (0.1500000059604644775390625 + _1254)) + float3(0.039999999105930328369140625 * (((pow(fast::max(dot(_1247, float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625)), 0.0), _1267 - 2.0) * (_1267 + 6.0)) * 0.0397887341678142547607421875) * _1254)), 1.0);
+    float3 _1812 = ((_1769 * _2877.x) + (_1773 * _2877.y)) + (_1777 * _2877.z);
+    float _1174 = fast::clamp(hexcTex_roughness.sample(hexcSampler, (in.v_uv * hexcParams.roughness_tiling)).x, 0.0199999995529651641845703125, 1.0);
+    float3 _1179 = fast::normalize(in.v_normal);
+    float3 _1192 = fast::normalize(in.v_tangent.xyz - (_1179 * dot(_1179, in.v_tangent.xyz)));
+    float3 _2486 = (hexcTex_normal.sample(hexcSampler, (in.v_uv * hexcParams.normal_tiling)).xyz * 2.0) - float3(1.0);
+    float3 _2515 = abs(_2486);
+    float3 _2550 = fast::normalize(float3(-((-float2(_2486.xy)) / float2(fast::max(fast::max(_2515.z, 0.0078125 * fast::max(_2515.x, _2515.y)), 9.9999996826552253889678874634872e-21))), 1.0));
+    float3 _1221 = fast::normalize(((_1192 * _2550.x) - ((cross(_1179, _1192) * in.v_tangent.w) * _2550.y)) + (_1179 * _2550.z));
+    float _1228 = fast::max(dot(_1221, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
+    float _1241 = 2.0 / (((_1174 * _1174) * _1174) * _1174);
+    out.o_color = float4((float4(select(_1812 * float3(0.077399380505084991455078125), pow(fast::max(_1812 + float3(0.054999999701976776123046875), float3(0.0)) * float3(0.947867333889007568359375), float3(2.400000095367431640625)), _1812 > float3(0.040449999272823333740234375)), _2934).xyz * (0.1500000059604644775390625 + _1228)) + float3(0.039999999105930328369140625 * (((pow(fast::max(dot(_1221, float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625)), 0.0), _1241 - 2.0) * (_1241 + 6.0)) * 0.0397887341678142547607421875) * _1228)), 1.0);
     return out;
 }
 
