@@ -238,7 +238,7 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
 Image referenceImage(const Material& material, const RenderArguments& r) {
     const Slot& s = vk::slotForOutput(material, r.output, r.slot);
     checkTexelBudget(material, TextureStage::Reference, &s);
-    reference::SampledTexture texture(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb));
+    reference::SampledTexture texture(loadTexture(s.texturePath, s.samplerDecodes()));
     const reference::Heights heights(material, s);
     Image image =
         reference::render(s, texture, r.view, r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,

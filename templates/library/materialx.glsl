@@ -53,10 +53,13 @@ float hexcMxGain(float x, float r) {
     return x < 0.5 ? x / (a + 1.0) : (a - x) / (a - 1.0);
 }
 
-// luma * w^7, normalised; then the gain of each weight, normalised again, unless falloff is 0.5.
+// luma * w^7, normalised; then the gain of each weight, normalised again, unless falloff is 0.5. Where every luma is 0
+// (falloffcontrast 1 over three black taps) MaterialX divides 0 by 0; hexc weighs by the lattice alone (luma 1) there,
+// which is the limit of a blend whose taps all have the same luma. The gain keeps a sum of 1 above 0 (one weight is >= 1/3).
 vec3 hexcMxWeights(vec3 luma, vec3 w, float falloff) {
-    vec3 W = luma * hexcPowInt(w, 7);
-    W /= W.x + W.y + W.z;
+    vec3 w7 = hexcPowInt(w, 7), W = luma * w7;
+    float sum = W.x + W.y + W.z;
+    W = sum > 0.0 ? W / sum : w7 / (w7.x + w7.y + w7.z);
     if (falloff != 0.5) {
         W = vec3(hexcMxGain(W.x, falloff), hexcMxGain(W.y, falloff), hexcMxGain(W.z, falloff));
         W /= W.x + W.y + W.z;
@@ -64,27 +67,23 @@ vec3 hexcMxWeights(vec3 luma, vec3 w, float falloff) {
     return W;
 }
 
-// The sRGB transfer function both ways (IEC 61966-2-1, MaterialX's srgb_texture).
+// The sRGB decoding (IEC 61966-2-1, MaterialX's srgb_texture).
 vec3 hexcMxDecode(vec3 c) {
     return mix(c / 12.92, pow(max(c + 0.055, vec3(0.0)) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
 }
 
-vec3 hexcMxEncode(vec3 c) {
-    return mix(c * 12.92, 1.055 * pow(max(c, vec3(0.0)), vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
+// A colour as MaterialX's srgb_texture gives it: decoded when `srgb` (a literal), else as it is.
+vec4 hexcMxDecoded(vec4 c, bool srgb) {
+    return srgb ? vec4(hexcMxDecode(c.rgb), c.a) : c;
 }
 
 // hextiledimage: the three taps weighed by their luma (mixed towards 1 by falloffcontrast), alpha by the lattice alone.
-// `srgb` (a literal): the texture is bound with an sRGB format, whose sampler decodes; MaterialX blends the stored
-// (encoded) values and decodes the blend, so each tap is encoded again first.
+// `srgb` (a literal): an sRGB texture, bound with a linear (UNORM) format as MaterialX samples it: its stored
+// (encoded) texels are filtered and blended, and the blend decoded (the manifest's `"decode": "shader"`).
 vec4 hexcMxColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec3 luma, bool srgb, out vec3 weights) {
     vec4 c1 = textureGrad(sampler2D(tex, samp), t.tap[0].st, t.tap[0].dx, t.tap[0].dy);
     vec4 c2 = textureGrad(sampler2D(tex, samp), t.tap[1].st, t.tap[1].dx, t.tap[1].dy);
     vec4 c3 = textureGrad(sampler2D(tex, samp), t.tap[2].st, t.tap[2].dx, t.tap[2].dy);
-    if (srgb) {
-        c1.rgb = hexcMxEncode(c1.rgb);
-        c2.rgb = hexcMxEncode(c2.rgb);
-        c3.rgb = hexcMxEncode(c3.rgb);
-    }
     vec3 cw = mix(vec3(1.0), vec3(dot(c1.rgb, luma), dot(c2.rgb, luma), dot(c3.rgb, luma)), b.falloffContrast);
     vec3 W = hexcMxWeights(cw, t.w, b.falloff);
     vec3 A = hexcMxWeights(vec3(1.0), t.w, b.falloff);
@@ -94,12 +93,14 @@ vec4 hexcMxColor(texture2D tex, sampler samp, HexcTiles t, HexcBlend b, vec3 lum
 }
 
 // A tile's tangent-space normal as MaterialX turns it (T and B rotated about N by -angle: its xy by R(+angle)), as the
-// surface gradient g = -n.xy / |n.z| of the unit normal. flipY: MaterialX's flip_g (1 - green before decoding).
+// surface gradient g = -n.xy / |n.z| of the unit normal. flipY: MaterialX's flip_g (1 - green before decoding). A texel
+// of zero length (0.5, 0.5, 0.5), which MaterialX normalises to NaN, counts as the flat normal: gradient 0.
 vec2 hexcMxGradient(texture2D tex, sampler samp, HexcTap tap, bool flipY) {
     vec3 m = textureGrad(sampler2D(tex, samp), tap.st, tap.dx, tap.dy).xyz;
     if (flipY) m.y = 1.0 - m.y;
     m = 2.0 * m - 1.0;
-    vec3 n = normalize(vec3(hexcMxRotate(m.xy, tap.rot), m.z));
+    float len = length(m);
+    vec3 n = len > 0.0 ? vec3(hexcMxRotate(m.xy, tap.rot), m.z) / len : vec3(0.0, 0.0, 1.0);
     return -n.xy / max(1e-8, abs(n.z));
 }
 

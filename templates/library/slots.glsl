@@ -10,7 +10,7 @@
 // folded into the functions, which take no struct, and the calls drop it (codegen/assembly.h); ${fields}:
 // the `set` lines filling one; ${heightmap}: the
 // slot whose texture holds its heights (itself when it blends by none); ${channel}: a scalar slot's channel
-// (0 = r ... 3 = a); ${flipy}, ${explicit}: literal switches; ${type}: the slot's result type; ${kind},
+// (0 = r ... 3 = a); ${flipy}, ${explicit}, ${srgb} (MaterialX mode's shader decodes sRGB): literal switches; ${type}: the slot's result type; ${kind},
 // ${projection}; ${uv}: the uv in hexc's convention (origin top-left, v down), from the engine's (CompileOptions::uvOrigin); ${calls}: the `engine.call.*` lines; ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
 // Each slot gets `hexc_${name}(...)` and an overload with `out vec3 weights` (the weights output).
 
@@ -82,8 +82,9 @@ ${settings}
 }
 
 //@ color.plain
+// ${srgb}: MaterialX mode's sRGB texture, bound as stored and decoded after filtering (as MaterialX's <image>).
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights);
+    return hexcMxDecoded(hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights), ${srgb});
 }
 
 //@ color.histogram
@@ -131,7 +132,7 @@ ${settings}
 
 //@ scalar.plain
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights)[${channel}];
+    return hexcMxDecoded(hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights), ${srgb})[${channel}];
 }
 
 //@ normal.hex

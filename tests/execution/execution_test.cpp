@@ -218,7 +218,9 @@ void report(const char* name, const Check& c) {
 // A colour or scalar slot (the material's first) against the reference, in a view whose deepest mip level is `level`.
 Check checkColor(const Material& m, const View& view, int level, const Draw& draw) {
     const Slot& slot = m.slots[0];
-    double es = sampleError(level, slot.colorSpace == ColorSpace::Srgb);
+    // MaterialX mode decodes after filtering the stored texels: their 8-bit linear error, times the sRGB curve's steepest
+    // slope (2.4 / 1.055 at 1).
+    double es = slot.shaderDecodes() ? 2.4 / 1.055 * sampleError(level, false) : sampleError(level, slot.colorSpace == ColorSpace::Srgb);
     // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
     return checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, draw, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
 }
@@ -430,6 +432,67 @@ TEST_P(MaterialXMode, HextiledimageAndHextilednormalmapMatchTheirReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Exec, MaterialXMode, kExecutedTargets, [](const auto& info) { return targetName(info.param); });
+
+// Falloffs 1 - 2^-k (0.75, 0.875), whose gain stable mode multiplies out (k whole): in both modes the gain is the one
+// the reference applies, Perlin's in stable mode, Schlick's in MaterialX mode (which has no such shortcut), colour and
+// normal, magnified, on every target, with the tolerances above.
+class IntegerGain : public testing::TestWithParam<vk::ExecutedTarget> {};
+
+TEST_P(IntegerGain, EachModeAppliesItsGain) {
+    REQUIRE_VULKAN();
+    for (const std::string mode : {"stable", "materialx"})
+        for (const std::string falloff : {"0.75", "0.875"}) {
+            const std::string hex = R"("mode": ")" + mode + R"(", "tiling": 4, "rotation": 0.5, "falloff": )" + falloff;
+            const Material color =
+                material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "textures/rock_albedo.png",
+                "hextiling": {)" +
+                         hex + R"(, "falloffcontrast": 0.4}})");
+            const Material normal =
+                material(R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {)" + hex + "}}");
+            const std::string name = mode + " falloff " + falloff;
+            Check c, n;
+            if (mode == "stable") {
+                c = checkColor(color, false, on(GetParam()));
+                n = checkNormal(normal, false, on(GetParam()));
+            } else {
+                const double es = sampleError(0, false),
+                             ed = 2 * es * (1 + bounds(sampled(normal.slots[0])).maxDeriv) / bounds(sampled(normal.slots[0])).minZ;
+                c = checkAgainstReference(
+                    color, vk::RenderOutput::Albedo, kMagnified, on(GetParam()), 4,
+                    [&](const reference::SlotResult& r, size_t) { return materialxTolerance(r, es, color.slots[0].hex, 4); });
+                n = checkAgainstReference(normal, vk::RenderOutput::Derivative, kMagnified, on(GetParam()), 2,
+                                          [&](const reference::SlotResult&, size_t) { return std::sqrt(2.0) * ed; });
+            }
+            report((name + " color").c_str(), c);
+            report((name + " normal").c_str(), n);
+            EXPECT_LE(c.worstRatio, 1.0) << name;
+            EXPECT_LE(n.worstRatio, 1.0) << name;
+        }
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, IntegerGain, kExecutedTargets, [](const auto& info) { return targetName(info.param); });
+
+// An sRGB colour slot in MaterialX mode: the texture is bound linear (UNORM) and its stored texels filtered, blended
+// and then decoded, as MaterialX does (the reference likewise); filtering decoded texels was 17/255 off magnified and
+// 9/255 minified. falloffcontrast 0, so the weights do not depend on the samples: the encoded blend errs by the
+// sampling error e_s of 8-bit linear data (sampleError), and decoding multiplies an error by at most the sRGB curve's
+// steepest slope, 2.4 / 1.055 = 2.27 (at 1).
+class MaterialXSrgb : public testing::TestWithParam<vk::ExecutedTarget> {};
+
+TEST_P(MaterialXSrgb, FiltersTheStoredTexelsAndDecodesTheBlend) {
+    REQUIRE_VULKAN();
+    const Material m = material(R"({"name": "albedo", "kind": "color", "colorspace": "srgb", "texture": "textures/rock_albedo.png",
+        "hextiling": {"mode": "materialx", "tiling": 4, "rotation": 0.5, "scalerange": [0.7, 1.6], "falloff": 0.75, "falloffcontrast": 0}})");
+    for (bool minified : {false, true}) {
+        const double es = sampleError(minified ? 3 : 1, false);  // levels up to 3 minified and 1 magnified (scales from 0.7)
+        Check c = checkAgainstReference(m, vk::RenderOutput::Albedo, minified ? kMinified : kMagnified, on(GetParam()), 3,
+                                        [&](const reference::SlotResult&, size_t) { return 2.4 / 1.055 * es; });
+        report(minified ? "materialx srgb minified" : "materialx srgb", c);
+        EXPECT_LE(c.worstRatio, 1.0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, MaterialXSrgb, kExecutedTargets, [](const auto& info) { return targetName(info.param); });
 
 // ---- GLSL versions ------------------------------------------------------------------------------------------
 

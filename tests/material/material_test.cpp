@@ -139,7 +139,7 @@ TEST(Validation, WrongTypes) {
     EXPECT_EQ(diagnose(R"({"name": 3, "slots": {}, "hextiling": {"tiling": "big"}})"),
               (std::vector<std::string>{
                   "materials/t.json:1:10: error[HX105]: /name: expected a string, got a number",
-                  "materials/t.json:1:50: error[HX105]: /hextiling/tiling: expected a number > 0 or an array [u, v] of two numbers > 0, "
+                  "materials/t.json:1:50: error[HX105]: /hextiling/tiling: expected a number in [2^-24, 2^24] or an array [u, v] of two, "
                   "got a string",
                   "materials/t.json:1:22: error[HX105]: /slots: expected an array of slots, got an object",
               }));
@@ -285,13 +285,17 @@ TEST(Validation, TilingThatBringsStableModesRangeNearWarns) {
   {"name": "e", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "mode": "paper"}},
   {"name": "f", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "mask": "checker"}},
   {"name": "g", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 40000, "mask": "checker"}},
-  {"name": "h", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "enabled": false}}]})"),
+  {"name": "h", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4096, "enabled": false}},
+  {"name": "i", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 1e7}}]})"),
               (std::vector<std::string>{
                   "materials/t.json:2:86: warning[HX116]: /slots/0/hextiling: with tiling 2048, stable mode's lattice is exact "
                   "only for |u| < 32768 (2^26 / tiling); beyond, tiles come out wrong" +
                       std::string(hint),
                   "materials/t.json:8:86: warning[HX116]: /slots/6/hextiling: with tiling 40000, stable mode's checker is "
                   "exact only for |uv| < 53687 (2^31 / tiling); beyond, tiles come out wrong" +
+                      std::string(hint),
+                  "materials/t.json:10:86: warning[HX116]: /slots/8/hextiling: with tiling 1e+07, stable mode's lattice is exact "
+                  "only for |u| < 6.71 (2^26 / tiling); beyond, tiles come out wrong" +
                       std::string(hint)}));
 }
 

@@ -25,7 +25,8 @@ slot's; the schema has the ones it can state exactly, where both keys are in one
  9. split_coordinates does not work with the "noise" and "noise3" masks,
 10. nor with the material's "triplanar" projection;
 11. height_blend cannot be combined with taps 1 or "adaptive";
-12. taps "adaptive" needs falloff >= 0.5.
+12. taps "adaptive" needs falloff >= 0.5;
+13. rotation times the largest |rotationrange| is at most 3600 degrees.
 
 Run it with the Debian interpreter (/usr/bin/python3), which has python3-jsonschema.
 """
@@ -126,7 +127,7 @@ def is_number(value):
 
 
 def slot_problems(doc, slots):
-    """Rules 3-11 of the docstring, for a document whose slots array is `slots`."""
+    """Rules 3-13 of the docstring, for a document whose slots array is `slots`."""
     found = []
     top = doc.get("hextiling")
     top = top if isinstance(top, dict) else {}
@@ -156,6 +157,10 @@ def slot_problems(doc, slots):
             found.append(f"{at}: taps {taps} does not fit mask {mask!r}; expected {MASK_TAPS[mask]} or 1")
         if taps == "adaptive" and is_number(merged.get("falloff", 0.5)) and merged.get("falloff", 0.5) < 0.5:
             found.append(f"{at}: taps 'adaptive' needs falloff >= 0.5")
+        rotation, span = merged.get("rotation", 1), merged["rotationrange"]
+        if merged.get("enabled", True) is not False and is_number(rotation) and isinstance(span, list) and all(map(is_number, span)) \
+                and rotation * max(map(abs, span), default=0) > 3600:
+            found.append(f"{at}: rotation times rotationrange reaches more than 3600 degrees")
         if split and mask in ("noise", "noise3"):
             found.append(f"{at}: split_coordinates does not work with mask {mask!r}")
         if split and projection == "triplanar":

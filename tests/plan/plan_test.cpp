@@ -94,6 +94,16 @@ TEST(Plan, HoldsEverySnippetAndFeatureOfRock) {
     EXPECT_FALSE(plan.slots[1].falloff);
 }
 
+// MaterialX mode's blend applies Schlick's gain to the falloff itself: falloff 0.75 stays a parameter there.
+TEST(Plan, KeepsTheFalloffOfMaterialXMode) {
+    Material m = rock();
+    m.slots[0].hex.mode = HashMode::MaterialX;
+    ShaderPlan plan = planShader(m, {});
+    EXPECT_TRUE(plan.slots[0].gain);
+    EXPECT_EQ(plan.slots[0].gainInt, 0);
+    EXPECT_EQ(param(plan, plan.slots[0].falloff).value, std::vector<double>{0.75});
+}
+
 TEST(Plan, LeavesOutTheFeaturesAMaterialTurnsOff) {
     Material m = rock();
     for (Slot& s : m.slots) {

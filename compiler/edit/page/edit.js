@@ -60,7 +60,7 @@ async function loadTextures(programs, fresh) {
   for (const name of renderer.textureSources()) {
     if (!fresh && renderer.textures[name]) continue;
     const slot = slots.find(s => s.name === name);
-    renderer.setTexture(name, await texture(name, !!slot && slot.colorspace === 'srgb'));
+    renderer.setTexture(name, await texture(name, !!slot && slot.colorspace === 'srgb' && slot.decode !== 'shader'));
   }
 }
 

@@ -39,10 +39,12 @@ double schlick(double x, double r) {
     return x < 0.5 ? x / (a + 1) : (a - x) / (a - 1);
 }
 
-// luma_i w_i^7 normalised, then (falloff != 0.5) each through the gain and normalised again.
+// luma_i w_i^7 normalised, then (falloff != 0.5) each through the gain and normalised again. Every luma 0 (MaterialX:
+// 0 / 0): the weights of luma 1, the limit as the three lumas fall to 0 together.
 std::array<double, 3> weights(const std::array<double, 3>& luma, const std::array<double, 3>& w, double falloff) {
     std::array<double, 3> W;
     for (size_t i = 0; i < 3; ++i) W[i] = luma[i] * std::pow(w[i], 7);
+    if (W[0] + W[1] + W[2] == 0) return weights({1, 1, 1}, w, falloff);
     for (int pass = 0; pass < (falloff != 0.5 ? 2 : 1); ++pass) {
         if (pass == 1)
             for (double& x : W) x = schlick(x, falloff);
@@ -52,8 +54,11 @@ std::array<double, 3> weights(const std::array<double, 3>& luma, const std::arra
     return W;
 }
 
-double encode(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1 / 2.4) - 0.055; }
-double decode(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+}  // namespace
+
+double decodeSrgb(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+
+namespace {
 
 struct Tile {
     Vec2 p, dx, dy;
@@ -78,7 +83,8 @@ Tile place(TileId id, Vec2 st, Vec2 dx, Vec2 dy, const HexTiling& hex) {
 SlotResult evaluateMaterialX(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy) {
     const HexTiling& hex = slot.hex;
     const Triangle tri = triangleGrid(st);
-    const bool srgb = slot.colorSpace == ColorSpace::Srgb, normal = slot.kind == SlotKind::Normal;
+    // sRGB: the texture is sampled as stored (encoded, Slot::shaderDecodes), filtered and blended so, then decoded.
+    const bool srgb = slot.shaderDecodes(), normal = slot.kind == SlotKind::Normal;
     SlotResult out;
     std::array<double, 3> luma{1, 1, 1};
     for (size_t i = 0; i < 3; ++i) {
@@ -87,12 +93,12 @@ SlotResult evaluateMaterialX(const Slot& slot, const SampledTexture& texture, Ve
         if (normal) {
             // MaterialX's tangent frame turned about N by -angle: the normal's xy by R(+angle); its surface gradient.
             const Vec2 m = rotate({2 * x[0] - 1, (slot.flipY ? 1 - x[1] : x[1]) * 2 - 1}, t.angle);
+            // A zero-length texel (MaterialX: NaN) is the flat normal, gradient 0.
             const double z = 2 * x[2] - 1, length = std::sqrt(m[0] * m[0] + m[1] * m[1] + z * z);
             const double g = std::max(1e-8, std::fabs(z / length)) * length;
-            out.samples[i] = {-m[0] / g, -m[1] / g, 0, 1};
+            out.samples[i] = length > 0 ? Rgba{-m[0] / g, -m[1] / g, 0, 1} : Rgba{0, 0, 0, 1};
             continue;
         }
-        for (size_t c = 0; srgb && c < 3; ++c) x[c] = encode(x[c]);
         out.samples[i] = x;
         const double l = hex.lumacoeffs[0] * x[0] + hex.lumacoeffs[1] * x[1] + hex.lumacoeffs[2] * x[2];
         luma[i] = 1 + (l - 1) * hex.falloffcontrast;
@@ -102,7 +108,7 @@ SlotResult evaluateMaterialX(const Slot& slot, const SampledTexture& texture, Ve
     for (size_t c = 0; c < 4; ++c) {
         const std::array<double, 3>& w = c == 3 ? A : W;
         out.value[c] = w[0] * out.samples[0][c] + w[1] * out.samples[1][c] + w[2] * out.samples[2][c];
-        if (srgb && !normal && c < 3) out.value[c] = decode(out.value[c]);
+        if (srgb && !normal && c < 3) out.value[c] = decodeSrgb(out.value[c]);
     }
     if (normal) out.value = {out.value[0], out.value[1], 0, 1};
     out.blend = W;

@@ -181,7 +181,9 @@ Rgba asValue(Vec2 d) { return Rgba{d[0], d[1], 0, 1}; }
 
 // The slot without hex-tiling: one sample at st.
 SlotResult untiled(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy) {
-    const Rgba x = texture.sample(st[0], st[1], dx[0], dx[1], dy[0], dy[1]);
+    Rgba x = texture.sample(st[0], st[1], dx[0], dx[1], dy[0], dy[1]);
+    // MaterialX mode's sRGB texture is sampled as stored and decoded after filtering, as MaterialX's <image> does.
+    for (size_t c = 0; slot.shaderDecodes() && c < 3; ++c) x[c] = decodeSrgb(x[c]);
     const Rgba value = slot.kind == SlotKind::Normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
     return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
 }
@@ -305,7 +307,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
 }
 
 SlotTextures::SlotTextures(const Slot& slot) {
-    const Texture source = loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb);
+    const Texture source = loadTexture(slot.texturePath, slot.samplerDecodes());
     if (slot.hex.blend != Blend::Histogram) {
         texture = std::make_unique<SampledTexture>(source);
         return;

@@ -174,9 +174,12 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
 // HashMode::MaterialX (reference/materialx.cpp, docs/materialx.md#materialx-mode): MaterialX 1.39's hextiledimage
 // (colour and scalar slots: the colour blended by luma, then the channel) or hextilednormalmap (normal slots: the
 // blended surface gradient as (dH/ds, dH/dt, 0, 1)), written from MaterialX's definition of the nodes. Its tile hash
-// is defined by its float32 evaluation (like Listing 2's), the rest is double. An sRGB texture is sampled decoded, as
-// the sampler does, and each tap encoded again before the blend, which is decoded.
+// is defined by its float32 evaluation (like Listing 2's), the rest is double. An sRGB texture is sampled as stored
+// (encoded: the caller loads it so, Slot::samplerDecodes), filtered and blended so, and the blend decoded.
 SlotResult evaluateMaterialX(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy);
+
+// The sRGB decoding (IEC 61966-2-1) of a stored value in [0, 1].
+double decodeSrgb(double c);
 
 // evaluateAt at st = uv * slot.hex.tiling, with uv gradients.
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx, double dudy, double dvdy,

@@ -306,7 +306,7 @@ std::vector<Texture> boundTextures(const nlohmann::json& manifest, const Compile
             if (slot.name != s["name"]) continue;
             Texture t = s.contains("packed") && s["packed"]["texture"] == slot.name + ".packed"
                             ? packedTexture(manifest, compiled, slot.name + ".packed")
-                            : loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb);
+                            : loadTexture(slot.texturePath, slot.samplerDecodes());
             if (s.contains("histogram")) {
                 HistogramTransform h = histogramTransform(t, slot);
                 t = std::move(h.gaussian);

@@ -93,6 +93,12 @@ struct Slot {
     bool eightBit = false;      // the file decodes to 8-bit texels (TextureInfo::eightBit)
     int line = 0, col = 0;      // where the slot's kind (else the slot) is in the material file; 0 when built in code
     bool kindStated = true;     // false in a partial material whose kind is not one hexc knows: not checked against a template
+
+    // Whether the texture is bound as sRGB (the sampler decodes, filtering decoded texels). Not in MaterialX mode
+    // (hex-tiled or plain), which filters and blends the stored (encoded) texels and decodes the result, as MaterialX
+    // does: there the shader decodes, and the manifest says so (`"decode": "shader"`, docs/materialx.md#materialx-mode).
+    bool samplerDecodes() const { return colorSpace == ColorSpace::Srgb && !shaderDecodes(); }
+    bool shaderDecodes() const { return colorSpace == ColorSpace::Srgb && kind != SlotKind::Normal && hex.mode == HashMode::MaterialX; }
 };
 
 // A shader template as a material, a scene pass or --template names it, told apart once, where it is read: one of

@@ -77,6 +77,8 @@ nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
         {"hextiling", hextilingEntry(h)},
     };
     if (h.mode == HashMode::MaterialX && s.kind != SlotKind::Normal) slot["hextiling"]["lumacoeffs"] = h.lumacoeffs;
+    // MaterialX mode filters an sRGB texture's stored texels: bind it with a linear (UNORM) format; the shader decodes.
+    if (s.shaderDecodes()) slot["decode"] = "shader";
     if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
     // Bound for another slot's height blending only: the shader has no function for it.
     if (sp.heightOnly) slot["height_map_only"] = true;

@@ -106,7 +106,7 @@ public:
             {"settings", settings(l, sp, fixed)},
             {"luma",
              "vec3(" + literal(s.hex.lumacoeffs[0]) + ", " + literal(s.hex.lumacoeffs[1]) + ", " + literal(s.hex.lumacoeffs[2]) + ")"},
-            {"srgb", literal(s.colorSpace == ColorSpace::Srgb)},
+            {"srgb", literal(s.shaderDecodes())},
             {"uv", expand(plan_.uvBottomLeft ? "uv.bottomleft" : "uv.topleft", {})},
         };
         addParam(t, "tiling", l.tiling);

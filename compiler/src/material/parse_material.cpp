@@ -118,9 +118,11 @@ private:
         hex.taps = int(whole(t, p, {1, 3, false, false, "in 1..3 or \"adaptive\""}, hex.taps));
     }
 
-    // `tiling`: one number for both axes or [u, v].
+    // `tiling`: one number for both axes or [u, v]. Bounded to [2^-24, 2^24]: above, float32 st = uv * tiling no
+    // longer tells neighbouring texture repeats apart at uv 1 (its ulp there is 2 at 2^24) and overflows to infinity
+    // above 3.4e38; below, st rounds to a constant over the whole unit square (or to 0). Nothing inside loses finiteness.
     void tiling(const json& t, const std::string& p, HexTiling& hex) {
-        const Range positive{0, INFINITY, true, true, "> 0"};
+        const Range positive{0x1p-24, 0x1p24, false, false, "in [0.0000000596, 16777216] (2^-24 to 2^24)"};
         if (t.is_array() && t.size() == 2) {
             hex.tiling[0] = number(t[0], p + "/0", positive, hex.tiling[0]);
             hex.tiling[1] = number(t[1], p + "/1", positive, hex.tiling[1]);
@@ -128,7 +130,7 @@ private:
             hex.tiling[0] = hex.tiling[1] = number(t, p, positive, hex.tiling[0]);
         } else {
             report(Code::WrongType, p,
-                   "expected a number > 0 or an array [u, v] of two numbers > 0, got " +
+                   "expected a number in [2^-24, 2^24] or an array [u, v] of two, got " +
                        (t.is_array() ? "an array of " + std::to_string(t.size()) : typeName(t)));
         }
     }
@@ -338,6 +340,13 @@ private:
     // Rules across a slot's merged hex-tiling settings, reported at `at`.
     void settingRules(const HexTiling& hex, const std::string& at) {
         if (hex.mode == HashMode::MaterialX && hex.enabled) materialxRules(hex, at);
+        // A tile's angle is rotation times a point of rotationrange, computed in float32: within 3600 degrees (62.8 rad)
+        // its rounding (4e-6 rad) moves a texel at the texture's far edge by 1/1000 of a texel; at rotation 1e6 whole texels.
+        const double angle = hex.rotation * std::max(std::fabs(hex.rotationRange[0]), std::fabs(hex.rotationRange[1]));
+        if (hex.enabled && angle > 3600)
+            report(Code::ConflictingSettings, at,
+                   "`rotation` times `rotationrange` reaches " + json(angle).dump() +
+                       " degrees; expected at most 3600 (rotation <= 3600 / max |rotationrange|)");
         // Checked on the merged settings: the paper's lattice has no exact period to split at, and its tile
         // transforms are Listings 2 and 6 exactly.
         if (hex.splitCoordinates && hex.mode == HashMode::Paper)
@@ -383,10 +392,12 @@ private:
         const double tiling = checker ? std::max(hex.tiling[0], hex.tiling[1]) : hex.tiling[0];
         const double limit = std::ldexp(1.0, checker ? 31 : 26) / tiling;
         if (limit >= 65536) return false;
-        char text[200];
+        // The limit is at least 4 (tiling <= 2^24): three significant figures below 1000, whole numbers above.
+        char text[200], figure[32];
+        std::snprintf(figure, sizeof figure, limit < 1000 ? "%.3g" : "%.0f", limit);
         std::snprintf(text, sizeof text,
-                      "with tiling %g, stable mode's %s is exact only for |%s| < %.0f (2^%d / tiling); beyond, tiles come out wrong",
-                      tiling, checker ? "checker" : "lattice", checker ? "uv" : "u", limit, checker ? 31 : 26);
+                      "with tiling %g, stable mode's %s is exact only for |%s| < %s (2^%d / tiling); beyond, tiles come out wrong", tiling,
+                      checker ? "checker" : "lattice", checker ? "uv" : "u", figure, checker ? 31 : 26);
         report(Code::TilingRange, at, text,
                "for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin "
                "(docs/precision.md#stable-modes-range)");

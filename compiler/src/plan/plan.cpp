@@ -121,10 +121,11 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     sp.metric = h.taps != 1 && !sp.histogram && (all || h.falloffcontrast != 0);
     sp.gain = all || h.falloff != 0.5;
     // Whole-number exponents become multiplications: gamma = 7 (the paper's) and the gain at r = 1 - 2^-k
-    // (the paper's 0.75 is k = 2) then cost no pow. Like the feature switches, they fix the value in the code.
+    // (the paper's 0.75 is k = 2) then cost no pow. Like the feature switches, they fix the value in the code, so
+    // only for the blend that reads them (hexcBlendWeights): MaterialX mode's Schlick gain reads the falloff itself.
     if (!all && h.exponent == std::floor(h.exponent) && h.exponent <= 16) sp.exponentInt = int(h.exponent);
     double k = std::log2(1.0 / (1.0 - h.falloff));
-    if (!all && sp.gain && std::fabs(k - std::round(k)) < 1e-12 && k >= 2 && k <= 16) sp.gainInt = int(std::round(k));
+    if (!all && !materialx && sp.gain && std::fabs(k - std::round(k)) < 1e-12 && k >= 2 && k <= 16) sp.gainInt = int(std::round(k));
     return sp;
 }
 

@@ -74,8 +74,7 @@ struct HexcParams
     float albedo_falloffcontrast;
 };
 
-constant float _2937 = {};
-constant float4 _2938 = {};
+constant float _2934 = {};
 
 struct preview_tiles_frag_out
 {
@@ -92,82 +91,76 @@ struct preview_tiles_frag_in
 fragment preview_tiles_frag_out preview_tiles_frag(preview_tiles_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_albedo [[texture(0)]], texture2d<float> hexcTex_roughness [[texture(1)]], texture2d<float> hexcTex_normal [[texture(2)]], sampler hexcSampler [[sampler(0)]])
 {
     preview_tiles_frag_out out = {};
-    float2 _1298 = in.v_uv * hexcParams.albedo_tiling;
-    float2 _1300 = dfdx(_1298);
-    float2 _1302 = dfdy(_1298);
-    float2 _1371 = _1298 * 3.4641015529632568359375;
-    float _1375 = _1371.y;
-    float2 _1381 = float2(fma(-0.57735025882720947265625, _1375, _1371.x), 1.1547005176544189453125 * _1375);
-    float2 _1392 = floor(_1381);
-    int2 _1393 = int2(_1392);
-    float2 _1397 = _1381 - _1392;
-    float _1398 = _1397.x;
-    float _1399 = _1397.y;
-    float _1410 = -((1.0 - _1398) - _1399);
-    float _1411 = step(0.0, _1410);
-    float _1414 = fma(2.0, _1411, -1.0);
-    float3 _1432 = float3(_1410 * _1414, fma(-_1399, _1414, _1411), fma(-_1398, _1414, _1411));
-    int _1434 = int(_1411);
-    int _1444 = 1 - _1434;
-    spvUnsafeArray<int2, 3> _2606 = spvUnsafeArray<int2, 3>({ _1393 + int2(_1434), _1393 + int2(_1434, _1444), _1393 + int2(_1444, _1434) });
-    spvUnsafeArray<int2, 3> _2584;
-    _2584 = _2606;
-    spvUnsafeArray<HexcTap, 3> _2586;
-    for (int _2864 = 0; _2864 < 3; )
+    float2 _1294 = in.v_uv * hexcParams.albedo_tiling;
+    float2 _1296 = dfdx(_1294);
+    float2 _1298 = dfdy(_1294);
+    float2 _1367 = _1294 * 3.4641015529632568359375;
+    float _1371 = _1367.y;
+    float2 _1377 = float2(fma(-0.57735025882720947265625, _1371, _1367.x), 1.1547005176544189453125 * _1371);
+    float2 _1388 = floor(_1377);
+    int2 _1389 = int2(_1388);
+    float2 _1393 = _1377 - _1388;
+    float _1394 = _1393.x;
+    float _1395 = _1393.y;
+    float _1406 = -((1.0 - _1394) - _1395);
+    float _1407 = step(0.0, _1406);
+    float _1410 = fma(2.0, _1407, -1.0);
+    float3 _1428 = float3(_1406 * _1410, fma(-_1395, _1410, _1407), fma(-_1394, _1410, _1407));
+    int _1430 = int(_1407);
+    int _1440 = 1 - _1430;
+    spvUnsafeArray<int2, 3> _2611 = spvUnsafeArray<int2, 3>({ _1389 + int2(_1430), _1389 + int2(_1430, _1440), _1389 + int2(_1440, _1430) });
+    spvUnsafeArray<int2, 3> _2589;
+    _2589 = _2611;
+    spvUnsafeArray<HexcTap, 3> _2591;
+    for (int _2858 = 0; _2858 < 3; )
     {
-        float3 _1612 = fract(float3((float2(_2584[_2864]) + float2(0.123450003564357757568359375)).xyx) * float3(0.103100001811981201171875, 0.10300000011920928955078125, 0.097300000488758087158203125));
-        float3 _1621 = _1612 + float3(dot(_1612, _1612.yzx + float3(33.3300018310546875)));
-        float2 _1630 = fract((_1621.xx + _1621.yz) * _1621.zy);
-        float _1545 = radians(mix(hexcParams.albedo_rotationrange.x, hexcParams.albedo_rotationrange.y, _1630.x)) * hexcParams.albedo_rotation;
-        float _1547 = cos(_1545);
-        float _1549 = sin(_1545);
-        float _1559 = 1.0 / mix(hexcParams.albedo_scalerange.x, hexcParams.albedo_scalerange.y, _1630.y);
-        float _1638 = float(_2584[_2864].y);
-        float2 _1645 = float2(fma(0.5, _1638, float(_2584[_2864].x)), _1638 * 0.866025447845458984375);
-        float2 _1565 = fma(in.v_uv, hexcParams.albedo_tiling, _1645 * float2(-0.288675129413604736328125));
-        float _1653 = _1565.x;
-        float _1658 = _1565.y;
-        float _1678 = _1300.x;
-        float _1683 = _1300.y;
-        float _1703 = _1302.x;
-        float _1708 = _1302.y;
-        _2586[_2864] = HexcTap{ fma(_1645, float2(0.288675129413604736328125), float2(fma(_1547, _1653, -(_1549 * _1658)), fma(_1549, _1653, _1547 * _1658)) * _1559) + (_1630 * hexcParams.albedo_offset), float2(fma(_1547, _1678, -(_1549 * _1683)), fma(_1549, _1678, _1547 * _1683)) * _1559, float2(fma(_1547, _1703, -(_1549 * _1708)), fma(_1549, _1703, _1547 * _1708)) * _1559, float2(_1547, _1549), _1559 };
-        _2864++;
+        float3 _1608 = fract(float3((float2(_2589[_2858]) + float2(0.123450003564357757568359375)).xyx) * float3(0.103100001811981201171875, 0.10300000011920928955078125, 0.097300000488758087158203125));
+        float3 _1617 = _1608 + float3(dot(_1608, _1608.yzx + float3(33.3300018310546875)));
+        float2 _1626 = fract((_1617.xx + _1617.yz) * _1617.zy);
+        float _1541 = radians(mix(hexcParams.albedo_rotationrange.x, hexcParams.albedo_rotationrange.y, _1626.x)) * hexcParams.albedo_rotation;
+        float _1543 = cos(_1541);
+        float _1545 = sin(_1541);
+        float _1555 = 1.0 / mix(hexcParams.albedo_scalerange.x, hexcParams.albedo_scalerange.y, _1626.y);
+        float _1634 = float(_2589[_2858].y);
+        float2 _1641 = float2(fma(0.5, _1634, float(_2589[_2858].x)), _1634 * 0.866025447845458984375);
+        float2 _1561 = fma(in.v_uv, hexcParams.albedo_tiling, _1641 * float2(-0.288675129413604736328125));
+        float _1649 = _1561.x;
+        float _1654 = _1561.y;
+        float _1674 = _1296.x;
+        float _1679 = _1296.y;
+        float _1699 = _1298.x;
+        float _1704 = _1298.y;
+        _2591[_2858] = HexcTap{ fma(_1641, float2(0.288675129413604736328125), float2(fma(_1543, _1649, -(_1545 * _1654)), fma(_1545, _1649, _1543 * _1654)) * _1555) + (_1626 * hexcParams.albedo_offset), float2(fma(_1543, _1674, -(_1545 * _1679)), fma(_1545, _1674, _1543 * _1679)) * _1555, float2(fma(_1543, _1699, -(_1545 * _1704)), fma(_1545, _1699, _1543 * _1704)) * _1555, float2(_1543, _1545), _1555 };
+        _2858++;
         continue;
     }
-    float3 _1778 = hexcTex_albedo.sample(hexcSampler, _2586[0].st, gradient2d(_2586[0].dx, _2586[0].dy)).xyz;
-    float3 _1891 = select(_1778 * 12.9200000762939453125, (pow(fast::max(_1778, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1778 > float3(0.003130800090730190277099609375));
-    float4 _2802;
-    _2802.x = _1891.x;
-    _2802.y = _1891.y;
-    _2802.z = _1891.z;
-    float3 _1787 = hexcTex_albedo.sample(hexcSampler, _2586[1].st, gradient2d(_2586[1].dx, _2586[1].dy)).xyz;
-    float3 _1904 = select(_1787 * 12.9200000762939453125, (pow(fast::max(_1787, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1787 > float3(0.003130800090730190277099609375));
-    float4 _2808;
-    _2808.x = _1904.x;
-    _2808.y = _1904.y;
-    _2808.z = _1904.z;
-    float3 _1796 = hexcTex_albedo.sample(hexcSampler, _2586[2].st, gradient2d(_2586[2].dx, _2586[2].dy)).xyz;
-    float3 _1917 = select(_1796 * 12.9200000762939453125, (pow(fast::max(_1796, float3(0.0)), float3(0.4166666567325592041015625)) * 1.05499994754791259765625) - float3(0.054999999701976776123046875), _1796 > float3(0.003130800090730190277099609375));
-    float4 _2814;
-    _2814.x = _1917.x;
-    _2814.y = _1917.y;
-    _2814.z = _1917.z;
-    float3 _1986 = _1432 * _1432;
-    float3 _1932 = mix(float3(1.0), float3(dot(_2802.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_2808.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_2814.xyz, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125))), float3(hexcParams.albedo_falloffcontrast)) * ((_1432 * _1986) * (_1986 * _1986));
-    float3 _1943 = _1932 / float3((_1932.x + _1932.y) + _1932.z);
-    float3 _1849 = ((_2802.xyz * _1943.x) + (_2808.xyz * _1943.y)) + (_2814.xyz * _1943.z);
-    float3 _2362 = select(_1849 * float3(0.077399380505084991455078125), pow(fast::max(_1849 + float3(0.054999999701976776123046875), float3(0.0)) * float3(0.947867333889007568359375), float3(2.400000095367431640625)), _1849 > float3(0.040449999272823333740234375));
-    float _1178 = fast::clamp(hexcTex_roughness.sample(hexcSampler, (in.v_uv * hexcParams.roughness_tiling)).x, 0.0199999995529651641845703125, 1.0);
-    float3 _1183 = fast::normalize(in.v_normal);
-    float3 _1196 = fast::normalize(in.v_tangent.xyz - (_1183 * dot(_1183, in.v_tangent.xyz)));
-    float3 _2481 = (hexcTex_normal.sample(hexcSampler, (in.v_uv * hexcParams.normal_tiling)).xyz * 2.0) - float3(1.0);
-    float3 _2510 = abs(_2481);
-    float3 _2545 = fast::normalize(float3(-((-float2(_2481.xy)) / float2(fast::max(fast::max(_2510.z, 0.0078125 * fast::max(_2510.x, _2510.y)), 9.9999996826552253889678874634872e-21))), 1.0));
-    float3 _1225 = fast::normalize(((_1196 * _2545.x) - ((cross(_1183, _1196) * in.v_tangent.w) * _2545.y)) + (_1183 * _2545.z));
-    float _1232 = fast::max(dot(_1225, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
-    float _1245 = 2.0 / (((_1178 * _1178) * _1178) * _1178);
-    out.o_color = float4((float4(_2362, _2937).xyz * (0.1500000059604644775390625 + _1232)) + float3(0.039999999105930328369140625 * (((pow(fast::max(dot(_1225, float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625)), 0.0), _1245 - 2.0) * (_1245 + 6.0)) * 0.0397887341678142547607421875) * _1232)), 1.0);
+    float3 _1769 = hexcTex_albedo.sample(hexcSampler, _2591[0].st, gradient2d(_2591[0].dx, _2591[0].dy)).xyz;
+    float3 _1773 = hexcTex_albedo.sample(hexcSampler, _2591[1].st, gradient2d(_2591[1].dx, _2591[1].dy)).xyz;
+    float3 _1777 = hexcTex_albedo.sample(hexcSampler, _2591[2].st, gradient2d(_2591[2].dx, _2591[2].dy)).xyz;
+    float3 _1932 = _1428 * _1428;
+    float3 _1950 = (_1428 * _1932) * (_1932 * _1932);
+    float3 _1860 = mix(float3(1.0), float3(dot(_1769, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_1773, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_1777, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125))), float3(hexcParams.albedo_falloffcontrast)) * _1950;
+    float _1868 = (_1860.x + _1860.y) + _1860.z;
+    float3 _2877;
+    if (_1868 > 0.0)
+    {
+        _2877 = _1860 / float3(_1868);
+    }
+    else
+    {
+        _2877 = _1950 / float3((_1950.x + _1950.y) + _1950.z);
+    }
+    float3 _1812 = ((_1769 * _2877.x) + (_1773 * _2877.y)) + (_1777 * _2877.z);
+    float _1174 = fast::clamp(hexcTex_roughness.sample(hexcSampler, (in.v_uv * hexcParams.roughness_tiling)).x, 0.0199999995529651641845703125, 1.0);
+    float3 _1179 = fast::normalize(in.v_normal);
+    float3 _1192 = fast::normalize(in.v_tangent.xyz - (_1179 * dot(_1179, in.v_tangent.xyz)));
+    float3 _2486 = (hexcTex_normal.sample(hexcSampler, (in.v_uv * hexcParams.normal_tiling)).xyz * 2.0) - float3(1.0);
+    float3 _2515 = abs(_2486);
+    float3 _2550 = fast::normalize(float3(-((-float2(_2486.xy)) / float2(fast::max(fast::max(_2515.z, 0.0078125 * fast::max(_2515.x, _2515.y)), 9.9999996826552253889678874634872e-21))), 1.0));
+    float3 _1221 = fast::normalize(((_1192 * _2550.x) - ((cross(_1179, _1192) * in.v_tangent.w) * _2550.y)) + (_1179 * _2550.z));
+    float _1228 = fast::max(dot(_1221, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
+    float _1241 = 2.0 / (((_1174 * _1174) * _1174) * _1174);
+    out.o_color = float4((float4(select(_1812 * float3(0.077399380505084991455078125), pow(fast::max(_1812 + float3(0.054999999701976776123046875), float3(0.0)) * float3(0.947867333889007568359375), float3(2.400000095367431640625)), _1812 > float3(0.040449999272823333740234375)), _2934).xyz * (0.1500000059604644775390625 + _1228)) + float3(0.039999999105930328369140625 * (((pow(fast::max(dot(_1221, float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625)), 0.0), _1241 - 2.0) * (_1241 + 6.0)) * 0.0397887341678142547607421875) * _1228)), 1.0);
     return out;
 }
 
