@@ -207,7 +207,8 @@ TEST(Compile, SlotsTheTemplateDoesNotReadAreLeftOutWithAWarning) {
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
     ASSERT_EQ(r.diagnostics.size(), 2u);
     EXPECT_EQ(r.diagnostics[0].format(),
-              "materials/rock.json: warning[HX204]: slot `normal` is not read by template templates/builtin/unlit.glsl; it is left out");
+              "materials/rock.json:20:15: warning[HX204]: /slots/1: slot `normal` is not read by template templates/builtin/unlit.glsl; it "
+              "is left out");
     auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
     EXPECT_EQ(manifest["slots"].size(), 1u);
     EXPECT_EQ(manifest["targets"]["spirv"]["textures"].size(), 1u);

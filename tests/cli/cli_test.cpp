@@ -119,7 +119,7 @@ TEST(Cli, WarningsAndVerbosity) {
     std::string err;
     const std::string weights = "materials/rock.json --template templates/builtin/weights.glsl -o ";
     EXPECT_EQ(runHexc(weights + freshDir("hexc_cli_q").string() + " -q", &err), 0);
-    EXPECT_NE(err.find("warning[HX204]: slot `normal` is not read"), std::string::npos) << err;
+    EXPECT_NE(err.find("warning[HX204]: /slots/1: slot `normal` is not read"), std::string::npos) << err;
     EXPECT_EQ(err.find("compiled"), std::string::npos) << err;
     EXPECT_EQ(runHexc(weights + freshDir("hexc_cli_nw").string() + " --no-warnings", &err), 0);
     EXPECT_EQ(err.find("warning"), std::string::npos) << err;
@@ -131,7 +131,8 @@ TEST(Cli, WarningsAndVerbosity) {
     EXPECT_EQ(runHexc(scene + " -v", &err), 0);
     EXPECT_NE(err.find("hexc: rock.weights: up to date"), std::string::npos) << err;
     EXPECT_EQ(runHexc("materials/scenes/forest.json -v -o " + freshDir("hexc_cli_scene_v").string(), &err), 0);
-    EXPECT_NE(err.find("warning[HX204]: slot `normal` is not read by template templates/builtin/weights.glsl"), std::string::npos) << err;
+    EXPECT_NE(err.find("warning[HX204]: /slots/1: slot `normal` is not read by template templates/builtin/weights.glsl"), std::string::npos)
+        << err;
     EXPECT_NE(err.find("hexc: rock_normal.depth: compiled (no stamp"), std::string::npos) << err;
     EXPECT_NE(err.find("hexc: tiles.depth: compiled (no stamp from an earlier build matches its inputs, options and hexc); its shader "
                        "code is identical to rock.depth's"),
