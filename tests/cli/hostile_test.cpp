@@ -386,8 +386,8 @@ TEST_F(Hostile, ExrDataWindowsAreCheckedIn64Bits) {
     } cases[] = {
         {0, 0, -100, 12, "Invalid data window in image header"},
         {5, 0, 4, 12, "Invalid data window in image header"},
-        {lo, 0, hi, 12, "Invalid data window in image header"},  // 2^31 - 1 - (-2^31) + 1: overflows 32 bits
-        {0, 0, 65534, 65534, "Early end of file"},               // 65535 x 65535 claimed by ~400 bytes
+        {lo, 0, hi, 12, "Invalid data window in image header"},                  // 2^31 - 1 - (-2^31) + 1: overflows 32 bits
+        {0, 0, 65534, 65534, "level 0's chunk table runs past the file's end"},  // 65535 x 65535 claimed by ~400 bytes
     };
     for (const auto& c : cases) {
         fs::path tex = dir_ / "w.exr";

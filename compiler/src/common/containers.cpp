@@ -241,15 +241,23 @@ std::string exrProblem(const Imf::InputFile& in, int64_t width, int64_t height) 
     return {};
 }
 
-// Why the header's attributes do not fit in the file, or empty. The OpenEXR library allocates an attribute's stated
-// size before reading it, so a 400-byte file could make it ask for 2 GB: each size is checked against the bytes that
-// follow it first. Attributes are `name\0type\0` (names and types at most 255 bytes), a 32-bit size, then the value;
-// an empty name ends the header.
-std::string exrHeaderProblem(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(file, ec);
-    in.seekg(8);  // the magic number and the version field
+// Scanlines per chunk by compression (NONE, RLE, ZIPS, ZIP, PIZ, PXR24, B44, B44A, DWAA, DWAB), the OpenEXR file layout.
+constexpr int kExrLinesPerChunk[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
+
+// What exrLayoutProblem reads of the header: the data window, the tiles and the compression, with the values the
+// OpenEXR library takes where the header has none (a 64 x 64 window, 32 x 32 tiles, ZIP), and whether the version
+// field says the file is tiled.
+struct ExrLayout {
+    int32_t window[4] = {0, 0, 63, 63};  // x0, y0, x1, y1
+    uint32_t tile[2] = {32, 32};
+    uint8_t compression = 3;
+    bool tiled = false;
+    uint64_t table = 0;  // where level 0's chunk table starts: after the header's last byte
+};
+
+// Reads the header's attributes (`name\0type\0`, a 32-bit size and the value; an empty name ends them), each stated
+// size checked against the bytes that follow it. Why they do not fit, or empty.
+std::string readExrHeader(std::ifstream& in, uint64_t size, ExrLayout& l) {
     auto text = [&](std::string* out) {
         for (char c; out->size() <= 255 && in.get(c);) {
             if (c == '\0') return true;
@@ -257,6 +265,9 @@ std::string exrHeaderProblem(const std::filesystem::path& file) {
         }
         return false;
     };
+    uint32_t version = 0;
+    in.seekg(4).read(reinterpret_cast<char*>(&version), 4);  // after the magic number
+    l.tiled = version & 0x200;
     for (std::string name; text(&name) && !name.empty(); name.clear()) {
         std::string type;
         uint32_t bytes = 0;
@@ -264,14 +275,52 @@ std::string exrHeaderProblem(const std::filesystem::path& file) {
         const uint64_t at = uint64_t(in.tellg());
         if (bytes > size - at)
             return "the header's attribute `" + name + "` claims " + std::to_string(bytes) + " bytes past the file's end";
-        in.seekg(std::streamoff(bytes), std::ios::cur);
+        if (name == "dataWindow" && bytes == 16) in.read(reinterpret_cast<char*>(l.window), 16);
+        if (name == "tiles" && bytes == 9) in.read(reinterpret_cast<char*>(l.tile), 8);
+        if (name == "compression" && bytes == 1) in.read(reinterpret_cast<char*>(&l.compression), 1);
+        in.seekg(std::streamoff(at + bytes));
     }
-    return in ? std::string() : "the header is truncated or malformed";
+    if (!in) return "the header is truncated or malformed";
+    l.table = uint64_t(in.tellg());
+    return {};
+}
+
+// Why the file's layout cannot be handed to the OpenEXR library, or empty. The library allocates what a file states
+// before reading it (an attribute's size, a chunk's size), so a 400-byte file could make it ask for 2 GB, which takes a
+// sanitized build tens of seconds: each stated size is checked against the bytes that follow it first. Level 0's
+// chunk table holds a 64-bit offset a chunk; a scanline chunk starts with its y and size, a tile with its x, y, level
+// x, level y and size. A window outside 1..65536 and an unknown compression are the library's to refuse.
+std::string exrLayoutProblem(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(file, ec);
+    ExrLayout l;
+    if (std::string problem = readExrHeader(in, size, l); !problem.empty()) return problem;
+    const int64_t width = int64_t(l.window[2]) - l.window[0] + 1, height = int64_t(l.window[3]) - l.window[1] + 1;
+    if (width < 1 || height < 1 || width > 65536 || height > 65536 || l.compression >= std::size(kExrLinesPerChunk) ||
+        (l.tiled && (l.tile[0] < 1 || l.tile[1] < 1)))
+        return {};
+    const int64_t lines = kExrLinesPerChunk[l.compression];
+    const int64_t chunks =
+        l.tiled ? (width + l.tile[0] - 1) / l.tile[0] * ((height + l.tile[1] - 1) / l.tile[1]) : (height + lines - 1) / lines;
+    if (uint64_t(chunks) > (size - l.table) / 8) return "level 0's chunk table runs past the file's end";
+    const uint64_t head = l.tiled ? 20 : 8;  // a chunk's header, its size last
+    for (int64_t c = 0; c < chunks; ++c) {
+        uint64_t offset = 0;
+        int32_t bytes = -1;
+        in.seekg(std::streamoff(l.table + uint64_t(c) * 8));
+        in.read(reinterpret_cast<char*>(&offset), 8);
+        if (in && offset >= l.table && offset <= size - head)
+            in.seekg(std::streamoff(offset + head - 4)).read(reinterpret_cast<char*>(&bytes), 4);
+        if (!in || bytes < 0 || uint64_t(bytes) > size - offset - head)
+            return "a chunk of level 0 starts or ends past the file's end (the file is truncated or malformed)";
+    }
+    return {};
 }
 
 std::optional<TextureInfo> exrInfo(const std::filesystem::path& file, std::string* error) {
     limitExrSizes();
-    if (const std::string problem = exrHeaderProblem(file); !problem.empty()) {
+    if (const std::string problem = exrLayoutProblem(file); !problem.empty()) {
         *error = "OpenEXR: " + problem;
         return std::nullopt;
     }
