@@ -1180,7 +1180,7 @@ TEST(Properties, WeightsAreFiniteNonNegativeAndSumToOne) {
                               R"({"tiling": 4, "exponent": 1})",
                               R"({"tiling": 4, "exponent": 64})",
                               R"({"tiling": 4, "falloffcontrast": 0.9})",
-                              R"({"tiling": 4, "rotation": 25})",
+                              R"({"tiling": 4, "rotation": 20})",  // the largest accepted: 20 x 180 degrees = 3600
                               R"({"tiling": 4, "mode": "paper", "falloff": 0.8})"};
     const double bound = 8 * std::ldexp(1.0, -24);
     double worst = 0;

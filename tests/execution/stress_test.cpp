@@ -148,7 +148,7 @@ const char* kExtremeSettings[] = {
     R"("exponent": 7)",        R"("exponent": 64)",
     R"("falloffcontrast": 0)", R"("falloffcontrast": 1)",
     R"("rotation": 0)",        R"("rotation": 1)",
-    R"("rotation": 25)",       R"("falloffcontrast": 1, "exponent": 64, "falloff": 0.999999)",
+    R"("rotation": 20)",       R"("falloffcontrast": 1, "exponent": 64, "falloff": 0.999999)",  // rotation: the largest accepted
 };
 
 // Views: ordinary, zero gradients (a zero-size rectangle), huge gradients (1e4 uv across 32 pixels).
