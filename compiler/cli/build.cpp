@@ -17,6 +17,7 @@
 #include "hexc/cache.h"
 #include "hexc/files.h"
 #include "hexc/materialx.h"
+#include "hexc/suggest.h"
 #include "hexc/hash.h"
 #include "hexc/scene.h"
 #include "hexc/spirv.h"
@@ -281,11 +282,10 @@ std::vector<std::filesystem::path> plannedOutputs(const Arguments& a, const Inpu
 
 // Whether outputs named `name` (letters, digits, `_`, `-`) are Windows devices, whatever their extension: `con.frag.hlsl`
 // cannot be created there.
-bool reservedOnWindows(std::string name) {
-    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+bool reservedOnWindows(const std::string& name) {
     static const std::set<std::string> devices = {"con",  "prn",  "aux",  "nul",  "com1", "com2", "com3", "com4", "com5", "com6", "com7",
                                                   "com8", "com9", "lpt1", "lpt2", "lpt3", "lpt4", "lpt5", "lpt6", "lpt7", "lpt8", "lpt9"};
-    return devices.contains(name);
+    return devices.contains(lowerCase(name));
 }
 
 // No file the run writes may be one it reads (writing it would destroy the build's own input: a template named like
@@ -316,9 +316,7 @@ bool outputsFit(const Arguments& a, const Inputs& in) {
     for (const SceneSummary& s : in.scenes) names.push_back(s.scene.name);
     std::map<std::string, std::string> folded;  // lower-cased name -> the name as written
     for (const std::string& name : names) {
-        std::string lower = name;
-        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-        if (auto [it, added] = folded.try_emplace(lower, name); !added && it->second != name)
+        if (auto [it, added] = folded.try_emplace(lowerCase(name), name); !added && it->second != name)
             refuse("outputs named `" + it->second + "` and `" + name + "` differ only in case: one file on macOS and Windows");
         if (reservedOnWindows(name)) refuse("outputs named `" + name + "`: a device name on Windows, where they cannot be written");
     }

@@ -10,4 +10,7 @@ namespace hexc {
 // (at most a third of the word's length, and at least 1, edits).
 std::optional<std::string> closestMatch(const std::string& word, const std::vector<std::string>& candidates);
 
+// `s` with its ASCII letters in lower case: how names are compared where case does not count.
+std::string lowerCase(std::string s);
+
 }  // namespace hexc

@@ -20,12 +20,12 @@ size_t editDistance(const std::string& a, const std::string& b) {
     return d[a.size()][b.size()];
 }
 
-std::string lower(std::string s) {
+}  // namespace
+
+std::string lowerCase(std::string s) {
     for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
     return s;
 }
-
-}  // namespace
 
 std::optional<std::string> closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
     std::optional<std::string> best;
@@ -34,7 +34,7 @@ std::optional<std::string> closestMatch(const std::string& word, const std::vect
         // The distance is at least the length difference: skipping those candidates bounds the work by the
         // candidates' lengths, whatever the length of the word (a 16 MB unknown key costs nothing).
         if (std::max(word.size(), c.size()) - std::min(word.size(), c.size()) >= bestDistance) continue;
-        size_t d = editDistance(lower(word), lower(c));
+        size_t d = editDistance(lowerCase(word), lowerCase(c));
         if (d < bestDistance) {
             bestDistance = d;
             best = c;

@@ -111,9 +111,8 @@ int JsonRules::choice(const json& v, const std::string& pointer, const std::vect
     std::string s = v.get<std::string>();
     for (size_t i = 0; i < options.size(); ++i)
         if (options[i] == s) return int(i);
-    std::string hint, lower = s;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (auto it = meant.find(lower); it != meant.end())
+    std::string hint;
+    if (auto it = meant.find(lowerCase(s)); it != meant.end())
         hint = "did you mean " + ticked(it->second) + "?";
     else if (auto best = closestMatch(s, options))
         hint = "did you mean " + ticked(*best) + "?";
