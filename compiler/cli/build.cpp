@@ -12,7 +12,6 @@
 
 #include "depfile.h"
 #include "incremental.h"
-#include "outputs.h"
 #include "progress.h"
 #include "hexc/cache.h"
 #include "hexc/files.h"

@@ -6,7 +6,6 @@
 
 #include "hexc/materialx.h"
 #include "options.h"
-#include "outputs.h"
 
 namespace hexc::cli {
 

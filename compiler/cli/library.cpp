@@ -7,7 +7,6 @@
 
 #include "hexc/library.h"
 #include "options.h"
-#include "outputs.h"
 
 namespace hexc::cli {
 

@@ -1,7 +1,6 @@
 #include "options.h"
 
 #include "hexc/cache.h"
-#include "hexc/suggest.h"
 
 #include <CLI/CLI.hpp>
 
@@ -9,8 +8,6 @@
 #include <iostream>
 #include <map>
 #include <set>
-#include <sstream>
-#include <tuple>
 
 namespace hexc::cli {
 namespace {
@@ -37,13 +34,6 @@ earlier run, comes from the cache (--cache-dir). Nothing is written unless every
 written atomically.
 )";
 
-const char* const kExitCodes = R"(Exit codes:
-  0  success (warnings may have been printed)
-  1  a material, template or texture is invalid, or compilation failed (diagnostics on stderr)
-  2  bad command line
-  3  an output could not be written
-  4  render, preview: no Vulkan device, or the device failed)";
-
 // Fills the compile options from the checked names of --target, --glsl-version, --msl-version and --line-directives.
 void applyNames(const std::vector<std::string>& targets, const std::string& glsl, const std::string& msl, const std::string& lines,
                 CompileOptions& o) {
@@ -58,20 +48,6 @@ void applyNames(const std::vector<std::string>& targets, const std::string& glsl
     if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
     for (LineDirectives mode : {LineDirectives::None, LineDirectives::Functions, LineDirectives::Statements})
         if (toString(mode) == lines) o.lineDirectives = mode;
-}
-
-// "; did you mean `--vertex`?" for the first unexpected argument that looks like a misspelt option, else "".
-std::string suggestOption(const CLI::App& app) {
-    std::vector<std::string> names;
-    for (const CLI::Option* o : app.get_options()) {
-        for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
-        for (const std::string& n : o->get_snames()) names.push_back("-" + n);
-    }
-    for (const std::string& arg : app.remaining()) {
-        if (!arg.starts_with("--")) continue;
-        if (auto best = closestMatch(arg.substr(0, arg.find('=')), names)) return "; did you mean `" + *best + "`?";
-    }
-    return "";
 }
 
 }  // namespace
@@ -98,46 +74,6 @@ bool LayoutOptions::resolve(ResourceLayout& out) const {
     for (const Flag& f : flags)
         if (f.value) f.field->field(out) = *f.value;
     return true;
-}
-
-Diagnostics byPosition(Diagnostics diags) {
-    std::map<std::string, size_t> files;
-    for (const Diagnostic& d : diags) files.emplace(d.loc.file, files.size());
-    std::stable_sort(diags.begin(), diags.end(), [&files](const Diagnostic& a, const Diagnostic& b) {
-        return std::tuple(files.at(a.loc.file), a.loc.line, a.loc.col) < std::tuple(files.at(b.loc.file), b.loc.line, b.loc.col);
-    });
-    return diags;
-}
-
-std::optional<std::pair<int, int>> parseSize(const std::string& text, int least, int most) {
-    int width = 0, height = 0;
-    char x = 0;
-    std::istringstream in(text);
-    if (!(in >> width >> x >> height) || x != 'x' || !in.eof()) return std::nullopt;
-    if (width < least || height < least || width > most || height > most) return std::nullopt;
-    return std::pair{width, height};
-}
-
-std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args) {
-    app.footer(kExitCodes);
-    app.get_formatter()->column_width(30);
-    try {
-        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 consumes from the back
-        app.parse(reversed);
-    } catch (const CLI::CallForVersion& e) {  // a CLI::Success too: caught first
-        std::cout << e.what() << "\n";
-        return kOk;
-    } catch (const CLI::Success&) {
-        std::cout << app.help();
-        return kOk;
-    } catch (const CLI::ExtrasError& e) {
-        std::cerr << "hexc: " << e.what() << suggestOption(app) << " (see " << app.get_name() << " --help)\n";
-        return kUsage;
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "hexc: " << e.what() << " (see " << app.get_name() << " --help)\n";
-        return kUsage;
-    }
-    return std::nullopt;
 }
 
 namespace {

@@ -6,17 +6,22 @@
 #include <utility>
 #include <vector>
 
+#include "command.h"
 #include "hexc/compiler.h"
 #include "hexc/layout.h"
 
-namespace CLI {
-class App;
-}
-
 namespace hexc::cli {
 
-// Exit codes, documented in --help and docs/cli.md.
-enum Exit { kOk = 0, kInvalidInput = 1, kUsage = 2, kWriteFailed = 3, kNoVulkan = 4 };
+// The commands' shared pieces (compiler/command), named here as every command of the command line uses them.
+using command::byPosition;
+using command::kInvalidInput;
+using command::kNoVulkan;
+using command::kOk;
+using command::kUsage;
+using command::kWriteFailed;
+using command::parseSize;
+using command::parseWith;
+using command::writeAtomically;
 
 struct Arguments {
     std::vector<std::filesystem::path> materials;
@@ -52,18 +57,7 @@ struct LayoutOptions {
     bool resolve(ResourceLayout& out) const;
 };
 
-// A `--size WxH`: two whole numbers from `least` to `most`, as (width, height); nullopt when `text` is not that.
-std::optional<std::pair<int, int>> parseSize(const std::string& text, int least, int most);
-
-// `diags` as a run prints them: each file's together, in the order files first appear, by line and column.
-Diagnostics byPosition(Diagnostics diags);
-
-// Parses `args` (without the program and command names) with CLI11 into what `app`'s options are bound to.
-// Returns the exit code when the command is done: kOk after printing --help or --version, kUsage after printing
-// "hexc: <what is wrong>"; nullopt when the command should run.
-std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args);
-
-// `hexc`'s compile mode; nullopt with `out` filled when it should run, else the exit code (see parseWith).
+// `hexc`'s compile mode; nullopt with `out` filled when it should run, else the exit code (see command::parseWith).
 std::optional<int> parseArguments(const std::vector<std::string>& args, Arguments& out);
 
 }  // namespace hexc::cli

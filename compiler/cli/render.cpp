@@ -252,39 +252,12 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
 
 }  // namespace
 
-// The built-in template a material is shown with when its own declares resources only an engine can fill.
-constexpr const char* kFallbackTemplate = "lit";
-
-Material shownMaterial(Material material, const std::string& templateName, const CompileOptions& options, std::string* note) {
-    if (!templateName.empty()) material.templ = TemplateRef::parse(templateName);
-    CompileOptions spirvOnly = options;
-    spirvOnly.targets = {Target::Spirv};
-    CompileResult compiled = compile(material, spirvOnly);
-    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
-    const auto manifest =
-        std::find_if(compiled.files.begin(), compiled.files.end(), [](const OutputFile& f) { return f.name.ends_with(".manifest.json"); });
-    const nlohmann::json own = nlohmann::json::parse(manifest->contents)["targets"]["spirv"].value("template_resources", nlohmann::json());
-    note->clear();
-    if (own.empty()) return material;
-    std::string names;
-    for (const nlohmann::json& r : own) names += (names.empty() ? "" : ", ") + r["name"].get<std::string>();
-    *note = "template `" + material.templ.written() + "` declares resources of its own (" + names +
-            "): shown with the built-in template `" + kFallbackTemplate + "`";
-    material.templ = TemplateRef::builtin(kFallbackTemplate);
-    return material;
-}
-
-Material plainTiled(Material material) {
-    for (Slot& s : material.slots) s.hex.enabled = false;
-    return material;
-}
-
 namespace {
 
 // shownMaterial, its note printed as the command line says it, with what picks another template.
 Material shownWithNote(const Material& material, const std::string& templateName, const CompileOptions& options) {
     std::string note;
-    Material shown = shownMaterial(material, templateName, options, &note);
+    Material shown = vk::shownMaterial(material, templateName, options, &note);
     if (!note.empty()) std::cerr << "hexc: note: " << note << " (--template picks another)\n";
     return shown;
 }
@@ -342,7 +315,7 @@ void labelCell(Image& sheet, int x0, int y0, int cell, const std::string& column
 // The preview sheet: plain tiling, both hex blends and the hex weights (columns) at two distances (rows), labelled;
 // each cell rendered under `options`, sRGB-encoded when `srgb`.
 Image previewSheet(vk::Runner& runner, const Material& material, int cell, const CompileOptions& options, bool srgb, Progress& progress) {
-    const Material plain = plainTiled(material);
+    const Material plain = vk::plainTiled(material);
     const Material falloff = withBlend(material, Blend::Falloff), histogram = withBlend(material, Blend::Histogram);
     const bool histogramApplies = std::any_of(material.slots.begin(), material.slots.end(), takesBlend);
     struct Column {

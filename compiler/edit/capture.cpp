@@ -12,8 +12,7 @@
 #include <thread>
 
 #include "hexc/image.h"
-#include "options.h"
-#include "outputs.h"
+#include "command.h"
 
 extern char** environ;
 
@@ -69,10 +68,10 @@ void stopGroup(pid_t pid) {
 
 Server::CaptureHandler Capture::handler() {
     return [this](int width, int height, const std::string& texels, bool failed) -> Reply {
-        int code = cli::kOk;
+        int code = command::kOk;
         if (failed) {
             std::cerr << "hexc: the page could not draw the material:\n" << texels << "\n";
-            code = cli::kInvalidInput;
+            code = command::kInvalidInput;
         } else if (width != options_.width || height != options_.height || texels.size() != size_t(width) * size_t(height) * 4) {
             return {400, "expected " + std::to_string(options_.width) + "x" + std::to_string(options_.height) + " RGBA texels",
                     "text/plain"};
@@ -80,11 +79,11 @@ Server::CaptureHandler Capture::handler() {
             try {
                 Texture frame{width, height, false, std::vector<uint8_t>(texels.begin(), texels.end()), {}};
                 const std::filesystem::path dir = options_.out.has_parent_path() ? options_.out.parent_path() : ".";
-                cli::writeAtomically(dir, options_.out.filename().string(), pngBytes(frame));
+                command::writeAtomically(dir, options_.out.filename().string(), pngBytes(frame));
                 std::cerr << "hexc: wrote " << options_.out.string() << "\n";
             } catch (const std::exception& e) {
                 std::cerr << "hexc: " << e.what() << "\n";
-                code = cli::kWriteFailed;
+                code = command::kWriteFailed;
             }
         }
         std::call_once(once_, [&] { done_.set_value(code); });
@@ -99,11 +98,11 @@ int Capture::wait(int browser) {
         if (done.wait_for(std::chrono::milliseconds(200)) == std::future_status::ready) return done.get();
         if (waitpid(browser, nullptr, WNOHANG) == browser) {
             std::cerr << "hexc: " << options_.browser << " ended before the page drew a frame\n";
-            return cli::kWriteFailed;
+            return command::kWriteFailed;
         }
     }
     std::cerr << "hexc: no frame from the page after " << options_.timeoutSeconds << " s\n";
-    return cli::kWriteFailed;
+    return command::kWriteFailed;
 }
 
 int Capture::run(Server& server) {
@@ -111,7 +110,7 @@ int Capture::run(Server& server) {
     std::string folder = (std::filesystem::temp_directory_path() / "hexc-edit-XXXXXX").string();
     if (!::mkdtemp(folder.data())) {
         std::cerr << "hexc: cannot make a folder for the browser's profile in " << std::filesystem::temp_directory_path().string() << "\n";
-        return cli::kWriteFailed;
+        return command::kWriteFailed;
     }
     const std::filesystem::path profile = folder;
     std::vector<std::string> argv = {options_.browser};
@@ -120,7 +119,7 @@ int Capture::run(Server& server) {
     argv.push_back("--window-size=" + std::to_string(options_.width) + "," + std::to_string(options_.height));
     argv.push_back(server.url() + "&capture=" + std::to_string(options_.width) + "x" + std::to_string(options_.height));
     std::thread serving([&] { server.run(); });
-    int code = cli::kWriteFailed;
+    int code = command::kWriteFailed;
     const pid_t browser = spawn(argv);
     if (browser < 0) {
         std::cerr << "hexc: cannot start `" << options_.browser

@@ -7,7 +7,7 @@
 
 #include "capture.h"
 #include "hexc/materialx.h"
-#include "options.h"
+#include "command.h"
 #include "server.h"
 #include "session.h"
 
@@ -49,30 +49,30 @@ int editCommand(const std::vector<std::string>& args) {
     app.add_option("--capture", capture.out, "render one frame in headless Chromium, write it and exit")->type_name("OUT.png");
     app.add_option("--size", size, "with --capture: the frame's size (default 1280x720)")->type_name("WxH");
     app.add_option("--browser", capture.browser, "with --capture: the Chromium to start (default chromium)")->type_name("PATH");
-    if (std::optional<int> done = cli::parseWith(app, args)) return *done;
+    if (std::optional<int> done = command::parseWith(app, args)) return *done;
     if (material.empty()) {
         std::cerr << "hexc: no material given (see hexc edit --help)\n";
-        return cli::kUsage;
+        return command::kUsage;
     }
     if (isMaterialXFile(material)) {
         std::cerr << "hexc: hexc edit edits JSON materials; `hexc " << material.string() << " -o DIR` compiles a MaterialX document\n";
-        return cli::kUsage;
+        return command::kUsage;
     }
-    const std::optional<std::pair<int, int>> wh = cli::parseSize(size, 16, kMaxCaptureSide);
+    const std::optional<std::pair<int, int>> wh = command::parseSize(size, 16, kMaxCaptureSide);
     if (!wh) {
         std::cerr << "hexc: --size expects WxH, each from 16 to " << kMaxCaptureSide << ", got " << size << "\n";
-        return cli::kUsage;
+        return command::kUsage;
     }
     std::tie(capture.width, capture.height) = *wh;
     if (!capture.out.empty() && capture.out.extension() != ".png") {
         std::cerr << "hexc: --capture " << capture.out.string() << ": hexc edit captures .png\n";
-        return cli::kUsage;
+        return command::kUsage;
     }
     // Reported now too; a material with errors is still served (the page shows them and reloads once the file is
     // fixed), one that cannot be read is not.
     const ParseResult parsed = parseMaterialFile(material);
-    std::cerr << formatAll(cli::byPosition(parsed.diagnostics));
-    if (!parsed.material && !std::filesystem::is_regular_file(material)) return cli::kInvalidInput;
+    std::cerr << formatAll(command::byPosition(parsed.diagnostics));
+    if (!parsed.material && !std::filesystem::is_regular_file(material)) return command::kInvalidInput;
     if (root.empty()) root = material.has_parent_path() ? material.parent_path() : ".";
     Session session(material, root);
     Capture capturing(capture);
@@ -83,9 +83,9 @@ int editCommand(const std::vector<std::string>& args) {
         server.run();
     } catch (const std::exception& e) {
         std::cerr << "hexc: " << e.what() << "\n";
-        return cli::kWriteFailed;
+        return command::kWriteFailed;
     }
-    return cli::kOk;
+    return command::kOk;
 }
 
 }  // namespace hexc::edit

@@ -10,9 +10,7 @@
 #include "hexc/histogram.h"
 #include "hexc/json_text.h"
 #include "hexc/spirv.h"
-#include "options.h"
-#include "outputs.h"
-#include "render.h"
+#include "command.h"
 #include "vk/render.h"
 
 namespace hexc::edit {
@@ -38,7 +36,7 @@ Json toJson(const Diagnostic& d) {
 
 Json toJson(const Diagnostics& diags) {
     Json out = Json::array();
-    for (const Diagnostic& d : cli::byPosition(diags)) out.push_back(toJson(d));
+    for (const Diagnostic& d : command::byPosition(diags)) out.push_back(toJson(d));
     return out;
 }
 
@@ -82,15 +80,27 @@ const OutputFile* fileEndingIn(const CompileResult& r, const std::string& suffix
     return it == r.files.end() ? nullptr : &*it;
 }
 
-// A program for the page: the fragment shader and its manifest, or the diagnostics that stopped it.
-Json program(const Material& m, ShaderCache& cache) {
+// A compile of a program for the page, through the session's cache.
+CompileResult pageCompile(const Material& m, ShaderCache& cache) {
     CompileOptions options = pageOptions();
     options.cache = &cache;
-    CompileResult r = compile(m, options);
+    return compile(m, options);
+}
+
+// A program for the page: the fragment shader and its manifest, or the diagnostics that stopped it.
+Json program(const CompileResult& r) {
     if (!r.ok()) return {{"diagnostics", toJson(r.diagnostics)}};
     return {{"fragment", fileEndingIn(r, ".frag.glsl")->contents},
             {"manifest", Json::parse(fileEndingIn(r, ".manifest.json")->contents)},
             {"diagnostics", toJson(r.diagnostics)}};
+}
+
+// vk::shownMaterial when the page's GLSL did not compile: the SPIR-V alone says what the template declares, or why the
+// material does not compile (a CompileError).
+Material shownWithoutGlsl(const Material& m, ShaderCache& cache, std::string* note) {
+    CompileOptions options = pageOptions();
+    options.cache = &cache;
+    return vk::shownMaterial(m, "", options, note);
 }
 
 // The shader as `hexc MATERIAL -o DIR` ships it, compiled anew: SPIR-V instructions and texture fetches per pixel.
@@ -189,17 +199,24 @@ Reply Session::compile(const std::string& body) {
     Material m = *p.material;
     m.pack = false;
     try {
-        std::string note;
-        const Material shown = cli::shownMaterial(m, "", pageOptions(), &note);
-        const std::string slot = request->value("slot", "");
-        const Slot& s = shownSlot(m, slot);
+        const Slot& s = shownSlot(m, request->value("slot", ""));
         const vk::RenderOutput values = s.kind == SlotKind::Normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
-        // Five compiles, two at a time on this two-core machine's kind: the shader cache holds what repeats.
-        auto hex = std::async(std::launch::async, [&] { return program(shown, cache_); });
-        auto plain = std::async(std::launch::async, [&] { return program(cli::plainTiled(shown), cache_); });
-        Json weights = program(vk::renderedMaterial(m, vk::RenderOutput::Weights, s.name), cache_);
-        Json value = program(vk::renderedMaterial(m, values, s.name), cache_);
-        Json programs = {{"hex", hex.get()}, {"plain", plain.get()}, {"weights", weights}, {"values", value}};
+        // The slot's views use built-in templates whatever the material's: compiled beside the hex-tiled program.
+        const Material weightsView = vk::renderedMaterial(m, vk::RenderOutput::Weights, s.name);
+        const Material valuesView = vk::renderedMaterial(m, values, s.name);
+        auto weights = std::async(std::launch::async, [&] { return program(pageCompile(weightsView, cache_)); });
+        auto value = std::async(std::launch::async, [&] { return program(pageCompile(valuesView, cache_)); });
+        // The hex-tiled program's manifest says whether its template declares resources of its own, which only an engine
+        // fills; then the material is shown with `lit`, compiled anew. A structural edit costs one compile per program
+        // that reads what changed; the shader cache holds the rest.
+        std::string note;
+        CompileResult hex = pageCompile(m, cache_);
+        Material shown = hex.ok() ? vk::shownMaterial(m, hex, &note) : shownWithoutGlsl(m, cache_, &note);
+        if (!note.empty()) hex = pageCompile(shown, cache_);
+        Json programs = {{"hex", program(hex)},
+                         {"plain", program(pageCompile(vk::plainTiled(shown), cache_))},
+                         {"weights", weights.get()},
+                         {"values", value.get()}};
         compiled_ = m;
         return json({{"ok", true},
                      {"text", p.text},
@@ -240,7 +257,7 @@ Reply Session::save(const std::string& body) {
         // A material reached through a link is saved where the link leads, and the link stays a link.
         std::error_code ec;
         const std::filesystem::path target = std::filesystem::is_symlink(file_, ec) ? std::filesystem::canonical(file_) : file_;
-        cli::writeAtomically(target.has_parent_path() ? target.parent_path() : ".", target.filename().string(), p.text);
+        command::writeAtomically(target.has_parent_path() ? target.parent_path() : ".", target.filename().string(), p.text);
     } catch (const std::exception& e) {
         return json({{"ok", false}, {"message", e.what()}}, 500);
     }

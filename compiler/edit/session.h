@@ -45,6 +45,8 @@ public:
     Reply texture(const std::string& name);
     // Changes whenever the material file or one of its textures does (size and modification time).
     std::string version();
+    // The shaders compiled for the page so far (its cache's misses; cost() compiles apart): what its edits cost.
+    size_t compiles() const { return cache_.stats().misses; }
 
 private:
     struct Parsed {

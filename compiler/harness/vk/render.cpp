@@ -109,6 +109,37 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
     return m;
 }
 
+// The built-in template a material is shown with when its own declares resources only an engine can fill.
+constexpr const char* kFallbackTemplate = "lit";
+
+Material shownMaterial(Material material, const std::string& templateName, const CompileOptions& options, std::string* note) {
+    if (!templateName.empty()) material.templ = TemplateRef::parse(templateName);
+    CompileOptions spirvOnly = options;
+    spirvOnly.targets = {Target::Spirv};
+    CompileResult compiled = compile(material, spirvOnly);
+    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
+    return shownMaterial(std::move(material), compiled, note);
+}
+
+Material shownMaterial(Material material, const CompileResult& compiled, std::string* note) {
+    // Every target's entry lists the same resources of the template's (each reflects the one SPIR-V module).
+    const nlohmann::json targets = nlohmann::json::parse(outputFile(compiled, ".manifest.json"))["targets"];
+    const nlohmann::json own = targets.begin()->value("template_resources", nlohmann::json());
+    note->clear();
+    if (own.empty()) return material;
+    std::string names;
+    for (const nlohmann::json& r : own) names += (names.empty() ? "" : ", ") + r["name"].get<std::string>();
+    *note = "template `" + material.templ.written() + "` declares resources of its own (" + names +
+            "): shown with the built-in template `" + kFallbackTemplate + "`";
+    material.templ = TemplateRef::builtin(kFallbackTemplate);
+    return material;
+}
+
+Material plainTiled(Material material) {
+    for (Slot& s : material.slots) s.hex.enabled = false;
+    return material;
+}
+
 std::vector<uint8_t> packParameters(const nlohmann::json& manifest, const ParameterValues& parameters) {
     const auto& params = manifest["parameters"];
     std::vector<uint8_t> bytes(params["size"].get<size_t>(), 0);

@@ -35,6 +35,18 @@ const Slot& slotForOutput(const Material& material, RenderOutput output, const s
 // template; for Shaded, the material itself.
 Material renderedMaterial(const Material& material, RenderOutput output, const std::string& slotName);
 
+// The material as shown with `templateName` (a template file or built-in name) if given, under `options`: a template
+// that declares resources of its own, which only an engine can fill, is replaced by the built-in `lit`, and *note
+// says so (else it is cleared). Compiles it once for SPIR-V to find out; throws CompileError when it does not compile.
+Material shownMaterial(Material material, const std::string& templateName, const CompileOptions& options, std::string* note);
+
+// The same for a material already compiled with its own template (`compiled` did not fail), compiling nothing: the
+// template's own resources are those its manifest lists.
+Material shownMaterial(Material material, const CompileResult& compiled, std::string* note);
+
+// The material with every slot plain-tiled (`enabled` false): what hex-tiling is compared with.
+Material plainTiled(Material material);
+
 // Parameter values by member name, replacing the material's (e.g. a split-coordinates origin).
 using ParameterValues = std::map<std::string, std::vector<double>>;
 

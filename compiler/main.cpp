@@ -1,15 +1,14 @@
-// hexc: a thin command line over libhexc: compile (cli/build), render and preview (cli/render), library,
-// export-mtlx (cli/export), edit (compiler/edit).
+// hexc: dispatches to the command line's commands (cli/: compile, render, preview, library, export-mtlx) and to
+// `hexc edit` (edit/). It stands above both wings, which need nothing of each other.
+#include <csignal>
+
 #include "build.h"
 #include "edit.h"
 #include "export.h"
+#include "hexc/files.h"
 #include "library.h"
 #include "options.h"
 #include "render.h"
-
-#include <csignal>
-
-#include "hexc/files.h"
 
 using namespace hexc;
 
