@@ -77,11 +77,11 @@ public:
         for (size_t i = 0; i < plan_.slots.size(); ++i) {
             const SlotPlan& sp = plan_.slots[i];
             out += expand(plan_.textureBound(i) ? "texture" : "has",
-                          {{"name", sp.slot->name}, {"set", set}, {"binding", std::to_string(sp.binding)}}) +
+                          {{"name", sp.name}, {"set", set}, {"binding", std::to_string(sp.binding)}}) +
                    "\n";
         }
         for (size_t i = 0; i < plan_.luts.size(); ++i)
-            out += expand("lut", {{"name", plan_.slots[plan_.luts[i]].slot->name},
+            out += expand("lut", {{"name", plan_.slots[plan_.luts[i]].name},
                                   {"set", set},
                                   {"binding", std::to_string(b.firstTexture + plan_.slots.size() + i)}}) +
                    "\n";
@@ -91,22 +91,20 @@ public:
     // The slot's sampling and coordinates functions, their library calls resolved in `assembly`: to functions with the
     // slot's fixed settings folded in, or (plan.general) to the general ones, which read every setting from the structs.
     std::string slot(const SlotPlan& sp, Assembly& assembly) const {
-        const Slot& s = *sp.slot;
         const LatticePlan& l = plan_.lattices[sp.lattice];
         Settings fixed;
         Tokens t = {
-            {"name", s.name},
+            {"name", sp.name},
             {"type", sp.type},
             {"explicit", literal(sp.explicitGradients)},
-            {"flipy", literal(s.flipY)},
-            {"channel", literal(sp.pack ? sp.packedChannel : s.channel)},
-            {"texture", sp.pack ? "hexcTex_" + plan_.slots[plan_.packs[*sp.pack].slots.front()].slot->name : ""},
-            {"heightmap", sp.heightMap ? plan_.slots[*sp.heightMap].slot->name : s.name},  // unread without height blending
+            {"flipy", literal(sp.flipY)},
+            {"channel", literal(sp.channel)},
+            {"texture", sp.texture},
+            {"heightmap", sp.heightMapName},
             {"tiles", expand(l.section, {})},
             {"settings", settings(l, sp, fixed)},
-            {"luma",
-             "vec3(" + literal(s.hex.lumacoeffs[0]) + ", " + literal(s.hex.lumacoeffs[1]) + ", " + literal(s.hex.lumacoeffs[2]) + ")"},
-            {"srgb", literal(s.shaderDecodes())},
+            {"luma", "vec3(" + literal(sp.luma[0]) + ", " + literal(sp.luma[1]) + ", " + literal(sp.luma[2]) + ")"},
+            {"srgb", literal(sp.srgb)},
             {"uv", expand(plan_.uvBottomLeft ? "uv.bottomleft" : "uv.topleft", {})},
         };
         addParam(t, "tiling", l.tiling);
@@ -115,7 +113,7 @@ public:
         addParam(t, "originoffset", l.originOffset);
         std::string sampling = expand(sp.section, t);
         for (size_t empty; (empty = sampling.find("\n\n")) != std::string::npos;) sampling.erase(empty, 1);  // ${settings}, ${fields} empty
-        return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, s.name) + "\n";
+        return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, sp.name) + "\n";
     }
 
     // The functions output's code after the slots' (templates/builtin/functions.glsl): each normal slot's
@@ -124,9 +122,9 @@ public:
         std::string normals, calls;
         for (const SlotPlan& sp : plan_.slots) {
             if (sp.heightOnly) continue;
-            const Tokens name = {{"name", sp.slot->name}};
-            if (sp.slot->kind == SlotKind::Normal) normals += expand("engine.normal", name) + "\n\n";
-            calls += expand("engine.call." + std::string(toString(sp.slot->kind)), name) + "\n";
+            const Tokens name = {{"name", sp.name}};
+            if (sp.kind == SlotKind::Normal) normals += expand("engine.normal", name) + "\n\n";
+            calls += expand("engine.call." + std::string(toString(sp.kind)), name) + "\n";
         }
         if (calls.ends_with('\n')) calls.pop_back();
         return normals + expand("engine.calls", {{"calls", calls}}) + "\n";
@@ -199,7 +197,7 @@ private:
             {"adaptive", literal(sp.adaptive)},
             {"adaptiveError", literal(HexTiling::kAdaptiveError)},
         };
-        if (sp.heightMap) fields.push_back({"heightLuma", "hexcChannel(" + literal(plan_.slots[*sp.heightMap].slot->channel) + ")"});
+        if (sp.heightMap) fields.push_back({"heightLuma", "hexcChannel(" + literal(sp.heightChannel) + ")"});
         addParam(fields, "falloff", sp.falloff);
         addParam(fields, "falloffContrast", sp.falloffContrast);
         addParam(fields, "exponent", sp.exponent);
@@ -219,8 +217,8 @@ std::string injectedCode(const ShaderPlan& plan) {
         Emitter emit(plan);
         resources += emit.resources();
         const SlotPlan& first = *std::find_if(plan.slots.begin(), plan.slots.end(), [](const SlotPlan& sp) { return !sp.heightOnly; });
-        resources += emit.expand("first", {{"name", first.slot->name},
-                                           {"kind", std::string(toString(first.slot->kind))},
+        resources += emit.expand("first", {{"name", first.name},
+                                           {"kind", std::string(toString(first.kind))},
                                            {"projection", std::string(toString(first.projection))}}) +
                      "\n";
         for (const SlotPlan& sp : plan.slots)

@@ -69,6 +69,8 @@ void packGroup(ShaderPlan& plan, const std::vector<size_t>& group, const std::ve
             SlotPlan& sp = plan.slots[p.slots[k]];
             sp.section = std::string(toString(sp.slot->kind)) + ".packed";
             sp.packedChannel = p.channels[k] == "rgb" ? 0 : int(std::string("rgba").find(p.channels[k]));
+            sp.channel = sp.packedChannel;
+            sp.texture = "hexcTex_" + plan.slots[p.slots.front()].name;
         }
         plan.packs.push_back(std::move(p));
     };

@@ -192,6 +192,12 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
                 plan.lattices.push_back(planLattice(slot.hex, !options.specialize));
             }
         }
+        sp.name = sp.heightMapName = slot.name;
+        sp.kind = slot.kind;
+        sp.flipY = slot.flipY;
+        sp.srgb = slot.shaderDecodes();
+        sp.luma = slot.hex.lumacoeffs;
+        sp.channel = slot.channel;
         sp.binding = binding++;
         if (sp.histogram) plan.luts.push_back(plan.slots.size());
         plan.slots.push_back(sp);
@@ -199,7 +205,11 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
     for (SlotPlan& sp : plan.slots) {
         if (sp.heightOnly || !sp.slot->heightBlend) continue;
         for (size_t j = 0; j < plan.slots.size(); ++j)
-            if (plan.slots[j].slot->name == sp.slot->heightBlend->slot) sp.heightMap = j;
+            if (plan.slots[j].name == sp.slot->heightBlend->slot) {
+                sp.heightMap = j;
+                sp.heightMapName = plan.slots[j].name;
+                sp.heightChannel = plan.slots[j].channel;
+            }
     }
 }
 

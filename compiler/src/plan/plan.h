@@ -60,10 +60,17 @@ struct LatticePlan {
 };
 
 struct SlotPlan {
-    const Slot* slot = nullptr;
-    std::string section;      // sampling snippet in templates/library/slots.glsl, e.g. "color.hex"; empty when heightOnly
-    std::string coordinates;  // coordinates snippet: "uv", "uv.split" or "triplanar"
-    std::string type;         // the GLSL type hexc_<slot> returns
+    const Slot* slot = nullptr;  // for the stages after codegen (derived textures, manifest); codegen reads the fields below
+    std::string name;            // the slot's: hexc_<name>, its texture hexcTex_<name>
+    SlotKind kind = SlotKind::Color;
+    bool flipY = false;            // a normal slot's green channel points down (DirectX convention)
+    bool srgb = false;             // the shader decodes sRGB itself (Slot::shaderDecodes)
+    std::array<double, 3> luma{};  // MaterialX mode's luma weights of a colour blend
+    int channel = 0;               // the channel a scalar slot reads of its texture, or of its packed texture
+    std::string texture;           // the packed texture's variable it reads instead of its own; empty when not packed
+    std::string section;           // sampling snippet in templates/library/slots.glsl, e.g. "color.hex"; empty when heightOnly
+    std::string coordinates;       // coordinates snippet: "uv", "uv.split" or "triplanar"
+    std::string type;              // the GLSL type hexc_<slot> returns
     Projection projection = Projection::Uv;
     uint32_t binding = 0;             // texture binding (in HexcBindings::set)
     size_t lattice = 0;               // index into ShaderPlan::lattices
@@ -75,6 +82,8 @@ struct SlotPlan {
     bool adaptive = false;            // "taps": "adaptive": each fetch behind a branch on its weight bound
     bool explicitGradients = false;   // plain sampling with the given gradients (triplanar planes: non-uniform flow)
     std::optional<size_t> heightMap;  // index into ShaderPlan::slots of the slot it height-blends by
+    std::string heightMapName;        // that slot's name (its own without height blending, where it is unread)
+    int heightChannel = 0;            // that slot's channel, the height the blend reads
     bool heightOnly = false;          // only the texture is used, as another slot's height map (no function, no lattice)
     bool histogram = false;           // blend histogram: its texture is the Gaussian one, and it reads a look-up table
     bool sharedLod = false;           // lod "shared": one level of detail per slot, fetches with textureLod
