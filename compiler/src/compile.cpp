@@ -67,9 +67,15 @@ ShaderCode cachedCode(const std::string& glsl, const ShaderPlan& plan, const Com
         if (compiled->spirv.empty() || !own.empty()) return std::nullopt;
         return toBytes(*compiled);
     };
-    std::optional<std::string> bytes = options.cache->getOrCompute(shaderCodeKey(glsl, plan, options), compute);
+    // A folder entry is used only if it decodes into every target and valid SPIR-V; otherwise it is replaced.
+    std::optional<ShaderCode> found;
+    auto usable = [&](const std::string& bytes) {
+        found = shaderCodeFromBytes(bytes, targets);
+        return found && validationErrors(found->spirv).empty();
+    };
+    std::optional<std::string> bytes = options.cache->getOrCompute(shaderCodeKey(glsl, plan, options), compute, usable);
     if (compiled) return std::move(*compiled);
-    if (std::optional<ShaderCode> found = shaderCodeFromBytes(*bytes, targets)) return std::move(*found);
+    if (found || (found = shaderCodeFromBytes(*bytes, targets))) return std::move(*found);
     return compileCode(glsl, plan, options, targets, diagnostics);
 }
 

@@ -291,6 +291,54 @@ Texture granite() {
     });
 }
 
+// Slate in bands: the same six levels in cleavage layers 24 texels long and 6 high (few values, anisotropic patches).
+Texture slateBands() {
+    return texture(517, 397, [](int x, int y) {
+        const double level = std::floor(std::min(5.999, 6 * valueNoise(x, 4 * y, 24, 7)));
+        const double v = (40 + 22 * level) / 255;
+        return std::array<double, 3>{1.02 * v, v, v};
+    });
+}
+
+// Crystal granite: grains of four minerals (pale quartz, pink feldspar, black biotite, dark green hornblende), each
+// the cell of the nearest of a jittered grid's points 6 texels apart, with a little noise inside a grain: a few
+// colour clusters far apart, in blocks the size of a far pixel.
+Texture crystalGranite() {
+    static constexpr std::array<std::array<double, 3>, 4> minerals{
+        {{0.78, 0.76, 0.72}, {0.80, 0.52, 0.45}, {0.06, 0.05, 0.05}, {0.12, 0.20, 0.14}}};
+    return texture(511, 401, [](int x, int y) {
+        constexpr int cell = 6;
+        double best = INFINITY;
+        uint32_t grain = 0;
+        for (int j = y / cell - 1; j <= y / cell + 1; ++j)
+            for (int i = x / cell - 1; i <= x / cell + 1; ++i) {
+                const uint32_t ui = uint32_t(i), uj = uint32_t(j);
+                const double px = (i + unit(ui, uj, 8)) * cell, py = (j + unit(ui, uj, 9)) * cell;
+                const double d = (px - x) * (px - x) + (py - y) * (py - y);
+                if (d < best) best = d, grain = hash(ui, uj, 10);
+            }
+        const double pick = (grain >> 8) / 16777216.0, jitter = 0.06 * (unit(uint32_t(x), uint32_t(y), 11) - 0.5);
+        const auto& m = minerals[pick < 0.35 ? 0 : pick < 0.7 ? 1 : pick < 0.9 ? 2 : 3];
+        return std::array<double, 3>{m[0] + jitter, m[1] + jitter, m[2] + jitter};
+    });
+}
+
+// High contrast: near-black ground with near-white blotches (a quarter of the texels), two values only.
+Texture blotches() {
+    return texture(505, 409, [](int x, int y) {
+        const double v = valueNoise(x, y, 11, 12) > 0.64 ? 0.98 : 0.02;
+        return std::array<double, 3>{v, v, v};
+    });
+}
+
+// Low variance: a flat grey with +-2/255 of noise, five 8-bit values (a plaster or a concrete seen close up).
+Texture flatGrey() {
+    return texture(503, 401, [](int x, int y) {
+        const double v = 0.5 + (std::round(4 * valueNoise(x, y, 4, 13)) - 2) / 255;
+        return std::array<double, 3>{v, v, v * 0.98};
+    });
+}
+
 struct Stats {
     double variance = 0;  // summed over r, g, b
     std::array<double, 3> lowest{INFINITY, INFINITY, INFINITY}, highest{-INFINITY, -INFINITY, -INFINITY};
@@ -312,28 +360,69 @@ Stats stats(const Image& image) {
     return s;
 }
 
+// The round trip through the table: each texel's Gaussian value read back through level 0's row (T^-1(T(x)), as the
+// shader does it magnified), against the texel, in 8-bit units of linear value: the largest error and the share of
+// texels off by more than half a step (that would round to another 8-bit value).
+struct RoundTrip {
+    double worst = 0, shareOff = 0;
+};
+
+RoundTrip roundTrip(const Texture& t, const HistogramTransform& h, const reference::SampledTexture& lut) {
+    RoundTrip r;
+    const size_t n = size_t(t.width) * size_t(t.height);
+    for (size_t i = 0; i < n; ++i) {
+        const reference::Rgba G{h.gaussian.rgba32f[i * 4], h.gaussian.rgba32f[i * 4 + 1], h.gaussian.rgba32f[i * 4 + 2], 1};
+        const reference::Rgba back = reference::inverseTransform(lut, G, 0, false);
+        double error = 0;
+        for (size_t c = 0; c < 3; ++c) error = std::max(error, std::fabs(back[c] * 255 - t.rgba8[i * 4 + c]));
+        r.worst = std::max(r.worst, error);
+        r.shareOff += error > 0.5 ? 1.0 / double(n) : 0;
+    }
+    return r;
+}
+
+// The texture's distinct RGB texels, sorted, and the largest gap between adjacent values of one channel among them.
+std::vector<std::array<uint8_t, 3>> distinctTexels(const Texture& t) {
+    std::vector<std::array<uint8_t, 3>> out;
+    for (size_t i = 0; i < t.rgba8.size(); i += 4) out.push_back({t.rgba8[i], t.rgba8[i + 1], t.rgba8[i + 2]});
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+double largestGap(const std::vector<std::array<uint8_t, 3>>& texels) {
+    double gap = 0;
+    for (size_t c = 0; c < 3; ++c) {
+        std::vector<int> values;
+        for (const auto& t : texels) values.push_back(t[c]);
+        std::sort(values.begin(), values.end());
+        for (size_t i = 1; i < values.size(); ++i) gap = std::max(gap, double(values[i] - values[i - 1]));
+    }
+    return gap;
+}
+
 }  // namespace edge
 }  // namespace
 
-// The histogram blend against the falloff blend at its edges: a few-valued, a heavy-tailed and a leaf-like texture,
-// close (0.75 texel per pixel) and far (7.37 and 29.3 texels per pixel, about levels 3 and 5). Measured against the
-// plain texture rendered the same way: the share of its variance each blend keeps, and the range each stays in. The
-// textures are large enough (about 500 x 400) that level 5 still holds some 200 texels, and the far distances are not
-// whole numbers of texels per pixel, so that the plain render's pixels meet its texels at every bilinear phase, as the
+// The histogram blend at its edges, on a named set of textures unlike the repository's (edge:: above): few-valued
+// (slate, slate in bands, flat grey), heavy-tailed (granite), clustered colours in far-pixel-sized grains (crystal
+// granite), high contrast (blotches: two values), saturated with rare highlights (leaf). Close (0.75 texel per pixel)
+// and far (7.37 and 29.3 texels per pixel, about levels 3 and 5), the share of the plain texture's variance each
+// blend keeps, rendered the same way, the range the result stays in, and the table's round trip. The textures are
+// large enough (about 500 x 400) that level 5 still holds some 200 texels, and the far distances are not whole
+// numbers of texels per pixel, so that the plain render's pixels meet its texels at every bilinear phase, as the
 // tiles' random offsets do: at 8 and 32 texels per pixel every pixel of the plain render sits at one phase, and its
-// variance, the measure's denominator, moved with the view's origin. The claims of docs/material-format.md#blend:
-// the result stays within the texture's range per channel; a few-valued texture keeps as much variance far away as
-// with the falloff blend (equal texels ranked in raster order painted a ramp: 1.49 of the variance on the slate, 5.2
-// in an outside measure); far away every texture keeps 0.6 to 1.6 of it (the per-level table is exact for a texture
-// that is a transform of a Gaussian field; veins and isolated specks are not, and keep up to 1.50 measured); close
-// up, on a heavy-tailed texture it keeps less than the falloff blend (filtering between an isolated extreme texel and
-// its neighbours in Gaussian space pulls it towards the mean).
+// variance, the measure's denominator, moved with the view's origin. docs/material-format.md#blend states these
+// bounds over this set; the figures of each texture are printed.
 TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
     struct Case {
         const char* name;
         Texture texture;
     };
-    for (const Case& c : {Case{"slate", edge::slate()}, Case{"leaf", edge::leaf()}, Case{"granite", edge::granite()}}) {
+    const Case cases[] = {{"slate", edge::slate()},     {"slate-bands", edge::slateBands()}, {"flat-grey", edge::flatGrey()},
+                          {"granite", edge::granite()}, {"crystal", edge::crystalGranite()}, {"blotches", edge::blotches()},
+                          {"leaf", edge::leaf()}};
+    for (const Case& c : cases) {
         Slot falloff;
         falloff.name = c.name, falloff.kind = SlotKind::Color, falloff.colorSpace = ColorSpace::Linear;
         Slot plain = falloff, histogram = falloff;
@@ -347,6 +436,22 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
                                                          for (uint8_t b : c.texture.rgba8) v.push_back(b / 255.0f);
                                                          return v;
                                                      }()});
+        const edge::RoundTrip trip = edge::roundTrip(c.texture, h, lut);
+        // T^-1(T(x)) between two table entries is their interpolation. A texture of d distinct texels has d - 1 jumps,
+        // and where one falls between two entries, the texels whose Gaussian value lies in that interval read a value
+        // between the two sides: off by at most the jump (the largest gap between adjacent values of a channel), on at
+        // most the Gaussian's share of one interval, 13 / 511 standard deviations x phi(0) = 1.015%, per jump.
+        const std::vector<std::array<uint8_t, 3>> distinct = edge::distinctTexels(c.texture);
+        std::printf("  %-11s round trip: worst %.2f/255, %.3f%% of texels off by more than 0.5/255 (%zu distinct texels)\n", c.name,
+                    trip.worst, 100 * trip.shareOff, distinct.size());
+        if (distinct.size() <= 8) {
+            EXPECT_LE(trip.shareOff, double(distinct.size() - 1) * 13.0 / 511 / std::sqrt(2 * std::numbers::pi)) << c.name;
+            EXPECT_LE(trip.worst, edge::largestGap(distinct) + 1e-3) << c.name;  // 1e-3: float32 table entries
+        } else {
+            // The rest of the set: docs/material-format.md#blend's bound over it (the computation is deterministic, in
+            // fp64 but for the float32 tables: the figures reproduce to far below the bound's rounding).
+            EXPECT_LE(trip.shareOff, 0.12) << c.name;
+        }
         for (double texelsPerPixel : {0.75, 7.37, 29.3}) {
             const int pixels = texelsPerPixel < 1 ? 96 : texelsPerPixel < 10 ? 48 : 32;
             const double span = pixels * texelsPerPixel / c.texture.width;
@@ -354,26 +459,24 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
             const edge::Stats p = edge::stats(reference::render(plain, source, view, reference::Output::Value));
             const edge::Stats f = edge::stats(reference::render(falloff, source, view, reference::Output::Value));
             const edge::Stats g = edge::stats(reference::render(histogram, gaussian, view, reference::Output::Value, nullptr, &lut));
-            std::printf("  %-8s %4.2f texels/pixel: variance kept: histogram %.2f, falloff %.2f; histogram range", c.name, texelsPerPixel,
-                        g.variance / p.variance, f.variance / p.variance);
-            for (size_t k = 0; k < 3; ++k)
-                std::printf(" [%.1f, %.1f]/255 of [%.1f, %.1f]", g.lowest[k] * 255, g.highest[k] * 255, texels.lowest[k] * 255,
-                            texels.highest[k] * 255);
-            std::printf("\n");
+            const double kept = g.variance / p.variance, keptFalloff = f.variance / p.variance;
+            std::printf("  %-11s %5.2f texels/pixel: variance kept: histogram %.2f, falloff %.2f, histogram / falloff %.2f\n", c.name,
+                        texelsPerPixel, kept, keptFalloff, kept / keptFalloff);
             for (size_t k = 0; k < 3; ++k) {  // 1e-6: the range is stored in float32
                 EXPECT_GE(g.lowest[k], texels.lowest[k] - 1e-6) << c.name;
                 EXPECT_LE(g.highest[k], texels.highest[k] + 1e-6) << c.name;
             }
-            const double kept = g.variance / p.variance;
+            // Far away, docs/material-format.md#blend's bounds over the set (the measured extremes rounded outwards to
+            // 0.05; deterministic, as above): 0.35 to 1.50 of the plain texture's variance, 0.36 to 1.65 of the falloff
+            // blend's, at least as much as it on the few-valued slates (measured 1.00 to 1.05).
             if (texelsPerPixel > 1) {
-                EXPECT_GE(kept, 0.6) << c.name << " at " << texelsPerPixel;
-                EXPECT_LE(kept, 1.6) << c.name << " at " << texelsPerPixel;
-                // Measured 0.03 to 0.04 apart; a ramp from ordered ties adds half the variance and more.
-                if (c.name == std::string("slate")) {
-                    EXPECT_NEAR(kept, f.variance / p.variance, 0.2) << "at " << texelsPerPixel;
-                }
+                EXPECT_GE(kept, 0.30) << c.name << " at " << texelsPerPixel;
+                EXPECT_LE(kept, 1.55) << c.name << " at " << texelsPerPixel;
+                EXPECT_GE(kept / keptFalloff, 0.35) << c.name << " at " << texelsPerPixel;
+                EXPECT_LE(kept / keptFalloff, 1.70) << c.name << " at " << texelsPerPixel;
+                if (std::string(c.name).starts_with("slate")) EXPECT_GE(kept / keptFalloff, 1.0) << c.name << " at " << texelsPerPixel;
             } else if (c.name == std::string("granite")) {
-                EXPECT_LT(kept, f.variance / p.variance);
+                EXPECT_LT(kept, keptFalloff);  // close up, specks filtered in Gaussian space fade
             }
         }
     }

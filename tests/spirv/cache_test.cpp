@@ -7,11 +7,14 @@
 #include <fstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "backends/backends.h"
 #include "codegen/codegen.h"
 #include "hexc/cache.h"
 #include "hexc/compiler.h"
 #include "hexc/files.h"
+#include "hexc/hash.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
 #include "support.h"
@@ -159,6 +162,38 @@ TEST(ShaderCache, AFolderServesLaterRunsAndDamagedEntriesAreCompiledAgain) {
         EXPECT_EQ(again.stats().misses, 1u);
         EXPECT_TRUE(readFile(entry).value() == good);
     }
+}
+
+// An entry whose checksum holds but whose payload does not decode as its reader needs (here: shader code whose SPIR-V
+// is zeros, written with its checksum as another build of hexc, or a person, could) is removed, compiled again and
+// replaced, not used or failed on by every later build.
+TEST(ShaderCache, AnEntryWithAGoodChecksumButBadContentsIsReplaced) {
+    const fs::path dir = freshFolder("hexc_cache_bad_contents");
+    const Material rock = material("rock");
+    const CompileResult fresh = compileWith(rock, nullptr);
+    {
+        ShaderCache first(dir);
+        compileWith(rock, &first);
+    }
+    ASSERT_EQ(entries(dir).size(), 1u);
+    const fs::path entry = entries(dir)[0];
+    const std::string good = readFile(entry).value(), key = entry.filename().string();
+    const size_t payloadAt = good.find('\n', good.find('\n', good.find('\n') + 1) + 1) + 1;  // after header, key, checksum
+    nlohmann::json code = nlohmann::json::from_cbor(good.substr(payloadAt));
+    code["spirv"] = nlohmann::json::binary(std::vector<uint8_t>(code["spirv"].get_binary().size(), 0));
+    const std::vector<uint8_t> cbor = nlohmann::json::to_cbor(code);
+    const std::string payload(cbor.begin(), cbor.end());
+    ContentHash sum;
+    sum.add(payload);
+    std::ofstream(entry, std::ios::binary | std::ios::trunc) << good.substr(0, payloadAt - 33) << sum.hex() << "\n" << payload;
+    for (int run = 0; run < 2; ++run) {  // the second run finds the entry the first replaced it with
+        ShaderCache again(dir);
+        expectSameFiles(compileWith(rock, &again), fresh);
+        EXPECT_EQ(again.stats().corrupt, run == 0 ? 1u : 0u) << "run " << run;
+        EXPECT_EQ(again.stats().hits, run == 0 ? 0u : 1u) << "run " << run;
+        EXPECT_TRUE(readFile(entry).value() == good) << "run " << run;
+    }
+    EXPECT_EQ(key, entries(dir)[0].filename().string());
 }
 
 TEST(ShaderCache, ConcurrentWritersShareOneFolder) {

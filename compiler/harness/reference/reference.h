@@ -202,6 +202,10 @@ SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, co
 // longitude and latitude (radians), P = N = (cos v sin u, sin v, cos v cos u); dPdx, dPdy from the uv gradients.
 SurfacePoint previewSphere(double u, double v, double dudx, double dvdx, double dudy, double dvdy);
 
+// The histogram blend's way back from blended Gaussian values G at level of detail `lod`, through the slot's look-up
+// table (hexc/histogram.h): each channel's inverse, then RGB kept within the texture's range.
+Rgba inverseTransform(const SampledTexture& lut, const Rgba& G, double lod, bool scalar);
+
 enum class Output { Value, Weights };  // Weights: (w.x, w.y, w.z, 1) per pixel
 
 // Every pixel of a view, row by row (row 0 at the top), with its details: the slot at the pixel centre's uv, or

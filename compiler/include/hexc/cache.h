@@ -33,8 +33,11 @@ public:
 
     // The value under `key`: from memory, else from the folder, else compute()'s, stored. Threads asking for a key
     // another thread is computing wait for it, so a batch computes each key once. compute() returning nullopt
-    // (a failed compile) stores nothing.
-    std::optional<std::string> getOrCompute(const std::string& key, const std::function<std::optional<std::string>()>& compute);
+    // (a failed compile) stores nothing. `usable` (if given) checks a folder entry's payload as its reader will read
+    // it: an entry whose checksum holds but whose payload does not decode (written by another build of hexc with the
+    // same identity, or by hand) is removed and computed again like a damaged one, not returned on every run.
+    std::optional<std::string> getOrCompute(const std::string& key, const std::function<std::optional<std::string>()>& compute,
+                                            const std::function<bool(const std::string&)>& usable = {});
 
     // Removes the folder's least recently used entries until it holds at most maxBytes. Run after a batch.
     void trim() const;
@@ -42,13 +45,13 @@ public:
     struct Stats {
         size_t hits = 0;         // found in memory or in the folder
         size_t misses = 0;       // computed
-        size_t corrupt = 0;      // folder entries that failed their checksum (removed, computed again)
+        size_t corrupt = 0;      // folder entries that failed their checksum or `usable` (removed, computed again)
         std::string unwritable;  // why the first entry could not be written to the folder, if one could not
     };
     Stats stats() const;
 
 private:
-    std::optional<std::string> loadFromFolder(const std::string& key);
+    std::optional<std::string> loadFromFolder(const std::string& key, const std::function<bool(const std::string&)>& usable);
     void storeInFolder(const std::string& key, const std::string& value);
     std::filesystem::path entryPath(const std::string& key) const;
 

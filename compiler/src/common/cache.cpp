@@ -78,7 +78,8 @@ std::filesystem::path defaultCacheDir() {
 
 ShaderCache::ShaderCache(std::filesystem::path dir, uint64_t maxBytes) : dir_(std::move(dir)), maxBytes_(maxBytes) {}
 
-std::optional<std::string> ShaderCache::getOrCompute(const std::string& key, const std::function<std::optional<std::string>()>& compute) {
+std::optional<std::string> ShaderCache::getOrCompute(const std::string& key, const std::function<std::optional<std::string>()>& compute,
+                                                     const std::function<bool(const std::string&)>& usable) {
     {
         std::unique_lock lock(mutex_);
         done_.wait(lock, [&] {
@@ -91,7 +92,7 @@ std::optional<std::string> ShaderCache::getOrCompute(const std::string& key, con
         }
         memory_.emplace(key, std::nullopt);  // this thread computes it; others wait
     }
-    std::optional<std::string> value = dir_.empty() ? std::nullopt : loadFromFolder(key);
+    std::optional<std::string> value = dir_.empty() ? std::nullopt : loadFromFolder(key, usable);
     const bool found = value.has_value();
     if (!found) {
         try {
@@ -125,7 +126,7 @@ std::optional<std::string> ShaderCache::getOrCompute(const std::string& key, con
 
 std::filesystem::path ShaderCache::entryPath(const std::string& key) const { return dir_ / key.substr(0, 2) / key; }
 
-std::optional<std::string> ShaderCache::loadFromFolder(const std::string& key) {
+std::optional<std::string> ShaderCache::loadFromFolder(const std::string& key, const std::function<bool(const std::string&)>& usable) {
     const std::filesystem::path path = entryPath(key);
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return std::nullopt;
@@ -134,7 +135,7 @@ std::optional<std::string> ShaderCache::loadFromFolder(const std::string& key) {
     const size_t payloadAt = head.size() + 33;  // the checksum's 32 digits and a newline
     if (bytes && bytes->starts_with(head) && bytes->size() >= payloadAt && (*bytes)[payloadAt - 1] == '\n') {
         std::string payload = bytes->substr(payloadAt);
-        if (bytes->compare(head.size(), 32, checksum(payload)) == 0) {
+        if (bytes->compare(head.size(), 32, checksum(payload)) == 0 && (!usable || usable(payload))) {
             // Its time marks it used, for trim().
             std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);
             return payload;

@@ -45,12 +45,13 @@ TextPos textPosition(std::string_view text, size_t offset) {
     return p;
 }
 
-LineIndex::LineIndex(std::string_view text) : text_(text), bom_(byteOrderMarkSize(text)), lineStarts_{bom_} {
-    size_t chars = 0;
-    for (size_t i = bom_; i < text.size(); ++i) {
+LineIndex::LineIndex(std::string_view text)
+    : text_(text.substr(0, UINT32_MAX)), bom_(byteOrderMarkSize(text)), lineStarts_{uint32_t(bom_)} {
+    uint32_t chars = 0;
+    for (size_t i = bom_; i < text_.size(); ++i) {
         if ((i - bom_) % kStride == 0) checkpoints_.push_back(chars);
-        if (text[i] == '\n') lineStarts_.push_back(i + 1);
-        chars += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;
+        if (text_[i] == '\n') lineStarts_.push_back(uint32_t(i + 1));
+        chars += (static_cast<unsigned char>(text_[i]) & 0xC0) != 0x80;
     }
     checkpoints_.push_back(chars);  // for offsets at the end
 }
@@ -106,39 +107,51 @@ std::optional<size_t> excessiveNesting(std::string_view text) {
     return std::nullopt;
 }
 
-JsonLocator::JsonLocator(std::string_view text) : text_(text), pos_(byteOrderMarkSize(text)), scanned_(pos_) {
-    skipSpace();
-    if (pos_ < text_.size()) parseValue("");
-}
+namespace {
 
-TextPos JsonLocator::here() {
-    advance(scannedPos_, text_, scanned_, pos_);  // pos_ only moves forward
-    scanned_ = pos_;
-    return scannedPos_;
-}
-
-TextPos JsonLocator::value(const std::string& pointer) const {
-    std::string p = pointer;
-    for (;;) {
-        if (auto it = values_.find(p); it != values_.end()) return it->second.pos;
-        if (p.empty()) return {1, 1};
-        p.erase(p.rfind('/'));
+// The number of children of each array and object of a JSON text, in the order they open: a non-empty container has
+// one more than the commas at its level. Strings are skipped; the text is one nlohmann accepted.
+std::vector<uint32_t> childCounts(std::string_view text) {
+    std::vector<uint32_t> counts;
+    std::vector<size_t> open;  // indexes into counts, innermost last
+    bool opened = false;       // a container opened and nothing but space read since
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
+        if (opened && c != ']' && c != '}') counts[open.back()] = 1;
+        opened = false;
+        if (c == '"') {
+            for (++i; i < text.size() && text[i] != '"';) i += text[i] == '\\' ? 2 : 1;
+        } else if (c == '[' || c == '{') {
+            open.push_back(counts.size());
+            counts.push_back(0);
+            opened = true;
+        } else if ((c == ']' || c == '}') && !open.empty()) {
+            open.pop_back();
+        } else if (c == ',' && !open.empty()) {
+            ++counts[open.back()];
+        }
     }
+    return counts;
 }
 
-std::optional<JsonLocator::Span> JsonLocator::valueSpan(const std::string& pointer) const {
-    if (auto it = values_.find(pointer); it != values_.end()) return it->second.span;
-    return std::nullopt;
-}
+}  // namespace
 
-std::optional<size_t> JsonLocator::keyOffset(const std::string& pointer) const {
-    if (auto it = keys_.find(pointer); it != keys_.end()) return it->second.offset;
-    return std::nullopt;
-}
-
-TextPos JsonLocator::key(const std::string& pointer) const {
-    if (auto it = keys_.find(pointer); it != keys_.end()) return it->second.pos;
-    return value(pointer);
+JsonLocator::JsonLocator(std::string_view text) : text_(text), pos_(byteOrderMarkSize(text)), lines_(text) {
+    if (text_.size() >= UINT32_MAX) return;  // beyond 32-bit offsets: nothing located (every position is 1:1)
+    skipSpace();
+    if (pos_ >= text_.size()) return;
+    // Every value's node in place from the start: the root, then each container's children where it opens.
+    childCounts_ = childCounts(text_.substr(pos_));
+    size_t values = 1;
+    for (uint32_t n : childCounts_) values += n;
+    nodes_.resize(values);
+    parseValue(0, "");
+    childCounts_ = {};
+    // In document order of the second key, as nlohmann meets them.
+    std::stable_sort(duplicateOffsets_.begin(), duplicateOffsets_.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    for (const DuplicateAt& d : duplicateOffsets_) duplicates_.push_back({d.pointer, lines_.at(d.first), lines_.at(d.second)});
+    duplicateOffsets_ = {};
 }
 
 void JsonLocator::skipSpace() {
@@ -151,46 +164,32 @@ void JsonLocator::parseString() {
     ++pos_;  // closing quote
 }
 
-namespace {
-// A key as nlohmann reads it: the text between the quotes, its escapes decoded ("n\\u0061me" is "name"), so that
-// pointers match the parsed document's. Escapes are rare in material keys: only those keys are decoded.
-std::string keyText(std::string_view quoted) {
-    if (quoted.find('\\') == std::string_view::npos) return std::string(quoted.substr(1, quoted.size() - 2));
-    return nlohmann::json::parse(quoted).get<std::string>();  // the document already parsed, so this string does
+// The key whose opening quote is at `offset` as nlohmann reads it: the text between the quotes, its escapes decoded
+// ("n\\u0061me" is "name") into `scratch`, so that pointers match the parsed document's. Escapes are rare in
+// material keys: only those keys are decoded.
+std::string_view JsonLocator::keyAt(uint32_t offset, std::string& scratch) const {
+    size_t end = size_t(offset) + 1;
+    while (end < text_.size() && text_[end] != '"') end += text_[end] == '\\' ? 2 : 1;
+    const std::string_view quoted = text_.substr(offset, end + 1 - offset);
+    if (quoted.find('\\') == std::string_view::npos) return quoted.substr(1, quoted.size() - 2);
+    scratch = nlohmann::json::parse(quoted).get<std::string>();  // the document already parsed, so this string does
+    return scratch;
 }
-}  // namespace
 
-void JsonLocator::parseValue(const std::string& pointer) {
-    Value& located = values_.emplace(pointer, Value{here(), {pos_, pos_}}).first->second;  // no insertion moves it
-    char c = text_[pos_];
-    if (c == '{') {
+void JsonLocator::parseValue(uint32_t slot, const std::string& pointer) {
+    const uint32_t begin = uint32_t(pos_);
+    const char c = text_[pos_];
+    uint32_t first = 0, count = 0;
+    if (c == '{' || c == '[') {
+        count = childCounts_[containersRead_++];
+        first = nextFree_, nextFree_ += count;
         ++pos_;
         skipSpace();
-        while (pos_ < text_.size() && text_[pos_] != '}') {
-            TextPos keyPos = here();
-            size_t start = pos_;
-            parseString();
-            std::string key = keyText(text_.substr(start, pos_ - start));
-            std::string child = pointerAppend(pointer, key);
-            if (auto [it, added] = keys_.try_emplace(child, Key{keyPos, start}); !added) {
-                duplicates_.push_back({child, it->second.pos, keyPos});
-                it->second.offset = start;  // the last one's text, as nlohmann keeps its value
-            }
-            skipSpace();
-            ++pos_;  // ':'
-            skipSpace();
-            values_.erase(child);  // for a duplicate, the last one wins, as in nlohmann
-            parseValue(child);
-            skipSpace();
-            if (text_[pos_] == ',') ++pos_;
-            skipSpace();
-        }
-        ++pos_;
-    } else if (c == '[') {
-        ++pos_;
-        skipSpace();
-        for (size_t i = 0; pos_ < text_.size() && text_[pos_] != ']'; ++i) {
-            parseValue(pointerAppend(pointer, i));
+        for (uint32_t i = 0; i < count && pos_ < text_.size() && text_[pos_] != (c == '{' ? '}' : ']'); ++i) {
+            if (c == '{')
+                parseMember(first + i, pointer);
+            else
+                parseValue(first + i, pointerAppend(pointer, i));
             skipSpace();
             if (text_[pos_] == ',') ++pos_;
             skipSpace();
@@ -202,7 +201,97 @@ void JsonLocator::parseValue(const std::string& pointer) {
         // number, true, false, null
         while (pos_ < text_.size() && std::string_view(",]} \t\r\n").find(text_[pos_]) == std::string_view::npos) ++pos_;
     }
-    located.span.end = std::min(pos_, text_.size());
+    Node& node = nodes_[slot];
+    node.begin = begin, node.end = uint32_t(std::min(pos_, text_.size())), node.first = first, node.count = count;
+    if (c == '{') sortMembers(node, pointer);
+}
+
+void JsonLocator::parseMember(uint32_t slot, const std::string& object) {
+    const size_t keyStart = pos_;
+    parseString();
+    skipSpace();
+    ++pos_;  // ':'
+    skipSpace();
+    std::string scratch;
+    parseValue(slot, pointerAppend(object, keyAt(uint32_t(keyStart), scratch)));
+    nodes_[slot].key = uint32_t(keyStart);
+}
+
+// An object's members sorted by key, document order kept among equal keys (the last of them is the one nlohmann
+// keeps), and its duplicate keys noted: each later one against the first.
+void JsonLocator::sortMembers(const Node& object, const std::string& pointer) {
+    const auto members = nodes_.begin() + std::ptrdiff_t(object.first), end = members + std::ptrdiff_t(object.count);
+    std::string a, b;
+    std::stable_sort(members, end, [&](const Node& x, const Node& y) { return keyAt(x.key, a) < keyAt(y.key, b); });
+    for (auto run = members; run != end;) {
+        auto next = run + 1;
+        for (; next != end && keyAt(next->key, a) == keyAt(run->key, b); ++next)
+            duplicateOffsets_.push_back({pointerAppend(pointer, keyAt(run->key, b)), run->key, next->key});
+        run = next;
+    }
+}
+
+std::optional<uint32_t> JsonLocator::child(const Node& parent, std::string_view token) const {
+    const auto members = nodes_.begin() + std::ptrdiff_t(parent.first), end = members + std::ptrdiff_t(parent.count);
+    if (text_[parent.begin] == '[') {
+        size_t index = 0;
+        if (token.empty() || token.size() > 9 || (token.size() > 1 && token[0] == '0') ||
+            !std::all_of(token.begin(), token.end(), [](char d) { return d >= '0' && d <= '9'; }))
+            return std::nullopt;
+        for (char d : token) index = index * 10 + size_t(d - '0');
+        return index < parent.count ? std::optional(uint32_t(parent.first + index)) : std::nullopt;
+    }
+    if (text_[parent.begin] != '{') return std::nullopt;
+    std::string scratch;
+    const auto after = std::upper_bound(members, end, token, [&](std::string_view t, const Node& n) { return t < keyAt(n.key, scratch); });
+    if (after == members || keyAt((after - 1)->key, scratch) != token) return std::nullopt;
+    return uint32_t(after - 1 - nodes_.begin());  // the last of equal keys, as nlohmann keeps it
+}
+
+// Walks `pointer`'s tokens ("~1" is "/", "~0" is "~") down from the root as far as the text holds them.
+std::optional<JsonLocator::Found> JsonLocator::find(const std::string& pointer) const {
+    if (nodes_.empty()) return std::nullopt;
+    Found found{0, true, 0};
+    for (size_t at = 0; at < pointer.size();) {
+        const size_t next = std::min(pointer.find('/', at + 1), pointer.size());
+        std::string token;
+        for (size_t i = at + 1; i < next; ++i) {
+            const bool escape = pointer[i] == '~' && i + 1 < next;
+            token += escape ? (pointer[i + 1] == '1' ? '/' : '~') : pointer[i];
+            i += escape;
+        }
+        const std::optional<uint32_t> c = child(nodes_[found.node], token);
+        if (!c) return Found{found.node, false};
+        found.parent = found.node, found.node = *c, at = next;
+    }
+    return found;
+}
+
+TextPos JsonLocator::value(const std::string& pointer) const {
+    const std::optional<Found> f = find(pointer);
+    return f ? lines_.at(nodes_[f->node].begin) : TextPos{};
+}
+
+TextPos JsonLocator::key(const std::string& pointer) const {
+    const std::optional<Found> f = find(pointer);
+    if (!f || !f->whole || nodes_[f->node].key == kNoKey) return value(pointer);
+    // The first of equal keys: where a duplicated member was first named.
+    uint32_t node = f->node;
+    std::string a, b;
+    while (node > nodes_[f->parent].first && keyAt(nodes_[node - 1].key, a) == keyAt(nodes_[node].key, b)) --node;
+    return lines_.at(nodes_[node].key);
+}
+
+std::optional<JsonLocator::Span> JsonLocator::valueSpan(const std::string& pointer) const {
+    const std::optional<Found> f = find(pointer);
+    if (!f || !f->whole) return std::nullopt;
+    return Span{nodes_[f->node].begin, nodes_[f->node].end};
+}
+
+std::optional<size_t> JsonLocator::keyOffset(const std::string& pointer) const {
+    const std::optional<Found> f = find(pointer);
+    if (!f || !f->whole || nodes_[f->node].key == kNoKey) return std::nullopt;
+    return nodes_[f->node].key;
 }
 
 }  // namespace hexc

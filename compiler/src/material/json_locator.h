@@ -1,8 +1,11 @@
 #pragma once
 // nlohmann::json keeps no source positions, so this scanner re-reads a document that nlohmann has
-// already accepted and records where every value and every object key starts, keyed by JSON pointer.
-// It also finds duplicate keys, which nlohmann silently merges. Linear in the text's size; recursion and the
-// pointers it stores are bounded by kMaxJsonDepth, which the text must respect (check with excessiveNesting).
+// already accepted and records where every value and every object key starts, found by JSON pointer.
+// It also finds duplicate keys, which nlohmann silently merges. Linear in the text's size; recursion is bounded by
+// kMaxJsonDepth, which the text must respect (check with excessiveNesting). Memory: 20 bytes a value (offsets only; a
+// line and column are counted when asked for), allocated once, plus 4 bytes a container while parsing; a value takes at
+// least two bytes of text (itself and a comma or a bracket), so at most 10 times the text's size (12 while parsing).
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -22,6 +25,24 @@ size_t byteOrderMarkSize(std::string_view text);
 
 struct TextPos {
     int line = 1, col = 1;
+};
+
+// textPosition for many offsets in any order: built once per document (linear), each look-up a binary search over the
+// line starts and a count of at most kStride bytes, so a document with a diagnostic on every line stays linear.
+class LineIndex {
+public:
+    explicit LineIndex(std::string_view text);
+    TextPos at(size_t offset) const;
+
+private:
+    static constexpr size_t kStride = 256;
+    size_t charsBefore(size_t offset) const;  // characters (not UTF-8 continuation bytes) in [bom, offset)
+
+    std::string_view text_;  // must outlive the index
+    size_t bom_;             // byteOrderMarkSize
+    // 32 bits: hexc reads no text of 4 GiB (the input limit is 64 MiB), and a text of one-byte lines takes 4 bytes a line.
+    std::vector<uint32_t> lineStarts_;   // byte offset of each line's first byte
+    std::vector<uint32_t> checkpoints_;  // charsBefore(bom_ + k * kStride)
 };
 
 class JsonLocator {
@@ -48,50 +69,47 @@ public:
     std::optional<size_t> keyOffset(const std::string& pointer) const;
 
 private:
-    void parseValue(const std::string& pointer);
+    // One value: its bytes [begin, end), the offset of the key naming it (kNoKey for array elements and the root), and
+    // its children, which are contiguous: nodes_[first, first + count), an object's sorted by key (document order
+    // among equal keys). Offsets fit 32 bits: hexc reads no document of 4 GiB (a larger text is not located).
+    struct Node {
+        uint32_t begin = 0, end = 0, key = kNoKey, first = 0, count = 0;
+    };
+    static constexpr uint32_t kNoKey = UINT32_MAX;
+    struct Found {
+        uint32_t node;    // the value at the pointer, or its nearest ancestor in the text
+        bool whole;       // the pointer's every token was found
+        uint32_t parent;  // node's parent (when node is not the root)
+    };
+
+    void parseValue(uint32_t slot, const std::string& pointer);  // into nodes_[slot]
+    void parseMember(uint32_t slot, const std::string& object);
+    void sortMembers(const Node& object, const std::string& pointer);
     void parseString();
     void skipSpace();
-    TextPos here();
+    std::string_view keyAt(uint32_t offset, std::string& scratch) const;
+    std::optional<uint32_t> child(const Node& parent, std::string_view token) const;
+    std::optional<Found> find(const std::string& pointer) const;
 
     std::string_view text_;  // must outlive the locator
     size_t pos_ = 0;
-    // here() advances from the last position it reported, so locating every value is linear even when the
-    // whole document is one line.
-    size_t scanned_ = 0;
-    TextPos scannedPos_;
-    // One entry a value and one a key (a document may hold millions of values): where each starts, and its bytes.
-    struct Value {
-        TextPos pos;
-        Span span;
+    LineIndex lines_;
+    std::vector<Node> nodes_;  // the root first (when the text holds a value)
+    // While parsing: each container's number of children in the order they open, how many have opened, and the
+    // first node no container has taken yet.
+    std::vector<uint32_t> childCounts_;
+    size_t containersRead_ = 0;
+    uint32_t nextFree_ = 1;
+    struct DuplicateAt {
+        std::string pointer;
+        uint32_t first, second;  // the keys' offsets
     };
-    struct Key {
-        TextPos pos;
-        size_t offset = 0;
-    };
-    std::map<std::string, Value> values_;
-    std::map<std::string, Key> keys_;
+    std::vector<DuplicateAt> duplicateOffsets_;  // while parsing
     std::vector<Duplicate> duplicates_;
 };
 
 // 1-based line and column (in characters) of a byte offset; works on any text, valid JSON or not.
 TextPos textPosition(std::string_view text, size_t offset);
-
-// textPosition for many offsets in any order: built once per document (linear), each look-up a binary search over the
-// line starts and a count of at most kStride bytes, so a document with a diagnostic on every line stays linear.
-class LineIndex {
-public:
-    explicit LineIndex(std::string_view text);
-    TextPos at(size_t offset) const;
-
-private:
-    static constexpr size_t kStride = 256;
-    size_t charsBefore(size_t offset) const;  // characters (not UTF-8 continuation bytes) in [bom, offset)
-
-    std::string_view text_;            // must outlive the index
-    size_t bom_;                       // byteOrderMarkSize
-    std::vector<size_t> lineStarts_;   // byte offset of each line's first byte
-    std::vector<size_t> checkpoints_;  // charsBefore(bom_ + k * kStride)
-};
 
 // The byte offset of each attribute name in the XML start tag at `tagStart` (for the MaterialX reader, which pugixml
 // gives only element offsets); read once per element, however many of its attributes are reported.

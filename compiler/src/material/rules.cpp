@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <new>
 #include <sstream>
 
 #include "common/suggest.h"
@@ -193,6 +195,33 @@ std::optional<size_t> trailingComma(std::string_view text, size_t offset) {
     return at;
 }
 
+// nlohmann's destructor frees a document without recursion, moving its values onto a stack that it allocates: up to
+// one 16-byte value for every two bytes of text (a value takes at least two: itself and a comma or a bracket). A parse
+// that runs out of memory would abort there, unwinding (exit 134). So a parse holds a reserve of 8 bytes a byte of
+// text, released by the new-handler when memory runs out, before the bad_alloc unwinds the partial document. The
+// reserve is only allocated, never touched: it takes address space, not resident memory.
+thread_local std::unique_ptr<char[]> parseReserve;
+
+void releaseReserveAndFail() {
+    if (!parseReserve) throw std::bad_alloc();
+    parseReserve.reset();
+    throw std::bad_alloc();
+}
+
+json parseWithReserve(std::string_view text) {
+    static const bool installed = (std::set_new_handler(releaseReserveAndFail), true);
+    (void)installed;
+    parseReserve.reset(new char[std::max<size_t>(8 * text.size(), 1)]);
+    try {
+        json doc = json::parse(text);
+        parseReserve.reset();
+        return doc;
+    } catch (...) {
+        parseReserve.reset();
+        throw;
+    }
+}
+
 }  // namespace
 
 Diagnostic outOfMemoryReading(const std::filesystem::path& file, std::string_view text) {
@@ -210,7 +239,7 @@ std::optional<json> parseJson(std::string_view text, const std::filesystem::path
     if (std::optional<size_t> at = excessiveNesting(text))
         return syntaxError(*at, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (a material needs 5)");
     try {
-        return json::parse(text);
+        return parseWithReserve(text);
     } catch (const json::parse_error& e) {
         // nlohmann's message carries its own "[json.exception...] parse error at line L, column C: " prefix;
         // the position is recomputed from the byte offset (one past the offending character).

@@ -1,6 +1,9 @@
 // Histogram tables as PFM and packed textures as PNG, each through the shader cache.
 #include "precompute/derived.h"
 
+#include <algorithm>
+#include <cstdio>
+
 #include <nlohmann/json.hpp>
 
 #include "hexc/budgets.h"
@@ -47,6 +50,26 @@ std::string histogramKey(const Slot& s) {
     return h.hex();
 }
 
+// Whether `bytes` are a whole RGB PFM file as pfmBytes writes it (its header, then width x height float triples), of
+// `width` texels a row if given.
+bool wholePfm(const std::vector<uint8_t>& bytes, int width = 0) {
+    const std::string text(bytes.begin(), bytes.begin() + std::ptrdiff_t(std::min<size_t>(bytes.size(), 64)));
+    int w = 0, h = 0, read = 0;
+    if (std::sscanf(text.c_str(), "PF\n%d %d\n-1.0\n%n", &w, &h, &read) != 2 || read == 0 || w <= 0 || h <= 0) return false;
+    return (width == 0 || w == width) && bytes.size() == size_t(read) + size_t(w) * size_t(h) * 12;
+}
+
+// A cache entry's two tables, or nothing when its payload is not two whole PFM files (another format, or damage that
+// kept its checksum): the table kHistogramLutWidth entries wide.
+std::optional<nlohmann::json> histogramEntry(const std::string& payload) {
+    nlohmann::json files = nlohmann::json::from_cbor(payload, true, false);
+    const auto holds = [&](const char* which, int width) {
+        return files.is_object() && files.contains(which) && files[which].is_binary() && wholePfm(files[which].get_binary(), width);
+    };
+    if (!holds("gaussian", 0) || !holds("lut", kHistogramLutWidth)) return std::nullopt;
+    return files;
+}
+
 void addHistogramFiles(const Material& material, const ShaderPlan& plan, ShaderCache* cache, std::vector<OutputFile>& out) {
     for (size_t i : plan.luts) {
         const Slot& s = *plan.slots[i].slot;
@@ -54,10 +77,9 @@ void addHistogramFiles(const Material& material, const ShaderPlan& plan, ShaderC
             const std::vector<uint8_t> cbor = nlohmann::json::to_cbor(histogramFiles(material, s));
             return std::string(cbor.begin(), cbor.end());
         };
-        const std::optional<std::string> cached = cache ? cache->getOrCompute(histogramKey(s), compute) : compute();
-        nlohmann::json files = nlohmann::json::from_cbor(*cached, true, false);
-        const auto holds = [&](const char* which) { return files.is_object() && files.contains(which) && files[which].is_binary(); };
-        if (!holds("gaussian") || !holds("lut")) files = histogramFiles(material, s);  // an entry of another format
+        const auto usable = [](const std::string& payload) { return histogramEntry(payload).has_value(); };
+        const std::optional<std::string> cached = cache ? cache->getOrCompute(histogramKey(s), compute, usable) : compute();
+        nlohmann::json files = histogramEntry(*cached).value();  // computed here, or a folder entry `usable` accepted
         for (const char* which : {"gaussian", "lut"}) {
             const auto& bytes = files[which].get_binary();
             out.push_back({histogramFileName(material.name, s.name, which), std::string(bytes.begin(), bytes.end())});
@@ -110,7 +132,16 @@ std::string packedKey(const ShaderPlan& plan, const PackPlan& p) {
 void addPackedFiles(const Material& material, const ShaderPlan& plan, ShaderCache* cache, std::vector<OutputFile>& out) {
     for (const PackPlan& p : plan.packs) {
         auto compute = [&]() -> std::optional<std::string> { return packedPng(material, plan, p); };
-        const std::optional<std::string> bytes = cache ? cache->getOrCompute(packedKey(plan, p), compute) : compute();
+        // An entry is used if it is a PNG of the pack's size: its signature, then IHDR's big-endian width and height.
+        const auto usable = [&](const std::string& png) {
+            const auto at = [&](size_t i) {
+                return uint32_t(uint8_t(png[i])) << 24 | uint32_t(uint8_t(png[i + 1])) << 16 | uint32_t(uint8_t(png[i + 2])) << 8 |
+                       uint8_t(png[i + 3]);
+            };
+            return png.size() > 24 && png.starts_with("\x89PNG\r\n\x1a\n") && png.compare(12, 4, "IHDR") == 0 &&
+                   at(16) == uint32_t(p.width) && at(20) == uint32_t(p.height);
+        };
+        const std::optional<std::string> bytes = cache ? cache->getOrCompute(packedKey(plan, p), compute, usable) : compute();
         out.push_back({packedFileName(material.name, plan.slots[p.slots.front()].slot->name), *bytes});
     }
 }
