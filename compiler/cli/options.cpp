@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include "hexc/cache.h"
+#include "hexc/engines.h"
 #include "hexc/suggest.h"
 
 #include <CLI/CLI.hpp>
@@ -14,6 +15,13 @@
 
 namespace hexc::cli {
 namespace {
+
+// The engines --engine accepts, as CLI11 checks them.
+std::vector<std::string> engineList() {
+    std::vector<std::string> out;
+    for (std::string_view name : engineNames()) out.emplace_back(name);
+    return out;
+}
 
 const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V, HLSL, GLSL and MSL
 
@@ -224,10 +232,10 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
                  "shader: hexc_<slot>(uv), hexc_<slot>_normal(uv); no main (docs/engines.md)");
     app.add_option("--engine,--engines", a.options.engines,
                    "write a package for each engine instead of shaders: godot3, godot4, filament,\n"
-                   "threejs, babylon (DIR/<engine>/...; functions with every setting baked;\n"
-                   "docs/engines.md)")
+                   "threejs, babylon, unity, unreal (DIR/<engine>/...; functions with every\n"
+                   "setting baked; docs/engines.md)")
         ->delimiter(',')
-        ->check(CLI::IsMember({"godot3", "godot4", "filament", "threejs", "babylon"}));
+        ->check(CLI::IsMember(engineList()));
     app.add_flag_callback(
         "--uv-bottom-left", [&] { a.options.uvOrigin = UvOrigin::BottomLeft; },
         "the engine's uv (0,0) is the image's bottom-left, v up (OpenGL's); hexc\nsamples at (u, 1 - v) itself (docs/conventions.md)");

@@ -13,13 +13,14 @@
 
 #include "codegen/codegen.h"
 #include "common/templates.h"
+#include "engines/hlsl.h"
 #include "engines/roles.h"
 #include "engines/web.h"
 
 namespace hexc {
 namespace {
 
-const char* const kNames[] = {"godot3", "godot4", "filament", "threejs", "babylon"};
+const char* const kNames[] = {"godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal"};
 const char* const kTemplates[] = {"godot3.shader", "godot4.gdshader", "filament.mat"};
 const char* const kExtensions[] = {".shader", ".gdshader", ".mat"};
 
@@ -156,26 +157,41 @@ Wiring wire(const Material& material, const nlohmann::json& functions, Engine en
     return w;
 }
 
-// The package's files under "<engine>/": the functions output's (but the GLSL the package holds) and the package's.
+// The package's files under "<engine>/": the functions output's (but the source the package holds) and the package's.
 std::vector<OutputFile> inFolder(Engine engine, std::vector<OutputFile> files, std::vector<OutputFile> package) {
     std::vector<OutputFile> out;
     for (OutputFile& f : files)
-        if (!f.name.ends_with(".functions.glsl")) out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
+        if (!f.name.ends_with(".functions.glsl") && !f.name.ends_with(".functions.hlsl"))
+            out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
     for (OutputFile& f : package) out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
     return out;
 }
 
-// A web engine's package (engines/web.h): the functions output in GLSL ES 3.00 inside the engine's ES module.
-CompileResult compileForWeb(const Material& material, Engine engine, CompileOptions options) {
-    options.glslVersion = 300;
-    options.glslEs = true;
+// The functions output a package holds: GLSL 330 for Godot and Filament, GLSL ES 3.00 for the web engines, HLSL for
+// Unity and Unreal; every setting baked.
+CompileOptions packageOptions(Engine engine, CompileOptions options) {
+    options.engines.clear();
+    options.functions = true;
+    options.bake = true;  // the engine's material has no block for hexc's parameters
+    options.targets = {isHlslEngine(engine) ? Target::Hlsl : Target::Glsl};
+    options.glslEs = isWebEngine(engine);
+    options.glslVersion = options.glslEs ? 300 : 330;
+    return options;
+}
+
+// A web engine's package (GLSL ES 3.00, engines/web.h) or an HLSL engine's (engines/hlsl.h): the functions output for
+// its language inside the engine's files.
+CompileResult compileForLanguage(const Material& material, Engine engine, CompileOptions options) {
+    const bool hlsl = isHlslEngine(engine);
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;
     const auto file = [&](std::string_view suffix) {
         return std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& f) { return f.name.ends_with(suffix); })->contents;
     };
-    std::vector<OutputFile> package = webPackage(material, engine, nlohmann::json::parse(file(".manifest.json")), file(".functions.glsl"),
-                                                 options.uvOrigin == UvOrigin::BottomLeft, r.diagnostics);
+    const nlohmann::json manifest = nlohmann::json::parse(file(".manifest.json"));
+    const bool bottomLeft = options.uvOrigin == UvOrigin::BottomLeft;
+    std::vector<OutputFile> package = hlsl ? hlslPackage(material, engine, manifest, file(".functions.hlsl"), bottomLeft, r.diagnostics)
+                                           : webPackage(material, engine, manifest, file(".functions.glsl"), bottomLeft, r.diagnostics);
     r.files = r.ok() ? inFolder(engine, std::move(r.files), std::move(package)) : std::vector<OutputFile>{};
     return r;
 }
@@ -211,12 +227,8 @@ std::optional<Engine> engineNamed(std::string_view name) {
 }
 
 CompileResult compileForEngine(const Material& material, Engine engine, CompileOptions options) {
-    options.functions = true;
-    options.bake = true;  // the engine's material has no block for hexc's parameters
-    options.targets = {Target::Glsl};
-    if (isWebEngine(engine)) return compileForWeb(material, engine, options);
-    options.glslVersion = 330;
-    options.glslEs = false;
+    options = packageOptions(engine, options);
+    if (isWebEngine(engine) || isHlslEngine(engine)) return compileForLanguage(material, engine, options);
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;
     std::vector<OutputFile> files;
