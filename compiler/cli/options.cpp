@@ -283,10 +283,6 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
     if (u.manifestPaths) a.options.manifestPathsFrom = a.outDir;
     applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
-    if (!a.options.engines.empty() && (a.listOutputs || !a.depfile.empty())) {
-        std::cerr << "hexc: --engine does not declare its outputs yet: not with --list-outputs or --depfile\n";
-        return kUsage;
-    }
     if (a.options.functions && u.targets.empty()) a.options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};  // no SPIR-V form
     if (!u.layout.resolve(a.options.layout)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {

@@ -24,4 +24,7 @@ bool isWebEngine(Engine engine);
 // takes is a warning, its function kept but not called.
 CompileResult compileForEngine(const Material& material, Engine engine, CompileOptions options);
 
+// The names of the files compileForEngine writes, "<engine>/..." (found by planning alone: hexc --list-outputs).
+OutputNames engineOutputNames(const Material& material, Engine engine, const CompileOptions& options);
+
 }  // namespace hexc

@@ -16,6 +16,7 @@
 #include "engines/hlsl.h"
 #include "engines/roles.h"
 #include "engines/web.h"
+#include "plan/plan.h"
 
 namespace hexc {
 namespace {
@@ -179,6 +180,17 @@ CompileOptions packageOptions(Engine engine, CompileOptions options) {
     return options;
 }
 
+// The names of the package's own files (its source, a web package's texture copies), under no folder.
+std::vector<std::string> packageNames(const Material& material, Engine engine, const CompileOptions& options) {
+    if (isHlslEngine(engine)) return hlslPackageNames(material.name, engine);
+    if (!isWebEngine(engine)) return {material.name + kExtensions[int(engine)]};
+    const ShaderPlan plan = planShader(material, options);
+    std::vector<const Slot*> copied;
+    for (const SlotPlan& s : plan.slots)
+        if (!s.pack) copied.push_back(s.slot);
+    return webPackageNames(material, engine, copied);
+}
+
 // A web engine's package (GLSL ES 3.00, engines/web.h) or an HLSL engine's (engines/hlsl.h): the functions output for
 // its language inside the engine's files.
 CompileResult compileForLanguage(const Material& material, Engine engine, CompileOptions options) {
@@ -217,6 +229,17 @@ Diagnostic unusedSlot(const Material& material, const std::string& slot, std::st
 }
 
 std::string_view toString(Engine engine) { return kNames[int(engine)]; }
+
+OutputNames engineOutputNames(const Material& material, Engine engine, const CompileOptions& options) {
+    const CompileOptions o = packageOptions(engine, options);
+    OutputNames base = outputNames(material, o), out{{}, base.diagnostics};
+    if (hasErrors(out.diagnostics)) return out;
+    const std::string dir = std::string(toString(engine)) + "/";
+    for (const std::string& name : base.names)
+        if (name.find(".functions.") == std::string::npos) out.names.push_back(dir + name);  // the package holds the functions
+    for (const std::string& name : packageNames(material, engine, o)) out.names.push_back(dir + name);
+    return out;
+}
 
 std::vector<std::string_view> engineNames() { return {std::begin(kNames), std::end(kNames)}; }
 
