@@ -185,11 +185,11 @@ Lines lines(const Material& material, const Style& s, const Functions& f, const 
         const Function& fn = *std::find_if(f.functions.begin(), f.functions.end(), [&](const Function& x) { return x.name == name; });
         const Slot& slot = *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& x) { return x.name == slotName; });
         const bool derivative = slot.kind == SlotKind::Normal && entry["returns"] != "vec3";  // the engines take the normal
-        const std::string role = derivative ? "" : slotRole(slot.name, slot.kind);
+        const std::string role = derivative ? "" : slotRole(slot);
         const auto input = std::find_if(inputs().begin(), inputs().end(), [&](const Input& i) { return i.role == role; });
         const bool fills = input != inputs().end() && std::find(taken.begin(), taken.end(), role) == taken.end();
         if (fills) taken.push_back(role);
-        if (!fills && !derivative) diagnostics.push_back(unusedSlot(material, slot.name, toString(s.engine), name));
+        if (!fills && !derivative) diagnostics.push_back(unusedSlot(material, slot, toString(s.engine), name));
         addFunction(l, s, fn, entry["returns"], fills ? &*input : nullptr, uv);
     }
     for (const std::string& t : f.textures) {

@@ -9,6 +9,7 @@
 #include <array>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "codegen/codegen.h"
@@ -16,6 +17,7 @@
 #include "engines/hlsl.h"
 #include "engines/roles.h"
 #include "engines/web.h"
+#include "material/names.h"
 #include "plan/plan.h"
 
 namespace hexc {
@@ -105,16 +107,14 @@ std::string declarations(const std::vector<TextureUse>& used, Engine engine) {
     return out;
 }
 
-// The engine input a slot's role gives it, as the statement that sets it from `value`; empty when the engine has none.
-std::string input(const std::string& slot, SlotKind kind, Engine engine, const std::string& value) {
+// The engine input of a role (but the normal's), as the statement that sets it from `value`.
+std::string input(const std::string& role, Engine engine, const std::string& value) {
     static const std::map<std::string, std::array<std::string, 2>> inputs = {
         {"albedo", {"ALBEDO = (%).rgb;", "material.baseColor = %;"}},
         {"roughness", {"ROUGHNESS = %;", "material.roughness = %;"}},
         {"metallic", {"METALLIC = %;", "material.metallic = %;"}},
         {"ao", {"AO = %;", "material.ambientOcclusion = %;"}},
         {"emission", {"EMISSION = (%).rgb;", "material.emissive = vec4((%).rgb, 0.0);"}}};
-    const std::string role = slotRole(slot, kind);
-    if (role.empty()) return "";
     std::string s = inputs.at(role)[engine == Engine::Filament ? 1 : 0];
     return s.replace(s.find('%'), 1, value);
 }
@@ -128,28 +128,25 @@ struct Wiring {
 Wiring wire(const Material& material, const nlohmann::json& functions, Engine engine) {
     Wiring w;
     const std::string indent = engine == Engine::Filament ? "        " : "    ";
-    bool normalSet = false;
+    std::set<std::string> taken;  // each input takes one slot: the first of its role
     for (const auto& f : functions) {
         const std::string name = f["name"], slot = f["slot"], call = name + "(UV_IN)";
         const Slot& s = *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& x) { return x.name == slot; });
+        if (s.kind == SlotKind::Normal && f["returns"] != "vec3") continue;  // the derivative: the tangent-space normal feeds the engine
+        const std::string role = slotRole(s);
         std::string statement;
-        if (s.kind == SlotKind::Normal) {
-            if (f["returns"] != "vec3") continue;  // the derivative: the tangent-space normal feeds the engine
-            if (normalSet) {
-                statement = "";  // the engine has one normal input: the first normal slot's
-            } else if (engine == Engine::Filament) {
-                normalSet = true;
-                w.normal = indent + "material.normal = " + call + ";";  // before prepareMaterial, as Filament requires
-                continue;
-            } else {
-                normalSet = true;
-                statement = std::string(engine == Engine::Godot3 ? "NORMALMAP" : "NORMAL_MAP") + " = " + call + " * 0.5 + 0.5;";
-            }
+        if (role.empty() || !taken.insert(role).second) {
+            statement = "";
+        } else if (role == "normal" && engine == Engine::Filament) {
+            w.normal = indent + "material.normal = " + call + ";";  // before prepareMaterial, as Filament requires
+            continue;
+        } else if (role == "normal") {
+            statement = std::string(engine == Engine::Godot3 ? "NORMALMAP" : "NORMAL_MAP") + " = " + call + " * 0.5 + 0.5;";
         } else {
-            statement = input(slot, s.kind, engine, call);
+            statement = input(role, engine, call);
         }
         if (statement.empty()) {
-            w.unused.push_back(unusedSlot(material, slot, toString(engine), name));
+            w.unused.push_back(unusedSlot(material, s, toString(engine), name));
             continue;
         }
         w.inputs += indent + statement + "\n";
@@ -210,22 +207,25 @@ CompileResult compileForLanguage(const Material& material, Engine engine, Compil
 
 }  // namespace
 
-std::string slotRole(const std::string& slot, SlotKind kind) {
+std::string slotRole(const Slot& slot) {
     static const std::map<std::string, std::string> roles = {
         {"albedo", "albedo"},       {"basecolor", "albedo"},  {"base_color", "albedo"},  {"diffuse", "albedo"},
         {"roughness", "roughness"}, {"metallic", "metallic"}, {"metalness", "metallic"}, {"ao", "ao"},
         {"occlusion", "ao"},        {"emission", "emission"}, {"emissive", "emission"}};
-    if (kind == SlotKind::Normal) return "normal";
-    auto role = roles.find(slot);
-    if (role == roles.end() || (kind == SlotKind::Color) != (role->second == "albedo" || role->second == "emission")) return "";
+    if (!slot.role.empty()) return slot.role;
+    if (slot.kind == SlotKind::Normal) return "normal";
+    auto role = roles.find(slot.name);
+    if (role == roles.end() || roleKind(role->second) != slot.kind) return "";
     return role->second;
 }
 
-Diagnostic unusedSlot(const Material& material, const std::string& slot, std::string_view engine, const std::string& function) {
-    return Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "",
-                            "slot `" + slot + "` has no " + std::string(engine) +
+Diagnostic unusedSlot(const Material& material, const Slot& slot, std::string_view engine, const std::string& function) {
+    const size_t index = size_t(&slot - material.slots.data());
+    return Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string(), slot.line, slot.col}, "/slots/" + std::to_string(index),
+                            "slot `" + slot.name + "` has no " + std::string(engine) +
                                 " input (docs/engines.md#slots-and-engine-inputs); its function `" + function +
-                                "` is in the package but not called");
+                                "` is in the package but not called",
+                            "give it a `role` the engine has an input for, or call its function yourself");
 }
 
 std::string_view toString(Engine engine) { return kNames[int(engine)]; }

@@ -107,12 +107,12 @@ void wire(const Material& material, const WebEngine& web, const nlohmann::json& 
     for (const auto& f : manifest["functions"]) {
         const Slot& slot = slotNamed(material, f["slot"]);
         if (slot.kind == SlotKind::Normal && f["returns"] != "vec3") continue;  // the derivative: the engine takes the normal
-        const std::string role = slotRole(slot.name, slot.kind);
+        const std::string role = slotRole(slot);
         const bool taken =
             std::any_of(data["slots"].begin(), data["slots"].end(), [&](const nlohmann::json& s) { return s["role"] == role; });
         if (taken || std::find(web.roles.begin(), web.roles.end(), role) == web.roles.end()) {
             data["unmapped"].push_back(slot.name);
-            diagnostics.push_back(unusedSlot(material, slot.name, web.shown, f["name"]));
+            diagnostics.push_back(unusedSlot(material, slot, web.shown, f["name"]));
             continue;
         }
         data["slots"].push_back({{"name", slot.name},
