@@ -175,9 +175,14 @@ def main():
                 out = tmp / f"{material.stem}_{'bl' if bottom_left else 'tl'}"
                 check_package(hexc, engine, glslang, material, out, bottom_left, failures)
         check_refused(engine, glslang, tmp / "rock_tl" / engine, failures)
+    return report(failures, f"{engine}: {len(materials) * 2} packages compiled with glslang's HLSL front end")
+
+
+def report(failures, summary):
+    """Prints each failure and the summary with their count; the exit code."""
     for f in failures:
         print("FAIL", f)
-    print(f"{engine}: {len(materials) * 2} packages compiled with glslang's HLSL front end, {len(failures)} failures")
+    print(f"{summary}, {len(failures)} failures")
     return 1 if failures else 0
 
 
