@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include "hexc/cache.h"
+#include "hexc/engines.h"
 
 #include <CLI/CLI.hpp>
 
@@ -11,6 +12,13 @@
 
 namespace hexc::cli {
 namespace {
+
+// The engines --engine accepts, as CLI11 checks them.
+std::vector<std::string> engineList() {
+    std::vector<std::string> out;
+    for (std::string_view name : engineNames()) out.emplace_back(name);
+    return out;
+}
 
 const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V, HLSL, GLSL and MSL
 
@@ -160,10 +168,10 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
                  "shader: hexc_<slot>(uv), hexc_<slot>_normal(uv); no main (docs/engines.md)");
     app.add_option("--engine,--engines", a.options.engines,
                    "write a package for each engine instead of shaders: godot3, godot4, filament,\n"
-                   "threejs, babylon (DIR/<engine>/...; functions with every setting baked;\n"
-                   "docs/engines.md)")
+                   "threejs, babylon, unity, unreal (DIR/<engine>/...; functions with every\n"
+                   "setting baked; docs/engines.md)")
         ->delimiter(',')
-        ->check(CLI::IsMember({"godot3", "godot4", "filament", "threejs", "babylon"}));
+        ->check(CLI::IsMember(engineList()));
     app.add_flag_callback(
         "--uv-bottom-left", [&] { a.options.uvOrigin = UvOrigin::BottomLeft; },
         "the engine's uv (0,0) is the image's bottom-left, v up (OpenGL's); hexc\nsamples at (u, 1 - v) itself (docs/conventions.md)");
@@ -211,10 +219,6 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
     if (u.manifestPaths) a.options.manifestPathsFrom = a.outDir;
     applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
-    if (!a.options.engines.empty() && (a.listOutputs || !a.depfile.empty())) {
-        std::cerr << "hexc: --engine does not declare its outputs yet: not with --list-outputs or --depfile\n";
-        return kUsage;
-    }
     if (a.options.functions && u.targets.empty()) a.options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};  // no SPIR-V form
     if (!u.layout.resolve(a.options.layout)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {

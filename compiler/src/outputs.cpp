@@ -4,19 +4,40 @@
 #include <set>
 
 #include "hexc/compiler.h"
+#include "hexc/engines.h"
 #include "hexc/histogram.h"
 #include "plan/plan.h"
 
 namespace hexc {
+namespace {
+
+// Each engine's package's (compile() writes them instead of shaders with --engine).
+OutputNames engineNames(const Material& material, const CompileOptions& options) {
+    OutputNames out;
+    for (const std::string& name : options.engines) {
+        const std::optional<Engine> engine = engineNamed(name);
+        if (!engine) continue;  // the compile reports it
+        OutputNames each = engineOutputNames(material, *engine, options);
+        out.names.insert(out.names.end(), each.names.begin(), each.names.end());
+        for (const Diagnostic& d : each.diagnostics)  // the same plan's for every engine: once
+            if (std::none_of(out.diagnostics.begin(), out.diagnostics.end(), [&](const Diagnostic& o) { return o.format() == d.format(); }))
+                out.diagnostics.push_back(d);
+    }
+    std::sort(out.names.begin(), out.names.end());
+    return out;
+}
+
+}  // namespace
 
 OutputNames outputNames(const Material& material, const CompileOptions& options) {
+    if (!options.engines.empty()) return engineNames(material, options);
     OutputNames out;
     const ShaderPlan plan = planShader(material, options);
     out.diagnostics = plan.diagnostics;
     if (hasErrors(out.diagnostics)) return out;
     std::vector<std::string>& names = out.names;
     for (Target t : std::set<Target>(options.targets.begin(), options.targets.end())) {
-        names.push_back(shaderFileName(material.name, t));
+        names.push_back(shaderFileName(material.name, t, options.functions ? "functions" : "frag"));
         if (options.vertex) names.push_back(shaderFileName(material.name, t, "vert"));
     }
     if (options.emitGenerated) names.push_back(material.name + ".generated.frag");

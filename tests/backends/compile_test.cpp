@@ -424,6 +424,27 @@ TEST(Library, WritesAnIncludeFilePerTarget) {
     EXPECT_EQ(readFile(dir / "again" / "hexc_hextiling.hlsl"), hlsl);
 }
 
+// Each library file is an include: it compiles on its own under a consumer's empty main, and declares no resource (a
+// stray global such as an unused `uniform sampler2D _3133;` is refused by Filament's matc and by Godot).
+TEST(Library, EachFileCompilesAloneAndDeclaresNoResource) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_library_alone";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(runHexc("library --target hlsl,glsl,msl -o " + dir.string(), &err), 0) << err;
+    const std::string glsl = readFile(dir / "hexc_hextiling.glsl"), hlsl = readFile(dir / "hexc_hextiling.hlsl");
+    for (const std::string& line : {std::string("\nuniform "), std::string("\nlayout(")})
+        EXPECT_EQ(glsl.find(line), std::string::npos) << line;
+    for (const char* global : {"\nTexture2D", "\nSamplerState", "\ncbuffer"}) EXPECT_EQ(hlsl.find(global), std::string::npos) << global;
+    for (const char* global : {"\ntexture2d", "\nsampler "})
+        EXPECT_EQ(readFile(dir / "hexc_hextiling.metal").find(global), std::string::npos) << global;
+    SpirvResult g = compileToSpirv("#version 450\n" + glsl + "\nvoid main() {}\n", ShaderStage::Fragment, "hexc_hextiling.glsl",
+                                   SourceLanguage::OpenGlGlsl);
+    EXPECT_FALSE(g.words.empty()) << formatAll(g.diagnostics);
+    SpirvResult h = compileToSpirv(hlsl + "\nfloat4 consumer() : SV_Target { return 0.0f; }\n", ShaderStage::Fragment,
+                                   "hexc_hextiling.hlsl", SourceLanguage::Hlsl, "consumer");
+    EXPECT_FALSE(h.words.empty()) << formatAll(h.diagnostics);
+}
+
 TEST(Library, CommandLineErrors) {
     std::string err;
     EXPECT_EQ(runHexc("library -o /tmp/hexc_library_errors", &err), 2);

@@ -144,8 +144,59 @@ TEST(EnginePackages, FilamentReadsMaterialParamsAndSetsTheNormalFirst) {
 TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {
     Diagnostics d;
     const std::string text = package("rock_blend", Engine::Godot3, &d);  // `height`: no Godot input has its name
-    EXPECT_NE(formatAll(d).find("warning[HX204]: slot `height` has no godot3 input"), std::string::npos) << formatAll(d);
+    EXPECT_NE(formatAll(d).find("warning[HX204]: /slots/2: slot `height` has no godot3 input"), std::string::npos) << formatAll(d);
     EXPECT_NE(text.find("float hexc_height(vec2 uv)"), std::string::npos);  // kept for the user to call
+}
+
+}  // namespace
+
+namespace {
+
+// A slot reaches its engine input by its `role` as well as by its name; a slot no input takes is reported at the slot,
+// naming it and the engine, in every engine's package.
+TEST(EnginePackages, SlotsReachInputsByRoleAndTheRestAreReported) {
+    ParseResult p = parseMaterial(R"({"name": "r", "slots": [
+        {"name": "base", "kind": "color", "texture": "textures/rock_albedo.png", "role": "albedo"},
+        {"name": "bumps", "kind": "normal", "texture": "textures/rock_normal.png"},
+        {"name": "gloss", "kind": "scalar", "texture": "textures/rock_roughness.png", "role": "roughness"},
+        {"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"}]})",
+                                  "materials/r.json");
+    ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
+    const std::map<Engine, std::pair<std::string, std::vector<std::string>>> expected = {
+        {Engine::Godot3,
+         {"godot3/r.shader", {"ALBEDO = (hexc_base(UV)).rgb;", "ROUGHNESS = hexc_gloss(UV);", "NORMALMAP = hexc_bumps_normal(UV)"}}},
+        {Engine::Filament, {"filament/r.mat", {"material.baseColor = hexc_base(uv);", "material.roughness = hexc_gloss(uv);"}}},
+        {Engine::Threejs, {"threejs/r.three.js", {"\"call\": \"hexc_base(UV)\"", "\"role\": \"roughness\""}}},
+        {Engine::Unity, {"unity/r.shader", {"surface.albedo = (hexc_base(uv, ", "surface.smoothness = 1.0 - hexc_gloss(uv, "}}},
+        {Engine::Unreal,
+         {"unreal/r.ush", {"Base Color <- CMOT Float 4 (UV, hexcTex_base): return hexc_base(", "Roughness <- CMOT Float 1"}}}};
+    for (const auto& [engine, file] : expected) {
+        CompileResult r = compileForEngine(*p.material, engine, {});
+        ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+        const auto source = std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& f) { return f.name == file.first; });
+        ASSERT_NE(source, r.files.end()) << file.first;
+        for (const std::string& text : file.second) EXPECT_NE(source->contents.find(text), std::string::npos) << file.first << ": " << text;
+        const std::string all = formatAll(r.diagnostics);
+        EXPECT_NE(all.find("materials/r.json:5:36: warning[HX204]: /slots/3: slot `height` has no " +
+                           std::string(engine == Engine::Threejs ? "three.js" : toString(engine)) + " input"),
+                  std::string::npos)
+            << all;
+        EXPECT_EQ(r.diagnostics.size(), 1u) << all;  // base and gloss reach their inputs by role
+    }
+}
+
+TEST(EnginePackages, ARoleTakesItsKindOfSlot) {
+    ParseResult wrong = parseMaterial(R"({"name": "r", "slots": [
+        {"name": "base", "kind": "scalar", "texture": "textures/rock_height.png", "role": "albedo"}]})",
+                                      "materials/r.json");
+    EXPECT_NE(formatAll(wrong.diagnostics).find("/slots/0/role: role `albedo` takes a slot of kind `color`, this one is `scalar`"),
+              std::string::npos)
+        << formatAll(wrong.diagnostics);
+    ParseResult misspelled = parseMaterial(R"({"name": "r", "slots": [
+        {"name": "base", "kind": "scalar", "texture": "textures/rock_height.png", "role": "rougness"}]})",
+                                           "materials/r.json");
+    EXPECT_NE(formatAll(misspelled.diagnostics).find("/slots/0/role"), std::string::npos) << formatAll(misspelled.diagnostics);
+    EXPECT_NE(formatAll(misspelled.diagnostics).find("roughness"), std::string::npos) << formatAll(misspelled.diagnostics);
 }
 
 }  // namespace

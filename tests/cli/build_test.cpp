@@ -318,6 +318,34 @@ TEST(Outputs, ListedBeforeTheBuildAreExactlyThoseWritten) {
     EXPECT_EQ(depfileTargets(read(dir / "again.d")), listed);
 }
 
+// The same for engine packages (every engine: their folders, sources, manifests, packed textures and the web
+// packages' texture copies) and for the functions output (<name>.functions.<ext>).
+TEST(Outputs, EnginePackagesAndFunctionsAreListedAsWritten) {
+    const fs::path dir = copyOfMaterials("hexc_list_engines");
+    std::ofstream(dir / "p.json") << R"({"name": "p", "pack": true, "slots": [
+        {"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"},
+        {"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"},
+        {"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png"}]})";
+    const std::string materials = "'" + (dir / "p.json").string() + "' '" + (dir / "rock.json").string() + "'";
+    for (const std::string& mode :
+         {std::string("--engine godot3,godot4,filament,threejs,babylon,unity,unreal"), std::string("--functions")}) {
+        const fs::path out = dir / (mode == "--functions" ? "functions" : "engines");
+        const std::string inputs = materials + " -o '" + out.string() + "' " + mode;
+        const nlohmann::json list = nlohmann::json::parse(hexc::test::runHexcStdout(inputs + " --list-outputs"));
+        ASSERT_FALSE(fs::exists(out)) << "--list-outputs wrote its output folder";
+        std::set<std::string> listed;
+        for (const auto& o : list["outputs"]) listed.insert(o.get<std::string>());
+        std::string err;
+        ASSERT_EQ(runHexc(inputs + " --no-cache --depfile '" + (out.string() + ".d") + "'", &err), 0) << err;
+        std::set<std::string> written;
+        for (const auto& e : fs::recursive_directory_iterator(out))
+            if (e.is_regular_file() && !e.path().filename().string().ends_with(".hexc-stamp")) written.insert(e.path().string());
+        EXPECT_EQ(written, listed) << mode;
+        EXPECT_EQ(depfileTargets(read(out.string() + ".d")), listed) << mode;
+        EXPECT_TRUE(listed.contains((out / (mode == "--functions" ? "rock.functions.hlsl" : "unity/p.hexc.hlsl")).string())) << mode;
+    }
+}
+
 // The library's outputNames is compile()'s file list, planned only; which slots pack depends on pixels: a colour
 // texture with one translucent texel keeps its alpha, and nothing packs.
 TEST(Outputs, OutputNamesAreTheFilesCompileReturns) {

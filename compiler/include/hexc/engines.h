@@ -9,9 +9,9 @@
 
 namespace hexc {
 
-enum class Engine { Godot3, Godot4, Filament, Threejs, Babylon };
+enum class Engine { Godot3, Godot4, Filament, Threejs, Babylon, Unity, Unreal };
 
-std::string_view toString(Engine engine);                  // "godot3", "godot4", "filament", "threejs", "babylon"
+std::string_view toString(Engine engine);                  // "godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal"
 std::optional<Engine> engineNamed(std::string_view name);  // nullopt for a name hexc has no package for
 std::vector<std::string_view> engineNames();
 // three.js and Babylon.js: their packages (ES modules) copy the slots' textures beside them.
@@ -19,8 +19,12 @@ bool isWebEngine(Engine engine);
 
 // The package of `material` for `engine`: the files under "<engine>/" (its shader or material source, the manifest of
 // the functions it holds, the textures hexc derives), compiled with `options` as the functions output in the engine's
-// GLSL dialect (GLSL ES 3.00 in the web engines' ES module, engines/web.h), every setting baked. A slot no engine input
+// GLSL dialect (GLSL ES 3.00 in the web engines' ES module, engines/web.h) or HLSL (Unity's Shader Graph Custom
+// Function file and URP shader, Unreal's Custom node include: engines/hlsl.h), every setting baked. A slot no engine input
 // takes is a warning, its function kept but not called.
 CompileResult compileForEngine(const Material& material, Engine engine, CompileOptions options);
+
+// The names of the files compileForEngine writes, "<engine>/..." (found by planning alone: hexc --list-outputs).
+OutputNames engineOutputNames(const Material& material, Engine engine, const CompileOptions& options);
 
 }  // namespace hexc

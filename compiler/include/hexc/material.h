@@ -86,6 +86,7 @@ struct Slot {
     int channel = 0;  // scalar slots: 0..3 for r, g, b, a
     ColorSpace colorSpace = ColorSpace::Srgb;
     bool flipY = false;  // normal slots: green channel points down (DirectX convention)
+    std::string role;    // the engine input it fills (docs/engines.md#slots-and-engine-inputs); empty: as its name says
     HexTiling hex;       // material settings with this slot's overrides applied
     std::optional<HeightBlend> heightBlend;
     int width = 0, height = 0;  // of the texture file

@@ -41,6 +41,10 @@ std::string emitted(const std::vector<uint32_t>& spirv, LibraryTarget target) {
             spirv_cross::CompilerGLSL c(spirv);
             configureGlsl(c, options);
             c.build_combined_image_samplers();
+            // The entry's own combinations are globals named by SPIRV-Cross (`uniform sampler2D _3133;`): named after
+            // their texture, hexcLib*, they are cut with the entry's other resources (GLSL compilers refuse orphans).
+            for (const spirv_cross::CombinedImageSampler& s : c.get_combined_image_samplers())
+                if (c.get_name(s.image_id).starts_with("hexcLib")) c.set_name(s.combined_id, c.get_name(s.image_id));
             // A function's combined parameter (SPIRV_Cross_Combined<texture><sampler>) takes its texture's name.
             static const std::regex combined("SPIRV_Cross_Combined(\\w+?)samp\\b");
             return std::regex_replace(cutEntry(c.compile(), "void main()"), combined, "$1");

@@ -9,17 +9,21 @@
 #include <array>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "codegen/codegen.h"
 #include "common/templates.h"
+#include "engines/hlsl.h"
 #include "engines/roles.h"
 #include "engines/web.h"
+#include "material/names.h"
+#include "plan/plan.h"
 
 namespace hexc {
 namespace {
 
-const char* const kNames[] = {"godot3", "godot4", "filament", "threejs", "babylon"};
+const char* const kNames[] = {"godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal"};
 const char* const kTemplates[] = {"godot3.shader", "godot4.gdshader", "filament.mat"};
 const char* const kExtensions[] = {".shader", ".gdshader", ".mat"};
 
@@ -97,22 +101,20 @@ std::string declarations(const std::vector<TextureUse>& used, Engine engine) {
         else if (engine == Engine::Godot3)
             out += "uniform sampler2D " + t.uniform + (t.srgb ? " : hint_albedo" : "") + ";\n";
         else
-            out += "uniform sampler2D " + t.uniform + (t.srgb ? " : source_color" : "") + ", filter_linear_mipmap, repeat_enable;\n";
+            out += "uniform sampler2D " + t.uniform + " : " + (t.srgb ? "source_color, " : "") + "filter_linear_mipmap, repeat_enable;\n";
     }
     if (engine == Engine::Filament && out.ends_with(",\n")) out.erase(out.size() - 2);  // the template ends the line
     return out;
 }
 
-// The engine input a slot's role gives it, as the statement that sets it from `value`; empty when the engine has none.
-std::string input(const std::string& slot, SlotKind kind, Engine engine, const std::string& value) {
+// The engine input of a role (but the normal's), as the statement that sets it from `value`.
+std::string input(const std::string& role, Engine engine, const std::string& value) {
     static const std::map<std::string, std::array<std::string, 2>> inputs = {
         {"albedo", {"ALBEDO = (%).rgb;", "material.baseColor = %;"}},
         {"roughness", {"ROUGHNESS = %;", "material.roughness = %;"}},
         {"metallic", {"METALLIC = %;", "material.metallic = %;"}},
         {"ao", {"AO = %;", "material.ambientOcclusion = %;"}},
         {"emission", {"EMISSION = (%).rgb;", "material.emissive = vec4((%).rgb, 0.0);"}}};
-    const std::string role = slotRole(slot, kind);
-    if (role.empty()) return "";
     std::string s = inputs.at(role)[engine == Engine::Filament ? 1 : 0];
     return s.replace(s.find('%'), 1, value);
 }
@@ -126,28 +128,25 @@ struct Wiring {
 Wiring wire(const Material& material, const nlohmann::json& functions, Engine engine) {
     Wiring w;
     const std::string indent = engine == Engine::Filament ? "        " : "    ";
-    bool normalSet = false;
+    std::set<std::string> taken;  // each input takes one slot: the first of its role
     for (const auto& f : functions) {
         const std::string name = f["name"], slot = f["slot"], call = name + "(UV_IN)";
         const Slot& s = *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& x) { return x.name == slot; });
+        if (s.kind == SlotKind::Normal && f["returns"] != "vec3") continue;  // the derivative: the tangent-space normal feeds the engine
+        const std::string role = slotRole(s);
         std::string statement;
-        if (s.kind == SlotKind::Normal) {
-            if (f["returns"] != "vec3") continue;  // the derivative: the tangent-space normal feeds the engine
-            if (normalSet) {
-                statement = "";  // the engine has one normal input: the first normal slot's
-            } else if (engine == Engine::Filament) {
-                normalSet = true;
-                w.normal = indent + "material.normal = " + call + ";";  // before prepareMaterial, as Filament requires
-                continue;
-            } else {
-                normalSet = true;
-                statement = std::string(engine == Engine::Godot3 ? "NORMALMAP" : "NORMAL_MAP") + " = " + call + " * 0.5 + 0.5;";
-            }
+        if (role.empty() || !taken.insert(role).second) {
+            statement = "";
+        } else if (role == "normal" && engine == Engine::Filament) {
+            w.normal = indent + "material.normal = " + call + ";";  // before prepareMaterial, as Filament requires
+            continue;
+        } else if (role == "normal") {
+            statement = std::string(engine == Engine::Godot3 ? "NORMALMAP" : "NORMAL_MAP") + " = " + call + " * 0.5 + 0.5;";
         } else {
-            statement = input(slot, s.kind, engine, call);
+            statement = input(role, engine, call);
         }
         if (statement.empty()) {
-            w.unused.push_back(unusedSlot(material, slot, toString(engine), name));
+            w.unused.push_back(unusedSlot(material, s, toString(engine), name));
             continue;
         }
         w.inputs += indent + statement + "\n";
@@ -156,51 +155,91 @@ Wiring wire(const Material& material, const nlohmann::json& functions, Engine en
     return w;
 }
 
-// The package's files under "<engine>/": the functions output's (but the GLSL the package holds) and the package's.
+// The package's files under "<engine>/": the functions output's (but the source the package holds) and the package's.
 std::vector<OutputFile> inFolder(Engine engine, std::vector<OutputFile> files, std::vector<OutputFile> package) {
     std::vector<OutputFile> out;
     for (OutputFile& f : files)
-        if (!f.name.ends_with(".functions.glsl")) out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
+        if (!f.name.ends_with(".functions.glsl") && !f.name.ends_with(".functions.hlsl"))
+            out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
     for (OutputFile& f : package) out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
     return out;
 }
 
-// A web engine's package (engines/web.h): the functions output in GLSL ES 3.00 inside the engine's ES module.
-CompileResult compileForWeb(const Material& material, Engine engine, CompileOptions options) {
-    options.glslVersion = 300;
-    options.glslEs = true;
+// The functions output a package holds: GLSL 330 for Godot and Filament, GLSL ES 3.00 for the web engines, HLSL for
+// Unity and Unreal; every setting baked.
+CompileOptions packageOptions(Engine engine, CompileOptions options) {
+    options.engines.clear();
+    options.functions = true;
+    options.bake = true;  // the engine's material has no block for hexc's parameters
+    options.targets = {isHlslEngine(engine) ? Target::Hlsl : Target::Glsl};
+    options.glslEs = isWebEngine(engine);
+    options.glslVersion = options.glslEs ? 300 : 330;
+    return options;
+}
+
+// The names of the package's own files (its source, a web package's texture copies), under no folder.
+std::vector<std::string> packageNames(const Material& material, Engine engine, const CompileOptions& options) {
+    if (isHlslEngine(engine)) return hlslPackageNames(material.name, engine);
+    if (!isWebEngine(engine)) return {material.name + kExtensions[int(engine)]};
+    const ShaderPlan plan = planShader(material, options);
+    std::vector<const Slot*> copied;
+    for (const SlotPlan& s : plan.slots)
+        if (!s.pack) copied.push_back(s.slot);
+    return webPackageNames(material, engine, copied);
+}
+
+// A web engine's package (GLSL ES 3.00, engines/web.h) or an HLSL engine's (engines/hlsl.h): the functions output for
+// its language inside the engine's files.
+CompileResult compileForLanguage(const Material& material, Engine engine, CompileOptions options) {
+    const bool hlsl = isHlslEngine(engine);
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;
     const auto file = [&](std::string_view suffix) {
         return std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& f) { return f.name.ends_with(suffix); })->contents;
     };
-    std::vector<OutputFile> package = webPackage(material, engine, nlohmann::json::parse(file(".manifest.json")), file(".functions.glsl"),
-                                                 options.uvOrigin == UvOrigin::BottomLeft, r.diagnostics);
+    const nlohmann::json manifest = nlohmann::json::parse(file(".manifest.json"));
+    const bool bottomLeft = options.uvOrigin == UvOrigin::BottomLeft;
+    std::vector<OutputFile> package = hlsl ? hlslPackage(material, engine, manifest, file(".functions.hlsl"), bottomLeft, r.diagnostics)
+                                           : webPackage(material, engine, manifest, file(".functions.glsl"), bottomLeft, r.diagnostics);
     r.files = r.ok() ? inFolder(engine, std::move(r.files), std::move(package)) : std::vector<OutputFile>{};
     return r;
 }
 
 }  // namespace
 
-std::string slotRole(const std::string& slot, SlotKind kind) {
+std::string slotRole(const Slot& slot) {
     static const std::map<std::string, std::string> roles = {
         {"albedo", "albedo"},       {"basecolor", "albedo"},  {"base_color", "albedo"},  {"diffuse", "albedo"},
         {"roughness", "roughness"}, {"metallic", "metallic"}, {"metalness", "metallic"}, {"ao", "ao"},
         {"occlusion", "ao"},        {"emission", "emission"}, {"emissive", "emission"}};
-    if (kind == SlotKind::Normal) return "normal";
-    auto role = roles.find(slot);
-    if (role == roles.end() || (kind == SlotKind::Color) != (role->second == "albedo" || role->second == "emission")) return "";
+    if (!slot.role.empty()) return slot.role;
+    if (slot.kind == SlotKind::Normal) return "normal";
+    auto role = roles.find(slot.name);
+    if (role == roles.end() || roleKind(role->second) != slot.kind) return "";
     return role->second;
 }
 
-Diagnostic unusedSlot(const Material& material, const std::string& slot, std::string_view engine, const std::string& function) {
-    return Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string()}, "",
-                            "slot `" + slot + "` has no " + std::string(engine) +
+Diagnostic unusedSlot(const Material& material, const Slot& slot, std::string_view engine, const std::string& function) {
+    const size_t index = size_t(&slot - material.slots.data());
+    return Diagnostic::make(Code::SlotNotRead, {material.sourceFile.string(), slot.line, slot.col}, "/slots/" + std::to_string(index),
+                            "slot `" + slot.name + "` has no " + std::string(engine) +
                                 " input (docs/engines.md#slots-and-engine-inputs); its function `" + function +
-                                "` is in the package but not called");
+                                "` is in the package but not called",
+                            "give it a `role` the engine has an input for, or call its function yourself");
 }
 
 std::string_view toString(Engine engine) { return kNames[int(engine)]; }
+
+OutputNames engineOutputNames(const Material& material, Engine engine, const CompileOptions& options) {
+    const CompileOptions o = packageOptions(engine, options);
+    OutputNames base = outputNames(material, o), out{{}, base.diagnostics};
+    if (hasErrors(out.diagnostics)) return out;
+    const std::string dir = std::string(toString(engine)) + "/";
+    for (const std::string& name : base.names)
+        if (name.find(".functions.") == std::string::npos) out.names.push_back(dir + name);  // the package holds the functions
+    for (const std::string& name : packageNames(material, engine, o)) out.names.push_back(dir + name);
+    return out;
+}
 
 std::vector<std::string_view> engineNames() { return {std::begin(kNames), std::end(kNames)}; }
 
@@ -211,12 +250,8 @@ std::optional<Engine> engineNamed(std::string_view name) {
 }
 
 CompileResult compileForEngine(const Material& material, Engine engine, CompileOptions options) {
-    options.functions = true;
-    options.bake = true;  // the engine's material has no block for hexc's parameters
-    options.targets = {Target::Glsl};
-    if (isWebEngine(engine)) return compileForWeb(material, engine, options);
-    options.glslVersion = 330;
-    options.glslEs = false;
+    options = packageOptions(engine, options);
+    if (isWebEngine(engine) || isHlslEngine(engine)) return compileForLanguage(material, engine, options);
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;
     std::vector<OutputFile> files;

@@ -9,9 +9,11 @@
 
 namespace hexc {
 
-// "albedo", "roughness", "metallic", "ao", "emission", "normal" (every normal slot), or empty: no role.
-std::string slotRole(const std::string& slot, SlotKind kind);
+// "albedo", "roughness", "metallic", "ao", "emission", "normal" (every normal slot), or empty: no role. The slot's
+// `role` if the material gives one, else its name's.
+std::string slotRole(const Slot& slot);
 
-Diagnostic unusedSlot(const Material& material, const std::string& slot, std::string_view engine, const std::string& function);
+// The warning for a slot no input of `engine` takes, located at the slot.
+Diagnostic unusedSlot(const Material& material, const Slot& slot, std::string_view engine, const std::string& function);
 
 }  // namespace hexc

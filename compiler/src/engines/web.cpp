@@ -40,6 +40,8 @@ std::string textureCopyName(const Material& material, const Slot& slot) {
     return material.name + "." + slot.name + slot.texturePath.extension().string();
 }
 
+std::string moduleName(const Material& material, const WebEngine& web) { return material.name + "." + web.suffix + ".js"; }
+
 // The browser decodes the textures (an Image element): PNG, JPEG or WebP, 8 bits per channel.
 bool browserImage(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
@@ -105,12 +107,12 @@ void wire(const Material& material, const WebEngine& web, const nlohmann::json& 
     for (const auto& f : manifest["functions"]) {
         const Slot& slot = slotNamed(material, f["slot"]);
         if (slot.kind == SlotKind::Normal && f["returns"] != "vec3") continue;  // the derivative: the engine takes the normal
-        const std::string role = slotRole(slot.name, slot.kind);
+        const std::string role = slotRole(slot);
         const bool taken =
             std::any_of(data["slots"].begin(), data["slots"].end(), [&](const nlohmann::json& s) { return s["role"] == role; });
         if (taken || std::find(web.roles.begin(), web.roles.end(), role) == web.roles.end()) {
             data["unmapped"].push_back(slot.name);
-            diagnostics.push_back(unusedSlot(material, slot.name, web.shown, f["name"]));
+            diagnostics.push_back(unusedSlot(material, slot, web.shown, f["name"]));
             continue;
         }
         data["slots"].push_back({{"name", slot.name},
@@ -126,6 +128,12 @@ bool isWebEngine(Engine engine) {
     return std::any_of(webEngines().begin(), webEngines().end(), [&](const WebEngine& e) { return e.engine == engine; });
 }
 
+std::vector<std::string> webPackageNames(const Material& material, Engine engine, const std::vector<const Slot*>& copied) {
+    std::vector<std::string> names = {moduleName(material, webEngine(engine))};
+    for (const Slot* slot : copied) names.push_back(textureCopyName(material, *slot));
+    return names;
+}
+
 std::vector<OutputFile> webPackage(const Material& material, Engine engine, const nlohmann::json& manifest, const std::string& glsl,
                                    bool uvBottomLeft, Diagnostics& diagnostics) {
     const WebEngine& web = webEngine(engine);
@@ -137,7 +145,7 @@ std::vector<OutputFile> webPackage(const Material& material, Engine engine, cons
     const std::string templ = std::string("package.") + web.suffix + ".js", marker = "/* hexc:data */ null";
     std::string module = *embeddedText(templ);
     module.replace(module.find(marker), marker.size(), data.dump(2));
-    std::vector<OutputFile> files = {{material.name + "." + web.suffix + ".js", std::move(module)}};
+    std::vector<OutputFile> files = {{moduleName(material, web), std::move(module)}};
     for (const auto& t : data["textures"]) {
         const std::string file = t["file"];
         const auto slot =

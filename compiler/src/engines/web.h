@@ -11,6 +11,9 @@ namespace hexc {
 // The package's files, named without the "<engine>/" folder: the module, and a copy of each slot texture the
 // functions read (a packed texture is among the functions output's files already). `manifest` and `glsl` are the
 // functions output's for GLSL ES 3.00. A slot the engine has no input for is reported in `diagnostics`.
+// The names webPackage gives its files, `copied` the slots whose own textures the functions read (not packed).
+std::vector<std::string> webPackageNames(const Material& material, Engine engine, const std::vector<const Slot*>& copied);
+
 std::vector<OutputFile> webPackage(const Material& material, Engine engine, const nlohmann::json& manifest, const std::string& glsl,
                                    bool uvBottomLeft, Diagnostics& diagnostics);
 

@@ -13,6 +13,12 @@ const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
 const std::vector<std::string> kProjections = {"uv", "triplanar"};
 const std::vector<std::string> kBlends = {"falloff", "histogram"};
 const std::vector<std::string> kLods = {"gradients", "shared"};
+const std::vector<std::string> kRoles = {"albedo", "normal", "roughness", "metallic", "ao", "emission"};
+
+SlotKind roleKind(const std::string& role) {
+    if (role == "normal") return SlotKind::Normal;
+    return role == "albedo" || role == "emission" ? SlotKind::Color : SlotKind::Scalar;
+}
 
 std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }
 std::string_view toString(ColorSpace space) { return kColorSpaces[size_t(space)]; }

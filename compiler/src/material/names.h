@@ -4,8 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "hexc/material.h"
+
 namespace hexc {
 
 extern const std::vector<std::string> kKinds, kChannels, kColorSpaces, kModes, kMasks, kProjections, kBlends, kLods;
+
+// A slot's engine roles (its `role`, docs/engines.md#slots-and-engine-inputs), and the kind of slot each takes.
+extern const std::vector<std::string> kRoles;
+SlotKind roleKind(const std::string& role);
 
 }  // namespace hexc

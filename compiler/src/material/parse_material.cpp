@@ -15,14 +15,15 @@ namespace hexc {
 namespace {
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "pack", "slots"};
-const std::vector<std::string> kSlotKeys = {"name", "texture", "kind", "channel", "colorspace", "flip_y", "hextiling", "height_blend"};
+const std::vector<std::string> kSlotKeys = {"name",   "texture", "kind",      "channel",     "colorspace",
+                                            "flip_y", "role",    "hextiling", "height_blend"};
 const std::vector<std::string> kHexKeys = {
     "enabled",           "tiling",        "rotation",      "falloff",        "falloffcontrast", "exponent",    "mode",
     "split_coordinates", "rotationrange", "rotationsteps", "scalerange",     "offset",          "offsetsteps", "mask",
     "maskscale",         "taps",          "projection",    "planesharpness", "blend",           "lod",         "lumacoeffs"};
 const std::vector<std::string> kHeightKeys = {"slot", "width"};
 // Keys of one level that a user may write one level up or down: a slot's own, and the material's own.
-const std::vector<std::string> kSlotOnlyKeys = {"texture", "kind", "channel", "colorspace", "flip_y", "height_blend"};
+const std::vector<std::string> kSlotOnlyKeys = {"texture", "kind", "channel", "colorspace", "flip_y", "role", "height_blend"};
 const std::vector<std::string> kMaterialOnlyKeys = {"template", "pack", "slots"};
 const std::vector<std::string> kTaps = {"adaptive"};  // besides a count
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
@@ -255,6 +256,16 @@ private:
                 report(Code::MisplacedKey, pointer + "/flip_y", "`flip_y` applies only to slots of kind `normal`", {}, true);
             else
                 s.flipY = boolean(v["flip_y"], pointer + "/flip_y", false);
+        }
+        if (v.contains("role")) {
+            if (int i = choice(v["role"], pointer + "/role", kRoles); i >= 0) {
+                if (kindKnown && roleKind(kRoles[size_t(i)]) != s.kind)
+                    report(Code::ConflictingSettings, pointer + "/role",
+                           "role `" + kRoles[size_t(i)] + "` takes a slot of kind `" + std::string(toString(roleKind(kRoles[size_t(i)]))) +
+                               "`, this one is `" + std::string(toString(s.kind)) + "`");
+                else
+                    s.role = kRoles[size_t(i)];
+            }
         }
         if (v.contains("colorspace")) {
             if (int i = choice(v["colorspace"], pointer + "/colorspace", kColorSpaces); i >= 0) {

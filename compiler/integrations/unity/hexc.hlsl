@@ -1,0 +1,21 @@
+// hexc material `${material}` for Unity (docs/engines.md#unity): a Shader Graph Custom Function file, also included by
+// ${material}.shader (URP). Conventions: uv ${uvorigin}; Unity stores a texture's bottom row first, so every read
+// below samples at (s, -t) (exact with repeat wrapping). Textures: import each as a Default texture with mipmaps,
+// repeat and trilinear filtering, sRGB on for an sRGB slot only (a normal map too as Default, sRGB off: hexc decodes it).
+//
+// Custom Function node (Type File, Source this file, Precision Single): Name, then the ports in order.
+${nodes}
+#ifndef HEXC_${guard}_INCLUDED
+#define HEXC_${guard}_INCLUDED
+
+// A texture read at hexc's (s, t), top row at t = 0, from Unity's bottom-row-first storage.
+#define HEXC_SAMPLE_GRAD(tex, smp, st, dx, dy) \
+    SAMPLE_TEXTURE2D_GRAD(tex, smp, (st) * float2(1.0, -1.0), (dx) * float2(1.0, -1.0), (dy) * float2(1.0, -1.0))
+
+// hexc's functions for this material (hexc --functions, HLSL), each taking the textures it reads.
+${functions}
+
+// The Custom Function node's entry points (Shader Graph appends _float to the node's Name).
+${wrappers}
+
+#endif

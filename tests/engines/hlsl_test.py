@@ -1,0 +1,190 @@
+"""hexc's Unity and Unreal packages compiled with glslang's HLSL front end (docs/engines.md#unity, #unreal).
+
+usage: hlsl_test.py HEXC unity|unreal GLSLANGVALIDATOR
+
+Neither engine runs here, so each package is compiled as the engine would compile it, against stub declarations of
+the engine's shader library (tests/engines/stubs/, from the engines' documented declarations):
+
+- Unity: every Shader Graph Custom Function entry point (`hexc_<slot>_float`, with the ports the file's header lists)
+  called from a fragment shader as Shader Graph's generated code calls it (`UnityTexture2D` ports); the URP shader's
+  HLSLPROGRAM block, vertex and fragment stage.
+- Unreal: every Custom node the `.ush` header lists, as the function Unreal generates for it (its inputs as parameters,
+  a Texture Object input as `Texture2D X, SamplerState XSampler`), called from a fragment shader.
+
+For materials/rock.json and the engine tests' mixed material (packed slots, 300 x 170 textures, a DirectX-convention
+normal map), at both uv origins. Then a package with a mistyped function must be refused by the same compile.
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "compiler" / "integrations"))
+from engine_check import mixed_material  # noqa: E402
+
+STUBS = ROOT / "tests" / "engines" / "stubs"
+TYPES = {"1": "float", "2": "float2", "3": "float3", "4": "float4"}
+SWIZZLE = {"1": ".x", "2": ".xy", "3": ".xyz", "4": ""}
+
+
+def compile_hlsl(glslang, path, stage, entry, stubs):
+    """glslang's HLSL front end on `path`: (ok, output)."""
+    r = subprocess.run([glslang, "-D", "-V", "-S", stage, "-e", entry, f"-I{stubs}", str(path), "-o", os.devnull],
+                       capture_output=True, text=True)
+    return r.returncode == 0, r.stdout + r.stderr
+
+
+def header_lines(text):
+    """The package's header comment lines that describe its nodes (after the line ending in 'in order.' or 'code.')."""
+    return [line[5:] for line in text.splitlines() if line.startswith("//   ")]
+
+
+def unity_consumer(hlsl_name, hlsl_text):
+    """A fragment shader calling every Custom Function entry point as Shader Graph's generated code does."""
+    node = re.compile(r"^(\w+): UV \(Vector 2\)((?:, \w+ \(Texture 2D\))*) -> Out \(Vector (\d)\)$")
+    textures, calls = [], []
+    for line in header_lines(hlsl_text):
+        m = node.match(line)
+        assert m, f"unexpected node line: {line}"
+        ports = re.findall(r", (\w+) \(Texture 2D\)", m.group(2))
+        textures += [t for t in ports if t not in textures]
+        args = "".join(f", UnityBuildTexture2DStructNoScale({t})" for t in ports)
+        calls.append(f"    {{ {TYPES[m.group(3)]} Out; {m.group(1)}_float(uv{args}, Out); sum{SWIZZLE[m.group(3)]} += Out; }}")
+    assert calls, "no Custom Function node listed"
+    return "\n".join([
+        '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"',
+        '#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Texture.hlsl"',
+        f'#include "{hlsl_name}"',
+        *[f"TEXTURE2D({t});\nSAMPLER(sampler{t});\nfloat4 {t}_TexelSize;" for t in textures],
+        "float4 main(float2 uv : TEXCOORD0) : SV_Target",
+        "{",
+        "    float4 sum = 0.0;",
+        *calls,
+        "    return sum;",
+        "}", ""])
+
+
+def unreal_consumer(ush_name, ush_text):
+    """A fragment shader calling every Custom node of the header as the function Unreal generates for it."""
+    node = re.compile(r"^(.+) <- CMOT Float (\d) \(UV((?:, \w+)*)\): (.*)$")
+    textures, functions, calls = [], [], []
+    for i, line in enumerate(header_lines(ush_text)):
+        m = node.match(line)
+        assert m, f"unexpected node line: {line}"
+        inputs = re.findall(r", (\w+)", m.group(3))
+        textures += [t for t in inputs if t not in textures]
+        params = "".join(f", Texture2D {t}, SamplerState {t}Sampler" for t in inputs)
+        functions.append(f"MaterialFloat{'' if m.group(2) == '1' else m.group(2)} CustomExpression{i}(FMaterialPixelParameters Parameters, MaterialFloat2 UV{params})\n"
+                         f"{{\n    {m.group(4)}\n}}\n")
+        args = "".join(f", {t}, {t}Sampler" for t in inputs)
+        calls.append(f"    sum{SWIZZLE[m.group(2)]} += CustomExpression{i}(Parameters, Parameters.TexCoords[0]{args});")
+    assert calls, "no Custom node listed"
+    return "\n".join([
+        '#include "/Engine/Private/Common.ush"',
+        f'#include "{ush_name}"',
+        *[f"Texture2D {t};\nSamplerState {t}Sampler;" for t in textures],
+        *functions,
+        "float4 main(float2 uv : TEXCOORD0) : SV_Target",
+        "{",
+        "    FMaterialPixelParameters Parameters = (FMaterialPixelParameters)0;",
+        "    Parameters.TexCoords[0] = uv;",
+        "    float4 sum = 0.0;",
+        *calls,
+        "    return sum;",
+        "}", ""])
+
+
+def urp_program(shader_text):
+    """The URP shader's HLSLPROGRAM block."""
+    m = re.search(r"HLSLPROGRAM\n(.*?)\n\s*ENDHLSL", shader_text, re.S)
+    assert m, "no HLSLPROGRAM block"
+    return m.group(1)
+
+
+def check(glslang, source, path, stage, entry, stubs, failures, what):
+    path.write_text(source)
+    ok, output = compile_hlsl(glslang, path, stage, entry, stubs)
+    if not ok:
+        failures.append(f"{what}: {output.strip()[:2000]}")
+    return ok, output
+
+
+def check_package(hexc, engine, glslang, material, out, bottom_left, failures):
+    """Writes the package and compiles it; returns the package's folder and the names of its files."""
+    args = [hexc, str(material), "--engine", engine, "-o", str(out)] + (["--uv-bottom-left"] if bottom_left else [])
+    r = subprocess.run(args, capture_output=True, text=True)
+    if r.returncode != 0:
+        failures.append(f"{' '.join(args)}: {r.stderr}")
+        return
+    name = Path(material).stem
+    folder = out / engine
+    what = f"{name} {engine} {'bottom-left' if bottom_left else 'top-left'}"
+    stubs = STUBS / engine
+    if engine == "unity":
+        hlsl = (folder / f"{name}.hexc.hlsl").read_text()
+        check(glslang, unity_consumer(f"{name}.hexc.hlsl", hlsl), folder / "shadergraph.hlsl", "frag", "main", stubs, failures,
+              f"{what}: Shader Graph Custom Function nodes")
+        program = urp_program((folder / f"{name}.shader").read_text())
+        for stage, entry in (("vert", "vert"), ("frag", "frag")):
+            check(glslang, program, folder / f"urp_{stage}.hlsl", stage, entry, stubs, failures, f"{what}: URP shader, {stage}")
+        for expected in (f"surface.albedo = (hexc_albedo(uv, ", "surface.normalTS = hexc_normal_normal(uv, ",
+                         "surface.smoothness = 1.0 - hexc_roughness(uv, "):
+            if expected not in program:
+                failures.append(f"{what}: the URP shader lacks `{expected}`")
+    else:
+        ush = (folder / f"{name}.ush").read_text()
+        check(glslang, unreal_consumer(f"{name}.ush", ush), folder / "custom.hlsl", "frag", "main", stubs, failures,
+              f"{what}: Custom nodes")
+        for pin in ("Base Color <- CMOT Float 4", "Normal <- CMOT Float 3", "Roughness <- CMOT Float 1"):
+            if f"//   {pin}" not in ush:
+                failures.append(f"{what}: no Custom node for `{pin}`")
+        if "* float3(1.0, -1.0, 1.0);" not in ush:
+            failures.append(f"{what}: the Normal node does not turn hexc's normal to Unreal's green-down convention")
+
+
+def check_refused(engine, glslang, folder, failures):
+    """A package with a mistyped function (one definition renamed) must not compile."""
+    stubs = STUBS / engine
+    if engine == "unity":
+        source_file, consumer = folder / "rock.hexc.hlsl", unity_consumer
+    else:
+        source_file, consumer = folder / "rock.ush", unreal_consumer
+    text = source_file.read_text()
+    broken = re.sub(r"^(float4 )hexc_albedo\(", r"\1hexc_albedoo(", text, count=1, flags=re.M)
+    assert broken != text, "no definition of hexc_albedo to mistype"
+    bad = folder / f"broken{source_file.suffix}"
+    bad.write_text(broken)
+    bad_path = folder / "broken_consumer.hlsl"
+    bad_path.write_text(consumer(bad.name, broken))
+    ok, output = compile_hlsl(glslang, bad_path, "frag", "main", stubs)
+    if ok or "hexc_albedo" not in output:
+        failures.append(f"{engine}: a package whose hexc_albedo is misnamed compiled (or failed elsewhere): {output[:500]}")
+
+
+def main():
+    hexc, engine, glslang = sys.argv[1:4]
+    failures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        materials = [ROOT / "materials" / "rock.json", mixed_material(tmp / "mixed")]
+        for material in materials:
+            for bottom_left in (False, True):
+                out = tmp / f"{material.stem}_{'bl' if bottom_left else 'tl'}"
+                check_package(hexc, engine, glslang, material, out, bottom_left, failures)
+        check_refused(engine, glslang, tmp / "rock_tl" / engine, failures)
+    return report(failures, f"{engine}: {len(materials) * 2} packages compiled with glslang's HLSL front end")
+
+
+def report(failures, summary):
+    """Prints each failure and the summary with their count; the exit code."""
+    for f in failures:
+        print("FAIL", f)
+    print(f"{summary}, {len(failures)} failures")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
