@@ -51,6 +51,7 @@ std::string contentType(const std::string& name) {
     if (name.ends_with(".js")) return "text/javascript; charset=utf-8";
     if (name.ends_with(".css")) return "text/css; charset=utf-8";
     if (name.ends_with(".json")) return "application/json";
+    if (name.ends_with(".svg")) return "image/svg+xml";
     return "text/plain; charset=utf-8";
 }
 
@@ -162,7 +163,11 @@ void Server::Impl::routes() {
         if (req.has_param("token")) res.set_header("Set-Cookie", cookieName() + "=" + token + "; HttpOnly; SameSite=Strict; Path=/");
         answer(res, {200, pageFile("index.html"), contentType("index.html")});
     });
-    http.Get(R"(/([a-z]+\.(js|css)))", [](const httplib::Request& req, httplib::Response& res) {
+    // The icon browsers ask for by this name whatever the page says: the page's own, so that no request is a 404.
+    http.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& res) {
+        answer(res, {200, pageFile("favicon.svg"), contentType("favicon.svg")});
+    });
+    http.Get(R"(/([a-z]+\.(js|css|svg)))", [](const httplib::Request& req, httplib::Response& res) {
         const std::string name = req.matches[1];
         if (pageFile(name).empty()) return refuse(res, 404, "no such file: " + name);
         answer(res, {200, pageFile(name), contentType(name)});
