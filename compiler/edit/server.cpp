@@ -3,9 +3,11 @@
 #include <httplib.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <random>
 #include <stdexcept>
+#include <thread>
 
 #include "page_files.h"
 
@@ -65,6 +67,7 @@ struct Server::Impl {
     std::string token = randomToken();
     int port = 0;
     std::string url;
+    std::atomic<int> streams = 0;  // change notification streams open
 
     std::string cookieName() const { return "hexc_edit_" + std::to_string(port); }
 
@@ -128,6 +131,7 @@ struct Server::Impl {
     }
 
     void routes();
+    void events(httplib::Response& res);
     void bodyRoute(const std::string& path, std::function<Reply(const std::string&)> handle);
 };
 
@@ -157,6 +161,35 @@ void internalError(const httplib::Request& req, httplib::Response& res, std::exc
 
 }  // namespace
 
+// Server-sent events: `data: VERSION` at once and whenever the material file or a texture changes (Session::version,
+// which only stats files unless the material changed). At most kEventStreams at once (503 beyond: the page falls back to
+// asking), each ends after kEventStreamLife; the page's EventSource reconnects after the `retry` it is given. A stream
+// ends when its client goes (a write fails) or the server stops (httplib stops calling the provider).
+void Server::Impl::events(httplib::Response& res) {
+    if (++streams > kEventStreams) {
+        --streams;
+        return refuse(res, 503, "too many change notification streams open");
+    }
+    const auto end = std::chrono::steady_clock::now() + kEventStreamLife;
+    auto sent = std::make_shared<std::string>();
+    res.set_chunked_content_provider(
+        "text/event-stream",
+        [this, end, sent](size_t, httplib::DataSink& sink) {
+            if (const std::string v = session.version(); v != *sent) {
+                *sent = v;
+                const std::string event = "retry: 200\ndata: " + v + "\n\n";
+                if (!sink.write(event.data(), event.size())) return false;
+            }
+            if (std::chrono::steady_clock::now() >= end) {
+                sink.done();
+                return true;
+            }
+            std::this_thread::sleep_for(kEventLook);
+            return true;
+        },
+        [this](bool) { --streams; });
+}
+
 void Server::Impl::routes() {
     http.Get("/", [this](const httplib::Request& req, httplib::Response& res) {
         // The token in the address becomes a cookie, so that the page's own requests carry it.
@@ -184,6 +217,7 @@ void Server::Impl::routes() {
     http.Get("/api/version", [this](const httplib::Request&, httplib::Response& res) {
         answer(res, {200, nlohmann::json({{"version", session.version()}}).dump()});
     });
+    http.Get("/api/events", [this](const httplib::Request&, httplib::Response& res) { events(res); });
     http.Get(R"(/api/texture/([a-z][a-z0-9_]*(\.lut|\.gaussian)?))",
              [this](const httplib::Request& req, httplib::Response& res) { answer(res, session.texture(req.matches[1])); });
     bodyRoute("/api/compile", [this](const std::string& body) { return session.compile(body); });

@@ -11,6 +11,7 @@ import os
 import shutil
 import sys
 import tempfile
+import time
 import unittest
 
 from selenium.common.exceptions import NoAlertPresentException, UnexpectedAlertPresentException
@@ -223,6 +224,29 @@ class Authoring(unittest.TestCase):
         type_into(number_box("/hextiling/tiling", 0), "3")
         wait_for(lambda: document()["hextiling"]["tiling"] == [3, 5], "the second repeat following the first")
         self.assertEqual(number_box("/hextiling/tiling", 1).get_attribute("value"), "5")
+
+    def test_the_page_does_no_work_it_need_not(self):
+        # Counted in the page: WebGL read-backs and buffers made while drawing, and requests to the server while idle.
+        self.open()
+        js("window.counts = {readPixels: 0, createBuffer: 0};"
+           "for (const name of ['readPixels', 'createBuffer']) { const f = WebGL2RenderingContext.prototype[name];"
+           "  WebGL2RenderingContext.prototype[name] = function (...a) { window.counts[name]++; return f.apply(this, a); }; }"
+           "performance.clearResourceTimings();")
+        frames = js("return window.hexcEdit.frames;")
+        # Twenty wheel steps zooming in by 2% each (from 2.5 to 1.7 uv units, a plane of 512 all along): each draws a frame,
+        # none needs a new plane.
+        viewport = DRIVER.find_element("id", "viewport")
+        for _ in range(20):
+            js("arguments[0].dispatchEvent(new WheelEvent('wheel', {deltaY: -20, cancelable: true}));", viewport)
+            wait_for(lambda: not js("return window.hexcEdit.drawPending();"), "the frame")
+        wait_for(lambda: js("return window.hexcEdit.frames;") >= frames + 20, "twenty frames")
+        self.assertEqual(js("return window.counts;"), {"readPixels": 0, "createBuffer": 0})
+        # Idle for three seconds: a change on disk is pushed to the page, which asks the server nothing.
+        time.sleep(3)
+        asked = js("return performance.getEntriesByType('resource').map(e => new URL(e.name).pathname);")
+        self.assertEqual([a for a in asked if a.startswith("/api/") and a != "/api/events"], [])  # the stream may reconnect
+        self.outside_edit(b'"falloff": 0.75', b'"falloff": 0.65')
+        wait_for(lambda: document()["hextiling"]["falloff"] == 0.65, "the change pushed and reloaded")
 
 
 if __name__ == "__main__":

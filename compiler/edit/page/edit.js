@@ -209,12 +209,15 @@ function draw() {
       canvas.height = Math.max(1, Math.round(canvas.clientHeight * devicePixelRatio));
     }
     renderer.draw(state.view, regions());
-    renderer.gl.readPixels(0, 0, 1, 1, renderer.gl.RGBA, renderer.gl.UNSIGNED_BYTE, new Uint8Array(4));  // the frame is done
-    hexc.frames++;
-    hexc.lastFrame = performance.now();
     labels();
     showDistance();
-    if (captureSize && hexc.status !== 'loading') postCapture();
+    // The browser calls the next animation frame once it has taken this one: that is when the frame counts as drawn
+    // (reading a pixel back to know it would stall the pipeline every frame).
+    requestAnimationFrame(() => {
+      hexc.frames++;
+      hexc.lastFrame = performance.now();
+      if (captureSize && hexc.status !== 'loading') postCapture();
+    });
   });
 }
 
@@ -311,15 +314,31 @@ const resolve = {
   },
 };
 
-// The file and its textures on disk: the server pushes a message when they change (server-sent events).
-async function watch() {
-  try {
-    const r = await api('/api/version');
-    if (r.version && r.version !== state.version && r.version !== state.conflict?.version && !hexc.pending) await changedOnDisk();
+// The file and its textures on disk: the server pushes their version when they change (server-sent events; the
+// browser reconnects when the server ends a stream). A version seen during a compile is looked at after it.
+function watch() {
+  const events = new EventSource('/api/events');
+  let latest = null, busy = false;
+  const look = async () => {
+    if (busy) return;
+    busy = true;
+    while (latest !== null && latest !== state.version && latest !== state.conflict?.version) {
+      const seen = latest;
+      await changedOnDisk();
+      if (latest === seen) break;
+    }
+    busy = false;
+  };
+  events.onmessage = e => {
+    latest = e.data;
+    hexc.notified = performance.now();
     if (state.problem === 'hexc edit is not running') state.problem = null;
-  } catch { state.problem = 'hexc edit is not running'; }
-  status();
-  setTimeout(watch, 700);
+    status();
+    look();
+  };
+  events.onerror = async () => {  // the stream ended (it reconnects) or the server is gone
+    try { await fetch('/api/version'); } catch { state.problem = 'hexc edit is not running'; status(); }
+  };
 }
 
 // Ctrl+S saves, Ctrl+Z undoes, Ctrl+Shift+Z and Ctrl+Y redo (Cmd on a Mac); closing the tab with unsaved edits warns.
