@@ -120,6 +120,8 @@ class Authoring(unittest.TestCase):
         self.assertIn('"falloffcontrast": 0.3', mine)
         self.assertIn('"falloff": 0.65', theirs)
         self.assertNotIn("falloffcontrast", theirs)
+        marked = js("return ['both-mine', 'both-file'].map(id => [...document.querySelectorAll(`#${id} .differs`)].map(e => e.textContent.trim()));")
+        self.assertEqual(marked, [['"falloff": 0.75,', '"falloffcontrast": 0.3'], ['"falloff": 0.65']])  # what differs, not how it is written
         DRIVER.find_element("id", "keep").click()
         self.assertFalse(DRIVER.find_element("id", "conflict").is_displayed())
         wait_for(lambda: status() == "edited (not saved)", "the status after keeping the edits")

@@ -252,7 +252,12 @@ async function load() {
 async function save(retry = true) {
   if (!dirty() || state.conflict) return;
   status('saving…');
-  const r = await api('/api/save', { document: state.doc, version: state.version });
+  let r;
+  try {
+    r = await api('/api/save', { document: state.doc, version: state.version });
+  } catch (e) {
+    return status(`not saved: ${e.message || e}`);
+  }
   if (r.ok) {
     Object.assign(state, { version: r.version, saved: JSON.stringify(state.doc) });
     status();
@@ -301,9 +306,11 @@ const resolve = {
     try { remember(); state.doc = JSON.parse(text); } catch { /* load() shows why */ }
     return load();
   },
-  // The two texts side by side, the lines only one of them has marked.
+  // The two documents side by side, written alike (so that only what differs is marked), the lines only one has marked.
   both() {
-    const mine = JSON.stringify(state.doc, null, 2).split('\n'), file = state.conflict.text.trimEnd().split('\n');
+    let theirs = state.conflict.text.trimEnd();
+    try { theirs = JSON.stringify(JSON.parse(theirs), null, 2); } catch { /* not JSON: shown as it is */ }
+    const mine = JSON.stringify(state.doc, null, 2).split('\n'), file = theirs.split('\n');
     const pane = (lines, other) => {
       const set = new Set(other.map(l => l.trim().replace(/,$/, '')));
       return lines.map(l => Object.assign(document.createElement('div'), { textContent: l, className: set.has(l.trim().replace(/,$/, '')) ? '' : 'differs' }));
