@@ -145,6 +145,7 @@ class Authoring(unittest.TestCase):
         wait_for(lambda: status() == "edited (not saved)", "the status after the undo")
 
     def test_closing_the_tab_with_unsaved_edits_warns(self):
+        # The page's own listener is asked (headless Chromium under chromedriver leaves without showing the dialog).
         self.open()
         warned = "const e = new Event('beforeunload', {cancelable: true}); window.dispatchEvent(e); return e.defaultPrevented;"
         self.assertFalse(js(warned))  # nothing to lose yet

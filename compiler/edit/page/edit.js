@@ -79,6 +79,10 @@ function setPointer(doc, pointer, value) {
 
 let renderer, panel;
 
+// What the page knows of the file on disk: the latest version notified or answered (a save's own change is not looked
+// at until the save has answered with its version), whether a change is being looked at, whether a save is under way.
+const disk = { latest: null, busy: false, saving: false };
+
 async function texture(name, srgb) {
   const response = await fetch(`/api/texture/${name}`);
   if (!response.ok) throw new Error(await response.text());
@@ -244,6 +248,7 @@ async function load() {
   }
   if (state.doc !== null && JSON.stringify(doc) !== JSON.stringify(state.doc)) remember();  // a reload can be undone
   Object.assign(state, { doc, version: r.version, saved: JSON.stringify(doc), conflict: null });
+  disk.latest = r.version;  // newer than any change notified before it was asked for
   conflictBar();
   panel.render(state.doc);
   await compile(true);
@@ -253,13 +258,17 @@ async function save(retry = true) {
   if (!dirty() || state.conflict) return;
   status('saving…');
   let r;
+  disk.saving = true;
   try {
     r = await api('/api/save', { document: state.doc, version: state.version });
   } catch (e) {
     return status(`not saved: ${e.message || e}`);
+  } finally {
+    disk.saving = false;
   }
   if (r.ok) {
     Object.assign(state, { version: r.version, saved: JSON.stringify(state.doc) });
+    disk.latest = r.version;
     status();
   } else if (r.conflict) {
     await changedOnDisk();
@@ -268,6 +277,7 @@ async function save(retry = true) {
     showDiagnostics(r.diagnostics || [], 'error');
     status(`not saved: ${r.message || 'the material does not compile'}`);
   }
+  look();  // a change on disk that came while saving (the save's own is its version now)
 }
 
 // The file or a texture changed on disk. Without unsaved edits the page reloads the material (the view and the panel's
@@ -279,10 +289,11 @@ async function changedOnDisk() {
   let same = false;
   try { same = JSON.stringify(JSON.parse(r.text)) === state.saved; } catch { /* not JSON now: a conflict */ }
   if (same) {
-    state.version = r.version;
+    state.version = disk.latest = r.version;
     return compile(true);
   }
   state.conflict = { version: r.version, text: r.text };
+  disk.latest = r.version;
   conflictBar();
   status();
 }
@@ -321,23 +332,24 @@ const resolve = {
   },
 };
 
+// Acts on the latest version of the file on disk unless the page already has it (or shows it as a conflict).
+async function look() {
+  if (disk.busy || disk.saving) return;
+  disk.busy = true;
+  while (disk.latest !== null && disk.latest !== state.version && disk.latest !== state.conflict?.version) {
+    const seen = disk.latest;
+    await changedOnDisk();
+    if (disk.latest === seen) break;
+  }
+  disk.busy = false;
+}
+
 // The file and its textures on disk: the server pushes their version when they change (server-sent events; the
-// browser reconnects when the server ends a stream). A version seen during a compile is looked at after it.
+// browser reconnects when the server ends a stream).
 function watch() {
   const events = new EventSource('/api/events');
-  let latest = null, busy = false;
-  const look = async () => {
-    if (busy) return;
-    busy = true;
-    while (latest !== null && latest !== state.version && latest !== state.conflict?.version) {
-      const seen = latest;
-      await changedOnDisk();
-      if (latest === seen) break;
-    }
-    busy = false;
-  };
   events.onmessage = e => {
-    latest = e.data;
+    disk.latest = e.data;
     hexc.notified = performance.now();
     if (state.problem === 'hexc edit is not running') state.problem = null;
     status();
