@@ -3,9 +3,11 @@
 #include <httplib.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <random>
 #include <stdexcept>
+#include <thread>
 
 #include "page_files.h"
 
@@ -51,6 +53,7 @@ std::string contentType(const std::string& name) {
     if (name.ends_with(".js")) return "text/javascript; charset=utf-8";
     if (name.ends_with(".css")) return "text/css; charset=utf-8";
     if (name.ends_with(".json")) return "application/json";
+    if (name.ends_with(".svg")) return "image/svg+xml";
     return "text/plain; charset=utf-8";
 }
 
@@ -64,6 +67,7 @@ struct Server::Impl {
     std::string token = randomToken();
     int port = 0;
     std::string url;
+    std::atomic<int> streams = 0;  // change notification streams open
 
     std::string cookieName() const { return "hexc_edit_" + std::to_string(port); }
 
@@ -127,6 +131,7 @@ struct Server::Impl {
     }
 
     void routes();
+    void events(httplib::Response& res);
     void bodyRoute(const std::string& path, std::function<Reply(const std::string&)> handle);
 };
 
@@ -156,13 +161,46 @@ void internalError(const httplib::Request& req, httplib::Response& res, std::exc
 
 }  // namespace
 
+// Server-sent events: `data: VERSION` at once and whenever the material file or a texture changes (Session::version,
+// which only stats files unless the material changed). At most kEventStreams at once (503 beyond: the page falls back to
+// asking), each ends after kEventStreamLife; the page's EventSource reconnects after the `retry` it is given. A stream
+// ends when its client goes (a write fails) or the server stops (httplib stops calling the provider).
+void Server::Impl::events(httplib::Response& res) {
+    if (++streams > kEventStreams) {
+        --streams;
+        return refuse(res, 503, "too many change notification streams open");
+    }
+    const auto end = std::chrono::steady_clock::now() + kEventStreamLife;
+    auto sent = std::make_shared<std::string>();
+    res.set_chunked_content_provider(
+        "text/event-stream",
+        [this, end, sent](size_t, httplib::DataSink& sink) {
+            if (const std::string v = session.version(); v != *sent) {
+                *sent = v;
+                const std::string event = "retry: 200\ndata: " + v + "\n\n";
+                if (!sink.write(event.data(), event.size())) return false;
+            }
+            if (std::chrono::steady_clock::now() >= end) {
+                sink.done();
+                return true;
+            }
+            std::this_thread::sleep_for(kEventLook);
+            return true;
+        },
+        [this](bool) { --streams; });
+}
+
 void Server::Impl::routes() {
     http.Get("/", [this](const httplib::Request& req, httplib::Response& res) {
         // The token in the address becomes a cookie, so that the page's own requests carry it.
         if (req.has_param("token")) res.set_header("Set-Cookie", cookieName() + "=" + token + "; HttpOnly; SameSite=Strict; Path=/");
         answer(res, {200, pageFile("index.html"), contentType("index.html")});
     });
-    http.Get(R"(/([a-z]+\.(js|css)))", [](const httplib::Request& req, httplib::Response& res) {
+    // The icon browsers ask for by this name whatever the page says: the page's own, so that no request is a 404.
+    http.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& res) {
+        answer(res, {200, pageFile("favicon.svg"), contentType("favicon.svg")});
+    });
+    http.Get(R"(/([a-z]+\.(js|css|svg)))", [](const httplib::Request& req, httplib::Response& res) {
         const std::string name = req.matches[1];
         if (pageFile(name).empty()) return refuse(res, 404, "no such file: " + name);
         answer(res, {200, pageFile(name), contentType(name)});
@@ -179,6 +217,7 @@ void Server::Impl::routes() {
     http.Get("/api/version", [this](const httplib::Request&, httplib::Response& res) {
         answer(res, {200, nlohmann::json({{"version", session.version()}}).dump()});
     });
+    http.Get("/api/events", [this](const httplib::Request&, httplib::Response& res) { events(res); });
     http.Get(R"(/api/texture/([a-z][a-z0-9_]*(\.lut|\.gaussian)?))",
              [this](const httplib::Request& req, httplib::Response& res) { answer(res, session.texture(req.matches[1])); });
     bodyRoute("/api/compile", [this](const std::string& body) { return session.compile(body); });

@@ -1,6 +1,7 @@
 #pragma once
 // The HTTP side of `hexc edit`: a server on 127.0.0.1 that answers only requests carrying its token, addressed to its
 // own host name, for the page's own files and the session's routes; nothing maps a request path to a file.
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -16,6 +17,11 @@ constexpr int kMaxCaptureSide = 2048;
 constexpr size_t kMaxRequestBytes = size_t(kMaxCaptureSide) * kMaxCaptureSide * 4 + 4096;
 constexpr size_t kMaxDocumentBytes = 1 << 20;
 constexpr size_t kWorkers = 32;  // connections served at once
+// Change notifications (/api/events) hold a worker each while open: a few at once (a page opens one), each open for a
+// while (the browser reconnects), looking at the files' stamps a few times a second.
+constexpr int kEventStreams = 4;
+constexpr std::chrono::seconds kEventStreamLife{15};
+constexpr std::chrono::milliseconds kEventLook{150};
 
 class Server {
 public:

@@ -300,10 +300,16 @@ Reply Session::texture(const std::string& name) {
 }
 
 std::string Session::version() {
+    std::lock_guard lock(versionMutex_);
     std::string v = stamp(file_);
-    ParseResult parsed = parseMaterialFile(file_);  // the textures the file names now
-    if (parsed.material)
-        for (const Slot& s : parsed.material->slots) v += "," + stamp(s.texturePath);
+    if (v != versionFile_) {  // the textures the file names now, parsed again only when the file changed
+        versionFile_ = v;
+        versionTextures_.clear();
+        ParseResult parsed = parseMaterialFile(file_);
+        if (parsed.material)
+            for (const Slot& s : parsed.material->slots) versionTextures_.push_back(s.texturePath);
+    }
+    for (const fs::path& texture : versionTextures_) v += "," + stamp(texture);
     return v;
 }
 

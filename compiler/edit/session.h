@@ -43,7 +43,8 @@ public:
     // A texture of the last compiled document as the page uploads it, RGBA texels: a slot's ("albedo"), or the Gaussian
     // texture or look-up table its histogram blend reads ("albedo.gaussian", "albedo.lut").
     Reply texture(const std::string& name);
-    // Changes whenever the material file or one of its textures does (size and modification time).
+    // Changes whenever the material file or one of its textures does (size and modification time). Cheap: the file is
+    // parsed for its textures only when its own stamp changed.
     std::string version();
     // The shaders compiled for the page so far (its cache's misses; cost() compiles apart): what its edits cost.
     size_t compiles() const { return cache_.stats().misses; }
@@ -64,6 +65,9 @@ private:
     std::mutex costMutex_;  // cost() is apart: it reads only the file and the document
     ShaderCache cache_;
     std::optional<Material> compiled_;  // the last document that compiled: its textures are served
+    std::mutex versionMutex_;           // version(): the file's stamp and the textures it named then
+    std::string versionFile_;
+    std::vector<std::filesystem::path> versionTextures_;
 };
 
 }  // namespace hexc::edit

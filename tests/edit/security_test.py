@@ -2,6 +2,7 @@
 
 Usage: security_test.py HEXC  (from the source root; materials/rock.json is copied into a temporary folder)
 """
+import http.client
 import json
 import os
 import shutil
@@ -48,7 +49,7 @@ class Security(unittest.TestCase):
 
     def test_token_is_required(self):
         self.assertEqual(self.server.request("GET", "/")[0], 200)
-        for path in ("/", "/edit.js", "/api/material", "/api/schema", "/api/texture/albedo"):
+        for path in ("/", "/edit.js", "/api/material", "/api/schema", "/api/texture/albedo", "/api/events", "/favicon.ico"):
             self.assertEqual(self.server.request("GET", path, token=False)[0], 403, path)
             self.assertEqual(self.server.request("GET", path, token="0" * 32)[0], 403, path)
             self.assertEqual(self.server.request("GET", path, token=self.server.token[:-1])[0], 403, path)
@@ -181,6 +182,32 @@ class Security(unittest.TestCase):
         self.assertLess(time.monotonic() - start, 1.0)
         for s in slow:
             s.close()
+
+    def test_change_notification_streams_are_bounded(self):
+        # Each stream holds a worker: at most 4 at once (server.h, kEventStreams), the fifth refused at once with 503;
+        # a stream sends the version at once, then only changes; it ends by itself (15 s) or when the server stops.
+        streams = []
+        try:
+            for _ in range(4):
+                c = http.client.HTTPConnection("127.0.0.1", self.server.port, timeout=10)
+                c.request("GET", "/api/events?token=" + self.server.token, headers={"Host": "127.0.0.1:%d" % self.server.port})
+                r = c.getresponse()
+                self.assertEqual((r.status, r.getheader("Content-Type")), (200, "text/event-stream"))
+                streams.append((c, r))
+            self.assertEqual(self.server.request("GET", "/api/events")[0], 503)
+            _, first = streams[0]
+            self.assertEqual(first.readline(), b"retry: 200\n")
+            version = first.readline().decode().strip()
+            self.assertEqual(version, "data: " + self.server.json("GET", "/api/version")[1]["version"])
+            self.assertEqual(first.readline(), b"\n")
+            with open(self.material, "a") as f:
+                f.write("\n")  # the file changes: its new version is pushed
+            self.assertEqual(first.readline(), b"retry: 200\n")
+            self.assertNotEqual(first.readline().decode().strip(), version)
+        finally:
+            for c, _ in streams:
+                c.close()
+        self.assertEqual(self.server.request("GET", "/api/version")[0], 200)  # still serving
 
     def test_deeply_nested_requests_are_refused_before_parsing(self):
         # 25,000 levels in 50 KB, within the size limit: the save path's rewrite recursed per level and overflowed.

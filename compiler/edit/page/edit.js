@@ -9,7 +9,10 @@ const captureSize = query.get('capture');  // "WxH": one frame with the default 
 
 // Everything a reload keeps: the camera, the light, the split, what is shown, the selected slot.
 const state = {
-  doc: null, version: null, dirty: false, schema: null,
+  doc: null, version: null, schema: null, sizes: {},  // sizes: [width, height] of each texture loaded, by name
+  saved: null,     // the document as the file holds it (JSON text): the edits are what differs from it
+  conflict: null,  // {version, text}: the file changed on disk while edits were not saved
+  problem: null,   // why the view is not the document (it does not compile, the server is gone), or null
   view: { shape: 'plane', output: 'split', camera: { azimuth: -70, elevation: 25, distance: 2.5 }, light: { azimuth: 45, elevation: 55 },
           split: [1 / 3, 2 / 3], rect: [0, 0, 1, 1] },
 };
@@ -23,10 +26,40 @@ async function api(path, body) {
   try { return { status: response.status, ...JSON.parse(text) }; } catch { return { status: response.status, message: text }; }
 }
 
-function status(text, error = false) {
-  $('status').textContent = text;
-  $('status').className = error ? 'error' : '';
+const dirty = () => state.doc !== null && JSON.stringify(state.doc) !== state.saved;
+
+// The status line, always from the state: whether the edits are saved, a conflict with the file, what went wrong.
+function status(doing) {
+  const parts = [doing || (state.problem ?? '')].filter(Boolean);
+  if (state.conflict) parts.push('the file changed on disk: your edits are not saved (keep yours, take the file\'s or see both)');
+  else parts.push(dirty() ? 'edited (not saved)' : 'saved');
+  $('status').textContent = parts.join('; ');
+  $('status').className = state.problem || state.conflict ? 'error' : '';
+  $('save').disabled = !dirty();
+  $('undo').disabled = !history.past.length;
+  $('redo').disabled = !history.future.length;
 }
+
+// Undo and redo over every change of the document in this session: panel edits (a slider's drag is one step), a
+// reload from disk, taking the file's version. Each step is the document before it, as JSON text.
+const history = { past: [], future: [], pointer: null, at: 0 };
+
+function remember(pointer = null) {
+  const now = performance.now();
+  if (!(pointer !== null && pointer === history.pointer && now - history.at < 1000)) history.past.push(JSON.stringify(state.doc));
+  Object.assign(history, { future: [], pointer, at: now });
+}
+
+function travel(from, to) {
+  if (!from.length) return;
+  to.push(JSON.stringify(state.doc));
+  state.doc = JSON.parse(from.pop());
+  history.pointer = null;
+  panel.render(state.doc);
+  compile();
+}
+const undo = () => travel(history.past, history.future);
+const redo = () => travel(history.future, history.past);
 
 // Diagnostics over the view, never instead of it: the last program that compiled keeps drawing.
 function showDiagnostics(list, kind) {
@@ -46,6 +79,10 @@ function setPointer(doc, pointer, value) {
 
 let renderer, panel;
 
+// What the page knows of the file on disk: the latest version notified or answered (a save's own change is not looked
+// at until the save has answered with its version), whether a change is being looked at, whether a save is under way.
+const disk = { latest: null, busy: false, saving: false };
+
 async function texture(name, srgb) {
   const response = await fetch(`/api/texture/${name}`);
   if (!response.ok) throw new Error(await response.text());
@@ -59,8 +96,9 @@ async function loadTextures(programs, fresh) {
   const slots = programs.hex?.manifest?.slots || [];
   for (const name of renderer.textureSources()) {
     if (!fresh && renderer.textures[name]) continue;
-    const slot = slots.find(s => s.name === name);
-    renderer.setTexture(name, await texture(name, !!slot && slot.colorspace === 'srgb' && slot.decode !== 'shader'));
+    const slot = slots.find(s => s.name === name), t = await texture(name, !!slot && slot.colorspace === 'srgb' && slot.decode !== 'shader');
+    renderer.setTexture(name, t);
+    state.sizes[name] = [t.width, t.height];
   }
 }
 
@@ -86,27 +124,32 @@ async function compile(freshTextures = false) {
     hexc.compiles++;
     if (!r.ok) {
       showDiagnostics(r.diagnostics || [{ text: r.message }], 'error');
-      status('the material does not compile: the view shows its last version', true);
+      state.problem = 'the material does not compile: the view shows its last version';
       hexc.status = 'error';
+      status();
       return draw();
     }
     renderer.setPrograms(r.programs);
     hexc.programs = Object.keys(renderer.programs);
     timing.linked = performance.now();
+    const known = Object.keys(state.sizes).length;
     await loadTextures(r.programs, freshTextures);
+    if (Object.keys(state.sizes).length !== known) panel.render(state.doc);  // the tiling lock needs the texture's size
     timing.textures = performance.now();
     hexc.timing = timing;
     const failed = Object.entries(r.programs).flatMap(([name, p]) => p.fragment ? [] : p.diagnostics.map(d => ({ text: `${name}: ${d.text}` })));
     showDiagnostics([...r.diagnostics, ...failed], 'warning');
     $('template').textContent = r.note ? `shown with template ${r.template}: ${r.note}` : `template ${r.template}`;
-    status(state.dirty ? 'edited (not saved)' : 'saved');
+    state.problem = null;
     hexc.status = 'ready';
+    status();
     draw();
     costLine(seq);
   } catch (e) {
     showDiagnostics([{ text: String(e.message || e) }], 'error');
     hexc.status = 'error';
-    status('error', true);
+    state.problem = String(e.message || e);
+    status();
     draw();
   } finally {
     hexc.pending--;
@@ -123,10 +166,9 @@ function scheduleCompile() {
 // anything else compiles again.
 function onEdit(pointer, value, target) {
   hexc.editAt = performance.now();
+  remember(value === undefined ? null : pointer);  // a reset is a step of its own
   setPointer(state.doc, pointer, value);
-  state.dirty = true;
-  $('save').disabled = false;
-  status('edited (not saved)');
+  status();
   const names = target.slots.map(i => `${state.doc.slots[i].name}_${target.key}`);
   if (names.every(n => renderer.member(n))) {
     const p = state.schema.$defs.hextiling.properties[target.key];
@@ -171,11 +213,15 @@ function draw() {
       canvas.height = Math.max(1, Math.round(canvas.clientHeight * devicePixelRatio));
     }
     renderer.draw(state.view, regions());
-    renderer.gl.readPixels(0, 0, 1, 1, renderer.gl.RGBA, renderer.gl.UNSIGNED_BYTE, new Uint8Array(4));  // the frame is done
-    hexc.frames++;
-    hexc.lastFrame = performance.now();
     labels();
-    if (captureSize && hexc.status !== 'loading') postCapture();
+    showDistance();
+    // The browser calls the next animation frame once it has taken this one: that is when the frame counts as drawn
+    // (reading a pixel back to know it would stall the pipeline every frame).
+    requestAnimationFrame(() => {
+      hexc.frames++;
+      hexc.lastFrame = performance.now();
+      if (captureSize && hexc.status !== 'loading') postCapture();
+    });
   });
 }
 
@@ -191,53 +237,170 @@ async function postCapture() {
 
 async function load() {
   const r = await api('/api/material');
-  state.version = r.version;
   $('title').textContent = `hexc edit: ${r.file}`;
+  let doc;
   try {
-    state.doc = JSON.parse(r.text);
+    doc = JSON.parse(r.text);
   } catch {
     showDiagnostics(r.diagnostics?.length ? r.diagnostics : [{ text: `${r.file} is not JSON` }], 'error');
     hexc.status = 'error';
     return draw();
   }
-  state.dirty = false;
-  $('save').disabled = true;
+  if (state.doc !== null && JSON.stringify(doc) !== JSON.stringify(state.doc)) remember();  // a reload can be undone
+  Object.assign(state, { doc, version: r.version, saved: JSON.stringify(doc), conflict: null });
+  disk.latest = r.version;  // newer than any change notified before it was asked for
+  conflictBar();
   panel.render(state.doc);
   await compile(true);
 }
 
-async function save() {
-  const r = await api('/api/save', { document: state.doc, version: state.version });
+async function save(retry = true) {
+  if (!dirty() || state.conflict) return;
+  status('saving…');
+  let r;
+  disk.saving = true;
+  try {
+    r = await api('/api/save', { document: state.doc, version: state.version });
+  } catch (e) {
+    return status(`not saved: ${e.message || e}`);
+  } finally {
+    disk.saving = false;
+  }
   if (r.ok) {
-    state.version = r.version;
-    state.dirty = false;
-    $('save').disabled = true;
-    status('saved');
+    Object.assign(state, { version: r.version, saved: JSON.stringify(state.doc) });
+    disk.latest = r.version;
+    status();
   } else if (r.conflict) {
-    status(r.message, true);
-    await load();
+    await changedOnDisk();
+    if (!state.conflict && retry) return save(false);  // only a texture changed: the edits still apply
   } else {
     showDiagnostics(r.diagnostics || [], 'error');
-    status(r.message || 'not saved', true);
+    status(`not saved: ${r.message || 'the material does not compile'}`);
   }
+  look();  // a change on disk that came while saving (the save's own is its version now)
 }
 
-// The file and its textures on disk: a change made elsewhere reloads the material; the view and the panel's slot stay.
-async function watch() {
-  try {
-    const r = await api('/api/version');
-    if (r.version && r.version !== state.version && !hexc.pending) {
-      status('changed on disk: reloading');
-      await load();
-    }
-  } catch { status('hexc edit is not running', true); }
-  setTimeout(watch, 700);
+// The file or a texture changed on disk. Without unsaved edits the page reloads the material (the view and the panel's
+// slot stay). With them nothing is dropped: the page shows the conflict and the artist keeps theirs, takes the file's or
+// sees both. A change of a texture alone reloads the textures and keeps the edits.
+async function changedOnDisk() {
+  const r = await api('/api/material');
+  if (!dirty() || r.text === undefined) return load();
+  let same = false;
+  try { same = JSON.stringify(JSON.parse(r.text)) === state.saved; } catch { /* not JSON now: a conflict */ }
+  if (same) {
+    state.version = disk.latest = r.version;
+    return compile(true);
+  }
+  state.conflict = { version: r.version, text: r.text };
+  disk.latest = r.version;
+  conflictBar();
+  status();
+}
+
+function conflictBar() {
+  $('conflict').hidden = !state.conflict;
+  $('both').hidden = true;
+}
+
+const resolve = {
+  // The edits stay and become the version to save over the file's.
+  keep() {
+    state.version = state.conflict.version;
+    state.conflict = null;
+    conflictBar();
+    status();
+  },
+  take() {
+    const text = state.conflict.text;
+    state.conflict = null;
+    try { remember(); state.doc = JSON.parse(text); } catch { /* load() shows why */ }
+    return load();
+  },
+  // The two documents side by side, written alike (so that only what differs is marked), the lines only one has marked.
+  both() {
+    let theirs = state.conflict.text.trimEnd();
+    try { theirs = JSON.stringify(JSON.parse(theirs), null, 2); } catch { /* not JSON: shown as it is */ }
+    const mine = JSON.stringify(state.doc, null, 2).split('\n'), file = theirs.split('\n');
+    const pane = (lines, other) => {
+      const set = new Set(other.map(l => l.trim().replace(/,$/, '')));
+      return lines.map(l => Object.assign(document.createElement('div'), { textContent: l, className: set.has(l.trim().replace(/,$/, '')) ? '' : 'differs' }));
+    };
+    $('both-mine').replaceChildren(...pane(mine, file));
+    $('both-file').replaceChildren(...pane(file, mine));
+    $('both').hidden = !$('both').hidden;
+  },
+};
+
+// Acts on the latest version of the file on disk unless the page already has it (or shows it as a conflict).
+async function look() {
+  if (disk.busy || disk.saving) return;
+  disk.busy = true;
+  while (disk.latest !== null && disk.latest !== state.version && disk.latest !== state.conflict?.version) {
+    const seen = disk.latest;
+    await changedOnDisk();
+    if (disk.latest === seen) break;
+  }
+  disk.busy = false;
+}
+
+// The file and its textures on disk: the server pushes their version when they change (server-sent events; the
+// browser reconnects when the server ends a stream).
+function watch() {
+  const events = new EventSource('/api/events');
+  events.onmessage = e => {
+    disk.latest = e.data;
+    hexc.notified = performance.now();
+    if (state.problem === 'hexc edit is not running') state.problem = null;
+    status();
+    look();
+  };
+  events.onerror = async () => {  // the stream ended (it reconnects) or the server is gone
+    try { await fetch('/api/version'); } catch { state.problem = 'hexc edit is not running'; status(); }
+  };
+}
+
+// Ctrl+S saves, Ctrl+Z undoes, Ctrl+Shift+Z and Ctrl+Y redo (Cmd on a Mac); closing the tab with unsaved edits warns.
+function keys() {
+  document.addEventListener('keydown', e => {
+    if (!(e.ctrlKey || e.metaKey) || e.altKey) return;
+    const key = e.key.toLowerCase();
+    const act = { s: () => save(), z: e.shiftKey ? redo : undo, y: redo }[key];
+    if (!act) return;
+    e.preventDefault();
+    act();
+  });
+  window.addEventListener('beforeunload', e => {
+    if (!dirty()) return;
+    e.preventDefault();
+    e.returnValue = '';  // older browsers show the warning only when this is set
+  });
+  $('undo').addEventListener('click', undo);
+  $('redo').addEventListener('click', redo);
+  $('keep').addEventListener('click', resolve.keep);
+  $('take').addEventListener('click', resolve.take);
+  $('see-both').addEventListener('click', resolve.both);
+}
+
+// The camera distance in repeats of the material's texture (uv units times its tiling), on a logarithmic slider: each
+// 1/12 of it doubles the distance, from an eighth of a repeat (a few texels) to 256 repeats.
+const kRepeats = [1 / 8, 256];
+function tilingX() {
+  const t = state.doc?.hextiling?.tiling ?? 1;
+  return Array.isArray(t) ? t[0] : t;
+}
+function showDistance() {
+  const repeats = state.view.camera.distance * tilingX();
+  $('distance').value = String(Math.log(repeats / kRepeats[0]) / Math.log(kRepeats[1] / kRepeats[0]));
+  $('distance-value').textContent = `${Number(repeats.toPrecision(2))} repeats`;
 }
 
 function controls() {
-  const distance = $('distance'), lo = Math.log(0.05), hi = Math.log(400);  // one texel up close to hundreds of repeats
-  distance.value = String((Math.log(state.view.camera.distance) - lo) / (hi - lo));
-  distance.addEventListener('input', () => { state.view.camera.distance = Math.exp(lo + Number(distance.value) * (hi - lo)); draw(); });
+  const distance = $('distance');
+  distance.addEventListener('input', () => {
+    state.view.camera.distance = kRepeats[0] * Math.pow(kRepeats[1] / kRepeats[0], Number(distance.value)) / tilingX();
+    draw();
+  });
   const bind = (id, get, set) => { $(id).value = String(get()); $(id).addEventListener('input', () => { set(Number($(id).value)); draw(); }); };
   bind('elevation', () => state.view.camera.elevation, v => { state.view.camera.elevation = v; });
   bind('light-azimuth', () => state.view.light.azimuth, v => { state.view.light.azimuth = v; });
@@ -246,7 +409,8 @@ function controls() {
     $(id).value = state.view[id];
     $(id).addEventListener('change', () => { state.view[id] = $(id).value; draw(); });
   }
-  $('save').addEventListener('click', save);
+  $('save').addEventListener('click', () => save());
+  keys();
   $('screenshot').addEventListener('click', () => $('canvas').toBlob(b => {
     const a = document.createElement('a');
     a.href = URL.createObjectURL(b);
@@ -261,6 +425,7 @@ function interaction() {
   let drag = null;
   const viewport = $('viewport');
   viewport.addEventListener('pointerdown', e => {
+    if (e.target.closest('#conflict, #diagnostics')) return;  // their buttons and text, not the view
     drag = e.target.classList.contains('divider') ? { divider: Number(e.target.id.slice(-1)) } : { x: e.clientX, y: e.clientY };
     viewport.setPointerCapture(e.pointerId);
   });
@@ -280,7 +445,8 @@ function interaction() {
   viewport.addEventListener('pointerup', () => { drag = null; });
   viewport.addEventListener('wheel', e => {
     e.preventDefault();
-    state.view.camera.distance = Math.min(400, Math.max(0.05, state.view.camera.distance * Math.exp(e.deltaY * 0.001)));
+    const t = tilingX(), repeats = state.view.camera.distance * t * Math.exp(e.deltaY * 0.001);
+    state.view.camera.distance = Math.min(kRepeats[1], Math.max(kRepeats[0], repeats)) / t;
     draw();
   }, { passive: false });
 }
@@ -288,6 +454,7 @@ function interaction() {
 // For tests and the benchmark: the view state, and the pixels of the current view as floats (rows bottom first).
 hexc.drawPending = () => drawRequested;
 hexc.view = () => state.view;
+hexc.document = () => state.doc;
 hexc.setView = v => { Object.assign(state.view, v); draw(); };
 hexc.readFloat = (w, h) => Array.from(renderer.readFloat(state.view, regions(), w, h));
 hexc.selectSlot = name => { panel.slot = state.doc.slots.findIndex(s => s.name === name); panel.render(state.doc); return compile(); };
@@ -305,6 +472,7 @@ async function start() {
     renderer = new View($('canvas'), Object.fromEntries(names.map((n, i) => [n, sources[i]])));
     panel = new Panel($('panel'), schema, onEdit);
     panel.onSlot = () => compile();
+    panel.textureSize = i => state.sizes[state.doc.slots[i]?.name];
     controls();
     await load();
   } catch (e) {

@@ -44,6 +44,9 @@ export class Panel {
     this.schema = schema;
     this.onEdit = onEdit;  // (pointer, value or undefined to remove, {slots, key}) => void
     this.slot = 0;
+    this.open = { material: true, overrides: false };  // which collapsible sections are open, kept across renders
+    this.lock = false;       // tiling locked to square texels
+    this.textureSize = () => null;  // (slot index) => [width, height] of its texture once loaded, set by the page
   }
 
   get hextiling() { return this.schema.$defs.hextiling.properties; }
@@ -52,12 +55,20 @@ export class Panel {
     this.doc = doc;
     const slots = Array.isArray(doc.slots) ? doc.slots.length : 0;  // an invalid document still shows what it has
     this.slot = Math.max(0, Math.min(this.slot, slots - 1));
-    this.root.replaceChildren(this.section('Material', null), ...(slots ? [this.slotSection()] : []));
+    this.root.replaceChildren(this.section('Material', null, 'material'), ...(slots ? [this.slotSection()] : []));
+  }
+
+  // A section that folds away (its summary stays), open as it was left.
+  collapsible(title, name) {
+    const box = element('details', { class: 'settings', id: `section-${name}` }, element('summary', {}, element('h2', {}, title)));
+    box.open = this.open[name];
+    box.addEventListener('toggle', () => { this.open[name] = box.open; });
+    return box;
   }
 
   // Material-wide settings (slotIndex null) or one slot's overrides, each key of the schema's hextiling.
-  section(title, slotIndex) {
-    const box = element('section', { class: 'settings' }, element('h2', {}, title));
+  section(title, slotIndex, name) {
+    const box = this.collapsible(title, name);
     for (const [key, p] of Object.entries(this.hextiling)) {
       if (slotIndex !== null && (key === 'projection' || key === 'planesharpness')) continue;  // material-wide only
       const base = slotIndex === null ? '/hextiling' : `/slots/${slotIndex}/hextiling`;
@@ -65,7 +76,7 @@ export class Panel {
       const inherited = slotIndex === null ? p.default : effective(this.doc, null, key, p.default);
       const slots = slotIndex === null ? (this.doc.slots || []).map((s, i) => i).filter(i => this.doc.slots[i].hextiling?.[key] === undefined)
                                        : [slotIndex];
-      box.append(this.control(key, p, `${base}/${key}`, own, inherited, { slots, key }));
+      box.append(this.control(key, p, `${base}/${key}`, own, inherited, { slots, key }, { shown: key === 'taps' ? 'the mask\'s' : undefined }));
     }
     return box;
   }
@@ -80,28 +91,54 @@ export class Panel {
     const box = element('section', { class: 'settings' }, element('h2', {}, 'Slot ', picker),
                         element('div', { class: 'texture' }, `texture ${slot.texture}`));
     const keys = ['kind', 'colorspace', ...(slot.kind === 'scalar' ? ['channel'] : []), ...(slot.kind === 'normal' ? ['flip_y'] : [])];
-    for (const key of keys) box.append(this.control(key, slotDefs[key], `/slots/${i}/${key}`, slot[key], slotDefs[key].default, { slots: [i], key }));
+    const required = this.schema.$defs.slot.required;
+    // colorspace's default follows the kind (docs/material-format.md); a required key has none, and no reset.
+    const defaults = { colorspace: slot.kind === 'color' ? 'srgb' : 'linear' };
+    for (const key of keys)
+      box.append(this.control(key, slotDefs[key], `/slots/${i}/${key}`, slot[key], slotDefs[key].default ?? defaults[key], { slots: [i], key },
+                              { required: required.includes(key) }));
     if (slot.height_blend) {
       const w = slotDefs.height_blend.properties.width;
       box.append(this.control('height_blend width', w, `/slots/${i}/height_blend/width`, slot.height_blend.width, w.default,
                               { slots: [i], key: 'heightwidth' }));
     }
-    box.append(this.section(`${slot.name}: hex-tiling overrides`, i));
+    box.append(this.section(`${slot.name}: hex-tiling overrides`, i, 'overrides'));
     return box;
   }
 
   // One setting: its editor, the value's default (inherited for a slot) and unit, and a reset that removes the key.
-  control(label, p, pointer, own, inherited, target) {
+  // `shown`: what the default is when it is no value (taps: the mask's); a `required` key has no default and no reset.
+  control(label, p, pointer, own, inherited, target, { shown, required = false } = {}) {
     const value = own !== undefined ? own : inherited;
     const row = element('div', { class: own !== undefined ? 'control own' : 'control', 'data-pointer': pointer });
     const unit = p['x-unit'] ? ` ${p['x-unit']}` : '';
-    const shown = inherited === undefined ? '(the mask\'s)' : JSON.stringify(inherited);
+    const defaultText = required ? 'required' : `default ${shown ?? JSON.stringify(inherited)}`;
     const reset = element('button', { class: 'reset', title: 'remove this key: back to the default' }, '↺');
     reset.disabled = own === undefined;
     reset.addEventListener('click', () => this.onEdit(pointer, undefined, target));
-    row.append(element('label', { title: p.description || '' }, label), this.editor(label, p, pointer, value, target), reset,
-               element('span', { class: 'default' }, `${unit ? unit.trim() + ', ' : ''}default ${shown}`));
+    row.append(element('label', { title: p.description || '' }, label), this.editor(label, p, pointer, value, target), required ? '' : reset,
+               element('span', { class: 'default' }, `${unit ? unit.trim() + ', ' : ''}${defaultText}`));
+    if (label === 'tiling') row.append(this.tilingLock(pointer, value, target));
     return row;
+  }
+
+  // The tiling lock: the second repeat follows the first so that a texel is square on the surface. A w x h texture tiled
+  // [tx, ty] covers 1 / (tx w) by 1 / (ty h) of a uv unit per texel: square when ty = tx w / h.
+  tilingLock(pointer, value, target) {
+    const size = this.textureSize(this.slot);
+    const box = element('input', { type: 'checkbox', class: 'lock' });
+    box.checked = this.lock;
+    box.disabled = !size;
+    const squared = () => {
+      const tx = Array.isArray(value) ? value[0] : value;
+      return [tx, rounded(tx * size[0] / size[1], false)];
+    };
+    box.addEventListener('change', () => {
+      this.lock = box.checked;
+      if (this.lock) this.onEdit(pointer, squared(), target);
+    });
+    const why = size ? `keep texels square: the second repeat is the first × ${size[0]}/${size[1]} (the slot's texture)` : 'no texture loaded yet';
+    return element('label', { class: 'lock', title: why }, box, ' square texels');
   }
 
   editor(label, p, pointer, value, target) {
@@ -131,8 +168,14 @@ export class Panel {
     const min = span[0] ?? d.min ?? 0, max = span[1] ?? d.max ?? 1, log = span[2] === 'log';
     const toSlider = x => log ? Math.log(x / min) / Math.log(max / min) : (x - min) / (max - min);
     const fromSlider = t => log ? min * Math.pow(max / min, t) : min + t * (max - min);
-    const box = element('span', { class: 'sliders' });
+    const box = element('span', { class: 'sliders' }), sliders = [], numbers = [];
     const write = () => {
+      const size = label === 'tiling' && this.lock && this.textureSize(this.slot);
+      if (size) {
+        values[1] = rounded(values[0] * size[0] / size[1], false);
+        numbers[1].value = String(values[1]);
+        sliders[1].value = String(toSlider(values[1]));
+      }
       const out = !d.either || Array.isArray(value) || values[0] !== values[1] ? values.slice(0, count) : values[0];
       this.onEdit(pointer, count === 1 ? values[0] : out, target);
     };
@@ -153,6 +196,8 @@ export class Panel {
         write();
       });
       box.append(slider, number);
+      sliders.push(slider);
+      numbers.push(number);
     }
     return box;
   }

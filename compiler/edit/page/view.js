@@ -123,20 +123,27 @@ export class View {
     if (old) gl.deleteTexture(old);
   }
 
+  // The mesh `name` as `make` builds it, built again only when make.key changes; the one it replaces is freed.
   mesh(name, make) {
-    if (this.meshes[name] && this.meshes[name].key === make.key) return this.meshes[name];
+    const old = this.meshes[name];
+    if (old && old.key === make.key) return old;
     const gl = this.gl, m = make();
-    const vao = gl.createVertexArray();
+    const vao = gl.createVertexArray(), buffers = [];
     gl.bindVertexArray(vao);
     [[m.positions, 3], [m.normals, 3], [m.tangents, 4], [m.uvs, 2]].forEach(([data, size], location) => {
-      gl.bindBuffer(gl.ARRAY_BUFFER, gl.createBuffer());
+      gl.bindBuffer(gl.ARRAY_BUFFER, buffers[buffers.push(gl.createBuffer()) - 1]);
       gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(data), gl.STATIC_DRAW);
       gl.enableVertexAttribArray(location);
       gl.vertexAttribPointer(location, size, gl.FLOAT, false, 0, 0);
     });
-    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gl.createBuffer());
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, buffers[buffers.push(gl.createBuffer()) - 1]);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array(m.indices), gl.STATIC_DRAW);
-    this.meshes[name] = { vao, count: m.indices.length, key: make.key };
+    gl.bindVertexArray(null);
+    if (old) {
+      gl.deleteVertexArray(old.vao);
+      old.buffers.forEach(b => gl.deleteBuffer(b));
+    }
+    this.meshes[name] = { vao, buffers, count: m.indices.length, key: make.key };
     return this.meshes[name];
   }
 
@@ -154,8 +161,10 @@ export class View {
     const eye = [target[0] + distance * Math.cos(e) * Math.cos(a), target[1] + distance * Math.cos(e) * Math.sin(a), target[2] + distance * Math.sin(e)];
     const far = s.shape === 'plane' ? distance * 400 : distance + 4;
     const matrix = geometry.multiply(geometry.perspective(45 * rad, aspect, distance * 0.01, far), geometry.lookAt(eye, target, [0, 0, 1]));
-    const make = { plane: () => geometry.plane(Math.max(64, distance * 200)), sphere: geometry.sphere, cube: geometry.cube }[s.shape];
-    make.key = s.shape === 'plane' ? String(Math.max(64, distance * 200)) : s.shape;
+    // The plane reaches 200 camera distances away, in powers of two: zooming builds a new one only past a doubling.
+    const extent = Math.pow(2, Math.ceil(Math.log2(Math.max(64, distance * 200))));
+    const make = { plane: () => geometry.plane(extent), sphere: geometry.sphere, cube: geometry.cube }[s.shape];
+    make.key = s.shape === 'plane' ? String(extent) : s.shape;
     return { mesh: this.mesh(s.shape, make), matrix, uvScale: s.shape === 'plane' ? 1 : s.uvScale || 1, depth: s.shape !== 'plane' };
   }
 
