@@ -11,7 +11,8 @@
 
 namespace CLI {
 class App;
-}
+class Validator;
+}  // namespace CLI
 
 namespace hexc::cli {
 
@@ -61,6 +62,11 @@ Diagnostics byPosition(Diagnostics diags);
 // Parses `args` (without the program and command names) with CLI11 into what `app`'s options are bound to.
 // Returns the exit code when the command is done: kOk after printing --help or --version, kUsage after printing
 // "hexc: <what is wrong>"; nullopt when the command should run.
+// A target option's help, "spirv, hlsl, ..., msl (or metal)", and its check: the names of `names`, each with its target's
+// alias, and whether `named` knows a name.
+std::string targetList(const std::vector<std::string>& names, std::optional<Target> (*named)(std::string_view));
+CLI::Validator targetCheck(const std::vector<std::string>& names, std::optional<Target> (*named)(std::string_view));
+
 std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args);
 
 // `hexc`'s compile mode; nullopt with `out` filled when it should run, else the exit code (see parseWith).
