@@ -3,7 +3,7 @@ listed by hexc before the build (docs/build-integration.md, "Bazel")."""
 
 # hexc's --targets names and the extensions of the files they write (<name>.frag.<extension>), and the targets it
 # writes when given none (tests/backends/target_table_test.cpp checks both against hexc's target table).
-_EXTENSIONS = {"spirv": "spv", "hlsl": "hlsl", "glsl": "glsl", "msl": "metal"}
+_EXTENSIONS = {"spirv": "spv", "hlsl": "hlsl", "glsl": "glsl", "msl": "metal", "wgsl": "wgsl"}
 _DEFAULT_TARGETS = ["spirv", "hlsl", "glsl", "msl"]
 
 # Runs hexc ($1, with the arguments after $3), then checks that the files it wrote, the targets of its depfile ($2),

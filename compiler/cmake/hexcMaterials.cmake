@@ -11,7 +11,7 @@
 
 # hexc's --targets names, and those it writes when given none (tests/backends/target_table_test.cpp checks both
 # against hexc's target table).
-set(_HEXC_TARGETS spirv hlsl glsl msl)
+set(_HEXC_TARGETS spirv hlsl glsl msl wgsl)
 set(_HEXC_DEFAULT_TARGETS spirv hlsl glsl msl)
 
 # The hexc executable of the imported target, to run at configure time.

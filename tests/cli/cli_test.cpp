@@ -51,7 +51,7 @@ TEST(Cli, UsageErrors) {
     EXPECT_EQ(err, "hexc: no output folder given: use -o DIR (see hexc --help)\n");
     // `--targets` is an alias of `--target`, whose name the message uses.
     EXPECT_EQ(runHexc("materials/rock.json -o x --targets hlsl,dxil", &err), 2);
-    EXPECT_EQ(err, "hexc: --target: dxil not in {spirv,hlsl,glsl,msl} (see hexc --help)\n");
+    EXPECT_EQ(err, "hexc: --target: dxil not in {spirv,hlsl,glsl,msl,wgsl} (see hexc --help)\n");
     EXPECT_EQ(runHexc("--frobnicate", &err), 2);
     EXPECT_EQ(err, "hexc: The following argument was not expected: --frobnicate (see hexc --help)\n");
     EXPECT_EQ(runHexc("materials/rock.json -o x --hlsl-sm 52", &err), 2);
@@ -214,3 +214,18 @@ TEST(Cli, ARenamedMaterialFileIsNotUpToDate) {
 }
 
 }  // namespace
+
+// Without Node.js on PATH the wgsl target fails with what to install and writes nothing; every other target works.
+TEST(Cli, WgslWithoutNodeSaysWhatToInstall) {
+    const auto out = std::filesystem::temp_directory_path() / "hexc_wgsl_without_node";
+    std::filesystem::remove_all(out);
+    std::string err;
+    const std::string noNode = "PATH=/nonexistent";
+    EXPECT_EQ(runHexc("materials/rock.json -o " + out.string() + " --targets wgsl,spirv", &err, noNode), 1);
+    EXPECT_NE(err.find("error[HX300]: cannot run `node`"), std::string::npos) << err;
+    EXPECT_NE(err.find("npm install naga-wasm@30.1.0"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(out / "rock.frag.spv"));
+    EXPECT_EQ(runHexc("materials/rock.json -o " + out.string(), &err, noNode), 0) << err;
+    for (const char* file : {"rock.frag.spv", "rock.frag.hlsl", "rock.frag.glsl", "rock.frag.metal"})
+        EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+}

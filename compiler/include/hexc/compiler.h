@@ -16,8 +16,8 @@ namespace hexc {
 class ShaderCache;
 
 // One row each in the target table (backends/targets.cpp), in this order.
-enum class Target { Spirv, Hlsl, Glsl, Msl };
-inline constexpr size_t kTargetCount = 4;
+enum class Target { Spirv, Hlsl, Glsl, Msl, Wgsl };
+inline constexpr size_t kTargetCount = 5;
 std::string_view toString(Target target);
 // The --targets names in target order, those a compile writes when it names none, and the target a name or an
 // alias (`metal`) names.

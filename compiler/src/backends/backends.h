@@ -55,6 +55,9 @@ struct TargetOutput {
 TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
+// WGSL (wgsl.cpp): the module translated by naga, resources at their Vulkan set and binding as @group and @binding.
+TargetOutput emitWgsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
+TargetOutput vertexWgsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry);
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan);
 
 // Whether the text targets carry `#line` directives (--debug, unless --line-directives none).

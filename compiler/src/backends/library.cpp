@@ -105,13 +105,14 @@ std::vector<OutputFile> hexcLibrary(const std::vector<Target>& targets) {
 
 std::optional<Target> libraryTargetNamed(std::string_view name) {
     for (const TargetRow& row : targetRows())
-        if (name == row.libraryName || (*row.alias && name == row.alias)) return row.target;
+        if (row.libraryName && (name == row.libraryName || (*row.alias && name == row.alias))) return row.target;
     return std::nullopt;
 }
 
 std::vector<std::string> libraryTargetNames() {
     std::vector<std::string> names;
-    for (const TargetRow& row : targetRows()) names.push_back(row.libraryName);
+    for (const TargetRow& row : targetRows())
+        if (row.libraryName) names.push_back(row.libraryName);
     return names;
 }
 
