@@ -229,3 +229,18 @@ TEST(Cli, WgslWithoutNodeSaysWhatToInstall) {
     for (const char* file : {"rock.frag.spv", "rock.frag.hlsl", "rock.frag.glsl", "rock.frag.metal"})
         EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
 }
+
+// What WGSL does not have is refused at the template line that declares it, before naga is asked (so without Node).
+TEST(Cli, WgslRefusesCombinedSamplersAndPushConstantsWhereDeclared) {
+    const auto out = std::filesystem::temp_directory_path() / "hexc_wgsl_refused";
+    std::string err;
+    EXPECT_EQ(runHexc("materials/engine_rock.json -o " + out.string() + " --targets wgsl", &err, "PATH=/nonexistent"), 1);
+    EXPECT_NE(err.find("templates/engine.glsl:15:30: error[HX300]: the wgsl target cannot translate the template's `shadowMap`: a "
+                       "combined image sampler"),
+              std::string::npos)
+        << err;
+    EXPECT_NE(err.find("templates/engine.glsl:20:23: error[HX300]: the wgsl target cannot translate the template's `Push`: a "
+                       "push-constant block"),
+              std::string::npos)
+        << err;
+}
