@@ -1,8 +1,10 @@
 """hexc_material: one hexc material (or scene) compiled in one Bazel action; hexc_outputs: the files each writes,
 listed by hexc before the build (docs/build-integration.md, "Bazel")."""
 
-# hexc's --targets names and the extensions of the files they write (<name>.frag.<extension>).
-_EXTENSIONS = {"spirv": "spv", "hlsl": "hlsl", "glsl": "glsl", "msl": "metal"}
+# hexc's --targets names and the extensions of the files they write (<name>.frag.<extension>), and the targets it
+# writes when given none (tests/backends/target_table_test.cpp checks both against hexc's target table).
+_EXTENSIONS = {"spirv": "spv", "hlsl": "hlsl", "glsl": "glsl", "msl": "metal", "wgsl": "wgsl"}
+_DEFAULT_TARGETS = ["spirv", "hlsl", "glsl", "msl"]
 
 # Runs hexc ($1, with the arguments after $3), then checks that the files it wrote, the targets of its depfile ($2),
 # are the declared ones ($3): Bazel would drop any other without a word, and a shader would miss its table.
@@ -25,7 +27,7 @@ def _hexc_material_impl(ctx):
     name = ctx.attr.material_name or ctx.label.name
     for target in ctx.attr.targets:
         if target not in _EXTENSIONS:
-            fail("unknown target `%s`; expected spirv, hlsl, glsl or msl" % target, "targets")
+            fail("unknown target `%s`; expected one of %s" % (target, ", ".join(_EXTENSIONS.keys())), "targets")
     if ctx.attr.outs:
         shaders = [ctx.actions.declare_file(f) for f in ctx.attr.outs]
     else:
@@ -62,7 +64,7 @@ def _hexc_material_impl(ctx):
 hexc_material = rule(
     implementation = _hexc_material_impl,
     doc = "Compiles one material (or scene) with hexc in one action; its files are `outs` (from hexc_outputs), " +
-          "or by default <name>.manifest.json and <name>.frag.{spv,hlsl,glsl,metal} (those of `targets`).",
+          "or by default <name>.manifest.json and <name>.frag.<extension> (those of `targets`).",
     attrs = {
         "material": attr.label(
             allow_single_file = [".json", ".mtlx"],
@@ -99,8 +101,8 @@ hexc_material = rule(
             doc = "The hexc executable, e.g. @hexc//:bin/hexc.",
         ),
         "targets": attr.string_list(
-            default = ["spirv", "hlsl", "glsl", "msl"],
-            doc = "Subset of spirv, hlsl, glsl, msl (hexc's --targets); default: all four, as hexc's.",
+            default = _DEFAULT_TARGETS,
+            doc = "Subset of hexc's --targets names; default: hexc's default.",
         ),
         "options": attr.string_list(
             doc = "More hexc options, as written, e.g. [\"--bake\", \"--hlsl-sm\", \"60\"].",

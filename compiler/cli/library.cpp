@@ -29,19 +29,15 @@ int libraryCommand(const std::vector<std::string>& args) {
     CLI::App app{kLibraryHelp, "hexc library"};
     std::vector<std::string> targets;
     std::filesystem::path outDir;
-    app.add_option("-t,--target,--targets", targets, "hlsl, glsl, msl (or metal), spirv-asm; repeatable or comma-separated")
+    app.add_option("-t,--target,--targets", targets,
+                   targetList(libraryTargetNames(), libraryTargetNamed) + "; repeatable or comma-separated")
         ->required()
         ->delimiter(',')
-        ->check(CLI::IsMember({"hlsl", "glsl", "msl", "metal", "spirv-asm"}));
+        ->check(targetCheck(libraryTargetNames(), libraryTargetNamed));
     app.add_option("-o,--out", outDir, "output folder")->required()->type_name("DIR");
     if (std::optional<int> done = parseWith(app, args)) return *done;
-    static const std::map<std::string, LibraryTarget> names = {{"hlsl", LibraryTarget::Hlsl},
-                                                               {"glsl", LibraryTarget::Glsl},
-                                                               {"msl", LibraryTarget::Msl},
-                                                               {"metal", LibraryTarget::Msl},
-                                                               {"spirv-asm", LibraryTarget::SpirvAsm}};
-    std::vector<LibraryTarget> chosen;
-    for (const std::string& t : targets) chosen.push_back(names.at(t));
+    std::vector<Target> chosen;
+    for (const std::string& t : targets) chosen.push_back(*libraryTargetNamed(t));
     std::vector<OutputFile> files;
     try {
         files = hexcLibrary(chosen);

@@ -45,10 +45,8 @@ written atomically.
 // Fills the compile options from the checked names of --target, --glsl-version, --msl-version and --line-directives.
 void applyNames(const std::vector<std::string>& targets, const std::string& glsl, const std::string& msl, const std::string& lines,
                 CompileOptions& o) {
-    static const std::map<std::string, Target> names = {
-        {"spirv", Target::Spirv}, {"hlsl", Target::Hlsl}, {"glsl", Target::Glsl}, {"msl", Target::Msl}};
     if (!targets.empty()) o.targets.clear();
-    for (const std::string& t : targets) o.targets.push_back(names.at(t));
+    for (const std::string& t : targets) o.targets.push_back(*targetNamed(t));
     if (!glsl.empty()) {
         o.glslEs = glsl.ends_with("es");
         o.glslVersion = uint32_t(std::stoi(glsl));
@@ -56,6 +54,13 @@ void applyNames(const std::vector<std::string>& targets, const std::string& glsl
     if (!msl.empty()) o.mslMinor = uint32_t(msl[2] - '0');
     for (LineDirectives mode : {LineDirectives::None, LineDirectives::Functions, LineDirectives::Statements})
         if (toString(mode) == lines) o.lineDirectives = mode;
+}
+
+// --targets' help: the names, and the default set.
+std::string targetsHelp() {
+    std::string defaults;
+    for (Target t : defaultTargets()) defaults += (defaults.empty() ? "" : ", ") + std::string(toString(t));
+    return targetList(targetNames(), targetNamed) + "; repeatable or comma-separated\n(default: " + defaults + ")";
 }
 
 }  // namespace
@@ -84,6 +89,21 @@ bool LayoutOptions::resolve(ResourceLayout& out) const {
     return true;
 }
 
+std::string targetList(const std::vector<std::string>& names, std::optional<Target> (*named)(std::string_view)) {
+    std::string out;
+    for (const std::string& t : names) {
+        std::string_view alias = targetAlias(*named(t));
+        out += (out.empty() ? "" : ", ") + t + (alias.empty() ? "" : " (or " + std::string(alias) + ")");
+    }
+    return out;
+}
+
+CLI::Validator targetCheck(const std::vector<std::string>& names, std::optional<Target> (*named)(std::string_view)) {
+    std::string list;
+    for (const std::string& t : names) list += (list.empty() ? "" : ",") + t;
+    return CLI::Validator([=](std::string& t) { return named(t) ? "" : t + " not in {" + list + "}"; }, "");
+}
+
 namespace {
 
 // What some of the compile mode's options are bound to, checked and applied to the Arguments after parsing
@@ -100,11 +120,10 @@ void addInputOptions(CLI::App& app, Arguments& a, Unresolved& u) {
     // Required by hand (resolveArguments), after CLI11 has reported unknown options (it checks requirements first).
     app.add_option("materials", u.materials, "material or scene files")->type_name("FILE.json");
     app.add_option("-o,--out", a.outDir, "output folder (created if missing)")->type_name("DIR");
-    app.add_option("--target,--targets", u.targets, "spirv, hlsl, glsl, msl (or metal); repeatable or comma-separated\n(default: all four)")
+    app.add_option("--target,--targets", u.targets, targetsHelp())
         ->delimiter(',')
         ->allow_extra_args(false)
-        ->transform(CLI::Transformer(std::map<std::string, std::string>{{"metal", "msl"}}).description(""))
-        ->check(CLI::IsMember({"spirv", "hlsl", "glsl", "msl"}));
+        ->check(targetCheck(targetNames(), targetNamed));
     app.add_option("--template", a.options.templateFile, "use this template instead of the material's (docs/templates.md)")
         ->type_name("FILE.glsl")
         ->check(CLI::Validator([](std::string& f) { return f.ends_with(".glsl") ? "" : "expected a .glsl file, got " + f; }, ""));

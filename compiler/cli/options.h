@@ -10,6 +10,11 @@
 #include "hexc/compiler.h"
 #include "hexc/layout.h"
 
+namespace CLI {
+class App;
+class Validator;
+}  // namespace CLI
+
 namespace hexc::cli {
 
 // The commands' shared pieces (compiler/command), named here as every command of the command line uses them.
@@ -56,6 +61,11 @@ struct LayoutOptions {
     // The layout file (if any) with the flags over it; false after printing the file's errors.
     bool resolve(ResourceLayout& out) const;
 };
+
+// A target option's help, "spirv, hlsl, ..., msl (or metal)", and its check: the names of `names`, each with its target's
+// alias, and whether `named` knows a name.
+std::string targetList(const std::vector<std::string>& names, std::optional<Target> (*named)(std::string_view));
+CLI::Validator targetCheck(const std::vector<std::string>& names, std::optional<Target> (*named)(std::string_view));
 
 // `hexc`'s compile mode; nullopt with `out` filled when it should run, else the exit code (see command::parseWith).
 std::optional<int> parseArguments(const std::vector<std::string>& args, Arguments& out);

@@ -1,5 +1,5 @@
 # hexc_add_materials(<target> MATERIALS <material.json|.mtlx|scene.json>... OUTPUT_DIR <dir>
-#                    [TARGETS spirv|hlsl|glsl|msl ...] [OPTIONS <hexc option>...])
+#                    [TARGETS <hexc target>...] [OPTIONS <hexc option>...])
 #
 # One build rule per file, running hexc::hexc with a depfile, so a change to the material, a texture or a template
 # rebuilds that file's shaders only. Every output is declared: at configure time `hexc --list-outputs` (with the
@@ -8,6 +8,11 @@
 # (the material, a scene, a template, a packing material's textures) or hexc does. So a deleted output is rebuilt,
 # other rules can depend on any of them, and no depfile names an undeclared output. <target> (ALL) builds them all;
 # its HEXC_OUTPUTS property lists the files. Uses no compiler: works in a project(... LANGUAGES NONE).
+
+# hexc's --targets names, and those it writes when given none (tests/backends/target_table_test.cpp checks both
+# against hexc's target table).
+set(_HEXC_TARGETS spirv hlsl glsl msl wgsl)
+set(_HEXC_DEFAULT_TARGETS spirv hlsl glsl msl)
 
 # The hexc executable of the imported target, to run at configure time.
 function(_hexc_executable out)
@@ -45,11 +50,12 @@ function(hexc_add_materials target)
                         "missing MATERIALS or OUTPUT_DIR, or unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
   if(NOT arg_TARGETS)
-    set(arg_TARGETS spirv hlsl glsl msl)
+    set(arg_TARGETS ${_HEXC_DEFAULT_TARGETS})
   endif()
   foreach(t IN LISTS arg_TARGETS)
-    if(NOT t MATCHES "^(spirv|hlsl|glsl|msl)$")
-      message(FATAL_ERROR "hexc_add_materials(${target}): unknown target `${t}`; expected spirv, hlsl, glsl or msl")
+    if(NOT t IN_LIST _HEXC_TARGETS)
+      list(JOIN _HEXC_TARGETS ", " known)
+      message(FATAL_ERROR "hexc_add_materials(${target}): unknown target `${t}`; expected one of ${known}")
     endif()
   endforeach()
   list(JOIN arg_TARGETS "," targets)

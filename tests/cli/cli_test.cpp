@@ -52,7 +52,7 @@ TEST(Cli, UsageErrors) {
     EXPECT_EQ(err, "hexc: no output folder given: use -o DIR (see hexc --help)\n");
     // `--targets` is an alias of `--target`, whose name the message uses.
     EXPECT_EQ(runHexc("materials/rock.json -o x --targets hlsl,dxil", &err), 2);
-    EXPECT_EQ(err, "hexc: --target: dxil not in {spirv,hlsl,glsl,msl} (see hexc --help)\n");
+    EXPECT_EQ(err, "hexc: --target: dxil not in {spirv,hlsl,glsl,msl,wgsl} (see hexc --help)\n");
     EXPECT_EQ(runHexc("--frobnicate", &err), 2);
     EXPECT_EQ(err, "hexc: The following argument was not expected: --frobnicate (see hexc --help)\n");
     EXPECT_EQ(runHexc("materials/rock.json -o x --hlsl-sm 52", &err), 2);
@@ -323,3 +323,33 @@ TEST(Cli, TheLibraryDocumentsItsSettings) {
 }
 
 }  // namespace
+
+// Without Node.js on PATH the wgsl target fails with what to install and writes nothing; every other target works.
+TEST(Cli, WgslWithoutNodeSaysWhatToInstall) {
+    const auto out = std::filesystem::temp_directory_path() / "hexc_wgsl_without_node";
+    std::filesystem::remove_all(out);
+    std::string err;
+    const std::string noNode = "PATH=/nonexistent";
+    EXPECT_EQ(runHexc("materials/rock.json -o " + out.string() + " --targets wgsl,spirv", &err, noNode), 1);
+    EXPECT_NE(err.find("error[HX300]: cannot run `node`"), std::string::npos) << err;
+    EXPECT_NE(err.find("npm install naga-wasm@30.1.0"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(out / "rock.frag.spv"));
+    EXPECT_EQ(runHexc("materials/rock.json -o " + out.string(), &err, noNode), 0) << err;
+    for (const char* file : {"rock.frag.spv", "rock.frag.hlsl", "rock.frag.glsl", "rock.frag.metal"})
+        EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+}
+
+// What WGSL does not have is refused at the template line that declares it, before naga is asked (so without Node).
+TEST(Cli, WgslRefusesCombinedSamplersAndPushConstantsWhereDeclared) {
+    const auto out = std::filesystem::temp_directory_path() / "hexc_wgsl_refused";
+    std::string err;
+    EXPECT_EQ(runHexc("materials/engine_rock.json -o " + out.string() + " --targets wgsl", &err, "PATH=/nonexistent"), 1);
+    EXPECT_NE(err.find("templates/engine.glsl:15:30: error[HX300]: the wgsl target cannot translate the template's `shadowMap`: a "
+                       "combined image sampler"),
+              std::string::npos)
+        << err;
+    EXPECT_NE(err.find("templates/engine.glsl:20:23: error[HX300]: the wgsl target cannot translate the template's `Push`: a "
+                       "push-constant block"),
+              std::string::npos)
+        << err;
+}

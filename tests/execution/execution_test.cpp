@@ -518,7 +518,7 @@ TEST(GlslVersions, EachMatchesTheReference) {
 
 // materials/library/<file> with its `#include "hexc_hextiling.<ext>"` line replaced by `hexc library`'s file, as
 // an include path would give it.
-std::string withLibrary(const std::string& file, LibraryTarget target) {
+std::string withLibrary(const std::string& file, Target target) {
     std::ifstream in("materials/library/" + file);
     std::string text(std::istreambuf_iterator<char>(in), {});
     const OutputFile library = hexcLibrary({target}).front();
@@ -562,8 +562,8 @@ Draw handWritten(const std::vector<uint32_t>& spirv, uint32_t firstTexture, uint
 // (sRGB, rotation 1, falloff 0.75): the reference and tolerances of the falloff rule, magnified and minified.
 TEST(Library, AHandWrittenHlslShaderMatchesTheReference) {
     REQUIRE_VULKAN();
-    SpirvResult front = compileToSpirv(withLibrary("hextiled_color.hlsl", LibraryTarget::Hlsl), ShaderStage::Fragment,
-                                       "hextiled_color.hlsl", SourceLanguage::Hlsl, "main");
+    SpirvResult front = compileToSpirv(withLibrary("hextiled_color.hlsl", Target::Hlsl), ShaderStage::Fragment, "hextiled_color.hlsl",
+                                       SourceLanguage::Hlsl, "main");
     ASSERT_FALSE(front.words.empty()) << formatAll(front.diagnostics);
     SpirvResult legal = optimizeSpirv(front.words, false, true);
     ASSERT_FALSE(legal.words.empty()) << formatAll(legal.diagnostics);
@@ -579,8 +579,8 @@ TEST(Library, AHandWrittenHlslShaderMatchesTheReference) {
 // reference and tolerances of the derivative rule.
 TEST(Library, AHandWrittenGlslShaderMatchesTheReference) {
     REQUIRE_VULKAN();
-    SpirvResult front = compileToSpirv(withLibrary("hextiled_normal.glsl", LibraryTarget::Glsl), ShaderStage::Fragment,
-                                       "hextiled_normal.glsl", SourceLanguage::OpenGlGlsl);
+    SpirvResult front = compileToSpirv(withLibrary("hextiled_normal.glsl", Target::Glsl), ShaderStage::Fragment, "hextiled_normal.glsl",
+                                       SourceLanguage::OpenGlGlsl);
     ASSERT_FALSE(front.words.empty()) << formatAll(front.diagnostics);
     SpirvResult optimized = optimizeSpirv(front.words);
     ASSERT_FALSE(optimized.words.empty()) << formatAll(optimized.diagnostics);

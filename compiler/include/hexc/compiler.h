@@ -2,7 +2,9 @@
 // libhexc's entry point: a validated Material in, shader sources, SPIR-V and a manifest out.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hexc/diagnostics.h"
@@ -13,8 +15,16 @@ namespace hexc {
 
 class ShaderCache;
 
-enum class Target { Spirv, Hlsl, Glsl, Msl };
+// One row each in the target table (backends/targets.cpp), in this order.
+enum class Target { Spirv, Hlsl, Glsl, Msl, Wgsl };
+inline constexpr size_t kTargetCount = 5;
 std::string_view toString(Target target);
+// The --targets names in target order, those a compile writes when it names none, and the target a name or an
+// alias (`metal`) names.
+std::vector<std::string> targetNames();
+std::vector<Target> defaultTargets();
+std::optional<Target> targetNamed(std::string_view name);
+std::string_view targetAlias(Target target);  // "" for none
 
 // Where the engine's texture coordinates put uv (0, 0) (docs/conventions.md). hexc's own convention is the top-left
 // texel with v down the image; with BottomLeft (OpenGL's, v up) hexc samples at (u, 1 - v) itself.
@@ -28,7 +38,7 @@ enum class LineDirectives { None, Functions, Statements };
 std::string_view toString(LineDirectives mode);  // "none", "functions", "statements"
 
 struct CompileOptions {
-    std::vector<Target> targets{Target::Spirv, Target::Hlsl, Target::Glsl, Target::Msl};
+    std::vector<Target> targets = defaultTargets();
     std::filesystem::path templateFile;  // overrides the material's template when set (--template)
     uint32_t hlslShaderModel = 50;       // 50, 51, 60 ... 66
     uint32_t glslVersion = 450;          // 330, 450, 460 (desktop) or 300, 310 with glslEs
@@ -131,7 +141,7 @@ std::string defaultEntryPoint(std::string_view material);
 // Whether `name` can be an entry point on every target: an identifier, not reserved by GLSL (`gl_`) or a language.
 bool isEntryPointName(std::string_view name);
 
-// The file a material's shader for `target` is written to: "<material>.frag.{spv,hlsl,glsl,metal}"; its vertex
+// The file a material's shader for `target` is written to: "<material>.frag.<its extension>"; its vertex
 // stage's (CompileOptions::vertex), "<material>.vert.*".
 std::string shaderFileName(std::string_view material, Target target, std::string_view stage = "frag");
 

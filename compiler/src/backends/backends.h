@@ -1,6 +1,7 @@
 #pragma once
 // SPIR-V -> target source through SPIRV-Cross. One file per target holds only what differs: compiler
 // options, how hexc's fixed resource layout (plan.h) is pinned, and how the manifest addresses it.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -54,6 +55,9 @@ struct TargetOutput {
 TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
+// WGSL (wgsl.cpp): the module translated by naga, resources at their Vulkan set and binding as @group and @binding.
+TargetOutput emitWgsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
+TargetOutput vertexWgsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry);
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan);
 
 // Whether the text targets carry `#line` directives (--debug, unless --line-directives none).
@@ -72,8 +76,17 @@ void renameHlslEntry(std::string& source, const std::string& entry);
 
 // The fragment shader's inputs, in location order: what a pass-through vertex stage must write.
 std::vector<Varying> fragmentInputs(const std::vector<uint32_t>& spirv);
-// The pass-through vertex stage (vertex.cpp) on one target, its entry point `entry` (OpenGL: `main`).
-TargetOutput emitVertex(const std::vector<uint32_t>& spirv, Target target, const CompileOptions& options, const std::string& entry);
+// Each SPIRV-Cross target's pass-through vertex stage, `hexc library` code and banner settings (hlsl.cpp, glsl.cpp,
+// msl.cpp), for its row.
+TargetOutput vertexHlsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry);
+TargetOutput vertexGlsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry);
+TargetOutput vertexMsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry);
+std::string libraryHlsl(const std::vector<uint32_t>& spirv);
+std::string libraryGlsl(const std::vector<uint32_t>& spirv);
+std::string libraryMsl(const std::vector<uint32_t>& spirv);
+std::string settingsHlsl(const CompileOptions& options);
+std::string settingsGlsl(const CompileOptions& options);
+std::string settingsMsl(const CompileOptions& options);
 
 // Shared by the backends (reflection.cpp). `locate` gives a target's address of one resource;
 // `ioName` the target's name for a stage input/output location (semantic, attribute), or null.
@@ -94,7 +107,34 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
 // CompileOptions::manifestPathsFrom: where the compile's input files were, relative to the folder `from`.
 nlohmann::json sourcePaths(const Material& material, const ShaderPlan& plan, const std::filesystem::path& from);
 
-// The target table (targets.cpp): options.targets in target order, each once.
+// The target table (targets.cpp): one row per target, in Target order. Everything that differs by target and is not
+// in its backend file (backends/<target>.cpp) is a column here.
+struct TargetRow {
+    Target target;
+    const char* name;       // --targets, the manifest's key (`targets.<name>`), the CMake and Bazel packages' name
+    const char* alias;      // another --targets name for it, or ""
+    const char* extension;  // <material>.<stage>.<extension>
+    const char* layout;     // the layout file's section that places its resources (hexc/layout.h)
+    bool binary;            // its source is a binary module (no banner; the entry point is renamed in its words)
+    bool byDefault;         // in CompileOptions::targets by default
+    // The start of the entry point's code in the emitted text, from which the functions output and `hexc library` cut.
+    const char* entryLine;
+    // The fragment stage from the optimised module; `text`: the same module with the source lines --debug shows.
+    TargetOutput (*emit)(const std::vector<uint32_t>& spirv, const std::vector<uint32_t>& text, const ShaderPlan& plan,
+                         const CompileOptions& options);
+    // The pass-through vertex stage, its entry point `entry`.
+    TargetOutput (*vertex)(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry);
+    std::string (*entryName)(const std::string& entry);      // what the target's code calls a fragment entry point `entry`
+    std::string (*settings)(const CompileOptions& options);  // its settings on the banner, "" for none
+    const char* libraryName;                                 // `hexc library --target` name, its file's extension
+    const char* libraryExtension;
+    std::string (*library)(const std::vector<uint32_t>& spirv);  // `hexc library`'s unoptimised module in its language
+};
+const TargetRow& targetRow(Target target);
+// Every row, in Target order.
+const std::array<TargetRow, kTargetCount>& targetRows();
+
+// options.targets in target order, each once.
 std::vector<Target> sortedTargets(const CompileOptions& options);
 // A SPIR-V module as its file's bytes.
 std::string spirvBytes(const std::vector<uint32_t>& words);

@@ -9,22 +9,6 @@
 namespace hexc {
 namespace {
 
-// The first line of the entry point's code, from which everything is cut: GLSL's main, HLSL's frag_main (its main,
-// the stage's entry, follows it) and MSL's fragment function.
-bool entryStarts(const std::string& line, Target target) {
-    switch (target) {
-        case Target::Glsl:
-            return line == "void main()";
-        case Target::Hlsl:
-            return line == "void frag_main()";
-        case Target::Msl:
-            return line.starts_with("fragment ");
-        case Target::Spirv:
-            break;
-    }
-    return false;
-}
-
 // The structs holding the stage's inputs and outputs: HLSL's SPIRV_Cross_Input/Output, MSL's <entry>_in/_out.
 bool stageStruct(const std::string& line, const std::string& entry) {
     return line == "struct SPIRV_Cross_Input" || line == "struct SPIRV_Cross_Output" || line == "struct " + entry + "_in" ||
@@ -37,7 +21,7 @@ std::string functionsOnly(const std::string& source, Target target, const std::s
     std::istringstream in(source);
     std::string out, line;
     bool inStruct = false;
-    while (std::getline(in, line) && !entryStarts(line, target)) {
+    while (std::getline(in, line) && !line.starts_with(targetRow(target).entryLine)) {
         if (stageStruct(line, entry)) inStruct = true;
         const bool drop = inStruct || line.starts_with("#version") || line.find("hexcEngine") != std::string::npos;
         if (inStruct && line == "};") inStruct = false;

@@ -5,6 +5,7 @@
 #include <spirv_glsl.hpp>
 
 #include <map>
+#include <regex>
 
 #include "backends/backends.h"
 
@@ -116,6 +117,29 @@ TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     for (size_t i = 0; i < plan.textureCount(); ++i)
         if (plan.textureBound(i)) out.target["textures"][plan.textureName(i)]["uniform"] = plan.textureVariable(i);
     return out;
+}
+
+TargetOutput vertexGlsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string&) {
+    spirv_cross::CompilerGLSL c(spirv);
+    configureGlsl(c, options);
+    return {c.compile(), "main", {}};
+}
+
+std::string libraryGlsl(const std::vector<uint32_t>& spirv) {
+    spirv_cross::CompilerGLSL c(spirv);
+    configureGlsl(c, CompileOptions());  // the default version, 450
+    c.build_combined_image_samplers();
+    // The entry's own combinations are globals named by SPIRV-Cross (`uniform sampler2D _3133;`): named after
+    // their texture, hexcLib*, they are cut with the entry's other resources (GLSL compilers refuse orphans).
+    for (const spirv_cross::CombinedImageSampler& s : c.get_combined_image_samplers())
+        if (c.get_name(s.image_id).starts_with("hexcLib")) c.set_name(s.combined_id, c.get_name(s.image_id));
+    // A function's combined parameter (SPIRV_Cross_Combined<texture><sampler>) takes its texture's name.
+    static const std::regex combined("SPIRV_Cross_Combined(\\w+?)samp\\b");
+    return std::regex_replace(c.compile(), combined, "$1");
+}
+
+std::string settingsGlsl(const CompileOptions& options) {
+    return "glsl " + std::to_string(options.glslVersion) + (options.glslEs ? " es" : "");
 }
 
 }  // namespace hexc

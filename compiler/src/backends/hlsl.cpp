@@ -161,4 +161,22 @@ TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
     return out;
 }
 
+TargetOutput vertexHlsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry) {
+    spirv_cross::CompilerHLSL c(spirv);
+    configureHlsl(c, options);
+    TargetOutput out{c.compile(), entry, {}};
+    renameHlslEntry(out.source, entry);
+    return out;
+}
+
+std::string libraryHlsl(const std::vector<uint32_t>& spirv) {
+    spirv_cross::CompilerHLSL c(spirv);
+    configureHlsl(c, CompileOptions());  // the default shader model, 5.0
+    return c.compile();
+}
+
+std::string settingsHlsl(const CompileOptions& options) {
+    return "hlsl sm " + std::to_string(options.hlslShaderModel / 10) + "." + std::to_string(options.hlslShaderModel % 10);
+}
+
 }  // namespace hexc

@@ -187,4 +187,22 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
     return out;
 }
 
+TargetOutput vertexMsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry) {
+    spirv_cross::CompilerMSL c(spirv);
+    configureMsl(c, options);
+    TargetOutput out{c.compile(), "", {}};
+    out.entryPoint = c.get_cleansed_entry_point_name(entry, spv::ExecutionModelVertex);
+    return out;
+}
+
+std::string libraryMsl(const std::vector<uint32_t>& spirv) {
+    spirv_cross::CompilerMSL c(spirv);
+    configureMsl(c, CompileOptions());  // the default version, 2.0
+    return c.compile();
+}
+
+std::string settingsMsl(const CompileOptions& options) {
+    return "msl " + std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor);
+}
+
 }  // namespace hexc

@@ -50,8 +50,8 @@ std::optional<ShaderCode> shaderCodeFromBytes(const std::string& bytes, const st
 void withEntryPoint(ShaderCode& code, const std::string& entry) {
     code.spirv = replaceInStrings(code.spirv, kEntryPlaceholder, entry);
     for (auto& [t, out] : code.targets) {
-        const std::string name = t == Target::Msl ? mslEntryName(entry) : entry;
-        if (t == Target::Spirv)
+        const std::string name = targetRow(t).entryName(entry);
+        if (targetRow(t).binary)
             out.source = spirvBytes(replaceInStrings(spirvWords(out.source), kEntryPlaceholder, entry));
         else
             for (size_t at = 0; (at = out.source.find(kEntryPlaceholder, at)) != std::string::npos; at += name.size())

@@ -1,5 +1,5 @@
-// The target table: each target's name and file, the entry points every target accepts, and the emission of every
-// requested target from the optimised module.
+// The target table (one row per target, backends.h's TargetRow), the entry points every target accepts, and the
+// emission of every requested target from the optimised module.
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -11,12 +11,86 @@
 #include "backends/backends.h"
 #include "spirv/combined.h"
 #include "spirv/lines.h"
+#include "hexc/spirv.h"
 
 namespace hexc {
 
-std::string_view toString(Target target) {
-    static const char* names[] = {"spirv", "hlsl", "glsl", "msl"};
-    return names[int(target)];
+namespace {
+
+// The SPIR-V target, from the optimised module itself; with the layout's combined samplers (combined.h), which the
+// other targets, emitted from the separate module, do not take.
+TargetOutput emitSpirv(const std::vector<uint32_t>& spirv, const std::vector<uint32_t>&, const ShaderPlan& plan, const CompileOptions&) {
+    const std::vector<uint32_t> words = plan.layout.vulkan.combined ? combineSamplers(spirv, plan) : spirv;
+    TargetOutput out = describeSpirv(words, plan);
+    out.source = spirvBytes(words);
+    return out;
+}
+
+TargetOutput vertexSpirv(const std::vector<uint32_t>& spirv, const CompileOptions&, const std::string& entry) {
+    return {spirvBytes(spirv), entry, {}};
+}
+
+std::string sameName(const std::string& entry) { return entry; }
+std::string noSettings(const CompileOptions&) { return ""; }
+
+// The text targets are written from `text`, the module with the source lines they are to show.
+constexpr std::array<TargetRow, kTargetCount> kRows = {{
+    {Target::Spirv, "spirv", "", "spv", "vulkan", true, true, "", emitSpirv, vertexSpirv, sameName, noSettings, "spirv-asm", "spvasm",
+     disassemble},
+    {Target::Hlsl, "hlsl", "", "hlsl", "hlsl", false, true, "void frag_main()",
+     [](const auto&, const auto& text, const auto& plan, const auto& options) { return emitHlsl(text, plan, options); }, vertexHlsl,
+     sameName, settingsHlsl, "hlsl", "hlsl", libraryHlsl},
+    {Target::Glsl, "glsl", "", "glsl", "glsl", false, true, "void main()",
+     [](const auto&, const auto& text, const auto& plan, const auto& options) { return emitGlsl(text, plan, options); }, vertexGlsl,
+     sameName, settingsGlsl, "glsl", "glsl", libraryGlsl},
+    {Target::Msl, "msl", "metal", "metal", "msl", false, true, "fragment ",
+     [](const auto&, const auto& text, const auto& plan, const auto& options) { return emitMsl(text, plan, options); }, vertexMsl,
+     mslEntryName, settingsMsl, "msl", "metal", libraryMsl},
+    // naga reads no OpLine, so --debug's lines do not reach WGSL; not a default target: it needs Node.js (naga.h).
+    {Target::Wgsl, "wgsl", "", "wgsl", "vulkan", false, false, "@fragment",
+     [](const auto& spirv, const auto&, const auto& plan, const auto& options) { return emitWgsl(spirv, plan, options); }, vertexWgsl,
+     sameName, noSettings, nullptr, nullptr, nullptr},
+}};
+
+// A row per Target, in its order (a missing row is zero: the Spirv target without a name).
+constexpr bool inTargetOrder() {
+    for (size_t i = 0; i < kRows.size(); ++i)
+        if (size_t(kRows[i].target) != i || kRows[i].name == nullptr) return false;
+    return true;
+}
+static_assert(inTargetOrder(), "the target table has one row per Target, in Target order");
+
+}  // namespace
+
+const std::array<TargetRow, kTargetCount>& targetRows() { return kRows; }
+
+const TargetRow& targetRow(Target target) { return kRows.at(size_t(target)); }
+
+std::string_view toString(Target target) { return targetRow(target).name; }
+
+std::vector<std::string> targetNames() {
+    std::vector<std::string> names;
+    for (const TargetRow& row : kRows) names.push_back(row.name);
+    return names;
+}
+
+std::vector<Target> defaultTargets() {
+    std::vector<Target> targets;
+    for (const TargetRow& row : kRows)
+        if (row.byDefault) targets.push_back(row.target);
+    return targets;
+}
+
+std::optional<Target> targetNamed(std::string_view name) {
+    for (const TargetRow& row : kRows)
+        if (name == row.name || (*row.alias && name == row.alias)) return row.target;
+    return std::nullopt;
+}
+
+std::string_view targetAlias(Target target) { return targetRow(target).alias; }
+
+std::string shaderFileName(std::string_view material, Target target, std::string_view stage) {
+    return std::string(material) + "." + std::string(stage) + "." + targetRow(target).extension;
 }
 
 std::string_view toString(LineDirectives mode) {
@@ -25,11 +99,6 @@ std::string_view toString(LineDirectives mode) {
 }
 
 std::string_view toString(UvOrigin origin) { return origin == UvOrigin::TopLeft ? "top-left" : "bottom-left"; }
-
-std::string shaderFileName(std::string_view material, Target target, std::string_view stage) {
-    static const char* const extensions[] = {"spv", "hlsl", "glsl", "metal"};
-    return std::string(material) + "." + std::string(stage) + "." + extensions[int(target)];
-}
 
 std::string defaultEntryPoint(std::string_view material) {
     std::string name(material);
@@ -83,31 +152,6 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
     return bytes;
 }
 
-namespace {
-
-// `text`: the module the HLSL, GLSL and MSL targets are written from, with the source lines they are to show.
-TargetOutput emitTarget(Target t, const std::vector<uint32_t>& spirv, const std::vector<uint32_t>& text, const ShaderPlan& plan,
-                        const CompileOptions& options) {
-    switch (t) {
-        case Target::Spirv: {
-            // The other targets are emitted from the separate module (combined.h).
-            const std::vector<uint32_t> words = plan.layout.vulkan.combined ? combineSamplers(spirv, plan) : spirv;
-            TargetOutput out = describeSpirv(words, plan);
-            out.source = spirvBytes(words);
-            return out;
-        }
-        case Target::Hlsl:
-            return emitHlsl(text, plan, options);
-        case Target::Glsl:
-            return emitGlsl(text, plan, options);
-        case Target::Msl:
-            return emitMsl(text, plan, options);
-    }
-    throw std::logic_error("unknown target");
-}
-
-}  // namespace
-
 // With CompileOptions::concurrentTargets and more than one core, each target but the last gets a thread of its own
 // (each has its own SPIRV-Cross compiler, which SPIRV-Cross allows) and this thread emits the last one and SPIR-V,
 // which is quick. Results, and the first error in target order, are taken in target order, so the outputs and
@@ -119,14 +163,14 @@ std::map<Target, TargetOutput> emitTargets(const std::vector<uint32_t>& spirv, c
     const std::vector<uint32_t> text = fewerLines ? functionLinesOnly(spirv) : std::vector<uint32_t>();
     const std::vector<uint32_t>& textSpirv = fewerLines ? text : spirv;
     if (!options.concurrentTargets || targets.size() < 2 || std::thread::hardware_concurrency() < 2) {
-        for (Target t : targets) out[t] = emitTarget(t, spirv, textSpirv, plan, options);
+        for (Target t : targets) out[t] = targetRow(t).emit(spirv, textSpirv, plan, options);
         return out;
     }
     auto here = [&](Target t) { return t == Target::Spirv || t == targets.back(); };
     std::map<Target, std::future<TargetOutput>> pending;
     for (Target t : targets)
-        pending[t] = std::async(here(t) ? std::launch::deferred : std::launch::async, emitTarget, t, std::cref(spirv), std::cref(textSpirv),
-                                std::cref(plan), std::cref(options));
+        pending[t] = std::async(here(t) ? std::launch::deferred : std::launch::async, targetRow(t).emit, std::cref(spirv),
+                                std::cref(textSpirv), std::cref(plan), std::cref(options));
     for (Target t : targets)
         if (here(t)) pending[t].wait();  // runs it, while the others run on theirs
     std::exception_ptr first;

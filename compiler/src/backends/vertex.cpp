@@ -1,34 +1,8 @@
-// The pass-through vertex stage on each target: the same compiler options as the fragment shader, no resources,
-// and the entry point renamed like the fragment's.
-#include <spirv_glsl.hpp>
-#include <spirv_hlsl.hpp>
-#include <spirv_msl.hpp>
-
+// The pass-through vertex stage on each target (its row's `vertex`): the same compiler options as the fragment
+// shader, no resources, and the entry point renamed like the fragment's.
 #include "backends/backends.h"
 
 namespace hexc {
-
-TargetOutput emitVertex(const std::vector<uint32_t>& spirv, Target target, const CompileOptions& options, const std::string& entry) {
-    TargetOutput out;
-    out.entryPoint = entry;
-    if (target == Target::Hlsl) {
-        spirv_cross::CompilerHLSL c(spirv);
-        configureHlsl(c, options);
-        out.source = c.compile();
-        renameHlslEntry(out.source, entry);
-    } else if (target == Target::Glsl) {
-        spirv_cross::CompilerGLSL c(spirv);
-        configureGlsl(c, options);
-        out.source = c.compile();
-        out.entryPoint = "main";
-    } else if (target == Target::Msl) {
-        spirv_cross::CompilerMSL c(spirv);
-        configureMsl(c, options);
-        out.source = c.compile();
-        out.entryPoint = c.get_cleansed_entry_point_name(entry, spv::ExecutionModelVertex);
-    }
-    return out;
-}
 
 nlohmann::json emitVertexStage(const std::vector<uint32_t>& spirv, const std::vector<Varying>& inputs, const std::string& entry,
                                const std::string& material, const CompileOptions& options, const std::vector<Target>& targets,
@@ -47,8 +21,8 @@ nlohmann::json emitVertexStage(const std::vector<uint32_t>& spirv, const std::ve
     for (const Varying& v : inputs) attributes.push_back(attribute("hexc_in_" + v.name, uint32_t(attributes.size()), v.type, v.name));
     nlohmann::json vertex = {{"attributes", attributes}};
     for (Target t : targets) {
-        TargetOutput out = emitVertex(spirv, t, options, entry);
-        OutputFile file{shaderFileName(material, t, "vert"), t == Target::Spirv ? spirvBytes(spirv) : out.source};
+        TargetOutput out = targetRow(t).vertex(spirv, options, entry);
+        OutputFile file{shaderFileName(material, t, "vert"), out.source};
         vertex[std::string(toString(t))] = {{"file", file.name}, {"entry_point", out.entryPoint}};
         files.push_back(std::move(file));
     }

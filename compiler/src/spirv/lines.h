@@ -10,4 +10,7 @@ namespace hexc {
 // `#line` before the function and one at its first statement.
 std::vector<uint32_t> functionLinesOnly(const std::vector<uint32_t>& words);
 
+// The module without any OpLine or OpNoLine: for naga (the WGSL target), whose SPIR-V reader stops at them.
+std::vector<uint32_t> withoutLines(const std::vector<uint32_t>& words);
+
 }  // namespace hexc

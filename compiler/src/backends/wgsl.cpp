@@ -1,0 +1,82 @@
+// WGSL: naga (backends/naga.h) translates the optimised module. naga keeps each resource's Vulkan set and binding as
+// its @group and @binding, so hexc's resources are where the Vulkan layout puts them (layout section "vulkan"), and
+// the parameter block keeps its offsets (naga writes @align/@size where WGSL's uniform rules would place a member
+// elsewhere). What naga cannot take, a template's combined sampler or push constants, is refused with its location.
+#include <spirv_cross.hpp>
+
+#include <fstream>
+#include <regex>
+
+#include "backends/backends.h"
+#include "backends/naga.h"
+#include "spirv/lines.h"
+
+namespace hexc {
+namespace {
+
+// The template line that declares `name`: the first `uniform` line naming it as a word, for a located diagnostic.
+SourceLoc declaredAt(const ShaderPlan& plan, const std::string& name) {
+    const std::regex declaration("\\buniform\\b.*\\b" + name + "\\b");
+    std::ifstream in(plan.templateFile);
+    std::string line;
+    for (int n = 1; !plan.templateFile.empty() && std::getline(in, line); ++n)
+        if (std::smatch m; std::regex_search(line, m, declaration)) return {plan.templateShown, n, int(m.position(0)) + 1};
+    return {plan.templateShown, 0, 0};
+}
+
+void refuseUntranslatable(const std::vector<uint32_t>& spirv, const ShaderPlan& plan) {
+    Diagnostics found;
+    for (const TemplateResource& r : templateResources(spirv_cross::Compiler(spirv), plan)) {
+        const char* what = r.cls == ResourceClass::CombinedImageSampler
+                               ? "a combined image sampler (sampler2D), which WGSL does not have; declare a texture2D and a sampler"
+                           : r.cls == ResourceClass::PushConstant
+                               ? "a push-constant block, which WGSL does not have; declare a uniform block"
+                               : nullptr;
+        if (what)
+            found.push_back(Diagnostic::make(Code::TargetUnsupported, declaredAt(plan, r.name), "",
+                                             "the wgsl target cannot translate the template's `" + r.name + "`: " + what));
+    }
+    if (!found.empty()) throw CompileError{found};
+}
+
+std::string translated(const std::vector<uint32_t>& spirv, const ShaderPlan& plan) {
+    NagaResult r = nagaWgsl(withoutLines(spirv));
+    if (r.wgsl) return *r.wgsl;
+    const SourceLoc at = r.unavailable ? SourceLoc{} : SourceLoc{plan.templateShown, 0, 0};  // a missing tool is no file's fault
+    throw CompileError{{Diagnostic::make(Code::TargetUnsupported, at, "",
+                                         r.unavailable ? r.error : "naga cannot translate the shader to WGSL: " + r.error)}};
+}
+
+}  // namespace
+
+TargetOutput emitWgsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions&) {
+    refuseUntranslatable(spirv, plan);
+    TargetOutput out;
+    out.source = translated(spirv, plan);
+    out.entryPoint = plan.entryPoint;
+    const HexcBindings& b = plan.bindings;
+    Locate locate = [&b](ResourceKind kind, uint32_t index) -> nlohmann::json {
+        const uint32_t binding = kind == ResourceKind::Params    ? b.params
+                                 : kind == ResourceKind::Sampler ? b.sampler
+                                                                 : b.firstTexture + index;
+        return {{"group", b.set}, {"binding", binding}};
+    };
+    IoName none = [](uint32_t, bool) { return nlohmann::json(); };  // naga keeps each location: @location(N)
+    nlohmann::json placed = nlohmann::json::array();
+    for (const TemplateResource& r : templateResources(spirv_cross::Compiler(spirv), plan)) {
+        nlohmann::json where = describe(r);
+        where["group"] = r.set;
+        where["binding"] = r.binding;
+        placed.push_back(std::move(where));
+    }
+    out.target = describeTarget(spirv, plan, out.entryPoint, locate, none, placed);
+    return out;
+}
+
+TargetOutput vertexWgsl(const std::vector<uint32_t>& spirv, const CompileOptions&, const std::string& entry) {
+    NagaResult r = nagaWgsl(withoutLines(spirv));
+    if (!r.wgsl) throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {}, "", "the wgsl vertex stage: " + r.error)}};
+    return {*r.wgsl, entry, {}};
+}
+
+}  // namespace hexc
