@@ -173,7 +173,8 @@ TEST(EnginePackages, SlotsReachInputsByRoleAndTheRestAreReported) {
     for (const auto& [engine, file] : expected) {
         CompileResult r = compileForEngine(*p.material, engine, {});
         ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-        const auto source = std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& f) { return f.name == file.first; });
+        const auto source =
+            std::find_if(r.files.begin(), r.files.end(), [&name = file.first](const OutputFile& f) { return f.name == name; });
         ASSERT_NE(source, r.files.end()) << file.first;
         for (const std::string& text : file.second) EXPECT_NE(source->contents.find(text), std::string::npos) << file.first << ": " << text;
         const std::string all = formatAll(r.diagnostics);
