@@ -10,7 +10,6 @@ import math
 import os
 import shutil
 import sys
-import tempfile
 import time
 import unittest
 
@@ -19,7 +18,7 @@ from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.keys import Keys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from edit_support import Server, browser_or_skip, quit_browser, wait_for, wait_idle  # noqa: E402
+from edit_support import Server, browser_or_skip, quit_browser, rock_copy, wait_for, wait_idle  # noqa: E402
 from page_test import write_png  # noqa: E402
 
 HEXC = None
@@ -81,12 +80,7 @@ def document():
 
 class Authoring(unittest.TestCase):
     def setUp(self):
-        self.folder = tempfile.mkdtemp(prefix="hexc-edit-authoring-")
-        shutil.copytree("materials/textures", os.path.join(self.folder, "textures"))
-        self.material = os.path.join(self.folder, "rock.json")
-        shutil.copy("materials/rock.json", self.material)
-        with open(self.material, "rb") as f:
-            self.original = f.read()
+        self.folder, self.material, self.original = rock_copy("hexc-edit-authoring-")
         self.server = None
 
     def tearDown(self):
@@ -108,7 +102,7 @@ class Authoring(unittest.TestCase):
             f.write(text.replace(old, new))
 
     def test_unsaved_edits_survive_an_outside_change(self):
-        state = self.open()
+        self.open()
         type_into(number_box("/hextiling/falloffcontrast"), "0.3")
         wait_for(lambda: status() == "edited (not saved)", "the edit")
         self.outside_edit(b'"falloff": 0.75', b'"falloff": 0.65')

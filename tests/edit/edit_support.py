@@ -70,6 +70,16 @@ class Server:
         self.process.stderr.close()
 
 
+def rock_copy(prefix):
+    """A temporary folder holding materials/rock.json and its textures: (folder, material path, material bytes)."""
+    folder = tempfile.mkdtemp(prefix=prefix)
+    shutil.copytree("materials/textures", os.path.join(folder, "textures"))
+    material = os.path.join(folder, "rock.json")
+    shutil.copy("materials/rock.json", material)
+    with open(material, "rb") as f:
+        return folder, material, f.read()
+
+
 def browser_or_skip():
     """Selenium's Chrome on Debian's chromium and chromedriver, a fresh profile; exits 77 (skip) without them."""
     missing = [p for p in ("/usr/bin/chromium", "/usr/bin/chromedriver") if not os.path.exists(p)]

@@ -12,12 +12,11 @@ import shutil
 import struct
 import subprocess
 import sys
-import tempfile
 import unittest
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from edit_support import Server, browser_or_skip, quit_browser, read_pfm, wait_for, wait_idle, page_state  # noqa: E402
+from edit_support import Server, browser_or_skip, quit_browser, read_pfm, rock_copy, wait_for, wait_idle, page_state  # noqa: E402
 
 HEXC = None
 DRIVER = None
@@ -100,12 +99,7 @@ def edit_control(pointer, value, kind="select", event="change"):
 
 class Page(unittest.TestCase):
     def setUp(self):
-        self.folder = tempfile.mkdtemp(prefix="hexc-edit-page-")
-        shutil.copytree("materials/textures", os.path.join(self.folder, "textures"))
-        self.material = os.path.join(self.folder, "rock.json")
-        shutil.copy("materials/rock.json", self.material)
-        with open(self.material, "rb") as f:
-            self.original = f.read()
+        self.folder, self.material, self.original = rock_copy("hexc-edit-page-")
         self.servers = []
 
     def tearDown(self):

@@ -15,19 +15,14 @@ import unittest
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from edit_support import Server  # noqa: E402
+from edit_support import Server, rock_copy  # noqa: E402
 
 HEXC = None
 
 
 class Security(unittest.TestCase):
     def setUp(self):
-        self.folder = tempfile.mkdtemp(prefix="hexc-edit-security-")
-        shutil.copytree("materials/textures", os.path.join(self.folder, "textures"))
-        self.material = os.path.join(self.folder, "rock.json")
-        shutil.copy("materials/rock.json", self.material)
-        with open(self.material, "rb") as f:
-            self.original = f.read()
+        self.folder, self.material, self.original = rock_copy("hexc-edit-security-")
         self.server = Server(HEXC, self.material)
 
     def tearDown(self):
