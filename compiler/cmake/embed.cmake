@@ -10,3 +10,15 @@ function(hexc_embed out function header)
     COMMENT "Embedding ${function}"
     VERBATIM)
 endfunction()
+
+# hexc_concat(OUT FILES...): writes OUT, the FILES in order with an empty line between two: one include file made of
+# several (templates/library/hextiling/), whose `#line` numbers count in OUT.
+set(HEXC_CONCAT_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/concat_files.cmake)
+function(hexc_concat out)
+  add_custom_command(
+    OUTPUT ${out}
+    COMMAND ${CMAKE_COMMAND} -DOUT=${out} "-DFILES=${ARGN}" -P ${HEXC_CONCAT_SCRIPT}
+    DEPENDS ${ARGN} ${HEXC_CONCAT_SCRIPT}
+    COMMENT "Assembling ${out}"
+    VERBATIM)
+endfunction()

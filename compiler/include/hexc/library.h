@@ -1,5 +1,5 @@
 #pragma once
-// `hexc library`: hexc's hex-tiling functions (templates/library/hextiling.glsl) as an include file for shaders an
+// `hexc library`: hexc's hex-tiling functions (templates/library/hextiling/) as an include file for shaders an
 // engine writes by hand, on each target (docs/library.md).
 #include <optional>
 #include <string_view>

@@ -15,7 +15,7 @@ enum class SlotKind { Color, Scalar, Normal };
 enum class ColorSpace { Srgb, Linear };
 // How tile offsets and rotations are derived from the lattice ids. `Stable` (the default): an integer
 // hash of exactly reduced lattice ids, identical on every target and precise far from the origin
-// (templates/library/hextiling.glsl, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
+// (templates/library/hextiling/, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
 // `MaterialX`: MaterialX 1.39's hextiledimage and hextilednormalmap (templates/library/materialx.glsl,
 // docs/materialx.md).
 enum class HashMode { Stable, Paper, MaterialX };

@@ -1,5 +1,5 @@
 #pragma once
-// The hex-tiling library (templates/library/hextiling.glsl, materialx.glsl) as pieces: each top-level constant, struct
+// The hex-tiling library (templates/library/hextiling/, materialx.glsl) as pieces: each top-level constant, struct
 // and function (overloads together), so that codegen emits only those a shader reaches, and each function in the
 // form a slot's settings make of it (codegen/specialise.h).
 #include <map>

@@ -11,7 +11,7 @@
 namespace hexc {
 
 // The settings a slot fixes, by how the library reads them: "l.rotate" -> "true", "b.exponentInt" -> "7". The library
-// names its HexcLattice parameter `l` and its HexcBlend parameter `b` (templates/library/hextiling.glsl).
+// names its HexcLattice parameter `l` and its HexcBlend parameter `b` (templates/library/hextiling/).
 using Settings = std::map<std::string, std::string>;
 
 // `lines` with `settings` folded in: an `if (c) {...} else {...}` or `if (c) statement;` whose condition c the settings

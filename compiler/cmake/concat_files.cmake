@@ -1,0 +1,11 @@
+# Script half of hexc_concat (embed.cmake). Inputs: OUT, FILES (;-separated paths).
+set(body "")
+foreach(f IN LISTS FILES)
+  file(READ "${f}" text)
+  if(NOT body STREQUAL "")
+    string(APPEND body "\n")
+  endif()
+  string(APPEND body "${text}")
+endforeach()
+file(WRITE "${OUT}.tmp" "${body}")
+file(COPY_FILE "${OUT}.tmp" "${OUT}" ONLY_IF_DIFFERENT)
