@@ -4,7 +4,7 @@
 // at tiling 4, rotation 1, falloff 0.75 on every slot), its settings as constants (the listings' default-argument
 // style; hexc's baked row is the like-for-like comparison), in hexc's default layout (sampler at binding 1,
 // textures from 2 in slot order), shaded as the built-in `lit` template shades it (with PAPER_LISTING_MINIMAL
-// defined, as bench/minimal.glsl does). tests/execution/execution_test.cpp checks that it draws what hexc's paper mode draws.
+// defined, as bench/minimal.glsl does). tests/execution/library_test.cpp checks that it draws what hexc's paper mode draws.
 //
 // HLSL float2x2(a, b, c, d) fills rows and mul(M, v) is M v, mul(v, M) is v M: with rot = mat2(cs, si, -si, cs)
 // (the rows (cs, -si), (si, cs) of Listing 6), GLSL's rot * v and v * rot are the same products.

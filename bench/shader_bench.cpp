@@ -786,7 +786,7 @@ std::string plot(const Results& r) {
     std::vector<PlotPoint> points;
     // Only errors measured against the same (stable) reference are comparable, so only those form the front.
     for (const Row& row : r.rows) points.push_back({row.name, row.view, row.ratio, row.error.mean, row.errorReference == HashMode::Stable});
-    // The listings compute what paper mode computes (PaperListing in tests/execution/execution_test.cpp, to 1e-5), so their error is
+    // The listings compute what paper mode computes (PaperListing in tests/execution/library_test.cpp, to 1e-5), so their error is
     // paper-rot-gain's; their run time is their own, over plain tiling under the same shading.
     for (const Timed& listing : r.listing) {
         const Row* plain = rowOf(r, listing.view, false, shadingOf(listing));

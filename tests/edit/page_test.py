@@ -38,7 +38,7 @@ def write_png(path, width, height, rows):
 
 # ---- Tolerances ----------------------------------------------------------------------------------------------------
 # The page reads its float framebuffer (RGBA32F), so the shader's values come back unrounded; what differs from the fp64
-# reference is texture filtering. Assumed no finer than lavapipe's (tests/execution/execution_test.cpp, sampleError):
+# reference is texture filtering. Assumed no finer than lavapipe's (tests/execution/checks.h, sampleError):
 # 8-bit bilinear weights put a magnified sample of 8-bit texels within half a weight step per axis plus the rounding
 # of the result, e_s = 1.2/255. (An sRGB texture is decoded before filtering, by the reference too; at level 0 no
 # stored mip adds its rounding.)

@@ -74,7 +74,7 @@ TEST(Precision, StableModeIsExactUpToStOf2To26AndNotBeyond) {
 // ---- Extremes ---------------------------------------------------------------------------------------------
 // Inputs and settings at and beyond what a material should use. Every output must be finite; weights
 // non-negative and normalised (|sum - 1| <= 8 * 2^-24, the roundings of one normalisation, see
-// execution_test.cpp); the colour a convex blend of filtered texels, so within the texture's [min, max] per
+// checks.h); the colour a convex blend of filtered texels, so within the texture's [min, max] per
 // channel, up to the float32 rounding of filtering and blending (16 roundings of the largest magnitude).
 Image floatTexture(int size, const std::function<std::array<float, 4>(int, int)>& texel) {
     Image image;

@@ -1,6 +1,6 @@
 // MaterialX in and out (docs/materialx.md): documents compile to the shaders of the equivalent JSON material, the
 // export reads back to the same shaders, MaterialX's parameters mean in hexc what they mean in MaterialX, and what
-// hexc cannot express is a located diagnostic. Execution on lavapipe: execution_test.cpp (MaterialX suite).
+// hexc cannot express is a located diagnostic. Execution on lavapipe: tests/execution/outputs_test.cpp (MaterialX suites).
 #include <gtest/gtest.h>
 
 #include <algorithm>

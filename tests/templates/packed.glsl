@@ -1,5 +1,5 @@
 #version 450
-// Test template for packed slots (tests/execution_test.cpp, PackedPath): reads every slot of a packing test, so they
+// Test template for packed slots (tests/execution/cases_test.cpp, PackedPath): reads every slot of a packing test, so they
 // pack, and shows them in one image: slot `color`'s RGB with slot `s3` in alpha, else scalar slots s0..s3 in R, G, B, A.
 // Stage inputs: location 0 = texture coordinate.
 layout(location = 0) in vec2 v_uv;

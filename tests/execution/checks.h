@@ -1,0 +1,343 @@
+#pragma once
+// What the execution tests share: the tolerances, each derived where it is defined, the views, the fixtures and the
+// checks that run a material on lavapipe and compare every pixel with the fp64 CPU reference.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "hexc/histogram.h"
+#include "hexc/library.h"
+#include "hexc/material.h"
+#include "reference/reference.h"
+#include "hexc/spirv.h"
+#include "vk/precision.h"
+#include "vk/render.h"
+#include "support.h"
+
+namespace hexc::exec {
+
+using hexc::test::runner;
+
+// ---- Tolerances -------------------------------------------------------------------------------------------
+// Lavapipe samples an 8-bit texture with 8-bit bilinear weights: against exact bilinear filtering a sample is
+// off by up to half a weight step (0.5/256) per axis on a full-range step, plus the rounding of the result:
+// 1.2/255 in all. Each mip level is made by a blit of the level above and stored in 8 bits, which puts it up
+// to 1/255 off the exact box average per level (an sRGB level is stored encoded, and the sRGB curve is at
+// most 2.4/1.055 = 2.27 times steeper in linear terms). A view whose deepest level is L therefore samples
+// within e_s = (1.2 + L * m) / 255, m = 1 (linear) or 2.27 (sRGB).
+inline double sampleError(int deepestLevel, bool srgb) { return (1.2 + deepestLevel * (srgb ? 2.27 : 1.0)) / 255.0; }
+
+// The blend R = sum W_j x_j moves with its samples, and also through its weights: W_j is proportional to
+// delta_j * w_j^gamma with delta = (1 - beta) + beta * metric >= 1 - beta, so dR/d(delta_j) = W_j (x_j - R) / delta_j
+// and a metric error e_m moves R by at most e_m * beta / (1 - beta) * sum_j W_j |x_j - R|. The gain of Eq. 5
+// multiplies weight changes by at most its steepest slope, k = log2(1 / (1 - r)) (1 when r <= 0.5). Per pixel,
+// with W_j, x_j and R from the reference:
+//     |R_gpu - R_ref| <= e_x + e_m * k * beta / (1 - beta) * max_c sum_j W_j |x_jc - R_c|.
+// `k`: the gain's steepest slope.
+inline double blendTolerance(const reference::SlotResult& r, double ex, double em, double beta, double k, int channels) {
+    double spread = 0;
+    for (int c = 0; c < channels; ++c) {
+        double sum = 0;
+        for (size_t j = 0; j < 3; ++j) sum += r.blend[j] * std::fabs(r.samples[j][size_t(c)] - r.value[size_t(c)]);
+        spread = std::max(spread, sum);
+    }
+    return ex + em * k * beta / (1.0 - beta) * spread;
+}
+
+inline double pixelTolerance(const reference::SlotResult& r, double ex, double em, const HexTiling& hex, int channels) {
+    if (!hex.enabled) return ex;
+    return blendTolerance(r, ex, em, hex.falloffcontrast, std::max(1.0, std::log2(1.0 / (1.0 - hex.falloff))), channels);
+}
+
+// ---- Fixtures ---------------------------------------------------------------------------------------------
+
+// A material of the given slots (one slot object, or several separated by commas; the first is the one tested)
+// and optional material-level hex-tiling settings.
+inline Material material(const std::string& slotJson, const std::string& hexJson = "{}") {
+    ParseResult r =
+        parseMaterial(R"({"name": "exec", "hextiling": )" + hexJson + R"(, "slots": [)" + slotJson + "]}", "materials/exec.json");
+    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
+    return *r.material;
+}
+
+using Errors = vk::ImageErrors;
+const auto compare = vk::compareImages;
+
+inline reference::SampledTexture sampled(const Slot& slot) {
+    return reference::SampledTexture(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
+}
+
+inline Image cpuRender(const Slot& slot, const View& view, reference::Output output) {
+    return reference::render(slot, sampled(slot), view, output);
+}
+
+// What a texture's own content allows, measured on its level 0 (in linear values, as sampled).
+struct TextureBounds {
+    double spread = 0;    // largest max - min of a channel: bounds |x_j - R| for a blend of samples
+    double step = 0;      // largest difference between horizontally or vertically adjacent texels
+    double minZ = 1;      // normal maps: smallest z = 2 b - 1
+    double maxDeriv = 0;  // normal maps: largest |dH/du| or |dH/dv| of a texel (Listing 9)
+};
+
+inline TextureBounds bounds(const reference::SampledTexture& t) {
+    TextureBounds b;
+    const int w = t.width(0), h = t.height(0);
+    for (int c = 0; c < 3; ++c) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                double v = t.texel(0, x, y)[size_t(c)];
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+                b.step = std::max(
+                    {b.step, std::fabs(v - t.texel(0, (x + 1) % w, y)[size_t(c)]), std::fabs(v - t.texel(0, x, (y + 1) % h)[size_t(c)])});
+            }
+        b.spread = std::max(b.spread, hi - lo);
+    }
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const auto& p = t.texel(0, x, y);
+            double z = 2 * p[2] - 1;
+            b.minZ = std::min(b.minZ, z);
+            b.maxDeriv = std::max({b.maxDeriv, std::fabs(2 * p[0] - 1) / z, std::fabs(2 * p[1] - 1) / z});
+        }
+    return b;
+}
+
+// The views: magnified reads mip level 0 only; minified reads exactly level 2 (4 texels per pixel, a power of
+// two, so lavapipe's piecewise-linear log2 is exact and no level blend is involved). Textures are 256^2 and
+// tiling 4: one uv unit is 1024 texels, tiles are 1 / (2 sqrt 3) = 0.29 st apart, so the magnified view spans
+// about 2 x 2 tiles and the minified one 5 x 5, borders included.
+const View kMagnified{192, 192, {0.3, 0.45, 0.3 + 192 * 0.75 / 1024, 0.45 + 192 * 0.75 / 1024}};  // 0.75 texel per pixel
+const View kMinified{96, 96, {0.3, 0.45, 0.3 + 96.0 * 4 / 1024, 0.45 + 96.0 * 4 / 1024}};         // 4 texels per pixel
+
+// Triplanar materials are shown on the preview sphere (reference::previewSphere) over longitude 0.2..1.0 and
+// latitude 0.1..0.9 radians, where all three planes take part. |dP| <= 0.8 / 384 per pixel, so at tiling 1.5 a
+// pixel spans at most 0.8 texels of a 256^2 texture: level 0 only, like kMagnified.
+const View kSphere{384, 384, {0.2, 0.1, 1.0, 0.9}};
+
+// The paper's hash is fract(sin(x) * 43758.5453): lavapipe's sin and the C library's disagree in the last bits, which
+// the factor 43758 turns into different tiles away from the origin (see docs/precision.md). Near the origin, where
+// the ids are 0 and 1, both agree: paper-mode cases are seen there, at level 0.
+const View kOrigin{192, 192, {0.0, 0.0, 0.02, 0.02}};
+
+struct Check {
+    Errors errors;
+    double worstRatio = 0;      // max over pixels of error / tolerance: <= 1 passes
+    double toleranceAtMax = 0;  // the tolerance of the pixel with the largest error
+    double maxTolerance = 0;
+};
+
+// Height blending (hexcHeightBlend): W'_i = W_i f_i / S with f_i = max(h_i W_i - max_j h_j W_j + width, 0) and
+// S = sum_j W_j f_j. Heights off by at most e_h move each a_j = h_j W_j by <= e_h W_j, each f_i by <= 2 e_h and S by
+// <= 2 e_h sum_j W_j = 2 e_h, so sum_i |dW'_i| <= (2 e_h + 2 e_h) / S, and the blend, whose weight changes sum to 0,
+// by <= sum_i |dW'_i| / 2 * spread = 2 e_h spread / S, spread being the largest difference between the tiles'
+// samples in a channel.
+inline double heightTolerance(const reference::SlotResult& r, double eh, int channels) {
+    double spread = 0;
+    for (int c = 0; c < channels; ++c) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (const reference::Rgba& x : r.samples) {
+            lo = std::min(lo, x[size_t(c)]);
+            hi = std::max(hi, x[size_t(c)]);
+        }
+        spread = std::max(spread, hi - lo);
+    }
+    return 2 * eh * spread / r.heightSum;
+}
+
+// What draws a material's output on the GPU: hexc's shader on one target, or a shader written by hand.
+using Draw = std::function<Image(const Material& m, vk::RenderOutput output, const View& view)>;
+
+inline Draw on(vk::ExecutedTarget target, const CompileOptions& options = {}) {
+    return [=](const Material& m, vk::RenderOutput output, const View& view) {
+        std::string why;
+        return vk::render(*runner(&why), m, output, "", view, target, 0, nullptr, {}, options);
+    };
+}
+
+// Each pixel's tolerance, from the reference's details of it.
+using PixelTolerance = std::function<double(const reference::SlotResult&, size_t pixel)>;
+
+// Runs a one-slot material on the GPU and compares `channels` channels of every pixel with the reference, each pixel
+// against its own tolerance.
+inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, const Draw& draw, int channels,
+                                   const PixelTolerance& tolerance) {
+    const Slot& slot = m.slots[0];
+    Image gpu = draw(m, output, view);
+    const reference::Heights heights(m, slot);
+    const reference::SlotTextures textures(slot);
+    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, *textures.texture, view, heights.source(), textures.lut.get());
+    Check check;
+    Image cpu = gpu;
+    for (size_t p = 0; p < ref.size(); ++p) {
+        // Scalar slots show (s, s, s, 1) of the channel they read.
+        for (int c = 0; c < channels; ++c)
+            cpu.rgba[p * 4 + size_t(c)] = float(ref[p].value[slot.kind == SlotKind::Scalar ? size_t(slot.channel) : size_t(c)]);
+        const double t = tolerance(ref[p], p);
+        check.maxTolerance = std::max(check.maxTolerance, t);
+        for (int c = 0; c < channels; ++c) {
+            double e = std::fabs(double(gpu.rgba[p * 4 + size_t(c)]) - double(cpu.rgba[p * 4 + size_t(c)]));
+            if (!(e == e)) e = INFINITY;
+            if (e > check.errors.max) check.toleranceAtMax = t;
+            check.worstRatio = std::max(check.worstRatio, e / t);
+        }
+    }
+    check.errors = compare(gpu, cpu, channels);
+    return check;
+}
+
+// The falloff blend's tolerance (pixelTolerance, plus heightTolerance for height blending) with sample error ex and
+// metric error em. `level`: the deepest mip level the view reads.
+inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, const Draw& draw, double ex,
+                                   double em, int channels) {
+    const Slot& slot = m.slots[0];
+    // The height map is 8-bit linear data, sampled at the view's levels like the slot.
+    const double eh = sampleError(level, false);
+    const int blended = slot.kind == SlotKind::Scalar ? 1 : channels;
+    return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r, size_t) {
+        return pixelTolerance(r, ex, em, slot.hex, blended) + (slot.heightBlend ? heightTolerance(r, eh, blended) : 0.0);
+    });
+}
+
+inline void report(const char* name, const Check& c) {
+    std::printf("  %-30s max %.5f (%.2f/255)  mean %.6f  >1/255 %.4f  tolerance there %.5f  worst error/tolerance %.2f\n", name,
+                c.errors.max, c.errors.max * 255, c.errors.mean, c.errors.overOne255, c.toleranceAtMax, c.worstRatio);
+}
+
+// A colour or scalar slot (the material's first) against the reference, in a view whose deepest mip level is `level`.
+inline Check checkColor(const Material& m, const View& view, int level, const Draw& draw) {
+    const Slot& slot = m.slots[0];
+    // MaterialX mode decodes after filtering the stored texels: their 8-bit linear error, times the sRGB curve's steepest
+    // slope (2.4 / 1.055 at 1).
+    double es = slot.shaderDecodes() ? 2.4 / 1.055 * sampleError(level, false) : sampleError(level, slot.colorSpace == ColorSpace::Srgb);
+    // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
+    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, draw, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
+}
+
+inline Check checkColor(const Material& m, bool minified, const Draw& draw) {
+    return checkColor(m, minified ? kMinified : kMagnified, minified ? 2 : 0, draw);
+}
+
+inline std::string targetName(vk::ExecutedTarget t) {
+    return t == vk::ExecutedTarget::Spirv ? "spirv" : t == vk::ExecutedTarget::Hlsl ? "hlsl" : "glsl";
+}
+
+const auto kExecutedTargets = testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl);
+
+// ---- Histogram blend ---------------------------------------------------------------------------------------------
+
+// The largest difference between horizontally or vertically adjacent texels of a level, per channel.
+inline std::array<double, 3> adjacentSteps(const reference::SampledTexture& t, int level) {
+    std::array<double, 3> step{};
+    const int w = t.width(level), h = t.height(level);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (size_t c = 0; c < 3; ++c) {
+                const double v = t.texel(level, x, y)[c];
+                step[c] =
+                    std::max({step[c], std::fabs(v - t.texel(level, (x + 1) % w, y)[c]), std::fabs(v - t.texel(level, x, (y + 1) % h)[c])});
+            }
+    return step;
+}
+
+// The histogram blend's tolerance at a pixel (hexcHistogram; reference.h, evaluateAt), step by step:
+// 1. A Gaussian sample: float32 texels, mip levels float averages (exact to 2^-24); lavapipe's bilinear weights taken
+//    as coarse as on 8-bit data, half a step of 2^-8 per axis, so a sample errs by e_g <= 2 * 2^-9 * step_k, step_k the
+//    largest difference between adjacent texels of channel k at the level read (adjacentSteps), plus 4 * 2^-24.
+// 2. The blend G = sum W_i (g_i - 0.5) / |W| + 0.5 moves by sum W_i / |W| <= sqrt(3) (Cauchy-Schwarz) times e_g; the
+//    weights' float32 rounding (a few ulp, relative 1e-6, times sum |g_i - 0.5| / |W| <= 3 sqrt(3)) adds 1e-5: e_G.
+// 3. The inverse reads entry x = (G - g_0) / s of rows r0 = 1 + floor(lod) and r0 + 1 (g_0 = histogramLutGaussian(0),
+//    s the entries' step; lod is exact in both views: 0 is clamped, 2 is a power of two): x moves by e_G / s, so the
+//    value by that times D, the largest difference
+//    between adjacent entries within reach in either row; the filter's weight steps add 2^-9 D along x and 2^-9 D_v
+//    across rows, D_v the largest difference between the rows' entries there.
+// 4. Back to RGB, rgb_c = mean_c + sum_k q_k E_ck moves by sum_k |E_ck| e_k, plus float32 rounding (1e-6); the clamp
+//    to the texture's range moves nothing further apart.
+inline PixelTolerance histogramTolerance(const Slot& slot, const reference::SlotTextures& textures, int level) {
+    const reference::SampledTexture& lut = *textures.lut;
+    const std::array<double, 3> step = adjacentSteps(*textures.texture, level);
+    const size_t channels = slot.kind == SlotKind::Scalar ? 1 : 3;
+    return [&lut, step, channels](const reference::SlotResult& r, size_t) {
+        const int n = lut.width(0), rows = lut.height(0);
+        const int r0 = 1 + int(std::floor(std::clamp(r.lod, 0.0, rows - 2.0))), r1 = std::min(r0 + 1, rows - 1);
+        std::array<double, 3> e{};
+        for (size_t k = 0; k < channels; ++k) {
+            const double eG = std::sqrt(3.0) * (2 * step[k] / 512 + 4 * 0x1p-24) + 1e-5;
+            const double g0 = histogramLutGaussian(0), s = histogramLutGaussian(1) - g0;
+            const double x = std::clamp((r.gaussian[k] - g0) / s, 0.0, n - 1.0), reach = eG / s + 1;
+            double d = 0, dv = 0;
+            for (int i = std::max(0, int(std::floor(x - reach))); i <= std::min(n - 1, int(std::ceil(x + reach))); ++i) {
+                dv = std::max(dv, std::fabs(lut.texel(0, i, r1)[k] - lut.texel(0, i, r0)[k]));
+                if (i + 1 < n)
+                    for (int row : {r0, r1}) d = std::max(d, std::fabs(lut.texel(0, i + 1, row)[k] - lut.texel(0, i, row)[k]));
+            }
+            e[k] = d * (eG / s + 1.0 / 512) + dv / 512;
+        }
+        if (channels == 1) return e[0] + 1e-6;
+        double worst = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            double sum = 0;
+            for (size_t k = 0; k < 3; ++k) sum += std::fabs(lut.texel(0, int(k), 0)[c]) * e[k];
+            worst = std::max(worst, sum);
+        }
+        return worst + 1e-6;
+    };
+}
+
+// A histogram-blended colour or scalar slot (the material's first) against the reference, in a view whose deepest
+// mip level is `level`.
+inline Check checkHistogram(const Material& m, const View& view, int level, const Draw& draw) {
+    const Slot& slot = m.slots[0];
+    const reference::SlotTextures textures(slot);
+    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, draw, slot.kind == SlotKind::Scalar ? 1 : 4,
+                                 histogramTolerance(slot, textures, level));
+}
+
+// ---- Normal path --------------------------------------------------------------------------------------------
+// A normal slot (the material's first) against the reference, as derivatives.
+inline Check checkNormal(const Material& m, const View& view, int level, const Draw& draw) {
+    const Slot& slot = m.slots[0];
+    const bool triplanar = slot.hex.projection == Projection::Triplanar;
+    TextureBounds b = bounds(sampled(slot));
+    // Listing 9: d = -xy / z with x, y, z = 2 * texel - 1, each off by 2 e_s, so to first order
+    // |dd| <= 2 e_s (1 + max|d|) / min z. The slope metric sin(theta) = sqrt(|d|^2 / (1 + |d|^2)) moves by at
+    // most the error of |d| (its slope is <= 1), which is <= sqrt(2) |dd|.
+    double ed = 2 * sampleError(level, false) * (1 + b.maxDeriv) / b.minZ;
+    // Triplanar: each plane's gradient g_k errs by |(dd_x, dd_y)| <= sqrt(2) ed, so does their convex combination,
+    // and the projection onto the surface does not lengthen it: each component of the surface gradient is within
+    // sqrt(2) ed. The plane weights' own float32 error (~1e-7) is negligible.
+    return triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, std::sqrt(2.0) * ed, 0, 3)
+                     : checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, ed, std::sqrt(2.0) * ed, 2);
+}
+
+inline Check checkNormal(const Material& m, bool minified, const Draw& draw) {
+    return checkNormal(m, minified ? kMinified : kMagnified, minified ? 2 : 0, draw);
+}
+
+// ---- rock's slots, one at a time, from other outputs ---------------------------------------------------------
+
+// A material file (rock by default) with only the slot `slotName`, its settings as the file gives them.
+inline Material rockWith(const std::string& slotName, const std::string& file = "materials/rock.json") {
+    ParseResult rock = parseMaterialFile(file);
+    if (!rock.material) throw std::runtime_error(formatAll(rock.diagnostics));
+    Material one = *rock.material;
+    one.slots.erase(std::remove_if(one.slots.begin(), one.slots.end(), [&](const Slot& s) { return s.name != slotName; }), one.slots.end());
+    return one;
+}
+
+// Its slot, magnified, against the reference: the derivative rule for a normal map, else the falloff one.
+inline Check checkSlot(const Material& one, const Draw& draw) {
+    return one.slots[0].kind == SlotKind::Normal ? checkNormal(one, false, draw) : checkColor(one, false, draw);
+}
+
+}  // namespace hexc::exec
