@@ -3,6 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "codegen/assembly.h"
 #include "codegen/codegen.h"
@@ -167,6 +174,97 @@ TEST(Specialise, WithoutSpecialisationTheGeneralFunctions) {
     EXPECT_NE(glsl.find("blend.metric = true;"), std::string::npos);
     EXPECT_EQ(glsl.find("hexcColor_"), std::string::npos);
     EXPECT_EQ(glsl.find("hexcMx"), std::string::npos);  // only what the slots and the template reach
+}
+
+// Every example (materials/) and feature variant (tests/golden/materials/, the execution cases' materials), as hexc
+// plans it by default.
+std::vector<std::pair<std::string, Material>> examplesAndVariants() {
+    std::vector<std::pair<std::string, Material>> out;
+    auto add = [&](const std::string& name, const ParseResult& r) {
+        ASSERT_TRUE(r.material) << name << ": " << formatAll(r.diagnostics);
+        out.emplace_back(name, *r.material);
+    };
+    std::vector<std::filesystem::path> files;
+    for (const char* dir : {"materials", "tests/golden/materials", "tests/execution/cases"})
+        for (const auto& entry : std::filesystem::directory_iterator(dir))
+            if (entry.path().extension() == ".json" && !entry.path().string().ends_with("schema.json")) files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    for (const std::filesystem::path& file : files) {
+        if (file.parent_path() != "tests/execution/cases") {
+            add(file.string(), parseMaterialFile(file));
+            continue;
+        }
+        std::ifstream in(file);  // a case: its material inline, its paths read from materials/ (tests/execution/cases_test.cpp)
+        add(file.string(), parseMaterial(nlohmann::json::parse(in).at("material").dump(), "materials/" + file.stem().string() + ".json"));
+    }
+    return out;
+}
+
+// Whether code[i] is an assignment's `=` (not one of ==, !=, <=, >=).
+bool assigns(const std::string& code, size_t i) {
+    return code[i] == '=' && (i + 1 == code.size() || code[i + 1] != '=') &&
+           (i == 0 || std::string_view("=!<>").find(code[i - 1]) == std::string_view::npos);
+}
+
+// The condition of each `if (c)` and select `c ? x : y` in `code`.
+std::vector<std::string> conditions(const std::string& code) {
+    std::vector<std::string> out;
+    for (size_t at = code.find("if ("); at != std::string::npos; at = code.find("if (", at + 1))
+        if (size_t end = closingBracket(code, at + 3); end != std::string::npos) out.push_back(code.substr(at + 4, end - at - 5));
+    for (size_t question = code.find('?'); question != std::string::npos; question = code.find('?', question + 1)) {
+        size_t start = question;  // back to what opens the select: `(`, `=`, `,`, `return`, or another select's `?` or `:`
+        for (int depth = 0; start > 0; --start) {
+            const char c = code[start - 1];
+            depth += c == ')' ? 1 : c == '(' ? -1 : 0;
+            if (depth < 0 || (depth == 0 && (c == ',' || c == '?' || c == ':' || assigns(code, start - 1)))) break;
+        }
+        std::string c = code.substr(start, question - start);
+        if (c.find("return ") != std::string::npos) c = c.substr(c.find("return ") + 7);
+        out.push_back(c);
+    }
+    return out;
+}
+
+// The folding rules (templates/library/hextiling/overview.glsl): a slot's copy of a library function, `<function>_<slot>`,
+// takes no settings struct and reads none of its fields, and every branch a fixed setting decided is gone. A condition
+// that reads no variable (`if (3 - 2 == 0)`, `false ? x : y`) or keeps a `true` or `false` operand (`!false && f.z`)
+// is one the fold left behind: a library edit that writes a setting's test in a form codegen/specialise.cpp does not
+// decide makes every slot's shader carry it.
+TEST(Specialise, EveryExampleAndVariantFoldsWhatItsSettingsFix) {
+    const Library& lib = library();
+    std::set<std::string> fields;  // "l.rotate", "b.taps", ...
+    for (const auto& [settings, values] : lib.neutral)
+        for (const auto& [field, value] : values) fields.insert((settings == "HexcLattice" ? "l." : "b.") + field);
+    static const std::regex copy(R"(^\w+ (hexc[A-Z]\w*)_\w+\()"), read(R"((?:^|[^\w.])([lb]\.\w+))");
+    static const std::set<std::string_view> constants = {"true", "false", "int", "uint", "float", "bool"};
+    size_t copies = 0;
+    for (auto& [name, material] : examplesAndVariants()) {
+        SCOPED_TRACE(name);
+        std::istringstream glsl(generateGlsl(planShader(material, {})));
+        std::string line, function;
+        for (bool inside = false; std::getline(glsl, line);) {
+            std::smatch m;
+            if (!inside && std::regex_search(line, m, copy) && lib.byName.count(m[1].str())) {
+                const Piece& p = lib.pieces[lib.byName.at(m[1].str())];
+                inside = p.lattice || p.blend, function = m[0].str(), copies += inside;
+            }
+            if (!inside) continue;
+            const std::string code(codeOf(line));
+            EXPECT_EQ(code.find("HexcLattice"), std::string::npos) << function << ": " << line;
+            EXPECT_EQ(code.find("HexcBlend"), std::string::npos) << function << ": " << line;
+            for (std::sregex_iterator r(code.begin(), code.end(), read), end; r != end; ++r)
+                EXPECT_FALSE(fields.count((*r)[1].str())) << function << " reads " << (*r)[1] << ": " << line;
+            for (const std::string& c : conditions(code)) {
+                const std::vector<std::string_view> words = identifiers(c);
+                EXPECT_FALSE(std::all_of(words.begin(), words.end(), [](std::string_view w) { return constants.count(w); }))
+                    << function << " keeps a decided condition `" << c << "`: " << line;
+                EXPECT_EQ(std::count_if(words.begin(), words.end(), [](std::string_view w) { return w == "true" || w == "false"; }), 0)
+                    << function << " keeps a decided operand in `" << c << "`: " << line;
+            }
+            inside = !line.starts_with("}");
+        }
+    }
+    EXPECT_GT(copies, 100u);  // the check saw the copies: tens of materials, several per slot
 }
 
 }  // namespace

@@ -1,16 +1,26 @@
 // hexc hex-tiling library: Mikkelsen 2022, "Practical Real-Time Hex-Tiling" (JCGT 11(3)), Listings 1-10.
 // Injected by hexc at the template's `#include <hexc>` line. Every name here starts with `hexc` followed
 // by an upper-case letter, so it never collides with the generated per-slot functions `hexc_<slot>`.
+// One file per concern in templates/library/hextiling/, assembled in this order into hexc/hextiling.glsl
+// (compiler/src/CMakeLists.txt): overview (this file: shared constants and structs), lattice, masks, blends, taps,
+// histogram, derivatives, dither, helpers; each uses only what comes before it.
 //
-// hexc injects it piece by piece (compiler/src/codegen/pieces.h): the constants, structs and functions a shader
-// reaches, each function in the form a slot's settings make of it. The settings hexc fixes (the fields marked
-// "literal" below, e.g. l.rotate, b.exponentInt) are folded into a copy of each function that reads them,
-// `<function>_<slot>`, with only the branches they take (codegen/specialise.h), and the others become the reads of
-// the slot's parameters, so that the copy takes neither settings struct; without specialisation
-// (--no-specialize, `hexc library`) this text is the general library. So that the folding can see them, a function
-// takes its settings as `HexcLattice l` and `HexcBlend b` and never writes them; a setting decides code in an
-// `if (...) {` block (with `} else {`), an `if (...) statement;` or a whole `x = c ? a : b;` or `return c ? a : b;`;
-// and a top-level item starts at column 0, a multi-line one ending with a `}` at column 0.
+// Folding rules. hexc injects the library piece by piece (compiler/src/codegen/pieces.h): the constants, structs and
+// functions a shader reaches. A function that takes `HexcLattice l` or `HexcBlend b` is emitted per slot as
+// `<function>_<slot>`, which takes neither: the slot's settings fix every field of both (codegen/codegen.cpp,
+// latticeSettings and blendSettings), folded in at the source (codegen/specialise.h):
+// - the fields marked "literal" (HexcLattice: rotate, transform, rotationSteps, offsetSteps, maskScale, triple,
+//   aspect; HexcBlend: metric, gain, exponentInt, gainInt, taps, sharedLod, adaptive, adaptiveError, height) become
+//   constants, and every branch they decide keeps only the path taken;
+// - the others become the reads of the slot's parameters (rotation, rotationRange, scaleRange, offset; falloff,
+//   falloffContrast, exponent, heightWidth), hexcChannel(k) for heightLuma, or the neutral constructor's value.
+// So that the folding sees them: a function takes its settings as `HexcLattice l` and `HexcBlend b` and never writes
+// them; a setting decides code only in an `if (...) {` block (with `} else {`), an `if (...) statement;` or a whole
+// `x = c ? a : b;` or `return c ? a : b;`, whose condition compares settings and literals (==, !=, <, <=, >, >=, !,
+// &&, ||; no arithmetic, no call); and a top-level item starts at column 0, a multi-line one ending with a `}` at
+// column 0. tests/codegen/specialise_test.cpp (EveryExampleAndVariantFoldsWhatItsSettingsFix) holds every example and
+// feature variant to it: no slot's copy keeps a settings read or a condition that reads no variable. Without
+// specialisation (--no-specialize, `hexc library`) this text is the general library.
 //
 // Conventions: texture space is (u, v) with v down the image. A normal slot's derivative is (dH/du, dH/dy) with
 // y = -v, up the image: a green-up (OpenGL) map gives it as sampled, a green-down (DirectX) map once flip_y negates
