@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -199,10 +200,12 @@ TEST(Cli, ManifestPathsSayWhereTheInputsWere) {
     EXPECT_FALSE(nlohmann::json::parse(readFile(dir / "out" / "engine_rock.manifest.json")).contains("source"));
 }
 
-// The banner names the material file: renaming the file, its content unchanged, compiles again.
+// The banner names the material file: renaming the file, its content unchanged, compiles again. In a folder of its own
+// (mkdtemp), so that two runs of the suite at once (release and sanitizer builds) do not rename each other's file.
 TEST(Cli, ARenamedMaterialFileIsNotUpToDate) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_renamed_material";
-    std::filesystem::remove_all(dir);
+    std::string name = (std::filesystem::temp_directory_path() / "hexc_renamed_XXXXXX").string();
+    ASSERT_NE(mkdtemp(name.data()), nullptr) << name;
+    const std::filesystem::path dir = name;
     std::filesystem::create_directories(dir / "m");
     std::filesystem::create_directory_symlink(std::filesystem::absolute("materials/textures"), dir / "m" / "textures");
     std::filesystem::copy_file("materials/rock.json", dir / "m" / "a.json");
@@ -212,6 +215,7 @@ TEST(Cli, ARenamedMaterialFileIsNotUpToDate) {
     ASSERT_EQ(runHexc((dir / "m" / "b.json").string() + " -o " + (dir / "out").string(), &err), 0) << err;
     EXPECT_NE(err.find("1 compiled, 0 up to date"), std::string::npos) << err;
     EXPECT_NE(readFile(dir / "out" / "rock.frag.hlsl").find("from b.json"), std::string::npos);
+    std::filesystem::remove_all(dir);
 }
 
 // --target and --targets are one option in compile mode, as in render and library.
