@@ -230,6 +230,21 @@ class Authoring(unittest.TestCase):
         icon = js("return fetch('/favicon.ico').then(r => [r.status, r.headers.get('Content-Type')]);")
         self.assertEqual(icon, [200, "image/svg+xml"])
 
+    def test_the_distance_is_in_the_selected_slots_repeats(self):
+        with open(self.material) as f:
+            doc = json.load(f)
+        doc["slots"][2]["hextiling"] = {"tiling": [8, 8]}  # roughness: twice the material's 4 repeats per uv unit
+        with open(self.material, "w") as f:
+            json.dump(doc, f, indent=2)
+        self.open()
+        distance = js("return window.hexcEdit.view().camera.distance;")
+        shown = lambda tiling: "%g repeats" % float("%.2g" % (distance * tiling))  # as the page rounds it
+        label = lambda: DRIVER.find_element("id", "distance-value").text
+        self.assertEqual(label(), shown(4))  # albedo, selected first, inherits the material's tiling
+        js("window.hexcEdit.selectSlot('roughness');")
+        wait_for(lambda: label() == shown(8), "the roughness slot's repeats")
+        self.assertEqual(js("return window.hexcEdit.view().camera.distance;"), distance)  # the camera stays where it was
+
     def test_the_tiling_lock_keeps_texels_square(self):
         # A 5:3 texture tiled [4, 4] has texels 5/3 wider than tall on the surface; the lock makes the second repeat
         # 4 x 160 / 96 = 6.667 (4 significant digits, as the sliders write).

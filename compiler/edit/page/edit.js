@@ -192,7 +192,7 @@ function onEdit(pointer, value, target) {
   if (value === undefined) panel.render(state.doc);  // a reset shows the default again
 }
 
-// Another slot selected: its views linked again (nothing compiled) and drawn.
+// Another slot selected: its views linked again (nothing compiled) and drawn, the distance in its repeats.
 function selectSlot() {
   if (compiled) linkPrograms();
   draw();
@@ -396,11 +396,12 @@ function keys() {
   $('see-both').addEventListener('click', resolve.both);
 }
 
-// The camera distance in repeats of the material's texture (uv units times its tiling), on a logarithmic slider: each
-// 1/12 of it doubles the distance, from an eighth of a repeat (a few texels) to 256 repeats.
+// The camera distance in repeats of the selected slot's texture (uv units times its tiling), on a logarithmic slider:
+// each 1/12 of it doubles the distance, from an eighth of a repeat (a few texels) to 256 repeats.
 const kRepeats = [1 / 8, 256];
 function tilingX() {
-  const t = state.doc?.hextiling?.tiling ?? 1;
+  const slot = state.doc?.slots?.[panel.slot] ? panel.slot : null;
+  const t = state.doc ? effective(state.doc, slot, 'tiling', state.schema?.$defs.hextiling.properties.tiling.default ?? 1) : 1;
   return Array.isArray(t) ? t[0] : t;
 }
 function showDistance() {
