@@ -36,6 +36,7 @@ void main() {
 #else
 #define HEXC_EDIT_AT hexcEditUv
 #endif
+    // One call per slot gives both views: every call is a copy of the slot's code once inlined.
     vec4 value = vec4(0.0);
     vec3 weights = vec3(0.0);
 ${slots}
@@ -43,7 +44,4 @@ ${slots}
 }
 
 //@ slot
-    if (hexcEditSlot == ${index}) {
-        if (hexcEditView == 1) value = hexcEditValue(hexc_${name}(HEXC_EDIT_AT));
-        else hexc_${name}(HEXC_EDIT_AT, weights);
-    }
+    if (hexcEditSlot == ${index}) value = hexcEditValue(hexc_${name}(HEXC_EDIT_AT, weights));
