@@ -13,8 +13,8 @@ time is judged.
 Each time is taken in the page, from the control's event (performance.now() as the edit starts) to the page's mark of
 the frame drawn after it (`hexcEdit.lastFrame`: the animation frame after the draw, when the browser took the frame;
 builds before the change read one pixel back after drawing instead). A structural change includes the page's 120 ms
-wait for more edits before it asks the server to compile, the server's compiles (the page's programs: hex-tiled, plain,
-weights, the slot's values), WebGL linking them (ANGLE translates them) and the first frame that draws them
+wait for more edits before it asks the server to compile, the server's compiles (the page's programs: one of every view,
+and plain tiling; builds before it compiled the slot's weights and values apart), WebGL linking them (ANGLE translates them) and the first frame that draws them
 (SwiftShader compiles shaders for the CPU when they are first drawn); it is split into those parts. The cost line's
 compile of the shipped shader runs after the frame, as does the next edit (each edit waits for the previous one's frame
 only). The frame time is the interval between frames while the view is moved every frame.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <future>
 
 #include "hexc/budgets.h"
 #include "hexc/compiler.h"
@@ -11,6 +10,7 @@
 #include "hexc/json_text.h"
 #include "hexc/spirv.h"
 #include "command.h"
+#include "views.h"
 #include "vk/render.h"
 
 namespace hexc::edit {
@@ -115,12 +115,6 @@ Json shippedCost(const Material& m) {
     return {{"fetches", ops.textureSamples}, {"instructions", ops.instructions}, {"compile_ms", ms}};
 }
 
-// The slot the weights and values views show: the one asked for, else the first.
-const Slot& shownSlot(const Material& m, const std::string& name) {
-    auto it = std::find_if(m.slots.begin(), m.slots.end(), [&](const Slot& s) { return s.name == name; });
-    return it == m.slots.end() ? m.slots.front() : *it;
-}
-
 // Size and modification time of a file, as a version stamp; "-" when it cannot be read.
 std::string stamp(const fs::path& file) {
     std::error_code ec;
@@ -189,9 +183,27 @@ Diagnostics Session::confined(const Material& material) const {
     return out;
 }
 
+// The views program of `m`, and the material as shown (*note says why its template is not the material's own).
+// Whether a template declares resources of its own is read from its first views program's manifest (vk::shownMaterial),
+// or from the SPIR-V alone when the page's GLSL does not compile, and remembered by the template's text.
+CompileResult Session::viewsCompile(const Material& m, Material* shown, std::string* note) {
+    const std::optional<std::string> text = templateText(m.templ);
+    const auto known = text ? shownTemplates_.find(*text) : shownTemplates_.end();
+    *shown = m;
+    if (known != shownTemplates_.end()) {
+        shown->templ = known->second.templ;
+        *note = known->second.note;
+        return pageCompile(views_.composed(*shown), cache_);
+    }
+    CompileResult views = pageCompile(views_.composed(m), cache_);
+    *shown = views.ok() ? vk::shownMaterial(m, views, note) : shownWithoutGlsl(m, cache_, note);
+    if (text) shownTemplates_[*text] = {shown->templ, *note};
+    return note->empty() ? views : pageCompile(views_.composed(*shown), cache_);
+}
+
 Reply Session::compile(const std::string& body) {
     Reply refused;
-    const std::optional<Json> request = withDocument(body, "{\"document\": the material, \"slot\": a slot name}", &refused);
+    const std::optional<Json> request = withDocument(body, "{\"document\": the material}", &refused);
     if (!request) return refused;
     std::lock_guard lock(mutex_);
     Parsed p = parse(request->at("document"));
@@ -199,36 +211,24 @@ Reply Session::compile(const std::string& body) {
     Material m = *p.material;
     m.pack = false;
     try {
-        const Slot& s = shownSlot(m, request->value("slot", ""));
-        const vk::RenderOutput values = s.kind == SlotKind::Normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
-        // The slot's views use built-in templates whatever the material's: compiled beside the hex-tiled program.
-        const Material weightsView = vk::renderedMaterial(m, vk::RenderOutput::Weights, s.name);
-        const Material valuesView = vk::renderedMaterial(m, values, s.name);
-        auto weights = std::async(std::launch::async, [&] { return program(pageCompile(weightsView, cache_)); });
-        auto value = std::async(std::launch::async, [&] { return program(pageCompile(valuesView, cache_)); });
-        // The hex-tiled program's manifest says whether its template declares resources of its own, which only an engine
-        // fills; then the material is shown with `lit`, compiled anew. A structural edit costs one compile per program
-        // that reads what changed; the shader cache holds the rest.
+        // One program for the template's shading and every slot's values and weights (views.h), and plain tiling: a
+        // structural edit compiles the first; the second only when it changes plain tiling too (a slot's kind,
+        // projection, sampling); the shader cache holds the rest.
+        Material shown;
         std::string note;
-        CompileResult hex = pageCompile(m, cache_);
-        Material shown = hex.ok() ? vk::shownMaterial(m, hex, &note) : shownWithoutGlsl(m, cache_, &note);
-        if (!note.empty()) hex = pageCompile(shown, cache_);
-        Json programs = {{"hex", program(hex)},
-                         {"plain", program(pageCompile(vk::plainTiled(shown), cache_))},
-                         {"weights", weights.get()},
-                         {"values", value.get()}};
+        const CompileResult views = viewsCompile(m, &shown, &note);
+        Json slots = Json::array();
+        for (const Slot& s : m.slots) slots.push_back(s.name);
         compiled_ = m;
         return json({{"ok", true},
                      {"text", p.text},
                      {"diagnostics", toJson(p.diagnostics)},
                      {"template", shown.templ.written()},
                      {"note", note},
-                     {"slot", s.name},
-                     {"programs", programs}});
+                     {"slots", slots},
+                     {"programs", {{"views", program(views)}, {"plain", program(pageCompile(vk::plainTiled(shown), cache_))}}}});
     } catch (const CompileError& e) {
         return json({{"ok", false}, {"diagnostics", toJson(e.diagnostics)}});
-    } catch (const std::invalid_argument& e) {  // a view the material cannot give (renderedMaterial)
-        return json({{"ok", false}, {"diagnostics", toJson({Diagnostic::make(Code::WrongSlotKind, {file_.string()}, "", e.what())})}});
     }
 }
 

@@ -11,8 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "hexc/cache.h"
+#include "hexc/compiler.h"
 #include "hexc/image.h"
 #include "hexc/material.h"
+#include "views.h"
 
 namespace hexc::edit {
 
@@ -31,8 +33,8 @@ public:
 
     // {"file", "text", "version"}: the material file as it is on disk.
     Reply material();
-    // POST {"document": the material as JSON, "slot": the slot the weights and values views show}: the document as it
-    // would be saved, parsed and compiled into the page's programs; or its diagnostics.
+    // POST {"document": the material as JSON}: the document as it would be saved, parsed and compiled into the page's
+    // programs (views.h's, which shows every view of every slot of "slots", and plain tiling); or its diagnostics.
     Reply compile(const std::string& body);
     // POST {"document"}: texture fetches per pixel and SPIR-V instructions of the shader `hexc MATERIAL -o DIR` writes,
     // and the time its compile takes (compiled anew, not from a cache).
@@ -59,13 +61,20 @@ private:
     // Diagnostics for textures outside root_ (or reached through a symlink that leaves it).
     Diagnostics confined(const Material& material) const;
     std::optional<Texture> loadSlotTexture(const std::string& name, std::string* whyNot);
+    CompileResult viewsCompile(const Material& m, Material* shown, std::string* note);
 
     std::filesystem::path file_, root_;
     std::mutex mutex_;      // the page's requests come on several threads
     std::mutex costMutex_;  // cost() is apart: it reads only the file and the document
     ShaderCache cache_;
-    std::optional<Material> compiled_;  // the last document that compiled: its textures are served
-    std::mutex versionMutex_;           // version(): the file's stamp and the textures it named then
+    ViewsProgram views_;
+    struct ShownTemplate {
+        TemplateRef templ;
+        std::string note;
+    };
+    std::map<std::string, ShownTemplate> shownTemplates_;  // by the material template's text: what the page shows
+    std::optional<Material> compiled_;                     // the last document that compiled: its textures are served
+    std::mutex versionMutex_;                              // version(): the file's stamp and the textures it named then
     std::string versionFile_;
     std::vector<std::filesystem::path> versionTextures_;
 };

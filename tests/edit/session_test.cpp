@@ -18,34 +18,39 @@ Json readJson(const std::string& file) {
     return Json::parse(in);
 }
 
-// The page's compile request: the document and the slot its weights and values views show.
-std::string request(const Json& document, const std::string& slot) { return Json{{"document", document}, {"slot", slot}}.dump(); }
+// The page's compile request: the document.
+std::string request(const Json& document) { return Json{{"document", document}}.dump(); }
 
 class EditSession : public testing::Test {
 protected:
     Session session{"materials/rock.json", "materials"};
     Json document = readJson("materials/rock.json");
 
-    // Compiles `document` as the page asks, showing `slot`; returns the shader compiles it cost.
-    size_t compileCost(const std::string& slot = "albedo") {
+    // Compiles `document` as the page asks; returns the shader compiles it cost.
+    size_t compileCost() {
         const size_t before = session.compiles();
-        const Json reply = Json::parse(session.compile(request(document, slot)).body);
+        const Json reply = Json::parse(session.compile(request(document)).body);
         EXPECT_TRUE(reply["ok"].get<bool>()) << reply.dump(2);
         for (const auto& [name, program] : reply["programs"].items()) EXPECT_TRUE(program.contains("fragment")) << name;
         return session.compiles() - before;
     }
 };
 
-TEST_F(EditSession, AnswersEveryProgramOfTheMaterial) {
-    const Json reply = Json::parse(session.compile(request(document, "normal")).body);
+TEST_F(EditSession, AnswersTheViewsAndPlainTiling) {
+    const Json reply = Json::parse(session.compile(request(document)).body);
     ASSERT_TRUE(reply["ok"].get<bool>()) << reply.dump(2);
-    EXPECT_EQ(reply["slot"], "normal");
+    EXPECT_EQ(reply["slots"], Json::parse(R"(["albedo", "normal", "roughness"])"));
     EXPECT_EQ(reply["template"], "lit");
     EXPECT_EQ(reply["note"], "");
-    for (const char* name : {"hex", "plain", "weights", "values"}) {
-        ASSERT_TRUE(reply["programs"].contains(name)) << name;
+    ASSERT_EQ(reply["programs"].size(), 2u);
+    for (const char* name : {"views", "plain"})
         EXPECT_NE(reply["programs"][name]["fragment"].get<std::string>().find("#version 300 es"), std::string::npos) << name;
-    }
+    // The page picks a view and a slot by defining the views' specialisation constants (templates/edit/views.glsl).
+    const std::string views = reply["programs"]["views"]["fragment"];
+    for (const char* macro : {"SPIRV_CROSS_CONSTANT_ID_1000", "SPIRV_CROSS_CONSTANT_ID_1001"})
+        EXPECT_NE(views.find("#define " + std::string(macro)), std::string::npos) << macro;
+    // The manifest names the template as the material does, not the composed copy.
+    EXPECT_EQ(reply["programs"]["views"]["manifest"]["template"], "lit");
 }
 
 TEST_F(EditSession, AValueEditCompilesNothing) {
@@ -54,29 +59,45 @@ TEST_F(EditSession, AValueEditCompilesNothing) {
     EXPECT_EQ(compileCost(), 0u);
 }
 
-TEST_F(EditSession, AStructuralEditOfAnUnshownSlotCostsOneCompile) {
+TEST_F(EditSession, AStructuralEditOfAnySlotCostsOneCompile) {
     compileCost();
-    document["slots"][2]["hextiling"] = {{"taps", 1}};  // roughness: only the hex-tiled program reads its taps
-    EXPECT_EQ(compileCost("albedo"), 1u);
-}
-
-TEST_F(EditSession, AStructuralEditOfTheShownSlotRecompilesItsViews) {
-    compileCost();
-    // albedo: the hex-tiled program and the two views of the slot (weights, values) each read its taps.
+    // Every view of every slot is one program: the slot shown makes no difference to the server.
+    document["slots"][2]["hextiling"] = {{"taps", 1}};
+    EXPECT_EQ(compileCost(), 1u);
     document["slots"][0]["hextiling"] = {{"taps", 1}};
-    EXPECT_EQ(compileCost("albedo"), 3u);
+    EXPECT_EQ(compileCost(), 1u);
 }
 
-TEST_F(EditSession, ATemplateWithResourcesOfItsOwnIsShownWithLit) {
+TEST_F(EditSession, AMaterialWideStructuralEditCostsOneCompile) {
+    compileCost();
+    document["hextiling"]["mask"] = "checker";  // every slot's lattice; plain tiling reads none
+    EXPECT_EQ(compileCost(), 1u);
+}
+
+TEST_F(EditSession, AnEditThatChangesPlainTilingToo) {
+    compileCost();
+    document["slots"][1]["flip_y"] = true;  // the normal map's green read the other way: hex-tiled and plain alike
+    EXPECT_EQ(compileCost(), 2u);
+}
+
+TEST_F(EditSession, ATemplateWithResourcesOfItsOwnIsShownWithLitAskedOnce) {
     Session engine("materials/engine_rock.json", "materials");
-    const Json reply = Json::parse(engine.compile(request(readJson("materials/engine_rock.json"), "")).body);
+    Json doc = readJson("materials/engine_rock.json");
+    const Json reply = Json::parse(engine.compile(request(doc)).body);
     ASSERT_TRUE(reply["ok"].get<bool>()) << reply.dump(2);
     EXPECT_EQ(reply["template"], "lit");
     EXPECT_NE(reply["note"].get<std::string>().find("declares resources of its own"), std::string::npos) << reply["note"];
+    // What the page shows of a template is asked once per template text: a later structural edit compiles one program.
+    doc["hextiling"]["mask"] = "checker";
+    const size_t before = engine.compiles();
+    const Json again = Json::parse(engine.compile(request(doc)).body);
+    ASSERT_TRUE(again["ok"].get<bool>()) << again.dump(2);
+    EXPECT_EQ(again["note"], reply["note"]);
+    EXPECT_EQ(engine.compiles() - before, 1u);
 }
 
 TEST_F(EditSession, RefusesARequestWithoutADocument) {
-    const Reply reply = session.compile("{\"slot\": \"albedo\"}");
+    const Reply reply = session.compile("{\"slots\": []}");
     EXPECT_EQ(reply.status, 400);
     EXPECT_EQ(session.compiles(), 0u);
 }

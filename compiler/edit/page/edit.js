@@ -93,7 +93,7 @@ async function texture(name, srgb) {
 
 // Fetches the textures the programs read that are not loaded yet (all of them after a change on disk).
 async function loadTextures(programs, fresh) {
-  const slots = programs.hex?.manifest?.slots || [];
+  const slots = programs.views?.manifest?.slots || [];
   for (const name of renderer.textureSources()) {
     if (!fresh && renderer.textures[name]) continue;
     const slot = slots.find(s => s.name === name), t = await texture(name, !!slot && slot.colorspace === 'srgb' && slot.decode !== 'shader');
@@ -111,6 +111,14 @@ async function costLine(seq) {
   $('cost').textContent = c ? `${c.fetches} fetches/pixel · ${c.instructions} SPIR-V instructions · compiled in ${c.compile_ms.toFixed(0)} ms` : '';
 }
 
+// The last compile's answer, and its programs linked for the selected slot: selecting another links them again, with
+// no compile (templates/edit/views.glsl).
+let compiled = null;
+function linkPrograms() {
+  renderer.setPrograms(compiled.programs, compiled.slots, state.doc.slots?.[panel.slot]?.name);
+  hexc.programs = Object.keys(renderer.programs);
+}
+
 let compileSeq = 0;
 async function compile(freshTextures = false) {
   const seq = ++compileSeq;
@@ -118,7 +126,7 @@ async function compile(freshTextures = false) {
   status('compiling…');
   try {
     const timing = { sent: performance.now() };  // where a structural edit's time goes (bench/edit_latency.py)
-    const r = await api('/api/compile', { document: state.doc, slot: state.doc.slots?.[panel.slot]?.name });
+    const r = await api('/api/compile', { document: state.doc });
     if (seq !== compileSeq) return;  // a later edit is being compiled
     timing.answered = performance.now();
     hexc.compiles++;
@@ -129,8 +137,8 @@ async function compile(freshTextures = false) {
       status();
       return draw();
     }
-    renderer.setPrograms(r.programs);
-    hexc.programs = Object.keys(renderer.programs);
+    compiled = r;
+    linkPrograms();
     timing.linked = performance.now();
     const known = Object.keys(state.sizes).length;
     await loadTextures(r.programs, freshTextures);
@@ -182,6 +190,12 @@ function onEdit(pointer, value, target) {
     scheduleCompile();
   }
   if (value === undefined) panel.render(state.doc);  // a reset shows the default again
+}
+
+// Another slot selected: its views linked again (nothing compiled) and drawn, the distance in its repeats.
+function selectSlot() {
+  if (compiled) linkPrograms();
+  draw();
 }
 
 function regions() {
@@ -382,11 +396,12 @@ function keys() {
   $('see-both').addEventListener('click', resolve.both);
 }
 
-// The camera distance in repeats of the material's texture (uv units times its tiling), on a logarithmic slider: each
-// 1/12 of it doubles the distance, from an eighth of a repeat (a few texels) to 256 repeats.
+// The camera distance in repeats of the selected slot's texture (uv units times its tiling), on a logarithmic slider:
+// each 1/12 of it doubles the distance, from an eighth of a repeat (a few texels) to 256 repeats.
 const kRepeats = [1 / 8, 256];
 function tilingX() {
-  const t = state.doc?.hextiling?.tiling ?? 1;
+  const slot = state.doc?.slots?.[panel.slot] ? panel.slot : null;
+  const t = state.doc ? effective(state.doc, slot, 'tiling', state.schema?.$defs.hextiling.properties.tiling.default ?? 1) : 1;
   return Array.isArray(t) ? t[0] : t;
 }
 function showDistance() {
@@ -457,7 +472,7 @@ hexc.view = () => state.view;
 hexc.document = () => state.doc;
 hexc.setView = v => { Object.assign(state.view, v); draw(); };
 hexc.readFloat = (w, h) => Array.from(renderer.readFloat(state.view, regions(), w, h));
-hexc.selectSlot = name => { panel.slot = state.doc.slots.findIndex(s => s.name === name); panel.render(state.doc); return compile(); };
+hexc.selectSlot = name => { panel.slot = state.doc.slots.findIndex(s => s.name === name); panel.render(state.doc); selectSlot(); };
 
 async function start() {
   if (captureSize) {
@@ -471,7 +486,7 @@ async function start() {
     state.schema = schema;
     renderer = new View($('canvas'), Object.fromEntries(names.map((n, i) => [n, sources[i]])));
     panel = new Panel($('panel'), schema, onEdit);
-    panel.onSlot = () => compile();
+    panel.onSlot = selectSlot;
     panel.textureSize = i => state.sizes[state.doc.slots[i]?.name];
     controls();
     await load();

@@ -1,7 +1,12 @@
-// The page's WebGL 2 renderer: hexc's GLSL ES 3.00 fragment shaders (one per program: hex-tiled, plain, weights, a
-// slot's values) with the vertex stage of templates/edit, their parameter blocks laid out as their manifests say, and
-// the textures the manifests name.
+// The page's WebGL 2 renderer: hexc's GLSL ES 3.00 fragment shaders with the vertex stage of templates/edit, their
+// parameter blocks laid out as their manifests say, and the textures the manifests name. The server sends two: the
+// material's views (templates/edit/views.glsl), linked three times as the hex-tiled view and the shown slot's weights
+// and values, and plain tiling.
 import * as geometry from './geometry.js';
+
+// The views' specialisation constants (templates/edit/views.glsl), as SPIRV-Cross's GLSL ES leaves them: macros.
+const kViewMacro = 'SPIRV_CROSS_CONSTANT_ID_1000', kSlotMacro = 'SPIRV_CROSS_CONSTANT_ID_1001';
+const kViews = { hex: 0, values: 1, weights: 2 };
 
 // The templates' own light direction (templates/builtin/lit.glsl): the page turns the frame to move the light.
 const kTemplateLight = (() => { const l = Math.hypot(1, 1, 2); return [1 / l, 1 / l, 2 / l]; })();
@@ -38,19 +43,26 @@ export class View {
     return program;
   }
 
-  // Compiles and links each program; throws an Error with WebGL's log (never leaves a half-set view).
-  setPrograms(programs) {
+  // Compiles and links each program, the views for the slot at `slot` in the server's `slots`; throws an Error with
+  // WebGL's log (never leaves a half-set view).
+  setPrograms(programs, slots, slot) {
     const built = {};
-    for (const [name, p] of Object.entries(programs)) if (p.fragment) built[name] = this.link(name, p);
+    if (programs.plain.fragment) built.plain = this.link('plain', programs.plain, '');
+    if (programs.views.fragment) {
+      const index = Math.max(0, slots.indexOf(slot));
+      for (const [name, view] of Object.entries(kViews))
+        built[name] = this.link(name, programs.views, `#define ${kViewMacro} ${view}\n#define ${kSlotMacro} ${index}\n`);
+    }
     for (const p of Object.values(this.programs)) this.gl.deleteProgram(p.program);
     this.programs = built;
   }
 
-  link(name, p) {
+  // `fragment` with `defines` after its #version line.
+  link(name, p, defines) {
     const gl = this.gl, glsl = p.manifest.targets.glsl;
-    const defines = glsl.inputs.map(i => `#define HEXC_INPUT_${i.location} ${i.name}\n`).join('');
-    const lines = this.vertexSource.split('\n');
-    const program = this.compileProgram(name, [lines[0], defines + lines.slice(1).join('\n')].join('\n'), p.fragment);
+    const after = (source, text) => { const lines = source.split('\n'); return [lines[0], text + lines.slice(1).join('\n')].join('\n'); };
+    const inputs = glsl.inputs.map(i => `#define HEXC_INPUT_${i.location} ${i.name}\n`).join('');
+    const program = this.compileProgram(name, after(this.vertexSource, inputs), after(p.fragment, defines));
     const params = p.manifest.parameters;
     const block = { data: new DataView(new ArrayBuffer(Math.max(16, params.size))), buffer: gl.createBuffer(), members: params.members };
     for (const m of params.members) this.write(block, m, m.value);
