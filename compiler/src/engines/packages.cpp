@@ -263,8 +263,8 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
         return {{},
                 {Diagnostic::make(Code::TargetUnsupported, {"--targets"}, "",
                                   "the " + std::string(toString(engine)) +
-                                      " package has no WGSL form: --targets wgsl with --engine gives Babylon.js's WGSL "
-                                      "(docs/engines.md); leave wgsl out for this engine")}};
+                                      " package has no WGSL form: --targets wgsl with --engine adds WGSL functions to "
+                                      "Babylon.js's package only (docs/engines.md); leave wgsl out for this engine")}};
     options = packageOptions(engine, options);
     if (isWebEngine(engine) || isHlslEngine(engine)) return compileForLanguage(material, engine, options);
     CompileResult r = compile(material, options);
