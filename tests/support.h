@@ -71,6 +71,16 @@ inline std::string runHexcStdout(const std::string& args) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// The wgsl target's translator for runHexc, as its `prefix`: HEXC_NODE_PATH at tests/node's npm packages (`npm ci
+// --prefix tests/node`, which .ci/test runs); "" with the reason in `why` when they or Node.js are missing.
+inline std::string nagaPrefix(std::string* why) {
+    const std::filesystem::path modules = std::filesystem::absolute("tests/node/node_modules");
+    if (std::system("node --version > /dev/null 2>&1") != 0) return *why = "no Node.js (`node`) on PATH", "";
+    if (!std::filesystem::exists(modules / "naga-wasm" / "package.json"))
+        return *why = "no naga-wasm in " + modules.string() + " (npm ci --prefix tests/node)", "";
+    return "HEXC_NODE_PATH=" + modules.string();
+}
+
 }  // namespace hexc::test
 
 // Without a Vulkan device a test skips with the reason, unless HEXC_REQUIRE_VULKAN is set (CI), where it fails.
@@ -79,4 +89,14 @@ inline std::string runHexcStdout(const std::string& args) {
     if (!hexc::test::runner(&whyNoVulkan)) {                                                   \
         if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << "no Vulkan device: " << whyNoVulkan; \
         GTEST_SKIP() << "no Vulkan device: " << whyNoVulkan;                                   \
+    }
+
+// Declares `naga`, the runHexc prefix for the wgsl target; without the npm packages a test skips, unless
+// HEXC_REQUIRE_BROWSER=1 (.ci/test, as for the other npm-backed tests), where it fails.
+#define REQUIRE_NAGA()                                                                                  \
+    std::string whyNoNaga;                                                                              \
+    const std::string naga = hexc::test::nagaPrefix(&whyNoNaga);                                        \
+    if (naga.empty()) {                                                                                 \
+        if (std::getenv("HEXC_REQUIRE_BROWSER")) FAIL() << "the wgsl target cannot run: " << whyNoNaga; \
+        GTEST_SKIP() << "the wgsl target cannot run: " << whyNoNaga;                                    \
     }

@@ -14,13 +14,14 @@ namespace {
 
 const char* const kLibraryHelp = R"(hexc library - hexc's hex-tiling functions for shaders you write by hand
 
-  hexc library --target hlsl|glsl|msl|spirv-asm [--target ...] -o DIR
+  hexc library --target hlsl|glsl|msl|wgsl|spirv-asm [--target ...] -o DIR
 
-Writes DIR/hexc_hextiling.{hlsl,glsl,metal,spvasm}: the colour path (hexcColor), the normal map derivative path
+Writes DIR/hexc_hextiling.{hlsl,glsl,metal,wgsl,spvasm}: the colour path (hexcColor), the normal map derivative path
 (hexcDeriv), their 1-tap variants (hexcColor1, hexcDeriv1), the lattices of each mode and mask (hexcTilesStable,
 hexcTilesPaper, hexcTilesChecker, hexcTilesNoise), shared by every texture that uses the same coordinates, and
 the settings as structs (hexcLattice(), hexcBlend()). Made from the GLSL hexc injects into materials, through
-glslang and SPIRV-Cross. docs/library.md documents each function and shows a whole shader per target.
+glslang and SPIRV-Cross (WGSL: naga, which needs Node.js and npm naga-wasm as the wgsl target does). docs/library.md
+documents each function and shows a whole shader per target.
 )";
 
 }  // namespace
@@ -41,8 +42,8 @@ int libraryCommand(const std::vector<std::string>& args) {
     std::vector<OutputFile> files;
     try {
         files = hexcLibrary(chosen);
-    } catch (const CompileError& e) {  // the embedded library does not compile: a bug in hexc, shown where it is
-        std::cerr << formatAll(e.diagnostics) << "hexc: the hex-tiling library does not compile\n";
+    } catch (const CompileError& e) {  // wgsl's translator is missing, or the embedded library does not compile (a hexc bug)
+        std::cerr << formatAll(e.diagnostics) << "hexc: no library written\n";
         return kInvalidInput;
     }
     try {

@@ -112,7 +112,7 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     const std::vector<Target> targets = sortedTargets(options);
     if (plan.functions && targets.front() == Target::Spirv)
         throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {"--functions"}, "",
-                                             "the functions output is source to include in an engine's material: HLSL, GLSL or MSL, "
+                                             "the functions output is source to include in an engine's material: HLSL, GLSL, MSL or WGSL, "
                                              "not SPIR-V")}};
     result.glsl = generateGlsl(plan);
     ShaderCode code = fragmentCode(result.glsl, plan, options, targets, result.diagnostics);

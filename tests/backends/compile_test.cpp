@@ -449,10 +449,33 @@ TEST(Library, CommandLineErrors) {
     std::string err;
     EXPECT_EQ(runHexc("library -o /tmp/hexc_library_errors", &err), 2);
     EXPECT_NE(err.find("--target is required"), std::string::npos) << err;
-    EXPECT_EQ(runHexc("library --target wgsl -o /tmp/hexc_library_errors", &err), 2);
-    EXPECT_NE(err.find("wgsl"), std::string::npos) << err;
+    // Without Node.js the wgsl library says what to install and writes nothing.
+    EXPECT_EQ(runHexc("library --target wgsl,hlsl -o /tmp/hexc_library_errors/wgsl", &err, "PATH=/nonexistent"), 1);
+    EXPECT_NE(err.find("error[HX300]: cannot run `node`"), std::string::npos) << err;
+    EXPECT_NE(err.find("npm install naga-wasm@30.1.0"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists("/tmp/hexc_library_errors/wgsl"));
     EXPECT_EQ(runHexc("library --target hlsl -o /dev/null/x", &err), 3);
     EXPECT_NE(err.find("/dev/null/x"), std::string::npos) << err;
+}
+
+// WGSL's library through naga: the public functions under their names (naga appends `_` to a name ending in a digit),
+// each struct's documentation, no entry point, stage variable or resource of its own, and a module naga validates.
+TEST(Library, WgslIsAModuleOfTheFunctions) {
+    REQUIRE_NAGA();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_library_wgsl";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(runHexc("library --target wgsl -o " + dir.string(), &err, naga), 0) << err;
+    const std::string wgsl = readFile(dir / "hexc_hextiling.wgsl");
+    EXPECT_NE(wgsl.find("through glslang and naga. Do not edit."), std::string::npos);
+    EXPECT_NE(wgsl.find("fn hexcColor(tex_7: texture_2d<f32>, samp_7: sampler, t_7: ptr<function, HexcTiles>"), std::string::npos);
+    for (const char* name : {"fn hexcLattice(", "fn hexcBlend(", "fn hexcTilesPaper(", "fn hexcTilesChecker(", "fn hexcTilesNoise(",
+                             "fn hexcColor1_(", "fn hexcDeriv1_(", "fn hexcDeriv(", "fn hexcDerivToNormal(", "fn hexcChannel("})
+        EXPECT_NE(wgsl.find(name), std::string::npos) << name;
+    EXPECT_NE(wgsl.find("    rotation: f32,  // = 0.0; "), std::string::npos) << wgsl.substr(0, 1200);
+    for (const char* cut : {"hexcLib", "@fragment", "var<private>", "@group", "fn main"})
+        EXPECT_EQ(wgsl.find(cut), std::string::npos) << cut;
+    EXPECT_EQ(std::system((naga + " node tests/backends/wgsl_check.mjs " + (dir / "hexc_hextiling.wgsl").string()).c_str()), 0);
 }
 
 // Modules are validated without friendly names (a fifth of a compile); a failure is reported with them.

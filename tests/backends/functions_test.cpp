@@ -8,6 +8,7 @@
 #include "hexc/compiler.h"
 #include "hexc/engines.h"
 #include "hexc/spirv.h"
+#include "support.h"
 
 using namespace hexc;
 
@@ -90,6 +91,26 @@ TEST(Functions, TriplanarMaterialsAreRefused) {
     EXPECT_TRUE(r.files.empty());
 }
 
+// WGSL's functions (naga): each engine function by its name, taking the uv by pointer, without the entry point, its
+// body or the stage's variables, the resources at their @group and @binding; a module naga validates.
+TEST(Functions, WgslKeepsTheFunctionsAndTheirResources) {
+    REQUIRE_NAGA();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_functions_wgsl";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(hexc::test::runHexc("materials/rock.json --functions --targets wgsl,glsl -o " + dir.string(), &err, naga), 0) << err;
+    const std::string wgsl = hexc::test::readFile(dir / "rock.functions.wgsl");
+    for (const char* expected :
+         {"fn hexc_albedo(", ": ptr<function, vec2<f32>>) -> vec4<f32> {", "fn hexc_normal(", "fn hexc_normal_normal(",
+          "@group(0) @binding(2) var hexcTex_albedo: texture_2d<f32>;", "@group(0) @binding(1) var hexcSampler: sampler;"})
+        EXPECT_NE(wgsl.find(expected), std::string::npos) << expected << "\n" << wgsl.substr(0, 800);
+    for (const char* cut : {"@fragment", "var<private>", "rock_frag", "hexcEngine"}) EXPECT_EQ(wgsl.find(cut), std::string::npos) << cut;
+    const nlohmann::json manifest = nlohmann::json::parse(hexc::test::readFile(dir / "rock.manifest.json"));
+    EXPECT_EQ(manifest["targets"]["wgsl"]["file"], "rock.functions.wgsl");
+    EXPECT_FALSE(manifest["targets"]["wgsl"].contains("entry_point"));
+    EXPECT_EQ(std::system((naga + " node tests/backends/wgsl_check.mjs " + (dir / "rock.functions.wgsl").string()).c_str()), 0);
+}
+
 TEST(Functions, SpirvIsRefused) {
     ParseResult p = parseMaterialFile("materials/rock.json");
     CompileOptions options;
@@ -113,6 +134,33 @@ std::string package(const std::string& name, Engine engine, Diagnostics* diagnos
         if (f.name.starts_with(dir + "/" + name + ".") && !f.name.ends_with(".json") && !f.name.ends_with(".png")) return f.contents;
     ADD_FAILURE() << "no package source";
     return "";
+}
+
+// --targets wgsl gives Babylon.js's package its WGSL form (naga's functions in the module's data, beside the GLSL);
+// every other engine has none and refuses it, saying which engine takes it.
+TEST(EnginePackages, OnlyBabylonTakesWgsl) {
+    ParseResult p = parseMaterialFile("materials/rock.json");
+    CompileOptions options;
+    options.targets = {Target::Wgsl};
+    for (Engine engine : {Engine::Godot3, Engine::Godot4, Engine::Filament, Engine::Threejs, Engine::Unity, Engine::Unreal}) {
+        CompileResult r = compileForEngine(*p.material, engine, options);
+        EXPECT_FALSE(r.ok());
+        EXPECT_TRUE(r.files.empty());
+        EXPECT_NE(formatAll(r.diagnostics).find("error[HX300]: the " + std::string(toString(engine)) + " package has no WGSL form"),
+                  std::string::npos)
+            << formatAll(r.diagnostics);
+    }
+    REQUIRE_NAGA();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_babylon_wgsl";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(hexc::test::runHexc("materials/rock.json --engine babylon --targets wgsl -o " + dir.string(), &err, naga), 0) << err;
+    const std::string module = hexc::test::readFile(dir / "babylon" / "rock.babylon.js");
+    const size_t start = module.find("const hexc = ") + 13;
+    const nlohmann::json data = nlohmann::json::parse(module.substr(start, module.find(";\n", start) - start));
+    EXPECT_NE(data["wgsl"].get<std::string>().find("fn hexc_albedo("), std::string::npos);
+    EXPECT_NE(data["glsl"].get<std::string>().find("vec4 hexc_albedo(highp vec2 uv)"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(dir / "babylon" / "rock.functions.wgsl"));  // the module holds it
 }
 
 TEST(EnginePackages, GodotGetsItsDialectAndItsInputs) {

@@ -2,6 +2,7 @@
 // source root), every other file there is what hexc writes with them. A change to codegen, the library or a backend
 // shows up as a readable diff: SPIR-V is kept as its disassembly (<file>.spvasm) and a texture hexc derives as its
 // size and digest (<file>.digest). HEXC_UPDATE_GOLDEN=1 rewrites the folders instead (tests/update_golden.sh).
+// A folder whose args name the wgsl target needs tests/node's npm packages (support.h, REQUIRE_NAGA).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -79,8 +80,13 @@ TEST_P(Golden, OutputsMatch) {
     args.erase(args.find_last_not_of("\n") + 1);
     const fs::path out = fs::temp_directory_path() / ("hexc_golden_" + GetParam());
     fs::remove_all(out);
+    std::string prefix;  // the wgsl target's goldens run with tests/node's naga-wasm
+    if (args.find("wgsl") != std::string::npos) {
+        REQUIRE_NAGA();
+        prefix = naga;
+    }
     std::string err;
-    ASSERT_EQ(runHexc(args + " -q --no-cache -o " + out.string(), &err), 0) << args << "\n" << err;
+    ASSERT_EQ(runHexc(args + " -q --no-cache -o " + out.string(), &err, prefix), 0) << args << "\n" << err;
     const std::map<std::string, std::string> now = goldenFiles(out);
     if (std::getenv("HEXC_UPDATE_GOLDEN")) {
         for (const auto& entry : fs::directory_iterator(folder))

@@ -333,3 +333,37 @@ TEST(ShaderCache, CommandLineHitsAndAnotherBuildMisses) {
     ASSERT_EQ(runHexc((dir / "rock.json").string() + " -v --force --no-cache -o " + (dir / "out").string(), &err), 0) << err;
     EXPECT_NE(err.find("1 compiled, 0 from the cache (this run only)"), std::string::npos) << err;
 }
+
+// naga writes the wgsl target's code, so another naga-wasm (its package.json's version) is another cache entry and
+// another stamp: the entry of the old one is not used, the outputs are not up to date, and the banner names it.
+// Through the command line with tests/node's naga-wasm, under a package.json whose version the test changes.
+TEST(ShaderCache, AnotherNagaVersionMisses) {
+    REQUIRE_NAGA();
+    const fs::path dir = freshFolder("hexc_cache_naga");
+    const fs::path modules = fs::absolute("tests/node/node_modules");
+    fs::create_directories(dir / "node_modules" / "naga-wasm");
+    fs::create_directory_symlink(modules / "naga-wasm" / "dist", dir / "node_modules" / "naga-wasm" / "dist");
+    auto setVersion = [&](const std::string& v) {
+        nlohmann::json package = nlohmann::json::parse(readFile(modules / "naga-wasm" / "package.json").value());
+        package["version"] = v;
+        std::ofstream(dir / "node_modules" / "naga-wasm" / "package.json") << package.dump();
+    };
+    const std::string args =
+        "materials/rock.json -v --targets wgsl --cache-dir " + (dir / "cache").string() + " -o " + (dir / "out").string();
+    const std::string env = "HEXC_NODE_PATH=" + (dir / "node_modules").string();
+    std::string err;
+    setVersion("30.1.0");
+    ASSERT_EQ(runHexc(args, &err, env), 0) << err;
+    EXPECT_NE(err.find("shader code: 1 compiled, 0 from the cache"), std::string::npos) << err;
+    ASSERT_EQ(runHexc(args + " --force", &err, env), 0) << err;
+    EXPECT_NE(err.find("shader code: 0 compiled, 1 from the cache"), std::string::npos) << err;
+    EXPECT_NE(readFile(dir / "out" / "rock.frag.wgsl").value().find("// Settings: naga-wasm 30.1.0; optimised;"), std::string::npos);
+
+    setVersion("30.1.1");
+    ASSERT_EQ(runHexc(args, &err, env), 0) << err;
+    EXPECT_NE(err.find("rock: compiled"), std::string::npos) << err;  // not up to date by the stamp
+    EXPECT_NE(err.find("shader code: 1 compiled, 0 from the cache"), std::string::npos) << err;
+    EXPECT_NE(readFile(dir / "out" / "rock.frag.wgsl").value().find("// Settings: naga-wasm 30.1.1; optimised;"), std::string::npos);
+    // Only the wgsl target's key takes naga's: the other targets' entries stay.
+    EXPECT_EQ(codeOptionsKey(CompileOptions()).find("naga"), std::string::npos);
+}

@@ -127,7 +127,7 @@ std::string withoutBanner(std::string source);
 
 // The options that change what glslang, spirv-opt and SPIRV-Cross make of the generated GLSL, in one line for keys
 // (the shader cache's, the stamps'): the targets, HLSL shader model, GLSL and MSL versions, --bake, --debug,
-// --functions and the uv origin.
+// --functions and the uv origin; with the wgsl target, the naga-wasm package and driver that translate it.
 std::string codeOptionsKey(const CompileOptions& options);
 
 // The shader tool chain hexc is built with, one per line: "glslang 12.0.0", "SPIRV-Tools v2022.4 ...",

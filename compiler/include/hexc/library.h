@@ -8,8 +8,9 @@
 
 namespace hexc {
 
-// The library for each of `targets`: "hexc_hextiling.{spvasm,hlsl,glsl,metal}", from one compile. Made from the same GLSL as
-// every material, through glslang and SPIRV-Cross, unoptimised so that every function keeps its name and signature.
+// The library for each of `targets`: "hexc_hextiling.{spvasm,hlsl,glsl,metal,wgsl}", from one compile. Made from the same GLSL
+// as every material, through glslang and SPIRV-Cross (WGSL: naga, whose missing translator is a CompileError saying what to
+// install), unoptimised so that every function keeps its name and signature.
 // HLSL and MSL take a texture and a sampler; OpenGL GLSL one sampler2D for both; SPIR-V is written as assembly.
 // Throws CompileError on a hexc bug.
 std::vector<OutputFile> hexcLibrary(const std::vector<Target>& targets);

@@ -58,6 +58,12 @@ TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
 // WGSL (wgsl.cpp): the module translated by naga, resources at their Vulkan set and binding as @group and @binding.
 TargetOutput emitWgsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput vertexWgsl(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry);
+// `hexc library`'s module as WGSL, without its stage (wgslWithoutStage): the library's functions take their arguments
+// as naga writes a glslang function's, `ptr<function, T>` but for textures and samplers.
+std::string libraryWgsl(const std::vector<uint32_t>& spirv);
+// naga's WGSL of a fragment module up to its entry point `entry`, without the private variables holding the stage's
+// inputs and outputs and without `fn <entry>_1`, the entry's body; each resource's @group and @binding on its declaration's line.
+std::string wgslWithoutStage(const std::string& wgsl, const std::string& entry);
 TargetOutput describeSpirv(const std::vector<uint32_t>& spirv, const ShaderPlan& plan);
 
 // Whether the text targets carry `#line` directives (--debug, unless --line-directives none).

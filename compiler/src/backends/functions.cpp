@@ -1,7 +1,7 @@
 // The functions output (CompileOptions::functions): a target's source of the `functions` template without its main,
 // its stage input and output and the structs that carry them, which leaves the engine functions and the resources
 // they read (MSL has no global resources: its functions take theirs as parameters). The cut is of SPIRV-Cross's own
-// layout of each language, which the functions tests check on every target.
+// layout of each language (naga's for WGSL: wgsl.cpp), which the functions tests check on every target.
 #include <sstream>
 
 #include "backends/backends.h"
@@ -18,7 +18,7 @@ bool stageStruct(const std::string& line, const std::string& entry) {
 }  // namespace
 
 std::string functionsOnly(const std::string& source, Target target, const std::string& entry) {
-    std::istringstream in(source);
+    std::istringstream in(target == Target::Wgsl ? wgslWithoutStage(source, entry) : source);
     std::string out, line;
     bool inStruct = false;
     while (std::getline(in, line) && !line.starts_with(targetRow(target).entryLine)) {

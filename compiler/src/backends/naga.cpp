@@ -8,9 +8,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <mutex>
 
+#include <nlohmann/json.hpp>
+
+#include "hexc/hash.h"
 #include "hexc/templates.h"
 
 extern char** environ;
@@ -104,6 +110,21 @@ private:
 };
 
 }  // namespace
+
+std::string nagaVersion() {
+    // Where naga.mjs imports it from: HEXC_NODE_PATH, or the working folder when that is unset.
+    const char* folder = std::getenv("HEXC_NODE_PATH");
+    std::ifstream in(std::filesystem::path(folder ? folder : "") / "naga-wasm" / "package.json");
+    const nlohmann::json package = nlohmann::json::parse(in, nullptr, false);
+    const bool found = package.is_object() && package.contains("version") && package["version"].is_string();
+    return "naga-wasm " + (found ? package["version"].get<std::string>() : std::string("(not found)"));
+}
+
+std::string nagaIdentity() {
+    ContentHash driver;
+    driver.add(*embeddedText("naga.mjs"));
+    return nagaVersion() + ", driver " + driver.hex();
+}
 
 NagaResult nagaWgsl(const std::vector<uint32_t>& spirv) {
     static std::mutex mutex;

@@ -17,4 +17,10 @@ struct NagaResult {
 // `spirv` (without OpLine: naga's reader stops at them) as WGSL.
 NagaResult nagaWgsl(const std::vector<uint32_t>& spirv);
 
+// The naga-wasm package nagaWgsl loads (HEXC_NODE_PATH/naga-wasm), as "naga-wasm VERSION" from its package.json, read on
+// each call (no Node needed); "naga-wasm (not found)" when there is none.
+std::string nagaVersion();
+// Everything that can change nagaWgsl's output, for the shader cache's key: that version and the driver script.
+std::string nagaIdentity();
+
 }  // namespace hexc

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "backends/backends.h"
+#include "backends/naga.h"
 #include "spirv/combined.h"
 #include "spirv/lines.h"
 #include "hexc/spirv.h"
@@ -32,6 +33,7 @@ TargetOutput vertexSpirv(const std::vector<uint32_t>& spirv, const CompileOption
 
 std::string sameName(const std::string& entry) { return entry; }
 std::string noSettings(const CompileOptions&) { return ""; }
+std::string settingsWgsl(const CompileOptions&) { return nagaVersion(); }
 
 // The text targets are written from `text`, the module with the source lines they are to show.
 constexpr std::array<TargetRow, kTargetCount> kRows = {{
@@ -49,7 +51,7 @@ constexpr std::array<TargetRow, kTargetCount> kRows = {{
     // naga reads no OpLine, so --debug's lines do not reach WGSL; not a default target: it needs Node.js (naga.h).
     {Target::Wgsl, "wgsl", "", "wgsl", "vulkan", false, false, "@fragment",
      [](const auto& spirv, const auto&, const auto& plan, const auto& options) { return emitWgsl(spirv, plan, options); }, vertexWgsl,
-     sameName, noSettings, nullptr, nullptr, nullptr},
+     sameName, settingsWgsl, "wgsl", "wgsl", libraryWgsl},
 }};
 
 // A row per Target, in its order (a missing row is zero: the Spirv target without a name).
@@ -130,13 +132,15 @@ std::string joined(const std::vector<std::string>& names) {
 }  // namespace
 
 std::string codeOptionsKey(const CompileOptions& options) {
+    const bool wgsl = std::find(options.targets.begin(), options.targets.end(), Target::Wgsl) != options.targets.end();
     std::string key;
     for (Target t : std::set<Target>(options.targets.begin(), options.targets.end())) key += std::string(toString(t)) + ",";
     return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
            std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
            (options.debug ? ",debug," + std::string(toString(options.lineDirectives)) : "") + (options.functions ? ",functions" : "") +
            (options.engines.empty() ? "" : ",engines " + joined(options.engines)) +
-           (options.uvOrigin == UvOrigin::TopLeft ? "" : ",uv " + std::string(toString(options.uvOrigin)));
+           (options.uvOrigin == UvOrigin::TopLeft ? "" : ",uv " + std::string(toString(options.uvOrigin))) +
+           (wgsl ? "," + nagaIdentity() : "");  // another naga writes other WGSL
 }
 
 std::vector<Target> sortedTargets(const CompileOptions& options) {

@@ -6,10 +6,12 @@
 
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 #include "backends/backends.h"
 #include "backends/naga.h"
 #include "spirv/lines.h"
+#include "spirv/strings.h"
 
 namespace hexc {
 namespace {
@@ -39,8 +41,11 @@ void refuseUntranslatable(const std::vector<uint32_t>& spirv, const ShaderPlan& 
     if (!found.empty()) throw CompileError{found};
 }
 
+// What naga reads: no OpLine, and function names without glslang's signatures.
+NagaResult naga(const std::vector<uint32_t>& spirv) { return nagaWgsl(plainFunctionNames(withoutLines(spirv))); }
+
 std::string translated(const std::vector<uint32_t>& spirv, const ShaderPlan& plan) {
-    NagaResult r = nagaWgsl(withoutLines(spirv));
+    NagaResult r = naga(spirv);
     if (r.wgsl) return *r.wgsl;
     const SourceLoc at = r.unavailable ? SourceLoc{} : SourceLoc{plan.templateShown, 0, 0};  // a missing tool is no file's fault
     throw CompileError{{Diagnostic::make(Code::TargetUnsupported, at, "",
@@ -74,9 +79,32 @@ TargetOutput emitWgsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan
 }
 
 TargetOutput vertexWgsl(const std::vector<uint32_t>& spirv, const CompileOptions&, const std::string& entry) {
-    NagaResult r = nagaWgsl(withoutLines(spirv));
+    NagaResult r = naga(spirv);
     if (!r.wgsl) throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {}, "", "the wgsl vertex stage: " + r.error)}};
     return {*r.wgsl, entry, {}};
+}
+
+std::string wgslWithoutStage(const std::string& wgsl, const std::string& entry) {
+    std::istringstream in(wgsl);
+    std::string out, line, attributes;
+    bool inBody = false;
+    while (std::getline(in, line) && !line.starts_with("@fragment")) {
+        if (line.starts_with("@group(")) {  // naga puts a resource's @group and @binding on a line of their own
+            attributes = line;
+            continue;
+        }
+        line = attributes + line, attributes.clear();
+        if (line == "fn " + entry + "_1() {") inBody = true;
+        if (!inBody && !line.starts_with("var<private> ")) out += line + "\n";
+        if (inBody && line == "}") inBody = false;
+    }
+    return out;
+}
+
+std::string libraryWgsl(const std::vector<uint32_t>& spirv) {
+    NagaResult r = naga(spirv);
+    if (!r.wgsl) throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {}, "", r.unavailable ? r.error : "naga: " + r.error)}};
+    return wgslWithoutStage(*r.wgsl, "main");
 }
 
 }  // namespace hexc

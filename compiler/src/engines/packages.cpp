@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -159,19 +160,25 @@ Wiring wire(const Material& material, const nlohmann::json& functions, Engine en
 std::vector<OutputFile> inFolder(Engine engine, std::vector<OutputFile> files, std::vector<OutputFile> package) {
     std::vector<OutputFile> out;
     for (OutputFile& f : files)
-        if (!f.name.ends_with(".functions.glsl") && !f.name.ends_with(".functions.hlsl"))
+        if (f.name.find(".functions.") == std::string::npos)
             out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
     for (OutputFile& f : package) out.push_back({std::string(toString(engine)) + "/" + f.name, std::move(f.contents)});
     return out;
 }
 
+bool asksForWgsl(const CompileOptions& options) {
+    return std::find(options.targets.begin(), options.targets.end(), Target::Wgsl) != options.targets.end();
+}
+
 // The functions output a package holds: GLSL 330 for Godot and Filament, GLSL ES 3.00 for the web engines, HLSL for
-// Unity and Unreal; every setting baked.
+// Unity and Unreal, and Babylon's WGSL too when --targets names wgsl; every setting baked.
 CompileOptions packageOptions(Engine engine, CompileOptions options) {
+    const bool wgsl = engine == Engine::Babylon && asksForWgsl(options);
     options.engines.clear();
     options.functions = true;
     options.bake = true;  // the engine's material has no block for hexc's parameters
     options.targets = {isHlslEngine(engine) ? Target::Hlsl : Target::Glsl};
+    if (wgsl) options.targets.push_back(Target::Wgsl);
     options.glslEs = isWebEngine(engine);
     options.glslVersion = options.glslEs ? 300 : 330;
     return options;
@@ -195,12 +202,14 @@ CompileResult compileForLanguage(const Material& material, Engine engine, Compil
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;
     const auto file = [&](std::string_view suffix) {
-        return std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& f) { return f.name.ends_with(suffix); })->contents;
+        auto f = std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& f) { return f.name.ends_with(suffix); });
+        return f == r.files.end() ? std::optional<std::string>() : f->contents;
     };
-    const nlohmann::json manifest = nlohmann::json::parse(file(".manifest.json"));
+    const nlohmann::json manifest = nlohmann::json::parse(*file(".manifest.json"));
     const bool bottomLeft = options.uvOrigin == UvOrigin::BottomLeft;
-    std::vector<OutputFile> package = hlsl ? hlslPackage(material, engine, manifest, file(".functions.hlsl"), bottomLeft, r.diagnostics)
-                                           : webPackage(material, engine, manifest, file(".functions.glsl"), bottomLeft, r.diagnostics);
+    std::vector<OutputFile> package =
+        hlsl ? hlslPackage(material, engine, manifest, *file(".functions.hlsl"), bottomLeft, r.diagnostics)
+             : webPackage(material, engine, manifest, {*file(".functions.glsl"), file(".functions.wgsl")}, bottomLeft, r.diagnostics);
     r.files = r.ok() ? inFolder(engine, std::move(r.files), std::move(package)) : std::vector<OutputFile>{};
     return r;
 }
@@ -250,6 +259,12 @@ std::optional<Engine> engineNamed(std::string_view name) {
 }
 
 CompileResult compileForEngine(const Material& material, Engine engine, CompileOptions options) {
+    if (engine != Engine::Babylon && asksForWgsl(options))
+        return {{},
+                {Diagnostic::make(Code::TargetUnsupported, {"--targets"}, "",
+                                  "the " + std::string(toString(engine)) +
+                                      " package has no WGSL form: --targets wgsl with --engine adds WGSL functions to "
+                                      "Babylon.js's package only (docs/engines.md); leave wgsl out for this engine")}};
     options = packageOptions(engine, options);
     if (isWebEngine(engine) || isHlslEngine(engine)) return compileForLanguage(material, engine, options);
     CompileResult r = compile(material, options);

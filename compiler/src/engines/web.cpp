@@ -134,13 +134,14 @@ std::vector<std::string> webPackageNames(const Material& material, Engine engine
     return names;
 }
 
-std::vector<OutputFile> webPackage(const Material& material, Engine engine, const nlohmann::json& manifest, const std::string& glsl,
+std::vector<OutputFile> webPackage(const Material& material, Engine engine, const nlohmann::json& manifest, const WebFunctions& functions,
                                    bool uvBottomLeft, Diagnostics& diagnostics) {
     const WebEngine& web = webEngine(engine);
     nlohmann::json data = {{"material", material.name},
                            {"uv_origin", toString(uvBottomLeft ? UvOrigin::BottomLeft : UvOrigin::TopLeft)},
-                           {"glsl", withoutPrecision(glsl)},
+                           {"glsl", withoutPrecision(functions.glsl)},
                            {"textures", textures(material, web, manifest, diagnostics)}};
+    if (functions.wgsl) data["wgsl"] = *functions.wgsl;
     wire(material, web, manifest, data, diagnostics);
     const std::string templ = std::string("package.") + web.suffix + ".js", marker = "/* hexc:data */ null";
     std::string module = *embeddedText(templ);

@@ -3,8 +3,11 @@
 #include <spirv-tools/libspirv.h>
 
 #include <cstring>
+#include <set>
 #include <stdexcept>
 #include <string>
+
+#include "spirv/module.h"
 
 namespace hexc {
 namespace {
@@ -49,6 +52,23 @@ std::vector<uint32_t> replaceInStrings(const std::vector<uint32_t>& words, std::
     spvContextDestroy(context);
     if (result != SPV_SUCCESS) throw std::runtime_error("SPIR-V strings: the module does not parse");
     return r.out;
+}
+
+std::vector<uint32_t> plainFunctionNames(const std::vector<uint32_t>& words) {
+    spirv::Module m = spirv::parse(words, "function names");
+    std::set<uint32_t> functions;
+    for (const spirv::Instruction& i : m.code)
+        if (i.opcode() == spv::OpFunction) functions.insert(i.words[2]);
+    for (spirv::Instruction& i : m.code) {
+        if (i.opcode() != spv::OpName || !functions.count(i.words[1])) continue;
+        const std::string name(reinterpret_cast<const char*>(i.words.data() + 2));
+        if (name.find('(') == std::string::npos) continue;
+        const std::vector<uint32_t> plain = spirvString(name.substr(0, name.find('(')));
+        i.words.resize(2);
+        i.words.insert(i.words.end(), plain.begin(), plain.end());
+        i.words[0] = uint32_t(i.words.size()) << 16 | spv::OpName;
+    }
+    return m.words();
 }
 
 }  // namespace hexc
