@@ -738,10 +738,10 @@ vec2 hexc_normal(vec2 uv)
     return _1578;
 }
 
-#line 670 "hexc/hextiling.glsl"
+#line 673 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 670 "hexc/hextiling.glsl"
+#line 673 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

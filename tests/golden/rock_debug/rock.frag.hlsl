@@ -754,10 +754,10 @@ float2 hexc_normal(float2 uv)
     return _1578;
 }
 
-#line 670 "hexc/hextiling.glsl"
+#line 673 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 670 "hexc/hextiling.glsl"
+#line 673 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

@@ -830,11 +830,11 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
     return _1578;
 }
 
-#line 670 "hexc/hextiling.glsl"
+#line 673 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 670 "hexc/hextiling.glsl"
+#line 673 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 
