@@ -84,7 +84,7 @@ ${settings}
 //@ color.plain
 // ${srgb}: MaterialX mode's sRGB texture, bound as stored and decoded after filtering (as MaterialX's <image>).
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcMxDecoded(hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights), ${srgb});
+    return hexcMxDecoded(${plain}(hexcTex_${name}, hexcSampler, st, dx, dy, weights), ${srgb});
 }
 
 //@ color.histogram
@@ -132,7 +132,7 @@ ${settings}
 
 //@ scalar.plain
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcMxDecoded(hexcPlainColor(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, weights), ${srgb})[${channel}];
+    return hexcMxDecoded(${plain}(hexcTex_${name}, hexcSampler, st, dx, dy, weights), ${srgb})[${channel}];
 }
 
 //@ normal.hex
@@ -149,7 +149,7 @@ ${settings}
 
 //@ normal.plain
 vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcPlainDeriv(hexcTex_${name}, hexcSampler, st, dx, dy, ${explicit}, ${flipy}, weights);
+    return hexcNormalToDeriv(2.0 * ${plain}(hexcTex_${name}, hexcSampler, st, dx, dy, weights).xyz - 1.0, ${flipy});
 }
 
 //@ uv

@@ -80,8 +80,8 @@ def rock_copy(prefix):
         return folder, material, f.read()
 
 
-def browser_or_skip():
-    """Selenium's Chrome on Debian's chromium and chromedriver, a fresh profile; exits 77 (skip) without them."""
+def browser_or_skip(flags=CHROMIUM_FLAGS):
+    """Selenium's Chrome on Debian's chromium and chromedriver with `flags`, a fresh profile; exits 77 (skip) without them."""
     missing = [p for p in ("/usr/bin/chromium", "/usr/bin/chromedriver") if not os.path.exists(p)]
     try:
         from selenium import webdriver
@@ -94,7 +94,7 @@ def browser_or_skip():
     options = webdriver.ChromeOptions()
     options.binary_location = "/usr/bin/chromium"
     profile = tempfile.mkdtemp(prefix="hexc-edit-test-")
-    for flag in CHROMIUM_FLAGS + ["--user-data-dir=" + profile, "--window-size=1280,800"]:
+    for flag in flags + ["--user-data-dir=" + profile, "--window-size=1280,800"]:
         options.add_argument(flag)
     driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
     driver.set_script_timeout(TIMEOUT)

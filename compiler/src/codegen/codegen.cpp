@@ -96,7 +96,7 @@ public:
         Tokens t = {
             {"name", sp.name},
             {"type", sp.type},
-            {"explicit", literal(sp.explicitGradients)},
+            {"plain", sp.explicitGradients ? "hexcPlainColorGrad" : "hexcPlainColor"},
             {"flipy", literal(sp.flipY)},
             {"channel", literal(sp.channel)},
             {"texture", sp.texture},

@@ -1,12 +1,15 @@
-// Plain tiling, for slots with hex-tiling disabled: one fetch, hardware gradients, or the given ones where
-// the call may sit in non-uniform control flow (`explicitGrad`, a literal: the triplanar planes).
-vec4 hexcPlainColor(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, bool explicitGrad, out vec3 weights) {
+// Plain tiling, for slots with hex-tiling disabled: one fetch with hardware gradients, or (hexcPlainColorGrad) with the
+// given ones where the call may sit in non-uniform control flow (the triplanar planes). Two functions, not a flag: WGSL
+// refuses an implicit-gradient fetch anywhere in a function called from non-uniform flow, even on a branch a literal
+// flag never takes, and --debug keeps the calls.
+vec4 hexcPlainColor(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, out vec3 weights) {
     weights = vec3(1.0, 0.0, 0.0);
-    return explicitGrad ? textureGrad(sampler2D(tex, samp), st, dx, dy) : texture(sampler2D(tex, samp), st);
+    return texture(sampler2D(tex, samp), st);
 }
 
-vec2 hexcPlainDeriv(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, bool explicitGrad, bool flipY, out vec3 weights) {
-    return hexcNormalToDeriv(2.0 * hexcPlainColor(tex, samp, st, dx, dy, explicitGrad, weights).xyz - 1.0, flipY);
+vec4 hexcPlainColorGrad(texture2D tex, sampler samp, vec2 st, vec2 dx, vec2 dy, out vec3 weights) {
+    weights = vec3(1.0, 0.0, 0.0);
+    return textureGrad(sampler2D(tex, samp), st, dx, dy);
 }
 
 // The paper's conversion of a blended derivative back to a tangent-space normal (Section 3).

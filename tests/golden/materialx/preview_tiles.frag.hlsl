@@ -9,7 +9,7 @@ struct HexcTap
     float invScale;
 };
 
-static float _2934;
+static float _2846;
 
 cbuffer HexcParams : register(b0)
 {
@@ -47,79 +47,79 @@ struct SPIRV_Cross_Output
 
 void frag_main()
 {
-    float2 _1294 = v_uv * hexcParams_albedo_tiling;
-    float2 _1296 = ddx(_1294);
-    float2 _1298 = ddy(_1294);
-    float2 _1367 = _1294 * 3.4641015529632568359375f;
-    float _1371 = _1367.y;
-    float2 _1377 = float2(mad(-0.57735025882720947265625f, _1371, _1367.x), 1.1547005176544189453125f * _1371);
-    float2 _1388 = floor(_1377);
-    int2 _1389 = int2(_1388);
-    float2 _1393 = _1377 - _1388;
-    float _1394 = _1393.x;
-    float _1395 = _1393.y;
-    float _1406 = -((1.0f - _1394) - _1395);
-    float _1407 = step(0.0f, _1406);
-    float _1410 = mad(2.0f, _1407, -1.0f);
-    float3 _1428 = float3(_1406 * _1410, mad(-_1395, _1410, _1407), mad(-_1394, _1410, _1407));
-    int _1430 = int(_1407);
-    int _1440 = 1 - _1430;
-    int2 _2611[3] = { _1389 + _1430.xx, _1389 + int2(_1430, _1440), _1389 + int2(_1440, _1430) };
-    int2 _2589[3] = _2611;
-    HexcTap _2591[3];
-    for (int _2858 = 0; _2858 < 3; )
+    float2 _1252 = v_uv * hexcParams_albedo_tiling;
+    float2 _1254 = ddx(_1252);
+    float2 _1256 = ddy(_1252);
+    float2 _1325 = _1252 * 3.4641015529632568359375f;
+    float _1329 = _1325.y;
+    float2 _1335 = float2(mad(-0.57735025882720947265625f, _1329, _1325.x), 1.1547005176544189453125f * _1329);
+    float2 _1346 = floor(_1335);
+    int2 _1347 = int2(_1346);
+    float2 _1351 = _1335 - _1346;
+    float _1352 = _1351.x;
+    float _1353 = _1351.y;
+    float _1364 = -((1.0f - _1352) - _1353);
+    float _1365 = step(0.0f, _1364);
+    float _1368 = mad(2.0f, _1365, -1.0f);
+    float3 _1386 = float3(_1364 * _1368, mad(-_1353, _1368, _1365), mad(-_1352, _1368, _1365));
+    int _1388 = int(_1365);
+    int _1398 = 1 - _1388;
+    int2 _2526[3] = { _1347 + _1388.xx, _1347 + int2(_1388, _1398), _1347 + int2(_1398, _1388) };
+    int2 _2504[3] = _2526;
+    HexcTap _2506[3];
+    for (int _2773 = 0; _2773 < 3; )
     {
-        float3 _1608 = frac(float3((float2(_2589[_2858]) + 0.123450003564357757568359375f.xx).xyx) * float3(0.103100001811981201171875f, 0.10300000011920928955078125f, 0.097300000488758087158203125f));
-        float3 _1617 = _1608 + dot(_1608, _1608.yzx + 33.3300018310546875f.xxx).xxx;
-        float2 _1626 = frac((_1617.xx + _1617.yz) * _1617.zy);
-        float _1541 = radians(lerp(hexcParams_albedo_rotationrange.x, hexcParams_albedo_rotationrange.y, _1626.x)) * hexcParams_albedo_rotation;
-        float _1543 = cos(_1541);
-        float _1545 = sin(_1541);
-        float _1555 = 1.0f / lerp(hexcParams_albedo_scalerange.x, hexcParams_albedo_scalerange.y, _1626.y);
-        float _1634 = float(_2589[_2858].y);
-        float2 _1641 = float2(mad(0.5f, _1634, float(_2589[_2858].x)), _1634 * 0.866025447845458984375f);
-        float2 _1561 = mad(v_uv, hexcParams_albedo_tiling, _1641 * (-0.288675129413604736328125f).xx);
-        float _1649 = _1561.x;
-        float _1654 = _1561.y;
-        float _1674 = _1296.x;
-        float _1679 = _1296.y;
-        float _1699 = _1298.x;
-        float _1704 = _1298.y;
-        HexcTap _2577 = { mad(_1641, 0.288675129413604736328125f.xx, float2(mad(_1543, _1649, -(_1545 * _1654)), mad(_1545, _1649, _1543 * _1654)) * _1555) + (_1626 * hexcParams_albedo_offset), float2(mad(_1543, _1674, -(_1545 * _1679)), mad(_1545, _1674, _1543 * _1679)) * _1555, float2(mad(_1543, _1699, -(_1545 * _1704)), mad(_1545, _1699, _1543 * _1704)) * _1555, float2(_1543, _1545), _1555 };
-        _2591[_2858] = _2577;
-        _2858++;
+        float3 _1566 = frac(float3((float2(_2504[_2773]) + 0.123450003564357757568359375f.xx).xyx) * float3(0.103100001811981201171875f, 0.10300000011920928955078125f, 0.097300000488758087158203125f));
+        float3 _1575 = _1566 + dot(_1566, _1566.yzx + 33.3300018310546875f.xxx).xxx;
+        float2 _1584 = frac((_1575.xx + _1575.yz) * _1575.zy);
+        float _1499 = radians(lerp(hexcParams_albedo_rotationrange.x, hexcParams_albedo_rotationrange.y, _1584.x)) * hexcParams_albedo_rotation;
+        float _1501 = cos(_1499);
+        float _1503 = sin(_1499);
+        float _1513 = 1.0f / lerp(hexcParams_albedo_scalerange.x, hexcParams_albedo_scalerange.y, _1584.y);
+        float _1592 = float(_2504[_2773].y);
+        float2 _1599 = float2(mad(0.5f, _1592, float(_2504[_2773].x)), _1592 * 0.866025447845458984375f);
+        float2 _1519 = mad(v_uv, hexcParams_albedo_tiling, _1599 * (-0.288675129413604736328125f).xx);
+        float _1607 = _1519.x;
+        float _1612 = _1519.y;
+        float _1632 = _1254.x;
+        float _1637 = _1254.y;
+        float _1657 = _1256.x;
+        float _1662 = _1256.y;
+        HexcTap _2492 = { mad(_1599, 0.288675129413604736328125f.xx, float2(mad(_1501, _1607, -(_1503 * _1612)), mad(_1503, _1607, _1501 * _1612)) * _1513) + (_1584 * hexcParams_albedo_offset), float2(mad(_1501, _1632, -(_1503 * _1637)), mad(_1503, _1632, _1501 * _1637)) * _1513, float2(mad(_1501, _1657, -(_1503 * _1662)), mad(_1503, _1657, _1501 * _1662)) * _1513, float2(_1501, _1503), _1513 };
+        _2506[_2773] = _2492;
+        _2773++;
         continue;
     }
-    float3 _1769 = hexcTex_albedo.SampleGrad(hexcSampler, _2591[0].st, _2591[0].dx, _2591[0].dy).xyz;
-    float3 _1773 = hexcTex_albedo.SampleGrad(hexcSampler, _2591[1].st, _2591[1].dx, _2591[1].dy).xyz;
-    float3 _1777 = hexcTex_albedo.SampleGrad(hexcSampler, _2591[2].st, _2591[2].dx, _2591[2].dy).xyz;
-    float3 _1932 = _1428 * _1428;
-    float3 _1950 = (_1428 * _1932) * (_1932 * _1932);
-    float3 _1860 = lerp(1.0f.xxx, float3(dot(_1769, float3(0.2722286880016326904296875f, 0.6740818023681640625f, 0.0536894984543323516845703125f)), dot(_1773, float3(0.2722286880016326904296875f, 0.6740818023681640625f, 0.0536894984543323516845703125f)), dot(_1777, float3(0.2722286880016326904296875f, 0.6740818023681640625f, 0.0536894984543323516845703125f))), hexcParams_albedo_falloffcontrast.xxx) * _1950;
-    float _1868 = (_1860.x + _1860.y) + _1860.z;
-    float3 _2877;
-    if (_1868 > 0.0f)
+    float3 _1727 = hexcTex_albedo.SampleGrad(hexcSampler, _2506[0].st, _2506[0].dx, _2506[0].dy).xyz;
+    float3 _1731 = hexcTex_albedo.SampleGrad(hexcSampler, _2506[1].st, _2506[1].dx, _2506[1].dy).xyz;
+    float3 _1735 = hexcTex_albedo.SampleGrad(hexcSampler, _2506[2].st, _2506[2].dx, _2506[2].dy).xyz;
+    float3 _1890 = _1386 * _1386;
+    float3 _1908 = (_1386 * _1890) * (_1890 * _1890);
+    float3 _1818 = lerp(1.0f.xxx, float3(dot(_1727, float3(0.2722286880016326904296875f, 0.6740818023681640625f, 0.0536894984543323516845703125f)), dot(_1731, float3(0.2722286880016326904296875f, 0.6740818023681640625f, 0.0536894984543323516845703125f)), dot(_1735, float3(0.2722286880016326904296875f, 0.6740818023681640625f, 0.0536894984543323516845703125f))), hexcParams_albedo_falloffcontrast.xxx) * _1908;
+    float _1826 = (_1818.x + _1818.y) + _1818.z;
+    float3 _2792;
+    if (_1826 > 0.0f)
     {
-        _2877 = _1860 / _1868.xxx;
+        _2792 = _1818 / _1826.xxx;
     }
     else
     {
-        _2877 = _1950 / ((_1950.x + _1950.y) + _1950.z).xxx;
+        _2792 = _1908 / ((_1908.x + _1908.y) + _1908.z).xxx;
     }
-    float3 _1812 = ((_1769 * _2877.x) + (_1773 * _2877.y)) + (_1777 * _2877.z);
-    float3 _2320 = _1812 * 0.077399380505084991455078125f.xxx;
-    float3 _2327 = pow(max(_1812 + 0.054999999701976776123046875f.xxx, 0.0f.xxx) * 0.947867333889007568359375f.xxx, 2.400000095367431640625f.xxx);
-    bool3 _2329 = bool3(_1812.x > 0.040449999272823333740234375f.xxx.x, _1812.y > 0.040449999272823333740234375f.xxx.y, _1812.z > 0.040449999272823333740234375f.xxx.z);
-    float _1174 = clamp(hexcTex_roughness.Sample(hexcSampler, v_uv * hexcParams_roughness_tiling).x, 0.0199999995529651641845703125f, 1.0f);
-    float3 _1179 = normalize(v_normal);
-    float3 _1192 = normalize(v_tangent.xyz - (_1179 * dot(_1179, v_tangent.xyz)));
-    float3 _2486 = (hexcTex_normal.Sample(hexcSampler, v_uv * hexcParams_normal_tiling).xyz * 2.0f) - 1.0f.xxx;
-    float3 _2515 = abs(_2486);
-    float3 _2550 = normalize(float3(-((-float2(_2486.xy)) / max(max(_2515.z, 0.0078125f * max(_2515.x, _2515.y)), 9.9999996826552253889678874634872e-21f).xx), 1.0f));
-    float3 _1221 = normalize(((_1192 * _2550.x) - ((cross(_1179, _1192) * v_tangent.w) * _2550.y)) + (_1179 * _2550.z));
-    float _1228 = max(dot(_1221, float3(0.408248007297515869140625f, 0.408248007297515869140625f, 0.816497027873992919921875f)), 0.0f);
-    float _1241 = 2.0f / (((_1174 * _1174) * _1174) * _1174);
-    o_color = float4((float4(float3(_2329.x ? _2327.x : _2320.x, _2329.y ? _2327.y : _2320.y, _2329.z ? _2327.z : _2320.z), _2934).xyz * (0.1500000059604644775390625f + _1228)) + (0.039999999105930328369140625f * (((pow(max(dot(_1221, float3(0.21418631076812744140625f, 0.21418631076812744140625f, 0.95302069187164306640625f)), 0.0f), _1241 - 2.0f) * (_1241 + 6.0f)) * 0.0397887341678142547607421875f) * _1228)).xxx, 1.0f);
+    float3 _1770 = ((_1727 * _2792.x) + (_1731 * _2792.y)) + (_1735 * _2792.z);
+    float3 _2278 = _1770 * 0.077399380505084991455078125f.xxx;
+    float3 _2285 = pow(max(_1770 + 0.054999999701976776123046875f.xxx, 0.0f.xxx) * 0.947867333889007568359375f.xxx, 2.400000095367431640625f.xxx);
+    bool3 _2287 = bool3(_1770.x > 0.040449999272823333740234375f.xxx.x, _1770.y > 0.040449999272823333740234375f.xxx.y, _1770.z > 0.040449999272823333740234375f.xxx.z);
+    float _1132 = clamp(hexcTex_roughness.Sample(hexcSampler, v_uv * hexcParams_roughness_tiling).x, 0.0199999995529651641845703125f, 1.0f);
+    float3 _1137 = normalize(v_normal);
+    float3 _1150 = normalize(v_tangent.xyz - (_1137 * dot(_1137, v_tangent.xyz)));
+    float3 _2415 = (hexcTex_normal.Sample(hexcSampler, v_uv * hexcParams_normal_tiling).xyz * 2.0f) - 1.0f.xxx;
+    float3 _2430 = abs(_2415);
+    float3 _2465 = normalize(float3(-((-float2(_2415.xy)) / max(max(_2430.z, 0.0078125f * max(_2430.x, _2430.y)), 9.9999996826552253889678874634872e-21f).xx), 1.0f));
+    float3 _1179 = normalize(((_1150 * _2465.x) - ((cross(_1137, _1150) * v_tangent.w) * _2465.y)) + (_1137 * _2465.z));
+    float _1186 = max(dot(_1179, float3(0.408248007297515869140625f, 0.408248007297515869140625f, 0.816497027873992919921875f)), 0.0f);
+    float _1199 = 2.0f / (((_1132 * _1132) * _1132) * _1132);
+    o_color = float4((float4(float3(_2287.x ? _2285.x : _2278.x, _2287.y ? _2285.y : _2278.y, _2287.z ? _2285.z : _2278.z), _2846).xyz * (0.1500000059604644775390625f + _1186)) + (0.039999999105930328369140625f * (((pow(max(dot(_1179, float3(0.21418631076812744140625f, 0.21418631076812744140625f, 0.95302069187164306640625f)), 0.0f), _1199 - 2.0f) * (_1199 + 6.0f)) * 0.0397887341678142547607421875f) * _1186)).xxx, 1.0f);
 }
 
 SPIRV_Cross_Output preview_tiles_frag(SPIRV_Cross_Input stage_input)

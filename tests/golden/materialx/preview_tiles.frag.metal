@@ -74,7 +74,7 @@ struct HexcParams
     float albedo_falloffcontrast;
 };
 
-constant float _2934 = {};
+constant float _2846 = {};
 
 struct preview_tiles_frag_out
 {
@@ -91,76 +91,76 @@ struct preview_tiles_frag_in
 fragment preview_tiles_frag_out preview_tiles_frag(preview_tiles_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_albedo [[texture(0)]], texture2d<float> hexcTex_roughness [[texture(1)]], texture2d<float> hexcTex_normal [[texture(2)]], sampler hexcSampler [[sampler(0)]])
 {
     preview_tiles_frag_out out = {};
-    float2 _1294 = in.v_uv * hexcParams.albedo_tiling;
-    float2 _1296 = dfdx(_1294);
-    float2 _1298 = dfdy(_1294);
-    float2 _1367 = _1294 * 3.4641015529632568359375;
-    float _1371 = _1367.y;
-    float2 _1377 = float2(fma(-0.57735025882720947265625, _1371, _1367.x), 1.1547005176544189453125 * _1371);
-    float2 _1388 = floor(_1377);
-    int2 _1389 = int2(_1388);
-    float2 _1393 = _1377 - _1388;
-    float _1394 = _1393.x;
-    float _1395 = _1393.y;
-    float _1406 = -((1.0 - _1394) - _1395);
-    float _1407 = step(0.0, _1406);
-    float _1410 = fma(2.0, _1407, -1.0);
-    float3 _1428 = float3(_1406 * _1410, fma(-_1395, _1410, _1407), fma(-_1394, _1410, _1407));
-    int _1430 = int(_1407);
-    int _1440 = 1 - _1430;
-    spvUnsafeArray<int2, 3> _2611 = spvUnsafeArray<int2, 3>({ _1389 + int2(_1430), _1389 + int2(_1430, _1440), _1389 + int2(_1440, _1430) });
-    spvUnsafeArray<int2, 3> _2589;
-    _2589 = _2611;
-    spvUnsafeArray<HexcTap, 3> _2591;
-    for (int _2858 = 0; _2858 < 3; )
+    float2 _1252 = in.v_uv * hexcParams.albedo_tiling;
+    float2 _1254 = dfdx(_1252);
+    float2 _1256 = dfdy(_1252);
+    float2 _1325 = _1252 * 3.4641015529632568359375;
+    float _1329 = _1325.y;
+    float2 _1335 = float2(fma(-0.57735025882720947265625, _1329, _1325.x), 1.1547005176544189453125 * _1329);
+    float2 _1346 = floor(_1335);
+    int2 _1347 = int2(_1346);
+    float2 _1351 = _1335 - _1346;
+    float _1352 = _1351.x;
+    float _1353 = _1351.y;
+    float _1364 = -((1.0 - _1352) - _1353);
+    float _1365 = step(0.0, _1364);
+    float _1368 = fma(2.0, _1365, -1.0);
+    float3 _1386 = float3(_1364 * _1368, fma(-_1353, _1368, _1365), fma(-_1352, _1368, _1365));
+    int _1388 = int(_1365);
+    int _1398 = 1 - _1388;
+    spvUnsafeArray<int2, 3> _2526 = spvUnsafeArray<int2, 3>({ _1347 + int2(_1388), _1347 + int2(_1388, _1398), _1347 + int2(_1398, _1388) });
+    spvUnsafeArray<int2, 3> _2504;
+    _2504 = _2526;
+    spvUnsafeArray<HexcTap, 3> _2506;
+    for (int _2773 = 0; _2773 < 3; )
     {
-        float3 _1608 = fract(float3((float2(_2589[_2858]) + float2(0.123450003564357757568359375)).xyx) * float3(0.103100001811981201171875, 0.10300000011920928955078125, 0.097300000488758087158203125));
-        float3 _1617 = _1608 + float3(dot(_1608, _1608.yzx + float3(33.3300018310546875)));
-        float2 _1626 = fract((_1617.xx + _1617.yz) * _1617.zy);
-        float _1541 = radians(mix(hexcParams.albedo_rotationrange.x, hexcParams.albedo_rotationrange.y, _1626.x)) * hexcParams.albedo_rotation;
-        float _1543 = cos(_1541);
-        float _1545 = sin(_1541);
-        float _1555 = 1.0 / mix(hexcParams.albedo_scalerange.x, hexcParams.albedo_scalerange.y, _1626.y);
-        float _1634 = float(_2589[_2858].y);
-        float2 _1641 = float2(fma(0.5, _1634, float(_2589[_2858].x)), _1634 * 0.866025447845458984375);
-        float2 _1561 = fma(in.v_uv, hexcParams.albedo_tiling, _1641 * float2(-0.288675129413604736328125));
-        float _1649 = _1561.x;
-        float _1654 = _1561.y;
-        float _1674 = _1296.x;
-        float _1679 = _1296.y;
-        float _1699 = _1298.x;
-        float _1704 = _1298.y;
-        _2591[_2858] = HexcTap{ fma(_1641, float2(0.288675129413604736328125), float2(fma(_1543, _1649, -(_1545 * _1654)), fma(_1545, _1649, _1543 * _1654)) * _1555) + (_1626 * hexcParams.albedo_offset), float2(fma(_1543, _1674, -(_1545 * _1679)), fma(_1545, _1674, _1543 * _1679)) * _1555, float2(fma(_1543, _1699, -(_1545 * _1704)), fma(_1545, _1699, _1543 * _1704)) * _1555, float2(_1543, _1545), _1555 };
-        _2858++;
+        float3 _1566 = fract(float3((float2(_2504[_2773]) + float2(0.123450003564357757568359375)).xyx) * float3(0.103100001811981201171875, 0.10300000011920928955078125, 0.097300000488758087158203125));
+        float3 _1575 = _1566 + float3(dot(_1566, _1566.yzx + float3(33.3300018310546875)));
+        float2 _1584 = fract((_1575.xx + _1575.yz) * _1575.zy);
+        float _1499 = radians(mix(hexcParams.albedo_rotationrange.x, hexcParams.albedo_rotationrange.y, _1584.x)) * hexcParams.albedo_rotation;
+        float _1501 = cos(_1499);
+        float _1503 = sin(_1499);
+        float _1513 = 1.0 / mix(hexcParams.albedo_scalerange.x, hexcParams.albedo_scalerange.y, _1584.y);
+        float _1592 = float(_2504[_2773].y);
+        float2 _1599 = float2(fma(0.5, _1592, float(_2504[_2773].x)), _1592 * 0.866025447845458984375);
+        float2 _1519 = fma(in.v_uv, hexcParams.albedo_tiling, _1599 * float2(-0.288675129413604736328125));
+        float _1607 = _1519.x;
+        float _1612 = _1519.y;
+        float _1632 = _1254.x;
+        float _1637 = _1254.y;
+        float _1657 = _1256.x;
+        float _1662 = _1256.y;
+        _2506[_2773] = HexcTap{ fma(_1599, float2(0.288675129413604736328125), float2(fma(_1501, _1607, -(_1503 * _1612)), fma(_1503, _1607, _1501 * _1612)) * _1513) + (_1584 * hexcParams.albedo_offset), float2(fma(_1501, _1632, -(_1503 * _1637)), fma(_1503, _1632, _1501 * _1637)) * _1513, float2(fma(_1501, _1657, -(_1503 * _1662)), fma(_1503, _1657, _1501 * _1662)) * _1513, float2(_1501, _1503), _1513 };
+        _2773++;
         continue;
     }
-    float3 _1769 = hexcTex_albedo.sample(hexcSampler, _2591[0].st, gradient2d(_2591[0].dx, _2591[0].dy)).xyz;
-    float3 _1773 = hexcTex_albedo.sample(hexcSampler, _2591[1].st, gradient2d(_2591[1].dx, _2591[1].dy)).xyz;
-    float3 _1777 = hexcTex_albedo.sample(hexcSampler, _2591[2].st, gradient2d(_2591[2].dx, _2591[2].dy)).xyz;
-    float3 _1932 = _1428 * _1428;
-    float3 _1950 = (_1428 * _1932) * (_1932 * _1932);
-    float3 _1860 = mix(float3(1.0), float3(dot(_1769, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_1773, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_1777, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125))), float3(hexcParams.albedo_falloffcontrast)) * _1950;
-    float _1868 = (_1860.x + _1860.y) + _1860.z;
-    float3 _2877;
-    if (_1868 > 0.0)
+    float3 _1727 = hexcTex_albedo.sample(hexcSampler, _2506[0].st, gradient2d(_2506[0].dx, _2506[0].dy)).xyz;
+    float3 _1731 = hexcTex_albedo.sample(hexcSampler, _2506[1].st, gradient2d(_2506[1].dx, _2506[1].dy)).xyz;
+    float3 _1735 = hexcTex_albedo.sample(hexcSampler, _2506[2].st, gradient2d(_2506[2].dx, _2506[2].dy)).xyz;
+    float3 _1890 = _1386 * _1386;
+    float3 _1908 = (_1386 * _1890) * (_1890 * _1890);
+    float3 _1818 = mix(float3(1.0), float3(dot(_1727, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_1731, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125)), dot(_1735, float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125))), float3(hexcParams.albedo_falloffcontrast)) * _1908;
+    float _1826 = (_1818.x + _1818.y) + _1818.z;
+    float3 _2792;
+    if (_1826 > 0.0)
     {
-        _2877 = _1860 / float3(_1868);
+        _2792 = _1818 / float3(_1826);
     }
     else
     {
-        _2877 = _1950 / float3((_1950.x + _1950.y) + _1950.z);
+        _2792 = _1908 / float3((_1908.x + _1908.y) + _1908.z);
     }
-    float3 _1812 = ((_1769 * _2877.x) + (_1773 * _2877.y)) + (_1777 * _2877.z);
-    float _1174 = fast::clamp(hexcTex_roughness.sample(hexcSampler, (in.v_uv * hexcParams.roughness_tiling)).x, 0.0199999995529651641845703125, 1.0);
-    float3 _1179 = fast::normalize(in.v_normal);
-    float3 _1192 = fast::normalize(in.v_tangent.xyz - (_1179 * dot(_1179, in.v_tangent.xyz)));
-    float3 _2486 = (hexcTex_normal.sample(hexcSampler, (in.v_uv * hexcParams.normal_tiling)).xyz * 2.0) - float3(1.0);
-    float3 _2515 = abs(_2486);
-    float3 _2550 = fast::normalize(float3(-((-float2(_2486.xy)) / float2(fast::max(fast::max(_2515.z, 0.0078125 * fast::max(_2515.x, _2515.y)), 9.9999996826552253889678874634872e-21))), 1.0));
-    float3 _1221 = fast::normalize(((_1192 * _2550.x) - ((cross(_1179, _1192) * in.v_tangent.w) * _2550.y)) + (_1179 * _2550.z));
-    float _1228 = fast::max(dot(_1221, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
-    float _1241 = 2.0 / (((_1174 * _1174) * _1174) * _1174);
-    out.o_color = float4((float4(select(_1812 * float3(0.077399380505084991455078125), pow(fast::max(_1812 + float3(0.054999999701976776123046875), float3(0.0)) * float3(0.947867333889007568359375), float3(2.400000095367431640625)), _1812 > float3(0.040449999272823333740234375)), _2934).xyz * (0.1500000059604644775390625 + _1228)) + float3(0.039999999105930328369140625 * (((pow(fast::max(dot(_1221, float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625)), 0.0), _1241 - 2.0) * (_1241 + 6.0)) * 0.0397887341678142547607421875) * _1228)), 1.0);
+    float3 _1770 = ((_1727 * _2792.x) + (_1731 * _2792.y)) + (_1735 * _2792.z);
+    float _1132 = fast::clamp(hexcTex_roughness.sample(hexcSampler, (in.v_uv * hexcParams.roughness_tiling)).x, 0.0199999995529651641845703125, 1.0);
+    float3 _1137 = fast::normalize(in.v_normal);
+    float3 _1150 = fast::normalize(in.v_tangent.xyz - (_1137 * dot(_1137, in.v_tangent.xyz)));
+    float3 _2415 = (hexcTex_normal.sample(hexcSampler, (in.v_uv * hexcParams.normal_tiling)).xyz * 2.0) - float3(1.0);
+    float3 _2430 = abs(_2415);
+    float3 _2465 = fast::normalize(float3(-((-float2(_2415.xy)) / float2(fast::max(fast::max(_2430.z, 0.0078125 * fast::max(_2430.x, _2430.y)), 9.9999996826552253889678874634872e-21))), 1.0));
+    float3 _1179 = fast::normalize(((_1150 * _2465.x) - ((cross(_1137, _1150) * in.v_tangent.w) * _2465.y)) + (_1137 * _2465.z));
+    float _1186 = fast::max(dot(_1179, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
+    float _1199 = 2.0 / (((_1132 * _1132) * _1132) * _1132);
+    out.o_color = float4((float4(select(_1770 * float3(0.077399380505084991455078125), pow(fast::max(_1770 + float3(0.054999999701976776123046875), float3(0.0)) * float3(0.947867333889007568359375), float3(2.400000095367431640625)), _1770 > float3(0.040449999272823333740234375)), _2846).xyz * (0.1500000059604644775390625 + _1186)) + float3(0.039999999105930328369140625 * (((pow(fast::max(dot(_1179, float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625)), 0.0), _1199 - 2.0) * (_1199 + 6.0)) * 0.0397887341678142547607421875) * _1186)), 1.0);
     return out;
 }
 

@@ -1,0 +1,105 @@
+// hexc's WGSL in Chromium's WebGPU (Dawn, with Tint as its WGSL compiler; SwiftShader on a machine without a GPU).
+// window.hexcWgsl.validate(codes): Tint's verdict on each module: {errors, warnings}, errors including any validation
+// error Dawn raised while creating it (Tint's uniformity analysis among them).
+// window.hexcWgsl.render(config): draws a fragment module over a uv rectangle and returns its RGBA32F pixels, top row
+// first, base64-encoded. The vertex module is hexc's own pass-through stage (--vertex): position at location 0, uv at 1.
+
+let device;
+
+async function gpu() {
+    if (device) return device;
+    if (!navigator.gpu) throw new Error("no navigator.gpu: Chromium needs --enable-unsafe-webgpu (and --headless=new)");
+    const adapter = await navigator.gpu.requestAdapter();
+    if (!adapter) throw new Error("WebGPU gave no adapter");
+    device = await adapter.requestDevice();
+    return device;
+}
+
+const text = (m) => `${m.lineNum}:${m.linePos}: ${m.message}`;
+
+async function compile(code) {
+    const d = await gpu();
+    d.pushErrorScope("validation");
+    const module = d.createShaderModule({ code });
+    const messages = (await module.getCompilationInfo()).messages;
+    const scope = await d.popErrorScope();
+    const errors = messages.filter((m) => m.type === "error").map(text);
+    if (scope && !errors.length) errors.push(scope.message);
+    return { module, errors, warnings: messages.filter((m) => m.type !== "error").map(text) };
+}
+
+async function validate(codes) {
+    const verdicts = [];
+    for (const code of codes) {
+        const { errors, warnings } = await compile(code);
+        verdicts.push({ errors, warnings });
+    }
+    return verdicts;
+}
+
+// A texture as the file stores it, top row first, 8 bits a channel, level 0 only (the views drawn read no other).
+async function texture(d, { url, srgb }) {
+    const image = await createImageBitmap(await (await fetch(url)).blob(), { colorSpaceConversion: "none", premultiplyAlpha: "none" });
+    const t = d.createTexture({ size: [image.width, image.height], format: srgb ? "rgba8unorm-srgb" : "rgba8unorm",
+                                usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST | GPUTextureUsage.RENDER_ATTACHMENT });
+    d.queue.copyExternalImageToTexture({ source: image }, { texture: t }, [image.width, image.height]);
+    return t;
+}
+
+// The full-screen triangle of templates/harness/fullscreen.vert.glsl, in Vulkan's clip space (y = -1 the top row, which
+// hexc's vertex stage flips for WebGPU): t = (0,0), (2,0), (0,2); position t * 2 - 1, uv = rect.xy + t (rect.zw - rect.xy).
+function triangle(d, [u0, v0, u1, v1]) {
+    const data = new Float32Array(18);
+    [[0, 0], [2, 0], [0, 2]].forEach(([tx, ty], i) => {
+        data.set([tx * 2 - 1, ty * 2 - 1, 0, 1, u0 + tx * (u1 - u0), v0 + ty * (v1 - v0)], i * 6);
+    });
+    const buffer = d.createBuffer({ size: data.byteLength, usage: GPUBufferUsage.VERTEX, mappedAtCreation: true });
+    new Float32Array(buffer.getMappedRange()).set(data);
+    buffer.unmap();
+    return buffer;
+}
+
+async function render({ vertex, fragment, vertexEntry, fragmentEntry, textures, sampler, width, height, rect }) {
+    const d = await gpu();
+    const stages = [await compile(vertex), await compile(fragment)];
+    const failed = stages.flatMap((s) => s.errors);
+    if (failed.length) throw new Error("Tint rejected the shader: " + failed.join("; "));
+    d.pushErrorScope("validation");
+    const pipeline = d.createRenderPipeline({
+        layout: "auto",
+        vertex: { module: stages[0].module, entryPoint: vertexEntry,
+                  buffers: [{ arrayStride: 24, attributes: [{ shaderLocation: 0, offset: 0, format: "float32x4" },
+                                                              { shaderLocation: 1, offset: 16, format: "float32x2" }] }] },
+        fragment: { module: stages[1].module, entryPoint: fragmentEntry, targets: [{ format: "rgba32float" }] },
+        primitive: { topology: "triangle-list" },
+    });
+    const entries = [{ binding: sampler.binding, resource: d.createSampler({
+        addressModeU: "repeat", addressModeV: "repeat", magFilter: "linear", minFilter: "linear", mipmapFilter: "linear" }) }];
+    for (const t of textures) entries.push({ binding: t.binding, resource: (await texture(d, t)).createView() });
+    const bindGroup = d.createBindGroup({ layout: pipeline.getBindGroupLayout(sampler.group), entries });
+    const target = d.createTexture({ size: [width, height], format: "rgba32float",
+                                     usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
+    const readback = d.createBuffer({ size: width * height * 16, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
+    const encoder = d.createCommandEncoder();
+    const pass = encoder.beginRenderPass({ colorAttachments: [{ view: target.createView(), loadOp: "clear", storeOp: "store",
+                                                                 clearValue: [0, 0, 0, 0] }] });
+    pass.setPipeline(pipeline);
+    pass.setBindGroup(sampler.group, bindGroup);
+    pass.setVertexBuffer(0, triangle(d, rect));
+    pass.draw(3);
+    pass.end();
+    encoder.copyTextureToBuffer({ texture: target }, { buffer: readback, bytesPerRow: width * 16 }, [width, height]);
+    d.queue.submit([encoder.finish()]);
+    const error = await d.popErrorScope();
+    if (error) throw new Error(error.message);
+    const started = performance.now();
+    await readback.mapAsync(GPUMapMode.READ);
+    const bytes = new Uint8Array(readback.getMappedRange().slice(0));
+    readback.unmap();
+    let binary = "";
+    for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    return { pixels: btoa(binary), ms: performance.now() - started };
+}
+
+window.hexcWgsl = { validate, render };
+window.hexcReady = true;
