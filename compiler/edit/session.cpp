@@ -200,7 +200,7 @@ Reply Session::compile(const std::string& body) {
     m.pack = false;
     try {
         const Slot& s = shownSlot(m, request->value("slot", ""));
-        const vk::RenderOutput values = s.kind == SlotKind::Normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
+        const vk::RenderOutput values = kindRow(s.kind).derivative ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
         // The slot's views use built-in templates whatever the material's: compiled beside the hex-tiled program.
         const Material weightsView = vk::renderedMaterial(m, vk::RenderOutput::Weights, s.name);
         const Material valuesView = vk::renderedMaterial(m, values, s.name);

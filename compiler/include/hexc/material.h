@@ -12,7 +12,29 @@
 namespace hexc {
 
 enum class SlotKind { Color, Scalar, Normal };
+inline constexpr size_t kSlotKindCount = 3;
 enum class ColorSpace { Srgb, Linear };
+
+// What the code asks of a slot kind, one row per kind (kindRow; the table, in SlotKind order, is in
+// material/names.cpp): code asks a property here, not which kind it is, so a new kind is a new row.
+struct SlotKindRow {
+    SlotKind kind;
+    const char* name;       // as a material, a template and the manifest spell it
+    const char* glslType;   // what its slot function returns (a triplanar derivative slot: a vec3 surface gradient)
+    const char* mtlxType;   // its value's MaterialX type
+    const char* reads;      // the texture channels it reads, as the manifest's `reads`; "" for a one-channel kind
+    ColorSpace colorSpace;  // its default colour space
+    // Samples a tangent-space normal map on the derivative path: blends slopes, takes `flip_y`, is linear only, and
+    // engines take its normal function.
+    bool derivative;
+    // Reads the one channel its `channel` names: a scalar value, shown as grey; it can hold heights.
+    bool oneChannel;
+    bool mayPack;          // may share a packed texture with other slots (docs/material-format.md#pack)
+    bool mayUseHistogram;  // may blend by histogram (docs/material-format.md#blend)
+};
+const SlotKindRow& kindRow(SlotKind kind);
+// Every row, in SlotKind order.
+const std::array<SlotKindRow, kSlotKindCount>& kindRows();
 // How tile offsets and rotations are derived from the lattice ids. `Stable` (the default): an integer
 // hash of exactly reduced lattice ids, identical on every target and precise far from the origin
 // (templates/library/hextiling.glsl, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
@@ -99,7 +121,7 @@ struct Slot {
     // (hex-tiled or plain), which filters and blends the stored (encoded) texels and decodes the result, as MaterialX
     // does: there the shader decodes, and the manifest says so (`"decode": "shader"`, docs/materialx.md#materialx-mode).
     bool samplerDecodes() const { return colorSpace == ColorSpace::Srgb && !shaderDecodes(); }
-    bool shaderDecodes() const { return colorSpace == ColorSpace::Srgb && kind != SlotKind::Normal && hex.mode == HashMode::MaterialX; }
+    bool shaderDecodes() const { return colorSpace == ColorSpace::Srgb && !kindRow(kind).derivative && hex.mode == HashMode::MaterialX; }
 };
 
 // A shader template as a material, a scene pass or --template names it, told apart once, where it is read: one of

@@ -96,7 +96,6 @@ SlotUse slotUse(const Material& material, const std::string& templateSource, boo
 SlotPlan planSlot(const Slot& slot, bool all) {
     const HexTiling& h = slot.hex;
     const bool triplanar = h.projection == Projection::Triplanar;
-    static const char* kTypes[] = {"vec4", "float", "vec2"};
     SlotPlan sp;
     sp.slot = &slot;
     sp.histogram = h.enabled && h.blend == Blend::Histogram;  // the parser has left it only on colour and scalar slots
@@ -107,8 +106,8 @@ SlotPlan planSlot(const Slot& slot, bool all) {
                                                      : sp.histogram ? ".histogram"
                                                                     : ".hex");
     sp.coordinates = triplanar ? "triplanar" : h.splitCoordinates ? "uv.split" : "uv";
-    // A triplanar normal slot returns a world-space surface gradient.
-    sp.type = triplanar && slot.kind == SlotKind::Normal ? "vec3" : kTypes[size_t(slot.kind)];
+    // A triplanar derivative (normal) slot returns a world-space surface gradient.
+    sp.type = triplanar && kindRow(slot.kind).derivative ? "vec3" : kindRow(slot.kind).glslType;
     sp.projection = h.projection;
     sp.explicitGradients = triplanar;
     sp.taps = h.maskTaps();
@@ -365,7 +364,7 @@ std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan) {
     for (const SlotPlan& sp : plan.slots) {
         if (sp.heightOnly) continue;
         functions.push_back({"hexc_" + sp.slot->name, &sp, false});
-        if (sp.slot->kind == SlotKind::Normal) functions.push_back({"hexc_" + sp.slot->name + "_normal", &sp, true});
+        if (kindRow(sp.kind).derivative) functions.push_back({"hexc_" + sp.slot->name + "_normal", &sp, true});
     }
     return functions;
 }
