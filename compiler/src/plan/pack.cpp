@@ -102,7 +102,7 @@ void planPacks(ShaderPlan& plan) {
         for (size_t j = i; j < plan.slots.size(); ++j) {
             const Slot& s = *plan.slots[j].slot;
             // The lattice and how the taps fetch (lod): what the shared samples are.
-            if (!channels[j] || done[j] || !sameLattice(first.hex, s.hex) || s.hex.lod != first.hex.lod) continue;
+            if (!channels[j] || done[j] || first.hex.lattice() != s.hex.lattice() || s.hex.lod != first.hex.lod) continue;
             if (s.width != first.width || s.height != first.height) {
                 notPacked(plan, j,
                           "its texture is " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", slot `" + first.name + "`'s " +

@@ -14,13 +14,6 @@
 
 namespace hexc {
 
-bool sameLattice(const HexTiling& a, const HexTiling& b) {
-    return a.enabled == b.enabled && a.mode == b.mode && a.splitCoordinates == b.splitCoordinates && a.tiling == b.tiling &&
-           a.rotation == b.rotation && a.rotationRange == b.rotationRange && a.rotationSteps == b.rotationSteps &&
-           a.scaleRange == b.scaleRange && a.offset == b.offset && a.offsetSteps == b.offsetSteps && a.mask == b.mask &&
-           a.maskScale == b.maskScale && a.projection == b.projection && a.planeSharpness == b.planeSharpness;
-}
-
 namespace {
 
 // Reads the template the options or the material name into plan.templateSource; false (with an error) when it
@@ -171,7 +164,7 @@ Diagnostic slotNotRead(const Material& material, const Slot& slot, const ShaderP
 // plan.slots and plan.lattices; a slot joins the first lattice computed from the same settings when sharing.
 void planSlots(const Material& material, const CompileOptions& options, ShaderPlan& plan) {
     SlotUse use = slotUse(material, plan.templateSource, plan.functions);
-    std::vector<const HexTiling*> latticeKeys;
+    std::vector<const LatticeSettings*> latticeKeys;
     uint32_t binding = plan.bindings.firstTexture;
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
@@ -185,9 +178,9 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
         if (!sp.heightOnly) {
             sp = planSlot(slot, !options.specialize);
             size_t& l = sp.lattice;
-            while (l < latticeKeys.size() && !(options.shareLattice && sameLattice(*latticeKeys[l], slot.hex))) ++l;
+            while (l < latticeKeys.size() && !(options.shareLattice && *latticeKeys[l] == slot.hex.lattice())) ++l;
             if (l == latticeKeys.size()) {
-                latticeKeys.push_back(&slot.hex);
+                latticeKeys.push_back(&slot.hex.lattice());
                 plan.lattices.push_back(planLattice(slot.hex, !options.specialize));
             }
         }

@@ -160,7 +160,4 @@ inline std::string packedFileName(const std::string& material, const std::string
     return material + "." + firstSlot + ".packed.png";
 }
 
-// Slots share a lattice when everything the lattice computes from is the same.
-bool sameLattice(const HexTiling& a, const HexTiling& b);
-
 }  // namespace hexc
