@@ -7,7 +7,7 @@
 // "literal" below, e.g. l.rotate, b.exponentInt) are folded into a copy of each function that reads them,
 // `<function>_<slot>`, with only the branches they take (codegen/specialise.h), and the others become the reads of
 // the slot's parameters, so that the copy takes neither settings struct; without specialisation
-// (--no-specialize, `hexc library`) this text is the general library. So that the folding can see them, a function
+// (--no-specialise, `hexc library`) this text is the general library. So that the folding can see them, a function
 // takes its settings as `HexcLattice l` and `HexcBlend b` and never writes them; a setting decides code in an
 // `if (...) {` block (with `} else {`), an `if (...) statement;` or a whole `x = c ? a : b;` or `return c ? a : b;`;
 // and a top-level item starts at column 0, a multi-line one ending with a `}` at column 0.

@@ -176,12 +176,12 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
         sp.slot = &slot;
         sp.heightOnly = !use.read[i];
         if (!sp.heightOnly) {
-            sp = planSlot(slot, !options.specialize);
+            sp = planSlot(slot, !options.specialise);
             size_t& l = sp.lattice;
             while (l < latticeKeys.size() && !(options.shareLattice && *latticeKeys[l] == slot.hex.lattice())) ++l;
             if (l == latticeKeys.size()) {
                 latticeKeys.push_back(&slot.hex.lattice());
-                plan.lattices.push_back(planLattice(slot.hex, !options.specialize));
+                plan.lattices.push_back(planLattice(slot.hex, !options.specialise));
             }
         }
         sp.name = sp.heightMapName = slot.name;
@@ -340,7 +340,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     plan.layout = options.layout;
     plan.entryPoint = options.entryPoint.empty() ? defaultEntryPoint(material.name) : options.entryPoint;
     plan.bindings = HexcBindings(options.layout.vulkan);
-    plan.general = !options.specialize;
+    plan.general = !options.specialise;
     plan.uvBottomLeft = options.uvOrigin == UvOrigin::BottomLeft;
     if (!loadTemplate(material, options, plan)) return plan;
     // The built-in `functions` named by a material is the functions output, as with --functions.
