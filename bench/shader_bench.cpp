@@ -106,8 +106,8 @@ const std::vector<Method>& methods() {
         {"stable-gain", {{"mode", "stable"}, {"rotation", 0}, {"falloff", 0.75}}},
         {"stable-rot-gain", fullQuality(HashMode::Stable)},
         // What the compiler's skipping buys, on the full-quality material: every feature emitted with the
-        // uniforms deciding (--no-specialize), one lattice per slot (--no-shared-lattice), settings baked.
-        {"stable-rot-gain-general", fullQuality(HashMode::Stable), withOption(&CompileOptions::specialize, false)},
+        // uniforms deciding (--no-specialise), one lattice per slot (--no-shared-lattice), settings baked.
+        {"stable-rot-gain-general", fullQuality(HashMode::Stable), withOption(&CompileOptions::specialise, false)},
         {"stable-rot-gain-per-slot", fullQuality(HashMode::Stable), withOption(&CompileOptions::shareLattice, false)},
         {"stable-rot-gain-baked", fullQuality(HashMode::Stable), withOption(&CompileOptions::bake, true)},
         // Every fetch at one level of detail per slot (textureLod) instead of each tile's gradients.
@@ -394,7 +394,7 @@ void shiftedContrast(vk::Runner& runner, const References& refs, Results& result
 // The plain or full-quality row of a view and shading (`lit`, or kMinimal).
 const Row* rowOf(const Results& results, size_t view, bool fullQualityRow, const std::string& templ = "lit") {
     for (const Row& row : results.rows)
-        if (row.view == view && row.method->templ == templ && row.method->compile.specialize && row.method->compile.shareLattice &&
+        if (row.view == view && row.method->templ == templ && row.method->compile.specialise && row.method->compile.shareLattice &&
             !row.method->compile.bake && row.method->top.empty() &&
             row.method->hextiling == (fullQualityRow ? fullQuality(HashMode::Stable) : json{{"enabled", false}}))
             return &row;

@@ -31,7 +31,7 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     h.add(buildId());
     h.add(toolchainVersions());  // also in the executable's bytes, unless a library is ever linked dynamically
     // Every option that changes an output.
-    h.add(codeOptionsKey(options) + "," + std::to_string(options.specialize) + std::to_string(options.shareLattice) + "," +
+    h.add(codeOptionsKey(options) + "," + std::to_string(options.specialise) + std::to_string(options.shareLattice) + "," +
           toString(options.layout) + "," + options.entryPoint + (options.vertex ? ",vertex" : "") +
           (options.emitGenerated ? ",generated" : "") + (options.manifestPathsFrom.empty() ? "" : ",paths"));
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).

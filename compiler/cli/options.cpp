@@ -178,7 +178,7 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
     app.add_flag("--bake", a.options.bake,
                  "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
     app.add_flag_callback(
-        "--no-specialize", [&] { a.options.specialize = false; },
+        "--no-specialise", [&] { a.options.specialise = false; },
         "emit every feature even when a setting turns it off; the uniforms decide");
     app.add_flag_callback(
         "--no-shared-lattice", [&] { a.options.shareLattice = false; }, "evaluate the lattice per slot even where slots could share it");

@@ -243,7 +243,7 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
     Image image =
         reference::render(s, texture, r.view, r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
                           heights.source());
-    if (s.kind == SlotKind::Scalar)  // as the GPU shows it: (s, s, s, 1)
+    if (kindRow(s.kind).oneChannel)  // as the GPU shows it: (s, s, s, 1)
         for (size_t i = 0; i < image.rgba.size(); i += 4)
             image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];
     if (r.output == vk::RenderOutput::Normal) vk::derivativeToNormalMap(image);
@@ -296,7 +296,7 @@ int renderCommand(const std::vector<std::string>& args) {
 // Whether a slot can take a blend other than its own: hex-tiled colour and scalar slots blending every tap without
 // height blending (the parser's rules).
 bool takesBlend(const Slot& s) {
-    return s.hex.enabled && s.kind != SlotKind::Normal && s.hex.taps != 1 && !s.hex.adaptive() && !s.heightBlend;
+    return s.hex.enabled && kindRow(s.kind).mayUseHistogram && s.hex.taps != 1 && !s.hex.adaptive() && !s.heightBlend;
 }
 
 Material withBlend(Material material, Blend blend) {

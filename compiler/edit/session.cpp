@@ -69,7 +69,7 @@ CompileOptions pageOptions() {
     o.targets = {Target::Glsl};
     o.glslEs = true;
     o.glslVersion = 300;
-    o.specialize = false;
+    o.specialise = false;
     o.shareLattice = false;
     o.concurrentTargets = false;
     return o;

@@ -82,7 +82,7 @@ TEST(Cli, OptionSpellings) {
     EXPECT_NE(err.find("--variant rock.lit: no scene given"), std::string::npos) << err;
     std::string help = hexc::test::runHexcStdout("--help");
     for (const char* option : {"--out", "--targets", "--template", "--hlsl-sm", "--glsl-version", "--msl-version", "--bake",
-                               "--no-specialize", "--no-shared-lattice", "--depfile", "--variant", "--quiet", "--verbose", "--no-warnings",
+                               "--no-specialise", "--no-shared-lattice", "--depfile", "--variant", "--quiet", "--verbose", "--no-warnings",
                                "--force", "--jobs", "--version", "Exit codes"})
         EXPECT_NE(help.find(option), std::string::npos) << option;
 }

@@ -41,7 +41,7 @@ TEST(Codegen, ReadsThePlanNotTheMaterial) {
                 Material m = *parsed.material;
                 m.pack = pack;
                 CompileOptions options;
-                options.specialize = specialise;
+                options.specialise = specialise;
                 const ShaderPlan plan = planShader(m, options);
                 ASSERT_FALSE(hasErrors(plan.diagnostics)) << entry.path() << "\n" << formatAll(plan.diagnostics);
                 ShaderPlan alone = plan;

@@ -168,7 +168,7 @@ TEST(Specialise, EachSlotGetsOnlyWhatItUses) {
 TEST(Specialise, WithoutSpecialisationTheGeneralFunctions) {
     Material m;
     CompileOptions options;
-    options.specialize = false;
+    options.specialise = false;
     const std::string glsl = generateGlsl(rockPlan(options, m));
     EXPECT_NE(glsl.find("vec4 hexcColor(texture2D tex"), std::string::npos);
     EXPECT_NE(glsl.find("blend.metric = true;"), std::string::npos);

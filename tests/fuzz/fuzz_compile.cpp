@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         hexc::parseMaterial(std::string_view(reinterpret_cast<const char*>(data + 1), size - 1), "materials/fuzz.json");
     if (!parsed.material) return 0;
     hexc::CompileOptions options;
-    options.specialize = bits & 1;
+    options.specialise = bits & 1;
     options.shareLattice = bits & 2;
     options.bake = bits & 4;
     options.hlslShaderModel = bits & 8 ? 60 : 50;

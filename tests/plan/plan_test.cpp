@@ -123,7 +123,7 @@ TEST(Plan, LeavesOutTheFeaturesAMaterialTurnsOff) {
     }
     // Without specialisation the same material emits every feature, read from parameters.
     CompileOptions all;
-    all.specialize = false;
+    all.specialise = false;
     ShaderPlan full = planShader(m, all);
     EXPECT_TRUE(full.lattices[0].rotate);
     EXPECT_EQ(param(full, full.lattices[0].rotation).name, "albedo_rotation");

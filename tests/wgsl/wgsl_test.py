@@ -33,7 +33,7 @@ HEXC = None
 # Chromium's WebGPU needs the new headless mode; --disable-gpu would leave it no adapter (SwiftShader's Vulkan is its GPU).
 WEBGPU_FLAGS = ["--headless=new", "--enable-unsafe-webgpu"] + [f for f in CHROMIUM_FLAGS if f not in ("--headless", "--disable-gpu")]
 CASES = os.path.join("tests", "execution", "cases")
-# The named views of tests/execution/execution_test.cpp that read mip level 0 only (the page uploads level 0 alone):
+# The named views of tests/execution/ (cases_test.cpp) that read mip level 0 only (the page uploads level 0 alone):
 # magnified, 0.75 texel per pixel of a 256^2 texture at tiling 4; origin, the paper's hash near the origin.
 VIEWS = {"magnified": (192, [0.3, 0.45, 0.3 + 192 * 0.75 / 1024, 0.45 + 192 * 0.75 / 1024]), "origin": (192, [0.0, 0.0, 0.02, 0.02])}
 

@@ -84,7 +84,7 @@ SlotResult evaluateMaterialX(const Slot& slot, const SampledTexture& texture, Ve
     const HexTiling& hex = slot.hex;
     const Triangle tri = triangleGrid(st);
     // sRGB: the texture is sampled as stored (encoded, Slot::shaderDecodes), filtered and blended so, then decoded.
-    const bool srgb = slot.shaderDecodes(), normal = slot.kind == SlotKind::Normal;
+    const bool srgb = slot.shaderDecodes(), normal = kindRow(slot.kind).derivative;
     SlotResult out;
     std::array<double, 3> luma{1, 1, 1};
     for (size_t i = 0; i < 3; ++i) {

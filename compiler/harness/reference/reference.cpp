@@ -184,7 +184,7 @@ SlotResult untiled(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec
     Rgba x = texture.sample(st[0], st[1], dx[0], dx[1], dy[0], dy[1]);
     // MaterialX mode's sRGB texture is sampled as stored and decoded after filtering, as MaterialX's <image> does.
     for (size_t c = 0; slot.shaderDecodes() && c < 3; ++c) x[c] = decodeSrgb(x[c]);
-    const Rgba value = slot.kind == SlotKind::Normal ? asValue(normalToDerivative(x, slot.flipY)) : x;
+    const Rgba value = kindRow(slot.kind).derivative ? asValue(normalToDerivative(x, slot.flipY)) : x;
     return {value, {1, 0, 0}, {value, value, value}, {1, 0, 0}};
 }
 
@@ -204,7 +204,7 @@ struct Tiles {
 
 Tiles sampleTiles(const Slot& slot, const SampledTexture& texture, const Taps& taps, const std::array<bool, 3>& fetched, Vec2 dx, Vec2 dy) {
     const HexTiling& hex = slot.hex;
-    const bool normal = slot.kind == SlotKind::Normal;
+    const bool normal = kindRow(slot.kind).derivative;
     Tiles tiles;
     for (size_t i = 0; i < 3; ++i) {
         const TileTransform tile = tileTransform(taps.id[i], hex);
@@ -232,8 +232,7 @@ Tiles sampleTiles(const Slot& slot, const SampledTexture& texture, const Taps& t
             metric = std::sqrt(d2 / (1 + d2));  // Eq. 3: sine of the normal's angle to +Z
             tiles.samples[i] = asValue(d);
         } else {
-            metric = slot.kind == SlotKind::Color ? 0.299 * x[0] + 0.587 * x[1] + 0.114 * x[2]  // Eq. 4
-                                                  : x[size_t(slot.channel)];
+            metric = kindRow(slot.kind).oneChannel ? x[size_t(slot.channel)] : 0.299 * x[0] + 0.587 * x[1] + 0.114 * x[2];  // Eq. 4
             tiles.samples[i] = x;
         }
         // hexc's guard: a negative metric (HDR texels below 0) counts as 0, so no weight turns negative.
@@ -271,7 +270,7 @@ SlotResult blendTiles(const Slot& slot, const Taps& taps, const Tiles& tiles, Ve
     const std::array<Rgba, 3>& samples = tiles.samples;
     Rgba value{};
     for (size_t c = 0; c < 4; ++c) value[c] = w[0] * samples[0][c] + w[1] * samples[1][c] + w[2] * samples[2][c];
-    if (slot.kind == SlotKind::Normal) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
+    if (kindRow(slot.kind).derivative) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
     return {value, shown(hex, taps, w), samples, w, heightSum};
 }
 
@@ -299,7 +298,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
     if (hex.taps == 1) return ditheredTap(hex, taps, tiles.samples, pixel);
     if (histogram) {
         const std::array<double, 3> w = blendWeights(taps.weight, {1, 1, 1}, hex);  // no metric: see hexcHistogram
-        SlotResult r = histogramBlend(*lut, tiles.samples, w, dx, dy, texture.width(0), texture.height(0), slot.kind == SlotKind::Scalar);
+        SlotResult r = histogramBlend(*lut, tiles.samples, w, dx, dy, texture.width(0), texture.height(0), kindRow(slot.kind).oneChannel);
         r.weights = shown(hex, taps, w);
         return r;
     }
@@ -348,7 +347,7 @@ SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, co
         return Vec2{p[(k + 1) % 3] * slot.hex.tiling[0], p[(k + 2) % 3] * slot.hex.tiling[1]};
     };
     const size_t dominant = size_t(std::max_element(b.begin(), b.end()) - b.begin());
-    const bool normal = slot.kind == SlotKind::Normal;
+    const bool normal = kindRow(slot.kind).derivative;
     SlotResult out{};
     Vec3 g{};  // normal slots: the blended world-space height gradient
     for (size_t k = 0; k < 3; ++k) {

@@ -59,10 +59,10 @@ const Slot& fittingSlot(const Material& material, RenderOutput output, const std
     auto fits = [&](const Slot& s) {
         switch (output) {
             case RenderOutput::Albedo:
-                return s.kind != SlotKind::Normal;
+                return !kindRow(s.kind).derivative;
             case RenderOutput::Normal:
             case RenderOutput::Derivative:
-                return s.kind == SlotKind::Normal;
+                return kindRow(s.kind).derivative;
             default:
                 return true;
         }

@@ -46,7 +46,7 @@ struct CompileOptions {
     uint32_t mslMajor = 2, mslMinor = 0;
     // Emit only the code each slot's settings need (no rotation at rotation 0, no gain at falloff 0.5, no
     // falloff metric at falloffcontrast 0). Off: every feature is emitted and the uniforms decide at run time.
-    bool specialize = true;
+    bool specialise = true;
     // Slots with the same tiling, rotation and mode evaluate the lattice once.
     bool shareLattice = true;
     // Numeric settings become specialisation constants, frozen by spirv-opt so it can fold them, instead of

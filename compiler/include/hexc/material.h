@@ -12,7 +12,29 @@
 namespace hexc {
 
 enum class SlotKind { Color, Scalar, Normal };
+inline constexpr size_t kSlotKindCount = 3;
 enum class ColorSpace { Srgb, Linear };
+
+// What the code asks of a slot kind, one row per kind (kindRow; the table, in SlotKind order, is in
+// material/names.cpp): code asks a property here, not which kind it is, so a new kind is a new row.
+struct SlotKindRow {
+    SlotKind kind;
+    const char* name;       // as a material, a template and the manifest spell it
+    const char* glslType;   // what its slot function returns (a triplanar derivative slot: a vec3 surface gradient)
+    const char* mtlxType;   // its value's MaterialX type
+    const char* reads;      // the texture channels it reads, as the manifest's `reads`; "" for a one-channel kind
+    ColorSpace colorSpace;  // its default colour space
+    // Samples a tangent-space normal map on the derivative path: blends slopes, takes `flip_y`, is linear only, and
+    // engines take its normal function.
+    bool derivative;
+    // Reads the one channel its `channel` names: a scalar value, shown as grey; it can hold heights.
+    bool oneChannel;
+    bool mayPack;          // may share a packed texture with other slots (docs/material-format.md#pack)
+    bool mayUseHistogram;  // may blend by histogram (docs/material-format.md#blend)
+};
+const SlotKindRow& kindRow(SlotKind kind);
+// Every row, in SlotKind order.
+const std::array<SlotKindRow, kSlotKindCount>& kindRows();
 // How tile offsets and rotations are derived from the lattice ids. `Stable` (the default): an integer
 // hash of exactly reduced lattice ids, identical on every target and precise far from the origin
 // (templates/library/hextiling/, docs/material-format.md). `Paper`: exactly Listings 1, 2, 5 and 6.
@@ -32,21 +54,19 @@ enum class Blend { Falloff, Histogram };
 // passed to every fetch (textureLod: cheaper, isotropic).
 enum class Lod { Gradients, Shared };
 
-// Hex-tiling settings. Names follow MaterialX <hextiledimage> where the meaning is the same;
-// the paper's symbol is given for each.
-struct HexTiling {
+// Hex-tiling settings, in two parts: what decides the lattice and what decides the blend. Names follow MaterialX
+// <hextiledimage> where the meaning is the same; the paper's symbol is given for each. Each part compares every
+// member (`= default`), so a setting added to it cannot be left out where slots are told apart by it.
+
+// The lattice (Listing 1 and the per-tile transforms): slots whose lattice settings are equal share one
+// (ShaderPlan::lattices) and may share a packed texture.
+struct LatticeSettings {
     bool enabled = true;                 // false: plain tiling (one fetch), for comparison or cheap slots
     std::array<double, 2> tiling{1, 1};  // UV scale applied before the lattice (MaterialX `tiling`)
     double rotation = 1.0;               // rotStrength of Listings 3, 4, 6 (MaterialX `rotation`)
-    double falloff = 0.5;                // r of Eq. 5 / Listing 8 gain; 0.5 = off (MaterialX `falloff`)
-    double falloffcontrast = 0.6;        // beta of Eq. 3-4 (MaterialX `falloffcontrast`)
-    double exponent = 7.0;               // gamma, exponent on the barycentric weights (Eq. 1)
     HashMode mode = HashMode::Stable;
     Mask mask = Mask::Hex;
-    int maskScale = 2;  // checker and noise masks: cells per unit of st
-    int taps = 0;       // 0: every tap of the mask, blended; 1: one dithered fetch; kAdaptiveTaps: each tap fetched when it can matter
-    Blend blend = Blend::Falloff;  // normal slots always blend derivatives (Falloff)
-    Lod lod = Lod::Gradients;
+    int maskScale = 2;                       // checker and noise masks: cells per unit of st
     Projection projection = Projection::Uv;  // material-wide
     double planeSharpness = 4;               // triplanar: exponent on |normal| per plane
     // Stable mode only: the slot also reads an origin (cell, offset) that the engine fills each frame from a
@@ -57,19 +77,37 @@ struct HexTiling {
     int rotationSteps = 0;                           // > 0: that many evenly spaced angles in the range
     std::array<double, 2> scaleRange{1, 1};          // texture scale drawn per tile
     double offset = 1.0;                             // amount of the random offset
-    // MaterialX mode: the luma weights of its colour blend (MaterialX `lumacoeffs`; its default, ACEScg's).
-    std::array<double, 3> lumacoeffs{0.2722287, 0.6740818, 0.0536895};
-    std::array<int, 2> offsetSteps{0, 0};  // > 0: offsets snapped to a grid of that many cells
-    // `"taps": "adaptive"` (docs/material-format.md#taps): a tap is skipped when a bound on its weight, known before
-    // sampling, shows it cannot move the result by more than kAdaptiveError.
-    static constexpr int kAdaptiveTaps = -1;
-    static constexpr double kAdaptiveError = 1.0 / 255;
+    std::array<int, 2> offsetSteps{0, 0};            // > 0: offsets snapped to a grid of that many cells
     int maskTaps() const { return mask == Mask::Checker ? 2 : 3; }
-    bool adaptive() const { return taps == kAdaptiveTaps; }
     bool hasTransforms() const {
         return rotationRange != std::array<double, 2>{-180, 180} || rotationSteps != 0 || scaleRange != std::array<double, 2>{1, 1} ||
                offset != 1.0 || offsetSteps != std::array<int, 2>{0, 0};
     }
+    bool operator==(const LatticeSettings&) const = default;
+};
+
+// How a slot fetches and weighs its tiles' samples on that lattice.
+struct BlendSettings {
+    double falloff = 0.5;          // r of Eq. 5 / Listing 8 gain; 0.5 = off (MaterialX `falloff`)
+    double falloffcontrast = 0.6;  // beta of Eq. 3-4 (MaterialX `falloffcontrast`)
+    double exponent = 7.0;         // gamma, exponent on the barycentric weights (Eq. 1)
+    int taps = 0;  // 0: every tap of the mask, blended; 1: one dithered fetch; kAdaptiveTaps: each tap fetched when it can matter
+    Blend blend = Blend::Falloff;  // normal slots always blend derivatives (Falloff)
+    Lod lod = Lod::Gradients;
+    // MaterialX mode: the luma weights of its colour blend (MaterialX `lumacoeffs`; its default, ACEScg's).
+    std::array<double, 3> lumacoeffs{0.2722287, 0.6740818, 0.0536895};
+    // `"taps": "adaptive"` (docs/material-format.md#taps): a tap is skipped when a bound on its weight, known before
+    // sampling, shows it cannot move the result by more than kAdaptiveError.
+    static constexpr int kAdaptiveTaps = -1;
+    static constexpr double kAdaptiveError = 1.0 / 255;
+    bool adaptive() const { return taps == kAdaptiveTaps; }
+    bool operator==(const BlendSettings&) const = default;
+};
+
+// A slot's (or the material's) settings: both parts, their members read as `hex.tiling`, `hex.falloff`.
+struct HexTiling : LatticeSettings, BlendSettings {
+    const LatticeSettings& lattice() const { return *this; }
+    const BlendSettings& blending() const { return *this; }
 };
 
 // Height blending (docs/material-format.md#height-blending): tiles weighed by the heights of a scalar slot.
@@ -99,7 +137,7 @@ struct Slot {
     // (hex-tiled or plain), which filters and blends the stored (encoded) texels and decodes the result, as MaterialX
     // does: there the shader decodes, and the manifest says so (`"decode": "shader"`, docs/materialx.md#materialx-mode).
     bool samplerDecodes() const { return colorSpace == ColorSpace::Srgb && !shaderDecodes(); }
-    bool shaderDecodes() const { return colorSpace == ColorSpace::Srgb && kind != SlotKind::Normal && hex.mode == HashMode::MaterialX; }
+    bool shaderDecodes() const { return colorSpace == ColorSpace::Srgb && !kindRow(kind).derivative && hex.mode == HashMode::MaterialX; }
 };
 
 // A shader template as a material, a scene pass or --template names it, told apart once, where it is read: one of

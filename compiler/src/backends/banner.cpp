@@ -14,7 +14,7 @@ std::string banner(const Material& material, const ShaderPlan& plan, const Compi
     std::string code =
         std::string(options.debug ? "debug (unoptimised, line directives: " + std::string(toString(options.lineDirectives)) + ")"
                                   : "optimised") +
-        (options.bake ? ", baked" : "") + (options.specialize ? "" : ", not specialised") +
+        (options.bake ? ", baked" : "") + (options.specialise ? "" : ", not specialised") +
         (options.shareLattice ? "" : ", no shared lattice") + (plan.functions ? ", functions" : "") +
         (plan.uvBottomLeft ? ", uv origin bottom-left" : "");
     return kBannerStart + std::string(version()) + " from " + (from.empty() ? material.name : from) + " (material " + material.name +

@@ -68,6 +68,7 @@ nlohmann::json hextilingEntry(const HexTiling& h) {
 nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
+    const SlotKindRow& kind = kindRow(sp.kind);
     nlohmann::json slot = {
         {"name", s.name},
         {"kind", toString(s.kind)},
@@ -76,18 +77,18 @@ nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
         {"colorspace", toString(s.colorSpace)},
         {"hextiling", hextilingEntry(h)},
     };
-    if (h.mode == HashMode::MaterialX && s.kind != SlotKind::Normal) slot["hextiling"]["lumacoeffs"] = h.lumacoeffs;
+    if (h.mode == HashMode::MaterialX && !kind.derivative) slot["hextiling"]["lumacoeffs"] = h.lumacoeffs;
     // MaterialX mode filters an sRGB texture's stored texels: bind it with a linear (UNORM) format; the shader decodes.
     if (s.shaderDecodes()) slot["decode"] = "shader";
     if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
     // Bound for another slot's height blending only: the shader has no function for it.
     if (sp.heightOnly) slot["height_map_only"] = true;
     if (sp.histogram) slot["histogram"] = histogramEntry(material, s);
-    if (s.kind == SlotKind::Scalar) slot["channel"] = std::string(1, "rgba"[s.channel]);
-    if (s.kind == SlotKind::Normal) slot["flip_y"] = s.flipY;
-    if (s.kind == SlotKind::Normal) slot["normal_green"] = s.flipY ? "down (DirectX)" : "up (OpenGL)";
+    if (kind.oneChannel) slot["channel"] = std::string(1, "rgba"[s.channel]);
+    if (kind.derivative) slot["flip_y"] = s.flipY;
+    if (kind.derivative) slot["normal_green"] = s.flipY ? "down (DirectX)" : "up (OpenGL)";
     // The texture channels the shader reads: what a packing tool may not reuse.
-    slot["reads"] = s.kind == SlotKind::Color ? "rgba" : s.kind == SlotKind::Normal ? "rgb" : std::string(1, "rgba"[s.channel]);
+    slot["reads"] = kind.oneChannel ? std::string(1, "rgba"[s.channel]) : kind.reads;
     return slot;
 }
 
@@ -177,11 +178,11 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
 nlohmann::json functionsEntry(const ShaderPlan& plan) {
     nlohmann::json functions = nlohmann::json::array();
     for (const EngineFunction& f : engineFunctions(plan)) {
-        const SlotKind kind = f.slot->slot->kind;
-        const char* value = f.tangentNormal            ? "tangent-space normal, unit length: x along +u, y up the image, z out (green up)"
-                            : kind == SlotKind::Normal ? "height derivative (dH/du, dH/dy), y up the image (as docs/conventions.md)"
-                            : kind == SlotKind::Scalar ? "the scalar value"
-                                                       : "RGBA, linear";
+        const SlotKindRow& kind = kindRow(f.slot->kind);
+        const char* value = f.tangentNormal   ? "tangent-space normal, unit length: x along +u, y up the image, z out (green up)"
+                            : kind.derivative ? "height derivative (dH/du, dH/dy), y up the image (as docs/conventions.md)"
+                            : kind.oneChannel ? "the scalar value"
+                                              : "RGBA, linear";
         functions.push_back({{"name", f.name},
                              {"slot", f.slot->slot->name},
                              {"parameters", "vec2 uv"},

@@ -123,7 +123,7 @@ public:
         for (const SlotPlan& sp : plan_.slots) {
             if (sp.heightOnly) continue;
             const Tokens name = {{"name", sp.name}};
-            if (sp.kind == SlotKind::Normal) normals += expand("engine.normal", name) + "\n\n";
+            if (kindRow(sp.kind).derivative) normals += expand("engine.normal", name) + "\n\n";
             calls += expand("engine.call." + std::string(toString(sp.kind)), name) + "\n";
         }
         if (calls.ends_with('\n')) calls.pop_back();

@@ -184,7 +184,7 @@ Lines lines(const Material& material, const Style& s, const Functions& f, const 
         const std::string name = entry["name"], slotName = entry["slot"];
         const Function& fn = *std::find_if(f.functions.begin(), f.functions.end(), [&](const Function& x) { return x.name == name; });
         const Slot& slot = *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& x) { return x.name == slotName; });
-        const bool derivative = slot.kind == SlotKind::Normal && entry["returns"] != "vec3";  // the engines take the normal
+        const bool derivative = kindRow(slot.kind).derivative && entry["returns"] != "vec3";  // the engines take the normal
         const std::string role = derivative ? "" : slotRole(slot);
         const auto input = std::find_if(inputs().begin(), inputs().end(), [&](const Input& i) { return i.role == role; });
         const bool fills = input != inputs().end() && std::find(taken.begin(), taken.end(), role) == taken.end();

@@ -133,7 +133,7 @@ Wiring wire(const Material& material, const nlohmann::json& functions, Engine en
     for (const auto& f : functions) {
         const std::string name = f["name"], slot = f["slot"], call = name + "(UV_IN)";
         const Slot& s = *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& x) { return x.name == slot; });
-        if (s.kind == SlotKind::Normal && f["returns"] != "vec3") continue;  // the derivative: the tangent-space normal feeds the engine
+        if (kindRow(s.kind).derivative && f["returns"] != "vec3") continue;  // the derivative: the tangent-space normal feeds the engine
         const std::string role = slotRole(s);
         std::string statement;
         if (role.empty() || !taken.insert(role).second) {
@@ -222,7 +222,7 @@ std::string slotRole(const Slot& slot) {
         {"roughness", "roughness"}, {"metallic", "metallic"}, {"metalness", "metallic"}, {"ao", "ao"},
         {"occlusion", "ao"},        {"emission", "emission"}, {"emissive", "emission"}};
     if (!slot.role.empty()) return slot.role;
-    if (slot.kind == SlotKind::Normal) return "normal";
+    if (kindRow(slot.kind).derivative) return "normal";
     auto role = roles.find(slot.name);
     if (role == roles.end() || roleKind(role->second) != slot.kind) return "";
     return role->second;

@@ -106,7 +106,7 @@ void wire(const Material& material, const WebEngine& web, const nlohmann::json& 
     data["slots"] = data["unmapped"] = nlohmann::json::array();
     for (const auto& f : manifest["functions"]) {
         const Slot& slot = slotNamed(material, f["slot"]);
-        if (slot.kind == SlotKind::Normal && f["returns"] != "vec3") continue;  // the derivative: the engine takes the normal
+        if (kindRow(slot.kind).derivative && f["returns"] != "vec3") continue;  // the derivative: the engine takes the normal
         const std::string role = slotRole(slot);
         const bool taken =
             std::any_of(data["slots"].begin(), data["slots"].end(), [&](const nlohmann::json& s) { return s["role"] == role; });

@@ -63,8 +63,6 @@ std::string numbers(std::initializer_list<double> xs) {
     return out;
 }
 
-const char* slotType(SlotKind kind) { return kind == SlotKind::Color ? "color3" : kind == SlotKind::Scalar ? "float" : "vector3"; }
-
 class Writer {
 public:
     Writer(const Material& m, const std::filesystem::path& outFile)
@@ -145,8 +143,8 @@ private:
 
 // The shader and input a slot feeds: the one whose slot the reader names `s.name` (mtlx::slotName).
 xml_node Writer::target(const Slot& s, size_t index, std::string& input) {
-    const std::string type = slotType(s.kind);
-    if (s.kind == SlotKind::Scalar && mtlx::slotName("displacement", "displacement") == s.name) {
+    const std::string type = kindRow(s.kind).mtlxType;
+    if (kindRow(s.kind).oneChannel && mtlx::slotName("displacement", "displacement") == s.name) {
         if (!displacement_) displacement_ = element(doc_.document_element(), "displacement", "DS_" + m_.name, "displacementshader");
         input = "displacement";
         return displacement_;
@@ -170,31 +168,30 @@ void Writer::slot(const Slot& s, size_t index) {
     xml_node shader = target(s, index, feeds);
     if (!shader) return;
     const bool hex = s.hex.enabled;
-    const char* category = hex ? (s.kind == SlotKind::Normal ? "hextilednormalmap" : "hextiledimage") : "tiledimage";
-    xml_node node = element(graph_, category, s.name,
-                            s.kind == SlotKind::Normal   ? "vector3"
-                            : s.kind == SlotKind::Scalar ? "color4"
-                                                         : "color3");
+    const SlotKindRow& kind = kindRow(s.kind);
+    const char* category = hex ? (kind.derivative ? "hextilednormalmap" : "hextiledimage") : "tiledimage";
+    // A one-channel kind reads the texture's four channels and extracts its own.
+    xml_node node = element(graph_, category, s.name, kind.oneChannel ? "color4" : kind.mtlxType);
     xml_node file = input(node, "file", "filename", relative(s.texturePath));
-    if (s.colorSpace == ColorSpace::Srgb && s.kind != SlotKind::Normal) file.append_attribute("colorspace") = "srgb_texture";
+    if (s.colorSpace == ColorSpace::Srgb && !kind.derivative) file.append_attribute("colorspace") = "srgb_texture";
     if (hex)
         hexInputs(node, s);
     else
         input(node, "uvtiling", "vector2", numbers({s.hex.tiling[0], s.hex.tiling[1]}));
     hexcAttributes(node, s);
     std::string last = s.name;
-    if (s.kind == SlotKind::Scalar) {
+    if (kind.oneChannel) {
         xml_node extract = element(graph_, "extract", s.name + "_channel", "float");
         element(extract, "input", "in", "color4").append_attribute("nodename") = last.c_str();
         input(extract, "index", "integer", std::to_string(s.channel));
         last = s.name + "_channel";
-    } else if (s.kind == SlotKind::Normal && !hex) {
+    } else if (kind.derivative && !hex) {
         xml_node normalmap = element(graph_, "normalmap", s.name + "_normalmap", "vector3");
         element(normalmap, "input", "in", "vector3").append_attribute("nodename") = last.c_str();
         last = s.name + "_normalmap";
     }
-    element(graph_, "output", s.name + "_out", slotType(s.kind)).append_attribute("nodename") = last.c_str();
-    xml_node in = element(shader, "input", feeds.c_str(), slotType(s.kind));
+    element(graph_, "output", s.name + "_out", kind.mtlxType).append_attribute("nodename") = last.c_str();
+    xml_node in = element(shader, "input", feeds.c_str(), kind.mtlxType);
     in.append_attribute("nodegraph") = graph_.attribute("name").value();
     in.append_attribute("output") = (s.name + "_out").c_str();
 }
@@ -213,7 +210,7 @@ void Writer::hexInputs(xml_node node, const Slot& s) {
     input(node, "offset", "float", number(h.offset));
     input(node, "offsetrange", "vector2", "0, 1");
     input(node, "falloff", "float", number(h.falloff));
-    if (s.kind == SlotKind::Normal) {
+    if (kindRow(s.kind).derivative) {
         input(node, "flip_g", "boolean", s.flipY ? "true" : "false");
         return;
     }
@@ -240,7 +237,7 @@ void Writer::hexcAttributes(xml_node node, const Slot& s) {
         if (h.taps != d.taps) put("taps", h.adaptive() ? "adaptive" : std::to_string(h.taps));
         if (h.blend != d.blend) put("blend", std::string(toString(h.blend)));
         if (h.lod != d.lod) put("lod", std::string(toString(h.lod)));
-        if (s.kind == SlotKind::Normal && h.falloffcontrast != d.falloffcontrast) put("falloffcontrast", number(h.falloffcontrast));
+        if (kindRow(s.kind).derivative && h.falloffcontrast != d.falloffcontrast) put("falloffcontrast", number(h.falloffcontrast));
     } else if (s.flipY) {
         put("flip_y", "true");
     }

@@ -1,26 +1,68 @@
-// The enums' names (names.h) and toString over them.
+// The enums' names (names.h) and toString over them, and the slot-kind table (hexc/material.h).
 #include "material/names.h"
 
 #include "hexc/material.h"
 
 namespace hexc {
+namespace {
 
-const std::vector<std::string> kKinds = {"color", "scalar", "normal"};
+constexpr std::array<SlotKindRow, kSlotKindCount> kKindRows = {{
+    // kind, name, glslType, mtlxType, reads, colorSpace, derivative, oneChannel, mayPack, mayUseHistogram
+    {SlotKind::Color, "color", "vec4", "color3", "rgba", ColorSpace::Srgb, false, false, true, true},
+    {SlotKind::Scalar, "scalar", "float", "float", "", ColorSpace::Linear, false, true, true, true},
+    {SlotKind::Normal, "normal", "vec2", "vector3", "rgb", ColorSpace::Linear, true, false, false, false},
+}};
+
+constexpr bool inKindOrder() {
+    for (size_t i = 0; i < kKindRows.size(); ++i)
+        if (size_t(kKindRows[i].kind) != i || kKindRows[i].name == nullptr || kKindRows[i].oneChannel != (*kKindRows[i].reads == '\0'))
+            return false;
+    return true;
+}
+static_assert(inKindOrder(), "the slot-kind table has one row per SlotKind, in SlotKind order; `reads` empty for one channel");
+
+// An enum's names in its order; `Last` is its last value, so a name missing or extra does not compile.
+template <auto Last, size_t N>
+std::vector<std::string> enumNames(const char* const (&names)[N]) {
+    static_assert(N == size_t(Last) + 1, "one name per value, in enum order");
+    return {names, names + N};
+}
+
+std::vector<std::string> kindNames() {
+    std::vector<std::string> names;
+    for (const SlotKindRow& row : kKindRows) names.push_back(row.name);
+    return names;
+}
+
+}  // namespace
+
+const std::vector<std::string> kKinds = kindNames();
 const std::vector<std::string> kChannels = {"r", "g", "b", "a"};
-const std::vector<std::string> kColorSpaces = {"srgb", "linear"};
-const std::vector<std::string> kModes = {"stable", "paper", "materialx"};
-const std::vector<std::string> kMasks = {"hex", "checker", "noise", "noise3"};
-const std::vector<std::string> kProjections = {"uv", "triplanar"};
-const std::vector<std::string> kBlends = {"falloff", "histogram"};
-const std::vector<std::string> kLods = {"gradients", "shared"};
+const std::vector<std::string> kColorSpaces = enumNames<ColorSpace::Linear>({"srgb", "linear"});
+const std::vector<std::string> kModes = enumNames<HashMode::MaterialX>({"stable", "paper", "materialx"});
+const std::vector<std::string> kMasks = enumNames<Mask::Noise3>({"hex", "checker", "noise", "noise3"});
+const std::vector<std::string> kProjections = enumNames<Projection::Triplanar>({"uv", "triplanar"});
+const std::vector<std::string> kBlends = enumNames<Blend::Histogram>({"falloff", "histogram"});
+const std::vector<std::string> kLods = enumNames<Lod::Shared>({"gradients", "shared"});
 const std::vector<std::string> kRoles = {"albedo", "normal", "roughness", "metallic", "ao", "emission"};
+
+const SlotKindRow& kindRow(SlotKind kind) { return kKindRows.at(size_t(kind)); }
+
+const std::array<SlotKindRow, kSlotKindCount>& kindRows() { return kKindRows; }
+
+std::string kindsWhere(bool SlotKindRow::*property) {
+    std::string text;
+    for (const SlotKindRow& row : kKindRows)
+        if (row.*property) text += (text.empty() ? "`" : " or `") + std::string(row.name) + "`";
+    return text;
+}
 
 SlotKind roleKind(const std::string& role) {
     if (role == "normal") return SlotKind::Normal;
     return role == "albedo" || role == "emission" ? SlotKind::Color : SlotKind::Scalar;
 }
 
-std::string_view toString(SlotKind kind) { return kKinds[size_t(kind)]; }
+std::string_view toString(SlotKind kind) { return kindRow(kind).name; }
 std::string_view toString(ColorSpace space) { return kColorSpaces[size_t(space)]; }
 std::string_view toString(HashMode mode) { return kModes[size_t(mode)]; }
 std::string_view toString(Mask mask) { return kMasks[size_t(mask)]; }

@@ -14,4 +14,7 @@ extern const std::vector<std::string> kKinds, kChannels, kColorSpaces, kModes, k
 extern const std::vector<std::string> kRoles;
 SlotKind roleKind(const std::string& role);
 
+// The kinds that have a property, as a message lists them: "`color` or `scalar`".
+std::string kindsWhere(bool SlotKindRow::*property);
+
 }  // namespace hexc

@@ -244,16 +244,19 @@ private:
             TextPos at = locator_.value(pointer + "/kind");  // where a template-fit error points
             s.line = at.line, s.col = at.col;
         }
-        s.colorSpace = s.kind == SlotKind::Color ? ColorSpace::Srgb : ColorSpace::Linear;
+        const SlotKindRow& kind = kindRow(s.kind);
+        s.colorSpace = kind.colorSpace;
         if (v.contains("channel")) {
-            if (kindKnown && s.kind != SlotKind::Scalar)
-                report(Code::MisplacedKey, pointer + "/channel", "`channel` applies only to slots of kind `scalar`", {}, true);
+            if (kindKnown && !kind.oneChannel)
+                report(Code::MisplacedKey, pointer + "/channel",
+                       "`channel` applies only to slots of kind " + kindsWhere(&SlotKindRow::oneChannel), {}, true);
             else if (int i = choice(v["channel"], pointer + "/channel", kChannels); i >= 0)
                 s.channel = i;
         }
         if (v.contains("flip_y")) {
-            if (kindKnown && s.kind != SlotKind::Normal)
-                report(Code::MisplacedKey, pointer + "/flip_y", "`flip_y` applies only to slots of kind `normal`", {}, true);
+            if (kindKnown && !kind.derivative)
+                report(Code::MisplacedKey, pointer + "/flip_y",
+                       "`flip_y` applies only to slots of kind " + kindsWhere(&SlotKindRow::derivative), {}, true);
             else
                 s.flipY = boolean(v["flip_y"], pointer + "/flip_y", false);
         }
@@ -269,7 +272,7 @@ private:
         }
         if (v.contains("colorspace")) {
             if (int i = choice(v["colorspace"], pointer + "/colorspace", kColorSpaces); i >= 0) {
-                if (kindKnown && s.kind == SlotKind::Normal && ColorSpace(i) == ColorSpace::Srgb)
+                if (kindKnown && kind.derivative && ColorSpace(i) == ColorSpace::Srgb)
                     report(Code::ConflictingSettings, pointer + "/colorspace",
                            "a normal map holds vectors and must be `linear`, got \"srgb\"");
                 else
@@ -301,18 +304,20 @@ private:
     void blendRules(const json& v, const std::string& pointer, Slot& s) {
         if (s.hex.blend != Blend::Histogram) return;
         const bool own = v.contains("hextiling") && v["hextiling"].is_object() && v["hextiling"].contains("blend");
-        if (own && s.kind == SlotKind::Normal)
+        const bool may = kindRow(s.kind).mayUseHistogram;
+        if (own && !may)
             report(Code::WrongSlotKind, pointer + "/hextiling/blend",
-                   "`blend` \"histogram\" applies to slots of kind `color` or `scalar`; a normal map blends its derivatives");
-        else if (s.hex.enabled && s.kind != SlotKind::Normal && s.hex.taps == 1)
+                   "`blend` \"histogram\" applies to slots of kind " + kindsWhere(&SlotKindRow::mayUseHistogram) +
+                       "; a normal map blends its derivatives");
+        else if (s.hex.enabled && may && s.hex.taps == 1)
             report(
                 Code::ConflictingSettings, pointer + (own ? "/hextiling/blend" : ""),
                 "`blend` \"histogram\" blends every tile's sample; it cannot be combined with `taps` 1 (one fetch has nothing to blend)");
-        else if (s.hex.enabled && s.kind != SlotKind::Normal && s.hex.adaptive())
+        else if (s.hex.enabled && may && s.hex.adaptive())
             report(Code::ConflictingSettings, pointer + (own ? "/hextiling/blend" : ""),
                    "`blend` \"histogram\" cannot be combined with `taps` \"adaptive\": its look-up table can magnify a skipped tap's "
                    "weight beyond the bound adaptive taps guarantee");
-        if (s.kind == SlotKind::Normal || !s.hex.enabled) s.hex.blend = Blend::Falloff;
+        if (!may || !s.hex.enabled) s.hex.blend = Blend::Falloff;
     }
 
     // Three weights in [0, 1].
@@ -453,10 +458,10 @@ private:
                 std::string hint;
                 if (auto best = closestMatch(s.heightBlend->slot, names)) hint = "did you mean " + ticked(*best) + "?";
                 report(Code::UnknownReference, p, "no slot named `" + s.heightBlend->slot + "` in this material", hint);
-            } else if (const Slot& h = m.slots[size_t(it - names.begin())]; h.kind != SlotKind::Scalar) {
-                report(
-                    Code::WrongSlotKind, p,
-                    "slot `" + h.name + "` is of kind `" + std::string(toString(h.kind)) + "`; heights come from a slot of kind `scalar`");
+            } else if (const Slot& h = m.slots[size_t(it - names.begin())]; !kindRow(h.kind).oneChannel) {
+                report(Code::WrongSlotKind, p,
+                       "slot `" + h.name + "` is of kind `" + std::string(toString(h.kind)) + "`; heights come from a slot of kind " +
+                           kindsWhere(&SlotKindRow::oneChannel));
             }
         }
     }
@@ -486,7 +491,7 @@ private:
         s.height = info->height;
         s.channelNames = info->channelNames;
         s.eightBit = info->eightBit;
-        if (s.kind == SlotKind::Normal && info->channels < 3)
+        if (kindRow(s.kind).derivative && info->channels < 3)
             report(Code::TextureChannels, pointer,
                    "a normal map needs 3 channels (xyz), " + shown + " has " + std::to_string(info->channels));
         // A channel the file lacks reads whatever the engine's upload puts there (0, 1 or a copy of grey): a scalar
@@ -497,7 +502,7 @@ private:
                        (*info->srgb ? "\"linear\"; a sampler would decode it from sRGB" : "\"srgb\"; its format stores linear values"));
         std::vector<std::string> has;
         for (char c : info->channelNames) has.emplace_back(1, c);
-        if (s.kind == SlotKind::Scalar && std::find(has.begin(), has.end(), kChannels[size_t(s.channel)]) == has.end())
+        if (kindRow(s.kind).oneChannel && std::find(has.begin(), has.end(), kChannels[size_t(s.channel)]) == has.end())
             report(Code::TextureChannels, pointer.substr(0, pointer.rfind('/')) + "/channel",
                    "channel `" + kChannels[size_t(s.channel)] + "` of " + shown + ", which has " + std::to_string(info->channels) +
                        " channel" + (info->channels == 1 ? "" : "s") + "; expected " + joinQuoted(has));

@@ -22,7 +22,7 @@ int packChannels(ShaderPlan& plan, size_t i) {
     const SlotPlan& sp = plan.slots[i];
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
-    if (sp.heightOnly || s.kind == SlotKind::Normal || !h.enabled || h.taps == 1 || sp.histogram || s.heightBlend ||
+    if (sp.heightOnly || !kindRow(s.kind).mayPack || !h.enabled || h.taps == 1 || sp.histogram || s.heightBlend ||
         h.projection == Projection::Triplanar || h.mode == HashMode::MaterialX)
         return 0;
     for (const SlotPlan& other : plan.slots)
@@ -35,7 +35,7 @@ int packChannels(ShaderPlan& plan, size_t i) {
     }
     // The header decides where it can: an 8-bit scalar takes its channel, and an 8-bit colour file without alpha
     // leaves alpha free. Otherwise the texels do: float ones do not pack, and a colour texture's alpha must be opaque.
-    if (s.eightBit && s.kind == SlotKind::Scalar) return 1;
+    if (s.eightBit && kindRow(s.kind).oneChannel) return 1;
     if (s.eightBit && s.channelNames.find('a') == std::string::npos) return 3;
     Texture t;
     try {
@@ -44,7 +44,7 @@ int packChannels(ShaderPlan& plan, size_t i) {
         return 0;  // not decoded here (block-compressed): the texture is bound as it is
     }
     if (t.isFloat()) return 0;
-    if (s.kind == SlotKind::Scalar) return 1;
+    if (kindRow(s.kind).oneChannel) return 1;
     for (size_t p = 3; p < t.rgba8.size(); p += 4)
         if (t.rgba8[p] != 255) return 0;
     return 3;
@@ -102,7 +102,7 @@ void planPacks(ShaderPlan& plan) {
         for (size_t j = i; j < plan.slots.size(); ++j) {
             const Slot& s = *plan.slots[j].slot;
             // The lattice and how the taps fetch (lod): what the shared samples are.
-            if (!channels[j] || done[j] || !sameLattice(first.hex, s.hex) || s.hex.lod != first.hex.lod) continue;
+            if (!channels[j] || done[j] || first.hex.lattice() != s.hex.lattice() || s.hex.lod != first.hex.lod) continue;
             if (s.width != first.width || s.height != first.height) {
                 notPacked(plan, j,
                           "its texture is " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", slot `" + first.name + "`'s " +

@@ -14,13 +14,6 @@
 
 namespace hexc {
 
-bool sameLattice(const HexTiling& a, const HexTiling& b) {
-    return a.enabled == b.enabled && a.mode == b.mode && a.splitCoordinates == b.splitCoordinates && a.tiling == b.tiling &&
-           a.rotation == b.rotation && a.rotationRange == b.rotationRange && a.rotationSteps == b.rotationSteps &&
-           a.scaleRange == b.scaleRange && a.offset == b.offset && a.offsetSteps == b.offsetSteps && a.mask == b.mask &&
-           a.maskScale == b.maskScale && a.projection == b.projection && a.planeSharpness == b.planeSharpness;
-}
-
 namespace {
 
 // Reads the template the options or the material name into plan.templateSource; false (with an error) when it
@@ -96,7 +89,6 @@ SlotUse slotUse(const Material& material, const std::string& templateSource, boo
 SlotPlan planSlot(const Slot& slot, bool all) {
     const HexTiling& h = slot.hex;
     const bool triplanar = h.projection == Projection::Triplanar;
-    static const char* kTypes[] = {"vec4", "float", "vec2"};
     SlotPlan sp;
     sp.slot = &slot;
     sp.histogram = h.enabled && h.blend == Blend::Histogram;  // the parser has left it only on colour and scalar slots
@@ -107,8 +99,8 @@ SlotPlan planSlot(const Slot& slot, bool all) {
                                                      : sp.histogram ? ".histogram"
                                                                     : ".hex");
     sp.coordinates = triplanar ? "triplanar" : h.splitCoordinates ? "uv.split" : "uv";
-    // A triplanar normal slot returns a world-space surface gradient.
-    sp.type = triplanar && slot.kind == SlotKind::Normal ? "vec3" : kTypes[size_t(slot.kind)];
+    // A triplanar derivative (normal) slot returns a world-space surface gradient.
+    sp.type = triplanar && kindRow(slot.kind).derivative ? "vec3" : kindRow(slot.kind).glslType;
     sp.projection = h.projection;
     sp.explicitGradients = triplanar;
     sp.taps = h.maskTaps();
@@ -172,7 +164,7 @@ Diagnostic slotNotRead(const Material& material, const Slot& slot, const ShaderP
 // plan.slots and plan.lattices; a slot joins the first lattice computed from the same settings when sharing.
 void planSlots(const Material& material, const CompileOptions& options, ShaderPlan& plan) {
     SlotUse use = slotUse(material, plan.templateSource, plan.functions);
-    std::vector<const HexTiling*> latticeKeys;
+    std::vector<const LatticeSettings*> latticeKeys;
     uint32_t binding = plan.bindings.firstTexture;
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
@@ -184,12 +176,12 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
         sp.slot = &slot;
         sp.heightOnly = !use.read[i];
         if (!sp.heightOnly) {
-            sp = planSlot(slot, !options.specialize);
+            sp = planSlot(slot, !options.specialise);
             size_t& l = sp.lattice;
-            while (l < latticeKeys.size() && !(options.shareLattice && sameLattice(*latticeKeys[l], slot.hex))) ++l;
+            while (l < latticeKeys.size() && !(options.shareLattice && *latticeKeys[l] == slot.hex.lattice())) ++l;
             if (l == latticeKeys.size()) {
-                latticeKeys.push_back(&slot.hex);
-                plan.lattices.push_back(planLattice(slot.hex, !options.specialize));
+                latticeKeys.push_back(&slot.hex.lattice());
+                plan.lattices.push_back(planLattice(slot.hex, !options.specialise));
             }
         }
         sp.name = sp.heightMapName = slot.name;
@@ -348,7 +340,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     plan.layout = options.layout;
     plan.entryPoint = options.entryPoint.empty() ? defaultEntryPoint(material.name) : options.entryPoint;
     plan.bindings = HexcBindings(options.layout.vulkan);
-    plan.general = !options.specialize;
+    plan.general = !options.specialise;
     plan.uvBottomLeft = options.uvOrigin == UvOrigin::BottomLeft;
     if (!loadTemplate(material, options, plan)) return plan;
     // The built-in `functions` named by a material is the functions output, as with --functions.
@@ -365,7 +357,7 @@ std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan) {
     for (const SlotPlan& sp : plan.slots) {
         if (sp.heightOnly) continue;
         functions.push_back({"hexc_" + sp.slot->name, &sp, false});
-        if (sp.slot->kind == SlotKind::Normal) functions.push_back({"hexc_" + sp.slot->name + "_normal", &sp, true});
+        if (kindRow(sp.kind).derivative) functions.push_back({"hexc_" + sp.slot->name + "_normal", &sp, true});
     }
     return functions;
 }

@@ -121,7 +121,7 @@ struct ShaderPlan {
     std::vector<ParamMember> params;       // block members first, in block order, then baked constants
     std::vector<ParamMember> specialised;  // settings fixed in the code as whole-number exponents
     uint32_t paramBlockSize = 0;           // std140 size, rounded up to 16
-    // --no-specialize (CompileOptions::specialize false): the slots call the library's general functions with every
+    // --no-specialise (CompileOptions::specialise false): the slots call the library's general functions with every
     // setting in their HexcLattice and HexcBlend, rather than functions with the settings folded in (codegen).
     bool general = false;
     bool uvBottomLeft = false;  // CompileOptions::uvOrigin: the slots' functions take OpenGL's uv (v up)
@@ -159,8 +159,5 @@ std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan);
 inline std::string packedFileName(const std::string& material, const std::string& firstSlot) {
     return material + "." + firstSlot + ".packed.png";
 }
-
-// Slots share a lattice when everything the lattice computes from is the same.
-bool sameLattice(const HexTiling& a, const HexTiling& b);
 
 }  // namespace hexc

@@ -23,12 +23,15 @@ std::vector<TemplateSlot> readTemplateSlots(const std::string& source, const std
         words >> name >> kind >> extra >> more;
         TemplateSlot slot{name, SlotKind::Color, extra == "required"};
         bool known = false;
-        for (SlotKind k : {SlotKind::Color, SlotKind::Scalar, SlotKind::Normal})
-            if (kind == kindName(k)) slot.kind = k, known = true;
+        std::string kinds;  // as the message lists them: color|scalar|normal
+        for (const SlotKindRow& row : kindRows()) {
+            if (kind == row.name) slot.kind = row.kind, known = true;
+            kinds += (kinds.empty() ? "" : "|") + std::string(row.name);
+        }
         if (name.empty() || !known || !(extra.empty() || slot.required) || !more.empty()) {
             diagnostics.push_back(
                 Diagnostic::make(Code::TemplateSlotLine, {file, number, int(at) + 1}, "",
-                                 "expected `// hexc slot <name> <color|scalar|normal> [required]`, got `" + line.substr(at) + "`"));
+                                 "expected `// hexc slot <name> <" + kinds + "> [required]`, got `" + line.substr(at) + "`"));
             continue;
         }
         out.push_back(std::move(slot));

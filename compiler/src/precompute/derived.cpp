@@ -108,7 +108,7 @@ std::string packedPng(const Material& material, const ShaderPlan& plan, const Pa
                                                      std::to_string(p.width) + "x" + std::to_string(p.height) + " 8-bit texels")}};
         // To: the pack's channels (the plan's packedChannel, 0 for RGB); from: the slot's (a colour slot's RGB, a scalar's channel).
         const size_t to = size_t(plan.slots[p.slots[k]].packedChannel), count = p.channels[k].size();
-        const size_t from = s.kind == SlotKind::Scalar ? size_t(s.channel) : 0;
+        const size_t from = kindRow(s.kind).oneChannel ? size_t(s.channel) : 0;
         for (size_t t = 0; t < packed.rgba8.size(); t += 4)
             for (size_t c = 0; c < count; ++c) packed.rgba8[t + to + c] = source.rgba8[t + from + c];
     }

@@ -37,7 +37,7 @@ public:
             const double v = t_.rgba32f[i * 4 + c];
             return t_.srgb && c < 3 ? srgbToLinear(v) : v;
         };
-        if (slot_.kind == SlotKind::Scalar) return {channel(size_t(slot_.channel)), 0, 0};
+        if (kindRow(slot_.kind).oneChannel) return {channel(size_t(slot_.channel)), 0, 0};
         return {channel(0), channel(1), channel(2)};
     }
 
@@ -265,7 +265,7 @@ double histogramLutGaussian(int entry) { return 0.5 + kSigma * kHistogramLutSigm
 
 HistogramTransform histogramTransform(const Texture& source, const Slot& slot) {
     const LinearTexels texels(source, slot);
-    const size_t n = texels.size(), channels = slot.kind == SlotKind::Scalar ? 1 : 3;
+    const size_t n = texels.size(), channels = kindRow(slot.kind).oneChannel ? 1 : 3;
     const ColourSpace space = colourSpace(texels, channels == 3);
     HistogramTransform out{floatTexture(source.width, source.height),
                            floatTexture(kHistogramLutWidth, int(1 + mipLevels(source.width, source.height)))};

@@ -20,7 +20,7 @@
 // &&, ||; no arithmetic, no call); and a top-level item starts at column 0, a multi-line one ending with a `}` at
 // column 0. tests/codegen/specialise_test.cpp (EveryExampleAndVariantFoldsWhatItsSettingsFix) holds every example and
 // feature variant to it: no slot's copy keeps a settings read or a condition that reads no variable. Without
-// specialisation (--no-specialize, `hexc library`) this text is the general library.
+// specialisation (--no-specialise, `hexc library`) this text is the general library.
 //
 // Conventions: texture space is (u, v) with v down the image. A normal slot's derivative is (dH/du, dH/dy) with
 // y = -v, up the image: a green-up (OpenGL) map gives it as sampled, a green-down (DirectX) map once flip_y negates

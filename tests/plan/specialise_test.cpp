@@ -40,13 +40,13 @@ std::vector<uint32_t> spirv(const Material& m, const CompileOptions& options = {
 
 CompileOptions general() {
     CompileOptions o;
-    o.specialize = false;
+    o.specialise = false;
     return o;
 }
 
 const std::string kAlbedo = "textures/rock_albedo.png", kNormal = "textures/rock_normal.png";
 
-TEST(Specialize, RotationOffHasNoTrigonometry) {
+TEST(Specialise, RotationOffHasNoTrigonometry) {
     auto on = spirv(oneSlot("color", kAlbedo, R"("rotation": 1)")), off = spirv(oneSlot("color", kAlbedo, R"("rotation": 0)"));
     EXPECT_EQ(count(on, "Sin"), 3u);  // one per tile
     EXPECT_EQ(count(on, "Cos"), 3u);
@@ -54,7 +54,7 @@ TEST(Specialize, RotationOffHasNoTrigonometry) {
     EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, R"("rotation": 0)"), general()), "Sin"), 3u);  // the general shader keeps it
 }
 
-TEST(Specialize, GainAtOneHalfIsLeftOut) {
+TEST(Specialise, GainAtOneHalfIsLeftOut) {
     // Eq. 5's exponent k = log(1 - r) / log(1/2) is the only Log; the gain adds three Pow to the weights' three.
     auto gain = spirv(oneSlot("color", kAlbedo, R"("falloff": 0.7)")), none = spirv(oneSlot("color", kAlbedo, R"("falloff": 0.5)"));
     EXPECT_EQ(count(gain, "Log"), 1u);  // log(1 - r); log(1/2) folds
@@ -62,7 +62,7 @@ TEST(Specialize, GainAtOneHalfIsLeftOut) {
     EXPECT_LT(count(none, "Pow"), count(gain, "Pow"));
 }
 
-TEST(Specialize, NoFalloffMetricAtFalloffContrastZero) {
+TEST(Specialise, NoFalloffMetricAtFalloffContrastZero) {
     // The normal path's metric is sqrt(|d|^2 / (1 + |d|^2)) of the three tiles.
     auto metric = spirv(oneSlot("normal", kNormal, R"("falloffcontrast": 0.6)")),
          none = spirv(oneSlot("normal", kNormal, R"("falloffcontrast": 0)"));
@@ -70,7 +70,7 @@ TEST(Specialize, NoFalloffMetricAtFalloffContrastZero) {
     EXPECT_EQ(count(none, "Sqrt"), 0u);
 }
 
-TEST(Specialize, WholeNumberExponentsAreMultipliedOut) {
+TEST(Specialise, WholeNumberExponentsAreMultipliedOut) {
     // gamma = 7 and the gain at falloff 0.75 (k = 2): no pow, no log, and neither is a parameter.
     CompileResult r = compile(oneSlot("color", kAlbedo, R"("falloff": 0.75, "exponent": 7)"));
     ASSERT_TRUE(r.ok());
@@ -84,13 +84,13 @@ TEST(Specialize, WholeNumberExponentsAreMultipliedOut) {
     for (const auto& p : m["parameters"]["members"]) EXPECT_TRUE(p["name"] != "s_exponent" && p["name"] != "s_falloff");
 }
 
-TEST(Specialize, PlainSlotSamplesOnce) {
+TEST(Specialise, PlainSlotSamplesOnce) {
     EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, R"("enabled": false)")), "OpImageSampleImplicitLod"), 1u);
     EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, R"("enabled": false)")), "OpImageSampleExplicitLod"), 0u);
     EXPECT_EQ(count(spirv(oneSlot("color", kAlbedo, "")), "OpImageSampleExplicitLod"), 3u);
 }
 
-TEST(Specialize, WeightsOnlyWhenAsked) {
+TEST(Specialise, WeightsOnlyWhenAsked) {
     // Integer remainders: each tap's tile centre modulo the texture's period (hexcStableCentreInPeriod) is one; the
     // weights output adds Listing 7's colour index.
     const auto remainders = [](const std::vector<uint32_t>& code) { return count(code, "OpSMod") + count(code, "OpSRem"); };
@@ -99,7 +99,7 @@ TEST(Specialize, WeightsOnlyWhenAsked) {
     EXPECT_GT(remainders(spirv(oneSlot("color", kAlbedo, "", "weights"))), value);
 }
 
-TEST(Specialize, UnusedSettingsAreNotParameters) {
+TEST(Specialise, UnusedSettingsAreNotParameters) {
     CompileResult r = compile(oneSlot("color", kAlbedo, R"("rotation": 0, "falloff": 0.5, "falloffcontrast": 0, "exponent": 7.5)"));
     ASSERT_TRUE(r.ok());
     std::string manifest;
@@ -148,7 +148,7 @@ struct Variant {
     const char* hextiling;
 };
 
-TEST(Specialize, SpecialisedAndGeneralShadersRenderTheSameImage) {
+TEST(Specialise, SpecialisedAndGeneralShadersRenderTheSameImage) {
     REQUIRE_VULKAN();
     // exponent 7.5 keeps the weights' pow in both shaders, so only the switch under test differs.
     const Variant variants[] = {
