@@ -418,7 +418,7 @@ TEST(Validation, ColumnsCountCharactersNotBytes) {
     ASSERT_EQ(d.size(), 3u);
     EXPECT_EQ(
         d[0],
-        "materials/t.json:1:15: error[HX103]: /x: unknown key `x`; expected `$schema`, `name`, `template`, `hextiling`, `pack` or `slots`");
+        "materials/t.json:1:15: error[HX103]: /x: unknown key `x`; expected `$schema`, `name`, `template`, `hextiling`, `pack`, `slots`, `layers` or `layer_blend`");
 }
 
 TEST(Material, ExamplesParseWithDefaultsAndOverrides) {
