@@ -300,6 +300,7 @@ bool takesBlend(const Slot& s) {
 }
 
 Material withBlend(Material material, Blend blend) {
+    if (material.layers) return material;  // a layered material's layers take no histogram blend
     for (Slot& s : material.slots)
         if (takesBlend(s)) s.hex.blend = blend;
     return material;
@@ -317,7 +318,7 @@ void labelCell(Image& sheet, int x0, int y0, int cell, const std::string& column
 Image previewSheet(vk::Runner& runner, const Material& material, int cell, const CompileOptions& options, bool srgb, Progress& progress) {
     const Material plain = vk::plainTiled(material);
     const Material falloff = withBlend(material, Blend::Falloff), histogram = withBlend(material, Blend::Histogram);
-    const bool histogramApplies = std::any_of(material.slots.begin(), material.slots.end(), takesBlend);
+    const bool histogramApplies = !material.layers && std::any_of(material.slots.begin(), material.slots.end(), takesBlend);
     struct Column {
         std::string label;
         const Material* material;

@@ -112,7 +112,12 @@ Json shippedCost(const Material& m) {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (!r.ok()) return nullptr;
     const ShaderOps ops = countOps(disassemble(r.spirv));
-    return {{"fetches", ops.textureSamples}, {"instructions", ops.instructions}, {"compile_ms", ms}};
+    Json cost = {{"fetches", ops.textureSamples}, {"instructions", ops.instructions}, {"compile_ms", ms}};
+    // A layered material: the fetches the layers' blend takes per pixel, at worst and over its splat maps (plan/layers.cpp).
+    for (const OutputFile& f : r.files)
+        if (f.name.ends_with(".manifest.json") && Json::parse(f.contents).contains("layers"))
+            cost["layer_fetches"] = Json::parse(f.contents)["layers"]["fetches_per_pixel"];
+    return cost;
 }
 
 // Size and modification time of a file, as a version stamp; "-" when it cannot be read.

@@ -416,9 +416,9 @@ TEST(Validation, ColumnsCountCharactersNotBytes) {
     // "é" is two bytes in UTF-8; the error column must still be the character column.
     auto d = diagnose(R"({"name": "é", "x": 1, "slots": []})");
     ASSERT_EQ(d.size(), 3u);
-    EXPECT_EQ(
-        d[0],
-        "materials/t.json:1:15: error[HX103]: /x: unknown key `x`; expected `$schema`, `name`, `template`, `hextiling`, `pack` or `slots`");
+    EXPECT_EQ(d[0],
+              "materials/t.json:1:15: error[HX103]: /x: unknown key `x`; expected `$schema`, `name`, `template`, `hextiling`, `pack`, "
+              "`slots`, `layers` or `layer_blend`");
 }
 
 TEST(Material, ExamplesParseWithDefaultsAndOverrides) {

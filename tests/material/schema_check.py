@@ -26,7 +26,13 @@ slot's; the schema has the ones it can state exactly, where both keys are in one
 10. nor with the material's "triplanar" projection;
 11. height_blend cannot be combined with taps 1 or "adaptive";
 12. taps "adaptive" needs falloff >= 0.5;
-13. rotation times the largest |rotationrange| is at most 3600 degrees.
+13. rotation times the largest |rotationrange| is at most 3600 degrees;
+
+and on layers (docs/material-format.md#layers):
+
+14. every layer has the first layer's roles, of the same kinds;
+15. one splat map per four layers;
+16. a height blend's `height` names a scalar role.
 
 Run it with the Debian interpreter (/usr/bin/python3), which has python3-jsonschema.
 """
@@ -113,6 +119,29 @@ def problems(validator, path):
                     found.append(f"/slots/{i}/name: duplicate slot name {name!r} (first at /slots/{seen[name]})")
                 seen.setdefault(name, i)
         found += slot_problems(doc, slots)
+    if isinstance(doc, dict) and isinstance(doc.get("layers"), list):
+        found += layer_problems(doc)
+    return found
+
+
+def layer_problems(doc):
+    """Rules 14-16: every layer has the first layer's roles (names and kinds); one splat map per four layers; a
+    height blend's `height` names a scalar role."""
+    found = []
+    layers = [l for l in doc["layers"] if isinstance(l, dict) and isinstance(l.get("slots"), list)]
+    roles = lambda l: {s.get("name"): s.get("kind") for s in l["slots"] if isinstance(s, dict)}
+    first = roles(layers[0]) if layers else {}
+    for i, layer in enumerate(layers[1:], 1):
+        if roles(layer) != first:
+            found.append(f"/layers/{i}/slots: roles {sorted(roles(layer))} differ from the first layer's {sorted(first)}")
+    blend = doc.get("layer_blend")
+    if isinstance(blend, dict):
+        splat = blend.get("splat")
+        if isinstance(splat, list) and len(splat) != (len(doc["layers"]) + 3) // 4:
+            found.append(f"/layer_blend/splat: {len(doc['layers'])} layers need {(len(doc['layers']) + 3) // 4} splat maps")
+        height = blend.get("height")
+        if isinstance(height, str) and first.get(height, "none") != "scalar":
+            found.append(f"/layer_blend/height: `{height}` is not a scalar role of the layers")
     return found
 
 

@@ -108,7 +108,10 @@ async function costLine(seq) {
   const r = await api('/api/cost', { document: state.doc });
   if (seq !== compileSeq) return;
   const c = r.cost;
-  $('cost').textContent = c ? `${c.fetches} fetches/pixel · ${c.instructions} SPIR-V instructions · compiled in ${c.compile_ms.toFixed(0)} ms` : '';
+  // A layered material adds its blend's fetches per pixel: expected over its splat maps, and at worst.
+  const layers = c && c.layer_fetches
+    ? ` · layers ${c.layer_fetches.expected.toFixed(1)} expected / ${c.layer_fetches.worst} worst fetches/pixel` : '';
+  $('cost').textContent = c ? `${c.fetches} fetches/pixel${layers} · ${c.instructions} SPIR-V instructions · compiled in ${c.compile_ms.toFixed(0)} ms` : '';
 }
 
 // The last compile's answer, and its programs linked for the selected slot: selecting another links them again, with

@@ -102,6 +102,7 @@ Material renderedMaterial(const Material& material, RenderOutput output, const s
     Material m = material;
     const Slot& shown = slotForOutput(material, output, slotName);
     m.slots = {shown};
+    m.layers.reset();  // a slot output shows that slot alone, not a layered material's blend
     // A height-blended slot also reads its height slot's texture.
     for (const Slot& s : material.slots)
         if (shown.heightBlend && s.name == shown.heightBlend->slot && s.name != shown.name) m.slots.push_back(s);

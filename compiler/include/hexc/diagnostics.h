@@ -44,6 +44,8 @@ enum class Code {
     TextureColorSpace,
     NotPacked,
     TextureTooLarge,
+    LayerRoles,
+    LayerWeights,
     // templates and shader code
     UnknownTemplate,
     TemplateUnreadable,

@@ -157,6 +157,30 @@ struct TemplateRef {
     static TemplateRef builtin(std::string name) { return {std::move(name), false, {}}; }
 };
 
+// Layers (docs/material-format.md#layers): sets of slots with the same roles (albedo, normal, ...), blended per role by
+// weights painted in splat maps. Each layer's slot is an ordinary slot of the material named <layer>_<role>; the template
+// reads the blend as hexc_<role>.
+enum class LayerBlend { Linear, Height };
+struct Layers {
+    struct Role {
+        std::string name;  // hexc_<name> reads the blend
+        SlotKind kind = SlotKind::Color;
+    };
+    struct Layer {
+        std::string name;
+        std::vector<size_t> slots;  // per role (in `roles` order): its index in Material::slots
+    };
+    std::vector<Role> roles;     // in the first layer's order
+    std::vector<Layer> layers;   // layer i's weight is channel i % 4 of splat map i / 4
+    std::vector<size_t> splats;  // Material::slots indexes of the splat maps (linear, plain tiled, tiling 1)
+    LayerBlend blend = LayerBlend::Linear;
+    std::optional<size_t> heightRole;  // LayerBlend::Height: the scalar role holding each layer's height
+    double width = 0.2;                // height blend: transition width in height units, in (0, 1]
+    // A layer whose splat weight is below this is not fetched; the others are renormalised. 0.5/255: half an 8-bit step.
+    double skipBelow = 0.5 / 255;
+    static constexpr size_t kMaxLayers = 8;
+};
+
 struct Material {
     std::string name;   // output file stem
     TemplateRef templ;  // the built-in `lit` unless the material names another
@@ -165,6 +189,7 @@ struct Material {
     std::vector<Slot> slots;  // in declaration order; binding order follows it
     // Channel packing (docs/material-format.md#pack): slots with the same lattice share one texture hexc writes.
     bool pack = false;
+    std::optional<Layers> layers;
 };
 
 struct ParseResult {
@@ -188,5 +213,6 @@ std::string_view toString(Mask mask);
 std::string_view toString(Projection projection);
 std::string_view toString(Blend blend);
 std::string_view toString(Lod lod);
+std::string_view toString(LayerBlend blend);
 
 }  // namespace hexc

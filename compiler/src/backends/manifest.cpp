@@ -124,6 +124,27 @@ nlohmann::json conventionsEntry(const ShaderPlan& plan) {
 
 }  // namespace
 
+// A layered material's blend: which slots each role blends, the splat maps, and its fetches per pixel (plan/layers.cpp).
+nlohmann::json layersEntry(const ShaderPlan& plan) {
+    const LayersPlan& lp = *plan.layers;
+    auto names = [&](const std::vector<size_t>& slots) {
+        std::vector<std::string> out;
+        for (size_t i : slots) out.push_back(plan.slots[i].name);
+        return out;
+    };
+    nlohmann::json roles = nlohmann::json::array();
+    for (const LayerRolePlan& r : lp.roles) roles.push_back({{"name", r.name}, {"slots", names(r.slots)}});
+    nlohmann::json entry = {{"count", lp.count},
+                            {"mode", lp.heights.empty() ? "linear" : "height"},
+                            {"roles", roles},
+                            {"splat_maps", names(lp.splats)},
+                            {"skip_below", lp.skipBelow},
+                            {"coverage", lp.coverage},
+                            {"fetches_per_pixel", {{"worst", lp.worstFetches}, {"expected", lp.expectedFetches}}}};
+    if (!lp.heights.empty()) entry["heights"] = names(lp.heights), entry["width"] = lp.width;
+    return entry;
+}
+
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets) {
     nlohmann::json slots = nlohmann::json::array(), packed = nlohmann::json::array();
     for (const SlotPlan& sp : plan.slots) slots.push_back(slotEntry(material.name, sp));
@@ -172,6 +193,7 @@ nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, c
     };
     // Only with packing: other manifests stay as they were.
     if (!packed.empty()) manifest["packed_textures"] = packed;
+    if (plan.layers) manifest["layers"] = layersEntry(plan);
     return manifest;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "codegen/assembly.h"
+#include "codegen/layers.h"
 #include "codegen/pieces.h"
 #include "common/templates.h"
 #include "common/text.h"
@@ -19,14 +20,7 @@ std::string lineDirective(int line, const std::string& file) { return "#line " +
 // quotes: a `#line` string cannot hold a `"`, and a path can.
 std::string templateLine(int line) { return "#line " + std::to_string(line) + " 0\n"; }
 
-// A GLSL float literal that reads back as the same float32.
-std::string literal(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", v);
-    std::string s = buf;
-    if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return s;
-}
+std::string literal(double v) { return floatLiteral(v); }
 
 std::string literal(bool v) { return v ? "true" : "false"; }
 std::string literal(int v) { return std::to_string(v); }
@@ -217,12 +211,16 @@ std::string injectedCode(const ShaderPlan& plan) {
         Emitter emit(plan);
         resources += emit.resources();
         const SlotPlan& first = *std::find_if(plan.slots.begin(), plan.slots.end(), [](const SlotPlan& sp) { return !sp.heightOnly; });
-        resources += emit.expand("first", {{"name", first.name},
-                                           {"kind", std::string(toString(first.kind))},
+        // A layered material's first slot is its first role read.
+        const LayerRolePlan* role = plan.layers ? &plan.layers->roles.front() : nullptr;
+        resources += emit.expand("first", {{"name", role ? role->name : first.name},
+                                           {"kind", std::string(toString(role ? role->kind : first.kind))},
                                            {"projection", std::string(toString(first.projection))}}) +
                      "\n";
         for (const SlotPlan& sp : plan.slots)
             if (!sp.heightOnly) functions += emit.slot(sp, assembly);
+        functions += layerFunctions(
+            plan, [&](size_t p) { return emit.read(p); }, emit.expand(plan.uvBottomLeft ? "uv.bottomleft" : "uv.topleft", {}));
     }
     if (plan.functions) functions += assembly.use(Emitter(plan).engineFunctions(), nullptr, "");  // also for a pass without slots
     assembly.use(plan.templateSource, nullptr, "");  // what the template calls itself, as it is
@@ -231,6 +229,14 @@ std::string injectedCode(const ShaderPlan& plan) {
 }
 
 }  // namespace
+
+std::string floatLiteral(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    std::string s = buf;
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
 
 std::string expandTokens(const std::string& text, const Tokens& values, const std::string& section) {
     std::string out;

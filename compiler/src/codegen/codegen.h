@@ -17,6 +17,9 @@ using Tokens = std::map<std::string, std::string>;
 // one pass (a value is never scanned again). A token without a value is a hexc bug: CompileError, naming the section.
 std::string expandTokens(const std::string& text, const Tokens& values, const std::string& section);
 
+// A GLSL float literal that reads back as the same float32.
+std::string floatLiteral(double v);
+
 // The returned source carries `#line` directives, so glslang reports errors at the template's own
 // file and line; injected code is reported as "hexc/<file>".
 std::string generateGlsl(const ShaderPlan& plan);

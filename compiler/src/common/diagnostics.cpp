@@ -39,6 +39,8 @@ constexpr CodeInfo kCatalogue[] = {
     {Code::TextureColorSpace, "HX123", Warning},
     {Code::NotPacked, "HX124", Warning},
     {Code::TextureTooLarge, "HX125", Error},
+    {Code::LayerRoles, "HX126", Error},
+    {Code::LayerWeights, "HX127", Error},
     {Code::UnknownTemplate, "HX200", Error},
     {Code::TemplateUnreadable, "HX201", Error},
     {Code::TemplateNoVersion, "HX202", Error},

@@ -7,6 +7,7 @@
 #include "common/suggest.h"
 #include "hexc/image.h"
 #include "hexc/materialx.h"
+#include "material/layers.h"
 #include "material/names.h"
 #include "material/parse.h"
 #include "material/rules.h"
@@ -14,7 +15,7 @@
 namespace hexc {
 namespace {
 
-const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "pack", "slots"};
+const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "pack", "slots", "layers", "layer_blend"};
 const std::vector<std::string> kSlotKeys = {"name",   "texture", "kind",      "channel",     "colorspace",
                                             "flip_y", "role",    "hextiling", "height_blend"};
 const std::vector<std::string> kHexKeys = {
@@ -59,11 +60,23 @@ public:
         if (doc.contains("$schema")) string(doc["$schema"], "/$schema");
         if (doc.contains("hextiling")) hexSettings(doc["hextiling"], "/hextiling", m.hex, true);
         if (doc.contains("pack")) m.pack = boolean(doc["pack"], "/pack", false);
-        if (requireKey(doc, "", "slots", "an array of slots")) slots(doc["slots"], "/slots", m);
+        // A layered material may have no slots of its own.
+        if (doc.contains("slots") || (!doc.contains("layers") && requireKey(doc, "", "slots", "an array of slots")))
+            slots(doc["slots"], "/slots", m);
+        if (doc.contains("layers") || doc.contains("layer_blend")) layers(doc, m);
         return m;
     }
 
 private:
+    void layers(const json& doc, Material& m) {
+        const LayerReaders read = {
+            [this](const json& v, const std::string& p, const HexTiling& h) { return slot(v, p, h); },
+            [this](const json& v, const std::string& p, HexTiling& h) { hexSettings(v, p, h); },
+            [this](Slot& s, const std::string& p) { texture(s, p); },
+        };
+        parseLayers(*this, doc, m, read);
+    }
+
     // `materialLevel`: the top-level block, the only place for material-wide keys.
     void hexSettings(const json& v, const std::string& pointer, HexTiling& hex, bool materialLevel = false) {
         if (!v.is_object()) {

@@ -8,6 +8,7 @@
 #include "hexc/suggest.h"
 #include "common/templates.h"
 #include "common/text.h"
+#include "plan/layers.h"
 #include "plan/macros.h"
 #include "plan/pack.h"
 #include "plan/template_fit.h"
@@ -75,7 +76,9 @@ SlotUse slotUse(const Material& material, const std::string& templateSource, boo
     SlotUse use{std::vector<bool>(material.slots.size()), std::vector<bool>(material.slots.size())};
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& slot = material.slots[i];
-        if (!all && !containsWord(templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst)) continue;
+        if (!all && !containsWord(templateSource, "hexc_" + slot.name) && !(i == 0 && readsFirst && !material.layers) &&
+            !layerSlotRead(material, i, templateSource, readsFirst))
+            continue;
         use.read[i] = use.needed[i] = true;
         if (slot.heightBlend)
             for (size_t j = 0; j < material.slots.size(); ++j)
@@ -346,6 +349,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     // The built-in `functions` named by a material is the functions output, as with --functions.
     plan.functions = options.functions || plan.templateName == TemplateRef::builtin("functions").path();
     planSlots(material, options, plan);
+    planLayers(material, plan);
     if (plan.functions) refuseTriplanar(material, plan);
     if (material.pack) planPacks(plan);
     planParams(options.bake, plan);

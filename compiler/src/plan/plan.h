@@ -103,6 +103,26 @@ struct PackPlan {
     int width = 0, height = 0;
 };
 
+// A layered material's blend (Material::layers, docs/material-format.md#layers), as codegen emits it: per role the
+// template reads, hexc_<role> blends each layer's slot by the layers' weights.
+struct LayerRolePlan {
+    std::string name;  // the role: hexc_<name>
+    SlotKind kind = SlotKind::Color;
+    std::string type;           // the GLSL type hexc_<name> returns
+    std::vector<size_t> slots;  // per layer: index into ShaderPlan::slots
+};
+struct LayersPlan {
+    std::vector<LayerRolePlan> roles;   // those the template reads, in the layers' role order
+    std::vector<size_t> splats;         // indexes into ShaderPlan::slots; layer i weighs channel i % 4 of splat i / 4
+    std::vector<size_t> heights;        // height blend: per layer, the slot holding its height (else empty)
+    size_t count = 0;                   // layers
+    double width = 0.2, skipBelow = 0;  // fixed in the code
+    // Texture fetches per pixel of the whole material: when every layer is fetched, and averaged over the splat maps'
+    // texels (a layer counts where its weight is at least skipBelow); per layer that fraction of texels.
+    double worstFetches = 0, expectedFetches = 0;
+    std::vector<double> coverage;
+};
+
 struct ShaderPlan {
     std::string materialName;
     std::string templateName;            // as shown in diagnostics: "templates/builtin/lit.glsl" or the user's path
@@ -124,9 +144,10 @@ struct ShaderPlan {
     // --no-specialise (CompileOptions::specialise false): the slots call the library's general functions with every
     // setting in their HexcLattice and HexcBlend, rather than functions with the settings folded in (codegen).
     bool general = false;
-    bool uvBottomLeft = false;  // CompileOptions::uvOrigin: the slots' functions take OpenGL's uv (v up)
-    bool functions = false;     // CompileOptions::functions: the `functions` template, every slot read
-    Diagnostics diagnostics;    // warnings (e.g. a slot the template never reads) or errors
+    bool uvBottomLeft = false;         // CompileOptions::uvOrigin: the slots' functions take OpenGL's uv (v up)
+    bool functions = false;            // CompileOptions::functions: the `functions` template, every slot read
+    std::optional<LayersPlan> layers;  // a layered material's, when the template reads a role
+    Diagnostics diagnostics;           // warnings (e.g. a slot the template never reads) or errors
 
     // hexc's textures, bound at firstTexture + i: each slot's, then the look-up tables.
     size_t textureCount() const { return slots.size() + luts.size(); }

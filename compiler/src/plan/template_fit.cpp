@@ -53,6 +53,16 @@ Diagnostics checkTemplateFit(const std::vector<TemplateSlot>& declared, const Ma
                                                "template `" + templateName + "` reads `" + s.name + "` as a " + kindName(t.kind) +
                                                    " slot; this one is `" + kindName(s.kind) + "`"));
         }
+        // A layered material's roles are read as slots (hexc_<role>).
+        if (material.layers)
+            for (const Layers::Role& r : material.layers->roles) {
+                if (r.name != t.name) continue;
+                found = true;
+                if (r.kind != t.kind)
+                    out.push_back(Diagnostic::make(Code::TemplateMismatch, {material.sourceFile.string()}, "/layers",
+                                                   "template `" + templateName + "` reads `" + r.name + "` as a " + kindName(t.kind) +
+                                                       " slot; the layers' role is `" + kindName(r.kind) + "`"));
+            }
         if (!found && t.required)
             out.push_back(Diagnostic::make(Code::TemplateMismatch, {material.sourceFile.string()}, "/slots",
                                            "template `" + templateName + "` needs a " + kindName(t.kind) + " slot named `" + t.name + "`"));

@@ -1,0 +1,75 @@
+// ShaderPlan::layers -> the weights function and the role functions (templates/library/layers.glsl).
+#include "codegen/layers.h"
+
+#include "codegen/codegen.h"
+#include "common/templates.h"
+
+namespace hexc {
+namespace {
+
+class LayerEmitter {
+public:
+    LayerEmitter(const ShaderPlan& plan, const std::function<std::string(size_t)>& read) : plan_(plan), read_(read) {}
+
+    // The section expanded, without its final newline.
+    std::string expand(const std::string& section, const Tokens& values) const {
+        static const std::map<std::string, std::string> sections = snippetSections("layers.glsl");
+        std::string text = expandTokens(sections.at(section), values, section);
+        if (text.ends_with('\n')) text.pop_back();
+        return text;
+    }
+
+    // The slot's tiling as the code reads it (the parameter its own coordinates function reads).
+    std::string tiling(size_t slot) const {
+        const ParamRef& ref = plan_.lattices[plan_.slots[slot].lattice].tiling;
+        return ref ? read_(*ref) : "vec2(1.0)";
+    }
+
+    // A line per layer of `section`, for slot `slots[i]` of layer i.
+    std::string perLayer(const std::string& section, const std::vector<size_t>& slots) const {
+        std::string out;
+        for (size_t i = 0; i < slots.size(); ++i)
+            out += (out.empty() ? "" : "\n") +
+                   expand(section, {{"index", std::to_string(i)}, {"slot", plan_.slots[slots[i]].name}, {"tiling", tiling(slots[i])}});
+        return out;
+    }
+
+    std::string weights() const {
+        const LayersPlan& lp = *plan_.layers;
+        std::string splats, keep;
+        for (size_t k = 0; k < lp.splats.size(); ++k)
+            splats += (k ? "\n" : "") + expand("weights.splat", {{"index", std::to_string(k)}, {"tiling", tiling(lp.splats[k])}});
+        for (size_t i = 0; i < lp.count; ++i)
+            keep += (i ? "\n" : "") +
+                    expand("weights.layer",
+                           {{"index", std::to_string(i)}, {"splat", std::to_string(i / 4)}, {"channel", std::to_string(i % 4)}});
+        const std::string heights =
+            lp.heights.empty()
+                ? ""
+                : expand("weights.heights", {{"layers", perLayer("weights.height", lp.heights)}, {"width", floatLiteral(lp.width)}});
+        std::string text =
+            expand("weights", {{"splats", splats}, {"keep", keep}, {"skip", floatLiteral(lp.skipBelow)}, {"heights", heights}});
+        for (size_t empty; (empty = text.find("\n\n")) != std::string::npos;) text.erase(empty, 1);  // no heights
+        return text;
+    }
+
+    std::string role(const LayerRolePlan& r, const std::string& uv) const {
+        return expand("role", {{"role", r.name}, {"type", r.type}, {"uv", uv}, {"layers", perLayer("role.layer", r.slots)}});
+    }
+
+private:
+    const ShaderPlan& plan_;
+    const std::function<std::string(size_t)>& read_;
+};
+
+}  // namespace
+
+std::string layerFunctions(const ShaderPlan& plan, const std::function<std::string(size_t)>& read, const std::string& uv) {
+    if (!plan.layers) return {};
+    LayerEmitter emit(plan, read);
+    std::string out = emit.expand("functions", {}) + "\n\n" + emit.weights() + "\n\n";
+    for (const LayerRolePlan& r : plan.layers->roles) out += emit.role(r, uv) + "\n\n";
+    return out;
+}
+
+}  // namespace hexc

@@ -1,0 +1,240 @@
+// `layers` and `layer_blend` of a material document -> Material::layers (material/layers.h).
+#include <algorithm>
+
+#include "common/suggest.h"
+#include "material/layers.h"
+#include "material/names.h"
+
+namespace hexc {
+namespace {
+
+const std::vector<std::string> kLayerKeys = {"name", "hextiling", "slots"};
+const std::vector<std::string> kLayerBlendKeys = {"splat", "mode", "height", "width", "skip_below"};
+// 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages, as for the material's own slots.
+constexpr size_t kMaxSlots = 16;
+
+// [a-z][a-z0-9]{0,15}: no `_`, so that <layer>_<role> splits at its first `_` and two layers' slots never collide.
+bool isLayerName(const std::string& name) {
+    auto lowerOrDigit = [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'); };
+    return !name.empty() && name.size() <= 16 && name[0] >= 'a' && name[0] <= 'z' && std::all_of(name.begin(), name.end(), lowerOrDigit);
+}
+
+class LayerValidator : public JsonRules {
+public:
+    LayerValidator(const JsonRules& rules, const LayerReaders& read) : JsonRules(rules), read_(read) { diags.clear(); }
+
+    void run(const json& doc, Material& m) {
+        if (!doc.contains("layers")) {
+            report(Code::MisplacedKey, "/layer_blend", "`layer_blend` blends `layers`, and this material has none", {}, true);
+            return;
+        }
+        Layers layers;
+        const size_t ownSlots = m.slots.size();
+        readLayers(doc["layers"], m, layers);
+        if (requireKey(doc, "", "layer_blend", "how the layers blend: splat maps and mode")) layerBlend(doc["layer_blend"], m, layers);
+        if (m.slots.size() > kMaxSlots)
+            report(Code::WrongCount, "/layers",
+                   "the material has " + std::to_string(m.slots.size()) + " textures (" + std::to_string(ownSlots) +
+                       " of its own slots, the layers' slots and the splat maps); expected at most " + std::to_string(kMaxSlots),
+                   "pack a layer's scalar maps into one texture's channels (`channel`) or drop a role");
+        m.layers = std::move(layers);
+    }
+
+private:
+    void readLayers(const json& v, Material& m, Layers& layers) {
+        if (!v.is_array()) {
+            report(Code::WrongType, "/layers", "expected an array of layers, got " + typeName(v));
+            return;
+        }
+        if (v.empty() || v.size() > Layers::kMaxLayers)
+            report(Code::WrongCount, "/layers",
+                   "expected 1 to " + std::to_string(Layers::kMaxLayers) + " layers, got " + std::to_string(v.size()));
+        for (size_t i = 0; i < v.size() && i < Layers::kMaxLayers; ++i) layer(v[i], pointerAppend("/layers", i), m, layers);
+    }
+
+    void layer(const json& v, const std::string& pointer, Material& m, Layers& layers) {
+        if (!v.is_object()) {
+            report(Code::WrongType, pointer, "expected a layer object {\"name\", \"hextiling\", \"slots\"}, got " + typeName(v));
+            return;
+        }
+        checkKeys(v, pointer, kLayerKeys);
+        Layers::Layer l;
+        if (requireKey(v, pointer, "name", "a string")) l.name = string(v["name"], pointer + "/name");
+        if (v.contains("name") && v["name"].is_string() && !isLayerName(l.name)) {
+            report(Code::InvalidName, pointer + "/name",
+                   "expected a layer name of 1-16 lower-case letters and digits, got \"" + l.name + "\"",
+                   "its slots become <layer>_<role>");
+            l.name.clear();
+        }
+        for (const Layers::Layer& other : layers.layers)
+            if (!l.name.empty() && other.name == l.name)
+                report(Code::DuplicateName, pointer + "/name", "duplicate layer name \"" + l.name + "\"");
+        HexTiling hex = m.hex;
+        if (v.contains("hextiling")) read_.hex(v["hextiling"], pointer + "/hextiling", hex);
+        if (requireKey(v, pointer, "slots", "an array of the layer's slots")) layerSlots(v["slots"], pointer + "/slots", hex, m, layers, l);
+        layers.layers.push_back(std::move(l));
+    }
+
+    void layerSlots(const json& v, const std::string& pointer, const HexTiling& hex, Material& m, Layers& layers, Layers::Layer& l) {
+        if (!v.is_array() || v.empty()) {
+            report(Code::WrongType, pointer, "expected a non-empty array of slots, got " + typeName(v));
+            return;
+        }
+        const bool first = layers.layers.empty();
+        l.slots.assign(layers.roles.size(), SIZE_MAX);
+        bool misnamed = false;
+        for (size_t i = 0; i < v.size(); ++i) {
+            const std::string p = pointerAppend(pointer, i);
+            Slot s = read_.slot(v[i], p, hex);
+            if (s.name.empty()) continue;
+            slotRules(s, p);
+            if (first) {
+                layers.roles.push_back({s.name, s.kind});
+                l.slots.push_back(SIZE_MAX);
+            }
+            const size_t role = roleIndex(layers, s, p);
+            if (role == SIZE_MAX) {
+                misnamed = true;
+                continue;
+            }
+            if (l.slots[role] != SIZE_MAX) {
+                report(Code::DuplicateName, p + "/name", "duplicate slot name \"" + s.name + "\" in this layer");
+                continue;
+            }
+            for (const Slot& own : m.slots)
+                if (own.name == s.name)
+                    report(Code::DuplicateName, p + "/name", "slot `" + s.name + "` is both a layer role and a slot of `slots`");
+            if (s.heightBlend) s.heightBlend->slot = l.name + "_" + s.heightBlend->slot;
+            s.name = l.name + "_" + s.name;
+            l.slots[role] = m.slots.size();
+            m.slots.push_back(std::move(s));
+        }
+        // A role missing beside a misnamed slot is that slot's error, reported once.
+        for (size_t r = 0; r < l.slots.size() && !misnamed; ++r)
+            if (l.slots[r] == SIZE_MAX && !l.name.empty())
+                report(Code::LayerRoles, pointer,
+                       "layer `" + l.name + "` has no slot `" + layers.roles[r].name + "`; every layer has the first layer's roles (" +
+                           roleList(layers) + ")");
+    }
+
+    // The role of a later layer's slot, by name and kind; SIZE_MAX after reporting when the first layer has no such role.
+    size_t roleIndex(const Layers& layers, const Slot& s, const std::string& p) {
+        std::vector<std::string> names;
+        for (const Layers::Role& r : layers.roles) names.push_back(r.name);
+        const auto it = std::find(names.begin(), names.end(), s.name);
+        if (it == names.end()) {
+            std::string hint;
+            if (auto best = closestMatch(s.name, names)) hint = "did you mean " + ticked(*best) + "?";
+            report(Code::LayerRoles, p + "/name", "no role `" + s.name + "` in the first layer; expected one of " + roleList(layers), hint);
+            return SIZE_MAX;
+        }
+        const size_t role = size_t(it - names.begin());
+        if (layers.roles[role].kind != s.kind && s.kindStated) {
+            report(Code::LayerRoles, p + "/kind",
+                   "role `" + s.name + "` is of kind `" + std::string(toString(layers.roles[role].kind)) + "` in the first layer, `" +
+                       std::string(toString(s.kind)) + "` here");
+            return SIZE_MAX;
+        }
+        return role;
+    }
+
+    // The role functions read each layer's slot at one uv with gradients taken before the layers' branches.
+    void slotRules(const Slot& s, const std::string& p) {
+        if (s.hex.projection == Projection::Triplanar)
+            report(Code::ConflictingSettings, p, "layers read uv; the triplanar projection is not available in a layered material");
+        if (s.hex.enabled && s.hex.blend == Blend::Histogram)
+            report(Code::ConflictingSettings, p, "`blend` \"histogram\" is not available in a layered material's layers");
+        if (s.hex.splitCoordinates)
+            report(Code::ConflictingSettings, p, "`split_coordinates` is not available in a layered material's layers");
+    }
+
+    static std::string roleList(const Layers& layers) {
+        std::vector<std::string> names;
+        for (const Layers::Role& r : layers.roles) names.push_back(r.name);
+        return joinQuoted(names);
+    }
+
+    void layerBlend(const json& v, Material& m, Layers& layers) {
+        const std::string pointer = "/layer_blend";
+        if (!v.is_object()) {
+            report(Code::WrongType, pointer, "expected an object {\"splat\", \"mode\", ...}, got " + typeName(v));
+            return;
+        }
+        checkKeys(v, pointer, kLayerBlendKeys);
+        if (requireKey(v, pointer, "splat", "an array of splat map files, RGBA = the weights of four layers each"))
+            splats(v["splat"], pointer + "/splat", m, layers);
+        if (v.contains("mode")) {
+            if (int i = choice(v["mode"], pointer + "/mode", kLayerBlends); i >= 0) layers.blend = LayerBlend(i);
+        }
+        if (v.contains("width")) layers.width = number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, layers.width);
+        // A quarter: beyond, a layer painted at a quarter's weight would vanish.
+        if (v.contains("skip_below"))
+            layers.skipBelow = number(v["skip_below"], pointer + "/skip_below", {0, 0.25, false, false, "in [0, 0.25]"}, layers.skipBelow);
+        if (layers.blend == LayerBlend::Height && requireKey(v, pointer, "height", "the scalar role holding each layer's height"))
+            heightRole(v["height"], pointer + "/height", layers);
+        else if (layers.blend != LayerBlend::Height && v.contains("height"))
+            report(Code::MisplacedKey, pointer + "/height", "`height` applies to `mode` \"height\"", {}, true);
+    }
+
+    void heightRole(const json& v, const std::string& p, Layers& layers) {
+        const std::string name = string(v, p);
+        std::vector<std::string> names;
+        for (const Layers::Role& r : layers.roles) names.push_back(r.name);
+        const auto it = std::find(names.begin(), names.end(), name);
+        if (it == names.end()) {
+            std::string hint;
+            if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
+            if (v.is_string())
+                report(Code::UnknownReference, p, "no role `" + name + "` in the layers; expected one of " + roleList(layers), hint);
+        } else if (!kindRow(layers.roles[size_t(it - names.begin())].kind).oneChannel) {
+            report(Code::WrongSlotKind, p,
+                   "role `" + name + "` is of kind `" + std::string(toString(layers.roles[size_t(it - names.begin())].kind)) +
+                       "`; heights come from a role of kind " + kindsWhere(&SlotKindRow::oneChannel));
+        } else {
+            layers.heightRole = size_t(it - names.begin());
+        }
+    }
+
+    // Splat map i holds the weights of layers 4i .. 4i+3 in r, g, b, a.
+    void splats(const json& v, const std::string& pointer, Material& m, Layers& layers) {
+        const size_t needed = (layers.layers.size() + 3) / 4;
+        if (!v.is_array()) {
+            report(Code::WrongType, pointer, "expected an array of splat map files, got " + typeName(v));
+            return;
+        }
+        if (v.size() != needed && !layers.layers.empty()) {
+            report(Code::LayerWeights, pointer,
+                   std::to_string(layers.layers.size()) + " layers take their weights from " + std::to_string(needed) + " splat map" +
+                       (needed == 1 ? "" : "s") + " (RGBA = four layers each); got " + std::to_string(v.size()));
+        }
+        for (size_t i = 0; i < v.size() && i < 2; ++i) {
+            const std::string p = pointerAppend(pointer, i);
+            Slot s;
+            s.name = "splat" + std::to_string(i);
+            s.texture = string(v[i], p);
+            s.colorSpace = ColorSpace::Linear;  // weights, not colours
+            s.hex.enabled = false;              // one fetch, over the whole terrain: tiling 1
+            if (!v[i].is_string()) continue;
+            read_.texture(s, p);
+            const size_t used = std::min<size_t>(4, layers.layers.size() - std::min(layers.layers.size(), 4 * i));
+            if (!s.channelNames.empty() && s.channelNames.size() < used)
+                report(Code::TextureChannels, p,
+                       "splat map " + s.texture + " has " + std::to_string(s.channelNames.size()) + " channels; it weighs " +
+                           std::to_string(used) + " layers (one channel each)");
+            layers.splats.push_back(m.slots.size());
+            m.slots.push_back(std::move(s));
+        }
+    }
+
+    const LayerReaders& read_;
+};
+
+}  // namespace
+
+void parseLayers(JsonRules& rules, const nlohmann::json& doc, Material& m, const LayerReaders& read) {
+    LayerValidator v(rules, read);
+    v.run(doc, m);
+    rules.diags.insert(rules.diags.end(), v.diags.begin(), v.diags.end());
+}
+
+}  // namespace hexc

@@ -1,0 +1,103 @@
+// Material::layers -> ShaderPlan::layers, and the fetches per pixel of the layers' blend.
+#include "plan/layers.h"
+
+#include <algorithm>
+
+#include "common/text.h"
+#include "hexc/image.h"
+
+namespace hexc {
+namespace {
+
+bool roleRead(const Layers& layers, size_t role, const std::string& templateSource, bool readsFirst) {
+    return containsWord(templateSource, "hexc_" + layers.roles[role].name) || (role == 0 && readsFirst);
+}
+
+bool anyRoleRead(const Layers& layers, const std::string& templateSource, bool readsFirst) {
+    for (size_t r = 0; r < layers.roles.size(); ++r)
+        if (roleRead(layers, r, templateSource, readsFirst)) return true;
+    return false;
+}
+
+// Its index in plan.slots.
+size_t planIndex(const Material& material, size_t slot, const ShaderPlan& plan) {
+    const Slot* s = &material.slots[slot];
+    return size_t(std::find_if(plan.slots.begin(), plan.slots.end(), [&](const SlotPlan& sp) { return sp.slot == s; }) -
+                  plan.slots.begin());
+}
+
+// Fetches of one read of a slot: its taps (every tap for adaptive taps: the worst case, and the bound the expected
+// figure uses, since a tap's skip depends on the texels), one when plain tiled or dithered.
+double fetches(const SlotPlan& sp) {
+    if (!sp.slot->hex.enabled || sp.slot->hex.taps == 1) return 1;
+    return sp.taps;
+}
+
+// Per layer, the fraction of the splat maps' texels where its weight is at least `skip` (hexcLayerKeep keeps it).
+std::vector<double> coverage(const Material& material, const Layers& layers) {
+    std::vector<double> out(layers.layers.size(), 1.0);
+    for (size_t k = 0; k < layers.splats.size(); ++k) {
+        const Texture t = loadTexture(material.slots[layers.splats[k]].texturePath, false);
+        if (t.isFloat() || t.rgba8.empty()) continue;  // counted as covering everything: the worst case
+        const size_t texels = size_t(t.width) * size_t(t.height);
+        for (size_t c = 0; c < 4 && 4 * k + c < out.size(); ++c) {
+            size_t kept = 0;
+            for (size_t i = 0; i < texels; ++i) kept += t.rgba8[4 * i + c] / 255.0 >= layers.skipBelow;
+            out[4 * k + c] = double(kept) / double(texels);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+bool layerSlotRead(const Material& material, size_t index, const std::string& templateSource, bool readsFirst) {
+    if (!material.layers) return false;
+    const Layers& layers = *material.layers;
+    const bool any = anyRoleRead(layers, templateSource, readsFirst);
+    if (std::find(layers.splats.begin(), layers.splats.end(), index) != layers.splats.end()) return any;
+    for (const Layers::Layer& l : layers.layers)
+        for (size_t r = 0; r < l.slots.size(); ++r)
+            if (l.slots[r] == index) return roleRead(layers, r, templateSource, readsFirst) || (any && layers.heightRole == r);
+    return false;
+}
+
+void planLayers(const Material& material, ShaderPlan& plan) {
+    if (!material.layers) return;
+    const Layers& layers = *material.layers;
+    const bool readsFirst = containsWord(plan.templateSource, "HEXC_FIRST_SLOT");
+    if (!anyRoleRead(layers, plan.templateSource, readsFirst)) return;
+    LayersPlan lp;
+    lp.count = layers.layers.size();
+    lp.width = layers.width;
+    lp.skipBelow = layers.skipBelow;
+    lp.coverage = coverage(material, layers);
+    for (size_t s : layers.splats) lp.splats.push_back(planIndex(material, s, plan));
+    // One layer's slot read in every pixel where the layer is kept: its share of the figures.
+    auto add = [&](size_t layer, SlotPlan& sp) {
+        sp.explicitGradients = true;  // read inside the layer's branch: plain tiling's fetch takes the role's gradients
+        lp.worstFetches += fetches(sp);
+        lp.expectedFetches += fetches(sp) * lp.coverage[layer];
+    };
+    for (size_t r = 0; r < layers.roles.size(); ++r) {
+        if (!roleRead(layers, r, plan.templateSource, readsFirst)) continue;
+        LayerRolePlan role{layers.roles[r].name, layers.roles[r].kind, {}, {}};
+        for (size_t l = 0; l < lp.count; ++l) {
+            role.slots.push_back(planIndex(material, layers.layers[l].slots[r], plan));
+            add(l, plan.slots[role.slots.back()]);
+        }
+        role.type = plan.slots[role.slots.front()].type;
+        lp.roles.push_back(std::move(role));
+    }
+    // The height blend reads every kept layer's height in each role's weights.
+    for (size_t l = 0; layers.heightRole && l < lp.count; ++l) {
+        lp.heights.push_back(planIndex(material, layers.layers[l].slots[*layers.heightRole], plan));
+        for (size_t r = 0; r < lp.roles.size(); ++r) add(l, plan.slots[lp.heights.back()]);
+    }
+    // Each role's function reads the splat maps.
+    lp.worstFetches += double(lp.splats.size() * lp.roles.size());
+    lp.expectedFetches += double(lp.splats.size() * lp.roles.size());
+    plan.layers = std::move(lp);
+}
+
+}  // namespace hexc

@@ -1,0 +1,18 @@
+#pragma once
+// A layered material's plan (Material::layers -> ShaderPlan::layers): which of its slots the template's reads of the
+// roles reach, and the fetches per pixel the blend costs.
+#include <string>
+
+#include "plan/plan.h"
+
+namespace hexc {
+
+// Whether material slot `index` belongs to the layers and the template reads it through a role: a layer's slot of a
+// role it reads (`readsFirst`: the template reads HEXC_FIRST_SLOT, the first role), the height role's and the splat
+// maps when it reads any role.
+bool layerSlotRead(const Material& material, size_t index, const std::string& templateSource, bool readsFirst);
+
+// plan.layers, after plan.slots; nothing when the material has no layers or the template reads none of its roles.
+void planLayers(const Material& material, ShaderPlan& plan);
+
+}  // namespace hexc

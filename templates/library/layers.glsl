@@ -1,0 +1,86 @@
+// hexc layered materials (docs/material-format.md#layers). Each role the template reads, hexc_<role>, blends the
+// layers' slots (hexcAt_<layer>_<role>, templates/library/slots.glsl) by the layers' weights at the pixel. The
+// gradients are taken once, before the layers' branches, and every layer's slot is sampled with them: a derivative
+// inside a branch that not every pixel of a quad takes is undefined (and WGSL refuses it). codegen
+// (codegen/layers.cpp) fills the tokens: ${skip}, ${width}: literals; ${splats}, ${keep}, ${heights}, ${layers}: the
+// per-splat and per-layer lines below; ${index}, ${splat}, ${channel}, ${slot}, ${tiling}; ${role}, ${type}, ${uv}.
+// Weights are arrays of 8, hexc's most layers; those past the material's stay 0.
+
+//@ functions
+// Drops the weights below `skip` (their layers are not fetched) and renormalises the others to sum 1; where every
+// weight is dropped (an unpainted texel), layer 0 shows.
+void hexcLayerKeep(inout float w[8], float skip) {
+    float sum = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        w[i] = w[i] >= skip ? w[i] : 0.0;
+        sum += w[i];
+    }
+    if (sum <= 0.0) {
+        w[0] = 1.0;
+        sum = 1.0;
+    }
+    for (int i = 0; i < 8; ++i) w[i] /= sum;
+}
+
+// The height blend: a kept layer shows where its height plus its weight comes within `width` of the highest such sum,
+// in proportion to how far within; the layer on top always shows, so the sum is positive.
+void hexcLayerHeights(inout float w[8], float h[8], float width) {
+    float top = -2.0;  // below any height (in [0, 1]) plus weight (in [0, 1])
+    for (int i = 0; i < 8; ++i)
+        if (w[i] > 0.0) top = max(top, h[i] + w[i]);
+    float sum = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        w[i] = w[i] > 0.0 ? max(h[i] + w[i] - top + width, 0.0) : 0.0;
+        sum += w[i];
+    }
+    for (int i = 0; i < 8; ++i) w[i] /= sum;
+}
+
+//@ weights
+// The layers' weights at st (hexc's uv), with its gradients dx, dy: layer i's splat channel, kept and renormalised.
+void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
+    vec3 t;
+    for (int i = 0; i < 8; ++i) w[i] = 0.0;
+${splats}
+${keep}
+    hexcLayerKeep(w, ${skip});
+${heights}
+}
+
+//@ weights.splat
+    vec4 splat${index} = hexcAt_splat${index}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);
+
+//@ weights.layer
+    w[${index}] = splat${splat}[${channel}];
+
+//@ weights.heights
+    // Each kept layer's height, for the height blend.
+    float h[8];
+    for (int i = 0; i < 8; ++i) h[i] = 0.0;
+${layers}
+    hexcLayerHeights(w, h, ${width});
+
+//@ weights.height
+    if (w[${index}] > 0.0) h[${index}] = hexcAt_${slot}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);
+
+//@ role
+// The layers' `${role}` slots blended by the layers' weights; a layer of weight 0 is not fetched.
+${type} hexc_${role}(vec2 uv, out vec3 weights) {
+    vec2 st = ${uv};
+    vec2 dx = dFdx(st), dy = dFdy(st);
+    float w[8];
+    hexcLayerWeights(st, dx, dy, w);
+    ${type} value = ${type}(0.0);
+    vec3 t;
+    weights = vec3(0.0);
+${layers}
+    return value;
+}
+${type} hexc_${role}(vec2 uv) { vec3 weights; return hexc_${role}(uv, weights); }
+#define HEXC_HAS_${role} 1
+
+//@ role.layer
+    if (w[${index}] > 0.0) {
+        value += w[${index}] * hexcAt_${slot}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);
+        weights += w[${index}] * t;
+    }

@@ -1,0 +1,84 @@
+// Layered materials (docs/material-format.md#layers): the layers become slots <layer>_<role>, the template reads the
+// blend per role, a layer of weight 0 is behind a branch, and the plan counts fetches per pixel.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "hexc/compiler.h"
+#include "plan/plan.h"
+
+using namespace hexc;
+
+namespace {
+
+Material terrain() {
+    ParseResult r = parseMaterialFile("materials/terrain/terrain.json");
+    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
+    return *r.material;
+}
+
+CompileResult compiled(Material m, const std::string& templ = "lit") {
+    m.templ = TemplateRef::builtin(templ);
+    CompileResult r = compile(m);
+    EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    return r;
+}
+
+nlohmann::json manifestOf(const CompileResult& r) {
+    for (const OutputFile& f : r.files)
+        if (f.name.ends_with(".manifest.json")) return nlohmann::json::parse(f.contents);
+    return {};
+}
+
+TEST(Layers, EachLayersSlotIsASlotNamedAfterItsLayerAndRole) {
+    const Material m = terrain();
+    ASSERT_TRUE(m.layers);
+    ASSERT_EQ(m.layers->layers.size(), 4u);
+    ASSERT_EQ(m.layers->roles.size(), 3u);
+    EXPECT_EQ(m.layers->roles[0].name, "albedo");
+    EXPECT_EQ(m.layers->roles[1].kind, SlotKind::Normal);
+    ASSERT_EQ(m.slots.size(), 13u);  // 4 layers x 3 roles + the splat map
+    EXPECT_EQ(m.slots[m.layers->layers[1].slots[0]].name, "sand_albedo");
+    EXPECT_EQ(m.slots[m.layers->layers[1].slots[0]].hex.tiling[0], 6);  // the layer's hextiling over the material's 8
+    EXPECT_EQ(m.slots[m.layers->layers[0].slots[0]].hex.tiling[0], 8);
+    ASSERT_EQ(m.layers->splats.size(), 1u);
+    const Slot& splat = m.slots[m.layers->splats[0]];
+    EXPECT_EQ(splat.name, "splat0");
+    EXPECT_FALSE(splat.hex.enabled);
+    EXPECT_EQ(splat.colorSpace, ColorSpace::Linear);
+    EXPECT_EQ(m.layers->blend, LayerBlend::Height);
+    EXPECT_EQ(m.layers->heightRole, 2u);
+}
+
+TEST(Layers, TheTemplateReadsTheBlendPerRoleAndEachLayerIsBehindABranch) {
+    const CompileResult r = compiled(terrain());
+    EXPECT_NE(r.glsl.find("vec4 hexc_albedo(vec2 uv, out vec3 weights)"), std::string::npos);
+    EXPECT_NE(r.glsl.find("vec2 hexc_normal(vec2 uv, out vec3 weights)"), std::string::npos);
+    EXPECT_NE(r.glsl.find("#define HEXC_HAS_albedo 1"), std::string::npos);
+    // lit reads no `height`: no role function for it, but the height blend reads every layer's height slot.
+    EXPECT_EQ(r.glsl.find("hexc_height(vec2 uv"), std::string::npos);
+    for (const char* layer : {"grass", "sand", "pebbles", "snow"})
+        EXPECT_NE(r.glsl.find("hexcAt_" + std::string(layer) + "_height(st"), std::string::npos) << layer;
+    EXPECT_NE(r.glsl.find("if (w[3] > 0.0) {"), std::string::npos);
+}
+
+TEST(Layers, TheManifestCountsWorstAndExpectedFetchesPerPixel) {
+    const nlohmann::json layers = manifestOf(compiled(terrain()))["layers"];
+    ASSERT_TRUE(layers.is_object());
+    EXPECT_EQ(layers["mode"], "height");
+    EXPECT_EQ(layers["roles"].size(), 2u);  // lit reads albedo and normal
+    // Per role read (2): the splat map (1), and per layer (4) its slot (3 taps) and its height (3 taps).
+    EXPECT_EQ(layers["fetches_per_pixel"]["worst"], 2 * (1 + 4 * (3 + 3)));
+    double expected = 2;
+    for (const auto& c : layers["coverage"]) expected += 2 * 6 * c.get<double>();
+    EXPECT_NEAR(layers["fetches_per_pixel"]["expected"].get<double>(), expected, 1e-9);  // summed in another order
+    EXPECT_LT(expected, layers["fetches_per_pixel"]["worst"].get<double>());
+}
+
+TEST(Layers, TheValueTemplateShowsTheFirstRole) {
+    const CompileResult r = compiled(terrain(), "value");
+    EXPECT_NE(r.glsl.find("#define HEXC_FIRST_SLOT hexc_albedo"), std::string::npos);
+    EXPECT_NE(r.glsl.find("#define HEXC_FIRST_KIND_color 1"), std::string::npos);
+}
+
+}  // namespace
