@@ -240,6 +240,15 @@ TEST(MaterialX, TheExportRefusesASlotNoSurfaceInputCarries) {
     EXPECT_EQ(exported.diagnostics[0].loc.line, 14);  // the slot's `kind`
 }
 
+TEST(MaterialX, TheExportRefusesALayeredMaterialRatherThanFlattenIt) {
+    MaterialXExport exported = exportMaterialX(parsed("materials/terrain/terrain.json"), scratch("terrain.mtlx"));
+    EXPECT_FALSE(exported.document);
+    ASSERT_EQ(exported.diagnostics.size(), 1u);
+    EXPECT_EQ(exported.diagnostics[0].code, Code::MaterialXUnsupported);
+    EXPECT_EQ(exported.diagnostics[0].path, "/layers");
+    EXPECT_GT(exported.diagnostics[0].loc.line, 0);  // at the first layer's first slot
+}
+
 std::string fileText(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});

@@ -78,6 +78,7 @@ public:
             .set_value((" hexc " + std::string(version()) + ", from " + m_.sourceFile.filename().string() +
                         ": hexc_* attributes keep the settings MaterialX has no input for (docs/materialx.md) ")
                            .c_str());
+        if (m_.layers) return layered();
         graph_ = element(root, "nodegraph", "NG_" + m_.name);
         surface_ = element(root, "standard_surface", "SR_" + m_.name, "surfaceshader");
         for (size_t i = 0; i < m_.slots.size(); ++i) slot(m_.slots[i], i);
@@ -125,6 +126,15 @@ private:
                 displacement_.attribute("name").value();
     }
 
+    // MaterialX has no node for a splat-map blend of slot sets: writing the slots would flatten the layers.
+    MaterialXExport layered() const {
+        const Slot& first = m_.slots[m_.layers->layers.front().slots.front()];
+        MaterialXExport out;
+        out.diagnostics.push_back(Diagnostic::make(Code::MaterialXUnsupported, {m_.sourceFile.string(), first.line, first.col}, "/layers",
+                                                   "a layered material has no MaterialX form (its splat-map blend)",
+                                                   "export each layer as a material of its own"));
+        return out;
+    }
     void slot(const Slot& s, size_t index);
     xml_node target(const Slot& s, size_t index, std::string& input);
     void hexInputs(xml_node node, const Slot& s);
