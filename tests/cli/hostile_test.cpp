@@ -521,6 +521,33 @@ TEST_F(Hostile, MaterialsTooLargeForMemoryAreReportedNotFatal) {
     expectNothingWritten();
 }
 
+// Memory that runs out anywhere in reading a material, not only in parsing it, is HX901 naming the material: a material
+// of one string as large as the input limit under 80 MiB of address space runs out while its text is read (the
+// reserve of its size); one string of 60 MiB under 128 or 160 MiB runs out while hexc looks for a scene's keys (the
+// lexer's copy of the string, doubling as it grows), before the material's parse and its reserve.
+TEST_F(Hostile, MemoryRunningOutWhileReadingAMaterialIsReportedNotFatal) {
+#ifdef HEXC_SANITIZED
+    GTEST_SKIP() << "an address-space bound means nothing under ASan";
+#endif
+    const struct {
+        size_t stringBytes;
+        int limitMiB;
+    } cases[] = {{(64 << 20) - 1024, 80}, {60 << 20, 128}, {60 << 20, 160}};
+    for (const auto& c : cases) {
+        fs::path m = write("m.json", material(R"(, "padding": ")" + std::string(c.stringBytes, 'x') + "\""));
+        const std::string mib = std::to_string(fs::file_size(m) >> 20);
+        for (const std::string& command : {m.string() + out(), "export-mtlx " + m.string() + " -o " + (dir_ / "out" / "m.mtlx").string()}) {
+            std::string err;
+            int exit = hexc::test::runHexc(command, &err,
+                                           "ulimit -v " + std::to_string(c.limitMiB * 1024) + "; timeout " + std::to_string(kSeconds));
+            EXPECT_EQ(exit, 1) << c.limitMiB << " MiB: " << command << ": " << err;
+            EXPECT_NE(err.find("m.json: error[HX901]: out of memory reading this document (" + mib + " MiB)"), std::string::npos)
+                << c.limitMiB << " MiB: " << err;
+        }
+    }
+    expectNothingWritten();
+}
+
 // Peak resident memory, in MiB, of `hexc m -o outDir`, its stderr in `err` and its exit status in `exit`.
 double peakResidentMiB(const fs::path& m, const fs::path& outDir, const fs::path& err, int* exit) {
     const pid_t child = fork();

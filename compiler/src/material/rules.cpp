@@ -226,12 +226,6 @@ json parseWithReserve(std::string_view text) {
 
 }  // namespace
 
-Diagnostic outOfMemoryReading(const std::filesystem::path& file, std::string_view text) {
-    return Diagnostic::make(
-        Code::OutOfMemory, {file.string()}, "",
-        "out of memory reading this document (" + std::to_string(text.size() >> 20) + " MiB): it needs more memory than this process has");
-}
-
 std::optional<json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags) {
     auto syntaxError = [&](size_t offset, std::string message) {
         TextPos p = textPosition(text, offset);
