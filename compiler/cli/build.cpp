@@ -129,31 +129,41 @@ void addScene(const std::filesystem::path& path, std::string_view text, const Ar
     in.scenes.push_back(std::move(summary));
 }
 
+// Reads, parses and checks the material, scene or MaterialX document at `path` into `in`.
+void readInput(const std::filesystem::path& path, const Arguments& a, Inputs& in) {
+    std::string why;
+    std::optional<std::string> text = readFile(path, &why);
+    if (text && isSceneDocument(*text)) {
+        addScene(path, *text, a, in);
+        return;
+    }
+    // A MaterialX document may hold several materials: each is a job.
+    std::vector<ParseResult> parsed = !text                   ? std::vector<ParseResult>(1)
+                                      : isMaterialXFile(path) ? parseMaterialXDocument(*text, path)
+                                                              : std::vector<ParseResult>{parseMaterial(*text, path)};
+    if (!text)
+        parsed[0].diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {path.string()}, "", "cannot read material file: " + why));
+    for (ParseResult& p : parsed) {
+        if (p.partial) {  // the template's problems in the same run as the material's
+            const Diagnostics t = checkTemplate(*p.partial, a.options);
+            p.diagnostics.insert(p.diagnostics.end(), t.begin(), t.end());
+        }
+        if (printDiagnostics(p.diagnostics, a) && p.material)
+            in.jobs.push_back({std::move(*p.material)});
+        else
+            in.failed = true;
+    }
+}
+
 Inputs readInputs(const Arguments& a) {
     Inputs in;
     for (const auto& path : a.materials) {
-        std::string why;
-        std::optional<std::string> text = readFile(path, &why);
-        if (text && isSceneDocument(*text)) {
-            addScene(path, *text, a, in);
-            continue;
-        }
-        // A MaterialX document may hold several materials: each is a job.
-        std::vector<ParseResult> parsed = !text                   ? std::vector<ParseResult>(1)
-                                          : isMaterialXFile(path) ? parseMaterialXDocument(*text, path)
-                                                                  : std::vector<ParseResult>{parseMaterial(*text, path)};
-        if (!text)
-            parsed[0].diagnostics.push_back(
-                Diagnostic::make(Code::InputUnreadable, {path.string()}, "", "cannot read material file: " + why));
-        for (ParseResult& p : parsed) {
-            if (p.partial) {  // the template's problems in the same run as the material's
-                const Diagnostics t = checkTemplate(*p.partial, a.options);
-                p.diagnostics.insert(p.diagnostics.end(), t.begin(), t.end());
-            }
-            if (printDiagnostics(p.diagnostics, a) && p.material)
-                in.jobs.push_back({std::move(*p.material)});
-            else
-                in.failed = true;
+        try {
+            readInput(path, a, in);
+        } catch (const std::bad_alloc&) {  // anywhere in reading, parsing or checking it: what it held is freed by now
+            std::error_code ec;
+            printDiagnostics({outOfMemoryReading(path.string(), std::filesystem::file_size(path, ec))}, a);
+            in.failed = true;
         }
     }
     return in;

@@ -90,6 +90,23 @@ TEST(Validation, ATrailingCommaIsReportedWhereItIs) {
                                                         "value - unexpected ','; expected '[', '{', or a literal"});
 }
 
+// A document holds at most 100,000 values (kMaxJsonValues; a material of 16 slots holds about 600): the value past the
+// bound is a located error before parsing. Keys are not values; brackets, commas and colons in strings are nothing.
+TEST(Validation, TheValuePastTheBoundIsLocated) {
+    // The root, `name`'s string and the array: 3 values; then one a line, each a string of JSON's punctuation.
+    auto padded = [](size_t n) {
+        std::string text = R"({"name": "m", "[k,{:": [)";
+        for (size_t i = 0; i < n; ++i) text += i ? ",\n\"],{:[\"" : "\"],{:[\"";
+        return text + "]}";
+    };
+    const std::vector<std::string> parsed = diagnose(padded(100000 - 3));  // the unknown key, slots missing: read, not refused
+    EXPECT_FALSE(parsed.empty());
+    for (const std::string& d : parsed) EXPECT_EQ(d.find("HX101"), std::string::npos) << d;
+    EXPECT_EQ(diagnose(padded(100000 - 2)),
+              std::vector<std::string>{"materials/t.json:99998:1: error[HX101]: JSON of more than 100000 values (a material of 16 "
+                                       "slots holds about 600)"});
+}
+
 TEST(Validation, EmptyFile) {
     EXPECT_EQ(diagnose(""), std::vector<std::string>{"materials/t.json:1:1: error[HX101]: invalid JSON: syntax error while parsing "
                                                      "value - unexpected end of input; expected '[', '{', or a literal"});

@@ -1,5 +1,6 @@
 #pragma once
 // Every problem hexc finds is a Diagnostic: a stable code, where (file:line:col and JSON path), what was expected.
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -102,6 +103,10 @@ bool hasErrors(const Diagnostics& diags);
 // One line each, at most 100 per file, then a line counting the rest per file. Diagnostic::make shortens a value it
 // quotes (`...`) and the path to 200 bytes, saying how long they were.
 std::string formatAll(const Diagnostics& diags);
+
+// HX901 for an input of `bytes` whose reading needs more memory than the process has (a huge material under a memory
+// limit): what a reader gives instead of letting std::bad_alloc end the process.
+Diagnostic outOfMemoryReading(const std::string& file, uint64_t bytes);
 
 // Thrown only by stages that cannot continue; carries the located problems.
 struct CompileError {

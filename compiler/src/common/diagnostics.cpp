@@ -123,6 +123,12 @@ bool hasErrors(const Diagnostics& diags) {
     return false;
 }
 
+Diagnostic outOfMemoryReading(const std::string& file, uint64_t bytes) {
+    return Diagnostic::make(
+        Code::OutOfMemory, {file}, "",
+        "out of memory reading this document (" + std::to_string(bytes >> 20) + " MiB): it needs more memory than this process has");
+}
+
 std::string formatAll(const Diagnostics& diags) {
     std::string out;
     std::map<std::string, size_t> shown, hidden;  // per file

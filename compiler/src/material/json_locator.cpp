@@ -86,25 +86,32 @@ std::map<std::string, size_t, std::less<>> xmlAttributeOffsets(std::string_view 
     return offsets;
 }
 
-std::optional<size_t> excessiveNesting(std::string_view text) {
+std::optional<JsonExcess> excessiveShape(std::string_view text, size_t maxValues) {
+    bool inObject[kMaxJsonDepth + 1] = {};  // at each open level: an object, where a key follows `{` and `,`
     int depth = 0;
-    bool inString = false;
+    size_t values = 0;
+    char last = 0;  // the last character read outside strings and space; '"' for a whole string
     for (size_t i = 0; i < text.size(); ++i) {
-        char c = text[i];
-        if (inString) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
+        const char c = text[i];
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
+        const bool afterSeparator = last == 0 || last == '[' || last == ':' || (last == ',' && !inObject[depth]);
+        if (afterSeparator && c != ']' && c != '}' && c != ',' && ++values > maxValues) return JsonExcess{i, false};
+        if (c == '"') {
+            for (++i; i < text.size() && text[i] != '"';) i += text[i] == '\\' ? 2 : 1;
         } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonDepth) return i;
-        } else if (c == ']' || c == '}') {
+            if (++depth > kMaxJsonDepth) return JsonExcess{i, true};
+            inObject[depth] = c == '{';
+        } else if ((c == ']' || c == '}') && depth > 0) {
             --depth;
         }
+        last = c;
     }
     return std::nullopt;
+}
+
+std::optional<size_t> excessiveNesting(std::string_view text) {
+    const std::optional<JsonExcess> e = excessiveShape(text, SIZE_MAX);
+    return e ? std::optional(e->offset) : std::nullopt;
 }
 
 namespace {

@@ -4,7 +4,8 @@
 // It also finds duplicate keys, which nlohmann silently merges. Linear in the text's size; recursion is bounded by
 // kMaxJsonDepth, which the text must respect (check with excessiveNesting). Memory: 20 bytes a value (offsets only; a
 // line and column are counted when asked for), allocated once, plus 4 bytes a container while parsing; a value takes at
-// least two bytes of text (itself and a comma or a bracket), so at most 10 times the text's size (12 while parsing).
+// least two bytes of text (itself and a comma or a bracket), so at most 10 times the text's size (12 while parsing), and
+// 2 MB for a document parseJson accepts (at most kMaxJsonValues values).
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -16,7 +17,18 @@ namespace hexc {
 
 // Materials and scenes nest 5 levels deep; 32 leaves room and bounds the locator's recursion and memory.
 constexpr int kMaxJsonDepth = 32;
+// A material of 16 slots holds about 600 values. nlohmann's document costs 16 to 130 bytes a value (a small array's
+// vector, an object member's key and tree node) and the locator 20: more than 8 times the text for any text of small
+// values (`1,` is 2 bytes). Bounding the count bounds both, whatever the document's shape: about 15 MB at most.
+constexpr size_t kMaxJsonValues = 100000;
 
+// Where a JSON text first passes a bound (strings skipped): the `[` or `{` that opens a level deeper than
+// kMaxJsonDepth, or the start of the value after the first `maxValues`.
+struct JsonExcess {
+    size_t offset;
+    bool tooDeep;  // else too many values
+};
+std::optional<JsonExcess> excessiveShape(std::string_view text, size_t maxValues);
 // The offset of the first `[` or `{` that opens a level deeper than kMaxJsonDepth, if any (strings skipped).
 std::optional<size_t> excessiveNesting(std::string_view text);
 

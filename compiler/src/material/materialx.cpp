@@ -573,7 +573,7 @@ std::vector<ParseResult> readWithinMemory(std::string_view text, const std::file
     try {
         return readDocument(text, file, one);
     } catch (const std::bad_alloc&) {
-        return {ParseResult{std::nullopt, {outOfMemoryReading(file, text)}, std::nullopt}};
+        return {ParseResult{std::nullopt, {outOfMemoryReading(file.string(), text.size())}, std::nullopt}};
     }
 }
 }  // namespace

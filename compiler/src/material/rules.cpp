@@ -196,10 +196,12 @@ std::optional<size_t> trailingComma(std::string_view text, size_t offset) {
 }
 
 // nlohmann's destructor frees a document without recursion, moving its values onto a stack that it allocates: up to
-// one 16-byte value for every two bytes of text (a value takes at least two: itself and a comma or a bracket). A parse
-// that runs out of memory would abort there, unwinding (exit 134). So a parse holds a reserve of 8 bytes a byte of
-// text, released by the new-handler when memory runs out, before the bad_alloc unwinds the partial document. The
-// reserve is only allocated, never touched: it takes address space, not resident memory.
+// the document's every value (at most kMaxJsonValues, checked before parsing, and one for every two bytes of text: a
+// value takes at least two, itself and a comma or a bracket), 16 bytes each, in a vector that holds up to 3 times that
+// while it grows. A parse that runs out of memory would abort there, unwinding (exit 134). So a parse holds a reserve of
+// 48 bytes a value of that bound (at most 4.8 MB), released by the new-handler when memory runs out, before the
+// bad_alloc unwinds the partial document. The reserve is only allocated, never touched: it takes address space,
+// not resident memory.
 thread_local std::unique_ptr<char[]> parseReserve;
 
 void releaseReserveAndFail() {
@@ -211,7 +213,7 @@ void releaseReserveAndFail() {
 json parseWithReserve(std::string_view text) {
     static const bool installed = (std::set_new_handler(releaseReserveAndFail), true);
     (void)installed;
-    parseReserve.reset(new char[std::max<size_t>(8 * text.size(), 1)]);
+    parseReserve.reset(new char[48 * std::min(kMaxJsonValues, text.size() / 2 + 1)]);
     try {
         json doc = json::parse(text);
         parseReserve.reset();
@@ -224,20 +226,17 @@ json parseWithReserve(std::string_view text) {
 
 }  // namespace
 
-Diagnostic outOfMemoryReading(const std::filesystem::path& file, std::string_view text) {
-    return Diagnostic::make(
-        Code::OutOfMemory, {file.string()}, "",
-        "out of memory reading this document (" + std::to_string(text.size() >> 20) + " MiB): it needs more memory than this process has");
-}
-
 std::optional<json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags) {
     auto syntaxError = [&](size_t offset, std::string message) {
         TextPos p = textPosition(text, offset);
         diags->push_back(Diagnostic::make(Code::JsonSyntax, {file.string(), p.line, p.col}, "", std::move(message)));
         return std::nullopt;
     };
-    if (std::optional<size_t> at = excessiveNesting(text))
-        return syntaxError(*at, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (a material needs 5)");
+    if (std::optional<JsonExcess> e = excessiveShape(text, kMaxJsonValues))
+        return syntaxError(
+            e->offset, e->tooDeep
+                           ? "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (a material needs 5)"
+                           : "JSON of more than " + std::to_string(kMaxJsonValues) + " values (a material of 16 slots holds about 600)");
     try {
         return parseWithReserve(text);
     } catch (const json::parse_error& e) {

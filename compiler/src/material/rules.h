@@ -88,10 +88,6 @@ protected:
 // Parses JSON text; on a syntax error returns nullopt with the located diagnostic in *diags.
 std::optional<nlohmann::json> parseJson(std::string_view text, const std::filesystem::path& file, Diagnostics* diags);
 
-// HX901 for a document whose reading needs more memory than the process has (a huge material under a memory limit):
-// what a parser gives instead of letting std::bad_alloc end the process.
-Diagnostic outOfMemoryReading(const std::filesystem::path& file, std::string_view text);
-
 // Parses `text` and validates the document with a `Validator`'s `run`, whose result lands in `field` only when there is
 // no error, else in `partial` when given.
 template <typename Validator, typename Result, typename T>
@@ -110,7 +106,7 @@ Result validate(std::string_view text, const std::filesystem::path& file, std::o
             result.*partial = std::move(value);
     } catch (const std::bad_alloc&) {  // what was built is freed by now
         result = Result{};
-        result.diagnostics.push_back(outOfMemoryReading(file, text));
+        result.diagnostics.push_back(outOfMemoryReading(file.string(), text.size()));
     }
     return result;
 }
@@ -120,9 +116,15 @@ template <typename Result>
 Result readAndParse(const std::filesystem::path& file, const std::string& what,
                     Result (*parse)(std::string_view, const std::filesystem::path&)) {
     std::string why;
-    std::optional<std::string> text = readFile(file, &why);
-    if (text) return parse(*text, file);
     Result r;
+    try {
+        std::optional<std::string> text = readFile(file, &why);
+        if (text) return parse(*text, file);
+    } catch (const std::bad_alloc&) {  // the file's text alone is more than the memory left (parse reports the rest)
+        std::error_code ec;
+        r.diagnostics.push_back(outOfMemoryReading(file.string(), std::filesystem::file_size(file, ec)));
+        return r;
+    }
     r.diagnostics.push_back(Diagnostic::make(Code::InputUnreadable, {file.string()}, "", "cannot read " + what + " file: " + why));
     return r;
 }
