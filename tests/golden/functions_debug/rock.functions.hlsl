@@ -639,10 +639,10 @@ float2 hexc_normal(float2 uv)
     return _1584;
 }
 
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

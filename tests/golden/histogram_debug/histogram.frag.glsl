@@ -614,10 +614,10 @@ vec2 hexc_normal(vec2 uv)
     return _1458;
 }
 
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

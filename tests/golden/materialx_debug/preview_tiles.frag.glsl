@@ -79,36 +79,36 @@ ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 #line 99 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _331;
+    int _319;
     if ((d < 0) && (a != 0))
     {
-        _331 = 3 - a;
+        _319 = 3 - a;
     }
     else
     {
-        _331 = a;
+        _319 = a;
     }
-    int i1 = _331;
-    int _342;
+    int i1 = _319;
+    int _330;
     if (i1 < 2)
     {
-        _342 = i1 + 1;
+        _330 = i1 + 1;
     }
     else
     {
-        _342 = 0;
+        _330 = 0;
     }
-    int vh = _342;
-    int _352;
+    int vh = _330;
+    int _340;
     if (i1 > 0)
     {
-        _352 = i1 - 1;
+        _340 = i1 - 1;
     }
     else
     {
-        _352 = 2;
+        _340 = 2;
     }
-    int vl = _352;
+    int vl = _340;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -224,16 +224,16 @@ float hexcMxGain(float x, float r)
 #line 51 "hexc/materialx.glsl"
     float rr = clamp(r, 0.001000000047497451305389404296875, 0.999000012874603271484375);
     float a = ((1.0 / rr) - 2.0) * (1.0 - (2.0 * x));
-    float _770;
+    float _724;
     if (x < 0.5)
     {
-        _770 = x / (a + 1.0);
+        _724 = x / (a + 1.0);
     }
     else
     {
-        _770 = (a - x) / (a - 1.0);
+        _724 = (a - x) / (a - 1.0);
     }
-    return _770;
+    return _724;
 }
 
 #line 60 "hexc/materialx.glsl"
@@ -242,20 +242,20 @@ vec3 hexcMxWeights(vec3 luma, vec3 w, float falloff)
 #line 60 "hexc/materialx.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _792 = hexcPowInt(param, param_1);
-    vec3 w7 = _792;
+    vec3 _746 = hexcPowInt(param, param_1);
+    vec3 w7 = _746;
     vec3 W = luma * w7;
     float sum = (W.x + W.y) + W.z;
-    vec3 _808;
+    vec3 _762;
     if (sum > 0.0)
     {
-        _808 = W / vec3(sum);
+        _762 = W / vec3(sum);
     }
     else
     {
-        _808 = w7 / vec3((w7.x + w7.y) + w7.z);
+        _762 = w7 / vec3((w7.x + w7.y) + w7.z);
     }
-    W = _808;
+    W = _762;
     if (falloff != 0.5)
     {
         float param_2 = W.x;
@@ -304,17 +304,17 @@ vec4 hexcMxColor_albedo(HexcTiles t, vec3 luma, bool srgb, out vec3 weights, sam
     ivec3 param_7 = t.channel;
     weights = hexcShowWeights(param_6, param_7);
     vec3 rgb = ((c1.xyz * W.x) + (c2.xyz * W.y)) + (c3.xyz * W.z);
-    vec3 _997;
+    vec3 _951;
     if (srgb)
     {
         vec3 param_8 = rgb;
-        _997 = hexcMxDecode(param_8);
+        _951 = hexcMxDecode(param_8);
     }
     else
     {
-        _997 = rgb;
+        _951 = rgb;
     }
-    return vec4(_997, ((A.x * c1.w) + (A.y * c2.w)) + (A.z * c3.w));
+    return vec4(_951, ((A.x * c1.w) + (A.y * c2.w)) + (A.z * c3.w));
 }
 
 #line 24 "hexc/generated"
@@ -328,9 +328,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     vec3 param_4 = vec3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125);
     bool param_5 = true;
     vec3 param_6;
-    vec4 _1047 = hexcMxColor_albedo(param_3, param_4, param_5, param_6, hexcTex_albedo);
+    vec4 _1001 = hexcMxColor_albedo(param_3, param_4, param_5, param_6, hexcTex_albedo);
     weights = param_6;
-    return _1047;
+    return _1001;
 }
 
 #line 28 "hexc/generated"
@@ -343,9 +343,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _1068 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1022 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1068;
+    return _1022;
 }
 
 #line 31 "hexc/generated"
@@ -354,43 +354,34 @@ vec4 hexc_albedo(vec2 uv)
 #line 31 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1076 = hexc_albedo(param, param_1);
+    vec4 _1030 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1076;
+    return _1030;
 }
 
-#line 670 "hexc/hextiling.glsl"
-vec4 hexcPlainColor(vec2 st, vec2 dx, vec2 dy, bool explicitGrad, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
+#line 672 "hexc/hextiling.glsl"
+vec4 hexcPlainColor(vec2 st, vec2 dx, vec2 dy, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 670 "hexc/hextiling.glsl"
+#line 672 "hexc/hextiling.glsl"
     weights = vec3(1.0, 0.0, 0.0);
-    vec4 _508;
-    if (explicitGrad)
-    {
-        _508 = textureGrad(SPIRV_Cross_Combinedtexsamp, st, dx, dy);
-    }
-    else
-    {
-        _508 = texture(SPIRV_Cross_Combinedtexsamp, st);
-    }
-    return _508;
+    return texture(SPIRV_Cross_Combinedtexsamp, st);
 }
 
 #line 77 "hexc/materialx.glsl"
 vec4 hexcMxDecoded(vec4 c, bool srgb)
 {
-    vec4 _888;
+    vec4 _842;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         vec3 param = c.xyz;
-        _888 = vec4(hexcMxDecode(param), c.w);
+        _842 = vec4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _888 = c;
+        _842 = c;
     }
-    return _888;
+    return _842;
 }
 
 #line 33 "hexc/generated"
@@ -400,13 +391,12 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
-    bool param_3 = false;
-    vec3 param_4;
-    vec4 _1090 = hexcPlainColor(param, param_1, param_2, param_3, param_4, hexcTex_roughness);
-    weights = param_4;
-    vec4 param_5 = _1090;
-    bool param_6 = false;
-    return hexcMxDecoded(param_5, param_6).x;
+    vec3 param_3;
+    vec4 _1042 = hexcPlainColor(param, param_1, param_2, param_3, hexcTex_roughness);
+    weights = param_3;
+    vec4 param_4 = _1042;
+    bool param_5 = false;
+    return hexcMxDecoded(param_4, param_5).x;
 }
 
 #line 37 "hexc/generated"
@@ -419,9 +409,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _1113 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1066 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1113;
+    return _1066;
 }
 
 #line 40 "hexc/generated"
@@ -430,9 +420,9 @@ float hexc_roughness(vec2 uv)
 #line 40 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _1121 = hexc_roughness(param, param_1);
+    float _1074 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _1121;
+    return _1074;
 }
 
 #line 603 "hexc/hextiling.glsl"
@@ -441,32 +431,16 @@ vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 #line 603 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _489;
+    float _477;
     if (flipY)
     {
-        _489 = -vM.y;
+        _477 = -vM.y;
     }
     else
     {
-        _489 = vM.y;
+        _477 = vM.y;
     }
-    return (-vec2(vM.x, _489)) / vec2(zMa);
-}
-
-#line 675 "hexc/hextiling.glsl"
-vec2 hexcPlainDeriv(vec2 st, vec2 dx, vec2 dy, bool explicitGrad, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
-{
-#line 675 "hexc/hextiling.glsl"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    bool param_3 = explicitGrad;
-    vec3 param_4;
-    vec4 _537 = hexcPlainColor(param, param_1, param_2, param_3, param_4, SPIRV_Cross_Combinedtexsamp);
-    weights = param_4;
-    vec3 param_5 = (_537.xyz * 2.0) - vec3(1.0);
-    bool param_6 = flipY;
-    return hexcNormalToDeriv(param_5, param_6);
+    return (-vec2(vM.x, _477)) / vec2(zMa);
 }
 
 #line 42 "hexc/generated"
@@ -476,12 +450,12 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
-    bool param_3 = false;
-    bool param_4 = false;
-    vec3 param_5;
-    vec2 _1135 = hexcPlainDeriv(param, param_1, param_2, param_3, param_4, param_5, hexcTex_normal);
-    weights = param_5;
-    return _1135;
+    vec3 param_3;
+    vec4 _1086 = hexcPlainColor(param, param_1, param_2, param_3, hexcTex_normal);
+    weights = param_3;
+    vec3 param_4 = (_1086.xyz * 2.0) - vec3(1.0);
+    bool param_5 = false;
+    return hexcNormalToDeriv(param_4, param_5);
 }
 
 #line 46 "hexc/generated"
@@ -494,9 +468,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _1154 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _1112 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1154;
+    return _1112;
 }
 
 #line 49 "hexc/generated"
@@ -505,15 +479,15 @@ vec2 hexc_normal(vec2 uv)
 #line 49 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _1162 = hexc_normal(param, param_1);
+    vec2 _1120 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _1162;
+    return _1120;
 }
 
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

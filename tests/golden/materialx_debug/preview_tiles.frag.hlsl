@@ -89,36 +89,36 @@ int3 hexcHexChannels(int2 v1, int2 v3)
 #line 99 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _331;
+    int _319;
     if ((d < 0) && (a != 0))
     {
-        _331 = 3 - a;
+        _319 = 3 - a;
     }
     else
     {
-        _331 = a;
+        _319 = a;
     }
-    int i1 = _331;
-    int _342;
+    int i1 = _319;
+    int _330;
     if (i1 < 2)
     {
-        _342 = i1 + 1;
+        _330 = i1 + 1;
     }
     else
     {
-        _342 = 0;
+        _330 = 0;
     }
-    int vh = _342;
-    int _352;
+    int vh = _330;
+    int _340;
     if (i1 > 0)
     {
-        _352 = i1 - 1;
+        _340 = i1 - 1;
     }
     else
     {
-        _352 = 2;
+        _340 = 2;
     }
-    int vl = _352;
+    int vl = _340;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -234,16 +234,16 @@ float hexcMxGain(float x, float r)
 #line 51 "hexc/materialx.glsl"
     float rr = clamp(r, 0.001000000047497451305389404296875f, 0.999000012874603271484375f);
     float a = ((1.0f / rr) - 2.0f) * (1.0f - (2.0f * x));
-    float _770;
+    float _724;
     if (x < 0.5f)
     {
-        _770 = x / (a + 1.0f);
+        _724 = x / (a + 1.0f);
     }
     else
     {
-        _770 = (a - x) / (a - 1.0f);
+        _724 = (a - x) / (a - 1.0f);
     }
-    return _770;
+    return _724;
 }
 
 #line 60 "hexc/materialx.glsl"
@@ -252,20 +252,20 @@ float3 hexcMxWeights(float3 luma, float3 w, float falloff)
 #line 60 "hexc/materialx.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _792 = hexcPowInt(param, param_1);
-    float3 w7 = _792;
+    float3 _746 = hexcPowInt(param, param_1);
+    float3 w7 = _746;
     float3 W = luma * w7;
     float sum = (W.x + W.y) + W.z;
-    float3 _808;
+    float3 _762;
     if (sum > 0.0f)
     {
-        _808 = W / sum.xxx;
+        _762 = W / sum.xxx;
     }
     else
     {
-        _808 = w7 / ((w7.x + w7.y) + w7.z).xxx;
+        _762 = w7 / ((w7.x + w7.y) + w7.z).xxx;
     }
-    W = _808;
+    W = _762;
     if (falloff != 0.5f)
     {
         float param_2 = W.x;
@@ -284,20 +284,20 @@ float3 hexcMxWeights(float3 luma, float3 w, float falloff)
 float3 hexcShowWeights(float3 W, int3 channel)
 {
 #line 109 "hexc/hextiling.glsl"
-    int3 _384 = channel.x.xxx;
-    int3 _395 = channel.y.xxx;
-    int3 _404 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _384.x, int3(0, 1, 2).y == _384.y, int3(0, 1, 2).z == _384.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _395.x, int3(0, 1, 2).y == _395.y, int3(0, 1, 2).z == _395.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _404.x, int3(0, 1, 2).y == _404.y, int3(0, 1, 2).z == _404.z)) * W.z);
+    int3 _372 = channel.x.xxx;
+    int3 _383 = channel.y.xxx;
+    int3 _392 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _372.x, int3(0, 1, 2).y == _372.y, int3(0, 1, 2).z == _372.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _383.x, int3(0, 1, 2).y == _383.y, int3(0, 1, 2).z == _383.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _392.x, int3(0, 1, 2).y == _392.y, int3(0, 1, 2).z == _392.z)) * W.z);
 }
 
 #line 72 "hexc/materialx.glsl"
 float3 hexcMxDecode(float3 c)
 {
 #line 72 "hexc/materialx.glsl"
-    float3 _868 = c / 12.9200000762939453125f.xxx;
-    float3 _879 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
-    bool3 _883 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
-    return float3(_883.x ? _879.x : _868.x, _883.y ? _879.y : _868.y, _883.z ? _879.z : _868.z);
+    float3 _822 = c / 12.9200000762939453125f.xxx;
+    float3 _833 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
+    bool3 _837 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
+    return float3(_837.x ? _833.x : _822.x, _837.y ? _833.y : _822.y, _837.z ? _833.z : _822.z);
 }
 
 #line 84 "hexc/materialx.glsl"
@@ -320,17 +320,17 @@ float4 hexcMxColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     int3 param_7 = t.channel;
     weights = hexcShowWeights(param_6, param_7);
     float3 rgb = ((c1.xyz * W.x) + (c2.xyz * W.y)) + (c3.xyz * W.z);
-    float3 _997;
+    float3 _951;
     if (srgb)
     {
         float3 param_8 = rgb;
-        _997 = hexcMxDecode(param_8);
+        _951 = hexcMxDecode(param_8);
     }
     else
     {
-        _997 = rgb;
+        _951 = rgb;
     }
-    return float4(_997, ((A.x * c1.w) + (A.y * c2.w)) + (A.z * c3.w));
+    return float4(_951, ((A.x * c1.w) + (A.y * c2.w)) + (A.z * c3.w));
 }
 
 #line 24 "hexc/generated"
@@ -344,9 +344,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     float3 param_4 = float3(0.2722286880016326904296875f, 0.6740818023681640625f, 0.0536894984543323516845703125f);
     bool param_5 = true;
     float3 param_6;
-    float4 _1047 = hexcMxColor_albedo(hexcTex_albedo, hexcSampler, param_3, param_4, param_5, param_6);
+    float4 _1001 = hexcMxColor_albedo(hexcTex_albedo, hexcSampler, param_3, param_4, param_5, param_6);
     weights = param_6;
-    return _1047;
+    return _1001;
 }
 
 #line 28 "hexc/generated"
@@ -359,9 +359,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _1068 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _1022 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1068;
+    return _1022;
 }
 
 #line 31 "hexc/generated"
@@ -370,43 +370,34 @@ float4 hexc_albedo(float2 uv)
 #line 31 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1076 = hexc_albedo(param, param_1);
+    float4 _1030 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _1076;
+    return _1030;
 }
 
-#line 670 "hexc/hextiling.glsl"
-float4 hexcPlainColor(Texture2D<float4> tex, SamplerState samp, float2 st, float2 dx, float2 dy, bool explicitGrad, out float3 weights)
+#line 672 "hexc/hextiling.glsl"
+float4 hexcPlainColor(Texture2D<float4> tex, SamplerState samp, float2 st, float2 dx, float2 dy, out float3 weights)
 {
-#line 670 "hexc/hextiling.glsl"
+#line 672 "hexc/hextiling.glsl"
     weights = float3(1.0f, 0.0f, 0.0f);
-    float4 _508;
-    if (explicitGrad)
-    {
-        _508 = tex.SampleGrad(samp, st, dx, dy);
-    }
-    else
-    {
-        _508 = tex.Sample(samp, st);
-    }
-    return _508;
+    return tex.Sample(samp, st);
 }
 
 #line 77 "hexc/materialx.glsl"
 float4 hexcMxDecoded(float4 c, bool srgb)
 {
-    float4 _888;
+    float4 _842;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _888 = float4(hexcMxDecode(param), c.w);
+        _842 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _888 = c;
+        _842 = c;
     }
-    return _888;
+    return _842;
 }
 
 #line 33 "hexc/generated"
@@ -416,13 +407,12 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
-    bool param_3 = false;
-    float3 param_4;
-    float4 _1090 = hexcPlainColor(hexcTex_roughness, hexcSampler, param, param_1, param_2, param_3, param_4);
-    weights = param_4;
-    float4 param_5 = _1090;
-    bool param_6 = false;
-    return hexcMxDecoded(param_5, param_6).x;
+    float3 param_3;
+    float4 _1042 = hexcPlainColor(hexcTex_roughness, hexcSampler, param, param_1, param_2, param_3);
+    weights = param_3;
+    float4 param_4 = _1042;
+    bool param_5 = false;
+    return hexcMxDecoded(param_4, param_5).x;
 }
 
 #line 37 "hexc/generated"
@@ -435,9 +425,9 @@ float hexc_roughness(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float _1113 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1066 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1113;
+    return _1066;
 }
 
 #line 40 "hexc/generated"
@@ -446,9 +436,9 @@ float hexc_roughness(float2 uv)
 #line 40 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1121 = hexc_roughness(param, param_1);
+    float _1074 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _1121;
+    return _1074;
 }
 
 #line 603 "hexc/hextiling.glsl"
@@ -457,32 +447,16 @@ float2 hexcNormalToDeriv(float3 vM, bool flipY)
 #line 603 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _489;
+    float _477;
     if (flipY)
     {
-        _489 = -vM.y;
+        _477 = -vM.y;
     }
     else
     {
-        _489 = vM.y;
+        _477 = vM.y;
     }
-    return (-float2(vM.x, _489)) / zMa.xx;
-}
-
-#line 675 "hexc/hextiling.glsl"
-float2 hexcPlainDeriv(Texture2D<float4> tex, SamplerState samp, float2 st, float2 dx, float2 dy, bool explicitGrad, bool flipY, out float3 weights)
-{
-#line 675 "hexc/hextiling.glsl"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    bool param_3 = explicitGrad;
-    float3 param_4;
-    float4 _537 = hexcPlainColor(tex, samp, param, param_1, param_2, param_3, param_4);
-    weights = param_4;
-    float3 param_5 = (_537.xyz * 2.0f) - 1.0f.xxx;
-    bool param_6 = flipY;
-    return hexcNormalToDeriv(param_5, param_6);
+    return (-float2(vM.x, _477)) / zMa.xx;
 }
 
 #line 42 "hexc/generated"
@@ -492,12 +466,12 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
-    bool param_3 = false;
-    bool param_4 = false;
-    float3 param_5;
-    float2 _1135 = hexcPlainDeriv(hexcTex_normal, hexcSampler, param, param_1, param_2, param_3, param_4, param_5);
-    weights = param_5;
-    return _1135;
+    float3 param_3;
+    float4 _1086 = hexcPlainColor(hexcTex_normal, hexcSampler, param, param_1, param_2, param_3);
+    weights = param_3;
+    float3 param_4 = (_1086.xyz * 2.0f) - 1.0f.xxx;
+    bool param_5 = false;
+    return hexcNormalToDeriv(param_4, param_5);
 }
 
 #line 46 "hexc/generated"
@@ -510,9 +484,9 @@ float2 hexc_normal(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float2 _1154 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    float2 _1112 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1154;
+    return _1112;
 }
 
 #line 49 "hexc/generated"
@@ -521,15 +495,15 @@ float2 hexc_normal(float2 uv)
 #line 49 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1162 = hexc_normal(param, param_1);
+    float2 _1120 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _1162;
+    return _1120;
 }
 
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

@@ -135,36 +135,36 @@ int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 #line 99 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _331;
+    int _319;
     if ((d < 0) && (a != 0))
     {
-        _331 = 3 - a;
+        _319 = 3 - a;
     }
     else
     {
-        _331 = a;
+        _319 = a;
     }
-    int i1 = _331;
-    int _342;
+    int i1 = _319;
+    int _330;
     if (i1 < 2)
     {
-        _342 = i1 + 1;
+        _330 = i1 + 1;
     }
     else
     {
-        _342 = 0;
+        _330 = 0;
     }
-    int vh = _342;
-    int _352;
+    int vh = _330;
+    int _340;
     if (i1 > 0)
     {
-        _352 = i1 - 1;
+        _340 = i1 - 1;
     }
     else
     {
-        _352 = 2;
+        _340 = 2;
     }
-    int vl = _352;
+    int vl = _340;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -287,16 +287,16 @@ float hexcMxGain(thread const float& x, thread const float& r)
 #line 51 "hexc/materialx.glsl"
     float rr = fast::clamp(r, 0.001000000047497451305389404296875, 0.999000012874603271484375);
     float a = ((1.0 / rr) - 2.0) * (1.0 - (2.0 * x));
-    float _770;
+    float _724;
     if (x < 0.5)
     {
-        _770 = x / (a + 1.0);
+        _724 = x / (a + 1.0);
     }
     else
     {
-        _770 = (a - x) / (a - 1.0);
+        _724 = (a - x) / (a - 1.0);
     }
-    return _770;
+    return _724;
 }
 
 #line 60 "hexc/materialx.glsl"
@@ -306,20 +306,20 @@ float3 hexcMxWeights(thread const float3& luma, thread const float3& w, thread c
 #line 60 "hexc/materialx.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _792 = hexcPowInt(param, param_1);
-    float3 w7 = _792;
+    float3 _746 = hexcPowInt(param, param_1);
+    float3 w7 = _746;
     float3 W = luma * w7;
     float sum = (W.x + W.y) + W.z;
-    float3 _808;
+    float3 _762;
     if (sum > 0.0)
     {
-        _808 = W / float3(sum);
+        _762 = W / float3(sum);
     }
     else
     {
-        _808 = w7 / float3((w7.x + w7.y) + w7.z);
+        _762 = w7 / float3((w7.x + w7.y) + w7.z);
     }
-    W = _808;
+    W = _762;
     if (falloff != 0.5)
     {
         float param_2 = W.x;
@@ -371,17 +371,17 @@ float4 hexcMxColor_albedo(texture2d<float> tex, sampler samp, thread const HexcT
     int3 param_7 = t.channel;
     weights = hexcShowWeights(param_6, param_7);
     float3 rgb = ((c1.xyz * W.x) + (c2.xyz * W.y)) + (c3.xyz * W.z);
-    float3 _997;
+    float3 _951;
     if (srgb)
     {
         float3 param_8 = rgb;
-        _997 = hexcMxDecode(param_8);
+        _951 = hexcMxDecode(param_8);
     }
     else
     {
-        _997 = rgb;
+        _951 = rgb;
     }
-    return float4(_997, ((A.x * c1.w) + (A.y * c2.w)) + (A.z * c3.w));
+    return float4(_951, ((A.x * c1.w) + (A.y * c2.w)) + (A.z * c3.w));
 }
 
 #line 24 "hexc/generated"
@@ -396,9 +396,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     float3 param_4 = float3(0.2722286880016326904296875, 0.6740818023681640625, 0.0536894984543323516845703125);
     bool param_5 = true;
     float3 param_6;
-    float4 _1047 = hexcMxColor_albedo(hexcTex_albedo, hexcSampler, param_3, param_4, param_5, param_6, hexcParams);
+    float4 _1001 = hexcMxColor_albedo(hexcTex_albedo, hexcSampler, param_3, param_4, param_5, param_6, hexcParams);
     weights = param_6;
-    return _1047;
+    return _1001;
 }
 
 #line 28 "hexc/generated"
@@ -412,9 +412,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _1068 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1022 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _1068;
+    return _1022;
 }
 
 #line 31 "hexc/generated"
@@ -424,45 +424,36 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 31 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1076 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1030 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _1076;
+    return _1030;
 }
 
-#line 670 "hexc/hextiling.glsl"
+#line 672 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-float4 hexcPlainColor(texture2d<float> tex, sampler samp, thread const float2& st, thread const float2& dx, thread const float2& dy, thread const bool& explicitGrad, thread float3& weights)
+float4 hexcPlainColor(texture2d<float> tex, sampler samp, thread const float2& st, thread const float2& dx, thread const float2& dy, thread float3& weights)
 {
-#line 670 "hexc/hextiling.glsl"
+#line 672 "hexc/hextiling.glsl"
     weights = float3(1.0, 0.0, 0.0);
-    float4 _508;
-    if (explicitGrad)
-    {
-        _508 = tex.sample(samp, st, gradient2d(dx, dy));
-    }
-    else
-    {
-        _508 = tex.sample(samp, st);
-    }
-    return _508;
+    return tex.sample(samp, st);
 }
 
 #line 77 "hexc/materialx.glsl"
 static inline __attribute__((always_inline))
 float4 hexcMxDecoded(thread const float4& c, thread const bool& srgb)
 {
-    float4 _888;
+    float4 _842;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _888 = float4(hexcMxDecode(param), c.w);
+        _842 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _888 = c;
+        _842 = c;
     }
-    return _888;
+    return _842;
 }
 
 #line 33 "hexc/generated"
@@ -473,13 +464,12 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
-    bool param_3 = false;
-    float3 param_4;
-    float4 _1090 = hexcPlainColor(hexcTex_roughness, hexcSampler, param, param_1, param_2, param_3, param_4);
-    weights = param_4;
-    float4 param_5 = _1090;
-    bool param_6 = false;
-    return hexcMxDecoded(param_5, param_6).x;
+    float3 param_3;
+    float4 _1042 = hexcPlainColor(hexcTex_roughness, hexcSampler, param, param_1, param_2, param_3);
+    weights = param_3;
+    float4 param_4 = _1042;
+    bool param_5 = false;
+    return hexcMxDecoded(param_4, param_5).x;
 }
 
 #line 37 "hexc/generated"
@@ -493,9 +483,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, constant H
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _1113 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_roughness);
+    float _1066 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _1113;
+    return _1066;
 }
 
 #line 40 "hexc/generated"
@@ -505,9 +495,9 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
 #line 40 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1121 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1074 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _1121;
+    return _1074;
 }
 
 #line 603 "hexc/hextiling.glsl"
@@ -517,33 +507,16 @@ float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 #line 603 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _489;
+    float _477;
     if (flipY)
     {
-        _489 = -vM.y;
+        _477 = -vM.y;
     }
     else
     {
-        _489 = vM.y;
+        _477 = vM.y;
     }
-    return (-float2(vM.x, _489)) / float2(zMa);
-}
-
-#line 675 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-float2 hexcPlainDeriv(texture2d<float> tex, sampler samp, thread const float2& st, thread const float2& dx, thread const float2& dy, thread const bool& explicitGrad, thread const bool& flipY, thread float3& weights)
-{
-#line 675 "hexc/hextiling.glsl"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    bool param_3 = explicitGrad;
-    float3 param_4;
-    float4 _537 = hexcPlainColor(tex, samp, param, param_1, param_2, param_3, param_4);
-    weights = param_4;
-    float3 param_5 = (_537.xyz * 2.0) - float3(1.0);
-    bool param_6 = flipY;
-    return hexcNormalToDeriv(param_5, param_6);
+    return (-float2(vM.x, _477)) / float2(zMa);
 }
 
 #line 42 "hexc/generated"
@@ -554,12 +527,12 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
-    bool param_3 = false;
-    bool param_4 = false;
-    float3 param_5;
-    float2 _1135 = hexcPlainDeriv(hexcTex_normal, hexcSampler, param, param_1, param_2, param_3, param_4, param_5);
-    weights = param_5;
-    return _1135;
+    float3 param_3;
+    float4 _1086 = hexcPlainColor(hexcTex_normal, hexcSampler, param, param_1, param_2, param_3);
+    weights = param_3;
+    float3 param_4 = (_1086.xyz * 2.0) - float3(1.0);
+    bool param_5 = false;
+    return hexcNormalToDeriv(param_4, param_5);
 }
 
 #line 46 "hexc/generated"
@@ -573,9 +546,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _1154 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_normal);
+    float2 _1112 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _1154;
+    return _1112;
 }
 
 #line 49 "hexc/generated"
@@ -585,16 +558,16 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
 #line 49 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1162 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1120 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _1162;
+    return _1120;
 }
 
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

@@ -806,11 +806,11 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
     return _1536;
 }
 
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 680 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

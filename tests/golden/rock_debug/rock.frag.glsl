@@ -41,10 +41,10 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec4 v_tangent;
 layout(location = 0) out vec4 o_color;
 
-#line 45 "hexc/hextiling.glsl"
+#line 55 "hexc/hextiling.glsl"
 void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
 {
-#line 45 "hexc/hextiling.glsl"
+#line 55 "hexc/hextiling.glsl"
     ivec2 baseId = ivec2(floor(skewed));
     vec3 temp = vec3(skewed - floor(skewed), 0.0);
     temp.z = (1.0 - temp.x) - temp.y;
@@ -57,24 +57,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 219 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 219 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 226 "hexc/hextiling.glsl"
+#line 236 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 226 "hexc/hextiling.glsl"
+#line 236 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 188 "hexc/hextiling.glsl"
+#line 198 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 188 "hexc/hextiling.glsl"
+#line 198 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -86,10 +86,10 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 202 "hexc/hextiling.glsl"
+#line 212 "hexc/hextiling.glsl"
 void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
 {
-#line 202 "hexc/hextiling.glsl"
+#line 212 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
     uvec3 _589 = hexcPcg3d(param);
     vec3 u = vec3(_589 >> uvec3(8u)) * 5.9604644775390625e-08;
@@ -99,27 +99,27 @@ void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float in
     rot = vec2(cos(angle), sin(angle));
 }
 
-#line 111 "hexc/hextiling.glsl"
+#line 121 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 111 "hexc/hextiling.glsl"
+#line 121 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 234 "hexc/hextiling.glsl"
+#line 244 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 234 "hexc/hextiling.glsl"
+#line 244 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 249 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
 HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
 {
-#line 249 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
     ivec2 param = id;
     vec2 param_1;
     vec2 param_2;
@@ -144,10 +144,10 @@ HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
     return p;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 269 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 269 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -159,10 +159,10 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
 }
 
-#line 89 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 89 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
     int _374;
@@ -198,10 +198,10 @@ ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 268 "hexc/hextiling.glsl"
+#line 278 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 268 "hexc/hextiling.glsl"
+#line 278 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -250,32 +250,32 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     return t;
 }
 
-#line 524 "hexc/hextiling.glsl"
+#line 534 "hexc/hextiling.glsl"
 bvec3 hexcFetched_albedo(vec3 w)
 {
-#line 524 "hexc/hextiling.glsl"
+#line 534 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 505 "hexc/hextiling.glsl"
+#line 515 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t)
 {
-#line 505 "hexc/hextiling.glsl"
+#line 515 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 518 "hexc/hextiling.glsl"
+#line 528 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 518 "hexc/hextiling.glsl"
+#line 528 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 532 "hexc/hextiling.glsl"
+#line 542 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 532 "hexc/hextiling.glsl"
+#line 542 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -290,17 +290,17 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 vec3 hexcMetric_albedo(vec3 Dw)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 359 "hexc/hextiling.glsl"
+#line 369 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 359 "hexc/hextiling.glsl"
+#line 369 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -329,10 +329,10 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 375 "hexc/hextiling.glsl"
+#line 385 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 375 "hexc/hextiling.glsl"
+#line 385 "hexc/hextiling.glsl"
     float _925;
     if (kInt > 0)
     {
@@ -345,10 +345,10 @@ float hexcGainK(float r, int kInt)
     return _925;
 }
 
-#line 379 "hexc/hextiling.glsl"
+#line 389 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 379 "hexc/hextiling.glsl"
+#line 389 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
     vec3 m = (vec3(1.0) - s) * 2.0;
     vec3 base = max(vec3(0.0), s + (x * m));
@@ -369,10 +369,10 @@ vec3 hexcGainCurve(vec3 x, float r, int kInt)
     return (s * 0.5) + ((m * 0.25) * _962);
 }
 
-#line 387 "hexc/hextiling.glsl"
+#line 397 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 387 "hexc/hextiling.glsl"
+#line 397 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -380,10 +380,10 @@ vec3 hexcGain3(vec3 x, float r, int kInt)
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
     vec3 _1034 = hexcPowInt(param, param_1);
@@ -407,17 +407,17 @@ vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
     return W;
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 109 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 109 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
 vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -478,10 +478,10 @@ vec4 hexc_albedo(vec2 uv)
     return _1534;
 }
 
-#line 106 "hexc/hextiling.glsl"
+#line 116 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 106 "hexc/hextiling.glsl"
+#line 116 "hexc/hextiling.glsl"
     vec4 _455;
     if (c == 0)
     {
@@ -503,17 +503,17 @@ vec4 hexcChannel(int c)
     return _455;
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 vec3 hexcMetric_roughness(vec3 Dw)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
 vec4 hexcColor_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -575,10 +575,10 @@ float hexc_roughness(vec2 uv)
     return _1625;
 }
 
-#line 593 "hexc/hextiling.glsl"
+#line 603 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 593 "hexc/hextiling.glsl"
+#line 603 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
     float _1319;
@@ -593,19 +593,19 @@ vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
     return (-vec2(vM.x, _1319)) / vec2(zMa);
 }
 
-#line 119 "hexc/hextiling.glsl"
+#line 129 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 119 "hexc/hextiling.glsl"
+#line 129 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 601 "hexc/hextiling.glsl"
+#line 611 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 601 "hexc/hextiling.glsl"
+#line 611 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
@@ -623,17 +623,17 @@ vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
     return _1352;
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 vec3 hexcMetric_normal(vec3 Dw)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.normal_falloffcontrast));
 }
 
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_normal(vec3 w, vec3 M)
 {
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
     vec3 _1082 = hexcPowInt(param, param_1);
@@ -653,10 +653,10 @@ vec3 hexcBlendWeights_normal(vec3 w, vec3 M)
     return W;
 }
 
-#line 609 "hexc/hextiling.glsl"
+#line 619 "hexc/hextiling.glsl"
 vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 609 "hexc/hextiling.glsl"
+#line 619 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -738,10 +738,10 @@ vec2 hexc_normal(vec2 uv)
     return _1578;
 }
 
-#line 673 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 673 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

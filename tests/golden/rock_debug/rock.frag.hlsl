@@ -53,10 +53,10 @@ struct SPIRV_Cross_Output
     float4 o_color : SV_Target0;
 };
 
-#line 45 "hexc/hextiling.glsl"
+#line 55 "hexc/hextiling.glsl"
 void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
 {
-#line 45 "hexc/hextiling.glsl"
+#line 55 "hexc/hextiling.glsl"
     int2 baseId = int2(floor(skewed));
     float3 temp = float3(skewed - floor(skewed), 0.0f);
     temp.z = (1.0f - temp.x) - temp.y;
@@ -69,24 +69,24 @@ void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 219 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 219 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 226 "hexc/hextiling.glsl"
+#line 236 "hexc/hextiling.glsl"
 float2 hexcStableCentreInPeriod(int2 local)
 {
-#line 226 "hexc/hextiling.glsl"
+#line 236 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
 }
 
-#line 188 "hexc/hextiling.glsl"
+#line 198 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 188 "hexc/hextiling.glsl"
+#line 198 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -98,10 +98,10 @@ uint3 hexcPcg3d(inout uint3 v)
     return v;
 }
 
-#line 202 "hexc/hextiling.glsl"
+#line 212 "hexc/hextiling.glsl"
 void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float invScale)
 {
-#line 202 "hexc/hextiling.glsl"
+#line 212 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
     uint3 _589 = hexcPcg3d(param);
     float3 u = float3(_589 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
@@ -111,27 +111,27 @@ void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float
     rot = float2(cos(angle), sin(angle));
 }
 
-#line 111 "hexc/hextiling.glsl"
+#line 121 "hexc/hextiling.glsl"
 float2 hexcRotateToTile(float2 v, float2 cs)
 {
-#line 111 "hexc/hextiling.glsl"
+#line 121 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 234 "hexc/hextiling.glsl"
+#line 244 "hexc/hextiling.glsl"
 float2 hexcToTile_albedo(inout float2 v, HexcTap p)
 {
-#line 234 "hexc/hextiling.glsl"
+#line 244 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 249 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
 HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
 {
-#line 249 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
     int2 param = id;
     float2 param_1;
     float2 param_2;
@@ -156,10 +156,10 @@ HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 d
     return p;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 269 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 269 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -171,10 +171,10 @@ HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, fl
     return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
 }
 
-#line 89 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 89 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
     int _374;
@@ -210,10 +210,10 @@ int3 hexcHexChannels(int2 v1, int2 v3)
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 268 "hexc/hextiling.glsl"
+#line 278 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 268 "hexc/hextiling.glsl"
+#line 278 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -262,32 +262,32 @@ HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cel
     return t;
 }
 
-#line 524 "hexc/hextiling.glsl"
+#line 534 "hexc/hextiling.glsl"
 bool3 hexcFetched_albedo(float3 w)
 {
-#line 524 "hexc/hextiling.glsl"
+#line 534 "hexc/hextiling.glsl"
     return bool3(true, true, true);
 }
 
-#line 505 "hexc/hextiling.glsl"
+#line 515 "hexc/hextiling.glsl"
 float3 hexcTileLods_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t)
 {
-#line 505 "hexc/hextiling.glsl"
+#line 515 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
     return lods;
 }
 
-#line 518 "hexc/hextiling.glsl"
+#line 528 "hexc/hextiling.glsl"
 float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod)
 {
-#line 518 "hexc/hextiling.glsl"
+#line 528 "hexc/hextiling.glsl"
     return tex.SampleGrad(samp, p.st, p.dx, p.dy);
 }
 
-#line 532 "hexc/hextiling.glsl"
+#line 542 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 532 "hexc/hextiling.glsl"
+#line 542 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
     c = _1147;
@@ -302,17 +302,17 @@ void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 float3 hexcMetric_albedo(float3 Dw)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_albedo_falloffcontrast.xxx);
 }
 
-#line 359 "hexc/hextiling.glsl"
+#line 369 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 359 "hexc/hextiling.glsl"
+#line 369 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -341,10 +341,10 @@ float3 hexcPowInt(inout float3 x, int n)
     return r;
 }
 
-#line 375 "hexc/hextiling.glsl"
+#line 385 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 375 "hexc/hextiling.glsl"
+#line 385 "hexc/hextiling.glsl"
     float _925;
     if (kInt > 0)
     {
@@ -357,10 +357,10 @@ float hexcGainK(float r, int kInt)
     return _925;
 }
 
-#line 379 "hexc/hextiling.glsl"
+#line 389 "hexc/hextiling.glsl"
 float3 hexcGainCurve(float3 x, float r, int kInt)
 {
-#line 379 "hexc/hextiling.glsl"
+#line 389 "hexc/hextiling.glsl"
     float3 s = step(0.5f.xxx, x) * 2.0f;
     float3 m = (1.0f.xxx - s) * 2.0f;
     float3 base = max(0.0f.xxx, s + (x * m));
@@ -381,10 +381,10 @@ float3 hexcGainCurve(float3 x, float r, int kInt)
     return (s * 0.5f) + ((m * 0.25f) * _962);
 }
 
-#line 387 "hexc/hextiling.glsl"
+#line 397 "hexc/hextiling.glsl"
 float3 hexcGain3(float3 x, float r, int kInt)
 {
-#line 387 "hexc/hextiling.glsl"
+#line 397 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -392,10 +392,10 @@ float3 hexcGain3(float3 x, float r, int kInt)
     return res / ((res.x + res.y) + res.z).xxx;
 }
 
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_albedo(float3 w, float3 M)
 {
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
     float3 _1034 = hexcPowInt(param, param_1);
@@ -419,20 +419,20 @@ float3 hexcBlendWeights_albedo(float3 w, float3 M)
     return W;
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 109 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 109 "hexc/hextiling.glsl"
     int3 _427 = channel.x.xxx;
     int3 _437 = channel.y.xxx;
     int3 _446 = channel.z.xxx;
     return ((float3(bool3(int3(0, 1, 2).x == _427.x, int3(0, 1, 2).y == _427.y, int3(0, 1, 2).z == _427.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _437.x, int3(0, 1, 2).y == _437.y, int3(0, 1, 2).z == _437.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _446.x, int3(0, 1, 2).y == _446.y, int3(0, 1, 2).z == _446.z)) * W.z);
 }
 
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
 float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -493,10 +493,10 @@ float4 hexc_albedo(float2 uv)
     return _1534;
 }
 
-#line 106 "hexc/hextiling.glsl"
+#line 116 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
-#line 106 "hexc/hextiling.glsl"
+#line 116 "hexc/hextiling.glsl"
     float4 _455;
     if (c == 0)
     {
@@ -519,17 +519,17 @@ float4 hexcChannel(int c)
     return _455;
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 float3 hexcMetric_roughness(float3 Dw)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_roughness_falloffcontrast.xxx);
 }
 
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
 float4 hexcColor_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -591,10 +591,10 @@ float hexc_roughness(float2 uv)
     return _1625;
 }
 
-#line 593 "hexc/hextiling.glsl"
+#line 603 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 593 "hexc/hextiling.glsl"
+#line 603 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
     float _1319;
@@ -609,19 +609,19 @@ float2 hexcNormalToDeriv(float3 vM, bool flipY)
     return (-float2(vM.x, _1319)) / zMa.xx;
 }
 
-#line 119 "hexc/hextiling.glsl"
+#line 129 "hexc/hextiling.glsl"
 float2 hexcRotateFromTile(float2 d, float2 cs)
 {
-#line 119 "hexc/hextiling.glsl"
+#line 129 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 601 "hexc/hextiling.glsl"
+#line 611 "hexc/hextiling.glsl"
 float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 601 "hexc/hextiling.glsl"
+#line 611 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0f) - 1.0f.xxx;
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
@@ -639,17 +639,17 @@ float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
     return _1352;
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 float3 hexcMetric_normal(float3 Dw)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_normal_falloffcontrast.xxx);
 }
 
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_normal(float3 w, float3 M)
 {
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
     float3 _1082 = hexcPowInt(param, param_1);
@@ -669,10 +669,10 @@ float3 hexcBlendWeights_normal(float3 w, float3 M)
     return W;
 }
 
-#line 609 "hexc/hextiling.glsl"
+#line 619 "hexc/hextiling.glsl"
 float2 hexcDeriv_normal(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool flipY, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 609 "hexc/hextiling.glsl"
+#line 619 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -754,10 +754,10 @@ float2 hexc_normal(float2 uv)
     return _1578;
 }
 
-#line 673 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 673 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

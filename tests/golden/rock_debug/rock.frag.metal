@@ -89,11 +89,11 @@ struct rock_frag_in
     float4 v_tangent [[user(locn2)]];
 };
 
-#line 45 "hexc/hextiling.glsl"
+#line 55 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsafeArray<int2, 3>& id)
 {
-#line 45 "hexc/hextiling.glsl"
+#line 55 "hexc/hextiling.glsl"
     int2 baseId = int2(floor(skewed));
     float3 temp = float3(skewed - floor(skewed), 0.0);
     temp.z = (1.0 - temp.x) - temp.y;
@@ -106,27 +106,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 219 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 219 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 226 "hexc/hextiling.glsl"
+#line 236 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 226 "hexc/hextiling.glsl"
+#line 236 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 188 "hexc/hextiling.glsl"
+#line 198 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 188 "hexc/hextiling.glsl"
+#line 198 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -138,11 +138,11 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 202 "hexc/hextiling.glsl"
+#line 212 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcStableTile_albedo(thread const int2& id, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
 {
-#line 202 "hexc/hextiling.glsl"
+#line 212 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
     uint3 _589 = hexcPcg3d(param);
     float3 u = float3(_589 >> uint3(8u)) * 5.9604644775390625e-08;
@@ -152,30 +152,30 @@ void hexcStableTile_albedo(thread const int2& id, thread float2& offset, thread 
     rot = float2(cos(angle), sin(angle));
 }
 
-#line 111 "hexc/hextiling.glsl"
+#line 121 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 111 "hexc/hextiling.glsl"
+#line 121 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 234 "hexc/hextiling.glsl"
+#line 244 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile_albedo(thread float2& v, thread const HexcTap& p)
 {
-#line 234 "hexc/hextiling.glsl"
+#line 244 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 249 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, constant HexcParams& hexcParams)
 {
-#line 249 "hexc/hextiling.glsl"
+#line 259 "hexc/hextiling.glsl"
     int2 param = id;
     float2 param_1;
     float2 param_2;
@@ -200,11 +200,11 @@ HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thre
     return p;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 269 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 269 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -216,11 +216,11 @@ HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift
     return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, hexcParams);
 }
 
-#line 89 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 89 "hexc/hextiling.glsl"
+#line 99 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
     int _374;
@@ -256,11 +256,11 @@ int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 268 "hexc/hextiling.glsl"
+#line 278 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
 {
-#line 268 "hexc/hextiling.glsl"
+#line 278 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -310,36 +310,36 @@ HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& d
     return t;
 }
 
-#line 524 "hexc/hextiling.glsl"
+#line 534 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_albedo(thread const float3& w)
 {
-#line 524 "hexc/hextiling.glsl"
+#line 534 "hexc/hextiling.glsl"
     return bool3(true);
 }
 
-#line 505 "hexc/hextiling.glsl"
+#line 515 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
 {
-#line 505 "hexc/hextiling.glsl"
+#line 515 "hexc/hextiling.glsl"
     float3 lods = float3(0.0);
     return lods;
 }
 
-#line 518 "hexc/hextiling.glsl"
+#line 528 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
-#line 518 "hexc/hextiling.glsl"
+#line 528 "hexc/hextiling.glsl"
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 532 "hexc/hextiling.glsl"
+#line 542 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 532 "hexc/hextiling.glsl"
+#line 542 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
     c = _1147;
@@ -354,19 +354,19 @@ void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcT
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_albedo(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 359 "hexc/hextiling.glsl"
+#line 369 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 359 "hexc/hextiling.glsl"
+#line 369 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -395,11 +395,11 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 375 "hexc/hextiling.glsl"
+#line 385 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcGainK(thread const float& r, thread const int& kInt)
 {
-#line 375 "hexc/hextiling.glsl"
+#line 385 "hexc/hextiling.glsl"
     float _925;
     if (kInt > 0)
     {
@@ -412,11 +412,11 @@ float hexcGainK(thread const float& r, thread const int& kInt)
     return _925;
 }
 
-#line 379 "hexc/hextiling.glsl"
+#line 389 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 379 "hexc/hextiling.glsl"
+#line 389 "hexc/hextiling.glsl"
     float3 s = step(float3(0.5), x) * 2.0;
     float3 m = (float3(1.0) - s) * 2.0;
     float3 base = fast::max(float3(0.0), s + (x * m));
@@ -437,11 +437,11 @@ float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const
     return (s * 0.5) + ((m * 0.25) * _962);
 }
 
-#line 387 "hexc/hextiling.glsl"
+#line 397 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGain3(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 387 "hexc/hextiling.glsl"
+#line 397 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -449,11 +449,11 @@ float3 hexcGain3(thread const float3& x, thread const float& r, thread const int
     return res / float3((res.x + res.y) + res.z);
 }
 
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
 {
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
     float3 _1034 = hexcPowInt(param, param_1);
@@ -477,19 +477,19 @@ float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
     return W;
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 109 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 109 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -554,11 +554,11 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
     return _1534;
 }
 
-#line 106 "hexc/hextiling.glsl"
+#line 116 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
-#line 106 "hexc/hextiling.glsl"
+#line 116 "hexc/hextiling.glsl"
     float4 _455;
     if (c == 0)
     {
@@ -580,19 +580,19 @@ float4 hexcChannel(thread const int& c)
     return _455;
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_roughness(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_roughness(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 549 "hexc/hextiling.glsl"
+#line 559 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -658,11 +658,11 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
     return _1625;
 }
 
-#line 593 "hexc/hextiling.glsl"
+#line 603 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 593 "hexc/hextiling.glsl"
+#line 603 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
     float _1319;
@@ -677,21 +677,21 @@ float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
     return (-float2(vM.x, _1319)) / float2(zMa);
 }
 
-#line 119 "hexc/hextiling.glsl"
+#line 129 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
 {
-#line 119 "hexc/hextiling.glsl"
+#line 129 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 601 "hexc/hextiling.glsl"
+#line 611 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 601 "hexc/hextiling.glsl"
+#line 611 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
@@ -709,19 +709,19 @@ float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread 
     return _1352;
 }
 
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_normal(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 419 "hexc/hextiling.glsl"
+#line 429 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.normal_falloffcontrast));
 }
 
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_normal(thread const float3& w, thread const float3& M)
 {
-#line 426 "hexc/hextiling.glsl"
+#line 436 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
     float3 _1082 = hexcPowInt(param, param_1);
@@ -741,11 +741,11 @@ float3 hexcBlendWeights_normal(thread const float3& w, thread const float3& M)
     return W;
 }
 
-#line 609 "hexc/hextiling.glsl"
+#line 619 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 609 "hexc/hextiling.glsl"
+#line 619 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -830,11 +830,11 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
     return _1578;
 }
 
-#line 673 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 673 "hexc/hextiling.glsl"
+#line 683 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

@@ -53,10 +53,10 @@ layout(location = 3) in vec3 v_position;
 layout(location = 1) in vec3 v_normal;
 layout(location = 0) out vec4 o_color;
 
-#line 693 "hexc/hextiling.glsl"
+#line 696 "hexc/hextiling.glsl"
 HexcPlanes hexcPlanes(vec3 position, vec3 normal, float sharpness, vec2 tiling)
 {
-#line 693 "hexc/hextiling.glsl"
+#line 696 "hexc/hextiling.glsl"
     vec3 dPdx = dFdx(position);
     vec3 dPdy = dFdy(position);
     float len = length(normal);
@@ -506,17 +506,17 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     return _1990;
 }
 
-#line 707 "hexc/hextiling.glsl"
+#line 710 "hexc/hextiling.glsl"
 vec4 hexcLift(int k, vec4 v)
 {
-#line 707 "hexc/hextiling.glsl"
+#line 710 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 715 "hexc/hextiling.glsl"
+#line 718 "hexc/hextiling.glsl"
 vec4 hexcFinish(vec4 v, vec3 n)
 {
-#line 715 "hexc/hextiling.glsl"
+#line 718 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -773,17 +773,17 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     return _2284.x;
 }
 
-#line 708 "hexc/hextiling.glsl"
+#line 711 "hexc/hextiling.glsl"
 float hexcLift(int k, float v)
 {
-#line 708 "hexc/hextiling.glsl"
+#line 711 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 716 "hexc/hextiling.glsl"
+#line 719 "hexc/hextiling.glsl"
 float hexcFinish(float v, vec3 n)
 {
-#line 716 "hexc/hextiling.glsl"
+#line 719 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -995,10 +995,10 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     return _2137;
 }
 
-#line 710 "hexc/hextiling.glsl"
+#line 713 "hexc/hextiling.glsl"
 vec3 hexcLift(int k, vec2 d)
 {
-#line 710 "hexc/hextiling.glsl"
+#line 713 "hexc/hextiling.glsl"
     vec3 _1917;
     if (k == 0)
     {
@@ -1020,10 +1020,10 @@ vec3 hexcLift(int k, vec2 d)
     return _1917;
 }
 
-#line 717 "hexc/hextiling.glsl"
+#line 720 "hexc/hextiling.glsl"
 vec3 hexcFinish(vec3 g, vec3 n)
 {
-#line 717 "hexc/hextiling.glsl"
+#line 720 "hexc/hextiling.glsl"
     return g - (n * dot(g, n));
 }
 
@@ -1098,10 +1098,10 @@ vec3 hexc_normal(vec3 position, vec3 normal)
     return _2265;
 }
 
-#line 721 "hexc/hextiling.glsl"
+#line 724 "hexc/hextiling.glsl"
 vec3 hexcPerturbNormal(vec3 normal, vec3 surfaceGradient)
 {
-#line 721 "hexc/hextiling.glsl"
+#line 724 "hexc/hextiling.glsl"
     return normalize(normalize(normal) - surfaceGradient);
 }
 

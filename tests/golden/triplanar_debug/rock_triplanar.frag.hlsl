@@ -64,10 +64,10 @@ struct SPIRV_Cross_Output
     float4 o_color : SV_Target0;
 };
 
-#line 693 "hexc/hextiling.glsl"
+#line 696 "hexc/hextiling.glsl"
 HexcPlanes hexcPlanes(float3 position, float3 normal, float sharpness, float2 tiling)
 {
-#line 693 "hexc/hextiling.glsl"
+#line 696 "hexc/hextiling.glsl"
     float3 dPdx = ddx(position);
     float3 dPdy = ddy(position);
     float len = length(normal);
@@ -520,17 +520,17 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     return _1990;
 }
 
-#line 707 "hexc/hextiling.glsl"
+#line 710 "hexc/hextiling.glsl"
 float4 hexcLift(int k, float4 v)
 {
-#line 707 "hexc/hextiling.glsl"
+#line 710 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 715 "hexc/hextiling.glsl"
+#line 718 "hexc/hextiling.glsl"
 float4 hexcFinish(float4 v, float3 n)
 {
-#line 715 "hexc/hextiling.glsl"
+#line 718 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -788,17 +788,17 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     return _2284.x;
 }
 
-#line 708 "hexc/hextiling.glsl"
+#line 711 "hexc/hextiling.glsl"
 float hexcLift(int k, float v)
 {
-#line 708 "hexc/hextiling.glsl"
+#line 711 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 716 "hexc/hextiling.glsl"
+#line 719 "hexc/hextiling.glsl"
 float hexcFinish(float v, float3 n)
 {
-#line 716 "hexc/hextiling.glsl"
+#line 719 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -1010,10 +1010,10 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     return _2137;
 }
 
-#line 710 "hexc/hextiling.glsl"
+#line 713 "hexc/hextiling.glsl"
 float3 hexcLift(int k, float2 d)
 {
-#line 710 "hexc/hextiling.glsl"
+#line 713 "hexc/hextiling.glsl"
     float3 _1917;
     if (k == 0)
     {
@@ -1035,10 +1035,10 @@ float3 hexcLift(int k, float2 d)
     return _1917;
 }
 
-#line 717 "hexc/hextiling.glsl"
+#line 720 "hexc/hextiling.glsl"
 float3 hexcFinish(float3 g, float3 n)
 {
-#line 717 "hexc/hextiling.glsl"
+#line 720 "hexc/hextiling.glsl"
     return g - (n * dot(g, n));
 }
 
@@ -1113,10 +1113,10 @@ float3 hexc_normal(float3 position, float3 normal)
     return _2265;
 }
 
-#line 721 "hexc/hextiling.glsl"
+#line 724 "hexc/hextiling.glsl"
 float3 hexcPerturbNormal(float3 normal, float3 surfaceGradient)
 {
-#line 721 "hexc/hextiling.glsl"
+#line 724 "hexc/hextiling.glsl"
     return normalize(normalize(normal) - surfaceGradient);
 }
 

@@ -101,11 +101,11 @@ struct rock_triplanar_frag_in
     float3 v_position [[user(locn3)]];
 };
 
-#line 693 "hexc/hextiling.glsl"
+#line 696 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcPlanes hexcPlanes(thread const float3& position, thread const float3& normal, thread const float& sharpness, thread const float2& tiling)
 {
-#line 693 "hexc/hextiling.glsl"
+#line 696 "hexc/hextiling.glsl"
     float3 dPdx = dfdx(position);
     float3 dPdy = dfdy(position);
     float len = length(normal);
@@ -581,19 +581,19 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     return _1990;
 }
 
-#line 707 "hexc/hextiling.glsl"
+#line 710 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcLift(thread const int& k, thread const float4& v)
 {
-#line 707 "hexc/hextiling.glsl"
+#line 710 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 715 "hexc/hextiling.glsl"
+#line 718 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFinish(thread const float4& v, thread const float3& n)
 {
-#line 715 "hexc/hextiling.glsl"
+#line 718 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -863,19 +863,19 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     return _2284.x;
 }
 
-#line 708 "hexc/hextiling.glsl"
+#line 711 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcLift(thread const int& k, thread const float& v)
 {
-#line 708 "hexc/hextiling.glsl"
+#line 711 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 716 "hexc/hextiling.glsl"
+#line 719 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcFinish(thread const float& v, thread const float3& n)
 {
-#line 716 "hexc/hextiling.glsl"
+#line 719 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -1096,11 +1096,11 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     return _2137;
 }
 
-#line 710 "hexc/hextiling.glsl"
+#line 713 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcLift(thread const int& k, thread const float2& d)
 {
-#line 710 "hexc/hextiling.glsl"
+#line 713 "hexc/hextiling.glsl"
     float3 _1917;
     if (k == 0)
     {
@@ -1122,11 +1122,11 @@ float3 hexcLift(thread const int& k, thread const float2& d)
     return _1917;
 }
 
-#line 717 "hexc/hextiling.glsl"
+#line 720 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcFinish(thread const float3& g, thread const float3& n)
 {
-#line 717 "hexc/hextiling.glsl"
+#line 720 "hexc/hextiling.glsl"
     return g - (n * dot(g, n));
 }
 
@@ -1203,11 +1203,11 @@ float3 hexc_normal(thread const float3& position, thread const float3& normal, c
     return _2265;
 }
 
-#line 721 "hexc/hextiling.glsl"
+#line 724 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPerturbNormal(thread const float3& normal, thread const float3& surfaceGradient)
 {
-#line 721 "hexc/hextiling.glsl"
+#line 724 "hexc/hextiling.glsl"
     return fast::normalize(fast::normalize(normal) - surfaceGradient);
 }
 

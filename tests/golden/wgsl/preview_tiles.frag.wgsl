@@ -37,8 +37,8 @@ var<private> o_color: vec4<f32>;
 fn preview_tiles_frag_1() {
     var local: array<HexcTap, 3>;
     var local_1: array<vec2<i32>, 3>;
-    var phi_2858_: i32;
-    var phi_2877_: vec3<f32>;
+    var phi_2773_: i32;
+    var phi_2792_: vec3<f32>;
 
     let _e73 = v_uv_1;
     let _e75 = hexcParams.albedo_tiling;
@@ -57,9 +57,9 @@ fn preview_tiles_frag_1() {
     let _e101 = i32(_e93);
     let _e104 = (1i - _e101);
     local_1 = array<vec2<i32>, 3>((_e86 + vec2(_e101)), (_e86 + vec2<i32>(_e101, _e104)), (_e86 + vec2<i32>(_e104, _e101)));
-    phi_2858_ = 0i;
+    phi_2773_ = 0i;
     loop {
-        let _e111 = phi_2858_;
+        let _e111 = phi_2773_;
         if (_e111 < 3i) {
             continue;
         } else {
@@ -85,7 +85,7 @@ fn preview_tiles_frag_1() {
             let _e165 = fma(_e73, _e75, (_e163 * vec2<f32>(-0.28867513f, -0.28867513f)));
             let _e177 = hexcParams.albedo_offset;
             local[_e111] = HexcTap((fma(_e163, vec2<f32>(0.28867513f, 0.28867513f), (vec2<f32>(fma(_e145, _e165.x, -((_e146 * _e165.y))), fma(_e146, _e165.x, (_e145 * _e165.y))) * _e156)) + (_e132 * _e177)), (vec2<f32>(fma(_e145, _e77.x, -((_e146 * _e77.y))), fma(_e146, _e77.x, (_e145 * _e77.y))) * _e156), (vec2<f32>(fma(_e145, _e78.x, -((_e146 * _e78.y))), fma(_e146, _e78.x, (_e145 * _e78.y))) * _e156), vec2<f32>(_e145, _e146), _e156);
-            phi_2858_ = (_e111 + 1i);
+            phi_2773_ = (_e111 + 1i);
         }
     }
     let _e201 = local;
@@ -101,11 +101,11 @@ fn preview_tiles_frag_1() {
     let _e232 = (mix(vec3<f32>(1f, 1f, 1f), vec3<f32>(dot(_e217, vec3<f32>(0.2722287f, 0.6740818f, 0.0536895f)), dot(_e219, vec3<f32>(0.2722287f, 0.6740818f, 0.0536895f)), dot(_e221, vec3<f32>(0.2722287f, 0.6740818f, 0.0536895f))), vec3(_e225)) * _e231);
     let _e237 = ((_e232.x + _e232.y) + _e232.z);
     if (_e237 > 0f) {
-        phi_2877_ = (_e232 / vec3(_e237));
+        phi_2792_ = (_e232 / vec3(_e237));
     } else {
-        phi_2877_ = (_e231 / vec3(((_e231.x + _e231.y) + _e231.z)));
+        phi_2792_ = (_e231 / vec3(((_e231.x + _e231.y) + _e231.z)));
     }
-    let _e249 = phi_2877_;
+    let _e249 = phi_2792_;
     let _e257 = (((_e217 * _e249.x) + (_e219 * _e249.y)) + (_e221 * _e249.z));
     let _e264 = select((_e257 * vec3<f32>(0.07739938f, 0.07739938f, 0.07739938f)), pow((max((_e257 + vec3<f32>(0.055f, 0.055f, 0.055f)), vec3<f32>(0f, 0f, 0f)) * vec3<f32>(0.94786733f, 0.94786733f, 0.94786733f)), vec3<f32>(2.4f, 2.4f, 2.4f)), (_e257 > vec3<f32>(0.04045f, 0.04045f, 0.04045f)));
     let _e271 = hexcParams.roughness_tiling;
