@@ -82,7 +82,9 @@ TEST(TargetTable, EveryLayoutSectionPlacesATarget) {
 TEST(TargetTable, NamesAndAliasesFindTheirRow) {
     for (const TargetRow& row : targetRows()) {
         EXPECT_EQ(targetNamed(row.name), row.target);
-        if (*row.alias) EXPECT_EQ(targetNamed(row.alias), row.target);
+        if (*row.alias) {
+            EXPECT_EQ(targetNamed(row.alias), row.target);
+        }
         EXPECT_EQ(shaderFileName("m", row.target), std::string("m.frag.") + row.extension);
     }
     EXPECT_EQ(targetNamed("dxil"), std::nullopt);
