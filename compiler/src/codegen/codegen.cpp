@@ -32,9 +32,7 @@ public:
     // The section expanded, without its final newline.
     std::string expand(const std::string& section, const Tokens& values) const {
         static const std::map<std::string, std::string> sections = snippetSections("slots.glsl");
-        std::string text = expandTokens(sections.at(section), values, section);
-        if (text.ends_with('\n')) text.pop_back();
-        return text;
+        return expandSection(sections, section, values);
     }
 
     // How the code reads a parameter: a baked constant by its name, a block member through the block.
@@ -236,6 +234,12 @@ std::string floatLiteral(double v) {
     std::string s = buf;
     if (s.find_first_of(".e") == std::string::npos) s += ".0";
     return s;
+}
+
+std::string expandSection(const std::map<std::string, std::string>& sections, const std::string& section, const Tokens& values) {
+    std::string text = expandTokens(sections.at(section), values, section);
+    if (text.ends_with('\n')) text.pop_back();
+    return text;
 }
 
 std::string expandTokens(const std::string& text, const Tokens& values, const std::string& section) {

@@ -17,6 +17,9 @@ using Tokens = std::map<std::string, std::string>;
 // one pass (a value is never scanned again). A token without a value is a hexc bug: CompileError, naming the section.
 std::string expandTokens(const std::string& text, const Tokens& values, const std::string& section);
 
+// Snippet `section` of a library file's `sections` (snippetSections), expanded, without its final newline.
+std::string expandSection(const std::map<std::string, std::string>& sections, const std::string& section, const Tokens& values);
+
 // A GLSL float literal that reads back as the same float32.
 std::string floatLiteral(double v);
 

@@ -14,9 +14,7 @@ public:
     // The section expanded, without its final newline.
     std::string expand(const std::string& section, const Tokens& values) const {
         static const std::map<std::string, std::string> sections = snippetSections("layers.glsl");
-        std::string text = expandTokens(sections.at(section), values, section);
-        if (text.ends_with('\n')) text.pop_back();
-        return text;
+        return expandSection(sections, section, values);
     }
 
     // The slot's tiling as the code reads it (the parameter its own coordinates function reads).
