@@ -115,11 +115,13 @@ async function costLine(seq) {
 }
 
 // The last compile's answer, and its programs linked for the selected slot: selecting another links them again, with
-// no compile (templates/edit/views.glsl).
+// no compile (templates/edit/views.glsl), or nothing if they were linked before. Resolves false if a later link
+// superseded this one; the frames drawn meanwhile show the programs before.
 let compiled = null;
-function linkPrograms() {
-  renderer.setPrograms(compiled.programs, compiled.slots, state.doc.slots?.[panel.slot]?.name);
+async function linkPrograms() {
+  if (!await renderer.setPrograms(compiled.programs, compiled.slots, state.doc.slots?.[panel.slot]?.name)) return false;
   hexc.programs = Object.keys(renderer.programs);
+  return true;
 }
 
 let compileSeq = 0;
@@ -141,7 +143,7 @@ async function compile(freshTextures = false) {
       return draw();
     }
     compiled = r;
-    linkPrograms();
+    if (!await linkPrograms() || seq !== compileSeq) return;
     timing.linked = performance.now();
     const known = Object.keys(state.sizes).length;
     await loadTextures(r.programs, freshTextures);
@@ -167,15 +169,17 @@ async function compile(freshTextures = false) {
   }
 }
 
+// A slider's drag waits 120 ms for more of it (one compile for the burst); any other edit compiles at once.
 let compileTimer = null;
-function scheduleCompile() {
+function scheduleCompile(drag) {
   clearTimeout(compileTimer);
-  compileTimer = setTimeout(compile, 120);  // one compile for a burst of structural edits
+  if (drag) compileTimer = setTimeout(compile, 120);
+  else compile();
 }
 
 // A panel edit: the document changes; a setting that is a uniform in every program is set there and drawn at once,
-// anything else compiles again.
-function onEdit(pointer, value, target) {
+// anything else compiles again. `drag`: the edit is a step of a slider's drag.
+function onEdit(pointer, value, target, drag = false) {
   hexc.editAt = performance.now();
   remember(value === undefined ? null : pointer);  // a reset is a step of its own
   setPointer(state.doc, pointer, value);
@@ -190,14 +194,14 @@ function onEdit(pointer, value, target) {
     hexc.liveEdits++;
     draw();
   } else {
-    scheduleCompile();
+    scheduleCompile(drag);
   }
   if (value === undefined) panel.render(state.doc);  // a reset shows the default again
 }
 
 // Another slot selected: its views linked again (nothing compiled) and drawn, the distance in its repeats.
 function selectSlot() {
-  if (compiled) linkPrograms();
+  if (compiled) linkPrograms().then(draw, e => showDiagnostics([{ text: String(e.message || e) }], 'error'));
   draw();
 }
 

@@ -42,7 +42,7 @@ export class Panel {
   constructor(root, schema, onEdit) {
     this.root = root;
     this.schema = schema;
-    this.onEdit = onEdit;  // (pointer, value or undefined to remove, {slots, key}) => void
+    this.onEdit = onEdit;  // (pointer, value or undefined to remove, {slots, key}, a step of a slider's drag) => void
     this.slot = 0;
     this.open = { material: true, overrides: false };  // which collapsible sections are open, kept across renders
     this.lock = false;       // tiling locked to square texels
@@ -169,7 +169,7 @@ export class Panel {
     const toSlider = x => log ? Math.log(x / min) / Math.log(max / min) : (x - min) / (max - min);
     const fromSlider = t => log ? min * Math.pow(max / min, t) : min + t * (max - min);
     const box = element('span', { class: 'sliders' }), sliders = [], numbers = [];
-    const write = () => {
+    const write = drag => {
       const size = label === 'tiling' && this.lock && this.textureSize(this.slot);
       if (size) {
         values[1] = rounded(values[0] * size[0] / size[1], false);
@@ -177,7 +177,7 @@ export class Panel {
         sliders[1].value = String(toSlider(values[1]));
       }
       const out = !d.either || Array.isArray(value) || values[0] !== values[1] ? values.slice(0, count) : values[0];
-      this.onEdit(pointer, count === 1 ? values[0] : out, target);
+      this.onEdit(pointer, count === 1 ? values[0] : out, target, drag);
     };
     for (let k = 0; k < count; ++k) {
       const slider = element('input', { type: 'range', min: 0, max: 1, step: d.integer ? 1 / Math.max(1, max - min) : 0.001 });
@@ -187,7 +187,7 @@ export class Panel {
       slider.addEventListener('input', () => {
         values[k] = rounded(fromSlider(Number(slider.value)), d.integer);
         number.value = String(values[k]);
-        write();
+        write(true);
       });
       number.addEventListener('change', () => {
         if (number.value === '' || !Number.isFinite(Number(number.value))) return;
