@@ -193,12 +193,28 @@ Diagnostics Session::confined(const Material& material) const {
     return out;
 }
 
+namespace {
+
+// What decides whether a template declares resources of its own: its text and the macros hexc defines for it from the
+// material (docs/templates.md: HEXC_HAS_<slot or role>, HEXC_FIRST_SLOT, HEXC_FIRST_KIND_<kind>,
+// HEXC_PROJECTION_<projection>), so a template that declares a resource under one of them is judged per material.
+std::string templateKey(const std::string& text, const Material& m) {
+    std::string key = text + '\0' + std::string(toString(m.hex.projection));
+    for (const Slot& s : m.slots) key += '\0' + s.name + ':' + std::string(toString(s.kind));
+    if (m.layers)
+        for (const Layers::Role& r : m.layers->roles) key += "\0role " + r.name + ':' + std::string(toString(r.kind));
+    return key;
+}
+
+}  // namespace
+
 // The views program of `m`, and the material as shown (*note says why its template is not the material's own).
 // Whether a template declares resources of its own is read from its first views program's manifest (vk::shownMaterial),
-// or from the SPIR-V alone when the page's GLSL does not compile, and remembered by the template's text.
+// or from the SPIR-V alone when the page's GLSL does not compile, and remembered by templateKey().
 CompileResult Session::viewsCompile(const Material& m, Material* shown, std::string* note) {
     const std::optional<std::string> text = templateText(m.templ);
-    const auto known = text ? shownTemplates_.find(*text) : shownTemplates_.end();
+    const std::optional<std::string> key = text ? std::optional(templateKey(*text, m)) : std::nullopt;
+    const auto known = key ? shownTemplates_.find(*key) : shownTemplates_.end();
     *shown = m;
     if (known != shownTemplates_.end()) {
         shown->templ = known->second.templ;
@@ -207,7 +223,7 @@ CompileResult Session::viewsCompile(const Material& m, Material* shown, std::str
     }
     CompileResult views = pageCompile(views_.composed(m), cache_);
     *shown = views.ok() ? vk::shownMaterial(m, views, note) : shownWithoutGlsl(m, cache_, note);
-    if (text) shownTemplates_[*text] = {shown->templ, *note};
+    if (key) shownTemplates_[*key] = {shown->templ, *note};
     return note->empty() ? views : pageCompile(views_.composed(*shown), cache_);
 }
 

@@ -74,7 +74,7 @@ private:
         TemplateRef templ;
         std::string note;
     };
-    std::map<std::string, ShownTemplate> shownTemplates_;  // by the material template's text: what the page shows
+    std::map<std::string, ShownTemplate> shownTemplates_;  // by templateKey(): what the page shows
     std::optional<Material> compiled_;                     // the last document that compiled: its textures are served
     std::mutex versionMutex_;                              // version(): the file's stamp and the textures it named then
     std::string versionFile_;
