@@ -346,6 +346,7 @@ class Page(unittest.TestCase):
         finally:
             attacker.terminate()
             attacker.wait()
+            attacker.stdout.close()
         self.assertEqual((results["style"], results["script"]), ("refused", "refused"), results)
         self.assertEqual(server.request("GET", "/api/version")[0], 200)  # still serving
         with open(self.material, "rb") as f:
