@@ -150,7 +150,9 @@ export class Panel {
     };
     box.addEventListener('change', () => {
       this.lock = box.checked;
-      if (this.lock) this.onEdit(pointer, squared(), target);
+      if (!this.lock) return;
+      this.onEdit(pointer, squared(), target);
+      this.render(this.doc);  // the boxes show the second repeat the lock set
     });
     const why = size ? `keep texels square: the second repeat is the first × ${size[0]}/${size[1]} (the slot's texture)` : 'no texture loaded yet';
     return element('label', { class: 'lock', title: why }, box, ' square texels');
