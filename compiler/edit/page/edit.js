@@ -144,7 +144,8 @@ async function compile(freshTextures = false) {
       return draw();
     }
     compiled = r;
-    if (!await linkPrograms() || seq !== compileSeq) return;
+    await linkPrograms();  // false: a slot selected meanwhile linked this answer's programs for its slot
+    if (seq !== compileSeq) return;
     timing.linked = performance.now();
     const known = Object.keys(state.sizes).length;
     await loadTextures(r.programs, freshTextures);
@@ -202,7 +203,8 @@ function onEdit(pointer, value, target, drag = false) {
 
 // Another slot selected: its views linked again (nothing compiled) and drawn, the distance in its repeats.
 function selectSlot() {
-  if (compiled) linkPrograms().then(draw, e => showDiagnostics([{ text: String(e.message || e) }], 'error'));
+  if (compiled)
+    linkPrograms().then(linked => linked && loadTextures(compiled.programs)).then(draw, e => showDiagnostics([{ text: String(e.message || e) }], 'error'));
   draw();
 }
 
