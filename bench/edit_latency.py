@@ -12,12 +12,14 @@ time is judged.
 
 Each time is taken in the page, from the control's event (performance.now() as the edit starts) to the page's mark of
 the frame drawn after it (`hexcEdit.lastFrame`: the animation frame after the draw, when the browser took the frame;
-builds before the change read one pixel back after drawing instead). A structural change includes the page's 120 ms
-wait for more edits before it asks the server to compile, the server's compiles (the page's programs: one of every view,
-and plain tiling; builds before it compiled the slot's weights and values apart), WebGL linking them (ANGLE translates them) and the first frame that draws them
-(SwiftShader compiles shaders for the CPU when they are first drawn); it is split into those parts. The cost line's
-compile of the shipped shader runs after the frame, as does the next edit (each edit waits for the previous one's frame
-only). The frame time is the interval between frames while the view is moved every frame.
+builds before the change read one pixel back after drawing instead). A structural change includes the server's
+compiles (the page's programs: one of every view, and plain tiling; builds before it compiled the slot's weights and
+values apart), WebGL linking them (ANGLE translates them; nothing for programs the page linked before, in builds that
+keep them) and the first frame that draws them (SwiftShader compiles shaders for the CPU when they are first drawn);
+it is split into those parts. Builds before the page compiled at once waited 120 ms for more edits first. Three
+structural cases: a new shader, one the server has compiled before but the page has not linked, and one the page has
+shown before (a setting switched back). The cost line's compile of the shipped shader runs after the frame; the next
+edit waits for it. The frame time is the interval between frames while the view is moved every frame.
 """
 import argparse
 import json
@@ -33,21 +35,27 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "edit"))
 from edit_support import Server, browser_or_skip, quit_browser, wait_idle  # noqa: E402
 
-# Sets a control, then resolves with the milliseconds from the edit to the end of the first frame drawn after the
-# page has no compile pending.
+# Once the cost line of the edit before is done (its compile would share the machine with this one's), sets a control,
+# then resolves with the milliseconds from the edit to the end of the first frame drawn after the page has no compile
+# pending.
 MEASURE = """
 const [pointer, kind, event, value, structural, done] = arguments;
-const h = window.hexcEdit, frames = h.frames, compiles = h.compiles;
-const e = document.querySelector(`[data-pointer="${pointer}"] ${kind}`);
-e.value = value;
-e.dispatchEvent(new Event(event));
-const poll = () => {
-  if (h.frames > frames && h.pending === 0 && (!structural || h.compiles > compiles) && h.lastFrame > h.editAt) {
-    const t = h.timing;  // a structural edit's parts: the server's answer, WebGL's compile and link, the frame
-    done(structural ? [h.lastFrame - h.editAt, t.answered - t.sent, t.linked - t.answered, h.lastFrame - t.textures] : [h.lastFrame - h.editAt]);
-  } else requestAnimationFrame(poll);
+const h = window.hexcEdit;
+const edit = () => {
+  if (document.getElementById('cost').textContent.startsWith('cost: compiling')) return requestAnimationFrame(edit);
+  const frames = h.frames, compiles = h.compiles;
+  const e = document.querySelector(`[data-pointer="${pointer}"] ${kind}`);
+  e.value = value;
+  e.dispatchEvent(new Event(event));
+  const poll = () => {
+    if (h.frames > frames && h.pending === 0 && (!structural || h.compiles > compiles) && h.lastFrame > h.editAt) {
+      const t = h.timing;  // a structural edit's parts: the server's answer, WebGL's compile and link, the frame
+      done(structural ? [h.lastFrame - h.editAt, t.answered - t.sent, t.linked - t.answered, h.lastFrame - t.textures] : [h.lastFrame - h.editAt]);
+    } else requestAnimationFrame(poll);
+  };
+  poll();
 };
-poll();
+edit();
 """
 
 # The page's own frame time: the view turned a little every frame, the median interval between frames drawn.
@@ -118,8 +126,17 @@ def measure(hexc, repetitions, smoke):
         # rotationsteps is a whole number fixed in the code: each new value is a shader the server has not compiled.
         out["fresh"] = [driver.execute_async_script(MEASURE, "/hextiling/rotationsteps", "input[type=number]", "change", str(i + 2), True)
                         for i in range(repetitions)]
-        # The mask toggled between two values: after the first of each, the page's programs come from the shader cache
-        # and only the shipped shader (the cost line) is compiled.
+        # rotationsteps again, each value compiled by the server just before (as another page of the session would
+        # have): the server's answer is a cache hit, but the page has never linked these programs.
+        out["served"] = []
+        for i in range(repetitions):
+            document = driver.execute_script("return window.hexcEdit.document();")
+            document["hextiling"]["rotationsteps"] = 40 + i
+            server.request("POST", "/api/compile", {"document": document})
+            out["served"].append(driver.execute_async_script(MEASURE, "/hextiling/rotationsteps", "input[type=number]", "change", str(40 + i),
+                                                             True))
+        # The mask toggled between two values: after the first of each, the server's shader cache holds the programs and
+        # the page has linked them before (builds before the page kept its programs linked them again).
         out["cached"] = [driver.execute_async_script(MEASURE, "/hextiling/mask", "select", "change", json.dumps(["checker", "hex"][i % 2]), True)
                          for i in range(repetitions + 2)][2:]
         # The file changed on disk (the page has no edits left unsaved: saved first), from the write to the frame.
@@ -165,12 +182,13 @@ def main():
     print("load average (1, 5, 15 min): before %s, after %s; %d round(s), interleaved" % (" ".join(load_before), " ".join(load_after), args.rounds))
     failed = False
     for b in builds:
-        joined = {k: [t for r in runs[b] for t in r[k]] for k in ("frame", "slider", "fresh", "cached", "disk")}
+        joined = {k: [t for r in runs[b] for t in r[k]] for k in ("frame", "slider", "fresh", "served", "cached", "disk")}
         readbacks = sum(r["readbacks"] for r in runs[b])
         print("\n%s: %d pixel read-backs over %d slider frames" % (b, readbacks, len(joined["slider"])))
         print(summary("the page's frame (view moved every frame)", joined["frame"]))
         print(summary("slider (falloff, a uniform)", [t[0] for t in joined["slider"]]))
-        for name, key in (("structural, new shader (rotationsteps)", "fresh"), ("structural, cached programs (mask)", "cached")):
+        for name, key in (("structural, new shader (rotationsteps)", "fresh"), ("structural, server-cached, new to the page", "served"),
+                          ("structural, seen before (mask toggled back)", "cached")):
             print(summary(name, [t[0] for t in joined[key]]))
             for i, part in ((1, "  of which the server's compile and answer"), (2, "  of which WebGL's link (ANGLE)"),
                             (3, "  of which the first frame (SwiftShader's JIT)")):

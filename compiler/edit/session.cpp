@@ -103,16 +103,21 @@ Material shownWithoutGlsl(const Material& m, ShaderCache& cache, std::string* no
     return vk::shownMaterial(m, "", options, note);
 }
 
-// The shader as `hexc MATERIAL -o DIR` ships it, compiled anew: SPIR-V instructions and texture fetches per pixel.
-Json shippedCost(const Material& m) {
+// The shader as `hexc MATERIAL -o DIR` ships it: SPIR-V instructions and texture fetches per pixel, and the time its
+// compile took: its first, as `times` remembers it by a hash of the generated code (a structure seen before is a cache
+// hit; 16 bytes a structure).
+Json shippedCost(const Material& m, ShaderCache& cache, std::map<size_t, double>& times) {
     CompileOptions options;
     options.targets = {Target::Spirv};
+    options.cache = &cache;
     const auto start = std::chrono::steady_clock::now();
     CompileResult r = compile(m, options);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (!r.ok()) return nullptr;
     const ShaderOps ops = countOps(disassemble(r.spirv));
-    Json cost = {{"fetches", ops.textureSamples}, {"instructions", ops.instructions}, {"compile_ms", ms}};
+    Json cost = {{"fetches", ops.textureSamples},
+                 {"instructions", ops.instructions},
+                 {"compile_ms", times.try_emplace(std::hash<std::string>{}(r.glsl), ms).first->second}};
     // A layered material: the fetches the layers' blend takes per pixel, at worst and over its splat maps (plan/layers.cpp).
     for (const OutputFile& f : r.files)
         if (f.name.ends_with(".manifest.json") && Json::parse(f.contents).contains("layers"))
@@ -188,12 +193,28 @@ Diagnostics Session::confined(const Material& material) const {
     return out;
 }
 
+namespace {
+
+// What decides whether a template declares resources of its own: its text and the macros hexc defines for it from the
+// material (docs/templates.md: HEXC_HAS_<slot or role>, HEXC_FIRST_SLOT, HEXC_FIRST_KIND_<kind>,
+// HEXC_PROJECTION_<projection>), so a template that declares a resource under one of them is judged per material.
+std::string templateKey(const std::string& text, const Material& m) {
+    std::string key = text + '\0' + std::string(toString(m.hex.projection));
+    for (const Slot& s : m.slots) key += '\0' + s.name + ':' + std::string(toString(s.kind));
+    if (m.layers)
+        for (const Layers::Role& r : m.layers->roles) key += "\0role " + r.name + ':' + std::string(toString(r.kind));
+    return key;
+}
+
+}  // namespace
+
 // The views program of `m`, and the material as shown (*note says why its template is not the material's own).
 // Whether a template declares resources of its own is read from its first views program's manifest (vk::shownMaterial),
-// or from the SPIR-V alone when the page's GLSL does not compile, and remembered by the template's text.
+// or from the SPIR-V alone when the page's GLSL does not compile, and remembered by templateKey().
 CompileResult Session::viewsCompile(const Material& m, Material* shown, std::string* note) {
     const std::optional<std::string> text = templateText(m.templ);
-    const auto known = text ? shownTemplates_.find(*text) : shownTemplates_.end();
+    const std::optional<std::string> key = text ? std::optional(templateKey(*text, m)) : std::nullopt;
+    const auto known = key ? shownTemplates_.find(*key) : shownTemplates_.end();
     *shown = m;
     if (known != shownTemplates_.end()) {
         shown->templ = known->second.templ;
@@ -202,7 +223,7 @@ CompileResult Session::viewsCompile(const Material& m, Material* shown, std::str
     }
     CompileResult views = pageCompile(views_.composed(m), cache_);
     *shown = views.ok() ? vk::shownMaterial(m, views, note) : shownWithoutGlsl(m, cache_, note);
-    if (text) shownTemplates_[*text] = {shown->templ, *note};
+    if (key) shownTemplates_[*key] = {shown->templ, *note};
     return note->empty() ? views : pageCompile(views_.composed(*shown), cache_);
 }
 
@@ -244,7 +265,7 @@ Reply Session::cost(const std::string& body) {
     std::lock_guard lock(costMutex_);  // not the page's compiles': the cost line follows the new frame, never holds it up
     Parsed p = parse(request->at("document"));
     if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
-    return json({{"ok", true}, {"cost", shippedCost(*p.material)}});
+    return json({{"ok", true}, {"cost", shippedCost(*p.material, costCache_, costTimes_)}});
 }
 
 Reply Session::save(const std::string& body) {

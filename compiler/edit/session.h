@@ -37,7 +37,7 @@ public:
     // programs (views.h's, which shows every view of every slot of "slots", and plain tiling); or its diagnostics.
     Reply compile(const std::string& body);
     // POST {"document"}: texture fetches per pixel and SPIR-V instructions of the shader `hexc MATERIAL -o DIR` writes,
-    // and the time its compile takes (compiled anew, not from a cache).
+    // and the time its compile took (the first time: a structure seen before is answered from a cache of its own).
     Reply cost(const std::string& body);
     // POST {"document", "version"}: writes the document into the material file, keeping its text where unchanged; refused
     // when the file changed on disk since `version` or the document does not compile.
@@ -64,15 +64,17 @@ private:
     CompileResult viewsCompile(const Material& m, Material* shown, std::string* note);
 
     std::filesystem::path file_, root_;
-    std::mutex mutex_;      // the page's requests come on several threads
-    std::mutex costMutex_;  // cost() is apart: it reads only the file and the document
+    std::mutex mutex_;                    // the page's requests come on several threads
+    std::mutex costMutex_;                // cost() is apart: it reads only the file and the document
+    ShaderCache costCache_;               // the shipped shaders of cost()
+    std::map<size_t, double> costTimes_;  // their first compile's milliseconds, by a hash of the generated code
     ShaderCache cache_;
     ViewsProgram views_;
     struct ShownTemplate {
         TemplateRef templ;
         std::string note;
     };
-    std::map<std::string, ShownTemplate> shownTemplates_;  // by the material template's text: what the page shows
+    std::map<std::string, ShownTemplate> shownTemplates_;  // by templateKey(): what the page shows
     std::optional<Material> compiled_;                     // the last document that compiled: its textures are served
     std::mutex versionMutex_;                              // version(): the file's stamp and the textures it named then
     std::string versionFile_;

@@ -256,6 +256,7 @@ class Authoring(unittest.TestCase):
         self.open(material)
         DRIVER.find_element("css selector", '[data-pointer="/hextiling/tiling"] input.lock').click()
         wait_for(lambda: document()["hextiling"]["tiling"] == [4, 6.667], "the locked tiling")
+        self.assertEqual(number_box("/hextiling/tiling", 1).get_attribute("value"), "6.667")  # shown, not only set
         type_into(number_box("/hextiling/tiling", 0), "3")
         wait_for(lambda: document()["hextiling"]["tiling"] == [3, 5], "the second repeat following the first")
         self.assertEqual(number_box("/hextiling/tiling", 1).get_attribute("value"), "5")

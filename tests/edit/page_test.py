@@ -230,6 +230,36 @@ class Page(unittest.TestCase):
             fetches += op.startswith("OpImageSample") or op in ("OpImageFetch", "OpImageGather")
         self.assertRegex(line, r"^%d fetches/pixel · %d SPIR-V instructions · compiled in \d+ ms$" % (fetches, instructions))
 
+    def test_terrain_shows_its_layers(self):
+        """materials/terrain: the layered material drawn on the ground plane, the cost line with its layers' fetches per
+        pixel as the shipped manifest counts them, every layer's slots in the panel (inheriting their layer's settings),
+        and an edit of a layer's slot compiled and drawn."""
+        self.servers.append(Server(HEXC, "materials/terrain/terrain.json", "--root", "materials"))
+        state = load(self.servers[-1])
+        self.assertEqual(state["status"], "ready", state["shown"])
+        self.assertEqual(sorted(state["programs"]), ["hex", "plain", "values", "weights"])
+        out = os.path.join(self.folder, "terrain")
+        subprocess.run([HEXC, "materials/terrain/terrain.json", "-o", out, "--target", "spirv", "-q", "--no-cache"], check=True)
+        with open(os.path.join(out, "terrain.manifest.json")) as f:
+            fetches = json.load(f)["layers"]["fetches_per_pixel"]
+        line = wait_for(lambda: "fetches/pixel" in DRIVER.find_element("id", "cost").text and DRIVER.find_element("id", "cost").text, "the cost line")
+        self.assertIn(" · layers %.1f expected / %d worst fetches/pixel · " % (fetches["expected"], fetches["worst"]), line)
+        options = DRIVER.execute_script("return [...document.querySelectorAll('#slot-select option')].map(o => o.textContent);")
+        self.assertEqual(options, ["%s_%s (%s)" % (layer, role, kind) for layer in ("grass", "sand", "pebbles", "snow")
+                                   for role, kind in (("albedo", "color"), ("normal", "normal"), ("height", "scalar"))])
+        DRIVER.execute_script("window.hexcEdit.selectSlot('sand_albedo');")
+        tiling = '[data-pointer="/layers/1/slots/0/hextiling/tiling"] .default'
+        self.assertIn("default 6", DRIVER.find_element("css selector", tiling).get_attribute("textContent"))  # the sand layer's own
+        # The sand albedo's values in texture space: hex-tiled with three taps, then with one.
+        DRIVER.execute_script("window.hexcEdit.setView({shape: 'flat', output: 'values', rect: [0, 0, 1, 1]});")
+        state = wait_idle(DRIVER, state["compiles"])
+        before = read_view(24, 24)
+        edit_control("/layers/1/slots/0/hextiling/taps", "1")
+        wait_for(lambda: DRIVER.execute_script("return window.hexcEdit.document().layers[1].slots[0].hextiling.taps === 1;"), "the edit")
+        after_edit = wait_idle(DRIVER, state["compiles"] + 1, "the edit's compile")
+        self.assertEqual(after_edit["status"], "ready", after_edit["shown"])
+        self.assertNotEqual(read_view(24, 24), before)
+
     def test_capture_writes_the_same_frame_every_time(self):
         frames = [os.path.join(self.folder, "frame%d.png" % i) for i in range(2)]
         for frame in frames:
@@ -316,6 +346,7 @@ class Page(unittest.TestCase):
         finally:
             attacker.terminate()
             attacker.wait()
+            attacker.stdout.close()
         self.assertEqual((results["style"], results["script"]), ("refused", "refused"), results)
         self.assertEqual(server.request("GET", "/api/version")[0], 200)  # still serving
         with open(self.material, "rb") as f:

@@ -2,6 +2,9 @@
 // library (no server, no browser; tests/edit/*.py drive those).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -94,6 +97,41 @@ TEST_F(EditSession, ATemplateWithResourcesOfItsOwnIsShownWithLitAskedOnce) {
     ASSERT_TRUE(again["ok"].get<bool>()) << again.dump(2);
     EXPECT_EQ(again["note"], reply["note"]);
     EXPECT_EQ(engine.compiles() - before, 1u);
+}
+
+// A template whose resources depend on the material through hexc's macros: judged per material, not once by its text.
+TEST_F(EditSession, ATemplatesResourcesAreJudgedPerMaterial) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hexc-edit-template-" + std::to_string(getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::filesystem::copy("materials/textures", dir / "textures");
+    std::ofstream(dir / "frame.glsl") << R"(#version 450
+#include <hexc>
+#ifdef HEXC_HAS_roughness
+layout(set = 1, binding = 0, std140) uniform Frame { float exposure; } frame;
+#endif
+layout(location = 0) in vec2 v_uv;
+layout(location = 0) out vec4 o_color;
+void main() {
+    o_color = hexc_albedo(v_uv);
+#ifdef HEXC_HAS_roughness
+    o_color *= hexc_roughness(v_uv) * frame.exposure;
+#endif
+}
+)";
+    Json doc = Json::parse(R"({"name": "framed", "template": "frame.glsl", "slots": [
+        {"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"}]})");
+    std::ofstream(dir / "framed.json") << doc.dump(2);
+    Session framed(dir / "framed.json", dir);
+    const Json alone = Json::parse(framed.compile(request(doc)).body);
+    ASSERT_TRUE(alone["ok"].get<bool>()) << alone.dump(2);
+    EXPECT_EQ(alone["note"], "");  // no roughness slot: no block of the template's
+    doc["slots"].push_back({{"name", "roughness"}, {"kind", "scalar"}, {"texture", "textures/rock_roughness.png"}});
+    const Json both = Json::parse(framed.compile(request(doc)).body);
+    ASSERT_TRUE(both["ok"].get<bool>()) << both.dump(2);
+    EXPECT_EQ(both["template"], "lit");
+    EXPECT_NE(both["note"].get<std::string>().find("declares resources of its own (Frame)"), std::string::npos) << both["note"];
+    std::filesystem::remove_all(dir);
 }
 
 TEST_F(EditSession, RefusesARequestWithoutADocument) {

@@ -1,7 +1,7 @@
 // hexc edit's page: loads the material, has the server compile it into WebGL programs, draws it, applies the panel's
 // edits (uniforms at once, structural ones by compiling again), saves, and follows the file on disk.
 import { View } from './view.js';
-import { Panel, effective } from './panel.js';
+import { Panel, effective, slotEntries } from './panel.js';
 
 const $ = id => document.getElementById(id);
 const query = new URLSearchParams(location.search);
@@ -115,11 +115,14 @@ async function costLine(seq) {
 }
 
 // The last compile's answer, and its programs linked for the selected slot: selecting another links them again, with
-// no compile (templates/edit/views.glsl).
+// no compile (templates/edit/views.glsl), or nothing if they were linked before. Resolves false if a later link
+// superseded this one; the frames drawn meanwhile show the programs before.
 let compiled = null;
-function linkPrograms() {
-  renderer.setPrograms(compiled.programs, compiled.slots, state.doc.slots?.[panel.slot]?.name);
+const shownSlot = () => (state.doc ? slotEntries(state.doc)[panel.slot] : undefined);
+async function linkPrograms() {
+  if (!await renderer.setPrograms(compiled.programs, compiled.slots, shownSlot()?.name)) return false;
   hexc.programs = Object.keys(renderer.programs);
+  return true;
 }
 
 let compileSeq = 0;
@@ -141,7 +144,8 @@ async function compile(freshTextures = false) {
       return draw();
     }
     compiled = r;
-    linkPrograms();
+    await linkPrograms();  // false: a slot selected meanwhile linked this answer's programs for its slot
+    if (seq !== compileSeq) return;
     timing.linked = performance.now();
     const known = Object.keys(state.sizes).length;
     await loadTextures(r.programs, freshTextures);
@@ -167,37 +171,40 @@ async function compile(freshTextures = false) {
   }
 }
 
+// A slider's drag waits 120 ms for more of it (one compile for the burst); any other edit compiles at once.
 let compileTimer = null;
-function scheduleCompile() {
+function scheduleCompile(drag) {
   clearTimeout(compileTimer);
-  compileTimer = setTimeout(compile, 120);  // one compile for a burst of structural edits
+  if (drag) compileTimer = setTimeout(compile, 120);
+  else compile();
 }
 
 // A panel edit: the document changes; a setting that is a uniform in every program is set there and drawn at once,
-// anything else compiles again.
-function onEdit(pointer, value, target) {
+// anything else compiles again. `drag`: the edit is a step of a slider's drag.
+function onEdit(pointer, value, target, drag = false) {
   hexc.editAt = performance.now();
   remember(value === undefined ? null : pointer);  // a reset is a step of its own
   setPointer(state.doc, pointer, value);
   status();
-  const names = target.slots.map(i => `${state.doc.slots[i].name}_${target.key}`);
+  const entries = slotEntries(state.doc), names = target.slots.map(i => `${entries[i].name}_${target.key}`);
   if (names.every(n => renderer.member(n))) {
     const p = state.schema.$defs.hextiling.properties[target.key];
     target.slots.forEach((i, k) => {
-      const v = target.key === 'heightwidth' ? state.doc.slots[i].height_blend.width : effective(state.doc, i, target.key, p.default);
+      const v = target.key === 'heightwidth' ? entries[i].slot.height_blend.width : effective(state.doc, i, target.key, p.default);
       renderer.setParam(names[k], v);
     });
     hexc.liveEdits++;
     draw();
   } else {
-    scheduleCompile();
+    scheduleCompile(drag);
   }
   if (value === undefined) panel.render(state.doc);  // a reset shows the default again
 }
 
 // Another slot selected: its views linked again (nothing compiled) and drawn, the distance in its repeats.
 function selectSlot() {
-  if (compiled) linkPrograms();
+  if (compiled)
+    linkPrograms().then(linked => linked && loadTextures(compiled.programs)).then(draw, e => showDiagnostics([{ text: String(e.message || e) }], 'error'));
   draw();
 }
 
@@ -208,7 +215,7 @@ function regions() {
 
 function labels() {
   const names = { plain: 'plain tiling', hex: 'hex-tiling', weights: 'weights', values: 'slot values' };
-  const slot = state.doc?.slots?.[panel.slot]?.name;
+  const slot = shownSlot()?.name;
   $('labels').replaceChildren(...regions().map(([name, left]) => {
     const span = document.createElement('span');
     span.style.left = `calc(${left * 100}% + 8px)`;
@@ -403,7 +410,7 @@ function keys() {
 // each 1/12 of it doubles the distance, from an eighth of a repeat (a few texels) to 256 repeats.
 const kRepeats = [1 / 8, 256];
 function tilingX() {
-  const slot = state.doc?.slots?.[panel.slot] ? panel.slot : null;
+  const slot = shownSlot() ? panel.slot : null;
   const t = state.doc ? effective(state.doc, slot, 'tiling', state.schema?.$defs.hextiling.properties.tiling.default ?? 1) : 1;
   return Array.isArray(t) ? t[0] : t;
 }
@@ -475,7 +482,7 @@ hexc.view = () => state.view;
 hexc.document = () => state.doc;
 hexc.setView = v => { Object.assign(state.view, v); draw(); };
 hexc.readFloat = (w, h) => Array.from(renderer.readFloat(state.view, regions(), w, h));
-hexc.selectSlot = name => { panel.slot = state.doc.slots.findIndex(s => s.name === name); panel.render(state.doc); selectSlot(); };
+hexc.selectSlot = name => { panel.slot = slotEntries(state.doc).findIndex(s => s.name === name); panel.render(state.doc); selectSlot(); };
 
 async function start() {
   if (captureSize) {
@@ -490,7 +497,7 @@ async function start() {
     renderer = new View($('canvas'), Object.fromEntries(names.map((n, i) => [n, sources[i]])));
     panel = new Panel($('panel'), schema, onEdit);
     panel.onSlot = selectSlot;
-    panel.textureSize = i => state.sizes[state.doc.slots[i]?.name];
+    panel.textureSize = i => state.sizes[slotEntries(state.doc)[i]?.name];
     controls();
     await load();
   } catch (e) {

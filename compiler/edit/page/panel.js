@@ -7,11 +7,23 @@
 const kSpans = { tiling: [0.1, 64, 'log'], rotation: [0, 2], rotationrange: [-360, 360], scalerange: [0.1, 10, 'log'],
                  rotationsteps: [0, 24], offsetsteps: [0, 64] };
 
-// The effective value of `key` at a level: the slot's own, else the material's, else the schema's default.
-export function effective(doc, slotIndex, key, schemaDefault) {
-  const own = slotIndex === null ? undefined : doc.slots[slotIndex].hextiling?.[key];
-  if (own !== undefined) return own;
-  return doc.hextiling?.[key] !== undefined ? doc.hextiling[key] : schemaDefault;
+// The document's slots as the panel and the server name them: the material's own, then each layer's, named
+// `<layer>_<slot>` (docs/material-format.md#layers), with their JSON pointers and the layer whose settings they inherit.
+export function slotEntries(doc) {
+  const list = x => (Array.isArray(x) ? x : []);  // an invalid document still shows what it has
+  const own = list(doc.slots).map((slot, i) => ({ slot, name: slot.name, pointer: `/slots/${i}`, layer: null }));
+  const layered = list(doc.layers).flatMap((layer, l) => list(layer.slots).map((slot, i) => ({ slot, name: `${layer.name}_${slot.name}`,
+                                                                                               pointer: `/layers/${l}/slots/${i}`, layer })));
+  return [...own, ...layered];
+}
+
+// The effective value of `key` for the slot at `slotIndex` (null: the material's): the slot's own, else its layer's,
+// else the material's, else the schema's default. `inherited`: what the slot would have without its own.
+export function effective(doc, slotIndex, key, schemaDefault, { inherited = false } = {}) {
+  const e = slotIndex === null ? null : slotEntries(doc)[slotIndex];
+  const levels = [inherited ? null : e?.slot, e?.layer, doc];
+  const level = levels.find(l => l?.hextiling?.[key] !== undefined);
+  return level ? level.hextiling[key] : schemaDefault;
 }
 
 function element(tag, attributes = {}, ...children) {
@@ -42,7 +54,7 @@ export class Panel {
   constructor(root, schema, onEdit) {
     this.root = root;
     this.schema = schema;
-    this.onEdit = onEdit;  // (pointer, value or undefined to remove, {slots, key}) => void
+    this.onEdit = onEdit;  // (pointer, value or undefined to remove, {slots, key}, a step of a slider's drag) => void
     this.slot = 0;
     this.open = { material: true, overrides: false };  // which collapsible sections are open, kept across renders
     this.lock = false;       // tiling locked to square texels
@@ -53,7 +65,8 @@ export class Panel {
 
   render(doc) {
     this.doc = doc;
-    const slots = Array.isArray(doc.slots) ? doc.slots.length : 0;  // an invalid document still shows what it has
+    this.slots = slotEntries(doc);
+    const slots = this.slots.length;
     this.slot = Math.max(0, Math.min(this.slot, slots - 1));
     this.root.replaceChildren(this.section('Material', null, 'material'), ...(slots ? [this.slotSection()] : []));
   }
@@ -66,25 +79,27 @@ export class Panel {
     return box;
   }
 
-  // Material-wide settings (slotIndex null) or one slot's overrides, each key of the schema's hextiling.
+  // Material-wide settings (slotIndex null) or one slot's overrides, each key of the schema's hextiling. A material
+  // setting reaches the slots that neither set it nor have a layer that does.
   section(title, slotIndex, name) {
     const box = this.collapsible(title, name);
+    const entry = slotIndex === null ? null : this.slots[slotIndex];
     for (const [key, p] of Object.entries(this.hextiling)) {
       if (slotIndex !== null && (key === 'projection' || key === 'planesharpness')) continue;  // material-wide only
-      const base = slotIndex === null ? '/hextiling' : `/slots/${slotIndex}/hextiling`;
-      const own = slotIndex === null ? this.doc.hextiling?.[key] : this.doc.slots[slotIndex].hextiling?.[key];
-      const inherited = slotIndex === null ? p.default : effective(this.doc, null, key, p.default);
-      const slots = slotIndex === null ? (this.doc.slots || []).map((s, i) => i).filter(i => this.doc.slots[i].hextiling?.[key] === undefined)
-                                       : [slotIndex];
+      const base = slotIndex === null ? '/hextiling' : `${entry.pointer}/hextiling`;
+      const own = slotIndex === null ? this.doc.hextiling?.[key] : entry.slot.hextiling?.[key];
+      const inherited = effective(this.doc, slotIndex, key, p.default, { inherited: true });
+      const inherits = e => e.slot.hextiling?.[key] === undefined && e.layer?.hextiling?.[key] === undefined;
+      const slots = slotIndex === null ? this.slots.flatMap((e, i) => (inherits(e) ? [i] : [])) : [slotIndex];
       box.append(this.control(key, p, `${base}/${key}`, own, inherited, { slots, key }, { shown: key === 'taps' ? 'the mask\'s' : undefined }));
     }
     return box;
   }
 
   slotSection() {
-    const i = this.slot, slot = this.doc.slots[i];
+    const i = this.slot, { slot, pointer, name } = this.slots[i];
     const picker = element('select', { id: 'slot-select', 'aria-label': 'slot' });
-    this.doc.slots.forEach((s, k) => picker.append(element('option', { value: k }, `${s.name} (${s.kind})`)));
+    this.slots.forEach((e, k) => picker.append(element('option', { value: k }, `${e.name} (${e.slot.kind})`)));
     picker.value = String(i);
     picker.addEventListener('change', () => { this.slot = Number(picker.value); this.render(this.doc); this.onSlot?.(this.slot); });
     const slotDefs = this.schema.$defs.slot.properties;
@@ -95,14 +110,14 @@ export class Panel {
     // colorspace's default follows the kind (docs/material-format.md); a required key has none, and no reset.
     const defaults = { colorspace: slot.kind === 'color' ? 'srgb' : 'linear' };
     for (const key of keys)
-      box.append(this.control(key, slotDefs[key], `/slots/${i}/${key}`, slot[key], slotDefs[key].default ?? defaults[key], { slots: [i], key },
+      box.append(this.control(key, slotDefs[key], `${pointer}/${key}`, slot[key], slotDefs[key].default ?? defaults[key], { slots: [i], key },
                               { required: required.includes(key) }));
     if (slot.height_blend) {
       const w = slotDefs.height_blend.properties.width;
-      box.append(this.control('height_blend width', w, `/slots/${i}/height_blend/width`, slot.height_blend.width, w.default,
+      box.append(this.control('height_blend width', w, `${pointer}/height_blend/width`, slot.height_blend.width, w.default,
                               { slots: [i], key: 'heightwidth' }));
     }
-    box.append(this.section(`${slot.name}: hex-tiling overrides`, i, 'overrides'));
+    box.append(this.section(`${name}: hex-tiling overrides`, i, 'overrides'));
     return box;
   }
 
@@ -135,7 +150,9 @@ export class Panel {
     };
     box.addEventListener('change', () => {
       this.lock = box.checked;
-      if (this.lock) this.onEdit(pointer, squared(), target);
+      if (!this.lock) return;
+      this.onEdit(pointer, squared(), target);
+      this.render(this.doc);  // the boxes show the second repeat the lock set
     });
     const why = size ? `keep texels square: the second repeat is the first × ${size[0]}/${size[1]} (the slot's texture)` : 'no texture loaded yet';
     return element('label', { class: 'lock', title: why }, box, ' square texels');
@@ -169,7 +186,7 @@ export class Panel {
     const toSlider = x => log ? Math.log(x / min) / Math.log(max / min) : (x - min) / (max - min);
     const fromSlider = t => log ? min * Math.pow(max / min, t) : min + t * (max - min);
     const box = element('span', { class: 'sliders' }), sliders = [], numbers = [];
-    const write = () => {
+    const write = drag => {
       const size = label === 'tiling' && this.lock && this.textureSize(this.slot);
       if (size) {
         values[1] = rounded(values[0] * size[0] / size[1], false);
@@ -177,7 +194,7 @@ export class Panel {
         sliders[1].value = String(toSlider(values[1]));
       }
       const out = !d.either || Array.isArray(value) || values[0] !== values[1] ? values.slice(0, count) : values[0];
-      this.onEdit(pointer, count === 1 ? values[0] : out, target);
+      this.onEdit(pointer, count === 1 ? values[0] : out, target, drag);
     };
     for (let k = 0; k < count; ++k) {
       const slider = element('input', { type: 'range', min: 0, max: 1, step: d.integer ? 1 / Math.max(1, max - min) : 0.001 });
@@ -187,7 +204,7 @@ export class Panel {
       slider.addEventListener('input', () => {
         values[k] = rounded(fromSlider(Number(slider.value)), d.integer);
         number.value = String(values[k]);
-        write();
+        write(true);
       });
       number.addEventListener('change', () => {
         if (number.value === '' || !Number.isFinite(Number(number.value))) return;

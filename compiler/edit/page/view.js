@@ -8,6 +8,11 @@ import * as geometry from './geometry.js';
 const kViewMacro = 'SPIRV_CROSS_CONSTANT_ID_1000', kSlotMacro = 'SPIRV_CROSS_CONSTANT_ID_1001';
 const kViews = { hex: 0, values: 1, weights: 2 };
 
+// Linked programs kept by their sources: a structure seen before in the session (an undo, a setting switched back, a
+// slot selected again) links nothing, and the driver keeps the shaders it compiled for them. A structure is four
+// programs (plain tiling and three views).
+const kLinkedPrograms = 32;
+
 // The templates' own light direction (templates/builtin/lit.glsl): the page turns the frame to move the light.
 const kTemplateLight = (() => { const l = Math.hypot(1, 1, 2); return [1 / l, 1 / l, 2 / l]; })();
 
@@ -21,58 +26,123 @@ export class View {
     this.floatRender = !!this.gl.getExtension('EXT_color_buffer_float');
     this.floatLinear = !!this.gl.getExtension('OES_texture_float_linear');
     this.programs = {};
+    this.linked = new Map();  // linked programs by their sources (linkedProgram)
+    this.generation = 0;      // setPrograms' calls: a later one supersedes an earlier one still linking
+    this.parallel = this.gl.getExtension('KHR_parallel_shader_compile');
     this.textures = {};  // by URL name: "albedo", "albedo.gaussian", "albedo.lut"
     this.meshes = {};
     this.display = this.compileProgram('display', shaders['display.vert.glsl'], shaders['display.frag.glsl']);
   }
 
+  // Compiles and links a program, waiting for it (the display pass's, at start).
   compileProgram(name, vertex, fragment) {
-    const gl = this.gl;
-    const shader = (type, source) => {
-      const s = gl.createShader(type);
-      gl.shaderSource(s, source);
-      gl.compileShader(s);
-      if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(`WebGL could not compile the ${name} program: ${gl.getShaderInfoLog(s)}`);
-      return s;
-    };
-    const program = gl.createProgram();
-    gl.attachShader(program, shader(gl.VERTEX_SHADER, vertex));
-    gl.attachShader(program, shader(gl.FRAGMENT_SHADER, fragment));
-    gl.linkProgram(program);
-    if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`WebGL could not link the ${name} program: ${gl.getProgramInfoLog(program)}`);
+    const program = this.startLink(vertex, fragment);
+    this.linkResult(name, program);
     return program;
   }
 
-  // Compiles and links each program, the views for the slot at `slot` in the server's `slots`; throws an Error with
-  // WebGL's log (never leaves a half-set view).
-  setPrograms(programs, slots, slot) {
-    const built = {};
-    if (programs.plain.fragment) built.plain = this.link('plain', programs.plain, '');
+  // Starts compiling and linking a program; with KHR_parallel_shader_compile the driver does it beside the page's
+  // frames, which keep drawing the programs they have until linkResult() is asked (see ready()).
+  startLink(vertex, fragment) {
+    const gl = this.gl, program = gl.createProgram();
+    for (const [type, source] of [[gl.VERTEX_SHADER, vertex], [gl.FRAGMENT_SHADER, fragment]]) {
+      const s = gl.createShader(type);
+      gl.shaderSource(s, source);
+      gl.compileShader(s);
+      gl.attachShader(program, s);
+      gl.deleteShader(s);  // freed with the program
+    }
+    gl.linkProgram(program);
+    return program;
+  }
+
+  // Whether a program started by startLink() is linked, asked without waiting for it (always true without the
+  // extension: asking for the link status then waits).
+  ready(program) {
+    return !this.parallel || this.gl.getProgramParameter(program, this.parallel.COMPLETION_STATUS_KHR);
+  }
+
+  // Throws an Error with WebGL's log if the program did not link (its shaders' logs first: they say why).
+  linkResult(name, program) {
+    const gl = this.gl;
+    if (gl.getProgramParameter(program, gl.LINK_STATUS)) return;
+    const logs = gl.getAttachedShaders(program).filter(s => !gl.getShaderParameter(s, gl.COMPILE_STATUS)).map(s => gl.getShaderInfoLog(s));
+    gl.deleteProgram(program);
+    throw new Error(logs.length ? `WebGL could not compile the ${name} program: ${logs.join('\n')}`
+                                : `WebGL could not link the ${name} program: ${gl.getProgramInfoLog(program)}`);
+  }
+
+  // Links each program, the views for the slot at `slot` in the server's `slots`, and makes them the ones drawn; a
+  // program linked before in this session (the same sources) is taken from this.linked, linking nothing. Resolves
+  // false if a later call superseded this one, and throws an Error with WebGL's log if a program does not link (the
+  // programs drawn stay as they were).
+  async setPrograms(programs, slots, slot) {
+    const generation = ++this.generation;
+    const wanted = [];
+    if (programs.plain.fragment) wanted.push(['plain', programs.plain, '']);
     if (programs.views.fragment) {
       const index = Math.max(0, slots.indexOf(slot));
       for (const [name, view] of Object.entries(kViews))
-        built[name] = this.link(name, programs.views, `#define ${kViewMacro} ${view}\n#define ${kSlotMacro} ${index}\n`);
+        wanted.push([name, programs.views, `#define ${kViewMacro} ${view}\n#define ${kSlotMacro} ${index}\n`]);
     }
-    for (const p of Object.values(this.programs)) this.gl.deleteProgram(p.program);
+    const linked = wanted.map(([name, p, defines]) => this.linkedProgram(p, defines));
+    while (!linked.every(l => l.ready || (l.ready = this.ready(l.program)))) await new Promise(requestAnimationFrame);
+    if (generation !== this.generation) return false;
+    const built = {};
+    wanted.forEach(([name, p], i) => {
+      const l = linked[i];
+      if (!l.uniforms) {
+        try { this.linkResult(name, l.program); } catch (e) { this.linked.delete(l.key); throw e; }
+        this.describe(l, p.manifest);
+      }
+      built[name] = { ...l, block: this.block(p.manifest), manifest: p.manifest };
+    });
+    for (const p of Object.values(this.programs)) this.gl.deleteBuffer(p.block.buffer);
     this.programs = built;
+    this.evict();
+    return true;
   }
 
-  // `fragment` with `defines` after its #version line.
-  link(name, p, defines) {
-    const gl = this.gl, glsl = p.manifest.targets.glsl;
+  // The program of `p.fragment` with `defines` after its #version line, from this.linked or started now (the most
+  // recently used is last in the map).
+  linkedProgram(p, defines) {
     const after = (source, text) => { const lines = source.split('\n'); return [lines[0], text + lines.slice(1).join('\n')].join('\n'); };
-    const inputs = glsl.inputs.map(i => `#define HEXC_INPUT_${i.location} ${i.name}\n`).join('');
-    const program = this.compileProgram(name, after(this.vertexSource, inputs), after(p.fragment, defines));
-    const params = p.manifest.parameters;
-    const block = { data: new DataView(new ArrayBuffer(Math.max(16, params.size))), buffer: gl.createBuffer(), members: params.members };
+    const inputs = p.manifest.targets.glsl.inputs.map(i => `#define HEXC_INPUT_${i.location} ${i.name}\n`).join('');
+    const vertex = after(this.vertexSource, inputs), fragment = after(p.fragment, defines), key = `${vertex}\0${fragment}`;
+    const known = this.linked.get(key);
+    this.linked.delete(key);
+    this.linked.set(key, known || { key, program: this.startLink(vertex, fragment) });
+    return this.linked.get(key);
+  }
+
+  // Frees the least recently used programs past kLinkedPrograms that are not drawn.
+  evict() {
+    const drawn = new Set(Object.values(this.programs).map(p => p.program));
+    for (const [key, l] of this.linked) {
+      if (this.linked.size <= kLinkedPrograms) break;
+      if (drawn.has(l.program)) continue;
+      this.gl.deleteProgram(l.program);
+      this.linked.delete(key);
+    }
+  }
+
+  // What a linked program's draws look up once: its uniforms, its block's binding and its textures' units.
+  describe(l, manifest) {
+    const gl = this.gl, glsl = manifest.targets.glsl;
+    const index = gl.getUniformBlockIndex(l.program, manifest.parameters.block);
+    if (index !== gl.INVALID_INDEX) gl.uniformBlockBinding(l.program, index, 0);
+    l.uniforms = {};
+    for (const u of ['u_viewProjection', 'u_light', 'u_uvScale']) l.uniforms[u] = gl.getUniformLocation(l.program, u);
+    l.textures = Object.entries(glsl.textures).map(([key, t]) => ({ source: this.textureSource(manifest, key), unit: t.texture_unit,
+                                                                    location: gl.getUniformLocation(l.program, t.uniform) }));
+  }
+
+  // The parameter block of a manifest, its members set to the manifest's values.
+  block(manifest) {
+    const params = manifest.parameters;
+    const block = { data: new DataView(new ArrayBuffer(Math.max(16, params.size))), buffer: this.gl.createBuffer(), members: params.members };
     for (const m of params.members) this.write(block, m, m.value);
-    const index = gl.getUniformBlockIndex(program, params.block);
-    if (index !== gl.INVALID_INDEX) gl.uniformBlockBinding(program, index, 0);
-    const uniforms = {};
-    for (const u of ['u_viewProjection', 'u_light', 'u_uvScale']) uniforms[u] = gl.getUniformLocation(program, u);
-    const textures = Object.entries(glsl.textures).map(([key, t]) => ({ source: this.textureSource(p.manifest, key), unit: t.texture_unit,
-                                                                       location: gl.getUniformLocation(program, t.uniform) }));
-    return { program, block, uniforms, textures, manifest: p.manifest };
+    return block;
   }
 
   // Where a program's texture comes from: a histogram slot reads hexc's Gaussian texture in place of its own.
