@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hexc/compiler.h"
+#include "hexc/spirv.h"
 #include "plan/plan.h"
 
 using namespace hexc;
@@ -67,12 +68,42 @@ TEST(Layers, TheManifestCountsWorstAndExpectedFetchesPerPixel) {
     ASSERT_TRUE(layers.is_object());
     EXPECT_EQ(layers["mode"], "height");
     EXPECT_EQ(layers["roles"].size(), 2u);  // lit reads albedo and normal
-    // Per role read (2): the splat map (1), and per layer (4) its slot (3 taps) and its height (3 taps).
-    EXPECT_EQ(layers["fetches_per_pixel"]["worst"], 2 * (1 + 4 * (3 + 3)));
-    double expected = 2;
-    for (const auto& c : layers["coverage"]) expected += 2 * 6 * c.get<double>();
+    // Once per pixel, shared by the roles: the splat map (1) and per layer (4) its height (3 taps); per role read (2)
+    // and layer, its slot (3 taps).
+    EXPECT_EQ(layers["fetches_per_pixel"]["worst"], 1 + 4 * 3 + 2 * 4 * 3);
+    double expected = 1;
+    for (const auto& c : layers["coverage"]) expected += (3 + 2 * 3) * c.get<double>();
     EXPECT_NEAR(layers["fetches_per_pixel"]["expected"].get<double>(), expected, 1e-9);  // summed in another order
     EXPECT_LT(expected, layers["fetches_per_pixel"]["worst"].get<double>());
+}
+
+// The manifest's worst case counts what the code does. Each fetch of the optimised shader sits in straight code or in
+// one layer's branch, and runs once when every branch is taken, but for the shared weights' fetches (the splat maps and
+// the heights): every role read holds them behind the test that only the pixel's first read passes. So the shader's
+// fetches are the worst case plus, per role read after the first, the shared fetches once more. A role function that
+// fetched the splat map or the heights outside that test, or a layer outside its branch, would break the equality.
+TEST(Layers, TheWorstFetchesAreTheShadersFetches) {
+    for (const char* path : {"materials/terrain/terrain.json", "tests/golden/materials/layers_linear.json"}) {
+        ParseResult parsed = parseMaterialFile(path);
+        ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
+        for (const char* templ : {"lit", "value"}) {
+            Material m = *parsed.material;
+            m.templ = TemplateRef::builtin(templ);
+            CompileOptions options;
+            options.targets = {Target::Spirv};
+            const CompileResult r = compile(m, options);
+            ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+            const nlohmann::json layers = manifestOf(r)["layers"];
+            const double worst = layers["fetches_per_pixel"]["worst"].get<double>();
+            const double heights = layers.contains("heights") ? double(layers["heights"].size()) : 0;
+            const double shared = double(layers["splat_maps"].size()) + 3 * heights;  // a height: 3 taps
+            EXPECT_EQ(countOps(disassemble(r.spirv)).textureSamples, worst + double(layers["roles"].size() - 1) * shared)
+                << path << " " << templ;
+            // One call of the fill, behind the test.
+            EXPECT_EQ(r.glsl.find("hexcLayerFill(st"), r.glsl.rfind("hexcLayerFill(st"));
+            EXPECT_NE(r.glsl.find("if (!hexcLayersFilled || st != hexcLayersSt) {\n        hexcLayerFill(st"), std::string::npos);
+        }
+    }
 }
 
 TEST(Layers, TheValueTemplateShowsTheFirstRole) {

@@ -89,14 +89,14 @@ void planLayers(const Material& material, ShaderPlan& plan) {
         role.type = plan.slots[role.slots.front()].type;
         lp.roles.push_back(std::move(role));
     }
-    // The height blend reads every kept layer's height in each role's weights.
+    // The weights, shared by the roles (templates/library/layers.glsl): the splat maps, and in height mode every kept
+    // layer's height, read once per pixel.
     for (size_t l = 0; layers.heightRole && l < lp.count; ++l) {
         lp.heights.push_back(planIndex(material, layers.layers[l].slots[*layers.heightRole], plan));
-        for (size_t r = 0; r < lp.roles.size(); ++r) add(l, plan.slots[lp.heights.back()]);
+        add(l, plan.slots[lp.heights.back()]);
     }
-    // Each role's function reads the splat maps.
-    lp.worstFetches += double(lp.splats.size() * lp.roles.size());
-    lp.expectedFetches += double(lp.splats.size() * lp.roles.size());
+    lp.worstFetches += double(lp.splats.size());
+    lp.expectedFetches += double(lp.splats.size());
     plan.layers = std::move(lp);
 }
 
