@@ -79,9 +79,11 @@ TEST(Layers, TheManifestCountsWorstAndExpectedFetchesPerPixel) {
 
 // The manifest's worst case counts what the code does. Each fetch of the optimised shader sits in straight code or in
 // one layer's branch, and runs once when every branch is taken, but for the shared weights' fetches (the splat maps and
-// the heights): every role read holds them behind the test that only the pixel's first read passes. So the shader's
-// fetches are the worst case plus, per role read after the first, the shared fetches once more. A role function that
-// fetched the splat map or the heights outside that test, or a layer outside its branch, would break the equality.
+// the heights): every role read holds them behind the test that only the pixel's first read passes. So with one role
+// read the shader's fetches are the worst case, and with more they are at most the worst case plus the shared fetches
+// once more per later read (fewer where the optimiser merges a later read's fetch with the first's, e.g. the splat map's,
+// whose first read dominates). A role function that fetched the splat map or the heights outside that test, or a layer
+// outside its branch, would break the bounds.
 TEST(Layers, TheWorstFetchesAreTheShadersFetches) {
     for (const char* path : {"materials/terrain/terrain.json", "tests/golden/materials/layers_linear.json"}) {
         ParseResult parsed = parseMaterialFile(path);
@@ -97,8 +99,11 @@ TEST(Layers, TheWorstFetchesAreTheShadersFetches) {
             const double worst = layers["fetches_per_pixel"]["worst"].get<double>();
             const double heights = layers.contains("heights") ? double(layers["heights"].size()) : 0;
             const double shared = double(layers["splat_maps"].size()) + 3 * heights;  // a height: 3 taps
-            EXPECT_EQ(countOps(disassemble(r.spirv)).textureSamples, worst + double(layers["roles"].size() - 1) * shared)
-                << path << " " << templ;
+            const double later = double(layers["roles"].size() - 1);
+            const double fetches = countOps(disassemble(r.spirv)).textureSamples;
+            EXPECT_GE(fetches, worst) << path << " " << templ;
+            EXPECT_LE(fetches, worst + later * shared) << path << " " << templ;
+            if (later == 0) EXPECT_EQ(fetches, worst) << path << " " << templ;
             // One call of the fill, behind the test.
             EXPECT_EQ(r.glsl.find("hexcLayerFill(st"), r.glsl.rfind("hexcLayerFill(st"));
             EXPECT_NE(r.glsl.find("if (!hexcLayersFilled || st != hexcLayersSt) {\n        hexcLayerFill(st"), std::string::npos);

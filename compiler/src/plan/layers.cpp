@@ -72,7 +72,10 @@ void planLayers(const Material& material, ShaderPlan& plan) {
     lp.width = layers.width;
     lp.skipBelow = layers.skipBelow;
     lp.coverage = coverage(material, layers);
-    for (size_t s : layers.splats) lp.splats.push_back(planIndex(material, s, plan));
+    for (size_t s : layers.splats) {
+        lp.splats.push_back(planIndex(material, s, plan));
+        plan.slots[lp.splats.back()].explicitGradients = true;  // read by the roles' shared fill, behind a non-uniform test
+    }
     // One layer's slot read in every pixel where the layer is kept: its share of the figures.
     auto add = [&](size_t layer, SlotPlan& sp) {
         sp.explicitGradients = true;  // read inside the layer's branch: plain tiling's fetch takes the role's gradients
