@@ -5,6 +5,10 @@
 // (codegen/layers.cpp) fills the tokens: ${skip}, ${width}: literals; ${splats}, ${keep}, ${heights}, ${layers}: the
 // per-splat and per-layer lines below; ${index}, ${splat}, ${channel}, ${slot}, ${tiling}; ${role}, ${type}, ${uv}.
 // Weights are arrays of 8, hexc's most layers; those past the material's stay 0.
+// What the roles share is read once per pixel: the first role read at a coordinate fills the weights (the splat maps,
+// and in height mode each kept layer's height) into private variables, and every later role read at that coordinate
+// takes them from there (a template that reads roles at several coordinates, e.g. a parallax search, gets each
+// coordinate's weights). Each role function holds the fill behind that test; only the first read at a uv runs it.
 
 //@ functions
 // Drops the weights below `skip` (their layers are not fetched) and renormalises the others to sum 1; where every
@@ -38,13 +42,27 @@ void hexcLayerHeights(inout float w[8], float h[8], float width) {
 
 //@ weights
 // The layers' weights at st (hexc's uv), with its gradients dx, dy: layer i's splat channel, kept and renormalised.
-void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
+void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
     vec3 t;
     for (int i = 0; i < 8; ++i) w[i] = 0.0;
 ${splats}
 ${keep}
     hexcLayerKeep(w, ${skip});
 ${heights}
+}
+
+//@ shared
+// The pixel's weights, filled by its first role read (or a read at another coordinate) and shared by the others.
+bool hexcLayersFilled = false;
+vec2 hexcLayersSt;
+float hexcLayersW[8];
+void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
+    if (!hexcLayersFilled || st != hexcLayersSt) {
+        hexcLayerFill(st, dx, dy, hexcLayersW);
+        hexcLayersFilled = true;
+        hexcLayersSt = st;
+    }
+    w = hexcLayersW;
 }
 
 //@ weights.splat

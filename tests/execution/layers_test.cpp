@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
 
 #include "hexc/material.h"
 #include "reference/layers.h"
@@ -133,5 +136,83 @@ INSTANTIATE_TEST_SUITE_P(Exec, LayerCases,
                              return std::string(std::get<0>(info.param).name) +
                                     (std::get<1>(info.param) == vk::ExecutedTarget::Spirv ? "_spirv" : "_hlsl");
                          });
+
+// The height blend's width at its edges: two layers whose scalar value is 0 and 1 (so the output is layer 1's final
+// weight), with constant heights h0 = 153/255 and h1 = 102/255, and a splat map that ramps layer 1's weight from 0 to 1
+// across 256 texels (r = 255 - i, g = i), read at its texel centres (one pixel per texel): at pixel i, s1 = x = i / 255
+// and s0 = 1 - x. With a_0 = h0 + 1 - x and a_1 = h1 + x, layer 1's weight is exactly 0 where a_0 - a_1 >= width
+// (x <= (1 + h0 - h1 - width) / 2) and exactly 1 where a_1 - a_0 >= width, and between the two follows
+// b_1 / (b_0 + b_1). Widths: one 8-bit step (as hard as the splat map resolves), the default 0.2 and the widest, 1,
+// whose upper edge lies past x = 1: there only the last pixel, where s0 = 0 drops layer 0 (skip_below), shows layer 1
+// alone.
+TEST(LayerHeightWidth, TheWeightsReachZeroAndOneAtTheWidthsEdges) {
+    std::string why;
+    vk::Runner* runner = test::runner(&why);
+    if (!runner) {
+        if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << why;
+        GTEST_SKIP() << why;
+    }
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hexc_height_width_" + test::testLogName());
+    std::filesystem::create_directories(dir);
+    auto write = [&](const char* name, int width, const std::function<std::array<uint8_t, 4>(int)>& texel) {
+        Texture t{width, 4, false, std::vector<uint8_t>(size_t(width) * 16), {}};
+        for (int i = 0; i < width * 4; ++i) std::copy_n(texel(i % width).begin(), 4, &t.rgba8[size_t(i) * 4]);
+        std::ofstream(dir / name, std::ios::binary) << pngBytes(t);
+    };
+    write("splat.png", 256, [](int i) { return std::array<uint8_t, 4>{uint8_t(255 - i), uint8_t(i), 0, 0}; });
+    for (int v : {0, 102, 153, 255})
+        write(("c" + std::to_string(v) + ".png").c_str(), 8, [&](int) {
+            return std::array<uint8_t, 4>{uint8_t(v), uint8_t(v), uint8_t(v), 255};
+        });
+    const double h0 = 153 / 255.0, h1 = 102 / 255.0;
+    for (double width : {1 / 255.0, 0.2, 1.0}) {
+        const std::string layer = R"({"name": "%s", "slots": [{"name": "value", "kind": "scalar", "texture": "c%d.png"},
+            {"name": "height", "kind": "scalar", "texture": "c%d.png"}]})";
+        char a[256], b[256];
+        std::snprintf(a, sizeof a, layer.c_str(), "a", 0, 153);
+        std::snprintf(b, sizeof b, layer.c_str(), "b", 255, 102);
+        char w[32];
+        std::snprintf(w, sizeof w, "%.17g", width);
+        std::ofstream(dir / "m.json") << R"({"name": "height_width", "hextiling": {"tiling": 4}, "layers": [)" << a << "," << b
+                                      << R"(], "layer_blend": {"splat": ["splat.png"], "mode": "height", "height": "height", "width": )"
+                                      << w << "}}";
+        ParseResult parsed = parseMaterialFile(dir / "m.json");
+        ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
+        Material m = *parsed.material;
+        m.templ = TemplateRef::builtin("value");
+        const View view{256, 1, {0, 0, 1, 0.25}};  // pixel i at the splat's texel i's centre
+        const Image gpu = vk::render(*runner, m, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv);
+        const std::vector<reference::LayerResult> ref = reference::evaluateLayersView(m, 0, reference::LayerTextures(m), view);
+        // Every input is exact but for float rounding: a splat texel read at its centre (the interpolated uv within a
+        // few ulp of it moves the filter by < 1e-4 texel, < 1e-6 of a weight), a constant texture hex-tiled (tile weights
+        // summing to 1 within a few ulp). With delta = 1e-5 bounding both, each a_i moves by <= 2 delta, each b_i by
+        // <= 4 delta and B = b_0 + b_1 >= width by <= 8 delta, so layer 1's weight b_1 / B by <= 12 delta / width.
+        const double delta = 1e-5, tolerance = 12 * delta / width;
+        int zeros = 0, ones = 0, between = 0;
+        double worst = 0;
+        for (int i = 0; i < 256; ++i) {
+            const double x = i / 255.0, d = (h1 + x) - (h0 + 1 - x), got = gpu.at(i, 0)[0];
+            EXPECT_NEAR(ref[size_t(i)].weights[1], ref[size_t(i)].value[0], 1e-12);
+            EXPECT_NEAR(got, ref[size_t(i)].value[0], tolerance) << "width " << width << " x " << x;
+            worst = std::max(worst, std::fabs(got - ref[size_t(i)].value[0]));
+            if (d <= -width - 4 * delta) {  // past the lower edge by more than d's error: layer 1 not fetched
+                EXPECT_EQ(got, 0.0) << "width " << width << " x " << x;
+                ++zeros;
+            } else if (d >= width + 4 * delta || i == 255) {  // past the upper edge (or s0 = 0, dropped): layer 1 alone
+                EXPECT_NEAR(got, 1.0, 1e-6) << "width " << width << " x " << x;
+                ++ones;
+            } else {
+                EXPECT_GT(got, 0.0) << "width " << width << " x " << x;
+                EXPECT_LT(got, 1.0) << "width " << width << " x " << x;
+                ++between;
+            }
+        }
+        std::printf("  width %.4f: %d pixels at 0, %d between, %d at 1; largest error %.2e (tolerance %.2e)\n", width, zeros, between, ones,
+                    worst, tolerance);
+        // The edges, from the definition: x = (1 + h0 - h1 -+ width) / 2, at pixels x * 255.
+        EXPECT_EQ(zeros, int(std::floor((1 + h0 - h1 - width) / 2 * 255 + 1e-9)) + 1) << width;
+        EXPECT_EQ(ones, std::max(1, 255 - int(std::ceil((1 + h0 - h1 + width) / 2 * 255 - 1e-9)) + 1)) << width;
+    }
+}
 
 }  // namespace

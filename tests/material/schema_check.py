@@ -32,7 +32,8 @@ and on layers (docs/material-format.md#layers):
 
 14. every layer has the first layer's roles, of the same kinds;
 15. one splat map per four layers;
-16. a height blend's `height` names a scalar role.
+16. a height blend's `height` names a scalar role;
+17. a layer's slot's height_blend names a scalar role, in mode "height" the layers' `height`.
 
 Run it with the Debian interpreter (/usr/bin/python3), which has python3-jsonschema.
 """
@@ -125,8 +126,9 @@ def problems(validator, path):
 
 
 def layer_problems(doc):
-    """Rules 14-16: every layer has the first layer's roles (names and kinds); one splat map per four layers; a
-    height blend's `height` names a scalar role."""
+    """Rules 14-17: every layer has the first layer's roles (names and kinds); one splat map per four layers; a
+    height blend's `height` names a scalar role; a layer's slot's height_blend names a scalar role, in mode "height"
+    the layers' `height`."""
     found = []
     layers = [l for l in doc["layers"] if isinstance(l, dict) and isinstance(l.get("slots"), list)]
     roles = lambda l: {s.get("name"): s.get("kind") for s in l["slots"] if isinstance(s, dict)}
@@ -142,6 +144,13 @@ def layer_problems(doc):
         height = blend.get("height")
         if isinstance(height, str) and first.get(height, "none") != "scalar":
             found.append(f"/layer_blend/height: `{height}` is not a scalar role of the layers")
+    layer_height = blend.get("height") if isinstance(blend, dict) and blend.get("mode") == "height" else None
+    for i, layer in enumerate(doc["layers"]):
+        for j, s in enumerate(layer.get("slots", []) if isinstance(layer, dict) else []):
+            tiles = s.get("height_blend") if isinstance(s, dict) else None
+            name = tiles.get("slot") if isinstance(tiles, dict) else None
+            if isinstance(name, str) and (first.get(name, "none") != "scalar" or layer_height not in (None, name)):
+                found.append(f"/layers/{i}/slots/{j}/height_blend/slot: `{name}` is not the layers' scalar height role")
     return found
 
 

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hexc/compiler.h"
+#include "hexc/spirv.h"
 #include "plan/plan.h"
 
 using namespace hexc;
@@ -67,12 +68,47 @@ TEST(Layers, TheManifestCountsWorstAndExpectedFetchesPerPixel) {
     ASSERT_TRUE(layers.is_object());
     EXPECT_EQ(layers["mode"], "height");
     EXPECT_EQ(layers["roles"].size(), 2u);  // lit reads albedo and normal
-    // Per role read (2): the splat map (1), and per layer (4) its slot (3 taps) and its height (3 taps).
-    EXPECT_EQ(layers["fetches_per_pixel"]["worst"], 2 * (1 + 4 * (3 + 3)));
-    double expected = 2;
-    for (const auto& c : layers["coverage"]) expected += 2 * 6 * c.get<double>();
+    // Once per pixel, shared by the roles: the splat map (1) and per layer (4) its height (3 taps); per role read (2)
+    // and layer, its slot (3 taps).
+    EXPECT_EQ(layers["fetches_per_pixel"]["worst"], 1 + 4 * 3 + 2 * 4 * 3);
+    double expected = 1;
+    for (const auto& c : layers["coverage"]) expected += (3 + 2 * 3) * c.get<double>();
     EXPECT_NEAR(layers["fetches_per_pixel"]["expected"].get<double>(), expected, 1e-9);  // summed in another order
     EXPECT_LT(expected, layers["fetches_per_pixel"]["worst"].get<double>());
+}
+
+// The manifest's worst case counts what the code does. Each fetch of the optimised shader sits in straight code or in
+// one layer's branch, and runs once when every branch is taken, but for the shared weights' fetches (the splat maps and
+// the heights): every role read holds them behind the test that only the pixel's first read passes. So with one role
+// read the shader's fetches are the worst case, and with more they are at most the worst case plus the shared fetches
+// once more per later read (fewer where the optimiser merges a later read's fetch with the first's, e.g. the splat map's,
+// whose first read dominates). A role function that fetched the splat map or the heights outside that test, or a layer
+// outside its branch, would break the bounds.
+TEST(Layers, TheWorstFetchesAreTheShadersFetches) {
+    for (const char* path : {"materials/terrain/terrain.json", "tests/golden/materials/layers_linear.json"}) {
+        ParseResult parsed = parseMaterialFile(path);
+        ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
+        for (const char* templ : {"lit", "value"}) {
+            Material m = *parsed.material;
+            m.templ = TemplateRef::builtin(templ);
+            CompileOptions options;
+            options.targets = {Target::Spirv};
+            const CompileResult r = compile(m, options);
+            ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+            const nlohmann::json layers = manifestOf(r)["layers"];
+            const double worst = layers["fetches_per_pixel"]["worst"].get<double>();
+            const double heights = layers.contains("heights") ? double(layers["heights"].size()) : 0;
+            const double shared = double(layers["splat_maps"].size()) + 3 * heights;  // a height: 3 taps
+            const double later = double(layers["roles"].size() - 1);
+            const double fetches = countOps(disassemble(r.spirv)).textureSamples;
+            EXPECT_GE(fetches, worst) << path << " " << templ;
+            EXPECT_LE(fetches, worst + later * shared) << path << " " << templ;
+            if (later == 0) EXPECT_EQ(fetches, worst) << path << " " << templ;
+            // One call of the fill, behind the test.
+            EXPECT_EQ(r.glsl.find("hexcLayerFill(st"), r.glsl.rfind("hexcLayerFill(st"));
+            EXPECT_NE(r.glsl.find("if (!hexcLayersFilled || st != hexcLayersSt) {\n        hexcLayerFill(st"), std::string::npos);
+        }
+    }
 }
 
 TEST(Layers, TheValueTemplateShowsTheFirstRole) {

@@ -1,5 +1,6 @@
 // `layers` and `layer_blend` of a material document -> Material::layers (material/layers.h).
 #include <algorithm>
+#include <optional>
 
 #include "common/suggest.h"
 #include "material/layers.h"
@@ -32,6 +33,7 @@ public:
         const size_t ownSlots = m.slots.size();
         readLayers(doc["layers"], m, layers);
         if (requireKey(doc, "", "layer_blend", "how the layers blend: splat maps and mode")) layerBlend(doc["layer_blend"], m, layers);
+        for (const auto& [pointer, role] : heightRefs_) heightBlendRole(pointer, role, layers);
         if (m.slots.size() > kMaxSlots)
             report(Code::WrongCount, "/layers",
                    "the material has " + std::to_string(m.slots.size()) + " textures (" + std::to_string(ownSlots) +
@@ -104,7 +106,10 @@ private:
             for (const Slot& own : m.slots)
                 if (own.name == s.name)
                     report(Code::DuplicateName, p + "/name", "slot `" + s.name + "` is both a layer role and a slot of `slots`");
-            if (s.heightBlend) s.heightBlend->slot = l.name + "_" + s.heightBlend->slot;
+            if (s.heightBlend) {
+                heightRefs_.emplace_back(p + "/height_blend/slot", s.heightBlend->slot);
+                s.heightBlend->slot = l.name + "_" + s.heightBlend->slot;
+            }
             s.name = l.name + "_" + s.name;
             l.slots[role] = m.slots.size();
             m.slots.push_back(std::move(s));
@@ -176,23 +181,43 @@ private:
             report(Code::MisplacedKey, pointer + "/height", "`height` applies to `mode` \"height\"", {}, true);
     }
 
-    void heightRole(const json& v, const std::string& p, Layers& layers) {
-        const std::string name = string(v, p);
+    // The index of the scalar role `name` holding heights; nothing after reporting when there is none (a non-string
+    // `name`, already reported by the string read, is not reported again).
+    std::optional<size_t> heightsRole(const std::string& name, bool isString, const std::string& p, const Layers& layers) {
         std::vector<std::string> names;
         for (const Layers::Role& r : layers.roles) names.push_back(r.name);
         const auto it = std::find(names.begin(), names.end(), name);
         if (it == names.end()) {
             std::string hint;
             if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
-            if (v.is_string())
+            if (isString)
                 report(Code::UnknownReference, p, "no role `" + name + "` in the layers; expected one of " + roleList(layers), hint);
-        } else if (!kindRow(layers.roles[size_t(it - names.begin())].kind).oneChannel) {
-            report(Code::WrongSlotKind, p,
-                   "role `" + name + "` is of kind `" + std::string(toString(layers.roles[size_t(it - names.begin())].kind)) +
-                       "`; heights come from a role of kind " + kindsWhere(&SlotKindRow::oneChannel));
-        } else {
-            layers.heightRole = size_t(it - names.begin());
+            return std::nullopt;
         }
+        const size_t role = size_t(it - names.begin());
+        if (!kindRow(layers.roles[role].kind).oneChannel) {
+            report(Code::WrongSlotKind, p,
+                   "role `" + name + "` is of kind `" + std::string(toString(layers.roles[role].kind)) +
+                       "`; heights come from a role of kind " + kindsWhere(&SlotKindRow::oneChannel));
+            return std::nullopt;
+        }
+        return role;
+    }
+
+    void heightRole(const json& v, const std::string& p, Layers& layers) {
+        if (std::optional<size_t> role = heightsRole(string(v, p), v.is_string(), p, layers)) layers.heightRole = role;
+    }
+
+    // A layer's slot blends its tiles by the heights of a role of its own layer; in height mode, by the heights the
+    // layers blend by, so that one height field decides which tile and which layer is on top.
+    void heightBlendRole(const std::string& p, const std::string& name, const Layers& layers) {
+        const std::optional<size_t> role = heightsRole(name, true, p, layers);
+        if (!role || !layers.heightRole || *layers.heightRole == *role) return;
+        const std::string heights = layers.roles[*layers.heightRole].name;
+        report(Code::ConflictingSettings, p,
+               "the layers blend by the heights of role `" + heights +
+                   "` (/layer_blend/height); a layer's tiles blend by the same heights, not by role `" + name + "`'s",
+               "name `" + heights + "`");
     }
 
     // Splat map i holds the weights of layers 4i .. 4i+3 in r, g, b, a.
@@ -227,6 +252,7 @@ private:
     }
 
     const LayerReaders& read_;
+    std::vector<std::pair<std::string, std::string>> heightRefs_;  // per layer slot with height_blend: its pointer, role
 };
 
 }  // namespace

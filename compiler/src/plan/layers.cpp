@@ -72,7 +72,10 @@ void planLayers(const Material& material, ShaderPlan& plan) {
     lp.width = layers.width;
     lp.skipBelow = layers.skipBelow;
     lp.coverage = coverage(material, layers);
-    for (size_t s : layers.splats) lp.splats.push_back(planIndex(material, s, plan));
+    for (size_t s : layers.splats) {
+        lp.splats.push_back(planIndex(material, s, plan));
+        plan.slots[lp.splats.back()].explicitGradients = true;  // read by the roles' shared fill, behind a non-uniform test
+    }
     // One layer's slot read in every pixel where the layer is kept: its share of the figures.
     auto add = [&](size_t layer, SlotPlan& sp) {
         sp.explicitGradients = true;  // read inside the layer's branch: plain tiling's fetch takes the role's gradients
@@ -89,14 +92,14 @@ void planLayers(const Material& material, ShaderPlan& plan) {
         role.type = plan.slots[role.slots.front()].type;
         lp.roles.push_back(std::move(role));
     }
-    // The height blend reads every kept layer's height in each role's weights.
+    // The weights, shared by the roles (templates/library/layers.glsl): the splat maps, and in height mode every kept
+    // layer's height, read once per pixel.
     for (size_t l = 0; layers.heightRole && l < lp.count; ++l) {
         lp.heights.push_back(planIndex(material, layers.layers[l].slots[*layers.heightRole], plan));
-        for (size_t r = 0; r < lp.roles.size(); ++r) add(l, plan.slots[lp.heights.back()]);
+        add(l, plan.slots[lp.heights.back()]);
     }
-    // Each role's function reads the splat maps.
-    lp.worstFetches += double(lp.splats.size() * lp.roles.size());
-    lp.expectedFetches += double(lp.splats.size() * lp.roles.size());
+    lp.worstFetches += double(lp.splats.size());
+    lp.expectedFetches += double(lp.splats.size());
     plan.layers = std::move(lp);
 }
 
