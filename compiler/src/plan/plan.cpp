@@ -6,6 +6,7 @@
 
 #include "hexc/files.h"
 #include "hexc/suggest.h"
+#include "common/by_enum.h"
 #include "common/templates.h"
 #include "common/text.h"
 #include "plan/layers.h"
@@ -125,7 +126,7 @@ SlotPlan planSlot(const Slot& slot, bool all) {
 }
 
 LatticePlan planLattice(const HexTiling& h, bool all) {
-    static const char* kMaskLattices[] = {"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"};
+    static constexpr auto kMaskLattices = byEnum<Mask::Noise3>({"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"});
     LatticePlan l;
     l.section = h.mode == HashMode::Paper       ? "lattice.paper"
                 : h.mode == HashMode::MaterialX ? "lattice.materialx"
