@@ -107,9 +107,7 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     sp.type = triplanar && kindRow(slot.kind).derivative ? "vec3" : kindRow(slot.kind).glslType;
     sp.projection = h.projection;
     sp.explicitGradients = triplanar;
-    sp.taps = h.maskTaps();
     sp.sharedLod = h.lod == Lod::Shared;
-    sp.adaptive = h.enabled && h.adaptive();
     // Tiles turn in texel-isotropic space (docs/material-format.md#per-tile-transforms); the paper's mode turns st.
     if (h.mode != HashMode::Paper && slot.width > 0 && slot.height > 0) sp.aspect = double(slot.width) / slot.height;
     // One tap needs no falloff metric: it has a single sample to weigh.
@@ -194,6 +192,8 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
         sp.srgb = slot.shaderDecodes();
         sp.luma = slot.hex.lumacoeffs;
         sp.channel = slot.channel;
+        sp.taps = slot.hex.taps == 1 ? 1 : slot.hex.maskTaps();
+        sp.adaptive = slot.hex.adaptive();
         sp.binding = binding++;
         if (sp.histogram) plan.luts.push_back(plan.slots.size());
         plan.slots.push_back(sp);
