@@ -1,5 +1,5 @@
-// The manifest describes what the plan decided: what the shader does with each slot (kind, taps, channel, flip, sRGB
-// decoding, luma weights, height map) comes from the slot's plan, not from the material behind it.
+// The manifest describes what the plan decided: what the shader does with each slot (kind, taps, flip, sRGB decoding,
+// luma weights, height map) comes from the slot's plan, not from the material behind it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,7 +19,6 @@ Material withDecisionsChanged(Material m) {
     for (Slot& s : m.slots) {
         s.hex.taps = s.hex.taps == 1 ? 2 : 1;
         s.flipY = !s.flipY;
-        s.channel = (s.channel + 1) % 4;
         s.hex.lumacoeffs = {0.5, 0.25, 0.25};
     }
     return m;
@@ -52,7 +51,6 @@ TEST(Manifest, ShowsThePlansDecisions) {
     normal.adaptive = true;
     normal.flipY = true;
     roughness.taps = 1;
-    roughness.channel = 2;
     const nlohmann::json slots = buildManifest(m, plan, nlohmann::json::object())["slots"];
     EXPECT_EQ(slots[0]["hextiling"]["taps"], 2);
     EXPECT_EQ(slots[0]["decode"], "shader");
@@ -60,8 +58,6 @@ TEST(Manifest, ShowsThePlansDecisions) {
     EXPECT_EQ(slots[1]["flip_y"], true);
     EXPECT_EQ(slots[1]["normal_green"], "down (DirectX)");
     EXPECT_EQ(slots[2]["hextiling"]["taps"], 1);
-    EXPECT_EQ(slots[2]["channel"], "b");
-    EXPECT_EQ(slots[2]["reads"], "b");
 }
 
 }  // namespace

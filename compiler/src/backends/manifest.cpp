@@ -66,13 +66,14 @@ nlohmann::json hextilingEntry(const HexTiling& h, const SlotPlan& sp) {
             {"offsetsteps", {h.offsetSteps[0], h.offsetSteps[1]}}};
 }
 
-// The slot's entry. What the shader does with the slot (its kind, taps, channel, flip, sRGB decoding, luma weights,
-// height map) is the plan's; the texture's file, size and colour space and the settings' values are the material's.
+// The slot's entry. What the shader does with the slot (its kind, taps, flip, sRGB decoding, luma weights, height
+// map) is the plan's; the texture's file, size, colour space and channel and the settings' values are the material's
+// (a packed slot's plan reads another channel, of the packed texture: its entry in packed_textures).
 nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
     const SlotKindRow& kind = kindRow(sp.kind);
-    const std::string channel(1, "rgba"[sp.channel]);
+    const std::string channel(1, "rgba"[s.channel]);
     nlohmann::json slot = {
         {"name", sp.name},
         {"kind", toString(sp.kind)},
