@@ -380,7 +380,8 @@ inline std::vector<ExecCase> execCases(const std::filesystem::path& folder) {
     std::vector<ExecCase> cases;
     for (const std::string& name : names) {
         std::ifstream in(folder / (name + ".json"));
-        for (const std::string target : nlohmann::json::parse(in).at("targets")) cases.push_back({folder, name, executedTarget(target)});
+        const nlohmann::json c = nlohmann::json::parse(in);  // held: a range-for over a temporary's member dangles
+        for (const std::string target : c.at("targets")) cases.push_back({folder, name, executedTarget(target)});
     }
     return cases;
 }
