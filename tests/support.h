@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "hexc/material.h"
 #include "vk/runner.h"
 
 namespace hexc::test {
@@ -20,6 +21,13 @@ inline vk::Runner* runner(std::string* why) {
     static std::unique_ptr<vk::Runner> r = vk::Runner::create(&reason);
     *why = reason;
     return r.get();
+}
+
+// A material file the test relies on, parsed; an exception with its diagnostics when it does not parse.
+inline Material loadMaterial(const std::filesystem::path& file) {
+    ParseResult r = parseMaterialFile(file);
+    if (!r.material) throw std::runtime_error(file.string() + "\n" + formatAll(r.diagnostics));
+    return *r.material;
 }
 
 // A file's bytes ("" when it cannot be read).

@@ -18,6 +18,7 @@
 #include "support.h"
 
 using namespace hexc;
+using hexc::test::loadMaterial;
 using hexc::test::readFile;
 using hexc::test::runHexc;
 
@@ -25,14 +26,8 @@ namespace {
 
 const char* kExamples[] = {"rock", "tiles", "rock_normal"};
 
-Material load(const std::string& path) {
-    ParseResult r = parseMaterialFile(path);
-    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
-    return *r.material;
-}
-
 CompileResult compileExample(const std::string& name, const CompileOptions& options = {}) {
-    CompileResult r = compile(load("materials/" + name + ".json"), options);
+    CompileResult r = compile(loadMaterial("materials/" + name + ".json"), options);
     EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
     return r;
 }
@@ -164,7 +159,7 @@ TEST(Compile, TemplateErrorsPointIntoTheTemplate) {
                         "void main() {\n    o = hexc_albedo(v_uv) + undefined_thing;\n}\n";
     CompileOptions options;
     options.templateFile = t;
-    CompileResult r = compile(load("materials/tiles.json"), options);
+    CompileResult r = compile(loadMaterial("materials/tiles.json"), options);
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.files.empty());
     ASSERT_FALSE(r.diagnostics.empty());
@@ -176,7 +171,7 @@ TEST(Compile, TemplateErrorsPointIntoTheTemplate) {
 // A library user may build a Material in code, skipping the parser's template check: compile() still answers
 // with a diagnostic, not an exception.
 TEST(Compile, UnknownBuiltinTemplateInACodeBuiltMaterialIsADiagnostic) {
-    Material m = load("materials/rock.json");
+    Material m = loadMaterial("materials/rock.json");
     m.templ = TemplateRef::builtin("pbr");
     CompileResult r;
     ASSERT_NO_THROW(r = compile(m));
@@ -192,7 +187,7 @@ TEST(Compile, TemplateWithoutInjectionPointIsRejected) {
         std::ofstream(t) << "#version 450\n" << body << "layout(location = 0) out vec4 o;\nvoid main() { o = vec4(1.0); }\n";
         CompileOptions options;
         options.templateFile = t;
-        CompileResult r = compile(load("materials/tiles.json"), options);
+        CompileResult r = compile(loadMaterial("materials/tiles.json"), options);
         ASSERT_FALSE(r.ok()) << body;
         EXPECT_EQ(
             r.diagnostics[0].format(),
@@ -201,7 +196,7 @@ TEST(Compile, TemplateWithoutInjectionPointIsRejected) {
 }
 
 TEST(Compile, SlotsTheTemplateDoesNotReadAreLeftOutWithAWarning) {
-    Material m = load("materials/rock.json");
+    Material m = loadMaterial("materials/rock.json");
     m.templ = TemplateRef::builtin("unlit");
     CompileResult r = compile(m);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
@@ -215,7 +210,7 @@ TEST(Compile, SlotsTheTemplateDoesNotReadAreLeftOutWithAWarning) {
 }
 
 TEST(Compile, WeightsTemplateUsesTheFirstSlot) {
-    Material m = load("materials/rock.json");
+    Material m = loadMaterial("materials/rock.json");
     m.templ = TemplateRef::builtin("weights");
     CompileResult r = compile(m);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
@@ -244,8 +239,8 @@ TEST(Compile, TargetsEmittedAtOnceMatchOneAtATime) {
         CompileOptions alone = base, atOnce = base;
         alone.concurrentTargets = false;
         atOnce.concurrentTargets = true;
-        const CompileResult a = compile(load(std::string("materials/") + name + ".json"), alone);
-        const CompileResult b = compile(load(std::string("materials/") + name + ".json"), atOnce);
+        const CompileResult a = compile(loadMaterial(std::string("materials/") + name + ".json"), alone);
+        const CompileResult b = compile(loadMaterial(std::string("materials/") + name + ".json"), atOnce);
         EXPECT_EQ(formatAll(a.diagnostics), formatAll(b.diagnostics)) << name;
         ASSERT_EQ(a.files.size(), b.files.size()) << name;
         for (size_t i = 0; i < a.files.size(); ++i) {
@@ -253,7 +248,7 @@ TEST(Compile, TargetsEmittedAtOnceMatchOneAtATime) {
             EXPECT_TRUE(a.files[i].contents == b.files[i].contents) << a.files[i].name;
         }
     }
-    EXPECT_FALSE(compile(load("materials/rock.json"), noSpace).ok());
+    EXPECT_FALSE(compile(loadMaterial("materials/rock.json"), noSpace).ok());
 }
 
 }  // namespace
@@ -420,6 +415,11 @@ TEST(Library, WritesAnIncludeFilePerTarget) {
         EXPECT_EQ(text->find("#version"), std::string::npos);
     }
     EXPECT_NE(spvasm.find("OpFunction"), std::string::npos);
+    // The banner names the library's source, the folder of its parts (each file's own banner, its first two lines).
+    for (const std::string* text : {&hlsl, &glsl, &msl})
+        EXPECT_NE(text->substr(0, text->find("Do not edit")).find("\n// templates/library/hextiling/ (its parts, joined in order)"),
+                  std::string::npos)
+            << text->substr(0, 200);
     ASSERT_EQ(runHexc("library --target hlsl -o " + (dir / "again").string(), &err), 0) << err;
     EXPECT_EQ(readFile(dir / "again" / "hexc_hextiling.hlsl"), hlsl);
 }
@@ -499,7 +499,7 @@ TEST(Readable, DebugAndCombinedSamplersAreRefusedTogether) {
     CompileOptions options;
     options.debug = true;
     options.layout.vulkan.combined = 1;
-    CompileResult r = compile(load("materials/rock.json"), options);
+    CompileResult r = compile(loadMaterial("materials/rock.json"), options);
     ASSERT_FALSE(r.ok());
     EXPECT_NE(formatAll(r.diagnostics).find("--debug: error[HX300]: --debug keeps hexc's functions"), std::string::npos)
         << formatAll(r.diagnostics);

@@ -16,16 +16,13 @@
 #include "vk/render.h"
 
 using namespace hexc;
+using hexc::test::loadMaterial;
 using hexc::test::runner;
 using json = nlohmann::json;
 
 namespace {
 
-Material rock() {
-    ParseResult r = parseMaterialFile("materials/rock.json");
-    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
-    return *r.material;
-}
+Material rock() { return loadMaterial("materials/rock.json"); }
 
 struct NamedLayout {
     const char* name;

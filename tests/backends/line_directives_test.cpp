@@ -11,17 +11,12 @@
 #include "support.h"
 
 using namespace hexc;
+using hexc::test::loadMaterial;
 using hexc::test::runHexc;
 
 namespace {
 
 const LineDirectives kModes[] = {LineDirectives::None, LineDirectives::Functions, LineDirectives::Statements};
-
-Material load(const std::string& path) {
-    ParseResult r = parseMaterialFile(path);
-    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
-    return *r.material;
-}
 
 CompileResult compileDebug(const Material& m, LineDirectives mode) {
     CompileOptions options;
@@ -64,7 +59,7 @@ const std::string& textOf(const CompileResult& r, const std::string& suffix) {
 
 // rock under the built-in `lit` template, on each text target and in each mode.
 TEST(LineDirectives, EachModeOnEveryTextTarget) {
-    const Material rock = load("materials/rock.json");
+    const Material rock = loadMaterial("materials/rock.json");
     std::map<LineDirectives, CompileResult> results;
     for (LineDirectives mode : kModes) {
         results[mode] = compileDebug(rock, mode);
@@ -114,7 +109,7 @@ TEST(LineDirectives, ATemplateFileIsNamedAsTheMaterialWroteIt) {
         std::ofstream(dir / "m.json") << R"({"name": "m", "template": "shaders/)" + escaped +
                                              R"(", "slots": [{"name": "albedo", "kind": "color", "texture": ")" +
                                              std::filesystem::absolute("materials/textures/rock_albedo.png").string() + R"("}]})";
-        const CompileResult r = compileDebug(load((dir / "m.json").string()), LineDirectives::Functions);
+        const CompileResult r = compileDebug(loadMaterial((dir / "m.json").string()), LineDirectives::Functions);
         ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
         std::string shown = "shaders/" + name;
         std::replace(shown.begin(), shown.end(), '"', '\'');

@@ -63,6 +63,15 @@ TEST(TargetTable, BazelPackageListsTheTable) {
     EXPECT_EQ(starlarkStrings(bzl, "_DEFAULT_TARGETS"), defaultNames());
 }
 
+TEST(TargetTable, CommandLineDocsListTheTable) {
+    const std::string docs = readFile("docs/cli.md");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(docs, m, std::regex("`--target LIST` [^\\n]*comma-separated subset of `([^`]*)`")));
+    std::string names;
+    for (const std::string& name : targetNames()) names += (names.empty() ? "" : ",") + name;
+    EXPECT_EQ(m[1].str(), names);
+}
+
 TEST(TargetTable, ManifestSchemaDescribesEveryTarget) {
     const nlohmann::json schema = nlohmann::json::parse(readFile("docs/manifest.schema.json"));
     std::vector<std::string> keys;

@@ -1,5 +1,6 @@
-// Execution tests case by case: the cases as data (tests/execution/cases/) and the tables of odd-sized textures,
-// adaptive taps and packed textures, each on every executed target against the fp64 CPU reference.
+// Execution tests case by case, each table of cases a folder of data (checks.h, "Cases as data"): the cases of
+// tests/execution/cases/, odd-sized textures (odd_sizes/), adaptive taps (adaptive/) and packed textures (packed/),
+// each on its targets against the fp64 CPU reference.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,15 +37,8 @@ namespace {
 // (0.75 texel per pixel along the larger axis: level 0) and minified (4 texels per pixel: exactly level 2, or the
 // last level when the chain is shorter), with tile rotation off so the footprint stays axis-aligned: lavapipe's
 // log2 of the footprint is exact only at a power of two, which a rotated footprint on a non-square texture is not.
-struct OddSize {
-    const char* name;
-    int width, height;
-    bool minified;
-    bool histogram = false;  // "blend": "histogram": its Gaussian texture has the odd size, its table odd levels
-    bool sharedLod = false;  // "lod": "shared": the level from sqrt(width * height), between two levels here
-};
-void PrintTo(const OddSize& c, std::ostream* os) { *os << c.name; }
-
+// A case: "size" [width, height], "minified", "blend" (histogram: its Gaussian texture has the odd size, its table
+// odd levels), "lod" (shared: the level from sqrt(width * height), between two levels here).
 std::filesystem::path cropOfRock(int width, int height) {
     const Texture rock = loadTexture("materials/textures/rock_albedo.png", false);
     Image out;
@@ -61,38 +55,45 @@ std::filesystem::path cropOfRock(int width, int height) {
     return file;
 }
 
-class OddSizes : public testing::TestWithParam<std::tuple<OddSize, vk::ExecutedTarget>> {};
+// A slot's JSON text, its texture "CROP_<w>x<h>" replaced by that crop of the rock albedo (cropOfRock).
+std::string withCrop(nlohmann::json slot) {
+    int width = 0, height = 0;
+    if (std::sscanf(slot.at("texture").get<std::string>().c_str(), "CROP_%dx%d", &width, &height) == 2)
+        slot["texture"] = cropOfRock(width, height).string();
+    return slot.dump();
+}
+
+// A view of 96 x 96 pixels at (0.3, 0.45) of a texture `larger` texels across under `tiling`: magnified, 0.75 texel
+// per pixel (level 0), or minified, 4 (level 2, or the last level of a shorter chain). Returns it and its level.
+std::pair<View, int> cropView(int larger, double tiling, bool minified) {
+    const double uvPerPixel = (minified ? 4.0 : 0.75) / (tiling * larger);
+    const int levels = std::bit_width(unsigned(larger));
+    return {View{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}}, minified ? std::min(2, levels - 1) : 0};
+}
+
+class OddSizes : public testing::TestWithParam<ExecCase> {};
 
 TEST_P(OddSizes, MatchReference) {
     REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
-    const std::filesystem::path file = cropOfRock(c.width, c.height);
-    Material m = material(R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": ")" + file.string() +
-                          R"(", "hextiling": {"tiling": 4, "rotation": 0, "blend": ")" + (c.histogram ? "histogram" : "falloff") +
-                          R"(", "lod": ")" + (c.sharedLod ? "shared" : "gradients") + R"("}})");
-    const int larger = std::max(c.width, c.height), levels = std::bit_width(unsigned(larger));
-    const double uvPerPixel = (c.minified ? 4.0 : 0.75) / (4.0 * larger);
-    const View view{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}};
-    const int level = c.minified ? std::min(2, levels - 1) : 0;
+    const nlohmann::json c = readCase(GetParam(), {"size", "minified", "blend", "lod"});
+    const int width = c.at("size")[0], height = c.at("size")[1];
+    const bool histogram = c.at("blend") == "histogram";
+    const Material m =
+        material(withCrop({{"name", "albedo"},
+                           {"kind", "color"},
+                           {"colorspace", "linear"},
+                           {"texture", "CROP_" + std::to_string(width) + "x" + std::to_string(height)},
+                           {"hextiling", {{"tiling", 4}, {"rotation", 0}, {"blend", c.at("blend")}, {"lod", c.at("lod")}}}}));
+    const auto [view, level] = cropView(std::max(width, height), 4.0, c.at("minified"));
     const double es = sampleError(level, false);
-    Check check = c.histogram ? checkHistogram(m, view, level, on(target))
-                              : checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, on(target), es, es, 4);
-    report(c.name, check);
+    const vk::ExecutedTarget target = GetParam().target;
+    Check check = histogram ? checkHistogram(m, view, level, on(target))
+                            : checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, on(target), es, es, 4);
+    report(GetParam().name.c_str(), check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Exec, OddSizes,
-    testing::Combine(testing::Values(OddSize{"127x80", 127, 80, false}, OddSize{"127x80_minified", 127, 80, true},
-                                     OddSize{"1x64", 1, 64, false}, OddSize{"1x64_minified", 1, 64, true}, OddSize{"3x3", 3, 3, false},
-                                     OddSize{"3x3_minified", 3, 3, true}, OddSize{"127x127_minified", 127, 127, true},
-                                     OddSize{"127x80_histogram", 127, 80, false, true},
-                                     OddSize{"127x80_histogram_minified", 127, 80, true, true},
-                                     OddSize{"3x3_histogram_minified", 3, 3, true, true},
-                                     OddSize{"127x80_shared_lod_minified", 127, 80, true, false, true},
-                                     OddSize{"1x64_shared_lod_minified", 1, 64, true, false, true}),
-                     testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-    [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+INSTANTIATE_TEST_SUITE_P(Exec, OddSizes, testing::ValuesIn(execCases("tests/execution/odd_sizes")), caseTestName);
 
 // ---- Adaptive taps ----------------------------------------------------------------------------------------
 // "taps": "adaptive" skips a tap when its bound says the result moves by less than e = HexTiling::kAdaptiveError times
@@ -108,76 +109,26 @@ INSTANTIATE_TEST_SUITE_P(
 //    sqrt(2) max|d| in magnitude (a filtered sample's |x| / z is at most its texels' largest, then rotated), so
 //    S = 2 sqrt(2) max|d|. The bound is computed in float32 (relative error ~1e-6 on a threshold of 1/255) and the two
 //    blends round independently (a few 2^-24): 1e-6 more.
-struct AdaptiveCase {
-    const char* name;
-    const char* slot;  // "TAPS" stands for the taps setting, "TEXTURE" for an odd-sized crop of the rock albedo
-    bool minified;
-};
-void PrintTo(const AdaptiveCase& c, std::ostream* os) { *os << c.name; }
-
-const AdaptiveCase kAdaptiveCases[] = {
-    {"color_full_quality",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
-     false},
-    {"color_full_quality_minified",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
-     true},
-    {"color_no_gain",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 4TAPS}})",
-     false},
-    {"color_checker",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "mask": "checker", "maskscale": 3, "falloff": 0.7TAPS}})",
-     false},
-    {"color_odd_127x80",
-     R"({"name": "albedo", "kind": "color", "colorspace": "linear", "texture": "TEXTURE", "hextiling": {"tiling": 4, "rotation": 0, "falloff": 0.75TAPS}})",
-     false},
-    {"scalar_roughness",
-     R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
-     false},
-    {"scalar_roughness_shared_lod_minified",
-     R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 4, "falloff": 0.75, "lod": "shared"TAPS}})",
-     true},
-    {"normal_full_quality",
-     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
-     false},
-    {"normal_flip_y_minified",
-     R"({"name": "normal", "kind": "normal", "flip_y": true, "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "falloff": 0.75TAPS}})",
-     true},
-    // The corners of the settings: exponent 64 (w^64 down to 3e-31 at a lattice vertex), falloffcontrast near 1 and the
-    // gain near its step (falloff 0.99, exponent k = 6.6). The last case's settings are exact in float32 (1 - 2^-20 and
-    // 1 - 2^-19, k = 19): the gain raises a weight to the 19th power, so float32's rounding of 0.999999 (1.3% on 1 - r)
-    // would move its bounds by a quarter, and the GPU's choice of taps away from the reference's, for that reason alone.
-    {"color_exponent64_contrast0995_falloff099",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"tiling": 4, "exponent": 64, "falloffcontrast": 0.995, "falloff": 0.99TAPS}})",
-     false},
-    {"color_exponent64_contrast09_falloff09_minified",
-     R"({"name": "albedo", "kind": "color", "texture": "textures/tiles_albedo.png", "hextiling": {"tiling": 4, "exponent": 64, "falloffcontrast": 0.9, "falloff": 0.9TAPS}})",
-     true},
-    {"normal_exponent64_contrast_1_minus_2_20_falloff_1_minus_2_19",
-     R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png", "hextiling": {"tiling": 4, "exponent": 64, "falloffcontrast": 0.99999904632568359375, "falloff": 0.999998092651367188TAPS}})",
-     false},
-};
-
-Material adaptiveMaterial(const AdaptiveCase& c, bool adaptive) {
-    std::string slot = c.slot;
-    auto replace = [&](const std::string& what, const std::string& with) {
-        if (size_t at = slot.find(what); at != std::string::npos) slot.replace(at, what.size(), with);
-    };
-    replace("TAPS", adaptive ? R"(, "taps": "adaptive")" : "");
-    if (slot.find("TEXTURE") != std::string::npos) replace("TEXTURE", cropOfRock(127, 80).string());
-    return material(slot);
+// A case: "slots", its one slot (exact 3-tap; the test adds "taps": "adaptive"), "minified".
+Material adaptiveMaterial(const nlohmann::json& c, bool adaptive) {
+    nlohmann::json slot = c.at("slots").at(0);
+    if (adaptive) slot["hextiling"]["taps"] = "adaptive";
+    return material(withCrop(slot));
 }
 
-class AdaptiveTaps : public testing::TestWithParam<std::tuple<AdaptiveCase, vk::ExecutedTarget>> {};
+class AdaptiveTaps : public testing::TestWithParam<ExecCase> {};
 
 TEST_P(AdaptiveTaps, FetchLikeTheReferenceAndStayWithinTheBoundOfThreeTaps) {
     REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
+    const nlohmann::json c = readCase(GetParam(), {"slots", "minified"});
+    const vk::ExecutedTarget target = GetParam().target;
+    const char* name = GetParam().name.c_str();
     const Material m = adaptiveMaterial(c, true), exact = adaptiveMaterial(c, false);
     const Slot& slot = m.slots[0];
-    const bool normal = slot.kind == SlotKind::Normal;
-    const View view = c.minified ? kMinified : kMagnified;
-    const int level = c.minified ? 2 : 0;
+    const bool normal = kindRow(slot.kind).derivative;
+    const bool minified = c.at("minified");
+    const View view = minified ? kMinified : kMagnified;
+    const int level = minified ? 2 : 0;
     const reference::SampledTexture tex = sampled(slot);
     const TextureBounds b = bounds(tex);
     const double e = HexTiling::kAdaptiveError, spread = normal ? 2 * std::sqrt(2.0) * b.maxDeriv : b.spread;
@@ -185,7 +136,7 @@ TEST_P(AdaptiveTaps, FetchLikeTheReferenceAndStayWithinTheBoundOfThreeTaps) {
     const double es = sampleError(level, slot.colorSpace == ColorSpace::Srgb),
                  ed = 2 * sampleError(level, false) * (1 + b.maxDeriv) / b.minZ;
     const double ex = normal ? ed : es, em = normal ? std::sqrt(2.0) * ed : es;
-    const int channels = normal ? 2 : slot.kind == SlotKind::Scalar ? 1 : 4;
+    const int channels = normal ? 2 : kindRow(slot.kind).oneChannel ? 1 : 4;
 
     // 1. The taps fetched.
     const Image weights = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view, target);
@@ -203,33 +154,31 @@ TEST_P(AdaptiveTaps, FetchLikeTheReferenceAndStayWithinTheBoundOfThreeTaps) {
             if (gpu != cpu && !differs[p]) differs[p] = true, ++different;
         }
     const double n = double(ref.size());
-    std::printf("  %-28s %-5s: fetches per pixel %.3f (reference %.3f), %zu pixels fetch other taps\n", c.name, targetName(target).c_str(),
+    std::printf("  %-28s %-5s: fetches per pixel %.3f (reference %.3f), %zu pixels fetch other taps\n", name, targetName(target).c_str(),
                 gpuFetches / n, refFetches / n, different);
     EXPECT_LE(different, ref.size() / 100);
     EXPECT_LT(gpuFetches / n, 3.0);  // something is skipped
 
     // 2. The value against the adaptive reference.
-    const int blended = slot.kind == SlotKind::Scalar ? 1 : channels;
+    const int blended = kindRow(slot.kind).oneChannel ? 1 : channels;
     const vk::RenderOutput output = normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
     Check check = checkAgainstReference(m, output, view, on(target), channels, [&](const reference::SlotResult& r, size_t p) {
         return differs[p] ? 2 * e * spread + pixelTolerance(ref3[p], ex, em, slot.hex, blended) + 1e-6
                           : pixelTolerance(r, ex, em, slot.hex, blended);
     });
-    report(c.name, check);
+    report(name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 
     // 3. Against exact 3-tap on the GPU.
     const Image adaptive = on(target)(m, output, view), full = on(target)(exact, output, view);
     const Errors moved = compare(adaptive, full, channels == 1 ? 1 : normal ? 2 : 3);
     const double bound = e * spread + 1e-6;
-    std::printf("  %-28s %-5s: adaptive against 3 taps max %.2e (%.2f/255), bound %.2e\n", c.name, targetName(target).c_str(), moved.max,
+    std::printf("  %-28s %-5s: adaptive against 3 taps max %.2e (%.2f/255), bound %.2e\n", name, targetName(target).c_str(), moved.max,
                 moved.max * 255, bound);
     EXPECT_LE(moved.max, bound);
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, AdaptiveTaps, testing::Combine(testing::ValuesIn(kAdaptiveCases), kExecutedTargets), [](const auto& info) {
-    return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param));
-});
+INSTANTIATE_TEST_SUITE_P(Exec, AdaptiveTaps, testing::ValuesIn(execCases("tests/execution/adaptive")), caseTestName);
 
 // ---- Packed textures ---------------------------------------------------------------------------------------
 // "pack": true (docs/material-format.md#pack) under tests/templates/packed.glsl, which reads every slot and shows
@@ -237,38 +186,14 @@ INSTANTIATE_TEST_SUITE_P(Exec, AdaptiveTaps, testing::Combine(testing::ValuesIn(
 // texels byte for byte, so every slot is held to its unpacked tolerance against its own fp64 reference, which samples
 // the slot's own texture: an sRGB colour slot's sample error for RGB, the linear one for a scalar in the sRGB texture's
 // alpha (alpha stays linear), each slot blended with its own settings from the shared samples.
-struct PackedCase {
-    const char* name;
-    const char* slots;  // slot JSON objects; null: a colour slot and a scalar one on an odd-sized crop (packedOddCrop)
-    bool minified;
-    const char* hextiling = R"({"tiling": 4})";
-};
-void PrintTo(const PackedCase& c, std::ostream* os) { *os << c.name; }
-
-const char* const kPackedAlbedoRoughness =
-    R"({"name": "color", "kind": "color", "texture": "textures/rock_albedo.png", "hextiling": {"falloff": 0.75}},
-       {"name": "s3", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"falloff": 0.75}})";
-// Four scalars with blends of their own: each slot's weights come from its own channel of the shared samples.
-const char* const kPackedScalars =
-    R"({"name": "s0", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"falloff": 0.75}},
-       {"name": "s1", "kind": "scalar", "texture": "textures/rock_height.png", "hextiling": {"falloffcontrast": 0.3}},
-       {"name": "s2", "kind": "scalar", "channel": "g", "texture": "textures/rock_albedo.png", "hextiling": {"exponent": 3}},
-       {"name": "s3", "kind": "scalar", "channel": "b", "texture": "textures/rock_albedo.png", "hextiling": {"falloff": 0.9}})";
-
-std::string packedOddCrop() {
-    const std::string crop = cropOfRock(127, 80).string();
-    return R"({"name": "color", "kind": "color", "colorspace": "linear", "texture": ")" + crop + R"("},
-              {"name": "s3", "kind": "scalar", "channel": "g", "texture": ")" +
-           crop + R"("})";
-}
-
+// A case: "slots", "hextiling" (the material's), "minified".
 // Each slot's output channels against its reference, each pixel within the slot's tolerance (pixelTolerance).
 Check checkPacked(const Material& m, const View& view, int level, const Draw& draw) {
     const Image gpu = draw(m, vk::RenderOutput::Shaded, view);
     Check check;
     Image cpu = gpu;
     for (const Slot& slot : m.slots) {
-        const bool colour = slot.kind == SlotKind::Color;
+        const bool colour = !kindRow(slot.kind).oneChannel;  // normal maps are not packed
         const size_t first = colour ? 0 : size_t(slot.name[1] - '0'), count = colour ? 3 : 1;
         const double es = sampleError(level, slot.colorSpace == ColorSpace::Srgb);
         const std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view);
@@ -290,13 +215,15 @@ Check checkPacked(const Material& m, const View& view, int level, const Draw& dr
     return check;
 }
 
-class PackedPath : public testing::TestWithParam<std::tuple<PackedCase, vk::ExecutedTarget>> {};
+class PackedPath : public testing::TestWithParam<ExecCase> {};
 
 TEST_P(PackedPath, EverySlotMatchesItsReference) {
     REQUIRE_VULKAN();
-    const auto& [c, target] = GetParam();
+    const nlohmann::json c = readCase(GetParam(), {"slots", "hextiling", "minified"});
+    std::string slots;
+    for (const nlohmann::json& slot : c.at("slots")) slots += (slots.empty() ? "" : ", ") + withCrop(slot);
     ParseResult r = parseMaterial(R"({"name": "packed", "template": "../tests/templates/packed.glsl", "pack": true, "hextiling": )" +
-                                      std::string(c.hextiling) + R"(, "slots": [)" + (c.slots ? c.slots : packedOddCrop()) + "]}",
+                                      c.at("hextiling").dump() + R"(, "slots": [)" + slots + "]}",
                                   "materials/packed.json");
     ASSERT_TRUE(r.material) << formatAll(r.diagnostics);
     const Material& m = *r.material;
@@ -310,26 +237,13 @@ TEST_P(PackedPath, EverySlotMatchesItsReference) {
                                                 })->contents);
     ASSERT_EQ(manifest["packed_textures"].size(), 1u);
     EXPECT_EQ(manifest["packed_textures"][0]["slots"].size(), m.slots.size());
-    const int larger = std::max(m.slots[0].width, m.slots[0].height), levels = std::bit_width(unsigned(larger));
-    const double tiling = m.slots[0].hex.tiling[0];
-    const double uvPerPixel = (c.minified ? 4.0 : 0.75) / (tiling * larger);
-    const View view{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}};
-    Check check = checkPacked(m, view, c.minified ? std::min(2, levels - 1) : 0, on(target));
-    report(c.name, check);
+    const auto [view, level] = cropView(std::max(m.slots[0].width, m.slots[0].height), m.slots[0].hex.tiling[0], c.at("minified"));
+    Check check = checkPacked(m, view, level, on(GetParam().target));
+    report(GetParam().name.c_str(), check);
     EXPECT_LE(check.worstRatio, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Exec, PackedPath,
-    testing::Combine(testing::Values(PackedCase{"albedo_roughness", kPackedAlbedoRoughness, false},
-                                     PackedCase{"albedo_roughness_minified", kPackedAlbedoRoughness, true},
-                                     PackedCase{"four_scalars", kPackedScalars, false},
-                                     PackedCase{"four_scalars_minified", kPackedScalars, true},
-                                     // Odd size, rotation off as in OddSizes.
-                                     PackedCase{"odd_127x80", nullptr, false, R"({"tiling": 4, "rotation": 0})"},
-                                     PackedCase{"odd_127x80_minified", nullptr, true, R"({"tiling": 4, "rotation": 0})"}),
-                     testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-    [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+INSTANTIATE_TEST_SUITE_P(Exec, PackedPath, testing::ValuesIn(execCases("tests/execution/packed")), caseTestName);
 
 // ---- Weights ----------------------------------------------------------------------------------------------
 // With falloffcontrast 0 the weights depend on the lattice alone. The GPU evaluates it in float32 on a uv that
@@ -355,7 +269,7 @@ Check checkWeights(const Material& m, const View& view, const Draw& draw) {
     return check;
 }
 
-// ---- Cases as data ------------------------------------------------------------------------------------------
+// ---- The cases of tests/execution/cases/ --------------------------------------------------------------------
 // tests/execution/cases/<name>.json: a material (inline, its paths read from materials/ like the examples'), the view
 // it is seen in, the targets it runs on and the tolerance rule it is held to; each file, on each of its targets, is one
 // test, "<name>_<target>". A rule is one of the checks above, with its derivation:
@@ -365,40 +279,6 @@ Check checkWeights(const Material& m, const View& view, const Draw& draw) {
 //   weights     checkWeights: the blend weights
 // A view is one of the named views above (magnified, minified, sphere, origin; the level each reads is fixed there) or
 // {"width", "height", "uv": [u0, v0, u1, v1], "level": the deepest mip level it reads}.
-const std::filesystem::path kCases = "tests/execution/cases";
-
-struct ExecCase {
-    std::string name;
-    vk::ExecutedTarget target;
-};
-void PrintTo(const ExecCase& c, std::ostream* os) { *os << c.name << "_" << targetName(c.target); }
-
-nlohmann::json readCase(const std::string& name) {
-    std::ifstream in(kCases / (name + ".json"));
-    return nlohmann::json::parse(in);
-}
-
-vk::ExecutedTarget executedTarget(const std::string& name) {
-    if (name == "spirv") return vk::ExecutedTarget::Spirv;
-    if (name == "hlsl") return vk::ExecutedTarget::Hlsl;
-    if (name == "glsl") return vk::ExecutedTarget::Glsl;
-    throw std::runtime_error("unknown target `" + name + "` (spirv, hlsl or glsl)");
-}
-
-// Every case file on each of its targets, in file name order.
-std::vector<ExecCase> execCases() {
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(kCases))
-        if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
-    std::vector<ExecCase> cases;
-    for (const std::string& name : names) {
-        const nlohmann::json c = readCase(name);
-        for (const std::string target : c.at("targets")) cases.push_back({name, executedTarget(target)});
-    }
-    return cases;
-}
-
 std::pair<View, int> caseView(const nlohmann::json& v) {
     if (v.is_object()) {
         const std::vector<double> uv = v.at("uv");
@@ -427,9 +307,7 @@ class ExecutionCase : public testing::TestWithParam<ExecCase> {};
 TEST_P(ExecutionCase, MatchesTheReferenceWithinItsRule) {
     REQUIRE_VULKAN();
     const ExecCase& param = GetParam();
-    const nlohmann::json c = readCase(param.name);
-    for (const auto& [key, value] : c.items())
-        ASSERT_TRUE(key == "rule" || key == "view" || key == "targets" || key == "why" || key == "material") << "unknown key " << key;
+    const nlohmann::json c = readCase(param, {"rule", "view", "material"});
     ParseResult r = parseMaterial(c.at("material").dump(), "materials/" + param.name + ".json");
     ASSERT_TRUE(r.material) << formatAll(r.diagnostics);
     const Check check = checkCase(c, *r.material, param.target);
@@ -437,7 +315,6 @@ TEST_P(ExecutionCase, MatchesTheReferenceWithinItsRule) {
     EXPECT_LE(check.worstRatio, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Exec, ExecutionCase, testing::ValuesIn(execCases()),
-                         [](const auto& info) { return info.param.name + "_" + targetName(info.param.target); });
+INSTANTIATE_TEST_SUITE_P(Exec, ExecutionCase, testing::ValuesIn(execCases("tests/execution/cases")), caseTestName);
 
 }  // namespace

@@ -182,7 +182,7 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
     for (size_t p = 0; p < ref.size(); ++p) {
         // Scalar slots show (s, s, s, 1) of the channel they read.
         for (int c = 0; c < channels; ++c)
-            cpu.rgba[p * 4 + size_t(c)] = float(ref[p].value[slot.kind == SlotKind::Scalar ? size_t(slot.channel) : size_t(c)]);
+            cpu.rgba[p * 4 + size_t(c)] = float(ref[p].value[kindRow(slot.kind).oneChannel ? size_t(slot.channel) : size_t(c)]);
         const double t = tolerance(ref[p], p);
         check.maxTolerance = std::max(check.maxTolerance, t);
         for (int c = 0; c < channels; ++c) {
@@ -203,7 +203,7 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
     const Slot& slot = m.slots[0];
     // The height map is 8-bit linear data, sampled at the view's levels like the slot.
     const double eh = sampleError(level, false);
-    const int blended = slot.kind == SlotKind::Scalar ? 1 : channels;
+    const int blended = kindRow(slot.kind).oneChannel ? 1 : channels;
     return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r, size_t) {
         return pixelTolerance(r, ex, em, slot.hex, blended) + (slot.heightBlend ? heightTolerance(r, eh, blended) : 0.0);
     });
@@ -221,7 +221,7 @@ inline Check checkColor(const Material& m, const View& view, int level, const Dr
     // slope (2.4 / 1.055 at 1).
     double es = slot.shaderDecodes() ? 2.4 / 1.055 * sampleError(level, false) : sampleError(level, slot.colorSpace == ColorSpace::Srgb);
     // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
-    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, draw, es, es, slot.kind == SlotKind::Scalar ? 1 : 4);
+    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, draw, es, es, kindRow(slot.kind).oneChannel ? 1 : 4);
 }
 
 inline Check checkColor(const Material& m, bool minified, const Draw& draw) {
@@ -266,7 +266,7 @@ inline std::array<double, 3> adjacentSteps(const reference::SampledTexture& t, i
 inline PixelTolerance histogramTolerance(const Slot& slot, const reference::SlotTextures& textures, int level) {
     const reference::SampledTexture& lut = *textures.lut;
     const std::array<double, 3> step = adjacentSteps(*textures.texture, level);
-    const size_t channels = slot.kind == SlotKind::Scalar ? 1 : 3;
+    const size_t channels = kindRow(slot.kind).oneChannel ? 1 : 3;
     return [&lut, step, channels](const reference::SlotResult& r, size_t) {
         const int n = lut.width(0), rows = lut.height(0);
         const int r0 = 1 + int(std::floor(std::clamp(r.lod, 0.0, rows - 2.0))), r1 = std::min(r0 + 1, rows - 1);
@@ -299,7 +299,7 @@ inline PixelTolerance histogramTolerance(const Slot& slot, const reference::Slot
 inline Check checkHistogram(const Material& m, const View& view, int level, const Draw& draw) {
     const Slot& slot = m.slots[0];
     const reference::SlotTextures textures(slot);
-    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, draw, slot.kind == SlotKind::Scalar ? 1 : 4,
+    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, draw, kindRow(slot.kind).oneChannel ? 1 : 4,
                                  histogramTolerance(slot, textures, level));
 }
 
@@ -337,7 +337,53 @@ inline Material rockWith(const std::string& slotName, const std::string& file = 
 
 // Its slot, magnified, against the reference: the derivative rule for a normal map, else the falloff one.
 inline Check checkSlot(const Material& one, const Draw& draw) {
-    return one.slots[0].kind == SlotKind::Normal ? checkNormal(one, false, draw) : checkColor(one, false, draw);
+    return kindRow(one.slots[0].kind).derivative ? checkNormal(one, false, draw) : checkColor(one, false, draw);
+}
+
+// ---- Cases as data ------------------------------------------------------------------------------------------
+// A table of cases is a folder of JSON files (tests/execution/cases/, odd_sizes/, adaptive/, packed/, analytic/): each
+// file, on each of its "targets", is one test, "<name>_<target>". Besides "targets" and "why" (why the case is there),
+// a file has the keys its table's test reads.
+struct ExecCase {
+    std::filesystem::path folder;
+    std::string name;
+    vk::ExecutedTarget target;
+};
+inline void PrintTo(const ExecCase& c, std::ostream* os) { *os << c.name << "_" << targetName(c.target); }
+inline std::string caseTestName(const testing::TestParamInfo<ExecCase>& info) {
+    return info.param.name + "_" + targetName(info.param.target);
+}
+
+// The case's file; throws on a key that is not "targets", "why" or one of `keys`.
+inline nlohmann::json readCase(const ExecCase& c, std::initializer_list<std::string_view> keys) {
+    std::ifstream in(c.folder / (c.name + ".json"));
+    const nlohmann::json json = nlohmann::json::parse(in);
+    for (const auto& [key, value] : json.items())
+        if (key != "targets" && key != "why" && std::find(keys.begin(), keys.end(), key) == keys.end())
+            throw std::runtime_error(c.name + ".json: unknown key `" + key + "`");
+    return json;
+}
+
+inline vk::ExecutedTarget executedTarget(const std::string& name) {
+    if (name == "spirv") return vk::ExecutedTarget::Spirv;
+    if (name == "hlsl") return vk::ExecutedTarget::Hlsl;
+    if (name == "glsl") return vk::ExecutedTarget::Glsl;
+    throw std::runtime_error("unknown target `" + name + "` (spirv, hlsl or glsl)");
+}
+
+// Every case file of `folder` on each of its targets, in file name order.
+inline std::vector<ExecCase> execCases(const std::filesystem::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    std::vector<ExecCase> cases;
+    for (const std::string& name : names) {
+        std::ifstream in(folder / (name + ".json"));
+        const nlohmann::json c = nlohmann::json::parse(in);  // held: a range-for over a temporary's member dangles
+        for (const std::string target : c.at("targets")) cases.push_back({folder, name, executedTarget(target)});
+    }
+    return cases;
 }
 
 }  // namespace hexc::exec

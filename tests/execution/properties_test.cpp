@@ -202,25 +202,25 @@ std::filesystem::path normalMap(bool greenUp, int width, int height) {
 }
 }  // namespace analytic
 
-struct AnalyticCase {
-    const char* name;
-    const char* settings;
-    int width = 256, height = 256;  // of the textures
-};
-
-class AnalyticNormals : public testing::TestWithParam<std::tuple<AnalyticCase, vk::ExecutedTarget>> {};
+// A case (tests/execution/analytic/): "size", the textures' [width, height], and "hextiling", the settings besides
+// tiling 1 and falloffcontrast 0.
+class AnalyticNormals : public testing::TestWithParam<ExecCase> {};
 
 TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
     REQUIRE_VULKAN();
-    const auto [which, target] = GetParam();
-    const char* settings = which.settings;
-    const int tw = which.width, th = which.height;
+    const nlohmann::json c = readCase(GetParam(), {"size", "hextiling"});
+    const vk::ExecutedTarget target = GetParam().target;
+    const std::string settings = c.at("hextiling").dump();
+    const int tw = c.at("size")[0], th = c.at("size")[1];
     const double aspect = double(tw) / th;
     std::filesystem::path height = analytic::write("hexc_analytic_height_" + std::to_string(tw) + ".pfm", tw, th, [](double s, double t) {
         float v = float(analytic::h(s, t));
         return std::array<float, 4>{v, v, v, 1.0f};
     });
-    const std::string hex = std::string(R"("hextiling": {"tiling": 1, "falloffcontrast": 0, )") + settings + "}";
+    nlohmann::json hextiling = c.at("hextiling");
+    hextiling["tiling"] = 1;
+    hextiling["falloffcontrast"] = 0;
+    const std::string hex = R"("hextiling": )" + hextiling.dump();
     auto slot = [&](const char* kind, const std::filesystem::path& file, const char* extra) {
         return material(std::string(R"({"name": "s", "kind": ")") + kind + R"(", "colorspace": "linear", "texture": ")" + file.string() +
                         "\", " + extra + hex + "}");
@@ -270,21 +270,11 @@ TEST_P(AnalyticNormals, MatchTheDerivativeOfTheHexTiledHeight) {
         }
     ASSERT_GT(errors.size(), size_t(view.width * view.height / 8));
     std::sort(errors.begin(), errors.end());
-    std::printf("  %s: %zu pixels inside tiles, |d - grad H|: median %.4f, max %.4f (bound %.3f)\n", settings, errors.size(),
+    std::printf("  %s: %zu pixels inside tiles, |d - grad H|: median %.4f, max %.4f (bound %.3f)\n", settings.c_str(), errors.size(),
                 errors[errors.size() / 2], errors.back(), bound);
     EXPECT_LE(errors.back(), bound);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Exec, AnalyticNormals,
-    testing::Combine(testing::Values(AnalyticCase{"stable", R"("mode": "stable", "rotation": 1)"},
-                                     AnalyticCase{"paper", R"("mode": "paper", "rotation": 1)"},
-                                     AnalyticCase{"unrotated", R"("mode": "stable", "rotation": 0)"},
-                                     AnalyticCase{"checker2taps", R"("mode": "stable", "rotation": 1, "mask": "checker", "taps": 2)"},
-                                     // Non-square: the tiles turn its texels (the paper's mode turns st and would shear it).
-                                     AnalyticCase{"stable_300x170", R"("mode": "stable", "rotation": 1)", 300, 170},
-                                     AnalyticCase{"turned_60_to_120_300x170", R"("rotationrange": [60, 120])", 300, 170}),
-                     testing::Values(vk::ExecutedTarget::Spirv, vk::ExecutedTarget::Hlsl, vk::ExecutedTarget::Glsl)),
-    [](const auto& info) { return std::string(std::get<0>(info.param).name) + "_" + targetName(std::get<1>(info.param)); });
+INSTANTIATE_TEST_SUITE_P(Exec, AnalyticNormals, testing::ValuesIn(execCases("tests/execution/analytic")), caseTestName);
 
 }  // namespace

@@ -19,14 +19,9 @@
 #include <unistd.h>
 
 using namespace hexc;
+using hexc::test::loadMaterial;
 
 namespace {
-
-Material parsed(const std::filesystem::path& file) {
-    ParseResult r = parseMaterialFile(file);
-    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
-    return *r.material;
-}
 
 // `text` (b's manifest) with b's texture and template paths as written replaced by a's, which differ by format and folder.
 std::string pathsOf(const Material& a, const Material& b, std::string text) {
@@ -72,7 +67,7 @@ std::string withoutComment(std::string document) {
 }  // namespace
 
 TEST(MaterialX, AHandWrittenDocumentCompilesToTheShadersOfItsJsonMaterial) {
-    expectSameShaders(parsed("materials/rock.json"), parsed("materials/mtlx/rock.mtlx"));
+    expectSameShaders(loadMaterial("materials/rock.json"), loadMaterial("materials/mtlx/rock.mtlx"));
 }
 
 // JSON -> mtlx -> JSON: every example, whatever settings it uses (masks, steps, height blending, triplanar, a
@@ -95,7 +90,7 @@ TEST(MaterialX, TheExportOfEveryExampleReadsBackToTheSameShaders) {
                              "normal_y_down", "normal_y_down_plain", "shared_lod", "pack", "materialx"}) {
         SCOPED_TRACE(name);
         const auto variant = variants.find(name);
-        Material json = parsed(std::string("materials/") + (variant != variants.end() ? "rock" : name) + ".json");
+        Material json = loadMaterial(std::string("materials/") + (variant != variants.end() ? "rock" : name) + ".json");
         if (variant != variants.end()) {
             json.name = name;
             variant->second(json);
@@ -105,9 +100,9 @@ TEST(MaterialX, TheExportOfEveryExampleReadsBackToTheSameShaders) {
         ASSERT_TRUE(exported.document) << formatAll(exported.diagnostics);
         EXPECT_TRUE(exported.diagnostics.empty()) << formatAll(exported.diagnostics);
         std::ofstream(out, std::ios::binary) << *exported.document;
-        expectSameShaders(json, parsed(out));
+        expectSameShaders(json, loadMaterial(out));
         // The same material gives the same document (but for the comment naming the file it came from).
-        EXPECT_EQ(withoutComment(*exported.document), withoutComment(*exportMaterialX(parsed(out), out).document));
+        EXPECT_EQ(withoutComment(*exported.document), withoutComment(*exportMaterialX(loadMaterial(out), out).document));
     }
 }
 
@@ -156,7 +151,7 @@ TEST(MaterialX, TileTransformsMeanWhatTheyMeanInMaterialX) {
 // What MaterialX leaves out means MaterialX's defaults, not hexc's: a colour image's falloffcontrast is 0.5, the
 // rotation range 0-360 degrees, tile scales 0.5-2; plain images are plain tiling; colour spaces come from the file.
 TEST(MaterialX, AbsentInputsTakeMaterialXsDefaults) {
-    const Material m = parsed("materials/mtlx/preview_surface.mtlx");
+    const Material m = loadMaterial("materials/mtlx/preview_surface.mtlx");
     ASSERT_EQ(m.slots.size(), 3u);
     const Slot &albedo = m.slots[0], &roughness = m.slots[1], &normal = m.slots[2];
     EXPECT_EQ(m.name, "preview_tiles");
@@ -230,7 +225,7 @@ TEST(MaterialX, WhatHexcCannotExpressIsReportedWhereItIs) {
 }
 
 TEST(MaterialX, TheExportRefusesASlotNoSurfaceInputCarries) {
-    Material m = parsed("materials/rock.json");
+    Material m = loadMaterial("materials/rock.json");
     m.slots[0].name = "detail";
     MaterialXExport exported = exportMaterialX(m, scratch("detail.mtlx"));
     EXPECT_FALSE(exported.document);
@@ -241,7 +236,7 @@ TEST(MaterialX, TheExportRefusesASlotNoSurfaceInputCarries) {
 }
 
 TEST(MaterialX, TheExportRefusesALayeredMaterialRatherThanFlattenIt) {
-    MaterialXExport exported = exportMaterialX(parsed("materials/terrain/terrain.json"), scratch("terrain.mtlx"));
+    MaterialXExport exported = exportMaterialX(loadMaterial("materials/terrain/terrain.json"), scratch("terrain.mtlx"));
     EXPECT_FALSE(exported.document);
     ASSERT_EQ(exported.diagnostics.size(), 1u);
     EXPECT_EQ(exported.diagnostics[0].code, Code::MaterialXUnsupported);
@@ -345,7 +340,7 @@ TEST_P(Corpus, ReadsAsExpectedAndCompiles) {
                 continue;
             }
             std::ofstream(out, std::ios::binary) << *exported.document;
-            expectSameShaders(*r.material, parsed(out));
+            expectSameShaders(*r.material, loadMaterial(out));
         }
 }
 
@@ -363,7 +358,7 @@ TEST(Corpus, EveryExpectationHasItsDocument) {
 // What the corpus's value nodes compute is what hexc reads: the onyx shape's converted interface float and
 // colorspace="none", the folded document's combine2, multiply, subtract, add and divide.
 TEST(Corpus, ValueNodesFeedingSettingsAreComputed) {
-    const Material onyx = parsed("materials/mtlx/corpus/onyx_shape.mtlx");
+    const Material onyx = loadMaterial("materials/mtlx/corpus/onyx_shape.mtlx");
     ASSERT_EQ(onyx.slots.size(), 2u);
     EXPECT_EQ(onyx.slots[0].hex.tiling, (std::array<double, 2>{3.5, 3.5}));
     EXPECT_EQ(onyx.slots[0].hex.rotation, 0.75);
@@ -371,7 +366,7 @@ TEST(Corpus, ValueNodesFeedingSettingsAreComputed) {
     EXPECT_EQ(onyx.slots[0].hex.scaleRange, (std::array<double, 2>{0.75, 1.5}));  // 1 + (0.5 - 1) 0.5, 1 + (2 - 1) 0.5
     EXPECT_EQ(onyx.slots[1].colorSpace, ColorSpace::Linear);
     EXPECT_EQ(onyx.slots[1].channel, 1);
-    const Material folded = parsed("materials/mtlx/corpus/folded_settings.mtlx");
+    const Material folded = loadMaterial("materials/mtlx/corpus/folded_settings.mtlx");
     ASSERT_EQ(folded.slots.size(), 2u);
     EXPECT_EQ(folded.slots[0].hex.tiling, (std::array<double, 2>{3, 5}));
     EXPECT_EQ(folded.slots[0].hex.rotationRange, (std::array<double, 2>{-30, 50}));

@@ -7,16 +7,14 @@
 #include "hexc/compiler.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
+#include "support.h"
 
 using namespace hexc;
+using hexc::test::loadMaterial;
 
 namespace {
 
-Material terrain() {
-    ParseResult r = parseMaterialFile("materials/terrain/terrain.json");
-    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
-    return *r.material;
-}
+Material terrain() { return loadMaterial("materials/terrain/terrain.json"); }
 
 CompileResult compiled(Material m, const std::string& templ = "lit") {
     m.templ = TemplateRef::builtin(templ);

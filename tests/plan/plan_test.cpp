@@ -13,16 +13,14 @@
 #include "plan/macros.h"
 #include "plan/plan.h"
 #include "vk/render.h"
+#include "support.h"
 
 using namespace hexc;
+using hexc::test::loadMaterial;
 
 namespace {
 
-Material rock() {
-    ParseResult r = parseMaterialFile("materials/rock.json");
-    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
-    return *r.material;
-}
+Material rock() { return loadMaterial("materials/rock.json"); }
 
 // rock.json with the normal slot on its own tiling: it no longer shares the lattice of albedo and roughness.
 Material rockWithOwnNormalTiling() {

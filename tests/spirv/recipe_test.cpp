@@ -15,8 +15,10 @@
 #include "hexc/scene.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
+#include "support.h"
 
 using namespace hexc;
+using hexc::test::loadMaterial;
 
 namespace {
 
@@ -58,12 +60,6 @@ void expectNoBiggerThanO(const Material& material, const CompileOptions& options
     }
 }
 
-Material load(const std::string& path) {
-    ParseResult r = parseMaterialFile(path);
-    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
-    return *r.material;
-}
-
 const char* kExamples[] = {"engine_rock", "rock", "rock_blend", "rock_normal", "rock_triplanar", "tiles", "tiles_stepped"};
 
 TEST(Recipe, NoBiggerThanOOnEveryExample) {
@@ -71,7 +67,7 @@ TEST(Recipe, NoBiggerThanOOnEveryExample) {
         for (bool bake : {false, true}) {
             CompileOptions options;
             options.bake = bake;
-            expectNoBiggerThanO(load(std::string("materials/") + name + ".json"), options);
+            expectNoBiggerThanO(loadMaterial(std::string("materials/") + name + ".json"), options);
         }
 }
 

@@ -107,6 +107,7 @@ std::vector<Descriptor> descriptorsOf(const RenderRequest& req) {
     for (uint32_t i = 0; i < req.textures.size(); ++i) d.push_back({req.set, req.firstTextureBinding + i, texture});
     static const VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                              VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLER};
+    static_assert(std::size(types) == size_t(TemplateResource::Kind::Sampler) + 1, "one Vulkan type per TemplateResource::Kind");
     for (const TemplateResource& r : req.templateResources) d.push_back({r.set, r.binding, types[int(r.kind)]});
     std::set<std::pair<uint32_t, uint32_t>> taken;
     for (const Descriptor& x : d)

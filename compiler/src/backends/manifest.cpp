@@ -9,27 +9,27 @@ namespace {
 
 // A histogram slot's derived textures (hexc/histogram.h): the files hexc writes and how an engine binds them, in
 // structured fields (docs/manifest.schema.json).
-nlohmann::json histogramEntry(const std::string& material, const Slot& s) {
+nlohmann::json histogramEntry(const std::string& material, const std::string& slot, const std::string& texture) {
     // PFM holds RGB float32; upload as RGBA float with alpha 1. Linear values: no sRGB format.
     const nlohmann::json format = {
         {"container", "pfm"}, {"channels", "rgb"}, {"type", "float32"}, {"upload", "rgba32f"}, {"colorspace", "linear"}};
     return {{"gaussian",
-             {{"file", histogramFileName(material, s.name, "gaussian")},
+             {{"file", histogramFileName(material, slot, "gaussian")},
               {"format", format},
               // In place of the slot's own texture, at its binding: hexc's sampler over a full mip chain.
-              {"binding", {{"texture", s.name}, {"replaces", s.texture}, {"sampler", "hexcSampler"}, {"mip_chain", "full"}}}}},
+              {"binding", {{"texture", slot}, {"replaces", texture}, {"sampler", "hexcSampler"}, {"mip_chain", "full"}}}}},
             {"lut",
-             {{"file", histogramFileName(material, s.name, "lut")},
+             {{"file", histogramFileName(material, slot, "lut")},
               {"format", format},
               // Its own texture in each target's `textures`; only level 0 is read.
-              {"binding", {{"texture", s.name + ".lut"}, {"sampler", "hexcSampler"}, {"mip_chain", "level0"}}}}}};
+              {"binding", {{"texture", slot + ".lut"}, {"sampler", "hexcSampler"}, {"mip_chain", "level0"}}}}}};
 }
 
 // A packed texture (docs/material-format.md#pack): its file, colour space, size and which channels each slot reads.
 nlohmann::json packedEntry(const std::string& material, const ShaderPlan& plan, const PackPlan& p) {
-    const std::string first = plan.slots[p.slots.front()].slot->name;
+    const std::string first = plan.slots[p.slots.front()].name;
     nlohmann::json slots = nlohmann::json::object();
-    for (size_t k = 0; k < p.slots.size(); ++k) slots[plan.slots[p.slots[k]].slot->name] = p.channels[k];
+    for (size_t k = 0; k < p.slots.size(); ++k) slots[plan.slots[p.slots[k]].name] = p.channels[k];
     // An sRGB format decodes RGB only: alpha stays linear. The file holds level 0; the engine builds the chain.
     return {{"name", first + ".packed"},
             {"file", packedFileName(material, first)},
@@ -41,8 +41,9 @@ nlohmann::json packedEntry(const std::string& material, const ShaderPlan& plan, 
             {"binding", {{"texture", first + ".packed"}, {"slot", first}, {"sampler", "hexcSampler"}, {"mip_chain", "full"}}}};
 }
 
-// Every setting a slot was compiled with, as the material format names it (docs/material-format.md).
-nlohmann::json hextilingEntry(const HexTiling& h) {
+// Every setting a slot was compiled with, as the material format names it (docs/material-format.md): the values as
+// the material wrote them (the parameters' initial values), and what the plan decided of them, the taps, from the plan.
+nlohmann::json hextilingEntry(const HexTiling& h, const SlotPlan& sp) {
     return {{"enabled", h.enabled},
             {"tiling", {h.tiling[0], h.tiling[1]}},
             {"rotation", h.rotation},
@@ -53,7 +54,7 @@ nlohmann::json hextilingEntry(const HexTiling& h) {
             {"split_coordinates", h.splitCoordinates},
             {"mask", toString(h.mask)},
             {"maskscale", h.maskScale},
-            {"taps", h.adaptive() ? nlohmann::json("adaptive") : nlohmann::json(h.taps == 1 ? 1 : h.maskTaps())},
+            {"taps", sp.adaptive ? nlohmann::json("adaptive") : nlohmann::json(sp.taps)},
             {"blend", toString(h.blend)},
             {"lod", toString(h.lod)},
             {"projection", toString(h.projection)},
@@ -65,30 +66,34 @@ nlohmann::json hextilingEntry(const HexTiling& h) {
             {"offsetsteps", {h.offsetSteps[0], h.offsetSteps[1]}}};
 }
 
+// The slot's entry. What the shader does with the slot (its kind, taps, flip, sRGB decoding, luma weights, height
+// map) is the plan's; the texture's file, size, colour space and channel and the settings' values are the material's
+// (a packed slot's plan reads another channel, of the packed texture: its entry in packed_textures).
 nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
     const SlotKindRow& kind = kindRow(sp.kind);
+    const std::string channel(1, "rgba"[s.channel]);
     nlohmann::json slot = {
-        {"name", s.name},
-        {"kind", toString(s.kind)},
+        {"name", sp.name},
+        {"kind", toString(sp.kind)},
         {"texture", s.texture},
         {"size", {s.width, s.height}},
         {"colorspace", toString(s.colorSpace)},
-        {"hextiling", hextilingEntry(h)},
+        {"hextiling", hextilingEntry(h, sp)},
     };
-    if (h.mode == HashMode::MaterialX && !kind.derivative) slot["hextiling"]["lumacoeffs"] = h.lumacoeffs;
+    if (h.mode == HashMode::MaterialX && !kind.derivative) slot["hextiling"]["lumacoeffs"] = sp.luma;
     // MaterialX mode filters an sRGB texture's stored texels: bind it with a linear (UNORM) format; the shader decodes.
-    if (s.shaderDecodes()) slot["decode"] = "shader";
-    if (s.heightBlend) slot["height_blend"] = {{"slot", s.heightBlend->slot}, {"width", s.heightBlend->width}};
+    if (sp.srgb) slot["decode"] = "shader";
+    if (s.heightBlend) slot["height_blend"] = {{"slot", sp.heightMapName}, {"width", s.heightBlend->width}};
     // Bound for another slot's height blending only: the shader has no function for it.
     if (sp.heightOnly) slot["height_map_only"] = true;
-    if (sp.histogram) slot["histogram"] = histogramEntry(material, s);
-    if (kind.oneChannel) slot["channel"] = std::string(1, "rgba"[s.channel]);
-    if (kind.derivative) slot["flip_y"] = s.flipY;
-    if (kind.derivative) slot["normal_green"] = s.flipY ? "down (DirectX)" : "up (OpenGL)";
+    if (sp.histogram) slot["histogram"] = histogramEntry(material, sp.name, s.texture);
+    if (kind.oneChannel) slot["channel"] = channel;
+    if (kind.derivative) slot["flip_y"] = sp.flipY;
+    if (kind.derivative) slot["normal_green"] = sp.flipY ? "down (DirectX)" : "up (OpenGL)";
     // The texture channels the shader reads: what a packing tool may not reuse.
-    slot["reads"] = kind.oneChannel ? std::string(1, "rgba"[s.channel]) : kind.reads;
+    slot["reads"] = kind.oneChannel ? channel : kind.reads;
     return slot;
 }
 
@@ -206,7 +211,7 @@ nlohmann::json functionsEntry(const ShaderPlan& plan) {
                             : kind.oneChannel ? "the scalar value"
                                               : "RGBA, linear";
         functions.push_back({{"name", f.name},
-                             {"slot", f.slot->slot->name},
+                             {"slot", f.slot->name},
                              {"parameters", "vec2 uv"},
                              {"returns", f.tangentNormal ? "vec3" : f.slot->type},
                              {"value", value}});
@@ -226,7 +231,7 @@ std::string relativeTo(const std::filesystem::path& file, const std::filesystem:
 
 nlohmann::json sourcePaths(const Material& material, const ShaderPlan& plan, const std::filesystem::path& from) {
     nlohmann::json textures = nlohmann::json::object();
-    for (const SlotPlan& sp : plan.slots) textures[sp.slot->name] = relativeTo(sp.slot->texturePath, from);
+    for (const SlotPlan& sp : plan.slots) textures[sp.name] = relativeTo(sp.slot->texturePath, from);
     nlohmann::json source = {
         {"relative_to", "this manifest's folder"}, {"material", relativeTo(material.sourceFile, from)}, {"textures", textures}};
     if (!plan.templateFile.empty()) source["template"] = relativeTo(plan.templateFile, from);

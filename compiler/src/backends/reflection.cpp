@@ -4,6 +4,7 @@
 #include <tuple>
 
 #include "backends/backends.h"
+#include "common/by_enum.h"
 #include "hexc/diagnostics.h"
 
 namespace hexc {
@@ -65,8 +66,8 @@ CompileError bindingConflict(const TemplateResource& t, const ShaderPlan& plan) 
 
 // The manifest's `kind` of a resource: Vulkan's descriptor type in lower case (push_constant apart).
 const char* toString(ResourceClass cls) {
-    static const char* names[] = {"uniform_buffer", "storage_buffer", "push_constant", "combined_image_sampler",
-                                  "sampled_image",  "sampler",        "storage_image"};
+    static constexpr auto names = byEnum<ResourceClass::StorageImage>(
+        {"uniform_buffer", "storage_buffer", "push_constant", "combined_image_sampler", "sampled_image", "sampler", "storage_image"});
     return names[size_t(cls)];
 }
 

@@ -18,7 +18,7 @@ std::string shaderCodeKey(const std::string& glsl, const ShaderPlan& plan, const
     for (const std::string& part : {std::string("hexc shader code 1"), std::string(version()), buildId(), toolchainVersions(), glsl,
                                     plan.templateName, toString(plan.layout)})
         h.add(part);
-    for (const SlotPlan& sp : plan.slots) h.add(sp.slot->name);
+    for (const SlotPlan& sp : plan.slots) h.add(sp.name);
     h.add(codeOptionsKey(options));
     return h.hex();
 }

@@ -10,6 +10,7 @@
 
 #include "backends/backends.h"
 #include "backends/naga.h"
+#include "common/by_enum.h"
 #include "spirv/combined.h"
 #include "spirv/lines.h"
 #include "hexc/spirv.h"
@@ -96,8 +97,8 @@ std::string shaderFileName(std::string_view material, Target target, std::string
 }
 
 std::string_view toString(LineDirectives mode) {
-    static const char* names[] = {"none", "functions", "statements"};
-    return names[int(mode)];
+    static constexpr auto names = byEnum<LineDirectives::Statements>({"none", "functions", "statements"});
+    return names[size_t(mode)];
 }
 
 std::string_view toString(UvOrigin origin) { return origin == UvOrigin::TopLeft ? "top-left" : "bottom-left"; }

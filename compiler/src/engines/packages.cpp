@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "codegen/codegen.h"
+#include "common/by_enum.h"
 #include "common/templates.h"
 #include "engines/hlsl.h"
 #include "engines/roles.h"
@@ -24,9 +25,10 @@
 namespace hexc {
 namespace {
 
-const char* const kNames[] = {"godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal"};
-const char* const kTemplates[] = {"godot3.shader", "godot4.gdshader", "filament.mat"};
-const char* const kExtensions[] = {".shader", ".gdshader", ".mat"};
+constexpr auto kNames = byEnum<Engine::Unreal>({"godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal"});
+// The GLSL engines' template and package extension; they come first in Engine, Filament the last of them.
+constexpr auto kTemplates = byEnum<Engine::Filament>({"godot3.shader", "godot4.gdshader", "filament.mat"});
+constexpr auto kExtensions = byEnum<Engine::Filament>({".shader", ".gdshader", ".mat"});
 
 // `text` with every `fma(a, b, c)` as `((a) * (b) + (c))`: Godot's shading language has no fma. SPIRV-Cross writes
 // the arguments with balanced parentheses, so a count of them finds each argument's end.

@@ -1,6 +1,7 @@
 // The enums' names (names.h) and toString over them, and the slot-kind table (hexc/material.h).
 #include "material/names.h"
 
+#include "common/by_enum.h"
 #include "hexc/material.h"
 
 namespace hexc {
@@ -24,8 +25,8 @@ static_assert(inKindOrder(), "the slot-kind table has one row per SlotKind, in S
 // An enum's names in its order; `Last` is its last value, so a name missing or extra does not compile.
 template <auto Last, size_t N>
 std::vector<std::string> enumNames(const char* const (&names)[N]) {
-    static_assert(N == size_t(Last) + 1, "one name per value, in enum order");
-    return {names, names + N};
+    const auto checked = byEnum<Last>(names);
+    return {checked.begin(), checked.end()};
 }
 
 std::vector<std::string> kindNames() {

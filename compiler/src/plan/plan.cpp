@@ -6,6 +6,7 @@
 
 #include "hexc/files.h"
 #include "hexc/suggest.h"
+#include "common/by_enum.h"
 #include "common/templates.h"
 #include "common/text.h"
 #include "plan/layers.h"
@@ -106,9 +107,7 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     sp.type = triplanar && kindRow(slot.kind).derivative ? "vec3" : kindRow(slot.kind).glslType;
     sp.projection = h.projection;
     sp.explicitGradients = triplanar;
-    sp.taps = h.maskTaps();
     sp.sharedLod = h.lod == Lod::Shared;
-    sp.adaptive = h.enabled && h.adaptive();
     // Tiles turn in texel-isotropic space (docs/material-format.md#per-tile-transforms); the paper's mode turns st.
     if (h.mode != HashMode::Paper && slot.width > 0 && slot.height > 0) sp.aspect = double(slot.width) / slot.height;
     // One tap needs no falloff metric: it has a single sample to weigh.
@@ -125,7 +124,7 @@ SlotPlan planSlot(const Slot& slot, bool all) {
 }
 
 LatticePlan planLattice(const HexTiling& h, bool all) {
-    static const char* kMaskLattices[] = {"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"};
+    static constexpr auto kMaskLattices = byEnum<Mask::Noise3>({"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"});
     LatticePlan l;
     l.section = h.mode == HashMode::Paper       ? "lattice.paper"
                 : h.mode == HashMode::MaterialX ? "lattice.materialx"
@@ -193,6 +192,8 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
         sp.srgb = slot.shaderDecodes();
         sp.luma = slot.hex.lumacoeffs;
         sp.channel = slot.channel;
+        sp.taps = slot.hex.taps == 1 ? 1 : slot.hex.maskTaps();
+        sp.adaptive = slot.hex.adaptive();
         sp.binding = binding++;
         if (sp.histogram) plan.luts.push_back(plan.slots.size());
         plan.slots.push_back(sp);

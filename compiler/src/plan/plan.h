@@ -60,7 +60,7 @@ struct LatticePlan {
 };
 
 struct SlotPlan {
-    const Slot* slot = nullptr;  // for the stages after codegen (derived textures, manifest); codegen reads the fields below
+    const Slot* slot = nullptr;  // the texture's file and facts, for derived textures; codegen and manifest read the fields below
     std::string name;            // the slot's: hexc_<name>, its texture hexcTex_<name>
     SlotKind kind = SlotKind::Color;
     bool flipY = false;            // a normal slot's green channel points down (DirectX convention)
@@ -78,8 +78,8 @@ struct SlotPlan {
     bool gain = true;                 // the gain code is emitted (falloff != 0.5)
     int exponentInt = 0;              // > 0: the exponent is this whole number, multiplied out (no pow, no uniform)
     int gainInt = 0;                  // > 0: the gain's k = log2(1 / (1 - falloff)) is this whole number, likewise
-    int taps = 3;                     // fetches per sample: 3, or 2 for the checker mask
-    bool adaptive = false;            // "taps": "adaptive": each fetch behind a branch on its weight bound
+    int taps = 3;                     // the taps setting: 3, 2 for the checker mask, 1 dithered (the .hex1 snippet)
+    bool adaptive = false;            // "taps": "adaptive": each of the mask's taps behind a branch on its weight bound
     bool explicitGradients = false;   // plain sampling with the given gradients (triplanar planes: non-uniform flow)
     std::optional<size_t> heightMap;  // index into ShaderPlan::slots of the slot it height-blends by
     std::string heightMapName;        // that slot's name (its own without height blending, where it is unread)

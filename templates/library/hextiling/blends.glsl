@@ -45,7 +45,7 @@ struct HexcBlend {
     bool gain;                   // literal: the gain is applied
     int exponentInt;             // literal: > 0, gamma is this whole number (multiplied out); 0: a pow per pixel
     int gainInt;                 // literal: > 0, the gain's k is this whole number; 0 with gain: a log and a pow
-    int taps;                    // literal: 3, or 2 for the checker mask (no third fetch)
+    int taps;                    // literal: 3, 2 for the checker mask (no third fetch); 1 dithered
     bool sharedLod;              // literal: lod "shared", every fetch at the slot's level of detail (hexcTileLods)
     bool adaptive;               // literal: "taps": "adaptive", fetch a tap only when it can matter (hexcAdaptiveTaps)
     float adaptiveError;         // literal: the bound it keeps, epsilon below
