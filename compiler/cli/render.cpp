@@ -16,6 +16,7 @@
 #include "hexc/budgets.h"
 #include "progress.h"
 #include "hexc/material.h"
+#include "reference/layers.h"
 #include "reference/reference.h"
 #include "vk/render.h"
 
@@ -201,7 +202,8 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
         ->check(CLI::IsMember({"shaded", "albedo", "normal", "derivative", "weights"}));
     app.add_option("--slot", r.slot,
                    "the slot albedo/normal/derivative/weights show (default: the slot\n"
-                   "named albedo or normal, else the first of a fitting kind)")
+                   "named albedo or normal, else the first of a fitting kind); a layered\n"
+                   "material's role name shows the layers' blend of that role")
         ->type_name("NAME");
     app.add_option("--size", size, "image size in pixels (default 512x512)")->type_name("WxH");
     app.add_option("--uv-rect", uvRect, "the UV rectangle the image covers (default 0,0,1,1)")->type_name("U0,V0,U1,V1");
@@ -234,8 +236,25 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
     return std::nullopt;
 }
 
-// The fp64 reference image of the slot `r` shows, as the GPU would show it.
+// The fp64 reference of a layered material's role (reference/layers.h), as the GPU shows it.
+Image layerRoleReference(const Material& material, size_t role, const RenderArguments& r) {
+    checkTexelBudget(material, TextureStage::Reference);
+    const reference::LayerTextures textures(material);
+    const std::vector<reference::LayerResult> pixels = reference::evaluateLayersView(material, role, textures, r.view);
+    const bool oneChannel = kindRow(material.layers->roles[role].kind).oneChannel;
+    Image image{r.view.width, r.view.height, std::vector<float>(pixels.size() * 4)};
+    for (size_t p = 0; p < pixels.size(); ++p)
+        for (size_t c = 0; c < 4; ++c) image.rgba[p * 4 + c] = float(pixels[p].value[oneChannel && c < 3 ? 0 : c]);
+    if (r.output == vk::RenderOutput::Normal) vk::derivativeToNormalMap(image);
+    return image;
+}
+
+// The fp64 reference image of the slot (or layered material's role) `r` shows, as the GPU would show it.
 Image referenceImage(const Material& material, const RenderArguments& r) {
+    if (const std::optional<size_t> role = vk::layerRole(material, r.slot); role && r.output != vk::RenderOutput::Weights) {
+        vk::renderedMaterial(material, r.output, r.slot);  // refuses a role of a kind the output does not show
+        return layerRoleReference(material, *role, r);
+    }
     const Slot& s = vk::slotForOutput(material, r.output, r.slot);
     checkTexelBudget(material, TextureStage::Reference, &s);
     reference::SampledTexture texture(loadTexture(s.texturePath, s.samplerDecodes()));

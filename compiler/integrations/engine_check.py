@@ -107,9 +107,10 @@ def linear(x):
     return min(max(x, 0.0), 1.0)
 
 
-def compare(engine_png, ref, normal, relative, amplify, encode=srgb):
+def compare(engine_png, ref, normal, relative, amplify, encode=srgb, errors=None):
     """Per channel of RGB: (mean error, max error, max error / bound, pixels over bound) of the engine's 8-bit image,
-    `encode`d (srgb, or linear as it is), against the linear reference."""
+    `encode`d (srgb, or linear as it is), against the linear reference. `errors`, if given, are the per-pixel errors
+    of the value before the engine's output (rows of floats; a layered role's, layered_errors), instead of a slot's."""
     w, h, n, rows = read_png(engine_png)
     rw, rh, ref_rows = ref
     assert (w, h) == (rw, rh), f"engine image {w}x{h}, reference {rw}x{rh}"
@@ -119,7 +120,7 @@ def compare(engine_png, ref, normal, relative, amplify, encode=srgb):
         for x in range(w):
             v = ref_rows[y][x]
             nz = max(2 * v[2] - 1, 0.05) if normal else 1.0
-            err = amplify * (2 * FILTER_ERROR / (nz * nz) if normal else FILTER_ERROR)
+            err = errors[y][x] if errors else amplify * (2 * FILTER_ERROR / (nz * nz) if normal else FILTER_ERROR)
             for c in range(3):
                 e = abs(rows[y][x * n + c] - 255 * encode(v[c]))
                 b = bound(v[c], err + relative * abs(v[c]), encode)
@@ -200,3 +201,114 @@ def quadrant_means(png):
 
 def manifest(package_dir):
     return json.loads(next(Path(package_dir).glob("*.manifest.json")).read_text())
+
+
+LAYERS = ["clay", "moss", "slate"]
+
+
+def layered_material(folder):
+    """The engine tests' layered material, written into `folder`: three layers (albedo, sRGB, and a green-up normal map
+    each, 64 x 64, hex-tiled twice across uv) blended linearly by a painted 32 x 32 splat map (RGB: one layer a
+    channel, linear). The splat map is asymmetric both ways, so that a flipped u or v shows: clay (red) fills a block
+    at the top-left with a hard border, the rest goes from moss (green) at the top to slate (blue) at the bottom
+    through a soft border."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    size = 64
+
+    def splat(x, y):
+        clay = 1.0 if x < 12 and y < 20 else 0.0
+        moss = (1 - clay) * min(max(1.6 * (1 - y / 31) - 0.3, 0.0), 1.0)
+        return tuple(round(255 * c) for c in (clay, moss, 1 - clay - moss))
+
+    albedos = {"clay": lambda x, y: (170 + 40 * ((x // 8 + y // 8) % 2), 110, 70),
+               "moss": lambda x, y: (60, 120 + 60 * ((x // 4) % 2), 50),
+               "slate": lambda x, y: (90 + (x * 7 + y * 13) % 60, 100, 140)}
+    periods = {"clay": 16, "moss": 32, "slate": 64}
+
+    def normal(period):  # the slope of a sine ridge pattern along both axes, green up
+        def pixel(x, y):
+            k = 0.5
+            dx = k * math.cos(2 * math.pi * x / period)
+            dy = -k * math.sin(2 * math.pi * y / period)
+            n = (-dx, -dy, 1.0)
+            length = math.sqrt(sum(c * c for c in n))
+            return tuple(round(255 * (c / length * 0.5 + 0.5)) for c in n)
+        return pixel
+
+    write_png(folder / "splat.png", 32, 32, splat)
+    layers = []
+    for name in LAYERS:
+        write_png(folder / f"{name}_albedo.png", size, size, albedos[name])
+        write_png(folder / f"{name}_normal.png", size, size, normal(periods[name]))
+        layers.append({"name": name, "slots": [
+            {"name": "albedo", "kind": "color", "texture": f"{name}_albedo.png", "colorspace": "srgb"},
+            {"name": "normal", "kind": "normal", "texture": f"{name}_normal.png"}]})
+    material = {"name": "layered", "hextiling": {"tiling": 2, "rotation": 1.0}, "layers": layers,
+                "layer_blend": {"splat": ["splat.png"], "mode": "linear"}}
+    (folder / "layered.json").write_text(json.dumps(material, indent=2))
+    return folder / "layered.json"
+
+
+def layered_errors(hexc, material, manifest, role, normal, size, rect, work):
+    """Per pixel, the bound on the error of a layered role's value before the engine's output (linear; for a normal role
+    in n * 0.5 + 0.5), from the fp64 references of its layers' slots and of the splat map (`hexc render --reference`).
+    As in tests/execution/layers_test.cpp, with the engines' filtering error e = FILTER_ERROR on every fetch:
+      - each layer's value errs by its slot's error (as for a slot: amplification(slot) e; a normal's slope by
+        4 e / n_z^2 times that, n_z the layer's own), and the blend, whose weights sum to 1, by the largest of them;
+      - each splat weight s_i errs by e; w_i = s_i / S (S the sum of the kept s_i) moves so that the blend, whose
+        weight changes sum to 0, moves by <= n e spread / S (spread: the largest difference between the layers'
+        values in a channel; for a normal, between their slopes);
+      - a layer whose s_i is within e of skip_below may be kept on one side and dropped on the other: its weight
+        <= (skip + e) / S, times spread;
+      - a normal: normalize(-d, 1) moves by no more than the slope d does, and n * 0.5 + 0.5 by half that."""
+    skip = manifest["layers"]["skip_below"] if "skip_below" in manifest.get("layers", {}) else 0.5 / 255
+    slots = {s["name"]: s for s in manifest["slots"]}
+    output = "derivative" if normal else "albedo"
+    values = [reference(hexc, material, output, f"{l}_{role}", size, rect, work / f"{l}_{role}.ref.pfm")[2] for l in LAYERS]
+    splat = reference(hexc, material, "albedo", "splat0", size, rect, work / "splat0.ref.pfm")[2]
+    amplify = max(amplification(slots[f"{l}_{role}"]) for l in LAYERS)
+    e, n = FILTER_ERROR, len(LAYERS)
+    rows = []
+    for y in range(size):
+        row = []
+        for x in range(size):
+            s = [splat[y][x][i] for i in range(n)]
+            S = max(sum(v for v in s if v >= skip), 1e-3)
+            layer = [values[i][y][x] for i in range(n)]
+            channels = 2 if normal else 3
+            spread = max(max(v[c] for v in layer) - min(v[c] for v in layer) for c in range(channels))
+            own = amplify * (max(4 * e * (1 + v[0] ** 2 + v[1] ** 2) for v in layer) if normal else e)  # 1 / n_z^2 = 1 + |d|^2
+            weights = n * e * spread / S + sum((skip + e) / S * spread for v in s if abs(v - skip) <= e)
+            row.append(0.5 * (own + weights) if normal else own + weights)
+        rows.append(row)
+    return rows
+
+
+def check_function(hexc, material, manifest, function, size, rect, out, relative, encode=srgb):
+    """The engine's image `out` of a package's `function` against hexc's fp64 reference: compare()'s figures. For a
+    layered material's role, the bound is layered_errors', and `flip_caught` says whether the same image compared
+    with the reference flipped in u, and in v, is over the bound (so that the splat map's orientation is checked)."""
+    normal = function["returns"] == "vec3"
+    output = "normal" if normal else "albedo"
+    if "slot" in function:
+        ref = reference(hexc, material, output, function["slot"], size, rect, out.with_suffix(".ref.pfm"))
+        slot = next(s for s in manifest["slots"] if s["name"] == function["slot"])
+        return compare(out, ref, normal, relative, amplification(slot), encode)
+    ref = reference(hexc, material, output, function["role"], size, rect, out.with_suffix(".ref.pfm"))
+    errors = layered_errors(hexc, material, manifest, function["role"], normal, size, rect, out.parent)
+    r = compare(out, ref, normal, relative, 1.0, encode, errors)
+    w, h, rows = ref
+    flipped = [(w, h, [row[::-1] for row in rows]), (w, h, rows[::-1])]
+    r["flip_caught"] = all(compare(out, f, normal, relative, 1.0, encode, errors)["pixels_over_bound"] > 0 for f in flipped)
+    return r
+
+
+def result_row(material, origin, function, r):
+    """The check's line of the result table, and whether it failed."""
+    failed = r["pixels_over_bound"] > 0 or r.get("flip_caught") is False
+    note = "" if r["pixels_over_bound"] == 0 else " FAIL: %d values over" % r["pixels_over_bound"]
+    if "flip_caught" in r:
+        note += "; a flipped u or v caught" if r["flip_caught"] else " FAIL: a flipped u or v would pass"
+    return (f"| {Path(material).stem} | {origin} | {function['name']} | {r['mean']:.3f} | {r['max']:.2f} | {r['max_over_bound']:.2f}{note} |",
+            failed)

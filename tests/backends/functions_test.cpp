@@ -196,6 +196,34 @@ TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {
     EXPECT_NE(text.find("float hexc_height(vec2 uv)"), std::string::npos);  // kept for the user to call
 }
 
+// A layered material's package (Filament's) feeds the engine its roles' blends, reports the role without an input at
+// its first layer's slot, and the engines whose packages do not carry layers refuse it.
+TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
+    ParseResult p = parseMaterialFile("materials/terrain/terrain.json");
+    ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
+    CompileResult r = compileForEngine(*p.material, Engine::Filament, {});
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    const std::string all = formatAll(r.diagnostics);
+    EXPECT_NE(all.find("warning[HX204]: /slots/2: slot `grass_height` has no filament input"), std::string::npos) << all;
+    EXPECT_EQ(all.find("grass_albedo"), std::string::npos) << all;  // a layer's slot is not an engine function
+    const auto shader = std::find_if(r.files.begin(), r.files.end(), [](const OutputFile& f) { return f.name == "filament/terrain.mat"; });
+    ASSERT_NE(shader, r.files.end());
+    EXPECT_NE(shader->contents.find("material.baseColor = hexc_albedo(uv);"), std::string::npos);
+    EXPECT_NE(shader->contents.find("material.normal = hexc_normal_normal(uv);"), std::string::npos);
+    EXPECT_NE(shader->contents.find("{ type : sampler2d, name : hexcTex_splat0 }"), std::string::npos);
+    EXPECT_EQ(shader->contents.find("hexc_grass_albedo("), std::string::npos);
+    const auto manifest = nlohmann::json::parse(std::find_if(r.files.begin(), r.files.end(), [](const OutputFile& f) {
+                                                    return f.name == "filament/terrain.manifest.json";
+                                                })->contents);
+    EXPECT_EQ(manifest["functions"][0], nlohmann::json::parse(R"({"name": "hexc_albedo", "role": "albedo", "parameters": "vec2 uv",
+                                                                   "returns": "vec4", "value": "RGBA, linear"})"));
+    for (Engine refused : {Engine::Godot3, Engine::Godot4, Engine::Threejs, Engine::Babylon, Engine::Unity, Engine::Unreal}) {
+        CompileResult web = compileForEngine(*p.material, refused, {});
+        EXPECT_NE(formatAll(web.diagnostics).find("error[HX300]"), std::string::npos) << formatAll(web.diagnostics);
+        EXPECT_TRUE(web.files.empty());
+    }
+}
+
 }  // namespace
 
 namespace {

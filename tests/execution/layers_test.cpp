@@ -78,19 +78,6 @@ const LayerCase kCases[] = {
     {"eight_layers", "eight.json", "albedo", kWhole, 3, 1},
 };
 
-// The material with `role` first, so that the value template (HEXC_FIRST_SLOT) shows it.
-Material withRoleFirst(Material m, const std::string& role) {
-    Layers& l = *m.layers;
-    const size_t r =
-        size_t(std::find_if(l.roles.begin(), l.roles.end(), [&](const Layers::Role& x) { return x.name == role; }) - l.roles.begin());
-    std::rotate(l.roles.begin(), l.roles.begin() + std::ptrdiff_t(r), l.roles.begin() + std::ptrdiff_t(r) + 1);
-    for (Layers::Layer& layer : l.layers)
-        std::rotate(layer.slots.begin(), layer.slots.begin() + std::ptrdiff_t(r), layer.slots.begin() + std::ptrdiff_t(r) + 1);
-    if (l.heightRole) l.heightRole = *l.heightRole == r ? 0 : *l.heightRole < r ? *l.heightRole + 1 : *l.heightRole;
-    m.templ = TemplateRef::builtin("value");
-    return m;
-}
-
 class LayerCases : public testing::TestWithParam<std::tuple<LayerCase, vk::ExecutedTarget>> {};
 
 TEST_P(LayerCases, MatchTheReference) {
@@ -103,7 +90,7 @@ TEST_P(LayerCases, MatchTheReference) {
     }
     ParseResult parsed = parseMaterialFile(std::string("tests/execution/layers/") + c.file);
     ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
-    const Material m = withRoleFirst(*parsed.material, c.role);
+    const Material m = vk::layerRoleFirst(*parsed.material, *vk::layerRole(*parsed.material, c.role));
     const Layers& layers = *m.layers;
     const Slot& first = m.slots[layers.layers[0].slots[0]];
     const bool scalar = first.kind == SlotKind::Scalar;

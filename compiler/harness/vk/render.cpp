@@ -1,5 +1,6 @@
 #include "vk/render.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -97,8 +98,32 @@ const Slot& slotForOutput(const Material& material, RenderOutput output, const s
     return s;
 }
 
+std::optional<size_t> layerRole(const Material& material, const std::string& name) {
+    if (!material.layers) return std::nullopt;
+    const std::vector<Layers::Role>& roles = material.layers->roles;
+    const auto it = std::find_if(roles.begin(), roles.end(), [&](const Layers::Role& r) { return r.name == name; });
+    return it == roles.end() ? std::nullopt : std::optional<size_t>(size_t(it - roles.begin()));
+}
+
+Material layerRoleFirst(Material m, size_t role) {
+    Layers& l = *m.layers;
+    const auto r = std::ptrdiff_t(role);
+    std::rotate(l.roles.begin(), l.roles.begin() + r, l.roles.begin() + r + 1);
+    for (Layers::Layer& layer : l.layers) std::rotate(layer.slots.begin(), layer.slots.begin() + r, layer.slots.begin() + r + 1);
+    if (l.heightRole) l.heightRole = *l.heightRole == role ? 0 : *l.heightRole < role ? *l.heightRole + 1 : *l.heightRole;
+    m.templ = TemplateRef::builtin("value");
+    return m;
+}
+
 Material renderedMaterial(const Material& material, RenderOutput output, const std::string& slotName) {
     if (output == RenderOutput::Shaded) return material;
+    if (const std::optional<size_t> role = layerRole(material, slotName); role && output != RenderOutput::Weights) {
+        const bool derivative = kindRow(material.layers->roles[*role].kind).derivative;
+        if (derivative != (output != RenderOutput::Albedo))
+            throw std::invalid_argument("role `" + slotName + "` is of kind " + std::string(toString(material.layers->roles[*role].kind)) +
+                                        "; this output needs a " + (derivative ? "color or scalar role" : "normal role"));
+        return layerRoleFirst(material, *role);
+    }
     Material m = material;
     const Slot& shown = slotForOutput(material, output, slotName);
     m.slots = {shown};

@@ -4,6 +4,7 @@
 // templates/fullscreen.vert.glsl for the pixel-to-UV mapping).
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,15 @@ enum class ExecutedTarget { Spirv, Hlsl, Glsl };
 const Slot& slotForOutput(const Material& material, RenderOutput output, const std::string& slotName);
 
 // The material a render compiles: for a slot output, only that slot under the `value` or `weights`
-// template; for Shaded, the material itself.
+// template; for a layered material's role named by `slotName` (Albedo, Normal, Derivative), the layers' blend of it
+// (layerRoleFirst); for Shaded, the material itself.
 Material renderedMaterial(const Material& material, RenderOutput output, const std::string& slotName);
+
+// The index of a layered material's role named `name`, if it has one.
+std::optional<size_t> layerRole(const Material& material, const std::string& name);
+
+// The layered material with role `role` first, under the `value` template, which shows it (HEXC_FIRST_SLOT).
+Material layerRoleFirst(Material material, size_t role);
 
 // The material as shown with `templateName` (a template file or built-in name) if given, under `options`: a template
 // that declares resources of its own, which only an engine can fill, is replaced by the built-in `lit`, and *note

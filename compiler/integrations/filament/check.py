@@ -84,7 +84,7 @@ def main(argv):
 def check(argv):
     hexc, renderer, work, materials = argv[1], argv[2], Path(argv[3]), argv[4:]
     shutil.rmtree(work, ignore_errors=True)
-    materials = materials + [ec.mixed_material(work / "mixed")]
+    materials = materials + [ec.mixed_material(work / "mixed"), ec.layered_material(work / "layered")]
     start, failed = time.monotonic(), 0
     print("| material | uv origin | function | mean error (8-bit) | max error | max / bound |")
     print("|---|---|---|---|---|---|")
@@ -104,13 +104,10 @@ def check(argv):
             for i, f in enumerate(functions):
                 out = pkg / f"{f['name']}.png"
                 render(renderer, values, out, textures, "--int", f"hexcShow={i}")
-                normal = f["returns"] == "vec3"
-                ref = ec.reference(hexc, material, "normal" if normal else "albedo", f["slot"], SIZE, rect, out.with_suffix(".ref.pfm"))
-                slot = next(s for s in manifest["slots"] if s["name"] == f["slot"])
-                r = ec.compare(out, ref, normal, 0.0, ec.amplification(slot), ec.linear)
-                failed += r["pixels_over_bound"] > 0
-                print(f"| {Path(material).stem} | {origin} | {f['name']} | {r['mean']:.3f} | {r['max']:.2f} | {r['max_over_bound']:.2f}"
-                      f"{'' if r['pixels_over_bound'] == 0 else ' FAIL: %d values over' % r['pixels_over_bound']} |", flush=True)
+                r = ec.check_function(hexc, material, manifest, f, SIZE, rect, out, 0.0, ec.linear)
+                row, bad = ec.result_row(material, origin, f, r)
+                failed += bad
+                print(row, flush=True)
     dome = ec.dome_material(work / "dome")
     for origin in ORIGINS:
         pkg, mat = package(hexc, dome, work, origin)

@@ -114,13 +114,10 @@ def main(argv):
             failed += not ok
             print(f"| dome | {origin} | lit from the {f} | {f} side {q[f]:.0f}, {opposite} side {q[opposite]:.0f} | | {'ok' if ok else 'FAIL'} |")
             continue
-        normal = f["returns"] == "vec3"
-        ref = ec.reference(hexc, material, "normal" if normal else "albedo", f["slot"], SIZE, rect, out.with_suffix(".ref.pfm"))
-        slot = next(s for s in ec.manifest(out.parent)["slots"] if s["name"] == f["slot"])
-        r = ec.compare(out, ref, normal, HDR_BUFFER, ec.amplification(slot))
-        failed += r["pixels_over_bound"] > 0
-        print(f"| {Path(material).stem} | {origin} | {f['name']} | {r['mean']:.3f} | {r['max']:.2f} | {r['max_over_bound']:.2f}"
-              f"{'' if r['pixels_over_bound'] == 0 else ' FAIL: %d values over' % r['pixels_over_bound']} |")
+        r = ec.check_function(hexc, material, ec.manifest(out.parent), f, SIZE, rect, out, HDR_BUFFER)
+        row, bad = ec.result_row(material, origin, f, r)
+        failed += bad
+        print(row, flush=True)
     print(f"Godot 3: {len(jobs)} renders and their checks in {time.monotonic() - start:.1f} s")
     return 1 if failed else 0
 

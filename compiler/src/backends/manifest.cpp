@@ -211,7 +211,7 @@ nlohmann::json functionsEntry(const ShaderPlan& plan) {
                             : kind.oneChannel ? "the scalar value"
                                               : "RGBA, linear";
         functions.push_back({{"name", f.name},
-                             {"slot", f.slot->name},
+                             {f.role.empty() ? "slot" : "role", f.role.empty() ? f.slot->name : f.role},
                              {"parameters", "vec2 uv"},
                              {"returns", f.tangentNormal ? "vec3" : f.slot->type},
                              {"value", value}});

@@ -108,15 +108,15 @@ public:
         return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, sp.name) + "\n";
     }
 
-    // The functions output's code after the slots' (templates/builtin/functions.glsl): each normal slot's
-    // tangent-space normal, and hexcEngineCalls, which calls every engine function once.
+    // The functions output's code after the slots' (templates/builtin/functions.glsl): each normal slot's (a layered
+    // material's: normal role's) tangent-space normal, and hexcEngineCalls, which calls every engine function once.
     std::string engineFunctions() const {
         std::string normals, calls;
-        for (const SlotPlan& sp : plan_.slots) {
-            if (sp.heightOnly) continue;
-            const Tokens name = {{"name", sp.name}};
-            if (kindRow(sp.kind).derivative) normals += expand("engine.normal", name) + "\n\n";
-            calls += expand("engine.call." + std::string(toString(sp.kind)), name) + "\n";
+        for (const EngineFunction& f : hexc::engineFunctions(plan_)) {
+            if (f.tangentNormal) continue;  // engine.normal, after its derivative's
+            const Tokens name = {{"name", f.name.substr(std::string_view("hexc_").size())}};
+            if (kindRow(f.slot->kind).derivative) normals += expand("engine.normal", name) + "\n\n";
+            calls += expand("engine.call." + std::string(toString(f.slot->kind)), name) + "\n";
         }
         if (calls.ends_with('\n')) calls.pop_back();
         return normals + expand("engine.calls", {{"calls", calls}}) + "\n";

@@ -133,10 +133,10 @@ Wiring wire(const Material& material, const nlohmann::json& functions, Engine en
     const std::string indent = engine == Engine::Filament ? "        " : "    ";
     std::set<std::string> taken;  // each input takes one slot: the first of its role
     for (const auto& f : functions) {
-        const std::string name = f["name"], slot = f["slot"], call = name + "(UV_IN)";
-        const Slot& s = *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& x) { return x.name == slot; });
+        const std::string name = f["name"], call = name + "(UV_IN)";
+        const Slot& s = functionSlot(material, f);
         if (kindRow(s.kind).derivative && f["returns"] != "vec3") continue;  // the derivative: the tangent-space normal feeds the engine
-        const std::string role = slotRole(s);
+        const std::string role = functionRole(material, f);
         std::string statement;
         if (role.empty() || !taken.insert(role).second) {
             statement = "";
@@ -218,16 +218,37 @@ CompileResult compileForLanguage(const Material& material, Engine engine, Compil
 
 }  // namespace
 
-std::string slotRole(const Slot& slot) {
+namespace {
+
+// The engine role a slot or a layered material's role of this name and kind takes.
+std::string roleNamed(const std::string& name, SlotKind kind) {
     static const std::map<std::string, std::string> roles = {
         {"albedo", "albedo"},       {"basecolor", "albedo"},  {"base_color", "albedo"},  {"diffuse", "albedo"},
         {"roughness", "roughness"}, {"metallic", "metallic"}, {"metalness", "metallic"}, {"ao", "ao"},
         {"occlusion", "ao"},        {"emission", "emission"}, {"emissive", "emission"}};
-    if (!slot.role.empty()) return slot.role;
-    if (kindRow(slot.kind).derivative) return "normal";
-    auto role = roles.find(slot.name);
-    if (role == roles.end() || roleKind(role->second) != slot.kind) return "";
+    if (kindRow(kind).derivative) return "normal";
+    auto role = roles.find(name);
+    if (role == roles.end() || roleKind(role->second) != kind) return "";
     return role->second;
+}
+
+}  // namespace
+
+std::string slotRole(const Slot& slot) { return slot.role.empty() ? roleNamed(slot.name, slot.kind) : slot.role; }
+
+const Slot& functionSlot(const Material& material, const nlohmann::json& function) {
+    if (function.contains("role")) {
+        const Layers& layers = *material.layers;
+        const auto role =
+            std::find_if(layers.roles.begin(), layers.roles.end(), [&](const Layers::Role& r) { return r.name == function["role"]; });
+        return material.slots[layers.layers.front().slots[size_t(role - layers.roles.begin())]];
+    }
+    return *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& s) { return s.name == function["slot"]; });
+}
+
+std::string functionRole(const Material& material, const nlohmann::json& function) {
+    const Slot& slot = functionSlot(material, function);
+    return function.contains("role") ? roleNamed(function["role"], slot.kind) : slotRole(slot);
 }
 
 Diagnostic unusedSlot(const Material& material, const Slot& slot, std::string_view engine, const std::string& function) {
@@ -268,6 +289,12 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
                                       " package has no WGSL form: --targets wgsl with --engine adds WGSL functions to "
                                       "Babylon.js's package only (docs/engines.md); leave wgsl out for this engine")}};
     options = packageOptions(engine, options);
+    if (material.layers && engine != Engine::Filament)
+        return {{},
+                {Diagnostic::make(Code::TargetUnsupported, {"--engine"}, "",
+                                  "the " + std::string(toString(engine)) +
+                                      " package does not carry a layered material yet: the Filament package does "
+                                      "(docs/engines.md#layered-materials)")}};
     if (isWebEngine(engine) || isHlslEngine(engine)) return compileForLanguage(material, engine, options);
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;

@@ -65,8 +65,10 @@ bool layerSlotRead(const Material& material, size_t index, const std::string& te
 void planLayers(const Material& material, ShaderPlan& plan) {
     if (!material.layers) return;
     const Layers& layers = *material.layers;
+    // The functions output reads every role: each is an engine function.
     const bool readsFirst = containsWord(plan.templateSource, "HEXC_FIRST_SLOT");
-    if (!anyRoleRead(layers, plan.templateSource, readsFirst)) return;
+    const auto read = [&](size_t r) { return plan.functions || roleRead(layers, r, plan.templateSource, readsFirst); };
+    if (!plan.functions && !anyRoleRead(layers, plan.templateSource, readsFirst)) return;
     LayersPlan lp;
     lp.count = layers.layers.size();
     lp.width = layers.width;
@@ -83,7 +85,7 @@ void planLayers(const Material& material, ShaderPlan& plan) {
         lp.expectedFetches += fetches(sp) * lp.coverage[layer];
     };
     for (size_t r = 0; r < layers.roles.size(); ++r) {
-        if (!roleRead(layers, r, plan.templateSource, readsFirst)) continue;
+        if (!read(r)) continue;
         LayerRolePlan role{layers.roles[r].name, layers.roles[r].kind, {}, {}};
         for (size_t l = 0; l < lp.count; ++l) {
             role.slots.push_back(planIndex(material, layers.layers[l].slots[r], plan));

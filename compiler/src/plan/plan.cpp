@@ -359,6 +359,14 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
 
 std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan) {
     std::vector<EngineFunction> functions;
+    if (plan.layers) {  // an engine calls the roles' blends, not the layers' slots
+        for (const LayerRolePlan& r : plan.layers->roles) {
+            const SlotPlan* first = &plan.slots[r.slots.front()];
+            functions.push_back({"hexc_" + r.name, first, false, r.name});
+            if (kindRow(r.kind).derivative) functions.push_back({"hexc_" + r.name + "_normal", first, true, r.name});
+        }
+        return functions;
+    }
     for (const SlotPlan& sp : plan.slots) {
         if (sp.heightOnly) continue;
         functions.push_back({"hexc_" + sp.slot->name, &sp, false});

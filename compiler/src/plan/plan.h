@@ -168,11 +168,13 @@ struct ShaderPlan {
 ShaderPlan planShader(const Material& material, const CompileOptions& options);
 
 // The functions output's functions (CompileOptions::functions), in slot order: hexc_<slot>, and hexc_<slot>_normal
-// after a normal slot's. Each takes the texture coordinate (vec2 uv).
+// after a normal slot's; for a layered material, in role order: hexc_<role>, the blend, and hexc_<role>_normal after a
+// normal role's. Each takes the texture coordinate (vec2 uv).
 struct EngineFunction {
     std::string name;
     const SlotPlan* slot;
     bool tangentNormal;  // hexc_<slot>_normal: a normal slot's tangent-space normal, not its derivative
+    std::string role;    // a layered material's function of a role, the layers' blend (`slot`: its first layer's slot)
 };
 std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan);
 
