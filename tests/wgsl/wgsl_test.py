@@ -26,12 +26,10 @@ import unittest
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "engines"))
-from web_support import E_S, NODE_MODULES, Handler, blend_tolerance, browser_or_skip, quit_browser, read_pfm, texture_bounds, wait_for  # noqa: E402,E501
-from edit_support import CHROMIUM_FLAGS  # noqa: E402  (web_support puts tests/edit on the path)
+from web_support import (E_S, NODE_MODULES, WEBGPU_FLAGS, Handler, blend_tolerance, browser_or_skip, quit_browser, read_pfm,  # noqa: E402
+                         texture_bounds, wait_for)
 
 HEXC = None
-# Chromium's WebGPU needs the new headless mode; --disable-gpu would leave it no adapter (SwiftShader's Vulkan is its GPU).
-WEBGPU_FLAGS = ["--headless=new", "--enable-unsafe-webgpu"] + [f for f in CHROMIUM_FLAGS if f not in ("--headless", "--disable-gpu")]
 CASES = os.path.join("tests", "execution", "cases")
 # The named views of tests/execution/ (cases_test.cpp) that read mip level 0 only (the page uploads level 0 alone):
 # magnified, 0.75 texel per pixel of a 256^2 texture at tiling 4; origin, the paper's hash near the origin.
