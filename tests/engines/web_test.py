@@ -111,7 +111,8 @@ def lit_material(folder):
 def correlation(a, b):
     ma, mb = sum(a) / len(a), sum(b) / len(b)
     cov = sum((x - ma) * (y - mb) for x, y in zip(a, b))
-    return cov / math.sqrt(sum((x - ma) ** 2 for x in a) * sum((y - mb) ** 2 for y in b))
+    spread = math.sqrt(sum((x - ma) ** 2 for x in a) * sum((y - mb) ** 2 for y in b))
+    return cov / spread if spread else 0.0  # a flat image follows nothing
 
 
 class Engine(unittest.TestCase):
