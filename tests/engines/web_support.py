@@ -16,10 +16,12 @@ import threading
 import zlib
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "edit"))
-from edit_support import browser_or_skip, quit_browser, read_pfm, wait_for  # noqa: E402,F401
+from edit_support import CHROMIUM_FLAGS, browser_or_skip, quit_browser, read_pfm, wait_for  # noqa: E402,F401
 from page_test import E_S, blend_tolerance, srgb_to_linear, write_png  # noqa: E402,F401
 
 NODE_MODULES = os.path.join("tests", "node", "node_modules")
+# Chromium's WebGPU needs the new headless mode; --disable-gpu would leave it no adapter (SwiftShader's Vulkan is its GPU).
+WEBGPU_FLAGS = ["--headless=new", "--enable-unsafe-webgpu"] + [f for f in CHROMIUM_FLAGS if f not in ("--headless", "--disable-gpu")]
 
 
 class Handler(http.server.SimpleHTTPRequestHandler):
@@ -66,8 +68,8 @@ class FileServer:
 class Page:
     """The engine's test page in headless Chromium: `render` runs its driver and returns 8-bit RGBA rows, top first."""
 
-    def __init__(self, server, engine):
-        self.driver = browser_or_skip()
+    def __init__(self, server, engine, flags=CHROMIUM_FLAGS):
+        self.driver = browser_or_skip(flags)
         self.driver.get("%s/integrations/page.html?engine=%s" % (server.url, engine))
         ready = wait_for(lambda: self.driver.execute_script("return window.hexcReady;"), "the %s driver to load" % engine)
         if ready is not True:

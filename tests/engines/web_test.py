@@ -1,6 +1,7 @@
 """hexc's packages for the web engines (three.js, Babylon.js), run in headless Chromium (WebGL 2 on SwiftShader): each
 slot's value through the engine's own material input matches hexc's fp64 reference, and a dome normal map under a
-known light is lit from the light's side, with the package written for either uv origin.
+known light is lit from the light's side, with the package written for either uv origin; Babylon's package on its
+WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2.
 
 Usage: web_test.py HEXC ENGINE [--screenshot PNG]   (from the source root; ENGINE is threejs or babylon)
 """
@@ -17,8 +18,8 @@ import unittest
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from web_support import (E_S, FileServer, Page, blend_tolerance, read_pfm, texture_bounds, write_dome_normal_map,  # noqa: E402
-                         write_png)
+from web_support import (E_S, NODE_MODULES, WEBGPU_FLAGS, FileServer, Page, blend_tolerance, read_pfm, texture_bounds,  # noqa: E402
+                         write_dome_normal_map, write_png)
 
 HEXC = ENGINE = SCREENSHOT = None
 SERVER = PAGE = None
@@ -94,10 +95,24 @@ def mixed_material(folder):
     return path
 
 
+def lit_material(folder):
+    """Rock's albedo and a dome normal map at tiling 14, both magnified in the test's uv rectangle (0.07 uv: 72 of rock's
+    texels and 63 of the dome's across 96 pixels), so that the light shows the domes on the rock."""
+    os.makedirs(os.path.join(folder, "textures"), exist_ok=True)
+    write_dome_normal_map(os.path.join(folder, "textures", "dome_normal.png"))
+    path = os.path.join(folder, "lit.json")
+    with open(path, "w") as f:
+        json.dump({"name": "lit", "hextiling": {"tiling": [4, 4], "rotation": 1.0},
+                   "slots": [{"name": "albedo", "texture": os.path.abspath("materials/textures/rock_albedo.png"), "kind": "color"},
+                             {"name": "normal", "texture": "textures/dome_normal.png", "kind": "normal", "hextiling": {"tiling": [14, 14]}}]}, f)
+    return path
+
+
 def correlation(a, b):
     ma, mb = sum(a) / len(a), sum(b) / len(b)
     cov = sum((x - ma) * (y - mb) for x, y in zip(a, b))
-    return cov / math.sqrt(sum((x - ma) ** 2 for x in a) * sum((y - mb) ** 2 for y in b))
+    spread = math.sqrt(sum((x - ma) ** 2 for x in a) * sum((y - mb) ** 2 for y in b))
+    return cov / spread if spread else 0.0  # a flat image follows nothing
 
 
 class Engine(unittest.TestCase):
@@ -194,6 +209,59 @@ class Engine(unittest.TestCase):
         data = json.loads(module[start:module.index(";\n", start)])
         self.assertEqual(data["unmapped"], ["wetness"])
         self.assertEqual([s["name"] for s in data["slots"]], ["albedo"])
+
+    def test_webgpu_matches_webgl2(self):
+        """Babylon only: the package's WGSL form on Babylon's WebGPU engine draws what its GLSL form draws on WebGL 2, rock's
+        albedo under a dome normal map lit from +x and from -x; both renders show the albedo and the normal map."""
+        if ENGINE != "babylon":
+            self.skipTest("the WGSL form is Babylon's")
+        material = lit_material(os.path.join(PACKAGES, "lit"))
+        env = {**os.environ, "HEXC_NODE_PATH": os.environ.get("HEXC_NODE_PATH") or os.path.abspath(NODE_MODULES)}
+        subprocess.run([HEXC, material, "--engine", ENGINE, "--targets", "wgsl", "-o", os.path.join(PACKAGES, "lit-wgsl"), "-q"],
+                       check=True, env=env)
+        module = "/pkg/lit-wgsl/babylon/lit.babylon.js"
+        rect = [0.3, 0.45, 0.3 + SIZE * 0.75 / 1024, 0.45 + SIZE * 0.75 / 1024]
+        config = dict(module=module, width=SIZE, height=SIZE, uv=engine_uv(rect, "top-left"), encoding="linear", diffuse=True)
+        lights = ([1.0, 0.0, 1.0], [-1.0, 0.0, 1.0])
+        webgl2 = [PAGE.render(**config, light=light) for light in lights]
+        webgpu_page = Page(SERVER, ENGINE, WEBGPU_FLAGS)
+        try:
+            webgpu = [webgpu_page.render(**config, light=light, webgpu=True) for light in lights]
+        finally:
+            webgpu_page.quit()
+        # Each render is out = albedo * I * (n . L) per channel (PBRMaterial's diffuse with specularIntensity 0, no ambient;
+        # its energy-conservation factor is <= 1), I = 2.5 the driver's light, |L| = 1. Each engine's albedo and normal
+        # are within test_values_match_the_reference's bounds of the exact ones (ea; en for the normal as a vector, before
+        # the 0.5 of its encoding), so two engines differ by at most twice those, through |d out| <= I (|da| + |dn|)
+        # (albedo <= 1, |n . L| <= 1), plus each canvas's rounding to 8 bits (0.5/255 each). ANGLE (WebGL 2) and Dawn
+        # (WebGPU) both draw on SwiftShader here, and WGSL's and GLSL ES 3.00's f32 rules differ only within these
+        # rounding terms: the bound is the filtering's, and loose.
+        spread, _, _ = texture_bounds("materials/textures/rock_albedo.png", True)
+        ea = blend_tolerance(E_S, E_S, {"tiling": [4, 4], "rotation": 1.0}, spread)
+        _, max_deriv, min_z = texture_bounds(os.path.join(PACKAGES, "lit", "textures", "dome_normal.png"), False)
+        ed = 2 * E_S * (1 + max_deriv) / min_z
+        en = math.sqrt(2) * blend_tolerance(ed, math.sqrt(2) * ed, {"tiling": [14, 14], "rotation": 1.0}, 2 * max_deriv)
+        tolerance = 2.5 * 2 * (ea + en) + 2 * 0.5 / 255
+        for light, gl, gpu in zip(lights, webgl2, webgpu):
+            errors = [abs(a[c] - b[c]) / 255 for ra, rb in zip(gl, gpu) for a, b in zip(ra, rb) for c in range(3)]
+            print("  babylon WebGPU vs WebGL 2, light %s: max difference %.2f/255, mean %.3f/255, bound %.2f/255"
+                  % (light, max(errors) * 255, sum(errors) / len(errors) * 255, tolerance * 255))
+            self.assertLessEqual(max(errors), tolerance)
+        # The normal map: for out = albedo I (n . L), (out(+x) - out(-x)) / (out(+x) + out(-x)) = n_x / n_z whatever the
+        # albedo, so it follows the reference's normals (pixels clipped at 255 or too dark to divide left out). The albedo:
+        # out(+x) + out(-x) = albedo I sqrt(2) n_z, and n_z varies far less than rock's albedo, so it follows the albedo.
+        normals = [n for row in reference(material, "normal", "normal", rect) for n in row]
+        albedo = [sum(a) for row in reference(material, "albedo", "albedo", rect) for a in row]
+        for name, (plus, minus) in (("WebGL 2", webgl2), ("WebGPU", webgpu)):
+            pixels = [(p[:3], m[:3]) for rp, rm in zip(plus, minus) for p, m in zip(rp, rm)]
+            kept = [i for i, (p, m) in enumerate(pixels) if sum(p) + sum(m) > 60 and max(p + m) < 255]
+            ratio = [(sum(pixels[i][0]) - sum(pixels[i][1])) / (sum(pixels[i][0]) + sum(pixels[i][1])) for i in kept]
+            slope = [(2 * normals[i][0] - 1) / (2 * normals[i][2] - 1) for i in kept]
+            r_normal, r_albedo = correlation(ratio, slope), correlation([sum(p) + sum(m) for p, m in pixels], albedo)
+            print("  babylon %s: correlation with the reference's n_x / n_z %.3f (%d pixels), with its albedo %.3f"
+                  % (name, r_normal, len(kept), r_albedo))
+            self.assertGreater(r_normal, 0.9)
+            self.assertGreater(r_albedo, 0.9)
 
     def test_lit_screenshot(self):
         """The rock on a sphere, lit by the engine from the upper right, sRGB as a canvas shows it: for docs/engines.md."""

@@ -26,12 +26,10 @@ import unittest
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "engines"))
-from web_support import E_S, NODE_MODULES, Handler, blend_tolerance, browser_or_skip, quit_browser, read_pfm, texture_bounds, wait_for  # noqa: E402,E501
-from edit_support import CHROMIUM_FLAGS  # noqa: E402  (web_support puts tests/edit on the path)
+from web_support import (E_S, NODE_MODULES, WEBGPU_FLAGS, Handler, blend_tolerance, browser_or_skip, quit_browser, read_pfm,  # noqa: E402
+                         texture_bounds, wait_for)
 
 HEXC = None
-# Chromium's WebGPU needs the new headless mode; --disable-gpu would leave it no adapter (SwiftShader's Vulkan is its GPU).
-WEBGPU_FLAGS = ["--headless=new", "--enable-unsafe-webgpu"] + [f for f in CHROMIUM_FLAGS if f not in ("--headless", "--disable-gpu")]
 CASES = os.path.join("tests", "execution", "cases")
 # The named views of tests/execution/ (cases_test.cpp) that read mip level 0 only (the page uploads level 0 alone):
 # magnified, 0.75 texel per pixel of a 256^2 texture at tiling 4; origin, the paper's hash near the origin.
@@ -60,14 +58,13 @@ def drawn_cases():
     for a reason docs/verification.md ("WGSL") gives with its figures: height blending, whose bound needs the
     reference's per-pixel heights, which `hexc render` does not give; normal slots, whose bound here takes
     rock_normal.png's whole derivative range for the samples' spread (234/255, where the execution tests use each
-    pixel's); and the noise masks, on which Dawn's image differs from the reference by up to 10.6/255 (open)."""
+    pixel's)."""
     names = []
     for path in sorted(glob.glob(os.path.join(CASES, "*.json"))):
         with open(path) as f:
             case = json.load(f)
         text = json.dumps(case["material"])
-        if (case["rule"] == "falloff" and case["view"] in VIEWS and "height_blend" not in text
-                and '"mask": "noise' not in text):
+        if case["rule"] == "falloff" and case["view"] in VIEWS and "height_blend" not in text:
             names.append(os.path.basename(path)[:-5])
     return names
 

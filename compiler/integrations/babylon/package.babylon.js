@@ -5,19 +5,25 @@
 //   mesh.material = await createMaterial('rock', scene);        // a PBRMaterial with the plugin
 //   // or: new HexcPlugin(existingPbrMaterial, await loadTextures(scene));
 //
+// On Babylon's WebGPU engine (WGSL) too when hexc wrote the package with `--targets wgsl`.
+//
 // Conventions (docs/engines.md#babylonjs): the mesh's uv as Babylon has it, (0, 0) at the bottom-left of the image and
 // v up; hexc's textures are loaded here, as hexc samples them (invertY off; sRGB ones with useSRGBBuffer, so that they
 // are filtered in linear as hexc filters them); the tangent frame is built from the screen-space derivatives of the
 // world position and uv (T along +u, B along +v); the values are linear, and Babylon's image processing encodes them.
 import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
 import { PBRMaterial } from '@babylonjs/core/Materials/PBR/pbrMaterial.js';
+import { ShaderLanguage } from '@babylonjs/core/Materials/shaderLanguage.js';
 import { Texture } from '@babylonjs/core/Materials/Textures/texture.js';
 
-// The material's data, written by hexc: its slots, which Babylon input each fills, and their GLSL ES 3.00 code.
+// The material's data, written by hexc: its slots, which Babylon input each fills, and their GLSL ES 3.00 code (and
+// their WGSL with `--targets wgsl`, for Babylon's WebGPU engine).
 const hexc = /* hexc:data */ null;
 
 // The uv hexc's functions take, from Babylon's (v up the image, origin at the bottom-left).
 const kUv = hexc.uv_origin === 'bottom-left' ? 'vHexcUv' : 'vec2(vHexcUv.x, 1.0 - vHexcUv.y)';
+const kUvWgsl = hexc.uv_origin === 'bottom-left' ? 'fragmentInputs.vHexcUv'
+  : 'vec2f(fragmentInputs.vHexcUv.x, 1.0 - fragmentInputs.vHexcUv.y)';
 
 // The tangent frame from screen-space derivatives (Schüler's cotangent frame), its sign taken from the triangle's
 // orientation on screen so that T runs along +u and B along +v in Babylon's left-handed world as in a right-handed one.
@@ -32,6 +38,18 @@ vec3 hexcPerturb(vec3 N, vec3 p, vec2 uv, vec3 n) {
   return normalize(T * scale * n.x + B * scale * n.y + N * n.z);
 }`;
 
+// The same frame in WGSL.
+const kTangentFrameWgsl = `
+fn hexcPerturb(N: vec3f, p: vec3f, uv: vec2f, n: vec3f) -> vec3f {
+  let dp1 = dpdx(p); let dp2 = dpdy(p);
+  let duv1 = dpdx(uv); let duv2 = dpdy(uv);
+  let dp2perp = cross(dp2, N); let dp1perp = cross(N, dp1);
+  let T = dp2perp * duv1.x + dp1perp * duv2.x;
+  let B = dp2perp * duv1.y + dp1perp * duv2.y;
+  let scale = sign(dot(cross(dp1, dp2), N)) * inverseSqrt(max(max(dot(T, T), dot(B, B)), 1e-30));
+  return normalize(T * scale * n.x + B * scale * n.y + N * n.z);
+}`;
+
 // Where each role's value enters PBRMaterial's fragment shader: a regular expression over its code (a plugin's "!"
 // injection point) and what replaces the match, given the slot's call.
 const roles = {
@@ -42,6 +60,24 @@ const roles = {
   // After the geometric normal is final (pbrBlockNormalFinal) and before anything reads it.
   normal: ['albedoOpacityOutParams albedoOpacityOut;', (call) => `normalW=hexcPerturb(normalW,vPositionW,vHexcUv,${call});albedoOpacityOutParams albedoOpacityOut;`],
 };
+
+// The same points in PBRMaterial's WGSL.
+const rolesWgsl = {
+  albedo: ['var surfaceAlbedo: vec3f=albedoOpacityOut\\.surfaceAlbedo;', (call) => `var surfaceAlbedo: vec3f=albedoOpacityOut.surfaceAlbedo*${call}.rgb;`],
+  roughness: ['var roughness: f32=reflectivityOut\\.roughness;',
+    (call) => `var roughness: f32=reflectivityOut.roughness*${call};microSurface=1.0-roughness;`],
+  normal: ['var albedoOpacityOut: albedoOpacityOutParams;',
+    (call) => `normalW=hexcPerturb(normalW,fragmentInputs.vPositionW,fragmentInputs.vHexcUv,${call});var albedoOpacityOut: albedoOpacityOutParams;`],
+};
+
+// hexc's WGSL as Babylon's WGSL processor takes it: resources without @group and @binding (Babylon numbers them), and
+// a sampler per texture named <texture>Sampler, which Babylon binds with that texture, in place of hexc's one sampler.
+function babylonWgsl(wgsl) {
+  const sampler = /var (\w+): sampler;/.exec(wgsl)[1];
+  const samplers = hexc.textures.map((t) => `var ${t.uniform}Sampler: sampler;`).join('\n');
+  return wgsl.replace(/@group\(\d+\) @binding\(\d+\) /g, '').replace(`var ${sampler}: sampler;`, samplers)
+    .replace(new RegExp(`(\\w+), ${sampler}\\b`, 'g'), '$1, $1Sampler');
+}
 
 // Loads the slots' textures as hexc samples them: repeat, trilinear, the image's first row at t = 0 (invertY off,
 // whatever the uv origin: hexc flips v itself for bottom-left), sRGB ones decoded by the sampler before filtering.
@@ -67,6 +103,9 @@ export class HexcPlugin extends MaterialPluginBase {
 
   getClassName() { return 'HexcPlugin'; }
 
+  // WGSL (Babylon's WebGPU engine) when hexc wrote it: `hexc --engine babylon --targets wgsl`.
+  isCompatible(shaderLanguage) { return shaderLanguage === ShaderLanguage.GLSL || (shaderLanguage === ShaderLanguage.WGSL && !!hexc.wgsl); }
+
   prepareDefines(defines) { defines.HEXC = true; }
 
   getAttributes(attributes) { if (!attributes.includes('uv')) attributes.push('uv'); }
@@ -81,7 +120,8 @@ export class HexcPlugin extends MaterialPluginBase {
     for (const [uniform, texture] of Object.entries(this.textures)) uniformBuffer.setTexture(uniform, texture);
   }
 
-  getCustomCode(shaderType) {
+  getCustomCode(shaderType, shaderLanguage) {
+    if (shaderLanguage === ShaderLanguage.WGSL) return this.customCodeWgsl(shaderType);
     if (shaderType === 'vertex') {
       return { CUSTOM_VERTEX_DEFINITIONS: '#ifndef UV1\nattribute vec2 uv;\n#endif\nvarying vec2 vHexcUv;', CUSTOM_VERTEX_MAIN_END: 'vHexcUv = uv;' };
     }
@@ -89,6 +129,21 @@ export class HexcPlugin extends MaterialPluginBase {
     for (const slot of hexc.slots) {
       const [point, replace] = roles[slot.role];
       code[`!${point}`] = replace(slot.call.replace('UV', kUv));
+    }
+    return code;
+  }
+
+  // naga's functions take their uv by pointer: each call gets a function-scope copy.
+  customCodeWgsl(shaderType) {
+    if (shaderType === 'vertex') {
+      return { CUSTOM_VERTEX_DEFINITIONS: '#ifndef UV1\nattribute uv: vec2f;\n#endif\nvarying vHexcUv: vec2f;',
+        CUSTOM_VERTEX_MAIN_END: 'vertexOutputs.vHexcUv = vertexInputs.uv;' };
+    }
+    const code = { CUSTOM_FRAGMENT_DEFINITIONS: `varying vHexcUv: vec2f;\n${babylonWgsl(hexc.wgsl)}\n${kTangentFrameWgsl}` };
+    for (const slot of hexc.slots) {
+      const [point, replace] = rolesWgsl[slot.role];
+      const uv = `hexcUv_${slot.name}`;
+      code[`!${point}`] = `var ${uv}: vec2f = ${kUvWgsl};` + replace(slot.call.replace('UV', `&${uv}`));
     }
     return code;
   }

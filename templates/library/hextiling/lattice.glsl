@@ -30,6 +30,22 @@ vec2 hexcTileCentre(ivec2 id) {
     return vec2(float(id.x) + 0.5 * float(id.y), float(id.y) / 1.15470054) / (2.0 * sqrt(3.0));
 }
 
+// (cos, sin) of an angle, the same on every target: within 1.2e-7 in [-pi, pi], 3.3e-6 at 3600 degrees (float32
+// rounding). WGSL and Vulkan allow the target's cos and sin an absolute error of 2^-11 in [-pi, pi] (SwiftShader uses
+// it), and an error e in a tile's rotation moves its sample point by e |d|, d being st relative to the point the tile
+// turns about: at most a tile's size on the lattices, but |st| on the noise masks, which turn about the st origin.
+// Reduced by quarter turns k to |r| <= pi/4, where the Taylor series to r^9 and r^8 are within 2e-9 and 3e-8.
+vec2 hexcCosSin(float angle) {
+    float k = round(angle * (2.0 / hexcPi));
+    float r = angle - k * (0.5 * hexcPi), r2 = r * r;
+    float s = r * (1.0 + r2 * (-1.0 / 6.0 + r2 * (1.0 / 120.0 + r2 * (-1.0 / 5040.0 + r2 * (1.0 / 362880.0)))));
+    float c = 1.0 + r2 * (-0.5 + r2 * (1.0 / 24.0 + r2 * (-1.0 / 720.0 + r2 * (1.0 / 40320.0))));
+    // Quarter turn q: (cos, sin) of r turned by q * 90 degrees (q & 3 is the remainder for negative k too).
+    int q = int(k) & 3;
+    vec2 cs = (q & 1) != 0 ? vec2(-s, c) : vec2(c, s);
+    return (q & 2) != 0 ? -cs : cs;
+}
+
 // Listing 6: the paper's per-tile rotation angle in (-pi, pi], scaled by rotStrength; returns (cos, sin).
 vec2 hexcRotationPaper(ivec2 id, float rotStrength) {
     float angle = float(abs(id.x * id.y) + abs(id.x + id.y)) + hexcPi;
@@ -155,8 +171,9 @@ uvec3 hexcPcg3d(uvec3 v) {
 }
 
 // A tile's offset in [0, 1)^2, rotation (cos, sin) of an angle in [-pi, pi) * rotStrength and 1 / scale,
-// from the top 24 bits of each hash word (exact in float32).
-void hexcStableTile(ivec2 id, HexcLattice l, out vec2 offset, out vec2 rot, out float invScale) {
+// from the top 24 bits of each hash word (exact in float32); `aboutOrigin` (a literal): the tile turns about the st
+// origin, so its (cos, sin) must be exact (hexcCosSin).
+void hexcStableTile(ivec2 id, HexcLattice l, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale) {
     vec3 u = vec3(hexcPcg3d(uvec3(uvec2(id), 0u)) >> 8u) * (1.0 / 16777216.0);
     offset = u.xy;
     float angle = (u.z * 2.0 - 1.0) * hexcPi * l.rotation;
@@ -169,7 +186,7 @@ void hexcStableTile(ivec2 id, HexcLattice l, out vec2 offset, out vec2 rot, out 
         float v = float(hexcPcg3d(uvec3(uvec2(id), 1u)).x >> 8u) * (1.0 / 16777216.0);
         invScale = 1.0 / mix(l.scaleRange.x, l.scaleRange.y, v);
     }
-    rot = l.rotate ? vec2(cos(angle), sin(angle)) : vec2(1.0, 0.0);
+    rot = !l.rotate ? vec2(1.0, 0.0) : aboutOrigin ? hexcCosSin(angle) : vec2(cos(angle), sin(angle));
 }
 
 // Tile centre of local (reduced) ids: the inverse of skewed = (s x - 2 y, 4 y).
@@ -201,10 +218,10 @@ vec2 hexcToTile(vec2 v, HexcTap p, HexcLattice l) {
 // Places tile `id`: its transform from the hash of `id`, the sample point from `d` (st relative to the point c the
 // tile rotates and scales about) and the gradients, rotated and scaled with the tile; `c` (modulo the texture's
 // period) is added back, so that offset 0 without rotation or scale reads the texture where st does.
-HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
+HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, HexcLattice l, bool aboutOrigin) {
     HexcTap p;
     vec2 offset;
-    hexcStableTile(id, l, offset, p.rot, p.invScale);
+    hexcStableTile(id, l, aboutOrigin, offset, p.rot, p.invScale);
     p.st = hexcToTile(d, p, l) + c + offset;
     p.dx = hexcToTile(dSTdx, p, l);
     p.dy = hexcToTile(dSTdy, p, l);
@@ -215,7 +232,7 @@ HexcTap hexcPlaceTile(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, HexcLatt
 // hashed, so they may wrap), and its tap.
 HexcTap hexcStableTap(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, HexcLattice l, out ivec2 id) {
     id = ivec2(uvec2(local) + shift);
-    return hexcPlaceTile(id, r - hexcStableCentre(local), hexcStableCentreInPeriod(local), dSTdx, dSTdy, l);
+    return hexcPlaceTile(id, r - hexcStableCentre(local), hexcStableCentreInPeriod(local), dSTdx, dSTdy, l, false);
 }
 
 // st = (28, 1) * cell + st_local: `cell` is a split-coordinates origin (0 otherwise), whose lattice shift is

@@ -25,8 +25,8 @@ HexcTiles hexcTilesChecker(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell, HexcLatt
     t.channel = ivec3(0, 1, 1);
     float s = 1.0 / float(scale);
     // The cells' centres in the unit of st holding it: (a + 1/2) / scale and b / scale.
-    t.tap[0] = hexcPlaceTile(t.id[0], (fa - 0.5) * s, (a + 0.5) * s, dSTdx, dSTdy, l);
-    t.tap[1] = hexcPlaceTile(t.id[1], (fb - 0.5) * s, b * s, dSTdx, dSTdy, l);
+    t.tap[0] = hexcPlaceTile(t.id[0], (fa - 0.5) * s, (a + 0.5) * s, dSTdx, dSTdy, l, false);
+    t.tap[1] = hexcPlaceTile(t.id[1], (fb - 0.5) * s, b * s, dSTdx, dSTdy, l, false);
     t.tap[2] = t.tap[1];
     return t;
 }
@@ -41,7 +41,8 @@ float hexcValueNoise(uvec2 c, vec2 f, uint salt) {
 }
 
 // The noise masks: three copies of the texture, each with one transform (ids (0,0), (1,0), (2,0)) about the st
-// origin, weighed by three bands of one value noise or by three noises (`triple`).
+// origin (so with hexcCosSin's exact cos and sin), weighed by three bands of one value noise or by three noises
+// (`triple`).
 HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     HexcTiles t;
     t.dx = dSTdx;
@@ -62,8 +63,8 @@ HexcTiles hexcTilesNoise(vec2 st, vec2 dSTdx, vec2 dSTdy, HexcLattice l) {
     }
     t.id = ivec2[3](ivec2(0, 0), ivec2(1, 0), ivec2(2, 0));
     t.channel = ivec3(0, 1, 2);
-    t.tap[0] = hexcPlaceTile(t.id[0], st, vec2(0.0), dSTdx, dSTdy, l);
-    t.tap[1] = hexcPlaceTile(t.id[1], st, vec2(0.0), dSTdx, dSTdy, l);
-    t.tap[2] = hexcPlaceTile(t.id[2], st, vec2(0.0), dSTdx, dSTdy, l);
+    t.tap[0] = hexcPlaceTile(t.id[0], st, vec2(0.0), dSTdx, dSTdy, l, true);
+    t.tap[1] = hexcPlaceTile(t.id[1], st, vec2(0.0), dSTdx, dSTdy, l, true);
+    t.tap[2] = hexcPlaceTile(t.id[2], st, vec2(0.0), dSTdx, dSTdy, l, true);
     return t;
 }

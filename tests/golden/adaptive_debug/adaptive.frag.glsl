@@ -57,24 +57,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -86,68 +86,111 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+vec2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    vec2 _434;
+    if ((q & 1) != 0)
+    {
+        _434 = vec2(-s, c);
+    }
+    else
+    {
+        _434 = vec2(c, s);
+    }
+    vec2 cs = _434;
+    vec2 _449;
+    if ((q & 2) != 0)
+    {
+        _449 = -cs;
+    }
+    else
+    {
+        _449 = cs;
+    }
+    return _449;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _600 = hexcPcg3d(param);
-    vec3 u = vec3(_600 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _690 = hexcPcg3d(param);
+    vec3 u = vec3(_690 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = vec2(cos(angle), sin(angle));
+    vec2 _714;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _714 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _714 = vec2(cos(angle), sin(angle));
+    }
+    rot = _714;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    vec2 _698 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_698 + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    vec2 _708 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _708;
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    vec2 _714 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _714;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _799 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_799 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _809 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _809;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _815 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _815;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -156,52 +199,53 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _385;
+    int _475;
     if ((d < 0) && (a != 0))
     {
-        _385 = 3 - a;
+        _475 = 3 - a;
     }
     else
     {
-        _385 = a;
+        _475 = a;
     }
-    int i1 = _385;
-    int _396;
+    int i1 = _475;
+    int _486;
     if (i1 < 2)
     {
-        _396 = i1 + 1;
+        _486 = i1 + 1;
     }
     else
     {
-        _396 = 0;
+        _486 = 0;
     }
-    int vh = _396;
-    int _406;
+    int vh = _486;
+    int _496;
     if (i1 > 0)
     {
-        _406 = i1 - 1;
+        _496 = i1 - 1;
     }
     else
     {
-        _406 = 2;
+        _496 = 2;
     }
-    int vl = _406;
+    int vl = _496;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -223,37 +267,37 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _828 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _930 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _828;
+    t.tap[0] = _930;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _844 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _946 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _844;
+    t.tap[1] = _946;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _860 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _962 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _860;
+    t.tap[2] = _962;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -282,55 +326,55 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _936;
+#line 403 "hexc/hextiling.glsl"
+    float _1038;
     if (kInt > 0)
     {
-        _936 = float(kInt);
+        _1038 = float(kInt);
     }
     else
     {
-        _936 = log(1.0 - r) / (-0.693147182464599609375);
+        _1038 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _936;
+    return _1038;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
     vec3 m = (vec3(1.0) - s) * 2.0;
     vec3 base = max(vec3(0.0), s + (x * m));
-    vec3 _973;
+    vec3 _1075;
     if (kInt > 0)
     {
         vec3 param = base;
         int param_1 = kInt;
-        vec3 _980 = hexcPowInt(param, param_1);
-        _973 = _980;
+        vec3 _1082 = hexcPowInt(param, param_1);
+        _1075 = _1082;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _973 = pow(base, vec3(hexcGainK(param_2, param_3)));
+        _1075 = pow(base, vec3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _973);
+    return (s * 0.5) + ((m * 0.25) * _1075);
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 bvec3 hexcAdaptiveTaps_albedo(vec3 w)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     vec3 wn = w / vec3(max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30)));
     vec3 param = wn;
     int param_1 = 7;
-    vec3 _1107 = hexcPowInt(param, param_1);
-    vec3 wg = _1107;
+    vec3 _1209 = hexcPowInt(param, param_1);
+    vec3 wg = _1209;
     float lo = 1.0 - hexcParams.albedo_falloffcontrast;
     vec3 others = vec3((wg.x + wg.y) + wg.z) - wg;
     vec3 U = wg / max(wg + (others * lo), vec3(1.0000000031710768509710513471353e-30));
@@ -356,35 +400,35 @@ bvec3 hexcAdaptiveTaps_albedo(vec3 w)
         vec3 r2 = L.zxy / max(U, vec3(1.0000000031710768509710513471353e-30));
         vec3 param_10 = r1;
         int param_11 = 2;
-        vec3 _1200 = hexcPowInt(param_10, param_11);
-        vec3 p1 = _1200;
+        vec3 _1302 = hexcPowInt(param_10, param_11);
+        vec3 p1 = _1302;
         vec3 param_12 = r2;
         int param_13 = 2;
-        vec3 _1205 = hexcPowInt(param_12, param_13);
-        vec3 p2 = _1205;
+        vec3 _1307 = hexcPowInt(param_12, param_13);
+        vec3 p2 = _1307;
         Gup = mix(Gup, vec3(1.0) / ((vec3(1.0) + p1) + p2), lessThan(max(U, max(L.yzx, L.zxy)), vec3(0.5)));
     }
     vec3 B = Gup - (log(max(vec3(1.0) - U, vec3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-    bool _1239 = w.x >= w.y;
-    bool _1247;
-    if (_1239)
+    bool _1341 = w.x >= w.y;
+    bool _1349;
+    if (_1341)
     {
-        _1247 = w.x >= w.z;
+        _1349 = w.x >= w.z;
     }
     else
     {
-        _1247 = _1239;
+        _1349 = _1341;
     }
-    int _1248;
-    if (_1247)
+    int _1350;
+    if (_1349)
     {
-        _1248 = 0;
+        _1350 = 0;
     }
     else
     {
-        _1248 = (w.y >= w.z) ? 1 : 2;
+        _1350 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1248;
+    int d = _1350;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bvec3 f = bvec3(true);
@@ -403,33 +447,33 @@ bvec3 hexcAdaptiveTaps_albedo(vec3 w)
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_albedo(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     vec3 param = w;
     return hexcAdaptiveTaps_albedo(param);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -453,17 +497,17 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     }
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_albedo(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -471,26 +515,26 @@ vec3 hexcGain3(vec3 x, float r, int kInt)
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1045 = hexcPowInt(param, param_1);
-    vec3 wg = _1045;
+    vec3 _1147 = hexcPowInt(param, param_1);
+    vec3 wg = _1147;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1061;
+    vec3 _1163;
     if (sum > 0.0)
     {
-        _1061 = W / vec3(sum);
+        _1163 = W / vec3(sum);
     }
     else
     {
-        _1061 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1163 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1061;
+    W = _1163;
     vec3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -498,17 +542,17 @@ vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -538,9 +582,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_6;
-    vec4 _2159 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
+    vec4 _2261 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
     weights = param_6;
-    return _2159;
+    return _2261;
 }
 
 #line 24 "hexc/generated"
@@ -553,9 +597,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _2180 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _2282 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2180;
+    return _2282;
 }
 
 #line 27 "hexc/generated"
@@ -564,45 +608,45 @@ vec4 hexc_albedo(vec2 uv)
 #line 27 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _2188 = hexc_albedo(param, param_1);
+    vec4 _2290 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _2188;
+    return _2290;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    vec4 _466;
+#line 132 "hexc/hextiling.glsl"
+    vec4 _556;
     if (c == 0)
     {
-        _466 = vec4(1.0, 0.0, 0.0, 0.0);
+        _556 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _473;
+        vec4 _563;
         if (c == 1)
         {
-            _473 = vec4(0.0, 1.0, 0.0, 0.0);
+            _563 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _473 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _563 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _466 = _473;
+        _556 = _563;
     }
-    return _466;
+    return _556;
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 bvec3 hexcAdaptiveTaps_roughness(vec3 w)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     vec3 wn = w / vec3(max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30)));
     vec3 param = wn;
     int param_1 = 7;
-    vec3 _1542 = hexcPowInt(param, param_1);
-    vec3 wg = _1542;
+    vec3 _1644 = hexcPowInt(param, param_1);
+    vec3 wg = _1644;
     float lo = 1.0 - hexcParams.roughness_falloffcontrast;
     vec3 others = vec3((wg.x + wg.y) + wg.z) - wg;
     vec3 U = wg / max(wg + (others * lo), vec3(1.0000000031710768509710513471353e-30));
@@ -628,35 +672,35 @@ bvec3 hexcAdaptiveTaps_roughness(vec3 w)
         vec3 r2 = L.zxy / max(U, vec3(1.0000000031710768509710513471353e-30));
         vec3 param_10 = r1;
         int param_11 = 2;
-        vec3 _1634 = hexcPowInt(param_10, param_11);
-        vec3 p1 = _1634;
+        vec3 _1736 = hexcPowInt(param_10, param_11);
+        vec3 p1 = _1736;
         vec3 param_12 = r2;
         int param_13 = 2;
-        vec3 _1639 = hexcPowInt(param_12, param_13);
-        vec3 p2 = _1639;
+        vec3 _1741 = hexcPowInt(param_12, param_13);
+        vec3 p2 = _1741;
         Gup = mix(Gup, vec3(1.0) / ((vec3(1.0) + p1) + p2), lessThan(max(U, max(L.yzx, L.zxy)), vec3(0.5)));
     }
     vec3 B = Gup - (log(max(vec3(1.0) - U, vec3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-    bool _1672 = w.x >= w.y;
-    bool _1680;
-    if (_1672)
+    bool _1774 = w.x >= w.y;
+    bool _1782;
+    if (_1774)
     {
-        _1680 = w.x >= w.z;
+        _1782 = w.x >= w.z;
     }
     else
     {
-        _1680 = _1672;
+        _1782 = _1774;
     }
-    int _1681;
-    if (_1680)
+    int _1783;
+    if (_1782)
     {
-        _1681 = 0;
+        _1783 = 0;
     }
     else
     {
-        _1681 = (w.y >= w.z) ? 1 : 2;
+        _1783 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1681;
+    int d = _1783;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bvec3 f = bvec3(true);
@@ -675,25 +719,25 @@ bvec3 hexcAdaptiveTaps_roughness(vec3 w)
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_roughness(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     vec3 param = w;
     return hexcAdaptiveTaps_roughness(param);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_roughness(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_roughness(param);
     HexcTiles param_1 = t;
@@ -724,9 +768,9 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_6 = hexcChannel(param_4);
     vec3 param_7;
-    vec4 _2251 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
+    vec4 _2353 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
     weights = param_7;
-    return _2251.x;
+    return _2353.x;
 }
 
 #line 43 "hexc/generated"
@@ -739,9 +783,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _2271 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _2373 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2271;
+    return _2373;
 }
 
 #line 46 "hexc/generated"
@@ -750,20 +794,20 @@ float hexc_roughness(vec2 uv)
 #line 46 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _2279 = hexc_roughness(param, param_1);
+    float _2381 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _2279;
+    return _2381;
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 bvec3 hexcAdaptiveTaps_normal(vec3 w)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     vec3 wn = w / vec3(max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30)));
     vec3 param = wn;
     int param_1 = 7;
-    vec3 _1327 = hexcPowInt(param, param_1);
-    vec3 wg = _1327;
+    vec3 _1429 = hexcPowInt(param, param_1);
+    vec3 wg = _1429;
     float lo = 1.0 - hexcParams.normal_falloffcontrast;
     vec3 others = vec3((wg.x + wg.y) + wg.z) - wg;
     vec3 U = wg / max(wg + (others * lo), vec3(1.0000000031710768509710513471353e-30));
@@ -789,35 +833,35 @@ bvec3 hexcAdaptiveTaps_normal(vec3 w)
         vec3 r2 = L.zxy / max(U, vec3(1.0000000031710768509710513471353e-30));
         vec3 param_10 = r1;
         int param_11 = 2;
-        vec3 _1419 = hexcPowInt(param_10, param_11);
-        vec3 p1 = _1419;
+        vec3 _1521 = hexcPowInt(param_10, param_11);
+        vec3 p1 = _1521;
         vec3 param_12 = r2;
         int param_13 = 2;
-        vec3 _1424 = hexcPowInt(param_12, param_13);
-        vec3 p2 = _1424;
+        vec3 _1526 = hexcPowInt(param_12, param_13);
+        vec3 p2 = _1526;
         Gup = mix(Gup, vec3(1.0) / ((vec3(1.0) + p1) + p2), lessThan(max(U, max(L.yzx, L.zxy)), vec3(0.5)));
     }
     vec3 B = Gup - (log(max(vec3(1.0) - U, vec3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-    bool _1457 = w.x >= w.y;
-    bool _1465;
-    if (_1457)
+    bool _1559 = w.x >= w.y;
+    bool _1567;
+    if (_1559)
     {
-        _1465 = w.x >= w.z;
+        _1567 = w.x >= w.z;
     }
     else
     {
-        _1465 = _1457;
+        _1567 = _1559;
     }
-    int _1466;
-    if (_1465)
+    int _1568;
+    if (_1567)
     {
-        _1466 = 0;
+        _1568 = 0;
     }
     else
     {
-        _1466 = (w.y >= w.z) ? 1 : 2;
+        _1568 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1466;
+    int d = _1568;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bvec3 f = bvec3(true);
@@ -836,73 +880,73 @@ bvec3 hexcAdaptiveTaps_normal(vec3 w)
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_normal(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     vec3 param = w;
     return hexcAdaptiveTaps_normal(param);
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1961;
+    float _2063;
     if (flipY)
     {
-        _1961 = -vM.y;
+        _2063 = -vM.y;
     }
     else
     {
-        _1961 = vM.y;
+        _2063 = vM.y;
     }
-    return (-vec2(vM.x, _1961)) / vec2(zMa);
+    return (-vec2(vM.x, _2063)) / vec2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1994;
+    vec2 _2096;
     if (scaled)
     {
-        _1994 = d * p.invScale;
+        _2096 = d * p.invScale;
     }
     else
     {
-        _1994 = d;
+        _2096 = d;
     }
-    return _1994;
+    return _2096;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_normal(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.normal_falloffcontrast));
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_normal(param);
     HexcTiles param_1 = t;
@@ -962,9 +1006,9 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     vec3 param_6;
-    vec2 _2205 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
+    vec2 _2307 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
     weights = param_6;
-    return _2205;
+    return _2307;
 }
 
 #line 33 "hexc/generated"
@@ -977,9 +1021,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _2224 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _2326 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2224;
+    return _2326;
 }
 
 #line 36 "hexc/generated"
@@ -988,15 +1032,15 @@ vec2 hexc_normal(vec2 uv)
 #line 36 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _2232 = hexc_normal(param, param_1);
+    vec2 _2334 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _2232;
+    return _2334;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

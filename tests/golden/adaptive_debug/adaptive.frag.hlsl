@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _1777[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _1879[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -69,24 +69,24 @@ void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 float2 hexcStableCentreInPeriod(int2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -98,68 +98,111 @@ uint3 hexcPcg3d(inout uint3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+float2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875f);
+    float r = angle - (k * 1.57079637050628662109375f);
+    float r2 = r * r;
+    float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
+    float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
+    int q = int(k) & 3;
+    float2 _434;
+    if ((q & 1) != 0)
+    {
+        _434 = float2(-s, c);
+    }
+    else
+    {
+        _434 = float2(c, s);
+    }
+    float2 cs = _434;
+    float2 _449;
+    if ((q & 2) != 0)
+    {
+        _449 = -cs;
+    }
+    else
+    {
+        _449 = cs;
+    }
+    return _449;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _600 = hexcPcg3d(param);
-    float3 u = float3(_600 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _690 = hexcPcg3d(param);
+    float3 u = float3(_690 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_albedo_rotation;
     invScale = 1.0f;
-    rot = float2(cos(angle), sin(angle));
+    float2 _714;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _714 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _714 = float2(cos(angle), sin(angle));
+    }
+    rot = _714;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 float2 hexcRotateToTile(float2 v, float2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 float2 hexcToTile_albedo(inout float2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _698 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_698 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _708 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _708;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _714 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _714;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _799 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_799 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _809 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _809;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _815 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _815;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -168,52 +211,53 @@ HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, fl
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _385;
+    int _475;
     if ((d < 0) && (a != 0))
     {
-        _385 = 3 - a;
+        _475 = 3 - a;
     }
     else
     {
-        _385 = a;
+        _475 = a;
     }
-    int i1 = _385;
-    int _396;
+    int i1 = _475;
+    int _486;
     if (i1 < 2)
     {
-        _396 = i1 + 1;
+        _486 = i1 + 1;
     }
     else
     {
-        _396 = 0;
+        _486 = 0;
     }
-    int vh = _396;
-    int _406;
+    int vh = _486;
+    int _496;
     if (i1 > 0)
     {
-        _406 = i1 - 1;
+        _496 = i1 - 1;
     }
     else
     {
-        _406 = 2;
+        _496 = 2;
     }
-    int vl = _406;
+    int vl = _496;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -235,37 +279,37 @@ HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cel
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _828 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _930 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _828;
+    t.tap[0] = _930;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _844 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _946 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _844;
+    t.tap[1] = _946;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _860 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _962 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _860;
+    t.tap[2] = _962;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -294,55 +338,55 @@ float3 hexcPowInt(inout float3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _936;
+#line 403 "hexc/hextiling.glsl"
+    float _1038;
     if (kInt > 0)
     {
-        _936 = float(kInt);
+        _1038 = float(kInt);
     }
     else
     {
-        _936 = log(1.0f - r) / (-0.693147182464599609375f);
+        _1038 = log(1.0f - r) / (-0.693147182464599609375f);
     }
-    return _936;
+    return _1038;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 float3 hexcGainCurve(float3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 s = step(0.5f.xxx, x) * 2.0f;
     float3 m = (1.0f.xxx - s) * 2.0f;
     float3 base = max(0.0f.xxx, s + (x * m));
-    float3 _973;
+    float3 _1075;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _980 = hexcPowInt(param, param_1);
-        _973 = _980;
+        float3 _1082 = hexcPowInt(param, param_1);
+        _1075 = _1082;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _973 = pow(base, hexcGainK(param_2, param_3).xxx);
+        _1075 = pow(base, hexcGainK(param_2, param_3).xxx);
     }
-    return (s * 0.5f) + ((m * 0.25f) * _973);
+    return (s * 0.5f) + ((m * 0.25f) * _1075);
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 bool3 hexcAdaptiveTaps_albedo(float3 w)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     float3 wn = w / max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30f)).xxx;
     float3 param = wn;
     int param_1 = 7;
-    float3 _1107 = hexcPowInt(param, param_1);
-    float3 wg = _1107;
+    float3 _1209 = hexcPowInt(param, param_1);
+    float3 wg = _1209;
     float lo = 1.0f - hexcParams_albedo_falloffcontrast;
     float3 others = ((wg.x + wg.y) + wg.z).xxx - wg;
     float3 U = wg / max(wg + (others * lo), 1.0000000031710768509710513471353e-30f.xxx);
@@ -368,38 +412,38 @@ bool3 hexcAdaptiveTaps_albedo(float3 w)
         float3 r2 = L.zxy / max(U, 1.0000000031710768509710513471353e-30f.xxx);
         float3 param_10 = r1;
         int param_11 = 2;
-        float3 _1200 = hexcPowInt(param_10, param_11);
-        float3 p1 = _1200;
+        float3 _1302 = hexcPowInt(param_10, param_11);
+        float3 p1 = _1302;
         float3 param_12 = r2;
         int param_13 = 2;
-        float3 _1205 = hexcPowInt(param_12, param_13);
-        float3 p2 = _1205;
-        float3 _1213 = 1.0f.xxx / ((1.0f.xxx + p1) + p2);
-        float3 _1220 = max(U, max(L.yzx, L.zxy));
-        bool3 _1222 = bool3(_1220.x < 0.5f.xxx.x, _1220.y < 0.5f.xxx.y, _1220.z < 0.5f.xxx.z);
-        Gup = float3(_1222.x ? _1213.x : Gup.x, _1222.y ? _1213.y : Gup.y, _1222.z ? _1213.z : Gup.z);
+        float3 _1307 = hexcPowInt(param_12, param_13);
+        float3 p2 = _1307;
+        float3 _1315 = 1.0f.xxx / ((1.0f.xxx + p1) + p2);
+        float3 _1322 = max(U, max(L.yzx, L.zxy));
+        bool3 _1324 = bool3(_1322.x < 0.5f.xxx.x, _1322.y < 0.5f.xxx.y, _1322.z < 0.5f.xxx.z);
+        Gup = float3(_1324.x ? _1315.x : Gup.x, _1324.y ? _1315.y : Gup.y, _1324.z ? _1315.z : Gup.z);
     }
     float3 B = Gup - (log(max(1.0f.xxx - U, 1.0000000031710768509710513471353e-30f.xxx)) * (0.25f * k));
-    bool _1239 = w.x >= w.y;
-    bool _1247;
-    if (_1239)
+    bool _1341 = w.x >= w.y;
+    bool _1349;
+    if (_1341)
     {
-        _1247 = w.x >= w.z;
+        _1349 = w.x >= w.z;
     }
     else
     {
-        _1247 = _1239;
+        _1349 = _1341;
     }
-    int _1248;
-    if (_1247)
+    int _1350;
+    if (_1349)
     {
-        _1248 = 0;
+        _1350 = 0;
     }
     else
     {
-        _1248 = (w.y >= w.z) ? 1 : 2;
+        _1350 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1248;
+    int d = _1350;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bool3 f = bool3(true, true, true);
@@ -418,36 +462,36 @@ bool3 hexcAdaptiveTaps_albedo(float3 w)
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_albedo(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     float3 param = w;
     return hexcAdaptiveTaps_albedo(param);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 float3 hexcTileLods_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.SampleGrad(samp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _1777;
+    c = _1879;
     if (f.x)
     {
         HexcTap param_1 = t.tap[0];
@@ -468,17 +512,17 @@ void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     }
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_albedo(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_albedo_falloffcontrast.xxx);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 float3 hexcGain3(float3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -486,26 +530,26 @@ float3 hexcGain3(float3 x, float r, int kInt)
     return res / ((res.x + res.y) + res.z).xxx;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_albedo(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1045 = hexcPowInt(param, param_1);
-    float3 wg = _1045;
+    float3 _1147 = hexcPowInt(param, param_1);
+    float3 wg = _1147;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1061;
+    float3 _1163;
     if (sum > 0.0f)
     {
-        _1061 = W / sum.xxx;
+        _1163 = W / sum.xxx;
     }
     else
     {
-        _1061 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1163 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1061;
+    W = _1163;
     float3 param_2 = W;
     float param_3 = 0.5f;
     int param_4 = 2;
@@ -513,20 +557,20 @@ float3 hexcBlendWeights_albedo(float3 w, float3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
-    int3 _438 = channel.x.xxx;
-    int3 _448 = channel.y.xxx;
-    int3 _457 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _438.x, int3(0, 1, 2).y == _438.y, int3(0, 1, 2).z == _438.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _448.x, int3(0, 1, 2).y == _448.y, int3(0, 1, 2).z == _448.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _457.x, int3(0, 1, 2).y == _457.y, int3(0, 1, 2).z == _457.z)) * W.z);
+#line 125 "hexc/hextiling.glsl"
+    int3 _528 = channel.x.xxx;
+    int3 _538 = channel.y.xxx;
+    int3 _547 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _528.x, int3(0, 1, 2).y == _528.y, int3(0, 1, 2).z == _528.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _538.x, int3(0, 1, 2).y == _538.y, int3(0, 1, 2).z == _538.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _547.x, int3(0, 1, 2).y == _547.y, int3(0, 1, 2).z == _547.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -556,9 +600,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_6;
-    float4 _2159 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
+    float4 _2261 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
     weights = param_6;
-    return _2159;
+    return _2261;
 }
 
 #line 24 "hexc/generated"
@@ -571,9 +615,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _2180 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _2282 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2180;
+    return _2282;
 }
 
 #line 27 "hexc/generated"
@@ -582,46 +626,46 @@ float4 hexc_albedo(float2 uv)
 #line 27 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _2188 = hexc_albedo(param, param_1);
+    float4 _2290 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _2188;
+    return _2290;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    float4 _466;
+#line 132 "hexc/hextiling.glsl"
+    float4 _556;
     if (c == 0)
     {
-        _466 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _556 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-        float4 _473;
+        float4 _563;
         if (c == 1)
         {
-            _473 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _563 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-            bool4 _483 = (c == 2).xxxx;
-            _473 = float4(_483.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _483.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _483.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _483.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+            bool4 _573 = (c == 2).xxxx;
+            _563 = float4(_573.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _573.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _573.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _573.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _466 = _473;
+        _556 = _563;
     }
-    return _466;
+    return _556;
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 bool3 hexcAdaptiveTaps_roughness(float3 w)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     float3 wn = w / max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30f)).xxx;
     float3 param = wn;
     int param_1 = 7;
-    float3 _1542 = hexcPowInt(param, param_1);
-    float3 wg = _1542;
+    float3 _1644 = hexcPowInt(param, param_1);
+    float3 wg = _1644;
     float lo = 1.0f - hexcParams_roughness_falloffcontrast;
     float3 others = ((wg.x + wg.y) + wg.z).xxx - wg;
     float3 U = wg / max(wg + (others * lo), 1.0000000031710768509710513471353e-30f.xxx);
@@ -647,38 +691,38 @@ bool3 hexcAdaptiveTaps_roughness(float3 w)
         float3 r2 = L.zxy / max(U, 1.0000000031710768509710513471353e-30f.xxx);
         float3 param_10 = r1;
         int param_11 = 2;
-        float3 _1634 = hexcPowInt(param_10, param_11);
-        float3 p1 = _1634;
+        float3 _1736 = hexcPowInt(param_10, param_11);
+        float3 p1 = _1736;
         float3 param_12 = r2;
         int param_13 = 2;
-        float3 _1639 = hexcPowInt(param_12, param_13);
-        float3 p2 = _1639;
-        float3 _1647 = 1.0f.xxx / ((1.0f.xxx + p1) + p2);
-        float3 _1654 = max(U, max(L.yzx, L.zxy));
-        bool3 _1655 = bool3(_1654.x < 0.5f.xxx.x, _1654.y < 0.5f.xxx.y, _1654.z < 0.5f.xxx.z);
-        Gup = float3(_1655.x ? _1647.x : Gup.x, _1655.y ? _1647.y : Gup.y, _1655.z ? _1647.z : Gup.z);
+        float3 _1741 = hexcPowInt(param_12, param_13);
+        float3 p2 = _1741;
+        float3 _1749 = 1.0f.xxx / ((1.0f.xxx + p1) + p2);
+        float3 _1756 = max(U, max(L.yzx, L.zxy));
+        bool3 _1757 = bool3(_1756.x < 0.5f.xxx.x, _1756.y < 0.5f.xxx.y, _1756.z < 0.5f.xxx.z);
+        Gup = float3(_1757.x ? _1749.x : Gup.x, _1757.y ? _1749.y : Gup.y, _1757.z ? _1749.z : Gup.z);
     }
     float3 B = Gup - (log(max(1.0f.xxx - U, 1.0000000031710768509710513471353e-30f.xxx)) * (0.25f * k));
-    bool _1672 = w.x >= w.y;
-    bool _1680;
-    if (_1672)
+    bool _1774 = w.x >= w.y;
+    bool _1782;
+    if (_1774)
     {
-        _1680 = w.x >= w.z;
+        _1782 = w.x >= w.z;
     }
     else
     {
-        _1680 = _1672;
+        _1782 = _1774;
     }
-    int _1681;
-    if (_1680)
+    int _1783;
+    if (_1782)
     {
-        _1681 = 0;
+        _1783 = 0;
     }
     else
     {
-        _1681 = (w.y >= w.z) ? 1 : 2;
+        _1783 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1681;
+    int d = _1783;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bool3 f = bool3(true, true, true);
@@ -697,25 +741,25 @@ bool3 hexcAdaptiveTaps_roughness(float3 w)
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_roughness(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     float3 param = w;
     return hexcAdaptiveTaps_roughness(param);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_roughness(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_roughness_falloffcontrast.xxx);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_roughness(param);
     HexcTiles param_1 = t;
@@ -746,9 +790,9 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _2251 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
+    float4 _2353 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
     weights = param_7;
-    return _2251.x;
+    return _2353.x;
 }
 
 #line 43 "hexc/generated"
@@ -761,9 +805,9 @@ float hexc_roughness(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float _2271 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _2373 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2271;
+    return _2373;
 }
 
 #line 46 "hexc/generated"
@@ -772,20 +816,20 @@ float hexc_roughness(float2 uv)
 #line 46 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _2279 = hexc_roughness(param, param_1);
+    float _2381 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _2279;
+    return _2381;
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 bool3 hexcAdaptiveTaps_normal(float3 w)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     float3 wn = w / max(max(w.x, w.y), max(w.z, 1.0000000031710768509710513471353e-30f)).xxx;
     float3 param = wn;
     int param_1 = 7;
-    float3 _1327 = hexcPowInt(param, param_1);
-    float3 wg = _1327;
+    float3 _1429 = hexcPowInt(param, param_1);
+    float3 wg = _1429;
     float lo = 1.0f - hexcParams_normal_falloffcontrast;
     float3 others = ((wg.x + wg.y) + wg.z).xxx - wg;
     float3 U = wg / max(wg + (others * lo), 1.0000000031710768509710513471353e-30f.xxx);
@@ -811,38 +855,38 @@ bool3 hexcAdaptiveTaps_normal(float3 w)
         float3 r2 = L.zxy / max(U, 1.0000000031710768509710513471353e-30f.xxx);
         float3 param_10 = r1;
         int param_11 = 2;
-        float3 _1419 = hexcPowInt(param_10, param_11);
-        float3 p1 = _1419;
+        float3 _1521 = hexcPowInt(param_10, param_11);
+        float3 p1 = _1521;
         float3 param_12 = r2;
         int param_13 = 2;
-        float3 _1424 = hexcPowInt(param_12, param_13);
-        float3 p2 = _1424;
-        float3 _1432 = 1.0f.xxx / ((1.0f.xxx + p1) + p2);
-        float3 _1439 = max(U, max(L.yzx, L.zxy));
-        bool3 _1440 = bool3(_1439.x < 0.5f.xxx.x, _1439.y < 0.5f.xxx.y, _1439.z < 0.5f.xxx.z);
-        Gup = float3(_1440.x ? _1432.x : Gup.x, _1440.y ? _1432.y : Gup.y, _1440.z ? _1432.z : Gup.z);
+        float3 _1526 = hexcPowInt(param_12, param_13);
+        float3 p2 = _1526;
+        float3 _1534 = 1.0f.xxx / ((1.0f.xxx + p1) + p2);
+        float3 _1541 = max(U, max(L.yzx, L.zxy));
+        bool3 _1542 = bool3(_1541.x < 0.5f.xxx.x, _1541.y < 0.5f.xxx.y, _1541.z < 0.5f.xxx.z);
+        Gup = float3(_1542.x ? _1534.x : Gup.x, _1542.y ? _1534.y : Gup.y, _1542.z ? _1534.z : Gup.z);
     }
     float3 B = Gup - (log(max(1.0f.xxx - U, 1.0000000031710768509710513471353e-30f.xxx)) * (0.25f * k));
-    bool _1457 = w.x >= w.y;
-    bool _1465;
-    if (_1457)
+    bool _1559 = w.x >= w.y;
+    bool _1567;
+    if (_1559)
     {
-        _1465 = w.x >= w.z;
+        _1567 = w.x >= w.z;
     }
     else
     {
-        _1465 = _1457;
+        _1567 = _1559;
     }
-    int _1466;
-    if (_1465)
+    int _1568;
+    if (_1567)
     {
-        _1466 = 0;
+        _1568 = 0;
     }
     else
     {
-        _1466 = (w.y >= w.z) ? 1 : 2;
+        _1568 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1466;
+    int d = _1568;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bool3 f = bool3(true, true, true);
@@ -861,73 +905,73 @@ bool3 hexcAdaptiveTaps_normal(float3 w)
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_normal(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     float3 param = w;
     return hexcAdaptiveTaps_normal(param);
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _1961;
+    float _2063;
     if (flipY)
     {
-        _1961 = -vM.y;
+        _2063 = -vM.y;
     }
     else
     {
-        _1961 = vM.y;
+        _2063 = vM.y;
     }
-    return (-float2(vM.x, _1961)) / zMa.xx;
+    return (-float2(vM.x, _2063)) / zMa.xx;
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 float2 hexcRotateFromTile(float2 d, float2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0f) - 1.0f.xxx;
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1994;
+    float2 _2096;
     if (scaled)
     {
-        _1994 = d * p.invScale;
+        _2096 = d * p.invScale;
     }
     else
     {
-        _1994 = d;
+        _2096 = d;
     }
-    return _1994;
+    return _2096;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_normal(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_normal_falloffcontrast.xxx);
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 float2 hexcDeriv_normal(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool flipY, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_normal(param);
     HexcTiles param_1 = t;
@@ -987,9 +1031,9 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     float3 param_6;
-    float2 _2205 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
+    float2 _2307 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
     weights = param_6;
-    return _2205;
+    return _2307;
 }
 
 #line 33 "hexc/generated"
@@ -1002,9 +1046,9 @@ float2 hexc_normal(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float2 _2224 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    float2 _2326 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _2224;
+    return _2326;
 }
 
 #line 36 "hexc/generated"
@@ -1013,15 +1057,15 @@ float2 hexc_normal(float2 uv)
 #line 36 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _2232 = hexc_normal(param, param_1);
+    float2 _2334 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _2232;
+    return _2334;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

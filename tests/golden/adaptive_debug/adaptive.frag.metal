@@ -75,7 +75,7 @@ struct HexcParams
     float roughness_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1777 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1879 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct adaptive_frag_out
 {
@@ -106,27 +106,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -138,73 +138,117 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-void hexcStableTile_albedo(thread const int2& id, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+float2 hexcCosSin(thread const float& angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    float2 _434;
+    if ((q & 1) != 0)
+    {
+        _434 = float2(-s, c);
+    }
+    else
+    {
+        _434 = float2(c, s);
+    }
+    float2 cs = _434;
+    float2 _449;
+    if ((q & 2) != 0)
+    {
+        _449 = -cs;
+    }
+    else
+    {
+        _449 = cs;
+    }
+    return _449;
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _600 = hexcPcg3d(param);
-    float3 u = float3(_600 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _690 = hexcPcg3d(param);
+    float3 u = float3(_690 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = float2(cos(angle), sin(angle));
+    float2 _714;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _714 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _714 = float2(cos(angle), sin(angle));
+    }
+    rot = _714;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile_albedo(thread float2& v, thread const HexcTap& p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, constant HexcParams& hexcParams)
+HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3, hexcParams);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _698 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_698 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _708 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _708;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _714 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _714;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _799 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_799 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _809 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _809;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _815 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _815;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -213,54 +257,55 @@ HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, hexcParams);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _385;
+    int _475;
     if ((d < 0) && (a != 0))
     {
-        _385 = 3 - a;
+        _475 = 3 - a;
     }
     else
     {
-        _385 = a;
+        _475 = a;
     }
-    int i1 = _385;
-    int _396;
+    int i1 = _475;
+    int _486;
     if (i1 < 2)
     {
-        _396 = i1 + 1;
+        _486 = i1 + 1;
     }
     else
     {
-        _396 = 0;
+        _486 = 0;
     }
-    int vh = _396;
-    int _406;
+    int vh = _486;
+    int _496;
     if (i1 > 0)
     {
-        _406 = i1 - 1;
+        _496 = i1 - 1;
     }
     else
     {
-        _406 = 2;
+        _496 = 2;
     }
-    int vl = _406;
+    int vl = _496;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -283,38 +328,38 @@ HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& d
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _828 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _930 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _828;
+    t.tap[0] = _930;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _844 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _946 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _844;
+    t.tap[1] = _946;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _860 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _962 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _860;
+    t.tap[2] = _962;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -343,58 +388,58 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcGainK(thread const float& r, thread const int& kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _936;
+#line 403 "hexc/hextiling.glsl"
+    float _1038;
     if (kInt > 0)
     {
-        _936 = float(kInt);
+        _1038 = float(kInt);
     }
     else
     {
-        _936 = log(1.0 - r) / (-0.693147182464599609375);
+        _1038 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _936;
+    return _1038;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 s = step(float3(0.5), x) * 2.0;
     float3 m = (float3(1.0) - s) * 2.0;
     float3 base = fast::max(float3(0.0), s + (x * m));
-    float3 _973;
+    float3 _1075;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _980 = hexcPowInt(param, param_1);
-        _973 = _980;
+        float3 _1082 = hexcPowInt(param, param_1);
+        _1075 = _1082;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _973 = pow(base, float3(hexcGainK(param_2, param_3)));
+        _1075 = pow(base, float3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _973);
+    return (s * 0.5) + ((m * 0.25) * _1075);
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcAdaptiveTaps_albedo(thread const float3& w, constant HexcParams& hexcParams)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     float3 wn = w / float3(fast::max(fast::max(w.x, w.y), fast::max(w.z, 1.0000000031710768509710513471353e-30)));
     float3 param = wn;
     int param_1 = 7;
-    float3 _1107 = hexcPowInt(param, param_1);
-    float3 wg = _1107;
+    float3 _1209 = hexcPowInt(param, param_1);
+    float3 wg = _1209;
     float lo = 1.0 - hexcParams.albedo_falloffcontrast;
     float3 others = float3((wg.x + wg.y) + wg.z) - wg;
     float3 U = wg / fast::max(wg + (others * lo), float3(1.0000000031710768509710513471353e-30));
@@ -420,35 +465,35 @@ bool3 hexcAdaptiveTaps_albedo(thread const float3& w, constant HexcParams& hexcP
         float3 r2 = L.zxy / fast::max(U, float3(1.0000000031710768509710513471353e-30));
         float3 param_10 = r1;
         int param_11 = 2;
-        float3 _1200 = hexcPowInt(param_10, param_11);
-        float3 p1 = _1200;
+        float3 _1302 = hexcPowInt(param_10, param_11);
+        float3 p1 = _1302;
         float3 param_12 = r2;
         int param_13 = 2;
-        float3 _1205 = hexcPowInt(param_12, param_13);
-        float3 p2 = _1205;
+        float3 _1307 = hexcPowInt(param_12, param_13);
+        float3 p2 = _1307;
         Gup = select(Gup, float3(1.0) / ((float3(1.0) + p1) + p2), fast::max(U, fast::max(L.yzx, L.zxy)) < float3(0.5));
     }
     float3 B = Gup - (log(fast::max(float3(1.0) - U, float3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-    bool _1239 = w.x >= w.y;
-    bool _1247;
-    if (_1239)
+    bool _1341 = w.x >= w.y;
+    bool _1349;
+    if (_1341)
     {
-        _1247 = w.x >= w.z;
+        _1349 = w.x >= w.z;
     }
     else
     {
-        _1247 = _1239;
+        _1349 = _1341;
     }
-    int _1248;
-    if (_1247)
+    int _1350;
+    if (_1349)
     {
-        _1248 = 0;
+        _1350 = 0;
     }
     else
     {
-        _1248 = (w.y >= w.z) ? 1 : 2;
+        _1350 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1248;
+    int d = _1350;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bool3 f = bool3(true);
@@ -467,40 +512,40 @@ bool3 hexcAdaptiveTaps_albedo(thread const float3& w, constant HexcParams& hexcP
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_albedo(thread const float3& w, constant HexcParams& hexcParams)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     float3 param = w;
     return hexcAdaptiveTaps_albedo(param, hexcParams);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = float3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _1777;
+    c = _1879;
     if (f.x)
     {
         HexcTap param_1 = t.tap[0];
@@ -521,19 +566,19 @@ void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcT
     }
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_albedo(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGain3(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -541,27 +586,27 @@ float3 hexcGain3(thread const float3& x, thread const float& r, thread const int
     return res / float3((res.x + res.y) + res.z);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1045 = hexcPowInt(param, param_1);
-    float3 wg = _1045;
+    float3 _1147 = hexcPowInt(param, param_1);
+    float3 wg = _1147;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1061;
+    float3 _1163;
     if (sum > 0.0)
     {
-        _1061 = W / float3(sum);
+        _1163 = W / float3(sum);
     }
     else
     {
-        _1061 = wg / float3((wg.x + wg.y) + wg.z);
+        _1163 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1061;
+    W = _1163;
     float3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -569,19 +614,19 @@ float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param, hexcParams);
     HexcTiles param_1 = t;
@@ -613,9 +658,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_6;
-    float4 _2159 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
+    float4 _2261 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
     weights = param_6;
-    return _2159;
+    return _2261;
 }
 
 #line 24 "hexc/generated"
@@ -629,9 +674,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _2180 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _2282 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _2180;
+    return _2282;
 }
 
 #line 27 "hexc/generated"
@@ -641,47 +686,47 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 27 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _2188 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _2290 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _2188;
+    return _2290;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
-#line 116 "hexc/hextiling.glsl"
-    float4 _466;
+#line 132 "hexc/hextiling.glsl"
+    float4 _556;
     if (c == 0)
     {
-        _466 = float4(1.0, 0.0, 0.0, 0.0);
+        _556 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        float4 _473;
+        float4 _563;
         if (c == 1)
         {
-            _473 = float4(0.0, 1.0, 0.0, 0.0);
+            _563 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _473 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+            _563 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _466 = _473;
+        _556 = _563;
     }
-    return _466;
+    return _556;
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcAdaptiveTaps_roughness(thread const float3& w, constant HexcParams& hexcParams)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     float3 wn = w / float3(fast::max(fast::max(w.x, w.y), fast::max(w.z, 1.0000000031710768509710513471353e-30)));
     float3 param = wn;
     int param_1 = 7;
-    float3 _1542 = hexcPowInt(param, param_1);
-    float3 wg = _1542;
+    float3 _1644 = hexcPowInt(param, param_1);
+    float3 wg = _1644;
     float lo = 1.0 - hexcParams.roughness_falloffcontrast;
     float3 others = float3((wg.x + wg.y) + wg.z) - wg;
     float3 U = wg / fast::max(wg + (others * lo), float3(1.0000000031710768509710513471353e-30));
@@ -707,35 +752,35 @@ bool3 hexcAdaptiveTaps_roughness(thread const float3& w, constant HexcParams& he
         float3 r2 = L.zxy / fast::max(U, float3(1.0000000031710768509710513471353e-30));
         float3 param_10 = r1;
         int param_11 = 2;
-        float3 _1634 = hexcPowInt(param_10, param_11);
-        float3 p1 = _1634;
+        float3 _1736 = hexcPowInt(param_10, param_11);
+        float3 p1 = _1736;
         float3 param_12 = r2;
         int param_13 = 2;
-        float3 _1639 = hexcPowInt(param_12, param_13);
-        float3 p2 = _1639;
+        float3 _1741 = hexcPowInt(param_12, param_13);
+        float3 p2 = _1741;
         Gup = select(Gup, float3(1.0) / ((float3(1.0) + p1) + p2), fast::max(U, fast::max(L.yzx, L.zxy)) < float3(0.5));
     }
     float3 B = Gup - (log(fast::max(float3(1.0) - U, float3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-    bool _1672 = w.x >= w.y;
-    bool _1680;
-    if (_1672)
+    bool _1774 = w.x >= w.y;
+    bool _1782;
+    if (_1774)
     {
-        _1680 = w.x >= w.z;
+        _1782 = w.x >= w.z;
     }
     else
     {
-        _1680 = _1672;
+        _1782 = _1774;
     }
-    int _1681;
-    if (_1680)
+    int _1783;
+    if (_1782)
     {
-        _1681 = 0;
+        _1783 = 0;
     }
     else
     {
-        _1681 = (w.y >= w.z) ? 1 : 2;
+        _1783 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1681;
+    int d = _1783;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bool3 f = bool3(true);
@@ -754,28 +799,28 @@ bool3 hexcAdaptiveTaps_roughness(thread const float3& w, constant HexcParams& he
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_roughness(thread const float3& w, constant HexcParams& hexcParams)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     float3 param = w;
     return hexcAdaptiveTaps_roughness(param, hexcParams);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_roughness(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_roughness(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_roughness(param, hexcParams);
     HexcTiles param_1 = t;
@@ -808,9 +853,9 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _2251 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
+    float4 _2353 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
     weights = param_7;
-    return _2251.x;
+    return _2353.x;
 }
 
 #line 43 "hexc/generated"
@@ -824,9 +869,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, constant H
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _2271 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
+    float _2373 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _2271;
+    return _2373;
 }
 
 #line 46 "hexc/generated"
@@ -836,21 +881,21 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
 #line 46 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _2279 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _2381 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _2279;
+    return _2381;
 }
 
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcAdaptiveTaps_normal(thread const float3& w, constant HexcParams& hexcParams)
 {
-#line 464 "hexc/hextiling.glsl"
+#line 482 "hexc/hextiling.glsl"
     float3 wn = w / float3(fast::max(fast::max(w.x, w.y), fast::max(w.z, 1.0000000031710768509710513471353e-30)));
     float3 param = wn;
     int param_1 = 7;
-    float3 _1327 = hexcPowInt(param, param_1);
-    float3 wg = _1327;
+    float3 _1429 = hexcPowInt(param, param_1);
+    float3 wg = _1429;
     float lo = 1.0 - hexcParams.normal_falloffcontrast;
     float3 others = float3((wg.x + wg.y) + wg.z) - wg;
     float3 U = wg / fast::max(wg + (others * lo), float3(1.0000000031710768509710513471353e-30));
@@ -876,35 +921,35 @@ bool3 hexcAdaptiveTaps_normal(thread const float3& w, constant HexcParams& hexcP
         float3 r2 = L.zxy / fast::max(U, float3(1.0000000031710768509710513471353e-30));
         float3 param_10 = r1;
         int param_11 = 2;
-        float3 _1419 = hexcPowInt(param_10, param_11);
-        float3 p1 = _1419;
+        float3 _1521 = hexcPowInt(param_10, param_11);
+        float3 p1 = _1521;
         float3 param_12 = r2;
         int param_13 = 2;
-        float3 _1424 = hexcPowInt(param_12, param_13);
-        float3 p2 = _1424;
+        float3 _1526 = hexcPowInt(param_12, param_13);
+        float3 p2 = _1526;
         Gup = select(Gup, float3(1.0) / ((float3(1.0) + p1) + p2), fast::max(U, fast::max(L.yzx, L.zxy)) < float3(0.5));
     }
     float3 B = Gup - (log(fast::max(float3(1.0) - U, float3(1.0000000031710768509710513471353e-30))) * (0.25 * k));
-    bool _1457 = w.x >= w.y;
-    bool _1465;
-    if (_1457)
+    bool _1559 = w.x >= w.y;
+    bool _1567;
+    if (_1559)
     {
-        _1465 = w.x >= w.z;
+        _1567 = w.x >= w.z;
     }
     else
     {
-        _1465 = _1457;
+        _1567 = _1559;
     }
-    int _1466;
-    if (_1465)
+    int _1568;
+    if (_1567)
     {
-        _1466 = 0;
+        _1568 = 0;
     }
     else
     {
-        _1466 = (w.y >= w.z) ? 1 : 2;
+        _1568 = (w.y >= w.z) ? 1 : 2;
     }
-    int d = _1466;
+    int d = _1568;
     int a = int(d == 0);
     int c = (d == 2) ? 1 : 2;
     bool3 f = bool3(true);
@@ -923,79 +968,79 @@ bool3 hexcAdaptiveTaps_normal(thread const float3& w, constant HexcParams& hexcP
     return f;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_normal(thread const float3& w, constant HexcParams& hexcParams)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     float3 param = w;
     return hexcAdaptiveTaps_normal(param, hexcParams);
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1961;
+    float _2063;
     if (flipY)
     {
-        _1961 = -vM.y;
+        _2063 = -vM.y;
     }
     else
     {
-        _1961 = vM.y;
+        _2063 = vM.y;
     }
-    return (-float2(vM.x, _1961)) / float2(zMa);
+    return (-float2(vM.x, _2063)) / float2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1994;
+    float2 _2096;
     if (scaled)
     {
-        _1994 = d * p.invScale;
+        _2096 = d * p.invScale;
     }
     else
     {
-        _1994 = d;
+        _2096 = d;
     }
-    return _1994;
+    return _2096;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_normal(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.normal_falloffcontrast));
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_normal(param, hexcParams);
     HexcTiles param_1 = t;
@@ -1056,9 +1101,9 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     bool param_5 = false;
     float3 param_6;
-    float2 _2205 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
+    float2 _2307 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
     weights = param_6;
-    return _2205;
+    return _2307;
 }
 
 #line 33 "hexc/generated"
@@ -1072,9 +1117,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _2224 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _2326 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _2224;
+    return _2326;
 }
 
 #line 36 "hexc/generated"
@@ -1084,16 +1129,16 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
 #line 36 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _2232 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _2334 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _2232;
+    return _2334;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

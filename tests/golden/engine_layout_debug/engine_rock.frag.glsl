@@ -75,24 +75,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -104,68 +104,111 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+vec2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    vec2 _354;
+    if ((q & 1) != 0)
+    {
+        _354 = vec2(-s, c);
+    }
+    else
+    {
+        _354 = vec2(c, s);
+    }
+    vec2 cs = _354;
+    vec2 _369;
+    if ((q & 2) != 0)
+    {
+        _369 = -cs;
+    }
+    else
+    {
+        _369 = cs;
+    }
+    return _369;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _512 = hexcPcg3d(param);
-    vec3 u = vec3(_512 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _603 = hexcPcg3d(param);
+    vec3 u = vec3(_603 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = vec2(cos(angle), sin(angle));
+    vec2 _627;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _627 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _627 = vec2(cos(angle), sin(angle));
+    }
+    rot = _627;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    vec2 _610 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_610 + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    vec2 _620 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _620;
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    vec2 _626 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _626;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _712 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_712 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _722 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _722;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _728 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _728;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -174,52 +217,53 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _304;
+    int _395;
     if ((d < 0) && (a != 0))
     {
-        _304 = 3 - a;
+        _395 = 3 - a;
     }
     else
     {
-        _304 = a;
+        _395 = a;
     }
-    int i1 = _304;
-    int _315;
+    int i1 = _395;
+    int _406;
     if (i1 < 2)
     {
-        _315 = i1 + 1;
+        _406 = i1 + 1;
     }
     else
     {
-        _315 = 0;
+        _406 = 0;
     }
-    int vh = _315;
-    int _325;
+    int vh = _406;
+    int _416;
     if (i1 > 0)
     {
-        _325 = i1 - 1;
+        _416 = i1 - 1;
     }
     else
     {
-        _325 = 2;
+        _416 = 2;
     }
-    int vl = _325;
+    int vl = _416;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -241,59 +285,59 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _741 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _843 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _741;
+    t.tap[0] = _843;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _757 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _859 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _757;
+    t.tap[1] = _859;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _773 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _875 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _773;
+    t.tap[2] = _875;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_albedo(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -308,17 +352,17 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_albedo(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -347,40 +391,40 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _868 = hexcPowInt(param, param_1);
-    vec3 wg = _868;
+    vec3 _970 = hexcPowInt(param, param_1);
+    vec3 wg = _970;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _884;
+    vec3 _986;
     if (sum > 0.0)
     {
-        _884 = W / vec3(sum);
+        _986 = W / vec3(sum);
     }
     else
     {
-        _884 = wg / vec3((wg.x + wg.y) + wg.z);
+        _986 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _884;
+    W = _986;
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -410,9 +454,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_6;
-    vec4 _1105 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
+    vec4 _1207 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
     weights = param_6;
-    return _1105;
+    return _1207;
 }
 
 #line 21 "hexc/generated"
@@ -425,9 +469,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _1126 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1228 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1126;
+    return _1228;
 }
 
 #line 24 "hexc/generated"
@@ -436,47 +480,47 @@ vec4 hexc_albedo(vec2 uv)
 #line 24 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1134 = hexc_albedo(param, param_1);
+    vec4 _1236 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1134;
+    return _1236;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    vec4 _385;
+#line 132 "hexc/hextiling.glsl"
+    vec4 _476;
     if (c == 0)
     {
-        _385 = vec4(1.0, 0.0, 0.0, 0.0);
+        _476 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _392;
+        vec4 _483;
         if (c == 1)
         {
-            _392 = vec4(0.0, 1.0, 0.0, 0.0);
+            _483 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _392 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _483 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _385 = _392;
+        _476 = _483;
     }
-    return _385;
+    return _476;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_roughness(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -507,9 +551,9 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_6 = hexcChannel(param_4);
     vec3 param_7;
-    vec4 _1153 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
+    vec4 _1255 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
     weights = param_7;
-    return _1153.x;
+    return _1255.x;
 }
 
 #line 31 "hexc/generated"
@@ -522,9 +566,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _1173 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1275 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1173;
+    return _1275;
 }
 
 #line 34 "hexc/generated"
@@ -533,9 +577,9 @@ float hexc_roughness(vec2 uv)
 #line 34 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _1181 = hexc_roughness(param, param_1);
+    float _1283 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _1181;
+    return _1283;
 }
 
 #line 29 "templates/engine.glsl"

@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _933[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _1035[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b2, space1)
 {
@@ -87,24 +87,24 @@ void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 float2 hexcStableCentreInPeriod(int2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -116,68 +116,111 @@ uint3 hexcPcg3d(inout uint3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+float2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875f);
+    float r = angle - (k * 1.57079637050628662109375f);
+    float r2 = r * r;
+    float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
+    float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
+    int q = int(k) & 3;
+    float2 _354;
+    if ((q & 1) != 0)
+    {
+        _354 = float2(-s, c);
+    }
+    else
+    {
+        _354 = float2(c, s);
+    }
+    float2 cs = _354;
+    float2 _369;
+    if ((q & 2) != 0)
+    {
+        _369 = -cs;
+    }
+    else
+    {
+        _369 = cs;
+    }
+    return _369;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _512 = hexcPcg3d(param);
-    float3 u = float3(_512 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _603 = hexcPcg3d(param);
+    float3 u = float3(_603 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_albedo_rotation;
     invScale = 1.0f;
-    rot = float2(cos(angle), sin(angle));
+    float2 _627;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _627 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _627 = float2(cos(angle), sin(angle));
+    }
+    rot = _627;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 float2 hexcRotateToTile(float2 v, float2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 float2 hexcToTile_albedo(inout float2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _610 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_610 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _620 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _620;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _626 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _626;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _712 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_712 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _722 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _722;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _728 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _728;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -186,52 +229,53 @@ HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, fl
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _304;
+    int _395;
     if ((d < 0) && (a != 0))
     {
-        _304 = 3 - a;
+        _395 = 3 - a;
     }
     else
     {
-        _304 = a;
+        _395 = a;
     }
-    int i1 = _304;
-    int _315;
+    int i1 = _395;
+    int _406;
     if (i1 < 2)
     {
-        _315 = i1 + 1;
+        _406 = i1 + 1;
     }
     else
     {
-        _315 = 0;
+        _406 = 0;
     }
-    int vh = _315;
-    int _325;
+    int vh = _406;
+    int _416;
     if (i1 > 0)
     {
-        _325 = i1 - 1;
+        _416 = i1 - 1;
     }
     else
     {
-        _325 = 2;
+        _416 = 2;
     }
-    int vl = _325;
+    int vl = _416;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -253,62 +297,62 @@ HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cel
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _741 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _843 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _741;
+    t.tap[0] = _843;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _757 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _859 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _757;
+    t.tap[1] = _859;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _773 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _875 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _773;
+    t.tap[2] = _875;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_albedo(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true, true, true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 float3 hexcTileLods_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.SampleGrad(samp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _933;
+    c = _1035;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -320,17 +364,17 @@ void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_albedo(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_albedo_falloffcontrast.xxx);
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -359,43 +403,43 @@ float3 hexcPowInt(inout float3 x, int n)
     return r;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_albedo(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _868 = hexcPowInt(param, param_1);
-    float3 wg = _868;
+    float3 _970 = hexcPowInt(param, param_1);
+    float3 wg = _970;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _884;
+    float3 _986;
     if (sum > 0.0f)
     {
-        _884 = W / sum.xxx;
+        _986 = W / sum.xxx;
     }
     else
     {
-        _884 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _986 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _884;
+    W = _986;
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
-    int3 _357 = channel.x.xxx;
-    int3 _367 = channel.y.xxx;
-    int3 _376 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _357.x, int3(0, 1, 2).y == _357.y, int3(0, 1, 2).z == _357.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _367.x, int3(0, 1, 2).y == _367.y, int3(0, 1, 2).z == _367.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _376.x, int3(0, 1, 2).y == _376.y, int3(0, 1, 2).z == _376.z)) * W.z);
+#line 125 "hexc/hextiling.glsl"
+    int3 _448 = channel.x.xxx;
+    int3 _458 = channel.y.xxx;
+    int3 _467 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _448.x, int3(0, 1, 2).y == _448.y, int3(0, 1, 2).z == _448.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _458.x, int3(0, 1, 2).y == _458.y, int3(0, 1, 2).z == _458.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _467.x, int3(0, 1, 2).y == _467.y, int3(0, 1, 2).z == _467.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -425,9 +469,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_6;
-    float4 _1105 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
+    float4 _1207 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
     weights = param_6;
-    return _1105;
+    return _1207;
 }
 
 #line 21 "hexc/generated"
@@ -440,9 +484,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _1126 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _1228 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1126;
+    return _1228;
 }
 
 #line 24 "hexc/generated"
@@ -451,48 +495,48 @@ float4 hexc_albedo(float2 uv)
 #line 24 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1134 = hexc_albedo(param, param_1);
+    float4 _1236 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _1134;
+    return _1236;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    float4 _385;
+#line 132 "hexc/hextiling.glsl"
+    float4 _476;
     if (c == 0)
     {
-        _385 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _476 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-        float4 _392;
+        float4 _483;
         if (c == 1)
         {
-            _392 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _483 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-            bool4 _402 = (c == 2).xxxx;
-            _392 = float4(_402.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _402.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _402.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _402.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+            bool4 _493 = (c == 2).xxxx;
+            _483 = float4(_493.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _493.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _493.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _493.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _385 = _392;
+        _476 = _483;
     }
-    return _385;
+    return _476;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_roughness(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_roughness_falloffcontrast.xxx);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -523,9 +567,9 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _1153 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
+    float4 _1255 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
     weights = param_7;
-    return _1153.x;
+    return _1255.x;
 }
 
 #line 31 "hexc/generated"
@@ -538,9 +582,9 @@ float hexc_roughness(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float _1173 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1275 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1173;
+    return _1275;
 }
 
 #line 34 "hexc/generated"
@@ -549,9 +593,9 @@ float hexc_roughness(float2 uv)
 #line 34 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1181 = hexc_roughness(param, param_1);
+    float _1283 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _1181;
+    return _1283;
 }
 
 #line 29 "templates/engine.glsl"

@@ -91,7 +91,7 @@ struct Push
     float ambient;
 };
 
-constant spvUnsafeArray<float4, 3> _933 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1035 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct engine_rock_frag_out
 {
@@ -121,27 +121,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -153,73 +153,117 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-void hexcStableTile_albedo(thread const int2& id, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+float2 hexcCosSin(thread const float& angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    float2 _354;
+    if ((q & 1) != 0)
+    {
+        _354 = float2(-s, c);
+    }
+    else
+    {
+        _354 = float2(c, s);
+    }
+    float2 cs = _354;
+    float2 _369;
+    if ((q & 2) != 0)
+    {
+        _369 = -cs;
+    }
+    else
+    {
+        _369 = cs;
+    }
+    return _369;
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _512 = hexcPcg3d(param);
-    float3 u = float3(_512 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _603 = hexcPcg3d(param);
+    float3 u = float3(_603 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = float2(cos(angle), sin(angle));
+    float2 _627;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _627 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _627 = float2(cos(angle), sin(angle));
+    }
+    rot = _627;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile_albedo(thread float2& v, thread const HexcTap& p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, constant HexcParams& hexcParams)
+HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3, hexcParams);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _610 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_610 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _620 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _620;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _626 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _626;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _712 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_712 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _722 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _722;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _728 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _728;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -228,54 +272,55 @@ HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, hexcParams);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _304;
+    int _395;
     if ((d < 0) && (a != 0))
     {
-        _304 = 3 - a;
+        _395 = 3 - a;
     }
     else
     {
-        _304 = a;
+        _395 = a;
     }
-    int i1 = _304;
-    int _315;
+    int i1 = _395;
+    int _406;
     if (i1 < 2)
     {
-        _315 = i1 + 1;
+        _406 = i1 + 1;
     }
     else
     {
-        _315 = 0;
+        _406 = 0;
     }
-    int vh = _315;
-    int _325;
+    int vh = _406;
+    int _416;
     if (i1 > 0)
     {
-        _325 = i1 - 1;
+        _416 = i1 - 1;
     }
     else
     {
-        _325 = 2;
+        _416 = 2;
     }
-    int vl = _325;
+    int vl = _416;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -298,66 +343,66 @@ HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& d
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _741 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _843 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _741;
+    t.tap[0] = _843;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _757 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _859 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _757;
+    t.tap[1] = _859;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _773 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _875 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _773;
+    t.tap[2] = _875;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_albedo(thread const float3& w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = float3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _933;
+    c = _1035;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -369,19 +414,19 @@ void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcT
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_albedo(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -410,43 +455,43 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _868 = hexcPowInt(param, param_1);
-    float3 wg = _868;
+    float3 _970 = hexcPowInt(param, param_1);
+    float3 wg = _970;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _884;
+    float3 _986;
     if (sum > 0.0)
     {
-        _884 = W / float3(sum);
+        _986 = W / float3(sum);
     }
     else
     {
-        _884 = wg / float3((wg.x + wg.y) + wg.z);
+        _986 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _884;
+    W = _986;
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -478,9 +523,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_6;
-    float4 _1105 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
+    float4 _1207 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
     weights = param_6;
-    return _1105;
+    return _1207;
 }
 
 #line 21 "hexc/generated"
@@ -494,9 +539,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _1126 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1228 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _1126;
+    return _1228;
 }
 
 #line 24 "hexc/generated"
@@ -506,50 +551,50 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 24 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1134 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1236 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _1134;
+    return _1236;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
-#line 116 "hexc/hextiling.glsl"
-    float4 _385;
+#line 132 "hexc/hextiling.glsl"
+    float4 _476;
     if (c == 0)
     {
-        _385 = float4(1.0, 0.0, 0.0, 0.0);
+        _476 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        float4 _392;
+        float4 _483;
         if (c == 1)
         {
-            _392 = float4(0.0, 1.0, 0.0, 0.0);
+            _483 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _392 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+            _483 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _385 = _392;
+        _476 = _483;
     }
-    return _385;
+    return _476;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_roughness(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_roughness(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -582,9 +627,9 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _1153 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
+    float4 _1255 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
     weights = param_7;
-    return _1153.x;
+    return _1255.x;
 }
 
 #line 31 "hexc/generated"
@@ -598,9 +643,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, constant H
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _1173 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1275 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _1173;
+    return _1275;
 }
 
 #line 34 "hexc/generated"
@@ -610,9 +655,9 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
 #line 34 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1181 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1283 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _1181;
+    return _1283;
 }
 
 #line 29 "templates/engine.glsl"

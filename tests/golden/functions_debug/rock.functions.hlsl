@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _1153[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _1255[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -52,24 +52,24 @@ void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 float2 hexcStableCentreInPeriod(int2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -81,68 +81,111 @@ uint3 hexcPcg3d(inout uint3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+float2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875f);
+    float r = angle - (k * 1.57079637050628662109375f);
+    float r2 = r * r;
+    float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
+    float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
+    int q = int(k) & 3;
+    float2 _429;
+    if ((q & 1) != 0)
+    {
+        _429 = float2(-s, c);
+    }
+    else
+    {
+        _429 = float2(c, s);
+    }
+    float2 cs = _429;
+    float2 _444;
+    if ((q & 2) != 0)
+    {
+        _444 = -cs;
+    }
+    else
+    {
+        _444 = cs;
+    }
+    return _444;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _595 = hexcPcg3d(param);
-    float3 u = float3(_595 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _685 = hexcPcg3d(param);
+    float3 u = float3(_685 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_albedo_rotation;
     invScale = 1.0f;
-    rot = float2(cos(angle), sin(angle));
+    float2 _709;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _709 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _709 = float2(cos(angle), sin(angle));
+    }
+    rot = _709;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 float2 hexcRotateToTile(float2 v, float2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 float2 hexcToTile_albedo(inout float2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _693 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_693 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _703 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _703;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _709 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _709;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _794 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_794 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _804 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _804;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _810 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _810;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -151,52 +194,53 @@ HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, fl
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _380;
+    int _470;
     if ((d < 0) && (a != 0))
     {
-        _380 = 3 - a;
+        _470 = 3 - a;
     }
     else
     {
-        _380 = a;
+        _470 = a;
     }
-    int i1 = _380;
-    int _391;
+    int i1 = _470;
+    int _481;
     if (i1 < 2)
     {
-        _391 = i1 + 1;
+        _481 = i1 + 1;
     }
     else
     {
-        _391 = 0;
+        _481 = 0;
     }
-    int vh = _391;
-    int _401;
+    int vh = _481;
+    int _491;
     if (i1 > 0)
     {
-        _401 = i1 - 1;
+        _491 = i1 - 1;
     }
     else
     {
-        _401 = 2;
+        _491 = 2;
     }
-    int vl = _401;
+    int vl = _491;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -218,62 +262,62 @@ HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cel
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _823 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _925 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _823;
+    t.tap[0] = _925;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _839 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _941 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _839;
+    t.tap[1] = _941;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _855 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _957 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _855;
+    t.tap[2] = _957;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_albedo(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true, true, true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 float3 hexcTileLods_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.SampleGrad(samp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _1153;
+    c = _1255;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -285,17 +329,17 @@ void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_albedo(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_albedo_falloffcontrast.xxx);
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -324,50 +368,50 @@ float3 hexcPowInt(inout float3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _931;
+#line 403 "hexc/hextiling.glsl"
+    float _1033;
     if (kInt > 0)
     {
-        _931 = float(kInt);
+        _1033 = float(kInt);
     }
     else
     {
-        _931 = log(1.0f - r) / (-0.693147182464599609375f);
+        _1033 = log(1.0f - r) / (-0.693147182464599609375f);
     }
-    return _931;
+    return _1033;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 float3 hexcGainCurve(float3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 s = step(0.5f.xxx, x) * 2.0f;
     float3 m = (1.0f.xxx - s) * 2.0f;
     float3 base = max(0.0f.xxx, s + (x * m));
-    float3 _968;
+    float3 _1070;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _975 = hexcPowInt(param, param_1);
-        _968 = _975;
+        float3 _1077 = hexcPowInt(param, param_1);
+        _1070 = _1077;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _968 = pow(base, hexcGainK(param_2, param_3).xxx);
+        _1070 = pow(base, hexcGainK(param_2, param_3).xxx);
     }
-    return (s * 0.5f) + ((m * 0.25f) * _968);
+    return (s * 0.5f) + ((m * 0.25f) * _1070);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 float3 hexcGain3(float3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -375,26 +419,26 @@ float3 hexcGain3(float3 x, float r, int kInt)
     return res / ((res.x + res.y) + res.z).xxx;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_albedo(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1040 = hexcPowInt(param, param_1);
-    float3 wg = _1040;
+    float3 _1142 = hexcPowInt(param, param_1);
+    float3 wg = _1142;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1056;
+    float3 _1158;
     if (sum > 0.0f)
     {
-        _1056 = W / sum.xxx;
+        _1158 = W / sum.xxx;
     }
     else
     {
-        _1056 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1158 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1056;
+    W = _1158;
     float3 param_2 = W;
     float param_3 = 0.5f;
     int param_4 = 2;
@@ -402,20 +446,20 @@ float3 hexcBlendWeights_albedo(float3 w, float3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
-    int3 _433 = channel.x.xxx;
-    int3 _443 = channel.y.xxx;
-    int3 _452 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _433.x, int3(0, 1, 2).y == _433.y, int3(0, 1, 2).z == _433.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _443.x, int3(0, 1, 2).y == _443.y, int3(0, 1, 2).z == _443.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _452.x, int3(0, 1, 2).y == _452.y, int3(0, 1, 2).z == _452.z)) * W.z);
+#line 125 "hexc/hextiling.glsl"
+    int3 _523 = channel.x.xxx;
+    int3 _533 = channel.y.xxx;
+    int3 _542 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _523.x, int3(0, 1, 2).y == _523.y, int3(0, 1, 2).z == _523.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _533.x, int3(0, 1, 2).y == _533.y, int3(0, 1, 2).z == _533.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _542.x, int3(0, 1, 2).y == _542.y, int3(0, 1, 2).z == _542.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -445,9 +489,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_6;
-    float4 _1511 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
+    float4 _1613 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
     weights = param_6;
-    return _1511;
+    return _1613;
 }
 
 #line 24 "hexc/generated"
@@ -460,9 +504,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _1532 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _1634 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1532;
+    return _1634;
 }
 
 #line 27 "hexc/generated"
@@ -471,93 +515,93 @@ float4 hexc_albedo(float2 uv)
 #line 27 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1540 = hexc_albedo(param, param_1);
+    float4 _1642 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _1540;
+    return _1642;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _1325;
+    float _1427;
     if (flipY)
     {
-        _1325 = -vM.y;
+        _1427 = -vM.y;
     }
     else
     {
-        _1325 = vM.y;
+        _1427 = vM.y;
     }
-    return (-float2(vM.x, _1325)) / zMa.xx;
+    return (-float2(vM.x, _1427)) / zMa.xx;
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 float2 hexcRotateFromTile(float2 d, float2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0f) - 1.0f.xxx;
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1358;
+    float2 _1460;
     if (scaled)
     {
-        _1358 = d * p.invScale;
+        _1460 = d * p.invScale;
     }
     else
     {
-        _1358 = d;
+        _1460 = d;
     }
-    return _1358;
+    return _1460;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_normal(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_normal_falloffcontrast.xxx);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_normal(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1088 = hexcPowInt(param, param_1);
-    float3 wg = _1088;
+    float3 _1190 = hexcPowInt(param, param_1);
+    float3 wg = _1190;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1104;
+    float3 _1206;
     if (sum > 0.0f)
     {
-        _1104 = W / sum.xxx;
+        _1206 = W / sum.xxx;
     }
     else
     {
-        _1104 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1206 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1104;
+    W = _1206;
     return W;
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 float2 hexcDeriv_normal(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool flipY, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -608,9 +652,9 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     float3 param_6;
-    float2 _1557 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
+    float2 _1659 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
     weights = param_6;
-    return _1557;
+    return _1659;
 }
 
 #line 33 "hexc/generated"
@@ -623,9 +667,9 @@ float2 hexc_normal(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float2 _1576 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    float2 _1678 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1576;
+    return _1678;
 }
 
 #line 36 "hexc/generated"
@@ -634,15 +678,15 @@ float2 hexc_normal(float2 uv)
 #line 36 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1584 = hexc_normal(param, param_1);
+    float2 _1686 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _1584;
+    return _1686;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 
@@ -655,43 +699,43 @@ float3 hexc_normal_normal(float2 uv)
     return hexcDerivToNormal(param_1);
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    float4 _461;
+#line 132 "hexc/hextiling.glsl"
+    float4 _551;
     if (c == 0)
     {
-        _461 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _551 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-        float4 _468;
+        float4 _558;
         if (c == 1)
         {
-            _468 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _558 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-            bool4 _478 = (c == 2).xxxx;
-            _468 = float4(_478.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _478.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _478.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _478.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+            bool4 _568 = (c == 2).xxxx;
+            _558 = float4(_568.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _568.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _568.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _568.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _461 = _468;
+        _551 = _558;
     }
-    return _461;
+    return _551;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_roughness(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_roughness_falloffcontrast.xxx);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -722,9 +766,9 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _1603 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
+    float4 _1705 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
     weights = param_7;
-    return _1603.x;
+    return _1705.x;
 }
 
 #line 43 "hexc/generated"
@@ -737,9 +781,9 @@ float hexc_roughness(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float _1623 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1725 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1623;
+    return _1725;
 }
 
 #line 46 "hexc/generated"
@@ -748,9 +792,9 @@ float hexc_roughness(float2 uv)
 #line 46 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1631 = hexc_roughness(param, param_1);
+    float _1733 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _1631;
+    return _1733;
 }
 
 #line 56 "hexc/generated"
@@ -760,16 +804,16 @@ float hexc_roughness(float2 uv)
     float2 param = uv;
     sum += hexc_albedo(param);
     float2 param_1 = uv;
-    float4 _1651 = sum;
-    float2 _1653 = _1651.xy + hexc_normal(param_1);
-    sum.x = _1653.x;
-    sum.y = _1653.y;
+    float4 _1753 = sum;
+    float2 _1755 = _1753.xy + hexc_normal(param_1);
+    sum.x = _1755.x;
+    sum.y = _1755.y;
     float2 param_2 = uv;
-    float4 _1661 = sum;
-    float3 _1663 = _1661.xyz + hexc_normal_normal(param_2);
-    sum.x = _1663.x;
-    sum.y = _1663.y;
-    sum.z = _1663.z;
+    float4 _1763 = sum;
+    float3 _1765 = _1763.xyz + hexc_normal_normal(param_2);
+    sum.x = _1765.x;
+    sum.y = _1765.y;
+    sum.z = _1765.z;
     float2 param_3 = uv;
     sum.x += hexc_roughness(param_3);
     return sum;

@@ -57,24 +57,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -86,68 +86,111 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+vec2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    vec2 _387;
+    if ((q & 1) != 0)
+    {
+        _387 = vec2(-s, c);
+    }
+    else
+    {
+        _387 = vec2(c, s);
+    }
+    vec2 cs = _387;
+    vec2 _402;
+    if ((q & 2) != 0)
+    {
+        _402 = -cs;
+    }
+    else
+    {
+        _402 = cs;
+    }
+    return _402;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _528 = hexcPcg3d(param);
-    vec3 u = vec3(_528 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _618 = hexcPcg3d(param);
+    vec3 u = vec3(_618 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = vec2(cos(angle), sin(angle));
+    vec2 _642;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _642 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _642 = vec2(cos(angle), sin(angle));
+    }
+    rot = _642;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    vec2 _626 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_626 + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    vec2 _636 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _636;
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    vec2 _642 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _642;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _727 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_727 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _737 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _737;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _743 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _743;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -156,52 +199,53 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _338;
+    int _428;
     if ((d < 0) && (a != 0))
     {
-        _338 = 3 - a;
+        _428 = 3 - a;
     }
     else
     {
-        _338 = a;
+        _428 = a;
     }
-    int i1 = _338;
-    int _349;
+    int i1 = _428;
+    int _439;
     if (i1 < 2)
     {
-        _349 = i1 + 1;
+        _439 = i1 + 1;
     }
     else
     {
-        _349 = 0;
+        _439 = 0;
     }
-    int vh = _349;
-    int _359;
+    int vh = _439;
+    int _449;
     if (i1 > 0)
     {
-        _359 = i1 - 1;
+        _449 = i1 - 1;
     }
     else
     {
-        _359 = 2;
+        _449 = 2;
     }
-    int vl = _359;
+    int vl = _449;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -223,52 +267,52 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _756 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _858 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _756;
+    t.tap[0] = _858;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _772 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _874 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _772;
+    t.tap[1] = _874;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _788 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _890 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _788;
+    t.tap[2] = _890;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -283,10 +327,10 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -315,40 +359,40 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _875 = hexcPowInt(param, param_1);
-    vec3 wg = _875;
+    vec3 _977 = hexcPowInt(param, param_1);
+    vec3 wg = _977;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _891;
+    vec3 _993;
     if (sum > 0.0)
     {
-        _891 = W / vec3(sum);
+        _993 = W / vec3(sum);
     }
     else
     {
-        _891 = wg / vec3((wg.x + wg.y) + wg.z);
+        _993 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _891;
+    W = _993;
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 580 "hexc/hextiling.glsl"
+#line 598 "hexc/hextiling.glsl"
 vec4 hexcHistogram_albedo(HexcTiles t, vec2 dx, vec2 dy, bool scalar, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp, sampler2D SPIRV_Cross_Combinedlutsamp)
 {
-#line 580 "hexc/hextiling.glsl"
+#line 598 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bvec3 param_1 = bvec3(true);
     vec4 param_2[3];
@@ -392,9 +436,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     vec2 param_6 = dy;
     bool param_7 = false;
     vec3 param_8;
-    vec4 _1386 = hexcHistogram_albedo(param_4, param_5, param_6, param_7, param_8, hexcTex_albedo, hexcLut_albedo);
+    vec4 _1488 = hexcHistogram_albedo(param_4, param_5, param_6, param_7, param_8, hexcTex_albedo, hexcLut_albedo);
     weights = param_8;
-    return _1386;
+    return _1488;
 }
 
 #line 25 "hexc/generated"
@@ -407,9 +451,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _1406 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1508 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1406;
+    return _1508;
 }
 
 #line 28 "hexc/generated"
@@ -418,9 +462,9 @@ vec4 hexc_albedo(vec2 uv)
 #line 28 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1414 = hexc_albedo(param, param_1);
+    vec4 _1516 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1414;
+    return _1516;
 }
 
 #line 40 "hexc/generated"
@@ -436,9 +480,9 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     vec2 param_6 = dy;
     bool param_7 = true;
     vec3 param_8;
-    vec4 _1480 = hexcHistogram_albedo(param_4, param_5, param_6, param_7, param_8, hexcTex_roughness, hexcLut_roughness);
+    vec4 _1582 = hexcHistogram_albedo(param_4, param_5, param_6, param_7, param_8, hexcTex_roughness, hexcLut_roughness);
     weights = param_8;
-    return _1480.x;
+    return _1582.x;
 }
 
 #line 44 "hexc/generated"
@@ -451,9 +495,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _1500 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1602 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1500;
+    return _1602;
 }
 
 #line 47 "hexc/generated"
@@ -462,77 +506,77 @@ float hexc_roughness(vec2 uv)
 #line 47 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _1508 = hexc_roughness(param, param_1);
+    float _1610 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _1508;
+    return _1610;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_normal(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1199;
+    float _1301;
     if (flipY)
     {
-        _1199 = -vM.y;
+        _1301 = -vM.y;
     }
     else
     {
-        _1199 = vM.y;
+        _1301 = vM.y;
     }
-    return (-vec2(vM.x, _1199)) / vec2(zMa);
+    return (-vec2(vM.x, _1301)) / vec2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1232;
+    vec2 _1334;
     if (scaled)
     {
-        _1232 = d * p.invScale;
+        _1334 = d * p.invScale;
     }
     else
     {
-        _1232 = d;
+        _1334 = d;
     }
-    return _1232;
+    return _1334;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_normal(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.normal_falloffcontrast));
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_normal(param);
     HexcTiles param_1 = t;
@@ -583,9 +627,9 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     vec3 param_6;
-    vec2 _1431 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
+    vec2 _1533 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
     weights = param_6;
-    return _1431;
+    return _1533;
 }
 
 #line 34 "hexc/generated"
@@ -598,9 +642,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _1450 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _1552 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1450;
+    return _1552;
 }
 
 #line 37 "hexc/generated"
@@ -609,15 +653,15 @@ vec2 hexc_normal(vec2 uv)
 #line 37 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _1458 = hexc_normal(param, param_1);
+    vec2 _1560 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _1458;
+    return _1560;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _940[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _1042[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -76,24 +76,24 @@ void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 float2 hexcStableCentreInPeriod(int2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -105,68 +105,111 @@ uint3 hexcPcg3d(inout uint3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+float2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875f);
+    float r = angle - (k * 1.57079637050628662109375f);
+    float r2 = r * r;
+    float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
+    float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
+    int q = int(k) & 3;
+    float2 _387;
+    if ((q & 1) != 0)
+    {
+        _387 = float2(-s, c);
+    }
+    else
+    {
+        _387 = float2(c, s);
+    }
+    float2 cs = _387;
+    float2 _402;
+    if ((q & 2) != 0)
+    {
+        _402 = -cs;
+    }
+    else
+    {
+        _402 = cs;
+    }
+    return _402;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _528 = hexcPcg3d(param);
-    float3 u = float3(_528 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _618 = hexcPcg3d(param);
+    float3 u = float3(_618 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_albedo_rotation;
     invScale = 1.0f;
-    rot = float2(cos(angle), sin(angle));
+    float2 _642;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _642 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _642 = float2(cos(angle), sin(angle));
+    }
+    rot = _642;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 float2 hexcRotateToTile(float2 v, float2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 float2 hexcToTile_albedo(inout float2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _626 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_626 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _636 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _636;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _642 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _642;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _727 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_727 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _737 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _737;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _743 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _743;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -175,52 +218,53 @@ HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, fl
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _338;
+    int _428;
     if ((d < 0) && (a != 0))
     {
-        _338 = 3 - a;
+        _428 = 3 - a;
     }
     else
     {
-        _338 = a;
+        _428 = a;
     }
-    int i1 = _338;
-    int _349;
+    int i1 = _428;
+    int _439;
     if (i1 < 2)
     {
-        _349 = i1 + 1;
+        _439 = i1 + 1;
     }
     else
     {
-        _349 = 0;
+        _439 = 0;
     }
-    int vh = _349;
-    int _359;
+    int vh = _439;
+    int _449;
     if (i1 > 0)
     {
-        _359 = i1 - 1;
+        _449 = i1 - 1;
     }
     else
     {
-        _359 = 2;
+        _449 = 2;
     }
-    int vl = _359;
+    int vl = _449;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -242,55 +286,55 @@ HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cel
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _756 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _858 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _756;
+    t.tap[0] = _858;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _772 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _874 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _772;
+    t.tap[1] = _874;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _788 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _890 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _788;
+    t.tap[2] = _890;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 float3 hexcTileLods_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.SampleGrad(samp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _940;
+    c = _1042;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -302,10 +346,10 @@ void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -334,43 +378,43 @@ float3 hexcPowInt(inout float3 x, int n)
     return r;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_albedo(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _875 = hexcPowInt(param, param_1);
-    float3 wg = _875;
+    float3 _977 = hexcPowInt(param, param_1);
+    float3 wg = _977;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _891;
+    float3 _993;
     if (sum > 0.0f)
     {
-        _891 = W / sum.xxx;
+        _993 = W / sum.xxx;
     }
     else
     {
-        _891 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _993 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _891;
+    W = _993;
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
-    int3 _391 = channel.x.xxx;
-    int3 _401 = channel.y.xxx;
-    int3 _410 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _391.x, int3(0, 1, 2).y == _391.y, int3(0, 1, 2).z == _391.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _401.x, int3(0, 1, 2).y == _401.y, int3(0, 1, 2).z == _401.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _410.x, int3(0, 1, 2).y == _410.y, int3(0, 1, 2).z == _410.z)) * W.z);
+#line 125 "hexc/hextiling.glsl"
+    int3 _481 = channel.x.xxx;
+    int3 _491 = channel.y.xxx;
+    int3 _500 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _481.x, int3(0, 1, 2).y == _481.y, int3(0, 1, 2).z == _481.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _491.x, int3(0, 1, 2).y == _491.y, int3(0, 1, 2).z == _491.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _500.x, int3(0, 1, 2).y == _500.y, int3(0, 1, 2).z == _500.z)) * W.z);
 }
 
-#line 580 "hexc/hextiling.glsl"
+#line 598 "hexc/hextiling.glsl"
 float4 hexcHistogram_albedo(Texture2D<float4> tex, Texture2D<float4> lut, SamplerState samp, HexcTiles t, float2 dx, float2 dy, bool scalar, out float3 weights)
 {
-#line 580 "hexc/hextiling.glsl"
+#line 598 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool3 param_1 = bool3(true, true, true);
     float4 param_2[3];
@@ -383,13 +427,13 @@ float4 hexcHistogram_albedo(Texture2D<float4> tex, Texture2D<float4> lut, Sample
     int3 param_6 = t.channel;
     weights = hexcShowWeights(param_5, param_6);
     float3 G = (((((g[0].xyz - 0.5f.xxx) * W.x) + ((g[1].xyz - 0.5f.xxx) * W.y)) + ((g[2].xyz - 0.5f.xxx) * W.z)) * rsqrt(dot(W, W))) + 0.5f.xxx;
-    uint _1023_dummy_parameter;
-    float2 size = float2(int2(spvTextureSize(tex, uint(0), _1023_dummy_parameter)));
+    uint _1125_dummy_parameter;
+    float2 size = float2(int2(spvTextureSize(tex, uint(0), _1125_dummy_parameter)));
     float2 ex = dx * size;
     float2 ey = dy * size;
     float lod = 0.5f * log2(max(max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30f));
-    uint _1050_dummy_parameter;
-    float2 n = float2(int2(spvTextureSize(lut, uint(0), _1050_dummy_parameter)));
+    uint _1152_dummy_parameter;
+    float2 n = float2(int2(spvTextureSize(lut, uint(0), _1152_dummy_parameter)));
     float v = (1.5f + clamp(lod, 0.0f, n.y - 2.0f)) / n.y;
     float3 u = ((clamp(((G - 0.5f.xxx) * 0.4615384638309478759765625f) + 0.5f.xxx, 0.0f.xxx, 1.0f.xxx) * (n.x - 1.0f)) + 0.5f.xxx) / n.x.xxx;
     float q1 = lut.SampleLevel(samp, float2(u.x, v), 0.0f).x;
@@ -416,9 +460,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     float2 param_6 = dy;
     bool param_7 = false;
     float3 param_8;
-    float4 _1386 = hexcHistogram_albedo(hexcTex_albedo, hexcLut_albedo, hexcSampler, param_4, param_5, param_6, param_7, param_8);
+    float4 _1488 = hexcHistogram_albedo(hexcTex_albedo, hexcLut_albedo, hexcSampler, param_4, param_5, param_6, param_7, param_8);
     weights = param_8;
-    return _1386;
+    return _1488;
 }
 
 #line 25 "hexc/generated"
@@ -431,9 +475,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _1406 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _1508 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1406;
+    return _1508;
 }
 
 #line 28 "hexc/generated"
@@ -442,9 +486,9 @@ float4 hexc_albedo(float2 uv)
 #line 28 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1414 = hexc_albedo(param, param_1);
+    float4 _1516 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _1414;
+    return _1516;
 }
 
 #line 40 "hexc/generated"
@@ -460,9 +504,9 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     float2 param_6 = dy;
     bool param_7 = true;
     float3 param_8;
-    float4 _1480 = hexcHistogram_albedo(hexcTex_roughness, hexcLut_roughness, hexcSampler, param_4, param_5, param_6, param_7, param_8);
+    float4 _1582 = hexcHistogram_albedo(hexcTex_roughness, hexcLut_roughness, hexcSampler, param_4, param_5, param_6, param_7, param_8);
     weights = param_8;
-    return _1480.x;
+    return _1582.x;
 }
 
 #line 44 "hexc/generated"
@@ -475,9 +519,9 @@ float hexc_roughness(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float _1500 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1602 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1500;
+    return _1602;
 }
 
 #line 47 "hexc/generated"
@@ -486,77 +530,77 @@ float hexc_roughness(float2 uv)
 #line 47 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1508 = hexc_roughness(param, param_1);
+    float _1610 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _1508;
+    return _1610;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_normal(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true, true, true);
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _1199;
+    float _1301;
     if (flipY)
     {
-        _1199 = -vM.y;
+        _1301 = -vM.y;
     }
     else
     {
-        _1199 = vM.y;
+        _1301 = vM.y;
     }
-    return (-float2(vM.x, _1199)) / zMa.xx;
+    return (-float2(vM.x, _1301)) / zMa.xx;
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 float2 hexcRotateFromTile(float2 d, float2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0f) - 1.0f.xxx;
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1232;
+    float2 _1334;
     if (scaled)
     {
-        _1232 = d * p.invScale;
+        _1334 = d * p.invScale;
     }
     else
     {
-        _1232 = d;
+        _1334 = d;
     }
-    return _1232;
+    return _1334;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_normal(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_normal_falloffcontrast.xxx);
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 float2 hexcDeriv_normal(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool flipY, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_normal(param);
     HexcTiles param_1 = t;
@@ -607,9 +651,9 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     float3 param_6;
-    float2 _1431 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
+    float2 _1533 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
     weights = param_6;
-    return _1431;
+    return _1533;
 }
 
 #line 34 "hexc/generated"
@@ -622,9 +666,9 @@ float2 hexc_normal(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float2 _1450 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    float2 _1552 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1450;
+    return _1552;
 }
 
 #line 37 "hexc/generated"
@@ -633,15 +677,15 @@ float2 hexc_normal(float2 uv)
 #line 37 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1458 = hexc_normal(param, param_1);
+    float2 _1560 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _1458;
+    return _1560;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

@@ -73,7 +73,7 @@ struct HexcParams
     float normal_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _940 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1042 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct histogram_frag_out
 {
@@ -104,27 +104,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -136,73 +136,117 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-void hexcStableTile_albedo(thread const int2& id, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+float2 hexcCosSin(thread const float& angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    float2 _387;
+    if ((q & 1) != 0)
+    {
+        _387 = float2(-s, c);
+    }
+    else
+    {
+        _387 = float2(c, s);
+    }
+    float2 cs = _387;
+    float2 _402;
+    if ((q & 2) != 0)
+    {
+        _402 = -cs;
+    }
+    else
+    {
+        _402 = cs;
+    }
+    return _402;
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _528 = hexcPcg3d(param);
-    float3 u = float3(_528 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _618 = hexcPcg3d(param);
+    float3 u = float3(_618 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = float2(cos(angle), sin(angle));
+    float2 _642;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _642 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _642 = float2(cos(angle), sin(angle));
+    }
+    rot = _642;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile_albedo(thread float2& v, thread const HexcTap& p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, constant HexcParams& hexcParams)
+HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3, hexcParams);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _626 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_626 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _636 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _636;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _642 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _642;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _727 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_727 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _737 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _737;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _743 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _743;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -211,54 +255,55 @@ HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, hexcParams);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _338;
+    int _428;
     if ((d < 0) && (a != 0))
     {
-        _338 = 3 - a;
+        _428 = 3 - a;
     }
     else
     {
-        _338 = a;
+        _428 = a;
     }
-    int i1 = _338;
-    int _349;
+    int i1 = _428;
+    int _439;
     if (i1 < 2)
     {
-        _349 = i1 + 1;
+        _439 = i1 + 1;
     }
     else
     {
-        _349 = 0;
+        _439 = 0;
     }
-    int vh = _349;
-    int _359;
+    int vh = _439;
+    int _449;
     if (i1 > 0)
     {
-        _359 = i1 - 1;
+        _449 = i1 - 1;
     }
     else
     {
-        _359 = 2;
+        _449 = 2;
     }
-    int vl = _359;
+    int vl = _449;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -281,58 +326,58 @@ HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& d
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _756 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _858 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _756;
+    t.tap[0] = _858;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _772 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _874 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _772;
+    t.tap[1] = _874;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _788 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _890 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _788;
+    t.tap[2] = _890;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = float3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _940;
+    c = _1042;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -344,11 +389,11 @@ void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcT
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -377,43 +422,43 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _875 = hexcPowInt(param, param_1);
-    float3 wg = _875;
+    float3 _977 = hexcPowInt(param, param_1);
+    float3 wg = _977;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _891;
+    float3 _993;
     if (sum > 0.0)
     {
-        _891 = W / float3(sum);
+        _993 = W / float3(sum);
     }
     else
     {
-        _891 = wg / float3((wg.x + wg.y) + wg.z);
+        _993 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _891;
+    W = _993;
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 580 "hexc/hextiling.glsl"
+#line 598 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcHistogram_albedo(texture2d<float> tex, texture2d<float> lut, sampler samp, thread const HexcTiles& t, thread const float2& dx, thread const float2& dy, thread const bool& scalar, thread float3& weights)
 {
-#line 580 "hexc/hextiling.glsl"
+#line 598 "hexc/hextiling.glsl"
     HexcTiles param = t;
     bool3 param_1 = bool3(true);
     spvUnsafeArray<float4, 3> param_2;
@@ -459,9 +504,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     float2 param_6 = dy;
     bool param_7 = false;
     float3 param_8;
-    float4 _1386 = hexcHistogram_albedo(hexcTex_albedo, hexcLut_albedo, hexcSampler, param_4, param_5, param_6, param_7, param_8);
+    float4 _1488 = hexcHistogram_albedo(hexcTex_albedo, hexcLut_albedo, hexcSampler, param_4, param_5, param_6, param_7, param_8);
     weights = param_8;
-    return _1386;
+    return _1488;
 }
 
 #line 25 "hexc/generated"
@@ -475,9 +520,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _1406 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcLut_albedo, hexcSampler);
+    float4 _1508 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcLut_albedo, hexcSampler);
     weights = param_4;
-    return _1406;
+    return _1508;
 }
 
 #line 28 "hexc/generated"
@@ -487,9 +532,9 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 28 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1414 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcLut_albedo, hexcSampler);
+    float4 _1516 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcLut_albedo, hexcSampler);
     float3 weights = param_1;
-    return _1414;
+    return _1516;
 }
 
 #line 40 "hexc/generated"
@@ -506,9 +551,9 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     float2 param_6 = dy;
     bool param_7 = true;
     float3 param_8;
-    float4 _1480 = hexcHistogram_albedo(hexcTex_roughness, hexcLut_roughness, hexcSampler, param_4, param_5, param_6, param_7, param_8);
+    float4 _1582 = hexcHistogram_albedo(hexcTex_roughness, hexcLut_roughness, hexcSampler, param_4, param_5, param_6, param_7, param_8);
     weights = param_8;
-    return _1480.x;
+    return _1582.x;
 }
 
 #line 44 "hexc/generated"
@@ -522,9 +567,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, constant H
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _1500 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness, hexcLut_roughness);
+    float _1602 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness, hexcLut_roughness);
     weights = param_4;
-    return _1500;
+    return _1602;
 }
 
 #line 47 "hexc/generated"
@@ -534,83 +579,83 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
 #line 47 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1508 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness, hexcLut_roughness);
+    float _1610 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness, hexcLut_roughness);
     float3 weights = param_1;
-    return _1508;
+    return _1610;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_normal(thread const float3& w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true);
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1199;
+    float _1301;
     if (flipY)
     {
-        _1199 = -vM.y;
+        _1301 = -vM.y;
     }
     else
     {
-        _1199 = vM.y;
+        _1301 = vM.y;
     }
-    return (-float2(vM.x, _1199)) / float2(zMa);
+    return (-float2(vM.x, _1301)) / float2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1232;
+    float2 _1334;
     if (scaled)
     {
-        _1232 = d * p.invScale;
+        _1334 = d * p.invScale;
     }
     else
     {
-        _1232 = d;
+        _1334 = d;
     }
-    return _1232;
+    return _1334;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_normal(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.normal_falloffcontrast));
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_normal(param);
     HexcTiles param_1 = t;
@@ -662,9 +707,9 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     bool param_5 = false;
     float3 param_6;
-    float2 _1431 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
+    float2 _1533 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
     weights = param_6;
-    return _1431;
+    return _1533;
 }
 
 #line 34 "hexc/generated"
@@ -678,9 +723,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _1450 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1552 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _1450;
+    return _1552;
 }
 
 #line 37 "hexc/generated"
@@ -690,16 +735,16 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
 #line 37 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1458 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1560 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _1458;
+    return _1560;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

@@ -57,24 +57,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -86,68 +86,111 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+vec2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    vec2 _419;
+    if ((q & 1) != 0)
+    {
+        _419 = vec2(-s, c);
+    }
+    else
+    {
+        _419 = vec2(c, s);
+    }
+    vec2 cs = _419;
+    vec2 _434;
+    if ((q & 2) != 0)
+    {
+        _434 = -cs;
+    }
+    else
+    {
+        _434 = cs;
+    }
+    return _434;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _585 = hexcPcg3d(param);
-    vec3 u = vec3(_585 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _675 = hexcPcg3d(param);
+    vec3 u = vec3(_675 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = vec2(cos(angle), sin(angle));
+    vec2 _699;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _699 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _699 = vec2(cos(angle), sin(angle));
+    }
+    rot = _699;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    vec2 _683 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_683 + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    vec2 _693 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _693;
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    vec2 _699 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _699;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _784 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_784 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _794 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _794;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _800 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _800;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -156,52 +199,53 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _370;
+    int _460;
     if ((d < 0) && (a != 0))
     {
-        _370 = 3 - a;
+        _460 = 3 - a;
     }
     else
     {
-        _370 = a;
+        _460 = a;
     }
-    int i1 = _370;
-    int _381;
+    int i1 = _460;
+    int _471;
     if (i1 < 2)
     {
-        _381 = i1 + 1;
+        _471 = i1 + 1;
     }
     else
     {
-        _381 = 0;
+        _471 = 0;
     }
-    int vh = _381;
-    int _391;
+    int vh = _471;
+    int _481;
     if (i1 > 0)
     {
-        _391 = i1 - 1;
+        _481 = i1 - 1;
     }
     else
     {
-        _391 = 2;
+        _481 = 2;
     }
-    int vl = _391;
+    int vl = _481;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -223,73 +267,73 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _813 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _915 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _813;
+    t.tap[0] = _915;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _829 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _931 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _829;
+    t.tap[1] = _931;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _845 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _947 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _845;
+    t.tap[2] = _947;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_albedo(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     vec2 size = vec2(textureSize(SPIRV_Cross_Combinedtexsamp, 0));
     vec2 ex = t.dx * size;
     vec2 ey = t.dy * size;
     float lod = 0.5 * log2(max(max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30));
-    vec3 _1107;
+    vec3 _1209;
     if (t.scaled)
     {
-        _1107 = vec3(lod) + log2(vec3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
+        _1209 = vec3(lod) + log2(vec3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
     }
     else
     {
-        _1107 = vec3(lod);
+        _1209 = vec3(lod);
     }
-    lods = _1107;
+    lods = _1209;
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return textureLod(SPIRV_Cross_Combinedtexsamp, p.st, lod);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param, SPIRV_Cross_Combinedtexsamp);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -304,17 +348,17 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_albedo(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -343,50 +387,50 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _921;
+#line 403 "hexc/hextiling.glsl"
+    float _1023;
     if (kInt > 0)
     {
-        _921 = float(kInt);
+        _1023 = float(kInt);
     }
     else
     {
-        _921 = log(1.0 - r) / (-0.693147182464599609375);
+        _1023 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _921;
+    return _1023;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
     vec3 m = (vec3(1.0) - s) * 2.0;
     vec3 base = max(vec3(0.0), s + (x * m));
-    vec3 _958;
+    vec3 _1060;
     if (kInt > 0)
     {
         vec3 param = base;
         int param_1 = kInt;
-        vec3 _965 = hexcPowInt(param, param_1);
-        _958 = _965;
+        vec3 _1067 = hexcPowInt(param, param_1);
+        _1060 = _1067;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _958 = pow(base, vec3(hexcGainK(param_2, param_3)));
+        _1060 = pow(base, vec3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _958);
+    return (s * 0.5) + ((m * 0.25) * _1060);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -394,26 +438,26 @@ vec3 hexcGain3(vec3 x, float r, int kInt)
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1030 = hexcPowInt(param, param_1);
-    vec3 wg = _1030;
+    vec3 _1132 = hexcPowInt(param, param_1);
+    vec3 wg = _1132;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1046;
+    vec3 _1148;
     if (sum > 0.0)
     {
-        _1046 = W / vec3(sum);
+        _1148 = W / vec3(sum);
     }
     else
     {
-        _1046 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1148 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1046;
+    W = _1148;
     vec3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -421,17 +465,17 @@ vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -461,9 +505,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_6;
-    vec4 _1504 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
+    vec4 _1606 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
     weights = param_6;
-    return _1504;
+    return _1606;
 }
 
 #line 24 "hexc/generated"
@@ -476,9 +520,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _1525 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1627 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1525;
+    return _1627;
 }
 
 #line 27 "hexc/generated"
@@ -487,47 +531,47 @@ vec4 hexc_albedo(vec2 uv)
 #line 27 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1533 = hexc_albedo(param, param_1);
+    vec4 _1635 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1533;
+    return _1635;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    vec4 _451;
+#line 132 "hexc/hextiling.glsl"
+    vec4 _541;
     if (c == 0)
     {
-        _451 = vec4(1.0, 0.0, 0.0, 0.0);
+        _541 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _458;
+        vec4 _548;
         if (c == 1)
         {
-            _458 = vec4(0.0, 1.0, 0.0, 0.0);
+            _548 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _458 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _548 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _451 = _458;
+        _541 = _548;
     }
-    return _451;
+    return _541;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_roughness(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -558,9 +602,9 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_6 = hexcChannel(param_4);
     vec3 param_7;
-    vec4 _1596 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
+    vec4 _1698 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
     weights = param_7;
-    return _1596.x;
+    return _1698.x;
 }
 
 #line 43 "hexc/generated"
@@ -573,9 +617,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _1616 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1718 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1616;
+    return _1718;
 }
 
 #line 46 "hexc/generated"
@@ -584,70 +628,70 @@ float hexc_roughness(vec2 uv)
 #line 46 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _1624 = hexc_roughness(param, param_1);
+    float _1726 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _1624;
+    return _1726;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1318;
+    float _1420;
     if (flipY)
     {
-        _1318 = -vM.y;
+        _1420 = -vM.y;
     }
     else
     {
-        _1318 = vM.y;
+        _1420 = vM.y;
     }
-    return (-vec2(vM.x, _1318)) / vec2(zMa);
+    return (-vec2(vM.x, _1420)) / vec2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1351;
+    vec2 _1453;
     if (scaled)
     {
-        _1351 = d * p.invScale;
+        _1453 = d * p.invScale;
     }
     else
     {
-        _1351 = d;
+        _1453 = d;
     }
-    return _1351;
+    return _1453;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_normal(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.normal_falloffcontrast));
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -698,9 +742,9 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     vec3 param_6;
-    vec2 _1550 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
+    vec2 _1652 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
     weights = param_6;
-    return _1550;
+    return _1652;
 }
 
 #line 33 "hexc/generated"
@@ -713,9 +757,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _1569 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _1671 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1569;
+    return _1671;
 }
 
 #line 36 "hexc/generated"
@@ -724,15 +768,15 @@ vec2 hexc_normal(vec2 uv)
 #line 36 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _1577 = hexc_normal(param, param_1);
+    vec2 _1679 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _1577;
+    return _1679;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _1146[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _1248[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -76,24 +76,24 @@ void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 float2 hexcStableCentreInPeriod(int2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -105,68 +105,111 @@ uint3 hexcPcg3d(inout uint3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+float2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875f);
+    float r = angle - (k * 1.57079637050628662109375f);
+    float r2 = r * r;
+    float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
+    float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
+    int q = int(k) & 3;
+    float2 _419;
+    if ((q & 1) != 0)
+    {
+        _419 = float2(-s, c);
+    }
+    else
+    {
+        _419 = float2(c, s);
+    }
+    float2 cs = _419;
+    float2 _434;
+    if ((q & 2) != 0)
+    {
+        _434 = -cs;
+    }
+    else
+    {
+        _434 = cs;
+    }
+    return _434;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _585 = hexcPcg3d(param);
-    float3 u = float3(_585 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _675 = hexcPcg3d(param);
+    float3 u = float3(_675 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_albedo_rotation;
     invScale = 1.0f;
-    rot = float2(cos(angle), sin(angle));
+    float2 _699;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _699 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _699 = float2(cos(angle), sin(angle));
+    }
+    rot = _699;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 float2 hexcRotateToTile(float2 v, float2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 float2 hexcToTile_albedo(inout float2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _683 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_683 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _693 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _693;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _699 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _699;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _784 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_784 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _794 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _794;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _800 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _800;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -175,52 +218,53 @@ HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, fl
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _370;
+    int _460;
     if ((d < 0) && (a != 0))
     {
-        _370 = 3 - a;
+        _460 = 3 - a;
     }
     else
     {
-        _370 = a;
+        _460 = a;
     }
-    int i1 = _370;
-    int _381;
+    int i1 = _460;
+    int _471;
     if (i1 < 2)
     {
-        _381 = i1 + 1;
+        _471 = i1 + 1;
     }
     else
     {
-        _381 = 0;
+        _471 = 0;
     }
-    int vh = _381;
-    int _391;
+    int vh = _471;
+    int _481;
     if (i1 > 0)
     {
-        _391 = i1 - 1;
+        _481 = i1 - 1;
     }
     else
     {
-        _391 = 2;
+        _481 = 2;
     }
-    int vl = _391;
+    int vl = _481;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -242,77 +286,77 @@ HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cel
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _813 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _915 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _813;
+    t.tap[0] = _915;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _829 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _931 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _829;
+    t.tap[1] = _931;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _845 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _947 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _845;
+    t.tap[2] = _947;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_albedo(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true, true, true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 float3 hexcTileLods_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
-    uint _1081_dummy_parameter;
-    float2 size = float2(int2(spvTextureSize(tex, uint(0), _1081_dummy_parameter)));
+    uint _1183_dummy_parameter;
+    float2 size = float2(int2(spvTextureSize(tex, uint(0), _1183_dummy_parameter)));
     float2 ex = t.dx * size;
     float2 ey = t.dy * size;
     float lod = 0.5f * log2(max(max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30f));
-    float3 _1107;
+    float3 _1209;
     if (t.scaled)
     {
-        _1107 = lod.xxx + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
+        _1209 = lod.xxx + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
     }
     else
     {
-        _1107 = lod.xxx;
+        _1209 = lod.xxx;
     }
-    lods = _1107;
+    lods = _1209;
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.SampleLevel(samp, p.st, lod);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _1146;
+    c = _1248;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -324,17 +368,17 @@ void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_albedo(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_albedo_falloffcontrast.xxx);
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -363,50 +407,50 @@ float3 hexcPowInt(inout float3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _921;
+#line 403 "hexc/hextiling.glsl"
+    float _1023;
     if (kInt > 0)
     {
-        _921 = float(kInt);
+        _1023 = float(kInt);
     }
     else
     {
-        _921 = log(1.0f - r) / (-0.693147182464599609375f);
+        _1023 = log(1.0f - r) / (-0.693147182464599609375f);
     }
-    return _921;
+    return _1023;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 float3 hexcGainCurve(float3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 s = step(0.5f.xxx, x) * 2.0f;
     float3 m = (1.0f.xxx - s) * 2.0f;
     float3 base = max(0.0f.xxx, s + (x * m));
-    float3 _958;
+    float3 _1060;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _965 = hexcPowInt(param, param_1);
-        _958 = _965;
+        float3 _1067 = hexcPowInt(param, param_1);
+        _1060 = _1067;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _958 = pow(base, hexcGainK(param_2, param_3).xxx);
+        _1060 = pow(base, hexcGainK(param_2, param_3).xxx);
     }
-    return (s * 0.5f) + ((m * 0.25f) * _958);
+    return (s * 0.5f) + ((m * 0.25f) * _1060);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 float3 hexcGain3(float3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -414,26 +458,26 @@ float3 hexcGain3(float3 x, float r, int kInt)
     return res / ((res.x + res.y) + res.z).xxx;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_albedo(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1030 = hexcPowInt(param, param_1);
-    float3 wg = _1030;
+    float3 _1132 = hexcPowInt(param, param_1);
+    float3 wg = _1132;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1046;
+    float3 _1148;
     if (sum > 0.0f)
     {
-        _1046 = W / sum.xxx;
+        _1148 = W / sum.xxx;
     }
     else
     {
-        _1046 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1148 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1046;
+    W = _1148;
     float3 param_2 = W;
     float param_3 = 0.5f;
     int param_4 = 2;
@@ -441,20 +485,20 @@ float3 hexcBlendWeights_albedo(float3 w, float3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
-    int3 _423 = channel.x.xxx;
-    int3 _433 = channel.y.xxx;
-    int3 _442 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _423.x, int3(0, 1, 2).y == _423.y, int3(0, 1, 2).z == _423.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _433.x, int3(0, 1, 2).y == _433.y, int3(0, 1, 2).z == _433.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _442.x, int3(0, 1, 2).y == _442.y, int3(0, 1, 2).z == _442.z)) * W.z);
+#line 125 "hexc/hextiling.glsl"
+    int3 _513 = channel.x.xxx;
+    int3 _523 = channel.y.xxx;
+    int3 _532 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _513.x, int3(0, 1, 2).y == _513.y, int3(0, 1, 2).z == _513.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _523.x, int3(0, 1, 2).y == _523.y, int3(0, 1, 2).z == _523.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _532.x, int3(0, 1, 2).y == _532.y, int3(0, 1, 2).z == _532.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -484,9 +528,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_6;
-    float4 _1504 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
+    float4 _1606 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
     weights = param_6;
-    return _1504;
+    return _1606;
 }
 
 #line 24 "hexc/generated"
@@ -499,9 +543,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _1525 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _1627 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1525;
+    return _1627;
 }
 
 #line 27 "hexc/generated"
@@ -510,48 +554,48 @@ float4 hexc_albedo(float2 uv)
 #line 27 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1533 = hexc_albedo(param, param_1);
+    float4 _1635 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _1533;
+    return _1635;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    float4 _451;
+#line 132 "hexc/hextiling.glsl"
+    float4 _541;
     if (c == 0)
     {
-        _451 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _541 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-        float4 _458;
+        float4 _548;
         if (c == 1)
         {
-            _458 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _548 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-            bool4 _468 = (c == 2).xxxx;
-            _458 = float4(_468.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _468.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _468.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _468.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+            bool4 _558 = (c == 2).xxxx;
+            _548 = float4(_558.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _558.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _558.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _558.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _451 = _458;
+        _541 = _548;
     }
-    return _451;
+    return _541;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_roughness(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_roughness_falloffcontrast.xxx);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -582,9 +626,9 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _1596 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
+    float4 _1698 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
     weights = param_7;
-    return _1596.x;
+    return _1698.x;
 }
 
 #line 43 "hexc/generated"
@@ -597,9 +641,9 @@ float hexc_roughness(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float _1616 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1718 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1616;
+    return _1718;
 }
 
 #line 46 "hexc/generated"
@@ -608,70 +652,70 @@ float hexc_roughness(float2 uv)
 #line 46 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1624 = hexc_roughness(param, param_1);
+    float _1726 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _1624;
+    return _1726;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _1318;
+    float _1420;
     if (flipY)
     {
-        _1318 = -vM.y;
+        _1420 = -vM.y;
     }
     else
     {
-        _1318 = vM.y;
+        _1420 = vM.y;
     }
-    return (-float2(vM.x, _1318)) / zMa.xx;
+    return (-float2(vM.x, _1420)) / zMa.xx;
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 float2 hexcRotateFromTile(float2 d, float2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0f) - 1.0f.xxx;
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1351;
+    float2 _1453;
     if (scaled)
     {
-        _1351 = d * p.invScale;
+        _1453 = d * p.invScale;
     }
     else
     {
-        _1351 = d;
+        _1453 = d;
     }
-    return _1351;
+    return _1453;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_normal(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_normal_falloffcontrast.xxx);
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 float2 hexcDeriv_normal(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool flipY, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -722,9 +766,9 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     float3 param_6;
-    float2 _1550 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
+    float2 _1652 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
     weights = param_6;
-    return _1550;
+    return _1652;
 }
 
 #line 33 "hexc/generated"
@@ -737,9 +781,9 @@ float2 hexc_normal(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float2 _1569 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    float2 _1671 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1569;
+    return _1671;
 }
 
 #line 36 "hexc/generated"
@@ -748,15 +792,15 @@ float2 hexc_normal(float2 uv)
 #line 36 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1577 = hexc_normal(param, param_1);
+    float2 _1679 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _1577;
+    return _1679;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

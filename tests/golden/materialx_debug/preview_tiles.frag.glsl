@@ -73,10 +73,10 @@ void hexcTriangleGrid(inout vec2 st, out vec3 w, out ivec2 id[3])
     id = param_2;
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
     int _319;
@@ -186,10 +186,10 @@ HexcTiles hexcTilesMaterialX_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy)
     return t;
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -270,10 +270,10 @@ vec3 hexcMxWeights(vec3 luma, vec3 w, float falloff)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
@@ -359,10 +359,10 @@ vec4 hexc_albedo(vec2 uv)
     return _1030;
 }
 
-#line 672 "hexc/hextiling.glsl"
+#line 690 "hexc/hextiling.glsl"
 vec4 hexcPlainColor(vec2 st, vec2 dx, vec2 dy, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 672 "hexc/hextiling.glsl"
+#line 690 "hexc/hextiling.glsl"
     weights = vec3(1.0, 0.0, 0.0);
     return texture(SPIRV_Cross_Combinedtexsamp, st);
 }
@@ -425,10 +425,10 @@ float hexc_roughness(vec2 uv)
     return _1074;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
     float _477;
@@ -484,10 +484,10 @@ vec2 hexc_normal(vec2 uv)
     return _1120;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

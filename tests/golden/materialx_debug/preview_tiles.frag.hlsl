@@ -83,10 +83,10 @@ void hexcTriangleGrid(inout float2 st, out float3 w, out int2 id[3])
     id = param_2;
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
     int _319;
@@ -196,10 +196,10 @@ HexcTiles hexcTilesMaterialX_albedo(float2 st, float2 dSTdx, float2 dSTdy)
     return t;
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -280,10 +280,10 @@ float3 hexcMxWeights(float3 luma, float3 w, float falloff)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     int3 _372 = channel.x.xxx;
     int3 _383 = channel.y.xxx;
     int3 _392 = channel.z.xxx;
@@ -375,10 +375,10 @@ float4 hexc_albedo(float2 uv)
     return _1030;
 }
 
-#line 672 "hexc/hextiling.glsl"
+#line 690 "hexc/hextiling.glsl"
 float4 hexcPlainColor(Texture2D<float4> tex, SamplerState samp, float2 st, float2 dx, float2 dy, out float3 weights)
 {
-#line 672 "hexc/hextiling.glsl"
+#line 690 "hexc/hextiling.glsl"
     weights = float3(1.0f, 0.0f, 0.0f);
     return tex.Sample(samp, st);
 }
@@ -441,10 +441,10 @@ float hexc_roughness(float2 uv)
     return _1074;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
     float _477;
@@ -500,10 +500,10 @@ float2 hexc_normal(float2 uv)
     return _1120;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 float3 hexcDerivToNormal(float2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(float3(-deriv, 1.0f));
 }
 

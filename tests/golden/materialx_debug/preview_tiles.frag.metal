@@ -128,11 +128,11 @@ void hexcTriangleGrid(thread float2& st, thread float3& w, thread spvUnsafeArray
     id = param_2;
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
     int _319;
@@ -247,11 +247,11 @@ HexcTiles hexcTilesMaterialX_albedo(thread const float2& st, thread const float2
     return t;
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -334,11 +334,11 @@ float3 hexcMxWeights(thread const float3& luma, thread const float3& w, thread c
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
@@ -429,11 +429,11 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
     return _1030;
 }
 
-#line 672 "hexc/hextiling.glsl"
+#line 690 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcPlainColor(texture2d<float> tex, sampler samp, thread const float2& st, thread const float2& dx, thread const float2& dy, thread float3& weights)
 {
-#line 672 "hexc/hextiling.glsl"
+#line 690 "hexc/hextiling.glsl"
     weights = float3(1.0, 0.0, 0.0);
     return tex.sample(samp, st);
 }
@@ -500,11 +500,11 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
     return _1074;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
     float _477;
@@ -563,11 +563,11 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
     return _1120;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

@@ -57,24 +57,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -86,68 +86,111 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+vec2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    vec2 _423;
+    if ((q & 1) != 0)
+    {
+        _423 = vec2(-s, c);
+    }
+    else
+    {
+        _423 = vec2(c, s);
+    }
+    vec2 cs = _423;
+    vec2 _438;
+    if ((q & 2) != 0)
+    {
+        _438 = -cs;
+    }
+    else
+    {
+        _438 = cs;
+    }
+    return _438;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _589 = hexcPcg3d(param);
-    vec3 u = vec3(_589 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _679 = hexcPcg3d(param);
+    vec3 u = vec3(_679 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = vec2(cos(angle), sin(angle));
+    vec2 _703;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _703 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _703 = vec2(cos(angle), sin(angle));
+    }
+    rot = _703;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    vec2 _687 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_687 + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    vec2 _697 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _697;
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    vec2 _703 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _703;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _788 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_788 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _798 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _798;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _804 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _804;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -156,52 +199,53 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _374;
+    int _464;
     if ((d < 0) && (a != 0))
     {
-        _374 = 3 - a;
+        _464 = 3 - a;
     }
     else
     {
-        _374 = a;
+        _464 = a;
     }
-    int i1 = _374;
-    int _385;
+    int i1 = _464;
+    int _475;
     if (i1 < 2)
     {
-        _385 = i1 + 1;
+        _475 = i1 + 1;
     }
     else
     {
-        _385 = 0;
+        _475 = 0;
     }
-    int vh = _385;
-    int _395;
+    int vh = _475;
+    int _485;
     if (i1 > 0)
     {
-        _395 = i1 - 1;
+        _485 = i1 - 1;
     }
     else
     {
-        _395 = 2;
+        _485 = 2;
     }
-    int vl = _395;
+    int vl = _485;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -223,59 +267,59 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _817 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _919 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _817;
+    t.tap[0] = _919;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _833 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _935 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _833;
+    t.tap[1] = _935;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _849 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _951 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _849;
+    t.tap[2] = _951;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_albedo(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -290,17 +334,17 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_albedo(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -329,50 +373,50 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _925;
+#line 403 "hexc/hextiling.glsl"
+    float _1027;
     if (kInt > 0)
     {
-        _925 = float(kInt);
+        _1027 = float(kInt);
     }
     else
     {
-        _925 = log(1.0 - r) / (-0.693147182464599609375);
+        _1027 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _925;
+    return _1027;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
     vec3 m = (vec3(1.0) - s) * 2.0;
     vec3 base = max(vec3(0.0), s + (x * m));
-    vec3 _962;
+    vec3 _1064;
     if (kInt > 0)
     {
         vec3 param = base;
         int param_1 = kInt;
-        vec3 _969 = hexcPowInt(param, param_1);
-        _962 = _969;
+        vec3 _1071 = hexcPowInt(param, param_1);
+        _1064 = _1071;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _962 = pow(base, vec3(hexcGainK(param_2, param_3)));
+        _1064 = pow(base, vec3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _962);
+    return (s * 0.5) + ((m * 0.25) * _1064);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -380,26 +424,26 @@ vec3 hexcGain3(vec3 x, float r, int kInt)
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1034 = hexcPowInt(param, param_1);
-    vec3 wg = _1034;
+    vec3 _1136 = hexcPowInt(param, param_1);
+    vec3 wg = _1136;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1050;
+    vec3 _1152;
     if (sum > 0.0)
     {
-        _1050 = W / vec3(sum);
+        _1152 = W / vec3(sum);
     }
     else
     {
-        _1050 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1152 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1050;
+    W = _1152;
     vec3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -407,17 +451,17 @@ vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -447,9 +491,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_6;
-    vec4 _1505 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
+    vec4 _1607 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
     weights = param_6;
-    return _1505;
+    return _1607;
 }
 
 #line 24 "hexc/generated"
@@ -462,9 +506,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _1526 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1628 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1526;
+    return _1628;
 }
 
 #line 27 "hexc/generated"
@@ -473,47 +517,47 @@ vec4 hexc_albedo(vec2 uv)
 #line 27 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1534 = hexc_albedo(param, param_1);
+    vec4 _1636 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1534;
+    return _1636;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    vec4 _455;
+#line 132 "hexc/hextiling.glsl"
+    vec4 _545;
     if (c == 0)
     {
-        _455 = vec4(1.0, 0.0, 0.0, 0.0);
+        _545 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _462;
+        vec4 _552;
         if (c == 1)
         {
-            _462 = vec4(0.0, 1.0, 0.0, 0.0);
+            _552 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _462 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _552 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _455 = _462;
+        _545 = _552;
     }
-    return _455;
+    return _545;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_roughness(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -544,9 +588,9 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_6 = hexcChannel(param_4);
     vec3 param_7;
-    vec4 _1597 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
+    vec4 _1699 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
     weights = param_7;
-    return _1597.x;
+    return _1699.x;
 }
 
 #line 43 "hexc/generated"
@@ -559,9 +603,9 @@ float hexc_roughness(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    float _1617 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
+    float _1719 = hexcAt_roughness(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1617;
+    return _1719;
 }
 
 #line 46 "hexc/generated"
@@ -570,93 +614,93 @@ float hexc_roughness(vec2 uv)
 #line 46 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _1625 = hexc_roughness(param, param_1);
+    float _1727 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _1625;
+    return _1727;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1319;
+    float _1421;
     if (flipY)
     {
-        _1319 = -vM.y;
+        _1421 = -vM.y;
     }
     else
     {
-        _1319 = vM.y;
+        _1421 = vM.y;
     }
-    return (-vec2(vM.x, _1319)) / vec2(zMa);
+    return (-vec2(vM.x, _1421)) / vec2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1352;
+    vec2 _1454;
     if (scaled)
     {
-        _1352 = d * p.invScale;
+        _1454 = d * p.invScale;
     }
     else
     {
-        _1352 = d;
+        _1454 = d;
     }
-    return _1352;
+    return _1454;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_normal(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.normal_falloffcontrast));
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_normal(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1082 = hexcPowInt(param, param_1);
-    vec3 wg = _1082;
+    vec3 _1184 = hexcPowInt(param, param_1);
+    vec3 wg = _1184;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1098;
+    vec3 _1200;
     if (sum > 0.0)
     {
-        _1098 = W / vec3(sum);
+        _1200 = W / vec3(sum);
     }
     else
     {
-        _1098 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1200 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1098;
+    W = _1200;
     return W;
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -707,9 +751,9 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     vec3 param_6;
-    vec2 _1551 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
+    vec2 _1653 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
     weights = param_6;
-    return _1551;
+    return _1653;
 }
 
 #line 33 "hexc/generated"
@@ -722,9 +766,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _1570 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _1672 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1570;
+    return _1672;
 }
 
 #line 36 "hexc/generated"
@@ -733,15 +777,15 @@ vec2 hexc_normal(vec2 uv)
 #line 36 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _1578 = hexc_normal(param, param_1);
+    vec2 _1680 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _1578;
+    return _1680;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

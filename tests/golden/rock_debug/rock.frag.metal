@@ -75,7 +75,7 @@ struct HexcParams
     float roughness_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1147 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1249 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct rock_frag_out
 {
@@ -106,27 +106,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -138,73 +138,117 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-void hexcStableTile_albedo(thread const int2& id, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+float2 hexcCosSin(thread const float& angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    float2 _423;
+    if ((q & 1) != 0)
+    {
+        _423 = float2(-s, c);
+    }
+    else
+    {
+        _423 = float2(c, s);
+    }
+    float2 cs = _423;
+    float2 _438;
+    if ((q & 2) != 0)
+    {
+        _438 = -cs;
+    }
+    else
+    {
+        _438 = cs;
+    }
+    return _438;
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _589 = hexcPcg3d(param);
-    float3 u = float3(_589 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _679 = hexcPcg3d(param);
+    float3 u = float3(_679 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = float2(cos(angle), sin(angle));
+    float2 _703;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _703 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _703 = float2(cos(angle), sin(angle));
+    }
+    rot = _703;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile_albedo(thread float2& v, thread const HexcTap& p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, constant HexcParams& hexcParams)
+HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3, hexcParams);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _687 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_687 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _697 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _697;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _703 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _703;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _788 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_788 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _798 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _798;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _804 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _804;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -213,54 +257,55 @@ HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, hexcParams);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _374;
+    int _464;
     if ((d < 0) && (a != 0))
     {
-        _374 = 3 - a;
+        _464 = 3 - a;
     }
     else
     {
-        _374 = a;
+        _464 = a;
     }
-    int i1 = _374;
-    int _385;
+    int i1 = _464;
+    int _475;
     if (i1 < 2)
     {
-        _385 = i1 + 1;
+        _475 = i1 + 1;
     }
     else
     {
-        _385 = 0;
+        _475 = 0;
     }
-    int vh = _385;
-    int _395;
+    int vh = _475;
+    int _485;
     if (i1 > 0)
     {
-        _395 = i1 - 1;
+        _485 = i1 - 1;
     }
     else
     {
-        _395 = 2;
+        _485 = 2;
     }
-    int vl = _395;
+    int vl = _485;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -283,66 +328,66 @@ HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& d
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _817 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _919 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _817;
+    t.tap[0] = _919;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _833 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _935 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _833;
+    t.tap[1] = _935;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _849 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _951 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _849;
+    t.tap[2] = _951;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_albedo(thread const float3& w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = float3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _1147;
+    c = _1249;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -354,19 +399,19 @@ void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcT
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_albedo(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -395,53 +440,53 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcGainK(thread const float& r, thread const int& kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _925;
+#line 403 "hexc/hextiling.glsl"
+    float _1027;
     if (kInt > 0)
     {
-        _925 = float(kInt);
+        _1027 = float(kInt);
     }
     else
     {
-        _925 = log(1.0 - r) / (-0.693147182464599609375);
+        _1027 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _925;
+    return _1027;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 s = step(float3(0.5), x) * 2.0;
     float3 m = (float3(1.0) - s) * 2.0;
     float3 base = fast::max(float3(0.0), s + (x * m));
-    float3 _962;
+    float3 _1064;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _969 = hexcPowInt(param, param_1);
-        _962 = _969;
+        float3 _1071 = hexcPowInt(param, param_1);
+        _1064 = _1071;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _962 = pow(base, float3(hexcGainK(param_2, param_3)));
+        _1064 = pow(base, float3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _962);
+    return (s * 0.5) + ((m * 0.25) * _1064);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGain3(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -449,27 +494,27 @@ float3 hexcGain3(thread const float3& x, thread const float& r, thread const int
     return res / float3((res.x + res.y) + res.z);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1034 = hexcPowInt(param, param_1);
-    float3 wg = _1034;
+    float3 _1136 = hexcPowInt(param, param_1);
+    float3 wg = _1136;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1050;
+    float3 _1152;
     if (sum > 0.0)
     {
-        _1050 = W / float3(sum);
+        _1152 = W / float3(sum);
     }
     else
     {
-        _1050 = wg / float3((wg.x + wg.y) + wg.z);
+        _1152 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1050;
+    W = _1152;
     float3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -477,19 +522,19 @@ float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -521,9 +566,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_6;
-    float4 _1505 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
+    float4 _1607 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
     weights = param_6;
-    return _1505;
+    return _1607;
 }
 
 #line 24 "hexc/generated"
@@ -537,9 +582,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _1526 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1628 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _1526;
+    return _1628;
 }
 
 #line 27 "hexc/generated"
@@ -549,50 +594,50 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 27 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1534 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1636 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _1534;
+    return _1636;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
-#line 116 "hexc/hextiling.glsl"
-    float4 _455;
+#line 132 "hexc/hextiling.glsl"
+    float4 _545;
     if (c == 0)
     {
-        _455 = float4(1.0, 0.0, 0.0, 0.0);
+        _545 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        float4 _462;
+        float4 _552;
         if (c == 1)
         {
-            _462 = float4(0.0, 1.0, 0.0, 0.0);
+            _552 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _462 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+            _552 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _455 = _462;
+        _545 = _552;
     }
-    return _455;
+    return _545;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_roughness(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_roughness(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -625,9 +670,9 @@ float hexcAt_roughness(thread const float2& st, thread const float2& dx, thread 
     HexcTiles param_5 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _1597 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
+    float4 _1699 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7, hexcParams);
     weights = param_7;
-    return _1597.x;
+    return _1699.x;
 }
 
 #line 43 "hexc/generated"
@@ -641,9 +686,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, constant H
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float _1617 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1719 = hexcAt_roughness(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_roughness);
     weights = param_4;
-    return _1617;
+    return _1719;
 }
 
 #line 46 "hexc/generated"
@@ -653,99 +698,99 @@ float hexc_roughness(thread const float2& uv, constant HexcParams& hexcParams, s
 #line 46 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _1625 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
+    float _1727 = hexc_roughness(param, param_1, hexcParams, hexcSampler, hexcTex_roughness);
     float3 weights = param_1;
-    return _1625;
+    return _1727;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1319;
+    float _1421;
     if (flipY)
     {
-        _1319 = -vM.y;
+        _1421 = -vM.y;
     }
     else
     {
-        _1319 = vM.y;
+        _1421 = vM.y;
     }
-    return (-float2(vM.x, _1319)) / float2(zMa);
+    return (-float2(vM.x, _1421)) / float2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1352;
+    float2 _1454;
     if (scaled)
     {
-        _1352 = d * p.invScale;
+        _1454 = d * p.invScale;
     }
     else
     {
-        _1352 = d;
+        _1454 = d;
     }
-    return _1352;
+    return _1454;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_normal(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.normal_falloffcontrast));
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_normal(thread const float3& w, thread const float3& M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1082 = hexcPowInt(param, param_1);
-    float3 wg = _1082;
+    float3 _1184 = hexcPowInt(param, param_1);
+    float3 wg = _1184;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1098;
+    float3 _1200;
     if (sum > 0.0)
     {
-        _1098 = W / float3(sum);
+        _1200 = W / float3(sum);
     }
     else
     {
-        _1098 = wg / float3((wg.x + wg.y) + wg.z);
+        _1200 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1098;
+    W = _1200;
     return W;
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -797,9 +842,9 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3, hexcParams);
     bool param_5 = false;
     float3 param_6;
-    float2 _1551 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
+    float2 _1653 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
     weights = param_6;
-    return _1551;
+    return _1653;
 }
 
 #line 33 "hexc/generated"
@@ -813,9 +858,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _1570 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1672 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcSampler, hexcTex_normal);
     weights = param_4;
-    return _1570;
+    return _1672;
 }
 
 #line 36 "hexc/generated"
@@ -825,16 +870,16 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, sam
 #line 36 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1578 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
+    float2 _1680 = hexc_normal(param, param_1, hexcParams, hexcSampler, hexcTex_normal);
     float3 weights = param_1;
-    return _1578;
+    return _1680;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

@@ -53,24 +53,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -82,68 +82,111 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_normal(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+vec2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    vec2 _331;
+    if ((q & 1) != 0)
+    {
+        _331 = vec2(-s, c);
+    }
+    else
+    {
+        _331 = vec2(c, s);
+    }
+    vec2 cs = _331;
+    vec2 _346;
+    if ((q & 2) != 0)
+    {
+        _346 = -cs;
+    }
+    else
+    {
+        _346 = cs;
+    }
+    return _346;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_normal(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _472 = hexcPcg3d(param);
-    vec3 u = vec3(_472 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _562 = hexcPcg3d(param);
+    vec3 u = vec3(_562 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.normal_rotation;
     invScale = 1.0;
-    rot = vec2(cos(angle), sin(angle));
+    vec2 _586;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _586 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _586 = vec2(cos(angle), sin(angle));
+    }
+    rot = _586;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 vec2 hexcToTile_normal(inout vec2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_normal(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_normal(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_normal(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_normal(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    vec2 _570 = hexcToTile_normal(param_4, param_5);
-    p.st = (_570 + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    vec2 _580 = hexcToTile_normal(param_6, param_7);
-    p.dx = _580;
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    vec2 _586 = hexcToTile_normal(param_8, param_9);
-    p.dy = _586;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _671 = hexcToTile_normal(param_5, param_6);
+    p.st = (_671 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _681 = hexcToTile_normal(param_7, param_8);
+    p.dx = _681;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _687 = hexcToTile_normal(param_9, param_10);
+    p.dy = _687;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_normal(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -152,52 +195,53 @@ HexcTap hexcStableTap_normal(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    return hexcPlaceTile_normal(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_normal(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _282;
+    int _372;
     if ((d < 0) && (a != 0))
     {
-        _282 = 3 - a;
+        _372 = 3 - a;
     }
     else
     {
-        _282 = a;
+        _372 = a;
     }
-    int i1 = _282;
-    int _293;
+    int i1 = _372;
+    int _383;
     if (i1 < 2)
     {
-        _293 = i1 + 1;
+        _383 = i1 + 1;
     }
     else
     {
-        _293 = 0;
+        _383 = 0;
     }
-    int vh = _293;
-    int _303;
+    int vh = _383;
+    int _393;
     if (i1 > 0)
     {
-        _303 = i1 - 1;
+        _393 = i1 - 1;
     }
     else
     {
-        _303 = 2;
+        _393 = 2;
     }
-    int vl = _303;
+    int vl = _393;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_normal(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -219,114 +263,114 @@ HexcTiles hexcTilesStable_normal(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _700 = hexcStableTap_normal(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _802 = hexcStableTap_normal(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _700;
+    t.tap[0] = _802;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _716 = hexcStableTap_normal(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _818 = hexcStableTap_normal(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _716;
+    t.tap[1] = _818;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _732 = hexcStableTap_normal(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _834 = hexcStableTap_normal(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _732;
+    t.tap[2] = _834;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_normal(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 vec3 hexcTileLods_normal(HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 vec4 hexcFetch_normal(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _898;
+    float _1000;
     if (flipY)
     {
-        _898 = -vM.y;
+        _1000 = -vM.y;
     }
     else
     {
-        _898 = vM.y;
+        _1000 = vM.y;
     }
-    return (-vec2(vM.x, _898)) / vec2(zMa);
+    return (-vec2(vM.x, _1000)) / vec2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _931;
+    vec2 _1033;
     if (scaled)
     {
-        _931 = d * p.invScale;
+        _1033 = d * p.invScale;
     }
     else
     {
-        _931 = d;
+        _1033 = d;
     }
-    return _931;
+    return _1033;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_normal(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.normal_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -355,40 +399,40 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_normal(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _819 = hexcPowInt(param, param_1);
-    vec3 wg = _819;
+    vec3 _921 = hexcPowInt(param, param_1);
+    vec3 wg = _921;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _835;
+    vec3 _937;
     if (sum > 0.0)
     {
-        _835 = W / vec3(sum);
+        _937 = W / vec3(sum);
     }
     else
     {
-        _835 = wg / vec3((wg.x + wg.y) + wg.z);
+        _937 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _835;
+    W = _937;
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_normal(param);
     HexcTiles param_1 = t;
@@ -439,9 +483,9 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_normal(param, param_1, param_2, param_3);
     bool param_5 = false;
     vec3 param_6;
-    vec2 _1081 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
+    vec2 _1183 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
     weights = param_6;
-    return _1081;
+    return _1183;
 }
 
 #line 18 "hexc/generated"
@@ -454,9 +498,9 @@ vec2 hexc_normal(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec2 _1102 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
+    vec2 _1204 = hexcAt_normal(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1102;
+    return _1204;
 }
 
 #line 21 "hexc/generated"
@@ -465,15 +509,15 @@ vec2 hexc_normal(vec2 uv)
 #line 21 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _1110 = hexc_normal(param, param_1);
+    vec2 _1212 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _1110;
+    return _1212;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 vec3 hexcDerivToNormal(vec2 deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return normalize(vec3(-deriv, 1.0));
 }
 

@@ -102,27 +102,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -134,73 +134,117 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-void hexcStableTile_normal(thread const int2& id, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+float2 hexcCosSin(thread const float& angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    float2 _331;
+    if ((q & 1) != 0)
+    {
+        _331 = float2(-s, c);
+    }
+    else
+    {
+        _331 = float2(c, s);
+    }
+    float2 cs = _331;
+    float2 _346;
+    if ((q & 2) != 0)
+    {
+        _346 = -cs;
+    }
+    else
+    {
+        _346 = cs;
+    }
+    return _346;
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_normal(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _472 = hexcPcg3d(param);
-    float3 u = float3(_472 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _562 = hexcPcg3d(param);
+    float3 u = float3(_562 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.normal_rotation;
     invScale = 1.0;
-    rot = float2(cos(angle), sin(angle));
+    float2 _586;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _586 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _586 = float2(cos(angle), sin(angle));
+    }
+    rot = _586;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateToTile(thread const float2& v, thread const float2& cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile_normal(thread float2& v, thread const HexcTap& p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_normal(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, constant HexcParams& hexcParams)
+HexcTap hexcPlaceTile_normal(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_normal(param, param_1, param_2, param_3, hexcParams);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_normal(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _570 = hexcToTile_normal(param_4, param_5);
-    p.st = (_570 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _580 = hexcToTile_normal(param_6, param_7);
-    p.dx = _580;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _586 = hexcToTile_normal(param_8, param_9);
-    p.dy = _586;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _671 = hexcToTile_normal(param_5, param_6);
+    p.st = (_671 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _681 = hexcToTile_normal(param_7, param_8);
+    p.dx = _681;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _687 = hexcToTile_normal(param_9, param_10);
+    p.dy = _687;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcStableTap_normal(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -209,54 +253,55 @@ HexcTap hexcStableTap_normal(thread const int2& local, thread const uint2& shift
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_normal(param_2, param_3, param_4, param_5, param_6, hexcParams);
+    bool param_7 = false;
+    return hexcPlaceTile_normal(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _282;
+    int _372;
     if ((d < 0) && (a != 0))
     {
-        _282 = 3 - a;
+        _372 = 3 - a;
     }
     else
     {
-        _282 = a;
+        _372 = a;
     }
-    int i1 = _282;
-    int _293;
+    int i1 = _372;
+    int _383;
     if (i1 < 2)
     {
-        _293 = i1 + 1;
+        _383 = i1 + 1;
     }
     else
     {
-        _293 = 0;
+        _383 = 0;
     }
-    int vh = _293;
-    int _303;
+    int vh = _383;
+    int _393;
     if (i1 > 0)
     {
-        _303 = i1 - 1;
+        _393 = i1 - 1;
     }
     else
     {
-        _303 = 2;
+        _393 = 2;
     }
-    int vl = _303;
+    int vl = _393;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTiles hexcTilesStable_normal(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -279,122 +324,122 @@ HexcTiles hexcTilesStable_normal(thread const float2& st, thread const float2& d
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _700 = hexcStableTap_normal(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _802 = hexcStableTap_normal(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _700;
+    t.tap[0] = _802;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _716 = hexcStableTap_normal(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _818 = hexcStableTap_normal(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _716;
+    t.tap[1] = _818;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _732 = hexcStableTap_normal(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _834 = hexcStableTap_normal(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _732;
+    t.tap[2] = _834;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_normal(thread const float3& w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = float3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch_normal(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _898;
+    float _1000;
     if (flipY)
     {
-        _898 = -vM.y;
+        _1000 = -vM.y;
     }
     else
     {
-        _898 = vM.y;
+        _1000 = vM.y;
     }
-    return (-float2(vM.x, _898)) / float2(zMa);
+    return (-float2(vM.x, _1000)) / float2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcRotateFromTile(thread const float2& d, thread const float2& cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread const bool& scaled, thread const bool& flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0) - float3(1.0);
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _931;
+    float2 _1033;
     if (scaled)
     {
-        _931 = d * p.invScale;
+        _1033 = d * p.invScale;
     }
     else
     {
-        _931 = d;
+        _1033 = d;
     }
-    return _931;
+    return _1033;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_normal(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.normal_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -423,43 +468,43 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_normal(thread const float3& w, thread const float3& M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _819 = hexcPowInt(param, param_1);
-    float3 wg = _819;
+    float3 _921 = hexcPowInt(param, param_1);
+    float3 wg = _921;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _835;
+    float3 _937;
     if (sum > 0.0)
     {
-        _835 = W / float3(sum);
+        _937 = W / float3(sum);
     }
     else
     {
-        _835 = wg / float3((wg.x + wg.y) + wg.z);
+        _937 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _835;
+    W = _937;
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcDeriv_normal(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool& flipY, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_normal(param);
     HexcTiles param_1 = t;
@@ -511,9 +556,9 @@ float2 hexcAt_normal(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_normal(param, param_1, param_2, param_3, hexcParams);
     bool param_5 = false;
     float3 param_6;
-    float2 _1081 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
+    float2 _1183 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6, hexcParams);
     weights = param_6;
-    return _1081;
+    return _1183;
 }
 
 #line 18 "hexc/generated"
@@ -527,9 +572,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float2 _1102 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_normal, hexcSampler);
+    float2 _1204 = hexcAt_normal(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_normal, hexcSampler);
     weights = param_4;
-    return _1102;
+    return _1204;
 }
 
 #line 21 "hexc/generated"
@@ -539,16 +584,16 @@ float2 hexc_normal(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 21 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _1110 = hexc_normal(param, param_1, hexcParams, hexcTex_normal, hexcSampler);
+    float2 _1212 = hexc_normal(param, param_1, hexcParams, hexcTex_normal, hexcSampler);
     float3 weights = param_1;
-    return _1110;
+    return _1212;
 }
 
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcDerivToNormal(thread const float2& deriv)
 {
-#line 683 "hexc/hextiling.glsl"
+#line 701 "hexc/hextiling.glsl"
     return fast::normalize(float3(-deriv, 1.0));
 }
 

@@ -50,24 +50,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -79,55 +79,56 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _440 = hexcPcg3d(param);
-    vec3 u = vec3(_440 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _443 = hexcPcg3d(param);
+    vec3 u = vec3(_443 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * 0.0;
     invScale = 1.0;
     rot = vec2(1.0, 0.0);
 }
 
-#line 250 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(vec2 v, HexcTap p)
 {
-#line 250 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    p.st = (hexcToTile_albedo(param_4, param_5) + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    p.dx = hexcToTile_albedo(param_6, param_7);
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    p.dy = hexcToTile_albedo(param_8, param_9);
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    p.st = (hexcToTile_albedo(param_5, param_6) + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    p.dx = hexcToTile_albedo(param_7, param_8);
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    p.dy = hexcToTile_albedo(param_9, param_10);
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -136,52 +137,53 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _283;
+    int _286;
     if ((d < 0) && (a != 0))
     {
-        _283 = 3 - a;
+        _286 = 3 - a;
     }
     else
     {
-        _283 = a;
+        _286 = a;
     }
-    int i1 = _283;
-    int _294;
+    int i1 = _286;
+    int _297;
     if (i1 < 2)
     {
-        _294 = i1 + 1;
+        _297 = i1 + 1;
     }
     else
     {
-        _294 = 0;
+        _297 = 0;
     }
-    int vh = _294;
-    int _304;
+    int vh = _297;
+    int _307;
     if (i1 > 0)
     {
-        _304 = i1 - 1;
+        _307 = i1 - 1;
     }
     else
     {
-        _304 = 2;
+        _307 = 2;
     }
-    int vl = _304;
+    int vl = _307;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -203,59 +205,59 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _653 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _658 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _653;
+    t.tap[0] = _658;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _669 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _674 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _669;
+    t.tap[1] = _674;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _685 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _690 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _685;
+    t.tap[2] = _690;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_albedo(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -270,17 +272,17 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_albedo(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -309,50 +311,50 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _761;
+#line 403 "hexc/hextiling.glsl"
+    float _766;
     if (kInt > 0)
     {
-        _761 = float(kInt);
+        _766 = float(kInt);
     }
     else
     {
-        _761 = log(1.0 - r) / (-0.693147182464599609375);
+        _766 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _761;
+    return _766;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
     vec3 m = (vec3(1.0) - s) * 2.0;
     vec3 base = max(vec3(0.0), s + (x * m));
-    vec3 _798;
+    vec3 _803;
     if (kInt > 0)
     {
         vec3 param = base;
         int param_1 = kInt;
-        vec3 _805 = hexcPowInt(param, param_1);
-        _798 = _805;
+        vec3 _810 = hexcPowInt(param, param_1);
+        _803 = _810;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _798 = pow(base, vec3(hexcGainK(param_2, param_3)));
+        _803 = pow(base, vec3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _798);
+    return (s * 0.5) + ((m * 0.25) * _803);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -360,26 +362,26 @@ vec3 hexcGain3(vec3 x, float r, int kInt)
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _858 = hexcPowInt(param, param_1);
-    vec3 wg = _858;
+    vec3 _863 = hexcPowInt(param, param_1);
+    vec3 wg = _863;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _874;
+    vec3 _879;
     if (sum > 0.0)
     {
-        _874 = W / vec3(sum);
+        _879 = W / vec3(sum);
     }
     else
     {
-        _874 = wg / vec3((wg.x + wg.y) + wg.z);
+        _879 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _874;
+    W = _879;
     vec3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -387,17 +389,17 @@ vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -427,9 +429,9 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_6;
-    vec4 _1036 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
+    vec4 _1041 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
     weights = param_6;
-    return _1036;
+    return _1041;
 }
 
 #line 17 "hexc/generated"
@@ -442,9 +444,9 @@ vec4 hexc_albedo(vec2 uv, out vec3 weights)
     vec2 param_2 = dFdy(st);
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _1057 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    vec4 _1062 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1057;
+    return _1062;
 }
 
 #line 20 "hexc/generated"
@@ -453,9 +455,9 @@ vec4 hexc_albedo(vec2 uv)
 #line 20 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1065 = hexc_albedo(param, param_1);
+    vec4 _1070 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1065;
+    return _1070;
 }
 
 #line 20 "templates/builtin/unlit.glsl"

@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _928[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _933[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -60,24 +60,24 @@ void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 float2 hexcStableCentreInPeriod(int2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -89,55 +89,56 @@ uint3 hexcPcg3d(inout uint3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float invScale)
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _440 = hexcPcg3d(param);
-    float3 u = float3(_440 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _443 = hexcPcg3d(param);
+    float3 u = float3(_443 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * 0.0f;
     invScale = 1.0f;
     rot = float2(1.0f, 0.0f);
 }
 
-#line 250 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
 float2 hexcToTile_albedo(float2 v, HexcTap p)
 {
-#line 250 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    p.st = (hexcToTile_albedo(param_4, param_5) + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    p.dx = hexcToTile_albedo(param_6, param_7);
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    p.dy = hexcToTile_albedo(param_8, param_9);
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    p.st = (hexcToTile_albedo(param_5, param_6) + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    p.dx = hexcToTile_albedo(param_7, param_8);
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    p.dy = hexcToTile_albedo(param_9, param_10);
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -146,52 +147,53 @@ HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, fl
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _283;
+    int _286;
     if ((d < 0) && (a != 0))
     {
-        _283 = 3 - a;
+        _286 = 3 - a;
     }
     else
     {
-        _283 = a;
+        _286 = a;
     }
-    int i1 = _283;
-    int _294;
+    int i1 = _286;
+    int _297;
     if (i1 < 2)
     {
-        _294 = i1 + 1;
+        _297 = i1 + 1;
     }
     else
     {
-        _294 = 0;
+        _297 = 0;
     }
-    int vh = _294;
-    int _304;
+    int vh = _297;
+    int _307;
     if (i1 > 0)
     {
-        _304 = i1 - 1;
+        _307 = i1 - 1;
     }
     else
     {
-        _304 = 2;
+        _307 = 2;
     }
-    int vl = _304;
+    int vl = _307;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -213,62 +215,62 @@ HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cel
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _653 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _658 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _653;
+    t.tap[0] = _658;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _669 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _674 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _669;
+    t.tap[1] = _674;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _685 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _690 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _685;
+    t.tap[2] = _690;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_albedo(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true, true, true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 float3 hexcTileLods_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.SampleGrad(samp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _928;
+    c = _933;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -280,17 +282,17 @@ void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_albedo(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_albedo_falloffcontrast.xxx);
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -319,50 +321,50 @@ float3 hexcPowInt(inout float3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _761;
+#line 403 "hexc/hextiling.glsl"
+    float _766;
     if (kInt > 0)
     {
-        _761 = float(kInt);
+        _766 = float(kInt);
     }
     else
     {
-        _761 = log(1.0f - r) / (-0.693147182464599609375f);
+        _766 = log(1.0f - r) / (-0.693147182464599609375f);
     }
-    return _761;
+    return _766;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 float3 hexcGainCurve(float3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 s = step(0.5f.xxx, x) * 2.0f;
     float3 m = (1.0f.xxx - s) * 2.0f;
     float3 base = max(0.0f.xxx, s + (x * m));
-    float3 _798;
+    float3 _803;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _805 = hexcPowInt(param, param_1);
-        _798 = _805;
+        float3 _810 = hexcPowInt(param, param_1);
+        _803 = _810;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _798 = pow(base, hexcGainK(param_2, param_3).xxx);
+        _803 = pow(base, hexcGainK(param_2, param_3).xxx);
     }
-    return (s * 0.5f) + ((m * 0.25f) * _798);
+    return (s * 0.5f) + ((m * 0.25f) * _803);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 float3 hexcGain3(float3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -370,26 +372,26 @@ float3 hexcGain3(float3 x, float r, int kInt)
     return res / ((res.x + res.y) + res.z).xxx;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_albedo(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _858 = hexcPowInt(param, param_1);
-    float3 wg = _858;
+    float3 _863 = hexcPowInt(param, param_1);
+    float3 wg = _863;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _874;
+    float3 _879;
     if (sum > 0.0f)
     {
-        _874 = W / sum.xxx;
+        _879 = W / sum.xxx;
     }
     else
     {
-        _874 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _879 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _874;
+    W = _879;
     float3 param_2 = W;
     float param_3 = 0.5f;
     int param_4 = 2;
@@ -397,20 +399,20 @@ float3 hexcBlendWeights_albedo(float3 w, float3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
-    int3 _336 = channel.x.xxx;
-    int3 _346 = channel.y.xxx;
-    int3 _355 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _336.x, int3(0, 1, 2).y == _336.y, int3(0, 1, 2).z == _336.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _346.x, int3(0, 1, 2).y == _346.y, int3(0, 1, 2).z == _346.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _355.x, int3(0, 1, 2).y == _355.y, int3(0, 1, 2).z == _355.z)) * W.z);
+#line 125 "hexc/hextiling.glsl"
+    int3 _339 = channel.x.xxx;
+    int3 _349 = channel.y.xxx;
+    int3 _358 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _339.x, int3(0, 1, 2).y == _339.y, int3(0, 1, 2).z == _339.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _349.x, int3(0, 1, 2).y == _349.y, int3(0, 1, 2).z == _349.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _358.x, int3(0, 1, 2).y == _358.y, int3(0, 1, 2).z == _358.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -440,9 +442,9 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_6;
-    float4 _1036 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
+    float4 _1041 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
     weights = param_6;
-    return _1036;
+    return _1041;
 }
 
 #line 17 "hexc/generated"
@@ -455,9 +457,9 @@ float4 hexc_albedo(float2 uv, out float3 weights)
     float2 param_2 = ddy(st);
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _1057 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
+    float4 _1062 = hexcAt_albedo(param, param_1, param_2, param_3, param_4);
     weights = param_4;
-    return _1057;
+    return _1062;
 }
 
 #line 20 "hexc/generated"
@@ -466,9 +468,9 @@ float4 hexc_albedo(float2 uv)
 #line 20 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1065 = hexc_albedo(param, param_1);
+    float4 _1070 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _1065;
+    return _1070;
 }
 
 #line 20 "templates/builtin/unlit.glsl"

@@ -72,7 +72,7 @@ struct HexcParams
     float albedo_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _928 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _933 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct tiles_frag_out
 {
@@ -101,27 +101,27 @@ void hexcTriangle(thread const float2& skewed, thread float3& w, thread spvUnsaf
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentre(thread const int2& local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcStableCentreInPeriod(thread const int2& local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 uint3 hexcPcg3d(thread uint3& v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u)) + uint3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -133,59 +133,60 @@ uint3 hexcPcg3d(thread uint3& v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-void hexcStableTile_albedo(thread const int2& id, thread float2& offset, thread float2& rot, thread float& invScale)
+void hexcStableTile_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _440 = hexcPcg3d(param);
-    float3 u = float3(_440 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _443 = hexcPcg3d(param);
+    float3 u = float3(_443 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * 0.0;
     invScale = 1.0;
     rot = float2(1.0, 0.0);
 }
 
-#line 250 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float2 hexcToTile_albedo(thread const float2& v, thread const HexcTap& p)
 {
-#line 250 "hexc/hextiling.glsl"
+#line 267 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy)
+HexcTap hexcPlaceTile_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    p.st = (hexcToTile_albedo(param_4, param_5) + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    p.dx = hexcToTile_albedo(param_6, param_7);
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    p.dy = hexcToTile_albedo(param_8, param_9);
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    p.st = (hexcToTile_albedo(param_5, param_6) + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    p.dx = hexcToTile_albedo(param_7, param_8);
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    p.dy = hexcToTile_albedo(param_9, param_10);
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -194,54 +195,55 @@ HexcTap hexcStableTap_albedo(thread const int2& local, thread const uint2& shift
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _283;
+    int _286;
     if ((d < 0) && (a != 0))
     {
-        _283 = 3 - a;
+        _286 = 3 - a;
     }
     else
     {
-        _283 = a;
+        _286 = a;
     }
-    int i1 = _283;
-    int _294;
+    int i1 = _286;
+    int _297;
     if (i1 < 2)
     {
-        _294 = i1 + 1;
+        _297 = i1 + 1;
     }
     else
     {
-        _294 = 0;
+        _297 = 0;
     }
-    int vh = _294;
-    int _304;
+    int vh = _297;
+    int _307;
     if (i1 > 0)
     {
-        _304 = i1 - 1;
+        _307 = i1 - 1;
     }
     else
     {
-        _304 = 2;
+        _307 = 2;
     }
-    int vl = _304;
+    int vl = _307;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -264,66 +266,66 @@ HexcTiles hexcTilesStable_albedo(thread const float2& st, thread const float2& d
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _653 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _658 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _653;
+    t.tap[0] = _658;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _669 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _674 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _669;
+    t.tap[1] = _674;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _685 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _690 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _685;
+    t.tap[2] = _690;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 bool3 hexcFetched_albedo(thread const float3& w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcTileLods_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = float3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcFetch_albedo(texture2d<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.sample(samp, p.st, gradient2d(p.dx, p.dy));
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const bool3& f, thread spvUnsafeArray<float4, 3>& c)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _928;
+    c = _933;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -335,19 +337,19 @@ void hexcFetchTaps_albedo(texture2d<float> tex, sampler samp, thread const HexcT
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcMetric_albedo(thread const float3& Dw, constant HexcParams& hexcParams)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(float3(1.0), fast::max(Dw, float3(0.0)), float3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcPowInt(thread float3& x, thread const int& n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = float3(1.0);
     if ((n & 1) != 0)
     {
@@ -376,53 +378,53 @@ float3 hexcPowInt(thread float3& x, thread const int& n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float hexcGainK(thread const float& r, thread const int& kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _761;
+#line 403 "hexc/hextiling.glsl"
+    float _766;
     if (kInt > 0)
     {
-        _761 = float(kInt);
+        _766 = float(kInt);
     }
     else
     {
-        _761 = log(1.0 - r) / (-0.693147182464599609375);
+        _766 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _761;
+    return _766;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGainCurve(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 s = step(float3(0.5), x) * 2.0;
     float3 m = (float3(1.0) - s) * 2.0;
     float3 base = fast::max(float3(0.0), s + (x * m));
-    float3 _798;
+    float3 _803;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _805 = hexcPowInt(param, param_1);
-        _798 = _805;
+        float3 _810 = hexcPowInt(param, param_1);
+        _803 = _810;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _798 = pow(base, float3(hexcGainK(param_2, param_3)));
+        _803 = pow(base, float3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _798);
+    return (s * 0.5) + ((m * 0.25) * _803);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcGain3(thread const float3& x, thread const float& r, thread const int& kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -430,27 +432,27 @@ float3 hexcGain3(thread const float3& x, thread const float& r, thread const int
     return res / float3((res.x + res.y) + res.z);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _858 = hexcPowInt(param, param_1);
-    float3 wg = _858;
+    float3 _863 = hexcPowInt(param, param_1);
+    float3 wg = _863;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _874;
+    float3 _879;
     if (sum > 0.0)
     {
-        _874 = W / float3(sum);
+        _879 = W / float3(sum);
     }
     else
     {
-        _874 = wg / float3((wg.x + wg.y) + wg.z);
+        _879 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _874;
+    W = _879;
     float3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -458,19 +460,19 @@ float3 hexcBlendWeights_albedo(thread const float3& w, thread const float3& M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float3 hexcShowWeights(thread const float3& W, thread const int3& channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((float3(int3(0, 1, 2) == int3(channel.x)) * W.x) + (float3(int3(0, 1, 2) == int3(channel.y)) * W.y)) + (float3(int3(0, 1, 2) == int3(channel.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 static inline __attribute__((always_inline))
 float4 hexcColor_albedo(texture2d<float> tex, sampler samp, thread const HexcTiles& t, thread const float4& luma, texture2d<float> heightTex, thread float3& weights, constant HexcParams& hexcParams)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -502,9 +504,9 @@ float4 hexcAt_albedo(thread const float2& st, thread const float2& dx, thread co
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_6;
-    float4 _1036 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
+    float4 _1041 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6, hexcParams);
     weights = param_6;
-    return _1036;
+    return _1041;
 }
 
 #line 17 "hexc/generated"
@@ -518,9 +520,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, constant Hex
     float2 param_2 = dfdy(st);
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _1057 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1062 = hexcAt_albedo(param, param_1, param_2, param_3, param_4, hexcParams, hexcTex_albedo, hexcSampler);
     weights = param_4;
-    return _1057;
+    return _1062;
 }
 
 #line 20 "hexc/generated"
@@ -530,9 +532,9 @@ float4 hexc_albedo(thread const float2& uv, constant HexcParams& hexcParams, tex
 #line 20 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1065 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
+    float4 _1070 = hexc_albedo(param, param_1, hexcParams, hexcTex_albedo, hexcSampler);
     float3 weights = param_1;
-    return _1065;
+    return _1070;
 }
 
 #line 20 "templates/builtin/unlit.glsl"

@@ -53,36 +53,36 @@ layout(location = 3) in vec3 v_position;
 layout(location = 1) in vec3 v_normal;
 layout(location = 0) out vec4 o_color;
 
-#line 696 "hexc/hextiling.glsl"
+#line 714 "hexc/hextiling.glsl"
 HexcPlanes hexcPlanes(vec3 position, vec3 normal, float sharpness, vec2 tiling)
 {
-#line 696 "hexc/hextiling.glsl"
+#line 714 "hexc/hextiling.glsl"
     vec3 dPdx = dFdx(position);
     vec3 dPdy = dFdy(position);
     float len = length(normal);
-    vec3 _1821;
+    vec3 _1938;
     if (len > 0.0)
     {
-        _1821 = normal / vec3(len);
+        _1938 = normal / vec3(len);
     }
     else
     {
-        _1821 = vec3(0.0);
+        _1938 = vec3(0.0);
     }
     HexcPlanes p;
-    p.n = _1821;
+    p.n = _1938;
     vec3 b = pow(abs(p.n), vec3(sharpness));
     float sum = (b.x + b.y) + b.z;
-    vec3 _1849;
+    vec3 _1966;
     if (sum > 0.0)
     {
-        _1849 = b / vec3(sum);
+        _1966 = b / vec3(sum);
     }
     else
     {
-        _1849 = vec3(0.3333333432674407958984375);
+        _1966 = vec3(0.3333333432674407958984375);
     }
-    p.b = _1849;
+    p.b = _1966;
     p.st[0] = position.yz * tiling;
     p.dx[0] = dPdx.yz * tiling;
     p.dy[0] = dPdy.yz * tiling;
@@ -111,24 +111,24 @@ void hexcTriangle(vec2 skewed, out vec3 w, inout ivec2 id[3])
     id[2] = baseId + ivec2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 vec2 hexcStableCentre(ivec2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return vec2((float(local.x) + (0.5 * float(local.y))) / 3.4642856121063232421875, 0.25 * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 vec2 hexcStableCentreInPeriod(ivec2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return vec2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0, float(local.y & 3) * 0.25);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uvec3 hexcPcg3d(inout uvec3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uvec3(1664525u)) + uvec3(1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -140,68 +140,111 @@ uvec3 hexcPcg3d(inout uvec3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+vec2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875);
+    float r = angle - (k * 1.57079637050628662109375);
+    float r2 = r * r;
+    float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
+    float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
+    int q = int(k) & 3;
+    vec2 _501;
+    if ((q & 1) != 0)
+    {
+        _501 = vec2(-s, c);
+    }
+    else
+    {
+        _501 = vec2(c, s);
+    }
+    vec2 cs = _501;
+    vec2 _516;
+    if ((q & 2) != 0)
+    {
+        _516 = -cs;
+    }
+    else
+    {
+        _516 = cs;
+    }
+    return _516;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _665 = hexcPcg3d(param);
-    vec3 u = vec3(_665 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _757 = hexcPcg3d(param);
+    vec3 u = vec3(_757 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.albedo_rotation;
     invScale = 1.0;
-    rot = vec2(cos(angle), sin(angle));
+    vec2 _781;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _781 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _781 = vec2(cos(angle), sin(angle));
+    }
+    rot = _781;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 vec2 hexcRotateToTile(vec2 v, vec2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return vec2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 vec2 hexcToTile_albedo(inout vec2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     vec2 param = v;
     vec2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    vec2 _792 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_792 + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    vec2 _802 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _802;
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    vec2 _808 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _808;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _904 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_904 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _914 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _914;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _920 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _920;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = ivec2(uvec2(local) + shift);
     ivec2 param = local;
     ivec2 param_1 = local;
@@ -210,52 +253,53 @@ HexcTap hexcStableTap_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 
     vec2 param_4 = hexcStableCentreInPeriod(param_1);
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _450;
+    int _542;
     if ((d < 0) && (a != 0))
     {
-        _450 = 3 - a;
+        _542 = 3 - a;
     }
     else
     {
-        _450 = a;
+        _542 = a;
     }
-    int i1 = _450;
-    int _461;
+    int i1 = _542;
+    int _553;
     if (i1 < 2)
     {
-        _461 = i1 + 1;
+        _553 = i1 + 1;
     }
     else
     {
-        _461 = 0;
+        _553 = 0;
     }
-    int vh = _461;
-    int _471;
+    int vh = _553;
+    int _563;
     if (i1 > 0)
     {
-        _471 = i1 - 1;
+        _563 = i1 - 1;
     }
     else
     {
-        _471 = 2;
+        _563 = 2;
     }
-    int vl = _471;
+    int vl = _563;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -277,59 +321,59 @@ HexcTiles hexcTilesStable_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _959 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1074 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _959;
+    t.tap[0] = _1074;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _975 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1090 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _975;
+    t.tap[1] = _1090;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _991 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1106 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _991;
+    t.tap[2] = _1106;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_albedo(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bvec3(true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 vec3 hexcTileLods_albedo(HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     vec3 lods = vec3(0.0);
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 vec4 hexcFetch_albedo(HexcTap p, float lod, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return textureGrad(SPIRV_Cross_Combinedtexsamp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -344,17 +388,17 @@ void hexcFetchTaps_albedo(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_C
     c[2] = hexcFetch_albedo(param_5, param_6, SPIRV_Cross_Combinedtexsamp);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_albedo(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.albedo_falloffcontrast));
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 vec3 hexcPowInt(inout vec3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     vec3 r = vec3(1.0);
     if ((n & 1) != 0)
     {
@@ -383,50 +427,50 @@ vec3 hexcPowInt(inout vec3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _1232;
+#line 403 "hexc/hextiling.glsl"
+    float _1349;
     if (kInt > 0)
     {
-        _1232 = float(kInt);
+        _1349 = float(kInt);
     }
     else
     {
-        _1232 = log(1.0 - r) / (-0.693147182464599609375);
+        _1349 = log(1.0 - r) / (-0.693147182464599609375);
     }
-    return _1232;
+    return _1349;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 vec3 hexcGainCurve(vec3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     vec3 s = step(vec3(0.5), x) * 2.0;
     vec3 m = (vec3(1.0) - s) * 2.0;
     vec3 base = max(vec3(0.0), s + (x * m));
-    vec3 _1269;
+    vec3 _1386;
     if (kInt > 0)
     {
         vec3 param = base;
         int param_1 = kInt;
-        vec3 _1276 = hexcPowInt(param, param_1);
-        _1269 = _1276;
+        vec3 _1393 = hexcPowInt(param, param_1);
+        _1386 = _1393;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _1269 = pow(base, vec3(hexcGainK(param_2, param_3)));
+        _1386 = pow(base, vec3(hexcGainK(param_2, param_3)));
     }
-    return (s * 0.5) + ((m * 0.25) * _1269);
+    return (s * 0.5) + ((m * 0.25) * _1386);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 vec3 hexcGain3(vec3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     vec3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -434,26 +478,26 @@ vec3 hexcGain3(vec3 x, float r, int kInt)
     return res / vec3((res.x + res.y) + res.z);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1341 = hexcPowInt(param, param_1);
-    vec3 wg = _1341;
+    vec3 _1458 = hexcPowInt(param, param_1);
+    vec3 wg = _1458;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1357;
+    vec3 _1474;
     if (sum > 0.0)
     {
-        _1357 = W / vec3(sum);
+        _1474 = W / vec3(sum);
     }
     else
     {
-        _1357 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1474 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1357;
+    W = _1474;
     vec3 param_2 = W;
     float param_3 = 0.5;
     int param_4 = 2;
@@ -461,17 +505,17 @@ vec3 hexcBlendWeights_albedo(vec3 w, vec3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 vec3 hexcShowWeights(vec3 W, ivec3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
     return ((vec3(equal(ivec3(0, 1, 2), ivec3(channel.x))) * W.x) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.y))) * W.y)) + (vec3(equal(ivec3(0, 1, 2), ivec3(channel.z))) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -501,22 +545,22 @@ vec4 hexcAt_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_6;
-    vec4 _1990 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
+    vec4 _2107 = hexcColor_albedo(param_4, param_5, param_6, hexcTex_albedo);
     weights = param_6;
-    return _1990;
+    return _2107;
 }
 
-#line 710 "hexc/hextiling.glsl"
+#line 728 "hexc/hextiling.glsl"
 vec4 hexcLift(int k, vec4 v)
 {
-#line 710 "hexc/hextiling.glsl"
+#line 728 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 718 "hexc/hextiling.glsl"
+#line 736 "hexc/hextiling.glsl"
 vec4 hexcFinish(vec4 v, vec3 n)
 {
-#line 718 "hexc/hextiling.glsl"
+#line 736 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -539,10 +583,10 @@ vec4 hexc_albedo(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_6 = p.dy[0];
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        vec4 _2028 = hexcAt_albedo(param_4, param_5, param_6, param_7, param_8);
+        vec4 _2145 = hexcAt_albedo(param_4, param_5, param_6, param_7, param_8);
         w = param_8;
         int param_9 = 0;
-        vec4 param_10 = _2028;
+        vec4 param_10 = _2145;
         value += (hexcLift(param_9, param_10) * p.b.x);
         weights += (w * p.b.x);
     }
@@ -553,10 +597,10 @@ vec4 hexc_albedo(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_13 = p.dy[1];
         ivec2 param_14 = ivec2(0);
         vec3 param_15;
-        vec4 _2060 = hexcAt_albedo(param_11, param_12, param_13, param_14, param_15);
+        vec4 _2177 = hexcAt_albedo(param_11, param_12, param_13, param_14, param_15);
         w = param_15;
         int param_16 = 1;
-        vec4 param_17 = _2060;
+        vec4 param_17 = _2177;
         value += (hexcLift(param_16, param_17) * p.b.y);
         weights += (w * p.b.y);
     }
@@ -567,10 +611,10 @@ vec4 hexc_albedo(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_20 = p.dy[2];
         ivec2 param_21 = ivec2(0);
         vec3 param_22;
-        vec4 _2092 = hexcAt_albedo(param_18, param_19, param_20, param_21, param_22);
+        vec4 _2209 = hexcAt_albedo(param_18, param_19, param_20, param_21, param_22);
         w = param_22;
         int param_23 = 2;
-        vec4 param_24 = _2092;
+        vec4 param_24 = _2209;
         value += (hexcLift(param_23, param_24) * p.b.z);
         weights += (w * p.b.z);
     }
@@ -586,63 +630,74 @@ vec4 hexc_albedo(vec3 position, vec3 normal)
     vec3 param = position;
     vec3 param_1 = normal;
     vec3 param_2;
-    vec4 _2120 = hexc_albedo(param, param_1, param_2);
+    vec4 _2237 = hexc_albedo(param, param_1, param_2);
     vec3 weights = param_2;
-    return _2120;
+    return _2237;
 }
 
-#line 299 "hexc/hextiling.glsl"
+#line 316 "hexc/hextiling.glsl"
 float hexcTaper(vec2 f)
 {
-#line 299 "hexc/hextiling.glsl"
+#line 316 "hexc/hextiling.glsl"
     return min(min(f.x, 1.0 - f.x), min(f.y, 1.0 - f.y));
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_roughness(ivec2 id, out vec2 offset, out vec2 rot, out float invScale)
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_roughness(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _700 = hexcPcg3d(param);
-    vec3 u = vec3(_700 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _801 = hexcPcg3d(param);
+    vec3 u = vec3(_801 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.roughness_rotation;
     invScale = 1.0;
-    rot = vec2(cos(angle), sin(angle));
+    vec2 _819;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _819 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _819 = vec2(cos(angle), sin(angle));
+    }
+    rot = _819;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_roughness(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_roughness(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     ivec2 param = id;
-    vec2 param_1;
+    bool param_1 = aboutOrigin;
     vec2 param_2;
-    float param_3;
-    hexcStableTile_roughness(param, param_1, param_2, param_3);
-    vec2 offset = param_1;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_roughness(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    vec2 param_4 = d;
-    HexcTap param_5 = p;
-    vec2 _830 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_830 + c) + offset;
-    vec2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    vec2 _840 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _840;
-    vec2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    vec2 _846 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _846;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _944 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_944 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _954 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _954;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _960 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _960;
     return p;
 }
 
-#line 304 "hexc/hextiling.glsl"
+#line 321 "hexc/hextiling.glsl"
 HexcTiles hexcTilesChecker_roughness(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
 {
-#line 304 "hexc/hextiling.glsl"
+#line 321 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -669,53 +724,55 @@ HexcTiles hexcTilesChecker_roughness(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell
     vec2 param_4 = (a + vec2(0.5)) * s;
     vec2 param_5 = dSTdx;
     vec2 param_6 = dSTdy;
-    t.tap[0] = hexcPlaceTile_roughness(param_2, param_3, param_4, param_5, param_6);
-    ivec2 param_7 = t.id[1];
-    vec2 param_8 = (fb - vec2(0.5)) * s;
-    vec2 param_9 = b * s;
-    vec2 param_10 = dSTdx;
-    vec2 param_11 = dSTdy;
-    t.tap[1] = hexcPlaceTile_roughness(param_7, param_8, param_9, param_10, param_11);
+    bool param_7 = false;
+    t.tap[0] = hexcPlaceTile_roughness(param_2, param_3, param_4, param_5, param_6, param_7);
+    ivec2 param_8 = t.id[1];
+    vec2 param_9 = (fb - vec2(0.5)) * s;
+    vec2 param_10 = b * s;
+    vec2 param_11 = dSTdx;
+    vec2 param_12 = dSTdy;
+    bool param_13 = false;
+    t.tap[1] = hexcPlaceTile_roughness(param_8, param_9, param_10, param_11, param_12, param_13);
     t.tap[2] = t.tap[1];
     return t;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    vec4 _531;
+#line 132 "hexc/hextiling.glsl"
+    vec4 _623;
     if (c == 0)
     {
-        _531 = vec4(1.0, 0.0, 0.0, 0.0);
+        _623 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _538;
+        vec4 _630;
         if (c == 1)
         {
-            _538 = vec4(0.0, 1.0, 0.0, 0.0);
+            _630 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _538 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _630 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _531 = _538;
+        _623 = _630;
     }
-    return _531;
+    return _623;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bvec3 hexcFetched_roughness(vec3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bvec3(true, true, false);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_roughness(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     vec3 lod = hexcTileLods_albedo(param);
     c = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
@@ -727,17 +784,17 @@ void hexcFetchTaps_roughness(HexcTiles t, bvec3 f, out vec4 c[3], sampler2D SPIR
     c[1] = hexcFetch_albedo(param_3, param_4, SPIRV_Cross_Combinedtexsamp);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_roughness(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.roughness_falloffcontrast));
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 vec4 hexcColor_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_roughness(param);
     HexcTiles param_1 = t;
@@ -768,22 +825,22 @@ float hexcAt_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_5 = hexcTilesChecker_roughness(param, param_1, param_2, param_3);
     vec4 param_6 = hexcChannel(param_4);
     vec3 param_7;
-    vec4 _2284 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
+    vec4 _2401 = hexcColor_roughness(param_5, param_6, param_7, hexcTex_roughness);
     weights = param_7;
-    return _2284.x;
+    return _2401.x;
 }
 
-#line 711 "hexc/hextiling.glsl"
+#line 729 "hexc/hextiling.glsl"
 float hexcLift(int k, float v)
 {
-#line 711 "hexc/hextiling.glsl"
+#line 729 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 719 "hexc/hextiling.glsl"
+#line 737 "hexc/hextiling.glsl"
 float hexcFinish(float v, vec3 n)
 {
-#line 719 "hexc/hextiling.glsl"
+#line 737 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -806,10 +863,10 @@ float hexc_roughness(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_6 = p.dy[0];
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        float _2321 = hexcAt_roughness(param_4, param_5, param_6, param_7, param_8);
+        float _2438 = hexcAt_roughness(param_4, param_5, param_6, param_7, param_8);
         w = param_8;
         int param_9 = 0;
-        float param_10 = _2321;
+        float param_10 = _2438;
         value += (p.b.x * hexcLift(param_9, param_10));
         weights += (w * p.b.x);
     }
@@ -820,10 +877,10 @@ float hexc_roughness(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_13 = p.dy[1];
         ivec2 param_14 = ivec2(0);
         vec3 param_15;
-        float _2353 = hexcAt_roughness(param_11, param_12, param_13, param_14, param_15);
+        float _2470 = hexcAt_roughness(param_11, param_12, param_13, param_14, param_15);
         w = param_15;
         int param_16 = 1;
-        float param_17 = _2353;
+        float param_17 = _2470;
         value += (p.b.y * hexcLift(param_16, param_17));
         weights += (w * p.b.y);
     }
@@ -834,10 +891,10 @@ float hexc_roughness(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_20 = p.dy[2];
         ivec2 param_21 = ivec2(0);
         vec3 param_22;
-        float _2385 = hexcAt_roughness(param_18, param_19, param_20, param_21, param_22);
+        float _2502 = hexcAt_roughness(param_18, param_19, param_20, param_21, param_22);
         w = param_22;
         int param_23 = 2;
-        float param_24 = _2385;
+        float param_24 = _2502;
         value += (p.b.z * hexcLift(param_23, param_24));
         weights += (w * p.b.z);
     }
@@ -853,93 +910,93 @@ float hexc_roughness(vec3 position, vec3 normal)
     vec3 param = position;
     vec3 param_1 = normal;
     vec3 param_2;
-    float _2413 = hexc_roughness(param, param_1, param_2);
+    float _2530 = hexc_roughness(param, param_1, param_2);
     vec3 weights = param_2;
-    return _2413;
+    return _2530;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _1649;
+    float _1766;
     if (flipY)
     {
-        _1649 = -vM.y;
+        _1766 = -vM.y;
     }
     else
     {
-        _1649 = vM.y;
+        _1766 = vM.y;
     }
-    return (-vec2(vM.x, _1649)) / vec2(zMa);
+    return (-vec2(vM.x, _1766)) / vec2(zMa);
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 vec2 hexcRotateFromTile(vec2 d, vec2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     vec2 param = d;
     vec2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     vec3 param = (texel.xyz * 2.0) - vec3(1.0);
     bool param_1 = flipY;
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _1682;
+    vec2 _1799;
     if (scaled)
     {
-        _1682 = d * p.invScale;
+        _1799 = d * p.invScale;
     }
     else
     {
-        _1682 = d;
+        _1799 = d;
     }
-    return _1682;
+    return _1799;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 vec3 hexcMetric_normal(vec3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return mix(vec3(1.0), max(Dw, vec3(0.0)), vec3(hexcParams.normal_falloffcontrast));
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 vec3 hexcBlendWeights_normal(vec3 w, vec3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1389 = hexcPowInt(param, param_1);
-    vec3 wg = _1389;
+    vec3 _1506 = hexcPowInt(param, param_1);
+    vec3 wg = _1506;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1405;
+    vec3 _1522;
     if (sum > 0.0)
     {
-        _1405 = W / vec3(sum);
+        _1522 = W / vec3(sum);
     }
     else
     {
-        _1405 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1522 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1405;
+    W = _1522;
     return W;
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 vec2 hexcDeriv_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D SPIRV_Cross_Combinedtexsamp)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     vec3 param = t.w;
     bvec3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -990,40 +1047,40 @@ vec2 hexcAt_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     vec3 param_6;
-    vec2 _2137 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
+    vec2 _2254 = hexcDeriv_normal(param_4, param_5, param_6, hexcTex_normal);
     weights = param_6;
-    return _2137;
+    return _2254;
 }
 
-#line 713 "hexc/hextiling.glsl"
+#line 731 "hexc/hextiling.glsl"
 vec3 hexcLift(int k, vec2 d)
 {
-#line 713 "hexc/hextiling.glsl"
-    vec3 _1917;
+#line 731 "hexc/hextiling.glsl"
+    vec3 _2034;
     if (k == 0)
     {
-        _1917 = vec3(0.0, d.x, -d.y);
+        _2034 = vec3(0.0, d.x, -d.y);
     }
     else
     {
-        vec3 _1929;
+        vec3 _2046;
         if (k == 1)
         {
-            _1929 = vec3(-d.y, 0.0, d.x);
+            _2046 = vec3(-d.y, 0.0, d.x);
         }
         else
         {
-            _1929 = vec3(d.x, -d.y, 0.0);
+            _2046 = vec3(d.x, -d.y, 0.0);
         }
-        _1917 = _1929;
+        _2034 = _2046;
     }
-    return _1917;
+    return _2034;
 }
 
-#line 720 "hexc/hextiling.glsl"
+#line 738 "hexc/hextiling.glsl"
 vec3 hexcFinish(vec3 g, vec3 n)
 {
-#line 720 "hexc/hextiling.glsl"
+#line 738 "hexc/hextiling.glsl"
     return g - (n * dot(g, n));
 }
 
@@ -1046,10 +1103,10 @@ vec3 hexc_normal(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_6 = p.dy[0];
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        vec2 _2173 = hexcAt_normal(param_4, param_5, param_6, param_7, param_8);
+        vec2 _2290 = hexcAt_normal(param_4, param_5, param_6, param_7, param_8);
         w = param_8;
         int param_9 = 0;
-        vec2 param_10 = _2173;
+        vec2 param_10 = _2290;
         value += (hexcLift(param_9, param_10) * p.b.x);
         weights += (w * p.b.x);
     }
@@ -1060,10 +1117,10 @@ vec3 hexc_normal(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_13 = p.dy[1];
         ivec2 param_14 = ivec2(0);
         vec3 param_15;
-        vec2 _2205 = hexcAt_normal(param_11, param_12, param_13, param_14, param_15);
+        vec2 _2322 = hexcAt_normal(param_11, param_12, param_13, param_14, param_15);
         w = param_15;
         int param_16 = 1;
-        vec2 param_17 = _2205;
+        vec2 param_17 = _2322;
         value += (hexcLift(param_16, param_17) * p.b.y);
         weights += (w * p.b.y);
     }
@@ -1074,10 +1131,10 @@ vec3 hexc_normal(vec3 position, vec3 normal, inout vec3 weights)
         vec2 param_20 = p.dy[2];
         ivec2 param_21 = ivec2(0);
         vec3 param_22;
-        vec2 _2237 = hexcAt_normal(param_18, param_19, param_20, param_21, param_22);
+        vec2 _2354 = hexcAt_normal(param_18, param_19, param_20, param_21, param_22);
         w = param_22;
         int param_23 = 2;
-        vec2 param_24 = _2237;
+        vec2 param_24 = _2354;
         value += (hexcLift(param_23, param_24) * p.b.z);
         weights += (w * p.b.z);
     }
@@ -1093,15 +1150,15 @@ vec3 hexc_normal(vec3 position, vec3 normal)
     vec3 param = position;
     vec3 param_1 = normal;
     vec3 param_2;
-    vec3 _2265 = hexc_normal(param, param_1, param_2);
+    vec3 _2382 = hexc_normal(param, param_1, param_2);
     vec3 weights = param_2;
-    return _2265;
+    return _2382;
 }
 
-#line 724 "hexc/hextiling.glsl"
+#line 742 "hexc/hextiling.glsl"
 vec3 hexcPerturbNormal(vec3 normal, vec3 surfaceGradient)
 {
-#line 724 "hexc/hextiling.glsl"
+#line 742 "hexc/hextiling.glsl"
     return normalize(normalize(normal) - surfaceGradient);
 }
 

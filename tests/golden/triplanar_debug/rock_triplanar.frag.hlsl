@@ -29,7 +29,7 @@ struct HexcPlanes
     float2 dy[3];
 };
 
-static const float4 _1457[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _1574[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -64,36 +64,36 @@ struct SPIRV_Cross_Output
     float4 o_color : SV_Target0;
 };
 
-#line 696 "hexc/hextiling.glsl"
+#line 714 "hexc/hextiling.glsl"
 HexcPlanes hexcPlanes(float3 position, float3 normal, float sharpness, float2 tiling)
 {
-#line 696 "hexc/hextiling.glsl"
+#line 714 "hexc/hextiling.glsl"
     float3 dPdx = ddx(position);
     float3 dPdy = ddy(position);
     float len = length(normal);
-    float3 _1821;
+    float3 _1938;
     if (len > 0.0f)
     {
-        _1821 = normal / len.xxx;
+        _1938 = normal / len.xxx;
     }
     else
     {
-        _1821 = 0.0f.xxx;
+        _1938 = 0.0f.xxx;
     }
     HexcPlanes p;
-    p.n = _1821;
+    p.n = _1938;
     float3 b = pow(abs(p.n), sharpness.xxx);
     float sum = (b.x + b.y) + b.z;
-    float3 _1849;
+    float3 _1966;
     if (sum > 0.0f)
     {
-        _1849 = b / sum.xxx;
+        _1966 = b / sum.xxx;
     }
     else
     {
-        _1849 = 0.3333333432674407958984375f.xxx;
+        _1966 = 0.3333333432674407958984375f.xxx;
     }
-    p.b = _1849;
+    p.b = _1966;
     p.st[0] = position.yz * tiling;
     p.dx[0] = dPdx.yz * tiling;
     p.dy[0] = dPdy.yz * tiling;
@@ -122,24 +122,24 @@ void hexcTriangle(float2 skewed, out float3 w, inout int2 id[3])
     id[2] = baseId + int2(1 - si, si);
 }
 
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
 float2 hexcStableCentre(int2 local)
 {
-#line 229 "hexc/hextiling.glsl"
+#line 246 "hexc/hextiling.glsl"
     return float2((float(local.x) + (0.5f * float(local.y))) / 3.4642856121063232421875f, 0.25f * float(local.y));
 }
 
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
 float2 hexcStableCentreInPeriod(int2 local)
 {
-#line 236 "hexc/hextiling.glsl"
+#line 253 "hexc/hextiling.glsl"
     return float2(float((((28 * local.x) + (14 * local.y)) + 194) % 97) / 97.0f, float(local.y & 3) * 0.25f);
 }
 
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
 uint3 hexcPcg3d(inout uint3 v)
 {
-#line 198 "hexc/hextiling.glsl"
+#line 214 "hexc/hextiling.glsl"
     v = (v * uint3(1664525u, 1664525u, 1664525u)) + uint3(1013904223u, 1013904223u, 1013904223u);
     v.x += (v.y * v.z);
     v.y += (v.z * v.x);
@@ -151,68 +151,111 @@ uint3 hexcPcg3d(inout uint3 v)
     return v;
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_albedo(int2 id, out float2 offset, out float2 rot, out float invScale)
+#line 91 "hexc/hextiling.glsl"
+float2 hexcCosSin(float angle)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 91 "hexc/hextiling.glsl"
+    float k = round(angle * 0.636619746685028076171875f);
+    float r = angle - (k * 1.57079637050628662109375f);
+    float r2 = r * r;
+    float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
+    float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
+    int q = int(k) & 3;
+    float2 _501;
+    if ((q & 1) != 0)
+    {
+        _501 = float2(-s, c);
+    }
+    else
+    {
+        _501 = float2(c, s);
+    }
+    float2 cs = _501;
+    float2 _516;
+    if ((q & 2) != 0)
+    {
+        _516 = -cs;
+    }
+    else
+    {
+        _516 = cs;
+    }
+    return _516;
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _665 = hexcPcg3d(param);
-    float3 u = float3(_665 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _757 = hexcPcg3d(param);
+    float3 u = float3(_757 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_albedo_rotation;
     invScale = 1.0f;
-    rot = float2(cos(angle), sin(angle));
+    float2 _781;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _781 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _781 = float2(cos(angle), sin(angle));
+    }
+    rot = _781;
 }
 
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
 float2 hexcRotateToTile(float2 v, float2 cs)
 {
-#line 121 "hexc/hextiling.glsl"
+#line 137 "hexc/hextiling.glsl"
     return float2((v.x * cs.x) + (v.y * cs.y), ((-v.x) * cs.y) + (v.y * cs.x));
 }
 
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
 float2 hexcToTile_albedo(inout float2 v, HexcTap p)
 {
-#line 244 "hexc/hextiling.glsl"
+#line 261 "hexc/hextiling.glsl"
     float2 param = v;
     float2 param_1 = p.rot;
     v = hexcRotateToTile(param, param_1);
     return v;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_albedo(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _792 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_792 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _802 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _802;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _808 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _808;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _904 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_904 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _914 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _914;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _920 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _920;
     return p;
 }
 
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
 HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
 {
-#line 269 "hexc/hextiling.glsl"
+#line 286 "hexc/hextiling.glsl"
     id = int2(uint2(local) + shift);
     int2 param = local;
     int2 param_1 = local;
@@ -221,52 +264,53 @@ HexcTap hexcStableTap_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, fl
     float2 param_4 = hexcStableCentreInPeriod(param_1);
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6);
+    bool param_7 = false;
+    return hexcPlaceTile_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
 }
 
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
 int3 hexcHexChannels(int2 v1, int2 v3)
 {
-#line 99 "hexc/hextiling.glsl"
+#line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _450;
+    int _542;
     if ((d < 0) && (a != 0))
     {
-        _450 = 3 - a;
+        _542 = 3 - a;
     }
     else
     {
-        _450 = a;
+        _542 = a;
     }
-    int i1 = _450;
-    int _461;
+    int i1 = _542;
+    int _553;
     if (i1 < 2)
     {
-        _461 = i1 + 1;
+        _553 = i1 + 1;
     }
     else
     {
-        _461 = 0;
+        _553 = 0;
     }
-    int vh = _461;
-    int _471;
+    int vh = _553;
+    int _563;
     if (i1 > 0)
     {
-        _471 = i1 - 1;
+        _563 = i1 - 1;
     }
     else
     {
-        _471 = 2;
+        _563 = 2;
     }
-    int vl = _471;
+    int vl = _563;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
 HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 278 "hexc/hextiling.glsl"
+#line 295 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -288,62 +332,62 @@ HexcTiles hexcTilesStable_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cel
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _959 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1074 = hexcStableTap_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _959;
+    t.tap[0] = _1074;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _975 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1090 = hexcStableTap_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _975;
+    t.tap[1] = _1090;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _991 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1106 = hexcStableTap_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _991;
+    t.tap[2] = _1106;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_albedo(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true, true, true);
 }
 
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
 float3 hexcTileLods_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t)
 {
-#line 515 "hexc/hextiling.glsl"
+#line 533 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
     return lods;
 }
 
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
 float4 hexcFetch_albedo(Texture2D<float4> tex, SamplerState samp, HexcTap p, float lod)
 {
-#line 528 "hexc/hextiling.glsl"
+#line 546 "hexc/hextiling.glsl"
     return tex.SampleGrad(samp, p.st, p.dx, p.dy);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _1457;
+    c = _1574;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -355,17 +399,17 @@ void hexcFetchTaps_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t,
     c[2] = hexcFetch_albedo(tex, samp, param_5, param_6);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_albedo(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_albedo_falloffcontrast.xxx);
 }
 
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
 float3 hexcPowInt(inout float3 x, int n)
 {
-#line 369 "hexc/hextiling.glsl"
+#line 387 "hexc/hextiling.glsl"
     float3 r = 1.0f.xxx;
     if ((n & 1) != 0)
     {
@@ -394,50 +438,50 @@ float3 hexcPowInt(inout float3 x, int n)
     return r;
 }
 
-#line 385 "hexc/hextiling.glsl"
+#line 403 "hexc/hextiling.glsl"
 float hexcGainK(float r, int kInt)
 {
-#line 385 "hexc/hextiling.glsl"
-    float _1232;
+#line 403 "hexc/hextiling.glsl"
+    float _1349;
     if (kInt > 0)
     {
-        _1232 = float(kInt);
+        _1349 = float(kInt);
     }
     else
     {
-        _1232 = log(1.0f - r) / (-0.693147182464599609375f);
+        _1349 = log(1.0f - r) / (-0.693147182464599609375f);
     }
-    return _1232;
+    return _1349;
 }
 
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
 float3 hexcGainCurve(float3 x, float r, int kInt)
 {
-#line 389 "hexc/hextiling.glsl"
+#line 407 "hexc/hextiling.glsl"
     float3 s = step(0.5f.xxx, x) * 2.0f;
     float3 m = (1.0f.xxx - s) * 2.0f;
     float3 base = max(0.0f.xxx, s + (x * m));
-    float3 _1269;
+    float3 _1386;
     if (kInt > 0)
     {
         float3 param = base;
         int param_1 = kInt;
-        float3 _1276 = hexcPowInt(param, param_1);
-        _1269 = _1276;
+        float3 _1393 = hexcPowInt(param, param_1);
+        _1386 = _1393;
     }
     else
     {
         float param_2 = r;
         int param_3 = kInt;
-        _1269 = pow(base, hexcGainK(param_2, param_3).xxx);
+        _1386 = pow(base, hexcGainK(param_2, param_3).xxx);
     }
-    return (s * 0.5f) + ((m * 0.25f) * _1269);
+    return (s * 0.5f) + ((m * 0.25f) * _1386);
 }
 
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
 float3 hexcGain3(float3 x, float r, int kInt)
 {
-#line 397 "hexc/hextiling.glsl"
+#line 415 "hexc/hextiling.glsl"
     float3 param = x;
     float param_1 = r;
     int param_2 = kInt;
@@ -445,26 +489,26 @@ float3 hexcGain3(float3 x, float r, int kInt)
     return res / ((res.x + res.y) + res.z).xxx;
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_albedo(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1341 = hexcPowInt(param, param_1);
-    float3 wg = _1341;
+    float3 _1458 = hexcPowInt(param, param_1);
+    float3 wg = _1458;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1357;
+    float3 _1474;
     if (sum > 0.0f)
     {
-        _1357 = W / sum.xxx;
+        _1474 = W / sum.xxx;
     }
     else
     {
-        _1357 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1474 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1357;
+    W = _1474;
     float3 param_2 = W;
     float param_3 = 0.5f;
     int param_4 = 2;
@@ -472,20 +516,20 @@ float3 hexcBlendWeights_albedo(float3 w, float3 M)
     return W;
 }
 
-#line 109 "hexc/hextiling.glsl"
+#line 125 "hexc/hextiling.glsl"
 float3 hexcShowWeights(float3 W, int3 channel)
 {
-#line 109 "hexc/hextiling.glsl"
-    int3 _503 = channel.x.xxx;
-    int3 _513 = channel.y.xxx;
-    int3 _522 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _503.x, int3(0, 1, 2).y == _503.y, int3(0, 1, 2).z == _503.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _513.x, int3(0, 1, 2).y == _513.y, int3(0, 1, 2).z == _513.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _522.x, int3(0, 1, 2).y == _522.y, int3(0, 1, 2).z == _522.z)) * W.z);
+#line 125 "hexc/hextiling.glsl"
+    int3 _595 = channel.x.xxx;
+    int3 _605 = channel.y.xxx;
+    int3 _614 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _595.x, int3(0, 1, 2).y == _595.y, int3(0, 1, 2).z == _595.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _605.x, int3(0, 1, 2).y == _605.y, int3(0, 1, 2).z == _605.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _614.x, int3(0, 1, 2).y == _614.y, int3(0, 1, 2).z == _614.z)) * W.z);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -515,22 +559,22 @@ float4 hexcAt_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_6;
-    float4 _1990 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
+    float4 _2107 = hexcColor_albedo(hexcTex_albedo, hexcSampler, param_4, param_5, hexcTex_albedo, param_6);
     weights = param_6;
-    return _1990;
+    return _2107;
 }
 
-#line 710 "hexc/hextiling.glsl"
+#line 728 "hexc/hextiling.glsl"
 float4 hexcLift(int k, float4 v)
 {
-#line 710 "hexc/hextiling.glsl"
+#line 728 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 718 "hexc/hextiling.glsl"
+#line 736 "hexc/hextiling.glsl"
 float4 hexcFinish(float4 v, float3 n)
 {
-#line 718 "hexc/hextiling.glsl"
+#line 736 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -553,10 +597,10 @@ float4 hexc_albedo(float3 position, float3 normal, inout float3 weights)
         float2 param_6 = p.dy[0];
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float4 _2028 = hexcAt_albedo(param_4, param_5, param_6, param_7, param_8);
+        float4 _2145 = hexcAt_albedo(param_4, param_5, param_6, param_7, param_8);
         w = param_8;
         int param_9 = 0;
-        float4 param_10 = _2028;
+        float4 param_10 = _2145;
         value += (hexcLift(param_9, param_10) * p.b.x);
         weights += (w * p.b.x);
     }
@@ -567,10 +611,10 @@ float4 hexc_albedo(float3 position, float3 normal, inout float3 weights)
         float2 param_13 = p.dy[1];
         int2 param_14 = int2(0, 0);
         float3 param_15;
-        float4 _2060 = hexcAt_albedo(param_11, param_12, param_13, param_14, param_15);
+        float4 _2177 = hexcAt_albedo(param_11, param_12, param_13, param_14, param_15);
         w = param_15;
         int param_16 = 1;
-        float4 param_17 = _2060;
+        float4 param_17 = _2177;
         value += (hexcLift(param_16, param_17) * p.b.y);
         weights += (w * p.b.y);
     }
@@ -581,10 +625,10 @@ float4 hexc_albedo(float3 position, float3 normal, inout float3 weights)
         float2 param_20 = p.dy[2];
         int2 param_21 = int2(0, 0);
         float3 param_22;
-        float4 _2092 = hexcAt_albedo(param_18, param_19, param_20, param_21, param_22);
+        float4 _2209 = hexcAt_albedo(param_18, param_19, param_20, param_21, param_22);
         w = param_22;
         int param_23 = 2;
-        float4 param_24 = _2092;
+        float4 param_24 = _2209;
         value += (hexcLift(param_23, param_24) * p.b.z);
         weights += (w * p.b.z);
     }
@@ -600,63 +644,74 @@ float4 hexc_albedo(float3 position, float3 normal)
     float3 param = position;
     float3 param_1 = normal;
     float3 param_2;
-    float4 _2120 = hexc_albedo(param, param_1, param_2);
+    float4 _2237 = hexc_albedo(param, param_1, param_2);
     float3 weights = param_2;
-    return _2120;
+    return _2237;
 }
 
-#line 299 "hexc/hextiling.glsl"
+#line 316 "hexc/hextiling.glsl"
 float hexcTaper(float2 f)
 {
-#line 299 "hexc/hextiling.glsl"
+#line 316 "hexc/hextiling.glsl"
     return min(min(f.x, 1.0f - f.x), min(f.y, 1.0f - f.y));
 }
 
-#line 212 "hexc/hextiling.glsl"
-void hexcStableTile_roughness(int2 id, out float2 offset, out float2 rot, out float invScale)
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_roughness(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
 {
-#line 212 "hexc/hextiling.glsl"
+#line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _700 = hexcPcg3d(param);
-    float3 u = float3(_700 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _801 = hexcPcg3d(param);
+    float3 u = float3(_801 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_roughness_rotation;
     invScale = 1.0f;
-    rot = float2(cos(angle), sin(angle));
+    float2 _819;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _819 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _819 = float2(cos(angle), sin(angle));
+    }
+    rot = _819;
 }
 
-#line 259 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_roughness(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy)
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_roughness(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
 {
-#line 259 "hexc/hextiling.glsl"
+#line 276 "hexc/hextiling.glsl"
     int2 param = id;
-    float2 param_1;
+    bool param_1 = aboutOrigin;
     float2 param_2;
-    float param_3;
-    hexcStableTile_roughness(param, param_1, param_2, param_3);
-    float2 offset = param_1;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_roughness(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
     HexcTap p;
-    p.rot = param_2;
-    p.invScale = param_3;
-    float2 param_4 = d;
-    HexcTap param_5 = p;
-    float2 _830 = hexcToTile_albedo(param_4, param_5);
-    p.st = (_830 + c) + offset;
-    float2 param_6 = dSTdx;
-    HexcTap param_7 = p;
-    float2 _840 = hexcToTile_albedo(param_6, param_7);
-    p.dx = _840;
-    float2 param_8 = dSTdy;
-    HexcTap param_9 = p;
-    float2 _846 = hexcToTile_albedo(param_8, param_9);
-    p.dy = _846;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _944 = hexcToTile_albedo(param_5, param_6);
+    p.st = (_944 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _954 = hexcToTile_albedo(param_7, param_8);
+    p.dx = _954;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _960 = hexcToTile_albedo(param_9, param_10);
+    p.dy = _960;
     return p;
 }
 
-#line 304 "hexc/hextiling.glsl"
+#line 321 "hexc/hextiling.glsl"
 HexcTiles hexcTilesChecker_roughness(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
 {
-#line 304 "hexc/hextiling.glsl"
+#line 321 "hexc/hextiling.glsl"
     HexcTiles t;
     t.dx = dSTdx;
     t.dy = dSTdy;
@@ -683,57 +738,59 @@ HexcTiles hexcTilesChecker_roughness(float2 st, float2 dSTdx, float2 dSTdy, int2
     float2 param_4 = (a + 0.5f.xx) * s;
     float2 param_5 = dSTdx;
     float2 param_6 = dSTdy;
-    t.tap[0] = hexcPlaceTile_roughness(param_2, param_3, param_4, param_5, param_6);
-    int2 param_7 = t.id[1];
-    float2 param_8 = (fb - 0.5f.xx) * s;
-    float2 param_9 = b * s;
-    float2 param_10 = dSTdx;
-    float2 param_11 = dSTdy;
-    t.tap[1] = hexcPlaceTile_roughness(param_7, param_8, param_9, param_10, param_11);
+    bool param_7 = false;
+    t.tap[0] = hexcPlaceTile_roughness(param_2, param_3, param_4, param_5, param_6, param_7);
+    int2 param_8 = t.id[1];
+    float2 param_9 = (fb - 0.5f.xx) * s;
+    float2 param_10 = b * s;
+    float2 param_11 = dSTdx;
+    float2 param_12 = dSTdy;
+    bool param_13 = false;
+    t.tap[1] = hexcPlaceTile_roughness(param_8, param_9, param_10, param_11, param_12, param_13);
     t.tap[2] = t.tap[1];
     return t;
 }
 
-#line 116 "hexc/hextiling.glsl"
+#line 132 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
-#line 116 "hexc/hextiling.glsl"
-    float4 _531;
+#line 132 "hexc/hextiling.glsl"
+    float4 _623;
     if (c == 0)
     {
-        _531 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _623 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-        float4 _538;
+        float4 _630;
         if (c == 1)
         {
-            _538 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _630 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-            bool4 _548 = (c == 2).xxxx;
-            _538 = float4(_548.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _548.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _548.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _548.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+            bool4 _640 = (c == 2).xxxx;
+            _630 = float4(_640.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _640.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _640.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _640.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _531 = _538;
+        _623 = _630;
     }
-    return _531;
+    return _623;
 }
 
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
 bool3 hexcFetched_roughness(float3 w)
 {
-#line 534 "hexc/hextiling.glsl"
+#line 552 "hexc/hextiling.glsl"
     return bool3(true, true, false);
 }
 
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
 void hexcFetchTaps_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool3 f, out float4 c[3])
 {
-#line 542 "hexc/hextiling.glsl"
+#line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_albedo(tex, samp, param);
-    c = _1457;
+    c = _1574;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_albedo(tex, samp, param_1, param_2);
@@ -742,17 +799,17 @@ void hexcFetchTaps_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles
     c[1] = hexcFetch_albedo(tex, samp, param_3, param_4);
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_roughness(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_roughness_falloffcontrast.xxx);
 }
 
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
 float4 hexcColor_roughness(Texture2D<float4> tex, SamplerState samp, HexcTiles t, float4 luma, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 559 "hexc/hextiling.glsl"
+#line 577 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_roughness(param);
     HexcTiles param_1 = t;
@@ -783,22 +840,22 @@ float hexcAt_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 we
     HexcTiles param_5 = hexcTilesChecker_roughness(param, param_1, param_2, param_3);
     float4 param_6 = hexcChannel(param_4);
     float3 param_7;
-    float4 _2284 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
+    float4 _2401 = hexcColor_roughness(hexcTex_roughness, hexcSampler, param_5, param_6, hexcTex_roughness, param_7);
     weights = param_7;
-    return _2284.x;
+    return _2401.x;
 }
 
-#line 711 "hexc/hextiling.glsl"
+#line 729 "hexc/hextiling.glsl"
 float hexcLift(int k, float v)
 {
-#line 711 "hexc/hextiling.glsl"
+#line 729 "hexc/hextiling.glsl"
     return v;
 }
 
-#line 719 "hexc/hextiling.glsl"
+#line 737 "hexc/hextiling.glsl"
 float hexcFinish(float v, float3 n)
 {
-#line 719 "hexc/hextiling.glsl"
+#line 737 "hexc/hextiling.glsl"
     return v;
 }
 
@@ -821,10 +878,10 @@ float hexc_roughness(float3 position, float3 normal, inout float3 weights)
         float2 param_6 = p.dy[0];
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float _2321 = hexcAt_roughness(param_4, param_5, param_6, param_7, param_8);
+        float _2438 = hexcAt_roughness(param_4, param_5, param_6, param_7, param_8);
         w = param_8;
         int param_9 = 0;
-        float param_10 = _2321;
+        float param_10 = _2438;
         value += (p.b.x * hexcLift(param_9, param_10));
         weights += (w * p.b.x);
     }
@@ -835,10 +892,10 @@ float hexc_roughness(float3 position, float3 normal, inout float3 weights)
         float2 param_13 = p.dy[1];
         int2 param_14 = int2(0, 0);
         float3 param_15;
-        float _2353 = hexcAt_roughness(param_11, param_12, param_13, param_14, param_15);
+        float _2470 = hexcAt_roughness(param_11, param_12, param_13, param_14, param_15);
         w = param_15;
         int param_16 = 1;
-        float param_17 = _2353;
+        float param_17 = _2470;
         value += (p.b.y * hexcLift(param_16, param_17));
         weights += (w * p.b.y);
     }
@@ -849,10 +906,10 @@ float hexc_roughness(float3 position, float3 normal, inout float3 weights)
         float2 param_20 = p.dy[2];
         int2 param_21 = int2(0, 0);
         float3 param_22;
-        float _2385 = hexcAt_roughness(param_18, param_19, param_20, param_21, param_22);
+        float _2502 = hexcAt_roughness(param_18, param_19, param_20, param_21, param_22);
         w = param_22;
         int param_23 = 2;
-        float param_24 = _2385;
+        float param_24 = _2502;
         value += (p.b.z * hexcLift(param_23, param_24));
         weights += (w * p.b.z);
     }
@@ -868,93 +925,93 @@ float hexc_roughness(float3 position, float3 normal)
     float3 param = position;
     float3 param_1 = normal;
     float3 param_2;
-    float _2413 = hexc_roughness(param, param_1, param_2);
+    float _2530 = hexc_roughness(param, param_1, param_2);
     float3 weights = param_2;
-    return _2413;
+    return _2530;
 }
 
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
 float2 hexcNormalToDeriv(float3 vM, bool flipY)
 {
-#line 603 "hexc/hextiling.glsl"
+#line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _1649;
+    float _1766;
     if (flipY)
     {
-        _1649 = -vM.y;
+        _1766 = -vM.y;
     }
     else
     {
-        _1649 = vM.y;
+        _1766 = vM.y;
     }
-    return (-float2(vM.x, _1649)) / zMa.xx;
+    return (-float2(vM.x, _1766)) / zMa.xx;
 }
 
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
 float2 hexcRotateFromTile(float2 d, float2 cs)
 {
-#line 129 "hexc/hextiling.glsl"
+#line 145 "hexc/hextiling.glsl"
     float2 param = d;
     float2 param_1 = cs;
     return hexcRotateToTile(param, param_1);
 }
 
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
 float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
 {
-#line 611 "hexc/hextiling.glsl"
+#line 629 "hexc/hextiling.glsl"
     float3 param = (texel.xyz * 2.0f) - 1.0f.xxx;
     bool param_1 = flipY;
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _1682;
+    float2 _1799;
     if (scaled)
     {
-        _1682 = d * p.invScale;
+        _1799 = d * p.invScale;
     }
     else
     {
-        _1682 = d;
+        _1799 = d;
     }
-    return _1682;
+    return _1799;
 }
 
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
 float3 hexcMetric_normal(float3 Dw)
 {
-#line 429 "hexc/hextiling.glsl"
+#line 447 "hexc/hextiling.glsl"
     return lerp(1.0f.xxx, max(Dw, 0.0f.xxx), hexcParams_normal_falloffcontrast.xxx);
 }
 
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
 float3 hexcBlendWeights_normal(float3 w, float3 M)
 {
-#line 436 "hexc/hextiling.glsl"
+#line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1389 = hexcPowInt(param, param_1);
-    float3 wg = _1389;
+    float3 _1506 = hexcPowInt(param, param_1);
+    float3 wg = _1506;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1405;
+    float3 _1522;
     if (sum > 0.0f)
     {
-        _1405 = W / sum.xxx;
+        _1522 = W / sum.xxx;
     }
     else
     {
-        _1405 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1522 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1405;
+    W = _1522;
     return W;
 }
 
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
 float2 hexcDeriv_normal(Texture2D<float4> tex, SamplerState samp, HexcTiles t, bool flipY, Texture2D<float4> heightTex, out float3 weights)
 {
-#line 619 "hexc/hextiling.glsl"
+#line 637 "hexc/hextiling.glsl"
     float3 param = t.w;
     bool3 f = hexcFetched_albedo(param);
     HexcTiles param_1 = t;
@@ -1005,40 +1062,40 @@ float2 hexcAt_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     HexcTiles param_4 = hexcTilesStable_albedo(param, param_1, param_2, param_3);
     bool param_5 = false;
     float3 param_6;
-    float2 _2137 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
+    float2 _2254 = hexcDeriv_normal(hexcTex_normal, hexcSampler, param_4, param_5, hexcTex_normal, param_6);
     weights = param_6;
-    return _2137;
+    return _2254;
 }
 
-#line 713 "hexc/hextiling.glsl"
+#line 731 "hexc/hextiling.glsl"
 float3 hexcLift(int k, float2 d)
 {
-#line 713 "hexc/hextiling.glsl"
-    float3 _1917;
+#line 731 "hexc/hextiling.glsl"
+    float3 _2034;
     if (k == 0)
     {
-        _1917 = float3(0.0f, d.x, -d.y);
+        _2034 = float3(0.0f, d.x, -d.y);
     }
     else
     {
-        float3 _1929;
+        float3 _2046;
         if (k == 1)
         {
-            _1929 = float3(-d.y, 0.0f, d.x);
+            _2046 = float3(-d.y, 0.0f, d.x);
         }
         else
         {
-            _1929 = float3(d.x, -d.y, 0.0f);
+            _2046 = float3(d.x, -d.y, 0.0f);
         }
-        _1917 = _1929;
+        _2034 = _2046;
     }
-    return _1917;
+    return _2034;
 }
 
-#line 720 "hexc/hextiling.glsl"
+#line 738 "hexc/hextiling.glsl"
 float3 hexcFinish(float3 g, float3 n)
 {
-#line 720 "hexc/hextiling.glsl"
+#line 738 "hexc/hextiling.glsl"
     return g - (n * dot(g, n));
 }
 
@@ -1061,10 +1118,10 @@ float3 hexc_normal(float3 position, float3 normal, inout float3 weights)
         float2 param_6 = p.dy[0];
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float2 _2173 = hexcAt_normal(param_4, param_5, param_6, param_7, param_8);
+        float2 _2290 = hexcAt_normal(param_4, param_5, param_6, param_7, param_8);
         w = param_8;
         int param_9 = 0;
-        float2 param_10 = _2173;
+        float2 param_10 = _2290;
         value += (hexcLift(param_9, param_10) * p.b.x);
         weights += (w * p.b.x);
     }
@@ -1075,10 +1132,10 @@ float3 hexc_normal(float3 position, float3 normal, inout float3 weights)
         float2 param_13 = p.dy[1];
         int2 param_14 = int2(0, 0);
         float3 param_15;
-        float2 _2205 = hexcAt_normal(param_11, param_12, param_13, param_14, param_15);
+        float2 _2322 = hexcAt_normal(param_11, param_12, param_13, param_14, param_15);
         w = param_15;
         int param_16 = 1;
-        float2 param_17 = _2205;
+        float2 param_17 = _2322;
         value += (hexcLift(param_16, param_17) * p.b.y);
         weights += (w * p.b.y);
     }
@@ -1089,10 +1146,10 @@ float3 hexc_normal(float3 position, float3 normal, inout float3 weights)
         float2 param_20 = p.dy[2];
         int2 param_21 = int2(0, 0);
         float3 param_22;
-        float2 _2237 = hexcAt_normal(param_18, param_19, param_20, param_21, param_22);
+        float2 _2354 = hexcAt_normal(param_18, param_19, param_20, param_21, param_22);
         w = param_22;
         int param_23 = 2;
-        float2 param_24 = _2237;
+        float2 param_24 = _2354;
         value += (hexcLift(param_23, param_24) * p.b.z);
         weights += (w * p.b.z);
     }
@@ -1108,15 +1165,15 @@ float3 hexc_normal(float3 position, float3 normal)
     float3 param = position;
     float3 param_1 = normal;
     float3 param_2;
-    float3 _2265 = hexc_normal(param, param_1, param_2);
+    float3 _2382 = hexc_normal(param, param_1, param_2);
     float3 weights = param_2;
-    return _2265;
+    return _2382;
 }
 
-#line 724 "hexc/hextiling.glsl"
+#line 742 "hexc/hextiling.glsl"
 float3 hexcPerturbNormal(float3 normal, float3 surfaceGradient)
 {
-#line 724 "hexc/hextiling.glsl"
+#line 742 "hexc/hextiling.glsl"
     return normalize(normalize(normal) - surfaceGradient);
 }
 

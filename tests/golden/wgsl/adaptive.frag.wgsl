@@ -33,24 +33,24 @@ fn adaptive_frag_1() {
     var local_6: vec3<f32>;
     var local_7: vec3<f32>;
     var local_8: vec3<bool>;
-    var phi_3820_: bool;
-    var phi_12035_: i32;
-    var phi_12044_: vec4<f32>;
-    var phi_12040_: vec4<f32>;
-    var phi_12036_: vec4<f32>;
-    var phi_12054_: vec3<f32>;
-    var phi_6097_: bool;
-    var phi_12626_: i32;
-    var phi_12635_: vec4<f32>;
-    var phi_12631_: vec4<f32>;
-    var phi_12627_: vec4<f32>;
-    var phi_12645_: vec3<f32>;
-    var phi_8412_: bool;
-    var phi_13719_: i32;
-    var phi_13728_: vec2<f32>;
-    var phi_13734_: vec2<f32>;
-    var phi_13740_: vec2<f32>;
-    var phi_13756_: vec3<f32>;
+    var phi_4180_: bool;
+    var phi_12974_: i32;
+    var phi_12983_: vec4<f32>;
+    var phi_12979_: vec4<f32>;
+    var phi_12975_: vec4<f32>;
+    var phi_12993_: vec3<f32>;
+    var phi_6715_: bool;
+    var phi_13709_: i32;
+    var phi_13718_: vec4<f32>;
+    var phi_13714_: vec4<f32>;
+    var phi_13710_: vec4<f32>;
+    var phi_13728_: vec3<f32>;
+    var phi_9288_: bool;
+    var phi_15027_: i32;
+    var phi_15036_: vec2<f32>;
+    var phi_15042_: vec2<f32>;
+    var phi_15048_: vec2<f32>;
+    var phi_15064_: vec3<f32>;
 
     let _e83 = v_uv_1;
     let _e85 = hexcParams.albedo_tiling;
@@ -161,17 +161,17 @@ fn adaptive_frag_1() {
     let _e482 = local_6;
     local_7 = (_e482 - (log(max((vec3<f32>(1f, 1f, 1f) - _e434), vec3<f32>(0.000000000000000000000000000001f, 0.000000000000000000000000000001f, 0.000000000000000000000000000001f))) * 0.5f));
     let _e488 = (_e111 >= _e113);
-    phi_3820_ = _e488;
+    phi_4180_ = _e488;
     if _e488 {
-        phi_3820_ = (_e111 >= _e115);
+        phi_4180_ = (_e111 >= _e115);
     }
-    let _e491 = phi_3820_;
+    let _e491 = phi_4180_;
     if _e491 {
-        phi_12035_ = 0i;
+        phi_12974_ = 0i;
     } else {
-        phi_12035_ = select(2i, 1i, (_e113 >= _e115));
+        phi_12974_ = select(2i, 1i, (_e113 >= _e115));
     }
-    let _e495 = phi_12035_;
+    let _e495 = phi_12974_;
     let _e497 = select(0i, 1i, (_e495 == 0i));
     let _e499 = select(2i, 1i, (_e495 == 2i));
     local_8 = vec3<bool>(true, true, true);
@@ -190,35 +190,35 @@ fn adaptive_frag_1() {
         }
     }
     let _e519 = local_8;
-    phi_12044_ = vec4<f32>(0f, 0f, 0f, 0f);
+    phi_12983_ = vec4<f32>(0f, 0f, 0f, 0f);
     if _e519.x {
         let _e521 = textureSampleGrad(hexcTex_albedo, hexcSampler, _e216, vec2<f32>(fma(_e87.x, _e205, (_e87.y * _e206)), fma(_e221, _e206, (_e87.y * _e205))), vec2<f32>(fma(_e88.x, _e205, (_e88.y * _e206)), fma(_e229, _e206, (_e88.y * _e205))));
-        phi_12044_ = _e521;
+        phi_12983_ = _e521;
     }
-    let _e523 = phi_12044_;
-    phi_12040_ = vec4<f32>(0f, 0f, 0f, 0f);
+    let _e523 = phi_12983_;
+    phi_12979_ = vec4<f32>(0f, 0f, 0f, 0f);
     if _e519.y {
         let _e525 = textureSampleGrad(hexcTex_albedo, hexcSampler, _e311, vec2<f32>(fma(_e87.x, _e300, (_e87.y * _e301)), fma(_e221, _e301, (_e87.y * _e300))), vec2<f32>(fma(_e88.x, _e300, (_e88.y * _e301)), fma(_e229, _e301, (_e88.y * _e300))));
-        phi_12040_ = _e525;
+        phi_12979_ = _e525;
     }
-    let _e527 = phi_12040_;
-    phi_12036_ = vec4<f32>(0f, 0f, 0f, 0f);
+    let _e527 = phi_12979_;
+    phi_12975_ = vec4<f32>(0f, 0f, 0f, 0f);
     if _e519.z {
         let _e529 = textureSampleGrad(hexcTex_albedo, hexcSampler, _e400, vec2<f32>(fma(_e87.x, _e389, (_e87.y * _e390)), fma(_e221, _e390, (_e87.y * _e389))), vec2<f32>(fma(_e88.x, _e389, (_e88.y * _e390)), fma(_e229, _e390, (_e88.y * _e389))));
-        phi_12036_ = _e529;
+        phi_12975_ = _e529;
     }
-    let _e531 = phi_12036_;
+    let _e531 = phi_12975_;
     let _e537 = (_e116 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e519));
     let _e541 = (_e537 * _e537);
     let _e544 = ((_e537 * _e541) * (_e541 * _e541));
     let _e545 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(dot(_e523, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e527, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e531, vec4<f32>(0.299f, 0.587f, 0.114f, 0f))), vec3<f32>(0f, 0f, 0f)), vec3(_e421)) * _e544);
     let _e550 = ((_e545.x + _e545.y) + _e545.z);
     if (_e550 > 0f) {
-        phi_12054_ = (_e545 / vec3(_e550));
+        phi_12993_ = (_e545 / vec3(_e550));
     } else {
-        phi_12054_ = (_e544 / vec3(((_e544.x + _e544.y) + _e544.z)));
+        phi_12993_ = (_e544 / vec3(((_e544.x + _e544.y) + _e544.z)));
     }
-    let _e562 = phi_12054_;
+    let _e562 = phi_12993_;
     let _e564 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e562) * 2f);
     let _e566 = ((vec3<f32>(1f, 1f, 1f) - _e564) * 2f);
     let _e568 = max(vec3<f32>(0f, 0f, 0f), fma(_e562, _e566, _e564));
@@ -251,17 +251,17 @@ fn adaptive_frag_1() {
     local_3 = select(_e673, (vec3<f32>(1f, 1f, 1f) / fma(_e672, _e672, fma(_e670, _e670, vec3<f32>(1f, 1f, 1f)))), (max(_e633, max(_e668, _e671)) < vec3<f32>(0.5f, 0.5f, 0.5f)));
     let _e681 = local_3;
     local_4 = (_e681 - (log(max((vec3<f32>(1f, 1f, 1f) - _e633), vec3<f32>(0.000000000000000000000000000001f, 0.000000000000000000000000000001f, 0.000000000000000000000000000001f))) * 0.5f));
-    phi_6097_ = _e488;
+    phi_6715_ = _e488;
     if _e488 {
-        phi_6097_ = (_e111 >= _e115);
+        phi_6715_ = (_e111 >= _e115);
     }
-    let _e689 = phi_6097_;
+    let _e689 = phi_6715_;
     if _e689 {
-        phi_12626_ = 0i;
+        phi_13709_ = 0i;
     } else {
-        phi_12626_ = select(2i, 1i, (_e113 >= _e115));
+        phi_13709_ = select(2i, 1i, (_e113 >= _e115));
     }
-    let _e693 = phi_12626_;
+    let _e693 = phi_13709_;
     let _e695 = select(0i, 1i, (_e693 == 0i));
     let _e697 = select(2i, 1i, (_e693 == 2i));
     local_5 = vec3<bool>(true, true, true);
@@ -280,35 +280,35 @@ fn adaptive_frag_1() {
         }
     }
     let _e717 = local_5;
-    phi_12635_ = vec4<f32>(0f, 0f, 0f, 0f);
+    phi_13718_ = vec4<f32>(0f, 0f, 0f, 0f);
     if _e717.x {
         let _e719 = textureSampleGrad(hexcTex_roughness, hexcSampler, _e216, vec2<f32>(fma(_e589.x, _e205, (_e589.y * _e206)), fma(_e595, _e206, (_e589.y * _e205))), vec2<f32>(fma(_e590.x, _e205, (_e590.y * _e206)), fma(_e603, _e206, (_e590.y * _e205))));
-        phi_12635_ = _e719;
+        phi_13718_ = _e719;
     }
-    let _e721 = phi_12635_;
-    phi_12631_ = vec4<f32>(0f, 0f, 0f, 0f);
+    let _e721 = phi_13718_;
+    phi_13714_ = vec4<f32>(0f, 0f, 0f, 0f);
     if _e717.y {
         let _e723 = textureSampleGrad(hexcTex_roughness, hexcSampler, _e311, vec2<f32>(fma(_e589.x, _e300, (_e589.y * _e301)), fma(_e595, _e301, (_e589.y * _e300))), vec2<f32>(fma(_e590.x, _e300, (_e590.y * _e301)), fma(_e603, _e301, (_e590.y * _e300))));
-        phi_12631_ = _e723;
+        phi_13714_ = _e723;
     }
-    let _e725 = phi_12631_;
-    phi_12627_ = vec4<f32>(0f, 0f, 0f, 0f);
+    let _e725 = phi_13714_;
+    phi_13710_ = vec4<f32>(0f, 0f, 0f, 0f);
     if _e717.z {
         let _e727 = textureSampleGrad(hexcTex_roughness, hexcSampler, _e400, vec2<f32>(fma(_e589.x, _e389, (_e589.y * _e390)), fma(_e595, _e390, (_e589.y * _e389))), vec2<f32>(fma(_e590.x, _e389, (_e590.y * _e390)), fma(_e603, _e390, (_e590.y * _e389))));
-        phi_12627_ = _e727;
+        phi_13710_ = _e727;
     }
-    let _e729 = phi_12627_;
+    let _e729 = phi_13710_;
     let _e735 = (_e116 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e717));
     let _e739 = (_e735 * _e735);
     let _e742 = ((_e735 * _e739) * (_e739 * _e739));
     let _e743 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(_e721.x, _e725.x, _e729.x), vec3<f32>(0f, 0f, 0f)), vec3(_e628)) * _e742);
     let _e748 = ((_e743.x + _e743.y) + _e743.z);
     if (_e748 > 0f) {
-        phi_12645_ = (_e743 / vec3(_e748));
+        phi_13728_ = (_e743 / vec3(_e748));
     } else {
-        phi_12645_ = (_e742 / vec3(((_e742.x + _e742.y) + _e742.z)));
+        phi_13728_ = (_e742 / vec3(((_e742.x + _e742.y) + _e742.z)));
     }
-    let _e760 = phi_12645_;
+    let _e760 = phi_13728_;
     let _e762 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e760) * 2f);
     let _e764 = ((vec3<f32>(1f, 1f, 1f) - _e762) * 2f);
     let _e766 = max(vec3<f32>(0f, 0f, 0f), fma(_e760, _e764, _e762));
@@ -348,17 +348,17 @@ fn adaptive_frag_1() {
     local = select(_e884, (vec3<f32>(1f, 1f, 1f) / fma(_e883, _e883, fma(_e881, _e881, vec3<f32>(1f, 1f, 1f)))), (max(_e844, max(_e879, _e882)) < vec3<f32>(0.5f, 0.5f, 0.5f)));
     let _e892 = local;
     local_1 = (_e892 - (log(max((vec3<f32>(1f, 1f, 1f) - _e844), vec3<f32>(0.000000000000000000000000000001f, 0.000000000000000000000000000001f, 0.000000000000000000000000000001f))) * 0.5f));
-    phi_8412_ = _e488;
+    phi_9288_ = _e488;
     if _e488 {
-        phi_8412_ = (_e111 >= _e115);
+        phi_9288_ = (_e111 >= _e115);
     }
-    let _e900 = phi_8412_;
+    let _e900 = phi_9288_;
     if _e900 {
-        phi_13719_ = 0i;
+        phi_15027_ = 0i;
     } else {
-        phi_13719_ = select(2i, 1i, (_e113 >= _e115));
+        phi_15027_ = select(2i, 1i, (_e113 >= _e115));
     }
-    let _e904 = phi_13719_;
+    let _e904 = phi_15027_;
     let _e906 = select(0i, 1i, (_e904 == 0i));
     let _e908 = select(2i, 1i, (_e904 == 2i));
     local_2 = vec3<bool>(true, true, true);
@@ -377,33 +377,33 @@ fn adaptive_frag_1() {
         }
     }
     let _e928 = local_2;
-    phi_13728_ = vec2<f32>(0f, 0f);
+    phi_15036_ = vec2<f32>(0f, 0f);
     if _e928.x {
         let _e930 = textureSampleGrad(hexcTex_normal, hexcSampler, _e216, vec2<f32>(fma(_e800.x, _e205, (_e800.y * _e206)), fma(_e806, _e206, (_e800.y * _e205))), vec2<f32>(fma(_e801.x, _e205, (_e801.y * _e206)), fma(_e814, _e206, (_e801.y * _e205))));
         let _e933 = ((_e930.xyz * 2f) - vec3<f32>(1f, 1f, 1f));
         let _e934 = abs(_e933);
         let _e947 = (-(vec2<f32>(_e933.x, _e933.y)) / vec2(max(max(_e934.z, (0.0078125f * max(_e934.x, _e934.y))), 0.00000000000000000001f)));
-        phi_13728_ = vec2<f32>(fma(_e947.x, _e205, (_e947.y * _e206)), fma(-(_e947.x), _e206, (_e947.y * _e205)));
+        phi_15036_ = vec2<f32>(fma(_e947.x, _e205, (_e947.y * _e206)), fma(-(_e947.x), _e206, (_e947.y * _e205)));
     }
-    let _e957 = phi_13728_;
-    phi_13734_ = vec2<f32>(0f, 0f);
+    let _e957 = phi_15036_;
+    phi_15042_ = vec2<f32>(0f, 0f);
     if _e928.y {
         let _e959 = textureSampleGrad(hexcTex_normal, hexcSampler, _e311, vec2<f32>(fma(_e800.x, _e300, (_e800.y * _e301)), fma(_e806, _e301, (_e800.y * _e300))), vec2<f32>(fma(_e801.x, _e300, (_e801.y * _e301)), fma(_e814, _e301, (_e801.y * _e300))));
         let _e962 = ((_e959.xyz * 2f) - vec3<f32>(1f, 1f, 1f));
         let _e963 = abs(_e962);
         let _e976 = (-(vec2<f32>(_e962.x, _e962.y)) / vec2(max(max(_e963.z, (0.0078125f * max(_e963.x, _e963.y))), 0.00000000000000000001f)));
-        phi_13734_ = vec2<f32>(fma(_e976.x, _e300, (_e976.y * _e301)), fma(-(_e976.x), _e301, (_e976.y * _e300)));
+        phi_15042_ = vec2<f32>(fma(_e976.x, _e300, (_e976.y * _e301)), fma(-(_e976.x), _e301, (_e976.y * _e300)));
     }
-    let _e986 = phi_13734_;
-    phi_13740_ = vec2<f32>(0f, 0f);
+    let _e986 = phi_15042_;
+    phi_15048_ = vec2<f32>(0f, 0f);
     if _e928.z {
         let _e988 = textureSampleGrad(hexcTex_normal, hexcSampler, _e400, vec2<f32>(fma(_e800.x, _e389, (_e800.y * _e390)), fma(_e806, _e390, (_e800.y * _e389))), vec2<f32>(fma(_e801.x, _e389, (_e801.y * _e390)), fma(_e814, _e390, (_e801.y * _e389))));
         let _e991 = ((_e988.xyz * 2f) - vec3<f32>(1f, 1f, 1f));
         let _e992 = abs(_e991);
         let _e1005 = (-(vec2<f32>(_e991.x, _e991.y)) / vec2(max(max(_e992.z, (0.0078125f * max(_e992.x, _e992.y))), 0.00000000000000000001f)));
-        phi_13740_ = vec2<f32>(fma(_e1005.x, _e389, (_e1005.y * _e390)), fma(-(_e1005.x), _e390, (_e1005.y * _e389)));
+        phi_15048_ = vec2<f32>(fma(_e1005.x, _e389, (_e1005.y * _e390)), fma(-(_e1005.x), _e390, (_e1005.y * _e389)));
     }
-    let _e1015 = phi_13740_;
+    let _e1015 = phi_15048_;
     let _e1019 = vec3<f32>(dot(_e957, _e957), dot(_e986, _e986), dot(_e1015, _e1015));
     let _e1021 = (_e116 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e928));
     let _e1028 = (_e1021 * _e1021);
@@ -411,11 +411,11 @@ fn adaptive_frag_1() {
     let _e1032 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e1019 / (vec3<f32>(1f, 1f, 1f) + _e1019))), vec3<f32>(0f, 0f, 0f)), vec3(_e839)) * _e1031);
     let _e1037 = ((_e1032.x + _e1032.y) + _e1032.z);
     if (_e1037 > 0f) {
-        phi_13756_ = (_e1032 / vec3(_e1037));
+        phi_15064_ = (_e1032 / vec3(_e1037));
     } else {
-        phi_13756_ = (_e1031 / vec3(((_e1031.x + _e1031.y) + _e1031.z)));
+        phi_15064_ = (_e1031 / vec3(((_e1031.x + _e1031.y) + _e1031.z)));
     }
-    let _e1049 = phi_13756_;
+    let _e1049 = phi_15064_;
     let _e1051 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e1049) * 2f);
     let _e1053 = ((vec3<f32>(1f, 1f, 1f) - _e1051) * 2f);
     let _e1055 = max(vec3<f32>(0f, 0f, 0f), fma(_e1049, _e1053, _e1051));

@@ -26,7 +26,7 @@ var<private> v_tangent_1: vec4<f32>;
 var<private> o_color: vec4<f32>;
 
 fn histogram_frag_1() {
-    var phi_9367_: vec3<f32>;
+    var phi_10675_: vec3<f32>;
 
     let _e74 = v_uv_1;
     let _e76 = hexcParams.albedo_tiling;
@@ -174,11 +174,11 @@ fn histogram_frag_1() {
     let _e723 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e714 / (vec3<f32>(1f, 1f, 1f) + _e714))), vec3<f32>(0f, 0f, 0f)), vec3(_e720)) * _e408);
     let _e728 = ((_e723.x + _e723.y) + _e723.z);
     if (_e728 > 0f) {
-        phi_9367_ = (_e723 / vec3(_e728));
+        phi_10675_ = (_e723 / vec3(_e728));
     } else {
-        phi_9367_ = _e415;
+        phi_10675_ = _e415;
     }
-    let _e733 = phi_9367_;
+    let _e733 = phi_10675_;
     let _e742 = -((((_e658 * _e733.x) + (_e684 * _e733.y)) + (_e710 * _e733.z)));
     let _e746 = normalize(vec3<f32>(_e742.x, _e742.y, 1f));
     let _e755 = normalize((((_e590 * _e746.x) - ((cross(_e584, _e590) * _e593) * _e746.y)) + (_e584 * _e746.z)));

@@ -24,9 +24,9 @@ var<private> v_tangent_1: vec4<f32>;
 var<private> o_color: vec4<f32>;
 
 fn lod_shared_frag_1() {
-    var phi_9531_: vec3<f32>;
-    var phi_9711_: vec3<f32>;
-    var phi_10072_: vec3<f32>;
+    var phi_10470_: vec3<f32>;
+    var phi_10794_: vec3<f32>;
+    var phi_11380_: vec3<f32>;
 
     let _e67 = v_uv_1;
     let _e69 = hexcParams.albedo_tiling;
@@ -116,11 +116,11 @@ fn lod_shared_frag_1() {
     let _e386 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(dot(_e370, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e371, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e372, vec4<f32>(0.299f, 0.587f, 0.114f, 0f))), vec3<f32>(0f, 0f, 0f)), vec3(_e379)) * _e385);
     let _e391 = ((_e386.x + _e386.y) + _e386.z);
     if (_e391 > 0f) {
-        phi_9531_ = (_e386 / vec3(_e391));
+        phi_10470_ = (_e386 / vec3(_e391));
     } else {
-        phi_9531_ = (_e385 / vec3(((_e385.x + _e385.y) + _e385.z)));
+        phi_10470_ = (_e385 / vec3(((_e385.x + _e385.y) + _e385.z)));
     }
-    let _e403 = phi_9531_;
+    let _e403 = phi_10470_;
     let _e405 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e403) * 2f);
     let _e407 = ((vec3<f32>(1f, 1f, 1f) - _e405) * 2f);
     let _e409 = max(vec3<f32>(0f, 0f, 0f), fma(_e403, _e407, _e405));
@@ -140,11 +140,11 @@ fn lod_shared_frag_1() {
     let _e455 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(_e443.x, _e444.x, _e445.x), vec3<f32>(0f, 0f, 0f)), vec3(_e452)) * _e385);
     let _e460 = ((_e455.x + _e455.y) + _e455.z);
     if (_e460 > 0f) {
-        phi_9711_ = (_e455 / vec3(_e460));
+        phi_10794_ = (_e455 / vec3(_e460));
     } else {
-        phi_9711_ = (_e385 / vec3(((_e385.x + _e385.y) + _e385.z)));
+        phi_10794_ = (_e385 / vec3(((_e385.x + _e385.y) + _e385.z)));
     }
-    let _e472 = phi_9711_;
+    let _e472 = phi_10794_;
     let _e474 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e472) * 2f);
     let _e476 = ((vec3<f32>(1f, 1f, 1f) - _e474) * 2f);
     let _e478 = max(vec3<f32>(0f, 0f, 0f), fma(_e472, _e476, _e474));
@@ -184,11 +184,11 @@ fn lod_shared_frag_1() {
     let _e615 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e606 / (vec3<f32>(1f, 1f, 1f) + _e606))), vec3<f32>(0f, 0f, 0f)), vec3(_e612)) * _e385);
     let _e620 = ((_e615.x + _e615.y) + _e615.z);
     if (_e620 > 0f) {
-        phi_10072_ = (_e615 / vec3(_e620));
+        phi_11380_ = (_e615 / vec3(_e620));
     } else {
-        phi_10072_ = (_e385 / vec3(((_e385.x + _e385.y) + _e385.z)));
+        phi_11380_ = (_e385 / vec3(((_e385.x + _e385.y) + _e385.z)));
     }
-    let _e632 = phi_10072_;
+    let _e632 = phi_11380_;
     let _e634 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e632) * 2f);
     let _e636 = ((vec3<f32>(1f, 1f, 1f) - _e634) * 2f);
     let _e638 = max(vec3<f32>(0f, 0f, 0f), fma(_e632, _e636, _e634));

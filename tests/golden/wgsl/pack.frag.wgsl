@@ -22,9 +22,9 @@ var<private> v_tangent_1: vec4<f32>;
 var<private> o_color: vec4<f32>;
 
 fn pack_frag_1() {
-    var phi_9294_: vec3<f32>;
-    var phi_9464_: vec3<f32>;
-    var phi_9806_: vec3<f32>;
+    var phi_10233_: vec3<f32>;
+    var phi_10547_: vec3<f32>;
+    var phi_11114_: vec3<f32>;
 
     let _e65 = v_uv_1;
     let _e67 = hexcParams.albedo_tiling;
@@ -117,11 +117,11 @@ fn pack_frag_1() {
     let _e409 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(dot(_e393, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e394, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e395, vec4<f32>(0.299f, 0.587f, 0.114f, 0f))), vec3<f32>(0f, 0f, 0f)), vec3(_e402)) * _e408);
     let _e414 = ((_e409.x + _e409.y) + _e409.z);
     if (_e414 > 0f) {
-        phi_9294_ = (_e409 / vec3(_e414));
+        phi_10233_ = (_e409 / vec3(_e414));
     } else {
-        phi_9294_ = (_e408 / vec3(((_e408.x + _e408.y) + _e408.z)));
+        phi_10233_ = (_e408 / vec3(((_e408.x + _e408.y) + _e408.z)));
     }
-    let _e426 = phi_9294_;
+    let _e426 = phi_10233_;
     let _e428 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e426) * 2f);
     let _e430 = ((vec3<f32>(1f, 1f, 1f) - _e428) * 2f);
     let _e432 = max(vec3<f32>(0f, 0f, 0f), fma(_e426, _e430, _e428));
@@ -132,11 +132,11 @@ fn pack_frag_1() {
     let _e466 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(_e393.w, _e394.w, _e395.w), vec3<f32>(0f, 0f, 0f)), vec3(_e463)) * _e408);
     let _e471 = ((_e466.x + _e466.y) + _e466.z);
     if (_e471 > 0f) {
-        phi_9464_ = (_e466 / vec3(_e471));
+        phi_10547_ = (_e466 / vec3(_e471));
     } else {
-        phi_9464_ = (_e408 / vec3(((_e408.x + _e408.y) + _e408.z)));
+        phi_10547_ = (_e408 / vec3(((_e408.x + _e408.y) + _e408.z)));
     }
-    let _e483 = phi_9464_;
+    let _e483 = phi_10547_;
     let _e485 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e483) * 2f);
     let _e487 = ((vec3<f32>(1f, 1f, 1f) - _e485) * 2f);
     let _e489 = max(vec3<f32>(0f, 0f, 0f), fma(_e483, _e487, _e485));
@@ -169,11 +169,11 @@ fn pack_frag_1() {
     let _e613 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e604 / (vec3<f32>(1f, 1f, 1f) + _e604))), vec3<f32>(0f, 0f, 0f)), vec3(_e610)) * _e408);
     let _e618 = ((_e613.x + _e613.y) + _e613.z);
     if (_e618 > 0f) {
-        phi_9806_ = (_e613 / vec3(_e618));
+        phi_11114_ = (_e613 / vec3(_e618));
     } else {
-        phi_9806_ = (_e408 / vec3(((_e408.x + _e408.y) + _e408.z)));
+        phi_11114_ = (_e408 / vec3(((_e408.x + _e408.y) + _e408.z)));
     }
-    let _e630 = phi_9806_;
+    let _e630 = phi_11114_;
     let _e632 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e630) * 2f);
     let _e634 = ((vec3<f32>(1f, 1f, 1f) - _e632) * 2f);
     let _e636 = max(vec3<f32>(0f, 0f, 0f), fma(_e630, _e634, _e632));

@@ -18,7 +18,7 @@ var<private> v_uv_1: vec2<f32>;
 var<private> o_color: vec4<f32>;
 
 fn rock_normal_frag_1() {
-    var phi_3831_: vec3<f32>;
+    var phi_4254_: vec3<f32>;
 
     let _e58 = v_normal_1;
     let _e59 = normalize(_e58);
@@ -121,11 +121,11 @@ fn rock_normal_frag_1() {
     let _e492 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e479 / (vec3<f32>(1f, 1f, 1f) + _e479))), vec3<f32>(0f, 0f, 0f)), vec3(_e485)) * _e491);
     let _e497 = ((_e492.x + _e492.y) + _e492.z);
     if (_e497 > 0f) {
-        phi_3831_ = (_e492 / vec3(_e497));
+        phi_4254_ = (_e492 / vec3(_e497));
     } else {
-        phi_3831_ = (_e491 / vec3(((_e491.x + _e491.y) + _e491.z)));
+        phi_4254_ = (_e491 / vec3(((_e491.x + _e491.y) + _e491.z)));
     }
-    let _e509 = phi_3831_;
+    let _e509 = phi_4254_;
     let _e518 = -((((_e423 * _e509.x) + (_e449 * _e509.y)) + (_e475 * _e509.z)));
     let _e522 = normalize(vec3<f32>(_e518.x, _e518.y, 1f));
     let _e531 = normalize((((_e65 * _e522.x) - ((cross(_e59, _e65) * _e68) * _e522.y)) + (_e59 * _e522.z)));

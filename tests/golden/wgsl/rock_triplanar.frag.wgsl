@@ -27,30 +27,30 @@ var<private> v_normal_1: vec3<f32>;
 var<private> o_color: vec4<f32>;
 
 fn rock_triplanar_frag_1() {
-    var phi_23621_: vec3<f32>;
-    var phi_23622_: vec3<f32>;
-    var phi_23654_: vec3<f32>;
-    var phi_23908_: vec4<f32>;
-    var phi_23881_: vec3<f32>;
-    var phi_24290_: vec4<f32>;
-    var phi_24263_: vec3<f32>;
-    var phi_24309_: vec4<f32>;
-    var phi_24311_: vec3<f32>;
-    var phi_24312_: vec3<f32>;
-    var phi_24654_: vec3<f32>;
-    var phi_25158_: f32;
-    var phi_25133_: vec3<f32>;
-    var phi_25735_: f32;
-    var phi_25710_: vec3<f32>;
-    var phi_25754_: f32;
-    var phi_25756_: vec3<f32>;
-    var phi_25757_: vec3<f32>;
-    var phi_26727_: vec3<f32>;
-    var phi_27952_: vec3<f32>;
-    var phi_27915_: vec3<f32>;
-    var phi_29304_: vec3<f32>;
-    var phi_29267_: vec3<f32>;
-    var phi_29326_: vec3<f32>;
+    var phi_25802_: vec3<f32>;
+    var phi_25803_: vec3<f32>;
+    var phi_25898_: vec3<f32>;
+    var phi_26323_: vec4<f32>;
+    var phi_26287_: vec3<f32>;
+    var phi_26948_: vec4<f32>;
+    var phi_26912_: vec3<f32>;
+    var phi_26976_: vec4<f32>;
+    var phi_26978_: vec3<f32>;
+    var phi_26979_: vec3<f32>;
+    var phi_27516_: vec3<f32>;
+    var phi_28269_: f32;
+    var phi_28238_: vec3<f32>;
+    var phi_29125_: f32;
+    var phi_29094_: vec3<f32>;
+    var phi_29150_: f32;
+    var phi_29152_: vec3<f32>;
+    var phi_29153_: vec3<f32>;
+    var phi_30591_: vec3<f32>;
+    var phi_32392_: vec3<f32>;
+    var phi_32346_: vec3<f32>;
+    var phi_34392_: vec3<f32>;
+    var phi_34346_: vec3<f32>;
+    var phi_34423_: vec3<f32>;
 
     let _e77 = v_position_1;
     let _e78 = v_normal_1;
@@ -61,20 +61,20 @@ fn rock_triplanar_frag_1() {
     let _e85 = length(_e78);
     let _e86 = (_e85 > 0f);
     if _e86 {
-        phi_23621_ = (_e78 / vec3(_e85));
+        phi_25802_ = (_e78 / vec3(_e85));
     } else {
-        phi_23621_ = vec3<f32>(0f, 0f, 0f);
+        phi_25802_ = vec3<f32>(0f, 0f, 0f);
     }
-    let _e90 = phi_23621_;
+    let _e90 = phi_25802_;
     let _e92 = vec3(_e80);
     let _e93 = pow(abs(_e90), _e92);
     let _e98 = ((_e93.x + _e93.y) + _e93.z);
     if (_e98 > 0f) {
-        phi_23622_ = (_e93 / vec3(_e98));
+        phi_25803_ = (_e93 / vec3(_e98));
     } else {
-        phi_23622_ = vec3<f32>(0.33333334f, 0.33333334f, 0.33333334f);
+        phi_25803_ = vec3<f32>(0.33333334f, 0.33333334f, 0.33333334f);
     }
-    let _e103 = phi_23622_;
+    let _e103 = phi_25803_;
     let _e104 = _e77.yz;
     let _e105 = (_e104 * _e82);
     let _e107 = (_e83.yz * _e82);
@@ -87,7 +87,7 @@ fn rock_triplanar_frag_1() {
     let _e117 = (_e116 * _e82);
     let _e119 = (_e83.xy * _e82);
     let _e121 = (_e84.xy * _e82);
-    phi_23908_ = vec4<f32>(0f, 0f, 0f, 0f);
+    phi_26323_ = vec4<f32>(0f, 0f, 0f, 0f);
     if (_e103.x > 0f) {
         let _e126 = floor((_e105.x * 0.035714287f));
         let _e128 = floor(_e105.y);
@@ -166,20 +166,20 @@ fn rock_triplanar_frag_1() {
         let _e462 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(dot(_e446, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e447, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e448, vec4<f32>(0.299f, 0.587f, 0.114f, 0f))), vec3<f32>(0f, 0f, 0f)), vec3(_e455)) * _e461);
         let _e467 = ((_e462.x + _e462.y) + _e462.z);
         if (_e467 > 0f) {
-            phi_23654_ = (_e462 / vec3(_e467));
+            phi_25898_ = (_e462 / vec3(_e467));
         } else {
-            phi_23654_ = (_e461 / vec3(((_e461.x + _e461.y) + _e461.z)));
+            phi_25898_ = (_e461 / vec3(((_e461.x + _e461.y) + _e461.z)));
         }
-        let _e479 = phi_23654_;
+        let _e479 = phi_25898_;
         let _e481 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e479) * 2f);
         let _e483 = ((vec3<f32>(1f, 1f, 1f) - _e481) * 2f);
         let _e485 = max(vec3<f32>(0f, 0f, 0f), fma(_e479, _e483, _e481));
         let _e489 = fma((_e483 * 0.25f), (_e485 * _e485), (_e481 * 0.5f));
         let _e496 = (_e489 / vec3(((_e489.x + _e489.y) + _e489.z)));
-        phi_23908_ = ((((_e446 * _e496.x) + (_e447 * _e496.y)) + (_e448 * _e496.z)) * _e103.x);
+        phi_26323_ = ((((_e446 * _e496.x) + (_e447 * _e496.y)) + (_e448 * _e496.z)) * _e103.x);
     }
-    let _e507 = phi_23908_;
-    phi_24290_ = _e507;
+    let _e507 = phi_26323_;
+    phi_26948_ = _e507;
     if (_e103.y > 0f) {
         let _e512 = floor((_e111.x * 0.035714287f));
         let _e514 = floor(_e111.y);
@@ -258,20 +258,20 @@ fn rock_triplanar_frag_1() {
         let _e848 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(dot(_e832, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e833, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e834, vec4<f32>(0.299f, 0.587f, 0.114f, 0f))), vec3<f32>(0f, 0f, 0f)), vec3(_e841)) * _e847);
         let _e853 = ((_e848.x + _e848.y) + _e848.z);
         if (_e853 > 0f) {
-            phi_23881_ = (_e848 / vec3(_e853));
+            phi_26287_ = (_e848 / vec3(_e853));
         } else {
-            phi_23881_ = (_e847 / vec3(((_e847.x + _e847.y) + _e847.z)));
+            phi_26287_ = (_e847 / vec3(((_e847.x + _e847.y) + _e847.z)));
         }
-        let _e865 = phi_23881_;
+        let _e865 = phi_26287_;
         let _e867 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e865) * 2f);
         let _e869 = ((vec3<f32>(1f, 1f, 1f) - _e867) * 2f);
         let _e871 = max(vec3<f32>(0f, 0f, 0f), fma(_e865, _e869, _e867));
         let _e875 = fma((_e869 * 0.25f), (_e871 * _e871), (_e867 * 0.5f));
         let _e882 = (_e875 / vec3(((_e875.x + _e875.y) + _e875.z)));
-        phi_24290_ = (_e507 + ((((_e832 * _e882.x) + (_e833 * _e882.y)) + (_e834 * _e882.z)) * _e103.y));
+        phi_26948_ = (_e507 + ((((_e832 * _e882.x) + (_e833 * _e882.y)) + (_e834 * _e882.z)) * _e103.y));
     }
-    let _e894 = phi_24290_;
-    phi_24309_ = _e894;
+    let _e894 = phi_26948_;
+    phi_26976_ = _e894;
     if (_e103.z > 0f) {
         let _e899 = floor((_e117.x * 0.035714287f));
         let _e901 = floor(_e117.y);
@@ -350,44 +350,44 @@ fn rock_triplanar_frag_1() {
         let _e1235 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(dot(_e1219, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e1220, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e1221, vec4<f32>(0.299f, 0.587f, 0.114f, 0f))), vec3<f32>(0f, 0f, 0f)), vec3(_e1228)) * _e1234);
         let _e1240 = ((_e1235.x + _e1235.y) + _e1235.z);
         if (_e1240 > 0f) {
-            phi_24263_ = (_e1235 / vec3(_e1240));
+            phi_26912_ = (_e1235 / vec3(_e1240));
         } else {
-            phi_24263_ = (_e1234 / vec3(((_e1234.x + _e1234.y) + _e1234.z)));
+            phi_26912_ = (_e1234 / vec3(((_e1234.x + _e1234.y) + _e1234.z)));
         }
-        let _e1252 = phi_24263_;
+        let _e1252 = phi_26912_;
         let _e1254 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e1252) * 2f);
         let _e1256 = ((vec3<f32>(1f, 1f, 1f) - _e1254) * 2f);
         let _e1258 = max(vec3<f32>(0f, 0f, 0f), fma(_e1252, _e1256, _e1254));
         let _e1262 = fma((_e1256 * 0.25f), (_e1258 * _e1258), (_e1254 * 0.5f));
         let _e1269 = (_e1262 / vec3(((_e1262.x + _e1262.y) + _e1262.z)));
-        phi_24309_ = (_e894 + ((((_e1219 * _e1269.x) + (_e1220 * _e1269.y)) + (_e1221 * _e1269.z)) * _e103.z));
+        phi_26976_ = (_e894 + ((((_e1219 * _e1269.x) + (_e1220 * _e1269.y)) + (_e1221 * _e1269.z)) * _e103.z));
     }
-    let _e1281 = phi_24309_;
+    let _e1281 = phi_26976_;
     let _e1284 = hexcParams.roughness_planesharpness;
     let _e1286 = hexcParams.roughness_tiling;
     let _e1287 = dpdx(_e77);
     let _e1288 = dpdy(_e77);
     if _e86 {
-        phi_24311_ = (_e78 / vec3(_e85));
+        phi_26978_ = (_e78 / vec3(_e85));
     } else {
-        phi_24311_ = vec3<f32>(0f, 0f, 0f);
+        phi_26978_ = vec3<f32>(0f, 0f, 0f);
     }
-    let _e1292 = phi_24311_;
+    let _e1292 = phi_26978_;
     let _e1295 = pow(abs(_e1292), vec3(_e1284));
     let _e1300 = ((_e1295.x + _e1295.y) + _e1295.z);
     if (_e1300 > 0f) {
-        phi_24312_ = (_e1295 / vec3(_e1300));
+        phi_26979_ = (_e1295 / vec3(_e1300));
     } else {
-        phi_24312_ = vec3<f32>(0.33333334f, 0.33333334f, 0.33333334f);
+        phi_26979_ = vec3<f32>(0.33333334f, 0.33333334f, 0.33333334f);
     }
-    let _e1305 = phi_24312_;
+    let _e1305 = phi_26979_;
     let _e1308 = (_e1287.yz * _e1286);
     let _e1310 = (_e1288.yz * _e1286);
     let _e1313 = (_e1287.zx * _e1286);
     let _e1315 = (_e1288.zx * _e1286);
     let _e1318 = (_e1287.xy * _e1286);
     let _e1320 = (_e1288.xy * _e1286);
-    phi_25158_ = 0f;
+    phi_28269_ = 0f;
     if (_e1305.x > 0f) {
         let _e1323 = floor((_e104 * _e1286));
         let _e1326 = (fma(_e104, _e1286, -(_e1323)) * 2f);
@@ -437,20 +437,20 @@ fn rock_triplanar_frag_1() {
         let _e1520 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(_e1505.x, _e1506.x, 0f), vec3<f32>(0f, 0f, 0f)), vec3(_e1513)) * _e1519);
         let _e1525 = ((_e1520.x + _e1520.y) + _e1520.z);
         if (_e1525 > 0f) {
-            phi_24654_ = (_e1520 / vec3(_e1525));
+            phi_27516_ = (_e1520 / vec3(_e1525));
         } else {
-            phi_24654_ = (_e1519 / vec3(((_e1519.x + _e1519.y) + _e1519.z)));
+            phi_27516_ = (_e1519 / vec3(((_e1519.x + _e1519.y) + _e1519.z)));
         }
-        let _e1537 = phi_24654_;
+        let _e1537 = phi_27516_;
         let _e1539 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e1537) * 2f);
         let _e1541 = ((vec3<f32>(1f, 1f, 1f) - _e1539) * 2f);
         let _e1543 = max(vec3<f32>(0f, 0f, 0f), fma(_e1537, _e1541, _e1539));
         let _e1547 = fma((_e1541 * 0.25f), (_e1543 * _e1543), (_e1539 * 0.5f));
         let _e1554 = (_e1547 / vec3(((_e1547.x + _e1547.y) + _e1547.z)));
-        phi_25158_ = (_e1305.x * ((_e1505 * _e1554.x) + (_e1506 * _e1554.y)).x);
+        phi_28269_ = (_e1305.x * ((_e1505 * _e1554.x) + (_e1506 * _e1554.y)).x);
     }
-    let _e1563 = phi_25158_;
-    phi_25735_ = _e1563;
+    let _e1563 = phi_28269_;
+    phi_29125_ = _e1563;
     if (_e1305.y > 0f) {
         let _e1566 = floor((_e110 * _e1286));
         let _e1569 = (fma(_e110, _e1286, -(_e1566)) * 2f);
@@ -500,20 +500,20 @@ fn rock_triplanar_frag_1() {
         let _e1763 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(_e1748.x, _e1749.x, 0f), vec3<f32>(0f, 0f, 0f)), vec3(_e1756)) * _e1762);
         let _e1768 = ((_e1763.x + _e1763.y) + _e1763.z);
         if (_e1768 > 0f) {
-            phi_25133_ = (_e1763 / vec3(_e1768));
+            phi_28238_ = (_e1763 / vec3(_e1768));
         } else {
-            phi_25133_ = (_e1762 / vec3(((_e1762.x + _e1762.y) + _e1762.z)));
+            phi_28238_ = (_e1762 / vec3(((_e1762.x + _e1762.y) + _e1762.z)));
         }
-        let _e1780 = phi_25133_;
+        let _e1780 = phi_28238_;
         let _e1782 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e1780) * 2f);
         let _e1784 = ((vec3<f32>(1f, 1f, 1f) - _e1782) * 2f);
         let _e1786 = max(vec3<f32>(0f, 0f, 0f), fma(_e1780, _e1784, _e1782));
         let _e1790 = fma((_e1784 * 0.25f), (_e1786 * _e1786), (_e1782 * 0.5f));
         let _e1797 = (_e1790 / vec3(((_e1790.x + _e1790.y) + _e1790.z)));
-        phi_25735_ = fma(_e1305.y, ((_e1748 * _e1797.x) + (_e1749 * _e1797.y)).x, _e1563);
+        phi_29125_ = fma(_e1305.y, ((_e1748 * _e1797.x) + (_e1749 * _e1797.y)).x, _e1563);
     }
-    let _e1806 = phi_25735_;
-    phi_25754_ = _e1806;
+    let _e1806 = phi_29125_;
+    phi_29150_ = _e1806;
     if (_e1305.z > 0f) {
         let _e1809 = floor((_e116 * _e1286));
         let _e1812 = (fma(_e116, _e1286, -(_e1809)) * 2f);
@@ -563,45 +563,45 @@ fn rock_triplanar_frag_1() {
         let _e2006 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(_e1991.x, _e1992.x, 0f), vec3<f32>(0f, 0f, 0f)), vec3(_e1999)) * _e2005);
         let _e2011 = ((_e2006.x + _e2006.y) + _e2006.z);
         if (_e2011 > 0f) {
-            phi_25710_ = (_e2006 / vec3(_e2011));
+            phi_29094_ = (_e2006 / vec3(_e2011));
         } else {
-            phi_25710_ = (_e2005 / vec3(((_e2005.x + _e2005.y) + _e2005.z)));
+            phi_29094_ = (_e2005 / vec3(((_e2005.x + _e2005.y) + _e2005.z)));
         }
-        let _e2023 = phi_25710_;
+        let _e2023 = phi_29094_;
         let _e2025 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e2023) * 2f);
         let _e2027 = ((vec3<f32>(1f, 1f, 1f) - _e2025) * 2f);
         let _e2029 = max(vec3<f32>(0f, 0f, 0f), fma(_e2023, _e2027, _e2025));
         let _e2033 = fma((_e2027 * 0.25f), (_e2029 * _e2029), (_e2025 * 0.5f));
         let _e2040 = (_e2033 / vec3(((_e2033.x + _e2033.y) + _e2033.z)));
-        phi_25754_ = fma(_e1305.z, ((_e1991 * _e2040.x) + (_e1992 * _e2040.y)).x, _e1806);
+        phi_29150_ = fma(_e1305.z, ((_e1991 * _e2040.x) + (_e1992 * _e2040.y)).x, _e1806);
     }
-    let _e2049 = phi_25754_;
+    let _e2049 = phi_29150_;
     let _e2050 = clamp(_e2049, 0.02f, 1f);
     let _e2051 = normalize(_e78);
     let _e2052 = dpdx(_e77);
     let _e2053 = dpdy(_e77);
     let _e2054 = length(_e2051);
     if (_e2054 > 0f) {
-        phi_25756_ = (_e2051 / vec3(_e2054));
+        phi_29152_ = (_e2051 / vec3(_e2054));
     } else {
-        phi_25756_ = vec3<f32>(0f, 0f, 0f);
+        phi_29152_ = vec3<f32>(0f, 0f, 0f);
     }
-    let _e2059 = phi_25756_;
+    let _e2059 = phi_29152_;
     let _e2061 = pow(abs(_e2059), _e92);
     let _e2066 = ((_e2061.x + _e2061.y) + _e2061.z);
     if (_e2066 > 0f) {
-        phi_25757_ = (_e2061 / vec3(_e2066));
+        phi_29153_ = (_e2061 / vec3(_e2066));
     } else {
-        phi_25757_ = vec3<f32>(0.33333334f, 0.33333334f, 0.33333334f);
+        phi_29153_ = vec3<f32>(0.33333334f, 0.33333334f, 0.33333334f);
     }
-    let _e2071 = phi_25757_;
+    let _e2071 = phi_29153_;
     let _e2073 = (_e2052.yz * _e82);
     let _e2075 = (_e2053.yz * _e82);
     let _e2077 = (_e2052.zx * _e82);
     let _e2079 = (_e2053.zx * _e82);
     let _e2081 = (_e2052.xy * _e82);
     let _e2083 = (_e2053.xy * _e82);
-    phi_27952_ = vec3<f32>(0f, 0f, 0f);
+    phi_32392_ = vec3<f32>(0f, 0f, 0f);
     if (_e2071.x > 0f) {
         let _e2088 = floor((_e105.x * 0.035714287f));
         let _e2090 = floor(_e105.y);
@@ -693,16 +693,16 @@ fn rock_triplanar_frag_1() {
         let _e2502 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e2489 / (vec3<f32>(1f, 1f, 1f) + _e2489))), vec3<f32>(0f, 0f, 0f)), vec3(_e2495)) * _e2501);
         let _e2507 = ((_e2502.x + _e2502.y) + _e2502.z);
         if (_e2507 > 0f) {
-            phi_26727_ = (_e2502 / vec3(_e2507));
+            phi_30591_ = (_e2502 / vec3(_e2507));
         } else {
-            phi_26727_ = (_e2501 / vec3(((_e2501.x + _e2501.y) + _e2501.z)));
+            phi_30591_ = (_e2501 / vec3(((_e2501.x + _e2501.y) + _e2501.z)));
         }
-        let _e2519 = phi_26727_;
+        let _e2519 = phi_30591_;
         let _e2527 = (((_e2433 * _e2519.x) + (_e2459 * _e2519.y)) + (_e2485 * _e2519.z));
-        phi_27952_ = (vec3<f32>(0f, _e2527.x, -(_e2527.y)) * _e2071.x);
+        phi_32392_ = (vec3<f32>(0f, _e2527.x, -(_e2527.y)) * _e2071.x);
     }
-    let _e2534 = phi_27952_;
-    phi_29304_ = _e2534;
+    let _e2534 = phi_32392_;
+    phi_34392_ = _e2534;
     if (_e2071.y > 0f) {
         let _e2539 = floor((_e111.x * 0.035714287f));
         let _e2541 = floor(_e111.y);
@@ -794,16 +794,16 @@ fn rock_triplanar_frag_1() {
         let _e2953 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e2940 / (vec3<f32>(1f, 1f, 1f) + _e2940))), vec3<f32>(0f, 0f, 0f)), vec3(_e2946)) * _e2952);
         let _e2958 = ((_e2953.x + _e2953.y) + _e2953.z);
         if (_e2958 > 0f) {
-            phi_27915_ = (_e2953 / vec3(_e2958));
+            phi_32346_ = (_e2953 / vec3(_e2958));
         } else {
-            phi_27915_ = (_e2952 / vec3(((_e2952.x + _e2952.y) + _e2952.z)));
+            phi_32346_ = (_e2952 / vec3(((_e2952.x + _e2952.y) + _e2952.z)));
         }
-        let _e2970 = phi_27915_;
+        let _e2970 = phi_32346_;
         let _e2978 = (((_e2884 * _e2970.x) + (_e2910 * _e2970.y)) + (_e2936 * _e2970.z));
-        phi_29304_ = (_e2534 + (vec3<f32>(-(_e2978.y), 0f, _e2978.x) * _e2071.y));
+        phi_34392_ = (_e2534 + (vec3<f32>(-(_e2978.y), 0f, _e2978.x) * _e2071.y));
     }
-    let _e2986 = phi_29304_;
-    phi_29326_ = _e2986;
+    let _e2986 = phi_34392_;
+    phi_34423_ = _e2986;
     if (_e2071.z > 0f) {
         let _e2991 = floor((_e117.x * 0.035714287f));
         let _e2993 = floor(_e117.y);
@@ -895,15 +895,15 @@ fn rock_triplanar_frag_1() {
         let _e3405 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e3392 / (vec3<f32>(1f, 1f, 1f) + _e3392))), vec3<f32>(0f, 0f, 0f)), vec3(_e3398)) * _e3404);
         let _e3410 = ((_e3405.x + _e3405.y) + _e3405.z);
         if (_e3410 > 0f) {
-            phi_29267_ = (_e3405 / vec3(_e3410));
+            phi_34346_ = (_e3405 / vec3(_e3410));
         } else {
-            phi_29267_ = (_e3404 / vec3(((_e3404.x + _e3404.y) + _e3404.z)));
+            phi_34346_ = (_e3404 / vec3(((_e3404.x + _e3404.y) + _e3404.z)));
         }
-        let _e3422 = phi_29267_;
+        let _e3422 = phi_34346_;
         let _e3430 = (((_e3336 * _e3422.x) + (_e3362 * _e3422.y)) + (_e3388 * _e3422.z));
-        phi_29326_ = (_e2986 + (vec3<f32>(_e3430.x, -(_e3430.y), 0f) * _e2071.z));
+        phi_34423_ = (_e2986 + (vec3<f32>(_e3430.x, -(_e3430.y), 0f) * _e2071.z));
     }
-    let _e3438 = phi_29326_;
+    let _e3438 = phi_34423_;
     let _e3444 = normalize((normalize(_e2051) - (_e3438 - (_e2059 * dot(_e3438, _e2059)))));
     let _e3446 = max(dot(_e3444, vec3<f32>(0.408248f, 0.408248f, 0.816497f)), 0f);
     let _e3450 = (2f / (((_e2050 * _e2050) * _e2050) * _e2050));

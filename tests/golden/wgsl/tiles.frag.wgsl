@@ -15,7 +15,7 @@ var<private> o_color: vec4<f32>;
 var<private> v_uv_1: vec2<f32>;
 
 fn tiles_frag_1() {
-    var phi_3106_: vec3<f32>;
+    var phi_3120_: vec3<f32>;
 
     let _e46 = v_uv_1;
     let _e48 = hexcParams.albedo_tiling;
@@ -78,11 +78,11 @@ fn tiles_frag_1() {
     let _e304 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(dot(_e288, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e289, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e290, vec4<f32>(0.299f, 0.587f, 0.114f, 0f))), vec3<f32>(0f, 0f, 0f)), vec3(_e297)) * _e303);
     let _e309 = ((_e304.x + _e304.y) + _e304.z);
     if (_e309 > 0f) {
-        phi_3106_ = (_e304 / vec3(_e309));
+        phi_3120_ = (_e304 / vec3(_e309));
     } else {
-        phi_3106_ = (_e303 / vec3(((_e303.x + _e303.y) + _e303.z)));
+        phi_3120_ = (_e303 / vec3(((_e303.x + _e303.y) + _e303.z)));
     }
-    let _e321 = phi_3106_;
+    let _e321 = phi_3120_;
     let _e323 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e321) * 2f);
     let _e325 = ((vec3<f32>(1f, 1f, 1f) - _e323) * 2f);
     let _e327 = max(vec3<f32>(0f, 0f, 0f), fma(_e321, _e325, _e323));

@@ -42,69 +42,69 @@ var<private> v_tangent_1: vec4<f32>;
 var<private> o_color: vec4<f32>;
 
 fn hexcDerivToNormal(deriv: ptr<function, vec2<f32>>) -> vec3<f32> {
-    let _e78 = (*deriv);
-    let _e79 = -(_e78);
-    return normalize(vec3<f32>(_e79.x, _e79.y, 1f));
+    let _e88 = (*deriv);
+    let _e89 = -(_e88);
+    return normalize(vec3<f32>(_e89.x, _e89.y, 1f));
 }
 
 fn hexcShowWeights(W: ptr<function, vec3<f32>>, channel: ptr<function, vec3<i32>>) -> vec3<f32> {
-    let _e80 = (*W)[0u];
-    let _e82 = (*channel)[0u];
-    let _e88 = (*W)[1u];
-    let _e90 = (*channel)[1u];
-    let _e97 = (*W)[2u];
-    let _e99 = (*channel)[2u];
-    return (((select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), (vec3<i32>(0i, 1i, 2i) == vec3(_e82))) * _e80) + (select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), (vec3<i32>(0i, 1i, 2i) == vec3(_e90))) * _e88)) + (select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), (vec3<i32>(0i, 1i, 2i) == vec3(_e99))) * _e97));
+    let _e90 = (*W)[0u];
+    let _e92 = (*channel)[0u];
+    let _e98 = (*W)[1u];
+    let _e100 = (*channel)[1u];
+    let _e107 = (*W)[2u];
+    let _e109 = (*channel)[2u];
+    return (((select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), (vec3<i32>(0i, 1i, 2i) == vec3(_e92))) * _e90) + (select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), (vec3<i32>(0i, 1i, 2i) == vec3(_e100))) * _e98)) + (select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), (vec3<i32>(0i, 1i, 2i) == vec3(_e109))) * _e107));
 }
 
 fn hexcPowInt(x: ptr<function, vec3<f32>>, n: ptr<function, i32>) -> vec3<f32> {
     var r: vec3<f32>;
 
     r = vec3<f32>(1f, 1f, 1f);
-    let _e80 = (*n);
-    if ((_e80 & 1i) != 0i) {
-        let _e83 = (*x);
-        let _e84 = r;
-        r = (_e84 * _e83);
+    let _e90 = (*n);
+    if ((_e90 & 1i) != 0i) {
+        let _e93 = (*x);
+        let _e94 = r;
+        r = (_e94 * _e93);
     }
-    let _e86 = (*x);
-    let _e87 = (*x);
-    (*x) = (_e87 * _e86);
-    let _e89 = (*n);
-    if ((_e89 & 2i) != 0i) {
-        let _e92 = (*x);
-        let _e93 = r;
-        r = (_e93 * _e92);
-    }
-    let _e95 = (*x);
     let _e96 = (*x);
-    (*x) = (_e96 * _e95);
-    let _e98 = (*n);
-    if ((_e98 & 4i) != 0i) {
-        let _e101 = (*x);
-        let _e102 = r;
-        r = (_e102 * _e101);
+    let _e97 = (*x);
+    (*x) = (_e97 * _e96);
+    let _e99 = (*n);
+    if ((_e99 & 2i) != 0i) {
+        let _e102 = (*x);
+        let _e103 = r;
+        r = (_e103 * _e102);
     }
-    let _e104 = (*x);
     let _e105 = (*x);
-    (*x) = (_e105 * _e104);
-    let _e107 = (*n);
-    if ((_e107 & 8i) != 0i) {
-        let _e110 = (*x);
-        let _e111 = r;
-        r = (_e111 * _e110);
+    let _e106 = (*x);
+    (*x) = (_e106 * _e105);
+    let _e108 = (*n);
+    if ((_e108 & 4i) != 0i) {
+        let _e111 = (*x);
+        let _e112 = r;
+        r = (_e112 * _e111);
     }
-    let _e113 = (*x);
     let _e114 = (*x);
-    (*x) = (_e114 * _e113);
-    let _e116 = (*n);
-    if ((_e116 & 16i) != 0i) {
-        let _e119 = (*x);
-        let _e120 = r;
-        r = (_e120 * _e119);
+    let _e115 = (*x);
+    (*x) = (_e115 * _e114);
+    let _e117 = (*n);
+    if ((_e117 & 8i) != 0i) {
+        let _e120 = (*x);
+        let _e121 = r;
+        r = (_e121 * _e120);
     }
-    let _e122 = r;
-    return _e122;
+    let _e123 = (*x);
+    let _e124 = (*x);
+    (*x) = (_e124 * _e123);
+    let _e126 = (*n);
+    if ((_e126 & 16i) != 0i) {
+        let _e129 = (*x);
+        let _e130 = r;
+        r = (_e130 * _e129);
+    }
+    let _e132 = r;
+    return _e132;
 }
 
 fn hexcBlendWeights_normal(w: ptr<function, vec3<f32>>, M: ptr<function, vec3<f32>>) -> vec3<f32> {
@@ -115,64 +115,64 @@ fn hexcBlendWeights_normal(w: ptr<function, vec3<f32>>, M: ptr<function, vec3<f3
     var sum: f32;
     var local: vec3<f32>;
 
-    let _e85 = (*w);
-    param = _e85;
+    let _e95 = (*w);
+    param = _e95;
     param_1 = 7i;
-    let _e86 = hexcPowInt((&param), (&param_1));
-    wg = _e86;
-    let _e87 = (*M);
-    let _e88 = wg;
-    W_1 = (_e87 * _e88);
-    let _e91 = W_1[0u];
-    let _e93 = W_1[1u];
-    let _e96 = W_1[2u];
-    sum = ((_e91 + _e93) + _e96);
-    let _e98 = sum;
-    if (_e98 > 0f) {
-        let _e100 = W_1;
-        let _e101 = sum;
-        local = (_e100 / vec3(_e101));
+    let _e96 = hexcPowInt((&param), (&param_1));
+    wg = _e96;
+    let _e97 = (*M);
+    let _e98 = wg;
+    W_1 = (_e97 * _e98);
+    let _e101 = W_1[0u];
+    let _e103 = W_1[1u];
+    let _e106 = W_1[2u];
+    sum = ((_e101 + _e103) + _e106);
+    let _e108 = sum;
+    if (_e108 > 0f) {
+        let _e110 = W_1;
+        let _e111 = sum;
+        local = (_e110 / vec3(_e111));
     } else {
-        let _e104 = wg;
-        let _e106 = wg[0u];
-        let _e108 = wg[1u];
-        let _e111 = wg[2u];
-        local = (_e104 / vec3(((_e106 + _e108) + _e111)));
+        let _e114 = wg;
+        let _e116 = wg[0u];
+        let _e118 = wg[1u];
+        let _e121 = wg[2u];
+        local = (_e114 / vec3(((_e116 + _e118) + _e121)));
     }
-    let _e115 = local;
-    W_1 = _e115;
-    let _e116 = W_1;
-    return _e116;
+    let _e125 = local;
+    W_1 = _e125;
+    let _e126 = W_1;
+    return _e126;
 }
 
 fn hexcMetric_normal(Dw: ptr<function, vec3<f32>>) -> vec3<f32> {
-    let _e78 = (*Dw);
-    let _e81 = hexcParams.normal_falloffcontrast;
-    return mix(vec3<f32>(1f, 1f, 1f), max(_e78, vec3<f32>(0f, 0f, 0f)), vec3(_e81));
+    let _e88 = (*Dw);
+    let _e91 = hexcParams.normal_falloffcontrast;
+    return mix(vec3<f32>(1f, 1f, 1f), max(_e88, vec3<f32>(0f, 0f, 0f)), vec3(_e91));
 }
 
 fn hexcRotateToTile(v: ptr<function, vec2<f32>>, cs: ptr<function, vec2<f32>>) -> vec2<f32> {
-    let _e80 = (*v)[0u];
-    let _e82 = (*cs)[0u];
-    let _e85 = (*v)[1u];
-    let _e87 = (*cs)[1u];
-    let _e91 = (*v)[0u];
-    let _e94 = (*cs)[1u];
-    let _e97 = (*v)[1u];
-    let _e99 = (*cs)[0u];
-    return vec2<f32>(((_e80 * _e82) + (_e85 * _e87)), ((-(_e91) * _e94) + (_e97 * _e99)));
+    let _e90 = (*v)[0u];
+    let _e92 = (*cs)[0u];
+    let _e95 = (*v)[1u];
+    let _e97 = (*cs)[1u];
+    let _e101 = (*v)[0u];
+    let _e104 = (*cs)[1u];
+    let _e107 = (*v)[1u];
+    let _e109 = (*cs)[0u];
+    return vec2<f32>(((_e90 * _e92) + (_e95 * _e97)), ((-(_e101) * _e104) + (_e107 * _e109)));
 }
 
 fn hexcRotateFromTile(d: ptr<function, vec2<f32>>, cs_1: ptr<function, vec2<f32>>) -> vec2<f32> {
     var param_2: vec2<f32>;
     var param_3: vec2<f32>;
 
-    let _e81 = (*d);
-    param_2 = _e81;
-    let _e82 = (*cs_1);
-    param_3 = _e82;
-    let _e83 = hexcRotateToTile((&param_2), (&param_3));
-    return _e83;
+    let _e91 = (*d);
+    param_2 = _e91;
+    let _e92 = (*cs_1);
+    param_3 = _e92;
+    let _e93 = hexcRotateToTile((&param_2), (&param_3));
+    return _e93;
 }
 
 fn hexcNormalToDeriv(vM: ptr<function, vec3<f32>>, flipY: ptr<function, bool>) -> vec2<f32> {
@@ -180,24 +180,24 @@ fn hexcNormalToDeriv(vM: ptr<function, vec3<f32>>, flipY: ptr<function, bool>) -
     var zMa: f32;
     var local_1: f32;
 
-    let _e82 = (*vM);
-    vMa = abs(_e82);
-    let _e85 = vMa[2u];
-    let _e87 = vMa[0u];
-    let _e89 = vMa[1u];
-    zMa = max(max(_e85, (0.0078125f * max(_e87, _e89))), 0.00000000000000000001f);
-    let _e95 = (*vM)[0u];
-    let _e96 = (*flipY);
-    if _e96 {
-        let _e98 = (*vM)[1u];
-        local_1 = -(_e98);
+    let _e92 = (*vM);
+    vMa = abs(_e92);
+    let _e95 = vMa[2u];
+    let _e97 = vMa[0u];
+    let _e99 = vMa[1u];
+    zMa = max(max(_e95, (0.0078125f * max(_e97, _e99))), 0.00000000000000000001f);
+    let _e105 = (*vM)[0u];
+    let _e106 = (*flipY);
+    if _e106 {
+        let _e108 = (*vM)[1u];
+        local_1 = -(_e108);
     } else {
-        let _e101 = (*vM)[1u];
-        local_1 = _e101;
+        let _e111 = (*vM)[1u];
+        local_1 = _e111;
     }
-    let _e102 = local_1;
-    let _e105 = zMa;
-    return (-(vec2<f32>(_e95, _e102)) / vec2(_e105));
+    let _e112 = local_1;
+    let _e115 = zMa;
+    return (-(vec2<f32>(_e105, _e112)) / vec2(_e115));
 }
 
 fn hexcTapDeriv(texel: ptr<function, vec4<f32>>, p: ptr<function, HexcTap>, scaled: ptr<function, bool>, flipY_1: ptr<function, bool>) -> vec2<f32> {
@@ -208,43 +208,43 @@ fn hexcTapDeriv(texel: ptr<function, vec4<f32>>, p: ptr<function, HexcTap>, scal
     var param_7: vec2<f32>;
     var local_2: vec2<f32>;
 
-    let _e87 = (*texel);
-    param_4 = ((_e87.xyz * 2f) - vec3(1f));
-    let _e92 = (*flipY_1);
-    param_5 = _e92;
-    let _e93 = hexcNormalToDeriv((&param_4), (&param_5));
-    param_6 = _e93;
-    let _e95 = (*p).rot;
-    param_7 = _e95;
-    let _e96 = hexcRotateFromTile((&param_6), (&param_7));
-    d_1 = _e96;
-    let _e97 = (*scaled);
-    if _e97 {
-        let _e98 = d_1;
-        let _e100 = (*p).invScale;
-        local_2 = (_e98 * _e100);
+    let _e97 = (*texel);
+    param_4 = ((_e97.xyz * 2f) - vec3(1f));
+    let _e102 = (*flipY_1);
+    param_5 = _e102;
+    let _e103 = hexcNormalToDeriv((&param_4), (&param_5));
+    param_6 = _e103;
+    let _e105 = (*p).rot;
+    param_7 = _e105;
+    let _e106 = hexcRotateFromTile((&param_6), (&param_7));
+    d_1 = _e106;
+    let _e107 = (*scaled);
+    if _e107 {
+        let _e108 = d_1;
+        let _e110 = (*p).invScale;
+        local_2 = (_e108 * _e110);
     } else {
-        let _e102 = d_1;
-        local_2 = _e102;
+        let _e112 = d_1;
+        local_2 = _e112;
     }
-    let _e103 = local_2;
-    return _e103;
+    let _e113 = local_2;
+    return _e113;
 }
 
 fn hexcFetch_albedo(tex: texture_2d<f32>, samp: sampler, p_1: ptr<function, HexcTap>, lod: ptr<function, f32>) -> vec4<f32> {
-    let _e82 = (*p_1).st;
-    let _e84 = (*p_1).dx;
-    let _e86 = (*p_1).dy;
-    let _e87 = textureSampleGrad(tex, samp, _e82, _e84, _e86);
-    return _e87;
+    let _e92 = (*p_1).st;
+    let _e94 = (*p_1).dx;
+    let _e96 = (*p_1).dy;
+    let _e97 = textureSampleGrad(tex, samp, _e92, _e94, _e96);
+    return _e97;
 }
 
 fn hexcTileLods_albedo(tex_1: texture_2d<f32>, samp_1: sampler, t: ptr<function, HexcTiles>) -> vec3<f32> {
     var lods: vec3<f32>;
 
     lods = vec3<f32>(0f, 0f, 0f);
-    let _e81 = lods;
-    return _e81;
+    let _e91 = lods;
+    return _e91;
 }
 
 fn hexcFetched_albedo(w_1: ptr<function, vec3<f32>>) -> vec3<bool> {
@@ -285,89 +285,89 @@ fn hexcDeriv_normal(tex_2: texture_2d<f32>, samp_2: sampler, t_1: ptr<function, 
     var param_31: vec3<f32>;
     var param_32: vec3<i32>;
 
-    let _e116 = (*t_1).w;
-    param_8 = _e116;
-    let _e117 = hexcFetched_albedo((&param_8));
-    f = _e117;
-    let _e118 = (*t_1);
-    param_9 = _e118;
-    let _e119 = hexcTileLods_albedo(tex_2, samp_2, (&param_9));
-    lod_1 = _e119;
+    let _e126 = (*t_1).w;
+    param_8 = _e126;
+    let _e127 = hexcFetched_albedo((&param_8));
+    f = _e127;
+    let _e128 = (*t_1);
+    param_9 = _e128;
+    let _e129 = hexcTileLods_albedo(tex_2, samp_2, (&param_9));
+    lod_1 = _e129;
     d1_ = vec2<f32>(0f, 0f);
     d2_ = vec2<f32>(0f, 0f);
     d3_ = vec2<f32>(0f, 0f);
-    let _e122 = (*t_1).tap[0i];
-    param_10 = _e122;
-    let _e124 = lod_1[0u];
-    param_11 = _e124;
-    let _e125 = hexcFetch_albedo(tex_2, samp_2, (&param_10), (&param_11));
-    param_12 = _e125;
-    let _e128 = (*t_1).tap[0i];
-    param_13 = _e128;
-    let _e130 = (*t_1).scaled;
-    param_14 = _e130;
-    let _e131 = (*flipY_2);
-    param_15 = _e131;
-    let _e132 = hexcTapDeriv((&param_12), (&param_13), (&param_14), (&param_15));
-    d1_ = _e132;
-    let _e135 = (*t_1).tap[1i];
-    param_16 = _e135;
-    let _e137 = lod_1[1u];
-    param_17 = _e137;
-    let _e138 = hexcFetch_albedo(tex_2, samp_2, (&param_16), (&param_17));
-    param_18 = _e138;
-    let _e141 = (*t_1).tap[1i];
-    param_19 = _e141;
-    let _e143 = (*t_1).scaled;
-    param_20 = _e143;
-    let _e144 = (*flipY_2);
-    param_21 = _e144;
-    let _e145 = hexcTapDeriv((&param_18), (&param_19), (&param_20), (&param_21));
-    d2_ = _e145;
-    let _e148 = (*t_1).tap[2i];
-    param_22 = _e148;
-    let _e150 = lod_1[2u];
-    param_23 = _e150;
-    let _e151 = hexcFetch_albedo(tex_2, samp_2, (&param_22), (&param_23));
-    param_24 = _e151;
-    let _e154 = (*t_1).tap[2i];
-    param_25 = _e154;
-    let _e156 = (*t_1).scaled;
-    param_26 = _e156;
-    let _e157 = (*flipY_2);
-    param_27 = _e157;
-    let _e158 = hexcTapDeriv((&param_24), (&param_25), (&param_26), (&param_27));
-    d3_ = _e158;
-    let _e159 = d1_;
-    let _e160 = d1_;
-    let _e162 = d2_;
-    let _e163 = d2_;
-    let _e165 = d3_;
-    let _e166 = d3_;
-    D = vec3<f32>(dot(_e159, _e160), dot(_e162, _e163), dot(_e165, _e166));
-    let _e170 = (*t_1).w;
-    let _e171 = f;
-    let _e174 = D;
-    let _e175 = D;
-    param_28 = sqrt((_e174 / (vec3(1f) + _e175)));
-    let _e180 = hexcMetric_normal((&param_28));
-    param_29 = (_e170 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e171));
-    param_30 = _e180;
-    let _e181 = hexcBlendWeights_normal((&param_29), (&param_30));
-    W_2 = _e181;
-    let _e182 = W_2;
-    param_31 = _e182;
-    let _e184 = (*t_1).channel;
-    param_32 = _e184;
-    let _e185 = hexcShowWeights((&param_31), (&param_32));
-    (*weights) = _e185;
-    let _e187 = W_2[0u];
-    let _e188 = d1_;
-    let _e191 = W_2[1u];
-    let _e192 = d2_;
-    let _e196 = W_2[2u];
-    let _e197 = d3_;
-    return (((_e188 * _e187) + (_e192 * _e191)) + (_e197 * _e196));
+    let _e132 = (*t_1).tap[0i];
+    param_10 = _e132;
+    let _e134 = lod_1[0u];
+    param_11 = _e134;
+    let _e135 = hexcFetch_albedo(tex_2, samp_2, (&param_10), (&param_11));
+    param_12 = _e135;
+    let _e138 = (*t_1).tap[0i];
+    param_13 = _e138;
+    let _e140 = (*t_1).scaled;
+    param_14 = _e140;
+    let _e141 = (*flipY_2);
+    param_15 = _e141;
+    let _e142 = hexcTapDeriv((&param_12), (&param_13), (&param_14), (&param_15));
+    d1_ = _e142;
+    let _e145 = (*t_1).tap[1i];
+    param_16 = _e145;
+    let _e147 = lod_1[1u];
+    param_17 = _e147;
+    let _e148 = hexcFetch_albedo(tex_2, samp_2, (&param_16), (&param_17));
+    param_18 = _e148;
+    let _e151 = (*t_1).tap[1i];
+    param_19 = _e151;
+    let _e153 = (*t_1).scaled;
+    param_20 = _e153;
+    let _e154 = (*flipY_2);
+    param_21 = _e154;
+    let _e155 = hexcTapDeriv((&param_18), (&param_19), (&param_20), (&param_21));
+    d2_ = _e155;
+    let _e158 = (*t_1).tap[2i];
+    param_22 = _e158;
+    let _e160 = lod_1[2u];
+    param_23 = _e160;
+    let _e161 = hexcFetch_albedo(tex_2, samp_2, (&param_22), (&param_23));
+    param_24 = _e161;
+    let _e164 = (*t_1).tap[2i];
+    param_25 = _e164;
+    let _e166 = (*t_1).scaled;
+    param_26 = _e166;
+    let _e167 = (*flipY_2);
+    param_27 = _e167;
+    let _e168 = hexcTapDeriv((&param_24), (&param_25), (&param_26), (&param_27));
+    d3_ = _e168;
+    let _e169 = d1_;
+    let _e170 = d1_;
+    let _e172 = d2_;
+    let _e173 = d2_;
+    let _e175 = d3_;
+    let _e176 = d3_;
+    D = vec3<f32>(dot(_e169, _e170), dot(_e172, _e173), dot(_e175, _e176));
+    let _e180 = (*t_1).w;
+    let _e181 = f;
+    let _e184 = D;
+    let _e185 = D;
+    param_28 = sqrt((_e184 / (vec3(1f) + _e185)));
+    let _e190 = hexcMetric_normal((&param_28));
+    param_29 = (_e180 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e181));
+    param_30 = _e190;
+    let _e191 = hexcBlendWeights_normal((&param_29), (&param_30));
+    W_2 = _e191;
+    let _e192 = W_2;
+    param_31 = _e192;
+    let _e194 = (*t_1).channel;
+    param_32 = _e194;
+    let _e195 = hexcShowWeights((&param_31), (&param_32));
+    (*weights) = _e195;
+    let _e197 = W_2[0u];
+    let _e198 = d1_;
+    let _e201 = W_2[1u];
+    let _e202 = d2_;
+    let _e206 = W_2[2u];
+    let _e207 = d3_;
+    return (((_e198 * _e197) + (_e202 * _e201)) + (_e207 * _e206));
 }
 
 fn hexcHexChannels(v1_: ptr<function, vec2<i32>>, v3_: ptr<function, vec2<i32>>) -> vec3<i32> {
@@ -380,259 +380,332 @@ fn hexcHexChannels(v1_: ptr<function, vec2<i32>>, v3_: ptr<function, vec2<i32>>)
     var vl: i32;
     var local_5: i32;
 
-    let _e88 = (*v1_)[0u];
-    let _e90 = (*v1_)[1u];
-    d_2 = (_e88 - _e90);
-    let _e92 = d_2;
-    let _e93 = abs(_e92);
-    a = (_e93 - (i32(floor((f32(_e93) / f32(3i)))) * 3i));
-    let _e101 = d_2;
-    let _e103 = a;
-    if ((_e101 < 0i) && (_e103 != 0i)) {
-        let _e106 = a;
-        local_3 = (3i - _e106);
+    let _e98 = (*v1_)[0u];
+    let _e100 = (*v1_)[1u];
+    d_2 = (_e98 - _e100);
+    let _e102 = d_2;
+    let _e103 = abs(_e102);
+    a = (_e103 - (i32(floor((f32(_e103) / f32(3i)))) * 3i));
+    let _e111 = d_2;
+    let _e113 = a;
+    if ((_e111 < 0i) && (_e113 != 0i)) {
+        let _e116 = a;
+        local_3 = (3i - _e116);
     } else {
-        let _e108 = a;
-        local_3 = _e108;
+        let _e118 = a;
+        local_3 = _e118;
     }
-    let _e109 = local_3;
-    i1_ = _e109;
-    let _e110 = i1_;
-    if (_e110 < 2i) {
-        let _e112 = i1_;
-        local_4 = (_e112 + 1i);
+    let _e119 = local_3;
+    i1_ = _e119;
+    let _e120 = i1_;
+    if (_e120 < 2i) {
+        let _e122 = i1_;
+        local_4 = (_e122 + 1i);
     } else {
         local_4 = 0i;
     }
-    let _e114 = local_4;
-    vh = _e114;
-    let _e115 = i1_;
-    if (_e115 > 0i) {
-        let _e117 = i1_;
-        local_5 = (_e117 - 1i);
+    let _e124 = local_4;
+    vh = _e124;
+    let _e125 = i1_;
+    if (_e125 > 0i) {
+        let _e127 = i1_;
+        local_5 = (_e127 - 1i);
     } else {
         local_5 = 2i;
     }
-    let _e119 = local_5;
-    vl = _e119;
-    let _e120 = i1_;
-    let _e122 = (*v1_)[0u];
-    let _e124 = (*v3_)[0u];
-    let _e126 = vl;
-    let _e127 = vh;
-    let _e130 = (*v1_)[0u];
-    let _e132 = (*v3_)[0u];
-    let _e134 = vh;
-    let _e135 = vl;
-    return vec3<i32>(_e120, select(_e127, _e126, (_e122 < _e124)), select(_e135, _e134, (_e130 < _e132)));
+    let _e129 = local_5;
+    vl = _e129;
+    let _e130 = i1_;
+    let _e132 = (*v1_)[0u];
+    let _e134 = (*v3_)[0u];
+    let _e136 = vl;
+    let _e137 = vh;
+    let _e140 = (*v1_)[0u];
+    let _e142 = (*v3_)[0u];
+    let _e144 = vh;
+    let _e145 = vl;
+    return vec3<i32>(_e130, select(_e137, _e136, (_e132 < _e134)), select(_e145, _e144, (_e140 < _e142)));
 }
 
 fn hexcToTile_albedo(v_1: ptr<function, vec2<f32>>, p_2: ptr<function, HexcTap>) -> vec2<f32> {
     var param_33: vec2<f32>;
     var param_34: vec2<f32>;
 
-    let _e81 = (*v_1);
-    param_33 = _e81;
-    let _e83 = (*p_2).rot;
-    param_34 = _e83;
-    let _e84 = hexcRotateToTile((&param_33), (&param_34));
-    (*v_1) = _e84;
-    let _e85 = (*v_1);
-    return _e85;
+    let _e91 = (*v_1);
+    param_33 = _e91;
+    let _e93 = (*p_2).rot;
+    param_34 = _e93;
+    let _e94 = hexcRotateToTile((&param_33), (&param_34));
+    (*v_1) = _e94;
+    let _e95 = (*v_1);
+    return _e95;
+}
+
+fn hexcCosSin(angle: ptr<function, f32>) -> vec2<f32> {
+    var k: f32;
+    var r_1: f32;
+    var r2_: f32;
+    var s: f32;
+    var c: f32;
+    var q: i32;
+    var cs_2: vec2<f32>;
+    var local_6: vec2<f32>;
+    var local_7: vec2<f32>;
+
+    let _e97 = (*angle);
+    k = round((_e97 * 0.63661975f));
+    let _e100 = (*angle);
+    let _e101 = k;
+    r_1 = (_e100 - (_e101 * 1.5707964f));
+    let _e104 = r_1;
+    let _e105 = r_1;
+    r2_ = (_e104 * _e105);
+    let _e107 = r_1;
+    let _e108 = r2_;
+    let _e109 = r2_;
+    let _e110 = r2_;
+    let _e111 = r2_;
+    s = (_e107 * (1f + (_e108 * (-0.16666667f + (_e109 * (0.008333334f + (_e110 * (-0.0001984127f + (_e111 * 0.0000027557319f)))))))));
+    let _e121 = r2_;
+    let _e122 = r2_;
+    let _e123 = r2_;
+    let _e124 = r2_;
+    c = (1f + (_e121 * (-0.5f + (_e122 * (0.041666668f + (_e123 * (-0.0013888889f + (_e124 * 0.000024801588f))))))));
+    let _e133 = k;
+    q = (i32(_e133) & 3i);
+    let _e136 = q;
+    if ((_e136 & 1i) != 0i) {
+        let _e139 = s;
+        let _e141 = c;
+        local_6 = vec2<f32>(-(_e139), _e141);
+    } else {
+        let _e143 = c;
+        let _e144 = s;
+        local_6 = vec2<f32>(_e143, _e144);
+    }
+    let _e146 = local_6;
+    cs_2 = _e146;
+    let _e147 = q;
+    if ((_e147 & 2i) != 0i) {
+        let _e150 = cs_2;
+        local_7 = -(_e150);
+    } else {
+        let _e152 = cs_2;
+        local_7 = _e152;
+    }
+    let _e153 = local_7;
+    return _e153;
 }
 
 fn hexcPcg3d(v_2: ptr<function, vec3<u32>>) -> vec3<u32> {
-    let _e78 = (*v_2);
-    (*v_2) = ((_e78 * vec3(1664525u)) + vec3(1013904223u));
-    let _e84 = (*v_2)[1u];
-    let _e86 = (*v_2)[2u];
-    let _e89 = (*v_2)[0u];
-    (*v_2)[0u] = (_e89 + (_e84 * _e86));
-    let _e93 = (*v_2)[2u];
-    let _e95 = (*v_2)[0u];
-    let _e98 = (*v_2)[1u];
-    (*v_2)[1u] = (_e98 + (_e93 * _e95));
-    let _e102 = (*v_2)[0u];
-    let _e104 = (*v_2)[1u];
-    let _e107 = (*v_2)[2u];
-    (*v_2)[2u] = (_e107 + (_e102 * _e104));
-    let _e110 = (*v_2);
-    let _e114 = (*v_2);
-    (*v_2) = (_e114 ^ (_e110 >> bitcast<vec3<u32>>(vec3(16u))));
-    let _e117 = (*v_2)[1u];
-    let _e119 = (*v_2)[2u];
-    let _e122 = (*v_2)[0u];
-    (*v_2)[0u] = (_e122 + (_e117 * _e119));
-    let _e126 = (*v_2)[2u];
-    let _e128 = (*v_2)[0u];
-    let _e131 = (*v_2)[1u];
-    (*v_2)[1u] = (_e131 + (_e126 * _e128));
-    let _e135 = (*v_2)[0u];
-    let _e137 = (*v_2)[1u];
-    let _e140 = (*v_2)[2u];
-    (*v_2)[2u] = (_e140 + (_e135 * _e137));
-    let _e143 = (*v_2);
-    return _e143;
+    let _e88 = (*v_2);
+    (*v_2) = ((_e88 * vec3(1664525u)) + vec3(1013904223u));
+    let _e94 = (*v_2)[1u];
+    let _e96 = (*v_2)[2u];
+    let _e99 = (*v_2)[0u];
+    (*v_2)[0u] = (_e99 + (_e94 * _e96));
+    let _e103 = (*v_2)[2u];
+    let _e105 = (*v_2)[0u];
+    let _e108 = (*v_2)[1u];
+    (*v_2)[1u] = (_e108 + (_e103 * _e105));
+    let _e112 = (*v_2)[0u];
+    let _e114 = (*v_2)[1u];
+    let _e117 = (*v_2)[2u];
+    (*v_2)[2u] = (_e117 + (_e112 * _e114));
+    let _e120 = (*v_2);
+    let _e124 = (*v_2);
+    (*v_2) = (_e124 ^ (_e120 >> bitcast<vec3<u32>>(vec3(16u))));
+    let _e127 = (*v_2)[1u];
+    let _e129 = (*v_2)[2u];
+    let _e132 = (*v_2)[0u];
+    (*v_2)[0u] = (_e132 + (_e127 * _e129));
+    let _e136 = (*v_2)[2u];
+    let _e138 = (*v_2)[0u];
+    let _e141 = (*v_2)[1u];
+    (*v_2)[1u] = (_e141 + (_e136 * _e138));
+    let _e145 = (*v_2)[0u];
+    let _e147 = (*v_2)[1u];
+    let _e150 = (*v_2)[2u];
+    (*v_2)[2u] = (_e150 + (_e145 * _e147));
+    let _e153 = (*v_2);
+    return _e153;
 }
 
-fn hexcStableTile_albedo(id: ptr<function, vec2<i32>>, offset: ptr<function, vec2<f32>>, rot: ptr<function, vec2<f32>>, invScale: ptr<function, f32>) {
+fn hexcStableTile_albedo(id: ptr<function, vec2<i32>>, aboutOrigin: ptr<function, bool>, offset: ptr<function, vec2<f32>>, rot: ptr<function, vec2<f32>>, invScale: ptr<function, f32>) {
     var u: vec3<f32>;
     var param_35: vec3<u32>;
-    var angle: f32;
+    var angle_1: f32;
+    var local_8: vec2<f32>;
+    var param_36: f32;
 
-    let _e84 = (*id);
-    let _e85 = bitcast<vec2<u32>>(_e84);
-    param_35 = vec3<u32>(_e85.x, _e85.y, 0u);
-    let _e89 = hexcPcg3d((&param_35));
-    u = (vec3<f32>((_e89 >> bitcast<vec3<u32>>(vec3(8u)))) * 0.000000059604645f);
-    let _e95 = u;
-    (*offset) = _e95.xy;
-    let _e98 = u[2u];
-    let _e103 = hexcParams.albedo_rotation;
-    angle = ((((_e98 * 2f) - 1f) * 3.1415927f) * _e103);
+    let _e97 = (*id);
+    let _e98 = bitcast<vec2<u32>>(_e97);
+    param_35 = vec3<u32>(_e98.x, _e98.y, 0u);
+    let _e102 = hexcPcg3d((&param_35));
+    u = (vec3<f32>((_e102 >> bitcast<vec3<u32>>(vec3(8u)))) * 0.000000059604645f);
+    let _e108 = u;
+    (*offset) = _e108.xy;
+    let _e111 = u[2u];
+    let _e116 = hexcParams.albedo_rotation;
+    angle_1 = ((((_e111 * 2f) - 1f) * 3.1415927f) * _e116);
     (*invScale) = 1f;
-    let _e105 = angle;
-    let _e107 = angle;
-    (*rot) = vec2<f32>(cos(_e105), sin(_e107));
+    let _e118 = (*aboutOrigin);
+    if _e118 {
+        let _e119 = angle_1;
+        param_36 = _e119;
+        let _e120 = hexcCosSin((&param_36));
+        local_8 = _e120;
+    } else {
+        let _e121 = angle_1;
+        let _e123 = angle_1;
+        local_8 = vec2<f32>(cos(_e121), sin(_e123));
+    }
+    let _e126 = local_8;
+    (*rot) = _e126;
     return;
 }
 
-fn hexcPlaceTile_albedo(id_1: ptr<function, vec2<i32>>, d_3: ptr<function, vec2<f32>>, c: ptr<function, vec2<f32>>, dSTdx: ptr<function, vec2<f32>>, dSTdy: ptr<function, vec2<f32>>) -> HexcTap {
+fn hexcPlaceTile_albedo(id_1: ptr<function, vec2<i32>>, d_3: ptr<function, vec2<f32>>, c_1: ptr<function, vec2<f32>>, dSTdx: ptr<function, vec2<f32>>, dSTdy: ptr<function, vec2<f32>>, aboutOrigin_1: ptr<function, bool>) -> HexcTap {
     var offset_1: vec2<f32>;
     var p_3: HexcTap;
-    var param_36: vec2<i32>;
-    var param_37: vec2<f32>;
-    var param_38: vec2<f32>;
-    var param_39: f32;
+    var param_37: vec2<i32>;
+    var param_38: bool;
+    var param_39: vec2<f32>;
     var param_40: vec2<f32>;
-    var param_41: HexcTap;
+    var param_41: f32;
     var param_42: vec2<f32>;
     var param_43: HexcTap;
     var param_44: vec2<f32>;
     var param_45: HexcTap;
+    var param_46: vec2<f32>;
+    var param_47: HexcTap;
 
-    let _e94 = (*id_1);
-    param_36 = _e94;
-    hexcStableTile_albedo((&param_36), (&param_37), (&param_38), (&param_39));
-    let _e95 = param_37;
-    offset_1 = _e95;
-    let _e96 = param_38;
-    p_3.rot = _e96;
-    let _e98 = param_39;
-    p_3.invScale = _e98;
-    let _e100 = (*d_3);
-    param_40 = _e100;
-    let _e101 = p_3;
-    param_41 = _e101;
-    let _e102 = hexcToTile_albedo((&param_40), (&param_41));
-    let _e103 = (*c);
-    let _e105 = offset_1;
-    p_3.st = ((_e102 + _e103) + _e105);
-    let _e108 = (*dSTdx);
-    param_42 = _e108;
-    let _e109 = p_3;
-    param_43 = _e109;
-    let _e110 = hexcToTile_albedo((&param_42), (&param_43));
-    p_3.dx = _e110;
-    let _e112 = (*dSTdy);
-    param_44 = _e112;
-    let _e113 = p_3;
-    param_45 = _e113;
-    let _e114 = hexcToTile_albedo((&param_44), (&param_45));
-    p_3.dy = _e114;
-    let _e116 = p_3;
-    return _e116;
+    let _e106 = (*id_1);
+    param_37 = _e106;
+    let _e107 = (*aboutOrigin_1);
+    param_38 = _e107;
+    hexcStableTile_albedo((&param_37), (&param_38), (&param_39), (&param_40), (&param_41));
+    let _e108 = param_39;
+    offset_1 = _e108;
+    let _e109 = param_40;
+    p_3.rot = _e109;
+    let _e111 = param_41;
+    p_3.invScale = _e111;
+    let _e113 = (*d_3);
+    param_42 = _e113;
+    let _e114 = p_3;
+    param_43 = _e114;
+    let _e115 = hexcToTile_albedo((&param_42), (&param_43));
+    let _e116 = (*c_1);
+    let _e118 = offset_1;
+    p_3.st = ((_e115 + _e116) + _e118);
+    let _e121 = (*dSTdx);
+    param_44 = _e121;
+    let _e122 = p_3;
+    param_45 = _e122;
+    let _e123 = hexcToTile_albedo((&param_44), (&param_45));
+    p_3.dx = _e123;
+    let _e125 = (*dSTdy);
+    param_46 = _e125;
+    let _e126 = p_3;
+    param_47 = _e126;
+    let _e127 = hexcToTile_albedo((&param_46), (&param_47));
+    p_3.dy = _e127;
+    let _e129 = p_3;
+    return _e129;
 }
 
-fn hexcStableCentreInPeriod(local_6: ptr<function, vec2<i32>>) -> vec2<f32> {
-    let _e79 = (*local_6)[0u];
-    let _e82 = (*local_6)[1u];
-    let _e85 = (((28i * _e79) + (14i * _e82)) + 194i);
-    let _e96 = (*local_6)[1u];
-    return vec2<f32>((f32((_e85 - (i32(floor((f32(_e85) / f32(97i)))) * 97i))) / 97f), (f32((_e96 & 3i)) * 0.25f));
+fn hexcStableCentreInPeriod(local_9: ptr<function, vec2<i32>>) -> vec2<f32> {
+    let _e89 = (*local_9)[0u];
+    let _e92 = (*local_9)[1u];
+    let _e95 = (((28i * _e89) + (14i * _e92)) + 194i);
+    let _e106 = (*local_9)[1u];
+    return vec2<f32>((f32((_e95 - (i32(floor((f32(_e95) / f32(97i)))) * 97i))) / 97f), (f32((_e106 & 3i)) * 0.25f));
 }
 
-fn hexcStableCentre(local_7: ptr<function, vec2<i32>>) -> vec2<f32> {
-    let _e79 = (*local_7)[0u];
-    let _e82 = (*local_7)[1u];
-    let _e88 = (*local_7)[1u];
-    return vec2<f32>(((f32(_e79) + (0.5f * f32(_e82))) / 3.4642856f), (0.25f * f32(_e88)));
+fn hexcStableCentre(local_10: ptr<function, vec2<i32>>) -> vec2<f32> {
+    let _e89 = (*local_10)[0u];
+    let _e92 = (*local_10)[1u];
+    let _e98 = (*local_10)[1u];
+    return vec2<f32>(((f32(_e89) + (0.5f * f32(_e92))) / 3.4642856f), (0.25f * f32(_e98)));
 }
 
-fn hexcStableTap_albedo(local_8: ptr<function, vec2<i32>>, shift: ptr<function, vec2<u32>>, r_1: ptr<function, vec2<f32>>, dSTdx_1: ptr<function, vec2<f32>>, dSTdy_1: ptr<function, vec2<f32>>, id_2: ptr<function, vec2<i32>>) -> HexcTap {
-    var param_46: vec2<i32>;
-    var param_47: vec2<i32>;
+fn hexcStableTap_albedo(local_11: ptr<function, vec2<i32>>, shift: ptr<function, vec2<u32>>, r_2: ptr<function, vec2<f32>>, dSTdx_1: ptr<function, vec2<f32>>, dSTdy_1: ptr<function, vec2<f32>>, id_2: ptr<function, vec2<i32>>) -> HexcTap {
     var param_48: vec2<i32>;
-    var param_49: vec2<f32>;
-    var param_50: vec2<f32>;
+    var param_49: vec2<i32>;
+    var param_50: vec2<i32>;
     var param_51: vec2<f32>;
     var param_52: vec2<f32>;
+    var param_53: vec2<f32>;
+    var param_54: vec2<f32>;
+    var param_55: bool;
 
-    let _e90 = (*local_8);
-    let _e92 = (*shift);
-    (*id_2) = bitcast<vec2<i32>>((bitcast<vec2<u32>>(_e90) + _e92));
-    let _e95 = (*r_1);
-    let _e96 = (*local_8);
-    param_46 = _e96;
-    let _e97 = hexcStableCentre((&param_46));
-    let _e99 = (*local_8);
-    param_47 = _e99;
-    let _e100 = hexcStableCentreInPeriod((&param_47));
-    let _e101 = (*id_2);
-    param_48 = _e101;
-    param_49 = (_e95 - _e97);
-    param_50 = _e100;
-    let _e102 = (*dSTdx_1);
-    param_51 = _e102;
-    let _e103 = (*dSTdy_1);
-    param_52 = _e103;
-    let _e104 = hexcPlaceTile_albedo((&param_48), (&param_49), (&param_50), (&param_51), (&param_52));
-    return _e104;
+    let _e101 = (*local_11);
+    let _e103 = (*shift);
+    (*id_2) = bitcast<vec2<i32>>((bitcast<vec2<u32>>(_e101) + _e103));
+    let _e106 = (*r_2);
+    let _e107 = (*local_11);
+    param_48 = _e107;
+    let _e108 = hexcStableCentre((&param_48));
+    let _e110 = (*local_11);
+    param_49 = _e110;
+    let _e111 = hexcStableCentreInPeriod((&param_49));
+    let _e112 = (*id_2);
+    param_50 = _e112;
+    param_51 = (_e106 - _e108);
+    param_52 = _e111;
+    let _e113 = (*dSTdx_1);
+    param_53 = _e113;
+    let _e114 = (*dSTdy_1);
+    param_54 = _e114;
+    param_55 = false;
+    let _e115 = hexcPlaceTile_albedo((&param_50), (&param_51), (&param_52), (&param_53), (&param_54), (&param_55));
+    return _e115;
 }
 
 fn hexcTriangle(skewed: ptr<function, vec2<f32>>, w_2: ptr<function, vec3<f32>>, id_3: ptr<function, array<vec2<i32>, 3>>) {
     var baseId: vec2<i32>;
     var temp: vec3<f32>;
-    var s: f32;
+    var s_1: f32;
     var s2_: f32;
     var si: i32;
 
-    let _e85 = (*skewed);
-    baseId = vec2<i32>(floor(_e85));
-    let _e88 = (*skewed);
-    let _e89 = (*skewed);
-    let _e91 = (_e88 - floor(_e89));
-    temp = vec3<f32>(_e91.x, _e91.y, 0f);
-    let _e96 = temp[0u];
-    let _e99 = temp[1u];
-    temp[2u] = ((1f - _e96) - _e99);
-    let _e103 = temp[2u];
-    s = step(0f, -(_e103));
-    let _e106 = s;
-    s2_ = ((2f * _e106) - 1f);
-    let _e110 = temp[2u];
-    let _e112 = s2_;
-    let _e114 = s;
-    let _e116 = temp[1u];
-    let _e117 = s2_;
-    let _e120 = s;
-    let _e122 = temp[0u];
-    let _e123 = s2_;
-    (*w_2) = vec3<f32>((-(_e110) * _e112), (_e114 - (_e116 * _e117)), (_e120 - (_e122 * _e123)));
-    let _e127 = s;
-    si = i32(_e127);
-    let _e129 = baseId;
-    let _e130 = si;
-    let _e131 = si;
-    (*id_3)[0i] = (_e129 + vec2<i32>(_e130, _e131));
-    let _e135 = baseId;
-    let _e136 = si;
-    let _e137 = si;
-    (*id_3)[1i] = (_e135 + vec2<i32>(_e136, (1i - _e137)));
-    let _e142 = baseId;
-    let _e143 = si;
-    let _e145 = si;
-    (*id_3)[2i] = (_e142 + vec2<i32>((1i - _e143), _e145));
+    let _e95 = (*skewed);
+    baseId = vec2<i32>(floor(_e95));
+    let _e98 = (*skewed);
+    let _e99 = (*skewed);
+    let _e101 = (_e98 - floor(_e99));
+    temp = vec3<f32>(_e101.x, _e101.y, 0f);
+    let _e106 = temp[0u];
+    let _e109 = temp[1u];
+    temp[2u] = ((1f - _e106) - _e109);
+    let _e113 = temp[2u];
+    s_1 = step(0f, -(_e113));
+    let _e116 = s_1;
+    s2_ = ((2f * _e116) - 1f);
+    let _e120 = temp[2u];
+    let _e122 = s2_;
+    let _e124 = s_1;
+    let _e126 = temp[1u];
+    let _e127 = s2_;
+    let _e130 = s_1;
+    let _e132 = temp[0u];
+    let _e133 = s2_;
+    (*w_2) = vec3<f32>((-(_e120) * _e122), (_e124 - (_e126 * _e127)), (_e130 - (_e132 * _e133)));
+    let _e137 = s_1;
+    si = i32(_e137);
+    let _e139 = baseId;
+    let _e140 = si;
+    let _e141 = si;
+    (*id_3)[0i] = (_e139 + vec2<i32>(_e140, _e141));
+    let _e145 = baseId;
+    let _e146 = si;
+    let _e147 = si;
+    (*id_3)[1i] = (_e145 + vec2<i32>(_e146, (1i - _e147)));
+    let _e152 = baseId;
+    let _e153 = si;
+    let _e155 = si;
+    (*id_3)[2i] = (_e152 + vec2<i32>((1i - _e153), _e155));
     return;
 }
 
@@ -640,690 +713,690 @@ fn hexcTilesStable_albedo(st: ptr<function, vec2<f32>>, dSTdx_2: ptr<function, v
     var t_2: HexcTiles;
     var kx: f32;
     var ky: f32;
-    var r_2: vec2<f32>;
-    var local_9: array<vec2<i32>, 3>;
-    var param_53: vec2<f32>;
-    var param_54: vec3<f32>;
-    var param_55: array<vec2<i32>, 3>;
-    var c_1: vec2<u32>;
+    var r_3: vec2<f32>;
+    var local_12: array<vec2<i32>, 3>;
+    var param_56: vec2<f32>;
+    var param_57: vec3<f32>;
+    var param_58: array<vec2<i32>, 3>;
+    var c_2: vec2<u32>;
     var shift_1: vec2<u32>;
-    var param_56: vec2<i32>;
-    var param_57: vec2<u32>;
-    var param_58: vec2<f32>;
-    var param_59: vec2<f32>;
-    var param_60: vec2<f32>;
-    var param_61: vec2<i32>;
-    var param_62: vec2<i32>;
-    var param_63: vec2<u32>;
-    var param_64: vec2<f32>;
-    var param_65: vec2<f32>;
-    var param_66: vec2<f32>;
-    var param_67: vec2<i32>;
-    var param_68: vec2<i32>;
-    var param_69: vec2<u32>;
-    var param_70: vec2<f32>;
-    var param_71: vec2<f32>;
-    var param_72: vec2<f32>;
-    var param_73: vec2<i32>;
-    var param_74: vec2<i32>;
-    var param_75: vec2<i32>;
+    var param_59: vec2<i32>;
+    var param_60: vec2<u32>;
+    var param_61: vec2<f32>;
+    var param_62: vec2<f32>;
+    var param_63: vec2<f32>;
+    var param_64: vec2<i32>;
+    var param_65: vec2<i32>;
+    var param_66: vec2<u32>;
+    var param_67: vec2<f32>;
+    var param_68: vec2<f32>;
+    var param_69: vec2<f32>;
+    var param_70: vec2<i32>;
+    var param_71: vec2<i32>;
+    var param_72: vec2<u32>;
+    var param_73: vec2<f32>;
+    var param_74: vec2<f32>;
+    var param_75: vec2<f32>;
+    var param_76: vec2<i32>;
+    var param_77: vec2<i32>;
+    var param_78: vec2<i32>;
 
-    let _e111 = (*dSTdx_2);
-    t_2.dx = _e111;
-    let _e113 = (*dSTdy_2);
-    t_2.dy = _e113;
+    let _e121 = (*dSTdx_2);
+    t_2.dx = _e121;
+    let _e123 = (*dSTdy_2);
+    t_2.dy = _e123;
     t_2.scaled = false;
-    let _e117 = (*st)[0u];
-    kx = floor((_e117 / 28f));
-    let _e121 = (*st)[1u];
-    ky = floor(_e121);
-    let _e124 = (*st)[0u];
-    let _e125 = kx;
-    let _e129 = (*st)[1u];
-    let _e130 = ky;
-    r_2 = vec2<f32>((_e124 - (28f * _e125)), (_e129 - _e130));
-    let _e134 = r_2[0u];
-    let _e137 = r_2[1u];
-    let _e141 = r_2[1u];
-    param_53 = vec2<f32>(((3.4642856f * _e134) - (2f * _e137)), (4f * _e141));
-    hexcTriangle((&param_53), (&param_54), (&param_55));
-    let _e144 = param_54;
-    t_2.w = _e144;
-    let _e146 = param_55;
-    local_9 = _e146;
-    let _e147 = (*cell);
-    let _e149 = kx;
-    let _e151 = ky;
-    c_1 = (bitcast<vec2<u32>>(_e147) + bitcast<vec2<u32>>(vec2<i32>(i32(_e149), i32(_e151))));
-    let _e157 = c_1[0u];
-    let _e160 = c_1[1u];
-    let _e164 = c_1[1u];
-    shift_1 = vec2<u32>(((97u * _e157) - (2u * _e160)), (4u * _e164));
-    let _e168 = local_9[0i];
-    param_56 = _e168;
-    let _e169 = shift_1;
-    param_57 = _e169;
-    let _e170 = r_2;
-    param_58 = _e170;
-    let _e171 = (*dSTdx_2);
-    param_59 = _e171;
-    let _e172 = (*dSTdy_2);
-    param_60 = _e172;
-    let _e173 = hexcStableTap_albedo((&param_56), (&param_57), (&param_58), (&param_59), (&param_60), (&param_61));
-    let _e174 = param_61;
-    t_2.id[0i] = _e174;
-    t_2.tap[0i] = _e173;
-    let _e180 = local_9[1i];
-    param_62 = _e180;
-    let _e181 = shift_1;
-    param_63 = _e181;
-    let _e182 = r_2;
-    param_64 = _e182;
-    let _e183 = (*dSTdx_2);
-    param_65 = _e183;
-    let _e184 = (*dSTdy_2);
-    param_66 = _e184;
-    let _e185 = hexcStableTap_albedo((&param_62), (&param_63), (&param_64), (&param_65), (&param_66), (&param_67));
-    let _e186 = param_67;
-    t_2.id[1i] = _e186;
-    t_2.tap[1i] = _e185;
-    let _e192 = local_9[2i];
-    param_68 = _e192;
-    let _e193 = shift_1;
-    param_69 = _e193;
-    let _e194 = r_2;
-    param_70 = _e194;
-    let _e195 = (*dSTdx_2);
-    param_71 = _e195;
-    let _e196 = (*dSTdy_2);
-    param_72 = _e196;
-    let _e197 = hexcStableTap_albedo((&param_68), (&param_69), (&param_70), (&param_71), (&param_72), (&param_73));
-    let _e198 = param_73;
-    t_2.id[2i] = _e198;
-    t_2.tap[2i] = _e197;
-    let _e205 = t_2.id[0i];
+    let _e127 = (*st)[0u];
+    kx = floor((_e127 / 28f));
+    let _e131 = (*st)[1u];
+    ky = floor(_e131);
+    let _e134 = (*st)[0u];
+    let _e135 = kx;
+    let _e139 = (*st)[1u];
+    let _e140 = ky;
+    r_3 = vec2<f32>((_e134 - (28f * _e135)), (_e139 - _e140));
+    let _e144 = r_3[0u];
+    let _e147 = r_3[1u];
+    let _e151 = r_3[1u];
+    param_56 = vec2<f32>(((3.4642856f * _e144) - (2f * _e147)), (4f * _e151));
+    hexcTriangle((&param_56), (&param_57), (&param_58));
+    let _e154 = param_57;
+    t_2.w = _e154;
+    let _e156 = param_58;
+    local_12 = _e156;
+    let _e157 = (*cell);
+    let _e159 = kx;
+    let _e161 = ky;
+    c_2 = (bitcast<vec2<u32>>(_e157) + bitcast<vec2<u32>>(vec2<i32>(i32(_e159), i32(_e161))));
+    let _e167 = c_2[0u];
+    let _e170 = c_2[1u];
+    let _e174 = c_2[1u];
+    shift_1 = vec2<u32>(((97u * _e167) - (2u * _e170)), (4u * _e174));
+    let _e178 = local_12[0i];
+    param_59 = _e178;
+    let _e179 = shift_1;
+    param_60 = _e179;
+    let _e180 = r_3;
+    param_61 = _e180;
+    let _e181 = (*dSTdx_2);
+    param_62 = _e181;
+    let _e182 = (*dSTdy_2);
+    param_63 = _e182;
+    let _e183 = hexcStableTap_albedo((&param_59), (&param_60), (&param_61), (&param_62), (&param_63), (&param_64));
+    let _e184 = param_64;
+    t_2.id[0i] = _e184;
+    t_2.tap[0i] = _e183;
+    let _e190 = local_12[1i];
+    param_65 = _e190;
+    let _e191 = shift_1;
+    param_66 = _e191;
+    let _e192 = r_3;
+    param_67 = _e192;
+    let _e193 = (*dSTdx_2);
+    param_68 = _e193;
+    let _e194 = (*dSTdy_2);
+    param_69 = _e194;
+    let _e195 = hexcStableTap_albedo((&param_65), (&param_66), (&param_67), (&param_68), (&param_69), (&param_70));
+    let _e196 = param_70;
+    t_2.id[1i] = _e196;
+    t_2.tap[1i] = _e195;
+    let _e202 = local_12[2i];
+    param_71 = _e202;
+    let _e203 = shift_1;
+    param_72 = _e203;
+    let _e204 = r_3;
+    param_73 = _e204;
+    let _e205 = (*dSTdx_2);
     param_74 = _e205;
-    let _e208 = t_2.id[2i];
-    param_75 = _e208;
-    let _e209 = hexcHexChannels((&param_74), (&param_75));
-    t_2.channel = _e209;
-    let _e211 = t_2;
-    return _e211;
+    let _e206 = (*dSTdy_2);
+    param_75 = _e206;
+    let _e207 = hexcStableTap_albedo((&param_71), (&param_72), (&param_73), (&param_74), (&param_75), (&param_76));
+    let _e208 = param_76;
+    t_2.id[2i] = _e208;
+    t_2.tap[2i] = _e207;
+    let _e215 = t_2.id[0i];
+    param_77 = _e215;
+    let _e218 = t_2.id[2i];
+    param_78 = _e218;
+    let _e219 = hexcHexChannels((&param_77), (&param_78));
+    t_2.channel = _e219;
+    let _e221 = t_2;
+    return _e221;
 }
 
 fn hexcAt_normal(st_1: ptr<function, vec2<f32>>, dx: ptr<function, vec2<f32>>, dy: ptr<function, vec2<f32>>, cell_1: ptr<function, vec2<i32>>, weights_1: ptr<function, vec3<f32>>) -> vec2<f32> {
-    var param_76: vec2<f32>;
-    var param_77: vec2<f32>;
-    var param_78: vec2<f32>;
-    var param_79: vec2<i32>;
-    var param_80: HexcTiles;
-    var param_81: bool;
-    var param_82: vec3<f32>;
+    var param_79: vec2<f32>;
+    var param_80: vec2<f32>;
+    var param_81: vec2<f32>;
+    var param_82: vec2<i32>;
+    var param_83: HexcTiles;
+    var param_84: bool;
+    var param_85: vec3<f32>;
 
-    let _e89 = (*st_1);
-    param_76 = _e89;
-    let _e90 = (*dx);
-    param_77 = _e90;
-    let _e91 = (*dy);
-    param_78 = _e91;
-    let _e92 = (*cell_1);
-    param_79 = _e92;
-    let _e93 = hexcTilesStable_albedo((&param_76), (&param_77), (&param_78), (&param_79));
-    param_80 = _e93;
-    param_81 = false;
-    let _e94 = hexcDeriv_normal(hexcTex_normal, hexcSampler, (&param_80), (&param_81), hexcTex_normal, (&param_82));
-    let _e95 = param_82;
-    (*weights_1) = _e95;
-    return _e94;
+    let _e99 = (*st_1);
+    param_79 = _e99;
+    let _e100 = (*dx);
+    param_80 = _e100;
+    let _e101 = (*dy);
+    param_81 = _e101;
+    let _e102 = (*cell_1);
+    param_82 = _e102;
+    let _e103 = hexcTilesStable_albedo((&param_79), (&param_80), (&param_81), (&param_82));
+    param_83 = _e103;
+    param_84 = false;
+    let _e104 = hexcDeriv_normal(hexcTex_normal, hexcSampler, (&param_83), (&param_84), hexcTex_normal, (&param_85));
+    let _e105 = param_85;
+    (*weights_1) = _e105;
+    return _e104;
 }
 
 fn hexc_normal(uv: ptr<function, vec2<f32>>, weights_2: ptr<function, vec3<f32>>) -> vec2<f32> {
     var st_2: vec2<f32>;
-    var param_83: vec2<f32>;
-    var param_84: vec2<f32>;
-    var param_85: vec2<f32>;
-    var param_86: vec2<i32>;
-    var param_87: vec3<f32>;
+    var param_86: vec2<f32>;
+    var param_87: vec2<f32>;
+    var param_88: vec2<f32>;
+    var param_89: vec2<i32>;
+    var param_90: vec3<f32>;
 
-    let _e85 = (*uv);
-    let _e87 = hexcParams.albedo_tiling;
-    st_2 = (_e85 * _e87);
-    let _e89 = st_2;
-    let _e90 = dpdx(_e89);
-    let _e91 = st_2;
-    let _e92 = dpdy(_e91);
-    let _e93 = st_2;
-    param_83 = _e93;
-    param_84 = _e90;
-    param_85 = _e92;
-    param_86 = vec2<i32>(0i, 0i);
-    let _e94 = hexcAt_normal((&param_83), (&param_84), (&param_85), (&param_86), (&param_87));
-    let _e95 = param_87;
-    (*weights_2) = _e95;
-    return _e94;
+    let _e95 = (*uv);
+    let _e97 = hexcParams.albedo_tiling;
+    st_2 = (_e95 * _e97);
+    let _e99 = st_2;
+    let _e100 = dpdx(_e99);
+    let _e101 = st_2;
+    let _e102 = dpdy(_e101);
+    let _e103 = st_2;
+    param_86 = _e103;
+    param_87 = _e100;
+    param_88 = _e102;
+    param_89 = vec2<i32>(0i, 0i);
+    let _e104 = hexcAt_normal((&param_86), (&param_87), (&param_88), (&param_89), (&param_90));
+    let _e105 = param_90;
+    (*weights_2) = _e105;
+    return _e104;
 }
 
 fn hexc_normal_1(uv_1: ptr<function, vec2<f32>>) -> vec2<f32> {
     var weights_3: vec3<f32>;
-    var param_88: vec2<f32>;
-    var param_89: vec3<f32>;
+    var param_91: vec2<f32>;
+    var param_92: vec3<f32>;
 
-    let _e81 = (*uv_1);
-    param_88 = _e81;
-    let _e82 = hexc_normal((&param_88), (&param_89));
-    let _e83 = param_89;
-    weights_3 = _e83;
-    return _e82;
+    let _e91 = (*uv_1);
+    param_91 = _e91;
+    let _e92 = hexc_normal((&param_91), (&param_92));
+    let _e93 = param_92;
+    weights_3 = _e93;
+    return _e92;
 }
 
-fn hexcGainK(r_3: ptr<function, f32>, kInt: ptr<function, i32>) -> f32 {
-    var local_10: f32;
+fn hexcGainK(r_4: ptr<function, f32>, kInt: ptr<function, i32>) -> f32 {
+    var local_13: f32;
 
-    let _e80 = (*kInt);
-    if (_e80 > 0i) {
-        let _e82 = (*kInt);
-        local_10 = f32(_e82);
+    let _e90 = (*kInt);
+    if (_e90 > 0i) {
+        let _e92 = (*kInt);
+        local_13 = f32(_e92);
     } else {
-        let _e84 = (*r_3);
-        local_10 = (log((1f - _e84)) / -0.6931472f);
+        let _e94 = (*r_4);
+        local_13 = (log((1f - _e94)) / -0.6931472f);
     }
-    let _e88 = local_10;
-    return _e88;
+    let _e98 = local_13;
+    return _e98;
 }
 
-fn hexcGainCurve(x_1: ptr<function, vec3<f32>>, r_4: ptr<function, f32>, kInt_1: ptr<function, i32>) -> vec3<f32> {
-    var s_1: vec3<f32>;
+fn hexcGainCurve(x_1: ptr<function, vec3<f32>>, r_5: ptr<function, f32>, kInt_1: ptr<function, i32>) -> vec3<f32> {
+    var s_2: vec3<f32>;
     var m: vec3<f32>;
     var base: vec3<f32>;
-    var local_11: vec3<f32>;
-    var param_90: vec3<f32>;
-    var param_91: i32;
-    var param_92: f32;
-    var param_93: i32;
-
-    let _e88 = (*x_1);
-    s_1 = (step(vec3(0.5f), _e88) * 2f);
-    let _e92 = s_1;
-    m = ((vec3(1f) - _e92) * 2f);
-    let _e96 = s_1;
-    let _e97 = (*x_1);
-    let _e98 = m;
-    base = max(vec3<f32>(0f, 0f, 0f), (_e96 + (_e97 * _e98)));
-    let _e102 = s_1;
-    let _e104 = m;
-    let _e106 = (*kInt_1);
-    if (_e106 > 0i) {
-        let _e108 = base;
-        param_90 = _e108;
-        let _e109 = (*kInt_1);
-        param_91 = _e109;
-        let _e110 = hexcPowInt((&param_90), (&param_91));
-        local_11 = _e110;
-    } else {
-        let _e111 = base;
-        let _e112 = (*r_4);
-        param_92 = _e112;
-        let _e113 = (*kInt_1);
-        param_93 = _e113;
-        let _e114 = hexcGainK((&param_92), (&param_93));
-        local_11 = pow(_e111, vec3(_e114));
-    }
-    let _e117 = local_11;
-    return ((_e102 * 0.5f) + ((_e104 * 0.25f) * _e117));
-}
-
-fn hexcGain3_(x_2: ptr<function, vec3<f32>>, r_5: ptr<function, f32>, kInt_2: ptr<function, i32>) -> vec3<f32> {
-    var res: vec3<f32>;
-    var param_94: vec3<f32>;
+    var local_14: vec3<f32>;
+    var param_93: vec3<f32>;
+    var param_94: i32;
     var param_95: f32;
     var param_96: i32;
 
-    let _e84 = (*x_2);
-    param_94 = _e84;
-    let _e85 = (*r_5);
-    param_95 = _e85;
-    let _e86 = (*kInt_2);
-    param_96 = _e86;
-    let _e87 = hexcGainCurve((&param_94), (&param_95), (&param_96));
-    res = _e87;
-    let _e88 = res;
-    let _e90 = res[0u];
-    let _e92 = res[1u];
-    let _e95 = res[2u];
-    return (_e88 / vec3(((_e90 + _e92) + _e95)));
+    let _e98 = (*x_1);
+    s_2 = (step(vec3(0.5f), _e98) * 2f);
+    let _e102 = s_2;
+    m = ((vec3(1f) - _e102) * 2f);
+    let _e106 = s_2;
+    let _e107 = (*x_1);
+    let _e108 = m;
+    base = max(vec3<f32>(0f, 0f, 0f), (_e106 + (_e107 * _e108)));
+    let _e112 = s_2;
+    let _e114 = m;
+    let _e116 = (*kInt_1);
+    if (_e116 > 0i) {
+        let _e118 = base;
+        param_93 = _e118;
+        let _e119 = (*kInt_1);
+        param_94 = _e119;
+        let _e120 = hexcPowInt((&param_93), (&param_94));
+        local_14 = _e120;
+    } else {
+        let _e121 = base;
+        let _e122 = (*r_5);
+        param_95 = _e122;
+        let _e123 = (*kInt_1);
+        param_96 = _e123;
+        let _e124 = hexcGainK((&param_95), (&param_96));
+        local_14 = pow(_e121, vec3(_e124));
+    }
+    let _e127 = local_14;
+    return ((_e112 * 0.5f) + ((_e114 * 0.25f) * _e127));
+}
+
+fn hexcGain3_(x_2: ptr<function, vec3<f32>>, r_6: ptr<function, f32>, kInt_2: ptr<function, i32>) -> vec3<f32> {
+    var res: vec3<f32>;
+    var param_97: vec3<f32>;
+    var param_98: f32;
+    var param_99: i32;
+
+    let _e94 = (*x_2);
+    param_97 = _e94;
+    let _e95 = (*r_6);
+    param_98 = _e95;
+    let _e96 = (*kInt_2);
+    param_99 = _e96;
+    let _e97 = hexcGainCurve((&param_97), (&param_98), (&param_99));
+    res = _e97;
+    let _e98 = res;
+    let _e100 = res[0u];
+    let _e102 = res[1u];
+    let _e105 = res[2u];
+    return (_e98 / vec3(((_e100 + _e102) + _e105)));
 }
 
 fn hexcBlendWeights_albedo(w_3: ptr<function, vec3<f32>>, M_1: ptr<function, vec3<f32>>) -> vec3<f32> {
     var wg_1: vec3<f32>;
-    var param_97: vec3<f32>;
-    var param_98: i32;
+    var param_100: vec3<f32>;
+    var param_101: i32;
     var W_3: vec3<f32>;
     var sum_1: f32;
-    var local_12: vec3<f32>;
-    var param_99: vec3<f32>;
-    var param_100: f32;
-    var param_101: i32;
+    var local_15: vec3<f32>;
+    var param_102: vec3<f32>;
+    var param_103: f32;
+    var param_104: i32;
 
-    let _e88 = (*w_3);
-    param_97 = _e88;
-    param_98 = 7i;
-    let _e89 = hexcPowInt((&param_97), (&param_98));
-    wg_1 = _e89;
-    let _e90 = (*M_1);
-    let _e91 = wg_1;
-    W_3 = (_e90 * _e91);
-    let _e94 = W_3[0u];
-    let _e96 = W_3[1u];
-    let _e99 = W_3[2u];
-    sum_1 = ((_e94 + _e96) + _e99);
-    let _e101 = sum_1;
-    if (_e101 > 0f) {
-        let _e103 = W_3;
-        let _e104 = sum_1;
-        local_12 = (_e103 / vec3(_e104));
+    let _e98 = (*w_3);
+    param_100 = _e98;
+    param_101 = 7i;
+    let _e99 = hexcPowInt((&param_100), (&param_101));
+    wg_1 = _e99;
+    let _e100 = (*M_1);
+    let _e101 = wg_1;
+    W_3 = (_e100 * _e101);
+    let _e104 = W_3[0u];
+    let _e106 = W_3[1u];
+    let _e109 = W_3[2u];
+    sum_1 = ((_e104 + _e106) + _e109);
+    let _e111 = sum_1;
+    if (_e111 > 0f) {
+        let _e113 = W_3;
+        let _e114 = sum_1;
+        local_15 = (_e113 / vec3(_e114));
     } else {
-        let _e107 = wg_1;
-        let _e109 = wg_1[0u];
-        let _e111 = wg_1[1u];
-        let _e114 = wg_1[2u];
-        local_12 = (_e107 / vec3(((_e109 + _e111) + _e114)));
+        let _e117 = wg_1;
+        let _e119 = wg_1[0u];
+        let _e121 = wg_1[1u];
+        let _e124 = wg_1[2u];
+        local_15 = (_e117 / vec3(((_e119 + _e121) + _e124)));
     }
-    let _e118 = local_12;
-    W_3 = _e118;
-    let _e119 = W_3;
-    param_99 = _e119;
-    param_100 = 0.5f;
-    param_101 = 2i;
-    let _e120 = hexcGain3_((&param_99), (&param_100), (&param_101));
-    W_3 = _e120;
-    let _e121 = W_3;
-    return _e121;
+    let _e128 = local_15;
+    W_3 = _e128;
+    let _e129 = W_3;
+    param_102 = _e129;
+    param_103 = 0.5f;
+    param_104 = 2i;
+    let _e130 = hexcGain3_((&param_102), (&param_103), (&param_104));
+    W_3 = _e130;
+    let _e131 = W_3;
+    return _e131;
 }
 
 fn hexcMetric_roughness(Dw_1: ptr<function, vec3<f32>>) -> vec3<f32> {
-    let _e78 = (*Dw_1);
-    let _e81 = hexcParams.roughness_falloffcontrast;
-    return mix(vec3<f32>(1f, 1f, 1f), max(_e78, vec3<f32>(0f, 0f, 0f)), vec3(_e81));
+    let _e88 = (*Dw_1);
+    let _e91 = hexcParams.roughness_falloffcontrast;
+    return mix(vec3<f32>(1f, 1f, 1f), max(_e88, vec3<f32>(0f, 0f, 0f)), vec3(_e91));
 }
 
-fn hexcFetchTaps_albedo(tex_3: texture_2d<f32>, samp_3: sampler, t_3: ptr<function, HexcTiles>, f_1: ptr<function, vec3<bool>>, c_2: ptr<function, array<vec4<f32>, 3>>) {
+fn hexcFetchTaps_albedo(tex_3: texture_2d<f32>, samp_3: sampler, t_3: ptr<function, HexcTiles>, f_1: ptr<function, vec3<bool>>, c_3: ptr<function, array<vec4<f32>, 3>>) {
     var lod_2: vec3<f32>;
-    var param_102: HexcTiles;
-    var param_103: HexcTap;
-    var param_104: f32;
-    var param_105: HexcTap;
-    var param_106: f32;
-    var param_107: HexcTap;
-    var param_108: f32;
+    var param_105: HexcTiles;
+    var param_106: HexcTap;
+    var param_107: f32;
+    var param_108: HexcTap;
+    var param_109: f32;
+    var param_110: HexcTap;
+    var param_111: f32;
 
-    let _e90 = (*t_3);
-    param_102 = _e90;
-    let _e91 = hexcTileLods_albedo(tex_3, samp_3, (&param_102));
-    lod_2 = _e91;
-    (*c_2) = array<vec4<f32>, 3>(vec4<f32>(0f, 0f, 0f, 0f), vec4<f32>(0f, 0f, 0f, 0f), vec4<f32>(0f, 0f, 0f, 0f));
-    let _e94 = (*t_3).tap[0i];
-    param_103 = _e94;
-    let _e96 = lod_2[0u];
-    param_104 = _e96;
-    let _e97 = hexcFetch_albedo(tex_3, samp_3, (&param_103), (&param_104));
-    (*c_2)[0i] = _e97;
-    let _e101 = (*t_3).tap[1i];
-    param_105 = _e101;
-    let _e103 = lod_2[1u];
-    param_106 = _e103;
-    let _e104 = hexcFetch_albedo(tex_3, samp_3, (&param_105), (&param_106));
-    (*c_2)[1i] = _e104;
-    let _e108 = (*t_3).tap[2i];
-    param_107 = _e108;
-    let _e110 = lod_2[2u];
-    param_108 = _e110;
-    let _e111 = hexcFetch_albedo(tex_3, samp_3, (&param_107), (&param_108));
-    (*c_2)[2i] = _e111;
+    let _e100 = (*t_3);
+    param_105 = _e100;
+    let _e101 = hexcTileLods_albedo(tex_3, samp_3, (&param_105));
+    lod_2 = _e101;
+    (*c_3) = array<vec4<f32>, 3>(vec4<f32>(0f, 0f, 0f, 0f), vec4<f32>(0f, 0f, 0f, 0f), vec4<f32>(0f, 0f, 0f, 0f));
+    let _e104 = (*t_3).tap[0i];
+    param_106 = _e104;
+    let _e106 = lod_2[0u];
+    param_107 = _e106;
+    let _e107 = hexcFetch_albedo(tex_3, samp_3, (&param_106), (&param_107));
+    (*c_3)[0i] = _e107;
+    let _e111 = (*t_3).tap[1i];
+    param_108 = _e111;
+    let _e113 = lod_2[1u];
+    param_109 = _e113;
+    let _e114 = hexcFetch_albedo(tex_3, samp_3, (&param_108), (&param_109));
+    (*c_3)[1i] = _e114;
+    let _e118 = (*t_3).tap[2i];
+    param_110 = _e118;
+    let _e120 = lod_2[2u];
+    param_111 = _e120;
+    let _e121 = hexcFetch_albedo(tex_3, samp_3, (&param_110), (&param_111));
+    (*c_3)[2i] = _e121;
     return;
 }
 
 fn hexcColor_roughness(tex_4: texture_2d<f32>, samp_4: sampler, t_4: ptr<function, HexcTiles>, luma: ptr<function, vec4<f32>>, heightTex_1: texture_2d<f32>, weights_4: ptr<function, vec3<f32>>) -> vec4<f32> {
     var f_2: vec3<bool>;
-    var param_109: vec3<f32>;
-    var c_3: array<vec4<f32>, 3>;
-    var param_110: HexcTiles;
-    var param_111: vec3<bool>;
-    var param_112: array<vec4<f32>, 3>;
+    var param_112: vec3<f32>;
+    var c_4: array<vec4<f32>, 3>;
+    var param_113: HexcTiles;
+    var param_114: vec3<bool>;
+    var param_115: array<vec4<f32>, 3>;
     var Dw_2: vec3<f32>;
     var W_4: vec3<f32>;
-    var param_113: vec3<f32>;
-    var param_114: vec3<f32>;
-    var param_115: vec3<f32>;
     var param_116: vec3<f32>;
-    var param_117: vec3<i32>;
+    var param_117: vec3<f32>;
+    var param_118: vec3<f32>;
+    var param_119: vec3<f32>;
+    var param_120: vec3<i32>;
 
-    let _e97 = (*t_4).w;
-    param_109 = _e97;
-    let _e98 = hexcFetched_albedo((&param_109));
-    f_2 = _e98;
-    let _e99 = (*t_4);
-    param_110 = _e99;
-    let _e100 = f_2;
-    param_111 = _e100;
-    hexcFetchTaps_albedo(tex_4, samp_4, (&param_110), (&param_111), (&param_112));
-    let _e101 = param_112;
-    c_3 = _e101;
-    let _e103 = c_3[0i];
-    let _e104 = (*luma);
-    let _e107 = c_3[1i];
-    let _e108 = (*luma);
-    let _e111 = c_3[2i];
-    let _e112 = (*luma);
-    Dw_2 = vec3<f32>(dot(_e103, _e104), dot(_e107, _e108), dot(_e111, _e112));
-    let _e116 = (*t_4).w;
-    let _e117 = f_2;
-    let _e120 = Dw_2;
-    param_113 = _e120;
-    let _e121 = hexcMetric_roughness((&param_113));
-    param_114 = (_e116 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e117));
-    param_115 = _e121;
-    let _e122 = hexcBlendWeights_albedo((&param_114), (&param_115));
-    W_4 = _e122;
-    let _e123 = W_4;
-    param_116 = _e123;
-    let _e125 = (*t_4).channel;
-    param_117 = _e125;
-    let _e126 = hexcShowWeights((&param_116), (&param_117));
-    (*weights_4) = _e126;
-    let _e128 = W_4[0u];
-    let _e130 = c_3[0i];
-    let _e133 = W_4[1u];
-    let _e135 = c_3[1i];
-    let _e139 = W_4[2u];
-    let _e141 = c_3[2i];
-    return (((_e130 * _e128) + (_e135 * _e133)) + (_e141 * _e139));
+    let _e107 = (*t_4).w;
+    param_112 = _e107;
+    let _e108 = hexcFetched_albedo((&param_112));
+    f_2 = _e108;
+    let _e109 = (*t_4);
+    param_113 = _e109;
+    let _e110 = f_2;
+    param_114 = _e110;
+    hexcFetchTaps_albedo(tex_4, samp_4, (&param_113), (&param_114), (&param_115));
+    let _e111 = param_115;
+    c_4 = _e111;
+    let _e113 = c_4[0i];
+    let _e114 = (*luma);
+    let _e117 = c_4[1i];
+    let _e118 = (*luma);
+    let _e121 = c_4[2i];
+    let _e122 = (*luma);
+    Dw_2 = vec3<f32>(dot(_e113, _e114), dot(_e117, _e118), dot(_e121, _e122));
+    let _e126 = (*t_4).w;
+    let _e127 = f_2;
+    let _e130 = Dw_2;
+    param_116 = _e130;
+    let _e131 = hexcMetric_roughness((&param_116));
+    param_117 = (_e126 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e127));
+    param_118 = _e131;
+    let _e132 = hexcBlendWeights_albedo((&param_117), (&param_118));
+    W_4 = _e132;
+    let _e133 = W_4;
+    param_119 = _e133;
+    let _e135 = (*t_4).channel;
+    param_120 = _e135;
+    let _e136 = hexcShowWeights((&param_119), (&param_120));
+    (*weights_4) = _e136;
+    let _e138 = W_4[0u];
+    let _e140 = c_4[0i];
+    let _e143 = W_4[1u];
+    let _e145 = c_4[1i];
+    let _e149 = W_4[2u];
+    let _e151 = c_4[2i];
+    return (((_e140 * _e138) + (_e145 * _e143)) + (_e151 * _e149));
 }
 
-fn hexcChannel(c_4: ptr<function, i32>) -> vec4<f32> {
-    var local_13: vec4<f32>;
-    var local_14: vec4<f32>;
+fn hexcChannel(c_5: ptr<function, i32>) -> vec4<f32> {
+    var local_16: vec4<f32>;
+    var local_17: vec4<f32>;
 
-    let _e80 = (*c_4);
-    if (_e80 == 0i) {
-        local_13 = vec4<f32>(1f, 0f, 0f, 0f);
+    let _e90 = (*c_5);
+    if (_e90 == 0i) {
+        local_16 = vec4<f32>(1f, 0f, 0f, 0f);
     } else {
-        let _e82 = (*c_4);
-        if (_e82 == 1i) {
-            local_14 = vec4<f32>(0f, 1f, 0f, 0f);
+        let _e92 = (*c_5);
+        if (_e92 == 1i) {
+            local_17 = vec4<f32>(0f, 1f, 0f, 0f);
         } else {
-            let _e84 = (*c_4);
-            local_14 = select(vec4<f32>(0f, 0f, 0f, 1f), vec4<f32>(0f, 0f, 1f, 0f), vec4((_e84 == 2i)));
+            let _e94 = (*c_5);
+            local_17 = select(vec4<f32>(0f, 0f, 0f, 1f), vec4<f32>(0f, 0f, 1f, 0f), vec4((_e94 == 2i)));
         }
-        let _e88 = local_14;
-        local_13 = _e88;
+        let _e98 = local_17;
+        local_16 = _e98;
     }
-    let _e89 = local_13;
-    return _e89;
+    let _e99 = local_16;
+    return _e99;
 }
 
 fn hexcAt_roughness(st_3: ptr<function, vec2<f32>>, dx_1: ptr<function, vec2<f32>>, dy_1: ptr<function, vec2<f32>>, cell_2: ptr<function, vec2<i32>>, weights_5: ptr<function, vec3<f32>>) -> f32 {
-    var param_118: vec2<f32>;
-    var param_119: vec2<f32>;
-    var param_120: vec2<f32>;
-    var param_121: vec2<i32>;
-    var param_122: i32;
-    var param_123: HexcTiles;
-    var param_124: vec4<f32>;
-    var param_125: vec3<f32>;
+    var param_121: vec2<f32>;
+    var param_122: vec2<f32>;
+    var param_123: vec2<f32>;
+    var param_124: vec2<i32>;
+    var param_125: i32;
+    var param_126: HexcTiles;
+    var param_127: vec4<f32>;
+    var param_128: vec3<f32>;
 
-    let _e90 = (*st_3);
-    param_118 = _e90;
-    let _e91 = (*dx_1);
-    param_119 = _e91;
-    let _e92 = (*dy_1);
-    param_120 = _e92;
-    let _e93 = (*cell_2);
-    param_121 = _e93;
-    let _e94 = hexcTilesStable_albedo((&param_118), (&param_119), (&param_120), (&param_121));
-    param_122 = 0i;
-    let _e95 = hexcChannel((&param_122));
-    param_123 = _e94;
-    param_124 = _e95;
-    let _e96 = hexcColor_roughness(hexcTex_roughness, hexcSampler, (&param_123), (&param_124), hexcTex_roughness, (&param_125));
-    let _e97 = param_125;
-    (*weights_5) = _e97;
-    return _e96.x;
+    let _e100 = (*st_3);
+    param_121 = _e100;
+    let _e101 = (*dx_1);
+    param_122 = _e101;
+    let _e102 = (*dy_1);
+    param_123 = _e102;
+    let _e103 = (*cell_2);
+    param_124 = _e103;
+    let _e104 = hexcTilesStable_albedo((&param_121), (&param_122), (&param_123), (&param_124));
+    param_125 = 0i;
+    let _e105 = hexcChannel((&param_125));
+    param_126 = _e104;
+    param_127 = _e105;
+    let _e106 = hexcColor_roughness(hexcTex_roughness, hexcSampler, (&param_126), (&param_127), hexcTex_roughness, (&param_128));
+    let _e107 = param_128;
+    (*weights_5) = _e107;
+    return _e106.x;
 }
 
 fn hexc_roughness(uv_2: ptr<function, vec2<f32>>, weights_6: ptr<function, vec3<f32>>) -> f32 {
     var st_4: vec2<f32>;
-    var param_126: vec2<f32>;
-    var param_127: vec2<f32>;
-    var param_128: vec2<f32>;
-    var param_129: vec2<i32>;
-    var param_130: vec3<f32>;
+    var param_129: vec2<f32>;
+    var param_130: vec2<f32>;
+    var param_131: vec2<f32>;
+    var param_132: vec2<i32>;
+    var param_133: vec3<f32>;
 
-    let _e85 = (*uv_2);
-    let _e87 = hexcParams.albedo_tiling;
-    st_4 = (_e85 * _e87);
-    let _e89 = st_4;
-    let _e90 = dpdx(_e89);
-    let _e91 = st_4;
-    let _e92 = dpdy(_e91);
-    let _e93 = st_4;
-    param_126 = _e93;
-    param_127 = _e90;
-    param_128 = _e92;
-    param_129 = vec2<i32>(0i, 0i);
-    let _e94 = hexcAt_roughness((&param_126), (&param_127), (&param_128), (&param_129), (&param_130));
-    let _e95 = param_130;
-    (*weights_6) = _e95;
-    return _e94;
+    let _e95 = (*uv_2);
+    let _e97 = hexcParams.albedo_tiling;
+    st_4 = (_e95 * _e97);
+    let _e99 = st_4;
+    let _e100 = dpdx(_e99);
+    let _e101 = st_4;
+    let _e102 = dpdy(_e101);
+    let _e103 = st_4;
+    param_129 = _e103;
+    param_130 = _e100;
+    param_131 = _e102;
+    param_132 = vec2<i32>(0i, 0i);
+    let _e104 = hexcAt_roughness((&param_129), (&param_130), (&param_131), (&param_132), (&param_133));
+    let _e105 = param_133;
+    (*weights_6) = _e105;
+    return _e104;
 }
 
 fn hexc_roughness_1(uv_3: ptr<function, vec2<f32>>) -> f32 {
     var weights_7: vec3<f32>;
-    var param_131: vec2<f32>;
-    var param_132: vec3<f32>;
+    var param_134: vec2<f32>;
+    var param_135: vec3<f32>;
 
-    let _e81 = (*uv_3);
-    param_131 = _e81;
-    let _e82 = hexc_roughness((&param_131), (&param_132));
-    let _e83 = param_132;
-    weights_7 = _e83;
-    return _e82;
+    let _e91 = (*uv_3);
+    param_134 = _e91;
+    let _e92 = hexc_roughness((&param_134), (&param_135));
+    let _e93 = param_135;
+    weights_7 = _e93;
+    return _e92;
 }
 
 fn hexcMetric_albedo(Dw_3: ptr<function, vec3<f32>>) -> vec3<f32> {
-    let _e78 = (*Dw_3);
-    let _e81 = hexcParams.albedo_falloffcontrast;
-    return mix(vec3<f32>(1f, 1f, 1f), max(_e78, vec3<f32>(0f, 0f, 0f)), vec3(_e81));
+    let _e88 = (*Dw_3);
+    let _e91 = hexcParams.albedo_falloffcontrast;
+    return mix(vec3<f32>(1f, 1f, 1f), max(_e88, vec3<f32>(0f, 0f, 0f)), vec3(_e91));
 }
 
 fn hexcColor_albedo(tex_5: texture_2d<f32>, samp_5: sampler, t_5: ptr<function, HexcTiles>, luma_1: ptr<function, vec4<f32>>, heightTex_2: texture_2d<f32>, weights_8: ptr<function, vec3<f32>>) -> vec4<f32> {
     var f_3: vec3<bool>;
-    var param_133: vec3<f32>;
-    var c_5: array<vec4<f32>, 3>;
-    var param_134: HexcTiles;
-    var param_135: vec3<bool>;
-    var param_136: array<vec4<f32>, 3>;
+    var param_136: vec3<f32>;
+    var c_6: array<vec4<f32>, 3>;
+    var param_137: HexcTiles;
+    var param_138: vec3<bool>;
+    var param_139: array<vec4<f32>, 3>;
     var Dw_4: vec3<f32>;
     var W_5: vec3<f32>;
-    var param_137: vec3<f32>;
-    var param_138: vec3<f32>;
-    var param_139: vec3<f32>;
     var param_140: vec3<f32>;
-    var param_141: vec3<i32>;
+    var param_141: vec3<f32>;
+    var param_142: vec3<f32>;
+    var param_143: vec3<f32>;
+    var param_144: vec3<i32>;
 
-    let _e97 = (*t_5).w;
-    param_133 = _e97;
-    let _e98 = hexcFetched_albedo((&param_133));
-    f_3 = _e98;
-    let _e99 = (*t_5);
-    param_134 = _e99;
-    let _e100 = f_3;
-    param_135 = _e100;
-    hexcFetchTaps_albedo(tex_5, samp_5, (&param_134), (&param_135), (&param_136));
-    let _e101 = param_136;
-    c_5 = _e101;
-    let _e103 = c_5[0i];
-    let _e104 = (*luma_1);
-    let _e107 = c_5[1i];
-    let _e108 = (*luma_1);
-    let _e111 = c_5[2i];
-    let _e112 = (*luma_1);
-    Dw_4 = vec3<f32>(dot(_e103, _e104), dot(_e107, _e108), dot(_e111, _e112));
-    let _e116 = (*t_5).w;
-    let _e117 = f_3;
-    let _e120 = Dw_4;
-    param_137 = _e120;
-    let _e121 = hexcMetric_albedo((&param_137));
-    param_138 = (_e116 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e117));
-    param_139 = _e121;
-    let _e122 = hexcBlendWeights_albedo((&param_138), (&param_139));
-    W_5 = _e122;
-    let _e123 = W_5;
-    param_140 = _e123;
-    let _e125 = (*t_5).channel;
-    param_141 = _e125;
-    let _e126 = hexcShowWeights((&param_140), (&param_141));
-    (*weights_8) = _e126;
-    let _e128 = W_5[0u];
-    let _e130 = c_5[0i];
-    let _e133 = W_5[1u];
-    let _e135 = c_5[1i];
-    let _e139 = W_5[2u];
-    let _e141 = c_5[2i];
-    return (((_e130 * _e128) + (_e135 * _e133)) + (_e141 * _e139));
+    let _e107 = (*t_5).w;
+    param_136 = _e107;
+    let _e108 = hexcFetched_albedo((&param_136));
+    f_3 = _e108;
+    let _e109 = (*t_5);
+    param_137 = _e109;
+    let _e110 = f_3;
+    param_138 = _e110;
+    hexcFetchTaps_albedo(tex_5, samp_5, (&param_137), (&param_138), (&param_139));
+    let _e111 = param_139;
+    c_6 = _e111;
+    let _e113 = c_6[0i];
+    let _e114 = (*luma_1);
+    let _e117 = c_6[1i];
+    let _e118 = (*luma_1);
+    let _e121 = c_6[2i];
+    let _e122 = (*luma_1);
+    Dw_4 = vec3<f32>(dot(_e113, _e114), dot(_e117, _e118), dot(_e121, _e122));
+    let _e126 = (*t_5).w;
+    let _e127 = f_3;
+    let _e130 = Dw_4;
+    param_140 = _e130;
+    let _e131 = hexcMetric_albedo((&param_140));
+    param_141 = (_e126 * select(vec3<f32>(0f, 0f, 0f), vec3<f32>(1f, 1f, 1f), _e127));
+    param_142 = _e131;
+    let _e132 = hexcBlendWeights_albedo((&param_141), (&param_142));
+    W_5 = _e132;
+    let _e133 = W_5;
+    param_143 = _e133;
+    let _e135 = (*t_5).channel;
+    param_144 = _e135;
+    let _e136 = hexcShowWeights((&param_143), (&param_144));
+    (*weights_8) = _e136;
+    let _e138 = W_5[0u];
+    let _e140 = c_6[0i];
+    let _e143 = W_5[1u];
+    let _e145 = c_6[1i];
+    let _e149 = W_5[2u];
+    let _e151 = c_6[2i];
+    return (((_e140 * _e138) + (_e145 * _e143)) + (_e151 * _e149));
 }
 
 fn hexcAt_albedo(st_5: ptr<function, vec2<f32>>, dx_2: ptr<function, vec2<f32>>, dy_2: ptr<function, vec2<f32>>, cell_3: ptr<function, vec2<i32>>, weights_9: ptr<function, vec3<f32>>) -> vec4<f32> {
-    var param_142: vec2<f32>;
-    var param_143: vec2<f32>;
-    var param_144: vec2<f32>;
-    var param_145: vec2<i32>;
-    var param_146: HexcTiles;
-    var param_147: vec4<f32>;
-    var param_148: vec3<f32>;
+    var param_145: vec2<f32>;
+    var param_146: vec2<f32>;
+    var param_147: vec2<f32>;
+    var param_148: vec2<i32>;
+    var param_149: HexcTiles;
+    var param_150: vec4<f32>;
+    var param_151: vec3<f32>;
 
-    let _e89 = (*st_5);
-    param_142 = _e89;
-    let _e90 = (*dx_2);
-    param_143 = _e90;
-    let _e91 = (*dy_2);
-    param_144 = _e91;
-    let _e92 = (*cell_3);
-    param_145 = _e92;
-    let _e93 = hexcTilesStable_albedo((&param_142), (&param_143), (&param_144), (&param_145));
-    param_146 = _e93;
-    param_147 = vec4<f32>(0.299f, 0.587f, 0.114f, 0f);
-    let _e94 = hexcColor_albedo(hexcTex_albedo, hexcSampler, (&param_146), (&param_147), hexcTex_albedo, (&param_148));
-    let _e95 = param_148;
-    (*weights_9) = _e95;
-    return _e94;
+    let _e99 = (*st_5);
+    param_145 = _e99;
+    let _e100 = (*dx_2);
+    param_146 = _e100;
+    let _e101 = (*dy_2);
+    param_147 = _e101;
+    let _e102 = (*cell_3);
+    param_148 = _e102;
+    let _e103 = hexcTilesStable_albedo((&param_145), (&param_146), (&param_147), (&param_148));
+    param_149 = _e103;
+    param_150 = vec4<f32>(0.299f, 0.587f, 0.114f, 0f);
+    let _e104 = hexcColor_albedo(hexcTex_albedo, hexcSampler, (&param_149), (&param_150), hexcTex_albedo, (&param_151));
+    let _e105 = param_151;
+    (*weights_9) = _e105;
+    return _e104;
 }
 
 fn hexc_albedo(uv_4: ptr<function, vec2<f32>>, weights_10: ptr<function, vec3<f32>>) -> vec4<f32> {
     var st_6: vec2<f32>;
-    var param_149: vec2<f32>;
-    var param_150: vec2<f32>;
-    var param_151: vec2<f32>;
-    var param_152: vec2<i32>;
-    var param_153: vec3<f32>;
+    var param_152: vec2<f32>;
+    var param_153: vec2<f32>;
+    var param_154: vec2<f32>;
+    var param_155: vec2<i32>;
+    var param_156: vec3<f32>;
 
-    let _e85 = (*uv_4);
-    let _e87 = hexcParams.albedo_tiling;
-    st_6 = (_e85 * _e87);
-    let _e89 = st_6;
-    let _e90 = dpdx(_e89);
-    let _e91 = st_6;
-    let _e92 = dpdy(_e91);
-    let _e93 = st_6;
-    param_149 = _e93;
-    param_150 = _e90;
-    param_151 = _e92;
-    param_152 = vec2<i32>(0i, 0i);
-    let _e94 = hexcAt_albedo((&param_149), (&param_150), (&param_151), (&param_152), (&param_153));
-    let _e95 = param_153;
-    (*weights_10) = _e95;
-    return _e94;
+    let _e95 = (*uv_4);
+    let _e97 = hexcParams.albedo_tiling;
+    st_6 = (_e95 * _e97);
+    let _e99 = st_6;
+    let _e100 = dpdx(_e99);
+    let _e101 = st_6;
+    let _e102 = dpdy(_e101);
+    let _e103 = st_6;
+    param_152 = _e103;
+    param_153 = _e100;
+    param_154 = _e102;
+    param_155 = vec2<i32>(0i, 0i);
+    let _e104 = hexcAt_albedo((&param_152), (&param_153), (&param_154), (&param_155), (&param_156));
+    let _e105 = param_156;
+    (*weights_10) = _e105;
+    return _e104;
 }
 
 fn hexc_albedo_1(uv_5: ptr<function, vec2<f32>>) -> vec4<f32> {
     var weights_11: vec3<f32>;
-    var param_154: vec2<f32>;
-    var param_155: vec3<f32>;
+    var param_157: vec2<f32>;
+    var param_158: vec3<f32>;
 
-    let _e81 = (*uv_5);
-    param_154 = _e81;
-    let _e82 = hexc_albedo((&param_154), (&param_155));
-    let _e83 = param_155;
-    weights_11 = _e83;
-    return _e82;
+    let _e91 = (*uv_5);
+    param_157 = _e91;
+    let _e92 = hexc_albedo((&param_157), (&param_158));
+    let _e93 = param_158;
+    weights_11 = _e93;
+    return _e92;
 }
 
 fn rock_frag_1() {
     var albedo: vec3<f32>;
-    var param_156: vec2<f32>;
+    var param_159: vec2<f32>;
     var roughness: f32;
-    var param_157: vec2<f32>;
+    var param_160: vec2<f32>;
     var N: vec3<f32>;
     var T: vec3<f32>;
     var B: vec3<f32>;
     var n_1: vec3<f32>;
-    var param_158: vec2<f32>;
-    var param_159: vec2<f32>;
+    var param_161: vec2<f32>;
+    var param_162: vec2<f32>;
     var diffuse: f32;
     var H: vec3<f32>;
     var power: f32;
     var specular: f32;
 
-    let _e91 = v_uv_1;
-    param_156 = _e91;
-    let _e92 = hexc_albedo_1((&param_156));
-    albedo = _e92.xyz;
-    let _e94 = v_uv_1;
-    param_157 = _e94;
-    let _e95 = hexc_roughness_1((&param_157));
-    roughness = clamp(_e95, 0.02f, 1f);
-    let _e97 = v_normal_1;
-    N = normalize(_e97);
-    let _e99 = v_tangent_1;
-    let _e101 = N;
-    let _e102 = N;
-    let _e103 = v_tangent_1;
-    T = normalize((_e99.xyz - (_e101 * dot(_e102, _e103.xyz))));
-    let _e109 = N;
-    let _e110 = T;
-    let _e113 = v_tangent_1[3u];
-    B = (cross(_e109, _e110) * _e113);
-    let _e115 = v_uv_1;
-    param_158 = _e115;
-    let _e116 = hexc_normal_1((&param_158));
-    param_159 = _e116;
-    let _e117 = hexcDerivToNormal((&param_159));
-    n_1 = _e117;
-    let _e119 = n_1[0u];
+    let _e101 = v_uv_1;
+    param_159 = _e101;
+    let _e102 = hexc_albedo_1((&param_159));
+    albedo = _e102.xyz;
+    let _e104 = v_uv_1;
+    param_160 = _e104;
+    let _e105 = hexc_roughness_1((&param_160));
+    roughness = clamp(_e105, 0.02f, 1f);
+    let _e107 = v_normal_1;
+    N = normalize(_e107);
+    let _e109 = v_tangent_1;
+    let _e111 = N;
+    let _e112 = N;
+    let _e113 = v_tangent_1;
+    T = normalize((_e109.xyz - (_e111 * dot(_e112, _e113.xyz))));
+    let _e119 = N;
     let _e120 = T;
-    let _e123 = n_1[1u];
-    let _e124 = B;
-    let _e128 = n_1[2u];
-    let _e129 = N;
-    N = normalize((((_e120 * _e119) - (_e124 * _e123)) + (_e129 * _e128)));
-    let _e133 = N;
-    diffuse = max(dot(_e133, vec3<f32>(0.408248f, 0.408248f, 0.816497f)), 0f);
+    let _e123 = v_tangent_1[3u];
+    B = (cross(_e119, _e120) * _e123);
+    let _e125 = v_uv_1;
+    param_161 = _e125;
+    let _e126 = hexc_normal_1((&param_161));
+    param_162 = _e126;
+    let _e127 = hexcDerivToNormal((&param_162));
+    n_1 = _e127;
+    let _e129 = n_1[0u];
+    let _e130 = T;
+    let _e133 = n_1[1u];
+    let _e134 = B;
+    let _e138 = n_1[2u];
+    let _e139 = N;
+    N = normalize((((_e130 * _e129) - (_e134 * _e133)) + (_e139 * _e138)));
+    let _e143 = N;
+    diffuse = max(dot(_e143, vec3<f32>(0.408248f, 0.408248f, 0.816497f)), 0f);
     H = vec3<f32>(0.21418631f, 0.21418631f, 0.9530207f);
-    let _e136 = roughness;
-    let _e137 = roughness;
-    let _e139 = roughness;
-    let _e141 = roughness;
-    power = ((2f / (((_e136 * _e137) * _e139) * _e141)) - 2f);
-    let _e145 = N;
-    let _e146 = H;
-    let _e149 = power;
-    let _e151 = power;
-    let _e155 = diffuse;
-    specular = (((pow(max(dot(_e145, _e146), 0f), _e149) * (_e151 + 8f)) / 25.132742f) * _e155);
-    let _e157 = albedo;
-    let _e158 = diffuse;
-    let _e161 = specular;
-    let _e164 = ((_e157 * (0.15f + _e158)) + vec3((0.04f * _e161)));
-    o_color = vec4<f32>(_e164.x, _e164.y, _e164.z, 1f);
+    let _e146 = roughness;
+    let _e147 = roughness;
+    let _e149 = roughness;
+    let _e151 = roughness;
+    power = ((2f / (((_e146 * _e147) * _e149) * _e151)) - 2f);
+    let _e155 = N;
+    let _e156 = H;
+    let _e159 = power;
+    let _e161 = power;
+    let _e165 = diffuse;
+    specular = (((pow(max(dot(_e155, _e156), 0f), _e159) * (_e161 + 8f)) / 25.132742f) * _e165);
+    let _e167 = albedo;
+    let _e168 = diffuse;
+    let _e171 = specular;
+    let _e174 = ((_e167 * (0.15f + _e168)) + vec3((0.04f * _e171)));
+    o_color = vec4<f32>(_e174.x, _e174.y, _e174.z, 1f);
     return;
 }
 

@@ -15,7 +15,7 @@ struct HexcParams {
 @group(0) @binding(4) var hexcTex_roughness: texture_2d<f32>;
 
 fn hexc_roughness(uv: ptr<function, vec2<f32>>) -> f32 {
-    var phi_9227_: vec3<f32>;
+    var phi_10292_: vec3<f32>;
 
     let _e53 = (*uv);
     let _e55 = hexcParams.albedo_tiling;
@@ -99,11 +99,11 @@ fn hexc_roughness(uv: ptr<function, vec2<f32>>) -> f32 {
     let _e397 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(_e381.x, _e382.x, _e383.x), vec3<f32>(0f, 0f, 0f)), vec3(_e390)) * _e396);
     let _e402 = ((_e397.x + _e397.y) + _e397.z);
     if (_e402 > 0f) {
-        phi_9227_ = (_e397 / vec3(_e402));
+        phi_10292_ = (_e397 / vec3(_e402));
     } else {
-        phi_9227_ = (_e396 / vec3(((_e396.x + _e396.y) + _e396.z)));
+        phi_10292_ = (_e396 / vec3(((_e396.x + _e396.y) + _e396.z)));
     }
-    let _e414 = phi_9227_;
+    let _e414 = phi_10292_;
     let _e416 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e414) * 2f);
     let _e418 = ((vec3<f32>(1f, 1f, 1f) - _e416) * 2f);
     let _e420 = max(vec3<f32>(0f, 0f, 0f), fma(_e414, _e418, _e416));
@@ -113,7 +113,7 @@ fn hexc_roughness(uv: ptr<function, vec2<f32>>) -> f32 {
 }
 
 fn hexc_normal(uv_1: ptr<function, vec2<f32>>) -> vec2<f32> {
-    var phi_9193_: vec3<f32>;
+    var phi_10195_: vec3<f32>;
 
     let _e53 = (*uv_1);
     let _e55 = hexcParams.albedo_tiling;
@@ -210,11 +210,11 @@ fn hexc_normal(uv_1: ptr<function, vec2<f32>>) -> vec2<f32> {
     let _e475 = (mix(vec3<f32>(1f, 1f, 1f), max(sqrt((_e462 / (vec3<f32>(1f, 1f, 1f) + _e462))), vec3<f32>(0f, 0f, 0f)), vec3(_e468)) * _e474);
     let _e480 = ((_e475.x + _e475.y) + _e475.z);
     if (_e480 > 0f) {
-        phi_9193_ = (_e475 / vec3(_e480));
+        phi_10195_ = (_e475 / vec3(_e480));
     } else {
-        phi_9193_ = (_e474 / vec3(((_e474.x + _e474.y) + _e474.z)));
+        phi_10195_ = (_e474 / vec3(((_e474.x + _e474.y) + _e474.z)));
     }
-    let _e492 = phi_9193_;
+    let _e492 = phi_10195_;
     return (((_e406 * _e492.x) + (_e432 * _e492.y)) + (_e458 * _e492.z));
 }
 
@@ -229,7 +229,7 @@ fn hexc_normal_normal(uv_2: ptr<function, vec2<f32>>) -> vec3<f32> {
 }
 
 fn hexc_albedo(uv_3: ptr<function, vec2<f32>>) -> vec4<f32> {
-    var phi_9156_: vec3<f32>;
+    var phi_10095_: vec3<f32>;
 
     let _e53 = (*uv_3);
     let _e55 = hexcParams.albedo_tiling;
@@ -313,11 +313,11 @@ fn hexc_albedo(uv_3: ptr<function, vec2<f32>>) -> vec4<f32> {
     let _e397 = (mix(vec3<f32>(1f, 1f, 1f), max(vec3<f32>(dot(_e381, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e382, vec4<f32>(0.299f, 0.587f, 0.114f, 0f)), dot(_e383, vec4<f32>(0.299f, 0.587f, 0.114f, 0f))), vec3<f32>(0f, 0f, 0f)), vec3(_e390)) * _e396);
     let _e402 = ((_e397.x + _e397.y) + _e397.z);
     if (_e402 > 0f) {
-        phi_9156_ = (_e397 / vec3(_e402));
+        phi_10095_ = (_e397 / vec3(_e402));
     } else {
-        phi_9156_ = (_e396 / vec3(((_e396.x + _e396.y) + _e396.z)));
+        phi_10095_ = (_e396 / vec3(((_e396.x + _e396.y) + _e396.z)));
     }
-    let _e414 = phi_9156_;
+    let _e414 = phi_10095_;
     let _e416 = (step(vec3<f32>(0.5f, 0.5f, 0.5f), _e414) * 2f);
     let _e418 = ((vec3<f32>(1f, 1f, 1f) - _e416) * 2f);
     let _e420 = max(vec3<f32>(0f, 0f, 0f), fma(_e414, _e418, _e416));

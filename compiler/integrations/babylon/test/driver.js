@@ -1,9 +1,11 @@
-// The Babylon.js test driver: draws a package's material on a camera-facing square and reads the canvas back.
+// The Babylon.js test driver: draws a package's material on a camera-facing square and reads the canvas back, with
+// Babylon's WebGL 2 engine or, given `webgpu`, its WebGPU engine.
 // `render` draws the uv rectangle given in Babylon's uv (v up), top row first; `input` replaces the output by one input
 // as PBRMaterial's shader holds it after the package filled it (linear values, after lighting and image processing).
 import { Camera } from '@babylonjs/core/Cameras/camera.js';
 import { FreeCamera } from '@babylonjs/core/Cameras/freeCamera.js';
 import { Engine } from '@babylonjs/core/Engines/engine.js';
+import { WebGPUEngine } from '@babylonjs/core/Engines/webgpuEngine.js';
 import { DirectionalLight } from '@babylonjs/core/Lights/directionalLight.js';
 import { HemisphericLight } from '@babylonjs/core/Lights/hemisphericLight.js';
 import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
@@ -50,20 +52,68 @@ function square(scene, uv) {
   return mesh;
 }
 
+// A workaround for the test environment only, not for a package's users: headless Chromium on SwiftShader has no
+// shared image for a WebGPU canvas's swap chain (its GPU process logs "Could not find SharedImageBackingFactory with
+// params: usage: ...|WebgpuSwapChainTexture|..." and "SharedImageStub: Unable to create shared image") and loses the
+// device after a few presented frames (docs/engines.md). The canvas context hands Babylon an ordinary texture of the
+// configured format and usage instead, which it draws into and reads back; nothing is presented.
+function keepWebGpuOffTheSwapChain() {
+  const configured = new WeakMap();
+  GPUCanvasContext.prototype.configure = function (configuration) { configured.set(this, { configuration, texture: null }); };
+  GPUCanvasContext.prototype.getCurrentTexture = function () {
+    const entry = configured.get(this);
+    const { device, format, usage } = entry.configuration;
+    const { width, height } = this.canvas;
+    if (!entry.texture || entry.texture.width !== width || entry.texture.height !== height) {
+      entry.texture?.destroy();
+      entry.texture = device.createTexture({ size: [width, height], format, usage: usage | GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
+    }
+    return entry.texture;
+  };
+}
+
+// One WebGPU engine for the page: Chromium here gives no adapter again once an engine's device is destroyed.
+let webGpu = null;
+async function webGpuEngine(width, height) {
+  if (!webGpu) {
+    keepWebGpuOffTheSwapChain();
+    const canvas = document.createElement('canvas');
+    document.body.appendChild(canvas);
+    webGpu = new WebGPUEngine(canvas, { antialias: false, adaptToDeviceRatio: false });
+    await webGpu.initAsync();
+  }
+  webGpu.getRenderingCanvas().width = width;
+  webGpu.getRenderingCanvas().height = height;
+  webGpu.resize(true);
+  return webGpu;
+}
+
+// The canvas's pixels, bottom row first as WebGL reads them (Babylon's WebGPU engine reads the top row first).
+async function readPixels(engine, width, height) {
+  if (engine.isWebGPU) {
+    const top = new Uint8Array((await engine.readPixels(0, 0, width, height)).buffer);
+    const pixels = new Uint8Array(width * height * 4);
+    for (let y = 0; y < height; ++y) pixels.set(top.subarray((height - 1 - y) * width * 4, (height - y) * width * 4), y * width * 4);
+    return pixels;
+  }
+  const gl = engine._gl;
+  const pixels = new Uint8Array(width * height * 4);
+  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  return pixels;
+}
+
 window.hexcDriver = {
-  // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light.
-  async render({ module, width, height, uv, input, light, encoding, sphere }) {
+  // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light;
+  // `diffuse`: no specular highlight from the light (PBRMaterial's specularIntensity 0).
+  async render({ module, width, height, uv, input, light, encoding, sphere, diffuse, webgpu }) {
     const errors = [];
     const consoleError = console.error;
     console.error = (...args) => { errors.push(args.join(' ')); consoleError(...args); };
-    const canvas = document.createElement('canvas');
-    canvas.width = width;
-    canvas.height = height;
-    document.body.appendChild(canvas);
-    const engine = new Engine(canvas, false, { preserveDrawingBuffer: true, adaptToDeviceRatio: false });
+    const canvas = webgpu ? null : document.body.appendChild(Object.assign(document.createElement('canvas'), { width, height }));
+    const engine = webgpu ? await webGpuEngine(width, height) : new Engine(canvas, false, { preserveDrawingBuffer: true, adaptToDeviceRatio: false });
+    const scene = new Scene(engine);
     try {
       const pkg = await import(module);
-      const scene = new Scene(engine);
       scene.clearColor = new Color4(0, 0, 0, 1);
       scene.ambientColor = new Color3(0, 0, 0);
       scene.imageProcessingConfiguration.isEnabled = encoding === 'srgb';
@@ -73,22 +123,24 @@ window.hexcDriver = {
       Object.assign(camera, { orthoLeft: -1, orthoRight: 1, orthoTop: 1, orthoBottom: -1, minZ: 0.1, maxZ: 10 });
       const material = await pkg.createMaterial('hexc', scene);
       material.backFaceCulling = false;
+      if (diffuse) material.specularIntensity = 0;
       if (input) new Probe(material, input);
       if (light) new DirectionalLight('sun', new Vector3(-light[0], -light[1], light[2]), scene).intensity = 2.5; // towards the light: (x, y, -z)
       (sphere ? CreateSphere('sphere', { diameter: 1.9, segments: 48 }, scene) : square(scene, uv)).material = material;
       if (sphere) new HemisphericLight('sky', new Vector3(0, 1, 0), scene).intensity = 0.4;
       await Promise.race([scene.whenReadyAsync(), new Promise((_, reject) => setTimeout(() => reject(new Error('not ready: ' + errors.join('\n'))), 60000))]);
       scene.render();
-      const gl = engine._gl;
-      const pixels = new Uint8Array(width * height * 4);
-      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      const pixels = await readPixels(engine, width, height);
       let text = '';
       for (let i = 0; i < pixels.length; i += 0x8000) text += String.fromCharCode(...pixels.subarray(i, i + 0x8000));
       return { pixels: btoa(text), errors: JSON.stringify(errors) };
     } finally {
       console.error = consoleError;
-      engine.dispose();
-      canvas.remove();
+      scene.dispose();
+      if (canvas) {
+        engine.dispose();
+        canvas.remove();
+      }
     }
   },
 };
