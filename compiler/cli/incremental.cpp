@@ -7,6 +7,7 @@
 #include "hexc/cache.h"
 #include "hexc/engines.h"
 #include "hexc/hash.h"
+#include "hexc/image.h"
 #include "hexc/templates.h"
 
 namespace hexc::cli {
@@ -51,7 +52,7 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     });
     for (const Slot& s : material.slots) {
         h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height));
-        if (s.hex.blend == Blend::Histogram || material.pack || copied) addFile(h, s.texturePath);
+        if (s.hex.blend == Blend::Histogram || material.pack || copied) h.add(s.file ? s.file->bytes : "");  // as the parser read them
     }
     addFile(h, material.sourceFile);
     if (const TemplateRef t = effectiveTemplate(material, options); t.file) addFile(h, t.name);

@@ -115,12 +115,12 @@ int guarded(const std::string& material, Body body) {
 
 // Refuses, before any texture is decoded, one over the budget of `stage` among the material's slots (or `only` and its
 // height slot).
-void checkTexelBudget(const Material& material, TextureStage stage, const Slot* only = nullptr) {
+void checkTexelBudget(const Material& material, const TexelBudget& budget, const Slot* only = nullptr) {
     Diagnostics over;
     for (const Slot& s : material.slots) {
         if (only && s.name != only->name && !(only->heightBlend && s.name == only->heightBlend->slot)) continue;
-        if (stage == TextureStage::Histogram && s.hex.blend != Blend::Histogram) continue;  // the slots it runs for
-        if (std::optional<Diagnostic> d = overTexelBudget(material, s, stage)) over.push_back(*d);
+        if (&budget == &kHistogramBudget && s.hex.blend != Blend::Histogram) continue;  // the slots it runs for
+        if (std::optional<Diagnostic> d = overTexelBudget(material, s, budget)) over.push_back(*d);
     }
     if (!over.empty()) throw CompileError{over};
 }
@@ -256,7 +256,7 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
         return layerRoleReference(material, *role, r);
     }
     const Slot& s = vk::slotForOutput(material, r.output, r.slot);
-    checkTexelBudget(material, TextureStage::Reference, &s);
+    checkTexelBudget(material, reference::kReferenceBudget, &s);
     reference::SampledTexture texture(loadTexture(s.texturePath, s.samplerDecodes()));
     const reference::Heights heights(material, s);
     Image image =
@@ -299,7 +299,7 @@ int renderCommand(const std::vector<std::string>& args) {
             image = referenceImage(*material, r);
         } else {
             if (r.output == vk::RenderOutput::Shaded) *material = shownWithNote(*material, r.show.templateFile, options);
-            checkTexelBudget(*material, TextureStage::Render);
+            checkTexelBudget(*material, vk::kRenderBudget);
             auto runner = makeRunner();
             if (!runner) return int(kNoVulkan);
             progress.step("rendering " + size + " pixels on " + runner->deviceName());
@@ -392,8 +392,8 @@ int previewCommand(const std::vector<std::string>& args) {
         CompileOptions options;
         if (!show.resolve(options)) return int(kInvalidInput);
         const Material shown = shownWithNote(*material, show.templateFile, options);
-        checkTexelBudget(shown, TextureStage::Render);
-        checkTexelBudget(withBlend(shown, Blend::Histogram), TextureStage::Histogram);  // its histogram column
+        checkTexelBudget(shown, vk::kRenderBudget);
+        checkTexelBudget(withBlend(shown, Blend::Histogram), kHistogramBudget);  // its histogram column
         auto runner = makeRunner();
         if (!runner) return int(kNoVulkan);
 

@@ -300,8 +300,7 @@ std::optional<Texture> Session::loadSlotTexture(const std::string& name, std::st
     }
     // The budgets `hexc preview` keeps, checked from the header before anything is decoded: the page uploads a slot's
     // texture with its mips, and the tables are the histogram blend's precomputation.
-    const TextureStage stage = derived.empty() ? TextureStage::Render : TextureStage::Histogram;
-    if (std::optional<Diagnostic> over = overTexelBudget(*compiled_, *it, stage)) {
+    if (std::optional<Diagnostic> over = overTexelBudget(*compiled_, *it, derived.empty() ? vk::kRenderBudget : kHistogramBudget)) {
         *whyNot = over->format();
         return std::nullopt;
     }

@@ -29,10 +29,14 @@
 #include <memory>
 #include <vector>
 
+#include "hexc/budgets.h"
 #include "hexc/image.h"
 #include "hexc/material.h"
 
 namespace hexc::reference {
+
+// hexc render --reference holds the texture in fp64 RGBA with its mips: 32 * 4/3 bytes a texel, 716 MB at 4096x4096.
+inline constexpr TexelBudget kReferenceBudget{4096, "--reference", "it holds the texture in fp64 with its mips"};
 
 using Vec2 = std::array<double, 2>;
 using Vec3 = std::array<double, 3>;

@@ -10,11 +10,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hexc/budgets.h"
 #include "hexc/compiler.h"
 #include "hexc/image.h"
 #include "vk/runner.h"
 
 namespace hexc::vk {
+
+// hexc render and preview upload every slot's texture to lavapipe, which holds it and its mips in host memory at 4
+// (8-bit) or 16 (float) bytes a texel, twice (host copy, device image); edit's page uploads it to WebGL.
+inline constexpr TexelBudget kRenderBudget{8192, "hexc render and preview", "lavapipe holds each texture with its mips in host memory"};
 
 enum class RenderOutput {
     Albedo,      // a colour (or scalar) slot's blended value

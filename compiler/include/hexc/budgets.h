@@ -1,5 +1,5 @@
 #pragma once
-// Texel budgets: the most texels of one texture that each stage holding it in memory accepts (docs/cli.md#budgets).
+// Texel budgets: the most texels of one texture that a stage holding it in memory accepts (docs/cli.md#budgets).
 // They are checked from the size in the texture's header, which the parser reads without decoding, so a small file
 // that claims a huge size is refused before any memory is taken for it.
 #include <cstdint>
@@ -11,19 +11,25 @@
 
 namespace hexc {
 
-enum class TextureStage {
-    Histogram,  // the histogram blend's precomputation (compile, render, preview, edit's page)
-    Packing,    // "pack": true decodes each slot's texture and the packed one (compile)
-    Render,     // hexc render and preview upload every slot's texture to lavapipe, which holds it with its mips; edit's page, to WebGL
-    Reference,  // hexc render --reference holds the texture in fp64 with its mips
+// A stage's budget: side x side texels. Each side keeps its stage within about 1.5 GB on its worst texture format.
+struct TexelBudget {
+    int side;
+    const char* what;  // the stage, as the message names it
+    const char* why;   // what it holds per texel
+    int64_t texels() const { return int64_t(side) * side; }
+    std::string text() const;  // "at most 4096x4096 texels, as it holds ..."
 };
 
-// The stage's budget in texels, and as a message says it: "at most 4096x4096 texels, as it holds ...".
-int64_t texelBudget(TextureStage stage);
-std::string texelBudgetText(TextureStage stage);
+// The library's stages that decode a texture. A tool over the library keeps its own (the harness: hexc render's
+// upload, vk/render.h, and the fp64 reference, reference/reference.h).
+// ~25 bytes a texel beside the decoded texture; a whole run 855 MB at 4096 x 4096.
+inline constexpr TexelBudget kHistogramBudget{4096, "the histogram blend's precomputation",
+                                              "it holds about 25 bytes a texel beside the decoded texture"};
+// 4 bytes a texel for each slot decoded, the packed texture and its PNG.
+inline constexpr TexelBudget kPackingBudget{8192, "packing", "it decodes each slot's texture at 4 bytes a texel"};
 
 // An error located at the slot (HX125, naming the texture, its size and the budget) when its texture has more
-// texels than `stage` holds; nullopt when it fits.
-std::optional<Diagnostic> overTexelBudget(const Material& material, const Slot& slot, TextureStage stage);
+// texels than `budget` holds; nullopt when it fits.
+std::optional<Diagnostic> overTexelBudget(const Material& material, const Slot& slot, const TexelBudget& budget);
 
 }  // namespace hexc

@@ -13,8 +13,8 @@ namespace hexc {
 constexpr uint64_t kMaxInputBytes = 64ull << 20;
 
 // The file's bytes, read once; nullopt when it cannot be opened, is not a regular file (a FIFO, a device such
-// as /dev/zero, a folder) or exceeds kMaxInputBytes, with the reason in *whyNot when given.
-std::optional<std::string> readFile(const std::filesystem::path& file, std::string* whyNot = nullptr);
+// as /dev/zero, a folder) or exceeds `limit` bytes, with the reason in *whyNot when given.
+std::optional<std::string> readFile(const std::filesystem::path& file, std::string* whyNot = nullptr, uint64_t limit = kMaxInputBytes);
 
 // Why `file` is not a regular file, in a user's words: "no such file", "is a directory" or "not a regular
 // file" (a FIFO, a device).

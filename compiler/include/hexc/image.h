@@ -46,8 +46,24 @@ struct TextureInfo {
     bool eightBit = false;     // stb's 8-bit formats: loadTexture gives rgba8, alpha 255 where the file has none
 };
 
-// Size and channel count of an image file without decoding it (the formats loadTexture reads);
-// nullopt with the reason in *error when the file is not a readable image.
+// A texture file as a compile reads it: once, whole, with what its header says. The parser reads each slot's texture
+// into one (Slot::file); packing, the derived textures, the engine packages and the command line's up-to-date check
+// take its bytes and texels from there, so every stage sees the same file, however it changes on disk meanwhile.
+struct TextureFile {
+    std::filesystem::path path;
+    std::string bytes;  // the whole file: the compile's memory holds every slot's texture file once, encoded
+    TextureInfo info;
+};
+
+// The largest texture file read (twice an 8192x8192 RGBA float texture, the largest any stage decodes; stb_image reads
+// no more than 2 GiB either).
+constexpr uint64_t kMaxTextureBytes = 2ull << 30;
+
+// Reads `file` whole and its header, without decoding it (the formats loadTexture reads); nullopt with the reason in
+// *error when it is not a readable image.
+std::optional<TextureFile> readTextureFile(const std::filesystem::path& file, std::string* error);
+
+// Size and channel count of an image file (readTextureFile's info).
 std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::string* error);
 
 // A texture that cannot be decoded: a problem of the input (hexc render exits 1), not of an output.
@@ -58,6 +74,9 @@ struct TextureError : std::runtime_error {
 // Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...) and PFM. HDR and PFM load as float.
 // Throws TextureError with the file name and stb's reason on failure.
 Texture loadTexture(const std::filesystem::path& file, bool srgb);
+
+// The texels of a file read before, as loadTexture decodes the file.
+Texture decodeTexture(const TextureFile& file, bool srgb);
 
 // An 8-bit RGBA texture as PNG bytes, the same bytes for the same texels; and PNG (or any stb format's) bytes decoded as
 // loadTexture decodes a file. The latter throws TextureError when they do not decode.

@@ -2,6 +2,7 @@
 // The material model: what a material JSON file means once parsed, validated and defaulted.
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -116,6 +117,8 @@ struct HeightBlend {
     double width = 0.2;  // transition width, in (0, 1]
 };
 
+struct TextureFile;  // hexc/image.h
+
 struct Slot {
     std::string name;                   // GLSL identifier; used in generated function and resource names
     std::string texture;                // as written in the JSON
@@ -130,8 +133,11 @@ struct Slot {
     int width = 0, height = 0;  // of the texture file
     std::string channelNames;   // the texture file's channels, from its header (TextureInfo::channelNames)
     bool eightBit = false;      // the file decodes to 8-bit texels (TextureInfo::eightBit)
-    int line = 0, col = 0;      // where the slot's kind (else the slot) is in the material file; 0 when built in code
-    bool kindStated = true;     // false in a partial material whose kind is not one hexc knows: not checked against a template
+    // The texture file as the parser read it, the compile's one read of it (its bytes, its header); null when the
+    // slot is built in code or its texture could not be read.
+    std::shared_ptr<const TextureFile> file;
+    int line = 0, col = 0;   // where the slot's kind (else the slot) is in the material file; 0 when built in code
+    bool kindStated = true;  // false in a partial material whose kind is not one hexc knows: not checked against a template
 
     // Whether the texture is bound as sRGB (the sampler decodes, filtering decoded texels). Not in MaterialX mode
     // (hex-tiled or plain), which filters and blends the stored (encoded) texels and decodes the result, as MaterialX

@@ -96,7 +96,7 @@ void removeDeadTemporaries(const std::filesystem::path& dir) {
     }
 }
 
-std::optional<std::string> readFile(const std::filesystem::path& file, std::string* whyNot) {
+std::optional<std::string> readFile(const std::filesystem::path& file, std::string* whyNot, uint64_t limit) {
     auto fail = [&](std::string why) -> std::optional<std::string> {
         if (whyNot) *whyNot = std::move(why);
         return std::nullopt;
@@ -107,8 +107,7 @@ std::optional<std::string> readFile(const std::filesystem::path& file, std::stri
     struct stat st;
     if (::fstat(in.fd, &st) != 0) return fail(std::strerror(errno));
     if (!S_ISREG(st.st_mode)) return fail(whyNotRegular(file));
-    if (uint64_t(st.st_size) > kMaxInputBytes)
-        return fail("larger than hexc's input limit of " + std::to_string(kMaxInputBytes >> 20) + " MiB");
+    if (uint64_t(st.st_size) > limit) return fail("larger than hexc's input limit of " + std::to_string(limit >> 20) + " MiB");
     // Read what is there, up to the limit: a file that grows while read is cut off and reported, not followed.
     std::string bytes;
     bytes.reserve(size_t(st.st_size));  // one allocation for a file that does not grow
@@ -118,7 +117,7 @@ std::optional<std::string> readFile(const std::filesystem::path& file, std::stri
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) return fail(std::strerror(errno));
         if (n == 0) return bytes;
-        if (bytes.size() + size_t(n) > kMaxInputBytes) return fail("grew past hexc's input limit while being read");
+        if (bytes.size() + size_t(n) > limit) return fail("grew past hexc's input limit while being read");
         bytes.append(buffer, size_t(n));
     }
 }

@@ -7,7 +7,7 @@
 
 #include "common/templates.h"
 #include "engines/roles.h"
-#include "hexc/files.h"
+#include "hexc/image.h"
 
 namespace hexc {
 namespace {
@@ -152,12 +152,7 @@ std::vector<OutputFile> webPackage(const Material& material, Engine engine, cons
         const auto slot =
             std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& s) { return textureCopyName(material, s) == file; });
         if (slot == material.slots.end()) continue;  // a packed texture, written by the compile
-        std::string why;
-        std::optional<std::string> bytes = readFile(slot->texturePath, &why);
-        if (bytes)
-            files.push_back({file, std::move(*bytes)});
-        else  // the caller writes nothing then
-            diagnostics.push_back(Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", why));
+        files.push_back({file, slot->file->bytes});  // the bytes the parser read
     }
     return files;
 }

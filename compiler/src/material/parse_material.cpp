@@ -493,13 +493,18 @@ private:
             return;
         }
         std::string why;
-        std::optional<TextureInfo> info = textureInfo(s.texturePath, &why);
-        if (!info) {
+        std::shared_ptr<const TextureFile>& file = files_[std::filesystem::weakly_canonical(s.texturePath, ec)];
+        if (!file)
+            if (std::optional<TextureFile> read = readTextureFile(s.texturePath, &why))
+                file = std::make_shared<const TextureFile>(std::move(*read));
+        if (!file) {
             report(Code::TextureUnreadable, pointer,
                    "cannot read texture " + shown + ": " + why +
                        " (expected PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM, PFM, OpenEXR, KTX2 or DDS)");
             return;
         }
+        s.file = file;
+        const TextureInfo* info = &file->info;
         s.width = info->width;
         s.height = info->height;
         s.channelNames = info->channelNames;
@@ -522,6 +527,8 @@ private:
     }
 
     bool inheritedRangeWarned_ = false;  // HX116 for the material-level tiling is given once
+    // Each texture file read once, however many slots name it (by its real path); null where it could not be read.
+    std::map<std::filesystem::path, std::shared_ptr<const TextureFile>> files_;
 };
 
 }  // namespace

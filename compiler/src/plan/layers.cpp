@@ -37,7 +37,7 @@ double fetches(const SlotPlan& sp) {
 std::vector<double> coverage(const Material& material, const Layers& layers) {
     std::vector<double> out(layers.layers.size(), 1.0);
     for (size_t k = 0; k < layers.splats.size(); ++k) {
-        const Texture t = loadTexture(material.slots[layers.splats[k]].texturePath, false);
+        const Texture t = decodeTexture(*material.slots[layers.splats[k]].file, false);
         if (t.isFloat() || t.rgba8.empty()) continue;  // counted as covering everything: the worst case
         const size_t texels = size_t(t.width) * size_t(t.height);
         for (size_t c = 0; c < 4 && 4 * k + c < out.size(); ++c) {

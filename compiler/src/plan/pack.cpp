@@ -27,10 +27,10 @@ int packChannels(ShaderPlan& plan, size_t i) {
         return 0;
     for (const SlotPlan& other : plan.slots)
         if (other.heightMap == i) return 0;
-    if (int64_t(s.width) * s.height > texelBudget(TextureStage::Packing)) {
-        notPacked(plan, i,
-                  "its texture is " + std::to_string(s.width) + "x" + std::to_string(s.height) + "; packing takes " +
-                      texelBudgetText(TextureStage::Packing));
+    if (int64_t(s.width) * s.height > kPackingBudget.texels()) {
+        notPacked(
+            plan, i,
+            "its texture is " + std::to_string(s.width) + "x" + std::to_string(s.height) + "; packing takes " + kPackingBudget.text());
         return 0;
     }
     // The header decides where it can: an 8-bit scalar takes its channel, and an 8-bit colour file without alpha
@@ -39,7 +39,7 @@ int packChannels(ShaderPlan& plan, size_t i) {
     if (s.eightBit && s.channelNames.find('a') == std::string::npos) return 3;
     Texture t;
     try {
-        t = loadTexture(s.texturePath, false);
+        t = decodeTexture(*s.file, false);
     } catch (const std::exception&) {
         return 0;  // not decoded here (block-compressed): the texture is bound as it is
     }

@@ -8,7 +8,6 @@
 
 #include "hexc/budgets.h"
 #include "hexc/cache.h"
-#include "hexc/files.h"
 #include "hexc/hash.h"
 #include "hexc/histogram.h"
 #include "hexc/image.h"
@@ -21,9 +20,9 @@ nlohmann::json binary(std::string_view bytes) { return nlohmann::json::binary(st
 // A histogram slot's derived textures (hexc/histogram.h) as PFM files' bytes: float32 keeps T and its inverse exact,
 // and hexc reads and writes PFM byte for byte. A texture that cannot be read stops the compile.
 HistogramTransform transformOf(const Material& material, const Slot& s) {
-    if (std::optional<Diagnostic> d = overTexelBudget(material, s, TextureStage::Histogram)) throw CompileError{{*d}};
+    if (std::optional<Diagnostic> d = overTexelBudget(material, s, kHistogramBudget)) throw CompileError{{*d}};
     try {
-        return histogramTransform(loadTexture(s.texturePath, s.colorSpace == ColorSpace::Srgb), s);
+        return histogramTransform(decodeTexture(*s.file, s.colorSpace == ColorSpace::Srgb), s);
     } catch (const TextureError& e) {
         throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
     }
@@ -43,9 +42,9 @@ nlohmann::json histogramFiles(const Material& material, const Slot& s) {
 // colour space) and which channels are transformed (kind, channel), and hexc's build.
 std::string histogramKey(const Slot& s) {
     ContentHash h;
-    for (const std::string& part : {std::string("hexc histogram 1"), std::string(version()), buildId(),
-                                    readFile(s.texturePath).value_or(""), s.texturePath.extension().string(),
-                                    std::string(toString(s.colorSpace)), std::string(toString(s.kind)), std::to_string(s.channel)})
+    for (const std::string& part :
+         {std::string("hexc histogram 1"), std::string(version()), buildId(), s.file->bytes, s.texturePath.extension().string(),
+          std::string(toString(s.colorSpace)), std::string(toString(s.kind)), std::to_string(s.channel)})
         h.add(part);
     return h.hex();
 }
@@ -87,8 +86,8 @@ void addHistogramFiles(const Material& material, const ShaderPlan& plan, ShaderC
     }
 }
 
-// A pack's texture (docs/material-format.md#pack) as PNG bytes: each slot's 8-bit texels, as loadTexture decodes its
-// file, copied into the pack's channels; alpha 255 where no slot fills it, the other unused channels 0. Level 0 only:
+// A pack's texture (docs/material-format.md#pack) as PNG bytes: each slot's 8-bit texels, decoded from the file the
+// parser read (the plan packed it from the same bytes' header), copied into the pack's channels; alpha 255 where no slot fills it, the other unused channels 0. Level 0 only:
 // the mip chain is the engine's to build, as for any texture.
 std::string packedPng(const Material& material, const ShaderPlan& plan, const PackPlan& p) {
     Texture packed{p.width, p.height, p.srgb, std::vector<uint8_t>(size_t(p.width) * p.height * 4, 0), {}};
@@ -97,15 +96,10 @@ std::string packedPng(const Material& material, const ShaderPlan& plan, const Pa
         const Slot& s = *plan.slots[p.slots[k]].slot;
         Texture source;
         try {
-            source = loadTexture(s.texturePath, false);
+            source = decodeTexture(*s.file, false);
         } catch (const TextureError& e) {
             throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "", e.what())}};
         }
-        // The plan packed it from its header: a file replaced since then must not be read past its texels.
-        if (source.rgba8.size() != packed.rgba8.size())
-            throw CompileError{{Diagnostic::make(Code::TextureUnreadable, {material.sourceFile.string()}, "",
-                                                 s.texturePath.string() + " changed while hexc read it: it no longer holds " +
-                                                     std::to_string(p.width) + "x" + std::to_string(p.height) + " 8-bit texels")}};
         // To: the pack's channels (the plan's packedChannel, 0 for RGB); from: the slot's (a colour slot's RGB, a scalar's channel).
         const size_t to = size_t(plan.slots[p.slots[k]].packedChannel), count = p.channels[k].size();
         const size_t from = kindRow(s.kind).oneChannel ? size_t(s.channel) : 0;
@@ -122,8 +116,8 @@ std::string packedKey(const ShaderPlan& plan, const PackPlan& p) {
     for (const std::string& part : {std::string("hexc packed texture 1"), std::string(version()), buildId()}) h.add(part);
     for (size_t k = 0; k < p.slots.size(); ++k) {
         const Slot& s = *plan.slots[p.slots[k]].slot;
-        for (const std::string& part : {readFile(s.texturePath).value_or(""), s.texturePath.extension().string(),
-                                        std::string(toString(s.kind)), std::to_string(s.channel), p.channels[k]})
+        for (const std::string& part :
+             {s.file->bytes, s.texturePath.extension().string(), std::string(toString(s.kind)), std::to_string(s.channel), p.channels[k]})
             h.add(part);
     }
     return h.hex();

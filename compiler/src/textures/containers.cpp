@@ -1,15 +1,18 @@
-#include "common/containers.h"
+#include "textures/containers.h"
 
+#include "textures/memory_stream.h"
+
+#include <IexBaseExc.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfVersion.h>
 
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <fstream>
 #include <iterator>
 #include <memory>
 #include <mutex>
@@ -119,12 +122,9 @@ uint32_t u32(const std::vector<unsigned char>& b, size_t at) {
     return at + 4 <= b.size() ? uint32_t(b[at]) | uint32_t(b[at + 1]) << 8 | uint32_t(b[at + 2]) << 16 | uint32_t(b[at + 3]) << 24 : 0;
 }
 
-std::vector<unsigned char> prefix(const std::filesystem::path& file, size_t bytes) {
-    std::ifstream in(file, std::ios::binary);
-    std::vector<unsigned char> b(bytes);
-    in.read(reinterpret_cast<char*>(b.data()), std::streamsize(bytes));
-    b.resize(size_t(in.gcount()));
-    return b;
+std::vector<unsigned char> prefix(std::string_view bytes, size_t size) {
+    const std::string_view head = bytes.substr(0, size);
+    return {head.begin(), head.end()};
 }
 
 constexpr unsigned char kKtx2Magic[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
@@ -185,17 +185,15 @@ Header ddsHeader(const std::vector<unsigned char>& b) {
     return h;
 }
 
-Header header(Kind kind, const std::filesystem::path& file) {
-    std::vector<unsigned char> b = prefix(file, 148);
+Header header(Kind kind, std::string_view bytes) {
+    std::vector<unsigned char> b = prefix(bytes, 148);
     Header h = kind == Kind::Ktx2 ? ktx2Header(b) : ddsHeader(b);
     if (!h.problem.empty()) return h;
     if (h.width <= 0 || h.height <= 0 || h.width > 65536 || h.height > 65536) return {.problem = "the header gives no valid size"};
     // Level 0 must be in the file: a truncated texture would fail in the engine, not here.
     const Format& f = *h.format;
-    const uint64_t bytes = uint64_t((h.width + f.block - 1) / f.block) * uint64_t((h.height + f.block - 1) / f.block) * f.blockBytes;
-    std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(file, ec);
-    if (ec || h.dataOffset > size || bytes > size - h.dataOffset) h.problem = "the file is truncated (level 0 does not fit)";
+    const uint64_t level0 = uint64_t((h.width + f.block - 1) / f.block) * uint64_t((h.height + f.block - 1) / f.block) * f.blockBytes;
+    if (h.dataOffset > bytes.size() || level0 > bytes.size() - h.dataOffset) h.problem = "the file is truncated (level 0 does not fit)";
     return h;
 }
 
@@ -257,7 +255,7 @@ struct ExrLayout {
 
 // Reads the header's attributes (`name\0type\0`, a 32-bit size and the value; an empty name ends them), each stated
 // size checked against the bytes that follow it. Why they do not fit, or empty.
-std::string readExrHeader(std::ifstream& in, uint64_t size, ExrLayout& l) {
+std::string readExrHeader(std::istream& in, uint64_t size, ExrLayout& l) {
     auto text = [&](std::string* out) {
         for (char c; out->size() <= 255 && in.get(c);) {
             if (c == '\0') return true;
@@ -290,10 +288,9 @@ std::string readExrHeader(std::ifstream& in, uint64_t size, ExrLayout& l) {
 // sanitized build tens of seconds: each stated size is checked against the bytes that follow it first. Level 0's
 // chunk table holds a 64-bit offset a chunk; a scanline chunk starts with its y and size, a tile with its x, y, level
 // x, level y and size. A window outside 1..65536 and an unknown compression are the library's to refuse.
-std::string exrLayoutProblem(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(file, ec);
+std::string exrLayoutProblem(std::string_view bytes) {
+    MemoryStream in(bytes);
+    const uint64_t size = bytes.size();
     ExrLayout l;
     if (std::string problem = readExrHeader(in, size, l); !problem.empty()) return problem;
     const int64_t width = int64_t(l.window[2]) - l.window[0] + 1, height = int64_t(l.window[3]) - l.window[1] + 1;
@@ -318,38 +315,64 @@ std::string exrLayoutProblem(const std::filesystem::path& file) {
     return {};
 }
 
-std::optional<TextureInfo> exrInfo(const std::filesystem::path& file, std::string* error) {
+// An EXR file's bytes as the OpenEXR library reads a file: a short read throws, as its own file stream does.
+class ExrBytes : public Imf::IStream {
+public:
+    ExrBytes(std::string_view bytes, const std::filesystem::path& file) : Imf::IStream(file.c_str()), bytes_(bytes) {}
+    bool read(char c[], int n) override {
+        if (n < 0 || at_ > bytes_.size() || uint64_t(n) > bytes_.size() - at_) throw Iex::InputExc("Unexpected end of file.");
+        std::memcpy(c, bytes_.data() + at_, size_t(n));
+        at_ += uint64_t(n);
+        return at_ < bytes_.size();
+    }
+    uint64_t tellg() override { return at_; }
+    void seekg(uint64_t pos) override { at_ = pos; }
+
+private:
+    std::string_view bytes_;
+    uint64_t at_ = 0;
+};
+
+// Checks the file's layout, opens it in the OpenEXR library once and hands it to use(file, width, height); false with
+// the reason in *error when it cannot be used.
+template <class Use>
+bool readExr(std::string_view bytes, const std::filesystem::path& file, std::string* error, Use use) {
     limitExrSizes();
-    if (const std::string problem = exrLayoutProblem(file); !problem.empty()) {
-        *error = "OpenEXR: " + problem;
-        return std::nullopt;
-    }
+    std::string problem = exrLayoutProblem(bytes);
     try {
-        Imf::InputFile in(file.c_str());
-        const Imath::Box2i w = in.header().dataWindow();
-        const int64_t width = int64_t(w.max.x) - w.min.x + 1, height = int64_t(w.max.y) - w.min.y + 1;
-        if (const std::string problem = exrProblem(in, width, height); !problem.empty()) {
-            *error = "OpenEXR: " + problem;
-            return std::nullopt;
+        if (problem.empty()) {
+            ExrBytes stream(bytes, file);
+            Imf::InputFile in(stream);
+            const Imath::Box2i w = in.header().dataWindow();
+            const int64_t width = int64_t(w.max.x) - w.min.x + 1, height = int64_t(w.max.y) - w.min.y + 1;
+            problem = exrProblem(in, width, height);
+            if (problem.empty()) {
+                use(in, int(width), int(height));
+                return true;
+            }
         }
-        TextureInfo info;
-        info.width = int(width), info.height = int(height), info.channels = exrChannels(in.header()).count;
-        info.channelNames = std::string("rgba").substr(0, size_t(info.channels));
-        info.format = "OpenEXR";
-        return info;
     } catch (const std::exception& e) {
-        *error = std::string("OpenEXR: ") + e.what();
-        return std::nullopt;
+        problem = e.what();
     }
+    *error = "OpenEXR: " + problem;
+    return false;
 }
 
-Texture loadExr(const std::filesystem::path& file) {
-    if (std::string why; !exrInfo(file, &why)) throw TextureError(file.string() + ": " + why);
-    try {
-        Imf::InputFile in(file.c_str());
+std::optional<TextureInfo> exrInfo(std::string_view bytes, const std::filesystem::path& file, std::string* error) {
+    TextureInfo info;
+    const auto describe = [&](Imf::InputFile& in, int width, int height) {
+        info.width = width, info.height = height, info.channels = exrChannels(in.header()).count;
+        info.channelNames = std::string("rgba").substr(0, size_t(info.channels));
+        info.format = "OpenEXR";
+    };
+    return readExr(bytes, file, error, describe) ? std::optional<TextureInfo>(info) : std::nullopt;
+}
+
+Texture loadExr(std::string_view bytes, const std::filesystem::path& file) {
+    Texture t;
+    const auto decode = [&](Imf::InputFile& in, int width, int height) {
         const Imath::Box2i window = in.header().dataWindow();
-        Texture t;
-        t.width = window.max.x - window.min.x + 1, t.height = window.max.y - window.min.y + 1;
+        t.width = width, t.height = height;
         t.rgba32f.assign(size_t(t.width) * t.height * 4, 1.0f);  // alpha 1 where the file has none
         const std::vector<std::string> names = exrChannels(in.header()).names;
         Imf::FrameBuffer fb;
@@ -359,15 +382,14 @@ Texture loadExr(const std::filesystem::path& file) {
         in.readPixels(window.min.y, window.max.y);
         if (names.size() == 1)
             for (size_t i = 0; i < t.rgba32f.size(); i += 4) std::fill_n(&t.rgba32f[i + 1], 3, t.rgba32f[i]);
-        return t;
-    } catch (const std::exception& e) {
-        throw TextureError(file.string() + ": OpenEXR: " + e.what());
-    }
+    };
+    if (std::string why; !readExr(bytes, file, &why, decode)) throw TextureError(file.string() + ": " + why);
+    return t;
 }
 
-Texture decode(const Header& h, const std::filesystem::path& file, bool srgb) {
+Texture decode(const Header& h, std::string_view bytes, const std::filesystem::path& file, bool srgb) {
     const Format& f = *h.format;
-    std::ifstream in(file, std::ios::binary);
+    MemoryStream in(bytes);
     in.seekg(std::streamoff(h.dataOffset));
     Texture t;
     t.width = h.width;
@@ -389,17 +411,17 @@ Texture decode(const Header& h, const std::filesystem::path& file, bool srgb) {
 
 }  // namespace
 
-Kind kindOf(const std::filesystem::path& file) {
-    std::vector<unsigned char> b = prefix(file, 12);
+Kind kindOf(std::string_view bytes) {
+    std::vector<unsigned char> b = prefix(bytes, 12);
     if (b.size() == 12 && std::memcmp(b.data(), kKtx2Magic, 12) == 0) return Kind::Ktx2;
     if (b.size() >= 4 && std::memcmp(b.data(), "DDS ", 4) == 0) return Kind::Dds;
     if (b.size() >= 4 && std::memcmp(b.data(), "\x76\x2f\x31\x01", 4) == 0) return Kind::Exr;
     return Kind::None;
 }
 
-std::optional<TextureInfo> info(Kind kind, const std::filesystem::path& file, std::string* error) {
-    if (kind == Kind::Exr) return exrInfo(file, error);
-    Header h = header(kind, file);
+std::optional<TextureInfo> info(Kind kind, std::string_view bytes, const std::filesystem::path& file, std::string* error) {
+    if (kind == Kind::Exr) return exrInfo(bytes, file, error);
+    Header h = header(kind, bytes);
     if (!h.problem.empty()) {
         *error = h.problem;
         return std::nullopt;
@@ -410,14 +432,14 @@ std::optional<TextureInfo> info(Kind kind, const std::filesystem::path& file, st
     return TextureInfo{h.width, h.height, int(names.size()), names, h.mips, srgb, container + std::string(h.format->name)};
 }
 
-Texture load(Kind kind, const std::filesystem::path& file, bool srgb) {
-    if (kind == Kind::Exr) return loadExr(file);
-    Header h = header(kind, file);
+Texture load(Kind kind, std::string_view bytes, const std::filesystem::path& file, bool srgb) {
+    if (kind == Kind::Exr) return loadExr(bytes, file);
+    Header h = header(kind, bytes);
     if (!h.problem.empty()) throw TextureError(file.string() + ": " + h.problem);
     if (h.format->decode == Format::No)
         throw TextureError(file.string() + ": hexc render and preview do not decode " + h.format->name +
                            " (only uncompressed 8-bit and 32-bit float RGBA, and EXR); hexc compiles with it");
-    return decode(h, file, srgb);
+    return decode(h, bytes, file, srgb);
 }
 
 }  // namespace hexc::containers

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "hexc/image.h"
 
@@ -12,14 +13,16 @@ namespace hexc::containers {
 
 enum class Kind { None, Ktx2, Dds, Exr };
 
+// Each reads the file's bytes (TextureFile::bytes); `file` names it in messages.
+
 // By the file's first bytes, not its extension.
-Kind kindOf(const std::filesystem::path& file);
+Kind kindOf(std::string_view bytes);
 
 // Size, channels, mip count and the format's colour space; nullopt with the reason in *error for a malformed,
 // truncated or unknown file.
-std::optional<TextureInfo> info(Kind kind, const std::filesystem::path& file, std::string* error);
+std::optional<TextureInfo> info(Kind kind, std::string_view bytes, const std::filesystem::path& file, std::string* error);
 
 // Level 0 as loadTexture returns it; throws TextureError naming the format when it is not decoded here.
-Texture load(Kind kind, const std::filesystem::path& file, bool srgb);
+Texture load(Kind kind, std::string_view bytes, const std::filesystem::path& file, bool srgb);
 
 }  // namespace hexc::containers

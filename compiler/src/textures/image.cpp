@@ -2,7 +2,8 @@
 // image writing (.pfm, .png), always through a temporary file and a rename.
 #include "hexc/image.h"
 
-#include "common/containers.h"
+#include "textures/containers.h"
+#include "textures/memory_stream.h"
 #include "hexc/files.h"
 
 #include <stb_image.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -48,9 +50,8 @@ struct PfmHeader {
     bool littleEndian = true;
 };
 
-// The header, checked like every container's: a size of 1..65536 and the texels in the file.
-PfmHeader readPfmHeader(std::ifstream& in, const std::filesystem::path& file) {
-    if (!in) failRead(file, "cannot open for reading");
+// The header, checked like every container's: a size of 1..65536 and the texels in the file's `size` bytes.
+PfmHeader readPfmHeader(std::istream& in, uint64_t size, const std::filesystem::path& file) {
     std::string magic;
     PfmHeader h;
     double scale = 0;
@@ -61,15 +62,13 @@ PfmHeader readPfmHeader(std::ifstream& in, const std::filesystem::path& file) {
     h.channels = magic == "PF" ? 3 : 1;
     h.littleEndian = scale < 0;
     const uint64_t dataBytes = uint64_t(h.width) * uint64_t(h.height) * h.channels * 4;
-    std::error_code ec;
-    const uint64_t fileBytes = std::filesystem::file_size(file, ec);
-    if (ec || dataBytes > fileBytes - uint64_t(in.tellg())) failRead(file, "PFM file is truncated");
+    if (dataBytes > size - uint64_t(in.tellg())) failRead(file, "PFM file is truncated");
     return h;
 }
 
-Texture loadPfm(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    const PfmHeader header = readPfmHeader(in, file);
+Texture loadPfm(std::string_view bytes, const std::filesystem::path& file) {
+    MemoryStream in(bytes);
+    const PfmHeader header = readPfmHeader(in, bytes.size(), file);
     const int width = header.width, height = header.height;
     const int channels = header.channels;
     std::vector<uint32_t> words(size_t(width) * height * channels);
@@ -112,20 +111,16 @@ bool writePng(const Image& image, const std::filesystem::path& file) {
     return stbi_write_png(file.string().c_str(), image.width, image.height, 4, bytes.data(), image.width * 4) != 0;
 }
 
-// Whether the file is a PNG whose chunks stop before IEND. stbi_info reads only the header, so a truncated PNG
-// would pass validation and fail when an engine loads it; walking the chunk headers costs a few seeks, not a decode.
-bool truncatedPng(const std::filesystem::path& file) {
-    std::error_code ec;
-    const uintmax_t size = std::filesystem::file_size(file, ec);
-    std::ifstream in(file, std::ios::binary);
-    char signature[8];
-    if (ec || !in.read(signature, 8) || std::string_view(signature, 8) != "\x89PNG\r\n\x1a\n") return false;
-    for (uintmax_t at = 8; at + 12 <= size;) {  // after the 8-byte signature: length, type, data, CRC
-        unsigned char header[8];
-        if (!in.seekg(std::streamoff(at)) || !in.read(reinterpret_cast<char*>(header), 8)) return false;
-        const uintmax_t length = uintmax_t(header[0]) << 24 | header[1] << 16 | header[2] << 8 | header[3];
-        if (std::string_view(reinterpret_cast<const char*>(header + 4), 4) == "IEND") return false;
-        at += 12 + length;
+uint64_t bigEndian32(const unsigned char* p) { return uint64_t(p[0]) << 24 | p[1] << 16 | p[2] << 8 | p[3]; }
+
+// Whether the bytes are a PNG whose chunks stop before IEND. stbi_info reads only the header, so a truncated PNG
+// would pass validation and fail when an engine loads it; walking the chunk headers costs no decode.
+bool truncatedPng(std::string_view bytes) {
+    const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
+    if (!bytes.starts_with("\x89PNG\r\n\x1a\n")) return false;
+    for (uint64_t at = 8; at + 12 <= bytes.size();) {  // after the 8-byte signature: length, type, data, CRC
+        if (bytes.substr(size_t(at) + 4, 4) == "IEND") return false;
+        at += 12 + bigEndian32(b + at);
     }
     return true;
 }
@@ -139,13 +134,10 @@ uint64_t littleEndian(const unsigned char* p, int bytes) {
 // What the headers of stb's formats say that stbi_info does not check: a PNG's size outside 1..65536 (beyond stb's own
 // limit, stbi_info says only "unknown image type"), and an uncompressed BMP or TGA whose texels are not all in the file.
 // Empty when there is nothing wrong with it. 64-bit arithmetic throughout: every field is the file's to choose.
-std::string stbHeaderProblem(const std::filesystem::path& file) {
+std::string stbHeaderProblem(std::string_view bytes, const std::filesystem::path& file) {
     unsigned char b[54] = {};
-    std::ifstream in(file, std::ios::binary);
-    in.read(reinterpret_cast<char*>(b), sizeof b);
-    const size_t got = size_t(in.gcount());
-    std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(file, ec);
+    const size_t got = bytes.copy(reinterpret_cast<char*>(b), sizeof b);
+    const uint64_t size = bytes.size();
     const auto sized = [](int64_t w, int64_t h) { return std::to_string(w) + "x" + std::to_string(h) + " (sizes are 1..65536)"; };
     if (got >= 24 && std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) == 0) {
         const int64_t w = int64_t(b[16]) << 24 | b[17] << 16 | b[18] << 8 | b[19],
@@ -162,37 +154,32 @@ std::string stbHeaderProblem(const std::filesystem::path& file) {
         const uint64_t colourMap = b[1] ? littleEndian(b + 5, 2) * ((b[7] + 7) / 8) : 0;
         needed = 18 + b[0] + colourMap + littleEndian(b + 12, 2) * littleEndian(b + 14, 2) * ((b[16] + 7) / 8);
     }
-    if (ec || needed > size) return "the file is truncated (its texels do not fit)";
+    if (needed > size) return "the file is truncated (its texels do not fit)";
     return {};
 }
 
-}  // namespace
-
-std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::string* error) {
-    TextureInfo info;
-    // Only regular files: opening a FIFO would wait for a writer forever.
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) {
-        *error = whyNotRegular(file);
-        return std::nullopt;
-    }
-    if (containers::Kind kind = containers::kindOf(file); kind != containers::Kind::None) return containers::info(kind, file, error);
+// What the bytes' header says; nullopt with the reason in *error when they are not a readable image.
+std::optional<TextureInfo> infoOf(std::string_view bytes, const std::filesystem::path& file, std::string* error) {
+    if (containers::Kind kind = containers::kindOf(bytes); kind != containers::Kind::None)
+        return containers::info(kind, bytes, file, error);
     if (lowerExtension(file) == ".pfm") {
         try {
-            std::ifstream in(file, std::ios::binary);
-            PfmHeader h = readPfmHeader(in, file);
+            MemoryStream in(bytes);
+            PfmHeader h = readPfmHeader(in, bytes.size(), file);
             return TextureInfo{h.width, h.height, h.channels, h.channels == 3 ? "rgb" : "r", 1, std::nullopt};
         } catch (const TextureError& e) {
             *error = std::string(e.what()).substr(file.string().size() + 2);  // the reason, without the file name
             return std::nullopt;
         }
     }
-    if (std::string problem = stbHeaderProblem(file); !problem.empty()) {
+    if (std::string problem = stbHeaderProblem(bytes, file); !problem.empty()) {
         *error = problem;
         return std::nullopt;
     }
-    if (!stbi_info(file.string().c_str(), &info.width, &info.height, &info.channels)) {
-        const char* reason = stbi_failure_reason();
+    TextureInfo info;
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    if (bytes.size() > INT_MAX || !stbi_info_from_memory(data, int(bytes.size()), &info.width, &info.height, &info.channels)) {
+        const char* reason = bytes.size() > INT_MAX ? "larger than stb_image reads (2 GiB)" : stbi_failure_reason();
         *error = reason ? reason : "cannot read image";
         return std::nullopt;
     }
@@ -200,36 +187,63 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
         *error = "the header gives " + std::to_string(info.width) + "x" + std::to_string(info.height) + " (sizes are 1..65536)";
         return std::nullopt;
     }
-    if (truncatedPng(file)) {
+    if (truncatedPng(bytes)) {
         *error = "the PNG is truncated (its chunks end before IEND)";
         return std::nullopt;
     }
     static const char* const kNames[] = {"", "r", "ra", "rgb", "rgba"};  // stb: grey, grey + alpha, RGB, RGBA
     info.channelNames = kNames[std::clamp(info.channels, 0, 4)];
-    info.eightBit = !stbi_is_hdr(file.string().c_str());
+    info.eightBit = !stbi_is_hdr_from_memory(data, int(bytes.size()));
     return info;
 }
 
-Texture loadTexture(const std::filesystem::path& file, bool srgb) {
-    // Only regular files, as textureInfo: a file swapped for a FIFO since would make its readers wait forever.
-    if (std::error_code ec; !std::filesystem::is_regular_file(file, ec)) throw TextureError(file.string() + ": " + whyNotRegular(file));
-    if (containers::Kind kind = containers::kindOf(file); kind != containers::Kind::None) return containers::load(kind, file, srgb);
-    if (lowerExtension(file) == ".pfm") return loadPfm(file);
-
-    const std::string name = file.string();
+// Level 0 of the bytes, as loadTexture documents it.
+Texture decode(std::string_view bytes, const std::filesystem::path& file, bool srgb) {
+    if (containers::Kind kind = containers::kindOf(bytes); kind != containers::Kind::None) return containers::load(kind, bytes, file, srgb);
+    if (lowerExtension(file) == ".pfm") return loadPfm(bytes, file);
+    if (bytes.size() > INT_MAX) failRead(file, "larger than stb_image reads (2 GiB)");
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = int(bytes.size());
     Texture t;
     int channelsInFile = 0;
-    if (stbi_is_hdr(name.c_str())) {
-        std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(name.c_str(), &t.width, &t.height, &channelsInFile, 4), stbi_image_free);
-        if (!data) failStb(file);
-        t.rgba32f.assign(data.get(), data.get() + size_t(t.width) * t.height * 4);
+    if (stbi_is_hdr_from_memory(data, size)) {
+        std::unique_ptr<float, void (*)(void*)> texels(stbi_loadf_from_memory(data, size, &t.width, &t.height, &channelsInFile, 4),
+                                                       stbi_image_free);
+        if (!texels) failStb(file);
+        t.rgba32f.assign(texels.get(), texels.get() + size_t(t.width) * t.height * 4);
     } else {
-        std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(name.c_str(), &t.width, &t.height, &channelsInFile, 4), stbi_image_free);
-        if (!data) failStb(file);
-        t.rgba8.assign(data.get(), data.get() + size_t(t.width) * t.height * 4);
+        std::unique_ptr<stbi_uc, void (*)(void*)> texels(stbi_load_from_memory(data, size, &t.width, &t.height, &channelsInFile, 4),
+                                                         stbi_image_free);
+        if (!texels) failStb(file);
+        t.rgba8.assign(texels.get(), texels.get() + size_t(t.width) * t.height * 4);
         t.srgb = srgb;
     }
     return t;
+}
+
+}  // namespace
+
+std::optional<TextureFile> readTextureFile(const std::filesystem::path& file, std::string* error) {
+    // readFile opens only regular files: opening a FIFO would wait for a writer forever.
+    std::optional<std::string> bytes = readFile(file, error, kMaxTextureBytes);
+    if (!bytes) return std::nullopt;
+    std::optional<TextureInfo> info = infoOf(*bytes, file, error);
+    if (!info) return std::nullopt;
+    return TextureFile{file, std::move(*bytes), std::move(*info)};
+}
+
+std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::string* error) {
+    std::optional<TextureFile> read = readTextureFile(file, error);
+    return read ? std::optional<TextureInfo>(std::move(read->info)) : std::nullopt;
+}
+
+Texture decodeTexture(const TextureFile& file, bool srgb) { return decode(file.bytes, file.path, srgb); }
+
+Texture loadTexture(const std::filesystem::path& file, bool srgb) {
+    std::string why;
+    std::optional<std::string> bytes = readFile(file, &why, kMaxTextureBytes);
+    if (!bytes) failRead(file, why);
+    return decode(*bytes, file, srgb);
 }
 
 std::string pfmBytes(const Image& image) {
