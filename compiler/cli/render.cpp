@@ -238,7 +238,7 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
 
 // The fp64 reference of a layered material's role (reference/layers.h), as the GPU shows it.
 Image layerRoleReference(const Material& material, size_t role, const RenderArguments& r) {
-    checkTexelBudget(material, TextureStage::Reference);
+    checkTexelBudget(material, reference::kReferenceBudget);
     const reference::LayerTextures textures(material);
     const std::vector<reference::LayerResult> pixels = reference::evaluateLayersView(material, role, textures, r.view);
     const bool oneChannel = kindRow(material.layers->roles[role].kind).oneChannel;
