@@ -18,16 +18,19 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <future>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "hexc/compiler.h"
 #include "hexc/material.h"
 #include "machine.h"
 #include "measures.h"
 #include "plot.h"
+#include "reference/layers.h"
 #include "reference/reference.h"
 #include "hexc/spirv.h"
 #include "strf.h"
@@ -207,6 +210,7 @@ struct Timed {
     std::string failure;          // why there are no numbers
     CompileOptions compile = {};  // how the shader is compiled
     std::vector<uint32_t> spirv;  // a hand-written shader drawn on the material's textures instead of its own
+    std::optional<View> over;     // drawn over this view instead of kViews[view] (the terrain table's)
 };
 
 struct Row : Timed {
@@ -236,6 +240,7 @@ struct Results {
     std::vector<Timed> opTimings;  // bench/op-cost/<name>.glsl
     std::vector<Timed> listing;    // bench/paper-listing.glsl, per view, with `lit`'s and the minimal shading
     int rounds = 0;                // timing rounds run
+    std::string terrain;           // the terrain section (terrainSection)
     double referenceSeconds = 0, totalSeconds = 0;
 };
 
@@ -463,14 +468,14 @@ bool ratiosStable(const Results& results) {
 void timeRound(vk::Runner& runner, Timed& t, const std::vector<Texture>& textures) {
     std::vector<double> frameMs;
     if (t.spirv.empty()) {
-        vk::render(runner, t.material, vk::RenderOutput::Shaded, "", kViews[t.view].view, vk::ExecutedTarget::Spirv, kFramesPerRound,
-                   &frameMs, {}, t.compile);
+        vk::render(runner, t.material, vk::RenderOutput::Shaded, "", t.over ? *t.over : kViews[t.view].view, vk::ExecutedTarget::Spirv,
+                   kFramesPerRound, &frameMs, {}, t.compile);
     } else {
         vk::RenderRequest request;
         request.fragmentSpirv = t.spirv;
         for (const Texture& texture : textures) request.textures.push_back(&texture);
         request.timedFrames = kFramesPerRound;
-        vk::renderFragment(runner, request, kViews[t.view].view, &frameMs);
+        vk::renderFragment(runner, request, t.over ? *t.over : kViews[t.view].view, &frameMs);
     }
     t.frameMs.insert(t.frameMs.end(), frameMs.begin(), frameMs.end());
 }
@@ -493,6 +498,18 @@ void measureAdaptive(vk::Runner& runner, const Results& results, Row& row) {
                           r.method->compile);
     };
     row.againstThreeTaps = compareRgb(albedo(row), albedo(*full));
+}
+
+// Interleaved rounds over `timed`, each shader once per round: at least kRounds, until `stable` or kMaxRounds. Returns the
+// rounds run.
+int timeRounds(vk::Runner& runner, const std::vector<Timed*>& timed, const std::vector<Texture>& textures,
+               const std::function<bool()>& stable) {
+    for (int round = 1;; ++round) {
+        std::cout << "  timing round " << round << std::endl;
+        for (Timed* t : timed)
+            if (t->failure.empty()) attempt(t->failure, [&] { timeRound(runner, *t, textures); });
+        if (round >= kMaxRounds || (round >= kRounds && stable())) return round;
+    }
 }
 
 void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) {
@@ -521,14 +538,14 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
     for (const std::string& name : opTemplates) {
         const std::string templ = (fs::current_path() / "bench/op-cost" / (name + ".glsl")).string();
         const Material m = material(materialDir, "op-cost-" + name, {{"enabled", false}}, templ);
-        for (size_t v = 0; v < kViews.size(); ++v) results.opTimings.push_back({name, v, m, {}, {}, {}, {}});
+        for (size_t v = 0; v < kViews.size(); ++v) results.opTimings.push_back({name, v, m, {}, {}, {}, {}, {}});
     }
 
     // The paper's listings on the full-quality row's material (its textures; the listing has its settings built in).
     std::vector<Texture> listingTextures;
     for (bool minimal : {false, true})
         for (size_t v = 0; v < kViews.size(); ++v) {
-            Timed& t = results.listing.emplace_back(Timed{minimal ? "paper-listing-minimal" : "paper-listing", v, {}, {}, {}, {}, {}});
+            Timed& t = results.listing.emplace_back(Timed{minimal ? "paper-listing-minimal" : "paper-listing", v, {}, {}, {}, {}, {}, {}});
             attempt(t.failure, [&] {
                 t.material = fullQualityRow(results, v)->material;
                 t.spirv = listingSpirv(minimal);
@@ -542,12 +559,7 @@ void measure(vk::Runner& runner, const fs::path& materialDir, Results& results) 
     for (Row& row : results.rows) timed.push_back(&row);
     for (Timed& t : results.opTimings) timed.push_back(&t);
     for (Timed& t : results.listing) timed.push_back(&t);
-    for (results.rounds = 1;; ++results.rounds) {
-        std::cout << "  timing round " << results.rounds << std::endl;
-        for (Timed* t : timed)
-            if (t->failure.empty()) attempt(t->failure, [&] { timeRound(runner, *t, listingTextures); });
-        if (results.rounds >= kMaxRounds || (results.rounds >= kRounds && ratiosStable(results))) break;
-    }
+    results.rounds = timeRounds(runner, timed, listingTextures, [&] { return ratiosStable(results); });
 
     std::cout << "  albedo error and contrast" << std::endl;
     for (Row& row : results.rows) {
@@ -758,7 +770,7 @@ std::string markdown(const Results& r) {
         "\n## Where the full-quality shader's time goes\n\nOne operation per pixel costs the time of its bench/op-cost/*.glsl "
         "template above baseline.glsl's, per operation (magnified / minified); times how often stable-rot-gain does it.\n\n" +
         breakdownTable(r);
-    return md;
+    return md + "\n" + r.terrain;
 }
 
 std::string csv(const Results& r) {
@@ -801,12 +813,176 @@ std::string plot(const Results& r) {
                        "the GPU's sin beyond the origin)"});
 }
 
-int run(const fs::path& resultsDir) {
+// The terrain table (issue 48): materials/terrain/ (four layers, a painted splat map, the height blend) compiled four ways
+// and drawn over the whole splat map. Fetches per pixel from the manifest (worst: every layer; expected: over the splat
+// map's texels), time per frame in interleaved rounds as above, and the albedo role's error against the fp64 reference
+// of naive per-layer hex-tiling (every layer, every tap: the blend as the material states it).
+const std::string kTerrain = "materials/terrain/terrain.json";
+// 256-texel layers tiled 4 to 8 times over 512 pixels (2 to 4 texels a pixel), the 256-texel splat map at 0.5.
+const View kTerrainView{512, 512, {0, 0, 1, 1}};
+// The every-lever row's skip_below: a layer painted below 2/255 at a pixel is dropped; the others renormalised, the
+// result moves by at most (layers - 1) * skip_below / sum of the weights (docs/material-format.md#layers).
+constexpr double kLeverSkip = 2.0 / 255;
+struct TerrainVariant {
+    std::string name, file;
+    json hextiling = json::object();   // merged into the material's "hextiling"
+    json layerBlend = json::object();  // merged into its "layer_blend"
+    json top = json::object();         // other material keys ("pack")
+    bool skipLayers = true;            // CompileOptions::skipLayers
+};
+const std::vector<TerrainVariant> kTerrainVariants = {
+    {"naive per-layer hex-tiling", "naive", json::object(), {{"skip_below", 0}}, json::object(), false},
+    {"hexc default", "default"},
+    {"hexc, every lever", "levers", {{"taps", "adaptive"}, {"lod", "shared"}}, {{"skip_below", kLeverSkip}}, {{"pack", true}}},
+    {"plain tiled layers", "plain", {{"enabled", false}}},
+};
+
+struct TerrainRow : Timed {
+    double worstFetches = kNaN, expectedFetches = kNaN;
+    ErrorStats error{kNaN, kNaN, kNaN};
+};
+
+// The example with a variant's settings, written to `dir` with its texture paths made absolute, and parsed.
+Material terrainMaterial(const fs::path& dir, const TerrainVariant& v) {
+    std::ifstream in(kTerrain);
+    json doc = json::parse(in);
+    const fs::path from = fs::absolute(kTerrain).parent_path();
+    for (json& layer : doc["layers"])
+        for (json& slot : layer["slots"]) slot["texture"] = (from / slot["texture"].get<std::string>()).lexically_normal().string();
+    for (json& splat : doc["layer_blend"]["splat"]) splat = (from / splat.get<std::string>()).lexically_normal().string();
+    doc.erase("$schema");
+    doc["name"] = "terrain-" + v.file;
+    doc["hextiling"].update(v.hextiling);
+    doc["layer_blend"].update(v.layerBlend);
+    doc.update(v.top);
+    const fs::path file = dir / ("terrain-" + v.file + ".json");
+    const std::string text = doc.dump(2) + "\n";
+    writeFile(file, text);
+    ParseResult parsed = parseMaterial(text, file);
+    if (!parsed.material) throw CompileError{parsed.diagnostics};
+    return *parsed.material;
+}
+
+// The manifest's fetches per pixel (layers.fetches_per_pixel).
+void manifestFetches(TerrainRow& row) {
+    CompileOptions options = row.compile;
+    options.targets = {Target::Spirv};
+    const CompileResult compiled = compile(row.material, options);
+    if (!compiled.ok()) throw CompileError{compiled.diagnostics};
+    for (const OutputFile& f : compiled.files)
+        if (f.name.ends_with(".manifest.json")) {
+            const json fetches = json::parse(f.contents).at("layers").at("fetches_per_pixel");
+            row.worstFetches = fetches.at("worst");
+            row.expectedFetches = fetches.at("expected");
+        }
+}
+
+// The first role (albedo) through the `value` template: on the GPU, and the fp64 reference's.
+Image terrainAlbedo(vk::Runner& runner, const TerrainRow& row) {
+    Material m = row.material;
+    m.templ = TemplateRef::builtin("value");
+    return vk::render(runner, m, vk::RenderOutput::Shaded, "", kTerrainView, vk::ExecutedTarget::Spirv, 0, nullptr, {}, row.compile);
+}
+Image terrainReference(const Material& m) {
+    const std::vector<reference::LayerResult> ref = reference::evaluateLayersView(m, 0, reference::LayerTextures(m), kTerrainView);
+    Image image{kTerrainView.width, kTerrainView.height, std::vector<float>(ref.size() * 4, 1.0f)};
+    for (size_t p = 0; p < ref.size(); ++p)
+        for (size_t c = 0; c < 3; ++c) image.rgba[p * 4 + c] = float(ref[p].value[c]);
+    return image;
+}
+
+// Whether every terrain row's ratio to the plain row varies by at most kStableSpread between rounds.
+bool terrainStable(const std::vector<TerrainRow>& rows) {
+    for (const TerrainRow& row : rows) {
+        const std::vector<double> r = roundRatios(row, rows.back());
+        if (r.empty()) return false;
+        const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+        if ((*hi - *lo) / median(r) > kStableSpread) return false;
+    }
+    return true;
+}
+
+std::vector<TerrainRow> measureTerrain(vk::Runner& runner, const fs::path& materialDir, int& rounds, double& referenceSeconds) {
+    std::vector<TerrainRow> rows;
+    for (const TerrainVariant& v : kTerrainVariants) {
+        TerrainRow& row = rows.emplace_back();
+        row.name = v.name;
+        row.over = kTerrainView;
+        row.compile.skipLayers = v.skipLayers;
+        attempt(row.failure, [&] {
+            row.material = terrainMaterial(materialDir, v);
+            manifestFetches(row);
+        });
+    }
+    if (!rows.front().failure.empty()) throw std::runtime_error("terrain, naive row (the reference): " + rows.front().failure);
+    std::cout << "  terrain: fp64 reference" << std::endl;
+    const auto start = std::chrono::steady_clock::now();
+    const Image reference = terrainReference(rows.front().material);
+    referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::vector<Timed*> timed;
+    for (TerrainRow& row : rows) timed.push_back(&row);
+    rounds = timeRounds(runner, timed, {}, [&] { return terrainStable(rows); });
+    for (TerrainRow& row : rows)
+        if (row.failure.empty()) attempt(row.failure, [&] { row.error = compareRgb(terrainAlbedo(runner, row), reference); });
+    return rows;
+}
+
+// "median (min-max)" of the per-round medians, in ms.
+std::string msSpread(const Timed& t) {
+    const std::vector<double> r = roundMedians(t);
+    if (r.empty()) return "n/a";
+    const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+    return strf("%.1f (%.1f-%.1f)", median(t.frameMs), *lo, *hi);
+}
+
+std::string terrainTable(const std::vector<TerrainRow>& rows) {
+    std::string md =
+        "| terrain | fetches/px worst | fetches/px expected | ms/frame median (round min-max) | x naive | x plain | max err | mean err |\n"
+        "|---|---|---|---|---|---|---|---|\n";
+    for (const TerrainRow& r : rows)
+        md += strf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", r.name.c_str(), num(r.worstFetches, "%.0f").c_str(),
+                   num(r.expectedFetches, "%.2f").c_str(), msSpread(r).c_str(), ratioSpread(r, rows.front()).c_str(),
+                   ratioSpread(r, rows.back()).c_str(), num(r.error.max, "%.4f").c_str(), num(r.error.mean, "%.5f").c_str());
+    for (const TerrainRow& r : rows)
+        if (!r.failure.empty()) md += "\n" + r.name + " failed: " + r.failure + "\n";
+    return md;
+}
+
+std::string terrainSection(const std::vector<TerrainRow>& rows, int rounds, double referenceSeconds) {
+    return strf(
+               "## Terrain\n\n`%s` (4 layers, 3 maps each, height blend, painted splat map) drawn over the whole splat map at %dx%d, "
+               "`lit` shading; fetches per pixel from the manifest (worst: every layer; expected: over the splat map's texels); "
+               "time per frame from %d interleaved rounds of %d frames; error: the albedo role (RGB, linear) against the fp64 "
+               "reference of the naive row (every layer, every tap; %.0f s). Levers: channel packing, `lod: shared`, adaptive "
+               "taps, skip_below %.3g (2/255); the default skip_below is 0.5/255.\n\n",
+               kTerrain.c_str(), kTerrainView.width, kTerrainView.height, rounds, kFramesPerRound, referenceSeconds, kLeverSkip) +
+           terrainTable(rows);
+}
+
+// The terrain section, measured; `only`: written to RESULTS_DIR/terrain.md, as `--terrain` runs it alone.
+std::string terrain(vk::Runner& runner, const fs::path& resultsDir, bool only) {
+    fs::create_directories(resultsDir / "materials");
+    const std::string machine = strf("Machine: %s on %s", runner.deviceName().c_str(), cpuSummary().c_str());
+    int rounds = 0;
+    double referenceSeconds = 0;
+    const std::vector<TerrainRow> rows = measureTerrain(runner, resultsDir / "materials", rounds, referenceSeconds);
+    std::string md = terrainSection(rows, rounds, referenceSeconds);
+    std::cout << "\n" << md;
+    if (only) {
+        md = machine + "; load average " + loadAverage() + " at the end.\n\n" + md;
+        writeFile(resultsDir / "terrain.md", md);
+        std::cout << "\nWrote " << (resultsDir / "terrain.md").string() << "\n";
+    }
+    return md;
+}
+
+int run(const fs::path& resultsDir, bool terrainOnly) {
     const auto start = std::chrono::steady_clock::now();
     if (!fs::exists("materials/textures")) throw std::runtime_error("run from the source root (materials/textures not found)");
     std::string why;
     std::unique_ptr<vk::Runner> runner = vk::Runner::create(&why);
     if (!runner) throw std::runtime_error("no Vulkan device: " + why);
+    if (terrainOnly) return terrain(*runner, resultsDir, true), 0;
 
     const fs::path materialDir = resultsDir / "materials";
     makeTextures(materialDir / "textures");
@@ -831,6 +1007,7 @@ int run(const fs::path& resultsDir) {
 
     std::cout << results.machine << "Measuring\n";
     measure(*runner, materialDir, results);
+    results.terrain = terrain(*runner, resultsDir, false);
     results.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     results.settings += strf(
         "Bench run time %.0f s, of which %.0f s for the four fp64 reference images; %d timing rounds; load average %s "
@@ -871,12 +1048,15 @@ int run(const fs::path& resultsDir) {
 }  // namespace hexc::bench
 
 int main(int argc, char** argv) {
-    if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {  // --help included: not a results folder
-        std::cerr << "usage: hexc-bench-shaders [RESULTS_DIR]   (from the source root; default build/bench-results)\n";
-        return argc == 2 && std::string_view(argv[1]) == "--help" ? 0 : 2;
+    const bool terrainOnly = argc > 1 && std::string_view(argv[1]) == "--terrain";
+    const int rest = argc - terrainOnly;
+    if (rest > 2 || (rest == 2 && argv[argc - 1][0] == '-')) {  // --help included: not a results folder
+        std::cerr << "usage: hexc-bench-shaders [--terrain] [RESULTS_DIR]   (from the source root; default build/bench-results;\n"
+                     "  --terrain: only the terrain table, into RESULTS_DIR/terrain.md)\n";
+        return rest == 2 && std::string_view(argv[argc - 1]) == "--help" ? 0 : 2;
     }
     try {
-        return hexc::bench::run(std::filesystem::absolute(argc > 1 ? argv[1] : "build/bench-results"));
+        return hexc::bench::run(std::filesystem::absolute(rest > 1 ? argv[argc - 1] : "build/bench-results"), terrainOnly);
     } catch (const hexc::CompileError& e) {
         std::cerr << "hexc-bench-shaders:\n" << hexc::formatAll(e.diagnostics);
     } catch (const std::exception& e) {

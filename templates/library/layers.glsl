@@ -3,7 +3,8 @@
 // gradients are taken once, before the layers' branches, and every layer's slot is sampled with them: a derivative
 // inside a branch that not every pixel of a quad takes is undefined (and WGSL refuses it). codegen
 // (codegen/layers.cpp) fills the tokens: ${skip}, ${width}: literals; ${splats}, ${keep}, ${heights}, ${layers}: the
-// per-splat and per-layer lines below; ${index}, ${splat}, ${channel}, ${slot}, ${tiling}; ${role}, ${type}, ${uv}.
+// per-splat and per-layer lines below; ${index}, ${splat}, ${channel}, ${slot}, ${tiling}; ${role}, ${type}, ${uv};
+// ${fetched}: when layer ${index}'s slot is fetched (layer.kept, or layer.every when CompileOptions::skipLayers is off).
 // Weights are arrays of 8, hexc's most layers; those past the material's stay 0.
 // What the roles share is read once per pixel: the first role read at a coordinate fills the weights (the splat maps,
 // and in height mode each kept layer's height) into private variables, and every later role read at that coordinate
@@ -79,7 +80,7 @@ ${layers}
     hexcLayerHeights(w, h, ${width});
 
 //@ weights.height
-    if (w[${index}] > 0.0) h[${index}] = hexcAt_${slot}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);
+    if (${fetched}) h[${index}] = hexcAt_${slot}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);
 
 //@ role
 // The layers' `${role}` slots blended by the layers' weights; a layer of weight 0 is not fetched.
@@ -98,7 +99,12 @@ ${type} hexc_${role}(vec2 uv) { vec3 weights; return hexc_${role}(uv, weights); 
 #define HEXC_HAS_${role} 1
 
 //@ role.layer
-    if (w[${index}] > 0.0) {
+    if (${fetched}) {
         value += w[${index}] * hexcAt_${slot}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);
         weights += w[${index}] * t;
     }
+
+//@ layer.kept
+w[${index}] > 0.0
+//@ layer.every
+true

@@ -75,6 +75,24 @@ TEST(Layers, TheManifestCountsWorstAndExpectedFetchesPerPixel) {
     EXPECT_LT(expected, layers["fetches_per_pixel"]["worst"].get<double>());
 }
 
+// CompileOptions::skipLayers off (the bench's naive per-layer baseline): no layer's fetches sit behind its weight, and
+// the manifest's expected fetches are the worst case.
+TEST(Layers, WithoutSkippingEveryLayerIsFetchedEverywhere) {
+    Material m = terrain();
+    CompileOptions options;
+    options.skipLayers = false;
+    const CompileResult r = compile(m, options);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    for (const std::string i : {"0", "1", "2", "3"}) {
+        EXPECT_EQ(r.glsl.find("if (w[" + i + "] > 0.0) {"), std::string::npos) << i;   // a role's layer
+        EXPECT_EQ(r.glsl.find("if (w[" + i + "] > 0.0) h["), std::string::npos) << i;  // a layer's height
+    }
+    EXPECT_NE(r.glsl.find("if (true) h[3]"), std::string::npos);
+    const nlohmann::json fetches = manifestOf(r)["layers"]["fetches_per_pixel"];
+    EXPECT_EQ(fetches["expected"], fetches["worst"]);
+    EXPECT_EQ(fetches["worst"], manifestOf(compiled(terrain()))["layers"]["fetches_per_pixel"]["worst"]);
+}
+
 // The manifest's worst case counts what the code does. Each fetch of the optimised shader sits in straight code or in
 // one layer's branch, and runs once when every branch is taken, but for the shared weights' fetches (the splat maps and
 // the heights): every role read holds them behind the test that only the pixel's first read passes. So with one role

@@ -52,6 +52,9 @@ struct CompileOptions {
     // Numeric settings become specialisation constants, frozen by spirv-opt so it can fold them, instead of
     // uniforms (one shader then serves one material only). Per-frame values stay uniforms.
     bool bake = false;
+    // A layered material's layer of weight 0 at a pixel is not fetched (its slots' taps sit in a branch). Off: every
+    // layer is fetched at every pixel, as naive per-layer hex-tiling does (the same image; the bench's baseline).
+    bool skipLayers = true;
     ResourceLayout layout;  // where hexc's own resources go on each target
     // The fragment entry point on every target but OpenGL GLSL (always `main`); empty: defaultEntryPoint(material).
     std::string entryPoint;

@@ -23,12 +23,16 @@ public:
         return ref ? read_(*ref) : "vec2(1.0)";
     }
 
-    // A line per layer of `section`, for slot `slots[i]` of layer i.
+    // A line per layer of `section`, for slot `slots[i]` of layer i, fetched where its weight is positive (or everywhere).
     std::string perLayer(const std::string& section, const std::vector<size_t>& slots) const {
         std::string out;
-        for (size_t i = 0; i < slots.size(); ++i)
+        for (size_t i = 0; i < slots.size(); ++i) {
+            const std::string index = std::to_string(i);
+            const std::string fetched = expand(plan_.layers->skip ? "layer.kept" : "layer.every", {{"index", index}});
             out += (out.empty() ? "" : "\n") +
-                   expand(section, {{"index", std::to_string(i)}, {"slot", plan_.slots[slots[i]].name}, {"tiling", tiling(slots[i])}});
+                   expand(section,
+                          {{"index", index}, {"slot", plan_.slots[slots[i]].name}, {"tiling", tiling(slots[i])}, {"fetched", fetched}});
+        }
         return out;
     }
 

@@ -351,6 +351,10 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     plan.functions = options.functions || plan.templateName == TemplateRef::builtin("functions").path();
     planSlots(material, options, plan);
     planLayers(material, plan);
+    if (plan.layers && !options.skipLayers) {  // every layer fetched at every pixel: the worst case is the expected one
+        plan.layers->skip = false;
+        plan.layers->expectedFetches = plan.layers->worstFetches;
+    }
     if (plan.functions) refuseTriplanar(material, plan);
     if (material.pack) planPacks(plan);
     planParams(options.bake, plan);

@@ -117,6 +117,7 @@ struct LayersPlan {
     std::vector<size_t> heights;        // height blend: per layer, the slot holding its height (else empty)
     size_t count = 0;                   // layers
     double width = 0.2, skipBelow = 0;  // fixed in the code
+    bool skip = true;                   // a layer of weight 0 at a pixel is not fetched (CompileOptions::skipLayers)
     // Texture fetches per pixel of the whole material: when every layer is fetched, and averaged over the splat maps'
     // texels (a layer counts where its weight is at least skipBelow); per layer that fraction of texels.
     double worstFetches = 0, expectedFetches = 0;
