@@ -119,8 +119,8 @@ def check_package(hexc, engine, glslang, material, out, bottom_left, failures):
     if r.returncode != 0:
         failures.append(f"{' '.join(args)}: {r.stderr}")
         return
-    name = Path(material).stem
     folder = out / engine
+    name = next(folder.glob("*.manifest.json")).name.removesuffix(".manifest.json")  # the material's name, not its file's
     what = f"{name} {engine} {'bottom-left' if bottom_left else 'top-left'}"
     stubs = STUBS / engine
     if engine == "unity":
@@ -169,7 +169,9 @@ def main():
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        materials = [ROOT / "materials" / "rock.json", mixed_material(tmp / "mixed")]
+        # histogram: its tables read at an explicit level; preview_surface: a plain-tiled slot read with implicit ones.
+        materials = [ROOT / "materials" / "rock.json", mixed_material(tmp / "mixed"),
+                     ROOT / "tests" / "golden" / "materials" / "histogram.json", ROOT / "materials" / "mtlx" / "preview_surface.mtlx"]
         for material in materials:
             for bottom_left in (False, True):
                 out = tmp / f"{material.stem}_{'bl' if bottom_left else 'tl'}"

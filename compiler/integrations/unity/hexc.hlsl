@@ -11,6 +11,9 @@ ${nodes}
 // A texture read at hexc's (s, t), top row at t = 0, from Unity's bottom-row-first storage.
 #define HEXC_SAMPLE_GRAD(tex, smp, st, dx, dy) \
     SAMPLE_TEXTURE2D_GRAD(tex, smp, (st) * float2(1.0, -1.0), (dx) * float2(1.0, -1.0), (dy) * float2(1.0, -1.0))
+// An explicit level (a histogram table, one level per slot) and a plain-tiled slot's implicit one.
+#define HEXC_SAMPLE_LEVEL(tex, smp, st, lod) SAMPLE_TEXTURE2D_LOD(tex, smp, (st) * float2(1.0, -1.0), lod)
+#define HEXC_SAMPLE(tex, smp, st) SAMPLE_TEXTURE2D(tex, smp, (st) * float2(1.0, -1.0))
 
 // hexc's functions for this material (hexc --functions, HLSL), each taking the textures it reads.
 ${functions}

@@ -23,7 +23,7 @@ struct Style {
 
 const Style& style(Engine engine) {
     static const Style unity = {Engine::Unity, "TEXTURE2D_PARAM({T}, sampler_{T})", "TEXTURE2D_ARGS({T}, sampler_{T})",
-                                "HEXC_SAMPLE_GRAD({T}, sampler_{T}, ", true};
+                                "HEXC_{M}({T}, sampler_{T}, ", true};
     static const Style unreal = {Engine::Unreal, "Texture2D {T}, SamplerState {T}Sampler", "{T}, {T}Sampler", "{T}.{M}({T}Sampler, ",
                                  false};
     return engine == Engine::Unity ? unity : unreal;
@@ -33,6 +33,14 @@ std::string named(std::string pattern, const std::string& texture, const std::st
     for (const auto& [token, value] : {std::pair<std::string, std::string>{"{T}", texture}, {"{M}", method}})
         for (size_t at; (at = pattern.find(token)) != std::string::npos;) pattern.replace(at, token.size(), value);
     return pattern;
+}
+
+// The unity/hexc.hlsl macro (after HEXC_) for an HLSL texture method SPIRV-Cross writes.
+std::string unityMacro(const std::string& method) {
+    static const std::map<std::string, std::string> macros = {{"SampleGrad", "SAMPLE_GRAD"}, {"SampleLevel", "SAMPLE_LEVEL"}, {"Sample", "SAMPLE"}};
+    const auto m = macros.find(method);
+    if (m == macros.end()) throw std::runtime_error("no Unity macro for " + method);  // a hexc bug
+    return m->second;
 }
 
 std::string joined(const std::vector<std::string>& texts, const std::string& pattern) {
@@ -98,9 +106,7 @@ void passTextures(Functions& f, const Style& s) {
             fn.textures.push_back(t);
             std::string out, rest = fn.text;
             for (std::smatch m; std::regex_search(rest, m, read);) {
-                if (s.engine == Engine::Unity && m[1] != "SampleGrad")
-                    throw std::runtime_error("no Unity macro for " + m.str(1));  // a hexc bug
-                out += m.prefix().str() + named(s.sample, t, m[1]);
+                out += m.prefix().str() + named(s.sample, t, s.engine == Engine::Unity ? unityMacro(m.str(1)) : m.str(1));
                 std::string next = m.suffix();
                 rest = std::move(next);
             }
