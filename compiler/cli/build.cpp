@@ -179,6 +179,13 @@ bool inputsFit(const Arguments& a, const Inputs& in) {
         std::cerr << "hexc: error: --variant " << v << ": " << whyNotInScene(v, in.scenes) << "\n";
         ok = false;
     }
+    // An engine package replaces the template with the engine's own, so a scene's passes (each a template of its own)
+    // have no package: the engine is given the scene's material files instead.
+    if (!a.options.engines.empty() && !in.scenes.empty()) {
+        std::cerr << "hexc: error: --engine packages materials, not a scene's passes: pass " << in.scenes.front().scene.name
+                  << "'s material files instead\n";
+        ok = false;
+    }
     std::set<std::string> sceneNames;
     for (const SceneSummary& s : in.scenes)
         if (!sceneNames.insert(s.scene.name).second) {

@@ -154,6 +154,18 @@ TEST(Scene, TwoScenesWithOneNameAreRefused) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+// An engine package replaces the template, so a scene's passes have none: refused, not aborted (it once was).
+TEST(Scene, EnginePackagesOfASceneAreRefused) {
+    fs::path dir = copyOfMaterials("hexc_scene_engines");
+    fs::path out = dir / "out";
+    for (const char* engine : {"godot3", "filament", "threejs", "unity"}) {
+        std::string err;
+        EXPECT_EQ(runHexc((dir / "scenes" / "forest.json").string() + " --engines " + engine + " -o " + out.string(), &err), 1) << engine;
+        EXPECT_NE(err.find("hexc: error: --engine packages materials, not a scene's passes"), std::string::npos) << err;
+        EXPECT_FALSE(fs::exists(out));
+    }
+}
+
 TEST(Incremental, UnchangedInputsAreSkippedAndAChangedTextureRebuildsWhatUsesIt) {
     fs::path dir = copyOfMaterials("hexc_incremental");
     fs::path out = dir / "out";

@@ -37,7 +37,8 @@ std::string named(std::string pattern, const std::string& texture, const std::st
 
 // The unity/hexc.hlsl macro (after HEXC_) for an HLSL texture method SPIRV-Cross writes.
 std::string unityMacro(const std::string& method) {
-    static const std::map<std::string, std::string> macros = {{"SampleGrad", "SAMPLE_GRAD"}, {"SampleLevel", "SAMPLE_LEVEL"}, {"Sample", "SAMPLE"}};
+    static const std::map<std::string, std::string> macros = {
+        {"SampleGrad", "SAMPLE_GRAD"}, {"SampleLevel", "SAMPLE_LEVEL"}, {"Sample", "SAMPLE"}};
     const auto m = macros.find(method);
     if (m == macros.end()) throw std::runtime_error("no Unity macro for " + method);  // a hexc bug
     return m->second;
