@@ -66,6 +66,13 @@ void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
     w = hexcLayersW;
 }
 
+//@ shared.functions
+// The functions output has no main of its own, and a global's initialiser is a store in main (glslang), so shared
+// state would start undefined in an engine's shader: each role fills its own weights there.
+void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
+    hexcLayerFill(st, dx, dy, w);
+}
+
 //@ weights.splat
     vec4 splat${index} = hexcAt_splat${index}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);
 
