@@ -69,7 +69,8 @@ private:
 std::string layerFunctions(const ShaderPlan& plan, const std::function<std::string(size_t)>& read, const std::string& uv) {
     if (!plan.layers) return {};
     LayerEmitter emit(plan, read);
-    std::string out = emit.expand("functions", {}) + "\n\n" + emit.weights() + "\n\n" + emit.expand(plan.functions ? "shared.functions" : "shared", {}) + "\n\n";
+    std::string out = emit.expand("functions", {}) + "\n\n" + emit.weights() + "\n\n" +
+                      emit.expand(plan.functions ? "shared.functions" : "shared", {}) + "\n\n";
     for (const LayerRolePlan& r : plan.layers->roles) out += emit.role(r, uv) + "\n\n";
     return out;
 }
