@@ -140,6 +140,18 @@ TEST(Scene, ADocumentWithoutTheSceneKeyIsADiagnostic) {
                    }));
 }
 
+// A scene's material paths are shown normalised: `scenes/../rock.json` is `rock.json` in every message.
+TEST(Scene, MaterialPathsAreShownNormalised) {
+    SceneParseResult r = parseScene(R"({"scene": "s", "materials": ["../sub/./x.json"], "passes": [{"name": "main"}]})", "sub/s.json");
+    ASSERT_FALSE(r.scene);
+    std::vector<std::string> got;
+    for (const auto& d : r.diagnostics) got.push_back(d.format());
+    EXPECT_EQ(got, (std::vector<std::string>{
+                       "sub/x.json: error[HX100]: cannot read material file: No such file or directory",
+                       "sub/s.json:1:30: error[HX115]: /materials/0: material sub/x.json is invalid (see above)",
+                   }));
+}
+
 // Two scenes of one name would write one index file: refused before anything is compiled or written.
 TEST(Scene, TwoScenesWithOneNameAreRefused) {
     fs::path dir = copyOfMaterials("hexc_scene_twice");

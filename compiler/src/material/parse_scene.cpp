@@ -49,10 +49,12 @@ private:
             std::string path = string(list[i], p);
             if (list[i].is_string() && path.empty()) report(Code::InputUnreadable, p, "an empty path names no material file");
             if (path.empty()) continue;
-            ParseResult r = parseMaterialFile(dir_ / path);
+            // Normalised, so messages name `sub/rock.json`, not `sub/../sub/rock.json`.
+            const std::filesystem::path file = (dir_ / path).lexically_normal();
+            ParseResult r = parseMaterialFile(file);
             diags.insert(diags.end(), r.diagnostics.begin(), r.diagnostics.end());
             if (!r.material) {
-                report(Code::InvalidSceneMaterial, p, "material " + (dir_ / path).string() + " is invalid (see above)");
+                report(Code::InvalidSceneMaterial, p, "material " + file.string() + " is invalid (see above)");
                 continue;
             }
             for (const Material& other : scene.materials)
