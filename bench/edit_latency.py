@@ -7,8 +7,8 @@ Usage: edit_latency.py HEXC [HEXC ...] [--repetitions N] [--rounds R] [--smoke] 
 
 With several builds of hexc (before and after a change) the runs interleave: each round measures each build once, so
 that a change in the machine's load falls on all of them alike. docs/edit.md has the figures. --smoke (CI): one
-round of one repetition, and a failure if the page read pixels back while drawing (a pipeline stall every frame); no
-time is judged.
+round of one repetition, and a failure if the page read pixels back while drawing (a pipeline stall every frame) or a
+structural change cost other than one shader compile on the server (none for a shader compiled before); no time is judged.
 
 Each time is taken in the page, from the control's event (performance.now() as the edit starts) to the page's mark of
 the frame drawn after it (`hexcEdit.lastFrame`: the animation frame after the draw, when the browser took the frame;
@@ -16,7 +16,8 @@ builds before the change read one pixel back after drawing instead). A structura
 compiles (the page's programs: one of every view, and plain tiling; builds before it compiled the slot's weights and
 values apart), WebGL linking them (ANGLE translates them; nothing for programs the page linked before, in builds that
 keep them) and the first frame that draws them (SwiftShader compiles shaders for the CPU when they are first drawn);
-it is split into those parts. Builds before the page compiled at once waited 120 ms for more edits first. Three
+it is split into those parts, and the server's answer into its own work (parse and compiles, as it reports them) and
+the rest (transfer, the page's parse of the JSON). Builds before the page compiled at once waited 120 ms for more edits first. Three
 structural cases: a new shader, one the server has compiled before but the page has not linked, and one the page has
 shown before (a setting switched back). The cost line's compile of the shipped shader runs after the frame; the next
 edit waits for it. The frame time is the interval between frames while the view is moved every frame.
@@ -49,8 +50,11 @@ const edit = () => {
   e.dispatchEvent(new Event(event));
   const poll = () => {
     if (h.frames > frames && h.pending === 0 && (!structural || h.compiles > compiles) && h.lastFrame > h.editAt) {
-      const t = h.timing;  // a structural edit's parts: the server's answer, WebGL's compile and link, the frame
-      done(structural ? [h.lastFrame - h.editAt, t.answered - t.sent, t.linked - t.answered, h.lastFrame - t.textures] : [h.lastFrame - h.editAt]);
+      // A structural edit's parts: the server's answer, WebGL's compile and link, the frame; the server's own part of
+      // its answer and the shaders it compiled (null from builds that do not report them).
+      const t = h.timing, s = t.server || { ms: null, compiles: null };
+      done(structural ? [h.lastFrame - h.editAt, t.answered - t.sent, t.linked - t.answered, h.lastFrame - t.textures, s.ms, s.compiles]
+                      : [h.lastFrame - h.editAt]);
     } else requestAnimationFrame(poll);
   };
   poll();
@@ -187,16 +191,23 @@ def main():
         print("\n%s: %d pixel read-backs over %d slider frames" % (b, readbacks, len(joined["slider"])))
         print(summary("the page's frame (view moved every frame)", joined["frame"]))
         print(summary("slider (falloff, a uniform)", [t[0] for t in joined["slider"]]))
-        for name, key in (("structural, new shader (rotationsteps)", "fresh"), ("structural, server-cached, new to the page", "served"),
-                          ("structural, seen before (mask toggled back)", "cached")):
+        for name, key, compiles in (("structural, new shader (rotationsteps)", "fresh", 1),
+                                    ("structural, server-cached, new to the page", "served", 0),
+                                    ("structural, seen before (mask toggled back)", "cached", 0)):
             print(summary(name, [t[0] for t in joined[key]]))
-            for i, part in ((1, "  of which the server's compile and answer"), (2, "  of which WebGL's link (ANGLE)"),
-                            (3, "  of which the first frame (SwiftShader's JIT)")):
-                print(summary(part, [t[i] for t in joined[key]]))
+            for i, part in ((1, "  of which the server's compile and answer"), (4, "    of which the server's own work"),
+                            (2, "  of which WebGL's link (ANGLE)"), (3, "  of which the first frame (SwiftShader's JIT)")):
+                if None not in (times := [t[i] for t in joined[key]]):
+                    print(summary(part, times))
+            counted = [t[5] for t in joined[key] if t[5] is not None]
+            if counted:
+                print("  shaders the server compiled per change: %s (expected %d each)" % (" ".join(map(str, counted)), compiles))
+                failed = failed or any(c != compiles for c in counted)
         print(summary("file changed on disk, to its frame", [t[0] for t in joined["disk"]]))
         failed = failed or readbacks > 0
     if args.smoke and failed:
-        print("the page read pixels back while drawing: every frame waits for the renderer")
+        print("the page read pixels back while drawing (every frame waits for the renderer), or a structural change cost more "
+              "or fewer shader compiles than expected (one for a new shader, none for one compiled before)")
         sys.exit(1)
 
 

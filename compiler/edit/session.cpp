@@ -232,6 +232,8 @@ Reply Session::compile(const std::string& body) {
     const std::optional<Json> request = withDocument(body, "{\"document\": the material}", &refused);
     if (!request) return refused;
     std::lock_guard lock(mutex_);
+    const auto start = std::chrono::steady_clock::now();
+    const size_t before = compiles();
     Parsed p = parse(request->at("document"));
     if (!p.material) return json({{"ok", false}, {"diagnostics", toJson(p.diagnostics)}});
     Material m = *p.material;
@@ -245,14 +247,17 @@ Reply Session::compile(const std::string& body) {
         const CompileResult views = viewsCompile(m, &shown, &note);
         Json slots = Json::array();
         for (const Slot& s : m.slots) slots.push_back(s.name);
+        Json programs = {{"views", program(views)}, {"plain", program(pageCompile(vk::plainTiled(shown), cache_))}};
         compiled_ = m;
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         return json({{"ok", true},
                      {"text", p.text},
                      {"diagnostics", toJson(p.diagnostics)},
                      {"template", shown.templ.written()},
                      {"note", note},
                      {"slots", slots},
-                     {"programs", {{"views", program(views)}, {"plain", program(pageCompile(vk::plainTiled(shown), cache_))}}}});
+                     {"programs", programs},
+                     {"server", {{"compiles", compiles() - before}, {"ms", ms}}}});
     } catch (const CompileError& e) {
         return json({{"ok", false}, {"diagnostics", toJson(e.diagnostics)}});
     }

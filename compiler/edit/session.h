@@ -35,6 +35,8 @@ public:
     Reply material();
     // POST {"document": the material as JSON}: the document as it would be saved, parsed and compiled into the page's
     // programs (views.h's, which shows every view of every slot of "slots", and plain tiling); or its diagnostics.
+    // "server": the shaders this request compiled (the rest came from the cache) and the milliseconds its parse and
+    // compiles took, for the page to tell them from the transfer.
     Reply compile(const std::string& body);
     // POST {"document"}: texture fetches per pixel and SPIR-V instructions of the shader `hexc MATERIAL -o DIR` writes,
     // and the time its compile took (the first time: a structure seen before is answered from a cache of its own).

@@ -35,6 +35,7 @@ protected:
         const Json reply = Json::parse(session.compile(request(document)).body);
         EXPECT_TRUE(reply["ok"].get<bool>()) << reply.dump(2);
         for (const auto& [name, program] : reply["programs"].items()) EXPECT_TRUE(program.contains("fragment")) << name;
+        EXPECT_EQ(reply["server"]["compiles"].get<size_t>(), session.compiles() - before);  // what the page reports
         return session.compiles() - before;
     }
 };

@@ -144,6 +144,7 @@ async function compile(freshTextures = false) {
       return draw();
     }
     compiled = r;
+    timing.server = r.server;  // the server's own milliseconds and compiles: the rest of the answer's time is the transfer
     await linkPrograms();  // false: a slot selected meanwhile linked this answer's programs for its slot
     if (seq !== compileSeq) return;
     timing.linked = performance.now();
