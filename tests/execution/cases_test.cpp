@@ -245,63 +245,6 @@ TEST_P(PackedPath, EverySlotMatchesItsReference) {
 
 INSTANTIATE_TEST_SUITE_P(Exec, PackedPath, testing::ValuesIn(execCases("tests/execution/packed")), caseTestName);
 
-// ---- Weights ----------------------------------------------------------------------------------------------
-// With falloffcontrast 0 the weights depend on the lattice alone. The GPU evaluates it in float32 on a uv that
-// the rasteriser interpolated, so st and the skewed coordinates carry a few ulps of their size (|skewed| <= 4 |st|):
-// the barycentrics are off by dw <= 4 * 4 ulp(|st|), and W_i = w_i^gamma / sum_j w_j^gamma moves by
-// |dW_i| <= gamma * sum_j W_i |delta_ij - W_j| |dw_j| / w_j <= 2 gamma dw max_j(W_j / w_j), where W_j / w_j <= 2 for
-// the three barycentrics of a triangle (largest at w = (1/2, 1/4, 1/4) for gamma = 7; 1 for gamma = 1).
-// With falloffcontrast beta > 0 the metric's error e_m adds |dW_i| <= k * beta / (1 - beta) * e_m * 2 W_i (1 - W_i)
-// <= k * beta / (1 - beta) * e_m / 2 (see pixelTolerance).
-// The lattice weights of the material's first slot against the reference's, every pixel within one tolerance.
-Check checkWeights(const Material& m, const View& view, const Draw& draw) {
-    const Slot& slot = m.slots[0];
-    double stMax = std::max(std::fabs(view.uvRect[2]), std::fabs(view.uvRect[3])) * std::max(slot.hex.tiling[0], slot.hex.tiling[1]);
-    double ulp = std::ldexp(1.0, std::ilogb(stMax) - 23);
-    double dw = 4 * 4 * ulp;
-    double k = std::max(1.0, std::log2(1.0 / (1.0 - slot.hex.falloff)));
-    double em = sampleError(0, slot.colorSpace == ColorSpace::Srgb);
-    double tolerance = k * (2 * slot.hex.exponent * dw * 2) + k * slot.hex.falloffcontrast / (1 - slot.hex.falloffcontrast) * em / 2;
-    Check check;
-    check.errors = compare(draw(m, vk::RenderOutput::Weights, view), cpuRender(slot, view, reference::Output::Weights), 3);
-    check.worstRatio = check.errors.max / tolerance;
-    check.toleranceAtMax = check.maxTolerance = tolerance;
-    return check;
-}
-
-// ---- The cases of tests/execution/cases/ --------------------------------------------------------------------
-// tests/execution/cases/<name>.json: a material (inline, its paths read from materials/ like the examples'), the view
-// it is seen in, the targets it runs on and the tolerance rule it is held to; each file, on each of its targets, is one
-// test, "<name>_<target>". A rule is one of the checks above, with its derivation:
-//   falloff     checkColor: a colour or scalar slot, pixelTolerance (+ heightTolerance when height-blended)
-//   histogram   checkHistogram: histogramTolerance
-//   derivative  checkNormal: a normal slot's derivatives (or triplanar surface gradient)
-//   weights     checkWeights: the blend weights
-// A view is one of the named views above (magnified, minified, sphere, origin; the level each reads is fixed there) or
-// {"width", "height", "uv": [u0, v0, u1, v1], "level": the deepest mip level it reads}.
-std::pair<View, int> caseView(const nlohmann::json& v) {
-    if (v.is_object()) {
-        const std::vector<double> uv = v.at("uv");
-        if (uv.size() != 4) throw std::runtime_error("a view's uv is [u0, v0, u1, v1]");
-        return {View{v.at("width"), v.at("height"), {uv[0], uv[1], uv[2], uv[3]}}, v.at("level").get<int>()};
-    }
-    const std::map<std::string, std::pair<View, int>> named = {
-        {"magnified", {kMagnified, 0}}, {"minified", {kMinified, 2}}, {"sphere", {kSphere, 0}}, {"origin", {kOrigin, 0}}};
-    const auto it = named.find(v.get<std::string>());
-    if (it == named.end()) throw std::runtime_error("unknown view " + v.dump() + " (magnified, minified, sphere or origin)");
-    return it->second;
-}
-
-Check checkCase(const nlohmann::json& c, const Material& m, vk::ExecutedTarget target) {
-    const auto [view, level] = caseView(c.at("view"));
-    const std::string rule = c.at("rule");
-    if (rule == "falloff") return checkColor(m, view, level, on(target));
-    if (rule == "histogram") return checkHistogram(m, view, level, on(target));
-    if (rule == "derivative") return checkNormal(m, view, level, on(target));
-    if (rule == "weights") return checkWeights(m, view, on(target));
-    throw std::runtime_error("unknown rule `" + rule + "` (falloff, histogram, derivative or weights)");
-}
-
 class ExecutionCase : public testing::TestWithParam<ExecCase> {};
 
 TEST_P(ExecutionCase, MatchesTheReferenceWithinItsRule) {
@@ -310,7 +253,7 @@ TEST_P(ExecutionCase, MatchesTheReferenceWithinItsRule) {
     const nlohmann::json c = readCase(param, {"rule", "view", "material"});
     ParseResult r = parseMaterial(c.at("material").dump(), "materials/" + param.name + ".json");
     ASSERT_TRUE(r.material) << formatAll(r.diagnostics);
-    const Check check = checkCase(c, *r.material, param.target);
+    const Check check = checkCase(c, *r.material, on(param.target));
     report(param.name.c_str(), check);
     EXPECT_LE(check.worstRatio, 1.0);
 }

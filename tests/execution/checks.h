@@ -135,6 +135,12 @@ struct Check {
     double worstRatio = 0;      // max over pixels of error / tolerance: <= 1 passes
     double toleranceAtMax = 0;  // the tolerance of the pixel with the largest error
     double maxTolerance = 0;
+    // What the GPU's image was held to: the output drawn, its first `channels` channels of `reference`, each pixel
+    // within its `tolerance` (tests/execution/expect.cpp hands them to GPUs these tests do not drive).
+    vk::RenderOutput output = vk::RenderOutput::Albedo;
+    int channels = 0;
+    Image reference;
+    std::vector<double> tolerance;
 };
 
 // Height blending (hexcHeightBlend): W'_i = W_i f_i / S with f_i = max(h_i W_i - max_j h_j W_j + width, 0) and
@@ -155,7 +161,8 @@ inline double heightTolerance(const reference::SlotResult& r, double eh, int cha
     return 2 * eh * spread / r.heightSum;
 }
 
-// What draws a material's output on the GPU: hexc's shader on one target, or a shader written by hand.
+// What draws a material's output on the GPU: hexc's shader on one target, or a shader written by hand. An empty Draw
+// draws nothing: the check then only records the reference and the tolerances (Check::reference, Check::tolerance).
 using Draw = std::function<Image(const Material& m, vk::RenderOutput output, const View& view)>;
 
 inline Draw on(vk::ExecutedTarget target, const CompileOptions& options = {}) {
@@ -173,17 +180,20 @@ using PixelTolerance = std::function<double(const reference::SlotResult&, size_t
 inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, const Draw& draw, int channels,
                                    const PixelTolerance& tolerance) {
     const Slot& slot = m.slots[0];
-    Image gpu = draw(m, output, view);
+    Image gpu = draw ? draw(m, output, view) : Image{view.width, view.height, std::vector<float>(size_t(view.width * view.height) * 4)};
     const reference::Heights heights(m, slot);
     const reference::SlotTextures textures(slot);
     std::vector<reference::SlotResult> ref = reference::evaluateView(slot, *textures.texture, view, heights.source(), textures.lut.get());
     Check check;
+    check.output = output;
+    check.channels = channels;
     Image cpu = gpu;
     for (size_t p = 0; p < ref.size(); ++p) {
         // Scalar slots show (s, s, s, 1) of the channel they read.
         for (int c = 0; c < channels; ++c)
             cpu.rgba[p * 4 + size_t(c)] = float(ref[p].value[kindRow(slot.kind).oneChannel ? size_t(slot.channel) : size_t(c)]);
         const double t = tolerance(ref[p], p);
+        check.tolerance.push_back(t);
         check.maxTolerance = std::max(check.maxTolerance, t);
         for (int c = 0; c < channels; ++c) {
             double e = std::fabs(double(gpu.rgba[p * 4 + size_t(c)]) - double(cpu.rgba[p * 4 + size_t(c)]));
@@ -193,6 +203,7 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
         }
     }
     check.errors = compare(gpu, cpu, channels);
+    check.reference = std::move(cpu);
     return check;
 }
 
@@ -384,6 +395,67 @@ inline std::vector<ExecCase> execCases(const std::filesystem::path& folder) {
         for (const std::string target : c.at("targets")) cases.push_back({folder, name, executedTarget(target)});
     }
     return cases;
+}
+
+// ---- Weights ----------------------------------------------------------------------------------------------
+// With falloffcontrast 0 the weights depend on the lattice alone. The GPU evaluates it in float32 on a uv that
+// the rasteriser interpolated, so st and the skewed coordinates carry a few ulps of their size (|skewed| <= 4 |st|):
+// the barycentrics are off by dw <= 4 * 4 ulp(|st|), and W_i = w_i^gamma / sum_j w_j^gamma moves by
+// |dW_i| <= gamma * sum_j W_i |delta_ij - W_j| |dw_j| / w_j <= 2 gamma dw max_j(W_j / w_j), where W_j / w_j <= 2 for
+// the three barycentrics of a triangle (largest at w = (1/2, 1/4, 1/4) for gamma = 7; 1 for gamma = 1).
+// With falloffcontrast beta > 0 the metric's error e_m adds |dW_i| <= k * beta / (1 - beta) * e_m * 2 W_i (1 - W_i)
+// <= k * beta / (1 - beta) * e_m / 2 (see pixelTolerance).
+// The lattice weights of the material's first slot against the reference's, every pixel within one tolerance.
+inline Check checkWeights(const Material& m, const View& view, const Draw& draw) {
+    const Slot& slot = m.slots[0];
+    double stMax = std::max(std::fabs(view.uvRect[2]), std::fabs(view.uvRect[3])) * std::max(slot.hex.tiling[0], slot.hex.tiling[1]);
+    double ulp = std::ldexp(1.0, std::ilogb(stMax) - 23);
+    double dw = 4 * 4 * ulp;
+    double k = std::max(1.0, std::log2(1.0 / (1.0 - slot.hex.falloff)));
+    double em = sampleError(0, slot.colorSpace == ColorSpace::Srgb);
+    double tolerance = k * (2 * slot.hex.exponent * dw * 2) + k * slot.hex.falloffcontrast / (1 - slot.hex.falloffcontrast) * em / 2;
+    Check check;
+    check.output = vk::RenderOutput::Weights;
+    check.channels = 3;
+    check.reference = cpuRender(slot, view, reference::Output::Weights);
+    check.tolerance.assign(size_t(view.width * view.height), tolerance);
+    if (draw) check.errors = compare(draw(m, vk::RenderOutput::Weights, view), check.reference, 3);
+    check.worstRatio = check.errors.max / tolerance;
+    check.toleranceAtMax = check.maxTolerance = tolerance;
+    return check;
+}
+
+// ---- The cases of tests/execution/cases/ --------------------------------------------------------------------
+// tests/execution/cases/<name>.json: a material (inline, its paths read from materials/ like the examples'), the view
+// it is seen in, the targets it runs on and the tolerance rule it is held to; each file, on each of its targets, is one
+// test, "<name>_<target>" (cases_test.cpp). A rule is one of the checks above, with its derivation:
+//   falloff     checkColor: a colour or scalar slot, pixelTolerance (+ heightTolerance when height-blended)
+//   histogram   checkHistogram: histogramTolerance
+//   derivative  checkNormal: a normal slot's derivatives (or triplanar surface gradient)
+//   weights     checkWeights: the blend weights
+// A view is one of the named views above (magnified, minified, sphere, origin; the level each reads is fixed there) or
+// {"width", "height", "uv": [u0, v0, u1, v1], "level": the deepest mip level it reads}.
+inline std::pair<View, int> caseView(const nlohmann::json& v) {
+    if (v.is_object()) {
+        const std::vector<double> uv = v.at("uv");
+        if (uv.size() != 4) throw std::runtime_error("a view's uv is [u0, v0, u1, v1]");
+        return {View{v.at("width"), v.at("height"), {uv[0], uv[1], uv[2], uv[3]}}, v.at("level").get<int>()};
+    }
+    const std::map<std::string, std::pair<View, int>> named = {
+        {"magnified", {kMagnified, 0}}, {"minified", {kMinified, 2}}, {"sphere", {kSphere, 0}}, {"origin", {kOrigin, 0}}};
+    const auto it = named.find(v.get<std::string>());
+    if (it == named.end()) throw std::runtime_error("unknown view " + v.dump() + " (magnified, minified, sphere or origin)");
+    return it->second;
+}
+
+inline Check checkCase(const nlohmann::json& c, const Material& m, const Draw& draw) {
+    const auto [view, level] = caseView(c.at("view"));
+    const std::string rule = c.at("rule");
+    if (rule == "falloff") return checkColor(m, view, level, draw);
+    if (rule == "histogram") return checkHistogram(m, view, level, draw);
+    if (rule == "derivative") return checkNormal(m, view, level, draw);
+    if (rule == "weights") return checkWeights(m, view, draw);
+    throw std::runtime_error("unknown rule `" + rule + "` (falloff, histogram, derivative or weights)");
 }
 
 }  // namespace hexc::exec

@@ -1,8 +1,9 @@
 // hexc's WGSL in Chromium's WebGPU (Dawn, with Tint as its WGSL compiler; SwiftShader on a machine without a GPU).
 // window.hexcWgsl.validate(codes): Tint's verdict on each module: {errors, warnings}, errors including any validation
 // error Dawn raised while creating it (Tint's uniformity analysis among them).
-// window.hexcWgsl.render(config): draws a fragment module over a uv rectangle and returns its RGBA32F pixels, top row
-// first, base64-encoded. The vertex module is hexc's own pass-through stage (--vertex): position at location 0, uv at 1.
+// window.hexcWgsl.render(config): draws a fragment module over a uv rectangle with the textures given (each at its
+// binding, every mip level from hexc-expect's files) and returns its RGBA32F pixels, top row first, base64-encoded.
+// The vertex module is hexc's own pass-through stage (--vertex): position at location 0, uv at 1.
 
 let device;
 
@@ -11,7 +12,8 @@ async function gpu() {
     if (!navigator.gpu) throw new Error("no navigator.gpu: Chromium needs --enable-unsafe-webgpu (and --headless=new)");
     const adapter = await navigator.gpu.requestAdapter();
     if (!adapter) throw new Error("WebGPU gave no adapter");
-    device = await adapter.requestDevice();
+    // The histogram blend's Gaussian texture and table are float32, which WebGPU filters only with this feature.
+    device = await adapter.requestDevice({ requiredFeatures: adapter.features.has("float32-filterable") ? ["float32-filterable"] : [] });
     return device;
 }
 
@@ -37,12 +39,16 @@ async function validate(codes) {
     return verdicts;
 }
 
-// A texture as the file stores it, top row first, 8 bits a channel, level 0 only (the views drawn read no other).
-async function texture(d, { url, srgb }) {
-    const image = await createImageBitmap(await (await fetch(url)).blob(), { colorSpaceConversion: "none", premultiplyAlpha: "none" });
-    const t = d.createTexture({ size: [image.width, image.height], format: srgb ? "rgba8unorm-srgb" : "rgba8unorm",
-                                usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST | GPUTextureUsage.RENDER_ATTACHMENT });
-    d.queue.copyExternalImageToTexture({ source: image }, { texture: t }, [image.width, image.height]);
+// A texture from hexc-expect's files (tests/execution/expect.cpp): every mip level, raw, in its WebGPU format.
+async function texture(d, { format, levels }) {
+    const bytesPerTexel = format === "rgba32float" ? 16 : 4;
+    const t = d.createTexture({ size: [levels[0].width, levels[0].height], format, mipLevelCount: levels.length,
+                                usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+    for (const [mipLevel, { width, height, url }] of levels.entries()) {
+        const data = await (await fetch(url)).arrayBuffer();
+        if (data.byteLength !== width * height * bytesPerTexel) throw new Error(`${url}: ${data.byteLength} bytes for ${width}x${height}`);
+        d.queue.writeTexture({ texture: t, mipLevel }, data, { bytesPerRow: width * bytesPerTexel }, [width, height]);
+    }
     return t;
 }
 
@@ -64,9 +70,15 @@ async function render({ vertex, fragment, vertexEntry, fragmentEntry, textures, 
     const stages = [await compile(vertex), await compile(fragment)];
     const failed = stages.flatMap((s) => s.errors);
     if (failed.length) throw new Error("Tint rejected the shader: " + failed.join("; "));
+    // The layout from the manifest, as an engine builds it: every texture it lists, even one the shader does not read
+    // (the lattice weights at falloffcontrast 0 read none); empty groups below hexc's.
+    const visibility = GPUShaderStage.FRAGMENT;
+    const group = d.createBindGroupLayout({ entries: [{ binding: sampler.binding, visibility, sampler: { type: "filtering" } },
+        ...textures.map((t) => ({ binding: t.binding, visibility, texture: { sampleType: "float" } }))] });
+    const groups = Array.from({ length: sampler.group + 1 }, (_, g) => (g === sampler.group ? group : d.createBindGroupLayout({ entries: [] })));
     d.pushErrorScope("validation");
     const pipeline = d.createRenderPipeline({
-        layout: "auto",
+        layout: d.createPipelineLayout({ bindGroupLayouts: groups }),
         vertex: { module: stages[0].module, entryPoint: vertexEntry,
                   buffers: [{ arrayStride: 24, attributes: [{ shaderLocation: 0, offset: 0, format: "float32x4" },
                                                               { shaderLocation: 1, offset: 16, format: "float32x2" }] }] },
@@ -76,7 +88,7 @@ async function render({ vertex, fragment, vertexEntry, fragmentEntry, textures, 
     const entries = [{ binding: sampler.binding, resource: d.createSampler({
         addressModeU: "repeat", addressModeV: "repeat", magFilter: "linear", minFilter: "linear", mipmapFilter: "linear" }) }];
     for (const t of textures) entries.push({ binding: t.binding, resource: (await texture(d, t)).createView() });
-    const bindGroup = d.createBindGroup({ layout: pipeline.getBindGroupLayout(sampler.group), entries });
+    const bindGroup = d.createBindGroup({ layout: group, entries });
     const target = d.createTexture({ size: [width, height], format: "rgba32float",
                                      usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
     const readback = d.createBuffer({ size: width * height * 16, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });

@@ -59,8 +59,10 @@ vec3 hexcPerturbNormal(vec3 normal, vec3 surfaceGradient) {
 }
 
 // The value and weights templates' preview surface for triplanar materials: the unit sphere, uv as longitude
-// and latitude in radians.
+// and latitude in radians. Its cos and sin from hexcCosSin: a target's own may err by 2^-11 (SwiftShader's do), which
+// moves a texel 0.19 of a 256^2 texture at tiling 1.5, so that a preview would differ from target to target.
 void hexcPreviewSphere(vec2 uv, out vec3 position, out vec3 normal) {
-    position = vec3(cos(uv.y) * sin(uv.x), sin(uv.y), cos(uv.y) * cos(uv.x));
+    vec2 lon = hexcCosSin(uv.x), lat = hexcCosSin(uv.y);
+    position = vec3(lat.x * lon.y, lat.y, lat.x * lon.x);
     normal = position;
 }

@@ -1,0 +1,154 @@
+// hexc-expect (CASE.json | MATERIAL:SLOT)... -o DIR: what a GPU that the execution tests do not drive (tests/wgsl:
+// Dawn) is held to for a case of tests/execution/cases/ (its own check, checks.h checkCase) or a slot of a material
+// file (as outputs_test.cpp checks rock's: checkSlot), the check run with nothing drawn: the same reference and
+// per-pixel tolerances, the texels the reference samples (every mip level as it models them) and the shader drawn,
+// the WGSL of the material as the harness shows it (NAME.frag.wgsl, NAME.vert.wgsl, NAME.manifest.json).
+// Writes, per case or slot NAME (the case's file name, or the material file's and the slot's, rock_mtlx_albedo),
+// NAME.expect.json and the raw little-endian files it names:
+//   {"output": "albedo" | "derivative" | "weights", "channels": N, "compile_ms", "width", "height", "uv": [u0, v0, u1, v1],
+//    "reference": RGBA float32 a pixel, top row first, "tolerance": one float32 a pixel,
+//    "textures": {name as the manifest names it: {"format": a WebGPU format, "levels": [{"width", "height", "file"}]}}}
+// An 8-bit texture's levels are the reference's exact ones rounded to 8 bits (in sRGB encoding for an sRGB one): within
+// half a step of them, where lavapipe's blits may be a step off per level (sampleError). Float textures (the
+// histogram's Gaussian texture and table) are float32.
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#include "execution/checks.h"
+#include "vk/render.h"
+
+using namespace hexc;
+using namespace hexc::exec;
+
+namespace {
+
+void writeRaw(const std::filesystem::path& file, const void* data, size_t bytes) {
+    std::ofstream out(file, std::ios::binary);
+    out.write(static_cast<const char*>(data), std::streamsize(bytes));
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+uint8_t unorm8(double linear, bool srgb) {
+    const double v = std::clamp(linear, 0.0, 1.0);
+    const double encoded = !srgb ? v : v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+    return uint8_t(std::lround(encoded * 255));
+}
+
+// Every level of `t` to files `stem`.N.raw; returns the texture's entry.
+nlohmann::json writeLevels(const reference::SampledTexture& t, bool isFloat, bool srgb, const std::filesystem::path& dir,
+                           const std::string& stem) {
+    nlohmann::json levels = nlohmann::json::array();
+    for (int l = 0; l < t.levels(); ++l) {
+        const int w = t.width(l), h = t.height(l);
+        std::vector<float> f;
+        std::vector<uint8_t> b;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                for (int c = 0; c < 4; ++c) {
+                    const double v = t.texel(l, x, y)[size_t(c)];
+                    if (isFloat)
+                        f.push_back(float(v));
+                    else
+                        b.push_back(unorm8(v, srgb && c < 3));  // alpha is never encoded
+                }
+        const std::string file = stem + "." + std::to_string(l) + ".raw";
+        isFloat ? writeRaw(dir / file, f.data(), f.size() * 4) : writeRaw(dir / file, b.data(), b.size());
+        levels.push_back({{"width", w}, {"height", h}, {"file", file}});
+    }
+    return {{"format", isFloat ? "rgba32float" : srgb ? "rgba8unorm-srgb" : "rgba8unorm"}, {"levels", levels}};
+}
+
+// Each slot's textures as the reference samples them: SlotTextures (a histogram slot's Gaussian texture in the slot's
+// place, its table as "<slot>.lut"), decoded by the sampler where the slot says.
+nlohmann::json writeTextures(const Material& m, const std::filesystem::path& dir) {
+    nlohmann::json textures = nlohmann::json::object();
+    for (const Slot& slot : m.slots) {
+        const reference::SlotTextures t(slot);
+        const bool histogram = t.lut != nullptr;
+        const std::string stem = m.name + "." + slot.name;
+        textures[slot.name] = writeLevels(*t.texture, histogram, slot.samplerDecodes(), dir, stem);
+        if (histogram) textures[slot.name + ".lut"] = writeLevels(*t.lut, true, false, dir, stem + ".lut");
+    }
+    return textures;
+}
+
+// What one GPU image is held to: the material checked (its first slot), the view and the check.
+struct Expected {
+    std::string name;
+    Material material;
+    View view;
+    Check check;
+};
+
+// A case file of tests/execution/cases/, under its own rule and view.
+Expected fromCase(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    const nlohmann::json c = nlohmann::json::parse(in);
+    const std::string name = file.stem().string();
+    ParseResult r = parseMaterial(c.at("material").dump(), "materials/" + name + ".json");
+    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
+    return {name, *r.material, caseView(c.at("view")).first, checkCase(c, *r.material, Draw())};
+}
+
+// A slot of a material file as tests/execution/outputs_test.cpp checks rock's: alone (rockWith), magnified (checkSlot).
+Expected fromSlot(const std::string& file, const std::string& slot) {
+    const Material one = rockWith(slot, file);
+    const std::filesystem::path path(file);
+    const std::string name = path.stem().string() + "_" + path.extension().string().substr(1) + "_" + slot;  // rock_mtlx_albedo
+    return {name, one, kMagnified, checkSlot(one, Draw())};
+}
+
+// The material's WGSL as the harness shows the checked output (vk::renderedMaterial: the `value` or `weights`
+// template), baked, with the vertex stage; the reference and tolerances; every texture it binds.
+void write(Expected e, const std::filesystem::path& dir) {
+    Material shown = vk::renderedMaterial(e.material, e.check.output, e.material.slots[0].name);
+    shown.name = e.name;
+    CompileOptions options;
+    options.targets = {Target::Wgsl};
+    options.vertex = options.bake = true;
+    const auto started = std::chrono::steady_clock::now();
+    const CompileResult compiled = compile(shown, options);
+    const double compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    if (!compiled.ok()) throw std::runtime_error(formatAll(compiled.diagnostics));
+    for (const OutputFile& f : compiled.files) std::ofstream(dir / f.name, std::ios::binary) << f.contents;
+    const std::vector<float> tolerance(e.check.tolerance.begin(), e.check.tolerance.end());
+    writeRaw(dir / (e.name + ".reference.raw"), e.check.reference.rgba.data(), e.check.reference.rgba.size() * 4);
+    writeRaw(dir / (e.name + ".tolerance.raw"), tolerance.data(), tolerance.size() * 4);
+    const vk::RenderOutput output = e.check.output;
+    const nlohmann::json out = {{"output", output == vk::RenderOutput::Derivative ? "derivative"
+                                           : output == vk::RenderOutput::Weights  ? "weights"
+                                                                                  : "albedo"},
+                                {"channels", e.check.channels},
+                                {"compile_ms", compileMs},  // SPIR-V and naga's translation, with the vertex stage
+                                {"width", e.view.width},
+                                {"height", e.view.height},
+                                {"uv", e.view.uvRect},
+                                {"reference", e.name + ".reference.raw"},
+                                {"tolerance", e.name + ".tolerance.raw"},
+                                {"textures", writeTextures(shown, dir)}};
+    std::ofstream(dir / (e.name + ".expect.json")) << out.dump(1) << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> inputs;
+    std::filesystem::path dir;
+    for (int i = 1; i < argc; ++i) std::string(argv[i]) == "-o" && i + 1 < argc ? void(dir = argv[++i]) : inputs.push_back(argv[i]);
+    if (dir.empty() || inputs.empty()) {
+        std::fprintf(stderr, "usage: hexc-expect (CASE.json | MATERIAL:SLOT)... -o DIR   (from the source root)\n");
+        return 2;
+    }
+    try {
+        std::filesystem::create_directories(dir);
+        for (const std::string& input : inputs) {
+            const size_t colon = input.rfind(':');
+            write(colon == std::string::npos ? fromCase(input) : fromSlot(input.substr(0, colon), input.substr(colon + 1)), dir);
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "hexc-expect: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
