@@ -178,6 +178,27 @@ TEST(EnginePackages, GodotGetsItsDialectAndItsInputs) {
     }
 }
 
+// An sRGB slot the shader decodes itself (MaterialX mode: `"decode": "shader"` in the manifest) is bound linear by
+// every package (docs/bind-a-manifest.md, step 3): an sRGB hint would decode its texels a second time.
+TEST(EnginePackages, ASlotTheShaderDecodesIsBoundLinear) {
+    ParseResult p = parseMaterialFile("materials/rock.json");
+    for (Slot& s : p.material->slots) s.hex.mode = HashMode::MaterialX;
+    auto source = [&](Engine engine, const std::string& suffix) {
+        CompileResult r = compileForEngine(*p.material, engine, {});
+        EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+        for (const OutputFile& f : r.files)
+            if (f.name.ends_with(suffix)) return f.contents;
+        ADD_FAILURE() << "no " << suffix;
+        return std::string();
+    };
+    EXPECT_NE(source(Engine::Godot3, ".shader").find("uniform sampler2D hexcTex_albedo;"), std::string::npos);
+    EXPECT_NE(source(Engine::Godot4, ".gdshader").find("uniform sampler2D hexcTex_albedo : filter_linear_mipmap"), std::string::npos);
+    const std::string module = source(Engine::Threejs, ".three.js");
+    const size_t start = module.find("const hexc = ") + 13;
+    const nlohmann::json data = nlohmann::json::parse(module.substr(start, module.find(";\n", start) - start));
+    for (const nlohmann::json& t : data["textures"]) EXPECT_EQ(t["colorspace"], "linear") << t["uniform"];
+}
+
 TEST(EnginePackages, FilamentReadsMaterialParamsAndSetsTheNormalFirst) {
     const std::string text = package("rock", Engine::Filament);
     EXPECT_NE(text.find("{ type : sampler2d, name : hexcTex_albedo }"), std::string::npos);

@@ -47,13 +47,13 @@ std::vector<std::string> defaultNames() {
 }  // namespace
 
 TEST(TargetTable, CMakePackageListsTheTable) {
-    const std::string cmake = readFile("compiler/cmake/hexcMaterials.cmake");
+    const std::string cmake = readFile("compiler/integrations/cmake/hexcMaterials.cmake");
     EXPECT_EQ(cmakeList(cmake, "_HEXC_TARGETS"), targetNames());
     EXPECT_EQ(cmakeList(cmake, "_HEXC_DEFAULT_TARGETS"), defaultNames());
 }
 
 TEST(TargetTable, BazelPackageListsTheTable) {
-    const std::string bzl = readFile("compiler/bazel/hexc.bzl");
+    const std::string bzl = readFile("compiler/integrations/bazel/hexc.bzl");
     std::vector<std::string> pairs;  // name, extension, name, extension ...
     for (const TargetRow& row : targetRows()) {
         pairs.push_back(row.name);

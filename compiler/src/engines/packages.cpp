@@ -80,7 +80,8 @@ std::string dialect(std::string body, Engine engine) {
     return withoutFma(std::regex_replace(body, std::regex(R"(\b(\d+)u\b)"), "uint($1)"));
 }
 
-// Each texture the functions read: its uniform and whether it holds sRGB colour, from the manifest.
+// Each texture the functions read: its uniform and whether the sampler decodes it from sRGB, from the manifest
+// (docs/bind-a-manifest.md, step 3: not a slot the shader decodes itself, `"decode": "shader"`).
 struct TextureUse {
     std::string uniform;
     bool srgb;
@@ -88,7 +89,7 @@ struct TextureUse {
 
 std::vector<TextureUse> textures(const nlohmann::json& manifest) {
     std::map<std::string, bool> srgb;
-    for (const auto& s : manifest["slots"]) srgb[s["name"]] = s.value("colorspace", "linear") == "srgb";
+    for (const auto& s : manifest["slots"]) srgb[s["name"]] = s.value("colorspace", "linear") == "srgb" && !s.contains("decode");
     for (const auto& p : manifest.value("packed_textures", nlohmann::json::array())) srgb[p["name"]] = p["colorspace"] == "srgb";
     std::vector<TextureUse> out;
     for (const auto& [name, where] : manifest["targets"]["glsl"]["textures"].items())
