@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "codegen/codegen.h"
+#include "common/templates.h"
 
 using namespace hexc;
 
@@ -24,6 +25,19 @@ TEST(Codegen, UnknownTokenIsAnInternalError) {
             ASSERT_EQ(e.diagnostics.size(), 1u);
             EXPECT_NE(e.diagnostics[0].message.find("internal error: section `color.hex`"), std::string::npos) << e.diagnostics[0].message;
         }
+    }
+}
+
+// A kind reads the snippets of the kind its row says it is read like (`like`): that kind has every section the row
+// allows, so a kind like `scalar` adds none of its own (docs/internals.md, "Add a slot kind").
+TEST(Codegen, EveryKindsSnippetsAreThoseOfTheKindItIsReadLike) {
+    const std::map<std::string, std::string> sections = snippetSections("slots.glsl");
+    for (const SlotKindRow& row : kindRows()) {
+        const std::string like(toString(row.like));
+        std::vector<std::string> wanted = {like + ".hex", like + ".hex1", like + ".plain", like + ".materialx", "engine.call." + like};
+        if (row.mayUseHistogram) wanted.push_back(like + ".histogram");
+        if (row.mayPack) wanted.push_back(like + ".packed");
+        for (const std::string& section : wanted) EXPECT_TRUE(sections.count(section)) << row.name << ": no section " << section;
     }
 }
 

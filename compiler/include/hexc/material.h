@@ -32,6 +32,9 @@ struct SlotKindRow {
     bool oneChannel;
     bool mayPack;          // may share a packed texture with other slots (docs/material-format.md#pack)
     bool mayUseHistogram;  // may blend by histogram (docs/material-format.md#blend)
+    // The kind it is read like: whose snippets (templates/library/slots.glsl's `<kind>.*` sections) it takes, and the
+    // HEXC_FIRST_KIND_<kind> a template sees. Itself, or a kind with snippets of its own and the same GLSL type.
+    SlotKind like;
 };
 const SlotKindRow& kindRow(SlotKind kind);
 // Every row, in SlotKind order.

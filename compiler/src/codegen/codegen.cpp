@@ -116,7 +116,7 @@ public:
             if (f.tangentNormal) continue;  // engine.normal, after its derivative's
             const Tokens name = {{"name", f.name.substr(std::string_view("hexc_").size())}};
             if (kindRow(f.slot->kind).derivative) normals += expand("engine.normal", name) + "\n\n";
-            calls += expand("engine.call." + std::string(toString(f.slot->kind)), name) + "\n";
+            calls += expand("engine.call." + std::string(toString(kindRow(f.slot->kind).like)), name) + "\n";
         }
         if (calls.ends_with('\n')) calls.pop_back();
         return normals + expand("engine.calls", {{"calls", calls}}) + "\n";
@@ -212,7 +212,7 @@ std::string injectedCode(const ShaderPlan& plan) {
         // A layered material's first slot is its first role read.
         const LayerRolePlan* role = plan.layers ? &plan.layers->roles.front() : nullptr;
         resources += emit.expand("first", {{"name", role ? role->name : first.name},
-                                           {"kind", std::string(toString(role ? role->kind : first.kind))},
+                                           {"kind", std::string(toString(kindRow(role ? role->kind : first.kind).like))},
                                            {"projection", std::string(toString(first.projection))}}) +
                      "\n";
         for (const SlotPlan& sp : plan.slots)

@@ -8,19 +8,32 @@ namespace hexc {
 namespace {
 
 constexpr std::array<SlotKindRow, kSlotKindCount> kKindRows = {{
-    // kind, name, glslType, mtlxType, reads, colorSpace, derivative, oneChannel, mayPack, mayUseHistogram
-    {SlotKind::Color, "color", "vec4", "color3", "rgba", ColorSpace::Srgb, false, false, true, true},
-    {SlotKind::Scalar, "scalar", "float", "float", "", ColorSpace::Linear, false, true, true, true},
-    {SlotKind::Normal, "normal", "vec2", "vector3", "rgb", ColorSpace::Linear, true, false, false, false},
+    // kind, name, glslType, mtlxType, reads, colorSpace, derivative, oneChannel, mayPack, mayUseHistogram, like
+    {SlotKind::Color, "color", "vec4", "color3", "rgba", ColorSpace::Srgb, false, false, true, true, SlotKind::Color},
+    {SlotKind::Scalar, "scalar", "float", "float", "", ColorSpace::Linear, false, true, true, true, SlotKind::Scalar},
+    {SlotKind::Normal, "normal", "vec2", "vector3", "rgb", ColorSpace::Linear, true, false, false, false, SlotKind::Normal},
 }};
 
+constexpr bool sameText(const char* a, const char* b) {
+    while (*a && *a == *b) ++a, ++b;
+    return *a == *b;
+}
+
+// A row is at its kind's place, `reads` is empty exactly for one channel, and the kind it is read like reads itself
+// (it has the snippets) and returns the same type.
 constexpr bool inKindOrder() {
-    for (size_t i = 0; i < kKindRows.size(); ++i)
-        if (size_t(kKindRows[i].kind) != i || kKindRows[i].name == nullptr || kKindRows[i].oneChannel != (*kKindRows[i].reads == '\0'))
+    for (size_t i = 0; i < kKindRows.size(); ++i) {
+        const SlotKindRow& row = kKindRows[i];
+        const SlotKindRow& like = kKindRows[size_t(row.like)];
+        if (size_t(row.kind) != i || row.name == nullptr || row.oneChannel != (*row.reads == '\0') || like.like != like.kind ||
+            !sameText(like.glslType, row.glslType))
             return false;
+    }
     return true;
 }
-static_assert(inKindOrder(), "the slot-kind table has one row per SlotKind, in SlotKind order; `reads` empty for one channel");
+static_assert(inKindOrder(),
+              "the slot-kind table has one row per SlotKind, in SlotKind order; `reads` empty for one channel; `like` a kind "
+              "with its own snippets and the same GLSL type");
 
 // An enum's names in its order; `Last` is its last value, so a name missing or extra does not compile.
 template <auto Last, size_t N>

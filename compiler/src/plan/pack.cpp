@@ -67,7 +67,7 @@ void packGroup(ShaderPlan& plan, const std::vector<size_t>& group, const std::ve
         p.width = first.width, p.height = first.height;
         for (size_t k = 0; k < p.slots.size(); ++k) {
             SlotPlan& sp = plan.slots[p.slots[k]];
-            sp.section = std::string(toString(sp.slot->kind)) + ".packed";
+            sp.section = std::string(toString(kindRow(sp.slot->kind).like)) + ".packed";
             sp.packedChannel = p.channels[k] == "rgb" ? 0 : int(std::string("rgba").find(p.channels[k]));
             sp.channel = sp.packedChannel;
             sp.texture = "hexcTex_" + plan.slots[p.slots.front()].name;

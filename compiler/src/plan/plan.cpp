@@ -97,11 +97,11 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     sp.slot = &slot;
     sp.histogram = h.enabled && h.blend == Blend::Histogram;  // the parser has left it only on colour and scalar slots
     const bool materialx = h.enabled && h.mode == HashMode::MaterialX;
-    sp.section = std::string(toString(slot.kind)) + (!h.enabled     ? ".plain"
-                                                     : materialx    ? ".materialx"
-                                                     : h.taps == 1  ? ".hex1"
-                                                     : sp.histogram ? ".histogram"
-                                                                    : ".hex");
+    sp.section = std::string(toString(kindRow(slot.kind).like)) + (!h.enabled     ? ".plain"
+                                                                   : materialx    ? ".materialx"
+                                                                   : h.taps == 1  ? ".hex1"
+                                                                   : sp.histogram ? ".histogram"
+                                                                                  : ".hex");
     sp.coordinates = triplanar ? "triplanar" : h.splitCoordinates ? "uv.split" : "uv";
     // A triplanar derivative (normal) slot returns a world-space surface gradient.
     sp.type = triplanar && kindRow(slot.kind).derivative ? "vec3" : kindRow(slot.kind).glslType;
