@@ -17,6 +17,7 @@
 #include "spirv/module.h"
 #include "spirv/keep.h"
 #include "spirv/share.h"
+#include "spirv/unroll.h"
 
 namespace hexc {
 namespace {
@@ -42,9 +43,16 @@ ShaderCode compileCode(const std::string& glsl, const ShaderPlan& plan, const Co
         return {};
     }
     if (plan.functions) front.words = keepFunctions(front.words, engineSignatures(plan));
+    if (options.unrollLoops) front.words = unrollEveryLoop(front.words);
     SpirvResult optimized = optimizeSpirv(front.words, options.bake, false, !options.debug);
     append(diagnostics, optimized.diagnostics);
     if (optimized.words.empty()) return {};
+    // The unrolled loops' arrays, now indexed by constants only, become scalars in a second round of the recipe.
+    if (options.unrollLoops && !options.debug) {
+        optimized = optimizeSpirv(optimized.words, false, false, true);
+        append(diagnostics, optimized.diagnostics);
+        if (optimized.words.empty()) return {};
+    }
     // A packed texture's slots fetch it once per tap (spirv/share.h); --debug keeps each slot's function and fetches.
     for (int round = 0; round < 2 && !plan.packs.empty() && !options.debug; ++round) {
         optimized = optimizeSpirv(shareTextureReads(optimized.words), false, false, true);

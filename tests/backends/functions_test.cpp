@@ -131,7 +131,9 @@ std::string package(const std::string& name, Engine engine, Diagnostics* diagnos
     if (diagnostics) *diagnostics = r.diagnostics;
     const std::string dir(toString(engine));
     for (const OutputFile& f : r.files)
-        if (f.name.starts_with(dir + "/" + name + ".") && !f.name.ends_with(".json") && !f.name.ends_with(".png")) return f.contents;
+        if (f.name.starts_with(dir + "/" + std::filesystem::path(name).filename().string() + ".") && !f.name.ends_with(".json") &&
+            !f.name.ends_with(".png"))
+            return f.contents;
     ADD_FAILURE() << "no package source";
     return "";
 }
@@ -218,7 +220,7 @@ TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {
 }
 
 // A layered material's package (Filament's) feeds the engine its roles' blends, reports the role without an input at
-// its first layer's slot, and the engines whose packages do not carry layers refuse it.
+// its first layer's slot, and the engines whose packages do not carry layers refuse it (Godot 3's does: below).
 TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
     ParseResult p = parseMaterialFile("materials/terrain/terrain.json");
     ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
@@ -238,11 +240,25 @@ TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
                                                 })->contents);
     EXPECT_EQ(manifest["functions"][0], nlohmann::json::parse(R"({"name": "hexc_albedo", "role": "albedo", "parameters": "vec2 uv",
                                                                    "returns": "vec4", "value": "RGBA, linear"})"));
-    for (Engine refused : {Engine::Godot3, Engine::Godot4, Engine::Threejs, Engine::Babylon, Engine::Unity, Engine::Unreal}) {
+    for (Engine refused : {Engine::Godot4, Engine::Threejs, Engine::Babylon, Engine::Unity, Engine::Unreal}) {
         CompileResult web = compileForEngine(*p.material, refused, {});
         EXPECT_NE(formatAll(web.diagnostics).find("error[HX300]"), std::string::npos) << formatAll(web.diagnostics);
         EXPECT_TRUE(web.files.empty());
     }
+}
+
+// Godot 3.2's shading language has no array copies or array parameters and takes `for` loops only with one increment
+// (docs/engines.md#layered-materials): its package of a layered material has the weights' loops unrolled and their
+// arrays made scalars, where Filament's keeps both.
+TEST(EnginePackages, Godot3GetsALayeredMaterialWithoutLoopsOrArrays) {
+    const std::string godot = package("terrain/terrain", Engine::Godot3), filament = package("terrain/terrain", Engine::Filament);
+    for (const char* refused : {"for (", "[8]"}) {
+        EXPECT_EQ(godot.find(refused), std::string::npos) << refused;
+        EXPECT_NE(filament.find(refused), std::string::npos) << refused;  // what the unrolling removes
+    }
+    EXPECT_NE(godot.find("ALBEDO = (hexc_albedo(UV)).rgb;"), std::string::npos);
+    EXPECT_NE(godot.find("NORMALMAP = hexc_normal_normal(UV) * 0.5 + 0.5;"), std::string::npos);
+    EXPECT_NE(godot.find("uniform sampler2D hexcTex_splat0;"), std::string::npos);  // weights: linear, no hint_albedo
 }
 
 }  // namespace

@@ -64,6 +64,9 @@ struct CompileOptions {
     // main and no stage inputs or outputs: "<material>.functions.{hlsl,glsl,metal}" (no SPIR-V target). The template
     // is the built-in `functions`.
     bool functions = false;
+    // Every loop unrolled and the arrays it indexes made scalars (spirv/unroll.h): for an engine language with no array
+    // copies, no array parameters and only `for` loops of its own form (Godot 3's; hexc/engines.h sets it).
+    bool unrollLoops = false;
     // Engine packages (hexc/engines.h, --engine): when set, compile() writes each one's files under "<engine>/"
     // instead of the targets' shaders.
     std::vector<std::string> engines;

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The Godot 3 engine test (CTest label `engine`): hexc writes the Godot 3 package of each material given and of
-engine_check.py's mixed material (non-square textures, a DirectX normal map, packed slots), at both uv
-origins; Godot 3 (Debian's godot3, GLES3 on llvmpipe, under xvfb-run) renders each slot's value through the package's
+engine_check.py's mixed material (non-square textures, a DirectX normal map, packed slots) and layered material
+(three layers on a painted splat map: a flipped u or v must fail), at both uv origins; Godot 3 (Debian's godot3, GLES3 on llvmpipe, under xvfb-run) renders each slot's value through the package's
 functions, unlit, which must match hexc's fp64 reference within the bound derived in engine_check.py; and the
 package's own shader, lit by Godot, shows a dome normal map lit from the light's side.
     check.py HEXC WORKDIR MATERIAL.json ..."""
@@ -69,7 +69,7 @@ def main(argv):
     shutil.rmtree(work, ignore_errors=True)
     project = work / "project"
     shutil.copytree(Path(__file__).parent / "project", project)
-    materials = materials + [ec.mixed_material(work / "mixed")]
+    materials = materials + [ec.mixed_material(work / "mixed"), ec.layered_material(work / "layered")]
     start = time.monotonic()
     jobs, checks = [], []
     dome = ec.dome_material(work / "dome")

@@ -139,7 +139,7 @@ std::string codeOptionsKey(const CompileOptions& options) {
     return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
            std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
            (options.debug ? ",debug," + std::string(toString(options.lineDirectives)) : "") + (options.functions ? ",functions" : "") +
-           (options.engines.empty() ? "" : ",engines " + joined(options.engines)) +
+           (options.unrollLoops ? ",unroll" : "") + (options.engines.empty() ? "" : ",engines " + joined(options.engines)) +
            (options.uvOrigin == UvOrigin::TopLeft ? "" : ",uv " + std::string(toString(options.uvOrigin))) +
            (wgsl ? "," + nagaIdentity() : "");  // another naga writes other WGSL
 }

@@ -179,6 +179,8 @@ CompileOptions packageOptions(Engine engine, CompileOptions options) {
     const bool wgsl = engine == Engine::Babylon && asksForWgsl(options);
     options.engines.clear();
     options.functions = true;
+    // Godot 3.2's language has no array copies or array parameters, and `for` loops only with one increment.
+    options.unrollLoops = engine == Engine::Godot3;
     options.bake = true;  // the engine's material has no block for hexc's parameters
     options.targets = {isHlslEngine(engine) ? Target::Hlsl : Target::Glsl};
     if (wgsl) options.targets.push_back(Target::Wgsl);
@@ -290,12 +292,12 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
                                       " package has no WGSL form: --targets wgsl with --engine adds WGSL functions to "
                                       "Babylon.js's package only (docs/engines.md); leave wgsl out for this engine")}};
     options = packageOptions(engine, options);
-    if (material.layers && engine != Engine::Filament)
+    if (material.layers && engine != Engine::Filament && engine != Engine::Godot3)
         return {{},
                 {Diagnostic::make(Code::TargetUnsupported, {"--engine"}, "",
                                   "the " + std::string(toString(engine)) +
-                                      " package does not carry a layered material yet: the Filament package does "
-                                      "(docs/engines.md#layered-materials)")}};
+                                      " package does not carry a layered material yet: the Filament and Godot 3 packages "
+                                      "do (docs/engines.md#layered-materials)")}};
     if (isWebEngine(engine) || isHlslEngine(engine)) return compileForLanguage(material, engine, options);
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;
