@@ -16,6 +16,15 @@ namespace {
 // Adds a file's bytes (nothing when it cannot be read: the compile will report it).
 void addFile(ContentHash& h, const std::filesystem::path& file) { h.add(readFile(file).value_or("")); }
 
+// Whether the compile reads slot `i`'s texels, not only its size: a histogram slot's derived textures are made from
+// its pixels, and so is a packed texture (whose alpha a colour slot's opaque texels leave free); a layered material's
+// splat maps give the manifest's expected fetches per pixel; the web engines' packages copy every texture.
+bool texelsRead(const Material& material, size_t i, bool copied) {
+    const bool splat =
+        material.layers && std::find(material.layers->splats.begin(), material.layers->splats.end(), i) != material.layers->splats.end();
+    return material.slots[i].hex.blend == Blend::Histogram || material.pack || copied || splat;
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options) {
@@ -43,16 +52,16 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     if (!options.manifestPathsFrom.empty())
         for (const std::filesystem::path& f : inputFiles(material, options))
             h.add(std::filesystem::absolute(f).lexically_normal().string());
-    // Of a texture the compile reads only its size (validation has checked its channels): new pixels leave the
-    // shaders as they are. A histogram slot's derived textures are made from its pixels, and so is a packed texture
-    // (whose alpha a colour slot's opaque texels leave free): their bytes count, and the web engines' packages copy them.
+    // Of most textures the compile reads only the size (validation has checked its channels): new pixels leave the
+    // outputs as they are. Where it reads the texels (texelsRead), their bytes count.
     const bool copied = std::any_of(options.engines.begin(), options.engines.end(), [](const std::string& e) {
         const std::optional<Engine> engine = engineNamed(e);
         return engine && isWebEngine(*engine);
     });
-    for (const Slot& s : material.slots) {
+    for (size_t i = 0; i < material.slots.size(); ++i) {
+        const Slot& s = material.slots[i];
         h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height));
-        if (s.hex.blend == Blend::Histogram || material.pack || copied) h.add(s.file ? s.file->bytes : "");  // as the parser read them
+        if (texelsRead(material, i, copied)) h.add(s.file ? s.file->bytes : "");  // as the parser read them
     }
     addFile(h, material.sourceFile);
     if (const TemplateRef t = effectiveTemplate(material, options); t.file) addFile(h, t.name);

@@ -1,7 +1,8 @@
 #pragma once
 // Incremental builds: a material (or scene variant) whose inputs have not changed since its outputs were
 // written is not compiled again. Its inputs are hashed: the material file, the scene file, every texture's size
-// (all a compile reads of it), the template's text, the compile options, and the hexc version and build.
+// (and the bytes of those whose texels a compile reads: histogram, packed, splat maps, web packages' copies), the
+// template's text, the compile options, and the hexc version and build.
 #include <cstdint>
 #include <filesystem>
 #include <set>

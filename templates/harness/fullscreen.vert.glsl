@@ -7,6 +7,10 @@
 // (i, j), row j = 0 at the top, receives
 //     uv = (u0 + (i + 0.5) / W * (u1 - u0),  v0 + (j + 0.5) / H * (v1 - v0)).
 // The surface is flat and faces the viewer: normal (0,0,1), tangent (1,0,0) with handedness +1.
+// The vertex colour (a layered material's vertex weights) varies over the view, affine in screen space as the
+// triangle interpolates it: at pixel (i, j), with x = (i + 0.5) / W and y = (j + 0.5) / H,
+//     colour = (1 - x, x, y, 1 - y)
+// (reference/layers.h, vertexColorAt, evaluates the same).
 
 layout(push_constant) uniform View {
     vec4 uvRect;  // u0, v0, u1, v1
@@ -16,6 +20,7 @@ layout(location = 0) out vec2 v_uv;
 layout(location = 1) out vec3 v_normal;
 layout(location = 2) out vec4 v_tangent;
 layout(location = 3) out vec3 v_position;  // (u, v, 0): the plane z = 0, for triplanar materials
+layout(location = 4) out vec4 v_color;     // the location hexc gives the vertex colour in a template using 0-3
 
 void main() {
     // t = (0,0), (2,0), (0,2): 0 at NDC -1, 1 at NDC +1 on each axis.
@@ -25,4 +30,5 @@ void main() {
     v_normal = vec3(0.0, 0.0, 1.0);
     v_tangent = vec4(1.0, 0.0, 0.0, 1.0);
     v_position = vec3(v_uv, 0.0);
+    v_color = vec4(1.0 - t.x, t.x, t.y, 1.0 - t.y);
 }

@@ -4,7 +4,7 @@
 // inside a branch that not every pixel of a quad takes is undefined (and WGSL refuses it). codegen
 // (codegen/layers.cpp) fills the tokens: ${skip}, ${width}: literals; ${splats}, ${keep}, ${heights}, ${layers}: the
 // per-splat and per-layer lines below; ${index}, ${splat}, ${channel}, ${slot}, ${tiling}; ${role}, ${type}, ${uv};
-// ${fetched}: when layer ${index}'s slot is fetched (layer.kept, or layer.every when CompileOptions::skipLayers is off).
+// ${location}: the vertex colour input's; ${fetched}: when layer ${index}'s slot is fetched (layer.kept, or layer.every when CompileOptions::skipLayers is off).
 // Weights are arrays of 8, hexc's most layers; those past the material's stay 0.
 // What the roles share is read once per pixel: the first role read at a coordinate fills the weights (the splat maps,
 // and in height mode each kept layer's height) into private variables, and every later role read at that coordinate
@@ -42,7 +42,8 @@ void hexcLayerHeights(inout float w[8], float h[8], float width) {
 }
 
 //@ weights
-// The layers' weights at st (hexc's uv), with its gradients dx, dy: layer i's splat channel, kept and renormalised.
+// The layers' weights at st (hexc's uv), with its gradients dx, dy: layer i's splat channel, vertex colour channel or
+// their product, kept and renormalised.
 void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
     vec3 t;
     for (int i = 0; i < 8; ++i) w[i] = 0.0;
@@ -78,6 +79,16 @@ void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
 
 //@ weights.layer
     w[${index}] = splat${splat}[${channel}];
+
+//@ weights.layer.vertex
+    w[${index}] = clamp(hexcVertexColor[${index}], 0.0, 1.0);
+
+//@ weights.layer.both
+    w[${index}] = splat${splat}[${channel}] * clamp(hexcVertexColor[${index}], 0.0, 1.0);
+
+//@ vertex.input
+// The vertex colour, interpolated: channel i weighs layer i (`weights` "vertex" or "both"); clamped to [0, 1].
+layout(location = ${location}) in vec4 hexcVertexColor;
 
 //@ weights.heights
     // Each kept layer's height, for the height blend.

@@ -206,6 +206,37 @@ TEST(Incremental, UnchangedInputsAreSkippedAndAChangedTextureRebuildsWhatUsesIt)
     EXPECT_NE(err.find("1 compiled, 8 up to date"), std::string::npos) << err;
 }
 
+// A layered material's plan reads its splat map's texels (the expected fetches per pixel): a splat map repainted at the
+// same size compiles again, and the manifest's figure follows it.
+TEST(Incremental, ARepaintedSplatMapCompilesAgain) {
+    const fs::path dir = fs::temp_directory_path() / "hexc_incremental_splat";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy("materials/textures/rock_albedo.png", dir / "a.png");
+    fs::copy("materials/textures/tiles_albedo.png", dir / "b.png");
+    auto paint = [&](uint8_t g) {  // layer 0 everywhere; layer 1 with weight g (0: not fetched)
+        Texture splat{8, 8, false, {}, {}};
+        for (int i = 0; i < 64; ++i) splat.rgba8.insert(splat.rgba8.end(), {uint8_t(255 - g), g, 0, 0});
+        std::ofstream(dir / "splat.png", std::ios::binary) << pngBytes(splat);
+    };
+    std::ofstream(dir / "m.json") << R"({"name": "m", "layers": [
+        {"name": "a", "slots": [{"name": "albedo", "kind": "color", "texture": "a.png"}]},
+        {"name": "b", "slots": [{"name": "albedo", "kind": "color", "texture": "b.png"}]}],
+        "layer_blend": {"splat": ["splat.png"]}})";
+    auto expected = [&] {
+        std::string err;
+        EXPECT_EQ(runHexc((dir / "m.json").string() + " --targets spirv -o " + (dir / "out").string(), &err), 0) << err;
+        return nlohmann::json::parse(read(dir / "out" / "m.manifest.json"))["layers"]["fetches_per_pixel"]["expected"].get<double>();
+    };
+    paint(0);
+    const double alone = expected();
+    paint(128);
+    const double both = expected();
+    // Three taps per hex-tiled layer and one splat fetch: 3 + 1 with layer 1 skipped everywhere, 6 + 1 with it kept.
+    EXPECT_EQ(alone, 4.0);
+    EXPECT_EQ(both, 7.0);
+}
+
 TEST(Incremental, AnotherHexcBuildDoesNotTrustTheStamp) {
     fs::path dir = copyOfMaterials("hexc_stale");
     fs::path out = dir / "out";

@@ -1,6 +1,7 @@
 // Layered materials on lavapipe against the fp64 reference (reference/layers.h): 1, 2, 4 and 8 layers, the example's
-// splat map with its hard (left) and soft (right) borders, linear and height blends, the height blend's width at its
-// edges, and packed layers. Each case prints its error beside the tolerance it is held to.
+// splat map with its hard (left) and soft (right) borders, vertex-colour weights alone and times the splat map (the
+// harness's draw gives the vertex colour (1 - x, x, y, 1 - y) over the view), linear and height blends, the height
+// blend's width at its edges, and packed layers. Each case prints its error beside the tolerance it is held to.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -76,7 +77,19 @@ const LayerCase kCases[] = {
     {"four_layers_normal", "four_height.json", "normal", kSoft, 0, 0},
     {"four_layers_packed", "four_packed.json", "height", kSoft, 0, 0},
     {"eight_layers", "eight.json", "albedo", kWhole, 3, 1},
+    {"two_layers_vertex", "two_vertex.json", "albedo", kWhole, 3, 1},
+    {"four_layers_vertex", "four_vertex.json", "albedo", kWhole, 3, 1},
+    {"two_layers_both", "two_both.json", "albedo", kWhole, 3, 1},
+    {"four_layers_both_height", "four_both_height.json", "albedo", kSoft, 0, 0},
 };
+
+// The error of a layer's weight before keeping. A splat weight errs by e_w (above); the vertex colour by e_c: lavapipe
+// interpolates it in float32 from per-vertex values in [-1, 2] (ulp 2.4e-7), a few roundings, under 1e-6, so 1e-5
+// bounds it. A product s * c with s, c in [0, 1] errs by at most |ds| c + s |dc| <= e_w + e_c.
+double weightError(const Layers& layers, double ew) {
+    const double ec = 1e-5;
+    return layers.weights == LayerWeights::Splat ? ew : layers.weights == LayerWeights::Vertex ? ec : ew + ec;
+}
 
 class LayerCases : public testing::TestWithParam<std::tuple<LayerCase, vk::ExecutedTarget>> {};
 
@@ -99,7 +112,7 @@ TEST_P(LayerCases, MatchTheReference) {
     const reference::LayerTextures textures(m);
     const std::vector<reference::LayerResult> ref = reference::evaluateLayersView(m, 0, textures, c.view);
     const double ex = (1.2 + c.level * (first.colorSpace == ColorSpace::Srgb ? 2.27 : 1.0)) / 255;
-    const double eh = (1.2 + c.level) / 255, ew = (1.2 + c.splatLevel) / 255;
+    const double eh = (1.2 + c.level) / 255, ew = weightError(layers, (1.2 + c.splatLevel) / 255);
     Image cpu = gpu;
     double worst = 0, maxTolerance = 0;
     for (size_t p = 0; p < ref.size(); ++p) {

@@ -4,6 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 #include "hexc/compiler.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
@@ -131,6 +134,52 @@ TEST(Layers, TheValueTemplateShowsTheFirstRole) {
     const CompileResult r = compiled(terrain(), "value");
     EXPECT_NE(r.glsl.find("#define HEXC_FIRST_SLOT hexc_albedo"), std::string::npos);
     EXPECT_NE(r.glsl.find("#define HEXC_FIRST_KIND_color 1"), std::string::npos);
+}
+
+// Vertex weights: the colour is a stage input the manifest locates (the lowest location from 4 up the template leaves
+// free), its channel i weighs layer i, and the expected fetches are unknown without splat maps.
+TEST(Layers, VertexWeightsAreAStageInputTheManifestLocates) {
+    const CompileResult r = compiled(loadMaterial("tests/execution/layers/two_vertex.json"), "value");
+    EXPECT_NE(r.glsl.find("layout(location = 4) in vec4 hexcVertexColor;"), std::string::npos);
+    EXPECT_NE(r.glsl.find("w[1] = clamp(hexcVertexColor[1], 0.0, 1.0);"), std::string::npos);
+    const nlohmann::json manifest = manifestOf(r);
+    const nlohmann::json layers = manifest["layers"];
+    EXPECT_EQ(layers["weights"], "vertex");
+    EXPECT_EQ(layers["vertex_color"], (nlohmann::json{{"input", "hexcVertexColor"}, {"location", 4}, {"type", "vec4"}}));
+    EXPECT_TRUE(layers["splat_maps"].empty());
+    EXPECT_EQ(layers["fetches_per_pixel"]["worst"], 2 * 3);  // two layers of 3 taps, no splat map
+    EXPECT_TRUE(layers["fetches_per_pixel"]["expected"].is_null());
+    bool listed = false;  // the SPIR-V's reflection lists the input where the manifest says
+    for (const auto& input : manifest["targets"]["spirv"]["inputs"]) listed |= input["name"] == "hexcVertexColor" && input["location"] == 4;
+    EXPECT_TRUE(listed) << manifest["targets"]["spirv"]["inputs"].dump();
+}
+
+TEST(Layers, TheVertexColourTakesALocationTheTemplateLeavesFree) {
+    const std::filesystem::path templ = std::filesystem::temp_directory_path() / "hexc_vertex_location.glsl";
+    std::ofstream(templ) << "#version 450\nlayout(location = 0) in vec2 v_uv;\nlayout(location = 4) flat in int v_id;\n"
+                            "layout(location = 5) in vec4 v_extra;\nlayout(location = 0) out vec4 o_color;\n#include <hexc>\n"
+                            "void main() { o_color = hexc_albedo(v_uv) + v_extra * float(v_id); }\n";
+    CompileOptions options;
+    options.templateFile = templ;
+    const CompileResult r = compile(loadMaterial("tests/execution/layers/two_both.json"), options);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    EXPECT_NE(r.glsl.find("layout(location = 6) in vec4 hexcVertexColor;"), std::string::npos);
+    EXPECT_NE(r.glsl.find("w[1] = splat0[1] * clamp(hexcVertexColor[1], 0.0, 1.0);"), std::string::npos);
+    const nlohmann::json layers = manifestOf(r)["layers"];
+    EXPECT_EQ(layers["vertex_color"]["location"], 6);
+    // Both: counted over the splat map, an upper bound (the clamped colour only lowers a weight).
+    EXPECT_TRUE(layers["fetches_per_pixel"]["expected"].is_number());
+    EXPECT_LT(layers["fetches_per_pixel"]["expected"].get<double>(), layers["fetches_per_pixel"]["worst"].get<double>());
+}
+
+// An engine's functions take uv alone: vertex weights are refused there, located at the key.
+TEST(Layers, TheFunctionsOutputRefusesVertexWeights) {
+    CompileOptions options;
+    options.functions = true;
+    const CompileResult r = compile(loadMaterial("tests/execution/layers/two_vertex.json"), options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(formatAll(r.diagnostics).find("error[HX300]: /layer_blend/weights: the functions output"), std::string::npos)
+        << formatAll(r.diagnostics);
 }
 
 }  // namespace

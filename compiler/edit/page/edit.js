@@ -108,9 +108,11 @@ async function costLine(seq) {
   const r = await api('/api/cost', { document: state.doc });
   if (seq !== compileSeq) return;
   const c = r.cost;
-  // A layered material adds its blend's fetches per pixel: expected over its splat maps, and at worst.
+  // A layered material adds its blend's fetches per pixel: expected over its splat maps (unknown, null, when vertex
+  // colours alone weigh the layers), and at worst.
+  const expected = c && c.layer_fetches && c.layer_fetches.expected !== null ? c.layer_fetches.expected.toFixed(1) : 'unknown';
   const layers = c && c.layer_fetches
-    ? ` · layers ${c.layer_fetches.expected.toFixed(1)} expected / ${c.layer_fetches.worst} worst fetches/pixel` : '';
+    ? ` · layers ${expected} expected / ${c.layer_fetches.worst} worst fetches/pixel` : '';
   $('cost').textContent = c ? `${c.fetches} fetches/pixel${layers} · ${c.instructions} SPIR-V instructions · compiled in ${c.compile_ms.toFixed(0)} ms` : '';
 }
 

@@ -2,6 +2,7 @@
 #include "reference/layers.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace hexc::reference {
 
@@ -26,10 +27,27 @@ void keep(std::vector<double>& w, double skip) {
     for (double& x : w) x /= sum;
 }
 
+// Per layer its weight before keeping: splat map i / 4's channel i % 4, vertex colour channel i clamped to [0, 1], or
+// their product (docs/material-format.md#layers).
+std::vector<double> rawWeights(const Layers& layers, const Rgba& vertexColor, const std::function<Rgba(size_t)>& splat) {
+    std::vector<double> w;
+    for (size_t i = 0; i < layers.layers.size(); ++i) {
+        const double s = layers.weights == LayerWeights::Vertex ? 1.0 : splat(i / 4)[i % 4];
+        const double c = layers.weights == LayerWeights::Splat ? 1.0 : std::clamp(vertexColor[i], 0.0, 1.0);
+        w.push_back(s * c);
+    }
+    return w;
+}
+
 }  // namespace
 
+Rgba vertexColorAt(const View& view, int i, int j) {
+    const double x = (i + 0.5) / view.width, y = (j + 0.5) / view.height;
+    return {1 - x, x, y, 1 - y};
+}
+
 LayerResult evaluateLayers(const Material& material, size_t role, const LayerTextures& textures, double u, double v, double dudx,
-                           double dvdx, double dudy, double dvdy) {
+                           double dvdx, double dudy, double dvdy, const Rgba& vertexColor) {
     const Layers& layers = *material.layers;
     const size_t n = layers.layers.size();
     // Evaluates slot `s` of the layers at this pixel.
@@ -38,7 +56,7 @@ LayerResult evaluateLayers(const Material& material, size_t role, const LayerTex
         return evaluate(slot, *textures.of(s).texture, u, v, dudx, dvdx, dudy, dvdy, {0, 0}, textures.heights(s), textures.of(s).lut.get());
     };
     LayerResult r;
-    for (size_t i = 0; i < n; ++i) r.splat.push_back(at(layers.splats[i / 4]).value[i % 4]);
+    r.splat = rawWeights(layers, vertexColor, [&](size_t k) { return at(layers.splats[k]).value; });
     r.weights = r.splat;
     keep(r.weights, layers.skipBelow);
     if (layers.heightRole) {
@@ -77,8 +95,8 @@ std::vector<LayerResult> evaluateLayersView(const Material& material, size_t rol
     out.reserve(size_t(view.width) * size_t(view.height));
     for (int j = 0; j < view.height; ++j)
         for (int i = 0; i < view.width; ++i)
-            out.push_back(
-                evaluateLayers(material, role, textures, view.uvRect[0] + (i + 0.5) * du, view.uvRect[1] + (j + 0.5) * dv, du, 0, 0, dv));
+            out.push_back(evaluateLayers(material, role, textures, view.uvRect[0] + (i + 0.5) * du, view.uvRect[1] + (j + 0.5) * dv, du, 0,
+                                         0, dv, vertexColorAt(view, i, j)));
     return out;
 }
 

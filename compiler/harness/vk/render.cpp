@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <regex>
+#include <sstream>
 #include <stdexcept>
 
 #include "hexc/histogram.h"
@@ -331,6 +333,17 @@ Texture packedTexture(const nlohmann::json& manifest, const CompileResult& compi
     throw std::logic_error("the manifest lists no packed texture " + name);
 }
 
+// D3D matches stage inputs by semantic, but glslang numbers HLSL inputs in declaration order: each `: TEXCOORD<n>`
+// input gets [[vk::location(n)]], where the harness's vertex stage writes it (a layered material's vertex colour sits
+// after a gap in the template's locations).
+std::string pinnedInputLocations(const std::string& hlsl) {
+    static const std::regex input(R"(^(\s*)(\w+ \w+ : TEXCOORD(\d+);))");
+    std::istringstream in(hlsl);
+    std::string out;
+    for (std::string line; std::getline(in, line);) out += std::regex_replace(line, input, "$1[[vk::location($3)]] $2") + "\n";
+    return out;
+}
+
 // The executed target's fragment shader as SPIR-V: the .spv file, or the HLSL or OpenGL GLSL source compiled again.
 void setFragmentShader(RenderRequest& request, const CompileResult& compiled, const nlohmann::json& manifest, const Material& m,
                        ExecutedTarget target, const CompileOptions& options) {
@@ -339,10 +352,11 @@ void setFragmentShader(RenderRequest& request, const CompileResult& compiled, co
             request.fragmentSpirv = spirvWords(outputFile(compiled, ".spv"));
             break;
         case ExecutedTarget::Hlsl:
-            request.fragmentSpirv = spirvOrThrow(optimizeSpirv(
-                spirvOrThrow(compileToSpirv(outputFile(compiled, ".hlsl"), ShaderStage::Fragment, m.name + ".frag.hlsl",
-                                            SourceLanguage::Hlsl, manifest["targets"]["hlsl"]["entry_point"], options.layout)),
-                false, true));
+            request.fragmentSpirv =
+                spirvOrThrow(optimizeSpirv(spirvOrThrow(compileToSpirv(pinnedInputLocations(outputFile(compiled, ".hlsl")),
+                                                                       ShaderStage::Fragment, m.name + ".frag.hlsl", SourceLanguage::Hlsl,
+                                                                       manifest["targets"]["hlsl"]["entry_point"], options.layout)),
+                                           false, true));
             break;
         case ExecutedTarget::Glsl:
             request.fragmentSpirv = spirvOrThrow(

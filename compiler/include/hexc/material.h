@@ -170,6 +170,9 @@ struct TemplateRef {
 // weights painted in splat maps. Each layer's slot is an ordinary slot of the material named <layer>_<role>; the template
 // reads the blend as hexc_<role>.
 enum class LayerBlend { Linear, Height };
+// Where the layers' weights come from: the splat maps, the vertex colour (channel i weighs layer i, so at most four
+// layers), or their product per layer.
+enum class LayerWeights { Splat, Vertex, Both };
 struct Layers {
     struct Role {
         std::string name;  // hexc_<name> reads the blend
@@ -182,12 +185,14 @@ struct Layers {
     std::vector<Role> roles;     // in the first layer's order
     std::vector<Layer> layers;   // layer i's weight is channel i % 4 of splat map i / 4
     std::vector<size_t> splats;  // Material::slots indexes of the splat maps (linear, plain tiled, tiling 1)
+    LayerWeights weights = LayerWeights::Splat;
     LayerBlend blend = LayerBlend::Linear;
     std::optional<size_t> heightRole;  // LayerBlend::Height: the scalar role holding each layer's height
     double width = 0.2;                // height blend: transition width in height units, in (0, 1]
     // A layer whose splat weight is below this is not fetched; the others are renormalised. 0.5/255: half an 8-bit step.
     double skipBelow = 0.5 / 255;
     static constexpr size_t kMaxLayers = 8;
+    static constexpr size_t kMaxVertexLayers = 4;  // one vec4 of vertex colour
 };
 
 struct Material {
@@ -223,5 +228,6 @@ std::string_view toString(Projection projection);
 std::string_view toString(Blend blend);
 std::string_view toString(Lod lod);
 std::string_view toString(LayerBlend blend);
+std::string_view toString(LayerWeights weights);
 
 }  // namespace hexc

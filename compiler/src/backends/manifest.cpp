@@ -129,6 +129,16 @@ nlohmann::json conventionsEntry(const ShaderPlan& plan) {
 
 }  // namespace
 
+// Where the weights come from; the vertex colour's input. The plan cannot know the mesh: with vertex weights alone the
+// expected fetches are unknown (null); with both, they are counted over the splat maps (an upper bound: the vertex
+// colour is clamped to [0, 1], so a product at least skip_below needs a splat weight at least skip_below).
+void addVertexWeights(const LayersPlan& lp, nlohmann::json& entry) {
+    entry["weights"] = toString(lp.weights);
+    if (lp.vertexColorLocation < 0) return;
+    entry["vertex_color"] = {{"input", "hexcVertexColor"}, {"location", lp.vertexColorLocation}, {"type", "vec4"}};
+    if (lp.weights == LayerWeights::Vertex) entry["fetches_per_pixel"]["expected"] = nullptr;
+}
+
 // A layered material's blend: which slots each role blends, the splat maps, and its fetches per pixel (plan/layers.cpp).
 nlohmann::json layersEntry(const ShaderPlan& plan) {
     const LayersPlan& lp = *plan.layers;
@@ -147,6 +157,7 @@ nlohmann::json layersEntry(const ShaderPlan& plan) {
                             {"coverage", lp.coverage},
                             {"fetches_per_pixel", {{"worst", lp.worstFetches}, {"expected", lp.expectedFetches}}}};
     if (!lp.heights.empty()) entry["heights"] = names(lp.heights), entry["width"] = lp.width;
+    addVertexWeights(lp, entry);
     return entry;
 }
 

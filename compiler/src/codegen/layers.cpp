@@ -36,15 +36,25 @@ public:
         return out;
     }
 
+    // Layer i's weight before keeping: its splat channel, its vertex colour channel, or their product.
+    std::string layerWeight(size_t i) const {
+        static const char* const kSections[] = {"weights.layer", "weights.layer.vertex", "weights.layer.both"};
+        return expand(kSections[size_t(plan_.layers->weights)],
+                      {{"index", std::to_string(i)}, {"splat", std::to_string(i / 4)}, {"channel", std::to_string(i % 4)}});
+    }
+
+    // The vertex colour's stage input, when it weighs the layers.
+    std::string vertexInput() const {
+        const int location = plan_.layers->vertexColorLocation;
+        return location < 0 ? "" : expand("vertex.input", {{"location", std::to_string(location)}}) + "\n\n";
+    }
+
     std::string weights() const {
         const LayersPlan& lp = *plan_.layers;
         std::string splats, keep;
         for (size_t k = 0; k < lp.splats.size(); ++k)
             splats += (k ? "\n" : "") + expand("weights.splat", {{"index", std::to_string(k)}, {"tiling", tiling(lp.splats[k])}});
-        for (size_t i = 0; i < lp.count; ++i)
-            keep += (i ? "\n" : "") +
-                    expand("weights.layer",
-                           {{"index", std::to_string(i)}, {"splat", std::to_string(i / 4)}, {"channel", std::to_string(i % 4)}});
+        for (size_t i = 0; i < lp.count; ++i) keep += (i ? "\n" : "") + layerWeight(i);
         const std::string heights =
             lp.heights.empty()
                 ? ""
@@ -69,7 +79,7 @@ private:
 std::string layerFunctions(const ShaderPlan& plan, const std::function<std::string(size_t)>& read, const std::string& uv) {
     if (!plan.layers) return {};
     LayerEmitter emit(plan, read);
-    std::string out = emit.expand("functions", {}) + "\n\n" + emit.weights() + "\n\n" +
+    std::string out = emit.vertexInput() + emit.expand("functions", {}) + "\n\n" + emit.weights() + "\n\n" +
                       emit.expand(plan.functions ? "shared.functions" : "shared", {}) + "\n\n";
     for (const LayerRolePlan& r : plan.layers->roles) out += emit.role(r, uv) + "\n\n";
     return out;

@@ -59,6 +59,7 @@ const std::vector<std::string> kProjections = enumNames<Projection::Triplanar>({
 const std::vector<std::string> kBlends = enumNames<Blend::Histogram>({"falloff", "histogram"});
 const std::vector<std::string> kLods = enumNames<Lod::Shared>({"gradients", "shared"});
 const std::vector<std::string> kLayerBlends = enumNames<LayerBlend::Height>({"linear", "height"});
+const std::vector<std::string> kLayerWeights = enumNames<LayerWeights::Both>({"splat", "vertex", "both"});
 const std::vector<std::string> kRoles = {"albedo", "normal", "roughness", "metallic", "ao", "emission"};
 
 const SlotKindRow& kindRow(SlotKind kind) { return kKindRows.at(size_t(kind)); }
@@ -84,6 +85,7 @@ std::string_view toString(Mask mask) { return kMasks[size_t(mask)]; }
 std::string_view toString(Blend blend) { return kBlends[size_t(blend)]; }
 std::string_view toString(Lod lod) { return kLods[size_t(lod)]; }
 std::string_view toString(LayerBlend blend) { return kLayerBlends[size_t(blend)]; }
+std::string_view toString(LayerWeights weights) { return kLayerWeights[size_t(weights)]; }
 std::string_view toString(Projection projection) { return kProjections[size_t(projection)]; }
 
 }  // namespace hexc

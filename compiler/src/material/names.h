@@ -8,7 +8,8 @@
 
 namespace hexc {
 
-extern const std::vector<std::string> kKinds, kChannels, kColorSpaces, kModes, kMasks, kProjections, kBlends, kLods, kLayerBlends;
+extern const std::vector<std::string> kKinds, kChannels, kColorSpaces, kModes, kMasks, kProjections, kBlends, kLods, kLayerBlends,
+    kLayerWeights;
 
 // A slot's engine roles (its `role`, docs/engines.md#slots-and-engine-inputs), and the kind of slot each takes.
 extern const std::vector<std::string> kRoles;

@@ -10,7 +10,7 @@ namespace hexc {
 namespace {
 
 const std::vector<std::string> kLayerKeys = {"name", "hextiling", "slots"};
-const std::vector<std::string> kLayerBlendKeys = {"splat", "mode", "height", "width", "skip_below"};
+const std::vector<std::string> kLayerBlendKeys = {"weights", "splat", "mode", "height", "width", "skip_below"};
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages, as for the material's own slots.
 constexpr size_t kMaxSlots = 16;
 
@@ -166,7 +166,12 @@ private:
             return;
         }
         checkKeys(v, pointer, kLayerBlendKeys);
-        if (requireKey(v, pointer, "splat", "an array of splat map files, RGBA = the weights of four layers each"))
+        const bool known = weightSource(v, layers);  // a misspelled source is reported once, not as a missing `splat` too
+        if (layers.weights == LayerWeights::Vertex) {
+            if (v.contains("splat"))
+                report(Code::MisplacedKey, pointer + "/splat", "`splat` applies to `weights` \"splat\" or \"both\"", {}, true);
+        } else if ((known || v.contains("splat")) &&
+                   requireKey(v, pointer, "splat", "an array of splat map files, RGBA = the weights of four layers each"))
             splats(v["splat"], pointer + "/splat", m, layers);
         if (v.contains("mode")) {
             if (int i = choice(v["mode"], pointer + "/mode", kLayerBlends); i >= 0) layers.blend = LayerBlend(i);
@@ -179,6 +184,22 @@ private:
             heightRole(v["height"], pointer + "/height", layers);
         else if (layers.blend != LayerBlend::Height && v.contains("height"))
             report(Code::MisplacedKey, pointer + "/height", "`height` applies to `mode` \"height\"", {}, true);
+    }
+
+    // `weights`: the vertex colour's four channels weigh layers 0-3, so it serves at most four layers. False when it is
+    // not one of the sources (reported).
+    bool weightSource(const json& v, Layers& layers) {
+        const std::string p = "/layer_blend/weights";
+        if (!v.contains("weights")) return true;
+        const int i = choice(v["weights"], p, kLayerWeights);
+        if (i < 0) return false;
+        layers.weights = LayerWeights(i);
+        if (layers.weights != LayerWeights::Splat && layers.layers.size() > Layers::kMaxVertexLayers)
+            report(Code::LayerWeights, p,
+                   std::to_string(layers.layers.size()) + " layers; the vertex colour (RGBA) weighs at most " +
+                       std::to_string(Layers::kMaxVertexLayers) + " (channel i weighs layer i)",
+                   "weigh them by splat maps alone (`weights` \"splat\"), or use at most four layers");
+        return true;
     }
 
     // The index of the scalar role `name` holding heights; nothing after reporting when there is none (a non-string

@@ -2,6 +2,8 @@
 #include "plan/layers.h"
 
 #include <algorithm>
+#include <regex>
+#include <set>
 
 #include "common/text.h"
 #include "hexc/image.h"
@@ -49,6 +51,30 @@ std::vector<double> coverage(const Material& material, const Layers& layers) {
     return out;
 }
 
+// The vertex colour's stage input: the lowest location from 4 up that none of the template's own inputs takes
+// (hexc's built-in templates and the harness's full-screen draw use 0-3: uv, normal, tangent, position).
+int vertexColorLocation(const std::string& templateSource) {
+    static const std::regex input(R"(layout\s*\(\s*location\s*=\s*(\d{1,4})\s*\)\s*((flat|smooth|noperspective|centroid)\s+)*in\b)");
+    std::set<int> used;
+    for (auto it = std::sregex_iterator(templateSource.begin(), templateSource.end(), input); it != std::sregex_iterator(); ++it)
+        used.insert(std::stoi((*it)[1].str()));
+    int location = 4;
+    while (used.count(location)) ++location;
+    return location;
+}
+
+// Where the weights come from (without splat maps every layer covers everything: coverage() gives 1); the functions output takes uv alone, so it refuses vertex weights.
+void planWeights(const Material& material, LayersPlan& lp, ShaderPlan& plan) {
+    lp.weights = material.layers->weights;
+    if (lp.weights == LayerWeights::Splat) return;
+    lp.vertexColorLocation = vertexColorLocation(plan.templateSource);
+    if (plan.functions)
+        plan.diagnostics.push_back(Diagnostic::make(Code::TargetUnsupported, {material.sourceFile.string()}, "/layer_blend/weights",
+                                                    "the functions output (--functions, --engine) takes texture coordinates alone; "
+                                                    "this material's layers are weighed by the vertex colour",
+                                                    "compile it as a shader, or weigh the layers by splat maps (`weights` \"splat\")"));
+}
+
 }  // namespace
 
 bool layerSlotRead(const Material& material, size_t index, const std::string& templateSource, bool readsFirst) {
@@ -74,6 +100,7 @@ void planLayers(const Material& material, ShaderPlan& plan) {
     lp.width = layers.width;
     lp.skipBelow = layers.skipBelow;
     lp.coverage = coverage(material, layers);
+    planWeights(material, lp, plan);
     for (size_t s : layers.splats) {
         lp.splats.push_back(planIndex(material, s, plan));
         plan.slots[lp.splats.back()].explicitGradients = true;  // read by the roles' shared fill, behind a non-uniform test

@@ -118,8 +118,11 @@ struct LayersPlan {
     size_t count = 0;                   // layers
     double width = 0.2, skipBelow = 0;  // fixed in the code
     bool skip = true;                   // a layer of weight 0 at a pixel is not fetched (CompileOptions::skipLayers)
+    LayerWeights weights = LayerWeights::Splat;
+    int vertexColorLocation = -1;  // weights from the vertex colour: the location of its stage input, hexcVertexColor
     // Texture fetches per pixel of the whole material: when every layer is fetched, and averaged over the splat maps'
-    // texels (a layer counts where its weight is at least skipBelow); per layer that fraction of texels.
+    // texels (a layer counts where its weight is at least skipBelow); per layer that fraction of texels. With vertex
+    // weights alone the plan cannot know the mesh: every layer counts (the manifest's expected is null).
     double worstFetches = 0, expectedFetches = 0;
     std::vector<double> coverage;
 };
