@@ -93,8 +93,8 @@ public:
             {"flipy", literal(sp.flipY)},
             {"channel", literal(sp.channel)},
             {"texture", sp.texture},
-            {"tex", plan_.textureVariable(index(sp))},
-            {"heighttex", plan_.textureVariable(sp.heightMap ? *sp.heightMap : index(sp))},
+            {"tex", textureOf(sp)},
+            {"heighttex", textureOf(sp.heightMap ? plan_.slots[*sp.heightMap] : sp)},
             {"tiles", expand(l.section, {})},
             {"settings", settings(l, sp, fixed)},
             {"luma", "vec3(" + literal(sp.luma[0]) + ", " + literal(sp.luma[1]) + ", " + literal(sp.luma[2]) + ")"},
@@ -126,7 +126,8 @@ public:
     }
 
 private:
-    size_t index(const SlotPlan& sp) const { return size_t(&sp - plan_.slots.data()); }
+    // The slot's texture variable: its own, or its layered role's array.
+    static std::string textureOf(const SlotPlan& sp) { return sp.array.empty() ? "hexcTex_" + sp.name : sp.array; }
 
     // A field of HexcLattice or HexcBlend and its value: a literal hexc fixes, or a parameter's read.
     struct Field {
