@@ -8,10 +8,11 @@
 // which build the HexcLattice `lattice` and HexcBlend `blend` (templates/library/hextiling.glsl) the library's functions
 // take, in general code, with every setting of the slot; otherwise empty: every setting, a parameter's as its read, is
 // folded into the functions, which take no struct, and the calls drop it (codegen/assembly.h); ${fields}:
-// the `set` lines filling one; ${heightmap}: the
-// slot whose texture holds its heights (itself when it blends by none); ${channel}: a scalar slot's channel
+// the `set` lines filling one; ${heighttex}: the
+// texture variable of the slot holding its heights (its own when it blends by none); ${channel}: a scalar slot's channel
 // (0 = r ... 3 = a); ${flipy}, ${explicit}, ${srgb} (MaterialX mode's shader decodes sRGB): literal switches; ${type}: the slot's result type; ${kind},
-// ${projection}; ${uv}: the uv in hexc's convention (origin top-left, v down), from the engine's (CompileOptions::uvOrigin); ${calls}: the `engine.call.*` lines; ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
+// ${projection}; ${tex}: the slot's texture variable (hexcTex_<slot>, or a layered role's
+// array hexcArr_<role>, which the slot's library functions read at its layer); ${uv}: the uv in hexc's convention (origin top-left, v down), from the engine's (CompileOptions::uvOrigin); ${calls}: the `engine.call.*` lines; ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
 // Each slot gets `hexc_${name}(...)` and an overload with `out vec3 weights` (the weights output).
 
 //@ params
@@ -37,6 +38,11 @@ layout(set = ${set}, binding = ${binding}) uniform sampler hexcSampler;
 
 //@ texture
 layout(set = ${set}, binding = ${binding}) uniform texture2D hexcTex_${name};
+#define HEXC_HAS_${name} 1
+
+//@ texture.array
+// A layered role's textures across layers, one per layer (docs/material-format.md#texture-arrays).
+layout(set = ${set}, binding = ${binding}) uniform texture2DArray ${variable};
 #define HEXC_HAS_${name} 1
 
 //@ has
@@ -72,26 +78,26 @@ hexcTilesNoise(st, dx, dy, lattice)
 //@ color.hex
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, hexcLuma, hexcTex_${heightmap}, weights);
+    return hexcColor(${tex}, hexcSampler, ${tiles}, blend, hexcLuma, ${heighttex}, weights);
 }
 
 //@ color.hex1
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, gl_FragCoord.xy, weights);
+    return hexcColor1(${tex}, hexcSampler, ${tiles}, blend, gl_FragCoord.xy, weights);
 }
 
 //@ color.plain
 // ${srgb}: MaterialX mode's sRGB texture, bound as stored and decoded after filtering (as MaterialX's <image>).
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcMxDecoded(${plain}(hexcTex_${name}, hexcSampler, st, dx, dy, weights), ${srgb});
+    return hexcMxDecoded(${plain}(${tex}, hexcSampler, st, dx, dy, weights), ${srgb});
 }
 
 //@ color.histogram
 // The histogram-preserving blend: hexcTex_ holds the Gaussian texture hexc derived, hexcLut_ the inverse transform.
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcHistogram(hexcTex_${name}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, false, weights);
+    return hexcHistogram(${tex}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, false, weights);
 }
 
 //@ color.packed
@@ -114,42 +120,42 @@ ${settings}
 // The Gaussian texture holds the slot's channel in r.
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcHistogram(hexcTex_${name}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, true, weights).r;
+    return hexcHistogram(${tex}, hexcLut_${name}, hexcSampler, ${tiles}, blend, dx, dy, true, weights).r;
 }
 
 //@ scalar.hex
 // Scalar maps weigh tiles by their own channel.
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, hexcChannel(${channel}), hexcTex_${heightmap}, weights)[${channel}];
+    return hexcColor(${tex}, hexcSampler, ${tiles}, blend, hexcChannel(${channel}), ${heighttex}, weights)[${channel}];
 }
 
 //@ scalar.hex1
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcColor1(hexcTex_${name}, hexcSampler, ${tiles}, blend, gl_FragCoord.xy, weights)[${channel}];
+    return hexcColor1(${tex}, hexcSampler, ${tiles}, blend, gl_FragCoord.xy, weights)[${channel}];
 }
 
 //@ scalar.plain
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcMxDecoded(${plain}(hexcTex_${name}, hexcSampler, st, dx, dy, weights), ${srgb})[${channel}];
+    return hexcMxDecoded(${plain}(${tex}, hexcSampler, st, dx, dy, weights), ${srgb})[${channel}];
 }
 
 //@ normal.hex
 vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcDeriv(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, hexcTex_${heightmap}, weights);
+    return hexcDeriv(${tex}, hexcSampler, ${tiles}, blend, ${flipy}, ${heighttex}, weights);
 }
 
 //@ normal.hex1
 vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcDeriv1(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, gl_FragCoord.xy, weights);
+    return hexcDeriv1(${tex}, hexcSampler, ${tiles}, blend, ${flipy}, gl_FragCoord.xy, weights);
 }
 
 //@ normal.plain
 vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
-    return hexcNormalToDeriv(2.0 * ${plain}(hexcTex_${name}, hexcSampler, st, dx, dy, weights).xyz - 1.0, ${flipy});
+    return hexcNormalToDeriv(2.0 * ${plain}(${tex}, hexcSampler, st, dx, dy, weights).xyz - 1.0, ${flipy});
 }
 
 //@ uv
@@ -188,20 +194,20 @@ hexcTilesMaterialX(st, dx, dy, lattice)
 // MaterialX mode (templates/library/materialx.glsl): ${luma} its lumacoeffs, ${srgb} whether the texture is sRGB.
 vec4 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcMxColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${luma}, ${srgb}, weights);
+    return hexcMxColor(${tex}, hexcSampler, ${tiles}, blend, ${luma}, ${srgb}, weights);
 }
 
 //@ scalar.materialx
 // MaterialX's extract of a hextiledimage: the colour blended by its luma, then the channel.
 float hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcMxColor(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${luma}, ${srgb}, weights)[${channel}];
+    return hexcMxColor(${tex}, hexcSampler, ${tiles}, blend, ${luma}, ${srgb}, weights)[${channel}];
 }
 
 //@ normal.materialx
 vec2 hexcAt_${name}(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights) {
 ${settings}
-    return hexcMxDeriv(hexcTex_${name}, hexcSampler, ${tiles}, blend, ${flipy}, weights);
+    return hexcMxDeriv(${tex}, hexcSampler, ${tiles}, blend, ${flipy}, weights);
 }
 
 //@ uv.topleft

@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 
+#include "hexc/compiler.h"
 #include "hexc/material.h"
 #include "reference/layers.h"
 #include "support.h"
@@ -81,6 +83,11 @@ const LayerCase kCases[] = {
     {"four_layers_vertex", "four_vertex.json", "albedo", kWhole, 3, 1},
     {"two_layers_both", "two_both.json", "albedo", kWhole, 3, 1},
     {"four_layers_both_height", "four_both_height.json", "albedo", kSoft, 0, 0},
+    // Each role an array (the default) above; here one texture per slot, and the albedo role falling back as one of
+    // its layers differs in size (37x23 texels) while the normal role stays an array.
+    {"four_layers_separate", "four_separate.json", "albedo", kWhole, 3, 1},
+    {"four_layers_sizes", "four_sizes.json", "albedo", kWhole, 3, 1},
+    {"four_layers_sizes_normal", "four_sizes.json", "normal", kSoft, 0, 0},
 };
 
 // The error of a layer's weight before keeping. A splat weight errs by e_w (above); the vertex colour by e_c: lavapipe
@@ -136,6 +143,47 @@ INSTANTIATE_TEST_SUITE_P(Exec, LayerCases,
                              return std::string(std::get<0>(info.param).name) +
                                     (std::get<1>(info.param) == vk::ExecutedTarget::Spirv ? "_spirv" : "_hlsl");
                          });
+
+// The manifest's `layers.arrays` of the material compiled (docs/cli.md).
+nlohmann::json arraysOf(const Material& m) {
+    const CompileResult r = compile(m);
+    EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    for (const OutputFile& f : r.files)
+        if (f.name.ends_with(".manifest.json")) return nlohmann::json::parse(f.contents)["layers"]["arrays"];
+    return {};
+}
+
+// A role's textures as one array and as separate textures give the same image, bit for bit: a layer of an array is
+// sampled as its own texture (an integer layer, its own mip chain), and the code around the fetches is the same.
+TEST(LayerArraysOnTheGpu, AnArrayGivesTheImageOfSeparateTextures) {
+    std::string why;
+    vk::Runner* runner = test::runner(&why);
+    if (!runner) {
+        if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << why;
+        GTEST_SKIP() << why;
+    }
+    for (const char* role : {"albedo", "normal"}) {
+        ParseResult parsed = parseMaterialFile("tests/execution/layers/four_height.json");
+        ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
+        Material arrays = vk::layerRoleFirst(*parsed.material, *vk::layerRole(*parsed.material, role));
+        Material separate = arrays;
+        separate.layers->arrays = false;
+        ASSERT_EQ(arraysOf(arrays)[0]["array"], true) << role;
+        ASSERT_EQ(arraysOf(separate)[0]["array"], false) << role;
+        const Image a = vk::render(*runner, arrays, vk::RenderOutput::Shaded, "", kSoft, vk::ExecutedTarget::Spirv);
+        const Image b = vk::render(*runner, separate, vk::RenderOutput::Shaded, "", kSoft, vk::ExecutedTarget::Spirv);
+        size_t differ = 0;
+        for (size_t i = 0; i < a.rgba.size(); ++i) differ += a.rgba[i] != b.rgba[i];
+        std::printf("  %s: %zu of %zu values differ between the array and separate textures\n", role, differ, a.rgba.size());
+        EXPECT_EQ(differ, 0u) << role;
+    }
+    // The sizes case's albedo falls back, its normal role does not.
+    ParseResult sizes = parseMaterialFile("tests/execution/layers/four_sizes.json");
+    ASSERT_TRUE(sizes.material) << formatAll(sizes.diagnostics);
+    const nlohmann::json arrays = arraysOf(*sizes.material);
+    EXPECT_EQ(arrays[0]["why_not"].get<std::string>().rfind("sizes differ", 0), 0u) << arrays[0];
+    EXPECT_EQ(arrays[1]["array"], true) << arrays[1];
+}
 
 // The height blend's width at its edges: two layers whose scalar value is 0 and 1 (so the output is layer 1's final
 // weight), with constant heights h0 = 153/255 and h1 = 102/255, and a splat map that ramps layer 1's weight from 0 to 1

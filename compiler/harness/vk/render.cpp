@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -390,6 +391,24 @@ std::vector<Texture> boundTextures(const nlohmann::json& manifest, const Compile
     return textures;
 }
 
+// Per bound texture, the layers of a 2D array texture (the manifest's `array` of its slots, docs/cli.md): at its layer
+// 0 slot's place, the slots' own textures in layer order; empty for a 2D texture.
+std::vector<std::vector<const Texture*>> textureArrays(const nlohmann::json& manifest, const std::vector<Texture>& textures) {
+    const nlohmann::json& slots = manifest["slots"];
+    std::map<std::string, size_t> at;  // an array's name -> its layer 0 slot's place
+    for (size_t i = 0; i < slots.size(); ++i)
+        if (slots[i].contains("array") && slots[i]["array"]["layer"] == 0) at[slots[i]["array"]["texture"]] = i;
+    std::vector<std::vector<const Texture*>> arrays(slots.size());
+    for (size_t i = 0; i < slots.size(); ++i) {
+        if (!slots[i].contains("array")) continue;
+        std::vector<const Texture*>& layers = arrays[at.at(slots[i]["array"]["texture"])];
+        const size_t layer = slots[i]["array"]["layer"];
+        layers.resize(std::max(layers.size(), layer + 1));
+        layers[layer] = &textures[i];
+    }
+    return arrays;
+}
+
 }  // namespace
 
 Image render(Runner& runner, const Material& material, RenderOutput output, const std::string& slotName, const View& view,
@@ -413,6 +432,7 @@ Image render(Runner& runner, const Material& material, RenderOutput output, cons
     bindTemplateInputs(manifest, target, own, request);
     const std::vector<Texture> textures = boundTextures(manifest, compiled, m);
     for (const Texture& t : textures) request.textures.push_back(&t);
+    request.textureArrays = textureArrays(manifest, textures);
     setView(request, view);
     request.timedFrames = timedFrames;
     RenderResult result = runner.render(request);

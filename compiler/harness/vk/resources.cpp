@@ -54,14 +54,14 @@ HostBuffer createHostBuffer(VulkanContext& ctx, VkDeviceSize size, VkBufferUsage
 namespace {
 
 VkImage createImage(VulkanContext& ctx, VkFormat format, uint32_t width, uint32_t height, uint32_t mipLevels, VkImageUsageFlags usage,
-                    Cleanup& cleanup) {
+                    Cleanup& cleanup, uint32_t layers = 1) {
     VkImageCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format;
     info.extent = {width, height, 1};
     info.mipLevels = mipLevels;
-    info.arrayLayers = 1;
+    info.arrayLayers = layers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
@@ -77,14 +77,14 @@ VkImage createImage(VulkanContext& ctx, VkFormat format, uint32_t width, uint32_
     return image;
 }
 
-VkImageView createView(VulkanContext& ctx, VkImage image, VkFormat format, VkImageAspectFlags aspect, uint32_t mipLevels,
-                       Cleanup& cleanup) {
+VkImageView createView(VulkanContext& ctx, VkImage image, VkFormat format, VkImageAspectFlags aspect, uint32_t mipLevels, Cleanup& cleanup,
+                       VkImageViewType type = VK_IMAGE_VIEW_TYPE_2D, uint32_t layers = 1) {
     VkImageViewCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
     info.image = image;
-    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.viewType = type;
     info.format = format;
-    info.subresourceRange = {aspect, 0, mipLevels, 0, 1};
+    info.subresourceRange = {aspect, 0, mipLevels, 0, layers};
     VkImageView view;
     VK_CHECK(vkCreateImageView, ctx.device, &info, nullptr, &view);
     cleanup.defer([dev = ctx.device, view] { vkDestroyImageView(dev, view, nullptr); });
@@ -114,13 +114,15 @@ void imageBarrier(VkCommandBuffer cb, VkImage image, uint32_t baseLevel, uint32_
     b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.image = image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, baseLevel, levelCount, 0, 1};
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, baseLevel, levelCount, 0, VK_REMAINING_ARRAY_LAYERS};
     vkCmdPipelineBarrier(cb, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 
-}  // namespace
-
-VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture& t, Cleanup& cleanup) {
+// The layers (one size and format) as one image, each with a full mip chain, seen through a view of `type`.
+VkImageView upload(VulkanContext& ctx, VkCommandBuffer cb, const std::vector<const Texture*>& layers, VkImageViewType type,
+                   Cleanup& cleanup) {
+    const Texture& t = *layers.front();
+    const uint32_t count = uint32_t(layers.size());
     const VkFormat format = t.isFloat() ? VK_FORMAT_R32G32B32A32_SFLOAT : t.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
     const uint32_t levels = std::bit_width(unsigned(std::max(t.width, t.height)));  // floor(log2(max)) + 1
 
@@ -134,19 +136,26 @@ VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture&
     // mips are point-sampled instead. Such a device could not filter the format linearly when sampling either.
     const VkFilter mipFilter = (features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
 
-    const void* pixels = t.isFloat() ? static_cast<const void*>(t.rgba32f.data()) : t.rgba8.data();
     const size_t bytes = t.isFloat() ? t.rgba32f.size() * sizeof(float) : t.rgba8.size();
-    HostBuffer staging = createHostBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, cleanup);
-    std::memcpy(staging.mapped, pixels, bytes);
+    HostBuffer staging = createHostBuffer(ctx, bytes * count, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, cleanup);
+    for (uint32_t layer = 0; layer < count; ++layer) {
+        const Texture& l = *layers[layer];
+        const void* pixels = l.isFloat() ? static_cast<const void*>(l.rgba32f.data()) : l.rgba8.data();
+        std::memcpy(static_cast<char*>(staging.mapped) + bytes * layer, pixels, bytes);
+    }
 
-    VkImage image = createImage(ctx, format, uint32_t(t.width), uint32_t(t.height), levels,
-                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, cleanup);
+    VkImage image =
+        createImage(ctx, format, uint32_t(t.width), uint32_t(t.height), levels,
+                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, cleanup, count);
     imageBarrier(cb, image, 0, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
                  0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {uint32_t(t.width), uint32_t(t.height), 1};
-    vkCmdCopyBufferToImage(cb, staging.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    std::vector<VkBufferImageCopy> copies(count);
+    for (uint32_t layer = 0; layer < count; ++layer) {
+        copies[layer].bufferOffset = bytes * layer;
+        copies[layer].imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
+        copies[layer].imageExtent = {uint32_t(t.width), uint32_t(t.height), 1};
+    }
+    vkCmdCopyBufferToImage(cb, staging.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, count, copies.data());
 
     int32_t w = t.width, h = t.height;
     for (uint32_t level = 1; level < levels; ++level) {
@@ -155,9 +164,9 @@ VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture&
                      VK_ACCESS_TRANSFER_READ_BIT);
         const int32_t nw = std::max(1, w / 2), nh = std::max(1, h / 2);
         VkImageBlit region{};
-        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
+        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, count};
         region.srcOffsets[1] = {w, h, 1};
-        region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+        region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, count};
         region.dstOffsets[1] = {nw, nh, 1};
         vkCmdBlitImage(cb, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, mipFilter);
         w = nw;
@@ -170,7 +179,17 @@ VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture&
     imageBarrier(cb, image, levels - 1, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                  VK_ACCESS_SHADER_READ_BIT);
-    return createView(ctx, image, format, VK_IMAGE_ASPECT_COLOR_BIT, levels, cleanup);
+    return createView(ctx, image, format, VK_IMAGE_ASPECT_COLOR_BIT, levels, cleanup, type, count);
+}
+
+}  // namespace
+
+VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture& t, Cleanup& cleanup) {
+    return upload(ctx, cb, {&t}, VK_IMAGE_VIEW_TYPE_2D, cleanup);
+}
+
+VkImageView uploadTextureArray(VulkanContext& ctx, VkCommandBuffer cb, const std::vector<const Texture*>& layers, Cleanup& cleanup) {
+    return upload(ctx, cb, layers, VK_IMAGE_VIEW_TYPE_2D_ARRAY, cleanup);
 }
 
 VkRenderPass createRenderPass(VulkanContext& ctx, Cleanup& cleanup) {

@@ -21,6 +21,8 @@ HostBuffer createHostBuffer(VulkanContext& ctx, VkDeviceSize size, VkBufferUsage
 // buffer and the blits that build each further level from the one before. Returns a view of all levels, which
 // is in SHADER_READ_ONLY_OPTIMAL once cb has run.
 VkImageView uploadTexture(VulkanContext& ctx, VkCommandBuffer cb, const Texture& t, Cleanup& cleanup);
+// A 2D array texture of `layers` (one size and format), each layer with its own mip chain, as uploadTexture makes it.
+VkImageView uploadTextureArray(VulkanContext& ctx, VkCommandBuffer cb, const std::vector<const Texture*>& layers, Cleanup& cleanup);
 
 // Colour (cleared, then kept for the read-back copy) and depth (cleared, discarded).
 VkRenderPass createRenderPass(VulkanContext& ctx, Cleanup& cleanup);

@@ -55,6 +55,17 @@ void validate(const VulkanContext& ctx, const RenderRequest& req) {
     if (req.fragmentPushConstants.size() % 4 || kFragmentPushOffset + req.fragmentPushConstants.size() > limits.maxPushConstantsSize)
         fail("fragment push constants must be a multiple of 4 bytes within the device's push constant size");
     std::vector<const Texture*> textures = req.textures;
+    if (req.textureArrays.size() > req.textures.size()) fail("more texture arrays than textures");
+    for (size_t i = 0; i < req.textureArrays.size(); ++i) {
+        const std::vector<const Texture*>& layers = req.textureArrays[i];
+        if (layers.size() > limits.maxImageArrayLayers) fail("a texture array has more layers than the device allows");
+        for (const Texture* t : layers) {
+            if (!t || !layers.front() || t->width != layers.front()->width || t->height != layers.front()->height ||
+                t->isFloat() != layers.front()->isFloat() || t->srgb != layers.front()->srgb)
+                fail("a texture array's layers differ in size or format");
+            textures.push_back(t);
+        }
+    }
     for (const TemplateResource& r : req.templateResources) {
         const bool image = r.kind == TemplateResource::Kind::CombinedImageSampler || r.kind == TemplateResource::Kind::SampledImage;
         if (image) textures.push_back(r.texture);
@@ -332,7 +343,10 @@ RenderResult Runner::render(const RenderRequest& req) {
     beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer, first, &beginInfo);
     std::vector<VkImageView> textureViews;
-    for (const Texture* t : req.textures) textureViews.push_back(uploadTexture(ctx, first, *t, cleanup));
+    for (size_t i = 0; i < req.textures.size(); ++i)
+        textureViews.push_back(i < req.textureArrays.size() && !req.textureArrays[i].empty()
+                                   ? uploadTextureArray(ctx, first, req.textureArrays[i], cleanup)
+                                   : uploadTexture(ctx, first, *req.textures[i], cleanup));
     std::vector<VkImageView> ownViews;
     for (const TemplateResource& r : req.templateResources)
         ownViews.push_back(r.texture ? uploadTexture(ctx, first, *r.texture, cleanup) : VK_NULL_HANDLE);

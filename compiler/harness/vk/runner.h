@@ -6,7 +6,8 @@
 //   paramsBinding          uniform buffer, fragment stage: RenderRequest::uniformData (std140)
 //   samplerBinding         one sampler for every texture: linear min/mag/mip, REPEAT on u/v/w, lod 0..all, no
 //                          anisotropy
-//   firstTextureBinding+i  sampled image (texture2D): RenderRequest::textures[i], with a full mip chain; or, with
+//   firstTextureBinding+i  sampled image (texture2D): RenderRequest::textures[i], with a full mip chain (a
+//                          texture2DArray of RenderRequest::textureArrays[i] when that is given); or, with
 //                          RenderRequest::combinedSamplers, a sampler2D combining it with that sampler
 //                          (how GLSL emitted for OpenGL binds textures once brought back to Vulkan)
 //   other sets      RenderRequest::templateResources, the fragment shader's own; sets no one uses are empty
@@ -48,6 +49,9 @@ struct RenderRequest {
     std::string vertexEntry = "main", fragmentEntry = "main";
     std::vector<uint8_t> uniformData;      // may be empty: a zeroed 16-byte buffer is bound instead
     std::vector<const Texture*> textures;  // not owned; must outlive render()
+    // Per texture i < size: when not empty, a 2D array texture (texture2DArray) of these layers, all of one size and
+    // format, each with its own full mip chain; textures[i] is its layer 0. Not owned.
+    std::vector<std::vector<const Texture*>> textureArrays;
     int width = 0, height = 0;
     std::array<float, 4> uvRect{0, 0, 1, 1};                                           // u0, v0, u1, v1
     int timedFrames = 0;                                                               // > 0: draw this many extra frames, timing each one

@@ -191,6 +191,9 @@ struct Layers {
     double width = 0.2;                // height blend: transition width in height units, in (0, 1]
     // A layer whose splat weight is below this is not fetched; the others are renormalised. 0.5/255: half an 8-bit step.
     double skipBelow = 0.5 / 255;
+    // `arrays` "auto": a role's layer textures that one sampler can read alike are bound as one 2D array texture
+    // (docs/material-format.md#texture-arrays); "off": one texture per slot.
+    bool arrays = true;
     static constexpr size_t kMaxLayers = 8;
     static constexpr size_t kMaxVertexLayers = 4;  // one vec4 of vertex colour
 };

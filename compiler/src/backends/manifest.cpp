@@ -127,6 +127,33 @@ nlohmann::json conventionsEntry(const ShaderPlan& plan) {
             {"output_color_space", "linear: an sRGB render target or the engine encodes it"}};
 }
 
+// Per role the shader reads, its textures across layers: one 2D array texture (layer i is slot i's texture, at the
+// first slot's binding in each target's textures) or, with the reason, one texture per slot.
+nlohmann::json arraysEntry(const ShaderPlan& plan) {
+    nlohmann::json arrays = nlohmann::json::array();
+    for (const LayerArrayPlan& a : plan.layers->arrays) {
+        std::vector<std::string> slots;
+        for (size_t i : a.slots) slots.push_back(plan.slots[i].name);
+        if (!a.refused.empty()) {
+            arrays.push_back({{"role", a.role}, {"slots", slots}, {"array", false}, {"why_not", a.refused}});
+            continue;
+        }
+        const Slot& first = *plan.slots[a.slots.front()].slot;
+        arrays.push_back({{"role", a.role},
+                          {"slots", slots},
+                          {"array", true},
+                          {"size", {first.width, first.height, a.slots.size()}},
+                          {"colorspace", first.samplerDecodes() ? "srgb" : "linear"},
+                          {"binding",
+                           {{"texture", plan.textureName(a.slots.front())},
+                            {"slot", slots.front()},
+                            {"type", "texture2DArray"},
+                            {"sampler", "hexcSampler"},
+                            {"mip_chain", "full"}}}});
+    }
+    return arrays;
+}
+
 }  // namespace
 
 // Where the weights come from; the vertex colour's input. The plan cannot know the mesh: with vertex weights alone the
@@ -158,12 +185,17 @@ nlohmann::json layersEntry(const ShaderPlan& plan) {
                             {"fetches_per_pixel", {{"worst", lp.worstFetches}, {"expected", lp.expectedFetches}}}};
     if (!lp.heights.empty()) entry["heights"] = names(lp.heights), entry["width"] = lp.width;
     addVertexWeights(lp, entry);
+    if (!lp.arrays.empty()) entry["arrays"] = arraysEntry(plan);
     return entry;
 }
 
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets) {
     nlohmann::json slots = nlohmann::json::array(), packed = nlohmann::json::array();
-    for (const SlotPlan& sp : plan.slots) slots.push_back(slotEntry(material.name, sp));
+    for (const SlotPlan& sp : plan.slots) {
+        slots.push_back(slotEntry(material.name, sp));
+        if (!sp.array.empty())
+            slots.back()["array"] = {{"texture", plan.textureName(size_t(&sp - plan.slots.data()))}, {"layer", sp.arrayLayer}};
+    }
     for (const PackPlan& p : plan.packs) {
         packed.push_back(packedEntry(material.name, plan, p));
         for (size_t k = 0; k < p.slots.size(); ++k)

@@ -6,6 +6,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "codegen/array_forms.h"
+
 namespace hexc {
 namespace {
 
@@ -115,6 +117,7 @@ PieceName Assembly::form(size_t piece, const Settings* settings, const std::stri
     for (const auto& [key, value] : *settings)
         if ((key.starts_with("l.") && p.lattice) || (key.starts_with("b.") && p.blend)) own.emplace(key, value);
     std::vector<SourceLine> lines = own.empty() ? p.lines : specialise(p.lines, own);
+    if (auto layer = settings->find(kArrayLayer); layer != settings->end()) lines = inArray(lines, layer->second);
     // The body first: its calls drop the settings their callees no longer take; then a specialised definition drops
     // those it no longer reads, and only then names the types of the parameters it keeps (an unused settings struct is
     // left out).

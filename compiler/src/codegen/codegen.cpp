@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "codegen/array_forms.h"
 #include "codegen/assembly.h"
 #include "codegen/layers.h"
 #include "codegen/pieces.h"
@@ -68,9 +69,9 @@ public:
         // Every texture first: a slot may read another's as its height map.
         for (size_t i = 0; i < plan_.slots.size(); ++i) {
             const SlotPlan& sp = plan_.slots[i];
-            out += expand(plan_.textureBound(i) ? "texture" : "has",
-                          {{"name", sp.name}, {"set", set}, {"binding", std::to_string(sp.binding)}}) +
-                   "\n";
+            const char* section = !plan_.textureBound(i) ? "has" : sp.array.empty() ? "texture" : "texture.array";
+            out +=
+                expand(section, {{"name", sp.name}, {"set", set}, {"binding", std::to_string(sp.binding)}, {"variable", sp.array}}) + "\n";
         }
         for (size_t i = 0; i < plan_.luts.size(); ++i)
             out += expand("lut", {{"name", plan_.slots[plan_.luts[i]].name},
@@ -92,7 +93,8 @@ public:
             {"flipy", literal(sp.flipY)},
             {"channel", literal(sp.channel)},
             {"texture", sp.texture},
-            {"heightmap", sp.heightMapName},
+            {"tex", textureOf(sp)},
+            {"heighttex", textureOf(sp.heightMap ? plan_.slots[*sp.heightMap] : sp)},
             {"tiles", expand(l.section, {})},
             {"settings", settings(l, sp, fixed)},
             {"luma", "vec3(" + literal(sp.luma[0]) + ", " + literal(sp.luma[1]) + ", " + literal(sp.luma[2]) + ")"},
@@ -103,6 +105,7 @@ public:
         addParam(t, "planesharpness", l.planeSharpness);
         addParam(t, "origincell", l.originCell);
         addParam(t, "originoffset", l.originOffset);
+        if (!sp.array.empty()) fixed[kArrayLayer] = literal(double(sp.arrayLayer));  // read by the library's array forms
         std::string sampling = expand(sp.section, t);
         for (size_t empty; (empty = sampling.find("\n\n")) != std::string::npos;) sampling.erase(empty, 1);  // ${settings}, ${fields} empty
         return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, sp.name) + "\n";
@@ -123,6 +126,9 @@ public:
     }
 
 private:
+    // The slot's texture variable: its own, or its layered role's array.
+    static std::string textureOf(const SlotPlan& sp) { return sp.array.empty() ? "hexcTex_" + sp.name : sp.array; }
+
     // A field of HexcLattice or HexcBlend and its value: a literal hexc fixes, or a parameter's read.
     struct Field {
         std::string name, value;

@@ -10,7 +10,8 @@ namespace hexc {
 namespace {
 
 const std::vector<std::string> kLayerKeys = {"name", "hextiling", "slots"};
-const std::vector<std::string> kLayerBlendKeys = {"weights", "splat", "mode", "height", "width", "skip_below"};
+const std::vector<std::string> kLayerBlendKeys = {"weights", "splat", "mode", "height", "width", "skip_below", "arrays"};
+const std::vector<std::string> kLayerArrays = {"auto", "off"};
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages, as for the material's own slots.
 constexpr size_t kMaxSlots = 16;
 
@@ -180,6 +181,10 @@ private:
         // A quarter: beyond, a layer painted at a quarter's weight would vanish.
         if (v.contains("skip_below"))
             layers.skipBelow = number(v["skip_below"], pointer + "/skip_below", {0, 0.25, false, false, "in [0, 0.25]"}, layers.skipBelow);
+        if (v.contains("arrays")) {
+            if (int i = choice(v["arrays"], pointer + "/arrays", kLayerArrays, {{"on", "auto"}, {"true", "auto"}}); i >= 0)
+                layers.arrays = i == 0;
+        }
         if (layers.blend == LayerBlend::Height && requireKey(v, pointer, "height", "the scalar role holding each layer's height"))
             heightRole(v["height"], pointer + "/height", layers);
         else if (layers.blend != LayerBlend::Height && v.contains("height"))

@@ -9,6 +9,7 @@
 #include "common/by_enum.h"
 #include "common/templates.h"
 #include "common/text.h"
+#include "plan/layer_arrays.h"
 #include "plan/layers.h"
 #include "plan/macros.h"
 #include "plan/pack.h"
@@ -357,6 +358,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     }
     if (plan.functions) refuseTriplanar(material, plan);
     if (material.pack) planPacks(plan);
+    planLayerArrays(material, plan);
     planParams(options.bake, plan);
     return plan;
 }

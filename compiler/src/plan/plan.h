@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hexc/compiler.h"
@@ -90,6 +91,10 @@ struct SlotPlan {
     std::optional<size_t> pack;       // index into ShaderPlan::packs: the slot reads that packed texture
     int packedChannel = 0;            // a packed scalar slot's channel in it (0 = r ... 3 = a); a colour slot reads rgb
     double aspect = 1;                // its texture's width / height, which tiles turn in (not in paper mode): a literal
+    // A layered role's slot read through the role's 2D array texture (LayersPlan::arrays): the array's variable
+    // (hexcArr_<role>) and this slot's layer in it, a constant; empty when it reads its own texture.
+    std::string array;
+    int arrayLayer = 0;
     ParamRef falloff, falloffContrast, exponent, heightWidth;
 };
 
@@ -111,6 +116,12 @@ struct LayerRolePlan {
     std::string type;           // the GLSL type hexc_<name> returns
     std::vector<size_t> slots;  // per layer: index into ShaderPlan::slots
 };
+// A role's textures across layers as one 2D array texture (docs/material-format.md#texture-arrays), or why not.
+struct LayerArrayPlan {
+    std::string role;
+    std::vector<size_t> slots;  // per layer (its layer index): index into ShaderPlan::slots
+    std::string refused;        // empty: bound as one array at its first slot's binding; else why each slot has its own
+};
 struct LayersPlan {
     std::vector<LayerRolePlan> roles;   // those the template reads, in the layers' role order
     std::vector<size_t> splats;         // indexes into ShaderPlan::slots; layer i weighs channel i % 4 of splat i / 4
@@ -125,6 +136,7 @@ struct LayersPlan {
     // weights alone the plan cannot know the mesh: every layer counts (the manifest's expected is null).
     double worstFetches = 0, expectedFetches = 0;
     std::vector<double> coverage;
+    std::vector<LayerArrayPlan> arrays;  // per role the shader reads (the height role's too), in role order
 };
 
 struct ShaderPlan {
@@ -155,16 +167,22 @@ struct ShaderPlan {
 
     // hexc's textures, bound at firstTexture + i: each slot's, then the look-up tables.
     size_t textureCount() const { return slots.size() + luts.size(); }
-    // The manifest's name of texture i: the slot's, "<slot>.packed" for the first slot of a pack, or "<slot>.lut" (a
-    // `.` no slot name has).
+    // The manifest's name of texture i: the slot's, "<slot>.packed" for the first slot of a pack, "<role>.array" for
+    // an array's slots, or "<slot>.lut" (a `.` no slot name has).
     std::string textureName(size_t i) const {
         if (i >= slots.size()) return slots[luts[i - slots.size()]].slot->name + ".lut";
+        if (!slots[i].array.empty()) return slots[i].array.substr(std::string_view("hexcArr_").size()) + ".array";
         return slots[i].slot->name + (slots[i].pack ? ".packed" : "");
     }
-    // Whether texture i is bound: all are but the packed slots' after the first of their pack.
-    bool textureBound(size_t i) const { return i >= slots.size() || !slots[i].pack || packs[*slots[i].pack].slots.front() == i; }
-    // Its variable in the generated GLSL: hexcTex_<slot> or hexcLut_<slot>.
+    // Whether texture i is bound: all are but the packed slots' after the first of their pack and an array's slots
+    // after its first layer's.
+    bool textureBound(size_t i) const {
+        if (i < slots.size() && !slots[i].array.empty()) return slots[i].arrayLayer == 0;
+        return i >= slots.size() || !slots[i].pack || packs[*slots[i].pack].slots.front() == i;
+    }
+    // Its variable in the generated GLSL: hexcTex_<slot>, hexcArr_<role> or hexcLut_<slot>.
     std::string textureVariable(size_t i) const {
+        if (i < slots.size() && !slots[i].array.empty()) return slots[i].array;
         return i < slots.size() ? "hexcTex_" + slots[i].slot->name : "hexcLut_" + slots[luts[i - slots.size()]].slot->name;
     }
 };

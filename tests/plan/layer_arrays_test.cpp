@@ -1,0 +1,138 @@
+// Texture arrays of layered materials (docs/material-format.md#texture-arrays): the plan binds a role's textures across
+// layers as one 2D array texture when one sampler reads them alike, else one texture per slot with the reason; the
+// shader reads each layer through the array at a constant layer; the manifest says which.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "hexc/compiler.h"
+#include "plan/plan.h"
+#include "support.h"
+
+using namespace hexc;
+using hexc::test::loadMaterial;
+
+namespace {
+
+Material terrain() { return loadMaterial("materials/terrain/terrain.json"); }
+
+const LayerArrayPlan& arrayOf(const ShaderPlan& plan, const std::string& role) {
+    for (const LayerArrayPlan& a : plan.layers->arrays)
+        if (a.role == role) return a;
+    throw std::logic_error("no array plan for role " + role);
+}
+
+// The slot of role `role` (0 albedo, 1 normal, 2 height) in layer `layer` of the terrain.
+Slot& slotOf(Material& m, size_t layer, size_t role) { return m.slots[m.layers->layers[layer].slots[role]]; }
+
+TEST(LayerArrays, RolesWhoseTexturesMatchAreOneArrayWithALayerPerLayer) {
+    const ShaderPlan plan = planShader(terrain(), {});
+    ASSERT_TRUE(plan.layers);
+    ASSERT_EQ(plan.layers->arrays.size(), 3u);  // lit reads albedo and normal; the height blend reads the heights
+    for (const char* role : {"albedo", "normal", "height"}) {
+        const LayerArrayPlan& a = arrayOf(plan, role);
+        EXPECT_EQ(a.refused, "") << role;
+        ASSERT_EQ(a.slots.size(), 4u);
+        for (size_t layer = 0; layer < 4; ++layer) {
+            const SlotPlan& sp = plan.slots[a.slots[layer]];
+            EXPECT_EQ(sp.array, "hexcArr_" + std::string(role));
+            EXPECT_EQ(sp.arrayLayer, int(layer));
+            EXPECT_EQ(plan.textureBound(a.slots[layer]), layer == 0) << "one binding per array: its first layer's";
+        }
+        EXPECT_EQ(plan.textureName(a.slots[0]), std::string(role) + ".array");
+    }
+}
+
+TEST(LayerArrays, ASizeFormatChannelsOrColourSpaceThatDiffersKeepsTheRolesTexturesSeparate) {
+    struct Change {
+        const char* what;
+        std::function<void(Slot&)> apply;
+        const char* reason;
+    };
+    const Change changes[] = {
+        {"size", [](Slot& s) { s.width = 128; }, "sizes differ: `grass_albedo` and `pebbles_albedo` are 256x256 and 128x256 texels"},
+        {"format", [](Slot& s) { s.eightBit = false; }, "formats differ: `grass_albedo` and `pebbles_albedo` are 8-bit and float"},
+        {"channels", [](Slot& s) { s.channelNames = "rgba"; }, "channels differ: `grass_albedo` and `pebbles_albedo` have rgb and rgba"},
+        {"colour space", [](Slot& s) { s.colorSpace = ColorSpace::Linear; },
+         "colour spaces differ: `grass_albedo` and `pebbles_albedo` are bound as sRGB and linear"},
+    };
+    for (const Change& c : changes) {
+        Material m = terrain();
+        c.apply(slotOf(m, 2, 0));
+        const ShaderPlan plan = planShader(m, {});
+        const LayerArrayPlan& albedo = arrayOf(plan, "albedo");
+        EXPECT_EQ(albedo.refused, c.reason) << c.what;
+        for (size_t i : albedo.slots) {
+            EXPECT_EQ(plan.slots[i].array, "") << c.what;
+            EXPECT_TRUE(plan.textureBound(i)) << c.what;
+        }
+        EXPECT_EQ(arrayOf(plan, "normal").refused, "") << c.what << ": another role's array is not affected";
+    }
+}
+
+TEST(LayerArrays, OffOneLayerGeneralCodeAndTheFunctionsOutputKeepSeparateTextures) {
+    Material off = terrain();
+    off.layers->arrays = false;
+    EXPECT_EQ(arrayOf(planShader(off, {}), "albedo").refused, "layer_blend.arrays is \"off\"");
+    CompileOptions general;
+    general.specialise = false;
+    EXPECT_EQ(arrayOf(planShader(terrain(), general), "albedo").refused,
+              "--no-specialise: the library's general functions read 2D textures");
+    CompileOptions functions;
+    functions.functions = true;
+    EXPECT_EQ(arrayOf(planShader(terrain(), functions), "albedo").refused,
+              "the functions output (engine packages) binds one texture per slot (docs/engines.md)");
+    const Material one = loadMaterial("tests/execution/layers/one.json");
+    const ShaderPlan plan = planShader(one, {});
+    ASSERT_FALSE(plan.layers->arrays.empty());
+    EXPECT_EQ(plan.layers->arrays.front().refused, "one layer: there is nothing to share");
+}
+
+TEST(LayerArrays, TheShaderReadsEachLayerThroughTheArrayAtAConstantLayer) {
+    Material m = terrain();
+    m.templ = TemplateRef::builtin("lit");
+    const CompileResult r = compile(m);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    EXPECT_NE(r.glsl.find("uniform texture2DArray hexcArr_albedo;"), std::string::npos);
+    EXPECT_EQ(r.glsl.find("uniform texture2D hexcTex_sand_albedo;"), std::string::npos);
+    EXPECT_NE(r.glsl.find("#define HEXC_HAS_sand_albedo 1"), std::string::npos);
+    // Layer 2 (pebbles) of the albedo array, a literal the specialiser and spirv-opt fold: not a parameter.
+    EXPECT_NE(r.glsl.find("sampler2DArray(tex, samp), vec3(p.st, 2.0)"), std::string::npos) << r.glsl;
+}
+
+TEST(LayerArrays, TheManifestSaysWhichSlotsAreWhichArrayAndWhyNot) {
+    Material m = terrain();
+    slotOf(m, 1, 1).width = 64;  // the normal role falls back
+    CompileOptions options;
+    options.targets = {Target::Spirv, Target::Hlsl};
+    const CompileResult r = compile(m, options);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    nlohmann::json manifest;
+    for (const OutputFile& f : r.files)
+        if (f.name.ends_with(".manifest.json")) manifest = nlohmann::json::parse(f.contents);
+    const nlohmann::json& arrays = manifest["layers"]["arrays"];
+    ASSERT_EQ(arrays.size(), 3u);
+    EXPECT_EQ(arrays[0]["role"], "albedo");
+    EXPECT_EQ(arrays[0]["array"], true);
+    EXPECT_EQ(arrays[0]["slots"], nlohmann::json({"grass_albedo", "sand_albedo", "pebbles_albedo", "snow_albedo"}));
+    EXPECT_EQ(arrays[0]["size"], nlohmann::json({256, 256, 4}));
+    EXPECT_EQ(arrays[0]["colorspace"], "srgb");
+    EXPECT_EQ(arrays[0]["binding"]["texture"], "albedo.array");
+    EXPECT_EQ(arrays[0]["binding"]["type"], "texture2DArray");
+    EXPECT_EQ(arrays[1]["array"], false);
+    EXPECT_EQ(arrays[1]["why_not"], "sizes differ: `grass_normal` and `sand_normal` are 256x256 and 64x256 texels");
+    for (const nlohmann::json& s : manifest["slots"]) {
+        if (s["name"] == "pebbles_albedo") EXPECT_EQ(s["array"], nlohmann::json({{"texture", "albedo.array"}, {"layer", 2}}));
+        if (s["name"] == "sand_normal") EXPECT_FALSE(s.contains("array"));
+    }
+    for (const char* target : {"spirv", "hlsl"}) {
+        const nlohmann::json& textures = manifest["targets"][target]["textures"];
+        EXPECT_TRUE(textures.contains("albedo.array")) << target;
+        EXPECT_FALSE(textures.contains("sand_albedo")) << target << ": an array's later layers have no binding";
+        EXPECT_TRUE(textures.contains("sand_normal")) << target;
+    }
+}
+
+}  // namespace
