@@ -40,5 +40,5 @@ for target in "${targets[@]}"; do
     echo "fuzz_$target failed: the input is in $artifacts/" >&2
     exit 1
   fi
-  grep -E '^stat::(number_of_executed_units|peak_rss_mb)' "$log"
+  grep -E '^stat::(number_of_executed_units|peak_rss_mb)' "$log" | sed "s/^/fuzz_$target /"  # named: targets may run side by side
 done
