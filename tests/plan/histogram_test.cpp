@@ -474,7 +474,9 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
                 EXPECT_LE(kept, 1.55) << c.name << " at " << texelsPerPixel;
                 EXPECT_GE(kept / keptFalloff, 0.35) << c.name << " at " << texelsPerPixel;
                 EXPECT_LE(kept / keptFalloff, 1.70) << c.name << " at " << texelsPerPixel;
-                if (std::string(c.name).starts_with("slate")) EXPECT_GE(kept / keptFalloff, 1.0) << c.name << " at " << texelsPerPixel;
+                if (std::string(c.name).starts_with("slate")) {
+                    EXPECT_GE(kept / keptFalloff, 1.0) << c.name << " at " << texelsPerPixel;
+                }
             } else if (c.name == std::string("granite")) {
                 EXPECT_LT(kept, keptFalloff);  // close up, specks filtered in Gaussian space fade
             }

@@ -124,8 +124,12 @@ TEST(LayerArrays, TheManifestSaysWhichSlotsAreWhichArrayAndWhyNot) {
     EXPECT_EQ(arrays[1]["array"], false);
     EXPECT_EQ(arrays[1]["why_not"], "sizes differ: `grass_normal` and `sand_normal` are 256x256 and 64x256 texels");
     for (const nlohmann::json& s : manifest["slots"]) {
-        if (s["name"] == "pebbles_albedo") EXPECT_EQ(s["array"], nlohmann::json({{"texture", "albedo.array"}, {"layer", 2}}));
-        if (s["name"] == "sand_normal") EXPECT_FALSE(s.contains("array"));
+        if (s["name"] == "pebbles_albedo") {
+            EXPECT_EQ(s["array"], nlohmann::json({{"texture", "albedo.array"}, {"layer", 2}}));
+        }
+        if (s["name"] == "sand_normal") {
+            EXPECT_FALSE(s.contains("array"));
+        }
     }
     for (const char* target : {"spirv", "hlsl"}) {
         const nlohmann::json& textures = manifest["targets"][target]["textures"];

@@ -122,7 +122,9 @@ TEST(Layers, TheWorstFetchesAreTheShadersFetches) {
             const double fetches = countOps(disassemble(r.spirv)).textureSamples;
             EXPECT_GE(fetches, worst) << path << " " << templ;
             EXPECT_LE(fetches, worst + later * shared) << path << " " << templ;
-            if (later == 0) EXPECT_EQ(fetches, worst) << path << " " << templ;
+            if (later == 0) {
+                EXPECT_EQ(fetches, worst) << path << " " << templ;
+            }
             // One call of the fill, behind the test.
             EXPECT_EQ(r.glsl.find("hexcLayerFill(st"), r.glsl.rfind("hexcLayerFill(st"));
             EXPECT_NE(r.glsl.find("if (!hexcLayersFilled || st != hexcLayersSt) {\n        hexcLayerFill(st"), std::string::npos);

@@ -290,14 +290,18 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
                 {Diagnostic::make(Code::TargetUnsupported, {"--targets"}, "",
                                   "the " + std::string(toString(engine)) +
                                       " package has no WGSL form: --targets wgsl with --engine adds WGSL functions to "
-                                      "Babylon.js's package only (docs/engines.md); leave wgsl out for this engine")}};
+                                      "Babylon.js's package only (docs/engines.md); leave wgsl out for this engine")},
+                {},
+                {}};
     options = packageOptions(engine, options);
     if (material.layers && engine != Engine::Filament && engine != Engine::Godot3)
         return {{},
                 {Diagnostic::make(Code::TargetUnsupported, {"--engine"}, "",
                                   "the " + std::string(toString(engine)) +
                                       " package does not carry a layered material yet: the Filament and Godot 3 packages "
-                                      "do (docs/engines.md#layered-materials)")}};
+                                      "do (docs/engines.md#layered-materials)")},
+                {},
+                {}};
     if (isWebEngine(engine) || isHlslEngine(engine)) return compileForLanguage(material, engine, options);
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;

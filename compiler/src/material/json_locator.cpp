@@ -268,7 +268,7 @@ std::optional<JsonLocator::Found> JsonLocator::find(const std::string& pointer) 
             i += escape;
         }
         const std::optional<uint32_t> c = child(nodes_[found.node], token);
-        if (!c) return Found{found.node, false};
+        if (!c) return Found{found.node, false, found.parent};
         found.parent = found.node, found.node = *c, at = next;
     }
     return found;

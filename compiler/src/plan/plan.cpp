@@ -375,8 +375,8 @@ std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan) {
     }
     for (const SlotPlan& sp : plan.slots) {
         if (sp.heightOnly) continue;
-        functions.push_back({"hexc_" + sp.slot->name, &sp, false});
-        if (kindRow(sp.kind).derivative) functions.push_back({"hexc_" + sp.slot->name + "_normal", &sp, true});
+        functions.push_back({"hexc_" + sp.slot->name, &sp, false, {}});
+        if (kindRow(sp.kind).derivative) functions.push_back({"hexc_" + sp.slot->name + "_normal", &sp, true, {}});
     }
     return functions;
 }
