@@ -8,6 +8,13 @@
 // The built-in templates light with a fixed direction, normalize(1, 1, 2), in the frame they are given: the page moves
 // the light by turning that frame (u_light, a rotation taking the chosen light direction to the templates' own).
 // Triplanar materials project the position and normal themselves: they get them unturned, in world space.
+//
+// A layered material weighed by vertex colours (`layer_blend.weights` "vertex" or "both") reads them at the location
+// its manifest gives (`layers.vertex_color`); the page defines HEXC_VERTEX_COLOR as its name. No mesh here is painted,
+// so the page paints them: t = 0.5 + 0.5 (x, y) in the mesh's own units, colour (1 - t.x, t.x, t.y, 1 - t.y), so
+// layer 0 gives way to layer 1 along +x and layer 3 to layer 2 along +y, across the sphere and the cube (radius 1),
+// across the plane's two units about the origin (the shader clamps beyond) and across the texture-space view's
+// u, v from -1 to 1. Affine in the position, so it interpolates exactly even across the plane's four vertices.
 precision highp float;
 
 layout(location = 0) in vec3 a_position;
@@ -34,6 +41,9 @@ out vec3 HEXC_INPUT_3;
 #ifdef HEXC_INPUT_15
 out vec2 HEXC_INPUT_15;
 #endif
+#ifdef HEXC_VERTEX_COLOR
+out vec4 HEXC_VERTEX_COLOR;
+#endif
 
 void main() {
     gl_Position = u_viewProjection * vec4(a_position, 1.0);
@@ -53,5 +63,9 @@ void main() {
 #endif
 #ifdef HEXC_INPUT_2
     HEXC_INPUT_2 = vec4(u_light * a_tangent.xyz, a_tangent.w);
+#endif
+#ifdef HEXC_VERTEX_COLOR
+    vec2 t = 0.5 + 0.5 * a_position.xy;
+    HEXC_VERTEX_COLOR = vec4(1.0 - t.x, t.x, t.y, 1.0 - t.y);
 #endif
 }

@@ -260,6 +260,29 @@ class Page(unittest.TestCase):
         self.assertEqual(after_edit["status"], "ready", after_edit["shown"])
         self.assertNotEqual(read_view(24, 24), before)
 
+    def test_vertex_colours_weigh_the_layers(self):
+        """A layered material weighed by vertex colours alone, which the page paints (templates/edit/view.vert.glsl):
+        in the texture-space view of u, v from -1 to 1, layer 0 (flat red) gives way to layer 1 (flat blue) along u,
+        linearly: weights 1 - t and t with t = (u + 1) / 2."""
+        for name, rgb in (("red", [255, 0, 0]), ("blue", [0, 0, 255])):
+            write_png(os.path.join(self.folder, "textures", name + ".png"), 4, 4, [rgb * 4] * 4)
+        material = os.path.join(self.folder, "painted.json")
+        with open(material, "w") as f:
+            json.dump({"name": "painted", "template": "unlit", "layer_blend": {"weights": "vertex"},
+                       "layers": [{"name": n, "slots": [{"name": "albedo", "kind": "color", "texture": "textures/%s.png" % n}]}
+                                  for n in ("red", "blue")]}, f)
+        state = load(self.serve(material))
+        self.assertEqual(state["status"], "ready", state["shown"])
+        DRIVER.execute_script("window.hexcEdit.setView({shape: 'flat', output: 'hex', rect: [-1, -1, 1, 1]});")
+        wait_idle(DRIVER, state["compiles"])
+        width = 16
+        # Flat textures filter to their texel exactly (0 and 1 decode exactly from sRGB), so what is left is fp32: the
+        # interpolated colour and the weights' renormalisation, each within a few ulps of 1; 1e-4 is 800 ulps.
+        for x, pixel in enumerate(read_view(width, 4)[2]):
+            t = (x + 0.5) / width
+            self.assertAlmostEqual(pixel[0], 1 - t, delta=1e-4, msg="red at column %d" % x)
+            self.assertAlmostEqual(pixel[2], t, delta=1e-4, msg="blue at column %d" % x)
+
     def test_capture_writes_the_same_frame_every_time(self):
         frames = [os.path.join(self.folder, "frame%d.png" % i) for i in range(2)]
         for frame in frames:

@@ -107,7 +107,9 @@ export class View {
   // recently used is last in the map).
   linkedProgram(p, defines) {
     const after = (source, text) => { const lines = source.split('\n'); return [lines[0], text + lines.slice(1).join('\n')].join('\n'); };
-    const inputs = p.manifest.targets.glsl.inputs.map(i => `#define HEXC_INPUT_${i.location} ${i.name}\n`).join('');
+    const painted = p.manifest.layers?.vertex_color?.input;  // the vertex colour, which the page paints
+    const inputs = p.manifest.targets.glsl.inputs
+      .map(i => `#define ${i.name === painted ? 'HEXC_VERTEX_COLOR' : `HEXC_INPUT_${i.location}`} ${i.name}\n`).join('');
     const vertex = after(this.vertexSource, inputs), fragment = after(p.fragment, defines), key = `${vertex}\0${fragment}`;
     const known = this.linked.get(key);
     this.linked.delete(key);
