@@ -88,9 +88,7 @@ struct TextureUse {
 };
 
 std::vector<TextureUse> textures(const nlohmann::json& manifest) {
-    std::map<std::string, bool> srgb;
-    for (const auto& s : manifest["slots"]) srgb[s["name"]] = s.value("colorspace", "linear") == "srgb" && !s.contains("decode");
-    for (const auto& p : manifest.value("packed_textures", nlohmann::json::array())) srgb[p["name"]] = p["colorspace"] == "srgb";
+    std::map<std::string, bool> srgb = samplerDecodesSrgb(manifest);
     std::vector<TextureUse> out;
     for (const auto& [name, where] : manifest["targets"]["glsl"]["textures"].items())
         out.push_back({where["uniform"], srgb.count(name) && srgb[name]});
@@ -247,6 +245,13 @@ const Slot& functionSlot(const Material& material, const nlohmann::json& functio
         return material.slots[layers.layers.front().slots[size_t(role - layers.roles.begin())]];
     }
     return *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& s) { return s.name == function["slot"]; });
+}
+
+std::map<std::string, bool> samplerDecodesSrgb(const nlohmann::json& manifest) {
+    std::map<std::string, bool> srgb;
+    for (const auto& s : manifest["slots"]) srgb[s["name"]] = s.value("colorspace", "linear") == "srgb" && !s.contains("decode");
+    for (const auto& p : manifest.value("packed_textures", nlohmann::json::array())) srgb[p["name"]] = p["colorspace"] == "srgb";
+    return srgb;
 }
 
 std::string functionRole(const Material& material, const nlohmann::json& function) {

@@ -56,11 +56,11 @@ Diagnostic unloadable(const Material& material, const WebEngine& web, const std:
 }
 
 // Each texture the functions read, as the module loads it: its file beside the module, its sampler uniform, its
-// colour space as the sampler decodes it (a packed texture's from the manifest: sRGB RGB with linear alpha when it
-// holds a colour slot; linear for a slot the shader decodes itself, docs/bind-a-manifest.md).
+// colour space as the sampler decodes it, as the manifest says (samplerDecodesSrgb).
 nlohmann::json textures(const Material& material, const WebEngine& web, const nlohmann::json& manifest, Diagnostics& diagnostics) {
     std::map<std::string, nlohmann::json> packed;
     for (const auto& p : manifest.value("packed_textures", nlohmann::json::array())) packed[p["name"]] = p;
+    const std::map<std::string, bool> srgb = samplerDecodesSrgb(manifest);
     nlohmann::json out = nlohmann::json::array();
     for (const auto& [name, where] : manifest["targets"]["glsl"]["textures"].items()) {
         if (name.ends_with(".lut")) {
@@ -74,10 +74,9 @@ nlohmann::json textures(const Material& material, const WebEngine& web, const nl
         if (slot && !browserImage(slot->texturePath))
             diagnostics.push_back(
                 unloadable(material, web, "slot `" + slot->name + "` reads `" + slot->texturePath.filename().string() + "`"));
-        const bool srgb = isPacked ? packed[name]["colorspace"] == "srgb" : slot->samplerDecodes();
         out.push_back({{"file", isPacked ? packed[name]["file"].get<std::string>() : textureCopyName(material, *slot)},
                        {"uniform", where["uniform"]},
-                       {"colorspace", srgb ? "srgb" : "linear"}});
+                       {"colorspace", srgb.count(name) && srgb.at(name) ? "srgb" : "linear"}});
     }
     return out;
 }
