@@ -111,8 +111,8 @@ public:
         return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, sp.name) + "\n";
     }
 
-    // The function sharing the tiles of the layers' lattice `index` (LayersPlan::lattices), with the settings of its
-    // first slot (which name its specialised library functions).
+    // The function computing the tiles of the layers' lattice `index` (LayersPlan::lattices) and the variable sharing
+    // them, with the settings of the lattice's first slot (which names its specialised library functions).
     std::string layerLattice(size_t index, Assembly& assembly) const {
         const SlotPlan& sp = plan_.slots[plan_.layers->lattices[index].slot];
         const LatticePlan& l = plan_.lattices[sp.lattice];
