@@ -10,6 +10,11 @@
 // and in height mode each kept layer's height) into private variables, and every later role read at that coordinate
 // takes them from there (a template that reads roles at several coordinates, e.g. a parallax search, gets each
 // coordinate's weights). Each role function holds the fill behind that test; only the first read at a uv runs it.
+// The tiles of each distinct lattice (a tiling and lattice settings) are shared the same way, by every layer and role
+// reading it: the fill computes them once per pixel (${lattices}: a `weights.lattice` line per lattice) where a layer
+// reading the lattice is kept (${kept}), before the heights read them, and the slots read them (${tiles}: `lattice.call`).
+// In `lattice`, the function computing them, ${tiles} is the lattice's `lattice.*` section of slots.glsl and
+// ${settings} its HexcLattice in general code. The functions output shares none: each slot computes its own tiles.
 
 //@ functions
 // Drops the weights below `skip` (their layers are not fetched) and renormalises the others to sum 1; where every
@@ -50,6 +55,7 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
 ${splats}
 ${keep}
     hexcLayerKeep(w, ${skip});
+${lattices}
 ${heights}
 }
 
@@ -73,6 +79,26 @@ void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
 void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
     hexcLayerFill(st, dx, dy, w);
 }
+
+//@ lattice
+// Lattice ${index}'s tiles at st.
+HexcTiles hexcLayerTiles${index}(vec2 st, vec2 dx, vec2 dy, ivec2 cell) {
+${settings}
+    return ${tiles};
+}
+
+//@ lattice.shared
+// Lattice ${index}'s tiles at the coordinate of the pixel's weights, filled with them (hexcLayerFill).
+HexcTiles hexcLatticeTiles${index};
+
+//@ lattice.call
+hexcLatticeTiles${index}
+
+//@ lattice.call.functions
+hexcLayerTiles${index}(st, dx, dy, cell)
+
+//@ weights.lattice
+    if (${kept}) hexcLatticeTiles${index} = hexcLayerTiles${index}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0));
 
 //@ weights.splat
     vec4 splat${index} = hexcAt_splat${index}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include "hexc/compiler.h"
 #include "hexc/spirv.h"
@@ -129,6 +130,34 @@ TEST(Layers, TheWorstFetchesAreTheShadersFetches) {
             EXPECT_EQ(r.glsl.find("hexcLayerFill(st"), r.glsl.rfind("hexcLayerFill(st"));
             EXPECT_NE(r.glsl.find("if (!hexcLayersFilled || st != hexcLayersSt) {\n        hexcLayerFill(st"), std::string::npos);
         }
+    }
+}
+
+// One lattice per distinct tiling and lattice settings, shared by the layers and roles: terrain's grass and pebbles
+// (tiling 8, layers 0 and 2) read one, sand (6) and snow (4) their own. Each lattice's tiles are computed at one place,
+// in the fill of the pixel's weights (which runs once per pixel: TheWorstFetchesAreTheShadersFetches), where one of
+// its layers is kept, and every slot of the lattice reads them; not once per layer and role read (12 for terrain).
+TEST(Layers, EachDistinctLatticesTilesAreComputedOncePerPixel) {
+    const std::regex computed(R"(hexcTilesStable_(\w+)\(st, dx, dy, cell\))");
+    const char* const kept[] = {"w[0] > 0.0 || w[2] > 0.0", "w[1] > 0.0", "w[3] > 0.0"};
+    for (const char* templ : {"lit", "value"}) {
+        const CompileResult r = compiled(terrain(), templ);
+        std::vector<std::string> lattices;
+        for (auto it = std::sregex_iterator(r.glsl.begin(), r.glsl.end(), computed); it != std::sregex_iterator(); ++it)
+            lattices.push_back((*it)[1].str());
+        EXPECT_EQ(lattices, (std::vector<std::string>{"grass_albedo", "sand_albedo", "snow_albedo"})) << templ;
+        for (size_t k = 0; k < 3; ++k) {
+            const std::string i = std::to_string(k), call = "hexcLayerTiles" + i + "(st * ";
+            const size_t at = r.glsl.find(call);
+            EXPECT_NE(r.glsl.find("if (" + std::string(kept[k]) + ") hexcLatticeTiles" + i + " = " + call), std::string::npos) << templ;
+            EXPECT_EQ(at, r.glsl.rfind(call)) << templ << " " << k;  // one call
+            EXPECT_GT(at, r.glsl.find("void hexcLayerFill(")) << templ << " " << k;
+        }
+        // The layers' slots read the shared tiles: pebbles grass's, in each role and for the heights.
+        for (const char* role : {"albedo", "height"})
+            EXPECT_NE(r.glsl.find("hexcColor_pebbles_" + std::string(role) + "(hexcArr_" + role + ", hexcSampler, hexcLatticeTiles0, "),
+                      std::string::npos)
+                << templ << " " << role;
     }
 }
 

@@ -95,8 +95,8 @@ public:
             {"texture", sp.texture},
             {"tex", textureOf(sp)},
             {"heighttex", textureOf(sp.heightMap ? plan_.slots[*sp.heightMap] : sp)},
-            {"tiles", expand(l.section, {})},
-            {"settings", settings(l, sp, fixed)},
+            {"tiles", sp.layerLattice ? layerLatticeCall(plan_, *sp.layerLattice) : expand(l.section, {})},
+            {"settings", settings(l, sp, fixed, !sp.layerLattice, true)},
             {"luma", "vec3(" + literal(sp.luma[0]) + ", " + literal(sp.luma[1]) + ", " + literal(sp.luma[2]) + ")"},
             {"srgb", literal(sp.srgb)},
             {"uv", expand(plan_.uvBottomLeft ? "uv.bottomleft" : "uv.topleft", {})},
@@ -109,6 +109,16 @@ public:
         std::string sampling = expand(sp.section, t);
         for (size_t empty; (empty = sampling.find("\n\n")) != std::string::npos;) sampling.erase(empty, 1);  // ${settings}, ${fields} empty
         return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, sp.name) + "\n";
+    }
+
+    // The function computing the tiles of the layers' lattice `index` (LayersPlan::lattices) and the variable sharing
+    // them, with the settings of the lattice's first slot (which names its specialised library functions).
+    std::string layerLattice(size_t index, Assembly& assembly) const {
+        const SlotPlan& sp = plan_.slots[plan_.layers->lattices[index].slot];
+        const LatticePlan& l = plan_.lattices[sp.lattice];
+        Settings fixed;
+        const std::string text = hexc::layerLattice(plan_, index, expand(l.section, {}), settings(l, sp, fixed, true, false));
+        return assembly.use(text, plan_.general ? nullptr : &fixed, sp.name) + "\n\n";
     }
 
     // The functions output's code after the slots' (templates/builtin/functions.glsl): each normal slot's (a layered
@@ -143,10 +153,11 @@ private:
         if (ref) to[token] = read(*ref);
     }
 
-    // The slot's HexcLattice `lattice` and HexcBlend `blend`, built for the library's functions in general code, with
-    // every field the plan gives. Otherwise no struct is built: every field's value (the plan's, a parameter's read, else
-    // the neutral one) goes to `fixed`, as the library names it, to fold into the functions, which then take neither.
-    std::string settings(const LatticePlan& l, const SlotPlan& sp, Settings& fixed) const {
+    // The slot's HexcLattice `lattice` and HexcBlend `blend`, built for the library's functions in general code (those
+    // asked for: a layered slot takes its lattice's tiles ready), with every field the plan gives. Otherwise no struct is
+    // built: every field's value (the plan's, a parameter's read, else the neutral one) goes to `fixed`, as the library
+    // names it, to fold into the functions, which then take neither.
+    std::string settings(const LatticePlan& l, const SlotPlan& sp, Settings& fixed, bool lattice, bool blend) const {
         const std::pair<const char*, Fields> structs[] = {{"lattice", latticeSettings(l, sp.aspect)}, {"blend", blendSettings(sp)}};
         std::string out;
         for (const auto& [name, fields] : structs) {
@@ -157,6 +168,7 @@ private:
                 for (const Field& f : fields) fixed[prefix + f.name] = f.value;
                 continue;
             }
+            if (!(name[0] == 'l' ? lattice : blend)) continue;
             std::string lines;
             for (const Field& f : fields)
                 lines += (lines.empty() ? "" : "\n") + expand("set", {{"struct", name}, {"field", f.name}, {"value", f.value}});
@@ -221,6 +233,7 @@ std::string injectedCode(const ShaderPlan& plan) {
                                            {"kind", std::string(toString(kindRow(role ? role->kind : first.kind).like))},
                                            {"projection", std::string(toString(first.projection))}}) +
                      "\n";
+        for (size_t k = 0; plan.layers && k < plan.layers->lattices.size(); ++k) functions += emit.layerLattice(k, assembly);
         for (const SlotPlan& sp : plan.slots)
             if (!sp.heightOnly) functions += emit.slot(sp, assembly);
         functions += layerFunctions(

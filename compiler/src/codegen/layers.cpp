@@ -7,15 +7,17 @@
 namespace hexc {
 namespace {
 
+// A section of layers.glsl expanded, without its final newline.
+std::string expandLayers(const std::string& section, const Tokens& values) {
+    static const std::map<std::string, std::string> sections = snippetSections("layers.glsl");
+    return expandSection(sections, section, values);
+}
+
 class LayerEmitter {
 public:
     LayerEmitter(const ShaderPlan& plan, const std::function<std::string(size_t)>& read) : plan_(plan), read_(read) {}
 
-    // The section expanded, without its final newline.
-    std::string expand(const std::string& section, const Tokens& values) const {
-        static const std::map<std::string, std::string> sections = snippetSections("layers.glsl");
-        return expandSection(sections, section, values);
-    }
+    std::string expand(const std::string& section, const Tokens& values) const { return expandLayers(section, values); }
 
     // The slot's tiling as the code reads it (the parameter its own coordinates function reads).
     std::string tiling(size_t slot) const {
@@ -23,15 +25,30 @@ public:
         return ref ? read_(*ref) : "vec2(1.0)";
     }
 
-    // A line per layer of `section`, for slot `slots[i]` of layer i, fetched where its weight is positive (or everywhere).
+    // When layer i's slots are fetched: where its weight is positive, or everywhere.
+    std::string fetched(size_t i) const {
+        return expand(plan_.layers->skip ? "layer.kept" : "layer.every", {{"index", std::to_string(i)}});
+    }
+
+    // A line per layer of `section`, for slot `slots[i]` of layer i.
     std::string perLayer(const std::string& section, const std::vector<size_t>& slots) const {
         std::string out;
-        for (size_t i = 0; i < slots.size(); ++i) {
-            const std::string index = std::to_string(i);
-            const std::string fetched = expand(plan_.layers->skip ? "layer.kept" : "layer.every", {{"index", index}});
-            out += (out.empty() ? "" : "\n") +
-                   expand(section,
-                          {{"index", index}, {"slot", plan_.slots[slots[i]].name}, {"tiling", tiling(slots[i])}, {"fetched", fetched}});
+        for (size_t i = 0; i < slots.size(); ++i)
+            out += (out.empty() ? "" : "\n") + expand(section, {{"index", std::to_string(i)},
+                                                                {"slot", plan_.slots[slots[i]].name},
+                                                                {"tiling", tiling(slots[i])},
+                                                                {"fetched", fetched(i)}});
+        return out;
+    }
+
+    // The fill's line per lattice: its tiles where one of its layers is kept (none in the functions output).
+    std::string lattices() const {
+        std::string out;
+        for (size_t k = 0; !plan_.functions && k < plan_.layers->lattices.size(); ++k) {
+            const LayerLatticePlan& l = plan_.layers->lattices[k];
+            std::string kept = fetched(l.layers.front());
+            for (size_t i = 1; plan_.layers->skip && i < l.layers.size(); ++i) kept += " || " + fetched(l.layers[i]);
+            out += (k ? "\n" : "") + expand("weights.lattice", {{"index", std::to_string(k)}, {"kept", kept}, {"tiling", tiling(l.slot)}});
         }
         return out;
     }
@@ -59,9 +76,10 @@ public:
             lp.heights.empty()
                 ? ""
                 : expand("weights.heights", {{"layers", perLayer("weights.height", lp.heights)}, {"width", floatLiteral(lp.width)}});
-        std::string text =
-            expand("weights", {{"splats", splats}, {"keep", keep}, {"skip", floatLiteral(lp.skipBelow)}, {"heights", heights}});
-        for (size_t empty; (empty = text.find("\n\n")) != std::string::npos;) text.erase(empty, 1);  // no heights
+        std::string text = expand(
+            "weights",
+            {{"splats", splats}, {"keep", keep}, {"skip", floatLiteral(lp.skipBelow)}, {"lattices", lattices()}, {"heights", heights}});
+        for (size_t empty; (empty = text.find("\n\n")) != std::string::npos;) text.erase(empty, 1);  // no lattices, no heights
         return text;
     }
 
@@ -75,6 +93,17 @@ private:
 };
 
 }  // namespace
+
+std::string layerLattice(const ShaderPlan& plan, size_t index, const std::string& tiles, const std::string& settings) {
+    const std::string i = std::to_string(index);
+    std::string text = expandLayers("lattice", {{"index", i}, {"tiles", tiles}, {"settings", settings}});
+    for (size_t empty; (empty = text.find("\n\n")) != std::string::npos;) text.erase(empty, 1);  // no settings
+    return text + (plan.functions ? "" : "\n\n" + expandLayers("lattice.shared", {{"index", i}}));
+}
+
+std::string layerLatticeCall(const ShaderPlan& plan, size_t index) {
+    return expandLayers(plan.functions ? "lattice.call.functions" : "lattice.call", {{"index", std::to_string(index)}});
+}
 
 std::string layerFunctions(const ShaderPlan& plan, const std::function<std::string(size_t)>& read, const std::string& uv) {
     if (!plan.layers) return {};

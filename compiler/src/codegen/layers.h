@@ -11,4 +11,12 @@ namespace hexc {
 // `read` gives a parameter's read (ShaderPlan::params index), `uv` the expression for hexc's uv from the argument uv.
 std::string layerFunctions(const ShaderPlan& plan, const std::function<std::string(size_t)>& read, const std::string& uv);
 
+// The function computing the tiles of the layers' lattice `index` (LayersPlan::lattices) by `tiles` (a `lattice.*`
+// section of slots.glsl) after `settings` (its HexcLattice in general code, else empty), and the tiles the fill of the
+// weights keeps for its slots (not in the functions output).
+std::string layerLattice(const ShaderPlan& plan, size_t index, const std::string& tiles, const std::string& settings);
+
+// A layered slot's tiles (its ${tiles}): those the fill kept, or in the functions output its own.
+std::string layerLatticeCall(const ShaderPlan& plan, size_t index);
+
 }  // namespace hexc

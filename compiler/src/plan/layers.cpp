@@ -75,6 +75,29 @@ void planWeights(const Material& material, LayersPlan& lp, ShaderPlan& plan) {
                                                     "compile it as a shader, or weigh the layers by splat maps (`weights` \"splat\")"));
 }
 
+// Each hex-tiled slot the layers read takes the tiles of its lattice (LayersPlan::lattices), shared by every slot of
+// the same LatticePlan and texture aspect: the tiles depend on nothing else. Lattices in the order of their first slot,
+// as codegen names the tiles' functions after it.
+void shareLattices(LayersPlan& lp, ShaderPlan& plan) {
+    std::vector<std::pair<size_t, size_t>> read;  // (slot, layer)
+    for (size_t l = 0; l < lp.count; ++l) {
+        if (!lp.heights.empty()) read.emplace_back(lp.heights[l], l);
+        for (const LayerRolePlan& r : lp.roles) read.emplace_back(r.slots[l], l);
+    }
+    std::sort(read.begin(), read.end());
+    for (const auto& [i, layer] : read) {
+        SlotPlan& sp = plan.slots[i];
+        if (!sp.slot->hex.enabled) continue;
+        auto same = std::find_if(lp.lattices.begin(), lp.lattices.end(), [&](const LayerLatticePlan& k) {
+            return plan.slots[k.slot].lattice == sp.lattice && plan.slots[k.slot].aspect == sp.aspect;
+        });
+        if (same == lp.lattices.end()) same = lp.lattices.insert(same, {i, {}});
+        sp.layerLattice = size_t(same - lp.lattices.begin());
+        if (std::find(same->layers.begin(), same->layers.end(), layer) == same->layers.end()) same->layers.push_back(layer);
+    }
+    for (LayerLatticePlan& k : lp.lattices) std::sort(k.layers.begin(), k.layers.end());
+}
+
 }  // namespace
 
 bool layerSlotRead(const Material& material, size_t index, const std::string& templateSource, bool readsFirst) {
@@ -129,6 +152,7 @@ void planLayers(const Material& material, ShaderPlan& plan) {
     }
     lp.worstFetches += double(lp.splats.size());
     lp.expectedFetches += double(lp.splats.size());
+    shareLattices(lp, plan);
     plan.layers = std::move(lp);
 }
 

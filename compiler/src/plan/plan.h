@@ -95,6 +95,9 @@ struct SlotPlan {
     // (hexcArr_<role>) and this slot's layer in it, a constant; empty when it reads its own texture.
     std::string array;
     int arrayLayer = 0;
+    // A layered slot's tiles: index into LayersPlan::lattices, whose tiles every layer and role reading that lattice
+    // share (computed once per pixel and coordinate); empty when it computes its own (not layered, or not hex-tiled).
+    std::optional<size_t> layerLattice;
     ParamRef falloff, falloffContrast, exponent, heightWidth;
 };
 
@@ -122,6 +125,12 @@ struct LayerArrayPlan {
     std::vector<size_t> slots;  // per layer (its layer index): index into ShaderPlan::slots
     std::string refused;        // empty: bound as one array at its first slot's binding; else why each slot has its own
 };
+// A lattice the layers' hex-tiled slots read: a LatticePlan and a texture aspect, which decide the tiles. The fill of
+// the pixel's weights computes its tiles where one of its layers is kept; its slots read them.
+struct LayerLatticePlan {
+    size_t slot = 0;             // the first slot reading it (index into ShaderPlan::slots), whose settings build the tiles
+    std::vector<size_t> layers;  // the layers with a slot reading it, in order
+};
 struct LayersPlan {
     std::vector<LayerRolePlan> roles;   // those the template reads, in the layers' role order
     std::vector<size_t> splats;         // indexes into ShaderPlan::slots; layer i weighs channel i % 4 of splat i / 4
@@ -136,7 +145,8 @@ struct LayersPlan {
     // weights alone the plan cannot know the mesh: every layer counts (the manifest's expected is null).
     double worstFetches = 0, expectedFetches = 0;
     std::vector<double> coverage;
-    std::vector<LayerArrayPlan> arrays;  // per role the shader reads (the height role's too), in role order
+    std::vector<LayerArrayPlan> arrays;      // per role the shader reads (the height role's too), in role order
+    std::vector<LayerLatticePlan> lattices;  // the distinct lattices the layers' hex-tiled slots read
 };
 
 struct ShaderPlan {

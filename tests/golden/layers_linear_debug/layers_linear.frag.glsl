@@ -45,6 +45,8 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 0) out vec4 o_color;
 layout(location = 2) in vec4 v_tangent;
 bool hexcLayersFilled;
+HexcTiles hexcLatticeTiles0;
+HexcTiles hexcLatticeTiles1;
 vec2 hexcLayersSt;
 float hexcLayersW[8];
 
@@ -66,52 +68,52 @@ vec3 hexcMxDecode(vec3 c)
 #line 77 "hexc/materialx.glsl"
 vec4 hexcMxDecoded(vec4 c, bool srgb)
 {
-    vec4 _1814;
+    vec4 _1826;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         vec3 param = c.xyz;
-        _1814 = vec4(hexcMxDecode(param), c.w);
+        _1826 = vec4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _1814 = c;
+        _1826 = c;
     }
-    return _1814;
+    return _1826;
 }
 
-#line 73 "hexc/generated"
+#line 89 "hexc/generated"
 vec4 hexcAt_splat0(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 73 "hexc/generated"
+#line 89 "hexc/generated"
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     vec3 param_3;
-    vec4 _1927 = hexcPlainColorGrad(param, param_1, param_2, param_3, hexcTex_splat0);
+    vec4 _1932 = hexcPlainColorGrad(param, param_1, param_2, param_3, hexcTex_splat0);
     weights = param_3;
-    vec4 param_4 = _1927;
+    vec4 param_4 = _1932;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 84 "hexc/generated"
+#line 100 "hexc/generated"
 void hexcLayerKeep(inout float w[8], float skip)
 {
-#line 84 "hexc/generated"
+#line 100 "hexc/generated"
     float sum = 0.0;
-    float _1949;
+    float _1954;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _1949 = w[i];
+            _1954 = w[i];
         }
         else
         {
-            _1949 = 0.0;
+            _1954 = 0.0;
         }
-        w[i] = _1949;
+        w[i] = _1954;
         sum += w[i];
     }
     if (sum <= 0.0)
@@ -123,48 +125,6 @@ void hexcLayerKeep(inout float w[8], float skip)
     {
         w[i_1] /= sum;
     }
-}
-
-#line 114 "hexc/generated"
-void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
-{
-#line 114 "hexc/generated"
-    for (int i = 0; i < 8; i++)
-    {
-        w[i] = 0.0;
-    }
-    vec2 param = st * hexcParams.splat0_tiling;
-    vec2 param_1 = dx * hexcParams.splat0_tiling;
-    vec2 param_2 = dy * hexcParams.splat0_tiling;
-    ivec2 param_3 = ivec2(0);
-    vec3 param_4;
-    vec4 _2019 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
-    vec3 t = param_4;
-    vec4 splat0 = _2019;
-    w[0] = splat0.x;
-    w[1] = splat0.y;
-    float param_5[8] = w;
-    float param_6 = 0.0019607841968536376953125;
-    hexcLayerKeep(param_5, param_6);
-    w = param_5;
-}
-
-#line 126 "hexc/generated"
-void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8])
-{
-#line 126 "hexc/generated"
-    if ((!hexcLayersFilled) || any(notEqual(st, hexcLayersSt)))
-    {
-        vec2 param = st;
-        vec2 param_1 = dx;
-        vec2 param_2 = dy;
-        float param_3[8];
-        hexcLayerFill(param, param_1, param_2, param_3);
-        hexcLayersW = param_3;
-        hexcLayersFilled = true;
-        hexcLayersSt = st;
-    }
-    w = hexcLayersW;
 }
 
 #line 55 "hexc/hextiling.glsl"
@@ -222,26 +182,26 @@ vec2 hexcCosSin(float angle)
     float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
     float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
     int q = int(k) & 3;
-    vec2 _486;
+    vec2 _498;
     if ((q & 1) != 0)
     {
-        _486 = vec2(-s, c);
+        _498 = vec2(-s, c);
     }
     else
     {
-        _486 = vec2(c, s);
+        _498 = vec2(c, s);
     }
-    vec2 cs = _486;
-    vec2 _501;
+    vec2 cs = _498;
+    vec2 _513;
     if ((q & 2) != 0)
     {
-        _501 = -cs;
+        _513 = -cs;
     }
     else
     {
-        _501 = cs;
+        _513 = cs;
     }
-    return _501;
+    return _513;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -249,22 +209,22 @@ void hexcStableTile_rock_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out
 {
 #line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _735 = hexcPcg3d(param);
-    vec3 u = vec3(_735 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _747 = hexcPcg3d(param);
+    vec3 u = vec3(_747 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.rock_albedo_rotation;
     invScale = 1.0;
-    vec2 _758;
+    vec2 _770;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _758 = hexcCosSin(param_1);
+        _770 = hexcCosSin(param_1);
     }
     else
     {
-        _758 = vec2(cos(angle), sin(angle));
+        _770 = vec2(cos(angle), sin(angle));
     }
-    rot = _758;
+    rot = _770;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -300,16 +260,16 @@ HexcTap hexcPlaceTile_rock_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dST
     p.invScale = param_4;
     vec2 param_5 = d;
     HexcTap param_6 = p;
-    vec2 _880 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_880 + c) + offset;
+    vec2 _892 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_892 + c) + offset;
     vec2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    vec2 _890 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _890;
+    vec2 _902 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _902;
     vec2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    vec2 _896 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _896;
+    vec2 _908 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _908;
     return p;
 }
 
@@ -335,36 +295,36 @@ ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _527;
+    int _539;
     if ((d < 0) && (a != 0))
     {
-        _527 = 3 - a;
+        _539 = 3 - a;
     }
     else
     {
-        _527 = a;
+        _539 = a;
     }
-    int i1 = _527;
-    int _538;
+    int i1 = _539;
+    int _550;
     if (i1 < 2)
     {
-        _538 = i1 + 1;
+        _550 = i1 + 1;
     }
     else
     {
-        _538 = 0;
+        _550 = 0;
     }
-    int vh = _538;
-    int _548;
+    int vh = _550;
+    int _560;
     if (i1 > 0)
     {
-        _548 = i1 - 1;
+        _560 = i1 - 1;
     }
     else
     {
-        _548 = 2;
+        _560 = 2;
     }
-    int vl = _548;
+    int vl = _560;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -393,31 +353,231 @@ HexcTiles hexcTilesStable_rock_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cel
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _1075 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1087 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1075;
+    t.tap[0] = _1087;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _1091 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1103 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1091;
+    t.tap[1] = _1103;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _1107 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1119 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1107;
+    t.tap[2] = _1119;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
+}
+
+#line 29 "hexc/generated"
+HexcTiles hexcLayerTiles0(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
+{
+#line 29 "hexc/generated"
+    vec2 param = st;
+    vec2 param_1 = dx;
+    vec2 param_2 = dy;
+    ivec2 param_3 = cell;
+    return hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_tiles_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
+    uvec3 param = uvec3(uvec2(id), 0u);
+    uvec3 _790 = hexcPcg3d(param);
+    vec3 u = vec3(_790 >> uvec3(8u)) * 5.9604644775390625e-08;
+    offset = u.xy;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.tiles_albedo_rotation;
+    invScale = 1.0;
+    vec2 _807;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _807 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _807 = vec2(cos(angle), sin(angle));
+    }
+    rot = _807;
+}
+
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_tiles_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
+{
+#line 276 "hexc/hextiling.glsl"
+    ivec2 param = id;
+    bool param_1 = aboutOrigin;
+    vec2 param_2;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _932 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_932 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _942 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _942;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _948 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _948;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_tiles_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = ivec2(uvec2(local) + shift);
+    ivec2 param = local;
+    ivec2 param_1 = local;
+    ivec2 param_2 = id;
+    vec2 param_3 = r - hexcStableCentre(param);
+    vec2 param_4 = hexcStableCentreInPeriod(param_1);
+    vec2 param_5 = dSTdx;
+    vec2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+}
+
+#line 295 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_tiles_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = false;
+    float kx = floor(st.x / 28.0);
+    float ky = floor(st.y);
+    vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
+    vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
+    vec3 param_1;
+    ivec2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    ivec2 local[3] = param_2;
+    uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
+    uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
+    ivec2 param_3 = local[0];
+    uvec2 param_4 = shift;
+    vec2 param_5 = r;
+    vec2 param_6 = dSTdx;
+    vec2 param_7 = dSTdy;
+    ivec2 param_8;
+    HexcTap _1214 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _1214;
+    ivec2 param_9 = local[1];
+    uvec2 param_10 = shift;
+    vec2 param_11 = r;
+    vec2 param_12 = dSTdx;
+    vec2 param_13 = dSTdy;
+    ivec2 param_14;
+    HexcTap _1230 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _1230;
+    ivec2 param_15 = local[2];
+    uvec2 param_16 = shift;
+    vec2 param_17 = r;
+    vec2 param_18 = dSTdx;
+    vec2 param_19 = dSTdy;
+    ivec2 param_20;
+    HexcTap _1246 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _1246;
+    ivec2 param_21 = t.id[0];
+    ivec2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 37 "hexc/generated"
+HexcTiles hexcLayerTiles1(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
+{
+#line 37 "hexc/generated"
+    vec2 param = st;
+    vec2 param_1 = dx;
+    vec2 param_2 = dy;
+    ivec2 param_3 = cell;
+    return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
+}
+
+#line 130 "hexc/generated"
+void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
+{
+#line 130 "hexc/generated"
+    for (int i = 0; i < 8; i++)
+    {
+        w[i] = 0.0;
+    }
+    vec2 param = st * hexcParams.splat0_tiling;
+    vec2 param_1 = dx * hexcParams.splat0_tiling;
+    vec2 param_2 = dy * hexcParams.splat0_tiling;
+    ivec2 param_3 = ivec2(0);
+    vec3 param_4;
+    vec4 _2024 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
+    vec3 t = param_4;
+    vec4 splat0 = _2024;
+    w[0] = splat0.x;
+    w[1] = splat0.y;
+    float param_5[8] = w;
+    float param_6 = 0.0019607841968536376953125;
+    hexcLayerKeep(param_5, param_6);
+    w = param_5;
+    if (w[0] > 0.0)
+    {
+        vec2 param_7 = st * hexcParams.rock_albedo_tiling;
+        vec2 param_8 = dx * hexcParams.rock_albedo_tiling;
+        vec2 param_9 = dy * hexcParams.rock_albedo_tiling;
+        ivec2 param_10 = ivec2(0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10);
+    }
+    if (w[1] > 0.0)
+    {
+        vec2 param_11 = st * hexcParams.tiles_albedo_tiling;
+        vec2 param_12 = dx * hexcParams.tiles_albedo_tiling;
+        vec2 param_13 = dy * hexcParams.tiles_albedo_tiling;
+        ivec2 param_14 = ivec2(0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14);
+    }
+}
+
+#line 144 "hexc/generated"
+void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8])
+{
+#line 144 "hexc/generated"
+    if ((!hexcLayersFilled) || any(notEqual(st, hexcLayersSt)))
+    {
+        vec2 param = st;
+        vec2 param_1 = dx;
+        vec2 param_2 = dy;
+        float param_3[8];
+        hexcLayerFill(param, param_1, param_2, param_3);
+        hexcLayersW = param_3;
+        hexcLayersFilled = true;
+        hexcLayersSt = st;
+    }
+    w = hexcLayersW;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -505,20 +665,20 @@ vec3 hexcBlendWeights_rock_albedo(vec3 w, vec3 M)
 #line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1344 = hexcPowInt(param, param_1);
-    vec3 wg = _1344;
+    vec3 _1356 = hexcPowInt(param, param_1);
+    vec3 wg = _1356;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1360;
+    vec3 _1372;
     if (sum > 0.0)
     {
-        _1360 = W / vec3(sum);
+        _1372 = W / vec3(sum);
     }
     else
     {
-        _1360 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1372 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1360;
+    W = _1372;
     return W;
 }
 
@@ -551,140 +711,16 @@ vec4 hexcColor_rock_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D S
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 31 "hexc/generated"
+#line 47 "hexc/generated"
 vec4 hexcAt_rock_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 31 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
-    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_6;
-    vec4 _1850 = hexcColor_rock_albedo(param_4, param_5, param_6, hexcTex_rock_albedo);
-    weights = param_6;
-    return vec4(_1850.xyz, 1.0);
-}
-
-#line 229 "hexc/hextiling.glsl"
-void hexcStableTile_tiles_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
-{
-#line 229 "hexc/hextiling.glsl"
-    uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _778 = hexcPcg3d(param);
-    vec3 u = vec3(_778 >> uvec3(8u)) * 5.9604644775390625e-08;
-    offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.tiles_albedo_rotation;
-    invScale = 1.0;
-    vec2 _795;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _795 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _795 = vec2(cos(angle), sin(angle));
-    }
-    rot = _795;
-}
-
-#line 276 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_tiles_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
-{
-#line 276 "hexc/hextiling.glsl"
-    ivec2 param = id;
-    bool param_1 = aboutOrigin;
-    vec2 param_2;
-    vec2 param_3;
-    float param_4;
-    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4);
-    vec2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    vec2 param_5 = d;
-    HexcTap param_6 = p;
-    vec2 _920 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_920 + c) + offset;
-    vec2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    vec2 _930 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _930;
-    vec2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    vec2 _936 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _936;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_tiles_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = ivec2(uvec2(local) + shift);
-    ivec2 param = local;
-    ivec2 param_1 = local;
-    ivec2 param_2 = id;
-    vec2 param_3 = r - hexcStableCentre(param);
-    vec2 param_4 = hexcStableCentreInPeriod(param_1);
-    vec2 param_5 = dSTdx;
-    vec2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
-}
-
-#line 295 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_tiles_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = false;
-    float kx = floor(st.x / 28.0);
-    float ky = floor(st.y);
-    vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
-    vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
-    vec3 param_1;
-    ivec2 param_2[3];
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    ivec2 local[3] = param_2;
-    uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
-    uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
-    ivec2 param_3 = local[0];
-    uvec2 param_4 = shift;
-    vec2 param_5 = r;
-    vec2 param_6 = dSTdx;
-    vec2 param_7 = dSTdy;
-    ivec2 param_8;
-    HexcTap _1202 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
-    t.id[0] = param_8;
-    t.tap[0] = _1202;
-    ivec2 param_9 = local[1];
-    uvec2 param_10 = shift;
-    vec2 param_11 = r;
-    vec2 param_12 = dSTdx;
-    vec2 param_13 = dSTdy;
-    ivec2 param_14;
-    HexcTap _1218 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
-    t.id[1] = param_14;
-    t.tap[1] = _1218;
-    ivec2 param_15 = local[2];
-    uvec2 param_16 = shift;
-    vec2 param_17 = r;
-    vec2 param_18 = dSTdx;
-    vec2 param_19 = dSTdy;
-    ivec2 param_20;
-    HexcTap _1234 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
-    t.id[2] = param_20;
-    t.tap[2] = _1234;
-    ivec2 param_21 = t.id[0];
-    ivec2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 47 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_2;
+    vec4 _1878 = hexcColor_rock_albedo(param, param_1, param_2, hexcTex_rock_albedo);
+    weights = param_2;
+    return vec4(_1878.xyz, 1.0);
 }
 
 #line 533 "hexc/hextiling.glsl"
@@ -696,16 +732,16 @@ vec3 hexcTileLods_tiles_albedo(HexcTiles t, sampler2D SPIRV_Cross_Combinedtexsam
     vec2 ex = t.dx * size;
     vec2 ey = t.dy * size;
     float lod = 0.5 * log2(max(max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30));
-    vec3 _1420;
+    vec3 _1432;
     if (t.scaled)
     {
-        _1420 = vec3(lod) + log2(vec3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
+        _1432 = vec3(lod) + log2(vec3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
     }
     else
     {
-        _1420 = vec3(lod);
+        _1432 = vec3(lod);
     }
-    lods = _1420;
+    lods = _1432;
     return lods;
 }
 
@@ -763,26 +799,22 @@ vec4 hexcColor_tiles_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2D 
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 53 "hexc/generated"
+#line 69 "hexc/generated"
 vec4 hexcAt_tiles_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 53 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
-    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_6;
-    vec4 _1891 = hexcColor_tiles_albedo(param_4, param_5, param_6, hexcTex_tiles_albedo);
-    weights = param_6;
-    return vec4(_1891.xyz, 1.0);
+#line 69 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_2;
+    vec4 _1904 = hexcColor_tiles_albedo(param, param_1, param_2, hexcTex_tiles_albedo);
+    weights = param_2;
+    return vec4(_1904.xyz, 1.0);
 }
 
-#line 136 "hexc/generated"
+#line 154 "hexc/generated"
 vec4 hexc_albedo(vec2 uv, inout vec3 weights)
 {
-#line 136 "hexc/generated"
+#line 154 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -802,9 +834,9 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_6 = dy * hexcParams.rock_albedo_tiling;
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        vec4 _2102 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8);
+        vec4 _2151 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_2102 * w[0]);
+        value += (_2151 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -814,48 +846,48 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_11 = dy * hexcParams.tiles_albedo_tiling;
         ivec2 param_12 = ivec2(0);
         vec3 param_13;
-        vec4 _2137 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13);
+        vec4 _2186 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_2137 * w[1]);
+        value += (_2186 * w[1]);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 153 "hexc/generated"
+#line 171 "hexc/generated"
 vec4 hexc_albedo(vec2 uv)
 {
-#line 153 "hexc/generated"
+#line 171 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _2155 = hexc_albedo(param, param_1);
+    vec4 _2204 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _2155;
+    return _2204;
 }
 
 #line 132 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
 #line 132 "hexc/hextiling.glsl"
-    vec4 _608;
+    vec4 _620;
     if (c == 0)
     {
-        _608 = vec4(1.0, 0.0, 0.0, 0.0);
+        _620 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _615;
+        vec4 _627;
         if (c == 1)
         {
-            _615 = vec4(0.0, 1.0, 0.0, 0.0);
+            _627 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _615 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _627 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _608 = _615;
+        _620 = _627;
     }
-    return _608;
+    return _620;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -887,21 +919,17 @@ vec4 hexcColor_rock_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler2
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 41 "hexc/generated"
+#line 57 "hexc/generated"
 float hexcAt_rock_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 41 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
-    vec4 param_6 = hexcChannel(param_4);
-    vec3 param_7;
-    vec4 _1873 = hexcColor_rock_roughness(param_5, param_6, param_7, hexcTex_rock_albedo);
-    weights = param_7;
-    return _1873.w;
+#line 57 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    vec4 param_2 = hexcChannel(param);
+    vec3 param_3;
+    vec4 _1893 = hexcColor_rock_roughness(param_1, param_2, param_3, hexcTex_rock_albedo);
+    weights = param_3;
+    return _1893.w;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -933,27 +961,23 @@ vec4 hexcColor_tiles_roughness(HexcTiles t, vec4 luma, out vec3 weights, sampler
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 63 "hexc/generated"
+#line 79 "hexc/generated"
 float hexcAt_tiles_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 63 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
-    vec4 param_6 = hexcChannel(param_4);
-    vec3 param_7;
-    vec4 _1914 = hexcColor_tiles_roughness(param_5, param_6, param_7, hexcTex_tiles_albedo);
-    weights = param_7;
-    return _1914.w;
+#line 79 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles1;
+    vec4 param_2 = hexcChannel(param);
+    vec3 param_3;
+    vec4 _1919 = hexcColor_tiles_roughness(param_1, param_2, param_3, hexcTex_tiles_albedo);
+    weights = param_3;
+    return _1919.w;
 }
 
-#line 158 "hexc/generated"
+#line 176 "hexc/generated"
 float hexc_roughness(vec2 uv, inout vec3 weights)
 {
-#line 158 "hexc/generated"
+#line 176 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -973,9 +997,9 @@ float hexc_roughness(vec2 uv, inout vec3 weights)
         vec2 param_6 = dy * hexcParams.rock_albedo_tiling;
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        float _2203 = hexcAt_rock_roughness(param_4, param_5, param_6, param_7, param_8);
+        float _2252 = hexcAt_rock_roughness(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (w[0] * _2203);
+        value += (w[0] * _2252);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -985,36 +1009,36 @@ float hexc_roughness(vec2 uv, inout vec3 weights)
         vec2 param_11 = dy * hexcParams.tiles_albedo_tiling;
         ivec2 param_12 = ivec2(0);
         vec3 param_13;
-        float _2238 = hexcAt_tiles_roughness(param_9, param_10, param_11, param_12, param_13);
+        float _2287 = hexcAt_tiles_roughness(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (w[1] * _2238);
+        value += (w[1] * _2287);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 175 "hexc/generated"
+#line 193 "hexc/generated"
 float hexc_roughness(vec2 uv)
 {
-#line 175 "hexc/generated"
+#line 193 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    float _2256 = hexc_roughness(param, param_1);
+    float _2305 = hexc_roughness(param, param_1);
     vec3 weights = param_1;
-    return _2256;
+    return _2305;
 }
 
-#line 122 "hexc/generated"
+#line 140 "hexc/generated"
 void main()
 {
-#line 122 "hexc/generated"
+#line 140 "hexc/generated"
     hexcLayersFilled = false;
     vec2 param = v_uv;
-    vec4 _2265 = hexc_albedo(param);
-    vec3 albedo = _2265.xyz;
+    vec4 _2314 = hexc_albedo(param);
+    vec3 albedo = _2314.xyz;
     vec2 param_1 = v_uv;
-    float _2270 = hexc_roughness(param_1);
-    float roughness = clamp(_2270, 0.0199999995529651641845703125, 1.0);
+    float _2319 = hexc_roughness(param_1);
+    float roughness = clamp(_2319, 0.0199999995529651641845703125, 1.0);
     vec3 N = normalize(v_normal);
     float diffuse = max(dot(N, vec3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
     vec3 H = vec3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625);

@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _1471[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _1483[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -58,6 +58,8 @@ struct SPIRV_Cross_Output
 };
 
 static bool hexcLayersFilled;
+static HexcTiles hexcLatticeTiles0;
+static HexcTiles hexcLatticeTiles1;
 static float2 hexcLayersSt;
 static float hexcLayersW[8];
 
@@ -80,61 +82,61 @@ float4 hexcPlainColorGrad(Texture2D<float4> tex, SamplerState samp, float2 st, f
 float3 hexcMxDecode(float3 c)
 {
 #line 72 "hexc/materialx.glsl"
-    float3 _1794 = c / 12.9200000762939453125f.xxx;
-    float3 _1805 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
-    bool3 _1809 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
-    return float3(_1809.x ? _1805.x : _1794.x, _1809.y ? _1805.y : _1794.y, _1809.z ? _1805.z : _1794.z);
+    float3 _1806 = c / 12.9200000762939453125f.xxx;
+    float3 _1817 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
+    bool3 _1821 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
+    return float3(_1821.x ? _1817.x : _1806.x, _1821.y ? _1817.y : _1806.y, _1821.z ? _1817.z : _1806.z);
 }
 
 #line 77 "hexc/materialx.glsl"
 float4 hexcMxDecoded(float4 c, bool srgb)
 {
-    float4 _1814;
+    float4 _1826;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _1814 = float4(hexcMxDecode(param), c.w);
+        _1826 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _1814 = c;
+        _1826 = c;
     }
-    return _1814;
+    return _1826;
 }
 
-#line 73 "hexc/generated"
+#line 89 "hexc/generated"
 float4 hexcAt_splat0(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 73 "hexc/generated"
+#line 89 "hexc/generated"
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     float3 param_3;
-    float4 _1927 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
+    float4 _1932 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
     weights = param_3;
-    float4 param_4 = _1927;
+    float4 param_4 = _1932;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 84 "hexc/generated"
+#line 100 "hexc/generated"
 void hexcLayerKeep(inout float w[8], float skip)
 {
-#line 84 "hexc/generated"
+#line 100 "hexc/generated"
     float sum = 0.0f;
-    float _1949;
+    float _1954;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _1949 = w[i];
+            _1954 = w[i];
         }
         else
         {
-            _1949 = 0.0f;
+            _1954 = 0.0f;
         }
-        w[i] = _1949;
+        w[i] = _1954;
         sum += w[i];
     }
     if (sum <= 0.0f)
@@ -146,48 +148,6 @@ void hexcLayerKeep(inout float w[8], float skip)
     {
         w[i_1] /= sum;
     }
-}
-
-#line 114 "hexc/generated"
-void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
-{
-#line 114 "hexc/generated"
-    for (int i = 0; i < 8; i++)
-    {
-        w[i] = 0.0f;
-    }
-    float2 param = st * hexcParams_splat0_tiling;
-    float2 param_1 = dx * hexcParams_splat0_tiling;
-    float2 param_2 = dy * hexcParams_splat0_tiling;
-    int2 param_3 = int2(0, 0);
-    float3 param_4;
-    float4 _2019 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
-    float3 t = param_4;
-    float4 splat0 = _2019;
-    w[0] = splat0.x;
-    w[1] = splat0.y;
-    float param_5[8] = w;
-    float param_6 = 0.0019607841968536376953125f;
-    hexcLayerKeep(param_5, param_6);
-    w = param_5;
-}
-
-#line 126 "hexc/generated"
-void hexcLayerWeights(float2 st, float2 dx, float2 dy, out float w[8])
-{
-#line 126 "hexc/generated"
-    if ((!hexcLayersFilled) || any(bool2(st.x != hexcLayersSt.x, st.y != hexcLayersSt.y)))
-    {
-        float2 param = st;
-        float2 param_1 = dx;
-        float2 param_2 = dy;
-        float param_3[8];
-        hexcLayerFill(param, param_1, param_2, param_3);
-        hexcLayersW = param_3;
-        hexcLayersFilled = true;
-        hexcLayersSt = st;
-    }
-    w = hexcLayersW;
 }
 
 #line 55 "hexc/hextiling.glsl"
@@ -245,26 +205,26 @@ float2 hexcCosSin(float angle)
     float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
     float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
     int q = int(k) & 3;
-    float2 _486;
+    float2 _498;
     if ((q & 1) != 0)
     {
-        _486 = float2(-s, c);
+        _498 = float2(-s, c);
     }
     else
     {
-        _486 = float2(c, s);
+        _498 = float2(c, s);
     }
-    float2 cs = _486;
-    float2 _501;
+    float2 cs = _498;
+    float2 _513;
     if ((q & 2) != 0)
     {
-        _501 = -cs;
+        _513 = -cs;
     }
     else
     {
-        _501 = cs;
+        _513 = cs;
     }
-    return _501;
+    return _513;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -272,22 +232,22 @@ void hexcStableTile_rock_albedo(int2 id, bool aboutOrigin, out float2 offset, ou
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _735 = hexcPcg3d(param);
-    float3 u = float3(_735 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _747 = hexcPcg3d(param);
+    float3 u = float3(_747 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_rock_albedo_rotation;
     invScale = 1.0f;
-    float2 _758;
+    float2 _770;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _758 = hexcCosSin(param_1);
+        _770 = hexcCosSin(param_1);
     }
     else
     {
-        _758 = float2(cos(angle), sin(angle));
+        _770 = float2(cos(angle), sin(angle));
     }
-    rot = _758;
+    rot = _770;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -323,16 +283,16 @@ HexcTap hexcPlaceTile_rock_albedo(int2 id, float2 d, float2 c, float2 dSTdx, flo
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _880 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_880 + c) + offset;
+    float2 _892 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_892 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _890 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _890;
+    float2 _902 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _902;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _896 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _896;
+    float2 _908 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _908;
     return p;
 }
 
@@ -358,36 +318,36 @@ int3 hexcHexChannels(int2 v1, int2 v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _527;
+    int _539;
     if ((d < 0) && (a != 0))
     {
-        _527 = 3 - a;
+        _539 = 3 - a;
     }
     else
     {
-        _527 = a;
+        _539 = a;
     }
-    int i1 = _527;
-    int _538;
+    int i1 = _539;
+    int _550;
     if (i1 < 2)
     {
-        _538 = i1 + 1;
+        _550 = i1 + 1;
     }
     else
     {
-        _538 = 0;
+        _550 = 0;
     }
-    int vh = _538;
-    int _548;
+    int vh = _550;
+    int _560;
     if (i1 > 0)
     {
-        _548 = i1 - 1;
+        _560 = i1 - 1;
     }
     else
     {
-        _548 = 2;
+        _560 = 2;
     }
-    int vl = _548;
+    int vl = _560;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -416,31 +376,231 @@ HexcTiles hexcTilesStable_rock_albedo(float2 st, float2 dSTdx, float2 dSTdy, int
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1075 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1087 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1075;
+    t.tap[0] = _1087;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1091 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1103 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1091;
+    t.tap[1] = _1103;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1107 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1119 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1107;
+    t.tap[2] = _1119;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
+}
+
+#line 29 "hexc/generated"
+HexcTiles hexcLayerTiles0(float2 st, float2 dx, float2 dy, int2 cell)
+{
+#line 29 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_tiles_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
+    uint3 param = uint3(uint2(id), 0u);
+    uint3 _790 = hexcPcg3d(param);
+    float3 u = float3(_790 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    offset = u.xy;
+    float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_tiles_albedo_rotation;
+    invScale = 1.0f;
+    float2 _807;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _807 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _807 = float2(cos(angle), sin(angle));
+    }
+    rot = _807;
+}
+
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_tiles_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
+{
+#line 276 "hexc/hextiling.glsl"
+    int2 param = id;
+    bool param_1 = aboutOrigin;
+    float2 param_2;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _932 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_932 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _942 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _942;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _948 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _948;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_tiles_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = int2(uint2(local) + shift);
+    int2 param = local;
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+}
+
+#line 295 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_tiles_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = false;
+    float kx = floor(st.x / 28.0f);
+    float ky = floor(st.y);
+    float2 r = float2(st.x - (28.0f * kx), st.y - ky);
+    float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
+    float3 param_1;
+    int2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    int2 local[3] = param_2;
+    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
+    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
+    int2 param_3 = local[0];
+    uint2 param_4 = shift;
+    float2 param_5 = r;
+    float2 param_6 = dSTdx;
+    float2 param_7 = dSTdy;
+    int2 param_8;
+    HexcTap _1214 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _1214;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _1230 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _1230;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _1246 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _1246;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 37 "hexc/generated"
+HexcTiles hexcLayerTiles1(float2 st, float2 dx, float2 dy, int2 cell)
+{
+#line 37 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
+}
+
+#line 130 "hexc/generated"
+void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
+{
+#line 130 "hexc/generated"
+    for (int i = 0; i < 8; i++)
+    {
+        w[i] = 0.0f;
+    }
+    float2 param = st * hexcParams_splat0_tiling;
+    float2 param_1 = dx * hexcParams_splat0_tiling;
+    float2 param_2 = dy * hexcParams_splat0_tiling;
+    int2 param_3 = int2(0, 0);
+    float3 param_4;
+    float4 _2024 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
+    float3 t = param_4;
+    float4 splat0 = _2024;
+    w[0] = splat0.x;
+    w[1] = splat0.y;
+    float param_5[8] = w;
+    float param_6 = 0.0019607841968536376953125f;
+    hexcLayerKeep(param_5, param_6);
+    w = param_5;
+    if (w[0] > 0.0f)
+    {
+        float2 param_7 = st * hexcParams_rock_albedo_tiling;
+        float2 param_8 = dx * hexcParams_rock_albedo_tiling;
+        float2 param_9 = dy * hexcParams_rock_albedo_tiling;
+        int2 param_10 = int2(0, 0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10);
+    }
+    if (w[1] > 0.0f)
+    {
+        float2 param_11 = st * hexcParams_tiles_albedo_tiling;
+        float2 param_12 = dx * hexcParams_tiles_albedo_tiling;
+        float2 param_13 = dy * hexcParams_tiles_albedo_tiling;
+        int2 param_14 = int2(0, 0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14);
+    }
+}
+
+#line 144 "hexc/generated"
+void hexcLayerWeights(float2 st, float2 dx, float2 dy, out float w[8])
+{
+#line 144 "hexc/generated"
+    if ((!hexcLayersFilled) || any(bool2(st.x != hexcLayersSt.x, st.y != hexcLayersSt.y)))
+    {
+        float2 param = st;
+        float2 param_1 = dx;
+        float2 param_2 = dy;
+        float param_3[8];
+        hexcLayerFill(param, param_1, param_2, param_3);
+        hexcLayersW = param_3;
+        hexcLayersFilled = true;
+        hexcLayersSt = st;
+    }
+    w = hexcLayersW;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -471,7 +631,7 @@ void hexcFetchTaps_rock_albedo(Texture2D<float4> tex, SamplerState samp, HexcTil
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_rock_albedo(tex, samp, param);
-    c = _1471;
+    c = _1483;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_rock_albedo(tex, samp, param_1, param_2);
@@ -528,20 +688,20 @@ float3 hexcBlendWeights_rock_albedo(float3 w, float3 M)
 #line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1344 = hexcPowInt(param, param_1);
-    float3 wg = _1344;
+    float3 _1356 = hexcPowInt(param, param_1);
+    float3 wg = _1356;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1360;
+    float3 _1372;
     if (sum > 0.0f)
     {
-        _1360 = W / sum.xxx;
+        _1372 = W / sum.xxx;
     }
     else
     {
-        _1360 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1372 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1360;
+    W = _1372;
     return W;
 }
 
@@ -549,10 +709,10 @@ float3 hexcBlendWeights_rock_albedo(float3 w, float3 M)
 float3 hexcShowWeights(float3 W, int3 channel)
 {
 #line 125 "hexc/hextiling.glsl"
-    int3 _580 = channel.x.xxx;
-    int3 _590 = channel.y.xxx;
-    int3 _599 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _580.x, int3(0, 1, 2).y == _580.y, int3(0, 1, 2).z == _580.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _590.x, int3(0, 1, 2).y == _590.y, int3(0, 1, 2).z == _590.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _599.x, int3(0, 1, 2).y == _599.y, int3(0, 1, 2).z == _599.z)) * W.z);
+    int3 _592 = channel.x.xxx;
+    int3 _602 = channel.y.xxx;
+    int3 _611 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _592.x, int3(0, 1, 2).y == _592.y, int3(0, 1, 2).z == _592.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _602.x, int3(0, 1, 2).y == _602.y, int3(0, 1, 2).z == _602.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _611.x, int3(0, 1, 2).y == _611.y, int3(0, 1, 2).z == _611.z)) * W.z);
 }
 
 #line 577 "hexc/hextiling.glsl"
@@ -577,140 +737,16 @@ float4 hexcColor_rock_albedo(Texture2D<float4> tex, SamplerState samp, HexcTiles
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 31 "hexc/generated"
+#line 47 "hexc/generated"
 float4 hexcAt_rock_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 31 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
-    float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
-    float3 param_6;
-    float4 _1850 = hexcColor_rock_albedo(hexcTex_rock_albedo, hexcSampler, param_4, param_5, hexcTex_rock_albedo, param_6);
-    weights = param_6;
-    return float4(_1850.xyz, 1.0f);
-}
-
-#line 229 "hexc/hextiling.glsl"
-void hexcStableTile_tiles_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
-{
-#line 229 "hexc/hextiling.glsl"
-    uint3 param = uint3(uint2(id), 0u);
-    uint3 _778 = hexcPcg3d(param);
-    float3 u = float3(_778 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
-    offset = u.xy;
-    float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_tiles_albedo_rotation;
-    invScale = 1.0f;
-    float2 _795;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _795 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _795 = float2(cos(angle), sin(angle));
-    }
-    rot = _795;
-}
-
-#line 276 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_tiles_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
-{
-#line 276 "hexc/hextiling.glsl"
-    int2 param = id;
-    bool param_1 = aboutOrigin;
-    float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4);
-    float2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _920 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_920 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _930 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _930;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _936 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _936;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_tiles_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = int2(uint2(local) + shift);
-    int2 param = local;
-    int2 param_1 = local;
-    int2 param_2 = id;
-    float2 param_3 = r - hexcStableCentre(param);
-    float2 param_4 = hexcStableCentreInPeriod(param_1);
-    float2 param_5 = dSTdx;
-    float2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
-}
-
-#line 295 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_tiles_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = false;
-    float kx = floor(st.x / 28.0f);
-    float ky = floor(st.y);
-    float2 r = float2(st.x - (28.0f * kx), st.y - ky);
-    float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
-    float3 param_1;
-    int2 param_2[3];
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    int2 local[3] = param_2;
-    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-    int2 param_3 = local[0];
-    uint2 param_4 = shift;
-    float2 param_5 = r;
-    float2 param_6 = dSTdx;
-    float2 param_7 = dSTdy;
-    int2 param_8;
-    HexcTap _1202 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
-    t.id[0] = param_8;
-    t.tap[0] = _1202;
-    int2 param_9 = local[1];
-    uint2 param_10 = shift;
-    float2 param_11 = r;
-    float2 param_12 = dSTdx;
-    float2 param_13 = dSTdy;
-    int2 param_14;
-    HexcTap _1218 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
-    t.id[1] = param_14;
-    t.tap[1] = _1218;
-    int2 param_15 = local[2];
-    uint2 param_16 = shift;
-    float2 param_17 = r;
-    float2 param_18 = dSTdx;
-    float2 param_19 = dSTdy;
-    int2 param_20;
-    HexcTap _1234 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
-    t.id[2] = param_20;
-    t.tap[2] = _1234;
-    int2 param_21 = t.id[0];
-    int2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 47 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
+    float3 param_2;
+    float4 _1878 = hexcColor_rock_albedo(hexcTex_rock_albedo, hexcSampler, param, param_1, hexcTex_rock_albedo, param_2);
+    weights = param_2;
+    return float4(_1878.xyz, 1.0f);
 }
 
 #line 533 "hexc/hextiling.glsl"
@@ -718,21 +754,21 @@ float3 hexcTileLods_tiles_albedo(Texture2D<float4> tex, SamplerState samp, HexcT
 {
 #line 533 "hexc/hextiling.glsl"
     float3 lods = 0.0f.xxx;
-    uint _1394_dummy_parameter;
-    float2 size = float2(int2(spvTextureSize(tex, uint(0), _1394_dummy_parameter)));
+    uint _1406_dummy_parameter;
+    float2 size = float2(int2(spvTextureSize(tex, uint(0), _1406_dummy_parameter)));
     float2 ex = t.dx * size;
     float2 ey = t.dy * size;
     float lod = 0.5f * log2(max(max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30f));
-    float3 _1420;
+    float3 _1432;
     if (t.scaled)
     {
-        _1420 = lod.xxx + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
+        _1432 = lod.xxx + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
     }
     else
     {
-        _1420 = lod.xxx;
+        _1432 = lod.xxx;
     }
-    lods = _1420;
+    lods = _1432;
     return lods;
 }
 
@@ -749,7 +785,7 @@ void hexcFetchTaps_tiles_albedo(Texture2D<float4> tex, SamplerState samp, HexcTi
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_tiles_albedo(tex, samp, param);
-    c = _1471;
+    c = _1483;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_tiles_albedo(tex, samp, param_1, param_2);
@@ -790,26 +826,22 @@ float4 hexcColor_tiles_albedo(Texture2D<float4> tex, SamplerState samp, HexcTile
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 53 "hexc/generated"
+#line 69 "hexc/generated"
 float4 hexcAt_tiles_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 53 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
-    float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
-    float3 param_6;
-    float4 _1891 = hexcColor_tiles_albedo(hexcTex_tiles_albedo, hexcSampler, param_4, param_5, hexcTex_tiles_albedo, param_6);
-    weights = param_6;
-    return float4(_1891.xyz, 1.0f);
+#line 69 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
+    float3 param_2;
+    float4 _1904 = hexcColor_tiles_albedo(hexcTex_tiles_albedo, hexcSampler, param, param_1, hexcTex_tiles_albedo, param_2);
+    weights = param_2;
+    return float4(_1904.xyz, 1.0f);
 }
 
-#line 136 "hexc/generated"
+#line 154 "hexc/generated"
 float4 hexc_albedo(float2 uv, inout float3 weights)
 {
-#line 136 "hexc/generated"
+#line 154 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -829,9 +861,9 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_6 = dy * hexcParams_rock_albedo_tiling;
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float4 _2102 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8);
+        float4 _2151 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_2102 * w[0]);
+        value += (_2151 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0f)
@@ -841,49 +873,49 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_11 = dy * hexcParams_tiles_albedo_tiling;
         int2 param_12 = int2(0, 0);
         float3 param_13;
-        float4 _2137 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13);
+        float4 _2186 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_2137 * w[1]);
+        value += (_2186 * w[1]);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 153 "hexc/generated"
+#line 171 "hexc/generated"
 float4 hexc_albedo(float2 uv)
 {
-#line 153 "hexc/generated"
+#line 171 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _2155 = hexc_albedo(param, param_1);
+    float4 _2204 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _2155;
+    return _2204;
 }
 
 #line 132 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
 #line 132 "hexc/hextiling.glsl"
-    float4 _608;
+    float4 _620;
     if (c == 0)
     {
-        _608 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _620 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-        float4 _615;
+        float4 _627;
         if (c == 1)
         {
-            _615 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _627 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-            bool4 _625 = (c == 2).xxxx;
-            _615 = float4(_625.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _625.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _625.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _625.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+            bool4 _637 = (c == 2).xxxx;
+            _627 = float4(_637.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _637.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _637.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _637.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _608 = _615;
+        _620 = _627;
     }
-    return _608;
+    return _620;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -915,21 +947,17 @@ float4 hexcColor_rock_roughness(Texture2D<float4> tex, SamplerState samp, HexcTi
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 41 "hexc/generated"
+#line 57 "hexc/generated"
 float hexcAt_rock_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 41 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _1873 = hexcColor_rock_roughness(hexcTex_rock_albedo, hexcSampler, param_5, param_6, hexcTex_rock_albedo, param_7);
-    weights = param_7;
-    return _1873.w;
+#line 57 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _1893 = hexcColor_rock_roughness(hexcTex_rock_albedo, hexcSampler, param_1, param_2, hexcTex_rock_albedo, param_3);
+    weights = param_3;
+    return _1893.w;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -961,27 +989,23 @@ float4 hexcColor_tiles_roughness(Texture2D<float4> tex, SamplerState samp, HexcT
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 63 "hexc/generated"
+#line 79 "hexc/generated"
 float hexcAt_tiles_roughness(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 63 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _1914 = hexcColor_tiles_roughness(hexcTex_tiles_albedo, hexcSampler, param_5, param_6, hexcTex_tiles_albedo, param_7);
-    weights = param_7;
-    return _1914.w;
+#line 79 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles1;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _1919 = hexcColor_tiles_roughness(hexcTex_tiles_albedo, hexcSampler, param_1, param_2, hexcTex_tiles_albedo, param_3);
+    weights = param_3;
+    return _1919.w;
 }
 
-#line 158 "hexc/generated"
+#line 176 "hexc/generated"
 float hexc_roughness(float2 uv, inout float3 weights)
 {
-#line 158 "hexc/generated"
+#line 176 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -1001,9 +1025,9 @@ float hexc_roughness(float2 uv, inout float3 weights)
         float2 param_6 = dy * hexcParams_rock_albedo_tiling;
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float _2203 = hexcAt_rock_roughness(param_4, param_5, param_6, param_7, param_8);
+        float _2252 = hexcAt_rock_roughness(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (w[0] * _2203);
+        value += (w[0] * _2252);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0f)
@@ -1013,36 +1037,36 @@ float hexc_roughness(float2 uv, inout float3 weights)
         float2 param_11 = dy * hexcParams_tiles_albedo_tiling;
         int2 param_12 = int2(0, 0);
         float3 param_13;
-        float _2238 = hexcAt_tiles_roughness(param_9, param_10, param_11, param_12, param_13);
+        float _2287 = hexcAt_tiles_roughness(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (w[1] * _2238);
+        value += (w[1] * _2287);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 175 "hexc/generated"
+#line 193 "hexc/generated"
 float hexc_roughness(float2 uv)
 {
-#line 175 "hexc/generated"
+#line 193 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _2256 = hexc_roughness(param, param_1);
+    float _2305 = hexc_roughness(param, param_1);
     float3 weights = param_1;
-    return _2256;
+    return _2305;
 }
 
-#line 122 "hexc/generated"
+#line 140 "hexc/generated"
 void frag_main()
 {
-#line 122 "hexc/generated"
+#line 140 "hexc/generated"
     hexcLayersFilled = false;
     float2 param = v_uv;
-    float4 _2265 = hexc_albedo(param);
-    float3 albedo = _2265.xyz;
+    float4 _2314 = hexc_albedo(param);
+    float3 albedo = _2314.xyz;
     float2 param_1 = v_uv;
-    float _2270 = hexc_roughness(param_1);
-    float roughness = clamp(_2270, 0.0199999995529651641845703125f, 1.0f);
+    float _2319 = hexc_roughness(param_1);
+    float roughness = clamp(_2319, 0.0199999995529651641845703125f, 1.0f);
     float3 N = normalize(v_normal);
     float diffuse = max(dot(N, float3(0.408248007297515869140625f, 0.408248007297515869140625f, 0.816497027873992919921875f)), 0.0f);
     float3 H = float3(0.21418631076812744140625f, 0.21418631076812744140625f, 0.95302069187164306640625f);

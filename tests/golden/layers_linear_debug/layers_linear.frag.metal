@@ -79,7 +79,7 @@ struct HexcParams
     float tiles_roughness_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1471 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1483 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct layers_linear_frag_out
 {
@@ -113,54 +113,54 @@ float3 hexcMxDecode(thread const float3& c)
 static inline __attribute__((always_inline))
 float4 hexcMxDecoded(thread const float4& c, thread const bool& srgb)
 {
-    float4 _1814;
+    float4 _1826;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _1814 = float4(hexcMxDecode(param), c.w);
+        _1826 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _1814 = c;
+        _1826 = c;
     }
-    return _1814;
+    return _1826;
 }
 
-#line 73 "hexc/generated"
+#line 89 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexcAt_splat0(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, sampler hexcSampler, texture2d<float> hexcTex_splat0)
 {
-#line 73 "hexc/generated"
+#line 89 "hexc/generated"
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     float3 param_3;
-    float4 _1927 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
+    float4 _1932 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
     weights = param_3;
-    float4 param_4 = _1927;
+    float4 param_4 = _1932;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 84 "hexc/generated"
+#line 100 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerKeep(thread spvUnsafeArray<float, 8>& w, thread const float& skip)
 {
-#line 84 "hexc/generated"
+#line 100 "hexc/generated"
     float sum = 0.0;
-    float _1949;
+    float _1954;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _1949 = w[i];
+            _1954 = w[i];
         }
         else
         {
-            _1949 = 0.0;
+            _1954 = 0.0;
         }
-        w[i] = _1949;
+        w[i] = _1954;
         sum += w[i];
     }
     if (sum <= 0.0)
@@ -172,51 +172,6 @@ void hexcLayerKeep(thread spvUnsafeArray<float, 8>& w, thread const float& skip)
     {
         w[i_1] /= sum;
     }
-}
-
-#line 114 "hexc/generated"
-static inline __attribute__((always_inline))
-void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_splat0)
-{
-#line 114 "hexc/generated"
-    for (int i = 0; i < 8; i++)
-    {
-        w[i] = 0.0;
-    }
-    float2 param = st * hexcParams.splat0_tiling;
-    float2 param_1 = dx * hexcParams.splat0_tiling;
-    float2 param_2 = dy * hexcParams.splat0_tiling;
-    int2 param_3 = int2(0);
-    float3 param_4;
-    float4 _2019 = hexcAt_splat0(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_splat0);
-    float3 t = param_4;
-    float4 splat0 = _2019;
-    w[0] = splat0.x;
-    w[1] = splat0.y;
-    spvUnsafeArray<float, 8> param_5;
-    param_5 = w;
-    float param_6 = 0.0019607841968536376953125;
-    hexcLayerKeep(param_5, param_6);
-    w = param_5;
-}
-
-#line 126 "hexc/generated"
-static inline __attribute__((always_inline))
-void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
-{
-#line 126 "hexc/generated"
-    if ((!hexcLayersFilled) || any(st != hexcLayersSt))
-    {
-        float2 param = st;
-        float2 param_1 = dx;
-        float2 param_2 = dy;
-        spvUnsafeArray<float, 8> param_3;
-        hexcLayerFill(param, param_1, param_2, param_3, hexcParams, hexcSampler, hexcTex_splat0);
-        hexcLayersW = param_3;
-        hexcLayersFilled = true;
-        hexcLayersSt = st;
-    }
-    w = hexcLayersW;
 }
 
 #line 55 "hexc/hextiling.glsl"
@@ -279,26 +234,26 @@ float2 hexcCosSin(thread const float& angle)
     float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
     float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
     int q = int(k) & 3;
-    float2 _486;
+    float2 _498;
     if ((q & 1) != 0)
     {
-        _486 = float2(-s, c);
+        _498 = float2(-s, c);
     }
     else
     {
-        _486 = float2(c, s);
+        _498 = float2(c, s);
     }
-    float2 cs = _486;
-    float2 _501;
+    float2 cs = _498;
+    float2 _513;
     if ((q & 2) != 0)
     {
-        _501 = -cs;
+        _513 = -cs;
     }
     else
     {
-        _501 = cs;
+        _513 = cs;
     }
-    return _501;
+    return _513;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -307,22 +262,22 @@ void hexcStableTile_rock_albedo(thread const int2& id, thread const bool& aboutO
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _735 = hexcPcg3d(param);
-    float3 u = float3(_735 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _747 = hexcPcg3d(param);
+    float3 u = float3(_747 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.rock_albedo_rotation;
     invScale = 1.0;
-    float2 _758;
+    float2 _770;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _758 = hexcCosSin(param_1);
+        _770 = hexcCosSin(param_1);
     }
     else
     {
-        _758 = float2(cos(angle), sin(angle));
+        _770 = float2(cos(angle), sin(angle));
     }
-    rot = _758;
+    rot = _770;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -361,16 +316,16 @@ HexcTap hexcPlaceTile_rock_albedo(thread const int2& id, thread const float2& d,
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _880 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_880 + c) + offset;
+    float2 _892 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_892 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _890 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _890;
+    float2 _902 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _902;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _896 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _896;
+    float2 _908 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _908;
     return p;
 }
 
@@ -398,36 +353,36 @@ int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _527;
+    int _539;
     if ((d < 0) && (a != 0))
     {
-        _527 = 3 - a;
+        _539 = 3 - a;
     }
     else
     {
-        _527 = a;
+        _539 = a;
     }
-    int i1 = _527;
-    int _538;
+    int i1 = _539;
+    int _550;
     if (i1 < 2)
     {
-        _538 = i1 + 1;
+        _550 = i1 + 1;
     }
     else
     {
-        _538 = 0;
+        _550 = 0;
     }
-    int vh = _538;
-    int _548;
+    int vh = _550;
+    int _560;
     if (i1 > 0)
     {
-        _548 = i1 - 1;
+        _560 = i1 - 1;
     }
     else
     {
-        _548 = 2;
+        _560 = 2;
     }
-    int vl = _548;
+    int vl = _560;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -458,31 +413,241 @@ HexcTiles hexcTilesStable_rock_albedo(thread const float2& st, thread const floa
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1075 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _1087 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _1075;
+    t.tap[0] = _1087;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1091 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _1103 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _1091;
+    t.tap[1] = _1103;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1107 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _1119 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _1107;
+    t.tap[2] = _1119;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
+}
+
+#line 29 "hexc/generated"
+static inline __attribute__((always_inline))
+HexcTiles hexcLayerTiles0(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 29 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_rock_albedo(param, param_1, param_2, param_3, hexcParams);
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_tiles_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
+    uint3 param = uint3(uint2(id), 0u);
+    uint3 _790 = hexcPcg3d(param);
+    float3 u = float3(_790 >> uint3(8u)) * 5.9604644775390625e-08;
+    offset = u.xy;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.tiles_albedo_rotation;
+    invScale = 1.0;
+    float2 _807;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _807 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _807 = float2(cos(angle), sin(angle));
+    }
+    rot = _807;
+}
+
+#line 276 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTap hexcPlaceTile_tiles_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
+{
+#line 276 "hexc/hextiling.glsl"
+    int2 param = id;
+    bool param_1 = aboutOrigin;
+    float2 param_2;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _932 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_932 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _942 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _942;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _948 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _948;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTap hexcStableTap_tiles_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = int2(uint2(local) + shift);
+    int2 param = local;
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
+}
+
+#line 295 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTiles hexcTilesStable_tiles_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = short(false);
+    float kx = floor(st.x / 28.0);
+    float ky = floor(st.y);
+    float2 r = float2(st.x - (28.0 * kx), st.y - ky);
+    float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
+    float3 param_1;
+    spvUnsafeArray<int2, 3> param_2;
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    spvUnsafeArray<int2, 3> local;
+    local = param_2;
+    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
+    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
+    int2 param_3 = local[0];
+    uint2 param_4 = shift;
+    float2 param_5 = r;
+    float2 param_6 = dSTdx;
+    float2 param_7 = dSTdy;
+    int2 param_8;
+    HexcTap _1214 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    t.id[0] = param_8;
+    t.tap[0] = _1214;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _1230 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    t.id[1] = param_14;
+    t.tap[1] = _1230;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _1246 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    t.id[2] = param_20;
+    t.tap[2] = _1246;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 37 "hexc/generated"
+static inline __attribute__((always_inline))
+HexcTiles hexcLayerTiles1(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 37 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3, hexcParams);
+}
+
+#line 130 "hexc/generated"
+static inline __attribute__((always_inline))
+void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0)
+{
+#line 130 "hexc/generated"
+    for (int i = 0; i < 8; i++)
+    {
+        w[i] = 0.0;
+    }
+    float2 param = st * hexcParams.splat0_tiling;
+    float2 param_1 = dx * hexcParams.splat0_tiling;
+    float2 param_2 = dy * hexcParams.splat0_tiling;
+    int2 param_3 = int2(0);
+    float3 param_4;
+    float4 _2024 = hexcAt_splat0(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_splat0);
+    float3 t = param_4;
+    float4 splat0 = _2024;
+    w[0] = splat0.x;
+    w[1] = splat0.y;
+    spvUnsafeArray<float, 8> param_5;
+    param_5 = w;
+    float param_6 = 0.0019607841968536376953125;
+    hexcLayerKeep(param_5, param_6);
+    w = param_5;
+    if (w[0] > 0.0)
+    {
+        float2 param_7 = st * hexcParams.rock_albedo_tiling;
+        float2 param_8 = dx * hexcParams.rock_albedo_tiling;
+        float2 param_9 = dy * hexcParams.rock_albedo_tiling;
+        int2 param_10 = int2(0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10, hexcParams);
+    }
+    if (w[1] > 0.0)
+    {
+        float2 param_11 = st * hexcParams.tiles_albedo_tiling;
+        float2 param_12 = dx * hexcParams.tiles_albedo_tiling;
+        float2 param_13 = dy * hexcParams.tiles_albedo_tiling;
+        int2 param_14 = int2(0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14, hexcParams);
+    }
+}
+
+#line 144 "hexc/generated"
+static inline __attribute__((always_inline))
+void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+{
+#line 144 "hexc/generated"
+    if ((!hexcLayersFilled) || any(st != hexcLayersSt))
+    {
+        float2 param = st;
+        float2 param_1 = dx;
+        float2 param_2 = dy;
+        spvUnsafeArray<float, 8> param_3;
+        hexcLayerFill(param, param_1, param_2, param_3, hexcParams, hexcSampler, hexcLatticeTiles0, hexcLatticeTiles1, hexcTex_splat0);
+        hexcLayersW = param_3;
+        hexcLayersFilled = true;
+        hexcLayersSt = st;
+    }
+    w = hexcLayersW;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -517,7 +682,7 @@ void hexcFetchTaps_rock_albedo(texture2d<float> tex, sampler samp, thread const 
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_rock_albedo(tex, samp, param);
-    c = _1471;
+    c = _1483;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_rock_albedo(tex, samp, param_1, param_2);
@@ -577,20 +742,20 @@ float3 hexcBlendWeights_rock_albedo(thread const float3& w, thread const float3&
 #line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1344 = hexcPowInt(param, param_1);
-    float3 wg = _1344;
+    float3 _1356 = hexcPowInt(param, param_1);
+    float3 wg = _1356;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1360;
+    float3 _1372;
     if (sum > 0.0)
     {
-        _1360 = W / float3(sum);
+        _1372 = W / float3(sum);
     }
     else
     {
-        _1360 = wg / float3((wg.x + wg.y) + wg.z);
+        _1372 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1360;
+    W = _1372;
     return W;
 }
 
@@ -626,146 +791,17 @@ float4 hexcColor_rock_albedo(texture2d<float> tex, sampler samp, thread const He
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 31 "hexc/generated"
+#line 47 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexcAt_rock_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler)
+float4 hexcAt_rock_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0)
 {
-#line 31 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_6;
-    float4 _1850 = hexcColor_rock_albedo(hexcTex_rock_albedo, hexcSampler, param_4, param_5, hexcTex_rock_albedo, param_6, hexcParams);
-    weights = param_6;
-    return float4(_1850.xyz, 1.0);
-}
-
-#line 229 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-void hexcStableTile_tiles_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
-{
-#line 229 "hexc/hextiling.glsl"
-    uint3 param = uint3(uint2(id), 0u);
-    uint3 _778 = hexcPcg3d(param);
-    float3 u = float3(_778 >> uint3(8u)) * 5.9604644775390625e-08;
-    offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.tiles_albedo_rotation;
-    invScale = 1.0;
-    float2 _795;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _795 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _795 = float2(cos(angle), sin(angle));
-    }
-    rot = _795;
-}
-
-#line 276 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_tiles_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
-{
-#line 276 "hexc/hextiling.glsl"
-    int2 param = id;
-    bool param_1 = aboutOrigin;
-    float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
-    float2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _920 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_920 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _930 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _930;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _936 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _936;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTap hexcStableTap_tiles_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = int2(uint2(local) + shift);
-    int2 param = local;
-    int2 param_1 = local;
-    int2 param_2 = id;
-    float2 param_3 = r - hexcStableCentre(param);
-    float2 param_4 = hexcStableCentreInPeriod(param_1);
-    float2 param_5 = dSTdx;
-    float2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
-}
-
-#line 295 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTiles hexcTilesStable_tiles_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = short(false);
-    float kx = floor(st.x / 28.0);
-    float ky = floor(st.y);
-    float2 r = float2(st.x - (28.0 * kx), st.y - ky);
-    float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
-    float3 param_1;
-    spvUnsafeArray<int2, 3> param_2;
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    spvUnsafeArray<int2, 3> local;
-    local = param_2;
-    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-    int2 param_3 = local[0];
-    uint2 param_4 = shift;
-    float2 param_5 = r;
-    float2 param_6 = dSTdx;
-    float2 param_7 = dSTdy;
-    int2 param_8;
-    HexcTap _1202 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
-    t.id[0] = param_8;
-    t.tap[0] = _1202;
-    int2 param_9 = local[1];
-    uint2 param_10 = shift;
-    float2 param_11 = r;
-    float2 param_12 = dSTdx;
-    float2 param_13 = dSTdy;
-    int2 param_14;
-    HexcTap _1218 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
-    t.id[1] = param_14;
-    t.tap[1] = _1218;
-    int2 param_15 = local[2];
-    uint2 param_16 = shift;
-    float2 param_17 = r;
-    float2 param_18 = dSTdx;
-    float2 param_19 = dSTdy;
-    int2 param_20;
-    HexcTap _1234 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
-    t.id[2] = param_20;
-    t.tap[2] = _1234;
-    int2 param_21 = t.id[0];
-    int2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 47 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_2;
+    float4 _1878 = hexcColor_rock_albedo(hexcTex_rock_albedo, hexcSampler, param, param_1, hexcTex_rock_albedo, param_2, hexcParams);
+    weights = param_2;
+    return float4(_1878.xyz, 1.0);
 }
 
 #line 533 "hexc/hextiling.glsl"
@@ -778,16 +814,16 @@ float3 hexcTileLods_tiles_albedo(texture2d<float> tex, sampler samp, thread cons
     float2 ex = t.dx * size;
     float2 ey = t.dy * size;
     float lod = 0.5 * log2(fast::max(fast::max(dot(ex, ex), dot(ey, ey)), 1.0000000031710768509710513471353e-30));
-    float3 _1420;
+    float3 _1432;
     if (bool(t.scaled))
     {
-        _1420 = float3(lod) + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
+        _1432 = float3(lod) + log2(float3(t.tap[0].invScale, t.tap[1].invScale, t.tap[2].invScale));
     }
     else
     {
-        _1420 = float3(lod);
+        _1432 = float3(lod);
     }
-    lods = _1420;
+    lods = _1432;
     return lods;
 }
 
@@ -806,7 +842,7 @@ void hexcFetchTaps_tiles_albedo(texture2d<float> tex, sampler samp, thread const
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_tiles_albedo(tex, samp, param);
-    c = _1471;
+    c = _1483;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_tiles_albedo(tex, samp, param_1, param_2);
@@ -850,28 +886,24 @@ float4 hexcColor_tiles_albedo(texture2d<float> tex, sampler samp, thread const H
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 53 "hexc/generated"
+#line 69 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexcAt_tiles_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_tiles_albedo)
+float4 hexcAt_tiles_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1)
 {
-#line 53 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_6;
-    float4 _1891 = hexcColor_tiles_albedo(hexcTex_tiles_albedo, hexcSampler, param_4, param_5, hexcTex_tiles_albedo, param_6, hexcParams);
-    weights = param_6;
-    return float4(_1891.xyz, 1.0);
+#line 69 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_2;
+    float4 _1904 = hexcColor_tiles_albedo(hexcTex_tiles_albedo, hexcSampler, param, param_1, hexcTex_tiles_albedo, param_2, hexcParams);
+    weights = param_2;
+    return float4(_1904.xyz, 1.0);
 }
 
-#line 136 "hexc/generated"
+#line 154 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, texture2d<float> hexcTex_tiles_albedo, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 136 "hexc/generated"
+#line 154 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -879,7 +911,7 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
     float2 param_1 = dx;
     float2 param_2 = dy;
     spvUnsafeArray<float, 8> param_3;
-    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcLatticeTiles1, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     spvUnsafeArray<float, 8> w;
     w = param_3;
     float4 value = float4(0.0);
@@ -892,9 +924,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_6 = dy * hexcParams.rock_albedo_tiling;
         int2 param_7 = int2(0);
         float3 param_8;
-        float4 _2102 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcTex_rock_albedo, hexcSampler);
+        float4 _2151 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcLatticeTiles0);
         t = param_8;
-        value += (_2102 * w[0]);
+        value += (_2151 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -904,24 +936,24 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_11 = dy * hexcParams.tiles_albedo_tiling;
         int2 param_12 = int2(0);
         float3 param_13;
-        float4 _2137 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcSampler, hexcTex_tiles_albedo);
+        float4 _2186 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcSampler, hexcTex_tiles_albedo, hexcLatticeTiles1);
         t = param_13;
-        value += (_2137 * w[1]);
+        value += (_2186 * w[1]);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 153 "hexc/generated"
+#line 171 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, texture2d<float> hexcTex_tiles_albedo, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 153 "hexc/generated"
+#line 171 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _2155 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcTex_tiles_albedo, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float4 _2204 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcLatticeTiles0, hexcTex_tiles_albedo, hexcLatticeTiles1, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     float3 weights = param_1;
-    return _2155;
+    return _2204;
 }
 
 #line 132 "hexc/hextiling.glsl"
@@ -929,25 +961,25 @@ static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
 #line 132 "hexc/hextiling.glsl"
-    float4 _608;
+    float4 _620;
     if (c == 0)
     {
-        _608 = float4(1.0, 0.0, 0.0, 0.0);
+        _620 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        float4 _615;
+        float4 _627;
         if (c == 1)
         {
-            _615 = float4(0.0, 1.0, 0.0, 0.0);
+            _627 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _615 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+            _627 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _608 = _615;
+        _620 = _627;
     }
-    return _608;
+    return _620;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -982,22 +1014,18 @@ float4 hexcColor_rock_roughness(texture2d<float> tex, sampler samp, thread const
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 41 "hexc/generated"
+#line 57 "hexc/generated"
 static inline __attribute__((always_inline))
-float hexcAt_rock_roughness(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler)
+float hexcAt_rock_roughness(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0)
 {
-#line 41 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _1873 = hexcColor_rock_roughness(hexcTex_rock_albedo, hexcSampler, param_5, param_6, hexcTex_rock_albedo, param_7, hexcParams);
-    weights = param_7;
-    return _1873.w;
+#line 57 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _1893 = hexcColor_rock_roughness(hexcTex_rock_albedo, hexcSampler, param_1, param_2, hexcTex_rock_albedo, param_3, hexcParams);
+    weights = param_3;
+    return _1893.w;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1032,29 +1060,25 @@ float4 hexcColor_tiles_roughness(texture2d<float> tex, sampler samp, thread cons
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 63 "hexc/generated"
+#line 79 "hexc/generated"
 static inline __attribute__((always_inline))
-float hexcAt_tiles_roughness(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_tiles_albedo)
+float hexcAt_tiles_roughness(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1)
 {
-#line 63 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _1914 = hexcColor_tiles_roughness(hexcTex_tiles_albedo, hexcSampler, param_5, param_6, hexcTex_tiles_albedo, param_7, hexcParams);
-    weights = param_7;
-    return _1914.w;
+#line 79 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles1;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _1919 = hexcColor_tiles_roughness(hexcTex_tiles_albedo, hexcSampler, param_1, param_2, hexcTex_tiles_albedo, param_3, hexcParams);
+    weights = param_3;
+    return _1919.w;
 }
 
-#line 158 "hexc/generated"
+#line 176 "hexc/generated"
 static inline __attribute__((always_inline))
-float hexc_roughness(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, texture2d<float> hexcTex_tiles_albedo, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float hexc_roughness(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 158 "hexc/generated"
+#line 176 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -1062,7 +1086,7 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, thread boo
     float2 param_1 = dx;
     float2 param_2 = dy;
     spvUnsafeArray<float, 8> param_3;
-    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcLatticeTiles1, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     spvUnsafeArray<float, 8> w;
     w = param_3;
     float value = 0.0;
@@ -1075,9 +1099,9 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, thread boo
         float2 param_6 = dy * hexcParams.rock_albedo_tiling;
         int2 param_7 = int2(0);
         float3 param_8;
-        float _2203 = hexcAt_rock_roughness(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcTex_rock_albedo, hexcSampler);
+        float _2252 = hexcAt_rock_roughness(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcLatticeTiles0);
         t = param_8;
-        value += (w[0] * _2203);
+        value += (w[0] * _2252);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1087,40 +1111,42 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, thread boo
         float2 param_11 = dy * hexcParams.tiles_albedo_tiling;
         int2 param_12 = int2(0);
         float3 param_13;
-        float _2238 = hexcAt_tiles_roughness(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcSampler, hexcTex_tiles_albedo);
+        float _2287 = hexcAt_tiles_roughness(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcSampler, hexcTex_tiles_albedo, hexcLatticeTiles1);
         t = param_13;
-        value += (w[1] * _2238);
+        value += (w[1] * _2287);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 175 "hexc/generated"
+#line 193 "hexc/generated"
 static inline __attribute__((always_inline))
-float hexc_roughness(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, texture2d<float> hexcTex_tiles_albedo, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float hexc_roughness(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 175 "hexc/generated"
+#line 193 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float _2256 = hexc_roughness(param, param_1, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcTex_tiles_albedo, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float _2305 = hexc_roughness(param, param_1, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcLatticeTiles0, hexcTex_tiles_albedo, hexcLatticeTiles1, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     float3 weights = param_1;
-    return _2256;
+    return _2305;
 }
 
-#line 122 "hexc/generated"
+#line 140 "hexc/generated"
 fragment layers_linear_frag_out layers_linear_frag(layers_linear_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_rock_albedo [[texture(0)]], texture2d<float> hexcTex_tiles_albedo [[texture(2)]], texture2d<float> hexcTex_splat0 [[texture(4)]], sampler hexcSampler [[sampler(0)]])
 {
     layers_linear_frag_out out = {};
-#line 122 "hexc/generated"
+#line 140 "hexc/generated"
     bool hexcLayersFilled = false;
     float2 param = in.v_uv;
+    HexcTiles hexcLatticeTiles0;
+    HexcTiles hexcLatticeTiles1;
     float2 hexcLayersSt;
     spvUnsafeArray<float, 8> hexcLayersW;
-    float4 _2265 = hexc_albedo(param, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcTex_tiles_albedo, hexcTex_splat0, hexcLayersSt, hexcLayersW);
-    float3 albedo = _2265.xyz;
+    float4 _2314 = hexc_albedo(param, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcLatticeTiles0, hexcTex_tiles_albedo, hexcLatticeTiles1, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float3 albedo = _2314.xyz;
     float2 param_1 = in.v_uv;
-    float _2270 = hexc_roughness(param_1, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcTex_tiles_albedo, hexcTex_splat0, hexcLayersSt, hexcLayersW);
-    float roughness = fast::clamp(_2270, 0.0199999995529651641845703125, 1.0);
+    float _2319 = hexc_roughness(param_1, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcLatticeTiles0, hexcTex_tiles_albedo, hexcLatticeTiles1, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float roughness = fast::clamp(_2319, 0.0199999995529651641845703125, 1.0);
     float3 N = fast::normalize(in.v_normal);
     float diffuse = fast::max(dot(N, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
     float3 H = float3(0.21418631076812744140625, 0.21418631076812744140625, 0.95302069187164306640625);

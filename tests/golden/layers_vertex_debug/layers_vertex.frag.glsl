@@ -43,6 +43,8 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 0) out vec4 o_color;
 layout(location = 2) in vec4 v_tangent;
 bool hexcLayersFilled;
+HexcTiles hexcLatticeTiles0;
+HexcTiles hexcLatticeTiles1;
 vec2 hexcLayersSt;
 float hexcLayersW[8];
 
@@ -64,52 +66,52 @@ vec3 hexcMxDecode(vec3 c)
 #line 77 "hexc/materialx.glsl"
 vec4 hexcMxDecoded(vec4 c, bool srgb)
 {
-    vec4 _1549;
+    vec4 _1561;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         vec3 param = c.xyz;
-        _1549 = vec4(hexcMxDecode(param), c.w);
+        _1561 = vec4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _1549 = c;
+        _1561 = c;
     }
-    return _1549;
+    return _1561;
 }
 
-#line 42 "hexc/generated"
+#line 58 "hexc/generated"
 vec4 hexcAt_splat0(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 42 "hexc/generated"
+#line 58 "hexc/generated"
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     vec3 param_3;
-    vec4 _1613 = hexcPlainColorGrad(param, param_1, param_2, param_3, hexcTex_splat0);
+    vec4 _1634 = hexcPlainColorGrad(param, param_1, param_2, param_3, hexcTex_splat0);
     weights = param_3;
-    vec4 param_4 = _1613;
+    vec4 param_4 = _1634;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 56 "hexc/generated"
+#line 72 "hexc/generated"
 void hexcLayerKeep(inout float w[8], float skip)
 {
-#line 56 "hexc/generated"
+#line 72 "hexc/generated"
     float sum = 0.0;
-    float _1635;
+    float _1656;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _1635 = w[i];
+            _1656 = w[i];
         }
         else
         {
-            _1635 = 0.0;
+            _1656 = 0.0;
         }
-        w[i] = _1635;
+        w[i] = _1656;
         sum += w[i];
     }
     if (sum <= 0.0)
@@ -121,48 +123,6 @@ void hexcLayerKeep(inout float w[8], float skip)
     {
         w[i_1] /= sum;
     }
-}
-
-#line 86 "hexc/generated"
-void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
-{
-#line 86 "hexc/generated"
-    for (int i = 0; i < 8; i++)
-    {
-        w[i] = 0.0;
-    }
-    vec2 param = st * hexcParams.splat0_tiling;
-    vec2 param_1 = dx * hexcParams.splat0_tiling;
-    vec2 param_2 = dy * hexcParams.splat0_tiling;
-    ivec2 param_3 = ivec2(0);
-    vec3 param_4;
-    vec4 _1705 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
-    vec3 t = param_4;
-    vec4 splat0 = _1705;
-    w[0] = splat0.x * clamp(hexcVertexColor.x, 0.0, 1.0);
-    w[1] = splat0.y * clamp(hexcVertexColor.y, 0.0, 1.0);
-    float param_5[8] = w;
-    float param_6 = 0.0019607841968536376953125;
-    hexcLayerKeep(param_5, param_6);
-    w = param_5;
-}
-
-#line 98 "hexc/generated"
-void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8])
-{
-#line 98 "hexc/generated"
-    if ((!hexcLayersFilled) || any(notEqual(st, hexcLayersSt)))
-    {
-        vec2 param = st;
-        vec2 param_1 = dx;
-        vec2 param_2 = dy;
-        float param_3[8];
-        hexcLayerFill(param, param_1, param_2, param_3);
-        hexcLayersW = param_3;
-        hexcLayersFilled = true;
-        hexcLayersSt = st;
-    }
-    w = hexcLayersW;
 }
 
 #line 55 "hexc/hextiling.glsl"
@@ -220,26 +180,26 @@ vec2 hexcCosSin(float angle)
     float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
     float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
     int q = int(k) & 3;
-    vec2 _433;
+    vec2 _445;
     if ((q & 1) != 0)
     {
-        _433 = vec2(-s, c);
+        _445 = vec2(-s, c);
     }
     else
     {
-        _433 = vec2(c, s);
+        _445 = vec2(c, s);
     }
-    vec2 cs = _433;
-    vec2 _448;
+    vec2 cs = _445;
+    vec2 _460;
     if ((q & 2) != 0)
     {
-        _448 = -cs;
+        _460 = -cs;
     }
     else
     {
-        _448 = cs;
+        _460 = cs;
     }
-    return _448;
+    return _460;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -247,22 +207,22 @@ void hexcStableTile_rock_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out
 {
 #line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _657 = hexcPcg3d(param);
-    vec3 u = vec3(_657 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _669 = hexcPcg3d(param);
+    vec3 u = vec3(_669 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.rock_albedo_rotation;
     invScale = 1.0;
-    vec2 _680;
+    vec2 _692;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _680 = hexcCosSin(param_1);
+        _692 = hexcCosSin(param_1);
     }
     else
     {
-        _680 = vec2(cos(angle), sin(angle));
+        _692 = vec2(cos(angle), sin(angle));
     }
-    rot = _680;
+    rot = _692;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -298,16 +258,16 @@ HexcTap hexcPlaceTile_rock_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dST
     p.invScale = param_4;
     vec2 param_5 = d;
     HexcTap param_6 = p;
-    vec2 _802 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_802 + c) + offset;
+    vec2 _814 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_814 + c) + offset;
     vec2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    vec2 _812 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _812;
+    vec2 _824 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _824;
     vec2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    vec2 _818 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _818;
+    vec2 _830 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _830;
     return p;
 }
 
@@ -333,36 +293,36 @@ ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _474;
+    int _486;
     if ((d < 0) && (a != 0))
     {
-        _474 = 3 - a;
+        _486 = 3 - a;
     }
     else
     {
-        _474 = a;
+        _486 = a;
     }
-    int i1 = _474;
-    int _485;
+    int i1 = _486;
+    int _497;
     if (i1 < 2)
     {
-        _485 = i1 + 1;
+        _497 = i1 + 1;
     }
     else
     {
-        _485 = 0;
+        _497 = 0;
     }
-    int vh = _485;
-    int _495;
+    int vh = _497;
+    int _507;
     if (i1 > 0)
     {
-        _495 = i1 - 1;
+        _507 = i1 - 1;
     }
     else
     {
-        _495 = 2;
+        _507 = 2;
     }
-    int vl = _495;
+    int vl = _507;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -391,31 +351,231 @@ HexcTiles hexcTilesStable_rock_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cel
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _997 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1009 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _997;
+    t.tap[0] = _1009;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _1013 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1025 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1013;
+    t.tap[1] = _1025;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _1029 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1041 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1029;
+    t.tap[2] = _1041;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
+}
+
+#line 24 "hexc/generated"
+HexcTiles hexcLayerTiles0(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
+{
+#line 24 "hexc/generated"
+    vec2 param = st;
+    vec2 param_1 = dx;
+    vec2 param_2 = dy;
+    ivec2 param_3 = cell;
+    return hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_tiles_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
+    uvec3 param = uvec3(uvec2(id), 0u);
+    uvec3 _712 = hexcPcg3d(param);
+    vec3 u = vec3(_712 >> uvec3(8u)) * 5.9604644775390625e-08;
+    offset = u.xy;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.tiles_albedo_rotation;
+    invScale = 1.0;
+    vec2 _729;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _729 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _729 = vec2(cos(angle), sin(angle));
+    }
+    rot = _729;
+}
+
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_tiles_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
+{
+#line 276 "hexc/hextiling.glsl"
+    ivec2 param = id;
+    bool param_1 = aboutOrigin;
+    vec2 param_2;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _854 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_854 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _864 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _864;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _870 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _870;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_tiles_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = ivec2(uvec2(local) + shift);
+    ivec2 param = local;
+    ivec2 param_1 = local;
+    ivec2 param_2 = id;
+    vec2 param_3 = r - hexcStableCentre(param);
+    vec2 param_4 = hexcStableCentreInPeriod(param_1);
+    vec2 param_5 = dSTdx;
+    vec2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+}
+
+#line 295 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_tiles_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = false;
+    float kx = floor(st.x / 28.0);
+    float ky = floor(st.y);
+    vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
+    vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
+    vec3 param_1;
+    ivec2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    ivec2 local[3] = param_2;
+    uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
+    uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
+    ivec2 param_3 = local[0];
+    uvec2 param_4 = shift;
+    vec2 param_5 = r;
+    vec2 param_6 = dSTdx;
+    vec2 param_7 = dSTdy;
+    ivec2 param_8;
+    HexcTap _1136 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _1136;
+    ivec2 param_9 = local[1];
+    uvec2 param_10 = shift;
+    vec2 param_11 = r;
+    vec2 param_12 = dSTdx;
+    vec2 param_13 = dSTdy;
+    ivec2 param_14;
+    HexcTap _1152 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _1152;
+    ivec2 param_15 = local[2];
+    uvec2 param_16 = shift;
+    vec2 param_17 = r;
+    vec2 param_18 = dSTdx;
+    vec2 param_19 = dSTdy;
+    ivec2 param_20;
+    HexcTap _1168 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _1168;
+    ivec2 param_21 = t.id[0];
+    ivec2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 32 "hexc/generated"
+HexcTiles hexcLayerTiles1(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
+{
+#line 32 "hexc/generated"
+    vec2 param = st;
+    vec2 param_1 = dx;
+    vec2 param_2 = dy;
+    ivec2 param_3 = cell;
+    return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
+}
+
+#line 102 "hexc/generated"
+void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
+{
+#line 102 "hexc/generated"
+    for (int i = 0; i < 8; i++)
+    {
+        w[i] = 0.0;
+    }
+    vec2 param = st * hexcParams.splat0_tiling;
+    vec2 param_1 = dx * hexcParams.splat0_tiling;
+    vec2 param_2 = dy * hexcParams.splat0_tiling;
+    ivec2 param_3 = ivec2(0);
+    vec3 param_4;
+    vec4 _1726 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
+    vec3 t = param_4;
+    vec4 splat0 = _1726;
+    w[0] = splat0.x * clamp(hexcVertexColor.x, 0.0, 1.0);
+    w[1] = splat0.y * clamp(hexcVertexColor.y, 0.0, 1.0);
+    float param_5[8] = w;
+    float param_6 = 0.0019607841968536376953125;
+    hexcLayerKeep(param_5, param_6);
+    w = param_5;
+    if (w[0] > 0.0)
+    {
+        vec2 param_7 = st * hexcParams.rock_albedo_tiling;
+        vec2 param_8 = dx * hexcParams.rock_albedo_tiling;
+        vec2 param_9 = dy * hexcParams.rock_albedo_tiling;
+        ivec2 param_10 = ivec2(0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10);
+    }
+    if (w[1] > 0.0)
+    {
+        vec2 param_11 = st * hexcParams.tiles_albedo_tiling;
+        vec2 param_12 = dx * hexcParams.tiles_albedo_tiling;
+        vec2 param_13 = dy * hexcParams.tiles_albedo_tiling;
+        ivec2 param_14 = ivec2(0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14);
+    }
+}
+
+#line 116 "hexc/generated"
+void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8])
+{
+#line 116 "hexc/generated"
+    if ((!hexcLayersFilled) || any(notEqual(st, hexcLayersSt)))
+    {
+        vec2 param = st;
+        vec2 param_1 = dx;
+        vec2 param_2 = dy;
+        float param_3[8];
+        hexcLayerFill(param, param_1, param_2, param_3);
+        hexcLayersW = param_3;
+        hexcLayersFilled = true;
+        hexcLayersSt = st;
+    }
+    w = hexcLayersW;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -503,20 +663,20 @@ vec3 hexcBlendWeights_rock_albedo(vec3 w, vec3 M)
 #line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1250 = hexcPowInt(param, param_1);
-    vec3 wg = _1250;
+    vec3 _1262 = hexcPowInt(param, param_1);
+    vec3 wg = _1262;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1266;
+    vec3 _1278;
     if (sum > 0.0)
     {
-        _1266 = W / vec3(sum);
+        _1278 = W / vec3(sum);
     }
     else
     {
-        _1266 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1278 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1266;
+    W = _1278;
     return W;
 }
 
@@ -549,140 +709,16 @@ vec4 hexcColor_rock_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2DAr
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 23 "hexc/generated"
+#line 39 "hexc/generated"
 vec4 hexcAt_rock_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 23 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
-    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_6;
-    vec4 _1585 = hexcColor_rock_albedo(param_4, param_5, param_6, hexcArr_albedo);
-    weights = param_6;
-    return _1585;
-}
-
-#line 229 "hexc/hextiling.glsl"
-void hexcStableTile_tiles_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
-{
-#line 229 "hexc/hextiling.glsl"
-    uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _700 = hexcPcg3d(param);
-    vec3 u = vec3(_700 >> uvec3(8u)) * 5.9604644775390625e-08;
-    offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.tiles_albedo_rotation;
-    invScale = 1.0;
-    vec2 _717;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _717 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _717 = vec2(cos(angle), sin(angle));
-    }
-    rot = _717;
-}
-
-#line 276 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_tiles_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
-{
-#line 276 "hexc/hextiling.glsl"
-    ivec2 param = id;
-    bool param_1 = aboutOrigin;
-    vec2 param_2;
-    vec2 param_3;
-    float param_4;
-    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4);
-    vec2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    vec2 param_5 = d;
-    HexcTap param_6 = p;
-    vec2 _842 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_842 + c) + offset;
-    vec2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    vec2 _852 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _852;
-    vec2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    vec2 _858 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _858;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_tiles_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = ivec2(uvec2(local) + shift);
-    ivec2 param = local;
-    ivec2 param_1 = local;
-    ivec2 param_2 = id;
-    vec2 param_3 = r - hexcStableCentre(param);
-    vec2 param_4 = hexcStableCentreInPeriod(param_1);
-    vec2 param_5 = dSTdx;
-    vec2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
-}
-
-#line 295 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_tiles_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = false;
-    float kx = floor(st.x / 28.0);
-    float ky = floor(st.y);
-    vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
-    vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
-    vec3 param_1;
-    ivec2 param_2[3];
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    ivec2 local[3] = param_2;
-    uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
-    uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
-    ivec2 param_3 = local[0];
-    uvec2 param_4 = shift;
-    vec2 param_5 = r;
-    vec2 param_6 = dSTdx;
-    vec2 param_7 = dSTdy;
-    ivec2 param_8;
-    HexcTap _1124 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
-    t.id[0] = param_8;
-    t.tap[0] = _1124;
-    ivec2 param_9 = local[1];
-    uvec2 param_10 = shift;
-    vec2 param_11 = r;
-    vec2 param_12 = dSTdx;
-    vec2 param_13 = dSTdy;
-    ivec2 param_14;
-    HexcTap _1140 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
-    t.id[1] = param_14;
-    t.tap[1] = _1140;
-    ivec2 param_15 = local[2];
-    uvec2 param_16 = shift;
-    vec2 param_17 = r;
-    vec2 param_18 = dSTdx;
-    vec2 param_19 = dSTdy;
-    ivec2 param_20;
-    HexcTap _1156 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
-    t.id[2] = param_20;
-    t.tap[2] = _1156;
-    ivec2 param_21 = t.id[0];
-    ivec2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 39 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_2;
+    vec4 _1613 = hexcColor_rock_albedo(param, param_1, param_2, hexcArr_albedo);
+    weights = param_2;
+    return _1613;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -739,26 +775,22 @@ vec4 hexcColor_tiles_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2DA
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 32 "hexc/generated"
+#line 48 "hexc/generated"
 vec4 hexcAt_tiles_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 32 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
-    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_6;
-    vec4 _1601 = hexcColor_tiles_albedo(param_4, param_5, param_6, hexcArr_albedo);
-    weights = param_6;
-    return _1601;
+#line 48 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_2;
+    vec4 _1622 = hexcColor_tiles_albedo(param, param_1, param_2, hexcArr_albedo);
+    weights = param_2;
+    return _1622;
 }
 
-#line 108 "hexc/generated"
+#line 126 "hexc/generated"
 vec4 hexc_albedo(vec2 uv, inout vec3 weights)
 {
-#line 108 "hexc/generated"
+#line 126 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -778,9 +810,9 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_6 = dy * hexcParams.rock_albedo_tiling;
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        vec4 _1799 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8);
+        vec4 _1864 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_1799 * w[0]);
+        value += (_1864 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -790,33 +822,33 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_11 = dy * hexcParams.tiles_albedo_tiling;
         ivec2 param_12 = ivec2(0);
         vec3 param_13;
-        vec4 _1834 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13);
+        vec4 _1899 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_1834 * w[1]);
+        value += (_1899 * w[1]);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 125 "hexc/generated"
+#line 143 "hexc/generated"
 vec4 hexc_albedo(vec2 uv)
 {
-#line 125 "hexc/generated"
+#line 143 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _1852 = hexc_albedo(param, param_1);
+    vec4 _1917 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _1852;
+    return _1917;
 }
 
-#line 94 "hexc/generated"
+#line 112 "hexc/generated"
 void main()
 {
-#line 94 "hexc/generated"
+#line 112 "hexc/generated"
     hexcLayersFilled = false;
     vec2 param = v_uv;
-    vec4 _1861 = hexc_albedo(param);
-    vec3 albedo = _1861.xyz;
+    vec4 _1926 = hexc_albedo(param);
+    vec3 albedo = _1926.xyz;
     float roughness = 0.5;
     vec3 N = normalize(v_normal);
     float diffuse = max(dot(N, vec3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);

@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _1333[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _1345[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -57,6 +57,8 @@ struct SPIRV_Cross_Output
 };
 
 static bool hexcLayersFilled;
+static HexcTiles hexcLatticeTiles0;
+static HexcTiles hexcLatticeTiles1;
 static float2 hexcLayersSt;
 static float hexcLayersW[8];
 
@@ -72,61 +74,61 @@ float4 hexcPlainColorGrad(Texture2D<float4> tex, SamplerState samp, float2 st, f
 float3 hexcMxDecode(float3 c)
 {
 #line 72 "hexc/materialx.glsl"
-    float3 _1529 = c / 12.9200000762939453125f.xxx;
-    float3 _1540 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
-    bool3 _1544 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
-    return float3(_1544.x ? _1540.x : _1529.x, _1544.y ? _1540.y : _1529.y, _1544.z ? _1540.z : _1529.z);
+    float3 _1541 = c / 12.9200000762939453125f.xxx;
+    float3 _1552 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
+    bool3 _1556 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
+    return float3(_1556.x ? _1552.x : _1541.x, _1556.y ? _1552.y : _1541.y, _1556.z ? _1552.z : _1541.z);
 }
 
 #line 77 "hexc/materialx.glsl"
 float4 hexcMxDecoded(float4 c, bool srgb)
 {
-    float4 _1549;
+    float4 _1561;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _1549 = float4(hexcMxDecode(param), c.w);
+        _1561 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _1549 = c;
+        _1561 = c;
     }
-    return _1549;
+    return _1561;
 }
 
-#line 42 "hexc/generated"
+#line 58 "hexc/generated"
 float4 hexcAt_splat0(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 42 "hexc/generated"
+#line 58 "hexc/generated"
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     float3 param_3;
-    float4 _1613 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
+    float4 _1634 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
     weights = param_3;
-    float4 param_4 = _1613;
+    float4 param_4 = _1634;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 56 "hexc/generated"
+#line 72 "hexc/generated"
 void hexcLayerKeep(inout float w[8], float skip)
 {
-#line 56 "hexc/generated"
+#line 72 "hexc/generated"
     float sum = 0.0f;
-    float _1635;
+    float _1656;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _1635 = w[i];
+            _1656 = w[i];
         }
         else
         {
-            _1635 = 0.0f;
+            _1656 = 0.0f;
         }
-        w[i] = _1635;
+        w[i] = _1656;
         sum += w[i];
     }
     if (sum <= 0.0f)
@@ -138,48 +140,6 @@ void hexcLayerKeep(inout float w[8], float skip)
     {
         w[i_1] /= sum;
     }
-}
-
-#line 86 "hexc/generated"
-void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
-{
-#line 86 "hexc/generated"
-    for (int i = 0; i < 8; i++)
-    {
-        w[i] = 0.0f;
-    }
-    float2 param = st * hexcParams_splat0_tiling;
-    float2 param_1 = dx * hexcParams_splat0_tiling;
-    float2 param_2 = dy * hexcParams_splat0_tiling;
-    int2 param_3 = int2(0, 0);
-    float3 param_4;
-    float4 _1705 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
-    float3 t = param_4;
-    float4 splat0 = _1705;
-    w[0] = splat0.x * clamp(hexcVertexColor.x, 0.0f, 1.0f);
-    w[1] = splat0.y * clamp(hexcVertexColor.y, 0.0f, 1.0f);
-    float param_5[8] = w;
-    float param_6 = 0.0019607841968536376953125f;
-    hexcLayerKeep(param_5, param_6);
-    w = param_5;
-}
-
-#line 98 "hexc/generated"
-void hexcLayerWeights(float2 st, float2 dx, float2 dy, out float w[8])
-{
-#line 98 "hexc/generated"
-    if ((!hexcLayersFilled) || any(bool2(st.x != hexcLayersSt.x, st.y != hexcLayersSt.y)))
-    {
-        float2 param = st;
-        float2 param_1 = dx;
-        float2 param_2 = dy;
-        float param_3[8];
-        hexcLayerFill(param, param_1, param_2, param_3);
-        hexcLayersW = param_3;
-        hexcLayersFilled = true;
-        hexcLayersSt = st;
-    }
-    w = hexcLayersW;
 }
 
 #line 55 "hexc/hextiling.glsl"
@@ -237,26 +197,26 @@ float2 hexcCosSin(float angle)
     float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
     float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
     int q = int(k) & 3;
-    float2 _433;
+    float2 _445;
     if ((q & 1) != 0)
     {
-        _433 = float2(-s, c);
+        _445 = float2(-s, c);
     }
     else
     {
-        _433 = float2(c, s);
+        _445 = float2(c, s);
     }
-    float2 cs = _433;
-    float2 _448;
+    float2 cs = _445;
+    float2 _460;
     if ((q & 2) != 0)
     {
-        _448 = -cs;
+        _460 = -cs;
     }
     else
     {
-        _448 = cs;
+        _460 = cs;
     }
-    return _448;
+    return _460;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -264,22 +224,22 @@ void hexcStableTile_rock_albedo(int2 id, bool aboutOrigin, out float2 offset, ou
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _657 = hexcPcg3d(param);
-    float3 u = float3(_657 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _669 = hexcPcg3d(param);
+    float3 u = float3(_669 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_rock_albedo_rotation;
     invScale = 1.0f;
-    float2 _680;
+    float2 _692;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _680 = hexcCosSin(param_1);
+        _692 = hexcCosSin(param_1);
     }
     else
     {
-        _680 = float2(cos(angle), sin(angle));
+        _692 = float2(cos(angle), sin(angle));
     }
-    rot = _680;
+    rot = _692;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -315,16 +275,16 @@ HexcTap hexcPlaceTile_rock_albedo(int2 id, float2 d, float2 c, float2 dSTdx, flo
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _802 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_802 + c) + offset;
+    float2 _814 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_814 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _812 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _812;
+    float2 _824 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _824;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _818 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _818;
+    float2 _830 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _830;
     return p;
 }
 
@@ -350,36 +310,36 @@ int3 hexcHexChannels(int2 v1, int2 v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _474;
+    int _486;
     if ((d < 0) && (a != 0))
     {
-        _474 = 3 - a;
+        _486 = 3 - a;
     }
     else
     {
-        _474 = a;
+        _486 = a;
     }
-    int i1 = _474;
-    int _485;
+    int i1 = _486;
+    int _497;
     if (i1 < 2)
     {
-        _485 = i1 + 1;
+        _497 = i1 + 1;
     }
     else
     {
-        _485 = 0;
+        _497 = 0;
     }
-    int vh = _485;
-    int _495;
+    int vh = _497;
+    int _507;
     if (i1 > 0)
     {
-        _495 = i1 - 1;
+        _507 = i1 - 1;
     }
     else
     {
-        _495 = 2;
+        _507 = 2;
     }
-    int vl = _495;
+    int vl = _507;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -408,31 +368,231 @@ HexcTiles hexcTilesStable_rock_albedo(float2 st, float2 dSTdx, float2 dSTdy, int
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _997 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1009 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _997;
+    t.tap[0] = _1009;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1013 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1025 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1013;
+    t.tap[1] = _1025;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1029 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1041 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1029;
+    t.tap[2] = _1041;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
+}
+
+#line 24 "hexc/generated"
+HexcTiles hexcLayerTiles0(float2 st, float2 dx, float2 dy, int2 cell)
+{
+#line 24 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_tiles_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
+    uint3 param = uint3(uint2(id), 0u);
+    uint3 _712 = hexcPcg3d(param);
+    float3 u = float3(_712 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    offset = u.xy;
+    float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_tiles_albedo_rotation;
+    invScale = 1.0f;
+    float2 _729;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _729 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _729 = float2(cos(angle), sin(angle));
+    }
+    rot = _729;
+}
+
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_tiles_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
+{
+#line 276 "hexc/hextiling.glsl"
+    int2 param = id;
+    bool param_1 = aboutOrigin;
+    float2 param_2;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _854 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_854 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _864 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _864;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _870 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _870;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_tiles_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = int2(uint2(local) + shift);
+    int2 param = local;
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+}
+
+#line 295 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_tiles_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = false;
+    float kx = floor(st.x / 28.0f);
+    float ky = floor(st.y);
+    float2 r = float2(st.x - (28.0f * kx), st.y - ky);
+    float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
+    float3 param_1;
+    int2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    int2 local[3] = param_2;
+    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
+    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
+    int2 param_3 = local[0];
+    uint2 param_4 = shift;
+    float2 param_5 = r;
+    float2 param_6 = dSTdx;
+    float2 param_7 = dSTdy;
+    int2 param_8;
+    HexcTap _1136 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _1136;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _1152 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _1152;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _1168 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _1168;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 32 "hexc/generated"
+HexcTiles hexcLayerTiles1(float2 st, float2 dx, float2 dy, int2 cell)
+{
+#line 32 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
+}
+
+#line 102 "hexc/generated"
+void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
+{
+#line 102 "hexc/generated"
+    for (int i = 0; i < 8; i++)
+    {
+        w[i] = 0.0f;
+    }
+    float2 param = st * hexcParams_splat0_tiling;
+    float2 param_1 = dx * hexcParams_splat0_tiling;
+    float2 param_2 = dy * hexcParams_splat0_tiling;
+    int2 param_3 = int2(0, 0);
+    float3 param_4;
+    float4 _1726 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
+    float3 t = param_4;
+    float4 splat0 = _1726;
+    w[0] = splat0.x * clamp(hexcVertexColor.x, 0.0f, 1.0f);
+    w[1] = splat0.y * clamp(hexcVertexColor.y, 0.0f, 1.0f);
+    float param_5[8] = w;
+    float param_6 = 0.0019607841968536376953125f;
+    hexcLayerKeep(param_5, param_6);
+    w = param_5;
+    if (w[0] > 0.0f)
+    {
+        float2 param_7 = st * hexcParams_rock_albedo_tiling;
+        float2 param_8 = dx * hexcParams_rock_albedo_tiling;
+        float2 param_9 = dy * hexcParams_rock_albedo_tiling;
+        int2 param_10 = int2(0, 0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10);
+    }
+    if (w[1] > 0.0f)
+    {
+        float2 param_11 = st * hexcParams_tiles_albedo_tiling;
+        float2 param_12 = dx * hexcParams_tiles_albedo_tiling;
+        float2 param_13 = dy * hexcParams_tiles_albedo_tiling;
+        int2 param_14 = int2(0, 0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14);
+    }
+}
+
+#line 116 "hexc/generated"
+void hexcLayerWeights(float2 st, float2 dx, float2 dy, out float w[8])
+{
+#line 116 "hexc/generated"
+    if ((!hexcLayersFilled) || any(bool2(st.x != hexcLayersSt.x, st.y != hexcLayersSt.y)))
+    {
+        float2 param = st;
+        float2 param_1 = dx;
+        float2 param_2 = dy;
+        float param_3[8];
+        hexcLayerFill(param, param_1, param_2, param_3);
+        hexcLayersW = param_3;
+        hexcLayersFilled = true;
+        hexcLayersSt = st;
+    }
+    w = hexcLayersW;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -463,7 +623,7 @@ void hexcFetchTaps_rock_albedo(Texture2DArray<float4> tex, SamplerState samp, He
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_rock_albedo(tex, samp, param);
-    c = _1333;
+    c = _1345;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_rock_albedo(tex, samp, param_1, param_2);
@@ -520,20 +680,20 @@ float3 hexcBlendWeights_rock_albedo(float3 w, float3 M)
 #line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1250 = hexcPowInt(param, param_1);
-    float3 wg = _1250;
+    float3 _1262 = hexcPowInt(param, param_1);
+    float3 wg = _1262;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1266;
+    float3 _1278;
     if (sum > 0.0f)
     {
-        _1266 = W / sum.xxx;
+        _1278 = W / sum.xxx;
     }
     else
     {
-        _1266 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1278 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1266;
+    W = _1278;
     return W;
 }
 
@@ -541,10 +701,10 @@ float3 hexcBlendWeights_rock_albedo(float3 w, float3 M)
 float3 hexcShowWeights(float3 W, int3 channel)
 {
 #line 125 "hexc/hextiling.glsl"
-    int3 _527 = channel.x.xxx;
-    int3 _537 = channel.y.xxx;
-    int3 _546 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _527.x, int3(0, 1, 2).y == _527.y, int3(0, 1, 2).z == _527.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _537.x, int3(0, 1, 2).y == _537.y, int3(0, 1, 2).z == _537.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _546.x, int3(0, 1, 2).y == _546.y, int3(0, 1, 2).z == _546.z)) * W.z);
+    int3 _539 = channel.x.xxx;
+    int3 _549 = channel.y.xxx;
+    int3 _558 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _539.x, int3(0, 1, 2).y == _539.y, int3(0, 1, 2).z == _539.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _549.x, int3(0, 1, 2).y == _549.y, int3(0, 1, 2).z == _549.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _558.x, int3(0, 1, 2).y == _558.y, int3(0, 1, 2).z == _558.z)) * W.z);
 }
 
 #line 577 "hexc/hextiling.glsl"
@@ -569,140 +729,16 @@ float4 hexcColor_rock_albedo(Texture2DArray<float4> tex, SamplerState samp, Hexc
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 23 "hexc/generated"
+#line 39 "hexc/generated"
 float4 hexcAt_rock_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 23 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3);
-    float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
-    float3 param_6;
-    float4 _1585 = hexcColor_rock_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6);
-    weights = param_6;
-    return _1585;
-}
-
-#line 229 "hexc/hextiling.glsl"
-void hexcStableTile_tiles_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
-{
-#line 229 "hexc/hextiling.glsl"
-    uint3 param = uint3(uint2(id), 0u);
-    uint3 _700 = hexcPcg3d(param);
-    float3 u = float3(_700 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
-    offset = u.xy;
-    float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_tiles_albedo_rotation;
-    invScale = 1.0f;
-    float2 _717;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _717 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _717 = float2(cos(angle), sin(angle));
-    }
-    rot = _717;
-}
-
-#line 276 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_tiles_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
-{
-#line 276 "hexc/hextiling.glsl"
-    int2 param = id;
-    bool param_1 = aboutOrigin;
-    float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4);
-    float2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _842 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_842 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _852 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _852;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _858 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _858;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_tiles_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = int2(uint2(local) + shift);
-    int2 param = local;
-    int2 param_1 = local;
-    int2 param_2 = id;
-    float2 param_3 = r - hexcStableCentre(param);
-    float2 param_4 = hexcStableCentreInPeriod(param_1);
-    float2 param_5 = dSTdx;
-    float2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
-}
-
-#line 295 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_tiles_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = false;
-    float kx = floor(st.x / 28.0f);
-    float ky = floor(st.y);
-    float2 r = float2(st.x - (28.0f * kx), st.y - ky);
-    float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
-    float3 param_1;
-    int2 param_2[3];
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    int2 local[3] = param_2;
-    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-    int2 param_3 = local[0];
-    uint2 param_4 = shift;
-    float2 param_5 = r;
-    float2 param_6 = dSTdx;
-    float2 param_7 = dSTdy;
-    int2 param_8;
-    HexcTap _1124 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
-    t.id[0] = param_8;
-    t.tap[0] = _1124;
-    int2 param_9 = local[1];
-    uint2 param_10 = shift;
-    float2 param_11 = r;
-    float2 param_12 = dSTdx;
-    float2 param_13 = dSTdy;
-    int2 param_14;
-    HexcTap _1140 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
-    t.id[1] = param_14;
-    t.tap[1] = _1140;
-    int2 param_15 = local[2];
-    uint2 param_16 = shift;
-    float2 param_17 = r;
-    float2 param_18 = dSTdx;
-    float2 param_19 = dSTdy;
-    int2 param_20;
-    HexcTap _1156 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
-    t.id[2] = param_20;
-    t.tap[2] = _1156;
-    int2 param_21 = t.id[0];
-    int2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 39 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
+    float3 param_2;
+    float4 _1613 = hexcColor_rock_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    weights = param_2;
+    return _1613;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -718,7 +754,7 @@ void hexcFetchTaps_tiles_albedo(Texture2DArray<float4> tex, SamplerState samp, H
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_rock_albedo(tex, samp, param);
-    c = _1333;
+    c = _1345;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_tiles_albedo(tex, samp, param_1, param_2);
@@ -759,26 +795,22 @@ float4 hexcColor_tiles_albedo(Texture2DArray<float4> tex, SamplerState samp, Hex
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 32 "hexc/generated"
+#line 48 "hexc/generated"
 float4 hexcAt_tiles_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 32 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
-    float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
-    float3 param_6;
-    float4 _1601 = hexcColor_tiles_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6);
-    weights = param_6;
-    return _1601;
+#line 48 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
+    float3 param_2;
+    float4 _1622 = hexcColor_tiles_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    weights = param_2;
+    return _1622;
 }
 
-#line 108 "hexc/generated"
+#line 126 "hexc/generated"
 float4 hexc_albedo(float2 uv, inout float3 weights)
 {
-#line 108 "hexc/generated"
+#line 126 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -798,9 +830,9 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_6 = dy * hexcParams_rock_albedo_tiling;
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float4 _1799 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8);
+        float4 _1864 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_1799 * w[0]);
+        value += (_1864 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0f)
@@ -810,33 +842,33 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_11 = dy * hexcParams_tiles_albedo_tiling;
         int2 param_12 = int2(0, 0);
         float3 param_13;
-        float4 _1834 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13);
+        float4 _1899 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_1834 * w[1]);
+        value += (_1899 * w[1]);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 125 "hexc/generated"
+#line 143 "hexc/generated"
 float4 hexc_albedo(float2 uv)
 {
-#line 125 "hexc/generated"
+#line 143 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1852 = hexc_albedo(param, param_1);
+    float4 _1917 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _1852;
+    return _1917;
 }
 
-#line 94 "hexc/generated"
+#line 112 "hexc/generated"
 void frag_main()
 {
-#line 94 "hexc/generated"
+#line 112 "hexc/generated"
     hexcLayersFilled = false;
     float2 param = v_uv;
-    float4 _1861 = hexc_albedo(param);
-    float3 albedo = _1861.xyz;
+    float4 _1926 = hexc_albedo(param);
+    float3 albedo = _1926.xyz;
     float roughness = 0.5f;
     float3 N = normalize(v_normal);
     float diffuse = max(dot(N, float3(0.408248007297515869140625f, 0.408248007297515869140625f, 0.816497027873992919921875f)), 0.0f);

@@ -77,7 +77,7 @@ struct HexcParams
     float tiles_albedo_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1333 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _1345 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct layers_vertex_frag_out
 {
@@ -112,54 +112,54 @@ float3 hexcMxDecode(thread const float3& c)
 static inline __attribute__((always_inline))
 float4 hexcMxDecoded(thread const float4& c, thread const bool& srgb)
 {
-    float4 _1549;
+    float4 _1561;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _1549 = float4(hexcMxDecode(param), c.w);
+        _1561 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _1549 = c;
+        _1561 = c;
     }
-    return _1549;
+    return _1561;
 }
 
-#line 42 "hexc/generated"
+#line 58 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexcAt_splat0(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, sampler hexcSampler, texture2d<float> hexcTex_splat0)
 {
-#line 42 "hexc/generated"
+#line 58 "hexc/generated"
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     float3 param_3;
-    float4 _1613 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
+    float4 _1634 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
     weights = param_3;
-    float4 param_4 = _1613;
+    float4 param_4 = _1634;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 56 "hexc/generated"
+#line 72 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerKeep(thread spvUnsafeArray<float, 8>& w, thread const float& skip)
 {
-#line 56 "hexc/generated"
+#line 72 "hexc/generated"
     float sum = 0.0;
-    float _1635;
+    float _1656;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _1635 = w[i];
+            _1656 = w[i];
         }
         else
         {
-            _1635 = 0.0;
+            _1656 = 0.0;
         }
-        w[i] = _1635;
+        w[i] = _1656;
         sum += w[i];
     }
     if (sum <= 0.0)
@@ -171,51 +171,6 @@ void hexcLayerKeep(thread spvUnsafeArray<float, 8>& w, thread const float& skip)
     {
         w[i_1] /= sum;
     }
-}
-
-#line 86 "hexc/generated"
-static inline __attribute__((always_inline))
-void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor)
-{
-#line 86 "hexc/generated"
-    for (int i = 0; i < 8; i++)
-    {
-        w[i] = 0.0;
-    }
-    float2 param = st * hexcParams.splat0_tiling;
-    float2 param_1 = dx * hexcParams.splat0_tiling;
-    float2 param_2 = dy * hexcParams.splat0_tiling;
-    int2 param_3 = int2(0);
-    float3 param_4;
-    float4 _1705 = hexcAt_splat0(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_splat0);
-    float3 t = param_4;
-    float4 splat0 = _1705;
-    w[0] = splat0.x * fast::clamp(hexcVertexColor.x, 0.0, 1.0);
-    w[1] = splat0.y * fast::clamp(hexcVertexColor.y, 0.0, 1.0);
-    spvUnsafeArray<float, 8> param_5;
-    param_5 = w;
-    float param_6 = 0.0019607841968536376953125;
-    hexcLayerKeep(param_5, param_6);
-    w = param_5;
-}
-
-#line 98 "hexc/generated"
-static inline __attribute__((always_inline))
-void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
-{
-#line 98 "hexc/generated"
-    if ((!hexcLayersFilled) || any(st != hexcLayersSt))
-    {
-        float2 param = st;
-        float2 param_1 = dx;
-        float2 param_2 = dy;
-        spvUnsafeArray<float, 8> param_3;
-        hexcLayerFill(param, param_1, param_2, param_3, hexcParams, hexcSampler, hexcTex_splat0, hexcVertexColor);
-        hexcLayersW = param_3;
-        hexcLayersFilled = true;
-        hexcLayersSt = st;
-    }
-    w = hexcLayersW;
 }
 
 #line 55 "hexc/hextiling.glsl"
@@ -278,26 +233,26 @@ float2 hexcCosSin(thread const float& angle)
     float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
     float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
     int q = int(k) & 3;
-    float2 _433;
+    float2 _445;
     if ((q & 1) != 0)
     {
-        _433 = float2(-s, c);
+        _445 = float2(-s, c);
     }
     else
     {
-        _433 = float2(c, s);
+        _445 = float2(c, s);
     }
-    float2 cs = _433;
-    float2 _448;
+    float2 cs = _445;
+    float2 _460;
     if ((q & 2) != 0)
     {
-        _448 = -cs;
+        _460 = -cs;
     }
     else
     {
-        _448 = cs;
+        _460 = cs;
     }
-    return _448;
+    return _460;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -306,22 +261,22 @@ void hexcStableTile_rock_albedo(thread const int2& id, thread const bool& aboutO
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _657 = hexcPcg3d(param);
-    float3 u = float3(_657 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _669 = hexcPcg3d(param);
+    float3 u = float3(_669 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.rock_albedo_rotation;
     invScale = 1.0;
-    float2 _680;
+    float2 _692;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _680 = hexcCosSin(param_1);
+        _692 = hexcCosSin(param_1);
     }
     else
     {
-        _680 = float2(cos(angle), sin(angle));
+        _692 = float2(cos(angle), sin(angle));
     }
-    rot = _680;
+    rot = _692;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -360,16 +315,16 @@ HexcTap hexcPlaceTile_rock_albedo(thread const int2& id, thread const float2& d,
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _802 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_802 + c) + offset;
+    float2 _814 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_814 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _812 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _812;
+    float2 _824 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _824;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _818 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _818;
+    float2 _830 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _830;
     return p;
 }
 
@@ -397,36 +352,36 @@ int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _474;
+    int _486;
     if ((d < 0) && (a != 0))
     {
-        _474 = 3 - a;
+        _486 = 3 - a;
     }
     else
     {
-        _474 = a;
+        _486 = a;
     }
-    int i1 = _474;
-    int _485;
+    int i1 = _486;
+    int _497;
     if (i1 < 2)
     {
-        _485 = i1 + 1;
+        _497 = i1 + 1;
     }
     else
     {
-        _485 = 0;
+        _497 = 0;
     }
-    int vh = _485;
-    int _495;
+    int vh = _497;
+    int _507;
     if (i1 > 0)
     {
-        _495 = i1 - 1;
+        _507 = i1 - 1;
     }
     else
     {
-        _495 = 2;
+        _507 = 2;
     }
-    int vl = _495;
+    int vl = _507;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -457,31 +412,241 @@ HexcTiles hexcTilesStable_rock_albedo(thread const float2& st, thread const floa
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _997 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _1009 = hexcStableTap_rock_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _997;
+    t.tap[0] = _1009;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1013 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _1025 = hexcStableTap_rock_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _1013;
+    t.tap[1] = _1025;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1029 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _1041 = hexcStableTap_rock_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _1029;
+    t.tap[2] = _1041;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
+}
+
+#line 24 "hexc/generated"
+static inline __attribute__((always_inline))
+HexcTiles hexcLayerTiles0(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 24 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_rock_albedo(param, param_1, param_2, param_3, hexcParams);
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_tiles_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
+    uint3 param = uint3(uint2(id), 0u);
+    uint3 _712 = hexcPcg3d(param);
+    float3 u = float3(_712 >> uint3(8u)) * 5.9604644775390625e-08;
+    offset = u.xy;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.tiles_albedo_rotation;
+    invScale = 1.0;
+    float2 _729;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _729 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _729 = float2(cos(angle), sin(angle));
+    }
+    rot = _729;
+}
+
+#line 276 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTap hexcPlaceTile_tiles_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
+{
+#line 276 "hexc/hextiling.glsl"
+    int2 param = id;
+    bool param_1 = aboutOrigin;
+    float2 param_2;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _854 = hexcToTile_rock_albedo(param_5, param_6);
+    p.st = (_854 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _864 = hexcToTile_rock_albedo(param_7, param_8);
+    p.dx = _864;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _870 = hexcToTile_rock_albedo(param_9, param_10);
+    p.dy = _870;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTap hexcStableTap_tiles_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = int2(uint2(local) + shift);
+    int2 param = local;
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
+}
+
+#line 295 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTiles hexcTilesStable_tiles_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = short(false);
+    float kx = floor(st.x / 28.0);
+    float ky = floor(st.y);
+    float2 r = float2(st.x - (28.0 * kx), st.y - ky);
+    float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
+    float3 param_1;
+    spvUnsafeArray<int2, 3> param_2;
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    spvUnsafeArray<int2, 3> local;
+    local = param_2;
+    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
+    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
+    int2 param_3 = local[0];
+    uint2 param_4 = shift;
+    float2 param_5 = r;
+    float2 param_6 = dSTdx;
+    float2 param_7 = dSTdy;
+    int2 param_8;
+    HexcTap _1136 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    t.id[0] = param_8;
+    t.tap[0] = _1136;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _1152 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    t.id[1] = param_14;
+    t.tap[1] = _1152;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _1168 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    t.id[2] = param_20;
+    t.tap[2] = _1168;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 32 "hexc/generated"
+static inline __attribute__((always_inline))
+HexcTiles hexcLayerTiles1(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 32 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3, hexcParams);
+}
+
+#line 102 "hexc/generated"
+static inline __attribute__((always_inline))
+void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor)
+{
+#line 102 "hexc/generated"
+    for (int i = 0; i < 8; i++)
+    {
+        w[i] = 0.0;
+    }
+    float2 param = st * hexcParams.splat0_tiling;
+    float2 param_1 = dx * hexcParams.splat0_tiling;
+    float2 param_2 = dy * hexcParams.splat0_tiling;
+    int2 param_3 = int2(0);
+    float3 param_4;
+    float4 _1726 = hexcAt_splat0(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_splat0);
+    float3 t = param_4;
+    float4 splat0 = _1726;
+    w[0] = splat0.x * fast::clamp(hexcVertexColor.x, 0.0, 1.0);
+    w[1] = splat0.y * fast::clamp(hexcVertexColor.y, 0.0, 1.0);
+    spvUnsafeArray<float, 8> param_5;
+    param_5 = w;
+    float param_6 = 0.0019607841968536376953125;
+    hexcLayerKeep(param_5, param_6);
+    w = param_5;
+    if (w[0] > 0.0)
+    {
+        float2 param_7 = st * hexcParams.rock_albedo_tiling;
+        float2 param_8 = dx * hexcParams.rock_albedo_tiling;
+        float2 param_9 = dy * hexcParams.rock_albedo_tiling;
+        int2 param_10 = int2(0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10, hexcParams);
+    }
+    if (w[1] > 0.0)
+    {
+        float2 param_11 = st * hexcParams.tiles_albedo_tiling;
+        float2 param_12 = dx * hexcParams.tiles_albedo_tiling;
+        float2 param_13 = dy * hexcParams.tiles_albedo_tiling;
+        int2 param_14 = int2(0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14, hexcParams);
+    }
+}
+
+#line 116 "hexc/generated"
+static inline __attribute__((always_inline))
+void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+{
+#line 116 "hexc/generated"
+    if ((!hexcLayersFilled) || any(st != hexcLayersSt))
+    {
+        float2 param = st;
+        float2 param_1 = dx;
+        float2 param_2 = dy;
+        spvUnsafeArray<float, 8> param_3;
+        hexcLayerFill(param, param_1, param_2, param_3, hexcParams, hexcSampler, hexcLatticeTiles0, hexcLatticeTiles1, hexcTex_splat0, hexcVertexColor);
+        hexcLayersW = param_3;
+        hexcLayersFilled = true;
+        hexcLayersSt = st;
+    }
+    w = hexcLayersW;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -506,8 +671,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_rock_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1301 = float3(p.st, 0.0);
-    return tex.sample(samp, _1301.xy, uint(round(_1301.z)), gradient2d(p.dx, p.dy));
+    float3 _1313 = float3(p.st, 0.0);
+    return tex.sample(samp, _1313.xy, uint(round(_1313.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -517,7 +682,7 @@ void hexcFetchTaps_rock_albedo(texture2d_array<float> tex, sampler samp, thread 
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_rock_albedo(tex, samp, param);
-    c = _1333;
+    c = _1345;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_rock_albedo(tex, samp, param_1, param_2);
@@ -577,20 +742,20 @@ float3 hexcBlendWeights_rock_albedo(thread const float3& w, thread const float3&
 #line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1250 = hexcPowInt(param, param_1);
-    float3 wg = _1250;
+    float3 _1262 = hexcPowInt(param, param_1);
+    float3 wg = _1262;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1266;
+    float3 _1278;
     if (sum > 0.0)
     {
-        _1266 = W / float3(sum);
+        _1278 = W / float3(sum);
     }
     else
     {
-        _1266 = wg / float3((wg.x + wg.y) + wg.z);
+        _1278 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1266;
+    W = _1278;
     return W;
 }
 
@@ -626,146 +791,17 @@ float4 hexcColor_rock_albedo(texture2d_array<float> tex, sampler samp, thread co
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 23 "hexc/generated"
+#line 39 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexcAt_rock_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler)
+float4 hexcAt_rock_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0)
 {
-#line 23 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_rock_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_6;
-    float4 _1585 = hexcColor_rock_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6, hexcParams);
-    weights = param_6;
-    return _1585;
-}
-
-#line 229 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-void hexcStableTile_tiles_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
-{
-#line 229 "hexc/hextiling.glsl"
-    uint3 param = uint3(uint2(id), 0u);
-    uint3 _700 = hexcPcg3d(param);
-    float3 u = float3(_700 >> uint3(8u)) * 5.9604644775390625e-08;
-    offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.tiles_albedo_rotation;
-    invScale = 1.0;
-    float2 _717;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _717 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _717 = float2(cos(angle), sin(angle));
-    }
-    rot = _717;
-}
-
-#line 276 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_tiles_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
-{
-#line 276 "hexc/hextiling.glsl"
-    int2 param = id;
-    bool param_1 = aboutOrigin;
-    float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_tiles_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
-    float2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _842 = hexcToTile_rock_albedo(param_5, param_6);
-    p.st = (_842 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _852 = hexcToTile_rock_albedo(param_7, param_8);
-    p.dx = _852;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _858 = hexcToTile_rock_albedo(param_9, param_10);
-    p.dy = _858;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTap hexcStableTap_tiles_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = int2(uint2(local) + shift);
-    int2 param = local;
-    int2 param_1 = local;
-    int2 param_2 = id;
-    float2 param_3 = r - hexcStableCentre(param);
-    float2 param_4 = hexcStableCentreInPeriod(param_1);
-    float2 param_5 = dSTdx;
-    float2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_tiles_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
-}
-
-#line 295 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTiles hexcTilesStable_tiles_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = short(false);
-    float kx = floor(st.x / 28.0);
-    float ky = floor(st.y);
-    float2 r = float2(st.x - (28.0 * kx), st.y - ky);
-    float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
-    float3 param_1;
-    spvUnsafeArray<int2, 3> param_2;
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    spvUnsafeArray<int2, 3> local;
-    local = param_2;
-    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-    int2 param_3 = local[0];
-    uint2 param_4 = shift;
-    float2 param_5 = r;
-    float2 param_6 = dSTdx;
-    float2 param_7 = dSTdy;
-    int2 param_8;
-    HexcTap _1124 = hexcStableTap_tiles_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
-    t.id[0] = param_8;
-    t.tap[0] = _1124;
-    int2 param_9 = local[1];
-    uint2 param_10 = shift;
-    float2 param_11 = r;
-    float2 param_12 = dSTdx;
-    float2 param_13 = dSTdy;
-    int2 param_14;
-    HexcTap _1140 = hexcStableTap_tiles_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
-    t.id[1] = param_14;
-    t.tap[1] = _1140;
-    int2 param_15 = local[2];
-    uint2 param_16 = shift;
-    float2 param_17 = r;
-    float2 param_18 = dSTdx;
-    float2 param_19 = dSTdy;
-    int2 param_20;
-    HexcTap _1156 = hexcStableTap_tiles_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
-    t.id[2] = param_20;
-    t.tap[2] = _1156;
-    int2 param_21 = t.id[0];
-    int2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 39 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_2;
+    float4 _1613 = hexcColor_rock_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    weights = param_2;
+    return _1613;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -773,8 +809,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_tiles_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1316 = float3(p.st, 1.0);
-    return tex.sample(samp, _1316.xy, uint(round(_1316.z)), gradient2d(p.dx, p.dy));
+    float3 _1328 = float3(p.st, 1.0);
+    return tex.sample(samp, _1328.xy, uint(round(_1328.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -784,7 +820,7 @@ void hexcFetchTaps_tiles_albedo(texture2d_array<float> tex, sampler samp, thread
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_rock_albedo(tex, samp, param);
-    c = _1333;
+    c = _1345;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_tiles_albedo(tex, samp, param_1, param_2);
@@ -828,28 +864,24 @@ float4 hexcColor_tiles_albedo(texture2d_array<float> tex, sampler samp, thread c
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 32 "hexc/generated"
+#line 48 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexcAt_tiles_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler)
+float4 hexcAt_tiles_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles1)
 {
-#line 32 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_6;
-    float4 _1601 = hexcColor_tiles_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6, hexcParams);
-    weights = param_6;
-    return _1601;
+#line 48 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_2;
+    float4 _1622 = hexcColor_tiles_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    weights = param_2;
+    return _1622;
 }
 
-#line 108 "hexc/generated"
+#line 126 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 108 "hexc/generated"
+#line 126 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -857,7 +889,7 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
     float2 param_1 = dx;
     float2 param_2 = dy;
     spvUnsafeArray<float, 8> param_3;
-    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcTex_splat0, hexcVertexColor, hexcLayersSt, hexcLayersW);
+    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcLatticeTiles1, hexcTex_splat0, hexcVertexColor, hexcLayersSt, hexcLayersW);
     spvUnsafeArray<float, 8> w;
     w = param_3;
     float4 value = float4(0.0);
@@ -870,9 +902,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_6 = dy * hexcParams.rock_albedo_tiling;
         int2 param_7 = int2(0);
         float3 param_8;
-        float4 _1799 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcArr_albedo, hexcSampler);
+        float4 _1864 = hexcAt_rock_albedo(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0);
         t = param_8;
-        value += (_1799 * w[0]);
+        value += (_1864 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -882,37 +914,39 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_11 = dy * hexcParams.tiles_albedo_tiling;
         int2 param_12 = int2(0);
         float3 param_13;
-        float4 _1834 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcArr_albedo, hexcSampler);
+        float4 _1899 = hexcAt_tiles_albedo(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles1);
         t = param_13;
-        value += (_1834 * w[1]);
+        value += (_1899 * w[1]);
         weights += (t * w[1]);
     }
     return value;
 }
 
-#line 125 "hexc/generated"
+#line 143 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 125 "hexc/generated"
+#line 143 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _1852 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcTex_splat0, hexcVertexColor, hexcLayersSt, hexcLayersW);
+    float4 _1917 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcLatticeTiles1, hexcTex_splat0, hexcVertexColor, hexcLayersSt, hexcLayersW);
     float3 weights = param_1;
-    return _1852;
+    return _1917;
 }
 
-#line 94 "hexc/generated"
+#line 112 "hexc/generated"
 fragment layers_vertex_frag_out layers_vertex_frag(layers_vertex_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d_array<float> hexcArr_albedo [[texture(0)]], texture2d<float> hexcTex_splat0 [[texture(2)]], sampler hexcSampler [[sampler(0)]])
 {
     layers_vertex_frag_out out = {};
-#line 94 "hexc/generated"
+#line 112 "hexc/generated"
     bool hexcLayersFilled = false;
     float2 param = in.v_uv;
+    HexcTiles hexcLatticeTiles0;
+    HexcTiles hexcLatticeTiles1;
     float2 hexcLayersSt;
     spvUnsafeArray<float, 8> hexcLayersW;
-    float4 _1861 = hexc_albedo(param, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcTex_splat0, in.hexcVertexColor, hexcLayersSt, hexcLayersW);
-    float3 albedo = _1861.xyz;
+    float4 _1926 = hexc_albedo(param, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcLatticeTiles1, hexcTex_splat0, in.hexcVertexColor, hexcLayersSt, hexcLayersW);
+    float3 albedo = _1926.xyz;
     float roughness = 0.5;
     float3 N = fast::normalize(in.v_normal);
     float diffuse = fast::max(dot(N, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);

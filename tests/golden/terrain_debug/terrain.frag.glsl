@@ -56,6 +56,9 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec4 v_tangent;
 layout(location = 0) out vec4 o_color;
 bool hexcLayersFilled;
+HexcTiles hexcLatticeTiles0;
+HexcTiles hexcLatticeTiles1;
+HexcTiles hexcLatticeTiles2;
 vec2 hexcLayersSt;
 float hexcLayersW[8];
 
@@ -77,52 +80,52 @@ vec3 hexcMxDecode(vec3 c)
 #line 77 "hexc/materialx.glsl"
 vec4 hexcMxDecoded(vec4 c, bool srgb)
 {
-    vec4 _3170;
+    vec4 _3188;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         vec3 param = c.xyz;
-        _3170 = vec4(hexcMxDecode(param), c.w);
+        _3188 = vec4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _3170 = c;
+        _3188 = c;
     }
-    return _3170;
+    return _3188;
 }
 
-#line 170 "hexc/generated"
+#line 194 "hexc/generated"
 vec4 hexcAt_splat0(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 170 "hexc/generated"
+#line 194 "hexc/generated"
     vec2 param = st;
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     vec3 param_3;
-    vec4 _3408 = hexcPlainColorGrad(param, param_1, param_2, param_3, hexcTex_splat0);
+    vec4 _3367 = hexcPlainColorGrad(param, param_1, param_2, param_3, hexcTex_splat0);
     weights = param_3;
-    vec4 param_4 = _3408;
+    vec4 param_4 = _3367;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 181 "hexc/generated"
+#line 205 "hexc/generated"
 void hexcLayerKeep(inout float w[8], float skip)
 {
-#line 181 "hexc/generated"
+#line 205 "hexc/generated"
     float sum = 0.0;
-    float _3430;
+    float _3389;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _3430 = w[i];
+            _3389 = w[i];
         }
         else
         {
-            _3430 = 0.0;
+            _3389 = 0.0;
         }
-        w[i] = _3430;
+        w[i] = _3389;
         sum += w[i];
     }
     if (sum <= 0.0)
@@ -191,26 +194,26 @@ vec2 hexcCosSin(float angle)
     float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
     float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
     int q = int(k) & 3;
-    vec2 _710;
+    vec2 _728;
     if ((q & 1) != 0)
     {
-        _710 = vec2(-s, c);
+        _728 = vec2(-s, c);
     }
     else
     {
-        _710 = vec2(c, s);
+        _728 = vec2(c, s);
     }
-    vec2 cs = _710;
-    vec2 _725;
+    vec2 cs = _728;
+    vec2 _743;
     if ((q & 2) != 0)
     {
-        _725 = -cs;
+        _743 = -cs;
     }
     else
     {
-        _725 = cs;
+        _743 = cs;
     }
-    return _725;
+    return _743;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -218,22 +221,22 @@ void hexcStableTile_grass_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, ou
 {
 #line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _966 = hexcPcg3d(param);
-    vec3 u = vec3(_966 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _984 = hexcPcg3d(param);
+    vec3 u = vec3(_984 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.grass_albedo_rotation;
     invScale = 1.0;
-    vec2 _989;
+    vec2 _1007;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _989 = hexcCosSin(param_1);
+        _1007 = hexcCosSin(param_1);
     }
     else
     {
-        _989 = vec2(cos(angle), sin(angle));
+        _1007 = vec2(cos(angle), sin(angle));
     }
-    rot = _989;
+    rot = _1007;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -269,16 +272,16 @@ HexcTap hexcPlaceTile_grass_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dS
     p.invScale = param_4;
     vec2 param_5 = d;
     HexcTap param_6 = p;
-    vec2 _1149 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1149 + c) + offset;
+    vec2 _1167 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1167 + c) + offset;
     vec2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    vec2 _1159 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1159;
+    vec2 _1177 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1177;
     vec2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    vec2 _1165 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1165;
+    vec2 _1183 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1183;
     return p;
 }
 
@@ -304,36 +307,36 @@ ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _751;
+    int _769;
     if ((d < 0) && (a != 0))
     {
-        _751 = 3 - a;
+        _769 = 3 - a;
     }
     else
     {
-        _751 = a;
+        _769 = a;
     }
-    int i1 = _751;
-    int _762;
+    int i1 = _769;
+    int _780;
     if (i1 < 2)
     {
-        _762 = i1 + 1;
+        _780 = i1 + 1;
     }
     else
     {
-        _762 = 0;
+        _780 = 0;
     }
-    int vh = _762;
-    int _772;
+    int vh = _780;
+    int _790;
     if (i1 > 0)
     {
-        _772 = i1 - 1;
+        _790 = i1 - 1;
     }
     else
     {
-        _772 = 2;
+        _790 = 2;
     }
-    int vl = _772;
+    int vl = _790;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -362,56 +365,329 @@ HexcTiles hexcTilesStable_grass_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 ce
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _1408 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1426 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1408;
+    t.tap[0] = _1426;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _1424 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1442 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1424;
+    t.tap[1] = _1442;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _1440 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1458 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1440;
+    t.tap[2] = _1458;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
+#line 58 "hexc/generated"
+HexcTiles hexcLayerTiles0(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
+{
+#line 58 "hexc/generated"
+    vec2 param = st;
+    vec2 param_1 = dx;
+    vec2 param_2 = dy;
+    ivec2 param_3 = cell;
+    return hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_sand_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
+    uvec3 param = uvec3(uvec2(id), 0u);
+    uvec3 _1027 = hexcPcg3d(param);
+    vec3 u = vec3(_1027 >> uvec3(8u)) * 5.9604644775390625e-08;
+    offset = u.xy;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.sand_albedo_rotation;
+    invScale = 1.0;
+    vec2 _1044;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _1044 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _1044 = vec2(cos(angle), sin(angle));
+    }
+    rot = _1044;
+}
+
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_sand_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
+{
+#line 276 "hexc/hextiling.glsl"
+    ivec2 param = id;
+    bool param_1 = aboutOrigin;
+    vec2 param_2;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_sand_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _1207 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1207 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _1217 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1217;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _1223 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1223;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_sand_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = ivec2(uvec2(local) + shift);
+    ivec2 param = local;
+    ivec2 param_1 = local;
+    ivec2 param_2 = id;
+    vec2 param_3 = r - hexcStableCentre(param);
+    vec2 param_4 = hexcStableCentreInPeriod(param_1);
+    vec2 param_5 = dSTdx;
+    vec2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_sand_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+}
+
+#line 295 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_sand_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = false;
+    float kx = floor(st.x / 28.0);
+    float ky = floor(st.y);
+    vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
+    vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
+    vec3 param_1;
+    ivec2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    ivec2 local[3] = param_2;
+    uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
+    uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
+    ivec2 param_3 = local[0];
+    uvec2 param_4 = shift;
+    vec2 param_5 = r;
+    vec2 param_6 = dSTdx;
+    vec2 param_7 = dSTdy;
+    ivec2 param_8;
+    HexcTap _1553 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _1553;
+    ivec2 param_9 = local[1];
+    uvec2 param_10 = shift;
+    vec2 param_11 = r;
+    vec2 param_12 = dSTdx;
+    vec2 param_13 = dSTdy;
+    ivec2 param_14;
+    HexcTap _1569 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _1569;
+    ivec2 param_15 = local[2];
+    uvec2 param_16 = shift;
+    vec2 param_17 = r;
+    vec2 param_18 = dSTdx;
+    vec2 param_19 = dSTdy;
+    ivec2 param_20;
+    HexcTap _1585 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _1585;
+    ivec2 param_21 = t.id[0];
+    ivec2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 66 "hexc/generated"
+HexcTiles hexcLayerTiles1(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
+{
+#line 66 "hexc/generated"
+    vec2 param = st;
+    vec2 param_1 = dx;
+    vec2 param_2 = dy;
+    ivec2 param_3 = cell;
+    return hexcTilesStable_sand_albedo(param, param_1, param_2, param_3);
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_snow_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
+    uvec3 param = uvec3(uvec2(id), 0u);
+    uvec3 _1064 = hexcPcg3d(param);
+    vec3 u = vec3(_1064 >> uvec3(8u)) * 5.9604644775390625e-08;
+    offset = u.xy;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.snow_albedo_rotation;
+    invScale = 1.0;
+    vec2 _1082;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _1082 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _1082 = vec2(cos(angle), sin(angle));
+    }
+    rot = _1082;
+}
+
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_snow_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
+{
+#line 276 "hexc/hextiling.glsl"
+    ivec2 param = id;
+    bool param_1 = aboutOrigin;
+    vec2 param_2;
+    vec2 param_3;
+    float param_4;
+    hexcStableTile_snow_albedo(param, param_1, param_2, param_3, param_4);
+    vec2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    vec2 param_5 = d;
+    HexcTap param_6 = p;
+    vec2 _1247 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1247 + c) + offset;
+    vec2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    vec2 _1257 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1257;
+    vec2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    vec2 _1263 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1263;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_snow_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = ivec2(uvec2(local) + shift);
+    ivec2 param = local;
+    ivec2 param_1 = local;
+    ivec2 param_2 = id;
+    vec2 param_3 = r - hexcStableCentre(param);
+    vec2 param_4 = hexcStableCentreInPeriod(param_1);
+    vec2 param_5 = dSTdx;
+    vec2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_snow_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+}
+
+#line 295 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_snow_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = false;
+    float kx = floor(st.x / 28.0);
+    float ky = floor(st.y);
+    vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
+    vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
+    vec3 param_1;
+    ivec2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    ivec2 local[3] = param_2;
+    uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
+    uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
+    ivec2 param_3 = local[0];
+    uvec2 param_4 = shift;
+    vec2 param_5 = r;
+    vec2 param_6 = dSTdx;
+    vec2 param_7 = dSTdy;
+    ivec2 param_8;
+    HexcTap _1679 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _1679;
+    ivec2 param_9 = local[1];
+    uvec2 param_10 = shift;
+    vec2 param_11 = r;
+    vec2 param_12 = dSTdx;
+    vec2 param_13 = dSTdy;
+    ivec2 param_14;
+    HexcTap _1695 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _1695;
+    ivec2 param_15 = local[2];
+    uvec2 param_16 = shift;
+    vec2 param_17 = r;
+    vec2 param_18 = dSTdx;
+    vec2 param_19 = dSTdy;
+    ivec2 param_20;
+    HexcTap _1711 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _1711;
+    ivec2 param_21 = t.id[0];
+    ivec2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 74 "hexc/generated"
+HexcTiles hexcLayerTiles2(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
+{
+#line 74 "hexc/generated"
+    vec2 param = st;
+    vec2 param_1 = dx;
+    vec2 param_2 = dy;
+    ivec2 param_3 = cell;
+    return hexcTilesStable_snow_albedo(param, param_1, param_2, param_3);
+}
+
 #line 132 "hexc/hextiling.glsl"
 vec4 hexcChannel(int c)
 {
 #line 132 "hexc/hextiling.glsl"
-    vec4 _832;
+    vec4 _850;
     if (c == 0)
     {
-        _832 = vec4(1.0, 0.0, 0.0, 0.0);
+        _850 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _839;
+        vec4 _857;
         if (c == 1)
         {
-            _839 = vec4(0.0, 1.0, 0.0, 0.0);
+            _857 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _839 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _857 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _832 = _839;
+        _850 = _857;
     }
-    return _832;
+    return _850;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -499,20 +775,20 @@ vec3 hexcBlendWeights_grass_albedo(vec3 w, vec3 M)
 #line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1875 = hexcPowInt(param, param_1);
-    vec3 wg = _1875;
+    vec3 _1893 = hexcPowInt(param, param_1);
+    vec3 wg = _1893;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1891;
+    vec3 _1909;
     if (sum > 0.0)
     {
-        _1891 = W / vec3(sum);
+        _1909 = W / vec3(sum);
     }
     else
     {
-        _1891 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1909 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1891;
+    W = _1909;
     return W;
 }
 
@@ -545,141 +821,17 @@ vec4 hexcColor_grass_height(HexcTiles t, vec4 luma, out vec3 weights, sampler2DA
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 76 "hexc/generated"
+#line 100 "hexc/generated"
 float hexcAt_grass_height(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 76 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    vec4 param_6 = hexcChannel(param_4);
-    vec3 param_7;
-    vec4 _3242 = hexcColor_grass_height(param_5, param_6, param_7, hexcArr_height);
-    weights = param_7;
-    return _3242.w;
-}
-
-#line 229 "hexc/hextiling.glsl"
-void hexcStableTile_sand_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
-{
-#line 229 "hexc/hextiling.glsl"
-    uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _1009 = hexcPcg3d(param);
-    vec3 u = vec3(_1009 >> uvec3(8u)) * 5.9604644775390625e-08;
-    offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.sand_albedo_rotation;
-    invScale = 1.0;
-    vec2 _1026;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _1026 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _1026 = vec2(cos(angle), sin(angle));
-    }
-    rot = _1026;
-}
-
-#line 276 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_sand_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
-{
-#line 276 "hexc/hextiling.glsl"
-    ivec2 param = id;
-    bool param_1 = aboutOrigin;
-    vec2 param_2;
-    vec2 param_3;
-    float param_4;
-    hexcStableTile_sand_albedo(param, param_1, param_2, param_3, param_4);
-    vec2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    vec2 param_5 = d;
-    HexcTap param_6 = p;
-    vec2 _1189 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1189 + c) + offset;
-    vec2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    vec2 _1199 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1199;
-    vec2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    vec2 _1205 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1205;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_sand_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = ivec2(uvec2(local) + shift);
-    ivec2 param = local;
-    ivec2 param_1 = local;
-    ivec2 param_2 = id;
-    vec2 param_3 = r - hexcStableCentre(param);
-    vec2 param_4 = hexcStableCentreInPeriod(param_1);
-    vec2 param_5 = dSTdx;
-    vec2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_sand_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
-}
-
-#line 295 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_sand_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = false;
-    float kx = floor(st.x / 28.0);
-    float ky = floor(st.y);
-    vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
-    vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
-    vec3 param_1;
-    ivec2 param_2[3];
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    ivec2 local[3] = param_2;
-    uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
-    uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
-    ivec2 param_3 = local[0];
-    uvec2 param_4 = shift;
-    vec2 param_5 = r;
-    vec2 param_6 = dSTdx;
-    vec2 param_7 = dSTdy;
-    ivec2 param_8;
-    HexcTap _1535 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
-    t.id[0] = param_8;
-    t.tap[0] = _1535;
-    ivec2 param_9 = local[1];
-    uvec2 param_10 = shift;
-    vec2 param_11 = r;
-    vec2 param_12 = dSTdx;
-    vec2 param_13 = dSTdy;
-    ivec2 param_14;
-    HexcTap _1551 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
-    t.id[1] = param_14;
-    t.tap[1] = _1551;
-    ivec2 param_15 = local[2];
-    uvec2 param_16 = shift;
-    vec2 param_17 = r;
-    vec2 param_18 = dSTdx;
-    vec2 param_19 = dSTdy;
-    ivec2 param_20;
-    HexcTap _1567 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
-    t.id[2] = param_20;
-    t.tap[2] = _1567;
-    ivec2 param_21 = t.id[0];
-    ivec2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 100 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    vec4 param_2 = hexcChannel(param);
+    vec3 param_3;
+    vec4 _3271 = hexcColor_grass_height(param_1, param_2, param_3, hexcArr_height);
+    weights = param_3;
+    return _3271.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -736,21 +888,17 @@ vec4 hexcColor_sand_height(HexcTiles t, vec4 luma, out vec3 weights, sampler2DAr
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 104 "hexc/generated"
+#line 128 "hexc/generated"
 float hexcAt_sand_height(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 104 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3);
-    vec4 param_6 = hexcChannel(param_4);
-    vec3 param_7;
-    vec4 _3293 = hexcColor_sand_height(param_5, param_6, param_7, hexcArr_height);
-    weights = param_7;
-    return _3293.w;
+#line 128 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles1;
+    vec4 param_2 = hexcChannel(param);
+    vec3 param_3;
+    vec4 _3299 = hexcColor_sand_height(param_1, param_2, param_3, hexcArr_height);
+    weights = param_3;
+    return _3299.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -807,141 +955,17 @@ vec4 hexcColor_pebbles_height(HexcTiles t, vec4 luma, out vec3 weights, sampler2
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 132 "hexc/generated"
+#line 156 "hexc/generated"
 float hexcAt_pebbles_height(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 132 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    vec4 param_6 = hexcChannel(param_4);
-    vec3 param_7;
-    vec4 _3344 = hexcColor_pebbles_height(param_5, param_6, param_7, hexcArr_height);
-    weights = param_7;
-    return _3344.w;
-}
-
-#line 229 "hexc/hextiling.glsl"
-void hexcStableTile_snow_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out vec2 rot, out float invScale)
-{
-#line 229 "hexc/hextiling.glsl"
-    uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _1046 = hexcPcg3d(param);
-    vec3 u = vec3(_1046 >> uvec3(8u)) * 5.9604644775390625e-08;
-    offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.snow_albedo_rotation;
-    invScale = 1.0;
-    vec2 _1064;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _1064 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _1064 = vec2(cos(angle), sin(angle));
-    }
-    rot = _1064;
-}
-
-#line 276 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_snow_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dSTdy, bool aboutOrigin)
-{
-#line 276 "hexc/hextiling.glsl"
-    ivec2 param = id;
-    bool param_1 = aboutOrigin;
-    vec2 param_2;
-    vec2 param_3;
-    float param_4;
-    hexcStableTile_snow_albedo(param, param_1, param_2, param_3, param_4);
-    vec2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    vec2 param_5 = d;
-    HexcTap param_6 = p;
-    vec2 _1229 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1229 + c) + offset;
-    vec2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    vec2 _1239 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1239;
-    vec2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    vec2 _1245 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1245;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_snow_albedo(ivec2 local, uvec2 shift, vec2 r, vec2 dSTdx, vec2 dSTdy, inout ivec2 id)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = ivec2(uvec2(local) + shift);
-    ivec2 param = local;
-    ivec2 param_1 = local;
-    ivec2 param_2 = id;
-    vec2 param_3 = r - hexcStableCentre(param);
-    vec2 param_4 = hexcStableCentreInPeriod(param_1);
-    vec2 param_5 = dSTdx;
-    vec2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_snow_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
-}
-
-#line 295 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_snow_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cell)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = false;
-    float kx = floor(st.x / 28.0);
-    float ky = floor(st.y);
-    vec2 r = vec2(st.x - (28.0 * kx), st.y - ky);
-    vec2 param = vec2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
-    vec3 param_1;
-    ivec2 param_2[3];
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    ivec2 local[3] = param_2;
-    uvec2 c = uvec2(cell) + uvec2(ivec2(int(kx), int(ky)));
-    uvec2 shift = uvec2((97u * c.x) - (2u * c.y), 4u * c.y);
-    ivec2 param_3 = local[0];
-    uvec2 param_4 = shift;
-    vec2 param_5 = r;
-    vec2 param_6 = dSTdx;
-    vec2 param_7 = dSTdy;
-    ivec2 param_8;
-    HexcTap _1661 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
-    t.id[0] = param_8;
-    t.tap[0] = _1661;
-    ivec2 param_9 = local[1];
-    uvec2 param_10 = shift;
-    vec2 param_11 = r;
-    vec2 param_12 = dSTdx;
-    vec2 param_13 = dSTdy;
-    ivec2 param_14;
-    HexcTap _1677 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
-    t.id[1] = param_14;
-    t.tap[1] = _1677;
-    ivec2 param_15 = local[2];
-    uvec2 param_16 = shift;
-    vec2 param_17 = r;
-    vec2 param_18 = dSTdx;
-    vec2 param_19 = dSTdy;
-    ivec2 param_20;
-    HexcTap _1693 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
-    t.id[2] = param_20;
-    t.tap[2] = _1693;
-    ivec2 param_21 = t.id[0];
-    ivec2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 156 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    vec4 param_2 = hexcChannel(param);
+    vec3 param_3;
+    vec4 _3326 = hexcColor_pebbles_height(param_1, param_2, param_3, hexcArr_height);
+    weights = param_3;
+    return _3326.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -998,27 +1022,23 @@ vec4 hexcColor_snow_height(HexcTiles t, vec4 luma, out vec3 weights, sampler2DAr
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 160 "hexc/generated"
+#line 184 "hexc/generated"
 float hexcAt_snow_height(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 160 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3);
-    vec4 param_6 = hexcChannel(param_4);
-    vec3 param_7;
-    vec4 _3395 = hexcColor_snow_height(param_5, param_6, param_7, hexcArr_height);
-    weights = param_7;
-    return _3395.w;
+#line 184 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles2;
+    vec4 param_2 = hexcChannel(param);
+    vec3 param_3;
+    vec4 _3354 = hexcColor_snow_height(param_1, param_2, param_3, hexcArr_height);
+    weights = param_3;
+    return _3354.w;
 }
 
-#line 196 "hexc/generated"
+#line 220 "hexc/generated"
 void hexcLayerHeights(inout float w[8], float h[8], float width)
 {
-#line 196 "hexc/generated"
+#line 220 "hexc/generated"
     float top = -2.0;
     for (int i = 0; i < 8; i++)
     {
@@ -1028,18 +1048,18 @@ void hexcLayerHeights(inout float w[8], float h[8], float width)
         }
     }
     float sum = 0.0;
-    float _3508;
+    float _3467;
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
         if (w[i_1] > 0.0)
         {
-            _3508 = max(((h[i_1] + w[i_1]) - top) + width, 0.0);
+            _3467 = max(((h[i_1] + w[i_1]) - top) + width, 0.0);
         }
         else
         {
-            _3508 = 0.0;
+            _3467 = 0.0;
         }
-        w[i_1] = _3508;
+        w[i_1] = _3467;
         sum += w[i_1];
     }
     for (int i_2 = 0; i_2 < 8; i_2++)
@@ -1048,10 +1068,10 @@ void hexcLayerHeights(inout float w[8], float h[8], float width)
     }
 }
 
-#line 211 "hexc/generated"
+#line 235 "hexc/generated"
 void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
 {
-#line 211 "hexc/generated"
+#line 235 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0;
@@ -1061,9 +1081,9 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
     vec2 param_2 = dy * hexcParams.splat0_tiling;
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _3582 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
+    vec4 _3541 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
     vec3 t = param_4;
-    vec4 splat0 = _3582;
+    vec4 splat0 = _3541;
     w[0] = splat0.x;
     w[1] = splat0.y;
     w[2] = splat0.z;
@@ -1072,6 +1092,40 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
     float param_6 = 0.0019607841968536376953125;
     hexcLayerKeep(param_5, param_6);
     w = param_5;
+    bool _3563 = w[0] > 0.0;
+    bool _3570;
+    if (!_3563)
+    {
+        _3570 = w[2] > 0.0;
+    }
+    else
+    {
+        _3570 = _3563;
+    }
+    if (_3570)
+    {
+        vec2 param_7 = st * hexcParams.grass_albedo_tiling;
+        vec2 param_8 = dx * hexcParams.grass_albedo_tiling;
+        vec2 param_9 = dy * hexcParams.grass_albedo_tiling;
+        ivec2 param_10 = ivec2(0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10);
+    }
+    if (w[1] > 0.0)
+    {
+        vec2 param_11 = st * hexcParams.sand_albedo_tiling;
+        vec2 param_12 = dx * hexcParams.sand_albedo_tiling;
+        vec2 param_13 = dy * hexcParams.sand_albedo_tiling;
+        ivec2 param_14 = ivec2(0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14);
+    }
+    if (w[3] > 0.0)
+    {
+        vec2 param_15 = st * hexcParams.snow_albedo_tiling;
+        vec2 param_16 = dx * hexcParams.snow_albedo_tiling;
+        vec2 param_17 = dy * hexcParams.snow_albedo_tiling;
+        ivec2 param_18 = ivec2(0);
+        hexcLatticeTiles2 = hexcLayerTiles2(param_15, param_16, param_17, param_18);
+    }
     float h[8];
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
@@ -1079,59 +1133,59 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
     }
     if (w[0] > 0.0)
     {
-        vec2 param_7 = st * hexcParams.grass_albedo_tiling;
-        vec2 param_8 = dx * hexcParams.grass_albedo_tiling;
-        vec2 param_9 = dy * hexcParams.grass_albedo_tiling;
-        ivec2 param_10 = ivec2(0);
-        vec3 param_11;
-        float _3637 = hexcAt_grass_height(param_7, param_8, param_9, param_10, param_11);
-        t = param_11;
-        h[0] = _3637;
+        vec2 param_19 = st * hexcParams.grass_albedo_tiling;
+        vec2 param_20 = dx * hexcParams.grass_albedo_tiling;
+        vec2 param_21 = dy * hexcParams.grass_albedo_tiling;
+        ivec2 param_22 = ivec2(0);
+        vec3 param_23;
+        float _3669 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23);
+        t = param_23;
+        h[0] = _3669;
     }
     if (w[1] > 0.0)
     {
-        vec2 param_12 = st * hexcParams.sand_albedo_tiling;
-        vec2 param_13 = dx * hexcParams.sand_albedo_tiling;
-        vec2 param_14 = dy * hexcParams.sand_albedo_tiling;
-        ivec2 param_15 = ivec2(0);
-        vec3 param_16;
-        float _3662 = hexcAt_sand_height(param_12, param_13, param_14, param_15, param_16);
-        t = param_16;
-        h[1] = _3662;
+        vec2 param_24 = st * hexcParams.sand_albedo_tiling;
+        vec2 param_25 = dx * hexcParams.sand_albedo_tiling;
+        vec2 param_26 = dy * hexcParams.sand_albedo_tiling;
+        ivec2 param_27 = ivec2(0);
+        vec3 param_28;
+        float _3694 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28);
+        t = param_28;
+        h[1] = _3694;
     }
     if (w[2] > 0.0)
     {
-        vec2 param_17 = st * hexcParams.grass_albedo_tiling;
-        vec2 param_18 = dx * hexcParams.grass_albedo_tiling;
-        vec2 param_19 = dy * hexcParams.grass_albedo_tiling;
-        ivec2 param_20 = ivec2(0);
-        vec3 param_21;
-        float _3687 = hexcAt_pebbles_height(param_17, param_18, param_19, param_20, param_21);
-        t = param_21;
-        h[2] = _3687;
+        vec2 param_29 = st * hexcParams.grass_albedo_tiling;
+        vec2 param_30 = dx * hexcParams.grass_albedo_tiling;
+        vec2 param_31 = dy * hexcParams.grass_albedo_tiling;
+        ivec2 param_32 = ivec2(0);
+        vec3 param_33;
+        float _3719 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33);
+        t = param_33;
+        h[2] = _3719;
     }
     if (w[3] > 0.0)
     {
-        vec2 param_22 = st * hexcParams.snow_albedo_tiling;
-        vec2 param_23 = dx * hexcParams.snow_albedo_tiling;
-        vec2 param_24 = dy * hexcParams.snow_albedo_tiling;
-        ivec2 param_25 = ivec2(0);
-        vec3 param_26;
-        float _3712 = hexcAt_snow_height(param_22, param_23, param_24, param_25, param_26);
-        t = param_26;
-        h[3] = _3712;
+        vec2 param_34 = st * hexcParams.snow_albedo_tiling;
+        vec2 param_35 = dx * hexcParams.snow_albedo_tiling;
+        vec2 param_36 = dy * hexcParams.snow_albedo_tiling;
+        ivec2 param_37 = ivec2(0);
+        vec3 param_38;
+        float _3744 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38);
+        t = param_38;
+        h[3] = _3744;
     }
-    float param_27[8] = w;
-    float param_28[8] = h;
-    float param_29 = 0.20000000298023223876953125;
-    hexcLayerHeights(param_27, param_28, param_29);
-    w = param_27;
+    float param_39[8] = w;
+    float param_40[8] = h;
+    float param_41 = 0.20000000298023223876953125;
+    hexcLayerHeights(param_39, param_40, param_41);
+    w = param_39;
 }
 
-#line 233 "hexc/generated"
+#line 260 "hexc/generated"
 void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8])
 {
-#line 233 "hexc/generated"
+#line 260 "hexc/generated"
     if ((!hexcLayersFilled) || any(notEqual(st, hexcLayersSt)))
     {
         vec2 param = st;
@@ -1175,20 +1229,16 @@ vec4 hexcColor_grass_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2DA
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 57 "hexc/generated"
+#line 81 "hexc/generated"
 vec4 hexcAt_grass_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 57 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_6;
-    vec4 _3206 = hexcColor_grass_albedo(param_4, param_5, param_6, hexcArr_albedo);
-    weights = param_6;
-    return _3206;
+#line 81 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_2;
+    vec4 _3251 = hexcColor_grass_albedo(param, param_1, param_2, hexcArr_albedo);
+    weights = param_2;
+    return _3251;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1220,20 +1270,16 @@ vec4 hexcColor_sand_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2DAr
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 85 "hexc/generated"
+#line 109 "hexc/generated"
 vec4 hexcAt_sand_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 85 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3);
-    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_6;
-    vec4 _3259 = hexcColor_sand_albedo(param_4, param_5, param_6, hexcArr_albedo);
-    weights = param_6;
-    return _3259;
+#line 109 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_2;
+    vec4 _3281 = hexcColor_sand_albedo(param, param_1, param_2, hexcArr_albedo);
+    weights = param_2;
+    return _3281;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1265,20 +1311,16 @@ vec4 hexcColor_pebbles_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 113 "hexc/generated"
+#line 137 "hexc/generated"
 vec4 hexcAt_pebbles_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 113 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_6;
-    vec4 _3310 = hexcColor_pebbles_albedo(param_4, param_5, param_6, hexcArr_albedo);
-    weights = param_6;
-    return _3310;
+#line 137 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_2;
+    vec4 _3308 = hexcColor_pebbles_albedo(param, param_1, param_2, hexcArr_albedo);
+    weights = param_2;
+    return _3308;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1310,26 +1352,22 @@ vec4 hexcColor_snow_albedo(HexcTiles t, vec4 luma, out vec3 weights, sampler2DAr
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 141 "hexc/generated"
+#line 165 "hexc/generated"
 vec4 hexcAt_snow_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 141 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3);
-    vec4 param_5 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    vec3 param_6;
-    vec4 _3361 = hexcColor_snow_albedo(param_4, param_5, param_6, hexcArr_albedo);
-    weights = param_6;
-    return _3361;
+#line 165 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles2;
+    vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    vec3 param_2;
+    vec4 _3336 = hexcColor_snow_albedo(param, param_1, param_2, hexcArr_albedo);
+    weights = param_2;
+    return _3336;
 }
 
-#line 243 "hexc/generated"
+#line 270 "hexc/generated"
 vec4 hexc_albedo(vec2 uv, inout vec3 weights)
 {
-#line 243 "hexc/generated"
+#line 270 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -1349,9 +1387,9 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_6 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        vec4 _3792 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8);
+        vec4 _3824 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_3792 * w[0]);
+        value += (_3824 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1361,9 +1399,9 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_11 = dy * hexcParams.sand_albedo_tiling;
         ivec2 param_12 = ivec2(0);
         vec3 param_13;
-        vec4 _3827 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13);
+        vec4 _3859 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_3827 * w[1]);
+        value += (_3859 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0)
@@ -1373,9 +1411,9 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_16 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_17 = ivec2(0);
         vec3 param_18;
-        vec4 _3862 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18);
+        vec4 _3894 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18);
         t = param_18;
-        value += (_3862 * w[2]);
+        value += (_3894 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0)
@@ -1385,23 +1423,23 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_21 = dy * hexcParams.snow_albedo_tiling;
         ivec2 param_22 = ivec2(0);
         vec3 param_23;
-        vec4 _3897 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23);
+        vec4 _3929 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        value += (_3897 * w[3]);
+        value += (_3929 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 268 "hexc/generated"
+#line 295 "hexc/generated"
 vec4 hexc_albedo(vec2 uv)
 {
-#line 268 "hexc/generated"
+#line 295 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _3915 = hexc_albedo(param, param_1);
+    vec4 _3947 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _3915;
+    return _3947;
 }
 
 #line 621 "hexc/hextiling.glsl"
@@ -1410,16 +1448,16 @@ vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 #line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _2629;
+    float _2647;
     if (flipY)
     {
-        _2629 = -vM.y;
+        _2647 = -vM.y;
     }
     else
     {
-        _2629 = vM.y;
+        _2647 = vM.y;
     }
-    return (-vec2(vM.x, _2629)) / vec2(zMa);
+    return (-vec2(vM.x, _2647)) / vec2(zMa);
 }
 
 #line 145 "hexc/hextiling.glsl"
@@ -1440,16 +1478,16 @@ vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _2662;
+    vec2 _2680;
     if (scaled)
     {
-        _2662 = d * p.invScale;
+        _2680 = d * p.invScale;
     }
     else
     {
-        _2662 = d;
+        _2680 = d;
     }
-    return _2662;
+    return _2680;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1502,20 +1540,16 @@ vec2 hexcDeriv_grass_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2D
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 66 "hexc/generated"
+#line 90 "hexc/generated"
 vec2 hexcAt_grass_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 66 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    bool param_5 = false;
-    vec3 param_6;
-    vec2 _3223 = hexcDeriv_grass_normal(param_4, param_5, param_6, hexcArr_normal);
-    weights = param_6;
-    return _3223;
+#line 90 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    bool param_1 = false;
+    vec3 param_2;
+    vec2 _3260 = hexcDeriv_grass_normal(param, param_1, param_2, hexcArr_normal);
+    weights = param_2;
+    return _3260;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1568,20 +1602,16 @@ vec2 hexcDeriv_sand_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2DA
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 94 "hexc/generated"
+#line 118 "hexc/generated"
 vec2 hexcAt_sand_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 94 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3);
-    bool param_5 = false;
-    vec3 param_6;
-    vec2 _3275 = hexcDeriv_sand_normal(param_4, param_5, param_6, hexcArr_normal);
-    weights = param_6;
-    return _3275;
+#line 118 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    bool param_1 = false;
+    vec3 param_2;
+    vec2 _3289 = hexcDeriv_sand_normal(param, param_1, param_2, hexcArr_normal);
+    weights = param_2;
+    return _3289;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1634,20 +1664,16 @@ vec2 hexcDeriv_pebbles_normal(HexcTiles t, bool flipY, out vec3 weights, sampler
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 122 "hexc/generated"
+#line 146 "hexc/generated"
 vec2 hexcAt_pebbles_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 122 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    bool param_5 = false;
-    vec3 param_6;
-    vec2 _3326 = hexcDeriv_pebbles_normal(param_4, param_5, param_6, hexcArr_normal);
-    weights = param_6;
-    return _3326;
+#line 146 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    bool param_1 = false;
+    vec3 param_2;
+    vec2 _3316 = hexcDeriv_pebbles_normal(param, param_1, param_2, hexcArr_normal);
+    weights = param_2;
+    return _3316;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1700,26 +1726,22 @@ vec2 hexcDeriv_snow_normal(HexcTiles t, bool flipY, out vec3 weights, sampler2DA
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 150 "hexc/generated"
+#line 174 "hexc/generated"
 vec2 hexcAt_snow_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
 {
-#line 150 "hexc/generated"
-    vec2 param = st;
-    vec2 param_1 = dx;
-    vec2 param_2 = dy;
-    ivec2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3);
-    bool param_5 = false;
-    vec3 param_6;
-    vec2 _3377 = hexcDeriv_snow_normal(param_4, param_5, param_6, hexcArr_normal);
-    weights = param_6;
-    return _3377;
+#line 174 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles2;
+    bool param_1 = false;
+    vec3 param_2;
+    vec2 _3344 = hexcDeriv_snow_normal(param, param_1, param_2, hexcArr_normal);
+    weights = param_2;
+    return _3344;
 }
 
-#line 273 "hexc/generated"
+#line 300 "hexc/generated"
 vec2 hexc_normal(vec2 uv, inout vec3 weights)
 {
-#line 273 "hexc/generated"
+#line 300 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -1739,9 +1761,9 @@ vec2 hexc_normal(vec2 uv, inout vec3 weights)
         vec2 param_6 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        vec2 _3963 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8);
+        vec2 _3995 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_3963 * w[0]);
+        value += (_3995 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1751,9 +1773,9 @@ vec2 hexc_normal(vec2 uv, inout vec3 weights)
         vec2 param_11 = dy * hexcParams.sand_albedo_tiling;
         ivec2 param_12 = ivec2(0);
         vec3 param_13;
-        vec2 _3998 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13);
+        vec2 _4030 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_3998 * w[1]);
+        value += (_4030 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0)
@@ -1763,9 +1785,9 @@ vec2 hexc_normal(vec2 uv, inout vec3 weights)
         vec2 param_16 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_17 = ivec2(0);
         vec3 param_18;
-        vec2 _4033 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18);
+        vec2 _4065 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18);
         t = param_18;
-        value += (_4033 * w[2]);
+        value += (_4065 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0)
@@ -1775,23 +1797,23 @@ vec2 hexc_normal(vec2 uv, inout vec3 weights)
         vec2 param_21 = dy * hexcParams.snow_albedo_tiling;
         ivec2 param_22 = ivec2(0);
         vec3 param_23;
-        vec2 _4068 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23);
+        vec2 _4100 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        value += (_4068 * w[3]);
+        value += (_4100 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 298 "hexc/generated"
+#line 325 "hexc/generated"
 vec2 hexc_normal(vec2 uv)
 {
-#line 298 "hexc/generated"
+#line 325 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _4086 = hexc_normal(param, param_1);
+    vec2 _4118 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _4086;
+    return _4118;
 }
 
 #line 701 "hexc/hextiling.glsl"
@@ -1801,21 +1823,21 @@ vec3 hexcDerivToNormal(vec2 deriv)
     return normalize(vec3(-deriv, 1.0));
 }
 
-#line 229 "hexc/generated"
+#line 256 "hexc/generated"
 void main()
 {
-#line 229 "hexc/generated"
+#line 256 "hexc/generated"
     hexcLayersFilled = false;
     vec2 param = v_uv;
-    vec4 _4095 = hexc_albedo(param);
-    vec3 albedo = _4095.xyz;
+    vec4 _4127 = hexc_albedo(param);
+    vec3 albedo = _4127.xyz;
     float roughness = 0.5;
     vec3 N = normalize(v_normal);
     vec3 T = normalize(v_tangent.xyz - (N * dot(N, v_tangent.xyz)));
     vec3 B = cross(N, T) * v_tangent.w;
     vec2 param_1 = v_uv;
-    vec2 _4127 = hexc_normal(param_1);
-    vec2 param_2 = _4127;
+    vec2 _4159 = hexc_normal(param_1);
+    vec2 param_2 = _4159;
     vec3 n = hexcDerivToNormal(param_2);
     N = normalize(((T * n.x) - (B * n.y)) + (N * n.z));
     float diffuse = max(dot(N, vec3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);

@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _1989[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _2007[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -69,6 +69,9 @@ struct SPIRV_Cross_Output
 };
 
 static bool hexcLayersFilled;
+static HexcTiles hexcLatticeTiles0;
+static HexcTiles hexcLatticeTiles1;
+static HexcTiles hexcLatticeTiles2;
 static float2 hexcLayersSt;
 static float hexcLayersW[8];
 
@@ -84,61 +87,61 @@ float4 hexcPlainColorGrad(Texture2D<float4> tex, SamplerState samp, float2 st, f
 float3 hexcMxDecode(float3 c)
 {
 #line 72 "hexc/materialx.glsl"
-    float3 _3150 = c / 12.9200000762939453125f.xxx;
-    float3 _3161 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
-    bool3 _3165 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
-    return float3(_3165.x ? _3161.x : _3150.x, _3165.y ? _3161.y : _3150.y, _3165.z ? _3161.z : _3150.z);
+    float3 _3168 = c / 12.9200000762939453125f.xxx;
+    float3 _3179 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
+    bool3 _3183 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
+    return float3(_3183.x ? _3179.x : _3168.x, _3183.y ? _3179.y : _3168.y, _3183.z ? _3179.z : _3168.z);
 }
 
 #line 77 "hexc/materialx.glsl"
 float4 hexcMxDecoded(float4 c, bool srgb)
 {
-    float4 _3170;
+    float4 _3188;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _3170 = float4(hexcMxDecode(param), c.w);
+        _3188 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _3170 = c;
+        _3188 = c;
     }
-    return _3170;
+    return _3188;
 }
 
-#line 170 "hexc/generated"
+#line 194 "hexc/generated"
 float4 hexcAt_splat0(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 170 "hexc/generated"
+#line 194 "hexc/generated"
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     float3 param_3;
-    float4 _3408 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
+    float4 _3367 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
     weights = param_3;
-    float4 param_4 = _3408;
+    float4 param_4 = _3367;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 181 "hexc/generated"
+#line 205 "hexc/generated"
 void hexcLayerKeep(inout float w[8], float skip)
 {
-#line 181 "hexc/generated"
+#line 205 "hexc/generated"
     float sum = 0.0f;
-    float _3430;
+    float _3389;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _3430 = w[i];
+            _3389 = w[i];
         }
         else
         {
-            _3430 = 0.0f;
+            _3389 = 0.0f;
         }
-        w[i] = _3430;
+        w[i] = _3389;
         sum += w[i];
     }
     if (sum <= 0.0f)
@@ -207,26 +210,26 @@ float2 hexcCosSin(float angle)
     float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
     float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
     int q = int(k) & 3;
-    float2 _710;
+    float2 _728;
     if ((q & 1) != 0)
     {
-        _710 = float2(-s, c);
+        _728 = float2(-s, c);
     }
     else
     {
-        _710 = float2(c, s);
+        _728 = float2(c, s);
     }
-    float2 cs = _710;
-    float2 _725;
+    float2 cs = _728;
+    float2 _743;
     if ((q & 2) != 0)
     {
-        _725 = -cs;
+        _743 = -cs;
     }
     else
     {
-        _725 = cs;
+        _743 = cs;
     }
-    return _725;
+    return _743;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -234,22 +237,22 @@ void hexcStableTile_grass_albedo(int2 id, bool aboutOrigin, out float2 offset, o
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _966 = hexcPcg3d(param);
-    float3 u = float3(_966 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _984 = hexcPcg3d(param);
+    float3 u = float3(_984 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_grass_albedo_rotation;
     invScale = 1.0f;
-    float2 _989;
+    float2 _1007;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _989 = hexcCosSin(param_1);
+        _1007 = hexcCosSin(param_1);
     }
     else
     {
-        _989 = float2(cos(angle), sin(angle));
+        _1007 = float2(cos(angle), sin(angle));
     }
-    rot = _989;
+    rot = _1007;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -285,16 +288,16 @@ HexcTap hexcPlaceTile_grass_albedo(int2 id, float2 d, float2 c, float2 dSTdx, fl
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _1149 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1149 + c) + offset;
+    float2 _1167 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1167 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _1159 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1159;
+    float2 _1177 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1177;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _1165 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1165;
+    float2 _1183 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1183;
     return p;
 }
 
@@ -320,36 +323,36 @@ int3 hexcHexChannels(int2 v1, int2 v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _751;
+    int _769;
     if ((d < 0) && (a != 0))
     {
-        _751 = 3 - a;
+        _769 = 3 - a;
     }
     else
     {
-        _751 = a;
+        _769 = a;
     }
-    int i1 = _751;
-    int _762;
+    int i1 = _769;
+    int _780;
     if (i1 < 2)
     {
-        _762 = i1 + 1;
+        _780 = i1 + 1;
     }
     else
     {
-        _762 = 0;
+        _780 = 0;
     }
-    int vh = _762;
-    int _772;
+    int vh = _780;
+    int _790;
     if (i1 > 0)
     {
-        _772 = i1 - 1;
+        _790 = i1 - 1;
     }
     else
     {
-        _772 = 2;
+        _790 = 2;
     }
-    int vl = _772;
+    int vl = _790;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -378,57 +381,330 @@ HexcTiles hexcTilesStable_grass_albedo(float2 st, float2 dSTdx, float2 dSTdy, in
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1408 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1426 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1408;
+    t.tap[0] = _1426;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1424 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1442 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1424;
+    t.tap[1] = _1442;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1440 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1458 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1440;
+    t.tap[2] = _1458;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
 }
 
+#line 58 "hexc/generated"
+HexcTiles hexcLayerTiles0(float2 st, float2 dx, float2 dy, int2 cell)
+{
+#line 58 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_sand_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
+    uint3 param = uint3(uint2(id), 0u);
+    uint3 _1027 = hexcPcg3d(param);
+    float3 u = float3(_1027 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    offset = u.xy;
+    float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_sand_albedo_rotation;
+    invScale = 1.0f;
+    float2 _1044;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _1044 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _1044 = float2(cos(angle), sin(angle));
+    }
+    rot = _1044;
+}
+
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_sand_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
+{
+#line 276 "hexc/hextiling.glsl"
+    int2 param = id;
+    bool param_1 = aboutOrigin;
+    float2 param_2;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_sand_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _1207 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1207 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _1217 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1217;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _1223 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1223;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_sand_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = int2(uint2(local) + shift);
+    int2 param = local;
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_sand_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+}
+
+#line 295 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_sand_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = false;
+    float kx = floor(st.x / 28.0f);
+    float ky = floor(st.y);
+    float2 r = float2(st.x - (28.0f * kx), st.y - ky);
+    float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
+    float3 param_1;
+    int2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    int2 local[3] = param_2;
+    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
+    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
+    int2 param_3 = local[0];
+    uint2 param_4 = shift;
+    float2 param_5 = r;
+    float2 param_6 = dSTdx;
+    float2 param_7 = dSTdy;
+    int2 param_8;
+    HexcTap _1553 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _1553;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _1569 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _1569;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _1585 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _1585;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 66 "hexc/generated"
+HexcTiles hexcLayerTiles1(float2 st, float2 dx, float2 dy, int2 cell)
+{
+#line 66 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_sand_albedo(param, param_1, param_2, param_3);
+}
+
+#line 229 "hexc/hextiling.glsl"
+void hexcStableTile_snow_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
+{
+#line 229 "hexc/hextiling.glsl"
+    uint3 param = uint3(uint2(id), 0u);
+    uint3 _1064 = hexcPcg3d(param);
+    float3 u = float3(_1064 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    offset = u.xy;
+    float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_snow_albedo_rotation;
+    invScale = 1.0f;
+    float2 _1082;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _1082 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _1082 = float2(cos(angle), sin(angle));
+    }
+    rot = _1082;
+}
+
+#line 276 "hexc/hextiling.glsl"
+HexcTap hexcPlaceTile_snow_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
+{
+#line 276 "hexc/hextiling.glsl"
+    int2 param = id;
+    bool param_1 = aboutOrigin;
+    float2 param_2;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_snow_albedo(param, param_1, param_2, param_3, param_4);
+    float2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _1247 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1247 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _1257 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1257;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _1263 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1263;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+HexcTap hexcStableTap_snow_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = int2(uint2(local) + shift);
+    int2 param = local;
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_snow_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
+}
+
+#line 295 "hexc/hextiling.glsl"
+HexcTiles hexcTilesStable_snow_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = false;
+    float kx = floor(st.x / 28.0f);
+    float ky = floor(st.y);
+    float2 r = float2(st.x - (28.0f * kx), st.y - ky);
+    float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
+    float3 param_1;
+    int2 param_2[3];
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    int2 local[3] = param_2;
+    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
+    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
+    int2 param_3 = local[0];
+    uint2 param_4 = shift;
+    float2 param_5 = r;
+    float2 param_6 = dSTdx;
+    float2 param_7 = dSTdy;
+    int2 param_8;
+    HexcTap _1679 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    t.id[0] = param_8;
+    t.tap[0] = _1679;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _1695 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    t.id[1] = param_14;
+    t.tap[1] = _1695;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _1711 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    t.id[2] = param_20;
+    t.tap[2] = _1711;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 74 "hexc/generated"
+HexcTiles hexcLayerTiles2(float2 st, float2 dx, float2 dy, int2 cell)
+{
+#line 74 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_snow_albedo(param, param_1, param_2, param_3);
+}
+
 #line 132 "hexc/hextiling.glsl"
 float4 hexcChannel(int c)
 {
 #line 132 "hexc/hextiling.glsl"
-    float4 _832;
+    float4 _850;
     if (c == 0)
     {
-        _832 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _850 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-        float4 _839;
+        float4 _857;
         if (c == 1)
         {
-            _839 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _857 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-            bool4 _849 = (c == 2).xxxx;
-            _839 = float4(_849.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _849.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _849.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _849.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+            bool4 _867 = (c == 2).xxxx;
+            _857 = float4(_867.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _867.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _867.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _867.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _832 = _839;
+        _850 = _857;
     }
-    return _832;
+    return _850;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -459,7 +735,7 @@ void hexcFetchTaps_grass_albedo(Texture2DArray<float4> tex, SamplerState samp, H
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _1989;
+    c = _2007;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_grass_albedo(tex, samp, param_1, param_2);
@@ -516,20 +792,20 @@ float3 hexcBlendWeights_grass_albedo(float3 w, float3 M)
 #line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1875 = hexcPowInt(param, param_1);
-    float3 wg = _1875;
+    float3 _1893 = hexcPowInt(param, param_1);
+    float3 wg = _1893;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1891;
+    float3 _1909;
     if (sum > 0.0f)
     {
-        _1891 = W / sum.xxx;
+        _1909 = W / sum.xxx;
     }
     else
     {
-        _1891 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1909 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1891;
+    W = _1909;
     return W;
 }
 
@@ -537,10 +813,10 @@ float3 hexcBlendWeights_grass_albedo(float3 w, float3 M)
 float3 hexcShowWeights(float3 W, int3 channel)
 {
 #line 125 "hexc/hextiling.glsl"
-    int3 _804 = channel.x.xxx;
-    int3 _814 = channel.y.xxx;
-    int3 _823 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _804.x, int3(0, 1, 2).y == _804.y, int3(0, 1, 2).z == _804.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _814.x, int3(0, 1, 2).y == _814.y, int3(0, 1, 2).z == _814.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _823.x, int3(0, 1, 2).y == _823.y, int3(0, 1, 2).z == _823.z)) * W.z);
+    int3 _822 = channel.x.xxx;
+    int3 _832 = channel.y.xxx;
+    int3 _841 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _822.x, int3(0, 1, 2).y == _822.y, int3(0, 1, 2).z == _822.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _832.x, int3(0, 1, 2).y == _832.y, int3(0, 1, 2).z == _832.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _841.x, int3(0, 1, 2).y == _841.y, int3(0, 1, 2).z == _841.z)) * W.z);
 }
 
 #line 577 "hexc/hextiling.glsl"
@@ -565,141 +841,17 @@ float4 hexcColor_grass_height(Texture2DArray<float4> tex, SamplerState samp, Hex
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 76 "hexc/generated"
+#line 100 "hexc/generated"
 float hexcAt_grass_height(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 76 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _3242 = hexcColor_grass_height(hexcArr_height, hexcSampler, param_5, param_6, hexcArr_height, param_7);
-    weights = param_7;
-    return _3242.w;
-}
-
-#line 229 "hexc/hextiling.glsl"
-void hexcStableTile_sand_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
-{
-#line 229 "hexc/hextiling.glsl"
-    uint3 param = uint3(uint2(id), 0u);
-    uint3 _1009 = hexcPcg3d(param);
-    float3 u = float3(_1009 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
-    offset = u.xy;
-    float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_sand_albedo_rotation;
-    invScale = 1.0f;
-    float2 _1026;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _1026 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _1026 = float2(cos(angle), sin(angle));
-    }
-    rot = _1026;
-}
-
-#line 276 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_sand_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
-{
-#line 276 "hexc/hextiling.glsl"
-    int2 param = id;
-    bool param_1 = aboutOrigin;
-    float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_sand_albedo(param, param_1, param_2, param_3, param_4);
-    float2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _1189 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1189 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _1199 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1199;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _1205 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1205;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_sand_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = int2(uint2(local) + shift);
-    int2 param = local;
-    int2 param_1 = local;
-    int2 param_2 = id;
-    float2 param_3 = r - hexcStableCentre(param);
-    float2 param_4 = hexcStableCentreInPeriod(param_1);
-    float2 param_5 = dSTdx;
-    float2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_sand_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
-}
-
-#line 295 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_sand_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = false;
-    float kx = floor(st.x / 28.0f);
-    float ky = floor(st.y);
-    float2 r = float2(st.x - (28.0f * kx), st.y - ky);
-    float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
-    float3 param_1;
-    int2 param_2[3];
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    int2 local[3] = param_2;
-    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-    int2 param_3 = local[0];
-    uint2 param_4 = shift;
-    float2 param_5 = r;
-    float2 param_6 = dSTdx;
-    float2 param_7 = dSTdy;
-    int2 param_8;
-    HexcTap _1535 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
-    t.id[0] = param_8;
-    t.tap[0] = _1535;
-    int2 param_9 = local[1];
-    uint2 param_10 = shift;
-    float2 param_11 = r;
-    float2 param_12 = dSTdx;
-    float2 param_13 = dSTdy;
-    int2 param_14;
-    HexcTap _1551 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
-    t.id[1] = param_14;
-    t.tap[1] = _1551;
-    int2 param_15 = local[2];
-    uint2 param_16 = shift;
-    float2 param_17 = r;
-    float2 param_18 = dSTdx;
-    float2 param_19 = dSTdy;
-    int2 param_20;
-    HexcTap _1567 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
-    t.id[2] = param_20;
-    t.tap[2] = _1567;
-    int2 param_21 = t.id[0];
-    int2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 100 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _3271 = hexcColor_grass_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
+    weights = param_3;
+    return _3271.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -715,7 +867,7 @@ void hexcFetchTaps_sand_albedo(Texture2DArray<float4> tex, SamplerState samp, He
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _1989;
+    c = _2007;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_sand_albedo(tex, samp, param_1, param_2);
@@ -756,21 +908,17 @@ float4 hexcColor_sand_height(Texture2DArray<float4> tex, SamplerState samp, Hexc
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 104 "hexc/generated"
+#line 128 "hexc/generated"
 float hexcAt_sand_height(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 104 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _3293 = hexcColor_sand_height(hexcArr_height, hexcSampler, param_5, param_6, hexcArr_height, param_7);
-    weights = param_7;
-    return _3293.w;
+#line 128 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles1;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _3299 = hexcColor_sand_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
+    weights = param_3;
+    return _3299.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -786,7 +934,7 @@ void hexcFetchTaps_pebbles_albedo(Texture2DArray<float4> tex, SamplerState samp,
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _1989;
+    c = _2007;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_pebbles_albedo(tex, samp, param_1, param_2);
@@ -827,141 +975,17 @@ float4 hexcColor_pebbles_height(Texture2DArray<float4> tex, SamplerState samp, H
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 132 "hexc/generated"
+#line 156 "hexc/generated"
 float hexcAt_pebbles_height(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 132 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _3344 = hexcColor_pebbles_height(hexcArr_height, hexcSampler, param_5, param_6, hexcArr_height, param_7);
-    weights = param_7;
-    return _3344.w;
-}
-
-#line 229 "hexc/hextiling.glsl"
-void hexcStableTile_snow_albedo(int2 id, bool aboutOrigin, out float2 offset, out float2 rot, out float invScale)
-{
-#line 229 "hexc/hextiling.glsl"
-    uint3 param = uint3(uint2(id), 0u);
-    uint3 _1046 = hexcPcg3d(param);
-    float3 u = float3(_1046 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
-    offset = u.xy;
-    float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_snow_albedo_rotation;
-    invScale = 1.0f;
-    float2 _1064;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _1064 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _1064 = float2(cos(angle), sin(angle));
-    }
-    rot = _1064;
-}
-
-#line 276 "hexc/hextiling.glsl"
-HexcTap hexcPlaceTile_snow_albedo(int2 id, float2 d, float2 c, float2 dSTdx, float2 dSTdy, bool aboutOrigin)
-{
-#line 276 "hexc/hextiling.glsl"
-    int2 param = id;
-    bool param_1 = aboutOrigin;
-    float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_snow_albedo(param, param_1, param_2, param_3, param_4);
-    float2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _1229 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1229 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _1239 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1239;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _1245 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1245;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-HexcTap hexcStableTap_snow_albedo(int2 local, uint2 shift, float2 r, float2 dSTdx, float2 dSTdy, inout int2 id)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = int2(uint2(local) + shift);
-    int2 param = local;
-    int2 param_1 = local;
-    int2 param_2 = id;
-    float2 param_3 = r - hexcStableCentre(param);
-    float2 param_4 = hexcStableCentreInPeriod(param_1);
-    float2 param_5 = dSTdx;
-    float2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_snow_albedo(param_2, param_3, param_4, param_5, param_6, param_7);
-}
-
-#line 295 "hexc/hextiling.glsl"
-HexcTiles hexcTilesStable_snow_albedo(float2 st, float2 dSTdx, float2 dSTdy, int2 cell)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = false;
-    float kx = floor(st.x / 28.0f);
-    float ky = floor(st.y);
-    float2 r = float2(st.x - (28.0f * kx), st.y - ky);
-    float2 param = float2((3.4642856121063232421875f * r.x) - (2.0f * r.y), 4.0f * r.y);
-    float3 param_1;
-    int2 param_2[3];
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    int2 local[3] = param_2;
-    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-    int2 param_3 = local[0];
-    uint2 param_4 = shift;
-    float2 param_5 = r;
-    float2 param_6 = dSTdx;
-    float2 param_7 = dSTdy;
-    int2 param_8;
-    HexcTap _1661 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
-    t.id[0] = param_8;
-    t.tap[0] = _1661;
-    int2 param_9 = local[1];
-    uint2 param_10 = shift;
-    float2 param_11 = r;
-    float2 param_12 = dSTdx;
-    float2 param_13 = dSTdy;
-    int2 param_14;
-    HexcTap _1677 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
-    t.id[1] = param_14;
-    t.tap[1] = _1677;
-    int2 param_15 = local[2];
-    uint2 param_16 = shift;
-    float2 param_17 = r;
-    float2 param_18 = dSTdx;
-    float2 param_19 = dSTdy;
-    int2 param_20;
-    HexcTap _1693 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
-    t.id[2] = param_20;
-    t.tap[2] = _1693;
-    int2 param_21 = t.id[0];
-    int2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 156 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _3326 = hexcColor_pebbles_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
+    weights = param_3;
+    return _3326.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -977,7 +1001,7 @@ void hexcFetchTaps_snow_albedo(Texture2DArray<float4> tex, SamplerState samp, He
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _1989;
+    c = _2007;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_snow_albedo(tex, samp, param_1, param_2);
@@ -1018,27 +1042,23 @@ float4 hexcColor_snow_height(Texture2DArray<float4> tex, SamplerState samp, Hexc
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 160 "hexc/generated"
+#line 184 "hexc/generated"
 float hexcAt_snow_height(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 160 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _3395 = hexcColor_snow_height(hexcArr_height, hexcSampler, param_5, param_6, hexcArr_height, param_7);
-    weights = param_7;
-    return _3395.w;
+#line 184 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles2;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _3354 = hexcColor_snow_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
+    weights = param_3;
+    return _3354.w;
 }
 
-#line 196 "hexc/generated"
+#line 220 "hexc/generated"
 void hexcLayerHeights(inout float w[8], float h[8], float width)
 {
-#line 196 "hexc/generated"
+#line 220 "hexc/generated"
     float top = -2.0f;
     for (int i = 0; i < 8; i++)
     {
@@ -1048,18 +1068,18 @@ void hexcLayerHeights(inout float w[8], float h[8], float width)
         }
     }
     float sum = 0.0f;
-    float _3508;
+    float _3467;
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
         if (w[i_1] > 0.0f)
         {
-            _3508 = max(((h[i_1] + w[i_1]) - top) + width, 0.0f);
+            _3467 = max(((h[i_1] + w[i_1]) - top) + width, 0.0f);
         }
         else
         {
-            _3508 = 0.0f;
+            _3467 = 0.0f;
         }
-        w[i_1] = _3508;
+        w[i_1] = _3467;
         sum += w[i_1];
     }
     for (int i_2 = 0; i_2 < 8; i_2++)
@@ -1068,10 +1088,10 @@ void hexcLayerHeights(inout float w[8], float h[8], float width)
     }
 }
 
-#line 211 "hexc/generated"
+#line 235 "hexc/generated"
 void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
 {
-#line 211 "hexc/generated"
+#line 235 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0f;
@@ -1081,9 +1101,9 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
     float2 param_2 = dy * hexcParams_splat0_tiling;
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _3582 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
+    float4 _3541 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
     float3 t = param_4;
-    float4 splat0 = _3582;
+    float4 splat0 = _3541;
     w[0] = splat0.x;
     w[1] = splat0.y;
     w[2] = splat0.z;
@@ -1092,6 +1112,40 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
     float param_6 = 0.0019607841968536376953125f;
     hexcLayerKeep(param_5, param_6);
     w = param_5;
+    bool _3563 = w[0] > 0.0f;
+    bool _3570;
+    if (!_3563)
+    {
+        _3570 = w[2] > 0.0f;
+    }
+    else
+    {
+        _3570 = _3563;
+    }
+    if (_3570)
+    {
+        float2 param_7 = st * hexcParams_grass_albedo_tiling;
+        float2 param_8 = dx * hexcParams_grass_albedo_tiling;
+        float2 param_9 = dy * hexcParams_grass_albedo_tiling;
+        int2 param_10 = int2(0, 0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10);
+    }
+    if (w[1] > 0.0f)
+    {
+        float2 param_11 = st * hexcParams_sand_albedo_tiling;
+        float2 param_12 = dx * hexcParams_sand_albedo_tiling;
+        float2 param_13 = dy * hexcParams_sand_albedo_tiling;
+        int2 param_14 = int2(0, 0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14);
+    }
+    if (w[3] > 0.0f)
+    {
+        float2 param_15 = st * hexcParams_snow_albedo_tiling;
+        float2 param_16 = dx * hexcParams_snow_albedo_tiling;
+        float2 param_17 = dy * hexcParams_snow_albedo_tiling;
+        int2 param_18 = int2(0, 0);
+        hexcLatticeTiles2 = hexcLayerTiles2(param_15, param_16, param_17, param_18);
+    }
     float h[8];
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
@@ -1099,59 +1153,59 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
     }
     if (w[0] > 0.0f)
     {
-        float2 param_7 = st * hexcParams_grass_albedo_tiling;
-        float2 param_8 = dx * hexcParams_grass_albedo_tiling;
-        float2 param_9 = dy * hexcParams_grass_albedo_tiling;
-        int2 param_10 = int2(0, 0);
-        float3 param_11;
-        float _3637 = hexcAt_grass_height(param_7, param_8, param_9, param_10, param_11);
-        t = param_11;
-        h[0] = _3637;
+        float2 param_19 = st * hexcParams_grass_albedo_tiling;
+        float2 param_20 = dx * hexcParams_grass_albedo_tiling;
+        float2 param_21 = dy * hexcParams_grass_albedo_tiling;
+        int2 param_22 = int2(0, 0);
+        float3 param_23;
+        float _3669 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23);
+        t = param_23;
+        h[0] = _3669;
     }
     if (w[1] > 0.0f)
     {
-        float2 param_12 = st * hexcParams_sand_albedo_tiling;
-        float2 param_13 = dx * hexcParams_sand_albedo_tiling;
-        float2 param_14 = dy * hexcParams_sand_albedo_tiling;
-        int2 param_15 = int2(0, 0);
-        float3 param_16;
-        float _3662 = hexcAt_sand_height(param_12, param_13, param_14, param_15, param_16);
-        t = param_16;
-        h[1] = _3662;
+        float2 param_24 = st * hexcParams_sand_albedo_tiling;
+        float2 param_25 = dx * hexcParams_sand_albedo_tiling;
+        float2 param_26 = dy * hexcParams_sand_albedo_tiling;
+        int2 param_27 = int2(0, 0);
+        float3 param_28;
+        float _3694 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28);
+        t = param_28;
+        h[1] = _3694;
     }
     if (w[2] > 0.0f)
     {
-        float2 param_17 = st * hexcParams_grass_albedo_tiling;
-        float2 param_18 = dx * hexcParams_grass_albedo_tiling;
-        float2 param_19 = dy * hexcParams_grass_albedo_tiling;
-        int2 param_20 = int2(0, 0);
-        float3 param_21;
-        float _3687 = hexcAt_pebbles_height(param_17, param_18, param_19, param_20, param_21);
-        t = param_21;
-        h[2] = _3687;
+        float2 param_29 = st * hexcParams_grass_albedo_tiling;
+        float2 param_30 = dx * hexcParams_grass_albedo_tiling;
+        float2 param_31 = dy * hexcParams_grass_albedo_tiling;
+        int2 param_32 = int2(0, 0);
+        float3 param_33;
+        float _3719 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33);
+        t = param_33;
+        h[2] = _3719;
     }
     if (w[3] > 0.0f)
     {
-        float2 param_22 = st * hexcParams_snow_albedo_tiling;
-        float2 param_23 = dx * hexcParams_snow_albedo_tiling;
-        float2 param_24 = dy * hexcParams_snow_albedo_tiling;
-        int2 param_25 = int2(0, 0);
-        float3 param_26;
-        float _3712 = hexcAt_snow_height(param_22, param_23, param_24, param_25, param_26);
-        t = param_26;
-        h[3] = _3712;
+        float2 param_34 = st * hexcParams_snow_albedo_tiling;
+        float2 param_35 = dx * hexcParams_snow_albedo_tiling;
+        float2 param_36 = dy * hexcParams_snow_albedo_tiling;
+        int2 param_37 = int2(0, 0);
+        float3 param_38;
+        float _3744 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38);
+        t = param_38;
+        h[3] = _3744;
     }
-    float param_27[8] = w;
-    float param_28[8] = h;
-    float param_29 = 0.20000000298023223876953125f;
-    hexcLayerHeights(param_27, param_28, param_29);
-    w = param_27;
+    float param_39[8] = w;
+    float param_40[8] = h;
+    float param_41 = 0.20000000298023223876953125f;
+    hexcLayerHeights(param_39, param_40, param_41);
+    w = param_39;
 }
 
-#line 233 "hexc/generated"
+#line 260 "hexc/generated"
 void hexcLayerWeights(float2 st, float2 dx, float2 dy, out float w[8])
 {
-#line 233 "hexc/generated"
+#line 260 "hexc/generated"
     if ((!hexcLayersFilled) || any(bool2(st.x != hexcLayersSt.x, st.y != hexcLayersSt.y)))
     {
         float2 param = st;
@@ -1195,20 +1249,16 @@ float4 hexcColor_grass_albedo(Texture2DArray<float4> tex, SamplerState samp, Hex
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 57 "hexc/generated"
+#line 81 "hexc/generated"
 float4 hexcAt_grass_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 57 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
-    float3 param_6;
-    float4 _3206 = hexcColor_grass_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6);
-    weights = param_6;
-    return _3206;
+#line 81 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
+    float3 param_2;
+    float4 _3251 = hexcColor_grass_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    weights = param_2;
+    return _3251;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1240,20 +1290,16 @@ float4 hexcColor_sand_albedo(Texture2DArray<float4> tex, SamplerState samp, Hexc
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 85 "hexc/generated"
+#line 109 "hexc/generated"
 float4 hexcAt_sand_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 85 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3);
-    float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
-    float3 param_6;
-    float4 _3259 = hexcColor_sand_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6);
-    weights = param_6;
-    return _3259;
+#line 109 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
+    float3 param_2;
+    float4 _3281 = hexcColor_sand_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    weights = param_2;
+    return _3281;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1285,20 +1331,16 @@ float4 hexcColor_pebbles_albedo(Texture2DArray<float4> tex, SamplerState samp, H
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 113 "hexc/generated"
+#line 137 "hexc/generated"
 float4 hexcAt_pebbles_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 113 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
-    float3 param_6;
-    float4 _3310 = hexcColor_pebbles_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6);
-    weights = param_6;
-    return _3310;
+#line 137 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
+    float3 param_2;
+    float4 _3308 = hexcColor_pebbles_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    weights = param_2;
+    return _3308;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1330,26 +1372,22 @@ float4 hexcColor_snow_albedo(Texture2DArray<float4> tex, SamplerState samp, Hexc
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 141 "hexc/generated"
+#line 165 "hexc/generated"
 float4 hexcAt_snow_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 141 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3);
-    float4 param_5 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
-    float3 param_6;
-    float4 _3361 = hexcColor_snow_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6);
-    weights = param_6;
-    return _3361;
+#line 165 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles2;
+    float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
+    float3 param_2;
+    float4 _3336 = hexcColor_snow_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    weights = param_2;
+    return _3336;
 }
 
-#line 243 "hexc/generated"
+#line 270 "hexc/generated"
 float4 hexc_albedo(float2 uv, inout float3 weights)
 {
-#line 243 "hexc/generated"
+#line 270 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -1369,9 +1407,9 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_6 = dy * hexcParams_grass_albedo_tiling;
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float4 _3792 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8);
+        float4 _3824 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_3792 * w[0]);
+        value += (_3824 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0f)
@@ -1381,9 +1419,9 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_11 = dy * hexcParams_sand_albedo_tiling;
         int2 param_12 = int2(0, 0);
         float3 param_13;
-        float4 _3827 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13);
+        float4 _3859 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_3827 * w[1]);
+        value += (_3859 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0f)
@@ -1393,9 +1431,9 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_16 = dy * hexcParams_grass_albedo_tiling;
         int2 param_17 = int2(0, 0);
         float3 param_18;
-        float4 _3862 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18);
+        float4 _3894 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18);
         t = param_18;
-        value += (_3862 * w[2]);
+        value += (_3894 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0f)
@@ -1405,23 +1443,23 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_21 = dy * hexcParams_snow_albedo_tiling;
         int2 param_22 = int2(0, 0);
         float3 param_23;
-        float4 _3897 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23);
+        float4 _3929 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        value += (_3897 * w[3]);
+        value += (_3929 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 268 "hexc/generated"
+#line 295 "hexc/generated"
 float4 hexc_albedo(float2 uv)
 {
-#line 268 "hexc/generated"
+#line 295 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _3915 = hexc_albedo(param, param_1);
+    float4 _3947 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _3915;
+    return _3947;
 }
 
 #line 621 "hexc/hextiling.glsl"
@@ -1430,16 +1468,16 @@ float2 hexcNormalToDeriv(float3 vM, bool flipY)
 #line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _2629;
+    float _2647;
     if (flipY)
     {
-        _2629 = -vM.y;
+        _2647 = -vM.y;
     }
     else
     {
-        _2629 = vM.y;
+        _2647 = vM.y;
     }
-    return (-float2(vM.x, _2629)) / zMa.xx;
+    return (-float2(vM.x, _2647)) / zMa.xx;
 }
 
 #line 145 "hexc/hextiling.glsl"
@@ -1460,16 +1498,16 @@ float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _2662;
+    float2 _2680;
     if (scaled)
     {
-        _2662 = d * p.invScale;
+        _2680 = d * p.invScale;
     }
     else
     {
-        _2662 = d;
+        _2680 = d;
     }
-    return _2662;
+    return _2680;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1522,20 +1560,16 @@ float2 hexcDeriv_grass_normal(Texture2DArray<float4> tex, SamplerState samp, Hex
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 66 "hexc/generated"
+#line 90 "hexc/generated"
 float2 hexcAt_grass_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 66 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    bool param_5 = false;
-    float3 param_6;
-    float2 _3223 = hexcDeriv_grass_normal(hexcArr_normal, hexcSampler, param_4, param_5, hexcArr_normal, param_6);
-    weights = param_6;
-    return _3223;
+#line 90 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    bool param_1 = false;
+    float3 param_2;
+    float2 _3260 = hexcDeriv_grass_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
+    weights = param_2;
+    return _3260;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1588,20 +1622,16 @@ float2 hexcDeriv_sand_normal(Texture2DArray<float4> tex, SamplerState samp, Hexc
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 94 "hexc/generated"
+#line 118 "hexc/generated"
 float2 hexcAt_sand_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 94 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3);
-    bool param_5 = false;
-    float3 param_6;
-    float2 _3275 = hexcDeriv_sand_normal(hexcArr_normal, hexcSampler, param_4, param_5, hexcArr_normal, param_6);
-    weights = param_6;
-    return _3275;
+#line 118 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    bool param_1 = false;
+    float3 param_2;
+    float2 _3289 = hexcDeriv_sand_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
+    weights = param_2;
+    return _3289;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1654,20 +1684,16 @@ float2 hexcDeriv_pebbles_normal(Texture2DArray<float4> tex, SamplerState samp, H
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 122 "hexc/generated"
+#line 146 "hexc/generated"
 float2 hexcAt_pebbles_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 122 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3);
-    bool param_5 = false;
-    float3 param_6;
-    float2 _3326 = hexcDeriv_pebbles_normal(hexcArr_normal, hexcSampler, param_4, param_5, hexcArr_normal, param_6);
-    weights = param_6;
-    return _3326;
+#line 146 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    bool param_1 = false;
+    float3 param_2;
+    float2 _3316 = hexcDeriv_pebbles_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
+    weights = param_2;
+    return _3316;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1720,26 +1746,22 @@ float2 hexcDeriv_snow_normal(Texture2DArray<float4> tex, SamplerState samp, Hexc
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 150 "hexc/generated"
+#line 174 "hexc/generated"
 float2 hexcAt_snow_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3 weights)
 {
-#line 150 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3);
-    bool param_5 = false;
-    float3 param_6;
-    float2 _3377 = hexcDeriv_snow_normal(hexcArr_normal, hexcSampler, param_4, param_5, hexcArr_normal, param_6);
-    weights = param_6;
-    return _3377;
+#line 174 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles2;
+    bool param_1 = false;
+    float3 param_2;
+    float2 _3344 = hexcDeriv_snow_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
+    weights = param_2;
+    return _3344;
 }
 
-#line 273 "hexc/generated"
+#line 300 "hexc/generated"
 float2 hexc_normal(float2 uv, inout float3 weights)
 {
-#line 273 "hexc/generated"
+#line 300 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -1759,9 +1781,9 @@ float2 hexc_normal(float2 uv, inout float3 weights)
         float2 param_6 = dy * hexcParams_grass_albedo_tiling;
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float2 _3963 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8);
+        float2 _3995 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_3963 * w[0]);
+        value += (_3995 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0f)
@@ -1771,9 +1793,9 @@ float2 hexc_normal(float2 uv, inout float3 weights)
         float2 param_11 = dy * hexcParams_sand_albedo_tiling;
         int2 param_12 = int2(0, 0);
         float3 param_13;
-        float2 _3998 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13);
+        float2 _4030 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_3998 * w[1]);
+        value += (_4030 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0f)
@@ -1783,9 +1805,9 @@ float2 hexc_normal(float2 uv, inout float3 weights)
         float2 param_16 = dy * hexcParams_grass_albedo_tiling;
         int2 param_17 = int2(0, 0);
         float3 param_18;
-        float2 _4033 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18);
+        float2 _4065 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18);
         t = param_18;
-        value += (_4033 * w[2]);
+        value += (_4065 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0f)
@@ -1795,23 +1817,23 @@ float2 hexc_normal(float2 uv, inout float3 weights)
         float2 param_21 = dy * hexcParams_snow_albedo_tiling;
         int2 param_22 = int2(0, 0);
         float3 param_23;
-        float2 _4068 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23);
+        float2 _4100 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        value += (_4068 * w[3]);
+        value += (_4100 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 298 "hexc/generated"
+#line 325 "hexc/generated"
 float2 hexc_normal(float2 uv)
 {
-#line 298 "hexc/generated"
+#line 325 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _4086 = hexc_normal(param, param_1);
+    float2 _4118 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _4086;
+    return _4118;
 }
 
 #line 701 "hexc/hextiling.glsl"
@@ -1821,21 +1843,21 @@ float3 hexcDerivToNormal(float2 deriv)
     return normalize(float3(-deriv, 1.0f));
 }
 
-#line 229 "hexc/generated"
+#line 256 "hexc/generated"
 void frag_main()
 {
-#line 229 "hexc/generated"
+#line 256 "hexc/generated"
     hexcLayersFilled = false;
     float2 param = v_uv;
-    float4 _4095 = hexc_albedo(param);
-    float3 albedo = _4095.xyz;
+    float4 _4127 = hexc_albedo(param);
+    float3 albedo = _4127.xyz;
     float roughness = 0.5f;
     float3 N = normalize(v_normal);
     float3 T = normalize(v_tangent.xyz - (N * dot(N, v_tangent.xyz)));
     float3 B = cross(N, T) * v_tangent.w;
     float2 param_1 = v_uv;
-    float2 _4127 = hexc_normal(param_1);
-    float2 param_2 = _4127;
+    float2 _4159 = hexc_normal(param_1);
+    float2 param_2 = _4159;
     float3 n = hexcDerivToNormal(param_2);
     N = normalize(((T * n.x) - (B * n.y)) + (N * n.z));
     float diffuse = max(dot(N, float3(0.408248007297515869140625f, 0.408248007297515869140625f, 0.816497027873992919921875f)), 0.0f);

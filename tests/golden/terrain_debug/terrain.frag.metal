@@ -89,7 +89,7 @@ struct HexcParams
     float snow_height_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _1989 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _2007 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct terrain_frag_out
 {
@@ -124,54 +124,54 @@ float3 hexcMxDecode(thread const float3& c)
 static inline __attribute__((always_inline))
 float4 hexcMxDecoded(thread const float4& c, thread const bool& srgb)
 {
-    float4 _3170;
+    float4 _3188;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _3170 = float4(hexcMxDecode(param), c.w);
+        _3188 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _3170 = c;
+        _3188 = c;
     }
-    return _3170;
+    return _3188;
 }
 
-#line 170 "hexc/generated"
+#line 194 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexcAt_splat0(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, sampler hexcSampler, texture2d<float> hexcTex_splat0)
 {
-#line 170 "hexc/generated"
+#line 194 "hexc/generated"
     float2 param = st;
     float2 param_1 = dx;
     float2 param_2 = dy;
     float3 param_3;
-    float4 _3408 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
+    float4 _3367 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
     weights = param_3;
-    float4 param_4 = _3408;
+    float4 param_4 = _3367;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
 
-#line 181 "hexc/generated"
+#line 205 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerKeep(thread spvUnsafeArray<float, 8>& w, thread const float& skip)
 {
-#line 181 "hexc/generated"
+#line 205 "hexc/generated"
     float sum = 0.0;
-    float _3430;
+    float _3389;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _3430 = w[i];
+            _3389 = w[i];
         }
         else
         {
-            _3430 = 0.0;
+            _3389 = 0.0;
         }
-        w[i] = _3430;
+        w[i] = _3389;
         sum += w[i];
     }
     if (sum <= 0.0)
@@ -245,26 +245,26 @@ float2 hexcCosSin(thread const float& angle)
     float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
     float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
     int q = int(k) & 3;
-    float2 _710;
+    float2 _728;
     if ((q & 1) != 0)
     {
-        _710 = float2(-s, c);
+        _728 = float2(-s, c);
     }
     else
     {
-        _710 = float2(c, s);
+        _728 = float2(c, s);
     }
-    float2 cs = _710;
-    float2 _725;
+    float2 cs = _728;
+    float2 _743;
     if ((q & 2) != 0)
     {
-        _725 = -cs;
+        _743 = -cs;
     }
     else
     {
-        _725 = cs;
+        _743 = cs;
     }
-    return _725;
+    return _743;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -273,22 +273,22 @@ void hexcStableTile_grass_albedo(thread const int2& id, thread const bool& about
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _966 = hexcPcg3d(param);
-    float3 u = float3(_966 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _984 = hexcPcg3d(param);
+    float3 u = float3(_984 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.grass_albedo_rotation;
     invScale = 1.0;
-    float2 _989;
+    float2 _1007;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _989 = hexcCosSin(param_1);
+        _1007 = hexcCosSin(param_1);
     }
     else
     {
-        _989 = float2(cos(angle), sin(angle));
+        _1007 = float2(cos(angle), sin(angle));
     }
-    rot = _989;
+    rot = _1007;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -327,16 +327,16 @@ HexcTap hexcPlaceTile_grass_albedo(thread const int2& id, thread const float2& d
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _1149 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1149 + c) + offset;
+    float2 _1167 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1167 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _1159 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1159;
+    float2 _1177 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1177;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _1165 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1165;
+    float2 _1183 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1183;
     return p;
 }
 
@@ -364,36 +364,36 @@ int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _751;
+    int _769;
     if ((d < 0) && (a != 0))
     {
-        _751 = 3 - a;
+        _769 = 3 - a;
     }
     else
     {
-        _751 = a;
+        _769 = a;
     }
-    int i1 = _751;
-    int _762;
+    int i1 = _769;
+    int _780;
     if (i1 < 2)
     {
-        _762 = i1 + 1;
+        _780 = i1 + 1;
     }
     else
     {
-        _762 = 0;
+        _780 = 0;
     }
-    int vh = _762;
-    int _772;
+    int vh = _780;
+    int _790;
     if (i1 > 0)
     {
-        _772 = i1 - 1;
+        _790 = i1 - 1;
     }
     else
     {
-        _772 = 2;
+        _790 = 2;
     }
-    int vl = _772;
+    int vl = _790;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -424,31 +424,317 @@ HexcTiles hexcTilesStable_grass_albedo(thread const float2& st, thread const flo
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1408 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _1426 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _1408;
+    t.tap[0] = _1426;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1424 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _1442 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _1424;
+    t.tap[1] = _1442;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1440 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _1458 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _1440;
+    t.tap[2] = _1458;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
     return t;
+}
+
+#line 58 "hexc/generated"
+static inline __attribute__((always_inline))
+HexcTiles hexcLayerTiles0(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 58 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_grass_albedo(param, param_1, param_2, param_3, hexcParams);
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_sand_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
+    uint3 param = uint3(uint2(id), 0u);
+    uint3 _1027 = hexcPcg3d(param);
+    float3 u = float3(_1027 >> uint3(8u)) * 5.9604644775390625e-08;
+    offset = u.xy;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.sand_albedo_rotation;
+    invScale = 1.0;
+    float2 _1044;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _1044 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _1044 = float2(cos(angle), sin(angle));
+    }
+    rot = _1044;
+}
+
+#line 276 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTap hexcPlaceTile_sand_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
+{
+#line 276 "hexc/hextiling.glsl"
+    int2 param = id;
+    bool param_1 = aboutOrigin;
+    float2 param_2;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_sand_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _1207 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1207 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _1217 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1217;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _1223 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1223;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTap hexcStableTap_sand_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = int2(uint2(local) + shift);
+    int2 param = local;
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_sand_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
+}
+
+#line 295 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTiles hexcTilesStable_sand_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = short(false);
+    float kx = floor(st.x / 28.0);
+    float ky = floor(st.y);
+    float2 r = float2(st.x - (28.0 * kx), st.y - ky);
+    float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
+    float3 param_1;
+    spvUnsafeArray<int2, 3> param_2;
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    spvUnsafeArray<int2, 3> local;
+    local = param_2;
+    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
+    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
+    int2 param_3 = local[0];
+    uint2 param_4 = shift;
+    float2 param_5 = r;
+    float2 param_6 = dSTdx;
+    float2 param_7 = dSTdy;
+    int2 param_8;
+    HexcTap _1553 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    t.id[0] = param_8;
+    t.tap[0] = _1553;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _1569 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    t.id[1] = param_14;
+    t.tap[1] = _1569;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _1585 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    t.id[2] = param_20;
+    t.tap[2] = _1585;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 66 "hexc/generated"
+static inline __attribute__((always_inline))
+HexcTiles hexcLayerTiles1(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 66 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_sand_albedo(param, param_1, param_2, param_3, hexcParams);
+}
+
+#line 229 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+void hexcStableTile_snow_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
+{
+#line 229 "hexc/hextiling.glsl"
+    uint3 param = uint3(uint2(id), 0u);
+    uint3 _1064 = hexcPcg3d(param);
+    float3 u = float3(_1064 >> uint3(8u)) * 5.9604644775390625e-08;
+    offset = u.xy;
+    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.snow_albedo_rotation;
+    invScale = 1.0;
+    float2 _1082;
+    if (aboutOrigin)
+    {
+        float param_1 = angle;
+        _1082 = hexcCosSin(param_1);
+    }
+    else
+    {
+        _1082 = float2(cos(angle), sin(angle));
+    }
+    rot = _1082;
+}
+
+#line 276 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTap hexcPlaceTile_snow_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
+{
+#line 276 "hexc/hextiling.glsl"
+    int2 param = id;
+    bool param_1 = aboutOrigin;
+    float2 param_2;
+    float2 param_3;
+    float param_4;
+    hexcStableTile_snow_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
+    float2 offset = param_2;
+    HexcTap p;
+    p.rot = param_3;
+    p.invScale = param_4;
+    float2 param_5 = d;
+    HexcTap param_6 = p;
+    float2 _1247 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1247 + c) + offset;
+    float2 param_7 = dSTdx;
+    HexcTap param_8 = p;
+    float2 _1257 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1257;
+    float2 param_9 = dSTdy;
+    HexcTap param_10 = p;
+    float2 _1263 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1263;
+    return p;
+}
+
+#line 286 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTap hexcStableTap_snow_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
+{
+#line 286 "hexc/hextiling.glsl"
+    id = int2(uint2(local) + shift);
+    int2 param = local;
+    int2 param_1 = local;
+    int2 param_2 = id;
+    float2 param_3 = r - hexcStableCentre(param);
+    float2 param_4 = hexcStableCentreInPeriod(param_1);
+    float2 param_5 = dSTdx;
+    float2 param_6 = dSTdy;
+    bool param_7 = false;
+    return hexcPlaceTile_snow_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
+}
+
+#line 295 "hexc/hextiling.glsl"
+static inline __attribute__((always_inline))
+HexcTiles hexcTilesStable_snow_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 295 "hexc/hextiling.glsl"
+    HexcTiles t;
+    t.dx = dSTdx;
+    t.dy = dSTdy;
+    t.scaled = short(false);
+    float kx = floor(st.x / 28.0);
+    float ky = floor(st.y);
+    float2 r = float2(st.x - (28.0 * kx), st.y - ky);
+    float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
+    float3 param_1;
+    spvUnsafeArray<int2, 3> param_2;
+    hexcTriangle(param, param_1, param_2);
+    t.w = param_1;
+    spvUnsafeArray<int2, 3> local;
+    local = param_2;
+    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
+    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
+    int2 param_3 = local[0];
+    uint2 param_4 = shift;
+    float2 param_5 = r;
+    float2 param_6 = dSTdx;
+    float2 param_7 = dSTdy;
+    int2 param_8;
+    HexcTap _1679 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    t.id[0] = param_8;
+    t.tap[0] = _1679;
+    int2 param_9 = local[1];
+    uint2 param_10 = shift;
+    float2 param_11 = r;
+    float2 param_12 = dSTdx;
+    float2 param_13 = dSTdy;
+    int2 param_14;
+    HexcTap _1695 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    t.id[1] = param_14;
+    t.tap[1] = _1695;
+    int2 param_15 = local[2];
+    uint2 param_16 = shift;
+    float2 param_17 = r;
+    float2 param_18 = dSTdx;
+    float2 param_19 = dSTdy;
+    int2 param_20;
+    HexcTap _1711 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    t.id[2] = param_20;
+    t.tap[2] = _1711;
+    int2 param_21 = t.id[0];
+    int2 param_22 = t.id[2];
+    t.channel = hexcHexChannels(param_21, param_22);
+    return t;
+}
+
+#line 74 "hexc/generated"
+static inline __attribute__((always_inline))
+HexcTiles hexcLayerTiles2(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, constant HexcParams& hexcParams)
+{
+#line 74 "hexc/generated"
+    float2 param = st;
+    float2 param_1 = dx;
+    float2 param_2 = dy;
+    int2 param_3 = cell;
+    return hexcTilesStable_snow_albedo(param, param_1, param_2, param_3, hexcParams);
 }
 
 #line 132 "hexc/hextiling.glsl"
@@ -456,25 +742,25 @@ static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
 #line 132 "hexc/hextiling.glsl"
-    float4 _832;
+    float4 _850;
     if (c == 0)
     {
-        _832 = float4(1.0, 0.0, 0.0, 0.0);
+        _850 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        float4 _839;
+        float4 _857;
         if (c == 1)
         {
-            _839 = float4(0.0, 1.0, 0.0, 0.0);
+            _857 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _839 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+            _857 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _832 = _839;
+        _850 = _857;
     }
-    return _832;
+    return _850;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -499,8 +785,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_grass_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1926 = float3(p.st, 0.0);
-    return tex.sample(samp, _1926.xy, uint(round(_1926.z)), gradient2d(p.dx, p.dy));
+    float3 _1944 = float3(p.st, 0.0);
+    return tex.sample(samp, _1944.xy, uint(round(_1944.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -510,7 +796,7 @@ void hexcFetchTaps_grass_albedo(texture2d_array<float> tex, sampler samp, thread
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _1989;
+    c = _2007;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_grass_albedo(tex, samp, param_1, param_2);
@@ -570,20 +856,20 @@ float3 hexcBlendWeights_grass_albedo(thread const float3& w, thread const float3
 #line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1875 = hexcPowInt(param, param_1);
-    float3 wg = _1875;
+    float3 _1893 = hexcPowInt(param, param_1);
+    float3 wg = _1893;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1891;
+    float3 _1909;
     if (sum > 0.0)
     {
-        _1891 = W / float3(sum);
+        _1909 = W / float3(sum);
     }
     else
     {
-        _1891 = wg / float3((wg.x + wg.y) + wg.z);
+        _1909 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1891;
+    W = _1909;
     return W;
 }
 
@@ -619,147 +905,18 @@ float4 hexcColor_grass_height(texture2d_array<float> tex, sampler samp, thread c
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 76 "hexc/generated"
+#line 100 "hexc/generated"
 static inline __attribute__((always_inline))
-float hexcAt_grass_height(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_height)
+float hexcAt_grass_height(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height)
 {
-#line 76 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _3242 = hexcColor_grass_height(hexcArr_height, hexcSampler, param_5, param_6, hexcArr_height, param_7, hexcParams);
-    weights = param_7;
-    return _3242.w;
-}
-
-#line 229 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-void hexcStableTile_sand_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
-{
-#line 229 "hexc/hextiling.glsl"
-    uint3 param = uint3(uint2(id), 0u);
-    uint3 _1009 = hexcPcg3d(param);
-    float3 u = float3(_1009 >> uint3(8u)) * 5.9604644775390625e-08;
-    offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.sand_albedo_rotation;
-    invScale = 1.0;
-    float2 _1026;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _1026 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _1026 = float2(cos(angle), sin(angle));
-    }
-    rot = _1026;
-}
-
-#line 276 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_sand_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
-{
-#line 276 "hexc/hextiling.glsl"
-    int2 param = id;
-    bool param_1 = aboutOrigin;
-    float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_sand_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
-    float2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _1189 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1189 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _1199 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1199;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _1205 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1205;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTap hexcStableTap_sand_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = int2(uint2(local) + shift);
-    int2 param = local;
-    int2 param_1 = local;
-    int2 param_2 = id;
-    float2 param_3 = r - hexcStableCentre(param);
-    float2 param_4 = hexcStableCentreInPeriod(param_1);
-    float2 param_5 = dSTdx;
-    float2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_sand_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
-}
-
-#line 295 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTiles hexcTilesStable_sand_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = short(false);
-    float kx = floor(st.x / 28.0);
-    float ky = floor(st.y);
-    float2 r = float2(st.x - (28.0 * kx), st.y - ky);
-    float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
-    float3 param_1;
-    spvUnsafeArray<int2, 3> param_2;
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    spvUnsafeArray<int2, 3> local;
-    local = param_2;
-    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-    int2 param_3 = local[0];
-    uint2 param_4 = shift;
-    float2 param_5 = r;
-    float2 param_6 = dSTdx;
-    float2 param_7 = dSTdy;
-    int2 param_8;
-    HexcTap _1535 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
-    t.id[0] = param_8;
-    t.tap[0] = _1535;
-    int2 param_9 = local[1];
-    uint2 param_10 = shift;
-    float2 param_11 = r;
-    float2 param_12 = dSTdx;
-    float2 param_13 = dSTdy;
-    int2 param_14;
-    HexcTap _1551 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
-    t.id[1] = param_14;
-    t.tap[1] = _1551;
-    int2 param_15 = local[2];
-    uint2 param_16 = shift;
-    float2 param_17 = r;
-    float2 param_18 = dSTdx;
-    float2 param_19 = dSTdy;
-    int2 param_20;
-    HexcTap _1567 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
-    t.id[2] = param_20;
-    t.tap[2] = _1567;
-    int2 param_21 = t.id[0];
-    int2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 100 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _3271 = hexcColor_grass_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
+    weights = param_3;
+    return _3271.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -767,8 +924,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_sand_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1941 = float3(p.st, 1.0);
-    return tex.sample(samp, _1941.xy, uint(round(_1941.z)), gradient2d(p.dx, p.dy));
+    float3 _1959 = float3(p.st, 1.0);
+    return tex.sample(samp, _1959.xy, uint(round(_1959.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -778,7 +935,7 @@ void hexcFetchTaps_sand_albedo(texture2d_array<float> tex, sampler samp, thread 
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _1989;
+    c = _2007;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_sand_albedo(tex, samp, param_1, param_2);
@@ -822,22 +979,18 @@ float4 hexcColor_sand_height(texture2d_array<float> tex, sampler samp, thread co
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 104 "hexc/generated"
+#line 128 "hexc/generated"
 static inline __attribute__((always_inline))
-float hexcAt_sand_height(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_height)
+float hexcAt_sand_height(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1)
 {
-#line 104 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _3293 = hexcColor_sand_height(hexcArr_height, hexcSampler, param_5, param_6, hexcArr_height, param_7, hexcParams);
-    weights = param_7;
-    return _3293.w;
+#line 128 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles1;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _3299 = hexcColor_sand_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
+    weights = param_3;
+    return _3299.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -845,8 +998,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_pebbles_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1956 = float3(p.st, 2.0);
-    return tex.sample(samp, _1956.xy, uint(round(_1956.z)), gradient2d(p.dx, p.dy));
+    float3 _1974 = float3(p.st, 2.0);
+    return tex.sample(samp, _1974.xy, uint(round(_1974.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -856,7 +1009,7 @@ void hexcFetchTaps_pebbles_albedo(texture2d_array<float> tex, sampler samp, thre
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _1989;
+    c = _2007;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_pebbles_albedo(tex, samp, param_1, param_2);
@@ -900,147 +1053,18 @@ float4 hexcColor_pebbles_height(texture2d_array<float> tex, sampler samp, thread
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 132 "hexc/generated"
+#line 156 "hexc/generated"
 static inline __attribute__((always_inline))
-float hexcAt_pebbles_height(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_height)
+float hexcAt_pebbles_height(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height)
 {
-#line 132 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _3344 = hexcColor_pebbles_height(hexcArr_height, hexcSampler, param_5, param_6, hexcArr_height, param_7, hexcParams);
-    weights = param_7;
-    return _3344.w;
-}
-
-#line 229 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-void hexcStableTile_snow_albedo(thread const int2& id, thread const bool& aboutOrigin, thread float2& offset, thread float2& rot, thread float& invScale, constant HexcParams& hexcParams)
-{
-#line 229 "hexc/hextiling.glsl"
-    uint3 param = uint3(uint2(id), 0u);
-    uint3 _1046 = hexcPcg3d(param);
-    float3 u = float3(_1046 >> uint3(8u)) * 5.9604644775390625e-08;
-    offset = u.xy;
-    float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.snow_albedo_rotation;
-    invScale = 1.0;
-    float2 _1064;
-    if (aboutOrigin)
-    {
-        float param_1 = angle;
-        _1064 = hexcCosSin(param_1);
-    }
-    else
-    {
-        _1064 = float2(cos(angle), sin(angle));
-    }
-    rot = _1064;
-}
-
-#line 276 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTap hexcPlaceTile_snow_albedo(thread const int2& id, thread const float2& d, thread const float2& c, thread const float2& dSTdx, thread const float2& dSTdy, thread const bool& aboutOrigin, constant HexcParams& hexcParams)
-{
-#line 276 "hexc/hextiling.glsl"
-    int2 param = id;
-    bool param_1 = aboutOrigin;
-    float2 param_2;
-    float2 param_3;
-    float param_4;
-    hexcStableTile_snow_albedo(param, param_1, param_2, param_3, param_4, hexcParams);
-    float2 offset = param_2;
-    HexcTap p;
-    p.rot = param_3;
-    p.invScale = param_4;
-    float2 param_5 = d;
-    HexcTap param_6 = p;
-    float2 _1229 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1229 + c) + offset;
-    float2 param_7 = dSTdx;
-    HexcTap param_8 = p;
-    float2 _1239 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1239;
-    float2 param_9 = dSTdy;
-    HexcTap param_10 = p;
-    float2 _1245 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1245;
-    return p;
-}
-
-#line 286 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTap hexcStableTap_snow_albedo(thread const int2& local, thread const uint2& shift, thread const float2& r, thread const float2& dSTdx, thread const float2& dSTdy, thread int2& id, constant HexcParams& hexcParams)
-{
-#line 286 "hexc/hextiling.glsl"
-    id = int2(uint2(local) + shift);
-    int2 param = local;
-    int2 param_1 = local;
-    int2 param_2 = id;
-    float2 param_3 = r - hexcStableCentre(param);
-    float2 param_4 = hexcStableCentreInPeriod(param_1);
-    float2 param_5 = dSTdx;
-    float2 param_6 = dSTdy;
-    bool param_7 = false;
-    return hexcPlaceTile_snow_albedo(param_2, param_3, param_4, param_5, param_6, param_7, hexcParams);
-}
-
-#line 295 "hexc/hextiling.glsl"
-static inline __attribute__((always_inline))
-HexcTiles hexcTilesStable_snow_albedo(thread const float2& st, thread const float2& dSTdx, thread const float2& dSTdy, thread const int2& cell, constant HexcParams& hexcParams)
-{
-#line 295 "hexc/hextiling.glsl"
-    HexcTiles t;
-    t.dx = dSTdx;
-    t.dy = dSTdy;
-    t.scaled = short(false);
-    float kx = floor(st.x / 28.0);
-    float ky = floor(st.y);
-    float2 r = float2(st.x - (28.0 * kx), st.y - ky);
-    float2 param = float2((3.4642856121063232421875 * r.x) - (2.0 * r.y), 4.0 * r.y);
-    float3 param_1;
-    spvUnsafeArray<int2, 3> param_2;
-    hexcTriangle(param, param_1, param_2);
-    t.w = param_1;
-    spvUnsafeArray<int2, 3> local;
-    local = param_2;
-    uint2 c = uint2(cell) + uint2(int2(int(kx), int(ky)));
-    uint2 shift = uint2((97u * c.x) - (2u * c.y), 4u * c.y);
-    int2 param_3 = local[0];
-    uint2 param_4 = shift;
-    float2 param_5 = r;
-    float2 param_6 = dSTdx;
-    float2 param_7 = dSTdy;
-    int2 param_8;
-    HexcTap _1661 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
-    t.id[0] = param_8;
-    t.tap[0] = _1661;
-    int2 param_9 = local[1];
-    uint2 param_10 = shift;
-    float2 param_11 = r;
-    float2 param_12 = dSTdx;
-    float2 param_13 = dSTdy;
-    int2 param_14;
-    HexcTap _1677 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
-    t.id[1] = param_14;
-    t.tap[1] = _1677;
-    int2 param_15 = local[2];
-    uint2 param_16 = shift;
-    float2 param_17 = r;
-    float2 param_18 = dSTdx;
-    float2 param_19 = dSTdy;
-    int2 param_20;
-    HexcTap _1693 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
-    t.id[2] = param_20;
-    t.tap[2] = _1693;
-    int2 param_21 = t.id[0];
-    int2 param_22 = t.id[2];
-    t.channel = hexcHexChannels(param_21, param_22);
-    return t;
+#line 156 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles0;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _3326 = hexcColor_pebbles_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
+    weights = param_3;
+    return _3326.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -1048,8 +1072,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_snow_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1972 = float3(p.st, 3.0);
-    return tex.sample(samp, _1972.xy, uint(round(_1972.z)), gradient2d(p.dx, p.dy));
+    float3 _1990 = float3(p.st, 3.0);
+    return tex.sample(samp, _1990.xy, uint(round(_1990.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -1059,7 +1083,7 @@ void hexcFetchTaps_snow_albedo(texture2d_array<float> tex, sampler samp, thread 
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _1989;
+    c = _2007;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_snow_albedo(tex, samp, param_1, param_2);
@@ -1103,29 +1127,25 @@ float4 hexcColor_snow_height(texture2d_array<float> tex, sampler samp, thread co
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 160 "hexc/generated"
+#line 184 "hexc/generated"
 static inline __attribute__((always_inline))
-float hexcAt_snow_height(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_height)
+float hexcAt_snow_height(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles2)
 {
-#line 160 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    int param_4 = 3;
-    HexcTiles param_5 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_6 = hexcChannel(param_4);
-    float3 param_7;
-    float4 _3395 = hexcColor_snow_height(hexcArr_height, hexcSampler, param_5, param_6, hexcArr_height, param_7, hexcParams);
-    weights = param_7;
-    return _3395.w;
+#line 184 "hexc/generated"
+    int param = 3;
+    HexcTiles param_1 = hexcLatticeTiles2;
+    float4 param_2 = hexcChannel(param);
+    float3 param_3;
+    float4 _3354 = hexcColor_snow_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
+    weights = param_3;
+    return _3354.w;
 }
 
-#line 196 "hexc/generated"
+#line 220 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerHeights(thread spvUnsafeArray<float, 8>& w, thread const spvUnsafeArray<float, 8>& h, thread const float& width)
 {
-#line 196 "hexc/generated"
+#line 220 "hexc/generated"
     float top = -2.0;
     for (int i = 0; i < 8; i++)
     {
@@ -1135,18 +1155,18 @@ void hexcLayerHeights(thread spvUnsafeArray<float, 8>& w, thread const spvUnsafe
         }
     }
     float sum = 0.0;
-    float _3508;
+    float _3467;
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
         if (w[i_1] > 0.0)
         {
-            _3508 = fast::max(((h[i_1] + w[i_1]) - top) + width, 0.0);
+            _3467 = fast::max(((h[i_1] + w[i_1]) - top) + width, 0.0);
         }
         else
         {
-            _3508 = 0.0;
+            _3467 = 0.0;
         }
-        w[i_1] = _3508;
+        w[i_1] = _3467;
         sum += w[i_1];
     }
     for (int i_2 = 0; i_2 < 8; i_2++)
@@ -1155,11 +1175,11 @@ void hexcLayerHeights(thread spvUnsafeArray<float, 8>& w, thread const spvUnsafe
     }
 }
 
-#line 211 "hexc/generated"
+#line 235 "hexc/generated"
 static inline __attribute__((always_inline))
-void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_height, texture2d<float> hexcTex_splat0)
+void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0)
 {
-#line 211 "hexc/generated"
+#line 235 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0;
@@ -1169,9 +1189,9 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
     float2 param_2 = dy * hexcParams.splat0_tiling;
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _3582 = hexcAt_splat0(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_splat0);
+    float4 _3541 = hexcAt_splat0(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_splat0);
     float3 t = param_4;
-    float4 splat0 = _3582;
+    float4 splat0 = _3541;
     w[0] = splat0.x;
     w[1] = splat0.y;
     w[2] = splat0.z;
@@ -1181,6 +1201,40 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
     float param_6 = 0.0019607841968536376953125;
     hexcLayerKeep(param_5, param_6);
     w = param_5;
+    bool _3563 = w[0] > 0.0;
+    bool _3570;
+    if (!_3563)
+    {
+        _3570 = w[2] > 0.0;
+    }
+    else
+    {
+        _3570 = _3563;
+    }
+    if (_3570)
+    {
+        float2 param_7 = st * hexcParams.grass_albedo_tiling;
+        float2 param_8 = dx * hexcParams.grass_albedo_tiling;
+        float2 param_9 = dy * hexcParams.grass_albedo_tiling;
+        int2 param_10 = int2(0);
+        hexcLatticeTiles0 = hexcLayerTiles0(param_7, param_8, param_9, param_10, hexcParams);
+    }
+    if (w[1] > 0.0)
+    {
+        float2 param_11 = st * hexcParams.sand_albedo_tiling;
+        float2 param_12 = dx * hexcParams.sand_albedo_tiling;
+        float2 param_13 = dy * hexcParams.sand_albedo_tiling;
+        int2 param_14 = int2(0);
+        hexcLatticeTiles1 = hexcLayerTiles1(param_11, param_12, param_13, param_14, hexcParams);
+    }
+    if (w[3] > 0.0)
+    {
+        float2 param_15 = st * hexcParams.snow_albedo_tiling;
+        float2 param_16 = dx * hexcParams.snow_albedo_tiling;
+        float2 param_17 = dy * hexcParams.snow_albedo_tiling;
+        int2 param_18 = int2(0);
+        hexcLatticeTiles2 = hexcLayerTiles2(param_15, param_16, param_17, param_18, hexcParams);
+    }
     spvUnsafeArray<float, 8> h;
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
@@ -1188,69 +1242,69 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
     }
     if (w[0] > 0.0)
     {
-        float2 param_7 = st * hexcParams.grass_albedo_tiling;
-        float2 param_8 = dx * hexcParams.grass_albedo_tiling;
-        float2 param_9 = dy * hexcParams.grass_albedo_tiling;
-        int2 param_10 = int2(0);
-        float3 param_11;
-        float _3637 = hexcAt_grass_height(param_7, param_8, param_9, param_10, param_11, hexcParams, hexcSampler, hexcArr_height);
-        t = param_11;
-        h[0] = _3637;
+        float2 param_19 = st * hexcParams.grass_albedo_tiling;
+        float2 param_20 = dx * hexcParams.grass_albedo_tiling;
+        float2 param_21 = dy * hexcParams.grass_albedo_tiling;
+        int2 param_22 = int2(0);
+        float3 param_23;
+        float _3669 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height);
+        t = param_23;
+        h[0] = _3669;
     }
     if (w[1] > 0.0)
     {
-        float2 param_12 = st * hexcParams.sand_albedo_tiling;
-        float2 param_13 = dx * hexcParams.sand_albedo_tiling;
-        float2 param_14 = dy * hexcParams.sand_albedo_tiling;
-        int2 param_15 = int2(0);
-        float3 param_16;
-        float _3662 = hexcAt_sand_height(param_12, param_13, param_14, param_15, param_16, hexcParams, hexcSampler, hexcArr_height);
-        t = param_16;
-        h[1] = _3662;
+        float2 param_24 = st * hexcParams.sand_albedo_tiling;
+        float2 param_25 = dx * hexcParams.sand_albedo_tiling;
+        float2 param_26 = dy * hexcParams.sand_albedo_tiling;
+        int2 param_27 = int2(0);
+        float3 param_28;
+        float _3694 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28, hexcParams, hexcSampler, hexcArr_height, hexcLatticeTiles1);
+        t = param_28;
+        h[1] = _3694;
     }
     if (w[2] > 0.0)
     {
-        float2 param_17 = st * hexcParams.grass_albedo_tiling;
-        float2 param_18 = dx * hexcParams.grass_albedo_tiling;
-        float2 param_19 = dy * hexcParams.grass_albedo_tiling;
-        int2 param_20 = int2(0);
-        float3 param_21;
-        float _3687 = hexcAt_pebbles_height(param_17, param_18, param_19, param_20, param_21, hexcParams, hexcSampler, hexcArr_height);
-        t = param_21;
-        h[2] = _3687;
+        float2 param_29 = st * hexcParams.grass_albedo_tiling;
+        float2 param_30 = dx * hexcParams.grass_albedo_tiling;
+        float2 param_31 = dy * hexcParams.grass_albedo_tiling;
+        int2 param_32 = int2(0);
+        float3 param_33;
+        float _3719 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height);
+        t = param_33;
+        h[2] = _3719;
     }
     if (w[3] > 0.0)
     {
-        float2 param_22 = st * hexcParams.snow_albedo_tiling;
-        float2 param_23 = dx * hexcParams.snow_albedo_tiling;
-        float2 param_24 = dy * hexcParams.snow_albedo_tiling;
-        int2 param_25 = int2(0);
-        float3 param_26;
-        float _3712 = hexcAt_snow_height(param_22, param_23, param_24, param_25, param_26, hexcParams, hexcSampler, hexcArr_height);
-        t = param_26;
-        h[3] = _3712;
+        float2 param_34 = st * hexcParams.snow_albedo_tiling;
+        float2 param_35 = dx * hexcParams.snow_albedo_tiling;
+        float2 param_36 = dy * hexcParams.snow_albedo_tiling;
+        int2 param_37 = int2(0);
+        float3 param_38;
+        float _3744 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38, hexcParams, hexcSampler, hexcArr_height, hexcLatticeTiles2);
+        t = param_38;
+        h[3] = _3744;
     }
-    spvUnsafeArray<float, 8> param_27;
-    param_27 = w;
-    spvUnsafeArray<float, 8> param_28;
-    param_28 = h;
-    float param_29 = 0.20000000298023223876953125;
-    hexcLayerHeights(param_27, param_28, param_29);
-    w = param_27;
+    spvUnsafeArray<float, 8> param_39;
+    param_39 = w;
+    spvUnsafeArray<float, 8> param_40;
+    param_40 = h;
+    float param_41 = 0.20000000298023223876953125;
+    hexcLayerHeights(param_39, param_40, param_41);
+    w = param_39;
 }
 
-#line 233 "hexc/generated"
+#line 260 "hexc/generated"
 static inline __attribute__((always_inline))
-void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_height, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 233 "hexc/generated"
+#line 260 "hexc/generated"
     if ((!hexcLayersFilled) || any(st != hexcLayersSt))
     {
         float2 param = st;
         float2 param_1 = dx;
         float2 param_2 = dy;
         spvUnsafeArray<float, 8> param_3;
-        hexcLayerFill(param, param_1, param_2, param_3, hexcParams, hexcSampler, hexcArr_height, hexcTex_splat0);
+        hexcLayerFill(param, param_1, param_2, param_3, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0);
         hexcLayersW = param_3;
         hexcLayersFilled = true;
         hexcLayersSt = st;
@@ -1290,21 +1344,17 @@ float4 hexcColor_grass_albedo(texture2d_array<float> tex, sampler samp, thread c
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 57 "hexc/generated"
+#line 81 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexcAt_grass_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler)
+float4 hexcAt_grass_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0)
 {
-#line 57 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_6;
-    float4 _3206 = hexcColor_grass_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6, hexcParams);
-    weights = param_6;
-    return _3206;
+#line 81 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_2;
+    float4 _3251 = hexcColor_grass_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    weights = param_2;
+    return _3251;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1339,21 +1389,17 @@ float4 hexcColor_sand_albedo(texture2d_array<float> tex, sampler samp, thread co
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 85 "hexc/generated"
+#line 109 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexcAt_sand_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler)
+float4 hexcAt_sand_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles1)
 {
-#line 85 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_6;
-    float4 _3259 = hexcColor_sand_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6, hexcParams);
-    weights = param_6;
-    return _3259;
+#line 109 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_2;
+    float4 _3281 = hexcColor_sand_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    weights = param_2;
+    return _3281;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1388,21 +1434,17 @@ float4 hexcColor_pebbles_albedo(texture2d_array<float> tex, sampler samp, thread
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 113 "hexc/generated"
+#line 137 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexcAt_pebbles_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler)
+float4 hexcAt_pebbles_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0)
 {
-#line 113 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_6;
-    float4 _3310 = hexcColor_pebbles_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6, hexcParams);
-    weights = param_6;
-    return _3310;
+#line 137 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_2;
+    float4 _3308 = hexcColor_pebbles_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    weights = param_2;
+    return _3308;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1437,28 +1479,24 @@ float4 hexcColor_snow_albedo(texture2d_array<float> tex, sampler samp, thread co
     return ((c[0] * W.x) + (c[1] * W.y)) + (c[2] * W.z);
 }
 
-#line 141 "hexc/generated"
+#line 165 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexcAt_snow_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler)
+float4 hexcAt_snow_albedo(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles2)
 {
-#line 141 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3, hexcParams);
-    float4 param_5 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
-    float3 param_6;
-    float4 _3361 = hexcColor_snow_albedo(hexcArr_albedo, hexcSampler, param_4, param_5, hexcArr_albedo, param_6, hexcParams);
-    weights = param_6;
-    return _3361;
+#line 165 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles2;
+    float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
+    float3 param_2;
+    float4 _3336 = hexcColor_snow_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    weights = param_2;
+    return _3336;
 }
 
-#line 243 "hexc/generated"
+#line 270 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, texture2d_array<float> hexcArr_height, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 243 "hexc/generated"
+#line 270 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -1466,7 +1504,7 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
     float2 param_1 = dx;
     float2 param_2 = dy;
     spvUnsafeArray<float, 8> param_3;
-    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcArr_height, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     spvUnsafeArray<float, 8> w;
     w = param_3;
     float4 value = float4(0.0);
@@ -1479,9 +1517,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_6 = dy * hexcParams.grass_albedo_tiling;
         int2 param_7 = int2(0);
         float3 param_8;
-        float4 _3792 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcArr_albedo, hexcSampler);
+        float4 _3824 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0);
         t = param_8;
-        value += (_3792 * w[0]);
+        value += (_3824 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1491,9 +1529,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_11 = dy * hexcParams.sand_albedo_tiling;
         int2 param_12 = int2(0);
         float3 param_13;
-        float4 _3827 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcArr_albedo, hexcSampler);
+        float4 _3859 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles1);
         t = param_13;
-        value += (_3827 * w[1]);
+        value += (_3859 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0)
@@ -1503,9 +1541,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_16 = dy * hexcParams.grass_albedo_tiling;
         int2 param_17 = int2(0);
         float3 param_18;
-        float4 _3862 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18, hexcParams, hexcArr_albedo, hexcSampler);
+        float4 _3894 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0);
         t = param_18;
-        value += (_3862 * w[2]);
+        value += (_3894 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0)
@@ -1515,24 +1553,24 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_21 = dy * hexcParams.snow_albedo_tiling;
         int2 param_22 = int2(0);
         float3 param_23;
-        float4 _3897 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcArr_albedo, hexcSampler);
+        float4 _3929 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles2);
         t = param_23;
-        value += (_3897 * w[3]);
+        value += (_3929 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 268 "hexc/generated"
+#line 295 "hexc/generated"
 static inline __attribute__((always_inline))
-float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, texture2d_array<float> hexcArr_height, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 268 "hexc/generated"
+#line 295 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _3915 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcArr_height, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float4 _3947 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     float3 weights = param_1;
-    return _3915;
+    return _3947;
 }
 
 #line 621 "hexc/hextiling.glsl"
@@ -1542,16 +1580,16 @@ float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 #line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _2629;
+    float _2647;
     if (flipY)
     {
-        _2629 = -vM.y;
+        _2647 = -vM.y;
     }
     else
     {
-        _2629 = vM.y;
+        _2647 = vM.y;
     }
-    return (-float2(vM.x, _2629)) / float2(zMa);
+    return (-float2(vM.x, _2647)) / float2(zMa);
 }
 
 #line 145 "hexc/hextiling.glsl"
@@ -1574,16 +1612,16 @@ float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread 
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _2662;
+    float2 _2680;
     if (scaled)
     {
-        _2662 = d * p.invScale;
+        _2680 = d * p.invScale;
     }
     else
     {
-        _2662 = d;
+        _2680 = d;
     }
-    return _2662;
+    return _2680;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1638,21 +1676,17 @@ float2 hexcDeriv_grass_normal(texture2d_array<float> tex, sampler samp, thread c
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 66 "hexc/generated"
+#line 90 "hexc/generated"
 static inline __attribute__((always_inline))
-float2 hexcAt_grass_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_normal)
+float2 hexcAt_grass_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_normal)
 {
-#line 66 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3, hexcParams);
-    bool param_5 = false;
-    float3 param_6;
-    float2 _3223 = hexcDeriv_grass_normal(hexcArr_normal, hexcSampler, param_4, param_5, hexcArr_normal, param_6, hexcParams);
-    weights = param_6;
-    return _3223;
+#line 90 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    bool param_1 = false;
+    float3 param_2;
+    float2 _3260 = hexcDeriv_grass_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
+    weights = param_2;
+    return _3260;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1707,21 +1741,17 @@ float2 hexcDeriv_sand_normal(texture2d_array<float> tex, sampler samp, thread co
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 94 "hexc/generated"
+#line 118 "hexc/generated"
 static inline __attribute__((always_inline))
-float2 hexcAt_sand_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_normal)
+float2 hexcAt_sand_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_normal, thread HexcTiles& hexcLatticeTiles1)
 {
-#line 94 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_sand_albedo(param, param_1, param_2, param_3, hexcParams);
-    bool param_5 = false;
-    float3 param_6;
-    float2 _3275 = hexcDeriv_sand_normal(hexcArr_normal, hexcSampler, param_4, param_5, hexcArr_normal, param_6, hexcParams);
-    weights = param_6;
-    return _3275;
+#line 118 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles1;
+    bool param_1 = false;
+    float3 param_2;
+    float2 _3289 = hexcDeriv_sand_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
+    weights = param_2;
+    return _3289;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1776,21 +1806,17 @@ float2 hexcDeriv_pebbles_normal(texture2d_array<float> tex, sampler samp, thread
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 122 "hexc/generated"
+#line 146 "hexc/generated"
 static inline __attribute__((always_inline))
-float2 hexcAt_pebbles_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_normal)
+float2 hexcAt_pebbles_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_normal)
 {
-#line 122 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_grass_albedo(param, param_1, param_2, param_3, hexcParams);
-    bool param_5 = false;
-    float3 param_6;
-    float2 _3326 = hexcDeriv_pebbles_normal(hexcArr_normal, hexcSampler, param_4, param_5, hexcArr_normal, param_6, hexcParams);
-    weights = param_6;
-    return _3326;
+#line 146 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles0;
+    bool param_1 = false;
+    float3 param_2;
+    float2 _3316 = hexcDeriv_pebbles_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
+    weights = param_2;
+    return _3316;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1845,28 +1871,24 @@ float2 hexcDeriv_snow_normal(texture2d_array<float> tex, sampler samp, thread co
     return ((d1 * W.x) + (d2 * W.y)) + (d3 * W.z);
 }
 
-#line 150 "hexc/generated"
+#line 174 "hexc/generated"
 static inline __attribute__((always_inline))
-float2 hexcAt_snow_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_normal)
+float2 hexcAt_snow_normal(thread const float2& st, thread const float2& dx, thread const float2& dy, thread const int2& cell, thread float3& weights, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_normal, thread HexcTiles& hexcLatticeTiles2)
 {
-#line 150 "hexc/generated"
-    float2 param = st;
-    float2 param_1 = dx;
-    float2 param_2 = dy;
-    int2 param_3 = cell;
-    HexcTiles param_4 = hexcTilesStable_snow_albedo(param, param_1, param_2, param_3, hexcParams);
-    bool param_5 = false;
-    float3 param_6;
-    float2 _3377 = hexcDeriv_snow_normal(hexcArr_normal, hexcSampler, param_4, param_5, hexcArr_normal, param_6, hexcParams);
-    weights = param_6;
-    return _3377;
+#line 174 "hexc/generated"
+    HexcTiles param = hexcLatticeTiles2;
+    bool param_1 = false;
+    float3 param_2;
+    float2 _3344 = hexcDeriv_snow_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
+    weights = param_2;
+    return _3344;
 }
 
-#line 273 "hexc/generated"
+#line 300 "hexc/generated"
 static inline __attribute__((always_inline))
-float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_normal, texture2d_array<float> hexcArr_height, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_normal, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 273 "hexc/generated"
+#line 300 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -1874,7 +1896,7 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
     float2 param_1 = dx;
     float2 param_2 = dy;
     spvUnsafeArray<float, 8> param_3;
-    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcArr_height, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    hexcLayerWeights(param, param_1, param_2, param_3, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     spvUnsafeArray<float, 8> w;
     w = param_3;
     float2 value = float2(0.0);
@@ -1887,9 +1909,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_6 = dy * hexcParams.grass_albedo_tiling;
         int2 param_7 = int2(0);
         float3 param_8;
-        float2 _3963 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcSampler, hexcArr_normal);
+        float2 _3995 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal);
         t = param_8;
-        value += (_3963 * w[0]);
+        value += (_3995 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1899,9 +1921,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_11 = dy * hexcParams.sand_albedo_tiling;
         int2 param_12 = int2(0);
         float3 param_13;
-        float2 _3998 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcSampler, hexcArr_normal);
+        float2 _4030 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcSampler, hexcArr_normal, hexcLatticeTiles1);
         t = param_13;
-        value += (_3998 * w[1]);
+        value += (_4030 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0)
@@ -1911,9 +1933,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_16 = dy * hexcParams.grass_albedo_tiling;
         int2 param_17 = int2(0);
         float3 param_18;
-        float2 _4033 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18, hexcParams, hexcSampler, hexcArr_normal);
+        float2 _4065 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal);
         t = param_18;
-        value += (_4033 * w[2]);
+        value += (_4065 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0)
@@ -1923,24 +1945,24 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_21 = dy * hexcParams.snow_albedo_tiling;
         int2 param_22 = int2(0);
         float3 param_23;
-        float2 _4068 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcSampler, hexcArr_normal);
+        float2 _4100 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcSampler, hexcArr_normal, hexcLatticeTiles2);
         t = param_23;
-        value += (_4068 * w[3]);
+        value += (_4100 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 298 "hexc/generated"
+#line 325 "hexc/generated"
 static inline __attribute__((always_inline))
-float2 hexc_normal(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, texture2d_array<float> hexcArr_normal, texture2d_array<float> hexcArr_height, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
+float2 hexc_normal(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_normal, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 298 "hexc/generated"
+#line 325 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _4086 = hexc_normal(param, param_1, hexcLayersFilled, hexcParams, hexcSampler, hexcArr_normal, hexcArr_height, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float2 _4118 = hexc_normal(param, param_1, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     float3 weights = param_1;
-    return _4086;
+    return _4118;
 }
 
 #line 701 "hexc/hextiling.glsl"
@@ -1951,24 +1973,27 @@ float3 hexcDerivToNormal(thread const float2& deriv)
     return fast::normalize(float3(-deriv, 1.0));
 }
 
-#line 229 "hexc/generated"
+#line 256 "hexc/generated"
 fragment terrain_frag_out terrain_frag(terrain_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d_array<float> hexcArr_albedo [[texture(0)]], texture2d_array<float> hexcArr_normal [[texture(1)]], texture2d_array<float> hexcArr_height [[texture(2)]], texture2d<float> hexcTex_splat0 [[texture(12)]], sampler hexcSampler [[sampler(0)]])
 {
     terrain_frag_out out = {};
-#line 229 "hexc/generated"
+#line 256 "hexc/generated"
     bool hexcLayersFilled = false;
     float2 param = in.v_uv;
+    HexcTiles hexcLatticeTiles0;
+    HexcTiles hexcLatticeTiles1;
+    HexcTiles hexcLatticeTiles2;
     float2 hexcLayersSt;
     spvUnsafeArray<float, 8> hexcLayersW;
-    float4 _4095 = hexc_albedo(param, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcArr_height, hexcTex_splat0, hexcLayersSt, hexcLayersW);
-    float3 albedo = _4095.xyz;
+    float4 _4127 = hexc_albedo(param, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float3 albedo = _4127.xyz;
     float roughness = 0.5;
     float3 N = fast::normalize(in.v_normal);
     float3 T = fast::normalize(in.v_tangent.xyz - (N * dot(N, in.v_tangent.xyz)));
     float3 B = cross(N, T) * in.v_tangent.w;
     float2 param_1 = in.v_uv;
-    float2 _4127 = hexc_normal(param_1, hexcLayersFilled, hexcParams, hexcSampler, hexcArr_normal, hexcArr_height, hexcTex_splat0, hexcLayersSt, hexcLayersW);
-    float2 param_2 = _4127;
+    float2 _4159 = hexc_normal(param_1, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float2 param_2 = _4159;
     float3 n = hexcDerivToNormal(param_2);
     N = fast::normalize(((T * n.x) - (B * n.y)) + (N * n.z));
     float diffuse = fast::max(dot(N, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
