@@ -151,11 +151,14 @@ struct Check {
 // off by at most e_h and weights by dW_i, D = sum_i |dW_i| (so |dW_i| <= D / 2: the changes sum to 0), move each a_j
 // by <= e_h + D / 2 and each f_i by twice that, so sum_i |d(W_i f_i)| <= width D + 2 e_h + D, and S by at most that
 // sum: sum_i |dW'_i| <= 2 (2 e_h + (1 + width) D) / S. The blend, whose weight changes sum to 0, moves by half that
-// times `spread`, the largest difference between the tiles' samples in a channel. D comes from the metric's error e_m
-// (blendTolerance): dW_i / d(delta_j) = W_i (delta_ij - W_j) / delta_j with delta_j >= 1 - beta moved by <= beta e_m,
-// so D <= beta e_m / (1 - beta) sum_j 2 W_j (1 - W_j) <= 4/3 beta e_m / (1 - beta), times the gain's slope k; 0 when
-// beta is 0 (the weights before the height stage are then the lattice's alone).
-inline double heightTolerance(const reference::SlotResult& r, double eh, double em, const Slot& slot, int channels) {
+// times `spread`, the largest difference between the tiles' samples in a channel. D comes from the metric's error
+// e_m,j at each tile j (metricError): with the metric's factor delta_j (Eq. 1, from the reference) moved by
+// <= beta e_m,j, Eq. 1's weights move by dW_i / d(delta_j) = W_i (delta_ij - W_j) / delta_j, so
+// D <= sum_j beta e_m,j / delta_j * 2 W_j (1 - W_j) <= beta / 2 sum_j e_m,j / delta_j over the tiles that weigh
+// anything, times the gain's slope k (see blendTolerance); 0 when beta is 0.
+using MetricError = std::function<double(const reference::SlotResult&, size_t tile)>;
+
+inline double heightTolerance(const reference::SlotResult& r, double eh, const MetricError& em, const Slot& slot, int channels) {
     double spread = 0;
     for (int c = 0; c < channels; ++c) {
         double lo = INFINITY, hi = -INFINITY;
@@ -165,8 +168,23 @@ inline double heightTolerance(const reference::SlotResult& r, double eh, double 
         }
         spread = std::max(spread, hi - lo);
     }
-    const double beta = slot.hex.falloffcontrast, d = 4.0 / 3 * gainSlope(slot.hex) * beta * em / (1 - beta);
+    double d = 0;
+    for (size_t j = 0; j < 3; ++j)
+        if (r.unheighted[j] > 0) d += gainSlope(slot.hex) * slot.hex.falloffcontrast / 2 * em(r, j) / r.delta[j];
     return (2 * eh + (1 + slot.heightBlend->width) * d) * spread / r.heightSum;
+}
+
+// A normal slot's metric error at a tile, from its filtered texel n = 2 texel - 1, whose components are each off by
+// 2 e_s, so |dn| <= 2 sqrt(3) e_s: the metric sin(theta) = |d| / sqrt(1 + |d|^2) of d = n_xy / (z s) (Listing 9, a tile
+// scaled by s >= the smallest scale) moves with |d| at slope (1 + |d|^2)^(-3/2), and |d| with n at |n| / (z^2 s), to
+// first order.
+inline MetricError normalMetricError(double es, const Slot& slot) {
+    return [es, &slot](const reference::SlotResult& r, size_t j) {
+        const reference::Rgba& t = r.texels[j];
+        const double x = 2 * t[0] - 1, y = 2 * t[1] - 1, z = std::fabs(2 * t[2] - 1);
+        const double d2 = r.samples[j][0] * r.samples[j][0] + r.samples[j][1] * r.samples[j][1];
+        return std::pow(1 + d2, -1.5) * std::sqrt(x * x + y * y + z * z) / (z * z * slot.hex.scaleRange[0]) * 2 * std::sqrt(3.0) * es;
+    };
 }
 
 // What draws a material's output on the GPU: hexc's shader on one target, or a shader written by hand. An empty Draw
@@ -221,11 +239,14 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
 inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, const Draw& draw, double ex,
                                    double em, int channels) {
     const Slot& slot = m.slots[0];
-    // The height map is 8-bit linear data, sampled at the view's levels like the slot.
+    // The height map is 8-bit linear data, sampled at the view's levels like the slot, as is a normal map.
     const double eh = sampleError(level, false);
     const int blended = kindRow(slot.kind).oneChannel ? 1 : channels;
+    // The height stage's metric error: a colour's luminance or a scalar errs by em; a normal map's slope by its tile's.
+    const MetricError metric =
+        kindRow(slot.kind).derivative ? normalMetricError(eh, slot) : [em](const reference::SlotResult&, size_t) { return em; };
     return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r, size_t) {
-        return slot.heightBlend ? ex + heightTolerance(r, eh, em, slot, blended) : pixelTolerance(r, ex, em, slot.hex, blended);
+        return slot.heightBlend ? ex + heightTolerance(r, eh, metric, slot, blended) : pixelTolerance(r, ex, em, slot.hex, blended);
     });
 }
 
