@@ -236,19 +236,27 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
 }
 
 // The falloff blend's tolerance with sample error ex and metric error em: pixelTolerance, or for height blending, whose
-// weights' error heightTolerance carries through its height stage, ex plus heightTolerance. `level`: the deepest mip
-// level the view reads.
+// weights' error heightTolerance carries through its height stage, ex plus heightTolerance. The triplanar projection
+// blends its planes' results by b_k (exact: from the surface's normal), so it errs by at most sum_k b_k times each
+// plane's bound; a normal slot's plane gradient, both components within that, by sqrt(2) times it in length, which the
+// projection onto the surface does not lengthen. `level`: the deepest mip level the view reads.
 inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, const Draw& draw, double ex,
                                    double em, int channels) {
     const Slot& slot = m.slots[0];
     // The height map is 8-bit linear data, sampled at the view's levels like the slot, as is a normal map.
     const double eh = sampleError(level, false);
+    const bool normal = kindRow(slot.kind).derivative;
     const int blended = kindRow(slot.kind).oneChannel ? 1 : channels;
     // The height stage's metric error: a colour's luminance or a scalar errs by em; a normal map's slope by its tile's.
-    const MetricError metric =
-        kindRow(slot.kind).derivative ? normalMetricError(eh, slot) : [em](const reference::SlotResult&, size_t) { return em; };
-    return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r, size_t) {
+    const MetricError metric = normal ? normalMetricError(eh, slot) : [em](const reference::SlotResult&, size_t) { return em; };
+    const auto blend = [&](const reference::SlotResult& r) {
         return slot.heightBlend ? ex + heightTolerance(r, eh, metric, slot, blended) : pixelTolerance(r, ex, em, slot.hex, blended);
+    };
+    return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r, size_t) {
+        if (r.planes.empty()) return blend(r);
+        double t = 0;
+        for (size_t k = 0; k < r.planes.size(); ++k) t += r.planeWeights[k] * blend(r.planes[k]);
+        return (normal ? std::sqrt(2.0) : 1.0) * t;
     });
 }
 
@@ -356,11 +364,9 @@ inline Check checkNormal(const Material& m, const View& view, int level, const D
     // |dd| <= 2 e_s (1 + max|d|) / min z. The slope metric sin(theta) = sqrt(|d|^2 / (1 + |d|^2)) moves by at
     // most the error of |d| (its slope is <= 1), which is <= sqrt(2) |dd|.
     double ed = 2 * sampleError(level, false) * (1 + b.maxDeriv) / b.minZ;
-    // Triplanar: each plane's gradient g_k errs by |(dd_x, dd_y)| <= sqrt(2) ed, so does their convex combination,
-    // and the projection onto the surface does not lengthen it: each component of the surface gradient is within
-    // sqrt(2) ed. The plane weights' own float32 error (~1e-7) is negligible.
-    return triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, std::sqrt(2.0) * ed, 0, 3)
-                     : checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, ed, std::sqrt(2.0) * ed, 2);
+    // Triplanar: the surface gradient (x, y, z) from the planes' (checkAgainstReference; the plane weights' own float32
+    // error, ~1e-7, is negligible).
+    return checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, ed, std::sqrt(2.0) * ed, triplanar ? 3 : 2);
 }
 
 inline Check checkNormal(const Material& m, bool minified, const Draw& draw) {

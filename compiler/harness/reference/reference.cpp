@@ -364,12 +364,11 @@ SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, co
             for (size_t c = 0; c < 4; ++c) out.value[c] += b[k] * r.value[c];
         }
         for (size_t c = 0; c < 3; ++c) out.weights[c] += b[k] * r.weights[c];
+        out.planes.push_back(r);
+        out.planeWeights.push_back(b[k]);
         if (k == dominant) {
             out.samples = r.samples;
             out.blend = r.blend;
-            out.unheighted = r.unheighted;
-            out.delta = r.delta;
-            out.texels = r.texels;
         }
     }
     if (normal) {

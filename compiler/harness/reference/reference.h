@@ -138,6 +138,9 @@ struct SlotResult {
     std::array<double, 3> unheighted{};
     std::array<double, 3> delta{1, 1, 1};
     std::array<Rgba, 3> texels{};
+    // The triplanar projection: each plane's own result (the planes with b_k > 0) and its weight b_k.
+    std::vector<SlotResult> planes{};
+    std::vector<double> planeWeights{};
 };
 
 // A height-blended slot's heights (docs/material-format.md#height-blending): the height slot's texture and channel,
