@@ -53,9 +53,12 @@ inline double blendTolerance(const reference::SlotResult& r, double ex, double e
     return ex + em * k * beta / (1.0 - beta) * spread;
 }
 
+// The steepest slope of Eq. 5's gain at falloff r: log2(1 / (1 - r)), 1 when r <= 0.5.
+inline double gainSlope(const HexTiling& hex) { return std::max(1.0, std::log2(1.0 / (1.0 - hex.falloff))); }
+
 inline double pixelTolerance(const reference::SlotResult& r, double ex, double em, const HexTiling& hex, int channels) {
     if (!hex.enabled) return ex;
-    return blendTolerance(r, ex, em, hex.falloffcontrast, std::max(1.0, std::log2(1.0 / (1.0 - hex.falloff))), channels);
+    return blendTolerance(r, ex, em, hex.falloffcontrast, gainSlope(hex), channels);
 }
 
 // ---- Fixtures ---------------------------------------------------------------------------------------------
@@ -124,6 +127,8 @@ const View kMinified{96, 96, {0.3, 0.45, 0.3 + 96.0 * 4 / 1024, 0.45 + 96.0 * 4 
 // latitude 0.1..0.9 radians, where all three planes take part. |dP| <= 0.8 / 384 per pixel, so at tiling 1.5 a
 // pixel spans at most 0.8 texels of a 256^2 texture: level 0 only, like kMagnified.
 const View kSphere{384, 384, {0.2, 0.1, 1.0, 0.9}};
+// The same at half the size, for the examples' triplanar slots (checkSlot): a quarter of the pixels to draw, on Dawn too.
+const View kSmallSphere{192, 192, {0.2, 0.1, 1.0, 0.9}};
 
 // The paper's hash is fract(sin(x) * 43758.5453): lavapipe's sin and the C library's disagree in the last bits, which
 // the factor 43758 turns into different tiles away from the origin (see docs/precision.md). Near the origin, where
@@ -143,12 +148,19 @@ struct Check {
     std::vector<double> tolerance;
 };
 
-// Height blending (hexcHeightBlend): W'_i = W_i f_i / S with f_i = max(h_i W_i - max_j h_j W_j + width, 0) and
-// S = sum_j W_j f_j. Heights off by at most e_h move each a_j = h_j W_j by <= e_h W_j, each f_i by <= 2 e_h and S by
-// <= 2 e_h sum_j W_j = 2 e_h, so sum_i |dW'_i| <= (2 e_h + 2 e_h) / S, and the blend, whose weight changes sum to 0,
-// by <= sum_i |dW'_i| / 2 * spread = 2 e_h spread / S, spread being the largest difference between the tiles'
-// samples in a channel.
-inline double heightTolerance(const reference::SlotResult& r, double eh, int channels) {
+// Height blending (hexcHeightBlend) reshapes the blend weights W (summing to 1) by the tiles' heights h in [0, 1]:
+// W'_i = W_i f_i / S with a_i = h_i W_i, f_i = max(a_i - max_j a_j + width, 0) <= width and S = sum_j W_j f_j. Heights
+// off by at most e_h and weights by dW_i, D = sum_i |dW_i| (so |dW_i| <= D / 2: the changes sum to 0), move each a_j
+// by <= e_h + D / 2 and each f_i by twice that, so sum_i |d(W_i f_i)| <= width D + 2 e_h + D, and S by at most that
+// sum: sum_i |dW'_i| <= 2 (2 e_h + (1 + width) D) / S. The blend, whose weight changes sum to 0, moves by half that
+// times `spread`, the largest difference between the tiles' samples in a channel. D comes from the metric's error
+// e_m,j at each tile j (metricError): with the metric's factor delta_j (Eq. 1, from the reference) moved by
+// <= beta e_m,j, Eq. 1's weights move by dW_i / d(delta_j) = W_i (delta_ij - W_j) / delta_j, so
+// D <= sum_j beta e_m,j / delta_j * 2 W_j (1 - W_j) <= beta / 2 sum_j e_m,j / delta_j over the tiles that weigh
+// anything, times the gain's slope k (see blendTolerance); 0 when beta is 0.
+using MetricError = std::function<double(const reference::SlotResult&, size_t tile)>;
+
+inline double heightTolerance(const reference::SlotResult& r, double eh, const MetricError& em, const Slot& slot, int channels) {
     double spread = 0;
     for (int c = 0; c < channels; ++c) {
         double lo = INFINITY, hi = -INFINITY;
@@ -158,7 +170,23 @@ inline double heightTolerance(const reference::SlotResult& r, double eh, int cha
         }
         spread = std::max(spread, hi - lo);
     }
-    return 2 * eh * spread / r.heightSum;
+    double d = 0;
+    for (size_t j = 0; j < 3; ++j)
+        if (r.unheighted[j] > 0) d += gainSlope(slot.hex) * slot.hex.falloffcontrast / 2 * em(r, j) / r.delta[j];
+    return (2 * eh + (1 + slot.heightBlend->width) * d) * spread / r.heightSum;
+}
+
+// A normal slot's metric error at a tile, from its filtered texel n = 2 texel - 1, whose components are each off by
+// 2 e_s, so |dn| <= 2 sqrt(3) e_s: the metric sin(theta) = |d| / sqrt(1 + |d|^2) of d = n_xy / (z s) (Listing 9, a tile
+// scaled by s >= the smallest scale) moves with |d| at slope (1 + |d|^2)^(-3/2), and |d| with n at |n| / (z^2 s), to
+// first order.
+inline MetricError normalMetricError(double es, const Slot& slot) {
+    return [es, &slot](const reference::SlotResult& r, size_t j) {
+        const reference::Rgba& t = r.texels[j];
+        const double x = 2 * t[0] - 1, y = 2 * t[1] - 1, z = std::fabs(2 * t[2] - 1);
+        const double d2 = r.samples[j][0] * r.samples[j][0] + r.samples[j][1] * r.samples[j][1];
+        return std::pow(1 + d2, -1.5) * std::sqrt(x * x + y * y + z * z) / (z * z * slot.hex.scaleRange[0]) * 2 * std::sqrt(3.0) * es;
+    };
 }
 
 // What draws a material's output on the GPU: hexc's shader on one target, or a shader written by hand. An empty Draw
@@ -207,16 +235,28 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
     return check;
 }
 
-// The falloff blend's tolerance (pixelTolerance, plus heightTolerance for height blending) with sample error ex and
-// metric error em. `level`: the deepest mip level the view reads.
+// The falloff blend's tolerance with sample error ex and metric error em: pixelTolerance, or for height blending, whose
+// weights' error heightTolerance carries through its height stage, ex plus heightTolerance. The triplanar projection
+// blends its planes' results by b_k (exact: from the surface's normal), so it errs by at most sum_k b_k times each
+// plane's bound; a normal slot's plane gradient, both components within that, by sqrt(2) times it in length, which the
+// projection onto the surface does not lengthen. `level`: the deepest mip level the view reads.
 inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, const Draw& draw, double ex,
                                    double em, int channels) {
     const Slot& slot = m.slots[0];
-    // The height map is 8-bit linear data, sampled at the view's levels like the slot.
+    // The height map is 8-bit linear data, sampled at the view's levels like the slot, as is a normal map.
     const double eh = sampleError(level, false);
+    const bool normal = kindRow(slot.kind).derivative;
     const int blended = kindRow(slot.kind).oneChannel ? 1 : channels;
+    // The height stage's metric error: a colour's luminance or a scalar errs by em; a normal map's slope by its tile's.
+    const MetricError metric = normal ? normalMetricError(eh, slot) : [em](const reference::SlotResult&, size_t) { return em; };
+    const auto blend = [&](const reference::SlotResult& r) {
+        return slot.heightBlend ? ex + heightTolerance(r, eh, metric, slot, blended) : pixelTolerance(r, ex, em, slot.hex, blended);
+    };
     return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r, size_t) {
-        return pixelTolerance(r, ex, em, slot.hex, blended) + (slot.heightBlend ? heightTolerance(r, eh, blended) : 0.0);
+        if (r.planes.empty()) return blend(r);
+        double t = 0;
+        for (size_t k = 0; k < r.planes.size(); ++k) t += r.planeWeights[k] * blend(r.planes[k]);
+        return (normal ? std::sqrt(2.0) : 1.0) * t;
     });
 }
 
@@ -324,31 +364,54 @@ inline Check checkNormal(const Material& m, const View& view, int level, const D
     // |dd| <= 2 e_s (1 + max|d|) / min z. The slope metric sin(theta) = sqrt(|d|^2 / (1 + |d|^2)) moves by at
     // most the error of |d| (its slope is <= 1), which is <= sqrt(2) |dd|.
     double ed = 2 * sampleError(level, false) * (1 + b.maxDeriv) / b.minZ;
-    // Triplanar: each plane's gradient g_k errs by |(dd_x, dd_y)| <= sqrt(2) ed, so does their convex combination,
-    // and the projection onto the surface does not lengthen it: each component of the surface gradient is within
-    // sqrt(2) ed. The plane weights' own float32 error (~1e-7) is negligible.
-    return triplanar ? checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, std::sqrt(2.0) * ed, 0, 3)
-                     : checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, ed, std::sqrt(2.0) * ed, 2);
+    // Triplanar: the surface gradient (x, y, z) from the planes' (checkAgainstReference; the plane weights' own float32
+    // error, ~1e-7, is negligible).
+    return checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, ed, std::sqrt(2.0) * ed, triplanar ? 3 : 2);
 }
 
 inline Check checkNormal(const Material& m, bool minified, const Draw& draw) {
     return checkNormal(m, minified ? kMinified : kMagnified, minified ? 2 : 0, draw);
 }
 
-// ---- rock's slots, one at a time, from other outputs ---------------------------------------------------------
+// ---- A material file's slots, one at a time -------------------------------------------------------------------
 
-// A material file (rock by default) with only the slot `slotName`, its settings as the file gives them.
-inline Material rockWith(const std::string& slotName, const std::string& file = "materials/rock.json") {
-    ParseResult rock = parseMaterialFile(file);
-    if (!rock.material) throw std::runtime_error(formatAll(rock.diagnostics));
-    Material one = *rock.material;
-    one.slots.erase(std::remove_if(one.slots.begin(), one.slots.end(), [&](const Slot& s) { return s.name != slotName; }), one.slots.end());
+// A material file (rock by default) with only the slot `slotName` and, after it (the first slot is the one checked),
+// the slot it height-blends by, their settings as the file gives them.
+inline Material slotOf(const std::string& slotName, const std::string& file = "materials/rock.json") {
+    ParseResult parsed = parseMaterialFile(file);
+    if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
+    Material one = *parsed.material;
+    const auto named = [&](const std::string& name) {
+        const auto it = std::find_if(one.slots.begin(), one.slots.end(), [&](const Slot& s) { return s.name == name; });
+        if (it == one.slots.end()) throw std::runtime_error(file + " has no slot `" + name + "`");
+        return *it;
+    };
+    const Slot slot = named(slotName);
+    std::vector<Slot> slots{slot};
+    if (slot.heightBlend && slot.heightBlend->slot != slotName) slots.push_back(named(slot.heightBlend->slot));
+    one.slots = std::move(slots);
     return one;
 }
 
-// Its slot, magnified, against the reference: the derivative rule for a normal map, else the falloff one.
+// Where a slot is seen: on the preview sphere with the triplanar projection (it needs the surface's position and
+// normal), else magnified.
+inline const View& slotView(const Slot& slot) { return slot.hex.projection == Projection::Triplanar ? kSmallSphere : kMagnified; }
+
+// The deepest mip level a slot reads in a view: log2 of the texels a pixel spans, rounded up: the view's uv a pixel
+// times the tiling times the texture's size, and 1 / s times more in a tile scaled by s. On the preview sphere u and v
+// are radians of a unit sphere, so |dP| <= |d(u, v)|, and a plane's projection does not lengthen it.
+inline int deepestLevel(const Slot& slot, const View& view) {
+    const double uv = std::max((view.uvRect[2] - view.uvRect[0]) / view.width, (view.uvRect[3] - view.uvRect[1]) / view.height);
+    const double texels = uv * std::max(slot.hex.tiling[0] * slot.width, slot.hex.tiling[1] * slot.height) / slot.hex.scaleRange[0];
+    return std::max(0, int(std::ceil(std::log2(texels))));
+}
+
+// Its slot, in its view, against the reference: the derivative rule for a normal map, else the falloff one.
 inline Check checkSlot(const Material& one, const Draw& draw) {
-    return kindRow(one.slots[0].kind).derivative ? checkNormal(one, false, draw) : checkColor(one, false, draw);
+    const Slot& slot = one.slots[0];
+    const View& view = slotView(slot);
+    const int level = deepestLevel(slot, view);
+    return kindRow(slot.kind).derivative ? checkNormal(one, view, level, draw) : checkColor(one, view, level, draw);
 }
 
 // ---- Cases as data ------------------------------------------------------------------------------------------
@@ -429,7 +492,7 @@ inline Check checkWeights(const Material& m, const View& view, const Draw& draw)
 // tests/execution/cases/<name>.json: a material (inline, its paths read from materials/ like the examples'), the view
 // it is seen in, the targets it runs on and the tolerance rule it is held to; each file, on each of its targets, is one
 // test, "<name>_<target>" (cases_test.cpp). A rule is one of the checks above, with its derivation:
-//   falloff     checkColor: a colour or scalar slot, pixelTolerance (+ heightTolerance when height-blended)
+//   falloff     checkColor: a colour or scalar slot, pixelTolerance (heightTolerance when height-blended)
 //   histogram   checkHistogram: histogramTolerance
 //   derivative  checkNormal: a normal slot's derivatives (or triplanar surface gradient)
 //   weights     checkWeights: the blend weights

@@ -1,6 +1,6 @@
 // hexc-expect (CASE.json | MATERIAL:SLOT)... -o DIR: what a GPU that the execution tests do not drive (tests/wgsl:
 // Dawn) is held to for a case of tests/execution/cases/ (its own check, checks.h checkCase) or a slot of a material
-// file (as outputs_test.cpp checks rock's: checkSlot), the check run with nothing drawn: the same reference and
+// file (as outputs_test.cpp checks the examples': checkSlot), the check run with nothing drawn: the same reference and
 // per-pixel tolerances, the texels the reference samples (every mip level as it models them) and the shader drawn,
 // the WGSL of the material as the harness shows it (NAME.frag.wgsl, NAME.vert.wgsl, NAME.manifest.json).
 // Writes, per case or slot NAME (the case's file name, or the material file's and the slot's, rock_mtlx_albedo),
@@ -91,12 +91,13 @@ Expected fromCase(const std::filesystem::path& file) {
     return {name, *r.material, caseView(c.at("view")).first, checkCase(c, *r.material, Draw())};
 }
 
-// A slot of a material file as tests/execution/outputs_test.cpp checks rock's: alone (rockWith), magnified (checkSlot).
+// A slot of a material file as tests/execution/outputs_test.cpp checks the examples': alone with the slot it
+// height-blends by (slotOf), in its view (checkSlot).
 Expected fromSlot(const std::string& file, const std::string& slot) {
-    const Material one = rockWith(slot, file);
+    const Material one = slotOf(slot, file);
     const std::filesystem::path path(file);
     const std::string name = path.stem().string() + "_" + path.extension().string().substr(1) + "_" + slot;  // rock_mtlx_albedo
-    return {name, one, kMagnified, checkSlot(one, Draw())};
+    return {name, one, slotView(one.slots[0]), checkSlot(one, Draw())};
 }
 
 // The material's WGSL as the harness shows the checked output (vk::renderedMaterial: the `value` or `weights`

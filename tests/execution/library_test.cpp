@@ -84,7 +84,7 @@ TEST(Library, AHandWrittenHlslShaderMatchesTheReference) {
     ASSERT_FALSE(legal.words.empty()) << formatAll(legal.diagnostics);
     const Draw draw = handWritten(legal.words, kHlslTextureShift, kHlslSamplerShift, false);
     for (bool minified : {false, true}) {
-        Check check = checkColor(rockWith("albedo"), minified, draw);
+        Check check = checkColor(slotOf("albedo"), minified, draw);
         report(minified ? "hand-written HLSL, minified" : "hand-written HLSL", check);
         EXPECT_LE(check.worstRatio, 1.0);
     }
@@ -101,7 +101,7 @@ TEST(Library, AHandWrittenGlslShaderMatchesTheReference) {
     ASSERT_FALSE(optimized.words.empty()) << formatAll(optimized.diagnostics);
     const Draw draw = handWritten(optimized.words, kGlTextureShift, kGlDefaultBlockBinding + 1, true);
     for (bool minified : {false, true}) {
-        Check check = checkNormal(rockWith("normal"), minified, draw);
+        Check check = checkNormal(slotOf("normal"), minified, draw);
         report(minified ? "hand-written GLSL, minified" : "hand-written GLSL", check);
         EXPECT_LE(check.worstRatio, 1.0);
     }

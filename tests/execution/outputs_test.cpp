@@ -1,5 +1,6 @@
-// Execution tests of rock's slots in other outputs than the optimised default (--debug, each OpenGL GLSL version) and
-// of MaterialX documents and mode, on lavapipe against the fp64 CPU reference, under the tolerances of checks.h.
+// Execution tests of the examples' slots, one at a time, of rock's in other outputs than the optimised default (--debug,
+// each OpenGL GLSL version) and of MaterialX documents and mode, on lavapipe against the fp64 CPU reference, under the
+// tolerances of checks.h.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,10 +30,37 @@ using hexc::test::runner;
 
 namespace {
 
+// ---- The examples ---------------------------------------------------------------------------------------------
+
+// Each slot of each example (materials/NAME.json), alone with the slot it height-blends by (slotOf), in its view
+// (checkSlot), on every target: rock; height blending between slots, with the falloff metric on (rock_blend); a normal
+// map alone (rock_normal); the triplanar projection with a checker mask, on the preview sphere (rock_triplanar); tiles
+// unrotated (tiles) and with stepped rotations and offsets (tiles_stepped). tests/wgsl/wgsl_test.py draws the same on
+// Dawn.
+class ExampleSlots : public testing::TestWithParam<std::tuple<std::string, vk::ExecutedTarget>> {};
+
+TEST_P(ExampleSlots, EachMatchesTheReference) {
+    REQUIRE_VULKAN();
+    const auto& [example, target] = GetParam();
+    const std::string file = "materials/" + example + ".json";
+    const ParseResult parsed = parseMaterialFile(file);
+    ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
+    for (const Slot& slot : parsed.material->slots) {
+        Check check = checkSlot(slotOf(slot.name, file), on(target));
+        report((example + " " + slot.name).c_str(), check);
+        EXPECT_LE(check.worstRatio, 1.0) << slot.name;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Exec, ExampleSlots,
+                         testing::Combine(testing::Values("rock", "rock_blend", "rock_normal", "rock_triplanar", "tiles", "tiles_stepped"),
+                                          kExecutedTargets),
+                         [](const auto& info) { return std::get<0>(info.param) + "_" + targetName(std::get<1>(info.param)); });
+
 // ---- Debug outputs ------------------------------------------------------------------------------------------
 
 // --debug outputs (unoptimised, hexc's functions kept, #line directives) of each of rock's slots, with rock's
-// settings, on every target: the same reference and tolerances as the optimised ones above.
+// settings, on every target: the same reference and tolerances as the optimised ones (ExampleSlots).
 class DebugOutputs : public testing::TestWithParam<vk::ExecutedTarget> {};
 
 TEST_P(DebugOutputs, RocksSlotsMatchTheReference) {
@@ -40,7 +68,7 @@ TEST_P(DebugOutputs, RocksSlotsMatchTheReference) {
     CompileOptions debug;
     debug.debug = true;
     for (const std::string slot : {"albedo", "normal", "roughness"}) {
-        Check check = checkSlot(rockWith(slot), on(GetParam(), debug));
+        Check check = checkSlot(slotOf(slot), on(GetParam(), debug));
         report(("rock " + slot + " --debug").c_str(), check);
         EXPECT_LE(check.worstRatio, 1.0) << slot;
     }
@@ -60,7 +88,7 @@ TEST_P(MaterialXDocuments, EverySlotMatchesTheReference) {
     REQUIRE_VULKAN();
     for (const std::string file : {"materials/mtlx/rock.mtlx", "materials/mtlx/preview_surface.mtlx"})
         for (const std::string slot : {"albedo", "normal", "roughness"}) {
-            Check check = checkSlot(rockWith(slot, file), on(GetParam()));
+            Check check = checkSlot(slotOf(slot, file), on(GetParam()));
             report((std::filesystem::path(file).stem().string() + " " + slot).c_str(), check);
             EXPECT_LE(check.worstRatio, 1.0) << file << " " << slot;
         }
@@ -194,7 +222,7 @@ TEST(GlslVersions, EachMatchesTheReference) {
         options.glslVersion = version;
         options.glslEs = es;
         for (const std::string slot : {"albedo", "normal"}) {
-            Check check = checkSlot(rockWith(slot), on(vk::ExecutedTarget::Glsl, options));
+            Check check = checkSlot(slotOf(slot), on(vk::ExecutedTarget::Glsl, options));
             const std::string name = "rock " + slot + " GLSL " + std::to_string(version) + (es ? " es" : "");
             report(name.c_str(), check);
             EXPECT_LE(check.worstRatio, 1.0) << name;

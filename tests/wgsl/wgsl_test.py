@@ -1,8 +1,9 @@
 """hexc's WGSL in headless Chromium's WebGPU (Dawn, with Tint as its compiler, on SwiftShader): Tint accepts every WGSL file
 hexc writes for the examples, the golden feature materials and the execution cases, optimised and --debug, fragment and
-vertex stages, its uniformity analysis included; and Dawn draws every execution case (tests/execution/cases/) and rock's
-slots, each pixel within the tolerance the lavapipe check derives for it, against the same fp64 reference, from the
-same texels and mip levels (hexc-expect, tests/execution/expect.cpp, writes them and the WGSL drawn).
+vertex stages, its uniformity analysis included; and Dawn draws every execution case (tests/execution/cases/) and every
+slot of the examples and MaterialX documents, each pixel within the tolerance the lavapipe check derives for it, against
+the same fp64 reference, from the same texels and mip levels (hexc-expect, tests/execution/expect.cpp, writes them and
+the WGSL drawn).
 
 Usage: wgsl_test.py HEXC HEXC_EXPECT   (from the source root, after `npm ci --prefix tests/node`, which installs naga-wasm)
 
@@ -32,8 +33,20 @@ from web_support import NODE_MODULES, WEBGPU_FLAGS, Handler, browser_or_skip, qu
 HEXC = None
 EXPECT = None  # hexc-expect (tests/execution/expect.cpp)
 CASES = os.path.join("tests", "execution", "cases")
-# The material files whose slots tests/execution/outputs_test.cpp checks one at a time (rockWith, checkSlot).
-ROCKS = ("materials/rock.json", "materials/mtlx/rock.mtlx", "materials/mtlx/preview_surface.mtlx")
+# The material files whose slots tests/execution/outputs_test.cpp checks one at a time (slotOf, checkSlot): the examples
+# (ExampleSlots, every slot) and the MaterialX documents (MaterialXDocuments).
+EXAMPLES = ("rock", "rock_blend", "rock_normal", "rock_triplanar", "tiles", "tiles_stepped")
+DOCUMENTS = ("materials/mtlx/rock.mtlx", "materials/mtlx/preview_surface.mtlx")
+
+
+def slot_inputs():
+    """hexc-expect's MATERIAL:SLOT inputs, one for each slot outputs_test.cpp checks."""
+    inputs = []
+    for name in EXAMPLES:
+        path = "materials/%s.json" % name
+        with open(path) as f:
+            inputs += ["%s:%s" % (path, slot["name"]) for slot in json.load(f)["slots"]]
+    return inputs + ["%s:%s" % (f, slot) for f in DOCUMENTS for slot in ("albedo", "normal", "roughness")]
 
 
 def hexc(*args):
@@ -111,12 +124,11 @@ class Wgsl(unittest.TestCase):
         print("Tint accepted all %d" % len(files))
 
     def test_dawn_draws_every_case_within_its_bounds(self):
-        """Every execution case (tests/execution/cases/) and rock's slots (as outputs_test.cpp checks them), drawn by
-        Dawn, each pixel held to the tolerance its lavapipe check derives for it (checks.h), against the same fp64
-        reference, with the same texels and mip levels: hexc-expect writes them, and the WGSL drawn
-        (tests/execution/expect.cpp)."""
-        inputs = sorted(glob.glob(os.path.join(CASES, "*.json")))
-        inputs += ["%s:%s" % (f, slot) for f in ROCKS for slot in ("albedo", "normal", "roughness")]
+        """Every execution case (tests/execution/cases/) and the examples' and MaterialX documents' slots (as
+        outputs_test.cpp checks them), drawn by Dawn, each pixel held to the tolerance its lavapipe check derives for it
+        (checks.h), against the same fp64 reference, with the same texels and mip levels: hexc-expect writes them, and
+        the WGSL drawn (tests/execution/expect.cpp)."""
+        inputs = sorted(glob.glob(os.path.join(CASES, "*.json"))) + slot_inputs()
         out = os.path.join(self.folder, "draw")
         started = time.monotonic()
         subprocess.run([EXPECT, *inputs, "-o", out], check=True)

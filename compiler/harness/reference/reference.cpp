@@ -200,6 +200,7 @@ struct Tiles {
     std::array<Fetch, 3> fetch;
     std::array<Rgba, 3> samples;
     std::array<double, 3> delta;
+    std::array<Rgba, 3> texels;
 };
 
 Tiles sampleTiles(const Slot& slot, const SampledTexture& texture, const Taps& taps, const std::array<bool, 3>& fetched, Vec2 dx, Vec2 dy) {
@@ -221,6 +222,7 @@ Tiles sampleTiles(const Slot& slot, const SampledTexture& texture, const Taps& t
         for (Vec2* g : {&f.dx, &f.dy}) *g = {(*g)[0] / tile.scale, (*g)[1] / tile.scale};
         f.scale = tile.scale;
         const Rgba x = fetched[i] ? fetchTile(texture, f, hex, dx, dy) : Rgba{};
+        tiles.texels[i] = x;
 
         double metric;
         if (normal) {
@@ -258,6 +260,7 @@ SlotResult blendTiles(const Slot& slot, const Taps& taps, const Tiles& tiles, Ve
                       const HeightSource* height) {
     const HexTiling& hex = slot.hex;
     std::array<double, 3> w = blendWeights(taps.weight, tiles.delta, hex);
+    const std::array<double, 3> unheighted = w;
     double heightSum = 1;
     if (heightBlended) {
         // The heights at each tile's own sample point, with its gradients: the tile's transform applies to them too.
@@ -271,7 +274,7 @@ SlotResult blendTiles(const Slot& slot, const Taps& taps, const Tiles& tiles, Ve
     Rgba value{};
     for (size_t c = 0; c < 4; ++c) value[c] = w[0] * samples[0][c] + w[1] * samples[1][c] + w[2] * samples[2][c];
     if (kindRow(slot.kind).derivative) value = asValue({value[0], value[1]});  // keep (.., .., 0, 1) exact
-    return {value, shown(hex, taps, w), samples, w, heightSum};
+    return {value, shown(hex, taps, w), samples, w, heightSum, {}, 0, unheighted, tiles.delta, tiles.texels};
 }
 
 }  // namespace
@@ -361,6 +364,8 @@ SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, co
             for (size_t c = 0; c < 4; ++c) out.value[c] += b[k] * r.value[c];
         }
         for (size_t c = 0; c < 3; ++c) out.weights[c] += b[k] * r.weights[c];
+        out.planes.push_back(r);
+        out.planeWeights.push_back(b[k]);
         if (k == dominant) {
             out.samples = r.samples;
             out.blend = r.blend;

@@ -133,6 +133,14 @@ struct SlotResult {
     double heightSum = 1;  // height blending: sum_j W_j max(a_j - max a + width, 0) before normalising (for error bounds)
     Rgba gaussian{};       // the histogram blend: the blended Gaussian value G of each channel, before the inverse
     double lod = 0;        // the histogram blend: the level of detail that picks the inverse's row
+    // For error bounds, in the order of `samples`: each tile's weight before height blending, its metric's factor
+    // delta in Eq. 1 and the texel it read (filtered, before Listing 9 for a normal map).
+    std::array<double, 3> unheighted{};
+    std::array<double, 3> delta{1, 1, 1};
+    std::array<Rgba, 3> texels{};
+    // The triplanar projection: each plane's own result (the planes with b_k > 0) and its weight b_k.
+    std::vector<SlotResult> planes{};
+    std::vector<double> planeWeights{};
 };
 
 // A height-blended slot's heights (docs/material-format.md#height-blending): the height slot's texture and channel,
