@@ -32,11 +32,11 @@ stage_exit() {
   [ -n "$ci_owner" ] || return 0
   echo
   echo "=== stage times (wall clock; $(nproc) cores, load average at the end $(cut -d' ' -f1-3 /proc/loadavg))"
-  printf '%-44s %8s  %s\n' stage "m:ss" result
+  printf '%-52s %8s  %s\n' stage "m:ss" result
   while IFS=$'\t' read -r name seconds result; do
-    printf '%-44s %5d:%02d  %s\n' "$name" $((seconds / 60)) $((seconds % 60)) "$result"
+    printf '%-52s %5d:%02d  %s\n' "$name" $((seconds / 60)) $((seconds % 60)) "$result"
   done < "$HEXC_CI_TIMES"
   local total=$SECONDS
-  printf '%-44s %5d:%02d\n' total $((total / 60)) $((total % 60))
+  printf '%-52s %5d:%02d\n' total $((total / 60)) $((total % 60))
   rm -f "$HEXC_CI_TIMES"
 }
