@@ -13,6 +13,12 @@ std::string expandLayers(const std::string& section, const Tokens& values) {
     return expandSection(sections, section, values);
 }
 
+// `text` without the empty lines left where a token expanded to nothing.
+std::string withoutEmptyLines(std::string text) {
+    for (size_t empty; (empty = text.find("\n\n")) != std::string::npos;) text.erase(empty, 1);
+    return text;
+}
+
 class LayerEmitter {
 public:
     LayerEmitter(const ShaderPlan& plan, const std::function<std::string(size_t)>& read) : plan_(plan), read_(read) {}
@@ -76,11 +82,9 @@ public:
             lp.heights.empty()
                 ? ""
                 : expand("weights.heights", {{"layers", perLayer("weights.height", lp.heights)}, {"width", floatLiteral(lp.width)}});
-        std::string text = expand(
+        return withoutEmptyLines(expand(  // no lattices, no heights
             "weights",
-            {{"splats", splats}, {"keep", keep}, {"skip", floatLiteral(lp.skipBelow)}, {"lattices", lattices()}, {"heights", heights}});
-        for (size_t empty; (empty = text.find("\n\n")) != std::string::npos;) text.erase(empty, 1);  // no lattices, no heights
-        return text;
+            {{"splats", splats}, {"keep", keep}, {"skip", floatLiteral(lp.skipBelow)}, {"lattices", lattices()}, {"heights", heights}}));
     }
 
     std::string role(const LayerRolePlan& r, const std::string& uv) const {
@@ -96,8 +100,7 @@ private:
 
 std::string layerLattice(const ShaderPlan& plan, size_t index, const std::string& tiles, const std::string& settings) {
     const std::string i = std::to_string(index);
-    std::string text = expandLayers("lattice", {{"index", i}, {"tiles", tiles}, {"settings", settings}});
-    for (size_t empty; (empty = text.find("\n\n")) != std::string::npos;) text.erase(empty, 1);  // no settings
+    const std::string text = withoutEmptyLines(expandLayers("lattice", {{"index", i}, {"tiles", tiles}, {"settings", settings}}));
     return text + (plan.functions ? "" : "\n\n" + expandLayers("lattice.shared", {{"index", i}}));
 }
 
