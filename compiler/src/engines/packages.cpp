@@ -88,10 +88,10 @@ struct TextureUse {
 };
 
 std::vector<TextureUse> textures(const nlohmann::json& manifest) {
-    std::map<std::string, bool> srgb = samplerDecodesSrgb(manifest);
+    const std::set<std::string> srgb = samplerDecodesSrgb(manifest);
     std::vector<TextureUse> out;
     for (const auto& [name, where] : manifest["targets"]["glsl"]["textures"].items())
-        out.push_back({where["uniform"], srgb.count(name) && srgb[name]});
+        out.push_back({where["uniform"], srgb.count(name) > 0});
     return out;
 }
 
@@ -247,10 +247,12 @@ const Slot& functionSlot(const Material& material, const nlohmann::json& functio
     return *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& s) { return s.name == function["slot"]; });
 }
 
-std::map<std::string, bool> samplerDecodesSrgb(const nlohmann::json& manifest) {
-    std::map<std::string, bool> srgb;
-    for (const auto& s : manifest["slots"]) srgb[s["name"]] = s.value("colorspace", "linear") == "srgb" && !s.contains("decode");
-    for (const auto& p : manifest.value("packed_textures", nlohmann::json::array())) srgb[p["name"]] = p["colorspace"] == "srgb";
+std::set<std::string> samplerDecodesSrgb(const nlohmann::json& manifest) {
+    std::set<std::string> srgb;
+    for (const auto& s : manifest["slots"])
+        if (s.value("colorspace", "linear") == "srgb" && !s.contains("decode")) srgb.insert(s["name"]);
+    for (const auto& p : manifest.value("packed_textures", nlohmann::json::array()))
+        if (p["colorspace"] == "srgb") srgb.insert(p["name"]);
     return srgb;
 }
 

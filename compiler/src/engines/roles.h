@@ -1,7 +1,7 @@
 #pragma once
 // What every engine package shares: which engine input a slot fills (its role, from its name and kind: docs/engines.md,
 // "Slots and engine inputs"), and the warning for a slot no input takes.
-#include <map>
+#include <set>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <string_view>
@@ -23,10 +23,10 @@ const Slot& functionSlot(const Material& material, const nlohmann::json& functio
 // name and kind, as a slot's.
 std::string functionRole(const Material& material, const nlohmann::json& function);
 
-// Each texture of the manifest (a slot's or a packed texture's name) and whether its sampler decodes it from sRGB: an
-// sRGB slot the shader does not decode itself (no `"decode": "shader"`), or an sRGB packed texture
-// (docs/bind-a-manifest.md, step 3). A name it does not hold is linear.
-std::map<std::string, bool> samplerDecodesSrgb(const nlohmann::json& manifest);
+// The textures of the manifest (a slot's or a packed texture's name) whose sampler decodes them from sRGB: an sRGB slot
+// the shader does not decode itself (no `"decode": "shader"`), or an sRGB packed texture (docs/bind-a-manifest.md,
+// step 3). Every other texture is linear.
+std::set<std::string> samplerDecodesSrgb(const nlohmann::json& manifest);
 
 // The warning for a slot no input of `engine` takes, located at the slot.
 Diagnostic unusedSlot(const Material& material, const Slot& slot, std::string_view engine, const std::string& function);

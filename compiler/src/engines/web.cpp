@@ -60,7 +60,7 @@ Diagnostic unloadable(const Material& material, const WebEngine& web, const std:
 nlohmann::json textures(const Material& material, const WebEngine& web, const nlohmann::json& manifest, Diagnostics& diagnostics) {
     std::map<std::string, nlohmann::json> packed;
     for (const auto& p : manifest.value("packed_textures", nlohmann::json::array())) packed[p["name"]] = p;
-    const std::map<std::string, bool> srgb = samplerDecodesSrgb(manifest);
+    const std::set<std::string> srgb = samplerDecodesSrgb(manifest);
     nlohmann::json out = nlohmann::json::array();
     for (const auto& [name, where] : manifest["targets"]["glsl"]["textures"].items()) {
         if (name.ends_with(".lut")) {
@@ -76,7 +76,7 @@ nlohmann::json textures(const Material& material, const WebEngine& web, const nl
                 unloadable(material, web, "slot `" + slot->name + "` reads `" + slot->texturePath.filename().string() + "`"));
         out.push_back({{"file", isPacked ? packed[name]["file"].get<std::string>() : textureCopyName(material, *slot)},
                        {"uniform", where["uniform"]},
-                       {"colorspace", srgb.count(name) && srgb.at(name) ? "srgb" : "linear"}});
+                       {"colorspace", srgb.count(name) ? "srgb" : "linear"}});
     }
     return out;
 }
