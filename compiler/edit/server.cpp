@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "hexc/suggest.h"
 #include "page_files.h"
 
 namespace hexc::edit {
@@ -120,8 +121,7 @@ struct Server::Impl {
             refuse(res, 415, "compressed or chunked request bodies are refused: send the body as it is, with its length");
             return httplib::Server::HandlerResponse::Handled;
         }
-        std::string target = req.target;
-        std::transform(target.begin(), target.end(), target.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        const std::string target = lowerCase(req.target);
         for (const char* bad : {"..", "%2e", "%2f", "%5c", "\\", "//"})
             if (target.find(bad) != std::string::npos || req.path.find(bad) != std::string::npos) {
                 refuse(res, 403, "path refused: hexc edit serves its page, the material and its textures only");

@@ -1,13 +1,13 @@
 #include "engines/web.h"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <sstream>
 
 #include "common/templates.h"
 #include "engines/roles.h"
 #include "hexc/image.h"
+#include "hexc/suggest.h"
 
 namespace hexc {
 namespace {
@@ -44,8 +44,7 @@ std::string moduleName(const Material& material, const WebEngine& web) { return 
 
 // The browser decodes the textures (an Image element): PNG, JPEG or WebP, 8 bits per channel.
 bool browserImage(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string extension = lowerCase(file.extension().string());
     return extension == ".png" || extension == ".jpg" || extension == ".jpeg" || extension == ".webp";
 }
 

@@ -524,11 +524,7 @@ std::optional<size_t> invalidUtf8(std::string_view s) {
 
 }  // namespace
 
-bool isMaterialXFile(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".mtlx";
-}
+bool isMaterialXFile(const std::filesystem::path& file) { return lowerCase(file.extension().string()) == ".mtlx"; }
 
 namespace {
 

@@ -5,13 +5,13 @@
 #include "textures/containers.h"
 #include "textures/memory_stream.h"
 #include "hexc/files.h"
+#include "hexc/suggest.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
 #include <bit>
-#include <cctype>
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -37,11 +37,7 @@ namespace {
     failRead(file, reason ? reason : "cannot load image");
 }
 
-std::string lowerExtension(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
+std::string lowerExtension(const std::filesystem::path& file) { return lowerCase(file.extension().string()); }
 
 // Portable Float Map: "PF" (RGB) or "Pf" (grey), width, height, then a scale whose sign gives the byte order
 // (negative: little-endian), each followed by whitespace; then rows of floats from the bottom row up.
