@@ -1,12 +1,15 @@
 // hexc-expect (CASE.json | MATERIAL:SLOT)... -o DIR: what a GPU that the execution tests do not drive (tests/wgsl:
-// Dawn) is held to for a case of tests/execution/cases/ (its own check, checks.h checkCase) or a slot of a material
+// Dawn) is held to for a case of tests/execution/cases/ (its own check, checks.h checkCase), a case of a feature
+// variant's table (odd_sizes/, packed/: the check its table's test runs, checks.h "Feature variants as data") or a slot of a material
 // file (as outputs_test.cpp checks the examples': checkSlot), the check run with nothing drawn: the same reference and
 // per-pixel tolerances, the texels the reference samples (every mip level as it models them) and the shader drawn,
 // the WGSL of the material as the harness shows it (NAME.frag.wgsl, NAME.vert.wgsl, NAME.manifest.json).
-// Writes, per case or slot NAME (the case's file name, or the material file's and the slot's, rock_mtlx_albedo),
+// Writes, per case or slot NAME (the case's file name, a variant's table's folder and its file name, odd_sizes_3x3, or
+// the material file's and the slot's, rock_mtlx_albedo),
 // NAME.expect.json and the raw little-endian files it names:
-//   {"output": "albedo" | "derivative" | "weights", "channels": N, "compile_ms", "width", "height", "uv": [u0, v0, u1, v1],
-//    "reference": RGBA float32 a pixel, top row first, "tolerance": one float32 a pixel,
+//   {"output": "albedo" | "derivative" | "weights" | "shaded" (the material's own template: packed), "channels": N,
+//    "compile_ms", "width", "height", "uv": [u0, v0, u1, v1], "reference": RGBA float32 a pixel, top row first,
+//    "tolerance": "tolerance_channels" float32 a pixel: 1, or 4, one a channel (packed: each slot's in its channels),
 //    "textures": {name as the manifest names it: {"format": a WebGPU format, "levels": [{"width", "height", "file"}]}}}
 // An 8-bit texture's levels are the reference's exact ones rounded to 8 bits (in sRGB encoding for an sRGB one): within
 // half a step of them, where lavapipe's blits may be a step off per level (sampleError). Float textures (the
@@ -14,6 +17,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <map>
 
 #include "execution/checks.h"
 #include "vk/render.h"
@@ -60,9 +64,21 @@ nlohmann::json writeLevels(const reference::SampledTexture& t, bool isFloat, boo
 }
 
 // Each slot's textures as the reference samples them: SlotTextures (a histogram slot's Gaussian texture in the slot's
-// place, its table as "<slot>.lut"), decoded by the sampler where the slot says.
-nlohmann::json writeTextures(const Material& m, const std::filesystem::path& dir) {
+// place, its table as "<slot>.lut"), decoded by the sampler where the slot says; a packed texture as the compile wrote
+// it, its levels made as the reference makes a texture's.
+nlohmann::json writeTextures(const Material& m, const CompileResult& compiled, const std::filesystem::path& dir) {
     nlohmann::json textures = nlohmann::json::object();
+    for (const OutputFile& f : compiled.files) {
+        if (!f.name.ends_with(".manifest.json")) continue;
+        const nlohmann::json packed = nlohmann::json::parse(f.contents).value("packed_textures", nlohmann::json::array());
+        for (const nlohmann::json& p : packed) {
+            const bool srgb = p["colorspace"] == "srgb";
+            const auto file =
+                std::find_if(compiled.files.begin(), compiled.files.end(), [&](const OutputFile& o) { return o.name == p["file"]; });
+            const reference::SampledTexture t(decodeTexture(file->contents, srgb));
+            textures[p["name"].get<std::string>()] = writeLevels(t, false, srgb, dir, m.name + "." + p["name"].get<std::string>());
+        }
+    }
     for (const Slot& slot : m.slots) {
         const reference::SlotTextures t(slot);
         const bool histogram = t.lut != nullptr;
@@ -89,6 +105,19 @@ Expected fromCase(const std::filesystem::path& file) {
     ParseResult r = parseMaterial(c.at("material").dump(), "materials/" + name + ".json");
     if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
     return {name, *r.material, caseView(c.at("view")).first, checkCase(c, *r.material, Draw())};
+}
+
+// A case file of a feature variant's table (odd_sizes/ ...), under that table's check (checks.h, "Feature variants as
+// data"), named <folder>_<case>, odd_sizes_127x80.
+Expected fromVariant(const std::filesystem::path& file) {
+    using VariantCheck = CaseCheck (*)(const ExecCase&, const Draw&);
+    const std::map<std::string, VariantCheck> checks = {{"odd_sizes", checkOddSize}, {"packed", checkPackedCase}};
+    const std::string folder = file.parent_path().filename().string();
+    const auto check = checks.find(folder);
+    if (check == checks.end()) throw std::runtime_error(file.string() + ": not a case of cases/ or of a feature variant's table");
+    const ExecCase c{file.parent_path(), file.stem().string(), vk::ExecutedTarget::Spirv};  // the target is not read
+    CaseCheck r = check->second(c, Draw());
+    return {folder + "_" + c.name, r.material, r.view, r.check};
 }
 
 // A slot of a material file as tests/execution/outputs_test.cpp checks the examples': alone with the slot it
@@ -119,15 +148,17 @@ void write(Expected e, const std::filesystem::path& dir) {
     const vk::RenderOutput output = e.check.output;
     const nlohmann::json out = {{"output", output == vk::RenderOutput::Derivative ? "derivative"
                                            : output == vk::RenderOutput::Weights  ? "weights"
+                                           : output == vk::RenderOutput::Shaded   ? "shaded"
                                                                                   : "albedo"},
                                 {"channels", e.check.channels},
+                                {"tolerance_channels", e.check.toleranceChannels},
                                 {"compile_ms", compileMs},  // SPIR-V and naga's translation, with the vertex stage
                                 {"width", e.view.width},
                                 {"height", e.view.height},
                                 {"uv", e.view.uvRect},
                                 {"reference", e.name + ".reference.raw"},
                                 {"tolerance", e.name + ".tolerance.raw"},
-                                {"textures", writeTextures(shown, dir)}};
+                                {"textures", writeTextures(shown, compiled, dir)}};
     std::ofstream(dir / (e.name + ".expect.json")) << out.dump(1) << "\n";
 }
 
@@ -145,7 +176,11 @@ int main(int argc, char** argv) {
         std::filesystem::create_directories(dir);
         for (const std::string& input : inputs) {
             const size_t colon = input.rfind(':');
-            write(colon == std::string::npos ? fromCase(input) : fromSlot(input.substr(0, colon), input.substr(colon + 1)), dir);
+            const std::filesystem::path file(input);
+            write(colon != std::string::npos                 ? fromSlot(input.substr(0, colon), input.substr(colon + 1))
+                  : file.parent_path().filename() == "cases" ? fromCase(file)
+                                                             : fromVariant(file),
+                  dir);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "hexc-expect: %s\n", e.what());

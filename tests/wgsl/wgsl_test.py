@@ -1,7 +1,8 @@
 """hexc's WGSL in headless Chromium's WebGPU (Dawn, with Tint as its compiler, on SwiftShader): Tint accepts every WGSL file
 hexc writes for the examples, the golden feature materials and the execution cases, optimised and --debug, fragment and
-vertex stages, its uniformity analysis included; and Dawn draws every execution case (tests/execution/cases/) and every
-slot of the examples and MaterialX documents, each pixel within the tolerance the lavapipe check derives for it, against
+vertex stages, its uniformity analysis included; and Dawn draws every execution case (tests/execution/cases/), every case
+of the feature variants' tables (VARIANTS) and every slot of the examples and MaterialX documents, each pixel within the
+tolerance the lavapipe check derives for it, against
 the same fp64 reference, from the same texels and mip levels (hexc-expect, tests/execution/expect.cpp, writes them and
 the WGSL drawn).
 
@@ -33,6 +34,9 @@ from web_support import NODE_MODULES, WEBGPU_FLAGS, Handler, browser_or_skip, qu
 HEXC = None
 EXPECT = None  # hexc-expect (tests/execution/expect.cpp)
 CASES = os.path.join("tests", "execution", "cases")
+# The feature variants' tables whose cases hexc-expect checks as their lavapipe tests do (checks.h, "Feature variants
+# as data"): odd texture sizes and packed slots.
+VARIANTS = tuple(os.path.join("tests", "execution", t) for t in ("odd_sizes", "packed"))
 # The material files whose slots tests/execution/outputs_test.cpp checks one at a time (slotOf, checkSlot): the examples
 # (ExampleSlots, every slot) and the MaterialX documents (MaterialXDocuments).
 EXAMPLES = ("rock", "rock_blend", "rock_normal", "rock_triplanar", "tiles", "tiles_stepped")
@@ -124,11 +128,12 @@ class Wgsl(unittest.TestCase):
         print("Tint accepted all %d" % len(files))
 
     def test_dawn_draws_every_case_within_its_bounds(self):
-        """Every execution case (tests/execution/cases/) and the examples' and MaterialX documents' slots (as
+        """Every execution case (tests/execution/cases/, and the feature variants' tables: VARIANTS) and the examples' and
+        MaterialX documents' slots (as
         outputs_test.cpp checks them), drawn by Dawn, each pixel held to the tolerance its lavapipe check derives for it
         (checks.h), against the same fp64 reference, with the same texels and mip levels: hexc-expect writes them, and
         the WGSL drawn (tests/execution/expect.cpp)."""
-        inputs = sorted(glob.glob(os.path.join(CASES, "*.json"))) + slot_inputs()
+        inputs = [p for folder in (CASES,) + VARIANTS for p in sorted(glob.glob(os.path.join(folder, "*.json")))] + slot_inputs()
         out = os.path.join(self.folder, "draw")
         started = time.monotonic()
         subprocess.run([EXPECT, *inputs, "-o", out], check=True)
@@ -142,8 +147,7 @@ class Wgsl(unittest.TestCase):
                 expect = json.load(f)
             compiles.append((name, expect["compile_ms"]))
             with self.subTest(case=name):
-                errors, tolerances = self.draw(name, expect, out)
-                ratios = [e / t for e, t in zip(errors, tolerances)]
+                errors, ratios, tolerances = self.draw(name, expect, out)
                 worst = max(range(len(ratios)), key=ratios.__getitem__)
                 unit = 1 if expect["output"] == "derivative" else 255
                 print("%-36s %-10s %10.3f %10.4f %10.3f %8.3f" % (name, expect["output"], max(errors) * unit, sum(errors) / len(errors) * unit,
@@ -153,8 +157,9 @@ class Wgsl(unittest.TestCase):
         print("slowest WGSL compile (SPIR-V, naga, vertex stage): %s, %.0f ms" % max(compiles, key=lambda c: c[1]))
 
     def draw(self, name, expect, out):
-        """Draws the case with Dawn: each pixel's largest error over the case's channels, and its tolerance."""
-        width, height, channels = expect["width"], expect["height"], expect["channels"]
+        """Draws the case with Dawn: each pixel's largest error over the case's channels, its largest error/tolerance and
+        the tolerance there (a tolerance a pixel, or one a channel: tolerance_channels)."""
+        width, height, channels, per = expect["width"], expect["height"], expect["channels"], expect["tolerance_channels"]
         with open(os.path.join(out, name + ".manifest.json")) as f:
             manifest = json.load(f)
         fragment, vertex = manifest["targets"]["wgsl"], manifest["vertex"]["wgsl"]
@@ -173,13 +178,16 @@ class Wgsl(unittest.TestCase):
                                           "width": width, "height": height, "rect": expect["uv"]})
         gpu = struct.unpack("<%df" % (width * height * 4), base64.b64decode(result["pixels"]))
         ref, tolerances = (raw_floats(os.path.join(out, expect[key])) for key in ("reference", "tolerance"))
-        errors = [max(abs(gpu[p * 4 + c] - ref[p * 4 + c]) for c in range(channels)) for p in range(width * height)]
-        errors = [e if e == e else math.inf for e in errors]
+        errors = [[abs(gpu[p * 4 + c] - ref[p * 4 + c]) for c in range(channels)] for p in range(width * height)]
+        errors = [[e if e == e else math.inf for e in pixel] for pixel in errors]
+        tolerance = [[tolerances[p * per + min(c, per - 1)] for c in range(channels)] for p in range(width * height)]
+        ratios = [max(e / t for e, t in zip(pe, pt)) for pe, pt in zip(errors, tolerance)]
+        at = [pt[max(range(channels), key=lambda c: pe[c] / pt[c])] for pe, pt in zip(errors, tolerance)]
         # Not vacuous: a blank draw would fail at one pixel in twenty or more (normal_minified, whose tolerances are wide
         # against its minified slopes: 9%).
-        blank = sum(max(abs(r) for r in ref[p * 4:p * 4 + channels]) > tolerances[p] for p in range(width * height))
+        blank = sum(any(abs(ref[p * 4 + c]) > tolerance[p][c] for c in range(channels)) for p in range(width * height))
         self.assertGreater(blank, width * height / 20)
-        return errors, tolerances
+        return [max(pixel) for pixel in errors], ratios, at
 
 
 def raw_floats(path):
