@@ -42,63 +42,27 @@ TEST_P(OddSizes, MatchReference) {
 
 INSTANTIATE_TEST_SUITE_P(Exec, OddSizes, testing::ValuesIn(execCases("tests/execution/odd_sizes")), caseTestName);
 
-// ---- Adaptive taps ----------------------------------------------------------------------------------------
-// "taps": "adaptive" skips a tap when its bound says the result moves by less than e = HexTiling::kAdaptiveError times
-// the spread of the taps' values (docs/material-format.md#taps). Three checks per case and target:
-// 1. which taps are fetched: the weights output shows a skipped tap's weight as exactly 0, the reference says which it
-//    skips. Both decide from the same bound, the GPU in float32, so they may differ only where a bound is within
-//    rounding of e: at most 1% of the pixels;
-// 2. the value against the adaptive reference: where both fetch the same taps, the same blend of the same samples, so
-//    the full blend's tolerance (pixelTolerance); elsewhere each is within e S of its exact 3-tap result, and those
-//    within the full blend's tolerance of each other: 2 e S plus that of the exact reference;
-// 3. the bound itself, on the GPU: adaptive against exact 3-tap on the same target and view, within e S. S: the spread
-//    of the values blended, 1 for 8-bit colour or scalars; a normal slot's derivative components are at most
-//    sqrt(2) max|d| in magnitude (a filtered sample's |x| / z is at most its texels' largest, then rotated), so
-//    S = 2 sqrt(2) max|d|. The bound is computed in float32 (relative error ~1e-6 on a threshold of 1/255) and the two
-//    blends round independently (a few 2^-24): 1e-6 more.
-// A case: "slots", its one slot (exact 3-tap; the test adds "taps": "adaptive"), "minified".
-Material adaptiveMaterial(const nlohmann::json& c, bool adaptive) {
-    nlohmann::json slot = c.at("slots").at(0);
-    if (adaptive) slot["hextiling"]["taps"] = "adaptive";
-    return material(withCrop(slot));
-}
-
+// ---- Adaptive taps (checks.h, adaptiveCase) -----------------------------------------------------------------
 class AdaptiveTaps : public testing::TestWithParam<ExecCase> {};
 
 TEST_P(AdaptiveTaps, FetchLikeTheReferenceAndStayWithinTheBoundOfThreeTaps) {
     REQUIRE_VULKAN();
-    const nlohmann::json c = readCase(GetParam(), {"slots", "minified"});
     const vk::ExecutedTarget target = GetParam().target;
     const char* name = GetParam().name.c_str();
-    const Material m = adaptiveMaterial(c, true), exact = adaptiveMaterial(c, false);
-    const Slot& slot = m.slots[0];
-    const bool normal = kindRow(slot.kind).derivative;
-    const bool minified = c.at("minified");
-    const View view = minified ? kMinified : kMagnified;
-    const int level = minified ? 2 : 0;
-    const reference::SampledTexture tex = sampled(slot);
-    const TextureBounds b = bounds(tex);
-    const double e = HexTiling::kAdaptiveError, spread = normal ? 2 * std::sqrt(2.0) * b.maxDeriv : b.spread;
-    // As checkColor and checkNormal.
-    const double es = sampleError(level, slot.colorSpace == ColorSpace::Srgb),
-                 ed = 2 * sampleError(level, false) * (1 + b.maxDeriv) / b.minZ;
-    const double ex = normal ? ed : es, em = normal ? std::sqrt(2.0) * ed : es;
-    const int channels = normal ? 2 : kindRow(slot.kind).oneChannel ? 1 : 4;
+    const AdaptiveCase a = adaptiveCase(GetParam());
+    const Slot& slot = a.adaptive.slots[0];
 
     // 1. The taps fetched.
-    const Image weights = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view, target);
-    const std::vector<reference::SlotResult> ref = reference::evaluateView(slot, tex, view);
-    const std::vector<reference::SlotResult> ref3 = reference::evaluateView(exact.slots[0], tex, view);
+    const Image weights = vk::render(*runner(&whyNoVulkan), a.adaptive, vk::RenderOutput::Weights, "", a.view, target);
+    const std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), a.view);
     std::vector<bool> differs(ref.size());
     size_t gpuFetches = 0, refFetches = 0, different = 0;
     for (size_t p = 0; p < ref.size(); ++p)
         for (size_t ch = 0; ch < 3; ++ch) {
-            // A fetched tap's weight can lie below float32's normal range (exponent 64 and a gain of k = 19 take a
-            // weight of 1e-3 to 1e-52): the GPU holds it as 0, so the reference's counts as 0 there too.
-            const bool gpu = weights.rgba[p * 4 + ch] > 0, cpu = ref[p].weights[ch] >= 0x1p-126;
+            const bool gpu = weights.rgba[p * 4 + ch] > 0;
             gpuFetches += gpu;
             refFetches += ref[p].blend[ch] >= 0x1p-126;
-            if (gpu != cpu && !differs[p]) differs[p] = true, ++different;
+            if (gpu != fetchedByReference(ref[p], ch) && !differs[p]) differs[p] = true, ++different;
         }
     const double n = double(ref.size());
     std::printf("  %-28s %-5s: fetches per pixel %.3f (reference %.3f), %zu pixels fetch other taps\n", name, targetName(target).c_str(),
@@ -107,19 +71,14 @@ TEST_P(AdaptiveTaps, FetchLikeTheReferenceAndStayWithinTheBoundOfThreeTaps) {
     EXPECT_LT(gpuFetches / n, 3.0);  // something is skipped
 
     // 2. The value against the adaptive reference.
-    const int blended = kindRow(slot.kind).oneChannel ? 1 : channels;
-    const vk::RenderOutput output = normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
-    Check check = checkAgainstReference(m, output, view, on(target), channels, [&](const reference::SlotResult& r, size_t p) {
-        return differs[p] ? 2 * e * spread + pixelTolerance(ref3[p], ex, em, slot.hex, blended) + 1e-6
-                          : pixelTolerance(r, ex, em, slot.hex, blended);
-    });
+    const Check check = checkAdaptive(a, differs, on(target));
     report(name, check);
     EXPECT_LE(check.worstRatio, 1.0);
 
     // 3. Against exact 3-tap on the GPU.
-    const Image adaptive = on(target)(m, output, view), full = on(target)(exact, output, view);
-    const Errors moved = compare(adaptive, full, channels == 1 ? 1 : normal ? 2 : 3);
-    const double bound = e * spread + 1e-6;
+    const Image adaptive = on(target)(a.adaptive, check.output, a.view), full = on(target)(a.exact, check.output, a.view);
+    const Errors moved = compare(adaptive, full, std::min(check.channels, 3));
+    const double bound = adaptiveBound(slot);
     std::printf("  %-28s %-5s: adaptive against 3 taps max %.2e (%.2f/255), bound %.2e\n", name, targetName(target).c_str(), moved.max,
                 moved.max * 255, bound);
     EXPECT_LE(moved.max, bound);

@@ -650,4 +650,70 @@ inline CaseCheck checkPackedCase(const ExecCase& packed, const Draw& draw) {
     return {m, view, checkPacked(m, view, level, draw)};
 }
 
+// ---- Adaptive taps ----------------------------------------------------------------------------------------
+// "taps": "adaptive" skips a tap when its bound says the result moves by less than e = HexTiling::kAdaptiveError times
+// the spread of the taps' values (docs/material-format.md#taps). Three checks per case and target:
+// 1. which taps are fetched: the weights output shows a skipped tap's weight as exactly 0, the reference says which it
+//    skips. Both decide from the same bound, the GPU in float32, so they may differ only where a bound is within
+//    rounding of e: at most 1% of the pixels;
+// 2. the value against the adaptive reference: where both fetch the same taps, the same blend of the same samples, so
+//    the full blend's tolerance (pixelTolerance); elsewhere each is within e S of its exact 3-tap result, and those
+//    within the full blend's tolerance of each other: 2 e S plus that of the exact reference;
+// 3. the bound itself, on the GPU: adaptive against exact 3-tap on the same target and view, within e S. S: the spread
+//    of the values blended, 1 for 8-bit colour or scalars; a normal slot's derivative components are at most
+//    sqrt(2) max|d| in magnitude (a filtered sample's |x| / z is at most its texels' largest, then rotated), so
+//    S = 2 sqrt(2) max|d|. The bound is computed in float32 (relative error ~1e-6 on a threshold of 1/255) and the two
+//    blends round independently (a few 2^-24): 1e-6 more.
+// A case: "slots", its one slot (exact 3-tap; the test adds "taps": "adaptive"), "minified".
+struct AdaptiveCase {
+    Material adaptive, exact;  // the case's slot with "taps": "adaptive", and as the case gives it
+    View view;
+    int level;
+};
+
+inline AdaptiveCase adaptiveCase(const ExecCase& adaptive) {
+    const nlohmann::json c = readCase(adaptive, {"slots", "minified"});
+    const auto withTaps = [&](bool adaptiveTaps) {
+        nlohmann::json slot = c.at("slots").at(0);
+        if (adaptiveTaps) slot["hextiling"]["taps"] = "adaptive";
+        return material(withCrop(slot));
+    };
+    const bool minified = c.at("minified");
+    return {withTaps(true), withTaps(false), minified ? kMinified : kMagnified, minified ? 2 : 0};
+}
+
+// S: the spread of the values an adaptive slot blends (above).
+inline double adaptiveSpread(const Slot& slot) {
+    const TextureBounds b = bounds(sampled(slot));
+    return kindRow(slot.kind).derivative ? 2 * std::sqrt(2.0) * b.maxDeriv : b.spread;
+}
+
+// Check 3's bound: e S, plus 1e-6 for the bound's float32 evaluation and the blends' rounding (above).
+inline double adaptiveBound(const Slot& slot) { return HexTiling::kAdaptiveError * adaptiveSpread(slot) + 1e-6; }
+
+// Whether the reference fetches a tap, as the weights output would show it. A fetched tap's weight can lie below
+// float32's normal range (exponent 64 and a gain of k = 19 take a weight of 1e-3 to 1e-52): the GPU holds it as 0, so
+// the reference's counts as 0 there too.
+inline bool fetchedByReference(const reference::SlotResult& r, size_t tap) { return r.weights[tap] >= 0x1p-126; }
+
+// Check 2: the adaptive slot's value against the adaptive reference, each pixel within the full blend's tolerance, or
+// where `differs` (check 1: the GPU fetches other taps than the reference) 2 e S plus the exact reference's.
+inline Check checkAdaptive(const AdaptiveCase& a, const std::vector<bool>& differs, const Draw& draw) {
+    const Slot& slot = a.adaptive.slots[0];
+    const bool normal = kindRow(slot.kind).derivative;
+    const TextureBounds b = bounds(sampled(slot));
+    // As checkColor and checkNormal.
+    const double es = sampleError(a.level, slot.colorSpace == ColorSpace::Srgb),
+                 ed = 2 * sampleError(a.level, false) * (1 + b.maxDeriv) / b.minZ;
+    const double ex = normal ? ed : es, em = normal ? std::sqrt(2.0) * ed : es;
+    const int channels = normal ? 2 : kindRow(slot.kind).oneChannel ? 1 : 4;
+    const int blended = kindRow(slot.kind).oneChannel ? 1 : channels;
+    const std::vector<reference::SlotResult> ref3 = reference::evaluateView(a.exact.slots[0], sampled(slot), a.view);
+    const double otherTaps = 2 * HexTiling::kAdaptiveError * adaptiveSpread(slot) + 1e-6;
+    const vk::RenderOutput output = normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
+    return checkAgainstReference(a.adaptive, output, a.view, draw, channels, [&](const reference::SlotResult& r, size_t p) {
+        return differs[p] ? otherTaps + pixelTolerance(ref3[p], ex, em, slot.hex, blended) : pixelTolerance(r, ex, em, slot.hex, blended);
+    });
+}
+
 }  // namespace hexc::exec

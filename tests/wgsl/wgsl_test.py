@@ -35,8 +35,8 @@ HEXC = None
 EXPECT = None  # hexc-expect (tests/execution/expect.cpp)
 CASES = os.path.join("tests", "execution", "cases")
 # The feature variants' tables whose cases hexc-expect checks as their lavapipe tests do (checks.h, "Feature variants
-# as data"): odd texture sizes and packed slots.
-VARIANTS = tuple(os.path.join("tests", "execution", t) for t in ("odd_sizes", "packed"))
+# as data"): odd texture sizes, packed slots and adaptive taps.
+VARIANTS = tuple(os.path.join("tests", "execution", t) for t in ("odd_sizes", "packed", "adaptive"))
 # The material files whose slots tests/execution/outputs_test.cpp checks one at a time (slotOf, checkSlot): the examples
 # (ExampleSlots, every slot) and the MaterialX documents (MaterialXDocuments).
 EXAMPLES = ("rock", "rock_blend", "rock_normal", "rock_triplanar", "tiles", "tiles_stepped")
@@ -156,11 +156,11 @@ class Wgsl(unittest.TestCase):
         self.assertEqual(len(glob.glob(os.path.join(out, "*.expect.json"))), len(inputs))
         print("slowest WGSL compile (SPIR-V, naga, vertex stage): %s, %.0f ms" % max(compiles, key=lambda c: c[1]))
 
-    def draw(self, name, expect, out):
-        """Draws the case with Dawn: each pixel's largest error over the case's channels, its largest error/tolerance and
-        the tolerance there (a tolerance a pixel, or one a channel: tolerance_channels)."""
-        width, height, channels, per = expect["width"], expect["height"], expect["channels"], expect["tolerance_channels"]
-        with open(os.path.join(out, name + ".manifest.json")) as f:
+    def render(self, stem, expect, out):
+        """Draws the shader hexc-expect wrote as `stem` (stem.manifest.json, its WGSL) over the case's view, with the case's
+        textures: RGBA float pixels, top row first."""
+        width, height = expect["width"], expect["height"]
+        with open(os.path.join(out, stem + ".manifest.json")) as f:
             manifest = json.load(f)
         fragment, vertex = manifest["targets"]["wgsl"], manifest["vertex"]["wgsl"]
         # The page feeds hexc's vertex stage a position at location 0 and the uv at location 1.
@@ -176,8 +176,16 @@ class Wgsl(unittest.TestCase):
             result = self.call("render", {"fragment": f.read(), "vertex": g.read(), "fragmentEntry": fragment["entry_point"],
                                           "vertexEntry": vertex["entry_point"], "textures": textures, "sampler": fragment["sampler"],
                                           "width": width, "height": height, "rect": expect["uv"]})
-        gpu = struct.unpack("<%df" % (width * height * 4), base64.b64decode(result["pixels"]))
+        return struct.unpack("<%df" % (width * height * 4), base64.b64decode(result["pixels"]))
+
+    def draw(self, name, expect, out):
+        """Draws the case with Dawn: each pixel's largest error over the case's channels, its largest error/tolerance and
+        the tolerance there (a tolerance a pixel, or one a channel: tolerance_channels)."""
+        width, height, channels, per = expect["width"], expect["height"], expect["channels"], expect["tolerance_channels"]
+        gpu = self.render(name, expect, out)
         ref, tolerances = (raw_floats(os.path.join(out, expect[key])) for key in ("reference", "tolerance"))
+        if "adaptive" in expect:
+            tolerances = self.adaptive(expect, out, gpu, tolerances)
         errors = [[abs(gpu[p * 4 + c] - ref[p * 4 + c]) for c in range(channels)] for p in range(width * height)]
         errors = [[e if e == e else math.inf for e in pixel] for pixel in errors]
         tolerance = [[tolerances[p * per + min(c, per - 1)] for c in range(channels)] for p in range(width * height)]
@@ -188,6 +196,28 @@ class Wgsl(unittest.TestCase):
         blank = sum(any(abs(ref[p * 4 + c]) > tolerance[p][c] for c in range(channels)) for p in range(width * height))
         self.assertGreater(blank, width * height / 20)
         return [max(pixel) for pixel in errors], ratios, at
+
+    def adaptive(self, expect, out, gpu, tolerances):
+        """Adaptive taps as cases_test.cpp's AdaptiveTaps checks them, on Dawn: 1. the taps fetched (the weights output's
+        non-zero weights) differ from the reference's at no more than 1% of the pixels, and something is skipped; 3. the
+        adaptive image is within the bound of the exact 3-tap one. Returns check 2's tolerances: the other-taps one where
+        Dawn fetches other taps than the reference."""
+        a, pixels = expect["adaptive"], expect["width"] * expect["height"]
+        weights = self.render(a["weights"], expect, out)
+        with open(os.path.join(out, a["fetched"]), "rb") as f:
+            fetched = f.read()
+        gpu_fetched = [weights[p * 4 + t] > 0 for p in range(pixels) for t in range(3)]
+        differs = [any(gpu_fetched[p * 3 + t] != bool(fetched[p * 3 + t]) for t in range(3)) for p in range(pixels)]
+        exact = self.render(a["exact"], expect, out)
+        channels = min(expect["channels"], 3)
+        moved = max(abs(gpu[p * 4 + c] - exact[p * 4 + c]) for p in range(pixels) for c in range(channels))
+        print("  fetches per pixel %.3f (reference %.3f), %d pixels fetch other taps; against 3 taps max %.2e, bound %.2e" % (
+            sum(gpu_fetched) / pixels, sum(fetched) / pixels, sum(differs), moved, a["bound"]))
+        self.assertLessEqual(sum(differs), pixels // 100)
+        self.assertLess(sum(gpu_fetched) / pixels, 3.0)  # something is skipped
+        self.assertLessEqual(moved, a["bound"])
+        other = raw_floats(os.path.join(out, a["other_taps"]))
+        return [o if d else t for d, o, t in zip(differs, other, tolerances)]
 
 
 def raw_floats(path):
