@@ -1,6 +1,7 @@
-// hexc-expect (CASE.json | MATERIAL:SLOT)... -o DIR: what a GPU that the execution tests do not drive (tests/wgsl:
+// hexc-expect (CASE.json | MATERIAL:SLOT | layers/FILE.json:CASE)... -o DIR: what a GPU that the execution tests do not drive (tests/wgsl:
 // Dawn) is held to for a case of tests/execution/cases/ (its own check, checks.h checkCase), a case of a feature
-// variant's table (odd_sizes/, packed/, adaptive/: the checks its table's test runs, checks.h "Feature variants as data") or a slot of a material
+// variant's table (odd_sizes/, packed/, adaptive/: the checks its table's test runs, checks.h "Feature variants as data";
+// layers/FILE.json:CASE: a case of layers_test.cpp, layer_checks.h) or a slot of a material
 // file (as outputs_test.cpp checks the examples': checkSlot), the check run with nothing drawn: the same reference and
 // per-pixel tolerances, the texels the reference samples (every mip level as it models them) and the shader drawn,
 // the WGSL of the material as the harness shows it (NAME.frag.wgsl, NAME.vert.wgsl, NAME.manifest.json).
@@ -10,7 +11,8 @@
 //   {"output": "albedo" | "derivative" | "weights" | "shaded" (the material's own template: packed), "channels": N,
 //    "compile_ms", "width", "height", "uv": [u0, v0, u1, v1], "reference": RGBA float32 a pixel, top row first,
 //    "tolerance": "tolerance_channels" float32 a pixel: 1, or 4, one a channel (packed: each slot's in its channels),
-//    "textures": {name as the manifest names it: {"format": a WebGPU format, "levels": [{"width", "height", "file"}]}},
+//    "textures": {name as the manifest names it: {"format": a WebGPU format, "levels": [{"width", "height", "file"}]}, or
+//    for a layers role's texture array {"format", "array": the textures of its layers, in layer order}},
 //    adaptive taps only (cases_test.cpp AdaptiveTaps), "adaptive": {"weights": the weights output's NAME_weights
 //    (.frag.wgsl, .manifest.json ...), "fetched": 3 bytes a pixel, 1 where the reference fetches a tap, "other_taps": the
 //    tolerance (float32 a pixel) where the GPU fetches other taps than the reference, "exact": the exact 3-tap
@@ -25,6 +27,7 @@
 #include <optional>
 
 #include "execution/checks.h"
+#include "execution/layer_checks.h"
 #include "vk/render.h"
 
 using namespace hexc;
@@ -73,17 +76,6 @@ nlohmann::json writeLevels(const reference::SampledTexture& t, bool isFloat, boo
 // it, its levels made as the reference makes a texture's.
 nlohmann::json writeTextures(const Material& m, const CompileResult& compiled, const std::filesystem::path& dir) {
     nlohmann::json textures = nlohmann::json::object();
-    for (const OutputFile& f : compiled.files) {
-        if (!f.name.ends_with(".manifest.json")) continue;
-        const nlohmann::json packed = nlohmann::json::parse(f.contents).value("packed_textures", nlohmann::json::array());
-        for (const nlohmann::json& p : packed) {
-            const bool srgb = p["colorspace"] == "srgb";
-            const auto file =
-                std::find_if(compiled.files.begin(), compiled.files.end(), [&](const OutputFile& o) { return o.name == p["file"]; });
-            const reference::SampledTexture t(decodeTexture(file->contents, srgb));
-            textures[p["name"].get<std::string>()] = writeLevels(t, false, srgb, dir, m.name + "." + p["name"].get<std::string>());
-        }
-    }
     for (const Slot& slot : m.slots) {
         const reference::SlotTextures t(slot);
         const bool histogram = t.lut != nullptr;
@@ -91,6 +83,21 @@ nlohmann::json writeTextures(const Material& m, const CompileResult& compiled, c
         textures[slot.name] = writeLevels(*t.texture, histogram, slot.samplerDecodes(), dir, stem);
         if (histogram) textures[slot.name + ".lut"] = writeLevels(*t.lut, true, false, dir, stem + ".lut");
     }
+    const auto file = [&](const std::string& name) {
+        return std::find_if(compiled.files.begin(), compiled.files.end(), [&](const OutputFile& f) { return f.name == name; })->contents;
+    };
+    const nlohmann::json manifest = nlohmann::json::parse(file(m.name + ".manifest.json"));
+    for (const nlohmann::json& p : manifest.value("packed_textures", nlohmann::json::array())) {
+        const bool srgb = p["colorspace"] == "srgb";
+        const reference::SampledTexture t(decodeTexture(file(p["file"]), srgb));
+        textures[p["name"].get<std::string>()] = writeLevels(t, false, srgb, dir, m.name + "." + p["name"].get<std::string>());
+    }
+    // A layers role's texture array: its layers are its slots' textures, in layer order.
+    if (manifest.contains("layers"))
+        for (const nlohmann::json& a : manifest["layers"]["arrays"])
+            if (a["array"])
+                textures[a["binding"]["texture"].get<std::string>()] = {{"format", textures[a["slots"][0].get<std::string>()]["format"]},
+                                                                        {"array", a["slots"]}};
     return textures;
 }
 
@@ -143,6 +150,17 @@ Expected fromVariant(const std::filesystem::path& file) {
     if (check == checks.end()) throw std::runtime_error(file.string() + ": not a case of cases/ or of a feature variant's table");
     CaseCheck r = check->second(c, Draw());
     return {folder + "_" + c.name, r.material, r.view, r.check, {}};
+}
+
+// A case of tests/execution/layers_test.cpp (its check: layer_checks.h), by its material file and its name in the
+// test's table, named layers_<case>.
+Expected fromLayers(const std::filesystem::path& file, const std::string& name) {
+    for (const LayerCase& c : kLayerCases)
+        if (file.filename() == c.file && name == c.name) {
+            CaseCheck r = checkLayers(c, Draw());
+            return {"layers_" + name, r.material, r.view, r.check, {}};
+        }
+    throw std::runtime_error(file.string() + ": layers_test.cpp has no case " + name + " of it");
 }
 
 // A slot of a material file as tests/execution/outputs_test.cpp checks the examples': alone with the slot it
@@ -223,15 +241,17 @@ int main(int argc, char** argv) {
     std::filesystem::path dir;
     for (int i = 1; i < argc; ++i) std::string(argv[i]) == "-o" && i + 1 < argc ? void(dir = argv[++i]) : inputs.push_back(argv[i]);
     if (dir.empty() || inputs.empty()) {
-        std::fprintf(stderr, "usage: hexc-expect (CASE.json | MATERIAL:SLOT)... -o DIR   (from the source root)\n");
+        std::fprintf(stderr, "usage: hexc-expect (CASE.json | MATERIAL:SLOT | layers/FILE.json:CASE)... -o DIR   (from the source root)\n");
         return 2;
     }
     try {
         std::filesystem::create_directories(dir);
         for (const std::string& input : inputs) {
             const size_t colon = input.rfind(':');
-            const std::filesystem::path file(input);
-            write(colon != std::string::npos                 ? fromSlot(input.substr(0, colon), input.substr(colon + 1))
+            const std::filesystem::path file(input.substr(0, colon));
+            const std::string after = colon == std::string::npos ? "" : input.substr(colon + 1);
+            write(file.parent_path().filename() == "layers"  ? fromLayers(file, after)
+                  : colon != std::string::npos               ? fromSlot(file.string(), after)
                   : file.parent_path().filename() == "cases" ? fromCase(file)
                                                              : fromVariant(file),
                   dir);

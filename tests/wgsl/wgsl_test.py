@@ -37,6 +37,19 @@ CASES = os.path.join("tests", "execution", "cases")
 # The feature variants' tables whose cases hexc-expect checks as their lavapipe tests do (checks.h, "Feature variants
 # as data"): odd texture sizes, packed slots and adaptive taps.
 VARIANTS = tuple(os.path.join("tests", "execution", t) for t in ("odd_sizes", "packed", "adaptive"))
+# The layered materials' cases (tests/execution/layers_test.cpp, layer_checks.h) drawn, as hexc-expect's FILE:CASE:
+# one, two and eight layers (two splat maps), packed layers, the arrays' fallback to separate textures and a normal
+# array, vertex-colour weights alone and times the splat map, and the height blend. Left out: four_layers_linear and
+# four_layers_separate (the images of eight_layers' and four_layers_sizes' code paths, in under 40 s of CI time),
+# two_layers_vertex (four_layers_vertex's path), and the cases whose lavapipe bound a blank image meets at more than 95%
+# of the pixels, which a draw would not test (median tolerance on values in [0, 1]): the height blend's at widths up to the
+# default, four_layers_height (every pixel; 3.0), _soft (1.47), _narrow (14.4), four_layers_normal (1.14),
+# four_layers_both_height (2.82), and two_layers_linear_soft (98.5% of the pixels; 8.0), whose splat weights' sum S,
+# small at the soft border, divides the bound.
+LAYERS = [os.path.join("tests", "execution", "layers", f) for f in (
+    "one.json:one_layer", "two.json:two_layers_linear", "eight.json:eight_layers", "four_packed.json:four_layers_packed",
+    "four_sizes.json:four_layers_sizes", "four_sizes.json:four_layers_sizes_normal", "four_vertex.json:four_layers_vertex",
+    "two_both.json:two_layers_both", "four_height_wide.json:four_layers_height_wide")]
 # The material files whose slots tests/execution/outputs_test.cpp checks one at a time (slotOf, checkSlot): the examples
 # (ExampleSlots, every slot) and the MaterialX documents (MaterialXDocuments).
 EXAMPLES = ("rock", "rock_blend", "rock_normal", "rock_triplanar", "tiles", "tiles_stepped")
@@ -128,12 +141,12 @@ class Wgsl(unittest.TestCase):
         print("Tint accepted all %d" % len(files))
 
     def test_dawn_draws_every_case_within_its_bounds(self):
-        """Every execution case (tests/execution/cases/, and the feature variants' tables: VARIANTS) and the examples' and
-        MaterialX documents' slots (as
+        """Every execution case (tests/execution/cases/, and the feature variants' tables: VARIANTS, LAYERS) and the
+        examples' and MaterialX documents' slots (as
         outputs_test.cpp checks them), drawn by Dawn, each pixel held to the tolerance its lavapipe check derives for it
         (checks.h), against the same fp64 reference, with the same texels and mip levels: hexc-expect writes them, and
         the WGSL drawn (tests/execution/expect.cpp)."""
-        inputs = [p for folder in (CASES,) + VARIANTS for p in sorted(glob.glob(os.path.join(folder, "*.json")))] + slot_inputs()
+        inputs = [p for folder in (CASES,) + VARIANTS for p in sorted(glob.glob(os.path.join(folder, "*.json")))] + LAYERS + slot_inputs()
         out = os.path.join(self.folder, "draw")
         started = time.monotonic()
         subprocess.run([EXPECT, *inputs, "-o", out], check=True)
@@ -163,18 +176,19 @@ class Wgsl(unittest.TestCase):
         with open(os.path.join(out, stem + ".manifest.json")) as f:
             manifest = json.load(f)
         fragment, vertex = manifest["targets"]["wgsl"], manifest["vertex"]["wgsl"]
-        # The page feeds hexc's vertex stage a position at location 0 and the uv at location 1.
-        self.assertEqual([(a["location"], a["feeds"]) for a in manifest["vertex"]["attributes"]], [(0, "gl_Position"), (1, "v_uv")])
+        # The page feeds hexc's vertex stage the inputs its manifest lists, as the harness's draw does (webgpu.js, triangle).
+        attributes = [{"location": a["location"], "feeds": a["feeds"]} for a in manifest["vertex"]["attributes"]]
         group = fragment["sampler"]["group"]
         self.assertEqual({t["group"] for t in fragment["textures"].values()}, {group})  # one bind group, as the page binds
         textures = []
         for texture, place in fragment["textures"].items():
             given = expect["textures"][texture]
-            levels = [dict(level, url="/out/draw/" + level["file"]) for level in given["levels"]]
-            textures.append({"binding": place["binding"], "format": given["format"], "levels": levels})
+            layers = [expect["textures"][t]["levels"] for t in given["array"]] if "array" in given else [given["levels"]]
+            layers = [[dict(level, url="/out/draw/" + level["file"]) for level in levels] for levels in layers]
+            textures.append({"binding": place["binding"], "format": given["format"], "layers": layers, "array": "array" in given})
         with open(os.path.join(out, fragment["file"])) as f, open(os.path.join(out, vertex["file"])) as g:
             result = self.call("render", {"fragment": f.read(), "vertex": g.read(), "fragmentEntry": fragment["entry_point"],
-                                          "vertexEntry": vertex["entry_point"], "textures": textures, "sampler": fragment["sampler"],
+                                          "vertexEntry": vertex["entry_point"], "attributes": attributes, "textures": textures, "sampler": fragment["sampler"],
                                           "width": width, "height": height, "rect": expect["uv"]})
         return struct.unpack("<%df" % (width * height * 4), base64.b64decode(result["pixels"]))
 
