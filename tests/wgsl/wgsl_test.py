@@ -160,11 +160,11 @@ class Wgsl(unittest.TestCase):
                 expect = json.load(f)
             compiles.append((name, expect["compile_ms"]))
             with self.subTest(case=name):
-                errors, ratios, tolerances = self.draw(name, expect, out)
+                errors, ratios, bound = self.draw(name, expect, out)
                 worst = max(range(len(ratios)), key=ratios.__getitem__)
                 unit = 1 if expect["output"] == "derivative" or expect["channels"] == 2 else 255  # 2: a layered normal role's slopes
                 print("%-36s %-10s %10.3f %10.4f %10.3f %8.3f" % (name, expect["output"], max(errors) * unit, sum(errors) / len(errors) * unit,
-                                                                  tolerances[worst] * unit, ratios[worst]))
+                                                                  bound * unit, ratios[worst]))
                 self.assertLessEqual(ratios[worst], 1.0)
         self.assertEqual(len(glob.glob(os.path.join(out, "*.expect.json"))), len(inputs))
         print("slowest WGSL compile (SPIR-V, naga, vertex stage): %s, %.0f ms" % max(compiles, key=lambda c: c[1]))
@@ -193,43 +193,41 @@ class Wgsl(unittest.TestCase):
         return struct.unpack("<%df" % (width * height * 4), base64.b64decode(result["pixels"]))
 
     def draw(self, name, expect, out):
-        """Draws the case with Dawn: each pixel's largest error over the case's channels, its largest error/tolerance and
-        the tolerance there (a tolerance a pixel, or one a channel: tolerance_channels)."""
+        """Draws the case with Dawn: each pixel's largest error over the case's channels and its largest error/tolerance
+        (a tolerance a pixel, or one a channel: tolerance_channels), and the tolerance where that ratio is largest."""
         width, height, channels, per = expect["width"], expect["height"], expect["channels"], expect["tolerance_channels"]
         gpu = self.render(name, expect, out)
         ref, tolerances = (raw_floats(os.path.join(out, expect[key])) for key in ("reference", "tolerance"))
         if "adaptive" in expect:
             tolerances = self.adaptive(expect, out, gpu, tolerances)
-        errors = [[abs(gpu[p * 4 + c] - ref[p * 4 + c]) for c in range(channels)] for p in range(width * height)]
-        errors = [[e if e == e else math.inf for e in pixel] for pixel in errors]
-        tolerance = [[tolerances[p * per + min(c, per - 1)] for c in range(channels)] for p in range(width * height)]
-        ratios = [max(e / t for e, t in zip(pe, pt)) for pe, pt in zip(errors, tolerance)]
-        at = [pt[max(range(channels), key=lambda c: pe[c] / pt[c])] for pe, pt in zip(errors, tolerance)]
+        # Channel by channel, over whole images (a loop per pixel and channel costs seconds over all cases).
+        tolerance = [tolerances[min(c, per - 1)::per] for c in range(channels)]
+        errors = [[d if d == d else math.inf for d in (abs(g - r) for g, r in zip(gpu[c::4], ref[c::4]))] for c in range(channels)]
+        ratios = [[e / t for e, t in zip(errors[c], tolerance[c])] for c in range(channels)]
+        worst_ratios = list(map(max, *ratios)) if channels > 1 else ratios[0]
+        worst = max(range(width * height), key=worst_ratios.__getitem__)
+        channel = max(range(channels), key=lambda c: ratios[c][worst])
         # Not vacuous: a blank draw would fail at one pixel in twenty or more (normal_minified, whose tolerances are wide
         # against its minified slopes: 9%).
-        blank = sum(any(abs(ref[p * 4 + c]) > tolerance[p][c] for c in range(channels)) for p in range(width * height))
+        blank = sum(map(any, zip(*([abs(r) > t for r, t in zip(ref[c::4], tolerance[c])] for c in range(channels)))))
         self.assertGreater(blank, width * height / 20)
-        return [max(pixel) for pixel in errors], ratios, at
+        return list(map(max, *errors)) if channels > 1 else errors[0], worst_ratios, tolerance[channel][worst]
 
     def adaptive(self, expect, out, gpu, tolerances):
         """Adaptive taps as cases_test.cpp's AdaptiveTaps checks them, on Dawn: 1. the taps fetched (the weights output's
-        non-zero weights) differ from the reference's at no more than 1% of the pixels, and something is skipped; 3. the
-        adaptive image is within the bound of the exact 3-tap one. Returns check 2's tolerances: the other-taps one where
-        Dawn fetches other taps than the reference."""
+        non-zero weights) differ from the reference's at no more than 1% of the pixels, and something is skipped. Returns
+        check 2's tolerances: the other-taps one where Dawn fetches other taps than the reference. Check 3 (adaptive
+        against exact 3-tap on the same GPU) is lavapipe's only: a third shader a case would cost about 10 s here."""
         a, pixels = expect["adaptive"], expect["width"] * expect["height"]
         weights = self.render(a["weights"], expect, out)
         with open(os.path.join(out, a["fetched"]), "rb") as f:
             fetched = f.read()
-        gpu_fetched = [weights[p * 4 + t] > 0 for p in range(pixels) for t in range(3)]
-        differs = [any(gpu_fetched[p * 3 + t] != bool(fetched[p * 3 + t]) for t in range(3)) for p in range(pixels)]
-        exact = self.render(a["exact"], expect, out)
-        channels = min(expect["channels"], 3)
-        moved = max(abs(gpu[p * 4 + c] - exact[p * 4 + c]) for p in range(pixels) for c in range(channels))
-        print("  fetches per pixel %.3f (reference %.3f), %d pixels fetch other taps; against 3 taps max %.2e, bound %.2e" % (
-            sum(gpu_fetched) / pixels, sum(fetched) / pixels, sum(differs), moved, a["bound"]))
+        gpu_fetched = [w > 0 for p in range(pixels) for w in weights[p * 4:p * 4 + 3]]
+        differs = [gpu_fetched[p * 3:p * 3 + 3] != [bool(x) for x in fetched[p * 3:p * 3 + 3]] for p in range(pixels)]
+        print("  fetches per pixel %.3f (reference %.3f), %d pixels fetch other taps" % (
+            sum(gpu_fetched) / pixels, sum(fetched) / pixels, sum(differs)))
         self.assertLessEqual(sum(differs), pixels // 100)
         self.assertLess(sum(gpu_fetched) / pixels, 3.0)  # something is skipped
-        self.assertLessEqual(moved, a["bound"])
         other = raw_floats(os.path.join(out, a["other_taps"]))
         return [o if d else t for d, o, t in zip(differs, other, tolerances)]
 
