@@ -3,7 +3,10 @@
 // case's material, view and per-pixel tolerance against the fp64 reference (reference/layers.h).
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <numeric>
 #include <string>
+#include <vector>
 
 #include "execution/checks.h"
 #include "reference/layers.h"
@@ -13,30 +16,71 @@ namespace hexc::exec {
 // The tolerances, per pixel, from the reference's details of it. Lavapipe's 8-bit sampling puts a filtered sample
 // within e_s = (1.2 + L * m) / 255 of the exact one at deepest mip level L (m = 1 linear, 2.27 sRGB: the derivation is
 // sampleError's in execution_test.cpp). The layers' hex-tiling runs with falloffcontrast 0 and falloff 0.5, so its
-// tile weights come from the lattice alone and a layer's value errs by at most its samples' e_x.
-//   - Each splat weight s_i errs by e_w (linear 8-bit); w_i = s_i / S moves by |ds_i| / S + s_i |dS| / S^2, so
-//     sum_i |dw_i| <= 2 n e_w / S, and the blend, whose weight changes sum to 0, by <= n e_w spread / S, spread being
-//     the largest difference between the layers' values in a channel.
-//   - A layer whose s_i is within e_w of skip_below may be kept on one side and dropped on the other: its weight,
-//     <= (skip + e_w) / S, times spread.
-//   - Height mode: b_i = max(h_i + w_i - top + width, 0) with h_i off by e_x (linear) and w_i by e_n = 2 n e_w / S:
-//     each b_i moves by <= 2 (e_x + e_n), B = sum b_i by <= 2 n (e_x + e_n), so sum_i |d(b_i / B)| <= 4 n (e_x + e_n) / B
-//     and the blend by half that times spread.
-inline double layerTolerance(const reference::LayerResult& r, const Layers& layers, double ex, double eh, double ew) {
-    const double n = double(r.splat.size());
-    double S = 0, spread = 0;
-    for (double s : r.splat) S += s >= layers.skipBelow ? s : 0;
-    S = std::max(S, 1e-3);  // an unpainted texel shows layer 0 alone; its neighbours' weights then count against 1e-3
-    for (size_t c = 0; c < 4; ++c) {
-        double lo = INFINITY, hi = -INFINITY;
-        for (const reference::SlotResult& l : r.layers) lo = std::min(lo, l.value[c]), hi = std::max(hi, l.value[c]);
-        spread = std::max(spread, hi - lo);
+// tile weights come from the lattice alone and a layer's value errs by at most its samples' e_x (a normal role's
+// derivative: checkNormal's). The GPU's result is a blend of its layers' values with weights summing to 1, so it errs
+// by e_x plus what the weights' changes dw do: |sum_i dw_i v_i| <= (sum_i |dw_i| / 2) * spread, spread being the
+// largest difference, in a channel, between the values of the layers whose weight may change (their dw sum to 0).
+//   - Each splat weight s_i errs by e_w (linear 8-bit); a layer is kept where s_i >= skip_below. Where its weight is 0
+//     on both (`zero`: no painted texel near, unpaintedLayers) it is dropped on both; where s_i is further than e_w
+//     from the bound, kept or dropped alike on both (the sure set, k layers); within e_w it is ambiguous (a of them):
+//     kept on one side and dropped on the other, with s_i <= skip + 2 e_w on either.
+//   - So the kept weights' sum S moves by <= dS = k e_w + a (skip + 2 e_w), and is >= S_lo = sum_sure s_i - k e_w on
+//     both sides. Linear: w_i = s_i / S: a sure weight moves by <= (e_w + w_i dS) / S_lo, an ambiguous one's is
+//     <= (skip + 2 e_w) / S_lo, so sum_i |dw_i| <= 2 dS / S_lo and the blend by dS / S_lo times their spread. One sure
+//     layer and none ambiguous keeps weight 1: e_x alone, inside a painted area. None kept on either: layer 0 alone.
+//   - Height: a_i = h_i + w_i, h_i off by e_h, so a sure a_i by e_i = e_h + (e_w + w_i dS) / S_lo and the sure layers'
+//     top by E = max e_i. An ambiguous layer's a_i is at most h_i + e_h + (skip + 2 e_w) / S_lo: where that may reach
+//     top - E it may become the top, and the pixel is held to the blend's own range, e_x + spread over every layer.
+//     Else b_i = max(a_i - top + width, 0) moves by <= e_i + E for a sure layer, not at all where
+//     a_i - top + width <= -(e_i + E) on both sides, and for an ambiguous one by <= its largest b. With D the sum of
+//     those over the layers that may move (A), the weights b_i / B move by sum |d(b_i / B)| <= (sum |db_i| + |dB|) / B
+//     <= 2 D / B (B >= width on both: the top layer's b is width), and the blend by D spread_A / B. One active layer
+//     keeps weight 1: e_x alone, inside a layer's top.
+inline double layerTolerance(const reference::LayerResult& r, const Layers& layers, const std::vector<bool>& zero, double ex, double eh,
+                             double ew) {
+    const size_t n = r.splat.size();
+    std::vector<bool> sure(n), ambiguous(n);
+    double sureSum = 0, k = 0, a = 0;
+    for (size_t i = 0; i < n; ++i) {
+        ambiguous[i] = !zero[i] && std::fabs(r.splat[i] - layers.skipBelow) <= ew;
+        sure[i] = !ambiguous[i] && r.splat[i] >= layers.skipBelow;
+        if (sure[i]) sureSum += r.splat[i], ++k;
+        a += ambiguous[i];
     }
-    double t = ex + n * ew * spread / S;
-    for (double s : r.splat)
-        if (std::fabs(s - layers.skipBelow) <= ew) t += (layers.skipBelow + ew) / S * spread;
-    if (layers.heightRole) t += 2 * n * (eh + 2 * n * ew / S) * spread / r.heightSum;
-    return t;
+    // The largest difference in a channel between the values of the layers `in` takes.
+    auto spread = [&](const std::function<bool(size_t)>& in) {
+        double out = 0;
+        for (size_t c = 0; c < 4; ++c) {
+            double lo = INFINITY, hi = -INFINITY;
+            for (size_t i = 0; i < n; ++i)
+                if (in(i)) lo = std::min(lo, r.layers[i].value[c]), hi = std::max(hi, r.layers[i].value[c]);
+            out = std::max(out, hi - lo);
+        }
+        return out;
+    };
+    const double whole = ex + spread([](size_t) { return true; });
+    if (k == 0 && a == 0) return ex;
+    const double Slo = sureSum - k * ew, dS = k * ew + a * (layers.skipBelow + 2 * ew), ambiguousW = (layers.skipBelow + 2 * ew) / Slo;
+    if (Slo <= 0) return whole;
+    if (!layers.heightRole) return ex + dS / Slo * spread([&](size_t i) { return sure[i] || ambiguous[i]; });
+    const double S =
+        std::accumulate(r.splat.begin(), r.splat.end(), 0.0, [&](double x, double s) { return s >= layers.skipBelow ? x + s : x; });
+    std::vector<double> e(n), moves(n, 0.0);
+    double top = -INFINITY, E = 0;
+    for (size_t i = 0; i < n; ++i)
+        if (sure[i]) {
+            e[i] = eh + (ew + r.splat[i] / S * dS) / Slo;
+            top = std::max(top, r.heights[i] + r.splat[i] / S), E = std::max(E, e[i]);
+        }
+    for (size_t i = 0; i < n; ++i) {
+        if (sure[i] && r.heights[i] + r.splat[i] / S - top + layers.width > -(e[i] + E)) moves[i] = e[i] + E;
+        if (!ambiguous[i]) continue;
+        const double aMax = r.heights[i] + eh + ambiguousW;
+        if (aMax >= top - E) return whole;
+        moves[i] = std::max(aMax - (top - E) + layers.width, 0.0);
+    }
+    const double D = std::accumulate(moves.begin(), moves.end(), 0.0);
+    return ex + D / r.heightSum * spread([&](size_t i) { return moves[i] > 0; });
 }
 
 struct LayerCase {
@@ -51,8 +95,9 @@ struct LayerCase {
 // Over the whole splat map (256 texels across 128 pixels: level 1) so that its hard left and soft right borders are
 // both in view; the layers tile 4 times (8 texels a pixel: level 3).
 inline const View kWhole{128, 128, {0, 0, 1, 1}};
-// A magnified corner: the splat map's soft border region, the layers at 0.5 texel a pixel (level 0).
-inline const View kSoft{96, 96, {0.55, 0.35, 0.55 + 96 * 0.5 / 1024, 0.35 + 96 * 0.5 / 1024}};
+// A magnified corner where three layers' splat weights overlap (texels 234-245, 218-229: r, g, b about 0.52, 0.31,
+// 0.17 at its centre), so that each blend mixes layers there, the layers at 0.5 texel a pixel (level 0).
+inline const View kSoft{96, 96, {234.0 / 256, 218.0 / 256, 234.0 / 256 + 96 * 0.5 / 1024, 218.0 / 256 + 96 * 0.5 / 1024}};
 
 inline const LayerCase kLayerCases[] = {
     {"one_layer", "one.json", "albedo", kWhole, 3, 1},
@@ -85,6 +130,31 @@ inline double weightError(const Layers& layers, double ew) {
     return layers.weights == LayerWeights::Splat ? ew : layers.weights == LayerWeights::Vertex ? ec : ew + ec;
 }
 
+// Per layer, whether its weight at pixel (i, j) of `view` is exactly 0 on the GPU as in the reference: its splat
+// channel is 0 at every texel within 2 of the sample point at every mip level up to one past the deepest read (the
+// GPU's filter reads texels within 1 of it, at a level its own LOD picks; 0 texels give 0 at every level and filter
+// weight). Vertex-colour weights alone are never taken as 0 (their error is e_c, not a texel's).
+inline std::vector<bool> unpaintedLayers(const Material& m, const reference::LayerTextures& textures, const View& view, int i, int j,
+                                         int splatLevel) {
+    const Layers& layers = *m.layers;
+    std::vector<bool> zero(layers.layers.size(), false);
+    if (layers.weights == LayerWeights::Vertex) return zero;
+    const double u = view.uvRect[0] + (i + 0.5) * (view.uvRect[2] - view.uvRect[0]) / view.width;
+    const double v = view.uvRect[1] + (j + 0.5) * (view.uvRect[3] - view.uvRect[1]) / view.height;
+    for (size_t l = 0; l < zero.size(); ++l) {
+        const reference::SampledTexture& t = *textures.of(layers.splats[l / 4]).texture;
+        bool allZero = true;
+        for (int level = 0; level <= std::min(splatLevel + 1, t.levels() - 1) && allZero; ++level) {
+            const int w = t.width(level), h = t.height(level);
+            const int x0 = int(std::floor(u * w - 0.5)), y0 = int(std::floor(v * h - 0.5));
+            for (int y = y0 - 2; y <= y0 + 3; ++y)
+                for (int x = x0 - 2; x <= x0 + 3; ++x) allZero &= t.texel(level, ((x % w) + w) % w, ((y % h) + h) % h)[l % 4] == 0;
+        }
+        zero[l] = allZero;
+    }
+    return zero;
+}
+
 // The case's role, drawn, against the reference: each pixel within its tolerance (layerTolerance).
 inline CaseCheck checkLayers(const LayerCase& c, const Draw& draw) {
     ParseResult parsed = parseMaterialFile(std::string("tests/execution/layers/") + c.file);
@@ -98,11 +168,17 @@ inline CaseCheck checkLayers(const LayerCase& c, const Draw& draw) {
     const Image gpu = drawn(draw, m, vk::RenderOutput::Shaded, c.view);
     const reference::LayerTextures textures(m);
     const std::vector<reference::LayerResult> ref = reference::evaluateLayersView(m, 0, textures, c.view);
-    const double ex = (1.2 + c.level * (first.colorSpace == ColorSpace::Srgb ? 2.27 : 1.0)) / 255;
-    const double eh = (1.2 + c.level) / 255, ew = weightError(layers, (1.2 + c.splatLevel) / 255);
+    double ex = sampleError(c.level, first.colorSpace == ColorSpace::Srgb);
+    if (first.kind == SlotKind::Normal)  // each layer's derivative as checkNormal bounds it, the largest
+        for (const Layers::Layer& layer : layers.layers) {
+            const TextureBounds b = bounds(sampled(m.slots[layer.slots[0]]));
+            ex = std::max(ex, 2 * sampleError(c.level, false) * (1 + b.maxDeriv) / b.minZ);
+        }
+    const double eh = sampleError(c.level, false), ew = weightError(layers, sampleError(c.splatLevel, false));
     Image cpu = gpu;
     for (size_t p = 0; p < ref.size(); ++p) {
-        const double t = layerTolerance(ref[p], layers, ex, eh, ew);
+        const int i = int(p % size_t(c.view.width)), j = int(p / size_t(c.view.width));
+        const double t = layerTolerance(ref[p], layers, unpaintedLayers(m, textures, c.view, i, j, c.splatLevel), ex, eh, ew);
         check.tolerance.push_back(t);
         check.maxTolerance = std::max(check.maxTolerance, t);
         for (size_t ch = 0; ch < size_t(check.channels); ++ch) {
