@@ -3,6 +3,7 @@
 // checks that run a material on lavapipe and compare every pixel with the fp64 CPU reference.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -146,6 +147,7 @@ struct Check {
     int channels = 0;
     Image reference;
     std::vector<double> tolerance;
+    int toleranceChannels = 1;  // tolerance values a pixel: 1, or one per channel (packed slots: each its own)
 };
 
 // Height blending (hexcHeightBlend) reshapes the blend weights W (summing to 1) by the tiles' heights h in [0, 1]:
@@ -200,6 +202,11 @@ inline Draw on(vk::ExecutedTarget target, const CompileOptions& options = {}) {
     };
 }
 
+// What `draw` draws, or with no draw a blank image (zeros) of the view's size.
+inline Image drawn(const Draw& draw, const Material& m, vk::RenderOutput output, const View& view) {
+    return draw ? draw(m, output, view) : Image{view.width, view.height, std::vector<float>(size_t(view.width * view.height) * 4)};
+}
+
 // Each pixel's tolerance, from the reference's details of it.
 using PixelTolerance = std::function<double(const reference::SlotResult&, size_t pixel)>;
 
@@ -208,7 +215,7 @@ using PixelTolerance = std::function<double(const reference::SlotResult&, size_t
 inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, const Draw& draw, int channels,
                                    const PixelTolerance& tolerance) {
     const Slot& slot = m.slots[0];
-    Image gpu = draw ? draw(m, output, view) : Image{view.width, view.height, std::vector<float>(size_t(view.width * view.height) * 4)};
+    Image gpu = drawn(draw, m, output, view);
     const reference::Heights heights(m, slot);
     const reference::SlotTextures textures(slot);
     std::vector<reference::SlotResult> ref = reference::evaluateView(slot, *textures.texture, view, heights.source(), textures.lut.get());
@@ -519,6 +526,194 @@ inline Check checkCase(const nlohmann::json& c, const Material& m, const Draw& d
     if (rule == "derivative") return checkNormal(m, view, level, draw);
     if (rule == "weights") return checkWeights(m, view, draw);
     throw std::runtime_error("unknown rule `" + rule + "` (falloff, histogram, derivative or weights)");
+}
+
+// ---- Feature variants as data ---------------------------------------------------------------------------------
+// The tables of odd_sizes/, packed/ and adaptive/ (cases_test.cpp) check a material built from the case's keys; each
+// check here is what its lavapipe test runs and what hexc-expect (expect.cpp) runs with nothing drawn.
+
+// What a case is held to: its material (the first slot the one checked, or all of them: packed), the view, the check.
+struct CaseCheck {
+    Material material;
+    View view;
+    Check check;
+};
+
+// ---- Odd-sized textures -----------------------------------------------------------------------------------
+// hexc accepts any texture size. The runner builds each mip level by a linear blit of the one above, which at an odd
+// size resamples rather than averages; the reference models it (reference::SampledTexture::halve). Crops of the rock
+// albedo (8-bit, linear, so not seamless: GPU and reference wrap alike) at odd and non-square sizes, seen magnified
+// (0.75 texel per pixel along the larger axis: level 0) and minified (4 texels per pixel: exactly level 2, or the
+// last level when the chain is shorter), with tile rotation off so the footprint stays axis-aligned: lavapipe's
+// log2 of the footprint is exact only at a power of two, which a rotated footprint on a non-square texture is not.
+// A case: "size" [width, height], "minified", "blend" (histogram: its Gaussian texture has the odd size, its table
+// odd levels), "lod" (shared: the level from sqrt(width * height), between two levels here).
+inline std::filesystem::path cropOfRock(int width, int height) {
+    const Texture rock = loadTexture("materials/textures/rock_albedo.png", false);
+    Image out;
+    out.width = width;
+    out.height = height;
+    out.rgba.clear();
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 4; ++c)
+                out.rgba.push_back(rock.rgba8[(size_t(y + 40) * size_t(rock.width) + size_t(x + 40)) * 4 + size_t(c)] / 255.0f);
+    std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("hexc_odd_" + std::to_string(width) + "x" + std::to_string(height) + ".png");
+    writeImage(out, file);
+    return file;
+}
+
+// A slot's JSON text, its texture "CROP_<w>x<h>" replaced by that crop of the rock albedo (cropOfRock).
+inline std::string withCrop(nlohmann::json slot) {
+    int width = 0, height = 0;
+    if (std::sscanf(slot.at("texture").get<std::string>().c_str(), "CROP_%dx%d", &width, &height) == 2)
+        slot["texture"] = cropOfRock(width, height).string();
+    return slot.dump();
+}
+
+// A view of 96 x 96 pixels at (0.3, 0.45) of a texture `larger` texels across under `tiling`: magnified, 0.75 texel
+// per pixel (level 0), or minified, 4 (level 2, or the last level of a shorter chain). Returns it and its level.
+inline std::pair<View, int> cropView(int larger, double tiling, bool minified) {
+    const double uvPerPixel = (minified ? 4.0 : 0.75) / (tiling * larger);
+    const int levels = std::bit_width(unsigned(larger));
+    return {View{96, 96, {0.3, 0.45, 0.3 + 96 * uvPerPixel, 0.45 + 96 * uvPerPixel}}, minified ? std::min(2, levels - 1) : 0};
+}
+
+inline CaseCheck checkOddSize(const ExecCase& oddSize, const Draw& draw) {
+    const nlohmann::json c = readCase(oddSize, {"size", "minified", "blend", "lod"});
+    const int width = c.at("size")[0], height = c.at("size")[1];
+    const Material m =
+        material(withCrop({{"name", "albedo"},
+                           {"kind", "color"},
+                           {"colorspace", "linear"},
+                           {"texture", "CROP_" + std::to_string(width) + "x" + std::to_string(height)},
+                           {"hextiling", {{"tiling", 4}, {"rotation", 0}, {"blend", c.at("blend")}, {"lod", c.at("lod")}}}}));
+    const auto [view, level] = cropView(std::max(width, height), 4.0, c.at("minified"));
+    const double es = sampleError(level, false);
+    return {m, view,
+            c.at("blend") == "histogram" ? checkHistogram(m, view, level, draw)
+                                         : checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, draw, es, es, 4)};
+}
+
+// ---- Packed textures ---------------------------------------------------------------------------------------
+// "pack": true (docs/material-format.md#pack) under tests/templates/packed.glsl, which reads every slot and shows
+// them in one image: `color`'s RGB and `s3` in alpha, or scalars s0..s3 in R..A. The packed texture holds each slot's
+// texels byte for byte, so every slot is held to its unpacked tolerance against its own fp64 reference, which samples
+// the slot's own texture: an sRGB colour slot's sample error for RGB, the linear one for a scalar in the sRGB texture's
+// alpha (alpha stays linear), each slot blended with its own settings from the shared samples.
+// A case: "slots", "hextiling" (the material's), "minified".
+// Each slot's output channels against its reference, each pixel within the slot's tolerance (pixelTolerance): one
+// tolerance a channel.
+inline Check checkPacked(const Material& m, const View& view, int level, const Draw& draw) {
+    const Image gpu = drawn(draw, m, vk::RenderOutput::Shaded, view);
+    Check check;
+    check.output = vk::RenderOutput::Shaded;
+    check.channels = check.toleranceChannels = 4;
+    check.tolerance.assign(gpu.rgba.size(), 0);
+    Image cpu = gpu;
+    for (const Slot& slot : m.slots) {
+        const bool colour = !kindRow(slot.kind).oneChannel;  // normal maps are not packed
+        const size_t first = colour ? 0 : size_t(slot.name[1] - '0'), count = colour ? 3 : 1;
+        const double es = sampleError(level, slot.colorSpace == ColorSpace::Srgb);
+        const std::vector<reference::SlotResult> ref = reference::evaluateView(slot, sampled(slot), view);
+        for (size_t p = 0; p < ref.size(); ++p) {
+            const double t = pixelTolerance(ref[p], es, es, slot.hex, int(count));
+            check.maxTolerance = std::max(check.maxTolerance, t);
+            for (size_t c = 0; c < count; ++c) {
+                const double want = ref[p].value[colour ? c : size_t(slot.channel)];
+                cpu.rgba[p * 4 + first + c] = float(want);
+                check.tolerance[p * 4 + first + c] = t;
+                double e = std::fabs(double(gpu.rgba[p * 4 + first + c]) - want);
+                if (!(e == e)) e = INFINITY;
+                if (e > check.errors.max) check.toleranceAtMax = t;
+                check.errors.max = std::max(check.errors.max, e);
+                check.worstRatio = std::max(check.worstRatio, e / t);
+            }
+        }
+    }
+    check.errors = compare(gpu, cpu, 4);
+    check.reference = std::move(cpu);
+    return check;
+}
+
+inline CaseCheck checkPackedCase(const ExecCase& packed, const Draw& draw) {
+    const nlohmann::json c = readCase(packed, {"slots", "hextiling", "minified"});
+    std::string slots;
+    for (const nlohmann::json& slot : c.at("slots")) slots += (slots.empty() ? "" : ", ") + withCrop(slot);
+    ParseResult r = parseMaterial(R"({"name": "packed", "template": "../tests/templates/packed.glsl", "pack": true, "hextiling": )" +
+                                      c.at("hextiling").dump() + R"(, "slots": [)" + slots + "]}",
+                                  "materials/packed.json");
+    if (!r.material) throw std::runtime_error(formatAll(r.diagnostics));
+    const Material& m = *r.material;
+    const auto [view, level] = cropView(std::max(m.slots[0].width, m.slots[0].height), m.slots[0].hex.tiling[0], c.at("minified"));
+    return {m, view, checkPacked(m, view, level, draw)};
+}
+
+// ---- Adaptive taps ----------------------------------------------------------------------------------------
+// "taps": "adaptive" skips a tap when its bound says the result moves by less than e = HexTiling::kAdaptiveError times
+// the spread of the taps' values (docs/material-format.md#taps). Three checks per case and target:
+// 1. which taps are fetched: the weights output shows a skipped tap's weight as exactly 0, the reference says which it
+//    skips. Both decide from the same bound, the GPU in float32, so they may differ only where a bound is within
+//    rounding of e: at most 1% of the pixels;
+// 2. the value against the adaptive reference: where both fetch the same taps, the same blend of the same samples, so
+//    the full blend's tolerance (pixelTolerance); elsewhere each is within e S of its exact 3-tap result, and those
+//    within the full blend's tolerance of each other: 2 e S plus that of the exact reference;
+// 3. the bound itself, on the GPU: adaptive against exact 3-tap on the same target and view, within e S. S: the spread
+//    of the values blended, 1 for 8-bit colour or scalars; a normal slot's derivative components are at most
+//    sqrt(2) max|d| in magnitude (a filtered sample's |x| / z is at most its texels' largest, then rotated), so
+//    S = 2 sqrt(2) max|d|. The bound is computed in float32 (relative error ~1e-6 on a threshold of 1/255) and the two
+//    blends round independently (a few 2^-24): 1e-6 more.
+// A case: "slots", its one slot (exact 3-tap; the test adds "taps": "adaptive"), "minified".
+struct AdaptiveCase {
+    Material adaptive, exact;  // the case's slot with "taps": "adaptive", and as the case gives it
+    View view;
+    int level;
+};
+
+inline AdaptiveCase adaptiveCase(const ExecCase& adaptive) {
+    const nlohmann::json c = readCase(adaptive, {"slots", "minified"});
+    const auto withTaps = [&](bool adaptiveTaps) {
+        nlohmann::json slot = c.at("slots").at(0);
+        if (adaptiveTaps) slot["hextiling"]["taps"] = "adaptive";
+        return material(withCrop(slot));
+    };
+    const bool minified = c.at("minified");
+    return {withTaps(true), withTaps(false), minified ? kMinified : kMagnified, minified ? 2 : 0};
+}
+
+// S: the spread of the values an adaptive slot blends (above).
+inline double adaptiveSpread(const Slot& slot) {
+    const TextureBounds b = bounds(sampled(slot));
+    return kindRow(slot.kind).derivative ? 2 * std::sqrt(2.0) * b.maxDeriv : b.spread;
+}
+
+// Check 3's bound: e S, plus 1e-6 for the bound's float32 evaluation and the blends' rounding (above).
+inline double adaptiveBound(const Slot& slot) { return HexTiling::kAdaptiveError * adaptiveSpread(slot) + 1e-6; }
+
+// Whether the reference fetches a tap, as the weights output would show it. A fetched tap's weight can lie below
+// float32's normal range (exponent 64 and a gain of k = 19 take a weight of 1e-3 to 1e-52): the GPU holds it as 0, so
+// the reference's counts as 0 there too.
+inline bool fetchedByReference(const reference::SlotResult& r, size_t tap) { return r.weights[tap] >= 0x1p-126; }
+
+// Check 2: the adaptive slot's value against the adaptive reference, each pixel within the full blend's tolerance, or
+// where `differs` (check 1: the GPU fetches other taps than the reference) 2 e S plus the exact reference's.
+inline Check checkAdaptive(const AdaptiveCase& a, const std::vector<bool>& differs, const Draw& draw) {
+    const Slot& slot = a.adaptive.slots[0];
+    const bool normal = kindRow(slot.kind).derivative;
+    const TextureBounds b = bounds(sampled(slot));
+    // As checkColor and checkNormal.
+    const double es = sampleError(a.level, slot.colorSpace == ColorSpace::Srgb),
+                 ed = 2 * sampleError(a.level, false) * (1 + b.maxDeriv) / b.minZ;
+    const double ex = normal ? ed : es, em = normal ? std::sqrt(2.0) * ed : es;
+    const int channels = normal ? 2 : kindRow(slot.kind).oneChannel ? 1 : 4;
+    const int blended = kindRow(slot.kind).oneChannel ? 1 : channels;
+    const std::vector<reference::SlotResult> ref3 = reference::evaluateView(a.exact.slots[0], sampled(slot), a.view);
+    const double otherTaps = 2 * HexTiling::kAdaptiveError * adaptiveSpread(slot) + 1e-6;
+    const vk::RenderOutput output = normal ? vk::RenderOutput::Derivative : vk::RenderOutput::Albedo;
+    return checkAgainstReference(a.adaptive, output, a.view, draw, channels, [&](const reference::SlotResult& r, size_t p) {
+        return differs[p] ? otherTaps + pixelTolerance(ref3[p], ex, em, slot.hex, blended) : pixelTolerance(r, ex, em, slot.hex, blended);
+    });
 }
 
 }  // namespace hexc::exec

@@ -3,7 +3,7 @@
 // error Dawn raised while creating it (Tint's uniformity analysis among them).
 // window.hexcWgsl.render(config): draws a fragment module over a uv rectangle with the textures given (each at its
 // binding, every mip level from hexc-expect's files) and returns its RGBA32F pixels, top row first, base64-encoded.
-// The vertex module is hexc's own pass-through stage (--vertex): position at location 0, uv at 1.
+// The vertex module is hexc's own pass-through stage (--vertex), fed the inputs its manifest lists (triangle).
 
 let device;
 
@@ -39,34 +39,56 @@ async function validate(codes) {
     return verdicts;
 }
 
-// A texture from hexc-expect's files (tests/execution/expect.cpp): every mip level, raw, in its WebGPU format.
-async function texture(d, { format, levels }) {
+// A texture from hexc-expect's files (tests/execution/expect.cpp): every mip level of every layer (one, or a layers
+// role's texture array's), raw, in its WebGPU format.
+async function texture(d, { format, layers }) {
     const bytesPerTexel = format === "rgba32float" ? 16 : 4;
-    const t = d.createTexture({ size: [levels[0].width, levels[0].height], format, mipLevelCount: levels.length,
+    const t = d.createTexture({ size: [layers[0][0].width, layers[0][0].height, layers.length], format, mipLevelCount: layers[0].length,
                                 usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-    for (const [mipLevel, { width, height, url }] of levels.entries()) {
-        const data = await (await fetch(url)).arrayBuffer();
-        if (data.byteLength !== width * height * bytesPerTexel) throw new Error(`${url}: ${data.byteLength} bytes for ${width}x${height}`);
-        d.queue.writeTexture({ texture: t, mipLevel }, data, { bytesPerRow: width * bytesPerTexel }, [width, height]);
+    for (const [layer, levels] of layers.entries()) {
+        for (const [mipLevel, { width, height, url }] of levels.entries()) {
+            const data = await (await fetch(url)).arrayBuffer();
+            if (data.byteLength !== width * height * bytesPerTexel) throw new Error(`${url}: ${data.byteLength} bytes for ${width}x${height}`);
+            d.queue.writeTexture({ texture: t, mipLevel, origin: [0, 0, layer] }, data, { bytesPerRow: width * bytesPerTexel },
+                                 [width, height]);
+        }
     }
     return t;
 }
 
+// What the harness's full-screen draw (templates/harness/fullscreen.vert.glsl) gives each stage input at its vertex t:
+// the position, the uv, the plane's normal and the vertex colour (1 - t.x, t.x, t.y, 1 - t.y).
+const feeds = {
+    gl_Position: ([tx, ty]) => [tx * 2 - 1, ty * 2 - 1, 0, 1],
+    v_uv: ([tx, ty], [u0, v0, u1, v1]) => [u0 + tx * (u1 - u0), v0 + ty * (v1 - v0)],
+    v_normal: () => [0, 0, 1],
+    hexcVertexColor: ([tx, ty]) => [1 - tx, tx, ty, 1 - ty],
+};
+
 // The full-screen triangle of templates/harness/fullscreen.vert.glsl, in Vulkan's clip space (y = -1 the top row, which
-// hexc's vertex stage flips for WebGPU): t = (0,0), (2,0), (0,2); position t * 2 - 1, uv = rect.xy + t (rect.zw - rect.xy).
-function triangle(d, [u0, v0, u1, v1]) {
-    const data = new Float32Array(18);
-    [[0, 0], [2, 0], [0, 2]].forEach(([tx, ty], i) => {
-        data.set([tx * 2 - 1, ty * 2 - 1, 0, 1, u0 + tx * (u1 - u0), v0 + ty * (v1 - v0)], i * 6);
-    });
+// hexc's vertex stage flips for WebGPU): t = (0,0), (2,0), (0,2), each of the manifest's vertex `attributes` fed as there,
+// one interleaved float32 buffer. Returns it and its layout.
+function triangle(d, rect, attributes) {
+    const values = [[0, 0], [2, 0], [0, 2]].map((t) => attributes.map(({ feeds: name }) => {
+        if (!feeds[name]) throw new Error(`the page cannot feed the vertex input ${name}`);
+        return feeds[name](t, rect);
+    }));
+    const data = new Float32Array(values.flat(2));
     const buffer = d.createBuffer({ size: data.byteLength, usage: GPUBufferUsage.VERTEX, mappedAtCreation: true });
     new Float32Array(buffer.getMappedRange()).set(data);
     buffer.unmap();
-    return buffer;
+    let offset = 0;
+    const layout = values[0].map((v, i) => {
+        const attribute = { shaderLocation: attributes[i].location, offset, format: `float32x${v.length}` };
+        offset += v.length * 4;
+        return attribute;
+    });
+    return { buffer, layout: { arrayStride: offset, attributes: layout } };
 }
 
-async function render({ vertex, fragment, vertexEntry, fragmentEntry, textures, sampler, width, height, rect }) {
+async function render({ vertex, fragment, vertexEntry, fragmentEntry, attributes, textures, sampler, width, height, rect }) {
     const d = await gpu();
+    const vertices = triangle(d, rect, attributes);
     const stages = [await compile(vertex), await compile(fragment)];
     const failed = stages.flatMap((s) => s.errors);
     if (failed.length) throw new Error("Tint rejected the shader: " + failed.join("; "));
@@ -74,20 +96,18 @@ async function render({ vertex, fragment, vertexEntry, fragmentEntry, textures, 
     // (the lattice weights at falloffcontrast 0 read none); empty groups below hexc's.
     const visibility = GPUShaderStage.FRAGMENT;
     const group = d.createBindGroupLayout({ entries: [{ binding: sampler.binding, visibility, sampler: { type: "filtering" } },
-        ...textures.map((t) => ({ binding: t.binding, visibility, texture: { sampleType: "float" } }))] });
+        ...textures.map((t) => ({ binding: t.binding, visibility, texture: { sampleType: "float", viewDimension: t.array ? "2d-array" : "2d" } }))] });
     const groups = Array.from({ length: sampler.group + 1 }, (_, g) => (g === sampler.group ? group : d.createBindGroupLayout({ entries: [] })));
     d.pushErrorScope("validation");
     const pipeline = d.createRenderPipeline({
         layout: d.createPipelineLayout({ bindGroupLayouts: groups }),
-        vertex: { module: stages[0].module, entryPoint: vertexEntry,
-                  buffers: [{ arrayStride: 24, attributes: [{ shaderLocation: 0, offset: 0, format: "float32x4" },
-                                                              { shaderLocation: 1, offset: 16, format: "float32x2" }] }] },
+        vertex: { module: stages[0].module, entryPoint: vertexEntry, buffers: [vertices.layout] },
         fragment: { module: stages[1].module, entryPoint: fragmentEntry, targets: [{ format: "rgba32float" }] },
         primitive: { topology: "triangle-list" },
     });
     const entries = [{ binding: sampler.binding, resource: d.createSampler({
         addressModeU: "repeat", addressModeV: "repeat", magFilter: "linear", minFilter: "linear", mipmapFilter: "linear" }) }];
-    for (const t of textures) entries.push({ binding: t.binding, resource: (await texture(d, t)).createView() });
+    for (const t of textures) entries.push({ binding: t.binding, resource: (await texture(d, t)).createView({ dimension: t.array ? "2d-array" : "2d" }) });
     const bindGroup = d.createBindGroup({ layout: group, entries });
     const target = d.createTexture({ size: [width, height], format: "rgba32float",
                                      usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
@@ -97,7 +117,7 @@ async function render({ vertex, fragment, vertexEntry, fragmentEntry, textures, 
                                                                  clearValue: [0, 0, 0, 0] }] });
     pass.setPipeline(pipeline);
     pass.setBindGroup(sampler.group, bindGroup);
-    pass.setVertexBuffer(0, triangle(d, rect));
+    pass.setVertexBuffer(0, vertices.buffer);
     pass.draw(3);
     pass.end();
     encoder.copyTextureToBuffer({ texture: target }, { buffer: readback, bytesPerRow: width * 16 }, [width, height]);

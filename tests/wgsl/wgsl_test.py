@@ -1,7 +1,8 @@
 """hexc's WGSL in headless Chromium's WebGPU (Dawn, with Tint as its compiler, on SwiftShader): Tint accepts every WGSL file
 hexc writes for the examples, the golden feature materials and the execution cases, optimised and --debug, fragment and
-vertex stages, its uniformity analysis included; and Dawn draws every execution case (tests/execution/cases/) and every
-slot of the examples and MaterialX documents, each pixel within the tolerance the lavapipe check derives for it, against
+vertex stages, its uniformity analysis included; and Dawn draws every execution case (tests/execution/cases/), every case
+of the feature variants' tables (VARIANTS) and every slot of the examples and MaterialX documents, each pixel within the
+tolerance the lavapipe check derives for it, against
 the same fp64 reference, from the same texels and mip levels (hexc-expect, tests/execution/expect.cpp, writes them and
 the WGSL drawn).
 
@@ -33,6 +34,22 @@ from web_support import NODE_MODULES, WEBGPU_FLAGS, Handler, browser_or_skip, qu
 HEXC = None
 EXPECT = None  # hexc-expect (tests/execution/expect.cpp)
 CASES = os.path.join("tests", "execution", "cases")
+# The feature variants' tables whose cases hexc-expect checks as their lavapipe tests do (checks.h, "Feature variants
+# as data"): odd texture sizes, packed slots and adaptive taps.
+VARIANTS = tuple(os.path.join("tests", "execution", t) for t in ("odd_sizes", "packed", "adaptive"))
+# The layered materials' cases (tests/execution/layers_test.cpp, layer_checks.h) drawn, as hexc-expect's FILE:CASE:
+# one, two and eight layers (two splat maps), packed layers, the arrays' fallback to separate textures and a normal
+# array, vertex-colour weights alone and times the splat map, the linear blend where three layers overlap, and the height
+# blend at its default width, narrow and wide, with a normal role and under both weights. Left out, to keep the test's
+# time: four_layers_linear and four_layers_separate (the images of eight_layers' and four_layers_sizes' code paths) and
+# two_layers_vertex (four_layers_vertex's path).
+LAYERS = [os.path.join("tests", "execution", "layers", f) for f in (
+    "one.json:one_layer", "two.json:two_layers_linear", "two.json:two_layers_linear_soft", "eight.json:eight_layers",
+    "four_packed.json:four_layers_packed", "four_sizes.json:four_layers_sizes", "four_sizes.json:four_layers_sizes_normal",
+    "four_vertex.json:four_layers_vertex", "two_both.json:two_layers_both", "four_height.json:four_layers_height",
+    "four_height.json:four_layers_height_soft", "four_height_narrow.json:four_layers_height_narrow",
+    "four_height_wide.json:four_layers_height_wide", "four_height.json:four_layers_normal",
+    "four_both_height.json:four_layers_both_height")]
 # The material files whose slots tests/execution/outputs_test.cpp checks one at a time (slotOf, checkSlot): the examples
 # (ExampleSlots, every slot) and the MaterialX documents (MaterialXDocuments).
 EXAMPLES = ("rock", "rock_blend", "rock_normal", "rock_triplanar", "tiles", "tiles_stepped")
@@ -124,11 +141,12 @@ class Wgsl(unittest.TestCase):
         print("Tint accepted all %d" % len(files))
 
     def test_dawn_draws_every_case_within_its_bounds(self):
-        """Every execution case (tests/execution/cases/) and the examples' and MaterialX documents' slots (as
+        """Every execution case (tests/execution/cases/, and the feature variants' tables: VARIANTS, LAYERS) and the
+        examples' and MaterialX documents' slots (as
         outputs_test.cpp checks them), drawn by Dawn, each pixel held to the tolerance its lavapipe check derives for it
         (checks.h), against the same fp64 reference, with the same texels and mip levels: hexc-expect writes them, and
         the WGSL drawn (tests/execution/expect.cpp)."""
-        inputs = sorted(glob.glob(os.path.join(CASES, "*.json"))) + slot_inputs()
+        inputs = [p for folder in (CASES,) + VARIANTS for p in sorted(glob.glob(os.path.join(folder, "*.json")))] + LAYERS + slot_inputs()
         out = os.path.join(self.folder, "draw")
         started = time.monotonic()
         subprocess.run([EXPECT, *inputs, "-o", out], check=True)
@@ -142,44 +160,76 @@ class Wgsl(unittest.TestCase):
                 expect = json.load(f)
             compiles.append((name, expect["compile_ms"]))
             with self.subTest(case=name):
-                errors, tolerances = self.draw(name, expect, out)
-                ratios = [e / t for e, t in zip(errors, tolerances)]
+                errors, ratios, bound = self.draw(name, expect, out)
                 worst = max(range(len(ratios)), key=ratios.__getitem__)
-                unit = 1 if expect["output"] == "derivative" else 255
+                unit = 1 if expect["output"] == "derivative" or expect["channels"] == 2 else 255  # 2: a layered normal role's slopes
                 print("%-36s %-10s %10.3f %10.4f %10.3f %8.3f" % (name, expect["output"], max(errors) * unit, sum(errors) / len(errors) * unit,
-                                                                  tolerances[worst] * unit, ratios[worst]))
+                                                                  bound * unit, ratios[worst]))
                 self.assertLessEqual(ratios[worst], 1.0)
         self.assertEqual(len(glob.glob(os.path.join(out, "*.expect.json"))), len(inputs))
         print("slowest WGSL compile (SPIR-V, naga, vertex stage): %s, %.0f ms" % max(compiles, key=lambda c: c[1]))
 
-    def draw(self, name, expect, out):
-        """Draws the case with Dawn: each pixel's largest error over the case's channels, and its tolerance."""
-        width, height, channels = expect["width"], expect["height"], expect["channels"]
-        with open(os.path.join(out, name + ".manifest.json")) as f:
+    def render(self, stem, expect, out):
+        """Draws the shader hexc-expect wrote as `stem` (stem.manifest.json, its WGSL) over the case's view, with the case's
+        textures: RGBA float pixels, top row first."""
+        width, height = expect["width"], expect["height"]
+        with open(os.path.join(out, stem + ".manifest.json")) as f:
             manifest = json.load(f)
         fragment, vertex = manifest["targets"]["wgsl"], manifest["vertex"]["wgsl"]
-        # The page feeds hexc's vertex stage a position at location 0 and the uv at location 1.
-        self.assertEqual([(a["location"], a["feeds"]) for a in manifest["vertex"]["attributes"]], [(0, "gl_Position"), (1, "v_uv")])
+        # The page feeds hexc's vertex stage the inputs its manifest lists, as the harness's draw does (webgpu.js, triangle).
+        attributes = [{"location": a["location"], "feeds": a["feeds"]} for a in manifest["vertex"]["attributes"]]
         group = fragment["sampler"]["group"]
         self.assertEqual({t["group"] for t in fragment["textures"].values()}, {group})  # one bind group, as the page binds
         textures = []
         for texture, place in fragment["textures"].items():
             given = expect["textures"][texture]
-            levels = [dict(level, url="/out/draw/" + level["file"]) for level in given["levels"]]
-            textures.append({"binding": place["binding"], "format": given["format"], "levels": levels})
+            layers = [expect["textures"][t]["levels"] for t in given["array"]] if "array" in given else [given["levels"]]
+            layers = [[dict(level, url="/out/draw/" + level["file"]) for level in levels] for levels in layers]
+            textures.append({"binding": place["binding"], "format": given["format"], "layers": layers, "array": "array" in given})
         with open(os.path.join(out, fragment["file"])) as f, open(os.path.join(out, vertex["file"])) as g:
             result = self.call("render", {"fragment": f.read(), "vertex": g.read(), "fragmentEntry": fragment["entry_point"],
-                                          "vertexEntry": vertex["entry_point"], "textures": textures, "sampler": fragment["sampler"],
+                                          "vertexEntry": vertex["entry_point"], "attributes": attributes, "textures": textures, "sampler": fragment["sampler"],
                                           "width": width, "height": height, "rect": expect["uv"]})
-        gpu = struct.unpack("<%df" % (width * height * 4), base64.b64decode(result["pixels"]))
+        return struct.unpack("<%df" % (width * height * 4), base64.b64decode(result["pixels"]))
+
+    def draw(self, name, expect, out):
+        """Draws the case with Dawn: each pixel's largest error over the case's channels and its largest error/tolerance
+        (a tolerance a pixel, or one a channel: tolerance_channels), and the tolerance where that ratio is largest."""
+        width, height, channels, per = expect["width"], expect["height"], expect["channels"], expect["tolerance_channels"]
+        gpu = self.render(name, expect, out)
         ref, tolerances = (raw_floats(os.path.join(out, expect[key])) for key in ("reference", "tolerance"))
-        errors = [max(abs(gpu[p * 4 + c] - ref[p * 4 + c]) for c in range(channels)) for p in range(width * height)]
-        errors = [e if e == e else math.inf for e in errors]
+        if "adaptive" in expect:
+            tolerances = self.adaptive(expect, out, gpu, tolerances)
+        # Channel by channel, over whole images (a loop per pixel and channel costs seconds over all cases).
+        tolerance = [tolerances[min(c, per - 1)::per] for c in range(channels)]
+        errors = [[d if d == d else math.inf for d in (abs(g - r) for g, r in zip(gpu[c::4], ref[c::4]))] for c in range(channels)]
+        ratios = [[e / t for e, t in zip(errors[c], tolerance[c])] for c in range(channels)]
+        worst_ratios = list(map(max, *ratios)) if channels > 1 else ratios[0]
+        worst = max(range(width * height), key=worst_ratios.__getitem__)
+        channel = max(range(channels), key=lambda c: ratios[c][worst])
         # Not vacuous: a blank draw would fail at one pixel in twenty or more (normal_minified, whose tolerances are wide
         # against its minified slopes: 9%).
-        blank = sum(max(abs(r) for r in ref[p * 4:p * 4 + channels]) > tolerances[p] for p in range(width * height))
+        blank = sum(map(any, zip(*([abs(r) > t for r, t in zip(ref[c::4], tolerance[c])] for c in range(channels)))))
         self.assertGreater(blank, width * height / 20)
-        return errors, tolerances
+        return list(map(max, *errors)) if channels > 1 else errors[0], worst_ratios, tolerance[channel][worst]
+
+    def adaptive(self, expect, out, gpu, tolerances):
+        """Adaptive taps as cases_test.cpp's AdaptiveTaps checks them, on Dawn: 1. the taps fetched (the weights output's
+        non-zero weights) differ from the reference's at no more than 1% of the pixels, and something is skipped. Returns
+        check 2's tolerances: the other-taps one where Dawn fetches other taps than the reference. Check 3 (adaptive
+        against exact 3-tap on the same GPU) is lavapipe's only: a third shader a case would cost about 10 s here."""
+        a, pixels = expect["adaptive"], expect["width"] * expect["height"]
+        weights = self.render(a["weights"], expect, out)
+        with open(os.path.join(out, a["fetched"]), "rb") as f:
+            fetched = f.read()
+        gpu_fetched = [w > 0 for p in range(pixels) for w in weights[p * 4:p * 4 + 3]]
+        differs = [gpu_fetched[p * 3:p * 3 + 3] != [bool(x) for x in fetched[p * 3:p * 3 + 3]] for p in range(pixels)]
+        print("  fetches per pixel %.3f (reference %.3f), %d pixels fetch other taps" % (
+            sum(gpu_fetched) / pixels, sum(fetched) / pixels, sum(differs)))
+        self.assertLessEqual(sum(differs), pixels // 100)
+        self.assertLess(sum(gpu_fetched) / pixels, 3.0)  # something is skipped
+        other = raw_floats(os.path.join(out, a["other_taps"]))
+        return [o if d else t for d, o, t in zip(differs, other, tolerances)]
 
 
 def raw_floats(path):

@@ -63,10 +63,9 @@ LayerResult evaluateLayers(const Material& material, size_t role, const LayerTex
         r.heights.assign(n, 0.0);
         double top = -2;
         for (size_t i = 0; i < n; ++i) {
-            if (r.weights[i] <= 0) continue;
             const Slot& h = material.slots[layers.layers[i].slots[*layers.heightRole]];
             r.heights[i] = at(layers.layers[i].slots[*layers.heightRole]).value[size_t(h.channel)];
-            top = std::max(top, r.heights[i] + r.weights[i]);
+            if (r.weights[i] > 0) top = std::max(top, r.heights[i] + r.weights[i]);
         }
         r.heightSum = 0;
         for (size_t i = 0; i < n; ++i) {

@@ -26,7 +26,7 @@ struct LayerResult {
     std::vector<double> splat;       // per layer: its weight as filtered, before keeping (splat, vertex colour or product)
     std::vector<double> weights;     // per layer: its final weight (0: not fetched)
     std::vector<SlotResult> layers;  // per layer: its slot of the role, evaluated for every layer (for error bounds)
-    std::vector<double> heights;     // height mode: per kept layer its height
+    std::vector<double> heights;     // height mode: per layer its height (a dropped layer's too, for error bounds)
     double heightSum = 1;            // height mode: the sum of b_i before normalising (for error bounds)
 };
 
