@@ -265,7 +265,9 @@ TEST(TextureFormats, Ktx2ArrayMisusesAreLocatedErrors) {
 
 // A role read from a KTX2 array is bound as that array; where the shader needs a texture per slot, HX128 says why.
 TEST(TextureFormats, Ktx2ArrayRolesBindTheFileOrAreRefused) {
-    const fs::path array = ktx2("bound.ktx2", 43, 4, 4, texels(4, 4 * 3), 1, 3);
+    std::vector<unsigned char> opaque = texels(4, 4 * 3);  // alpha 255: packing may put a scalar there
+    for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
+    const fs::path array = ktx2("bound.ktx2", 43, 4, 4, opaque, 1, 3);
     ParseResult r = layered(arrayLayer(array, 0), arrayLayer(array, 1));
     ASSERT_TRUE(r.material) << formatAll(r.diagnostics);
     CompileResult c = compile(*r.material);
@@ -281,10 +283,31 @@ TEST(TextureFormats, Ktx2ArrayRolesBindTheFileOrAreRefused) {
     EXPECT_NE(c.glsl.find("texture2DArray hexcArr_albedo"), std::string::npos);
     Material off = *r.material;
     off.layers->arrays = false;
-    CompileOptions functions;
+    CompileOptions functions, general;
     functions.functions = true;
-    for (const auto& [m, options, why] : {std::tuple{off, CompileOptions{}, "layer_blend.arrays is \"off\""},
-                                          std::tuple{*r.material, functions, "the functions output (engine packages) binds one texture"}}) {
+    general.specialise = false;
+    // Packed: each layer's albedo shares its texture with the layer's roughness (the same size and lattice).
+    std::ofstream(dir() / "rough.png", std::ios::binary) << pngBytes(Texture{4, 4, false, texels(4, 4), {}});
+    const std::string rough = R"(}, {"name": "roughness", "kind": "scalar", "texture": ")" + (dir() / "rough.png").string() + "\"";
+    ParseResult packed = layered(arrayLayer(array, 0) + rough, arrayLayer(array, 1) + rough);
+    ASSERT_TRUE(packed.material) << formatAll(packed.diagnostics);
+    packed.material->pack = true;
+    packed.material->templ = TemplateRef::builtin("lit");
+    // Tiles blended by height: the albedo's layer i reads the height role's layer i alike, and that role's files differ
+    // in size, so they stay separate textures.
+    std::ofstream(dir() / "small.png", std::ios::binary) << pngBytes(Texture{2, 2, false, texels(2, 2), {}});
+    auto heights = [&](const char* file) {
+        return R"(, "height_blend": {"slot": "height"}}, {"name": "height", "kind": "scalar", "texture": ")" + (dir() / file).string() +
+               "\"";
+    };
+    ParseResult blended = layered(arrayLayer(array, 0) + heights("rough.png"), arrayLayer(array, 1) + heights("small.png"));
+    ASSERT_TRUE(blended.material) << formatAll(blended.diagnostics);
+    for (const auto& [m, options, why] :
+         {std::tuple{off, CompileOptions{}, "layer_blend.arrays is \"off\""},
+          std::tuple{*r.material, functions, "the functions output (engine packages) binds one texture"},
+          std::tuple{*r.material, general, "--no-specialise: the library's general functions read 2D"},
+          std::tuple{*packed.material, CompileOptions{}, "slot `grass_albedo` reads a packed texture"},
+          std::tuple{*blended.material, CompileOptions{}, "slot `grass_albedo` height-blends its tiles by"}}) {
         const std::string d = formatAll(compile(m, options).diagnostics);
         EXPECT_NE(d.find("materials/t.json:2:64: error[HX128]: /layers/0/slots/0/texture: role `albedo` reads the KTX2 array " +
                          array.string() + ", bound as one array texture, and this shader needs a texture per slot: " + why),
