@@ -150,7 +150,7 @@ private:
                 report(Code::TextureArray, p + "/texture",
                        "role `" + name + "` reads the KTX2 array " + shown + "; every layer's `" + name +
                            "` names that array at its own layer, not another file",
-                       "or give every layer's `" + name + "` a file of its own");
+                       "for separate files, give every layer's `" + name + "` a 2D texture of its own");
                 whole = false;
             } else if (s.textureLayer != int(i) && s.textureLayer < s.file->info.layers) {  // out of range: reported
                 report(Code::TextureArray, p + "/layer",
