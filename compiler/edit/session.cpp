@@ -71,6 +71,7 @@ CompileOptions pageOptions() {
     o.glslVersion = 300;
     o.specialise = false;
     o.shareLattice = false;
+    o.slotTexturesDecoded = true;  // the page uploads each slot's texture, a KTX2 array's layer decoded (texels())
     o.concurrentTargets = false;
     return o;
 }

@@ -314,6 +314,11 @@ TEST(TextureFormats, Ktx2ArrayRolesBindTheFileOrAreRefused) {
                   std::string::npos)
             << d;
     }
+    // hexc edit's page compiles unspecialised and uploads each slot's texture, a layer it decodes: a texture per slot.
+    general.slotTexturesDecoded = true;
+    const CompileResult page = compile(*r.material, general);
+    EXPECT_TRUE(page.ok()) << formatAll(page.diagnostics);
+    EXPECT_EQ(page.glsl.find("texture2DArray"), std::string::npos);
 }
 
 // A two-channel BC5 map has r and g: a scalar slot may read g, not b.

@@ -112,7 +112,7 @@ void planLayerArrays(const Material& material, ShaderPlan& plan) {
     }
     matchHeightMaps(plan, arrays);
     for (const LayerArrayPlan& a : arrays)
-        if (!a.ktx2.empty() && !a.refused.empty()) unsplittable(material, plan, a);
+        if (!a.ktx2.empty() && !a.refused.empty() && !plan.slotTexturesDecoded) unsplittable(material, plan, a);
     for (const LayerArrayPlan& a : arrays) {
         if (!a.refused.empty()) continue;
         for (size_t layer = 0; layer < a.slots.size(); ++layer) {

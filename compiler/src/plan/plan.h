@@ -171,6 +171,7 @@ struct ShaderPlan {
     // --no-specialise (CompileOptions::specialise false): the slots call the library's general functions with every
     // setting in their HexcLattice and HexcBlend, rather than functions with the settings folded in (codegen).
     bool general = false;
+    bool slotTexturesDecoded = false;  // CompileOptions::slotTexturesDecoded: a KTX2 array role may take a texture per slot
     bool uvBottomLeft = false;         // CompileOptions::uvOrigin: the slots' functions take OpenGL's uv (v up)
     bool functions = false;            // CompileOptions::functions: the `functions` template, every slot read
     std::optional<LayersPlan> layers;  // a layered material's, when the template reads a role
