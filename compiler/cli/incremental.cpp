@@ -60,7 +60,9 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     });
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& s = material.slots[i];
-        h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height));
+        // A KTX2 array's layer count is the manifest's array size.
+        h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height) + "x" +
+              std::to_string(s.file ? s.file->info.layers : 0));
         if (texelsRead(material, i, copied)) h.add(s.file ? s.file->bytes : "");  // as the parser read them
     }
     addFile(h, material.sourceFile);

@@ -257,7 +257,7 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
     }
     const Slot& s = vk::slotForOutput(material, r.output, r.slot);
     checkTexelBudget(material, reference::kReferenceBudget, &s);
-    reference::SampledTexture texture(loadTexture(s.texturePath, s.samplerDecodes()));
+    reference::SampledTexture texture(loadTexture(s.texturePath, s.samplerDecodes(), s.textureLayer));
     const reference::Heights heights(material, s);
     Image image =
         reference::render(s, texture, r.view, r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,

@@ -71,6 +71,7 @@ CompileOptions pageOptions() {
     o.glslVersion = 300;
     o.specialise = false;
     o.shareLattice = false;
+    o.slotTexturesDecoded = true;  // the page uploads each slot's texture, a KTX2 array's layer decoded (texels())
     o.concurrentTargets = false;
     return o;
 }
@@ -310,7 +311,7 @@ std::optional<Texture> Session::loadSlotTexture(const std::string& name, std::st
         return std::nullopt;
     }
     // Raw texels: the page uploads a colour slot's into an sRGB format, which decodes them as it samples.
-    if (derived.empty()) return loadTexture(it->texturePath, false);
+    if (derived.empty()) return loadTexture(it->texturePath, false, it->textureLayer);
     // The histogram blend's Gaussian texture and look-up table, as hexc writes them beside the shader.
     HistogramTransform h = histogramTransform(loadTexture(it->texturePath, it->colorSpace == ColorSpace::Srgb), *it);
     return derived == "lut" ? std::move(h.lut) : std::move(h.gaussian);

@@ -273,6 +273,18 @@ std::string pngClaiming(uint32_t side) {
     return png;
 }
 
+// A KTX2 header of RGBA8 texels, one level at byte 104: a 2D texture, or an array of `layers` layers.
+std::string ktx2Header(uint32_t width, uint32_t height, uint32_t layers = 0) {
+    std::string ktx(104, '\0');
+    ktx.replace(0, 12,
+                "\xAB"
+                "KTX 20\xBB\r\n\x1A\n",
+                12);
+    auto put = [&](size_t at, uint32_t v) { std::memcpy(&ktx[at], &v, 4); };
+    put(12, 37), put(16, 1), put(20, width), put(24, height), put(32, layers), put(40, 1), put(80, 104);
+    return ktx;
+}
+
 // A one-slot material on `texture` with `hextiling` as the slot's settings.
 std::string materialOn(const fs::path& texture, const std::string& hextiling = "{}") {
     return R"({"name": "m", "slots": [{"name": "albedo", "kind": "color", "hextiling": )" + hextiling + R"(, "texture": ")" +
@@ -295,14 +307,7 @@ TEST_F(Hostile, RenderAndPreviewRefuseATextureOverTheirBudgetBeforeLoadingIt) {
     // A sparse KTX2 of 65536 x 65536 RGBA8 (16 GiB of level 0, all in the file's length) and a PNG header of 16384 x
     // 16384: both valid containers, both over render's 8192 x 8192. Exit 1 with the file named, not 3, and no Vulkan
     // needed; the KTX2 is over the input limit too, which a compile checks first (each texture file is read once, whole).
-    std::string ktx(104, '\0');
-    ktx.replace(0, 12,
-                "\xAB"
-                "KTX 20\xBB\r\n\x1A\n",
-                12);
-    auto put = [&](size_t at, uint32_t v) { std::memcpy(&ktx[at], &v, 4); };
-    put(12, 37), put(16, 1), put(20, 65536), put(24, 65536), put(40, 1), put(80, 104);  // RGBA8, size, 1 level, data at 104
-    fs::path ktx2 = write("sparse.ktx2", ktx);
+    fs::path ktx2 = write("sparse.ktx2", ktx2Header(65536, 65536));
     fs::resize_file(ktx2, 104 + (uint64_t(65536) * 65536 * 4));
     for (const fs::path& tex : {ktx2, write("huge.png", pngClaiming(16384))}) {
         fs::path m = write("m.json", materialOn(tex));
@@ -321,6 +326,21 @@ TEST_F(Hostile, RenderAndPreviewRefuseATextureOverTheirBudgetBeforeLoadingIt) {
         }
     }
     expectNothingWritten();
+}
+
+TEST_F(Hostile, AKtx2ArrayClaimingLayersItDoesNotHoldIsRefusedFromItsHeader) {
+    // One 4 x 4 layer in the file; the header claims 2^32 - 1 layers (past any device), or 2048 (level 0 then needs
+    // 128 KiB): refused before a layer is read, located at the slot, nothing written.
+    for (const auto& [layers, why] : {std::pair{0xFFFFFFFFu, "a KTX2 array of 4294967295 layers (hexc reads up to 2048)"},
+                                      std::pair{2048u, "the file is truncated (level 0 does not fit)"}}) {
+        fs::path m = write("m.json", materialOn(write("layers.ktx2", ktx2Header(4, 4, layers) + std::string(64, '\x80'))));
+        Outcome o = runBounded(m.string() + out());
+        EXPECT_EQ(o.exit, 1) << o.err;
+        EXPECT_NE(o.err.find("m.json:1:"), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find("error[HX121]: /slots/0/texture: cannot read texture"), std::string::npos) << o.err;
+        EXPECT_NE(o.err.find(why), std::string::npos) << o.err;
+        expectNothingWritten();
+    }
 }
 
 TEST_F(Hostile, PreviewRefusesItsHistogramColumnOverThatBudget) {

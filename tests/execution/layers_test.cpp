@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "hexc/compiler.h"
@@ -180,6 +181,85 @@ TEST(LayerHeightWidth, TheWeightsReachZeroAndOneAtTheWidthsEdges) {
         // The edges, from the definition: x = (1 + h0 - h1 -+ width) / 2, at pixels x * 255.
         EXPECT_EQ(zeros, int(std::floor((1 + h0 - h1 - width) / 2 * 255 + 1e-9)) + 1) << width;
         EXPECT_EQ(ones, std::max(1, 255 - int(std::ceil((1 + h0 - h1 + width) / 2 * 255 - 1e-9)) + 1)) << width;
+    }
+}
+
+// A KTX2 array: the 80-byte header and index, one level whose data is the layers' texels one after another (KTX2's
+// level 0 of an array), a vkFormat of R8G8B8A8 UNORM (37) or sRGB (43). The fields a reader needs, no more.
+void writeKtx2Array(const std::filesystem::path& file, const std::vector<Texture>& layers, bool srgb) {
+    std::string b(104, '\0');
+    auto put = [&](size_t at, uint64_t v, int bytes) {
+        for (int i = 0; i < bytes; ++i) b[at + size_t(i)] = char(v >> (8 * i));
+    };
+    const char magic[12] = {'\xAB', 'K', 'T', 'X', ' ', '2', '0', '\xBB', '\r', '\n', '\x1A', '\n'};
+    b.replace(0, 12, magic, 12);
+    put(12, srgb ? 43 : 37, 4);
+    put(16, 1, 4);  // typeSize
+    put(20, uint64_t(layers[0].width), 4);
+    put(24, uint64_t(layers[0].height), 4);
+    put(32, layers.size(), 4);  // layerCount
+    put(36, 1, 4);              // faceCount
+    put(40, 1, 4);              // levelCount
+    put(80, 104, 8);            // level 0's byte offset and length
+    put(88, layers.size() * layers[0].rgba8.size(), 8);
+    for (const Texture& t : layers) b.append(t.rgba8.begin(), t.rgba8.end());
+    std::ofstream(file, std::ios::binary) << b;
+}
+
+// A layered material whose roles come from KTX2 arrays (`"layer": i`) holding the texels of its separate files renders
+// the image of the separate form (whose roles are arrays hexc assembles), bit for bit: the same texels uploaded in the
+// same format to the same array layers, read by the same code; and within the reference's bound, which reads each
+// slot's layer of the file.
+TEST(LayerArraysOnTheGpu, AKtx2ArrayGivesTheImageOfTheSeparateFiles) {
+    std::string why;
+    vk::Runner* runner = test::runner(&why);
+    if (!runner) {
+        if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << why;
+        GTEST_SKIP() << why;
+    }
+    const std::filesystem::path source = "tests/execution/layers/four_height.json";
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hexc_ktx2_layers_" + test::testLogName());
+    std::filesystem::create_directories(dir);
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(source));
+    std::map<std::string, std::vector<Texture>> roles;  // per role, its layers' texels in layer order
+    for (size_t l = 0; l < doc["layers"].size(); ++l)
+        for (nlohmann::json& slot : doc["layers"][l]["slots"]) {
+            const std::string role = slot["name"];
+            roles[role].push_back(loadTexture(source.parent_path() / slot["texture"].get<std::string>(), false));
+            slot["texture"] = role + ".ktx2";
+            slot["layer"] = l;
+        }
+    for (const auto& [role, layers] : roles) writeKtx2Array(dir / (role + ".ktx2"), layers, role == "albedo");
+    doc["layer_blend"]["splat"][0] =
+        std::filesystem::absolute(source.parent_path() / doc["layer_blend"]["splat"][0].get<std::string>()).string();
+    std::ofstream(dir / "four_height.json") << doc.dump();
+    ParseResult separate = parseMaterialFile(source), ktx2 = parseMaterialFile(dir / "four_height.json");
+    ASSERT_TRUE(separate.material) << formatAll(separate.diagnostics);
+    ASSERT_TRUE(ktx2.material) << formatAll(ktx2.diagnostics);
+    for (const char* role : {"albedo", "normal"}) {
+        const Material a = vk::layerRoleFirst(*ktx2.material, *vk::layerRole(*ktx2.material, role));
+        const Material b = vk::layerRoleFirst(*separate.material, *vk::layerRole(*separate.material, role));
+        const nlohmann::json arrays = arraysOf(a);
+        ASSERT_EQ(arrays[0]["file"], std::string(role) + ".ktx2") << arrays[0];
+        EXPECT_EQ(compile(a).glsl, compile(b).glsl) << role << ": the same code as the assembled arrays'";
+        const Image gpu = vk::render(*runner, a, vk::RenderOutput::Shaded, "", kSoft, vk::ExecutedTarget::Spirv);
+        const Image assembled = vk::render(*runner, b, vk::RenderOutput::Shaded, "", kSoft, vk::ExecutedTarget::Spirv);
+        EXPECT_EQ(gpu.rgba, assembled.rgba) << role;
+        // The bound of the case four_layers_height_soft (the same material and view): every texture read at level 0, where
+        // e_s = (1.2 + 0 * m) / 255 in either colour space, for the layers (e_x, e_h) and the splat map (e_w).
+        const std::vector<reference::LayerResult> ref = reference::evaluateLayersView(a, 0, reference::LayerTextures(a), kSoft);
+        const double es = 1.2 / 255;
+        const int channels = std::string(role) == "normal" ? 2 : 4;
+        double worst = 0, largest = 0;
+        for (size_t p = 0; p < ref.size(); ++p)
+            for (int ch = 0; ch < channels; ++ch) {
+                const double e = std::fabs(double(gpu.rgba[p * 4 + size_t(ch)]) - ref[p].value[size_t(ch)]);
+                largest = std::max(largest, e == e ? e : INFINITY);
+                worst = std::max(worst, e == e ? e / tolerance(ref[p], *a.layers, es, es, weightError(*a.layers, es)) : INFINITY);
+            }
+        std::printf("  %s: the KTX2 arrays' image is the separate files'; largest error %.2e, worst error/tolerance %.3f\n", role, largest,
+                    worst);
+        EXPECT_LE(worst, 1.0) << role;
     }
 }
 

@@ -4,6 +4,7 @@
 // parsers, fuzzed upstream; hexc's own checks of their headers are plain arithmetic (tests/hostile_test.cpp).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -28,7 +29,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     // texels in few bytes) is the texel budgets' to refuse (hexc/budgets.h, tests/hostile_test.cpp), not the decoder's.
     if (std::optional<hexc::TextureInfo> info = hexc::textureInfo(file, &why); info && int64_t(info->width) * info->height <= (1 << 20)) {
         try {
-            hexc::loadTexture(file, false);  // the header is checked (KTX2, DDS: level 0 fits in the file)
+            // The header is checked (KTX2, DDS: level 0, every layer of a KTX2 array, fits in the file): the last layer.
+            hexc::loadTexture(file, false, std::max(0, info->layers - 1));
         } catch (const hexc::TextureError&) {
         }
     }

@@ -23,6 +23,12 @@ for target in "${targets[@]}"; do
     for m in materials/*.json; do { cat "$m"; printf '\000'; cat "$m"; } > "$seeds/$(basename "$m")"; done  # a file, NUL, its edit
   elif [ "$target" = texture ]; then
     printf '\000' > "$seeds/ktx2" && printf '\001' > "$seeds/dds"  # the container's magic is added by the target
+    # A KTX2 array of two 2x2 RGBA8 layers: the header after the magic (vkFormat 37, typeSize 1, 2x2, depth 0, 2 layers,
+    # 1 face, 1 level, no supercompression), 32 bytes of unused offsets, level 0 at byte 104, 32 bytes long; its texels.
+    { printf '\000\045\0\0\0\001\0\0\0\002\0\0\0\002\0\0\0\0\0\0\0\002\0\0\0\001\0\0\0\001\0\0\0\0\0\0\0'
+      head -c 32 /dev/zero
+      printf '\150\0\0\0\0\0\0\0\040\0\0\0\0\0\0\0\040\0\0\0\0\0\0\0'
+      printf '%032d' 0; } > "$seeds/ktx2_array"
     printf '\002' > "$seeds/exr"
   else
     cp materials/*.json materials/invalid/*.json materials/scenes/*.json "$seeds"/

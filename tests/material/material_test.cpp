@@ -170,7 +170,7 @@ TEST(Validation, AllProblemsInAFileAreReported) {
                   "materials/t.json:1:40: error[HX106]: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 2",
                   "materials/t.json:1:55: error[HX106]: /hextiling/exponent: expected a number in [1, 64], got 0",
                   "materials/t.json:2:84: error[HX103]: /slots/0/chanel: unknown key `chanel`; expected `name`, `texture`, `kind`, "
-                  "`channel`, `colorspace`, `flip_y`, `role`, `hextiling` or `height_blend` (did you mean `channel`?)",
+                  "`channel`, `colorspace`, `flip_y`, `role`, `hextiling`, `height_blend` or `layer` (did you mean `channel`?)",
                   "materials/t.json:2:22: error[HX108]: /slots/0/name: expected a lower-case identifier of 1-32 characters "
                   "([a-z][a-z0-9_]*, no `__`, not starting with `gl_`), got \"A\" (it becomes the GLSL function hexc_<name>)",
                   "materials/t.json:2:35: error[HX107]: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got "

@@ -5,12 +5,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "hexc/compiler.h"
 #include "hexc/image.h"
 #include "hexc/material.h"
 #include "support.h"
@@ -43,8 +46,10 @@ fs::path save(const std::string& name, const std::vector<unsigned char>& bytes) 
     return dir() / name;
 }
 
-// KTX2 with one level: the 80-byte header and index, one level entry, then level 0 (a reader needs no more).
-fs::path ktx2(const std::string& name, uint32_t vkFormat, int w, int h, const std::vector<unsigned char>& data, uint32_t levels = 1) {
+// KTX2 with one level: the 80-byte header and index, one level entry, then level 0 (a reader needs no more); an array
+// of `layers` layers (level 0 holds them one after another) when layers > 0, a cube with `faces` 6.
+fs::path ktx2(const std::string& name, uint32_t vkFormat, int w, int h, const std::vector<unsigned char>& data, uint32_t levels = 1,
+              uint32_t layers = 0, uint32_t faces = 1) {
     std::vector<unsigned char> b(112, 0);
     const unsigned char magic[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
     std::memcpy(b.data(), magic, 12);
@@ -52,7 +57,8 @@ fs::path ktx2(const std::string& name, uint32_t vkFormat, int w, int h, const st
     put32(b, 16, 1);
     put32(b, 20, uint32_t(w));
     put32(b, 24, uint32_t(h));
-    put32(b, 36, 1);  // faces
+    put32(b, 32, layers);
+    put32(b, 36, faces);
     put32(b, 40, levels);
     put32(b, 80, 112);                    // level 0 byte offset
     put32(b, 88, uint32_t(data.size()));  // and length
@@ -170,6 +176,149 @@ TEST(TextureFormats, UnreadableContainersAreLocatedErrors) {
             << r.diagnostics[0].format();
         EXPECT_NE(r.diagnostics[0].format().find(why), std::string::npos) << r.diagnostics[0].format();
     }
+}
+
+// A KTX2 array's header gives its layer count; each layer decodes on its own; a truncated array and a cube are errors.
+TEST(TextureFormats, Ktx2ArrayLayersDecodeOneByOne) {
+    const std::vector<unsigned char> rgba = texels(5, 3 * 3);  // three 5x3 layers, each with texels of its own
+    const fs::path file = ktx2("array.ktx2", 37, 5, 3, rgba, 1, 3);
+    std::string why;
+    std::optional<TextureInfo> info = textureInfo(file, &why);
+    ASSERT_TRUE(info) << why;
+    EXPECT_EQ(info->layers, 3);
+    EXPECT_EQ(info->width, 5);
+    EXPECT_EQ(info->height, 3);
+    for (int layer = 0; layer < 3; ++layer) {
+        const std::vector<unsigned char> own(rgba.begin() + layer * 60, rgba.begin() + (layer + 1) * 60);
+        EXPECT_EQ(loadTexture(file, false, layer).rgba8, own) << layer;
+    }
+    EXPECT_THROW(loadTexture(file, false, 3), TextureError);
+    const std::vector<float> floats = {0.25f, 0.5f, 1.5f, 1, -2, 3, 4, 1};  // two 1x1 RGBA32F layers
+    std::vector<unsigned char> bytes(floats.size() * 4);
+    std::memcpy(bytes.data(), floats.data(), bytes.size());
+    EXPECT_EQ(loadTexture(ktx2("array_f.ktx2", 109, 1, 1, bytes, 1, 2), false, 1).rgba32f,
+              std::vector<float>(floats.begin() + 4, floats.end()));
+    EXPECT_EQ(textureInfo(ktx2("plain.ktx2", 37, 5, 3, texels(5, 3)), &why)->layers, 0);  // a 2D texture
+    EXPECT_THROW(loadTexture(ktx2("plain.ktx2", 37, 5, 3, texels(5, 3)), false, 1), TextureError);
+    for (const auto& [bad, problem] :
+         {std::pair{ktx2("short_array.ktx2", 37, 5, 3, texels(5, 3 * 2), 1, 3), "the file is truncated (level 0 does not fit)"},
+          std::pair{ktx2("cube.ktx2", 37, 4, 4, texels(4, 4 * 6), 1, 0, 6), "a KTX2 cube or 3D texture is not a 2D texture or 2D array"}}) {
+        EXPECT_FALSE(textureInfo(bad, &why)) << bad;
+        EXPECT_EQ(why, problem);
+    }
+}
+
+// A two-layer material whose albedo slots are `first` and `second` (a slot's keys after its kind), over terrain's splat map.
+ParseResult layered(const std::string& first, const std::string& second, const std::string& blend = "") {
+    return parseMaterial(R"({"name": "m", "template": "unlit", "layers": [
+        {"name": "grass", "slots": [{"name": "albedo", "kind": "color", )" +
+                             first + R"(}]},
+        {"name": "rock", "slots": [{"name": "albedo", "kind": "color", )" +
+                             second + R"(}]}],
+        "layer_blend": {"splat": ["textures/terrain_splat.png"])" +
+                             blend + "}}",
+                         "materials/t.json");
+}
+
+std::string arrayLayer(const fs::path& file, int layer) {
+    return R"("texture": ")" + file.string() + R"(", "layer": )" + std::to_string(layer);
+}
+
+// Each misuse of a KTX2 array is HX128 at the key that is wrong, saying what is expected.
+TEST(TextureFormats, Ktx2ArrayMisusesAreLocatedErrors) {
+    const fs::path array = ktx2("misused.ktx2", 43, 4, 4, texels(4, 4 * 3), 1, 3), plain = ktx2("plain4.ktx2", 43, 4, 4, texels(4, 4));
+    const std::string a = array.string(), p = plain.string();
+    EXPECT_TRUE(layered(arrayLayer(array, 0), arrayLayer(array, 1)).material)
+        << formatAll(layered(arrayLayer(array, 0), arrayLayer(array, 1)).diagnostics);
+    auto own = [&](const std::string& keys) {
+        return formatAll(
+            parseMaterial(R"({"name": "m", "slots": [{"name": "a", "kind": "color", )" + keys + "}]}", "materials/t.json").diagnostics);
+    };
+    const std::pair<std::string, std::string> cases[] = {
+        {own(arrayLayer(array, 0)), "error[HX128]: /slots/0/layer: a KTX2 array texture is read by a layered material's layers"},
+        {own(R"("texture": ")" + a + "\""),
+         "error[HX128]: /slots/0/texture: " + a + " is a KTX2 array of 3 layers; expected a 2D texture, or"},
+        {formatAll(layered(arrayLayer(plain, 0), arrayLayer(array, 1)).diagnostics),
+         "error[HX128]: /layers/0/slots/0/layer: `layer` names a layer of a KTX2 array texture; " + p + " is a 2D texture"},
+        {formatAll(layered(arrayLayer(array, 0), arrayLayer(array, 3)).diagnostics),
+         "error[HX128]: /layers/1/slots/0/layer: layer 3 of " + a + ", which has 3 layers; expected 0 to 2\n"},
+        {formatAll(layered(arrayLayer(array, 0), R"("texture": "textures/terrain_splat.png")").diagnostics),
+         "error[HX128]: /layers/1/slots/0/texture: role `albedo` reads the KTX2 array " + a +
+             "; every layer's `albedo` names that array at its own layer, not another file"},
+        {formatAll(layered(arrayLayer(array, 1), arrayLayer(array, 0)).diagnostics),
+         "error[HX128]: /layers/1/slots/0/layer: layer `rock` is layer 1 of the layers, and its `albedo` reads layer 0 of " + a +
+             "; expected `\"layer\": 1` (the array's layers in the layers' order)"},
+        {formatAll(parseMaterial(R"({"name": "m", "layers": [{"name": "g", "slots": [{"name": "a", "kind": "color", "texture": ")" + p +
+                                     R"("}]}], "layer_blend": {"splat": [")" + a + R"("]}})",
+                                 "materials/t.json")
+                       .diagnostics),
+         "error[HX128]: /layer_blend/splat/0: splat map " + a + " is a KTX2 array; expected a 2D texture"},
+        {own(R"("texture": ")" + a + R"(", "layr": 0)"), "error[HX103]: /slots/0/layr: unknown key"},
+    };
+    for (const auto& [diagnostics, expected] : cases) EXPECT_NE(diagnostics.find(expected), std::string::npos) << diagnostics;
+    EXPECT_NE(own(R"("texture": ")" + a + R"(", "layr": 0)").find("did you mean `layer`?"), std::string::npos);
+    // Out of order, both layers are wrong: each is reported, once.
+    const std::string swapped = formatAll(layered(arrayLayer(array, 1), arrayLayer(array, 0)).diagnostics);
+    EXPECT_NE(swapped.find("/layers/0/slots/0/layer: layer `grass` is layer 0 of the layers"), std::string::npos) << swapped;
+    EXPECT_EQ(std::count(swapped.begin(), swapped.end(), '\n'), 2) << swapped;
+}
+
+// A role read from a KTX2 array is bound as that array; where the shader needs a texture per slot, HX128 says why.
+TEST(TextureFormats, Ktx2ArrayRolesBindTheFileOrAreRefused) {
+    std::vector<unsigned char> opaque = texels(4, 4 * 3);  // alpha 255: packing may put a scalar there
+    for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
+    const fs::path array = ktx2("bound.ktx2", 43, 4, 4, opaque, 1, 3);
+    ParseResult r = layered(arrayLayer(array, 0), arrayLayer(array, 1));
+    ASSERT_TRUE(r.material) << formatAll(r.diagnostics);
+    CompileResult c = compile(*r.material);
+    ASSERT_TRUE(c.ok()) << formatAll(c.diagnostics);
+    nlohmann::json manifest;
+    for (const OutputFile& f : c.files)
+        if (f.name.ends_with(".manifest.json")) manifest = nlohmann::json::parse(f.contents);
+    const nlohmann::json& albedo = manifest["layers"]["arrays"][0];
+    EXPECT_EQ(albedo["array"], true);
+    EXPECT_EQ(albedo["file"], array.string());
+    EXPECT_EQ(albedo["size"], nlohmann::json::array({4, 4, 3}));  // the file's layers, all bound
+    EXPECT_EQ(albedo["colorspace"], "srgb");
+    EXPECT_NE(c.glsl.find("texture2DArray hexcArr_albedo"), std::string::npos);
+    Material off = *r.material;
+    off.layers->arrays = false;
+    CompileOptions functions, general;
+    functions.functions = true;
+    general.specialise = false;
+    // Packed: each layer's albedo shares its texture with the layer's roughness (the same size and lattice).
+    std::ofstream(dir() / "rough.png", std::ios::binary) << pngBytes(Texture{4, 4, false, texels(4, 4), {}});
+    const std::string rough = R"(}, {"name": "roughness", "kind": "scalar", "texture": ")" + (dir() / "rough.png").string() + "\"";
+    ParseResult packed = layered(arrayLayer(array, 0) + rough, arrayLayer(array, 1) + rough);
+    ASSERT_TRUE(packed.material) << formatAll(packed.diagnostics);
+    packed.material->pack = true;
+    packed.material->templ = TemplateRef::builtin("lit");
+    // Tiles blended by height: the albedo's layer i reads the height role's layer i alike, and that role's files differ
+    // in size, so they stay separate textures.
+    std::ofstream(dir() / "small.png", std::ios::binary) << pngBytes(Texture{2, 2, false, texels(2, 2), {}});
+    auto heights = [&](const char* file) {
+        return R"(, "height_blend": {"slot": "height"}}, {"name": "height", "kind": "scalar", "texture": ")" + (dir() / file).string() +
+               "\"";
+    };
+    ParseResult blended = layered(arrayLayer(array, 0) + heights("rough.png"), arrayLayer(array, 1) + heights("small.png"));
+    ASSERT_TRUE(blended.material) << formatAll(blended.diagnostics);
+    for (const auto& [m, options, why] :
+         {std::tuple{off, CompileOptions{}, "layer_blend.arrays is \"off\""},
+          std::tuple{*r.material, functions, "the functions output (engine packages) binds one texture"},
+          std::tuple{*r.material, general, "--no-specialise: the library's general functions read 2D"},
+          std::tuple{*packed.material, CompileOptions{}, "slot `grass_albedo` reads a packed texture"},
+          std::tuple{*blended.material, CompileOptions{}, "slot `grass_albedo` height-blends its tiles by"}}) {
+        const std::string d = formatAll(compile(m, options).diagnostics);
+        EXPECT_NE(d.find("materials/t.json:2:64: error[HX128]: /layers/0/slots/0/texture: role `albedo` reads the KTX2 array " +
+                         array.string() + ", bound as one array texture, and this shader needs a texture per slot: " + why),
+                  std::string::npos)
+            << d;
+    }
+    // hexc edit's page compiles unspecialised and uploads each slot's texture, a layer it decodes: a texture per slot.
+    general.slotTexturesDecoded = true;
+    const CompileResult page = compile(*r.material, general);
+    EXPECT_TRUE(page.ok()) << formatAll(page.diagnostics);
+    EXPECT_EQ(page.glsl.find("texture2DArray"), std::string::npos);
 }
 
 // A two-channel BC5 map has r and g: a scalar slot may read g, not b.

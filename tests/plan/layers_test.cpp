@@ -133,6 +133,28 @@ TEST(Layers, TheWorstFetchesAreTheShadersFetches) {
     }
 }
 
+// Packing does not merge a layered material's fetches: each role reads its own slot of a packed texture in its own
+// function (hexc_albedo the albedo's rgb, hexc_height the height's a), so the packed texture is fetched once per read,
+// which is once per slot it serves, as the figures count it. A packed texture fetched once for its two slots would
+// put the shader's fetches below the worst case.
+TEST(Layers, APackedTextureIsCountedOncePerRead) {
+    ParseResult parsed = parseMaterialFile("tests/execution/layers/four_packed.json");
+    ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
+    Material m = *parsed.material;
+    m.templ = TemplateRef::parse("tests/templates/layers_packed.glsl");
+    CompileOptions options;
+    options.targets = {Target::Spirv};
+    const CompileResult r = compile(m, options);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    const nlohmann::json manifest = manifestOf(r);
+    ASSERT_EQ(manifest["packed_textures"].size(), 4u);  // each layer's height in its albedo's alpha
+    const double worst = manifest["layers"]["fetches_per_pixel"]["worst"].get<double>();
+    EXPECT_EQ(worst, 4 * 2 * 3 + 1);  // 4 layers, 2 roles, 3 taps, and the splat map
+    const double fetches = countOps(disassemble(r.spirv)).textureSamples;
+    EXPECT_GE(fetches, worst);
+    EXPECT_LE(fetches, worst + 1);  // the splat map once more for the later role read (TheWorstFetchesAreTheShadersFetches)
+}
+
 // One lattice per distinct tiling and lattice settings, shared by the layers and roles: terrain's grass and pebbles
 // (tiling 8, layers 0 and 2) read one, sand (6) and snow (4) their own. Each lattice's tiles are computed at one place,
 // in the fill of the pixel's weights (which runs once per pixel: TheWorstFetchesAreTheShadersFetches), where one of

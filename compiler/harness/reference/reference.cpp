@@ -309,7 +309,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
 }
 
 SlotTextures::SlotTextures(const Slot& slot) {
-    const Texture source = loadTexture(slot.texturePath, slot.samplerDecodes());
+    const Texture source = loadTexture(slot.texturePath, slot.samplerDecodes(), slot.textureLayer);
     if (slot.hex.blend != Blend::Histogram) {
         texture = std::make_unique<SampledTexture>(source);
         return;
@@ -323,7 +323,7 @@ Heights::Heights(const Material& material, const Slot& slot) {
     if (!slot.heightBlend) return;
     for (const Slot& h : material.slots)
         if (h.name == slot.heightBlend->slot) {
-            texture_ = std::make_unique<SampledTexture>(loadTexture(h.texturePath, h.colorSpace == ColorSpace::Srgb));
+            texture_ = std::make_unique<SampledTexture>(loadTexture(h.texturePath, h.colorSpace == ColorSpace::Srgb, h.textureLayer));
             source_ = {texture_.get(), h.channel, slot.heightBlend->width};
         }
 }

@@ -112,7 +112,7 @@ std::vector<PrecisionRow> measurePrecision(Runner& runner, const ProbeTextures& 
     for (int path = 0; path < 2; ++path) {
         const Material m = probeMaterial(textures[path], path == 1, mode, placement, workDir);
         const Slot& slot = m.slots[0];
-        reference::SampledTexture texture(loadTexture(slot.texturePath, false));
+        reference::SampledTexture texture(loadTexture(slot.texturePath, false, slot.textureLayer));
         for (double x : magnitudes) {
             View view = probeView(x, placement);
             ParameterValues params;

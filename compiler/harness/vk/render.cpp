@@ -378,7 +378,7 @@ std::vector<Texture> boundTextures(const nlohmann::json& manifest, const Compile
             if (slot.name != s["name"]) continue;
             Texture t = s.contains("packed") && s["packed"]["texture"] == slot.name + ".packed"
                             ? packedTexture(manifest, compiled, slot.name + ".packed")
-                            : loadTexture(slot.texturePath, slot.samplerDecodes());
+                            : loadTexture(slot.texturePath, slot.samplerDecodes(), slot.textureLayer);
             if (s.contains("histogram")) {
                 HistogramTransform h = histogramTransform(t, slot);
                 t = std::move(h.gaussian);

@@ -55,6 +55,10 @@ struct CompileOptions {
     // A layered material's layer of weight 0 at a pixel is not fetched (its slots' taps sit in a branch). Off: every
     // layer is fetched at every pixel, as naive per-layer hex-tiling does (the same image; the bench's baseline).
     bool skipLayers = true;
+    // The consumer binds each slot's own texture and decodes a KTX2 array's layer itself (hexc edit's page): a role
+    // read from a KTX2 array that the shader cannot read as one array takes a texture per slot, where an engine,
+    // which loads the file as it is, gets HX128 (docs/material-format.md#ktx2-arrays).
+    bool slotTexturesDecoded = false;
     ResourceLayout layout;  // where hexc's own resources go on each target
     // The fragment entry point on every target but OpenGL GLSL (always `main`); empty: defaultEntryPoint(material).
     std::string entryPoint;

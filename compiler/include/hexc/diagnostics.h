@@ -47,6 +47,7 @@ enum class Code {
     TextureTooLarge,
     LayerRoles,
     LayerWeights,
+    TextureArray,
     // templates and shader code
     UnknownTemplate,
     TemplateUnreadable,

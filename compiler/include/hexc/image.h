@@ -44,6 +44,7 @@ struct TextureInfo {
     std::optional<bool> srgb;  // whether the file's format says sRGB, where it says (KTX2, DDS); float files hold linear values
     std::string format = {};   // the container's pixel format, for messages ("BC7 sRGB"); empty for stb's formats
     bool eightBit = false;     // stb's 8-bit formats: loadTexture gives rgba8, alpha 255 where the file has none
+    int layers = 0;            // a KTX2 array's layers (docs/material-format.md#ktx2-arrays); 0 for a 2D texture
 };
 
 // A texture file as a compile reads it: once, whole, with what its header says. The parser reads each slot's texture
@@ -72,11 +73,12 @@ struct TextureError : std::runtime_error {
 };
 
 // Loads any format stb_image reads (PNG, JPEG, TGA, BMP, HDR...) and PFM. HDR and PFM load as float.
-// Throws TextureError with the file name and stb's reason on failure.
-Texture loadTexture(const std::filesystem::path& file, bool srgb);
+// Throws TextureError with the file name and stb's reason on failure. `layer`: that layer of a KTX2 array (a slot's
+// Slot::textureLayer); a file without it is an error.
+Texture loadTexture(const std::filesystem::path& file, bool srgb, int layer = 0);
 
 // The texels of a file read before, as loadTexture decodes the file.
-Texture decodeTexture(const TextureFile& file, bool srgb);
+Texture decodeTexture(const TextureFile& file, bool srgb, int layer = 0);
 
 // An 8-bit RGBA texture as PNG bytes, the same bytes for the same texels; and PNG (or any stb format's) bytes decoded as
 // loadTexture decodes a file. The latter throws TextureError when they do not decode.

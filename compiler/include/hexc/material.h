@@ -136,6 +136,7 @@ struct Slot {
     int width = 0, height = 0;  // of the texture file
     std::string channelNames;   // the texture file's channels, from its header (TextureInfo::channelNames)
     bool eightBit = false;      // the file decodes to 8-bit texels (TextureInfo::eightBit)
+    int textureLayer = 0;       // `layer`: the layer of a KTX2 array file this slot reads (a layered material's); 0 otherwise
     // The texture file as the parser read it, the compile's one read of it (its bytes, its header); null when the
     // slot is built in code or its texture could not be read.
     std::shared_ptr<const TextureFile> file;
@@ -177,6 +178,9 @@ struct Layers {
     struct Role {
         std::string name;  // hexc_<name> reads the blend
         SlotKind kind = SlotKind::Color;
+        // A KTX2 array every layer's slot of the role reads at its own layer (docs/material-format.md#ktx2-arrays): the
+        // file as written and where layer 0's slot names it; empty when each slot has its own file.
+        std::string ktx2Array, ktx2ArrayPointer;
     };
     struct Layer {
         std::string name;

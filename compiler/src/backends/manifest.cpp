@@ -139,17 +139,21 @@ nlohmann::json arraysEntry(const ShaderPlan& plan) {
             continue;
         }
         const Slot& first = *plan.slots[a.slots.front()].slot;
-        arrays.push_back({{"role", a.role},
-                          {"slots", slots},
-                          {"array", true},
-                          {"size", {first.width, first.height, a.slots.size()}},
-                          {"colorspace", first.samplerDecodes() ? "srgb" : "linear"},
-                          {"binding",
-                           {{"texture", plan.textureName(a.slots.front())},
-                            {"slot", slots.front()},
-                            {"type", "texture2DArray"},
-                            {"sampler", "hexcSampler"},
-                            {"mip_chain", "full"}}}});
+        // A KTX2 array is bound as the file is, every layer of it: an engine loads it whole.
+        const size_t layers = a.ktx2.empty() ? a.slots.size() : size_t(first.file->info.layers);
+        nlohmann::json entry = {{"role", a.role},
+                                {"slots", slots},
+                                {"array", true},
+                                {"size", {first.width, first.height, layers}},
+                                {"colorspace", first.samplerDecodes() ? "srgb" : "linear"},
+                                {"binding",
+                                 {{"texture", plan.textureName(a.slots.front())},
+                                  {"slot", slots.front()},
+                                  {"type", "texture2DArray"},
+                                  {"sampler", "hexcSampler"},
+                                  {"mip_chain", "full"}}}};
+        if (!a.ktx2.empty()) entry["file"] = a.ktx2;
+        arrays.push_back(std::move(entry));
     }
     return arrays;
 }

@@ -41,6 +41,7 @@ constexpr CodeInfo kCatalogue[] = {
     {Code::TextureTooLarge, "HX125", Error},
     {Code::LayerRoles, "HX126", Error},
     {Code::LayerWeights, "HX127", Error},
+    {Code::TextureArray, "HX128", Error},
     {Code::UnknownTemplate, "HX200", Error},
     {Code::TemplateUnreadable, "HX201", Error},
     {Code::TemplateNoVersion, "HX202", Error},

@@ -1,8 +1,10 @@
 // `layers` and `layer_blend` of a material document -> Material::layers (material/layers.h).
 #include <algorithm>
+#include <map>
 #include <optional>
 
 #include "common/suggest.h"
+#include "hexc/image.h"
 #include "material/layers.h"
 #include "material/names.h"
 
@@ -33,6 +35,7 @@ public:
         Layers layers;
         const size_t ownSlots = m.slots.size();
         readLayers(doc["layers"], m, layers);
+        for (size_t r = 0; r < layers.roles.size(); ++r) ktx2Array(m, layers, r);
         if (requireKey(doc, "", "layer_blend", "how the layers blend: splat maps and mode")) layerBlend(doc["layer_blend"], m, layers);
         for (const auto& [pointer, role] : heightRefs_) heightBlendRole(pointer, role, layers);
         if (m.slots.size() > kMaxSlots)
@@ -92,7 +95,7 @@ private:
             if (s.name.empty()) continue;
             slotRules(s, p);
             if (first) {
-                layers.roles.push_back({s.name, s.kind});
+                layers.roles.push_back({s.name, s.kind, {}, {}});
                 l.slots.push_back(SIZE_MAX);
             }
             const size_t role = roleIndex(layers, s, p);
@@ -112,6 +115,7 @@ private:
                 s.heightBlend->slot = l.name + "_" + s.heightBlend->slot;
             }
             s.name = l.name + "_" + s.name;
+            slotPointers_[{layers.layers.size(), role}] = p;
             l.slots[role] = m.slots.size();
             m.slots.push_back(std::move(s));
         }
@@ -121,6 +125,44 @@ private:
                 report(Code::LayerRoles, pointer,
                        "layer `" + l.name + "` has no slot `" + layers.roles[r].name + "`; every layer has the first layer's roles (" +
                            roleList(layers) + ")");
+    }
+
+    // A role reads a KTX2 array in every layer or in none: every layer's slot names the same file at the layer's own
+    // index (the array's layers in the layers' order), so that an engine binds the file as it is.
+    void ktx2Array(const Material& m, Layers& layers, size_t role) {
+        const Slot* first = nullptr;
+        for (const Layers::Layer& l : layers.layers) {
+            const Slot* s = l.slots[role] == SIZE_MAX ? nullptr : &m.slots[l.slots[role]];
+            if (s && s->file && s->file->info.layers > 0) {
+                first = s;
+                break;
+            }
+        }
+        if (!first) return;
+        const std::string name = layers.roles[role].name, shown = first->texturePath.lexically_normal().string();
+        bool whole = true;
+        for (size_t i = 0; i < layers.layers.size(); ++i) {
+            const Layers::Layer& l = layers.layers[i];
+            if (l.slots[role] == SIZE_MAX || !m.slots[l.slots[role]].file) continue;  // reported where it was read
+            const Slot& s = m.slots[l.slots[role]];
+            const std::string p = slotPointers_[{i, role}];
+            if (s.file != first->file) {
+                report(Code::TextureArray, p + "/texture",
+                       "role `" + name + "` reads the KTX2 array " + shown + "; every layer's `" + name +
+                           "` names that array at its own layer, not another file",
+                       "for separate files, give every layer's `" + name + "` a 2D texture of its own");
+                whole = false;
+            } else if (s.textureLayer != int(i) && s.textureLayer < s.file->info.layers) {  // out of range: reported
+                report(Code::TextureArray, p + "/layer",
+                       "layer `" + l.name + "` is layer " + std::to_string(i) + " of the layers, and its `" + name + "` reads layer " +
+                           std::to_string(s.textureLayer) + " of " + shown + "; expected `\"layer\": " + std::to_string(i) +
+                           "` (the array's layers in the layers' order)");
+                whole = false;
+            }
+        }
+        if (!whole) return;
+        layers.roles[role].ktx2Array = first->texture;
+        layers.roles[role].ktx2ArrayPointer = slotPointers_[{0, role}] + "/texture";
     }
 
     // The role of a later layer's slot, by name and kind; SIZE_MAX after reporting when the first layer has no such role.
@@ -267,6 +309,9 @@ private:
             s.hex.enabled = false;              // one fetch, over the whole terrain: tiling 1
             if (!v[i].is_string()) continue;
             read_.texture(s, p);
+            if (s.file && s.file->info.layers > 0)
+                report(Code::TextureArray, p,
+                       "splat map " + s.texture + " is a KTX2 array; expected a 2D texture (RGBA = four layers' weights)");
             const size_t used = std::min<size_t>(4, layers.layers.size() - std::min(layers.layers.size(), 4 * i));
             if (!s.channelNames.empty() && s.channelNames.size() < used)
                 report(Code::TextureChannels, p,
@@ -278,7 +323,8 @@ private:
     }
 
     const LayerReaders& read_;
-    std::vector<std::pair<std::string, std::string>> heightRefs_;  // per layer slot with height_blend: its pointer, role
+    std::map<std::pair<size_t, size_t>, std::string> slotPointers_;  // (layer, role) -> the slot's JSON pointer
+    std::vector<std::pair<std::string, std::string>> heightRefs_;    // per layer slot with height_blend: its pointer, role
 };
 
 }  // namespace

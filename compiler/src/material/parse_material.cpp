@@ -16,15 +16,15 @@ namespace hexc {
 namespace {
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "pack", "slots", "layers", "layer_blend"};
-const std::vector<std::string> kSlotKeys = {"name",   "texture", "kind",      "channel",     "colorspace",
-                                            "flip_y", "role",    "hextiling", "height_blend"};
+const std::vector<std::string> kSlotKeys = {"name",   "texture", "kind",      "channel",      "colorspace",
+                                            "flip_y", "role",    "hextiling", "height_blend", "layer"};
 const std::vector<std::string> kHexKeys = {
     "enabled",           "tiling",        "rotation",      "falloff",        "falloffcontrast", "exponent",    "mode",
     "split_coordinates", "rotationrange", "rotationsteps", "scalerange",     "offset",          "offsetsteps", "mask",
     "maskscale",         "taps",          "projection",    "planesharpness", "blend",           "lod",         "lumacoeffs"};
 const std::vector<std::string> kHeightKeys = {"slot", "width"};
 // Keys of one level that a user may write one level up or down: a slot's own, and the material's own.
-const std::vector<std::string> kSlotOnlyKeys = {"texture", "kind", "channel", "colorspace", "flip_y", "role", "height_blend"};
+const std::vector<std::string> kSlotOnlyKeys = {"texture", "layer", "kind", "channel", "colorspace", "flip_y", "role", "height_blend"};
 const std::vector<std::string> kMaterialOnlyKeys = {"template", "pack", "slots"};
 const std::vector<std::string> kTaps = {"adaptive"};  // besides a count
 // 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
@@ -195,6 +195,10 @@ private:
         for (size_t i = 0; i < v.size(); ++i) {
             std::string p = pointerAppend(pointer, i);
             Slot s = slot(v[i], p, m.hex);
+            if (s.file && s.file->info.layers > 0 && v[i].contains("layer"))
+                report(Code::TextureArray, p + "/layer",
+                       "a KTX2 array texture is read by a layered material's layers, each layer's slot at its layer; a slot of "
+                       "`slots` reads a 2D texture");
             if (!s.name.empty()) {
                 if (auto [it, fresh] = seen.emplace(s.name, p); !fresh) {
                     TextPos first = locator_.value(it->second + "/name");
@@ -305,11 +309,30 @@ private:
                 inheritedRangeWarned_ = rangeWarning(s.hex, "/hextiling");
         }
         if (v.contains("height_blend")) heightBlend(v["height_blend"], pointer + "/height_blend", s);
+        if (v.contains("layer")) s.textureLayer = int(whole(v["layer"], pointer + "/layer", {0, 2047, false, false, "in [0, 2047]"}, 0));
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
             s.texture = string(v["texture"], pointer + "/texture");
             if (v["texture"].is_string()) texture(s, pointer + "/texture");
         }
+        arrayLayerRules(v.contains("layer"), s, pointer);
         return s;
+    }
+
+    // A KTX2 array texture is read one layer a slot, the layer `layer` names; a 2D texture has no layers to name.
+    void arrayLayerRules(bool stated, const Slot& s, const std::string& pointer) {
+        if (!s.file) return;
+        const int layers = s.file->info.layers;
+        const std::string shown = s.texturePath.lexically_normal().string();
+        if (layers > 0 && !stated)
+            report(Code::TextureArray, pointer + "/texture",
+                   shown + " is a KTX2 array of " + std::to_string(layers) +
+                       " layers; expected a 2D texture, or in a layered material's layer, `layer`: the array's layer this slot reads");
+        else if (layers == 0 && stated)
+            report(Code::TextureArray, pointer + "/layer", "`layer` names a layer of a KTX2 array texture; " + shown + " is a 2D texture");
+        else if (stated && s.textureLayer >= layers)
+            report(Code::TextureArray, pointer + "/layer",
+                   "layer " + std::to_string(s.textureLayer) + " of " + shown + ", which has " + std::to_string(layers) +
+                       " layers; expected 0 to " + std::to_string(layers - 1));
     }
 
     // The histogram blend applies to colour and scalar slots that blend every tap: one set on a normal slot itself is an

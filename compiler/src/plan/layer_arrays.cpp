@@ -36,10 +36,12 @@ std::string unreadable(const SlotPlan& sp) {
     return {};
 }
 
-// Why the role's slots stay separate textures, or empty when they make one array.
-std::string refusal(const Layers& layers, const ShaderPlan& plan, const std::vector<size_t>& slots) {
+// Why the role's slots stay separate textures, or empty when they make one array (a KTX2 array's role: one array even
+// with one layer, as the file is).
+std::string refusal(const Layers& layers, const ShaderPlan& plan, const LayerArrayPlan& a) {
+    const std::vector<size_t>& slots = a.slots;
     if (!layers.arrays) return "layer_blend.arrays is \"off\"";
-    if (slots.size() < 2) return "one layer: there is nothing to share";
+    if (slots.size() < 2 && a.ktx2.empty()) return "one layer: there is nothing to share";
     if (plan.general) return "--no-specialise: the library's general functions read 2D textures";
     if (plan.functions) return "the functions output (engine packages) binds one texture per slot (docs/engines.md)";
     const Slot& first = *plan.slots[slots.front()].slot;
@@ -83,6 +85,18 @@ void matchHeightMaps(const ShaderPlan& plan, std::vector<LayerArrayPlan>& arrays
     }
 }
 
+// A KTX2 array is bound as the file is: a role that would need a texture per slot cannot read one.
+void unsplittable(const Material& material, ShaderPlan& plan, const LayerArrayPlan& a) {
+    const Slot& first = *plan.slots[a.slots.front()].slot;
+    const auto role =
+        std::find_if(material.layers->roles.begin(), material.layers->roles.end(), [&](const Layers::Role& r) { return r.name == a.role; });
+    plan.diagnostics.push_back(Diagnostic::make(Code::TextureArray, {material.sourceFile.string(), first.line, first.col},
+                                                role->ktx2ArrayPointer,
+                                                "role `" + a.role + "` reads the KTX2 array " + a.ktx2 +
+                                                    ", bound as one array texture, and this shader needs a texture per slot: " + a.refused,
+                                                "give each layer's `" + a.role + "` a 2D texture file of its own"));
+}
+
 }  // namespace
 
 void planLayerArrays(const Material& material, ShaderPlan& plan) {
@@ -90,13 +104,15 @@ void planLayerArrays(const Material& material, ShaderPlan& plan) {
     const Layers& layers = *material.layers;
     std::vector<LayerArrayPlan> arrays;
     for (size_t r = 0; r < layers.roles.size(); ++r) {
-        LayerArrayPlan a{layers.roles[r].name, {}, {}};
+        LayerArrayPlan a{layers.roles[r].name, {}, {}, layers.roles[r].ktx2Array};
         for (const Layers::Layer& l : layers.layers) a.slots.push_back(planIndex(plan, l.slots[r], material));
         if (std::count(a.slots.begin(), a.slots.end(), std::string::npos) != 0) continue;  // a role the shader does not read
-        a.refused = refusal(layers, plan, a.slots);
+        a.refused = refusal(layers, plan, a);
         arrays.push_back(std::move(a));
     }
     matchHeightMaps(plan, arrays);
+    for (const LayerArrayPlan& a : arrays)
+        if (!a.ktx2.empty() && !a.refused.empty() && !plan.slotTexturesDecoded) unsplittable(material, plan, a);
     for (const LayerArrayPlan& a : arrays) {
         if (!a.refused.empty()) continue;
         for (size_t layer = 0; layer < a.slots.size(); ++layer) {

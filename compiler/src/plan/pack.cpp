@@ -39,7 +39,7 @@ int packChannels(ShaderPlan& plan, size_t i) {
     if (s.eightBit && s.channelNames.find('a') == std::string::npos) return 3;
     Texture t;
     try {
-        t = decodeTexture(*s.file, false);
+        t = decodeTexture(*s.file, false, s.textureLayer);
     } catch (const std::exception&) {
         return 0;  // not decoded here (block-compressed): the texture is bound as it is
     }

@@ -346,6 +346,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     plan.entryPoint = options.entryPoint.empty() ? defaultEntryPoint(material.name) : options.entryPoint;
     plan.bindings = HexcBindings(options.layout.vulkan);
     plan.general = !options.specialise;
+    plan.slotTexturesDecoded = options.slotTexturesDecoded;
     plan.uvBottomLeft = options.uvOrigin == UvOrigin::BottomLeft;
     if (!loadTemplate(material, options, plan)) return plan;
     // The built-in `functions` named by a material is the functions output, as with --functions.

@@ -124,6 +124,7 @@ struct LayerArrayPlan {
     std::string role;
     std::vector<size_t> slots;  // per layer (its layer index): index into ShaderPlan::slots
     std::string refused;        // empty: bound as one array at its first slot's binding; else why each slot has its own
+    std::string ktx2;           // the KTX2 array file the slots read, as the material names it; empty: assembled from theirs
 };
 // A lattice the layers' hex-tiled slots read: a LatticePlan and a texture aspect, which decide the tiles. The fill of
 // the pixel's weights computes its tiles where one of its layers is kept; its slots read them.
@@ -170,6 +171,7 @@ struct ShaderPlan {
     // --no-specialise (CompileOptions::specialise false): the slots call the library's general functions with every
     // setting in their HexcLattice and HexcBlend, rather than functions with the settings folded in (codegen).
     bool general = false;
+    bool slotTexturesDecoded = false;  // CompileOptions::slotTexturesDecoded: a KTX2 array role may take a texture per slot
     bool uvBottomLeft = false;         // CompileOptions::uvOrigin: the slots' functions take OpenGL's uv (v up)
     bool functions = false;            // CompileOptions::functions: the `functions` template, every slot read
     std::optional<LayersPlan> layers;  // a layered material's, when the template reads a role

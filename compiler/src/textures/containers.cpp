@@ -110,6 +110,7 @@ const Format* find(const Format (&table)[N], uint32_t code) {
 // A container's header as far as hexc reads it.
 struct Header {
     int width = 0, height = 0, mips = 1;
+    int layers = 0;  // a KTX2 array's layerCount; 0 for a 2D texture
     const Format* format = nullptr;
     // Whether the format says sRGB or not: a legacy DDS (no DX10 header) has no sRGB flag, so its 8-bit and block
     // formats may hold either (engines decide by the slot); only its float formats are known to be linear.
@@ -138,14 +139,20 @@ Header ktx2Header(const std::vector<unsigned char>& b) {
     h.mips = int(std::max(1u, u32(b, 40)));
     h.dataOffset = u32(b, 80) | uint64_t(u32(b, 84)) << 32;
     h.format = find(kVk, vkFormat);
+    // An array holds layerCount layers (a 1-layer array is still one); more than 2048 is past any device's limit
+    // (maxImageArrayLayers, at least 256 in Vulkan).
+    const uint32_t layers = u32(b, 32);
     if (vkFormat == 0)
         h.problem = "KTX2 with VK_FORMAT_UNDEFINED (Basis Universal) is not supported; transcode it to a BCn format";
     else if (!h.format)
         h.problem = "KTX2 vkFormat " + std::to_string(vkFormat) + " is not one hexc reads (8-bit, float or BC1-BC7)";
-    else if (u32(b, 28) > 1 || u32(b, 32) > 1 || u32(b, 36) > 1)
-        h.problem = "a KTX2 array, cube or 3D texture is not a 2D texture";
+    else if (u32(b, 28) > 1 || u32(b, 36) > 1)
+        h.problem = "a KTX2 cube or 3D texture is not a 2D texture or 2D array";
+    else if (layers > 2048)
+        h.problem = "a KTX2 array of " + std::to_string(layers) + " layers (hexc reads up to 2048)";
     else if (u32(b, 44) != 0)
         h.problem = "supercompressed KTX2 (scheme " + std::to_string(u32(b, 44)) + ")";
+    h.layers = int(layers);
     return h;
 }
 
@@ -185,14 +192,19 @@ Header ddsHeader(const std::vector<unsigned char>& b) {
     return h;
 }
 
+// One layer of level 0: KTX2 stores an array's level 0 layer after layer (layer-major), each this size.
+uint64_t layerBytes(const Header& h) {
+    const Format& f = *h.format;
+    return uint64_t((h.width + f.block - 1) / f.block) * uint64_t((h.height + f.block - 1) / f.block) * f.blockBytes;
+}
+
 Header header(Kind kind, std::string_view bytes) {
     std::vector<unsigned char> b = prefix(bytes, 148);
     Header h = kind == Kind::Ktx2 ? ktx2Header(b) : ddsHeader(b);
     if (!h.problem.empty()) return h;
     if (h.width <= 0 || h.height <= 0 || h.width > 65536 || h.height > 65536) return {.problem = "the header gives no valid size"};
-    // Level 0 must be in the file: a truncated texture would fail in the engine, not here.
-    const Format& f = *h.format;
-    const uint64_t level0 = uint64_t((h.width + f.block - 1) / f.block) * uint64_t((h.height + f.block - 1) / f.block) * f.blockBytes;
+    // Level 0 must be in the file, every layer of it: a truncated texture would fail in the engine, not here.
+    const uint64_t level0 = layerBytes(h) * uint64_t(std::max(1, h.layers));
     if (h.dataOffset > bytes.size() || level0 > bytes.size() - h.dataOffset) h.problem = "the file is truncated (level 0 does not fit)";
     return h;
 }
@@ -387,10 +399,10 @@ Texture loadExr(std::string_view bytes, const std::filesystem::path& file) {
     return t;
 }
 
-Texture decode(const Header& h, std::string_view bytes, const std::filesystem::path& file, bool srgb) {
+Texture decode(const Header& h, std::string_view bytes, const std::filesystem::path& file, bool srgb, int layer) {
     const Format& f = *h.format;
     MemoryStream in(bytes);
-    in.seekg(std::streamoff(h.dataOffset));
+    in.seekg(std::streamoff(h.dataOffset + layerBytes(h) * uint64_t(layer)));
     Texture t;
     t.width = h.width;
     t.height = h.height;
@@ -429,17 +441,22 @@ std::optional<TextureInfo> info(Kind kind, std::string_view bytes, const std::fi
     const std::string names = h.format->channels;
     const char* container = kind == Kind::Ktx2 ? "KTX2 " : "DDS ";
     const std::optional<bool> srgb = h.colorSpaceStated ? std::optional<bool>(h.format->srgb) : std::nullopt;
-    return TextureInfo{h.width, h.height, int(names.size()), names, h.mips, srgb, container + std::string(h.format->name)};
+    TextureInfo info{h.width, h.height, int(names.size()), names, h.mips, srgb, container + std::string(h.format->name)};
+    info.layers = h.layers;
+    return info;
 }
 
-Texture load(Kind kind, std::string_view bytes, const std::filesystem::path& file, bool srgb) {
+Texture load(Kind kind, std::string_view bytes, const std::filesystem::path& file, bool srgb, int layer) {
+    if (kind == Kind::Exr && layer != 0) throw TextureError(file.string() + ": an EXR file has no layer " + std::to_string(layer));
     if (kind == Kind::Exr) return loadExr(bytes, file);
     Header h = header(kind, bytes);
+    if (h.problem.empty() && (layer < 0 || layer >= std::max(1, h.layers)))
+        h.problem = "no layer " + std::to_string(layer) + " (the file has " + std::to_string(std::max(1, h.layers)) + ")";
     if (!h.problem.empty()) throw TextureError(file.string() + ": " + h.problem);
     if (h.format->decode == Format::No)
         throw TextureError(file.string() + ": hexc render and preview do not decode " + h.format->name +
                            " (only uncompressed 8-bit and 32-bit float RGBA, and EXR); hexc compiles with it");
-    return decode(h, bytes, file, srgb);
+    return decode(h, bytes, file, srgb, layer);
 }
 
 }  // namespace hexc::containers

@@ -22,7 +22,8 @@ Kind kindOf(std::string_view bytes);
 // truncated or unknown file.
 std::optional<TextureInfo> info(Kind kind, std::string_view bytes, const std::filesystem::path& file, std::string* error);
 
-// Level 0 as loadTexture returns it; throws TextureError naming the format when it is not decoded here.
-Texture load(Kind kind, std::string_view bytes, const std::filesystem::path& file, bool srgb);
+// Level 0 as loadTexture returns it, of layer `layer` of a KTX2 array (0 otherwise); throws TextureError naming the
+// format when it is not decoded here, or naming the layer when the file has no such layer.
+Texture load(Kind kind, std::string_view bytes, const std::filesystem::path& file, bool srgb, int layer);
 
 }  // namespace hexc::containers

@@ -194,8 +194,10 @@ std::optional<TextureInfo> infoOf(std::string_view bytes, const std::filesystem:
 }
 
 // Level 0 of the bytes, as loadTexture documents it.
-Texture decode(std::string_view bytes, const std::filesystem::path& file, bool srgb) {
-    if (containers::Kind kind = containers::kindOf(bytes); kind != containers::Kind::None) return containers::load(kind, bytes, file, srgb);
+Texture decode(std::string_view bytes, const std::filesystem::path& file, bool srgb, int layer) {
+    if (containers::Kind kind = containers::kindOf(bytes); kind != containers::Kind::None)
+        return containers::load(kind, bytes, file, srgb, layer);
+    if (layer != 0) failRead(file, "no layer " + std::to_string(layer) + ": only a KTX2 array has layers");
     if (lowerExtension(file) == ".pfm") return loadPfm(bytes, file);
     if (bytes.size() > INT_MAX) failRead(file, "larger than stb_image reads (2 GiB)");
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
@@ -233,13 +235,13 @@ std::optional<TextureInfo> textureInfo(const std::filesystem::path& file, std::s
     return read ? std::optional<TextureInfo>(std::move(read->info)) : std::nullopt;
 }
 
-Texture decodeTexture(const TextureFile& file, bool srgb) { return decode(file.bytes, file.path, srgb); }
+Texture decodeTexture(const TextureFile& file, bool srgb, int layer) { return decode(file.bytes, file.path, srgb, layer); }
 
-Texture loadTexture(const std::filesystem::path& file, bool srgb) {
+Texture loadTexture(const std::filesystem::path& file, bool srgb, int layer) {
     std::string why;
     std::optional<std::string> bytes = readFile(file, &why, kMaxTextureBytes);
     if (!bytes) failRead(file, why);
-    return decode(*bytes, file, srgb);
+    return decode(*bytes, file, srgb, layer);
 }
 
 std::string pfmBytes(const Image& image) {
