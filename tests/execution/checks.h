@@ -77,7 +77,7 @@ using Errors = vk::ImageErrors;
 const auto compare = vk::compareImages;
 
 inline reference::SampledTexture sampled(const Slot& slot) {
-    return reference::SampledTexture(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb));
+    return reference::SampledTexture(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb, slot.textureLayer));
 }
 
 inline Image cpuRender(const Slot& slot, const View& view, reference::Output output) {

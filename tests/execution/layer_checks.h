@@ -155,11 +155,10 @@ inline std::vector<bool> unpaintedLayers(const Material& m, const reference::Lay
     return zero;
 }
 
-// The case's role, drawn, against the reference: each pixel within its tolerance (layerTolerance).
-inline CaseCheck checkLayers(const LayerCase& c, const Draw& draw) {
-    ParseResult parsed = parseMaterialFile(std::string("tests/execution/layers/") + c.file);
-    if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
-    const Material m = vk::layerRoleFirst(*parsed.material, *vk::layerRole(*parsed.material, c.role));
+// The case's role of `material` (the case's file, or a form of it), drawn, against the reference: each pixel within its
+// tolerance (layerTolerance).
+inline CaseCheck checkLayers(const Material& material, const LayerCase& c, const Draw& draw) {
+    const Material m = vk::layerRoleFirst(material, *vk::layerRole(material, c.role));
     const Layers& layers = *m.layers;
     const Slot& first = m.slots[layers.layers[0].slots[0]];
     Check check;
@@ -190,6 +189,13 @@ inline CaseCheck checkLayers(const LayerCase& c, const Draw& draw) {
     check.errors = compare(gpu, cpu, check.channels);
     check.reference = std::move(cpu);
     return {m, c.view, check};
+}
+
+// The case as its file under tests/execution/layers/ gives it.
+inline CaseCheck checkLayers(const LayerCase& c, const Draw& draw) {
+    ParseResult parsed = parseMaterialFile(std::string("tests/execution/layers/") + c.file);
+    if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
+    return checkLayers(*parsed.material, c, draw);
 }
 
 }  // namespace hexc::exec
