@@ -25,6 +25,13 @@ bool texelsRead(const Material& material, size_t i, bool copied) {
     return material.slots[i].hex.blend == Blend::Histogram || material.pack || copied || splat;
 }
 
+// Everything a texture's header says (TextureInfo), as one key.
+std::string headerKey(const TextureInfo& t) {
+    return std::to_string(t.width) + "x" + std::to_string(t.height) + "x" + std::to_string(t.layers) + "," + t.channelNames + "," +
+           std::to_string(t.channels) + "," + std::to_string(t.mipLevels) + "," + (t.srgb ? (*t.srgb ? "srgb" : "linear") : "-") + "," +
+           t.format + (t.eightBit ? ",8" : ",f");
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options) {
@@ -52,7 +59,8 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     if (!options.manifestPathsFrom.empty())
         for (const std::filesystem::path& f : inputFiles(material, options))
             h.add(std::filesystem::absolute(f).lexically_normal().string());
-    // Of most textures the compile reads only the size (validation has checked its channels): new pixels leave the
+    // Of most textures the compile reads only what the header says (size, channels, format, colour space, a KTX2
+    // array's layers: the manifest and whether a role's textures make one array follow them): new pixels leave the
     // outputs as they are. Where it reads the texels (texelsRead), their bytes count.
     const bool copied = std::any_of(options.engines.begin(), options.engines.end(), [](const std::string& e) {
         const std::optional<Engine> engine = engineNamed(e);
@@ -60,9 +68,7 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     });
     for (size_t i = 0; i < material.slots.size(); ++i) {
         const Slot& s = material.slots[i];
-        // A KTX2 array's layer count is the manifest's array size.
-        h.add(s.name + "|" + std::to_string(s.width) + "x" + std::to_string(s.height) + "x" +
-              std::to_string(s.file ? s.file->info.layers : 0));
+        h.add(s.name + "|" + (s.file ? headerKey(s.file->info) : std::to_string(s.width) + "x" + std::to_string(s.height)));
         if (texelsRead(material, i, copied)) h.add(s.file ? s.file->bytes : "");  // as the parser read them
     }
     addFile(h, material.sourceFile);

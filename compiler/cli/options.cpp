@@ -36,7 +36,7 @@ into every texture slot of its template, compiles with glslang, optimises with s
    with --emit-generated also DIR/<name>.generated.frag, the Vulkan GLSL hexc generated and compiled)
 A scene (a JSON file with a "scene" key, see docs/scenes.md) compiles each (material, pass) variant it
 uses into DIR/<material>.<pass>.*, with an index (DIR/<scene>.scene.json) that marks variants whose code is
-identical. Inputs unchanged since the last run (material, textures' sizes, template, options, hexc build)
+identical. Inputs unchanged since the last run (material, textures' headers, template, options, hexc build)
 are not compiled again (--force compiles them anyway); shader code compiled before, in this batch or an
 earlier run, comes from the cache (--cache-dir). Nothing is written unless everything compiles; each file is
 written atomically.

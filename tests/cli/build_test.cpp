@@ -237,6 +237,30 @@ TEST(Incremental, ARepaintedSplatMapCompilesAgain) {
     EXPECT_EQ(both, 7.0);
 }
 
+// What a texture's header says decides outputs too: a layer's texture of the same size with other channels (grey and
+// alpha, where the other layers are grey) takes its role out of one array, so it compiles again.
+TEST(Incremental, ATextureWithOtherChannelsCompilesAgain) {
+    const fs::path dir = fs::temp_directory_path() / "hexc_incremental_channels";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy("materials/textures/rock_roughness.png", dir / "a.png");
+    fs::copy("materials/textures/rock_height.png", dir / "b.png");
+    fs::copy("materials/textures/terrain_splat.png", dir / "splat.png");
+    std::ofstream(dir / "m.json") << R"({"name": "m", "layers": [
+        {"name": "a", "slots": [{"name": "roughness", "kind": "scalar", "texture": "a.png"}]},
+        {"name": "b", "slots": [{"name": "roughness", "kind": "scalar", "texture": "b.png"}]}],
+        "layer_blend": {"splat": ["splat.png"]}})";
+    auto arrays = [&] {
+        std::string err;
+        EXPECT_EQ(runHexc((dir / "m.json").string() + " --targets spirv -o " + (dir / "out").string(), &err), 0) << err;
+        return nlohmann::json::parse(read(dir / "out" / "m.manifest.json"))["layers"]["arrays"][0];
+    };
+    EXPECT_TRUE(arrays()["array"].get<bool>()) << "both grey, 256 x 256: one array";
+    fs::copy("materials/textures/terrain_grass_rh.png", dir / "b.png", fs::copy_options::overwrite_existing);  // 256 x 256, grey + alpha
+    const nlohmann::json now = arrays();
+    EXPECT_FALSE(now["array"].get<bool>()) << now;
+}
+
 TEST(Incremental, AnotherHexcBuildDoesNotTrustTheStamp) {
     fs::path dir = copyOfMaterials("hexc_stale");
     fs::path out = dir / "out";
