@@ -130,21 +130,25 @@ private:
     // A role reads a KTX2 array in every layer or in none: every layer's slot names the same file at the layer's own
     // index (the array's layers in the layers' order), so that an engine binds the file as it is.
     void ktx2Array(const Material& m, Layers& layers, size_t role) {
+        // The layer's slot of the role with a texture file; null where it has none (reported where it was read, or a
+        // layer without slots).
+        auto slotOf = [&](const Layers::Layer& l) -> const Slot* {
+            const size_t i = role < l.slots.size() ? l.slots[role] : SIZE_MAX;
+            return i == SIZE_MAX || !m.slots[i].file ? nullptr : &m.slots[i];
+        };
         const Slot* first = nullptr;
-        for (const Layers::Layer& l : layers.layers) {
-            const Slot* s = l.slots[role] == SIZE_MAX ? nullptr : &m.slots[l.slots[role]];
-            if (s && s->file && s->file->info.layers > 0) {
+        for (const Layers::Layer& l : layers.layers)
+            if (const Slot* s = slotOf(l); s && s->file->info.layers > 0) {
                 first = s;
                 break;
             }
-        }
         if (!first) return;
         const std::string name = layers.roles[role].name, shown = first->texturePath.lexically_normal().string();
         bool whole = true;
         for (size_t i = 0; i < layers.layers.size(); ++i) {
             const Layers::Layer& l = layers.layers[i];
-            if (l.slots[role] == SIZE_MAX || !m.slots[l.slots[role]].file) continue;  // reported where it was read
-            const Slot& s = m.slots[l.slots[role]];
+            if (!slotOf(l)) continue;
+            const Slot& s = *slotOf(l);
             const std::string p = slotPointers_[{i, role}];
             if (s.file != first->file) {
                 report(Code::TextureArray, p + "/texture",
