@@ -312,3 +312,91 @@ def result_row(material, origin, function, r):
         note += "; a flipped u or v caught" if r["flip_caught"] else " FAIL: a flipped u or v would pass"
     return (f"| {Path(material).stem} | {origin} | {function['name']} | {r['mean']:.3f} | {r['max']:.2f} | {r['max_over_bound']:.2f}{note} |",
             failed)
+
+
+# The probe: textures unlike the examples, to judge an engine's image in absolute orientation. Non-square, so that a
+# transposed or stretched read shows; asymmetric in u and in v, so that a flip or a mirror shows (a noise texture
+# hides both). Image coordinates here: x right, y down, the PNG's first row the texture's first row (v = 0 in hexc's
+# top-left uv origin).
+PROBE_ALBEDO = (96, 64)  # the "F" glyph, a hue gradient along the bottom, a grey patch on the right
+PROBE_BUMPS = (5, 3)  # columns and rows of bumps in the normal maps
+PROBE_NORMAL = (100, 60)  # 20 texels a bump
+
+
+def probe_glyph(x, y):
+    """The probe albedo's texel (x, y) as sRGB bytes: a dark "F" at the top-left on a warm ground, a grey patch at the
+    right, a hue gradient (red at the left through green to blue at the right) along the bottom."""
+    if y >= 46:
+        h = 3 * x / PROBE_ALBEDO[0]  # 0 .. 3: red, green, blue corners of the hue circle
+        k = [max(0.0, 1 - min(abs(h - c), 3 - abs(h - c))) for c in (0.0, 1.0, 2.0)]
+        return tuple(round(40 + 200 * v) for v in k)
+    if 74 <= x < 92 and 6 <= y < 40:
+        return (128, 128, 128)
+    in_f = (8 <= x < 16 and 6 <= y < 40) or (8 <= x < 50 and 6 <= y < 14) or (8 <= x < 38 and 21 <= y < 28)
+    return (30, 30, 40) if in_f else (225, 205, 170)
+
+
+def probe_height(x, y):
+    """The probe's height field at image point (x, y) in texels: a bump of radius 8 at the centre of each 20-texel cell,
+    h = cos^2(pi r / 16) inside, 0 outside; its slope (dh/dx, dh/dy), y down the image."""
+    cx, cy = (math.floor(x / 20) + 0.5) * 20, (math.floor(y / 20) + 0.5) * 20
+    dx, dy = x - cx, y - cy
+    r = math.hypot(dx, dy)
+    if r >= 8 or r == 0:
+        return 0.0, 0.0
+    dh_dr = -2 * math.cos(math.pi * r / 16) * math.sin(math.pi * r / 16) * math.pi / 16 * 4  # 4x: a clear relief
+    return dh_dr * dx / r, dh_dr * dy / r
+
+
+def probe_normal(green_up):
+    """The bumps' normal map, green up (OpenGL: n = (-dh/dx, +dh/dy_down, 1)) or down (DirectX: -dh/dy_down), as bytes."""
+    def pixel(x, y):
+        sx, sy = probe_height(x + 0.5, y + 0.5)
+        n = (-sx, sy if green_up else -sy, 1.0)
+        length = math.sqrt(sum(c * c for c in n))
+        return tuple(round(255 * (c / length * 0.5 + 0.5)) for c in n)
+    return pixel
+
+
+def probe_material(folder, convention="gl", hextiling=False):
+    """The probe as a material in `folder`: the glyph albedo (sRGB) and the bump normal map in `convention` ("gl":
+    green up; "dx": green down, `flip_y`), plain tiled once across uv unless `hextiling` (then hex-tiled 3 times with
+    rotation, as a user would). Plain tiling keeps the F and the bumps whole, so that orientation is judged by eye and
+    by bumps_lit() as well as against `hexc render`."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    write_png(folder / "probe_albedo.png", *PROBE_ALBEDO, probe_glyph)
+    write_png(folder / f"probe_normal_{convention}.png", *PROBE_NORMAL, probe_normal(convention == "gl"))
+    name = f"probe_{convention}" + ("_hex" if hextiling else "")
+    tiling = {"tiling": 3, "rotation": 1.0} if hextiling else {"enabled": False}
+    normal = {"name": "normal", "kind": "normal", "texture": f"probe_normal_{convention}.png"}
+    if convention == "dx":
+        normal["flip_y"] = True
+    material = {"name": name, "hextiling": tiling,
+                "slots": [{"name": "albedo", "kind": "color", "texture": "probe_albedo.png", "colorspace": "srgb"}, normal]}
+    (folder / f"{name}.json").write_text(json.dumps(material, indent=2))
+    return folder / f"{name}.json"
+
+
+def bumps_lit(png, side, rect=(0.0, 0.0, 1.0, 1.0)):
+    """How many of the probe's 5 x 3 bumps are brighter on `side` ("top", "bottom", "left", "right" of the screen) than
+    on the opposite side, by more than 8 levels, in an image of the probe lit from that side. `rect` is the part of the
+    image (x0, y0, x1, y1 as fractions, y down the screen) that shows the normal map once, upright: an engine that draws
+    the map flipped or with the wrong green lights the bumps from the other side, and the count drops to 0."""
+    w, h, n, rows = read_png(png)
+    cols, lines = PROBE_BUMPS
+    x0, y0, x1, y1 = rect[0] * w, rect[1] * h, rect[2] * w, rect[3] * h
+    cw, ch = (x1 - x0) / cols, (y1 - y0) / lines
+
+    def mean(cx, cy, ox, oy):  # a small square at offset (ox, oy) of a bump's radius from its centre
+        px, py = cx + ox * cw * 0.25, cy + oy * ch * 0.25
+        vals = [sum(rows[int(py) + j][(int(px) + i) * n + c] for c in range(3)) / 3 for j in (-1, 0, 1) for i in (-1, 0, 1)]
+        return sum(vals) / len(vals)
+
+    offset = {"top": (0, -1), "bottom": (0, 1), "left": (-1, 0), "right": (1, 0)}[side]
+    lit = 0
+    for j in range(lines):
+        for i in range(cols):
+            cx, cy = x0 + (i + 0.5) * cw, y0 + (j + 0.5) * ch
+            lit += mean(cx, cy, *offset) > mean(cx, cy, -offset[0], -offset[1]) + 8
+    return lit
