@@ -76,6 +76,21 @@ inline Material material(const std::string& slotJson, const std::string& hexJson
 using Errors = vk::ImageErrors;
 const auto compare = vk::compareImages;
 
+// An error over its tolerance, with NaN on either side infinite: std::max drops a NaN argument, so a NaN value or a
+// NaN tolerance (from a NaN reference) would otherwise leave the worst ratio as it was and pass.
+inline double errorRatio(double e, double t) {
+    if (!(e == e) || !(t == t)) return INFINITY;
+    return e == 0 ? 0 : e / t;
+}
+
+// Whether every channel of every pixel is finite: a check that compares an image with itself or with a neighbour
+// (rather than with the reference) must first rule out NaN, which every comparison with it passes.
+inline bool allFinite(const Image& image) {
+    for (float v : image.rgba)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
 inline reference::SampledTexture sampled(const Slot& slot) {
     return reference::SampledTexture(loadTexture(slot.texturePath, slot.colorSpace == ColorSpace::Srgb, slot.textureLayer));
 }
@@ -234,7 +249,7 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
             double e = std::fabs(double(gpu.rgba[p * 4 + size_t(c)]) - double(cpu.rgba[p * 4 + size_t(c)]));
             if (!(e == e)) e = INFINITY;
             if (e > check.errors.max) check.toleranceAtMax = t;
-            check.worstRatio = std::max(check.worstRatio, e / t);
+            check.worstRatio = std::max(check.worstRatio, errorRatio(e, t));
         }
     }
     check.errors = compare(gpu, cpu, channels);
@@ -628,7 +643,7 @@ inline Check checkPacked(const Material& m, const View& view, int level, const D
                 if (!(e == e)) e = INFINITY;
                 if (e > check.errors.max) check.toleranceAtMax = t;
                 check.errors.max = std::max(check.errors.max, e);
-                check.worstRatio = std::max(check.worstRatio, e / t);
+                check.worstRatio = std::max(check.worstRatio, errorRatio(e, t));
             }
         }
     }

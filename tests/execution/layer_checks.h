@@ -183,7 +183,7 @@ inline CaseCheck checkLayers(const Material& material, const LayerCase& c, const
         for (size_t ch = 0; ch < size_t(check.channels); ++ch) {
             cpu.rgba[p * 4 + ch] = float(ref[p].value[ch]);
             const double e = std::fabs(double(gpu.rgba[p * 4 + ch]) - ref[p].value[ch]);
-            check.worstRatio = std::max(check.worstRatio, e == e ? e / t : INFINITY);
+            check.worstRatio = std::max(check.worstRatio, errorRatio(e, t));
         }
     }
     check.errors = compare(gpu, cpu, check.channels);

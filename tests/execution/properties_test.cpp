@@ -60,6 +60,19 @@ TEST(Properties, WeightsAreFiniteNonNegativeAndSumToOne) {
     EXPECT_LE(worst, bound);
 }
 
+// The checks' own arithmetic: a NaN value or a NaN tolerance (a NaN reference) is never a pass, where std::max
+// would keep the worst ratio seen before it; an exact value under a zero tolerance is.
+TEST(Properties, ANanIsNeverWithinItsTolerance) {
+    EXPECT_EQ(errorRatio(NAN, 1.0), INFINITY);
+    EXPECT_EQ(errorRatio(0.5, NAN), INFINITY);
+    EXPECT_EQ(errorRatio(0.0, 0.0), 0.0);
+    EXPECT_EQ(errorRatio(0.5, 1.0), 0.5);
+    Image image{2, 1, {0, 0, 0, 1, 0, NAN, 0, 1}};
+    EXPECT_FALSE(allFinite(image));
+    image.rgba[5] = 0;
+    EXPECT_TRUE(allFinite(image));
+}
+
 // No seams: between neighbouring pixels the colour may change only as much as the texture's own content and the
 // weights allow. Each tile's sample moves by s texels (s = texels per pixel; rotation keeps lengths), which
 // changes a bilinear sample by at most step * s * sqrt(2) (step: the largest difference of adjacent texels). The
@@ -74,6 +87,7 @@ TEST(Properties, NoSeamsBetweenNeighbouringPixels) {
         const View view{128, 128, {0.2, 0.3, 0.2 + 128.0 / 1024, 0.3 + 128.0 / 1024}};  // s = 1 texel per pixel
         Image c = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Albedo, "", view);
         Image w = vk::render(*runner(&whyNoVulkan), m, vk::RenderOutput::Weights, "", view);
+        ASSERT_TRUE(allFinite(c) && allFinite(w)) << tex;
         TextureBounds b = bounds(sampled(m.slots[0]));
         double es = sampleError(0, false), worstRatio = 0;
         for (int y = 0; y < view.height; ++y)
@@ -111,7 +125,9 @@ TEST(Properties, GainAtOneHalfChangesNothing) {
     Errors e = compare(albedo(0.5), albedo(0.5 + std::ldexp(1.0, -20)), 4);
     std::printf("  r = 0.5 against r = 0.5 + 2^-20: max %.2e, bound 1e-5\n", e.max);
     EXPECT_LE(e.max, 1e-5);
-    EXPECT_GT(compare(albedo(0.5), albedo(0.75), 4).max, 1.0 / 255);  // and the gain does act when asked
+    const Image acted = albedo(0.75);
+    ASSERT_TRUE(allFinite(acted));
+    EXPECT_GT(compare(albedo(0.5), acted, 4).max, 1.0 / 255);  // and the gain does act when asked
 }
 
 // A ramp normal map: every texel encodes the same derivative (a, b) = (dH/du, dH/dy), y = -v (a green-up map), the
