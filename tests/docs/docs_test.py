@@ -57,11 +57,26 @@ def readme_checks(ctx, docs_blocks):
     if not last.startswith("build/hexc "):
         failures.append("%s: the first command does not end with `build/hexc ...`" % where)
     else:
-        failures += ctx.run_shell(block, "hexc " + last[len("build/hexc "):], ctx.folder_for("README.md"))
+        ran = ctx.run_shell(block, "hexc " + last[len("build/hexc "):], ctx.folder_for("README.md"))
+        failures += ran or listing_check(docs_blocks, ctx.folder_for("README.md"))
     ci_run = open(".ci/run").read()
     if second != ".ci/test" or not re.search(r'^exec "\$\(dirname "\$0"\)/test"$', ci_run, re.M):
         failures.append("%s: .ci/run does not exec the README's second command `%s`" % (where, second))
     return failures
+
+
+def listing_check(docs_blocks, folder):
+    """The README's listing of what its first command writes (`out/<file>  what it is`) names exactly the files written
+    (not the hidden stamp)."""
+    found = [b for b in docs_blocks if b.doc == "README.md" and b.kind == "text" and b.body.startswith("out/")]
+    if len(found) != 1:
+        return ["README.md: no ```text block listing out/, what its first command writes"]
+    listed = sorted(line.split()[0] for line in found[0].body.split("\n") if line.strip())
+    written = sorted("out/" + f for f in os.listdir(os.path.join(folder, "out")) if not f.startswith("."))
+    if listed != written:
+        return ["%s lists %s, the first command wrote %s" % (found[0].where(), listed, written)]
+    print("ok: %s lists exactly the files `hexc materials/rock.json -o out/` writes" % found[0].where())
+    return []
 
 
 def policy_check(ctx, docs_blocks):

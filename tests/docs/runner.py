@@ -102,7 +102,7 @@ class Context:
         """A shell block: its lines in order, in bash with -e; a `hexc edit` line starts the server and checks its page."""
         script = []
         for line in block.body.split("\n") + [None]:
-            if line is not None and not line.strip().startswith("hexc edit "):
+            if line is not None and not starts_server(line):
                 script.append(line)
                 continue
             failures = self.run_shell(block, "\n".join(script), folder) if "".join(script).strip() else []
@@ -117,7 +117,7 @@ class Context:
         failures = []
         vary = block.attrs.get("vary", "").split(",")
         for command, expected in md.console_steps(block.body):
-            if command.startswith("hexc edit "):
+            if starts_server(command):
                 first, _, rest = expected.partition("\n")
                 failures += self.check_edit(command, first, vary, folder)
                 if rest:
@@ -230,6 +230,11 @@ class Context:
         if shown:
             print("  note: the page of `%s` shows %s:\n%s" % (command, shown[0], tail(shown[1])))
         return []
+
+
+def starts_server(command):
+    """Whether a command line is `hexc edit` serving until Ctrl-C (with --capture it draws one image and exits)."""
+    return command.strip().startswith("hexc edit ") and "--capture" not in command
 
 
 def glob_workspaces(folder):
