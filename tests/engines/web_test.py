@@ -241,11 +241,13 @@ class Engine(unittest.TestCase):
         """Each slot through the engine's input, unlit, against the fp64 reference (linear values, 8-bit canvas)."""
         rock, dome, tiles = "materials/rock.json", dome_material(PACKAGES), "materials/tiles.json"
         mixed = str(ec.mixed_material(os.path.join(PACKAGES, "mixed")))  # packed, 300 x 170, a DirectX normal map
+        probe = str(ec.probe_material(os.path.join(PACKAGES, "probe_hex"), "dx", hextiling=True))  # 96 x 64, 100 x 60
         # (material, slot, the engine input the driver reads, the reference's output, texels per uv unit along u)
         cases = (("albedo", rock, "albedo", "albedo", 1024), ("roughness", rock, "roughness", "albedo", 1024),
                  ("normal", dome, "normal", "normal", 128), ("albedo", tiles, "albedo", "albedo", 768),
                  ("albedo", mixed, "albedo", "albedo", 900), ("roughness", mixed, "roughness", "albedo", 900),
-                 ("normal", mixed, "normal", "normal", 900))
+                 ("normal", mixed, "normal", "normal", 900), ("albedo", probe, "albedo", "albedo", 288),
+                 ("normal", probe, "normal", "normal", 300))
         for (slot, material, engine_input, output, texels), origin in itertools.product(cases, ORIGINS):
             with self.subTest(material=os.path.basename(material), slot=slot, origin=origin):
                 rect = [0.3, 0.45, 0.3 + SIZE * 0.75 / texels, 0.45 + SIZE * 0.75 / texels]
