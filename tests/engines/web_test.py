@@ -134,6 +134,7 @@ GL_UV = [0.0, 1.0, 1.0, 0.0]  # the square's uv [u0, v at the top, u1, v at the 
 # convention and an sRGB file decoded twice, are materials: probe_variants).
 ENGINE_VARIANTS = {"flipped v (textures loaded with the engine's default flipY / invertY)": {"threejs": {"flipY": True}, "babylon": {"invertY": True}},
                    "mirrored u (a mesh with u running right to left)": {"uv": [1.0, 1.0, 0.0, 0.0]},
+                   "flipped v (a mesh with glTF's uv, v down, as three.js's GLTFLoader keeps it)": {"uv": [0.0, 0.0, 1.0, 1.0]},
                    "a NaN slot": {"nan": True}}
 
 
@@ -200,7 +201,7 @@ def probe_check(name, material, meant, origin, options):
     they meant, not against itself) within slot_tolerance, the marker at the top-left of each screenshot, and
     the normal map alone lit from the top-right by the engine's light: all 15 bumps brighter on their top and on their
     right side (engine_check.bumps_lit). Prints the figures; returns what failed."""
-    tag = name.split(" (")[0].replace(" ", "_").replace(",", "")
+    tag = "".join(c if c.isalnum() else "_" for c in name)
     config = {"width": PROBE_SIZE[0], "height": PROBE_SIZE[1], "uv": GL_UV, "marker": MARKER, **options}
     figures, failed = {}, []
     for view in ("albedo", "normal"):
