@@ -140,7 +140,7 @@ ENGINE_VARIANTS = {"flipped v (textures loaded with the engine's default flipY /
 
 def probe_variants(folder):
     """The probe materials: (name, material, the material meant, uv origin, engine options), the right ones first,
-    then the wrong ones."""
+    then the wrong ones (with probe_check's `first_failure`)."""
     gl, dx = ec.probe_material(folder, "gl"), ec.probe_material(folder, "dx")
     with open(dx) as f:
         wrong_green = json.load(f)
@@ -159,9 +159,11 @@ def probe_variants(folder):
             json.dump(doc, f)
     gl, dx = str(gl), str(dx)
     right = [("GL normal map, %s package" % o, gl, gl, o, {}) for o in ORIGINS] + [("DX normal map, top-left package", dx, dx, "top-left", {})]
-    wrong = [(name, gl, gl, "top-left", options.get(ENGINE, options)) for name, options in ENGINE_VARIANTS.items()]
-    wrong += [("green inverted (a DirectX map declared green up)", written[0], dx, "top-left", {}),
-              ("sRGB decoded twice (a decoded albedo declared sRGB)", written[1], gl, "top-left", {})]
+    # Each wrong one stops at the first view that fails it, but for the two that show every view failing it (the
+    # flipped upload, the other green): so each part of the check is seen to fail.
+    wrong = [(name, gl, gl, "top-left", options.get(ENGINE, options), i > 0) for i, (name, options) in enumerate(ENGINE_VARIANTS.items())]
+    wrong += [("green inverted (a DirectX map declared green up)", written[0], dx, "top-left", {}, False),
+              ("sRGB decoded twice (a decoded albedo declared sRGB)", written[1], gl, "top-left", {}, True)]
     return right, wrong
 
 
@@ -195,32 +197,34 @@ def view_error(png, ref, tolerance, marker=MARKER):
     return max(errors), sum(e > 255 * tolerance for e in errors)
 
 
-def probe_check(name, material, meant, origin, options):
+def probe_check(name, material, meant, origin, options, first_failure=False):
     """`material`'s probe drawn by the engine, judged as the screen shows it: the albedo and the normal (value views,
     linear) against `hexc render` of the same view of the material `meant` (a user's wrong file is judged against what
     they meant, not against itself) within slot_tolerance, the marker at the top-left of each screenshot, and
     the normal map alone lit from the top-right by the engine's light: all 15 bumps brighter on their top and on their
-    right side (engine_check.bumps_lit). Prints the figures; returns what failed."""
+    right side (engine_check.bumps_lit). Prints the figures; returns what failed (with `first_failure`, the views after
+    the first that fails are not drawn)."""
     tag = "".join(c if c.isalnum() else "_" for c in name)
     config = {"width": PROBE_SIZE[0], "height": PROBE_SIZE[1], "uv": GL_UV, "marker": MARKER, **options}
-    figures, failed = {}, []
-    for view in ("albedo", "normal"):
+    figures, failed = [], []
+    for view in ("albedo", "normal", "lit"):
+        if failed and first_failure:
+            break
         png = os.path.join(PACKAGES, "%s_%s.png" % (tag, view))
-        PAGE.screenshot(png, module=package(material, origin), input=view, encoding="linear", **config)
-        tolerance = slot_tolerance(meant, view, view)
-        worst, over = view_error(png, reference(meant, view, view, [0, 0, 1, 1], PROBE_SIZE), tolerance)
-        figures[view] = "max %.1f/255 (bound %.2f), %d values over" % (worst, 255 * tolerance, over)
-        failed += [view] if over else []
+        if view == "lit":
+            PAGE.screenshot(png, module=package(normal_only(material), origin), light=[1.0, 1.0, 1.0], encoding="srgb",
+                            **{k: v for k, v in config.items() if k != "nan"})
+            lit = {side: ec.bumps_lit(png, side) for side in ("top", "right")}
+            figures.append("bumps lit from the top %d/15, from the right %d/15" % (lit["top"], lit["right"]))
+            failed += [] if lit["top"] == lit["right"] == 15 else ["lit bumps"]
+        else:
+            PAGE.screenshot(png, module=package(material, origin), input=view, encoding="linear", **config)
+            tolerance = slot_tolerance(meant, view, view)
+            worst, over = view_error(png, reference(meant, view, view, [0, 0, 1, 1], PROBE_SIZE), tolerance)
+            figures.append("%s max %.1f/255 (bound %.2f), %d values over" % (view, worst, 255 * tolerance, over))
+            failed += [view] if over else []
         failed += [] if marker_shown(png) else ["marker in the %s view" % view]
-    png = os.path.join(PACKAGES, "%s_lit.png" % tag)
-    PAGE.screenshot(png, module=package(normal_only(material), origin), light=[1.0, 1.0, 1.0], encoding="srgb",
-                    **{k: v for k, v in config.items() if k != "nan"})
-    lit = {side: ec.bumps_lit(png, side) for side in ("top", "right")}
-    figures["lit"] = "bumps lit from the top %d/15, from the right %d/15" % (lit["top"], lit["right"])
-    failed += [] if lit["top"] == lit["right"] == 15 else ["lit bumps"]
-    failed += [] if marker_shown(png) else ["marker in the lit view"]
-    print("  %s probe, %s: %s; %s; %s -> %s" % (ENGINE, name, figures["albedo"], figures["normal"], figures["lit"],
-                                                ", ".join(failed) or "pass"))
+    print("  %s probe, %s: %s -> %s" % (ENGINE, name, "; ".join(figures), ", ".join(failed) or "pass"))
     return failed
 
 
@@ -378,6 +382,24 @@ class Engine(unittest.TestCase):
         for name, *variant in wrong:
             with self.subTest("negative control: " + name):
                 self.assertNotEqual(probe_check(name, *variant), [])
+
+    def test_read_back_order_is_checked_by_the_marker(self):
+        """The other tests read the canvas with readPixels, whose rows WebGL documents bottom first (its origin is the
+        framebuffer's lower left), and turn them top first (Page.render). The marker the engine draws at the screen's
+        top-left checks that: those rows equal the canvas's own PNG and show the marker at the top-left; the rows in
+        the order readPixels returns them show it at the bottom-left, and the check fails on them."""
+        probe = str(ec.probe_material(os.path.join(PACKAGES, "readback"), "gl"))
+        config = dict(module=package(probe, "top-left"), width=PROBE_SIZE[0], height=PROBE_SIZE[1], uv=GL_UV, marker=MARKER,
+                      input="albedo", encoding="linear")
+        rows = [[c for p in row for c in p[:3]] for row in PAGE.render(**config)]
+        shot = os.path.join(PACKAGES, "readback", "canvas.png")
+        PAGE.screenshot(shot, **config)
+        _, _, n, png = ec.read_png(shot)
+        self.assertEqual(rows, [[row[x * n + c] for x in range(PROBE_SIZE[0]) for c in range(3)] for row in png])
+        for order, shown in (("top_first", rows), ("as_read", rows[::-1])):
+            path = os.path.join(PACKAGES, "readback", order + ".png")
+            write_png(path, *PROBE_SIZE, shown)
+            self.assertEqual(marker_shown(path), order == "top_first", order)
 
     def test_basic_material_ignores_the_slots_it_has_no_input_for(self):
         """three.js only: applyHexc on a MeshBasicMaterial (not lit: no normalMap, no roughnessMap) draws rock's albedo
