@@ -75,7 +75,8 @@ class Page:
         if ready is not True:
             raise RuntimeError("the %s driver did not load: %s" % (engine, ready))
 
-    def render(self, **config):
+    def run(self, **config):
+        """The driver's answer to `config`, failed unless the engine compiled the material's shaders."""
         result = self.driver.execute_async_script(
             "const done = arguments[arguments.length - 1];"
             "window.hexcDriver.render(arguments[0]).then(done, (e) => done({error: String(e && e.stack || e)}));", config)
@@ -83,10 +84,24 @@ class Page:
             raise AssertionError("the driver failed: " + result["error"])
         if result.get("errors", "[]") != "[]":
             raise AssertionError("the engine's shader compile failed: " + result["errors"])
+        return result
+
+    def render(self, **config):
+        """The frame as readPixels returns it, the bottom row first, turned to rows top first as WebGL documents the
+        order (readPixels' origin is the framebuffer's lower left): 8-bit RGBA lists."""
+        result = self.run(**config)
         width, height = config["width"], config["height"]
         data = base64.b64decode(result["pixels"])
         rows = [[list(data[(y * width + x) * 4:(y * width + x) * 4 + 4]) for x in range(width)] for y in range(height)]
-        return rows[::-1]  # WebGL reads the bottom row first
+        return rows[::-1]
+
+    def screenshot(self, path, **config):
+        """The frame as a user's screenshot of the canvas has it (toDataURL's PNG, as the screen shows it), written to
+        `path` as it comes; the driver's answer (its console warnings)."""
+        result = self.run(**config, png=True)
+        with open(path, "wb") as f:
+            f.write(base64.b64decode(result.pop("png")))
+        return result
 
     def quit(self):
         quit_browser(self.driver)

@@ -1,10 +1,14 @@
-"""hexc's packages for the web engines (three.js, Babylon.js), run in headless Chromium (WebGL 2 on SwiftShader): each
-slot's value through the engine's own material input matches hexc's fp64 reference, and a dome normal map under a
-known light is lit from the light's side, with the package written for either uv origin; Babylon's package on its
-WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2.
+"""hexc's packages for the web engines (three.js, Babylon.js), run in headless Chromium (WebGL 2 on SwiftShader): the
+probe (engine_check.py) drawn upright and lit from the light's side as the canvas's own PNG shows it, with an engine-drawn
+marker at the screen's top-left, and each wrong variant a user can make failing that check; each slot's value through
+the engine's own material input matches hexc's fp64 reference, and a dome normal map under a known light is lit from
+the light's side, with the package written for either uv origin; every example compiles in the engine; Babylon's
+package on its WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2.
 
-Usage: web_test.py HEXC ENGINE [--screenshot PNG]   (from the source root; ENGINE is threejs or babylon)
+Usage: web_test.py HEXC ENGINE [--screenshot PNG] [TEST ...]   (from the source root; ENGINE is threejs or babylon)
 """
+import functools
+import glob
 import itertools
 import json
 import math
@@ -18,8 +22,10 @@ import unittest
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from web_support import (E_S, NODE_MODULES, WEBGPU_FLAGS, FileServer, Page, blend_tolerance, read_pfm, texture_bounds,  # noqa: E402
-                         write_dome_normal_map, write_png)
+from web_support import (E_S, NODE_MODULES, WEBGPU_FLAGS, FileServer, Page, blend_tolerance, read_pfm, srgb_to_linear,  # noqa: E402
+                         texture_bounds, write_dome_normal_map, write_png)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "compiler", "integrations"))
+import engine_check as ec  # noqa: E402
 
 HEXC = ENGINE = SCREENSHOT = None
 SERVER = PAGE = None
@@ -51,11 +57,17 @@ def engine_uv(rect, origin):
     return [u0, 1 - v0, u1, 1 - v1]
 
 
-def reference(material, slot, output, rect, size=SIZE):
+@functools.lru_cache(maxsize=None)  # the probe's variants share their references
+def cached_reference(material, slot, output, rect, size):
     path = os.path.join(PACKAGES, "%s-%s-%s.pfm" % (os.path.basename(material), slot, output))
-    subprocess.run([HEXC, "render", material, "--reference", "--output", output, "--slot", slot, "--size", "%dx%d" % (size, size),
+    subprocess.run([HEXC, "render", material, "--reference", "--output", output, "--slot", slot, "--size", "%dx%d" % size,
                     "--uv-rect", ",".join(map(str, rect)), "-o", path, "-q"], check=True)
     return read_pfm(path)[2]
+
+
+def reference(material, slot, output, rect, size=(SIZE, SIZE)):
+    """hexc's fp64 reference of `slot` over hexc's uv rectangle `rect`: rows top first of linear RGB."""
+    return cached_reference(material, slot, output, tuple(rect), tuple(size))
 
 
 def slot_of(material, name):
@@ -78,23 +90,6 @@ def dome_material(folder):
     return path
 
 
-def mixed_material(folder):
-    """Packed slots (rock's albedo and roughness in one texture), and a non-square (96x64) DirectX-convention dome normal
-    map: what an engine package must bind and orient besides rock's plain case."""
-    os.makedirs(os.path.join(folder, "textures"), exist_ok=True)
-    write_dome_normal_map(os.path.join(folder, "textures", "dome_dx.png"), 96, 64, directx=True)
-    textures = os.path.abspath("materials/textures")
-    path = os.path.join(folder, "mixed.json")
-    with open(path, "w") as f:
-        json.dump({"name": "mixed", "pack": True, "hextiling": {"tiling": [4, 4], "rotation": 1.0, "falloff": 0.75},
-                   "slots": [{"name": "albedo", "texture": os.path.join(textures, "rock_albedo.png"), "kind": "color"},
-                             {"name": "roughness", "texture": os.path.join(textures, "rock_roughness.png"), "kind": "scalar",
-                              "channel": "r"},
-                             {"name": "normal", "texture": "textures/dome_dx.png", "kind": "normal", "flip_y": True,
-                              "hextiling": {"tiling": [2, 2]}}]}, f)
-    return path
-
-
 def lit_material(folder):
     """Rock's albedo and a dome normal map at tiling 14, both magnified in the test's uv rectangle (0.07 uv: 72 of rock's
     texels and 63 of the dome's across 96 pixels), so that the light shows the domes on the rock."""
@@ -106,6 +101,131 @@ def lit_material(folder):
                    "slots": [{"name": "albedo", "texture": os.path.abspath("materials/textures/rock_albedo.png"), "kind": "color"},
                              {"name": "normal", "texture": "textures/dome_normal.png", "kind": "normal", "hextiling": {"tiling": [14, 14]}}]}, f)
     return path
+
+
+def slot_tolerance(material, slot, output):
+    """The bound on |engine - reference| of a slot's value on the canvas (linear, 8-bit), at mip level 0."""
+    hex, texture, srgb = slot_of(material, slot)
+    spread, max_deriv, min_z = texture_bounds(texture, srgb)
+    # The canvas is RGBA8 and takes the linear value as it is: rounding to 8 bits adds at most 0.5/255.
+    # Texture filtering as in hexc edit's page test (tests/edit/page_test.py): E_S per sample, through the
+    # blend's weights by blend_tolerance (no blend without hex-tiling). SwiftShader and ANGLE filter as lavapipe does at
+    # level 0, and an sRGB texture is decoded before filtering (three.js: SRGB8_ALPHA8; Babylon: useSRGBBuffer).
+    blend = blend_tolerance if hex.get("enabled", True) else lambda ex, em, hex, spread: ex
+    if output == "normal":
+        # Listing 9's derivative d = -xy / z is off by at most ed = 2 E_S (1 + max|d|) / min z per texel, the
+        # slope metric by sqrt(2) ed, the blend's samples spread by 2 max|d| per component. n = (-d, 1) / |(-d, 1)|
+        # moves by at most |dd| (the normalisation's derivative has norm 1 / |(-d, 1)| <= 1), and |dd| <=
+        # sqrt(2) times the per-component bound; the encoding n * 0.5 + 0.5 halves it. The engine's tangent frame
+        # on this camera-facing square is exact to float32 rounding (T = +x, B = +y, N = +z).
+        ed = 2 * E_S * (1 + max_deriv) / min_z
+        return 0.5 * math.sqrt(2) * blend(ed, math.sqrt(2) * ed, hex, 2 * max_deriv) + 0.5 / 255
+    return blend(E_S, E_S, hex, spread) + 0.5 / 255
+
+
+# The probe (engine_check.probe_material) in absolute screen orientation: a canvas of the albedo's aspect at 2 pixels a
+# texel (magnified: mip level 0 only), the square filling it with the engine's own uv (0, 0) at the bottom-left, and a
+# red marker of MARKER pixels that the engine draws at the screen's top-left in the same frame.
+PROBE_SIZE = (2 * ec.PROBE_ALBEDO[0], 2 * ec.PROBE_ALBEDO[1])
+MARKER = 12
+GL_UV = [0.0, 1.0, 1.0, 0.0]  # the square's uv [u0, v at the top, u1, v at the bottom]: three.js's and Babylon's own
+# The wrong variants a user can make, and what the driver does for each: the package's textures uploaded with the
+# engine's default row order, a mesh whose uv run right to left, a slot whose value is NaN (the other two, the green
+# convention and an sRGB file decoded twice, are materials: probe_variants).
+ENGINE_VARIANTS = {"flipped v (textures loaded with the engine's default flipY / invertY)": {"threejs": {"flipY": True}, "babylon": {"invertY": True}},
+                   "mirrored u (a mesh with u running right to left)": {"uv": [1.0, 1.0, 0.0, 0.0]},
+                   "flipped v (a mesh with glTF's uv, v down, as three.js's GLTFLoader keeps it)": {"uv": [0.0, 0.0, 1.0, 1.0]},
+                   "a NaN slot": {"nan": True}}
+
+
+def probe_variants(folder):
+    """The probe materials: (name, material, the material meant, uv origin, engine options), the right ones first,
+    then the wrong ones (with probe_check's `first_failure`)."""
+    gl, dx = ec.probe_material(folder, "gl"), ec.probe_material(folder, "dx")
+    with open(dx) as f:
+        wrong_green = json.load(f)
+    wrong_green["name"] = "probe_dx_declared_gl"  # the DirectX map without `flip_y`: the other green convention
+    del wrong_green["slots"][1]["flip_y"]
+    with open(gl) as f:
+        twice = json.load(f)
+    twice["name"] = "probe_srgb_twice"  # an albedo saved decoded (linear) and still declared sRGB: decoded twice
+    twice["slots"][0]["texture"] = "probe_albedo_decoded.png"
+    ec.write_png(os.path.join(folder, "probe_albedo_decoded.png"), *ec.PROBE_ALBEDO,
+                 lambda x, y: tuple(round(255 * srgb_to_linear(c / 255)) for c in ec.probe_glyph(x, y)))
+    written = []
+    for doc in (wrong_green, twice):
+        written.append(os.path.join(folder, doc["name"] + ".json"))
+        with open(written[-1], "w") as f:
+            json.dump(doc, f)
+    gl, dx = str(gl), str(dx)
+    right = [("GL normal map, %s package" % o, gl, gl, o, {}) for o in ORIGINS] + [("DX normal map, top-left package", dx, dx, "top-left", {})]
+    # Each wrong one stops at the first view that fails it, but for the two that show every view failing it (the
+    # flipped upload, the other green): so each part of the check is seen to fail.
+    wrong = [(name, gl, gl, "top-left", options.get(ENGINE, options), i > 0) for i, (name, options) in enumerate(ENGINE_VARIANTS.items())]
+    wrong += [("green inverted (a DirectX map declared green up)", written[0], dx, "top-left", {}, False),
+              ("sRGB decoded twice (a decoded albedo declared sRGB)", written[1], gl, "top-left", {}, True)]
+    return right, wrong
+
+
+def normal_only(material):
+    """The probe's normal slot alone (its albedo's glyph would outweigh the light on the bumps' sides)."""
+    with open(material) as f:
+        doc = json.load(f)
+    doc["name"] += "_normal"
+    doc["slots"] = [s for s in doc["slots"] if s["kind"] == "normal"]
+    path = material.replace(".json", "_normal.json")
+    with open(path, "w") as f:
+        json.dump(doc, f)
+    return path
+
+
+def marker_shown(png):
+    """Whether the marker is where the engine drew it, at the screen's top-left, and at no other corner."""
+    w, h, n, rows = ec.read_png(png)
+    def red(x0, y0):
+        return all(rows[y][x * n] >= 250 and rows[y][x * n + 1] <= 5 and rows[y][x * n + 2] <= 5
+                   for y in range(y0, y0 + MARKER) for x in range(x0, x0 + MARKER))
+    return red(0, 0) and not any(red(x, y) for x, y in ((w - MARKER, 0), (0, h - MARKER), (w - MARKER, h - MARKER)))
+
+
+def view_error(png, ref, tolerance, marker=MARKER):
+    """(max error, values over `tolerance`) of the engine's screenshot against the reference, in 8-bit steps, outside
+    the marker's square."""
+    _, _, n, rows = ec.read_png(png)
+    errors = [abs(rows[y][x * n + c] - 255 * ref[y][x][c]) for y in range(len(ref)) for x in range(len(ref[0]))
+              for c in range(3) if x >= marker or y >= marker]
+    return max(errors), sum(e > 255 * tolerance for e in errors)
+
+
+def probe_check(name, material, meant, origin, options, first_failure=False):
+    """`material`'s probe drawn by the engine, judged as the screen shows it: the albedo and the normal (value views,
+    linear) against `hexc render` of the same view of the material `meant` (a user's wrong file is judged against what
+    they meant, not against itself) within slot_tolerance, the marker at the top-left of each screenshot, and
+    the normal map alone lit from the top-right by the engine's light: all 15 bumps brighter on their top and on their
+    right side (engine_check.bumps_lit). Prints the figures; returns what failed (with `first_failure`, the views after
+    the first that fails are not drawn)."""
+    tag = "".join(c if c.isalnum() else "_" for c in name)
+    config = {"width": PROBE_SIZE[0], "height": PROBE_SIZE[1], "uv": GL_UV, "marker": MARKER, **options}
+    figures, failed = [], []
+    for view in ("albedo", "normal", "lit"):
+        if failed and first_failure:
+            break
+        png = os.path.join(PACKAGES, "%s_%s.png" % (tag, view))
+        if view == "lit":
+            PAGE.screenshot(png, module=package(normal_only(material), origin), light=[1.0, 1.0, 1.0], encoding="srgb",
+                            **{k: v for k, v in config.items() if k != "nan"})
+            lit = {side: ec.bumps_lit(png, side) for side in ("top", "right")}
+            figures.append("bumps lit from the top %d/15, from the right %d/15" % (lit["top"], lit["right"]))
+            failed += [] if lit["top"] == lit["right"] == 15 else ["lit bumps"]
+        else:
+            PAGE.screenshot(png, module=package(material, origin), input=view, encoding="linear", **config)
+            tolerance = slot_tolerance(meant, view, view)
+            worst, over = view_error(png, reference(meant, view, view, [0, 0, 1, 1], PROBE_SIZE), tolerance)
+            figures.append("%s max %.1f/255 (bound %.2f), %d values over" % (view, worst, 255 * tolerance, over))
+            failed += [view] if over else []
+        failed += [] if marker_shown(png) else ["marker in the %s view" % view]
+    print("  %s probe, %s: %s -> %s" % (ENGINE, name, "; ".join(figures), ", ".join(failed) or "pass"))
+    return failed
 
 
 def correlation(a, b):
@@ -124,33 +244,22 @@ class Engine(unittest.TestCase):
 
     def test_values_match_the_reference(self):
         """Each slot through the engine's input, unlit, against the fp64 reference (linear values, 8-bit canvas)."""
-        rock, dome, mixed = "materials/rock.json", dome_material(PACKAGES), mixed_material(PACKAGES)
+        rock, dome, tiles = "materials/rock.json", dome_material(PACKAGES), "materials/tiles.json"
+        mixed = str(ec.mixed_material(os.path.join(PACKAGES, "mixed")))  # packed, 300 x 170, a DirectX normal map
+        probe = str(ec.probe_material(os.path.join(PACKAGES, "probe_hex"), "dx", hextiling=True))  # 96 x 64, 100 x 60
         # (material, slot, the engine input the driver reads, the reference's output, texels per uv unit along u)
         cases = (("albedo", rock, "albedo", "albedo", 1024), ("roughness", rock, "roughness", "albedo", 1024),
-                 ("normal", dome, "normal", "normal", 128), ("albedo", mixed, "albedo", "albedo", 1024),
-                 ("roughness", mixed, "roughness", "albedo", 1024), ("normal", mixed, "normal", "normal", 192))
+                 ("normal", dome, "normal", "normal", 128), ("albedo", tiles, "albedo", "albedo", 768),
+                 ("albedo", mixed, "albedo", "albedo", 900), ("roughness", mixed, "roughness", "albedo", 900),
+                 ("normal", mixed, "normal", "normal", 900), ("albedo", probe, "albedo", "albedo", 288),
+                 ("normal", probe, "normal", "normal", 300))
         for (slot, material, engine_input, output, texels), origin in itertools.product(cases, ORIGINS):
             with self.subTest(material=os.path.basename(material), slot=slot, origin=origin):
                 rect = [0.3, 0.45, 0.3 + SIZE * 0.75 / texels, 0.45 + SIZE * 0.75 / texels]
                 got = PAGE.render(module=package(material, origin), width=SIZE, height=SIZE, uv=engine_uv(rect, origin),
                                   input=engine_input, encoding="linear")
                 ref = reference(material, slot, output, rect)
-                hex, texture, srgb = slot_of(material, slot)
-                spread, max_deriv, min_z = texture_bounds(texture, srgb)
-                # The canvas is RGBA8 and takes the linear value as it is: rounding to 8 bits adds at most 0.5/255.
-                # Texture filtering as in hexc edit's page test (tests/edit/page_test.py): E_S per sample, through the
-                # blend's weights by blend_tolerance. SwiftShader and ANGLE filter as lavapipe does at level 0, and an
-                # sRGB texture is decoded before filtering (three.js: SRGB8_ALPHA8; Babylon: useSRGBBuffer).
-                if output == "normal":
-                    # Listing 9's derivative d = -xy / z is off by at most ed = 2 E_S (1 + max|d|) / min z per texel, the
-                    # slope metric by sqrt(2) ed, the blend's samples spread by 2 max|d| per component. n = (-d, 1) / |(-d, 1)|
-                    # moves by at most |dd| (the normalisation's derivative has norm 1 / |(-d, 1)| <= 1), and |dd| <=
-                    # sqrt(2) times the per-component bound; the encoding n * 0.5 + 0.5 halves it. The engine's tangent frame
-                    # on this camera-facing square is exact to float32 rounding (T = +x, B = +y, N = +z).
-                    ed = 2 * E_S * (1 + max_deriv) / min_z
-                    tolerance = 0.5 * math.sqrt(2) * blend_tolerance(ed, math.sqrt(2) * ed, hex, 2 * max_deriv) + 0.5 / 255
-                else:
-                    tolerance = blend_tolerance(E_S, E_S, hex, spread) + 0.5 / 255
+                tolerance = slot_tolerance(material, slot, output)
                 errors = [abs(g[c] / 255 - r[c]) for gr, rr in zip(got, ref) for g, r in zip(gr, rr) for c in range(3)]
                 worst, mean = max(errors), sum(errors) / len(errors)
                 print("  %s %-10s %-9s %-11s max error %.2f/255, mean %.3f/255, bound %.2f/255"
@@ -263,6 +372,87 @@ class Engine(unittest.TestCase):
             self.assertGreater(r_normal, 0.9)
             self.assertGreater(r_albedo, 0.9)
 
+    def test_probe_upright_and_lit_from_the_light_side(self):
+        """The probe (an F glyph, a hue gradient, 5 x 3 bumps) at each uv origin and in both green conventions passes
+        probe_check as the screen shows it; each wrong variant a user can make fails it."""
+        right, wrong = probe_variants(os.path.join(PACKAGES, "probe"))
+        for name, *variant in right:
+            with self.subTest(name):
+                self.assertEqual(probe_check(name, *variant), [])
+        for name, *variant in wrong:
+            with self.subTest("negative control: " + name):
+                self.assertNotEqual(probe_check(name, *variant), [])
+
+    def test_read_back_order_is_checked_by_the_marker(self):
+        """The other tests read the canvas with readPixels, whose rows WebGL documents bottom first (its origin is the
+        framebuffer's lower left), and turn them top first (Page.render). The marker the engine draws at the screen's
+        top-left checks that: those rows equal the canvas's own PNG and show the marker at the top-left; the rows in
+        the order readPixels returns them show it at the bottom-left, and the check fails on them."""
+        probe = str(ec.probe_material(os.path.join(PACKAGES, "readback"), "gl"))
+        config = dict(module=package(probe, "top-left"), width=PROBE_SIZE[0], height=PROBE_SIZE[1], uv=GL_UV, marker=MARKER,
+                      input="albedo", encoding="linear")
+        rows = [[c for p in row for c in p[:3]] for row in PAGE.render(**config)]
+        shot = os.path.join(PACKAGES, "readback", "canvas.png")
+        PAGE.screenshot(shot, **config)
+        _, _, n, png = ec.read_png(shot)
+        self.assertEqual(rows, [[row[x * n + c] for x in range(PROBE_SIZE[0]) for c in range(3)] for row in png])
+        for order, shown in (("top_first", rows), ("as_read", rows[::-1])):
+            path = os.path.join(PACKAGES, "readback", order + ".png")
+            write_png(path, *PROBE_SIZE, shown)
+            self.assertEqual(marker_shown(path), order == "top_first", order)
+
+    def test_basic_material_ignores_the_slots_it_has_no_input_for(self):
+        """three.js only: applyHexc on a MeshBasicMaterial (not lit: no normalMap, no roughnessMap) draws rock's albedo
+        and says, for each slot it leaves out, that the material type has no input for it."""
+        if ENGINE != "threejs":
+            self.skipTest("three.js's material types")
+        rect = [0.3, 0.45, 0.3 + SIZE * 0.75 / 1024, 0.45 + SIZE * 0.75 / 1024]
+        path = os.path.join(PACKAGES, "basic.png")
+        result = PAGE.screenshot(path, module=package("materials/rock.json", "top-left"), width=SIZE, height=SIZE,
+                                 uv=engine_uv(rect, "top-left"), encoding="linear", materialType="MeshBasicMaterial")
+        for slot, property in (("normal", "normalMap"), ("roughness", "roughnessMap")):
+            self.assertIn("hexc: MeshBasicMaterial has no %s, so slot %s of rock is ignored" % (property, slot), "\n".join(result["warnings"]))
+        tolerance = slot_tolerance("materials/rock.json", "albedo", "albedo")
+        worst, over = view_error(path, reference("materials/rock.json", "albedo", "albedo", rect), tolerance, marker=0)
+        print("  three.js MeshBasicMaterial: rock's albedo max error %.2f/255, bound %.2f/255; warnings: %s"
+              % (worst, 255 * tolerance, result["warnings"]))
+        self.assertEqual(over, 0)
+
+    def test_every_example_compiles_in_the_engine(self):
+        """Every example material under materials/ through the package (top-left, then bottom-left, alternately),
+        compiled by the engine and drawn lit once: no shader error, not a flat image. Only what docs/engines.md says the
+        package refuses is left out (layered and triplanar materials: HX300), and it is listed."""
+        examples = sorted(glob.glob("materials/*.json") + glob.glob("materials/terrain/*.json") + glob.glob("materials/mtlx/*.mtlx"))
+        drawn, skipped = [], []
+        for i, material in enumerate(examples):
+            doc = {}
+            if material.endswith(".json"):
+                with open(material) as f:
+                    doc = json.load(f)
+                if "slots" not in doc and "layers" not in doc:
+                    continue  # the schema: not a material
+            origin = ORIGINS[i % 2]
+            run = subprocess.run([HEXC, material, "--engine", ENGINE, "-q", "-o", os.path.join(PACKAGES, "matrix", str(i))]
+                                 + (["--uv-bottom-left"] if origin == "bottom-left" else []), capture_output=True, text=True)
+            refused = {"layers": "layered: HX300, docs/engines.md#layered-materials",
+                       "projection": "triplanar, no functions output: HX300, docs/engines.md"}
+            why = [refused[k] for k in refused if k in doc or k in doc.get("hextiling", {})]
+            if run.returncode and "error[HX300]" in run.stderr and why:
+                skipped.append("%s (%s)" % (material, why[0]))
+                continue
+            with self.subTest(material):
+                self.assertEqual(run.returncode, 0, run.stderr)
+                name = next(n for n in os.listdir(os.path.join(PACKAGES, "matrix", str(i), ENGINE)) if n.endswith(".%s.js" % MODULE_SUFFIX[ENGINE]))
+                got = PAGE.render(module="/pkg/matrix/%d/%s/%s" % (i, ENGINE, name), width=32, height=32, uv=GL_UV,
+                                  light=[1.0, 1.0, 0.3], encoding="srgb")  # grazing: a normal map alone shows
+                values = [p[c] for row in got for p in row for c in range(3)]
+                self.assertGreater(max(values) - min(values), 10, "a flat image")
+                drawn.append("%s (%s)" % (material, origin))
+        print("  %s: %d examples compiled and drawn: %s" % (ENGINE, len(drawn), ", ".join(drawn)))
+        print("  %s: skipped as the docs say: %s" % (ENGINE, ", ".join(skipped) or "none"))
+        print("  %s: not examples: materials/invalid (refused by design), materials/mtlx/corpus and materials/mtlx/invalid "
+              "(the MaterialX importer's cases), materials/scenes and materials/layouts (a scene, a layout)" % ENGINE)
+
     def test_lit_screenshot(self):
         """The rock on a sphere, lit by the engine from the upper right, sRGB as a canvas shows it: for docs/engines.md."""
         if not SCREENSHOT:
@@ -286,7 +476,7 @@ def main():
     try:
         PAGE = Page(SERVER, ENGINE)
         try:
-            result = unittest.main(argv=[sys.argv[0], "-v"], exit=False).result
+            result = unittest.main(argv=[sys.argv[0], "-v", *args[2:]], exit=False).result  # then test names, if any
         finally:
             PAGE.quit()
     finally:

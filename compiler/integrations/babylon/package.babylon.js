@@ -79,8 +79,10 @@ function babylonWgsl(wgsl) {
     .replace(new RegExp(`(\\w+), ${sampler}\\b`, 'g'), '$1, $1Sampler');
 }
 
-// Loads the slots' textures as hexc samples them: repeat, trilinear, the image's first row at t = 0 (invertY off,
-// whatever the uv origin: hexc flips v itself for bottom-left), sRGB ones decoded by the sampler before filtering.
+// Loads the slots' textures as hexc samples them: repeat, trilinear and isotropic (Babylon's default anisotropy of 4
+// moves hex-tiling's rotated gradients off hexc's reference by up to 8/255 on a non-square texture), the image's first
+// row at t = 0 (invertY off, whatever the uv origin: hexc flips v itself for bottom-left), sRGB ones decoded by the
+// sampler before filtering.
 export async function loadTextures(scene, base = import.meta.url) {
   const textures = {};
   await Promise.all(hexc.textures.map((t) => new Promise((resolve, reject) => {
@@ -88,6 +90,7 @@ export async function loadTextures(scene, base = import.meta.url) {
       noMipmap: false, invertY: false, samplingMode: Texture.TRILINEAR_SAMPLINGMODE, useSRGBBuffer: t.colorspace === 'srgb',
       onLoad: resolve, onError: (message) => reject(new Error(`hexc: ${t.file}: ${message}`)),
     });
+    textures[t.uniform].anisotropicFilteringLevel = 1;
   })));
   return textures;
 }

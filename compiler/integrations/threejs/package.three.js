@@ -19,14 +19,28 @@ function replaced(text, what, by) {
   if (!text.includes(what)) throw new Error(`hexc: this three.js has no \`${what}\` (the package is written for r187)`);
   return text.replace(what, by);
 }
+// Each role: the material property three.js gives the material types that take that input, the chunk it reads it in,
+// and what replaces the chunk given the slot's call.
 const roles = {
-  albedo: ['map_fragment', (call) => `diffuseColor *= ${call};`],
-  roughness: ['roughnessmap_fragment', (call) => `float roughnessFactor = roughness * ${call};`],
-  metallic: ['metalnessmap_fragment', (call) => `float metalnessFactor = metalness * ${call};`],
-  ao: ['aomap_fragment', (call) => `reflectedLight.indirectDiffuse *= ${call};`],
-  emission: ['emissivemap_fragment', (call) => `totalEmissiveRadiance *= ${call}.rgb;`],
-  normal: ['normal_fragment_maps', (call) => replaced(THREE.ShaderChunk.normal_fragment_maps, kNormalRead, `vec3 mapN = ${call};`)],
+  albedo: ['map', 'map_fragment', (call) => `diffuseColor *= ${call};`],
+  roughness: ['roughnessMap', 'roughnessmap_fragment', (call) => `float roughnessFactor = roughness * ${call};`],
+  metallic: ['metalnessMap', 'metalnessmap_fragment', (call) => `float metalnessFactor = metalness * ${call};`],
+  ao: ['aoMap', 'aomap_fragment', (call) => `reflectedLight.indirectDiffuse *= ${call};`],
+  emission: ['emissiveMap', 'emissivemap_fragment', (call) => `totalEmissiveRadiance *= ${call}.rgb;`],
+  normal: ['normalMap', 'normal_fragment_maps', (call) => replaced(THREE.ShaderChunk.normal_fragment_maps, kNormalRead, `vec3 mapN = ${call};`)],
 };
+
+// The slots `material`'s type has an input for. A type without one (MeshBasicMaterial has no normalMap: it is not lit)
+// has no chunk to replace, so such a slot is left out with a warning, as a slot with no three.js input is.
+function slotsTaken(material) {
+  return hexc.slots.filter((slot) => {
+    const [property] = roles[slot.role];
+    if (property in material) return true;
+    console.warn(`hexc: ${material.type} has no ${property}, so slot ${slot.name} of ${hexc.material} is ignored: `
+      + `give it a material type with a ${property} (MeshStandardMaterial takes every slot)`);
+    return false;
+  });
+}
 
 // The uv hexc's functions take, from three.js's (v up the image, origin at the bottom-left).
 function hexcUv() {
@@ -52,17 +66,18 @@ export async function loadTextures(base = import.meta.url, loader = new THREE.Te
 // Gives `material` the hex-tiled slots: its shader chunks for each slot's role read hexc's functions instead.
 export function applyHexc(material, textures) {
   material.defines = { ...material.defines, USE_UV: '' };
+  const slots = slotsTaken(material);
   // three.js builds the tangent frame and the normal uniforms only for a material with a normal map: the hexc
   // texture stands in for it (its texels are never read through it).
-  const normal = hexc.slots.find((s) => s.role === 'normal');
+  const normal = slots.find((s) => s.role === 'normal');
   if (normal && !material.normalMap) material.normalMap = textures[normal.uniform];
   const previous = material.onBeforeCompile;
   material.onBeforeCompile = (shader, renderer) => {
     previous.call(material, shader, renderer);
     for (const [uniform, texture] of Object.entries(textures)) shader.uniforms[uniform] = { value: texture };
     let fragment = replaced(shader.fragmentShader, 'void main() {', `${hexc.glsl}\nvoid main() {`);
-    for (const slot of hexc.slots) {
-      const [chunk, code] = roles[slot.role];
+    for (const slot of slots) {
+      const [, chunk, code] = roles[slot.role];
       fragment = replaced(fragment, `#include <${chunk}>`, code(slot.call.replace('UV', hexcUv())));
     }
     shader.fragmentShader = fragment;

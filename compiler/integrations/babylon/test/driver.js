@@ -1,7 +1,10 @@
 // The Babylon.js test driver: draws a package's material on a camera-facing square and reads the canvas back, with
 // Babylon's WebGL 2 engine or, given `webgpu`, its WebGPU engine.
 // `render` draws the uv rectangle given in Babylon's uv (v up), top row first; `input` replaces the output by one input
-// as PBRMaterial's shader holds it after the package filled it (linear values, after lighting and image processing).
+// as PBRMaterial's shader holds it after the package filled it (linear values, after lighting and image processing;
+// `nan`: times a NaN). `marker`: a red square of that many pixels that Babylon draws at the screen's top-left in the same
+// frame; `png`: the canvas as a user's screenshot gets it (toDataURL, top row first) instead of readPixels' rows;
+// `invertY`: the package's textures loaded with Babylon's default invertY = true, the plugin put on a PBRMaterial.
 import { Camera } from '@babylonjs/core/Cameras/camera.js';
 import { FreeCamera } from '@babylonjs/core/Cameras/freeCamera.js';
 import { Engine } from '@babylonjs/core/Engines/engine.js';
@@ -9,6 +12,9 @@ import { WebGPUEngine } from '@babylonjs/core/Engines/webgpuEngine.js';
 import { DirectionalLight } from '@babylonjs/core/Lights/directionalLight.js';
 import { HemisphericLight } from '@babylonjs/core/Lights/hemisphericLight.js';
 import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
+import { StandardMaterial } from '@babylonjs/core/Materials/standardMaterial.js';
+import { PBRMaterial } from '@babylonjs/core/Materials/PBR/pbrMaterial.js';
+import { Texture } from '@babylonjs/core/Materials/Textures/texture.js';
 import { Color3, Color4 } from '@babylonjs/core/Maths/math.color.js';
 import { Vector3 } from '@babylonjs/core/Maths/math.vector.js';
 import { CreateSphere } from '@babylonjs/core/Meshes/Builders/sphereBuilder.js';
@@ -24,9 +30,9 @@ const kProbes = {
 };
 
 class Probe extends MaterialPluginBase {
-  constructor(material, input) {
+  constructor(material, input, nan) {
     super(material, 'HexcProbe', 300, { HEXC_PROBE: false });
-    this.input = input;
+    this.value = nan ? `${kProbes[input]} * uintBitsToFloat(0x7fc00000u)` : kProbes[input];
     this._enable(true);
   }
 
@@ -35,7 +41,7 @@ class Probe extends MaterialPluginBase {
   prepareDefines(defines) { defines.HEXC_PROBE = true; }
 
   getCustomCode(shaderType) {
-    return shaderType === 'fragment' ? { CUSTOM_FRAGMENT_BEFORE_FRAGCOLOR: `finalColor = vec4(${kProbes[this.input]}, 1.0);` } : null;
+    return shaderType === 'fragment' ? { CUSTOM_FRAGMENT_BEFORE_FRAGCOLOR: `finalColor = vec4(${this.value}, 1.0);` } : null;
   }
 }
 
@@ -50,6 +56,35 @@ function square(scene, uv) {
   const mesh = new Mesh('square', scene);
   data.applyToMesh(mesh);
   return mesh;
+}
+
+// A red square of `size` pixels at the top-left of a `width` x `height` canvas, in front of the material (z < 0).
+function marker(scene, size, width, height) {
+  const [w, h] = [2 * size / width, 2 * size / height];
+  const data = new VertexData();
+  data.positions = [-1, 1, -1, -1 + w, 1, -1, -1, 1 - h, -1, -1 + w, 1 - h, -1];
+  data.indices = [0, 1, 2, 1, 3, 2];
+  const mesh = new Mesh('marker', scene);
+  data.applyToMesh(mesh);
+  const red = new StandardMaterial('marker', scene);
+  Object.assign(red, { emissiveColor: new Color3(1, 0, 0), disableLighting: true, backFaceCulling: false });
+  mesh.material = red;
+}
+
+// A PBRMaterial with the plugin and the package's textures loaded as loadTextures does, but with invertY on (Babylon's
+// default, which a user who loads the textures themselves gets).
+async function invertedMaterial(pkg, module, scene) {
+  const textures = {};
+  await Promise.all(pkg.data.textures.map((t) => new Promise((resolve, reject) => {
+    textures[t.uniform] = new Texture(new URL(t.file, new URL(module, location.href)).href, scene, {
+      invertY: true, samplingMode: Texture.TRILINEAR_SAMPLINGMODE, useSRGBBuffer: t.colorspace === 'srgb', onLoad: resolve, onError: reject,
+    });
+    textures[t.uniform].anisotropicFilteringLevel = 1;
+  })));
+  const material = new PBRMaterial('hexc', scene);
+  Object.assign(material, { metallic: 0, roughness: 1 });
+  new pkg.HexcPlugin(material, textures);
+  return material;
 }
 
 // A workaround for the test environment only, not for a package's users: headless Chromium on SwiftShader has no
@@ -105,7 +140,7 @@ async function readPixels(engine, width, height) {
 window.hexcDriver = {
   // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light;
   // `diffuse`: no specular highlight from the light (PBRMaterial's specularIntensity 0).
-  async render({ module, width, height, uv, input, light, encoding, sphere, diffuse, webgpu }) {
+  async render({ module, width, height, uv, input, light, encoding, sphere, diffuse, webgpu, nan, invertY, png, ...options }) {
     const errors = [];
     const consoleError = console.error;
     console.error = (...args) => { errors.push(args.join(' ')); consoleError(...args); };
@@ -121,15 +156,20 @@ window.hexcDriver = {
       camera.setTarget(Vector3.Zero());
       camera.mode = Camera.ORTHOGRAPHIC_CAMERA;
       Object.assign(camera, { orthoLeft: -1, orthoRight: 1, orthoTop: 1, orthoBottom: -1, minZ: 0.1, maxZ: 10 });
-      const material = await pkg.createMaterial('hexc', scene);
+      const material = invertY ? await invertedMaterial(pkg, module, scene) : await pkg.createMaterial('hexc', scene);
       material.backFaceCulling = false;
       if (diffuse) material.specularIntensity = 0;
-      if (input) new Probe(material, input);
+      if (input) new Probe(material, input, nan);
+      if (options.marker) marker(scene, options.marker, width, height);
       if (light) new DirectionalLight('sun', new Vector3(-light[0], -light[1], light[2]), scene).intensity = 2.5; // towards the light: (x, y, -z)
       (sphere ? CreateSphere('sphere', { diameter: 1.9, segments: 48 }, scene) : square(scene, uv)).material = material;
       if (sphere) new HemisphericLight('sky', new Vector3(0, 1, 0), scene).intensity = 0.4;
       await Promise.race([scene.whenReadyAsync(), new Promise((_, reject) => setTimeout(() => reject(new Error('not ready: ' + errors.join('\n'))), 60000))]);
       scene.render();
+      if (png) {
+        const url = canvas.toDataURL('image/png');
+        return { png: url.slice(url.indexOf(',') + 1), errors: JSON.stringify(errors) };
+      }
       const pixels = await readPixels(engine, width, height);
       let text = '';
       for (let i = 0; i < pixels.length; i += 0x8000) text += String.fromCharCode(...pixels.subarray(i, i + 0x8000));

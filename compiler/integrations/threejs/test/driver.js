@@ -1,6 +1,10 @@
 // The three.js test driver: draws a package's material on a camera-facing square and reads the canvas back.
 // `render` draws the uv rectangle given in three.js's uv (v up), top row first; `probe` replaces the lit output by one
-// input as three.js's shader holds it after the package filled it (linear values, no lighting).
+// input as three.js's shader holds it after the package filled it (linear values, no lighting; `nan`: times a NaN).
+// `marker`: a red square of that many pixels that three.js draws at the screen's top-left in the same frame; `png`:
+// the canvas as a user's screenshot gets it (toDataURL, top row first) instead of readPixels' rows; `flipY`: the
+// package's textures uploaded with three.js's default flipY = true; `materialType`: applyHexc on a new material of
+// that type instead of createMaterial (the console's warnings are returned).
 import * as THREE from 'three';
 
 const kProbes = {
@@ -10,14 +14,44 @@ const kProbes = {
   normal: 'normal * 0.5 + 0.5', // view space: on this square, T = +x, B = +y, N = +z
 };
 
-function probe(material, input) {
+function probe(material, input, nan) {
   const previous = material.onBeforeCompile;
+  const value = nan ? `${kProbes[input]} * uintBitsToFloat(0x7fc00000u)` : kProbes[input];
   material.onBeforeCompile = (shader, renderer) => {
     previous.call(material, shader, renderer);
-    shader.fragmentShader = shader.fragmentShader.replace('#include <opaque_fragment>', `gl_FragColor = vec4(${kProbes[input]}, 1.0);`);
+    shader.fragmentShader = shader.fragmentShader.replace('#include <opaque_fragment>', `gl_FragColor = vec4(${value}, 1.0);`);
   };
   const key = material.customProgramCacheKey.bind(material);
-  material.customProgramCacheKey = () => `${key()}|probe:${input}`;
+  material.customProgramCacheKey = () => `${key()}|probe:${input}:${!!nan}`;
+}
+
+// A red square of `size` pixels at the top-left of a `width` x `height` canvas, in front of the material.
+function marker(size, width, height) {
+  const geometry = new THREE.PlaneGeometry(2 * size / width, 2 * size / height);
+  geometry.translate(-1 + size / width, 1 - size / height, 1);
+  return new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ color: 0xff0000 }));
+}
+
+// The package's material as the test asks for it, and the console's warnings while it is made.
+async function material(pkg, { input, nan, flipY, materialType }) {
+  const warnings = [];
+  const consoleWarn = console.warn;
+  console.warn = (...args) => { warnings.push(args.join(' ')); consoleWarn(...args); };
+  try {
+    const parameters = { metalness: 0, roughness: 1 };
+    let made;
+    if (materialType || flipY) { // as docs/engines.md's "a material of your own"
+      const textures = await pkg.loadTextures();
+      for (const texture of flipY ? Object.values(textures) : []) texture.flipY = true;
+      made = pkg.applyHexc(new THREE[materialType ?? 'MeshStandardMaterial'](materialType ? {} : parameters), textures);
+    } else {
+      made = await pkg.createMaterial(parameters);
+    }
+    if (input) probe(made, input, nan);
+    return [made, warnings];
+  } finally {
+    console.warn = consoleWarn;
+  }
 }
 
 // A 2x2 square in front of an orthographic camera; its corners' uv span `uv` = [u0, vTop, u1, vBottom].
@@ -31,7 +65,7 @@ function square(uv) {
 
 window.hexcDriver = {
   // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light.
-  async render({ module, width, height, uv, input, light, encoding, sphere }) {
+  async render({ module, width, height, uv, input, light, encoding, sphere, nan, flipY, materialType, png, ...options }) {
     const pkg = await import(module);
     const canvas = document.createElement('canvas');
     canvas.width = width;
@@ -39,10 +73,10 @@ window.hexcDriver = {
     document.body.appendChild(canvas);
     const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
     renderer.outputColorSpace = encoding === 'srgb' ? THREE.SRGBColorSpace : THREE.LinearSRGBColorSpace;
-    const material = await pkg.createMaterial({ metalness: 0, roughness: 1 });
-    if (input) probe(material, input);
+    const [made, warnings] = await material(pkg, { input, nan, flipY, materialType });
     const scene = new THREE.Scene();
-    scene.add(new THREE.Mesh(sphere ? new THREE.SphereGeometry(0.95, 96, 48) : square(uv), material));
+    scene.add(new THREE.Mesh(sphere ? new THREE.SphereGeometry(0.95, 96, 48) : square(uv), made));
+    if (options.marker) scene.add(marker(options.marker, width, height));
     if (sphere) scene.add(new THREE.AmbientLight(0xffffff, 0.4));
     if (light) {
       const sun = new THREE.DirectionalLight(0xffffff, 2.5);
@@ -52,14 +86,20 @@ window.hexcDriver = {
     const camera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0.1, 10);
     camera.position.z = 3; // orthographic: only keeps the sphere (radius 0.95) beyond the near plane
     renderer.render(scene, camera);
+    const errors = renderer.info.programs.map((p) => p.diagnostics).filter((d) => d);
+    if (png) {
+      const url = canvas.toDataURL('image/png');
+      renderer.dispose();
+      canvas.remove();
+      return { png: url.slice(url.indexOf(',') + 1), errors: JSON.stringify(errors), warnings };
+    }
     const gl = renderer.getContext();
     const pixels = new Uint8Array(width * height * 4);
     gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-    const errors = renderer.info.programs.map((p) => p.diagnostics).filter((d) => d);
     renderer.dispose();
     canvas.remove();
     let text = '';
     for (let i = 0; i < pixels.length; i += 0x8000) text += String.fromCharCode(...pixels.subarray(i, i + 0x8000));
-    return { pixels: btoa(text), errors: JSON.stringify(errors) };
+    return { pixels: btoa(text), errors: JSON.stringify(errors), warnings };
   },
 };
