@@ -5,6 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
+#include <sstream>
+
 #include "hexc/compiler.h"
 #include "hexc/engines.h"
 #include "hexc/spirv.h"
@@ -177,6 +180,19 @@ TEST(EnginePackages, GodotGetsItsDialectAndItsInputs) {
                   std::string::npos);
         EXPECT_NE(text.find(engine == Engine::Godot3 ? "uniform sampler2D hexcTex_albedo : hint_albedo;" : "hexcTex_albedo : source_color"),
                   std::string::npos);
+    }
+}
+
+// SPIRV-Cross writes an undefined value (tiles.json's, with rotation 0) as a global without an initialiser, which
+// Godot's language refuses ("Expected initialization of constant"): Godot's packages make it a constant.
+TEST(EnginePackages, GodotDeclaresEveryGlobalAsAConstant) {
+    for (Engine engine : {Engine::Godot3, Engine::Godot4}) {
+        const std::string text = package("tiles", engine);
+        EXPECT_NE(text.find("\nconst uint _"), std::string::npos) << "tiles.json's undefined value is no longer written";
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);)
+            if (!line.empty() && std::isalpha(static_cast<unsigned char>(line[0])) && line.ends_with(";"))
+                EXPECT_TRUE(line.starts_with("const ") || line.starts_with("uniform ") || line.starts_with("shader_type ")) << line;
     }
 }
 

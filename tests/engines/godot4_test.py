@@ -7,9 +7,10 @@ No Godot 4 runs here (Debian has Godot 3 only), so its shader is checked mechani
 (source_color, filter_linear_mipmap, repeat_enable; source_color exactly on the sRGB textures the manifest names),
 hexc's functions and one `void fragment()`. Then the functions and the fragment body, wrapped as a GLSL 4.50 fragment
 shader (each uniform as a plain `uniform sampler2D`, Godot's built-ins UV, ALBEDO, NORMAL_MAP, ... as variables), must
-compile with glslang: Godot 4's shading language is GLSL-like, and what it shares with GLSL is checked. Its own
-rules beyond GLSL (and rendering) are not. For materials/rock.json and the engine tests' mixed material, at both uv
-origins.
+compile with glslang: Godot 4's shading language is GLSL-like, and what it shares with GLSL is checked, and so is
+one rule of its own that GLSL lacks: a global is a constant with its value (`const uint x = uint(0);`), never a bare
+`uint x;` ("Expected initialization of constant", as Godot 3 says). Its other rules beyond GLSL (and rendering) are not.
+For materials/rock.json, materials/tiles.json (rotation 0) and the engine tests' mixed material, at both uv origins.
 """
 import json
 import re
@@ -42,6 +43,8 @@ def wrap(shader, srgb, problems):
         problems.append("the first line is not `shader_type spatial;`")
     uniforms, body = [], []
     for line in lines[1:]:
+        if line[:1].isalpha() and line.endswith(";") and not line.startswith(("uniform ", "const ")):
+            problems.append(f"a global without `const` and its value, which Godot refuses: {line}")
         if line.startswith("uniform "):
             m = re.fullmatch(r"uniform sampler2D (\w+) : ([\w, ]+);", line)
             hints = set(m.group(2).split(", ")) if m else set()
@@ -79,7 +82,7 @@ def main():
     failures, count = [], 0
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        for material in (ROOT / "materials" / "rock.json", mixed_material(tmp / "mixed")):
+        for material in (ROOT / "materials" / "rock.json", ROOT / "materials" / "tiles.json", mixed_material(tmp / "mixed")):
             for bottom_left in (False, True):
                 out = tmp / f"{material.stem}_{int(bottom_left)}"
                 args = [hexc, str(material), "--engine", "godot4", "-o", str(out)] + (["--uv-bottom-left"] if bottom_left else [])
