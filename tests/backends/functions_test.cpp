@@ -226,6 +226,8 @@ TEST(EnginePackages, FilamentReadsMaterialParamsAndSetsTheNormalFirst) {
     ASSERT_NE(normal, std::string::npos);
     EXPECT_LT(normal, prepare);
     EXPECT_GT(text.find("material.baseColor = hexc_albedo(uv);"), prepare);
+    // matc flips v by default; hexc's uv origin alone says where uv (0, 0) is (docs/conventions.md).
+    EXPECT_NE(text.find("    flipUV : false,\n"), std::string::npos);
 }
 
 TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {
