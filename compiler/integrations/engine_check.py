@@ -1,6 +1,6 @@
 """What the engine tests share (compiler/integrations/<engine>/check.py): PNG and PFM reading, hexc's fp64 reference,
-the derived bound of an engine's 8-bit sRGB output against it, and the dome normal map of the lighting test.
-Python's standard library only."""
+the derived bound of an engine's 8-bit sRGB output against it, the materials they draw (the probe among them), the
+screen marker and the verdicts of their checks. Python's standard library only."""
 import json
 import math
 import struct
@@ -107,10 +107,11 @@ def linear(x):
     return min(max(x, 0.0), 1.0)
 
 
-def compare(engine_png, ref, normal, relative, amplify, encode=srgb, errors=None):
+def compare(engine_png, ref, normal, relative, amplify, encode=srgb, errors=None, marker=0):
     """Per channel of RGB: (mean error, max error, max error / bound, pixels over bound) of the engine's 8-bit image,
     `encode`d (srgb, or linear as it is), against the linear reference. `errors`, if given, are the per-pixel errors
-    of the value before the engine's output (rows of floats; a layered role's, layered_errors), instead of a slot's."""
+    of the value before the engine's output (rows of floats; a layered role's, layered_errors), instead of a slot's.
+    `marker`: the side of the square at the image's top-left that the engine's marker covers, left out."""
     w, h, n, rows = read_png(engine_png)
     rw, rh, ref_rows = ref
     assert (w, h) == (rw, rh), f"engine image {w}x{h}, reference {rw}x{rh}"
@@ -118,6 +119,8 @@ def compare(engine_png, ref, normal, relative, amplify, encode=srgb, errors=None
     over = 0
     for y in range(h):
         for x in range(w):
+            if x < marker and y < marker:
+                continue
             v = ref_rows[y][x]
             nz = max(2 * v[2] - 1, 0.05) if normal else 1.0
             err = errors[y][x] if errors else amplify * (2 * FILTER_ERROR / (nz * nz) if normal else FILTER_ERROR)
@@ -128,22 +131,8 @@ def compare(engine_png, ref, normal, relative, amplify, encode=srgb, errors=None
                 worst = max(worst, e)
                 worst_ratio = max(worst_ratio, e / b)
                 over += e > b
-    return {"mean": total / (w * h * 3), "max": worst, "max_over_bound": worst_ratio, "pixels_over_bound": over}
-
-
-def dome_normal_map(path, size):
-    """A hemisphere bump, green up (OpenGL): at image point (x right, y up from the centre) the normal of a dome of
-    radius 0.4 of the image, flat outside it."""
-    def pixel(i, j):
-        x, y = (i + 0.5) / size - 0.5, 0.5 - (j + 0.5) / size
-        r2 = x * x + y * y
-        nx = ny = 0.0
-        if r2 < 0.4 * 0.4 * 0.95:
-            z = math.sqrt(0.16 - r2)
-            nx, ny = x / math.sqrt(0.16), y / math.sqrt(0.16)
-        nz = math.sqrt(max(1 - nx * nx - ny * ny, 0))
-        return tuple(round(255 * (c * 0.5 + 0.5)) for c in (nx, ny, nz))
-    write_png(path, size, size, pixel)
+    return {"mean": total / (w * h - min(marker, w) * min(marker, h)) / 3, "max": worst, "max_over_bound": worst_ratio,
+            "pixels_over_bound": over}
 
 
 def mixed_material(folder):
@@ -177,26 +166,6 @@ def mixed_material(folder):
                           {"name": "normal", "kind": "normal", "texture": "mixed_normal.png", "flip_y": True}]}
     (folder / "mixed.json").write_text(json.dumps(material, indent=2))
     return folder / "mixed.json"
-
-
-def dome_material(folder):
-    """The dome normal map as a material of one normal slot, without hex-tiling (so the dome stays whole), in `folder`."""
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
-    dome_normal_map(folder / "dome_normal.png", 128)
-    material = {"name": "dome", "hextiling": {"enabled": False}, "slots": [{"name": "normal", "kind": "normal", "texture": "dome_normal.png"}]}
-    (folder / "dome.json").write_text(json.dumps(material))
-    return folder / "dome.json"
-
-
-def quadrant_means(png):
-    """The mean grey of the dome's right, left, top and bottom parts (a tenth of the image each side of the centre)."""
-    w, h, n, rows = read_png(png)
-    def mean(x0, x1, y0, y1):
-        vals = [sum(rows[y][x * n + c] for c in range(3)) / 3 for y in range(int(y0 * h), int(y1 * h)) for x in range(int(x0 * w), int(x1 * w))]
-        return sum(vals) / len(vals)
-    return {"right": mean(0.6, 0.75, 0.45, 0.55), "left": mean(0.25, 0.4, 0.45, 0.55),
-            "top": mean(0.45, 0.55, 0.25, 0.4), "bottom": mean(0.45, 0.55, 0.6, 0.75)}
 
 
 def manifest(package_dir):
@@ -285,33 +254,24 @@ def layered_errors(hexc, material, manifest, role, normal, size, rect, work):
     return rows
 
 
-def check_function(hexc, material, manifest, function, size, rect, out, relative, encode=srgb):
-    """The engine's image `out` of a package's `function` against hexc's fp64 reference: compare()'s figures. For a
-    layered material's role, the bound is layered_errors', and `flip_caught` says whether the same image compared
-    with the reference flipped in u, and in v, is over the bound (so that the splat map's orientation is checked)."""
+def check_function(hexc, material, manifest, function, size, rect, out, relative, encode=srgb, marker=0):
+    """The engine's image `out` of a package's `function` against hexc's fp64 reference: compare()'s figures (`marker`
+    as there). For a layered material's role, the bound is layered_errors', and `flip_caught` says whether the same
+    image compared with the reference flipped in u, and in v, is over the bound (so that the splat map's orientation
+    is checked)."""
     normal = function["returns"] == "vec3"
     output = "normal" if normal else "albedo"
     if "slot" in function:
         ref = reference(hexc, material, output, function["slot"], size, rect, out.with_suffix(".ref.pfm"))
         slot = next(s for s in manifest["slots"] if s["name"] == function["slot"])
-        return compare(out, ref, normal, relative, amplification(slot), encode)
+        return compare(out, ref, normal, relative, amplification(slot), encode, marker=marker)
     ref = reference(hexc, material, output, function["role"], size, rect, out.with_suffix(".ref.pfm"))
     errors = layered_errors(hexc, material, manifest, function["role"], normal, size, rect, out.parent)
-    r = compare(out, ref, normal, relative, 1.0, encode, errors)
+    r = compare(out, ref, normal, relative, 1.0, encode, errors, marker)
     w, h, rows = ref
     flipped = [(w, h, [row[::-1] for row in rows]), (w, h, rows[::-1])]
-    r["flip_caught"] = all(compare(out, f, normal, relative, 1.0, encode, errors)["pixels_over_bound"] > 0 for f in flipped)
+    r["flip_caught"] = all(compare(out, f, normal, relative, 1.0, encode, errors, marker)["pixels_over_bound"] > 0 for f in flipped)
     return r
-
-
-def result_row(material, origin, function, r):
-    """The check's line of the result table, and whether it failed."""
-    failed = r["pixels_over_bound"] > 0 or r.get("flip_caught") is False
-    note = "" if r["pixels_over_bound"] == 0 else " FAIL: %d values over" % r["pixels_over_bound"]
-    if "flip_caught" in r:
-        note += "; a flipped u or v caught" if r["flip_caught"] else " FAIL: a flipped u or v would pass"
-    return (f"| {Path(material).stem} | {origin} | {function['name']} | {r['mean']:.3f} | {r['max']:.2f} | {r['max_over_bound']:.2f}{note} |",
-            failed)
 
 
 # The probe: textures unlike the examples, to judge an engine's image in absolute orientation. Non-square, so that a
@@ -358,22 +318,23 @@ def probe_normal(green_up):
     return pixel
 
 
-def probe_material(folder, convention="gl", hextiling=False):
+def probe_material(folder, convention="gl", hextiling=False, albedo=True):
     """The probe as a material in `folder`: the glyph albedo (sRGB) and the bump normal map in `convention` ("gl":
     green up; "dx": green down, `flip_y`), plain tiled once across uv unless `hextiling` (then hex-tiled 3 times with
     rotation, as a user would). Plain tiling keeps the F and the bumps whole, so that orientation is judged by eye and
-    by bumps_lit() as well as against `hexc render`."""
+    by bumps_lit() as well as against `hexc render`. Without `albedo`, the normal map alone (a white surface): what
+    bumps_lit() counts in a lit image, which the F's dark strokes would otherwise bias."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     write_png(folder / "probe_albedo.png", *PROBE_ALBEDO, probe_glyph)
     write_png(folder / f"probe_normal_{convention}.png", *PROBE_NORMAL, probe_normal(convention == "gl"))
-    name = f"probe_{convention}" + ("_hex" if hextiling else "")
+    name = f"probe_{convention}" + ("_hex" if hextiling else "") + ("" if albedo else "_bumps")
     tiling = {"tiling": 3, "rotation": 1.0} if hextiling else {"enabled": False}
     normal = {"name": "normal", "kind": "normal", "texture": f"probe_normal_{convention}.png"}
     if convention == "dx":
         normal["flip_y"] = True
-    material = {"name": name, "hextiling": tiling,
-                "slots": [{"name": "albedo", "kind": "color", "texture": "probe_albedo.png", "colorspace": "srgb"}, normal]}
+    colour = [{"name": "albedo", "kind": "color", "texture": "probe_albedo.png", "colorspace": "srgb"}] if albedo else []
+    material = {"name": name, "hextiling": tiling, "slots": colour + [normal]}
     (folder / f"{name}.json").write_text(json.dumps(material, indent=2))
     return folder / f"{name}.json"
 
@@ -400,3 +361,93 @@ def bumps_lit(png, side, rect=(0.0, 0.0, 1.0, 1.0)):
             cx, cy = x0 + (i + 0.5) * cw, y0 + (j + 0.5) * ch
             lit += mean(cx, cy, *offset) > mean(cx, cy, -offset[0], -offset[1]) + 8
     return lit
+
+
+# The marker an engine test has the engine draw over the screen's top-left corner, in the same frame as the material:
+# a red square a sixteenth of the image's side. Where it shows in the saved image says how the read-back is oriented.
+MARKER_FRACTION = 1 / 16
+
+
+def marker_corner(png):
+    """The corner of the image where the engine's red marker square is ("top-left", "top-right", "bottom-left",
+    "bottom-right"), or None: every pixel of the square, but its border pixel, red (r > 200, g and b < 50)."""
+    w, h, n, rows = read_png(png)
+    side = int(w * MARKER_FRACTION)
+    for name, (x0, y0) in {"top-left": (0, 0), "top-right": (w - side, 0), "bottom-left": (0, h - side),
+                           "bottom-right": (w - side, h - side)}.items():
+        pixels = [rows[y][x * n:x * n + 3] for y in range(y0 + 1, y0 + side - 1) for x in range(x0 + 1, x0 + side - 1)]
+        if all(p[0] > 200 and p[1] < 50 and p[2] < 50 for p in pixels):
+            return name
+    return None
+
+
+def srgb_decoded_copy(png, out):
+    """A copy of an sRGB PNG whose bytes hold the decoded (linear) values: what an export that linearises an image
+    gives. Bound as sRGB, as the package asks for its slot, it is decoded twice (a negative control)."""
+    w, h, n, rows = read_png(png)
+    decode = lambda b: round(255 * ((b / 255) / 12.92 if b <= 10 else ((b / 255 + 0.055) / 1.055) ** 2.4))
+    write_png(out, w, h, lambda x, y: tuple(decode(rows[y][x * n + c]) for c in range(3)))
+    return Path(out)
+
+
+def drawn_materials(root, work):
+    """The materials every executed engine draws against the fp64 reference: the examples rock (sRGB albedo, normal
+    and roughness, hex-tiled with rotation) and tiles (rotation 0), the mixed material (non-square, packed, a DirectX
+    normal map), the layered one, the probe plain-tiled (the F upright) and the probe hex-tiled with a DirectX map."""
+    return [Path(root) / "materials" / "rock.json", Path(root) / "materials" / "tiles.json", mixed_material(work / "mixed"),
+            layered_material(work / "layered"), probe_material(work / "probe"), probe_material(work / "probe", "dx", True)]
+
+
+def refused(material, engine):
+    """Why the docs say `engine`'s package refuses `material`, or None: a test asserts hexc refuses it and prints why."""
+    if Path(material).stem == "rock_triplanar":
+        return "a triplanar material has no functions output (docs/engines.md#slots-and-engine-inputs)"
+    if Path(material).suffix == ".json" and "layers" in json.loads(Path(material).read_text()) and engine not in ("godot3", "filament"):
+        return f"a layered material: the {engine} package does not carry layers yet (docs/engines.md#layered-materials)"
+    return None
+
+
+def matrix_materials(root):
+    """Every material under materials/ an engine package is compiled from: the JSON materials (but the JSON Schema),
+    the terrain, and the MaterialX documents beside them. Left out: materials/invalid/ (each must fail to parse),
+    materials/mtlx/corpus/ (the MaterialX importer's test corpus: several invalid by design, textures not there),
+    scenes and layouts (not materials)."""
+    m = Path(root) / "materials"
+    return sorted([p for p in m.glob("*.json") if p.name != "material.schema.json"] + list((m / "terrain").glob("*.json")) +
+                  list((m / "mtlx").glob("*.mtlx")))
+
+
+def row(what, figure, ok):
+    """A line of an engine test's table of checks; True if the check failed."""
+    print(f"| {what} | {figure} | {'ok' if ok else 'FAIL'} |", flush=True)
+    return not ok
+
+
+def value_verdict(hexc, material, function, out, view, control=None, errors=()):
+    """The verdict on an engine's value view `out` of a package's `function` against the reference: `view` holds the
+    package folder, the uv origin, the size and uv rectangle shown, and the engine's `relative` buffer error and
+    `encode`ing (check_function). It passes within the bound, with the marker at the top-left and no shader error; a
+    `control` (a wrong variant, named) must be over the bound. True if the verdict is a failure of the test."""
+    size = view["size"]
+    r = check_function(hexc, material, manifest(view["package"]), function, size, view["rect"], out, view["relative"],
+                       view["encode"], int(size * MARKER_FRACTION))
+    over = r["pixels_over_bound"] > 0 or r.get("flip_caught") is False
+    what = f"{Path(material).stem}, {view['origin']}, {function['name']}"
+    if control:
+        return row(f"control: {control} ({what})", f"{r['pixels_over_bound']} values over the bound, max / bound "
+                   f"{r['max_over_bound']:.1f}: the check fails as it must" if over else "within the bound", over)
+    corner = marker_corner(out)
+    flips = {None: "", True: "; a flipped u or v caught", False: "; a flipped u or v would pass"}[r.get("flip_caught")]
+    return row(what, f"mean {r['mean']:.3f}, max {r['max']:.2f}, max / bound {r['max_over_bound']:.2f}, "
+               f"{r['pixels_over_bound']} over{flips}; marker at the {corner}{'; ' + ' '.join(errors) if errors else ''}",
+               not over and not errors and corner == "top-left")
+
+
+def lit_verdict(out, what, side, control=False, errors=()):
+    """The verdict on a lit image of the probe's bumps: 15 of 15 lit from the light's `side`, the marker at the
+    top-left; a control must light fewer. True if the verdict is a failure of the test."""
+    lit, corner = bumps_lit(out, side), marker_corner(out)
+    if control:
+        return row(f"control: {what}, lit from the {side}", f"{lit} of 15 bumps lit from the {side}", lit < 15)
+    return row(f"{what}, lit from the {side}", f"{lit} of 15 bumps lit from the {side}; marker at the {corner}",
+               lit == 15 and corner == "top-left" and not errors)

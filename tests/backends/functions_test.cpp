@@ -5,6 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
+#include <sstream>
+
 #include "hexc/compiler.h"
 #include "hexc/engines.h"
 #include "hexc/spirv.h"
@@ -180,6 +183,19 @@ TEST(EnginePackages, GodotGetsItsDialectAndItsInputs) {
     }
 }
 
+// SPIRV-Cross writes an undefined value (tiles.json's, with rotation 0) as a global without an initialiser, which
+// Godot's language refuses ("Expected initialization of constant"): Godot's packages make it a constant.
+TEST(EnginePackages, GodotDeclaresEveryGlobalAsAConstant) {
+    for (Engine engine : {Engine::Godot3, Engine::Godot4}) {
+        const std::string text = package("tiles", engine);
+        EXPECT_NE(text.find("\nconst uint _"), std::string::npos) << "tiles.json's undefined value is no longer written";
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);)
+            if (!line.empty() && std::isalpha(static_cast<unsigned char>(line[0])) && line.ends_with(";"))
+                EXPECT_TRUE(line.starts_with("const ") || line.starts_with("uniform ") || line.starts_with("shader_type ")) << line;
+    }
+}
+
 // An sRGB slot the shader decodes itself (MaterialX mode: `"decode": "shader"` in the manifest) is bound linear by
 // every package (docs/bind-a-manifest.md, step 3): an sRGB hint would decode its texels a second time.
 TEST(EnginePackages, ASlotTheShaderDecodesIsBoundLinear) {
@@ -210,6 +226,8 @@ TEST(EnginePackages, FilamentReadsMaterialParamsAndSetsTheNormalFirst) {
     ASSERT_NE(normal, std::string::npos);
     EXPECT_LT(normal, prepare);
     EXPECT_GT(text.find("material.baseColor = hexc_albedo(uv);"), prepare);
+    // matc flips v by default; hexc's uv origin alone says where uv (0, 0) is (docs/conventions.md).
+    EXPECT_NE(text.find("    flipUV : false,\n"), std::string::npos);
 }
 
 TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {

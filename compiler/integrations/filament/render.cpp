@@ -1,8 +1,12 @@
 // Renders a compiled hexc Filament package (.filamat) on a quad filling a W x H headless swap chain with Filament's
-// OpenGL backend, and writes the frame as PNG (compiler/integrations/filament/check.py runs it under xvfb-run):
-//   hexc-filament-render MATERIAL.filamat OUT.png SIZE [--light X,Y,Z] [--no-post] [--int NAME=VALUE] [UNIFORM=FILE[:srgb] ...]
-// The quad's uv has (0, 0) at its top-left corner, v down; its tangent frame is the identity: tangent +x (+u),
-// bitangent +y (up the image), normal +z towards the camera.
+// OpenGL backend, and writes the frame as PNG (compiler/integrations/filament/check.py runs it under Xvfb):
+//   hexc-filament-render MATERIAL.filamat OUT.png SIZE [--uv U0,V0,U1,V1] [--marker MARKER.filamat] [--light X,Y,Z]
+//                        [--no-post] [--int NAME=VALUE] [UNIFORM=FILE[:srgb] ...]
+// The quad's uv is (U0, V0) at its top-left corner and (U1, V1) at its bottom-right (default 0,0,1,1: uv (0, 0) at the
+// top-left, v down; 0,1,1,0 is a GL-convention mesh, (0, 0) at the bottom-left, v up); its tangent frame is the
+// identity: tangent +x (+u), bitangent +y (up the screen), normal +z towards the camera. --marker draws a second
+// renderable with that material over the screen's top-left corner (a sixteenth of the side), so that the image's
+// orientation can be checked. The frame is written as Filament's readPixels returns it: top row first (Renderer.h).
 #include <backend/PixelBufferDescriptor.h>
 #include <filament/Camera.h>
 #include <filament/Engine.h>
@@ -28,7 +32,6 @@
 
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -45,11 +48,47 @@ struct Vertex {
     int16_t tangents[4];  // the tangent frame as a quaternion, snorm16: identity
 };
 
-const Vertex kQuad[4] = {{{-1, 1, 0}, {0, 0}, {0, 0, 0, 32767}},
-                         {{1, 1, 0}, {1, 0}, {0, 0, 0, 32767}},
-                         {{-1, -1, 0}, {0, 1}, {0, 0, 0, 32767}},
-                         {{1, -1, 0}, {1, 1}, {0, 0, 0, 32767}}};
 const uint16_t kIndices[6] = {0, 2, 1, 1, 2, 3};
+
+// A quad from (x0, y0) at its top-left to (x1, y1) at its bottom-right in clip space, at depth z, with uv (u0, v0) at
+// the top-left and (u1, v1) at the bottom-right.
+struct Quad {
+    Vertex vertices[4];
+    Quad(float x0, float y0, float x1, float y1, float z, const float uv[4])
+        : vertices{{{x0, y0, z}, {uv[0], uv[1]}, {0, 0, 0, 32767}},
+                   {{x1, y0, z}, {uv[2], uv[1]}, {0, 0, 0, 32767}},
+                   {{x0, y1, z}, {uv[0], uv[3]}, {0, 0, 0, 32767}},
+                   {{x1, y1, z}, {uv[2], uv[3]}, {0, 0, 0, 32767}}} {}
+};
+
+// Adds `quad` to `scene` with `instance`; the quad must outlive the engine's use of it (the upload does not copy).
+Entity addQuad(Engine& engine, Scene& scene, const Quad& quad, MaterialInstance* instance) {
+    VertexBuffer* vertices = VertexBuffer::Builder()
+                                 .vertexCount(4)
+                                 .bufferCount(1)
+                                 .attribute(VertexAttribute::POSITION, 0, VertexBuffer::AttributeType::FLOAT3, 0, sizeof(Vertex))
+                                 .attribute(VertexAttribute::UV0, 0, VertexBuffer::AttributeType::FLOAT2, 12, sizeof(Vertex))
+                                 .attribute(VertexAttribute::TANGENTS, 0, VertexBuffer::AttributeType::SHORT4, 20, sizeof(Vertex))
+                                 .normalized(VertexAttribute::TANGENTS)
+                                 .build(engine);
+    vertices->setBufferAt(engine, 0, VertexBuffer::BufferDescriptor(quad.vertices, sizeof(quad.vertices), nullptr));
+    IndexBuffer* indices = IndexBuffer::Builder().indexCount(6).bufferType(IndexBuffer::IndexType::USHORT).build(engine);
+    indices->setBuffer(engine, IndexBuffer::BufferDescriptor(kIndices, sizeof(kIndices), nullptr));
+    Entity entity = utils::EntityManager::get().create();
+    RenderableManager::Builder(1)
+        .boundingBox({{-1, -1, -1}, {1, 1, 1}})
+        .material(0, instance)
+        .geometry(0, RenderableManager::PrimitiveType::TRIANGLES, vertices, indices, 0, 6)
+        .culling(false)
+        .build(engine, entity);
+    scene.addEntity(entity);
+    return entity;
+}
+
+std::vector<char> readFile(const char* path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 Texture* loadTexture(Engine& engine, const std::string& file, bool srgb) {
     int w = 0, h = 0, n = 0;
@@ -72,17 +111,75 @@ Texture* loadTexture(Engine& engine, const std::string& file, bool srgb) {
     return t;
 }
 
+// Renders three frames (the shaders compile and the textures upload in the first) and reads the last back.
+bool renderAndRead(Engine& engine, Renderer& renderer, SwapChain& swapChain, View& view, uint32_t size, std::vector<uint8_t>& pixels) {
+    bool read = false;
+    for (int frame = 0; frame < 3 && !read; ++frame) {
+        if (!renderer.beginFrame(&swapChain)) continue;
+        renderer.render(&view);
+        if (frame == 2)
+            renderer.readPixels(0, 0, size, size,
+                                backend::PixelBufferDescriptor(
+                                    pixels.data(), pixels.size(), backend::PixelDataFormat::RGBA, backend::PixelDataType::UBYTE,
+                                    [](void*, size_t, void* user) { *static_cast<bool*>(user) = true; }, &read));
+        renderer.endFrame();
+        engine.flushAndWait();
+    }
+    engine.flushAndWait();
+    return read;
+}
+
+// The options after SIZE: the mesh's uv, the marker, the light, post-processing, int parameters and textures.
+struct Options {
+    float uv[4] = {0, 0, 1, 1};
+    std::vector<char> marker;
+};
+
+Options applyOptions(int argc, char** argv, Engine& engine, Scene& scene, View& view, MaterialInstance& instance,
+                     std::vector<Texture*>& textures) {
+    Options o;
+    const TextureSampler sampler(TextureSampler::MinFilter::LINEAR_MIPMAP_LINEAR, TextureSampler::MagFilter::LINEAR,
+                                 TextureSampler::WrapMode::REPEAT);
+    for (int i = 4; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--int" && i + 1 < argc) {  // an int parameter: NAME=VALUE
+            const std::string v = argv[++i];
+            instance.setParameter(v.substr(0, v.find('=')).c_str(), std::stoi(v.substr(v.find('=') + 1)));
+        } else if (arg == "--uv" && i + 1 < argc) {
+            std::sscanf(argv[++i], "%f,%f,%f,%f", &o.uv[0], &o.uv[1], &o.uv[2], &o.uv[3]);
+        } else if (arg == "--marker" && i + 1 < argc) {
+            o.marker = readFile(argv[++i]);
+        } else if (arg == "--no-post") {
+            view.setPostProcessingEnabled(false);
+        } else if (arg == "--light" && i + 1 < argc) {
+            float d[3];
+            std::sscanf(argv[++i], "%f,%f,%f", &d[0], &d[1], &d[2]);
+            Entity light = utils::EntityManager::get().create();
+            LightManager::Builder(LightManager::Type::DIRECTIONAL).direction({-d[0], -d[1], -d[2]}).intensity(110000).build(engine, light);
+            scene.addEntity(light);
+        } else {
+            const size_t eq = arg.find('=');
+            std::string file = arg.substr(eq + 1);
+            const bool srgb = file.ends_with(":srgb");
+            if (srgb) file.resize(file.size() - 5);
+            textures.push_back(loadTexture(engine, file, srgb));
+            instance.setParameter(arg.substr(0, eq).c_str(), textures.back(), sampler);
+        }
+    }
+    return o;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     if (argc < 4) {
         std::fprintf(stderr,
-                     "usage: %s MATERIAL.filamat OUT.png SIZE [--light X,Y,Z] [--no-post] [--int NAME=VALUE] [UNIFORM=FILE[:srgb] ...]\n",
+                     "usage: %s MATERIAL.filamat OUT.png SIZE [--uv U0,V0,U1,V1] [--marker MARKER.filamat] [--light X,Y,Z] "
+                     "[--no-post] [--int NAME=VALUE] [UNIFORM=FILE[:srgb] ...]\n",
                      argv[0]);
         return 2;
     }
-    std::ifstream in(argv[1], std::ios::binary);
-    const std::vector<char> package((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<char> package = readFile(argv[1]);
     const std::string out = argv[2];
     const uint32_t size = uint32_t(std::stoi(argv[3]));
 
@@ -91,8 +188,7 @@ int main(int argc, char** argv) {
     Renderer* renderer = engine->createRenderer();
     Scene* scene = engine->createScene();
     View* view = engine->createView();
-    Entity cameraEntity = utils::EntityManager::get().create();
-    Camera* camera = engine->createCamera(cameraEntity);
+    Camera* camera = engine->createCamera(utils::EntityManager::get().create());
     camera->setProjection(Camera::Projection::ORTHO, -1, 1, -1, 1, 0.1, 10);
     camera->lookAt({0, 0, 1}, {0, 0, 0}, {0, 1, 0});
     view->setCamera(camera);
@@ -101,72 +197,19 @@ int main(int argc, char** argv) {
 
     Material* material = Material::Builder().package(package.data(), package.size()).build(*engine);
     MaterialInstance* instance = material->createInstance();
-    TextureSampler sampler(TextureSampler::MinFilter::LINEAR_MIPMAP_LINEAR, TextureSampler::MagFilter::LINEAR,
-                           TextureSampler::WrapMode::REPEAT);
     std::vector<Texture*> textures;
-    for (int i = 4; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "--int" && i + 1 < argc) {  // an int parameter: NAME=VALUE
-            const std::string v = argv[++i];
-            instance->setParameter(v.substr(0, v.find('=')).c_str(), std::stoi(v.substr(v.find('=') + 1)));
-        } else if (arg == "--no-post") {
-            view->setPostProcessingEnabled(false);
-        } else if (arg == "--light" && i + 1 < argc) {
-            float d[3];
-            std::sscanf(argv[++i], "%f,%f,%f", &d[0], &d[1], &d[2]);
-            Entity light = utils::EntityManager::get().create();
-            LightManager::Builder(LightManager::Type::DIRECTIONAL).direction({-d[0], -d[1], -d[2]}).intensity(110000).build(*engine, light);
-            scene->addEntity(light);
-        } else {
-            const size_t eq = arg.find('=');
-            std::string file = arg.substr(eq + 1);
-            const bool srgb = file.ends_with(":srgb");
-            if (srgb) file.resize(file.size() - 5);
-            textures.push_back(loadTexture(*engine, file, srgb));
-            instance->setParameter(arg.substr(0, eq).c_str(), textures.back(), sampler);
-        }
+    const Options o = applyOptions(argc, argv, *engine, *scene, *view, *instance, textures);
+    const Quad quad(-1, 1, 1, -1, 0, o.uv);
+    addQuad(*engine, *scene, quad, instance);
+    const Quad marker(-1, 1, -1 + 2.0f / 16, 1 - 2.0f / 16, 0.5f, o.uv);  // nearer the camera than the quad
+    if (!o.marker.empty()) {
+        Material* m = Material::Builder().package(o.marker.data(), o.marker.size()).build(*engine);
+        addQuad(*engine, *scene, marker, m->createInstance());
     }
-
-    VertexBuffer* vertices = VertexBuffer::Builder()
-                                 .vertexCount(4)
-                                 .bufferCount(1)
-                                 .attribute(VertexAttribute::POSITION, 0, VertexBuffer::AttributeType::FLOAT3, 0, sizeof(Vertex))
-                                 .attribute(VertexAttribute::UV0, 0, VertexBuffer::AttributeType::FLOAT2, 12, sizeof(Vertex))
-                                 .attribute(VertexAttribute::TANGENTS, 0, VertexBuffer::AttributeType::SHORT4, 20, sizeof(Vertex))
-                                 .normalized(VertexAttribute::TANGENTS)
-                                 .build(*engine);
-    vertices->setBufferAt(*engine, 0, VertexBuffer::BufferDescriptor(kQuad, sizeof(kQuad), nullptr));
-    IndexBuffer* indices = IndexBuffer::Builder().indexCount(6).bufferType(IndexBuffer::IndexType::USHORT).build(*engine);
-    indices->setBuffer(*engine, IndexBuffer::BufferDescriptor(kIndices, sizeof(kIndices), nullptr));
-    Entity quad = utils::EntityManager::get().create();
-    RenderableManager::Builder(1)
-        .boundingBox({{-1, -1, -1}, {1, 1, 1}})
-        .material(0, instance)
-        .geometry(0, RenderableManager::PrimitiveType::TRIANGLES, vertices, indices, 0, 6)
-        .culling(false)
-        .build(*engine, quad);
-    scene->addEntity(quad);
 
     std::vector<uint8_t> pixels(size_t(size) * size * 4);
-    bool read = false;
-    for (int frame = 0; frame < 3 && !read; ++frame) {
-        if (!renderer->beginFrame(swapChain)) continue;
-        renderer->render(view);
-        if (frame == 2)
-            renderer->readPixels(0, 0, size, size,
-                                 backend::PixelBufferDescriptor(
-                                     pixels.data(), pixels.size(), backend::PixelDataFormat::RGBA, backend::PixelDataType::UBYTE,
-                                     [](void*, size_t, void* user) { *static_cast<bool*>(user) = true; }, &read));
-        renderer->endFrame();
-        engine->flushAndWait();
-    }
-    engine->flushAndWait();
-    // OpenGL reads the bottom row first.
-    std::vector<uint8_t> flipped(pixels.size());
-    for (uint32_t y = 0; y < size; ++y)
-        std::memcpy(&flipped[size_t(y) * size * 4], &pixels[size_t(size - 1 - y) * size * 4], size_t(size) * 4);
-    const bool ok = read && stbi_write_png(out.c_str(), int(size), int(size), 4, flipped.data(), int(size) * 4);
-    engine->destroy(quad);
+    const bool ok = renderAndRead(*engine, *renderer, *swapChain, *view, size, pixels) &&
+                    stbi_write_png(out.c_str(), int(size), int(size), 4, pixels.data(), int(size) * 4);
     Engine::destroy(&engine);
     if (!ok) std::fprintf(stderr, "no frame read back\n");
     return ok ? 0 : 1;

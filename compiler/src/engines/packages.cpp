@@ -73,11 +73,30 @@ std::string functionsBody(const std::string& glsl) {
     return out;
 }
 
-// The engine dialect of the functions: Godot has no `97u` literals (uint(97)) and no fma; Filament reads its
-// textures as materialParams_<name>.
+// `body` with each global SPIRV-Cross declares for an undefined value (OpUndef: `uint _3163;`, no initialiser) as a
+// constant of value zero (`const uint _3163 = uint(0);`): Godot's language takes a global only as a constant with
+// its value ("Expected initialization of constant"). The value is undefined, so zero is as good as any.
+std::string withConstantUndefs(const std::string& body) {
+    static const std::map<std::string, std::string> zeros = {{"float", "0.0"}, {"int", "0"},    {"uint", "uint(0)"},   {"bool", "false"},
+                                                             {"vec", "(0.0)"}, {"ivec", "(0)"}, {"uvec", "(uint(0))"}, {"bvec", "(false)"}};
+    std::istringstream in(body);
+    std::string out, line;
+    while (std::getline(in, line)) {
+        const size_t space = line.find(' ');
+        const std::string type = line.substr(0, space), base = type.substr(0, type.find_first_of("234"));
+        const bool undef = space != std::string::npos && zeros.count(base) && line.compare(space, 2, " _") == 0 && line.ends_with(";") &&
+                           line.find_first_of("=(", space) == std::string::npos;
+        if (undef) line = "const " + line.substr(0, line.size() - 1) + " = " + (base == type ? "" : type) + zeros.at(base) + ";";
+        out += line + "\n";
+    }
+    return out;
+}
+
+// The engine dialect of the functions: Godot has no `97u` literals (uint(97)), no fma and no global variables;
+// Filament reads its textures as materialParams_<name>.
 std::string dialect(std::string body, Engine engine) {
     if (engine == Engine::Filament) return std::regex_replace(body, std::regex(R"(\b(hexc(Tex|Lut)_\w+))"), "materialParams_$1");
-    return withoutFma(std::regex_replace(body, std::regex(R"(\b(\d+)u\b)"), "uint($1)"));
+    return withConstantUndefs(withoutFma(std::regex_replace(body, std::regex(R"(\b(\d+)u\b)"), "uint($1)")));
 }
 
 // Each texture the functions read: its uniform and whether the sampler decodes it from sRGB, from the manifest
