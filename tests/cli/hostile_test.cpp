@@ -33,7 +33,8 @@ struct Outcome {
     std::string err;  // stderr
 };
 
-Outcome runBounded(const std::string& args) {
+// `env`: variable assignments for hexc's environment.
+Outcome runBounded(const std::string& args, const std::string& env = "") {
 #ifdef HEXC_SANITIZED
     const std::string memory;  // ASan reserves terabytes of address space for its shadow; it checks memory itself
 #else
@@ -42,7 +43,7 @@ Outcome runBounded(const std::string& args) {
     const std::string memory = "ulimit -v " + std::to_string(kMiB * 1024) + "; ";
 #endif
     std::string err;
-    int exit = hexc::test::runHexc(args, &err, memory + "timeout " + std::to_string(kSeconds));
+    int exit = hexc::test::runHexc(args, &err, memory + env + " timeout " + std::to_string(kSeconds));
     return {exit, err};
 }
 
@@ -845,6 +846,41 @@ TEST_F(Hostile, LibraryIntoAFileSaysSo) {
     Outcome o = runBounded("library -t glsl -o " + file.string());
     EXPECT_EQ(o.exit, 3) << o.err;
     EXPECT_NE(o.err.find("hexc: cannot write to " + file.string() + ": it is a file, not a folder"), std::string::npos) << o.err;
+}
+
+// --- The wgsl target's translator is bounded in time and in frame size. ---
+
+// A `node` on PATH that is not Node: a shell script in `bin` that records its pid in `pid`, then runs `body`, at the
+// first answer (the driver's greeting) or, after a valid greeting ("o" and an empty text), at the translation's.
+TEST_F(Hostile, AWgslTranslatorThatMisbehavesIsKilledAndReported) {
+    const fs::path m = write("m.json", material());
+    fs::create_directories(dir_ / "bin");
+    const std::string greeting = R"(printf 'o\000\000\000\000'; )";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"exec sleep 600", "no answer within 3 s"},                                    // never answers
+        {R"(printf 'o\377\377\377\377'; exec sleep 600)", "claims 4294967295 bytes"},  // 4 GiB claimed, before any allocation
+        {R"(printf 'o\020\000\000\000abc'; exit 0)", "it stopped mid-answer"},         // dies after 3 of 16 bytes
+        {R"(echo 'Segmentation fault'; exec sleep 600)", "not a translator's frame"},  // garbage
+    };
+    for (const bool greeted : {false, true})
+        for (const auto& [body, why] : cases) {
+            const std::string script = "#!/bin/sh\necho $$ > " + (dir_ / "pid").string() + "\n" + (greeted ? greeting : "") + body + "\n";
+            write("bin/node", script);
+            fs::permissions(dir_ / "bin/node", fs::perms::owner_all);
+            fs::remove(dir_ / "pid");
+            // HEXC_NODE_TIMEOUT=3 bounds each case; runBounded's time bound only guards against a hang.
+            const Outcome o = runBounded(m.string() + " --targets wgsl --no-cache" + out(),
+                                         "PATH=" + (dir_ / "bin").string() + ":$PATH HEXC_NODE_TIMEOUT=3");
+            const std::string context = (greeted ? "at the translation: " : "at the greeting: ") + body;
+            EXPECT_EQ(o.exit, 1) << context << "\n" << o.err;
+            EXPECT_NE(o.err.find("error[HX300]"), std::string::npos) << context << "\n" << o.err;
+            EXPECT_NE(o.err.find(why), std::string::npos) << context << "\n" << o.err;
+            expectNothingWritten();
+            const pid_t pid = pid_t(std::stol(hexc::test::readFile(dir_ / "pid")));
+            const bool gone = kill(pid, 0) != 0 && errno == ESRCH;
+            EXPECT_TRUE(gone) << context << ": `node` (pid " << pid << ") is still there";
+            if (!gone) kill(pid, SIGKILL);  // it would outlive the test
+        }
 }
 
 }  // namespace
