@@ -33,7 +33,8 @@ struct Outcome {
     std::string err;  // stderr
 };
 
-Outcome runBounded(const std::string& args) {
+// `env`: variable assignments for hexc's environment.
+Outcome runBounded(const std::string& args, const std::string& env = "") {
 #ifdef HEXC_SANITIZED
     const std::string memory;  // ASan reserves terabytes of address space for its shadow; it checks memory itself
 #else
@@ -42,7 +43,7 @@ Outcome runBounded(const std::string& args) {
     const std::string memory = "ulimit -v " + std::to_string(kMiB * 1024) + "; ";
 #endif
     std::string err;
-    int exit = hexc::test::runHexc(args, &err, memory + "timeout " + std::to_string(kSeconds));
+    int exit = hexc::test::runHexc(args, &err, memory + env + " timeout " + std::to_string(kSeconds));
     return {exit, err};
 }
 
@@ -845,6 +846,115 @@ TEST_F(Hostile, LibraryIntoAFileSaysSo) {
     Outcome o = runBounded("library -t glsl -o " + file.string());
     EXPECT_EQ(o.exit, 3) << o.err;
     EXPECT_NE(o.err.find("hexc: cannot write to " + file.string() + ": it is a file, not a folder"), std::string::npos) << o.err;
+}
+
+// --- The wgsl target's translator is bounded in time and in frame size. ---
+
+// A `node` on PATH that is not Node: a shell script in `bin` that records its pid in `pid`, then runs `body`, at the
+// first answer (the driver's greeting) or, after a valid greeting ("o" and an empty text), at the translation's.
+TEST_F(Hostile, AWgslTranslatorThatMisbehavesIsKilledAndReported) {
+    const fs::path m = write("m.json", material());
+    fs::create_directories(dir_ / "bin");
+    const std::string greeting = R"(printf 'o\000\000\000\000'; )";
+    // The time bound is 2 s where the case waits for it, and 15 s where the answer comes at once: a loaded machine
+    // does not turn the reason into a timeout, and the 20 s of runBounded only guards against a hang.
+    struct Case {
+        std::string body, why;
+        int seconds;
+    };
+    const std::vector<Case> cases = {
+        {"exec sleep 600", "no answer within 2 s", 2},                                     // never answers
+        {R"(printf 'o\377\377\377\377'; exec sleep 600)", "claims 4294967295 bytes", 15},  // 4 GiB claimed, before any allocation
+        {R"(printf 'o\020\000\000\000abc'; exit 0)", "it stopped mid-answer", 15},         // dies after 3 of 16 bytes
+        {R"(echo 'Segmentation fault'; exec sleep 600)", "not a translator's frame", 15},  // garbage
+    };
+    for (const bool greeted : {false, true})
+        for (const auto& [body, why, seconds] : cases) {
+            const std::string script = "#!/bin/sh\necho $$ > " + (dir_ / "pid").string() + "\n" + (greeted ? greeting : "") + body + "\n";
+            write("bin/node", script);
+            fs::permissions(dir_ / "bin/node", fs::perms::owner_all);
+            fs::remove(dir_ / "pid");
+            const Outcome o = runBounded(m.string() + " --targets wgsl --no-cache" + out(),
+                                         "PATH=" + (dir_ / "bin").string() + ":$PATH HEXC_NODE_TIMEOUT=" + std::to_string(seconds));
+            const std::string context = (greeted ? "at the translation: " : "at the greeting: ") + body;
+            EXPECT_EQ(o.exit, 1) << context << "\n" << o.err;
+            EXPECT_NE(o.err.find("error[HX300]"), std::string::npos) << context << "\n" << o.err;
+            EXPECT_NE(o.err.find(why), std::string::npos) << context << "\n" << o.err;
+            expectNothingWritten();
+            const pid_t pid = pid_t(std::stol(hexc::test::readFile(dir_ / "pid")));
+            const bool gone = kill(pid, 0) != 0 && errno == ESRCH;
+            EXPECT_TRUE(gone) << context << ": `node` (pid " << pid << ") is still there";
+            if (!gone) kill(pid, SIGKILL);  // it would outlive the test
+        }
+}
+
+// --- The splat maps' budget: a valid splat map over it is refused from its header, before it is decoded. ---
+
+// A valid 8-bit grey PNG of side x side zero texels, small on disk: one fixed-Huffman deflate block, a literal 0 and
+// then matches of 258 bytes at distance 1 (13 bits each: 16384 x 16384 in 1.7 MB), with zlib's and PNG's checksums.
+std::string zeroPng(uint32_t side) {
+    struct Bits {
+        std::string out;
+        uint64_t pending = 0;
+        int count = 0;
+        void put(uint32_t v, int n) {  // deflate packs values from the low bit
+            pending |= uint64_t(v) << count, count += n;
+            for (; count >= 8; pending >>= 8, count -= 8) out += char(pending & 0xff);
+        }
+        void code(uint32_t v, int n) {  // and Huffman codes from the high bit
+            uint32_t reversed = 0;
+            for (int i = 0; i < n; ++i) reversed |= ((v >> i) & 1) << (n - 1 - i);
+            put(reversed, n);
+        }
+    } z;
+    z.out = "\x78\x01";                                // deflate, 32 KiB window: 0x7801 is a multiple of 31
+    const uint64_t raw = uint64_t(side) * (side + 1);  // each row: filter byte 0, then its texels
+    z.put(1, 1), z.put(1, 2);                          // the last block, fixed Huffman codes
+    uint64_t left = raw - 1;
+    z.code(0x30, 8);                                                 // literal 0
+    for (; left >= 258; left -= 258) z.code(0xC5, 8), z.code(0, 5);  // length 258 (code 285), distance 1 (code 0)
+    for (; left > 0; --left) z.code(0x30, 8);
+    z.code(0, 7), z.put(0, 7);                               // end of block, then the last byte flushed
+    const uint32_t adler = uint32_t(raw % 65521) << 16 | 1;  // zeros leave a = 1 and add 1 to b each
+    for (int shift = 24; shift >= 0; shift -= 8) z.out += char(adler >> shift);
+    auto be = [](uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+    auto chunk = [&](const std::string& type, const std::string& data) {
+        uint32_t crc = 0xFFFFFFFF;
+        for (char c : type + data) {
+            crc ^= uint8_t(c);
+            for (int k = 0; k < 8; ++k) crc = crc & 1 ? (crc >> 1) ^ 0xEDB88320 : crc >> 1;
+        }
+        return be(uint32_t(data.size())) + type + data + be(~crc);
+    };
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", be(side) + be(side) + std::string("\x08\0\0\0\0", 5)) +
+           chunk("IDAT", z.out) + chunk("IEND", "");
+}
+
+TEST_F(Hostile, TheSplatMapBudgetRefusesAHugeSplatMapBeforeDecoding) {
+    // One layer on a zero splat map. Decoded, 16384 x 16384 texels took 2 GB (the decoder's buffer and its copy).
+    auto layered = [&](const fs::path& splat) {
+        return write("m.json", R"({"name": "m", "layers": [{"name": "rock", "slots": [{"name": "albedo", "kind": "color", "texture": ")" +
+                                   fs::absolute("materials/textures/rock_albedo.png").string() + R"("}]}], "layer_blend": {"splat": [")" +
+                                   splat.string() + "\"]}}");
+    };
+    int exit = -1;
+    // The control: a small map from the same writer compiles, so the refusal below is the budget's, not the file's.
+    double peak = peakResidentMiB(layered(write("small.png", zeroPng(300))), dir_ / "out", dir_ / "err.txt", &exit);
+    ASSERT_EQ(exit, 0) << hexc::test::readFile(dir_ / "err.txt");
+    fs::remove_all(dir_ / "out");
+    fs::create_directories(dir_ / "out");
+    peak = peakResidentMiB(layered(write("huge.png", zeroPng(16384))), dir_ / "out", dir_ / "err.txt", &exit);
+    const std::string err = hexc::test::readFile(dir_ / "err.txt");
+    EXPECT_EQ(exit, 1) << err;
+    EXPECT_NE(err.find("m.json:1:"), std::string::npos) << err;
+    EXPECT_NE(err.find("error[HX125]: /layer_blend/splat/0: "), std::string::npos) << err;
+    EXPECT_NE(err.find("is 16384x16384 (268435456 texels), more than the splat maps' coverage"), std::string::npos) << err;
+    expectNothingWritten();
+#ifndef HEXC_SANITIZED  // ASan's allocator and shadow change the resident size
+    // Refused from the header: the material and its textures held encoded (1.7 MB here), within the 64 MiB a small
+    // material's compile takes (51 MB measured for rock.json, AMaterialsPeakMemoryIsLinearInItsSize).
+    EXPECT_LT(peak, 64) << "MiB at its peak";
+#endif
 }
 
 }  // namespace

@@ -28,6 +28,11 @@ inline constexpr TexelBudget kHistogramBudget{4096, "the histogram blend's preco
 // 4 bytes a texel for each slot decoded, the packed texture and its PNG.
 inline constexpr TexelBudget kPackingBudget{8192, "packing", "it decodes each slot's texture at 4 bytes a texel"};
 
+// The layers' splat maps, decoded to count each layer's coverage for the manifest's expected fetches: 4 bytes a texel,
+// and as much again while the decoder's buffer is copied out.
+inline constexpr TexelBudget kSplatBudget{8192, "the splat maps' coverage (the manifest's expected fetches)",
+                                          "it decodes the splat map at 4 bytes a texel"};
+
 // An error located at the slot (HX125, naming the texture, its size and the budget) when its texture has more
 // texels than `budget` holds; nullopt when it fits.
 std::optional<Diagnostic> overTexelBudget(const Material& material, const Slot& slot, const TexelBudget& budget);

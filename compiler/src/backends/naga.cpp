@@ -1,13 +1,18 @@
 // One Node.js process runs naga.mjs (embedded) for the whole run, over a socket pair: a socket, unlike a pipe, can be
-// written with MSG_NOSIGNAL, so a Node that has gone away is an error here, not a SIGPIPE that ends hexc.
+// written with MSG_NOSIGNAL, so a Node that has gone away is an error here, not a SIGPIPE that ends hexc. Whatever runs
+// as `node` is not trusted to answer: each answer has a time bound and its frame a size bound, and a process that
+// breaks either is killed and reaped, so hexc neither hangs nor allocates what a frame merely claims.
 #include "backends/naga.h"
 
 #include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -27,6 +32,17 @@ namespace {
 constexpr const char* kInstall =
     "the wgsl target needs Node.js (`node` on PATH; Debian: apt-get install nodejs) and the npm package naga-wasm 30.1.0 "
     "(npm install naga-wasm@30.1.0 in a folder, then HEXC_NODE_PATH=<that folder>/node_modules; docs/cli.md, \"WGSL\")";
+
+// The longest answer naga.mjs writes: WGSL of a shader is tens of kilobytes, naga's messages shorter.
+constexpr uint32_t kMaxFrame = 64u << 20;
+
+// How long one answer may take (docs/cli.md, "WGSL"): Node's start with naga-wasm's load takes about a second and a
+// translation well under one; HEXC_NODE_TIMEOUT (seconds, 1 to 3600) for a machine far slower than that.
+std::chrono::seconds answerTimeout() {
+    const char* set = std::getenv("HEXC_NODE_TIMEOUT");
+    const long seconds = set ? std::strtol(set, nullptr, 10) : 0;
+    return std::chrono::seconds(seconds >= 1 && seconds <= 3600 ? seconds : 60);
+}
 
 class NagaProcess {
 public:
@@ -55,53 +71,80 @@ public:
         }
         bool ok = false;
         std::string hello;
-        if (!receive(ok, hello))
-            error_ = std::string("`node` did not start the translator; ") + kInstall;
+        if (std::string why = receive(ok, hello, deadline()); !why.empty())
+            fail("`node` did not start the translator: " + why);
         else if (!ok)
             error_ = hello + "; " + kInstall;
     }
-    ~NagaProcess() {
-        if (socket_ >= 0) close(socket_);  // the driver's stdin ends: it exits
-        if (pid_ > 0) waitpid(pid_, nullptr, 0);
-    }
+    ~NagaProcess() { stop(); }  // every answer asked for has come: nothing is lost by killing it
     NagaResult translate(const std::vector<uint32_t>& spirv) {
         if (!error_.empty()) return {std::nullopt, error_, true};
         const uint32_t size = uint32_t(spirv.size() * 4);
         bool ok = false;
         std::string text;
-        if (!sendAll(&size, 4) || !sendAll(spirv.data(), size) || !receive(ok, text))
-            return {std::nullopt, std::string("the Node.js process running naga stopped; ") + kInstall, true};
+        const Deadline by = deadline();  // for the request and its answer
+        std::string why = transfer(&size, 4, true, by);
+        if (why.empty()) why = transfer(spirv.data(), size, true, by);
+        if (why.empty()) why = receive(ok, text, by);
+        if (!why.empty()) {
+            fail("the Node.js process running naga failed: " + why);
+            return {std::nullopt, error_, true};
+        }
         if (!ok) return {std::nullopt, text, false};
         return {text, "", false};
     }
 
 private:
-    bool sendAll(const void* data, size_t size) {
-        for (const char* p = static_cast<const char*>(data); size > 0;) {
-            const ssize_t n = send(socket_, p, size, MSG_NOSIGNAL);
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) return false;
+    using Deadline = std::chrono::steady_clock::time_point;
+    static Deadline deadline() { return std::chrono::steady_clock::now() + answerTimeout(); }
+
+    // Sends (`out`) or receives `size` bytes before `by`: "" when done, else why not. Each waits in poll(), so a
+    // process that neither reads nor writes costs the time bound, never a hang.
+    std::string transfer(const void* data, size_t size, bool out, Deadline by) {
+        for (char* p = static_cast<char*>(const_cast<void*>(data)); size > 0;) {
+            const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(by - std::chrono::steady_clock::now());
+            pollfd wait{socket_, short(out ? POLLOUT : POLLIN), 0};
+            const int ready = left.count() > 0 ? poll(&wait, 1, int(left.count())) : 0;
+            if (ready < 0 && errno == EINTR) continue;
+            if (ready == 0)
+                return std::string(out ? "it read nothing" : "no answer") + " within " + std::to_string(answerTimeout().count()) +
+                       " s (HEXC_NODE_TIMEOUT)";
+            const ssize_t n = ready < 0 ? -1
+                              : out     ? send(socket_, p, size, MSG_NOSIGNAL | MSG_DONTWAIT)
+                                        : recv(socket_, p, size, MSG_DONTWAIT);
+            if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+            if (n <= 0) return out ? "it stopped reading" : "it stopped mid-answer";
             p += n, size -= size_t(n);
         }
-        return true;
+        return "";
     }
-    bool receiveAll(void* data, size_t size) {
-        for (char* p = static_cast<char*>(data); size > 0;) {
-            const ssize_t n = recv(socket_, p, size, 0);
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) return false;
-            p += n, size -= size_t(n);
-        }
-        return true;
-    }
-    bool receive(bool& ok, std::string& text) {
+    // One answer frame (naga.mjs): a status byte, "o" or "e", and a length of at most kMaxFrame, checked before
+    // anything is allocated for it. "" when it came whole, else why not.
+    std::string receive(bool& ok, std::string& text, Deadline by) {
         char head[5];
-        if (!receiveAll(head, 5)) return false;
+        if (std::string why = transfer(head, 5, false, by); !why.empty()) return why;
         uint32_t size;
         std::memcpy(&size, head + 1, 4);
-        text.resize(size);
+        if (head[0] != 'o' && head[0] != 'e') return "its answer is not a translator's frame";
+        if (size > kMaxFrame)
+            return "its answer claims " + std::to_string(size) + " bytes, more than the " + std::to_string(kMaxFrame >> 20) +
+                   " MiB an answer may have";
         ok = head[0] == 'o';
-        return receiveAll(text.data(), size);
+        text.resize(size);
+        return transfer(text.data(), size, false, by);
+    }
+    // The process broke the protocol or its time: later translations fail at once with `why`.
+    void fail(const std::string& why) {
+        stop();
+        error_ = why + "; " + kInstall;
+    }
+    void stop() {
+        if (socket_ >= 0) close(socket_), socket_ = -1;
+        if (pid_ <= 0) return;
+        kill(pid_, SIGKILL);
+        while (waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
+        }
+        pid_ = -1;
     }
 
     pid_t pid_ = -1;

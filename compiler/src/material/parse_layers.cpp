@@ -309,8 +309,10 @@ private:
             Slot s;
             s.name = "splat" + std::to_string(i);
             s.texture = string(v[i], p);
-            s.colorSpace = ColorSpace::Linear;  // weights, not colours
-            s.hex.enabled = false;              // one fetch, over the whole terrain: tiling 1
+            s.colorSpace = ColorSpace::Linear;     // weights, not colours
+            const TextPos at = locator_.value(p);  // where a budget's error points
+            s.line = at.line, s.col = at.col;
+            s.hex.enabled = false;  // one fetch, over the whole terrain: tiling 1
             if (!v[i].is_string()) continue;
             read_.texture(s, p);
             if (s.file && s.file->info.layers > 0)

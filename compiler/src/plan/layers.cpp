@@ -6,6 +6,7 @@
 #include <set>
 
 #include "common/text.h"
+#include "hexc/budgets.h"
 #include "hexc/image.h"
 
 namespace hexc {
@@ -35,12 +36,19 @@ double fetches(const SlotPlan& sp) {
     return sp.taps;
 }
 
-// Per layer, the fraction of the splat maps' texels where its weight is at least `skip` (hexcLayerKeep keeps it).
-std::vector<double> coverage(const Material& material, const Layers& layers) {
+// Per layer, the fraction of the splat maps' texels where its weight is at least `skip` (hexcLayerKeep keeps it). A
+// splat map over its budget is an error in `diagnostics`, refused from its header before it is decoded.
+std::vector<double> coverage(const Material& material, const Layers& layers, Diagnostics& diagnostics) {
     std::vector<double> out(layers.layers.size(), 1.0);
     for (size_t k = 0; k < layers.splats.size(); ++k) {
-        const Texture t = decodeTexture(*material.slots[layers.splats[k]].file, false);
-        if (t.isFloat() || t.rgba8.empty()) continue;  // counted as covering everything: the worst case
+        const Slot& splat = material.slots[layers.splats[k]];
+        if (std::optional<Diagnostic> over = overTexelBudget(material, splat, kSplatBudget)) {
+            diagnostics.push_back(*over);
+            continue;
+        }
+        if (!splat.eightBit) continue;  // float weights: counted as covering everything, the worst case, undecoded
+        const Texture t = decodeTexture(*splat.file, false);
+        if (t.rgba8.empty()) continue;  // block-compressed: as float ones
         const size_t texels = size_t(t.width) * size_t(t.height);
         for (size_t c = 0; c < 4 && 4 * k + c < out.size(); ++c) {
             size_t kept = 0;
@@ -122,7 +130,7 @@ void planLayers(const Material& material, ShaderPlan& plan) {
     lp.count = layers.layers.size();
     lp.width = layers.width;
     lp.skipBelow = layers.skipBelow;
-    lp.coverage = coverage(material, layers);
+    lp.coverage = coverage(material, layers, plan.diagnostics);
     planWeights(material, lp, plan);
     for (size_t s : layers.splats) {
         lp.splats.push_back(planIndex(material, s, plan));
