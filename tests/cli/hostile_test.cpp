@@ -19,32 +19,13 @@
 #include <vector>
 
 #include "hexc/image.h"
+#include "hostile.h"
 #include "support.h"
 
 namespace fs = std::filesystem;
+using namespace hexc::test::hostile;
 
 namespace {
-
-// Generous bounds for a 2-core machine running the suite in parallel; a case that needs more is a bug.
-constexpr int kSeconds = 20;
-
-struct Outcome {
-    int exit;         // 124: killed by the time bound
-    std::string err;  // stderr
-};
-
-Outcome runBounded(const std::string& args) {
-#ifdef HEXC_SANITIZED
-    const std::string memory;  // ASan reserves terabytes of address space for its shadow; it checks memory itself
-#else
-    // The address-space bound includes the binary's own mappings (about 300 MiB with glslang and the C++ runtime).
-    constexpr int kMiB = 1536;
-    const std::string memory = "ulimit -v " + std::to_string(kMiB * 1024) + "; ";
-#endif
-    std::string err;
-    int exit = hexc::test::runHexc(args, &err, memory + "timeout " + std::to_string(kSeconds));
-    return {exit, err};
-}
 
 class Hostile : public testing::Test {
 protected:
@@ -177,9 +158,8 @@ TEST_F(Hostile, ConcurrentRunsIntoOneFolderAllSucceed) {
     std::vector<int> exits(8, -1);
     std::vector<std::thread> runs;
     for (size_t i = 0; i < exits.size(); ++i)
-        runs.emplace_back([&, i] {
-            exits[i] = std::system(("timeout 60 " + std::string(HEXC_EXE) + " -q " + m.string() + out() + " 2>/dev/null").c_str());
-        });
+        runs.emplace_back(
+            [&, i] { exits[i] = std::system((bounds() + " " + HEXC_EXE + " -q " + m.string() + out() + " 2>/dev/null").c_str()); });
     for (auto& t : runs) t.join();
     for (int e : exits) EXPECT_EQ(e, 0);
     for (const auto& f : fs::directory_iterator(dir_ / "out")) EXPECT_FALSE(f.path().extension() == ".tmp") << f.path();
@@ -519,8 +499,7 @@ TEST_F(Hostile, OutOfMemoryIsReportedAsSuchNotAsAWriteFailure) {
     hexc::Texture t{4096, 4096, false, std::vector<uint8_t>(size_t(4096) * 4096 * 4, 128), {}};
     fs::path m = write("m.json", materialOn(write("big.png", hexc::pngBytes(t)), R"({"blend": "histogram"})"));
     std::string err;
-    int exit =
-        hexc::test::runHexc(m.string() + out(), &err, "ulimit -v " + std::to_string(450 * 1024) + "; timeout " + std::to_string(kSeconds));
+    int exit = hexc::test::runHexc(m.string() + out(), &err, "ulimit -v " + std::to_string(450 * 1024) + "; " + bounds());
     EXPECT_EQ(exit, 1) << err;
     EXPECT_NE(err.find("m.json: error[HX901]: out of memory"), std::string::npos) << err;
     expectNothingWritten();
@@ -540,7 +519,7 @@ TEST_F(Hostile, MaterialsTooLargeForMemoryAreReportedNotFatal) {
     const std::string mib = std::to_string(fs::file_size(m) >> 20);
     for (const std::string& command : {m.string() + out(), "export-mtlx " + m.string() + " -o " + (dir_ / "out" / "m.mtlx").string()}) {
         std::string err;
-        int exit = hexc::test::runHexc(command, &err, "ulimit -v " + std::to_string(128 * 1024) + "; timeout " + std::to_string(kSeconds));
+        int exit = hexc::test::runHexc(command, &err, "ulimit -v " + std::to_string(128 * 1024) + "; " + bounds());
         EXPECT_EQ(exit, 1) << command << ": " << err;
         EXPECT_NE(err.find("m.json: error[HX901]: out of memory reading this document (" + mib + " MiB)"), std::string::npos) << err;
     }
@@ -564,8 +543,7 @@ TEST_F(Hostile, MemoryRunningOutWhileReadingAMaterialIsReportedNotFatal) {
         const std::string mib = std::to_string(fs::file_size(m) >> 20);
         for (const std::string& command : {m.string() + out(), "export-mtlx " + m.string() + " -o " + (dir_ / "out" / "m.mtlx").string()}) {
             std::string err;
-            int exit = hexc::test::runHexc(command, &err,
-                                           "ulimit -v " + std::to_string(c.limitMiB * 1024) + "; timeout " + std::to_string(kSeconds));
+            int exit = hexc::test::runHexc(command, &err, "ulimit -v " + std::to_string(c.limitMiB * 1024) + "; " + bounds());
             EXPECT_EQ(exit, 1) << c.limitMiB << " MiB: " << command << ": " << err;
             EXPECT_NE(err.find("m.json: error[HX901]: out of memory reading this document (" + mib + " MiB)"), std::string::npos)
                 << c.limitMiB << " MiB: " << err;
