@@ -705,6 +705,21 @@ TEST_F(Hostile, BuildsInSeparatePidNamespacesShareAFolder) {
     EXPECT_NE(runBounded(m.string() + out()).err.find("0 compiled, 1 up to date"), std::string::npos);  // a consistent set
 }
 
+// A scene of `materials` copies of the one-slot material under 4 passes (4 variants each), written into `dir`.
+fs::path sceneOf(const fs::path& dir, int materials, const std::string& material) {
+    std::string list;
+    for (int i = 0; i < materials; ++i) {
+        const std::string name = "m" + std::to_string(i);
+        std::ofstream(dir / (name + ".json")) << std::string(material).replace(9, 3, "\"" + name + "\"");
+        list += (i ? ", \"" : "\"") + name + ".json\"";
+    }
+    const fs::path scene = dir / ("s" + std::to_string(materials) + ".json");
+    std::ofstream(scene) << R"({"scene": "s", "materials": [)" + list +
+                                R"(], "passes": [{"name": "main"}, {"name": "depth", "template": "depth", "slots": []},
+                                {"name": "shadow", "template": "shadow"}, {"name": "weights", "template": "weights"}]})";
+    return scene;
+}
+
 TEST_F(Hostile, AnInterruptedBuildLeavesNoTemporary) {
     // SIGINT and SIGTERM at times spread over a scene build of many variants (writing takes most of its end): whenever
     // a signal lands, no temporary of the killed run stays.
@@ -745,6 +760,71 @@ TEST_F(Hostile, MaterialXDiagnosticsAreLinearAndCapped) {
         EXPECT_LE(lines, 103u) << name;
         EXPECT_NE(o.err.find("more diagnostics not shown (the first 100 are)"), std::string::npos) << o.err.substr(o.err.size() - 300);
     }
+    expectNothingWritten();
+}
+
+// --- Planning is linear in a scene's variants. ---
+
+// The paths one `hexc ARGS` asks stat or lstat about (tests/support/open_log.cpp, preloaded): its file-system work.
+size_t statCalls(const std::string& args, const fs::path& log) {
+    fs::remove(log);
+    std::string err;
+    EXPECT_EQ(hexc::test::runHexc(args, &err, bounds() + " env HEXC_STAT_LOG=" + log.string() + " LD_PRELOAD=" + HEXC_OPEN_LOG_LIB), 0)
+        << err.substr(0, 400);
+    std::ifstream in(log);
+    size_t lines = 0;
+    for (std::string line; std::getline(in, line);) ++lines;
+    return lines;
+}
+
+TEST_F(Hostile, PlanningIsLinearInAScenesVariants) {
+    // Checking that no output is an input once compared every output with every input (two stats a pair), the inputs
+    // repeated once a variant: listing the outputs of a 1,000-variant scene took 42-55 s, of 10,000 over 400 s. Counted
+    // in the paths planning asks the file system about, not in time (bench/planning.py measures that): twice the
+    // variants may cost at most 2.5 times the calls (linear with some slack for the fixed part), where a comparison
+    // of every pair costs four times.
+    size_t calls[2] = {};
+    for (int materials : {10, 20}) {
+        const fs::path scene = sceneOf(dir_, materials, material());
+        calls[materials / 20] = statCalls(scene.string() + out() + " --list-outputs", dir_ / "stats.log");
+        std::printf("  %d variants: %zu paths asked about\n", materials * 4, calls[materials / 20]);
+    }
+    EXPECT_GT(calls[1], calls[0]);  // the log sees planning's calls at all
+    EXPECT_LE(double(calls[1]), 2.5 * double(calls[0]));
+    expectNothingWritten();
+}
+
+// Reading a MaterialX document of many materials once built a line index of the whole document, and searched its top
+// level, for each material: 10,000 materials did not finish. Bounded by processor time, not wall time: twice the
+// materials may cost at most 3 times the time, less a one-material document's (the process's start and the fixed
+// part): halfway between linear reading (2; measured 2.3, with the maps' logarithms and the caches) and quadratic (4).
+// The texture is 4 x 4, so reading it costs next to nothing beside the document.
+TEST_F(Hostile, AMaterialXDocumentIsReadInTimeLinearInItsMaterials) {
+    hexc::Texture tiny{4, 4, false, std::vector<uint8_t>(4 * 4 * 4, 200), {}};
+    const std::string texture = write("tiny.png", hexc::pngBytes(tiny)).string();
+    auto document = [&](int materials) {
+        std::string xml = "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\">\n";
+        for (int i = 0; i < materials; ++i) {
+            const std::string n = std::to_string(i);
+            xml += "  <nodegraph name=\"NG_" + n + "\">\n    <hextiledimage name=\"image\" type=\"color3\">\n" +
+                   "      <input name=\"file\" type=\"filename\" value=\"" + texture + "\" />\n    </hextiledimage>\n" +
+                   "    <output name=\"out\" type=\"color3\" nodename=\"image\" />\n  </nodegraph>\n" + "  <standard_surface name=\"SR_" +
+                   n + "\" type=\"surfaceshader\">\n    <input name=\"base_color\" type=\"color3\" nodegraph=\"NG_" + n +
+                   "\" output=\"out\" />\n  </standard_surface>\n  <surfacematerial name=\"m" + n +
+                   "\" type=\"material\">\n    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"SR_" + n +
+                   "\" />\n  </surfacematerial>\n";
+        }
+        return write("d" + std::to_string(materials) + ".mtlx", xml + "</materialx>\n");
+    };
+    double seconds[3] = {};
+    const int sizes[3] = {1, 2000, 4000};
+    for (int k = 0; k < 3; ++k) {
+        Outcome o = runBounded(document(sizes[k]).string() + out() + " --list-outputs");
+        ASSERT_EQ(o.exit, 0) << o.err.substr(0, 400);
+        seconds[k] = o.cpuSeconds;
+        std::printf("  %d materials: %.2f s of processor time\n", sizes[k], seconds[k]);
+    }
+    EXPECT_LE(seconds[2] - seconds[0], 3 * (seconds[1] - seconds[0]));
     expectNothingWritten();
 }
 
