@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
-#include <thread>
 #include <iostream>
 #include <map>
 #include <set>
+#include <sys/stat.h>
+#include <thread>
+#include <unordered_map>
+#include <unordered_set>
 
 #include <nlohmann/json.hpp>
 
@@ -119,8 +122,9 @@ void addScene(const std::filesystem::path& path, std::string_view text, const Ar
         return;
     }
     SceneSummary summary{*parsed.scene, {}};
+    const std::unordered_set<std::string> asked(a.variants.begin(), a.variants.end());
     for (Variant& v : sceneVariants(*parsed.scene)) {
-        if (!a.variants.empty() && std::find(a.variants.begin(), a.variants.end(), v.name) == a.variants.end()) continue;
+        if (!asked.empty() && !asked.contains(v.name)) continue;
         summary.variants.push_back(v.name);
         const ScenePass& pass = *std::find_if(parsed.scene->passes.begin(), parsed.scene->passes.end(),
                                               [&](const ScenePass& p) { return p.name == v.passName; });
@@ -172,10 +176,10 @@ Inputs readInputs(const Arguments& a) {
 // Every --variant names a variant of a scene given, and no two jobs write files of the same name.
 bool inputsFit(const Arguments& a, const Inputs& in) {
     bool ok = true;
+    std::unordered_set<std::string_view> used;
+    for (const SceneSummary& s : in.scenes) used.insert(s.variants.begin(), s.variants.end());
     for (const std::string& v : std::set<std::string>(a.variants.begin(), a.variants.end())) {
-        bool found = false;
-        for (const SceneSummary& s : in.scenes) found |= std::find(s.variants.begin(), s.variants.end(), v) != s.variants.end();
-        if (found) continue;
+        if (used.contains(v)) continue;
         std::cerr << "hexc: error: --variant " << v << ": " << whyNotInScene(v, in.scenes) << "\n";
         ok = false;
     }
@@ -256,9 +260,11 @@ struct Outputs {
 // engine may build one pipeline for them; counted in `out` for the summary and -v.
 void addSceneIndex(const Arguments& a, const SceneSummary& s, const std::vector<Job>& jobs, Outputs& out) {
     nlohmann::json index = {{"scene", s.scene.name}, {"variants", nlohmann::json::object()}};
-    std::map<std::string, std::string> firstWith;  // shader hash -> the first variant with it
+    std::map<std::string, std::string> firstWith;             // shader hash -> the first variant with it
+    std::unordered_map<std::string_view, const Job*> byName;  // not a search of every job per variant
+    for (const Job& j : jobs) byName.emplace(j.material.name, &j);
     for (const std::string& v : s.variants) {
-        const Job& j = *std::find_if(jobs.begin(), jobs.end(), [&](const Job& job) { return job.material.name == v; });
+        const Job& j = *byName.at(v);
         const std::string hash = shaderHash(a.outDir, j, a.options);
         index["variants"][v] = {{"manifest", v + ".manifest.json"}, {"shader", hash}};
         if (auto [first, fresh] = firstWith.emplace(hash, v); !fresh) {
@@ -283,17 +289,36 @@ Outputs collectOutputs(const Arguments& a, const Inputs& in) {
     return out;
 }
 
-// Every file the run writes, known from planning alone: each job's (outputNames) and the scene indexes. They are what
-// --list-outputs prints and the depfile's targets, so no depfile names an output a build system was not told of.
-std::vector<std::filesystem::path> plannedOutputs(const Arguments& a, const Inputs& in, Diagnostics& diags) {
-    std::vector<std::filesystem::path> outs;
-    for (const SceneSummary& s : in.scenes) outs.push_back(a.outDir / (s.scene.name + ".scene.json"));
+// Every file the run writes, known from planning alone: each job's (outputNames) and the scene indexes, with what
+// planning reported. They are what --list-outputs prints and the depfile's targets, so no depfile names an output a
+// build system was not told of. Planned once a run: planning reads each job's template.
+struct Planned {
+    std::vector<std::filesystem::path> outputs;
+    Diagnostics diagnostics;  // the compile reports them again; --list-outputs, which compiles nothing, prints them
+};
+
+Planned plannedOutputs(const Arguments& a, const Inputs& in) {
+    Planned p;
+    for (const SceneSummary& s : in.scenes) p.outputs.push_back(a.outDir / (s.scene.name + ".scene.json"));
     for (const Job& j : in.jobs) {
         OutputNames names = outputNames(j.material, a.options);
-        diags.insert(diags.end(), names.diagnostics.begin(), names.diagnostics.end());
-        for (const std::string& name : names.names) outs.push_back(a.outDir / name);
+        p.diagnostics.insert(p.diagnostics.end(), names.diagnostics.begin(), names.diagnostics.end());
+        for (const std::string& name : names.names) p.outputs.push_back(a.outDir / name);
     }
-    return outs;
+    return p;
+}
+
+// The files the jobs read, each once in the order first read (a scene's variants share their material's).
+std::vector<std::filesystem::path> readFiles(const Arguments& a, const Inputs& in) {
+    std::vector<std::filesystem::path> ins;
+    std::unordered_set<std::string> seen;
+    for (const Job& j : in.jobs) {
+        std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
+        files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
+        for (auto& f : files)
+            if (seen.insert(f.string()).second) ins.push_back(std::move(f));
+    }
+    return ins;
 }
 
 // Whether outputs named `name` (letters, digits, `_`, `-`) are Windows devices, whatever their extension: `con.frag.hlsl`
@@ -304,31 +329,38 @@ bool reservedOnWindows(const std::string& name) {
     return devices.contains(lowerCase(name));
 }
 
+// A file as the file system knows it, whatever path names it: links followed (as writing would), hard links alike.
+using FileId = std::pair<dev_t, ino_t>;
+std::optional<FileId> fileId(const std::filesystem::path& p) {
+    struct stat s;
+    if (::stat(p.c_str(), &s) != 0) return std::nullopt;
+    return FileId{s.st_dev, s.st_ino};
+}
+
 // No file the run writes may be one it reads (writing it would destroy the build's own input: a template named like
 // an output, a depfile pointed at the material); no two materials or scenes may name their outputs alike but for case
-// (one file on macOS and Windows) or as a Windows device. Checked before anything is compiled or written.
-bool outputsFit(const Arguments& a, const Inputs& in) {
+// (one file on macOS and Windows) or as a Windows device. Checked before anything is compiled or written, with one
+// `stat` a distinct file: linear in the variants, which repeat their material's inputs.
+bool outputsFit(const Arguments& a, const Inputs& in, const Planned& planned) {
     bool ok = true;
     auto refuse = [&](const std::string& why) {
         std::cerr << "hexc: error: " << why << "\n";
         ok = false;
     };
-    Diagnostics planned;  // the compile reports these
-    std::vector<std::filesystem::path> outs = plannedOutputs(a, in, planned), ins;
+    std::map<FileId, std::filesystem::path> read;  // the first input path naming each file
+    for (const std::filesystem::path& f : readFiles(a, in))
+        if (std::optional<FileId> id = fileId(f)) read.try_emplace(*id, f);
+    std::vector<std::filesystem::path> outs = planned.outputs;
     std::vector<std::string> names;
     for (const Job& j : in.jobs) {
         outs.push_back(a.outDir / stampName(j.material.name));
-        for (const auto& f : inputFiles(j.material, a.options)) ins.push_back(f);
-        ins.insert(ins.end(), j.extraInputs.begin(), j.extraInputs.end());
         names.push_back(j.material.name);
     }
     if (!a.depfile.empty()) outs.push_back(a.depfile);
-    std::error_code ec;
     for (const std::filesystem::path& out : outs)
-        for (const std::filesystem::path& input : ins)  // equivalent() follows links and sees hard links
-            if (std::filesystem::equivalent(out, input, ec))
-                refuse("the output " + out.string() + " is the input " + input.string() +
-                       ": writing it would destroy it; choose another -o or --depfile");
+        if (std::optional<FileId> id = fileId(out); id && read.contains(*id))
+            refuse("the output " + out.string() + " is the input " + read.at(*id).string() +
+                   ": writing it would destroy it; choose another -o or --depfile");
     for (const SceneSummary& s : in.scenes) names.push_back(s.scene.name);
     std::map<std::string, std::string> folded;  // lower-cased name -> the name as written
     for (const std::string& name : names) {
@@ -339,37 +371,22 @@ bool outputsFit(const Arguments& a, const Inputs& in) {
     return ok;
 }
 
-// The depfile: every output as a target and every file read.
-std::string depfileFor(const Arguments& a, const Inputs& in) {
-    std::vector<std::filesystem::path> ins;
-    std::set<std::filesystem::path> seenIn;
-    for (const Job& j : in.jobs) {
-        std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
-        files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
-        for (const auto& f : files)
-            if (seenIn.insert(f).second) ins.push_back(f);
-    }
-    Diagnostics planned;  // the compile has reported these already
-    return depfileText(plannedOutputs(a, in, planned), ins);
-}
-
 // --list-outputs: {"outputs": [...], "inputs": [...]}, the files a build would write and those the list is decided
 // from (material and scene files, a user template, and a packing material's textures, whose pixels decide what packs:
 // a build system lists again when one changes). Writes nothing.
-int listOutputs(const Arguments& a, const Inputs& in) {
-    Diagnostics diags;
+int listOutputs(const Arguments& a, const Inputs& in, const Planned& planned) {
     nlohmann::json list = {{"outputs", nlohmann::json::array()}, {"inputs", nlohmann::json::array()}};
-    for (const std::filesystem::path& f : plannedOutputs(a, in, diags)) list["outputs"].push_back(f.generic_string());
-    std::set<std::filesystem::path> seen;
+    for (const std::filesystem::path& f : planned.outputs) list["outputs"].push_back(f.generic_string());
+    std::unordered_set<std::string> seen;
     for (const Job& j : in.jobs) {
         std::set<std::filesystem::path> textures;
         for (const Slot& s : j.material.slots) textures.insert(s.texturePath);
         std::vector<std::filesystem::path> files = inputFiles(j.material, a.options);
         files.insert(files.end(), j.extraInputs.begin(), j.extraInputs.end());
         for (const auto& f : files)
-            if ((j.material.pack || !textures.contains(f)) && seen.insert(f).second) list["inputs"].push_back(f.generic_string());
+            if ((j.material.pack || !textures.contains(f)) && seen.insert(f.string()).second) list["inputs"].push_back(f.generic_string());
     }
-    if (!printDiagnostics(diags, a)) return kInvalidInput;
+    if (!printDiagnostics(planned.diagnostics, a)) return kInvalidInput;
     std::cout << list.dump(2) << "\n";
     return kOk;
 }
@@ -452,8 +469,10 @@ int buildCommand(const Arguments& a) {
         return kWriteFailed;
     }
     Inputs in = readInputs(a);
-    bool ok = inputsFit(a, in) && !in.failed && outputsFit(a, in);
-    if (ok && a.listOutputs) return listOutputs(a, in);
+    bool ok = inputsFit(a, in) && !in.failed;
+    const Planned planned = ok ? plannedOutputs(a, in) : Planned{};
+    ok = ok && outputsFit(a, in, planned);
+    if (ok && a.listOutputs) return listOutputs(a, in, planned);
     if (!ok || !compileJobs(a, in.jobs, in.cache)) {
         std::cerr << "hexc: nothing written\n";
         return kInvalidInput;
@@ -461,7 +480,7 @@ int buildCommand(const Arguments& a) {
     Outputs out = collectOutputs(a, in);
     std::string depfile;
     try {
-        if (!a.depfile.empty()) depfile = depfileFor(a, in);
+        if (!a.depfile.empty()) depfile = depfileText(planned.outputs, readFiles(a, in));
     } catch (const std::invalid_argument& e) {
         std::cerr << "hexc: error: " << e.what() << "\nhexc: nothing written\n";
         return kInvalidInput;

@@ -149,7 +149,13 @@ Reply texels(const Texture& t) {
 
 }  // namespace
 
-Session::Session(fs::path material, fs::path root) : file_(std::move(material)), root_(std::move(root)) {}
+Session::Session(fs::path material, fs::path root) : file_(std::move(material)), root_(std::move(root)) {
+    // A save killed before its rename (SIGKILL runs no handler) left its temporary beside the material, where no build
+    // looks: removed when the next edit of the material starts, as a build removes those in its output folder.
+    std::error_code ec;
+    const fs::path target = fs::is_symlink(file_, ec) ? fs::canonical(file_, ec) : file_;
+    removeDeadTemporaries(target.has_parent_path() ? target.parent_path() : ".");
+}
 
 Reply Session::material() {
     std::string why;

@@ -55,6 +55,12 @@ class Server:
         connection.close()
         return out
 
+    def cpu_seconds(self):
+        """The server's processor time so far (user and system, all threads): a bound on work, which a loaded machine
+        does not stretch as it does wall time."""
+        fields = open("/proc/%d/stat" % self.process.pid).read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
     def json(self, method, path, body=None):
         status, _, data = self.request(method, path, body)
         return status, json.loads(data)

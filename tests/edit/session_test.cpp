@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -133,6 +134,25 @@ void main() {
     EXPECT_EQ(both["template"], "lit");
     EXPECT_NE(both["note"].get<std::string>().find("declares resources of its own (Frame)"), std::string::npos) << both["note"];
     std::filesystem::remove_all(dir);
+}
+
+// A save SIGKILLed before its rename leaves its temporary beside the material; the next edit of the material removes
+// it (a dead writer's: older than 10 s and locked by no one). A file merely named like one of another material's is
+// left, as is anything that is not a temporary's name.
+TEST(EditSessionFolder, DeadTemporariesBesideTheMaterialAreRemoved) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_edit_dead_temporaries";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::filesystem::copy_file("materials/rock.json", dir / "rock.json");
+    const auto old = std::filesystem::file_time_type::clock::now() - std::chrono::minutes(1);
+    for (const char* name : {".rock.json.0123456789abcdef.tmp", "notes.tmp"}) {
+        std::ofstream(dir / name) << "half a save";
+        std::filesystem::last_write_time(dir / name, old);
+    }
+    Session session{dir / "rock.json", "materials"};
+    EXPECT_FALSE(std::filesystem::exists(dir / ".rock.json.0123456789abcdef.tmp"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "notes.tmp"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "rock.json"));
 }
 
 TEST_F(EditSession, RefusesARequestWithoutADocument) {

@@ -138,16 +138,23 @@ void writeFileAtomically(const std::filesystem::path& file, const std::function<
         throw std::runtime_error("cannot write " + file.string() + ": it exists and is not a regular file");
     // A hidden name in the target folder, so the rename stays on one file system and is atomic; random, and created
     // exclusively, so concurrent writers into one folder never share or rename each other's temporary. Locked until
-    // renamed, so that other writers' removeDeadTemporaries leave it alone.
+    // renamed, so that other writers' removeDeadTemporaries leave it alone. Tracked before it is created: a signal
+    // that comes while open() creates it is handled when open() returns, and must find it (a name another writer
+    // holds, EEXIST, is a 64-bit random tag met twice: then untracked before the next is tried).
     std::filesystem::path temp;
     Fd held{-1};
+    size_t entry = kInFlight;
     for (int attempt = 0; held.fd < 0 && attempt < 8; ++attempt) {
         temp = file.parent_path() / ("." + file.filename().string() + "." + temporaryTag() + ".tmp");
+        entry = track(temp);
         held.fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-        if (held.fd < 0 && errno != EEXIST) break;
+        if (held.fd >= 0) break;
+        const int error = errno;
+        untrack(entry);
+        errno = error;
+        if (error != EEXIST) break;
     }
     if (held.fd < 0) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
-    const size_t entry = track(temp);
     ::flock(held.fd, LOCK_EX);
     // A file replaced keeps its permissions (a material kept private stays private); a new one gets the umask's.
     if (struct stat st; ::stat(file.c_str(), &st) == 0) ::fchmod(held.fd, st.st_mode & 07777);

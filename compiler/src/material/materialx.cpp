@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <tuple>
+#include <unordered_map>
 
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
@@ -34,9 +35,25 @@ struct Place {
     TextPos pos;
 };
 
+// What every material of a document shares, made once: a reader per material over it keeps a document of thousands
+// linear (a line index of the whole text, or a search of its top level, per material was quadratic).
+struct Document {
+    Document(std::string_view text, xml_node root) : text(text), root(root), lines(text) {
+        for (xml_node n : root.children()) {  // the first element of a name, as a search from the start finds it
+            const std::string_view kind = n.name();
+            if (kind == "nodegraph") graphs.try_emplace(n.attribute("name").value(), n);
+            if (kind != "input" && kind != "output") nodes.try_emplace(n.attribute("name").value(), n);
+        }
+    }
+    std::string_view text;
+    xml_node root;
+    LineIndex lines;
+    std::unordered_map<std::string_view, xml_node> graphs, nodes;  // the top level's nodegraphs, and its nodes, by name
+};
+
 class Reader {
 public:
-    Reader(std::string_view text, const std::filesystem::path& file, xml_node root) : text_(text), file_(file), root_(root) {}
+    Reader(const Document& doc, const std::filesystem::path& file) : doc_(doc), text_(doc.text), file_(file), root_(doc.root) {}
 
     // The material a <surfacematerial> means, checked by the JSON rules.
     ParseResult read(xml_node surfacematerial) {
@@ -250,7 +267,7 @@ private:
         if (attribute)
             if (auto a = lastAttributes_.find(std::string_view(attribute)); a != lastAttributes_.end()) offset = a->second;
         const bool own = attribute && std::string_view(attribute) != "value";  // an input's value is the input
-        return {lastPath_ + (own ? "/@" + std::string(attribute) : ""), lines_.at(offset)};
+        return {lastPath_ + (own ? "/@" + std::string(attribute) : ""), doc_.lines.at(offset)};
     }
     void at(const std::string& pointer, xml_node node, const char* attribute = nullptr) { places_[pointer] = place(node, attribute); }
     void report(Code code, xml_node node, std::string message, std::string hint = {}) {
@@ -258,8 +275,8 @@ private:
         diags_.push_back(Diagnostic::make(code, {file_.string(), p.pos.line, p.pos.col}, p.path, std::move(message), std::move(hint)));
     }
 
+    const Document& doc_;
     std::string_view text_;
-    LineIndex lines_{text_};
     mutable xml_node last_;  // place()'s last element, its path and attribute offsets
     mutable std::string lastPath_;
     mutable std::map<std::string, size_t, std::less<>> lastAttributes_;
@@ -276,7 +293,8 @@ xml_node Reader::source(xml_node input) {
     xml_node graph = input.parent().parent();
     std::string name = input.attribute("nodename").value();
     if (pugi::xml_attribute ng = input.attribute("nodegraph")) {
-        graph = root_.find_child_by_attribute("nodegraph", "name", ng.value());
+        const auto found = doc_.graphs.find(ng.value());
+        graph = found == doc_.graphs.end() ? xml_node() : found->second;
         if (!graph) {
             report(Code::UnknownReference, input, "no <nodegraph> named `" + std::string(ng.value()) + "`");
             return {};
@@ -292,9 +310,13 @@ xml_node Reader::source(xml_node input) {
         report(Code::MaterialXUnsupported, input, "an input connected by `output` alone is not supported", "connect it with nodename");
         return {};
     }
-    for (xml_node n : graph.children())
-        if (std::string_view(n.name()) != "input" && std::string_view(n.name()) != "output" && name == n.attribute("name").value())
-            return n;
+    if (graph == root_) {
+        if (const auto found = doc_.nodes.find(name); found != doc_.nodes.end()) return found->second;
+    } else {
+        for (xml_node n : graph.children())
+            if (std::string_view(n.name()) != "input" && std::string_view(n.name()) != "output" && name == n.attribute("name").value())
+                return n;
+    }
     report(Code::UnknownReference, input, "no node named `" + name + "` in " + (graph == root_ ? "the document" : namePath(graph)));
     return {};
 }
@@ -500,28 +522,6 @@ void Reader::luma(xml_node input, xml_node node, json& hex, const std::string& h
                "hexc weighs colour samples by Rec. 601 luma (0.299, 0.587, 0.114); `lumacoeffs` is not used");
 }
 
-std::string hexByte(char c) {
-    const char* digits = "0123456789ABCDEF";
-    return {digits[static_cast<unsigned char>(c) >> 4], digits[static_cast<unsigned char>(c) & 15]};
-}
-
-// The offset of the first byte that does not begin or continue a well-formed UTF-8 character (pugixml passes
-// any bytes through; the JSON the document becomes must be UTF-8), if any.
-std::optional<size_t> invalidUtf8(std::string_view s) {
-    for (size_t i = 0; i < s.size();) {
-        const auto c = static_cast<unsigned char>(s[i]);
-        const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 && c >= 0xC2 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E && c <= 0xF4 ? 4 : 0;
-        if (n == 0 || i + n > s.size()) return i;
-        for (size_t k = 1; k < n; ++k)
-            if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return i;
-        const unsigned c1 = static_cast<unsigned char>(s[i + 1 < s.size() ? i + 1 : i]);
-        if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 >= 0xA0) || (c == 0xF0 && c1 < 0x90) || (c == 0xF4 && c1 >= 0x90))
-            return i;  // overlong, a surrogate, or beyond U+10FFFF
-        i += n;
-    }
-    return std::nullopt;
-}
-
 }  // namespace
 
 bool isMaterialXFile(const std::filesystem::path& file) { return lowerCase(file.extension().string()) == ".mtlx"; }
@@ -536,28 +536,30 @@ std::vector<ParseResult> readDocument(std::string_view text, const std::filesyst
         return std::vector<ParseResult>{
             {std::nullopt, {Diagnostic::make(code, {file.string(), p.line, p.col}, "", std::move(message))}, std::nullopt}};
     };
-    if (std::optional<size_t> at = invalidUtf8(text))
-        return failed(Code::XmlSyntax, *at, "invalid UTF-8 (byte 0x" + hexByte(text[*at]) + "); MaterialX documents are UTF-8");
+    if (std::optional<size_t> at = mtlx::invalidUtf8(text))
+        return failed(Code::XmlSyntax, *at, "invalid UTF-8 (byte 0x" + mtlx::hexByte(text[*at]) + "); MaterialX documents are UTF-8");
     pugi::xml_document doc;
     pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!parsed)
         return failed(Code::XmlSyntax, size_t(std::max<ptrdiff_t>(parsed.offset, 0)), std::string("invalid XML: ") + parsed.description());
     xml_node root = doc.document_element();
+    const Document document(text, root);
     if (std::string_view(root.name()) != "materialx")
-        return Reader(text, file, root).problem(root, "expected a <materialx> document, got <" + std::string(root.name()) + ">");
+        return Reader(document, file).problem(root, "expected a <materialx> document, got <" + std::string(root.name()) + ">");
     std::vector<xml_node> materials;
     std::string names;
     for (xml_node n : root.children("surfacematerial")) {
         materials.push_back(n);
         names += std::string(names.empty() ? "" : ", ") + "`" + n.attribute("name").value() + "`";
     }
-    if (materials.empty()) return Reader(text, file, root).problem(root, "no <surfacematerial>: the document holds no material");
+    if (materials.empty()) return Reader(document, file).problem(root, "no <surfacematerial>: the document holds no material");
     if (one && materials.size() > 1)
-        return Reader(text, file, root)
+        return Reader(document, file)
             .problem(root, "several <surfacematerial> elements (" + names + ") where one material is read",
                      "`hexc DOCUMENT.mtlx -o DIR` compiles them all; split the document for render, preview, export and scenes");
     std::vector<ParseResult> out;
-    for (xml_node m : materials) out.push_back(Reader(text, file, root).read(m));
+    const SharedTextureFiles shared;  // the materials' textures, each read once
+    for (xml_node m : materials) out.push_back(Reader(document, file).read(m));
     return out;
 }
 

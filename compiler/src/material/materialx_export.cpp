@@ -7,6 +7,7 @@
 #include <pugixml.hpp>
 
 #include "hexc/compiler.h"
+#include "common/one_line.h"
 #include "hexc/materialx.h"
 #include "material/materialx_names.h"
 
@@ -57,6 +58,14 @@ std::string number(double x) {
     return std::string(buf, end);
 }
 
+// A file name inside an XML comment: on one line (oneLine), and without `--`, which XML does not allow in a comment
+// (pugixml writes a comment's text as it is): the second `-` of a pair as `\x2d`.
+std::string commentText(std::string_view name) {
+    std::string out;
+    for (char c : oneLine(name)) out += c == '-' && out.ends_with('-') ? std::string("\\x2d") : std::string(1, c);
+    return out;
+}
+
 std::string numbers(std::initializer_list<double> xs) {
     std::string out;
     for (double x : xs) out += (out.empty() ? "" : ", ") + number(x);
@@ -75,7 +84,7 @@ public:
         root.append_attribute("version") = "1.39";
         root.append_attribute("colorspace") = "lin_rec709";
         root.append_child(pugi::node_comment)
-            .set_value((" hexc " + std::string(version()) + ", from " + m_.sourceFile.filename().string() +
+            .set_value((" hexc " + std::string(version()) + ", from " + commentText(m_.sourceFile.filename().string()) +
                         ": hexc_* attributes keep the settings MaterialX has no input for (docs/materialx.md) ")
                            .c_str());
         if (m_.layers) return layered();

@@ -516,7 +516,8 @@ private:
             return;
         }
         std::string why;
-        std::shared_ptr<const TextureFile>& file = files_[std::filesystem::weakly_canonical(s.texturePath, ec)];
+        SharedTextureFiles::Files* shared = SharedTextureFiles::current();
+        std::shared_ptr<const TextureFile>& file = (shared ? *shared : files_)[std::filesystem::weakly_canonical(s.texturePath, ec)];
         if (!file)
             if (std::optional<TextureFile> read = readTextureFile(s.texturePath, &why))
                 file = std::make_shared<const TextureFile>(std::move(*read));
@@ -555,6 +556,14 @@ private:
 };
 
 }  // namespace
+
+namespace {
+thread_local SharedTextureFiles::Files* innermost = nullptr;
+}
+
+SharedTextureFiles::SharedTextureFiles() : outer_(innermost) { innermost = &files_; }
+SharedTextureFiles::~SharedTextureFiles() { innermost = outer_; }
+SharedTextureFiles::Files* SharedTextureFiles::current() { return innermost; }
 
 ParseResult parseMaterialJson(std::string_view text, const std::filesystem::path& file) {
     return validate(text, file, &ParseResult::material, &MaterialValidator::run, &ParseResult::partial);

@@ -1,8 +1,10 @@
 // A scene document -> Scene: its keys, its passes, and each material file it lists, parsed on its own.
 #include <algorithm>
+#include <set>
 
 #include "common/suggest.h"
 #include "hexc/scene.h"
+#include "material/parse.h"
 #include "material/rules.h"
 
 namespace hexc {
@@ -42,6 +44,7 @@ public:
 private:
     // The scene's materials, each parsed (paths relative to the scene file) with its own diagnostics first.
     void sceneMaterials(const json& list, Scene& scene) {
+        const SharedTextureFiles shared;  // the materials' textures, each read once
         if (!list.is_array() || list.empty())
             report(list.is_array() ? Code::WrongCount : Code::WrongType, "/materials", "expected a non-empty array of material file paths");
         for (size_t i = 0; list.is_array() && i < list.size(); ++i) {
@@ -57,9 +60,8 @@ private:
                 report(Code::InvalidSceneMaterial, p, "material " + file.string() + " is invalid (see above)");
                 continue;
             }
-            for (const Material& other : scene.materials)
-                if (other.name == r.material->name)
-                    report(Code::DuplicateName, p, "two materials are named `" + other.name + "`; variant files would collide");
+            if (!names_.insert(r.material->name).second)
+                report(Code::DuplicateName, p, "two materials are named `" + r.material->name + "`; variant files would collide");
             scene.materials.push_back(std::move(*r.material));
         }
     }
@@ -82,11 +84,11 @@ private:
         if (v.contains("template")) pass.templ = templateRef(v["template"], p + "/template");
         pass.slots = names(v, p, "slots");
         pass.materials = names(v, p, "materials");
-        std::vector<std::string> all;
-        for (const Material& m : scene.materials) all.push_back(m.name);
         for (size_t j = 0; pass.materials && j < pass.materials->size(); ++j) {
             const std::string& name = (*pass.materials)[j];
-            if (std::find(all.begin(), all.end(), name) != all.end()) continue;
+            if (names_.contains(name)) continue;
+            std::vector<std::string> all;
+            for (const Material& m : scene.materials) all.push_back(m.name);
             std::string hint;
             if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
             report(Code::UnknownReference, pointerAppend(p + "/materials", j), "no material named `" + name + "` in the scene", hint);
@@ -97,19 +99,23 @@ private:
 
     // Each slot a pass keeps is a slot of one of the pass's materials (else it keeps nothing: a misspelling).
     void passSlots(const ScenePass& pass, const std::string& p, const Scene& scene) {
-        std::vector<std::string> all;
+        const std::set<std::string_view> listed =
+            pass.materials ? std::set<std::string_view>(pass.materials->begin(), pass.materials->end()) : std::set<std::string_view>{};
+        std::set<std::string> all;  // each name once: the materials of a scene mostly share their slots' names
         for (const Material& m : scene.materials)
-            if (!pass.materials || std::find(pass.materials->begin(), pass.materials->end(), m.name) != pass.materials->end())
-                for (const Slot& s : m.slots) all.push_back(s.name);
+            if (!pass.materials || listed.contains(m.name))
+                for (const Slot& s : m.slots) all.insert(s.name);
         for (size_t j = 0; pass.slots && !all.empty() && j < pass.slots->size(); ++j) {
             const std::string& name = (*pass.slots)[j];
-            if (std::find(all.begin(), all.end(), name) != all.end()) continue;
+            if (all.contains(name)) continue;
             std::string hint;
-            if (auto best = closestMatch(name, all)) hint = "did you mean " + ticked(*best) + "?";
+            if (auto best = closestMatch(name, {all.begin(), all.end()})) hint = "did you mean " + ticked(*best) + "?";
             report(Code::UnknownReference, pointerAppend(p + "/slots", j), "no material of this pass has a slot named `" + name + "`",
                    hint);
         }
     }
+
+    std::set<std::string> names_;  // of the scene's materials
 };
 
 }  // namespace

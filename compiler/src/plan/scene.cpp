@@ -1,5 +1,6 @@
 // Scene -> the (material, pass) variants to compile.
 #include <algorithm>
+#include <unordered_set>
 
 #include "hexc/scene.h"
 
@@ -7,10 +8,13 @@ namespace hexc {
 
 std::vector<Variant> sceneVariants(const Scene& scene) {
     std::vector<Variant> variants;
-    for (const ScenePass& pass : scene.passes)
+    for (const ScenePass& pass : scene.passes) {
+        // A set, not a search of the pass's list per material: a scene of thousands stays linear.
+        const std::unordered_set<std::string_view> listed =
+            pass.materials ? std::unordered_set<std::string_view>(pass.materials->begin(), pass.materials->end())
+                           : std::unordered_set<std::string_view>{};
         for (const Material& material : scene.materials) {
-            if (pass.materials && std::find(pass.materials->begin(), pass.materials->end(), material.name) == pass.materials->end())
-                continue;
+            if (pass.materials && !listed.contains(material.name)) continue;
             Variant v{material.name + "." + pass.name, material.name, pass.name, material};
             v.material.name = v.name;
             if (pass.templ) v.material.templ = *pass.templ;
@@ -21,6 +25,7 @@ std::vector<Variant> sceneVariants(const Scene& scene) {
                 });
             variants.push_back(std::move(v));
         }
+    }
     return variants;
 }
 

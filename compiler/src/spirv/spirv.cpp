@@ -12,6 +12,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "common/one_line.h"
 #include "plan/plan.h"
 
 namespace hexc {
@@ -178,8 +179,8 @@ SpirvResult compileToSpirv(const std::string& source, ShaderStage stage, const s
     options.validate = false;
     options.generateDebugInfo = !debugName.empty();
     // Source string 0 (the template) named in the module's lines, so a target's `#line` names it rather than "". A `"`
-    // cannot stand in a `#line` name: it becomes `'` there.
-    std::string lineName(debugName);
+    // cannot stand in a `#line` name: it becomes `'` there; a line break would end the directive (oneLine).
+    std::string lineName = oneLine(debugName);
     std::replace(lineName.begin(), lineName.end(), '"', '\'');
     if (options.generateDebugInfo) program.getIntermediate(lang)->setSourceFile(lineName.c_str());
     spv::SpvBuildLogger logger;
