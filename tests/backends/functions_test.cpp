@@ -190,9 +190,11 @@ TEST(EnginePackages, GodotDeclaresEveryGlobalAsAConstant) {
         const std::string text = package("tiles", engine);
         EXPECT_NE(text.find("\nconst uint _"), std::string::npos) << "tiles.json's undefined value is no longer written";
         std::istringstream in(text);
-        for (std::string line; std::getline(in, line);)
-            if (!line.empty() && std::isalpha(static_cast<unsigned char>(line[0])) && line.ends_with(";"))
+        for (std::string line; std::getline(in, line);) {
+            if (!line.empty() && std::isalpha(static_cast<unsigned char>(line[0])) && line.ends_with(";")) {
                 EXPECT_TRUE(line.starts_with("const ") || line.starts_with("uniform ") || line.starts_with("shader_type ")) << line;
+            }
+        }
     }
 }
 
