@@ -9,6 +9,7 @@
 #include "command.h"
 #include "hexc/compiler.h"
 #include "hexc/layout.h"
+#include "hexc/report.h"
 
 namespace CLI {
 class App;
@@ -18,7 +19,6 @@ class Validator;
 namespace hexc::cli {
 
 // The commands' shared pieces (compiler/command), named here as every command of the command line uses them.
-using command::byPosition;
 using command::kInvalidInput;
 using command::kNoVulkan;
 using command::kOk;

@@ -2,12 +2,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <sstream>
-#include <tuple>
 
 #include "hexc/files.h"
 #include "hexc/suggest.h"
@@ -67,15 +64,6 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text, int least,
     if (!(in >> width >> x >> height) || x != 'x' || !in.eof()) return std::nullopt;
     if (width < least || height < least || width > most || height > most) return std::nullopt;
     return std::pair{width, height};
-}
-
-Diagnostics byPosition(Diagnostics diags) {
-    std::map<std::string, size_t> files;
-    for (const Diagnostic& d : diags) files.emplace(d.loc.file, files.size());
-    std::stable_sort(diags.begin(), diags.end(), [&files](const Diagnostic& a, const Diagnostic& b) {
-        return std::tuple(files.at(a.loc.file), a.loc.line, a.loc.col) < std::tuple(files.at(b.loc.file), b.loc.line, b.loc.col);
-    });
-    return diags;
 }
 
 void writeAtomically(const std::filesystem::path& dir, const std::string& name, const std::string& contents) {

@@ -1,6 +1,6 @@
 #pragma once
 // What every `hexc` command shares, the command line's (compiler/cli) and `hexc edit`'s (compiler/edit): the exit
-// codes, parsing a command's arguments, diagnostics in the order a run prints them, and writing a file atomically.
+// codes, parsing a command's arguments and writing a file atomically.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -25,9 +25,6 @@ std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args
 
 // A `--size WxH`: two whole numbers from `least` to `most`, as (width, height); nullopt when `text` is not that.
 std::optional<std::pair<int, int>> parseSize(const std::string& text, int least, int most);
-
-// `diags` as a run prints them: each file's together, in the order files first appear, by line and column.
-Diagnostics byPosition(Diagnostics diags);
 
 // Writes `contents` to dir/name through a temporary file in the same folder and a rename, so a reader
 // never sees a half-written file. Throws std::runtime_error naming the file on failure.

@@ -7,6 +7,7 @@
 
 #include "capture.h"
 #include "hexc/materialx.h"
+#include "hexc/report.h"
 #include "command.h"
 #include "server.h"
 #include "session.h"
@@ -71,7 +72,7 @@ int editCommand(const std::vector<std::string>& args) {
     // Reported now too; a material with errors is still served (the page shows them and reloads once the file is
     // fixed), one that cannot be read is not.
     const ParseResult parsed = parseMaterialFile(material);
-    std::cerr << formatAll(command::byPosition(parsed.diagnostics));
+    std::cerr << formatAll(byPosition(parsed.diagnostics));
     if (!parsed.material && !std::filesystem::is_regular_file(material)) return command::kInvalidInput;
     if (root.empty()) root = material.has_parent_path() ? material.parent_path() : ".";
     Session session(material, root);

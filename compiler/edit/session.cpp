@@ -8,6 +8,7 @@
 #include "hexc/files.h"
 #include "hexc/histogram.h"
 #include "hexc/json_text.h"
+#include "hexc/report.h"
 #include "hexc/spirv.h"
 #include "command.h"
 #include "views.h"
@@ -36,7 +37,7 @@ Json toJson(const Diagnostic& d) {
 
 Json toJson(const Diagnostics& diags) {
     Json out = Json::array();
-    for (const Diagnostic& d : command::byPosition(diags)) out.push_back(toJson(d));
+    for (const Diagnostic& d : byPosition(diags)) out.push_back(toJson(d));
     return out;
 }
 

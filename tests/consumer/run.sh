@@ -149,10 +149,23 @@ grep -q 'moss.json:2:.*error\[HX107\]: /slots/0/kind: .*did you mean `color`' "$
 echo "$good" > "$src/materials/moss.json"
 step="moss.json broken and fixed" expect moss yard
 
-# The library component, in a project of its own (it needs a C++ compiler).
-cmake -S tests/consumer/library -B "$work/library" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" 2>&1 ||
+# The library component, in a project of its own (it needs a C++ compiler), with docs/c-api.md's C program as written.
+sed -n '/^```c$/,/^```$/p' docs/c-api.md | sed '1d;$d' > "$work/hexc_example.c"
+cmake -S tests/consumer/library -B "$work/library" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DC_EXAMPLE="$work/hexc_example.c" > "$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; fail "configuring the library consumer failed"; }
 cmake --build "$work/library" > "$work/log" 2>&1 || { cat "$work/log"; fail "building compile_one failed"; }
 "$work/library/compile_one" "$src/materials/stone.json" > "$work/compiled" || fail "compile_one failed"
 grep -qx stone.frag.spv "$work/compiled" || fail "compile_one (hexc::compiler) did not compile stone: $(cat "$work/compiled")"
 echo "ok: hexc::compiler (COMPONENTS library) links and compiles"
+mkdir -p "$work/c_out"
+"$work/library/hexc_example" "$src/materials/stone.json" "$work/c_out" > "$work/compiled" || fail "hexc_example failed"
+for f in stone.frag.hlsl stone.frag.spv stone.manifest.json; do
+  [ -s "$work/c_out/$f" ] || fail "docs/c-api.md's program did not write $f: $(cat "$work/compiled")"
+done
+# The same code as the tool's; the banner's two lines name the targets asked for, which differ.
+cmp <(tail -n +3 "$work/c_out/stone.frag.hlsl") <(tail -n +3 "$out/shaders/stone.frag.hlsl") ||
+  fail "the C API's stone.frag.hlsl differs from the tool's"
+! "$work/library/hexc_example" materials/invalid/kind_misspelled.json "$work/c_out" 2> "$work/printed" || fail "a bad material compiled"
+grep -q 'kind_misspelled.json:9:15: error\[HX107\]' "$work/printed" || fail "no located diagnostic from the C API: $(cat "$work/printed")"
+echo "ok: docs/c-api.md's C program (hexc/hexc.h) builds as C99 against the package, compiles and reports"

@@ -13,9 +13,10 @@
 
 namespace hexc {
 
-// The running executable's identity (16 hex digits): a hash of the linker's build id, which is a hash of the whole
-// executable file, or of the file itself when it has none. libhexc, glslang, SPIRV-Tools and SPIRV-Cross are linked
-// into it statically, so a rebuilt or upgraded hexc never trusts a stamp or cache entry of another build.
+// The identity (16 hex digits) of the executable or shared object (a Python module) that holds libhexc's code: a hash of
+// the linker's build id, which is a hash of the whole file, or of the file itself when it has none. libhexc, glslang,
+// SPIRV-Tools and SPIRV-Cross are linked into it statically, so a rebuilt or upgraded hexc never trusts a stamp or cache
+// entry of another build, nor does a rebuilt module loaded by the same Python.
 const std::string& buildId();
 
 // Where the folder cache goes unless told: $XDG_CACHE_HOME/hexc, else $HOME/.cache/hexc; empty when neither is set.

@@ -26,13 +26,28 @@ std::string checksum(std::string_view payload) {
     return h.hex();
 }
 
-// The linker's build id of the running executable, its NT_GNU_BUILD_ID note (a hash the linker takes of the whole
-// file it writes), read in memory; empty when it has none.
-std::string linkerBuildId() {
-    std::string id;
+// The object hexc's code is in: the executable, or a shared object that links libhexc (the Python module).
+struct CodeObject {
+    std::string buildId;  // the linker's NT_GNU_BUILD_ID note (a hash it takes of the whole file it writes); empty: none
+    std::string file;     // its file, for a hash of the file when it has no build id
+};
+
+// Found by the address of this function among the loaded objects' segments, and read in memory: the executable's
+// identity would not change when a module loaded into it (Python's) is rebuilt.
+CodeObject codeObject() {
+    CodeObject found{"", "/proc/self/exe"};
 #if __has_include(<link.h>)
     dl_iterate_phdr(
         [](dl_phdr_info* info, size_t, void* out) {
+            const auto self = reinterpret_cast<ElfW(Addr)>(&codeObject);
+            bool mine = false;
+            for (int i = 0; i < info->dlpi_phnum; ++i) {
+                const ElfW(Phdr)& p = info->dlpi_phdr[i];
+                mine |= p.p_type == PT_LOAD && self - info->dlpi_addr - p.p_vaddr < p.p_memsz;
+            }
+            if (!mine) return 0;
+            auto* object = static_cast<CodeObject*>(out);
+            if (info->dlpi_name && *info->dlpi_name) object->file = info->dlpi_name;
             for (int i = 0; i < info->dlpi_phnum; ++i) {
                 if (info->dlpi_phdr[i].p_type != PT_NOTE) continue;
                 const char* at = reinterpret_cast<const char*>(info->dlpi_addr + info->dlpi_phdr[i].p_vaddr);
@@ -41,25 +56,26 @@ std::string linkerBuildId() {
                     const char* name = at + sizeof(ElfW(Nhdr));
                     const char* desc = name + ((note->n_namesz + 3) & ~3u);
                     if (note->n_type == NT_GNU_BUILD_ID && note->n_namesz == 4 && std::memcmp(name, "GNU", 4) == 0)
-                        static_cast<std::string*>(out)->assign(desc, note->n_descsz);
+                        object->buildId.assign(desc, note->n_descsz);
                     at = desc + ((note->n_descsz + 3) & ~3u);
                 }
             }
-            return 1;  // the first object is the executable itself
+            return 1;
         },
-        &id);
+        &found);
 #endif
-    return id;
+    return found;
 }
 
 }  // namespace
 
 const std::string& buildId() {
     static const std::string id = [] {
-        // Without a linker's build id, a hash of the executable's file (14 MB: 30 M instructions of a cold start).
-        std::string bytes = linkerBuildId();
+        // Without a linker's build id, a hash of the object's file (14 MB: 30 M instructions of a cold start).
+        const CodeObject object = codeObject();
+        std::string bytes = object.buildId;
         if (bytes.empty()) {
-            std::ifstream in("/proc/self/exe", std::ios::binary | std::ios::ate);
+            std::ifstream in(object.file, std::ios::binary | std::ios::ate);
             bytes.assign(size_t(std::max<std::streamoff>(in.tellg(), 0)), '\0');
             in.seekg(0).read(bytes.data(), std::streamsize(bytes.size()));
         }

@@ -1,7 +1,11 @@
 #include "hexc/diagnostics.h"
 
+#include <algorithm>
 #include <iterator>
 #include <map>
+#include <tuple>
+
+#include "hexc/report.h"
 
 namespace hexc {
 namespace {
@@ -116,6 +120,15 @@ std::string Diagnostic::format() const {
     out += message;
     if (!hint.empty()) out += " (" + hint + ")";
     return out;
+}
+
+Diagnostics byPosition(Diagnostics diags) {
+    std::map<std::string, size_t> files;
+    for (const Diagnostic& d : diags) files.emplace(d.loc.file, files.size());
+    std::stable_sort(diags.begin(), diags.end(), [&files](const Diagnostic& a, const Diagnostic& b) {
+        return std::tuple(files.at(a.loc.file), a.loc.line, a.loc.col) < std::tuple(files.at(b.loc.file), b.loc.line, b.loc.col);
+    });
+    return diags;
 }
 
 bool hasErrors(const Diagnostics& diags) {
