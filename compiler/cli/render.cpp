@@ -262,7 +262,7 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
     Image image =
         reference::render(s, texture, r.view, r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
                           heights.source());
-    if (kindRow(s.kind).oneChannel)  // as the GPU shows it: (s, s, s, 1)
+    if (kindRow(s.kind).oneChannel && r.output != vk::RenderOutput::Weights)  // as the GPU shows a value: (s, s, s, 1)
         for (size_t i = 0; i < image.rgba.size(); i += 4)
             image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];
     if (r.output == vk::RenderOutput::Normal) vk::derivativeToNormalMap(image);

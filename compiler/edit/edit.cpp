@@ -31,7 +31,8 @@ then the built-in `lit`, as the page says.
 
 Safe by default: it listens on 127.0.0.1 only, every request needs the token of the printed address (a cookie
 after the first load) and this server's own host name, and it serves its page, the material and the
-material's textures only, from the material's folder (--root widens it). docs/edit.md has the details.
+material's textures only, from the material's folder (--root widens it; a texture outside it is an error,
+and hexc edit exits with 1). docs/edit.md has the details.
 )";
 
 }  // namespace
@@ -70,12 +71,18 @@ int editCommand(const std::vector<std::string>& args) {
         return command::kUsage;
     }
     // Reported now too; a material with errors is still served (the page shows them and reloads once the file is
-    // fixed), one that cannot be read is not.
+    // fixed), one that cannot be read is not, nor one whose textures lie outside the folder served: the page could
+    // show none of them, and --root is the fix.
     const ParseResult parsed = parseMaterialFile(material);
     std::cerr << formatAll(byPosition(parsed.diagnostics));
     if (!parsed.material && !std::filesystem::is_regular_file(material)) return command::kInvalidInput;
     if (root.empty()) root = material.has_parent_path() ? material.parent_path() : ".";
     Session session(material, root);
+    if (parsed.material) {
+        const Diagnostics outside = session.confined(*parsed.material);
+        std::cerr << formatAll(command::byPosition(outside));
+        if (!outside.empty()) return command::kInvalidInput;
+    }
     Capture capturing(capture);
     try {
         Server server(session, port, capture.out.empty() ? Server::CaptureHandler{} : capturing.handler());

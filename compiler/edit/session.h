@@ -52,6 +52,8 @@ public:
     std::string version();
     // The shaders compiled for the page so far (its cache's misses; cost() compiles apart): what its edits cost.
     size_t compiles() const { return cache_.stats().misses; }
+    // Diagnostics for textures outside the served folder (or reached through a link that leaves it), located in the file.
+    Diagnostics confined(const Material& material) const;
 
 private:
     struct Parsed {
@@ -60,8 +62,6 @@ private:
         Diagnostics diagnostics;
     };
     Parsed parse(const nlohmann::ordered_json& edited);
-    // Diagnostics for textures outside root_ (or reached through a symlink that leaves it).
-    Diagnostics confined(const Material& material) const;
     std::optional<Texture> loadSlotTexture(const std::string& name, std::string* whyNot);
     CompileResult viewsCompile(const Material& m, Material* shown, std::string* note);
 

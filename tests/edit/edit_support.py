@@ -14,6 +14,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import unittest
 
 # Generous: the suite runs beside other tests on a loaded two-core machine, where Chromium starts in seconds and
 # SwiftShader draws a frame of the page in well under one.
@@ -112,6 +113,20 @@ def browser_or_skip(flags=CHROMIUM_FLAGS):
 def quit_browser(driver):
     driver.quit()
     shutil.rmtree(driver.hexc_profile, ignore_errors=True)
+
+
+def run_with_browser(module, *sharing):
+    """A browser test's main: `module`'s HEXC from the command line, and its DRIVER (and that of the modules in `sharing`,
+    whose functions it calls) one Chromium for all of its tests; exits with their result."""
+    module.HEXC = os.path.abspath(sys.argv.pop(1))
+    module.DRIVER = browser_or_skip()
+    for m in sharing:
+        m.HEXC, m.DRIVER = module.HEXC, module.DRIVER
+    try:
+        result = unittest.main(module=module, verbosity=2, exit=False).result
+    finally:
+        quit_browser(module.DRIVER)
+    sys.exit(0 if result.wasSuccessful() else 1)
 
 
 def wait_for(condition, what, timeout=TIMEOUT):

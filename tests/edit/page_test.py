@@ -16,7 +16,7 @@ import unittest
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from edit_support import Server, browser_or_skip, quit_browser, read_pfm, rock_copy, wait_for, wait_idle, page_state  # noqa: E402
+from edit_support import Server, read_pfm, rock_copy, run_with_browser, wait_for, wait_idle, page_state  # noqa: E402
 
 HEXC = None
 DRIVER = None
@@ -250,7 +250,8 @@ class Page(unittest.TestCase):
         DRIVER.execute_script("window.hexcEdit.selectSlot('sand_albedo');")
         tiling = '[data-pointer="/layers/1/slots/0/hextiling/tiling"] .default'
         self.assertIn("default 6", DRIVER.find_element("css selector", tiling).get_attribute("textContent"))  # the sand layer's own
-        # The sand albedo's values in texture space: hex-tiled with three taps, then with one.
+        # The sand albedo's values in texture space: hex-tiled with three taps, then with one. Each is a picture (finite,
+        # not flat: tests/edit/views_test.py holds every layer's views to `hexc render`), and the edit changes it.
         DRIVER.execute_script("window.hexcEdit.setView({shape: 'flat', output: 'values', rect: [0, 0, 1, 1]});")
         state = wait_idle(DRIVER, state["compiles"])
         before = read_view(24, 24)
@@ -258,7 +259,12 @@ class Page(unittest.TestCase):
         wait_for(lambda: DRIVER.execute_script("return window.hexcEdit.document().layers[1].slots[0].hextiling.taps === 1;"), "the edit")
         after_edit = wait_idle(DRIVER, state["compiles"] + 1, "the edit's compile")
         self.assertEqual(after_edit["status"], "ready", after_edit["shown"])
-        self.assertNotEqual(read_view(24, 24), before)
+        after = read_view(24, 24)
+        for image in (before, after):
+            values = [p[c] for row in image for p in row for c in range(3)]
+            self.assertTrue(all(v is not None and math.isfinite(v) for v in values), "NaN in the sand albedo's values")  # null: NaN
+            self.assertGreater(max(values) - min(values), 0.05, "the sand albedo's values are flat")
+        self.assertNotEqual(after, before)
 
     def test_vertex_colours_weigh_the_layers(self):
         """A layered material weighed by vertex colours alone, which the page paints (templates/edit/view.vert.glsl):
@@ -377,10 +383,4 @@ class Page(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    HEXC = os.path.abspath(sys.argv.pop(1))
-    DRIVER = browser_or_skip()
-    try:
-        result = unittest.main(verbosity=2, exit=False).result
-    finally:
-        quit_browser(DRIVER)
-    sys.exit(0 if result.wasSuccessful() else 1)
+    run_with_browser(sys.modules[__name__])

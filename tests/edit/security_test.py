@@ -10,6 +10,7 @@ import shutil
 import socket
 import sys
 import struct
+import subprocess
 import tempfile
 import threading
 import time
@@ -98,6 +99,18 @@ class Security(unittest.TestCase):
             self.assert_material_unchanged()
         finally:
             shutil.rmtree(outside, ignore_errors=True)
+
+    def test_textures_outside_the_root_stop_it_at_start(self):
+        """materials/terrain names its textures in ../textures: served from its own folder (the default root) none could
+        be shown, so hexc edit says where each is named, as a compile does, and exits 1 before it serves anything."""
+        run = subprocess.run([HEXC, "edit", "materials/terrain/terrain.json", "--port", "0"], capture_output=True, text=True, timeout=60)
+        self.assertEqual(run.returncode, 1, run.stdout + run.stderr)
+        self.assertEqual(run.stdout, "")  # no address: nothing served
+        lines = run.stderr.splitlines()
+        self.assertEqual(len(lines), 13, run.stderr)  # 4 layers of 3 slots, and the splat map
+        for line in lines:
+            self.assertRegex(line, r"^materials/terrain/terrain\.json:\d+:\d+: error\[HX121\]: texture `\.\./textures/terrain_\w+\.png` "
+                                   r"of slot `\w+` is outside the folder hexc edit serves \(materials/terrain\)")
 
     def test_textures_over_the_budgets_are_refused_before_decoding(self):
         # Valid grey PNGs of some tens of KB that the material compiles with (a compile decodes no texels): 9000 x 9000,

@@ -128,6 +128,19 @@ TEST(Plan, LeavesOutTheFeaturesAMaterialTurnsOff) {
     EXPECT_EQ(param(full, full.slots[1].falloff).name, "normal_falloff");
 }
 
+// A layer's slot reads its lattice's tiles from the weights' fill, which only a role's read runs; without shared
+// lattices (hexc edit's page) each computes its own, so that its function also works read alone.
+TEST(Plan, ALayersSlotComputesItsOwnTilesWithoutSharedLattices) {
+    Material terrain = *parseMaterialFile("materials/terrain/terrain.json").material;
+    CompileOptions perSlot;
+    perSlot.shareLattice = false;
+    const ShaderPlan shared = planShader(terrain, {}), separate = planShader(terrain, perSlot);
+    ASSERT_TRUE(shared.layers && separate.layers);
+    EXPECT_FALSE(shared.layers->lattices.empty());
+    EXPECT_TRUE(separate.layers->lattices.empty());
+    for (const SlotPlan& sp : separate.slots) EXPECT_FALSE(sp.layerLattice) << sp.name;
+}
+
 TEST(Plan, ReferencesBakedConstantsAfterTheBlockMembers) {
     Material m = rock();
     m.slots[0].hex.splitCoordinates = true;  // per-frame origin: block members even when baking

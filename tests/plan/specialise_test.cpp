@@ -207,4 +207,18 @@ TEST(SharedLattice, SharingAndBakingChangeNoPixel) {
     EXPECT_LE(e, 16 * std::ldexp(1.0, -24));
 }
 
+// Without shared lattices each layer's slot computes its own tiles (plan_test.cpp: Layers.*): the layers' blend draws the
+// same pixels.
+TEST(SharedLattice, ALayersTilesSharedOrPerSlotChangeNoPixel) {
+    REQUIRE_VULKAN();
+    Material terrain = *parseMaterialFile("materials/terrain/terrain.json").material;
+    CompileOptions perSlot;
+    perSlot.shareLattice = false;
+    const View view{64, 64, {0.2, 0.3, 0.3, 0.4}};
+    Image a = vk::render(*runner(&whyNoVulkan), terrain, vk::RenderOutput::Shaded, "", view);
+    Image b =
+        vk::render(*runner(&whyNoVulkan), terrain, vk::RenderOutput::Shaded, "", view, vk::ExecutedTarget::Spirv, 0, nullptr, {}, perSlot);
+    EXPECT_EQ(vk::compareImages(a, b, 4).max, 0.0);  // the same tiles, computed once or per slot
+}
+
 }  // namespace

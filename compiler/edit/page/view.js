@@ -82,8 +82,9 @@ export class View {
     if (programs.plain.fragment) wanted.push(['plain', programs.plain, '']);
     if (programs.views.fragment) {
       const index = Math.max(0, slots.indexOf(slot));
+      // The template's own shading shows no slot: its program stays linked whichever slot is selected.
       for (const [name, view] of Object.entries(kViews))
-        wanted.push([name, programs.views, `#define ${kViewMacro} ${view}\n#define ${kSlotMacro} ${index}\n`]);
+        wanted.push([name, programs.views, `#define ${kViewMacro} ${view}\n#define ${kSlotMacro} ${view === kViews.hex ? 0 : index}\n`]);
     }
     const linked = wanted.map(([name, p, defines]) => this.linkedProgram(p, defines));
     while (!linked.every(l => l.ready || (l.ready = this.ready(l.program)))) await new Promise(requestAnimationFrame);

@@ -72,7 +72,13 @@ private:
         const LayerReaders read = {
             [this](const json& v, const std::string& p, const HexTiling& h) { return slot(v, p, h); },
             [this](const json& v, const std::string& p, HexTiling& h) { hexSettings(v, p, h); },
-            [this](Slot& s, const std::string& p) { texture(s, p); },
+            [this](Slot& s, const std::string& p) {
+                texture(s, p);
+                if (s.line == 0) {  // a splat map, which has no kind: located at its file name
+                    const TextPos at = locator_.value(p);
+                    s.line = at.line, s.col = at.col;
+                }
+            },
         };
         parseLayers(*this, doc, m, read);
     }

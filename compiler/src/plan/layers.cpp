@@ -119,7 +119,7 @@ bool layerSlotRead(const Material& material, size_t index, const std::string& te
     return false;
 }
 
-void planLayers(const Material& material, ShaderPlan& plan) {
+void planLayers(const Material& material, bool shareTiles, ShaderPlan& plan) {
     if (!material.layers) return;
     const Layers& layers = *material.layers;
     // The functions output reads every role: each is an engine function.
@@ -160,7 +160,7 @@ void planLayers(const Material& material, ShaderPlan& plan) {
     }
     lp.worstFetches += double(lp.splats.size());
     lp.expectedFetches += double(lp.splats.size());
-    shareLattices(lp, plan);
+    if (shareTiles) shareLattices(lp, plan);
     plan.layers = std::move(lp);
 }
 

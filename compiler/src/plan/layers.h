@@ -13,6 +13,9 @@ namespace hexc {
 bool layerSlotRead(const Material& material, size_t index, const std::string& templateSource, bool readsFirst);
 
 // plan.layers, after plan.slots; nothing when the material has no layers or the template reads none of its roles.
-void planLayers(const Material& material, ShaderPlan& plan);
+// `shareTiles` (CompileOptions::shareLattice): each lattice's tiles are computed once per pixel with the weights and
+// read by every layer's slot of that lattice; without, each slot computes its own, so that its function also works
+// called alone, outside a role's read (hexc edit's views of a layer's slot).
+void planLayers(const Material& material, bool shareTiles, ShaderPlan& plan);
 
 }  // namespace hexc

@@ -352,7 +352,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     // The built-in `functions` named by a material is the functions output, as with --functions.
     plan.functions = options.functions || plan.templateName == TemplateRef::builtin("functions").path();
     planSlots(material, options, plan);
-    planLayers(material, plan);
+    planLayers(material, options.shareLattice, plan);
     if (plan.layers && !options.skipLayers) {  // every layer fetched at every pixel: the worst case is the expected one
         plan.layers->skip = false;
         plan.layers->expectedFetches = plan.layers->worstFetches;
