@@ -80,7 +80,7 @@ int editCommand(const std::vector<std::string>& args) {
     Session session(material, root);
     if (parsed.material) {
         const Diagnostics outside = session.confined(*parsed.material);
-        std::cerr << formatAll(command::byPosition(outside));
+        std::cerr << formatAll(byPosition(outside));
         if (!outside.empty()) return command::kInvalidInput;
     }
     Capture capturing(capture);
