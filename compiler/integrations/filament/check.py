@@ -38,7 +38,7 @@ def matc(mat):
 
 
 def texture_args(material, pkg, manifest):
-    files = {s["name"]: (Path(material).parent / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
+    files = {s["name"]: (pkg / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
     for p in manifest.get("packed_textures", []):
         files[p["name"]] = (pkg / p["file"], p["colorspace"] == "srgb")
     return [f"{w['uniform']}={files[n][0].resolve()}{':srgb' if files[n][1] else ''}" for n, w in manifest["targets"]["glsl"]["textures"].items()]

@@ -30,7 +30,7 @@ def package(hexc, material, work, origin):
 
 def textures(material, pkg, manifest):
     """uniform -> the file Godot loads and whether it is sRGB, from the manifest."""
-    files = {s["name"]: (Path(material).parent / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
+    files = {s["name"]: (pkg / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
     for p in manifest.get("packed_textures", []):
         files[p["name"]] = (pkg / p["file"], p["colorspace"] == "srgb")
     return {where["uniform"]: {"path": str(files[name][0].resolve()), "srgb": files[name][1]}
