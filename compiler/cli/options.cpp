@@ -174,7 +174,8 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
         ->needs(debug);
     app.add_flag("--emit-generated", a.options.emitGenerated, "also write the generated Vulkan GLSL fed to glslang: <name>.generated.frag");
     app.add_flag("--manifest-paths", u.manifestPaths,
-                 "the manifest also gives where the material, its textures, template and\nlayout file are, relative to the output folder");
+                 "the manifest also gives where the material, its textures, template and\nlayout file are, relative to the output folder "
+                 "(always with --engine:\nrelative to each package's folder)");
     app.add_flag("--bake", a.options.bake,
                  "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
     app.add_flag_callback(
@@ -236,7 +237,8 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     }
     a.materials.assign(u.materials.begin(), u.materials.end());
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
-    if (u.manifestPaths) a.options.manifestPathsFrom = a.outDir;
+    // An engine package's manifest gives the textures the package does not hold from its own folder in the output folder.
+    if (u.manifestPaths || !a.options.engines.empty()) a.options.manifestPathsFrom = a.outDir;
     applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
     if (a.options.functions && u.targets.empty()) a.options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};  // no SPIR-V form
     if (!u.layout.resolve(a.options.layout)) return kInvalidInput;

@@ -16,6 +16,7 @@
 #include "hexc/budgets.h"
 #include "progress.h"
 #include "hexc/material.h"
+#include "hexc/templates.h"
 #include "reference/layers.h"
 #include "reference/reference.h"
 #include "vk/render.h"
@@ -274,10 +275,12 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
 namespace {
 
 // shownMaterial, its note printed as the command line says it, with what picks another template.
+// Refuses (HX208) a template that reads none of the material's slots: its picture would show nothing of them.
 Material shownWithNote(const Material& material, const std::string& templateName, const CompileOptions& options) {
     std::string note;
     Material shown = vk::shownMaterial(material, templateName, options, &note);
     if (!note.empty()) std::cerr << "hexc: note: " << note << " (--template picks another)\n";
+    if (Diagnostics none = checkTemplateReadsSlots(shown, options); !none.empty()) throw CompileError{none};
     return shown;
 }
 

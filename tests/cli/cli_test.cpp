@@ -202,6 +202,31 @@ TEST(Cli, ManifestPathsSayWhereTheInputsWere) {
     EXPECT_FALSE(nlohmann::json::parse(readFile(dir / "out" / "engine_rock.manifest.json")).contains("source"));
 }
 
+// A material whose template reads none of its slots (a slot named for what it is, not for what `lit` reads) has no
+// picture to show: render and preview say so at the slot, with what the template reads and what to do, exit 1 (bad
+// input), before any Vulkan device is needed, and write nothing.
+TEST(Cli, RenderAndPreviewOfATemplateThatReadsNoSlotSayWhatItReads) {
+    const std::filesystem::path dir = freshDir("hexc_reads_no_slot");
+    std::filesystem::create_directories(dir);
+    std::filesystem::create_directory_symlink(std::filesystem::absolute("materials/textures"), dir / "textures");
+    std::ofstream(dir / "x.json")
+        << R"({"name":"x","template":"lit","slots":[{"name":"paint","texture":"textures/rock_albedo.png","kind":"color"}]})";
+    const std::string expected =
+        (dir / "x.json").string() +
+        ":1:99: error[HX208]: /slots/0: template `templates/builtin/lit.glsl` reads none of this material's slots (`paint`), so its "
+        "picture would show nothing of the material: a template reads a slot by its name (`hexc_<name>`), and this one reads "
+        "`albedo` (color), `normal` (normal) and `roughness` (scalar) (rename `paint` to `albedo`, which it reads, pass "
+        "--template with a template that reads `paint`, or show it alone with `hexc render --output albedo --slot paint`)\n";
+    for (const char* command : {"render", "preview"}) {
+        std::string err;
+        EXPECT_EQ(runHexc(std::string(command) + " " + (dir / "x.json").string() + " -q -o " + (dir / "x.png").string(), &err), 1)
+            << command << ": " << err;
+        EXPECT_EQ(err, expected) << command;
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << command;
+    }
+    std::filesystem::remove_all(dir);
+}
+
 // The banner names the material file: renaming the file, its content unchanged, compiles again. In a folder of its own
 // (mkdtemp), so that two runs of the suite at once (release and sanitizer builds) do not rename each other's file.
 TEST(Cli, ARenamedMaterialFileIsNotUpToDate) {

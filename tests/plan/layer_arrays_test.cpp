@@ -90,6 +90,50 @@ TEST(LayerArrays, OffOneLayerGeneralCodeAndTheFunctionsOutputKeepSeparateTexture
     EXPECT_EQ(plan.layers->arrays.front().refused, "one layer: there is nothing to share");
 }
 
+// The plan's HX129 warnings, formatted.
+std::vector<std::string> notArrayed(const ShaderPlan& plan) {
+    std::vector<std::string> out;
+    for (const Diagnostic& d : plan.diagnostics)
+        if (d.code == Code::NotArrayed) out.push_back(d.format());
+    return out;
+}
+
+TEST(LayerArrays, ARoleKeptApartByItsTexturesIsAWarningNamingTheLayersAndHowToGetOneArray) {
+    Material sizes = terrain();
+    slotOf(sizes, 2, 0).width = slotOf(sizes, 2, 0).height = 128;
+    EXPECT_EQ(notArrayed(planShader(sizes, {})),
+              std::vector<std::string>{
+                  "materials/terrain/terrain.json:15:34: warning[HX129]: /layers/2/slots/0: role `albedo` is 4 textures, one per "
+                  "layer, not one texture array (4 texture units instead of 1): sizes differ: layer `grass` 256x256, layer `sand` "
+                  "256x256, layer `pebbles` 128x128, layer `snow` 256x256 (resize them to one size for one array, or set "
+                  "layer_blend.arrays to \"off\" for separate textures)"});
+    const std::pair<std::function<void(Slot&)>, const char*> others[] = {
+        {[](Slot& s) { s.eightBit = false; },
+         "formats differ: `grass_normal` and `sand_normal` are 8-bit and float (store them in one format"},
+        {[](Slot& s) { s.channelNames = "rgba"; },
+         "channels differ: `grass_normal` and `sand_normal` have rgb and rgba (give them the same"},
+    };
+    for (const auto& [apply, says] : others) {
+        Material m = terrain();
+        apply(slotOf(m, 1, 1));
+        const std::vector<std::string> warnings = notArrayed(planShader(m, {}));
+        ASSERT_EQ(warnings.size(), 1u) << says;
+        EXPECT_NE(warnings[0].find("/layers/1/slots/1: role `normal` is 4 textures"), std::string::npos) << warnings[0];
+        EXPECT_NE(warnings[0].find(says), std::string::npos) << warnings[0];
+    }
+    // Where the settings ask for separate textures, or there is one layer, nothing to warn of.
+    Material off = sizes;
+    off.layers->arrays = false;
+    CompileOptions general, functions;
+    general.specialise = false;
+    functions.functions = true;
+    EXPECT_TRUE(notArrayed(planShader(off, {})).empty());
+    EXPECT_TRUE(notArrayed(planShader(sizes, general)).empty());
+    EXPECT_TRUE(notArrayed(planShader(sizes, functions)).empty());
+    EXPECT_TRUE(notArrayed(planShader(terrain(), {})).empty());
+    EXPECT_TRUE(notArrayed(planShader(loadMaterial("tests/execution/layers/one.json"), {})).empty());
+}
+
 TEST(LayerArrays, TheShaderReadsEachLayerThroughTheArrayAtAConstantLayer) {
     Material m = terrain();
     m.templ = TemplateRef::builtin("lit");

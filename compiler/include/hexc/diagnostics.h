@@ -48,6 +48,7 @@ enum class Code {
     LayerRoles,
     LayerWeights,
     TextureArray,
+    NotArrayed,
     // templates and shader code
     UnknownTemplate,
     TemplateUnreadable,

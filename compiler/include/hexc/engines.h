@@ -21,7 +21,9 @@ bool isWebEngine(Engine engine);
 // the functions it holds, the textures hexc derives), compiled with `options` as the functions output in the engine's
 // GLSL dialect (GLSL ES 3.00 in the web engines' ES module, engines/web.h) or HLSL (Unity's Shader Graph Custom
 // Function file and URP shader, Unreal's Custom node include: engines/hlsl.h), every setting baked. A slot no engine input
-// takes is a warning, its function kept but not called.
+// takes is a warning, its function kept but not called. The manifest names only files in the package, or a file outside
+// it from the package's folder: with options.manifestPathsFrom (the folder the caller writes into), a texture the
+// package does not hold from manifestPathsFrom/<engine>; without it, as the material names it.
 CompileResult compileForEngine(const Material& material, Engine engine, CompileOptions options);
 
 // The names of the files compileForEngine writes, "<engine>/..." (found by planning alone: hexc --list-outputs).

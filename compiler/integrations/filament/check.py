@@ -56,10 +56,10 @@ def matc(mat, *options):
     return filamat if run.returncode == 0 else (run.stdout + run.stderr)[-3000:]
 
 
-def texture_args(material, pkg, swap=None):
+def texture_args(pkg, swap=None):
     """UNIFORM=FILE[:srgb] of each texture the manifest names; `swap` gives a slot another file."""
     manifest = ec.manifest(pkg)
-    files = {s["name"]: (Path(material).parent / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
+    files = {s["name"]: (pkg / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
     for p in manifest.get("packed_textures", []):
         files[p["name"]] = (pkg / p["file"], p["colorspace"] == "srgb")
     for name, path in (swap or {}).items():
@@ -130,7 +130,7 @@ class Views:
         f = functions[function % len(functions)]  # number len(functions): the first, times NaN
         self.controls += bool(control)
         name = f"{Path(material).stem}_{origin}_{mesh or origin}_{function}" + (f"_control{self.controls}" if control else "")
-        out = render(self.renderer, filamat, self.work / f"{name}.png", texture_args(material, pkg, swap),
+        out = render(self.renderer, filamat, self.work / f"{name}.png", texture_args(pkg, swap),
                      mesh_uv(rect, mesh or origin, mirror), "--int", f"hexcShow={function}")
         view = {"package": pkg, "origin": origin if not mesh else f"{origin} package on a {mesh} mesh", "size": SIZE, "rect": rect,
                 "relative": 0.0, "encode": ec.linear}
@@ -148,7 +148,7 @@ def lit(hexc, renderer, work, material, origin, mesh=None, swap=None, lights=LIG
     if not isinstance(filamat, Path):
         sys.exit(f"FAIL matc {pkg}:\n{filamat}")
     return {side: render(renderer, filamat, work / f"{material.stem}_{origin}_{mesh or origin}_{side}{'_swap' if swap else ''}.png",
-                         texture_args(material, pkg, swap), mesh_uv([0, 0, 1, 1], mesh or origin), "--light", light)
+                         texture_args(pkg, swap), mesh_uv([0, 0, 1, 1], mesh or origin), "--light", light)
             for side, light in lights.items()}
 
 

@@ -43,10 +43,10 @@ def package(hexc, material, work, bottom_left=False):
     return (out / "godot3") if run.returncode == 0 else run.stderr
 
 
-def textures(material, pkg, swap=None):
+def textures(pkg, swap=None):
     """uniform -> the file Godot loads and whether it is sRGB, from the manifest; `swap` gives a slot another file."""
     manifest = ec.manifest(pkg)
-    files = {s["name"]: (Path(material).parent / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
+    files = {s["name"]: (pkg / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
     for p in manifest.get("packed_textures", []):
         files[p["name"]] = (pkg / p["file"], p["colorspace"] == "srgb")
     for name, path in (swap or {}).items():
@@ -128,17 +128,17 @@ def draw(hexc, jobs, work):
         rect = rect_for(ec.manifest(pkg))
         for f in ec.manifest(pkg)["functions"]:
             if f["returns"] != "vec2":  # the derivative: its normal function is checked
-                jobs.add(value_shader(pkg, f), textures(material, pkg), value_check(hexc, material, pkg, f, rect),
+                jobs.add(value_shader(pkg, f), textures(pkg), value_check(hexc, material, pkg, f, rect),
                          f"{Path(material).stem}_{f['name']}", uv=rect)
     for convention in ("gl", "dx"):
         material = ec.probe_material(work / "probe", convention, albedo=False)
         pkg = package(hexc, material, work)
         for side, light in LIGHTS.items():
-            jobs.add(str(next(pkg.glob("*.shader"))), textures(material, pkg),
+            jobs.add(str(next(pkg.glob("*.shader"))), textures(pkg),
                      lit_check(f"probe bumps ({convention} map) on Godot's QuadMesh", side), f"{material.stem}_{side}", light=light)
     for material in (ROOT / "materials" / "rock.json", work / "layered" / "layered.json", work / "probe" / "probe_gl.json"):
         pkg = package(hexc, material, work)  # docs/engines.md's screenshots: lit by Godot, not checked
-        jobs.add(str(next(pkg.glob("*.shader"))), textures(material, pkg), lambda out, errors: False, f"{material.stem}_lit",
+        jobs.add(str(next(pkg.glob("*.shader"))), textures(pkg), lambda out, errors: False, f"{material.stem}_lit",
                  light=[0.4, 0.4, 0.8])
 
 
@@ -151,16 +151,16 @@ def controls(hexc, jobs, work):
     mirrored = [rect[2], rect[1], rect[0], rect[3]]
     decoded = ec.srgb_decoded_copy(work / "probe" / "probe_albedo.png", work / "probe" / "probe_albedo_decoded.png")
     for what, shader, tex, uv in (
-            ("v flipped: the package built with --uv-bottom-left", value_shader(bl, albedo), textures(probe, bl), rect),
-            ("u mirrored: a mesh whose u runs right to left", value_shader(pkg, albedo), textures(probe, pkg), mirrored),
+            ("v flipped: the package built with --uv-bottom-left", value_shader(bl, albedo), textures(bl), rect),
+            ("u mirrored: a mesh whose u runs right to left", value_shader(pkg, albedo), textures(pkg), mirrored),
             ("sRGB decoded twice: a linearised copy of the albedo bound as sRGB", value_shader(pkg, albedo),
-             textures(probe, pkg, {"albedo": decoded}), rect),
-            ("a NaN value: the albedo function times NaN", value_shader(pkg, albedo, nan=True), textures(probe, pkg), rect)):
+             textures(pkg, {"albedo": decoded}), rect),
+            ("a NaN value: the albedo function times NaN", value_shader(pkg, albedo, nan=True), textures(pkg), rect)):
         jobs.add(shader, tex, value_check(hexc, probe, pkg, albedo, rect, what), f"control_{len(jobs.jobs)}", uv=uv)
     bumps_bl, bumps_pkg = package(hexc, bumps, work, bottom_left=True), package(hexc, bumps, work)
-    jobs.add(str(next(bumps_bl.glob("*.shader"))), textures(bumps, bumps_bl),
+    jobs.add(str(next(bumps_bl.glob("*.shader"))), textures(bumps_bl),
              lit_check("v flipped: the bumps package built with --uv-bottom-left", "top", True), "control_bumps_v", light=TOP)
-    jobs.add(str(next(bumps_pkg.glob("*.shader"))), textures(bumps, bumps_pkg, {"normal": work / "probe" / "probe_normal_dx.png"}),
+    jobs.add(str(next(bumps_pkg.glob("*.shader"))), textures(bumps_pkg, {"normal": work / "probe" / "probe_normal_dx.png"}),
              lit_check("green inverted: the DirectX map bound to the green-up slot", "top", True), "control_bumps_green", light=TOP)
 
 
@@ -175,7 +175,7 @@ def matrix(hexc, jobs, work):
         elif isinstance(pkg, str):
             failed += ec.row(f"matrix: {material.name}", "hexc refused it: " + pkg.strip(), False)
         else:
-            jobs.add(str(next(pkg.glob("*.shader"))), textures(material, pkg), compile_check(material))
+            jobs.add(str(next(pkg.glob("*.shader"))), textures(pkg), compile_check(material))
     return failed
 
 

@@ -46,6 +46,7 @@ constexpr CodeInfo kCatalogue[] = {
     {Code::LayerRoles, "HX126", Error},
     {Code::LayerWeights, "HX127", Error},
     {Code::TextureArray, "HX128", Error},
+    {Code::NotArrayed, "HX129", Warning},
     {Code::UnknownTemplate, "HX200", Error},
     {Code::TemplateUnreadable, "HX201", Error},
     {Code::TemplateNoVersion, "HX202", Error},

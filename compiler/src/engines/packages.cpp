@@ -186,6 +186,27 @@ std::vector<OutputFile> inFolder(Engine engine, std::vector<OutputFile> files, s
     return out;
 }
 
+// The package's manifest names only files the package holds, or a file outside it from the package's folder: each
+// target's `file` is the package file that holds the functions (`functionsFile`), a slot's `texture` its copy in the
+// package (the web packages') or, where the caller says where the package goes (`source`, from
+// CompileOptions::manifestPathsFrom), the material's texture from the package's folder. Histogram tables and packed
+// textures are files of the package already.
+void placeManifest(std::vector<OutputFile>& files, const Material& material, const std::string& functionsFile,
+                   const std::vector<OutputFile>& package) {
+    const auto file = std::find_if(files.begin(), files.end(), [](const OutputFile& f) { return f.name.ends_with(".manifest.json"); });
+    nlohmann::json manifest = nlohmann::json::parse(file->contents);
+    for (auto& [target, entry] : manifest["targets"].items()) entry["file"] = functionsFile;
+    for (nlohmann::json& s : manifest["slots"]) {
+        const Slot& slot = *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& m) { return m.name == s["name"]; });
+        const std::string copy = textureCopyName(material, slot);
+        if (std::any_of(package.begin(), package.end(), [&](const OutputFile& f) { return f.name == copy; }))
+            s["texture"] = copy;
+        else if (manifest.contains("source"))
+            s["texture"] = manifest["source"]["textures"][slot.name];
+    }
+    file->contents = manifest.dump(2) + "\n";
+}
+
 bool asksForWgsl(const CompileOptions& options) {
     return std::find(options.targets.begin(), options.targets.end(), Target::Wgsl) != options.targets.end();
 }
@@ -203,6 +224,8 @@ CompileOptions packageOptions(Engine engine, CompileOptions options) {
     if (wgsl) options.targets.push_back(Target::Wgsl);
     options.glslEs = isWebEngine(engine);
     options.glslVersion = options.glslEs ? 300 : 330;
+    // The package's manifest sits in "<engine>/": where it says the inputs are, it says so from there.
+    if (!options.manifestPathsFrom.empty()) options.manifestPathsFrom /= std::string(toString(engine));
     return options;
 }
 
@@ -232,6 +255,7 @@ CompileResult compileForLanguage(const Material& material, Engine engine, Compil
     std::vector<OutputFile> package =
         hlsl ? hlslPackage(material, engine, manifest, *file(".functions.hlsl"), bottomLeft, r.diagnostics)
              : webPackage(material, engine, manifest, {*file(".functions.glsl"), file(".functions.wgsl")}, bottomLeft, r.diagnostics);
+    placeManifest(r.files, material, package.front().name, package);
     r.files = r.ok() ? inFolder(engine, std::move(r.files), std::move(package)) : std::vector<OutputFile>{};
     return r;
 }
@@ -331,6 +355,8 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
     if (isWebEngine(engine) || isHlslEngine(engine)) return compileForLanguage(material, engine, options);
     CompileResult r = compile(material, options);
     if (!r.ok()) return r;
+    const std::string source = material.name + kExtensions[int(engine)];
+    placeManifest(r.files, material, source, {});
     std::vector<OutputFile> files;
     nlohmann::json manifest;
     std::string glsl;
@@ -356,8 +382,7 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
         {"normal", std::regex_replace(w.normal, std::regex("UV_IN"), uv)},
     };
     const std::string& templ = *embeddedText(kTemplates[int(engine)]);
-    files.push_back({std::string(toString(engine)) + "/" + material.name + kExtensions[int(engine)],
-                     expandTokens(templ, tokens, kTemplates[int(engine)])});
+    files.push_back({std::string(toString(engine)) + "/" + source, expandTokens(templ, tokens, kTemplates[int(engine)])});
     r.files = std::move(files);
     return r;
 }

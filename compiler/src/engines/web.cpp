@@ -35,11 +35,6 @@ const Slot& slotNamed(const Material& material, const std::string& name) {
     return *std::find_if(material.slots.begin(), material.slots.end(), [&](const Slot& s) { return s.name == name; });
 }
 
-// A slot's texture as the package holds it: <material>.<slot>.<the file's extension>, beside the module.
-std::string textureCopyName(const Material& material, const Slot& slot) {
-    return material.name + "." + slot.name + slot.texturePath.extension().string();
-}
-
 std::string moduleName(const Material& material, const WebEngine& web) { return material.name + "." + web.suffix + ".js"; }
 
 // The browser decodes the textures (an Image element): PNG, JPEG or WebP, 8 bits per channel.
@@ -122,6 +117,10 @@ void wire(const Material& material, const WebEngine& web, const nlohmann::json& 
 }
 
 }  // namespace
+
+std::string textureCopyName(const Material& material, const Slot& slot) {
+    return material.name + "." + slot.name + slot.texturePath.extension().string();
+}
 
 bool isWebEngine(Engine engine) {
     return std::any_of(webEngines().begin(), webEngines().end(), [&](const WebEngine& e) { return e.engine == engine; });

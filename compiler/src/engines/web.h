@@ -17,6 +17,9 @@ namespace hexc {
 // The names webPackage gives its files, `copied` the slots whose own textures the functions read (not packed).
 std::vector<std::string> webPackageNames(const Material& material, Engine engine, const std::vector<const Slot*>& copied);
 
+// A slot's texture as a web package holds it: <material>.<slot>.<the file's extension>, beside the module.
+std::string textureCopyName(const Material& material, const Slot& slot);
+
 // The functions output a web package holds: its GLSL ES 3.00, and its WGSL when asked for (Babylon.js on WebGPU).
 struct WebFunctions {
     std::string glsl;

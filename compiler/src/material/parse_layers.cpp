@@ -52,9 +52,17 @@ private:
             report(Code::WrongType, "/layers", "expected an array of layers, got " + typeName(v));
             return;
         }
-        if (v.empty() || v.size() > Layers::kMaxLayers)
-            report(Code::WrongCount, "/layers",
-                   "expected 1 to " + std::to_string(Layers::kMaxLayers) + " layers, got " + std::to_string(v.size()));
+        declared_ = v.size();
+        const std::string count = "expected 1 to " + std::to_string(Layers::kMaxLayers) + " layers, got " + std::to_string(v.size());
+        if (v.empty())
+            report(Code::WrongCount, "/layers", count,
+                   "give `layers` a layer {\"name\", \"slots\"}, or leave out `layers` and `layer_blend` for a material of its "
+                   "`slots` alone");
+        else if (v.size() > Layers::kMaxLayers)
+            report(Code::WrongCount, "/layers", count,
+                   "one shader blends at most " + std::to_string(Layers::kMaxLayers) +
+                       " layers (two splat maps): split the terrain into materials of at most " + std::to_string(Layers::kMaxLayers) +
+                       " layers each, or merge layers");
         for (size_t i = 0; i < v.size() && i < Layers::kMaxLayers; ++i) layer(v[i], pointerAppend("/layers", i), m, layers);
     }
 
@@ -174,6 +182,7 @@ private:
         std::vector<std::string> names;
         for (const Layers::Role& r : layers.roles) names.push_back(r.name);
         const auto it = std::find(names.begin(), names.end(), s.name);
+        if (names.empty()) return SIZE_MAX;  // the first layer read no slot: reported there, with no roles to name here
         if (it == names.end()) {
             std::string hint;
             if (auto best = closestMatch(s.name, names)) hint = "did you mean " + ticked(*best) + "?";
@@ -245,9 +254,9 @@ private:
         const int i = choice(v["weights"], p, kLayerWeights);
         if (i < 0) return false;
         layers.weights = LayerWeights(i);
-        if (layers.weights != LayerWeights::Splat && layers.layers.size() > Layers::kMaxVertexLayers)
+        if (layers.weights != LayerWeights::Splat && declared_ > Layers::kMaxVertexLayers)
             report(Code::LayerWeights, p,
-                   std::to_string(layers.layers.size()) + " layers; the vertex colour (RGBA) weighs at most " +
+                   std::to_string(declared_) + " layers; the vertex colour (RGBA) weighs at most " +
                        std::to_string(Layers::kMaxVertexLayers) + " (channel i weighs layer i)",
                    "weigh them by splat maps alone (`weights` \"splat\"), or use at most four layers");
         return true;
@@ -259,6 +268,7 @@ private:
         std::vector<std::string> names;
         for (const Layers::Role& r : layers.roles) names.push_back(r.name);
         const auto it = std::find(names.begin(), names.end(), name);
+        if (names.empty()) return std::nullopt;  // no layer read a slot (reported at `layers`): no role to name
         if (it == names.end()) {
             std::string hint;
             if (auto best = closestMatch(name, names)) hint = "did you mean " + ticked(*best) + "?";
@@ -294,14 +304,15 @@ private:
 
     // Splat map i holds the weights of layers 4i .. 4i+3 in r, g, b, a.
     void splats(const json& v, const std::string& pointer, Material& m, Layers& layers) {
-        const size_t needed = (layers.layers.size() + 3) / 4;
+        const size_t needed = (declared_ + 3) / 4;
         if (!v.is_array()) {
             report(Code::WrongType, pointer, "expected an array of splat map files, got " + typeName(v));
             return;
         }
-        if (v.size() != needed && !layers.layers.empty()) {
+        // Counted over the layers written; none, or more than a shader blends, is the layers' error alone.
+        if (v.size() != needed && declared_ > 0 && declared_ <= Layers::kMaxLayers) {
             report(Code::LayerWeights, pointer,
-                   std::to_string(layers.layers.size()) + " layers take their weights from " + std::to_string(needed) + " splat map" +
+                   std::to_string(declared_) + " layers take their weights from " + std::to_string(needed) + " splat map" +
                        (needed == 1 ? "" : "s") + " (RGBA = four layers each); got " + std::to_string(v.size()));
         }
         for (size_t i = 0; i < v.size() && i < 2; ++i) {
@@ -329,6 +340,7 @@ private:
     }
 
     const LayerReaders& read_;
+    size_t declared_ = 0;  // the layers `layers` lists, those past the most a shader blends included
     std::map<std::pair<size_t, size_t>, std::string> slotPointers_;  // (layer, role) -> the slot's JSON pointer
     std::vector<std::pair<std::string, std::string>> heightRefs_;    // per layer slot with height_blend: its pointer, role
 };

@@ -15,17 +15,27 @@ std::string format(const Slot& s) {
     return s.eightBit ? "8-bit" : "float";
 }
 
-// Why slot `s` cannot be a layer of the array whose layer 0 is `first`, or empty when it can: one texture, one sampler
-// and one full mip chain must serve every layer alike (the manifest's `sampler`: the same state for all textures).
-std::string unlike(const Slot& first, const Slot& s) {
+constexpr const char* kResize = "resize them to one size";
+
+// Why slot `s` cannot be a layer of the array whose layer 0 is `first`, and how to make it one; empty when it can: one
+// texture, one sampler and one full mip chain must serve every layer alike (the manifest's `sampler`: the same state
+// for all textures).
+struct Unlike {
+    std::string why, fix;
+};
+
+Unlike unlike(const Slot& first, const Slot& s) {
     const std::string pair = "`" + first.name + "` and `" + s.name + "`";
     if (s.width != first.width || s.height != first.height)
-        return "sizes differ: " + pair + " are " + size(first) + " and " + size(s) + " texels";
-    if (format(s) != format(first)) return "formats differ: " + pair + " are " + format(first) + " and " + format(s);
-    if (s.channelNames != first.channelNames) return "channels differ: " + pair + " have " + first.channelNames + " and " + s.channelNames;
+        return {"sizes differ: " + pair + " are " + size(first) + " and " + size(s) + " texels", kResize};
+    if (format(s) != format(first))
+        return {"formats differ: " + pair + " are " + format(first) + " and " + format(s), "store them in one format"};
+    if (s.channelNames != first.channelNames)
+        return {"channels differ: " + pair + " have " + first.channelNames + " and " + s.channelNames, "give them the same channels"};
     if (s.samplerDecodes() != first.samplerDecodes())
-        return "colour spaces differ: " + pair + " are bound as " + (first.samplerDecodes() ? "sRGB" : "linear") + " and " +
-               (s.samplerDecodes() ? "sRGB" : "linear");
+        return {"colour spaces differ: " + pair + " are bound as " + (first.samplerDecodes() ? "sRGB" : "linear") + " and " +
+                    (s.samplerDecodes() ? "sRGB" : "linear"),
+                "give them one `colorspace`"};
     return {};
 }
 
@@ -36,20 +46,30 @@ std::string unreadable(const SlotPlan& sp) {
     return {};
 }
 
-// Why the role's slots stay separate textures, or empty when they make one array (a KTX2 array's role: one array even
-// with one layer, as the file is).
-std::string refusal(const Layers& layers, const ShaderPlan& plan, const LayerArrayPlan& a) {
+// a.refused: why the role's slots stay separate textures, or empty when they make one array (a KTX2 array's role: one
+// array even with one layer, as the file is). Where the settings expect an array (`arrays` "auto", specialised shader
+// code, not the functions output), also a.fix and a.unlike: how to get one, and the slot that refuses it.
+void refuse(const Layers& layers, const ShaderPlan& plan, LayerArrayPlan& a) {
     const std::vector<size_t>& slots = a.slots;
-    if (!layers.arrays) return "layer_blend.arrays is \"off\"";
-    if (slots.size() < 2 && a.ktx2.empty()) return "one layer: there is nothing to share";
-    if (plan.general) return "--no-specialise: the library's general functions read 2D textures";
-    if (plan.functions) return "the functions output (engine packages) binds one texture per slot (docs/engines.md)";
+    if (!layers.arrays)
+        a.refused = "layer_blend.arrays is \"off\"";
+    else if (slots.size() < 2 && a.ktx2.empty())
+        a.refused = "one layer: there is nothing to share";
+    else if (plan.general)
+        a.refused = "--no-specialise: the library's general functions read 2D textures";
+    else if (plan.functions)
+        a.refused = "the functions output (engine packages) binds one texture per slot (docs/engines.md)";
+    if (!a.refused.empty()) return;
     const Slot& first = *plan.slots[slots.front()].slot;
     for (size_t i : slots) {
-        if (std::string why = unreadable(plan.slots[i]); !why.empty()) return why;
-        if (std::string why = unlike(first, *plan.slots[i].slot); !why.empty()) return why;
+        Unlike u{unreadable(plan.slots[i]), plan.slots[i].pack ? "leave `pack` off" : ""};
+        if (u.why.empty()) u = unlike(first, *plan.slots[i].slot);
+        if (u.why.empty()) continue;
+        a.refused = u.why;
+        a.fix = u.fix;
+        a.unlike = i;
+        return;
     }
-    return {};
 }
 
 // Slot `i`'s index in plan.slots of the material slot, or npos when the shader does not read it.
@@ -76,9 +96,13 @@ void matchHeightMaps(const ShaderPlan& plan, std::vector<LayerArrayPlan>& arrays
                 if (!sp.heightMap || *sp.heightMap == a.slots[layer]) continue;
                 LayerArrayPlan* heights = holding(*sp.heightMap, layer);
                 if (a.refused.empty() == (heights && heights->refused.empty())) continue;
-                (a.refused.empty() ? a : *heights).refused = "slot `" + sp.name + "` height-blends its tiles by `" +
-                                                             plan.slots[*sp.heightMap].name +
-                                                             "`, and the two are read alike: as arrays or as separate textures";
+                const bool follows = a.refused.empty();  // this array follows its height maps' refusal, else they follow it
+                LayerArrayPlan& refused = follows ? a : *heights;
+                const LayerArrayPlan* cause = follows ? heights : &a;
+                refused.refused = "slot `" + sp.name + "` height-blends its tiles by `" + plan.slots[*sp.heightMap].name +
+                                  "`, and the two are read alike: as arrays or as separate textures";
+                refused.fix = cause && !cause->fix.empty() ? "make role `" + cause->role + "` one array" : "";
+                refused.unlike = refused.slots.front();
                 changed = true;
             }
         }
@@ -97,6 +121,37 @@ void unsplittable(const Material& material, ShaderPlan& plan, const LayerArrayPl
                                                 "give each layer's `" + a.role + "` a 2D texture file of its own"));
 }
 
+// The JSON pointer of plan slot `i`, a layer's slot: a layer's slots follow each other in Material::slots in the
+// order its `slots` lists them.
+std::string layerSlotPointer(const Material& material, const ShaderPlan& plan, size_t i) {
+    const size_t index = size_t(plan.slots[i].slot - material.slots.data());
+    const std::vector<Layers::Layer>& layers = material.layers->layers;
+    for (size_t l = 0; l < layers.size(); ++l) {
+        const std::vector<size_t>& slots = layers[l].slots;
+        if (std::find(slots.begin(), slots.end(), index) != slots.end())
+            return "/layers/" + std::to_string(l) + "/slots/" + std::to_string(index - *std::min_element(slots.begin(), slots.end()));
+    }
+    return "/layers";
+}
+
+// A role whose settings expect one array and whose textures refuse it (HX129, at the slot that differs): what it costs
+// (a texture unit per layer) and how to get the array. Sizes are listed for every layer, the usual cause.
+void notArrayed(const Material& material, ShaderPlan& plan, const LayerArrayPlan& a) {
+    std::string why = a.refused;
+    if (a.fix == kResize) {
+        why = "sizes differ:";
+        for (size_t layer = 0; layer < a.slots.size(); ++layer)
+            why += std::string(layer == 0 ? " " : ", ") + "layer `" + material.layers->layers[layer].name + "` " +
+                   size(*plan.slots[a.slots[layer]].slot);
+    }
+    const Slot& at = *plan.slots[a.unlike].slot;
+    plan.diagnostics.push_back(Diagnostic::make(
+        Code::NotArrayed, {material.sourceFile.string(), at.line, at.col}, layerSlotPointer(material, plan, a.unlike),
+        "role `" + a.role + "` is " + std::to_string(a.slots.size()) + " textures, one per layer, not one texture array (" +
+            std::to_string(a.slots.size()) + " texture units instead of 1): " + why,
+        a.fix + " for one array, or set layer_blend.arrays to \"off\" for separate textures"));
+}
+
 }  // namespace
 
 void planLayerArrays(const Material& material, ShaderPlan& plan) {
@@ -104,15 +159,21 @@ void planLayerArrays(const Material& material, ShaderPlan& plan) {
     const Layers& layers = *material.layers;
     std::vector<LayerArrayPlan> arrays;
     for (size_t r = 0; r < layers.roles.size(); ++r) {
-        LayerArrayPlan a{layers.roles[r].name, {}, {}, layers.roles[r].ktx2Array};
+        LayerArrayPlan a;
+        a.role = layers.roles[r].name;
+        a.ktx2 = layers.roles[r].ktx2Array;
         for (const Layers::Layer& l : layers.layers) a.slots.push_back(planIndex(plan, l.slots[r], material));
         if (std::count(a.slots.begin(), a.slots.end(), std::string::npos) != 0) continue;  // a role the shader does not read
-        a.refused = refusal(layers, plan, a);
+        refuse(layers, plan, a);
         arrays.push_back(std::move(a));
     }
     matchHeightMaps(plan, arrays);
-    for (const LayerArrayPlan& a : arrays)
-        if (!a.ktx2.empty() && !a.refused.empty() && !plan.slotTexturesDecoded) unsplittable(material, plan, a);
+    for (const LayerArrayPlan& a : arrays) {
+        if (!a.ktx2.empty() && !a.refused.empty() && !plan.slotTexturesDecoded)
+            unsplittable(material, plan, a);
+        else if (!a.fix.empty())
+            notArrayed(material, plan, a);
+    }
     for (const LayerArrayPlan& a : arrays) {
         if (!a.refused.empty()) continue;
         for (size_t layer = 0; layer < a.slots.size(); ++layer) {

@@ -339,6 +339,16 @@ Diagnostics checkTemplate(const Material& material, const CompileOptions& option
     return plan.diagnostics;
 }
 
+Diagnostics checkTemplateReadsSlots(const Material& material, const CompileOptions& options) {
+    ShaderPlan plan;
+    if (material.slots.empty() || !loadTemplate(material, options, plan)) return {};  // compile() reports the template's problems
+    const bool all = options.functions || plan.templateName == TemplateRef::builtin("functions").path();
+    const SlotUse use = slotUse(material, plan.templateSource, all);
+    if (std::find(use.read.begin(), use.read.end(), true) != use.read.end()) return {};
+    Diagnostics ignored;  // a malformed declaration is compile()'s to report
+    return {readsNoSlot(readTemplateSlots(plan.templateSource, plan.templateName, ignored), material, plan.templateName)};
+}
+
 ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     ShaderPlan plan;
     plan.materialName = material.name;

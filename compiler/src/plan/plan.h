@@ -124,7 +124,11 @@ struct LayerArrayPlan {
     std::string role;
     std::vector<size_t> slots;  // per layer (its layer index): index into ShaderPlan::slots
     std::string refused;        // empty: bound as one array at its first slot's binding; else why each slot has its own
-    std::string ktx2;           // the KTX2 array file the slots read, as the material names it; empty: assembled from theirs
+    // Where the material's settings expect an array and its textures refuse it: how to get one (HX129 says it), and
+    // the slot whose texture is unlike the first layer's; empty where the settings ask for separate textures.
+    std::string fix;
+    size_t unlike = 0;
+    std::string ktx2;  // the KTX2 array file the slots read, as the material names it; empty: assembled from theirs
 };
 // A lattice the layers' hex-tiled slots read: a LatticePlan and a texture aspect, which decide the tiles. The fill of
 // the pixel's weights computes its tiles where one of its layers is kept; its slots read them.

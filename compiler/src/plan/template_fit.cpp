@@ -1,5 +1,6 @@
 #include "plan/template_fit.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace hexc {
@@ -68,6 +69,36 @@ Diagnostics checkTemplateFit(const std::vector<TemplateSlot>& declared, const Ma
                                            "template `" + templateName + "` needs a " + kindName(t.kind) + " slot named `" + t.name + "`"));
     }
     return out;
+}
+
+Diagnostic readsNoSlot(const std::vector<TemplateSlot>& declared, const Material& material, const std::string& templateName) {
+    // What the template could read: the material's own slots (they come first) and a layered material's roles.
+    const size_t own = material.layers ? material.layers->layers.front().slots.front() : material.slots.size();
+    std::vector<TemplateSlot> offered;
+    for (size_t i = 0; i < own; ++i) offered.push_back({material.slots[i].name, material.slots[i].kind});
+    if (material.layers)
+        for (const Layers::Role& r : material.layers->roles) offered.push_back({r.name, r.kind});
+    auto listed = [](const std::vector<TemplateSlot>& slots, bool kinds) {
+        std::string out;
+        for (size_t i = 0; i < slots.size(); ++i)
+            out += std::string(i == 0                  ? ""
+                               : i + 1 == slots.size() ? " and "
+                                                       : ", ") +
+                   "`" + slots[i].name + "`" + (kinds ? " (" + kindName(slots[i].kind) + ")" : "");
+        return out;
+    };
+    const TemplateSlot& first = offered.front();
+    const auto same = std::find_if(declared.begin(), declared.end(), [&](const TemplateSlot& t) { return t.kind == first.kind; });
+    const std::string rename = same == declared.end() ? "" : "rename `" + first.name + "` to `" + same->name + "`, which it reads, ";
+    const Slot& at = material.slots.front();  // an own slot, else the first layer's first
+    return Diagnostic::make(
+        Code::TemplateMismatch, {material.sourceFile.string(), at.line, at.col}, own > 0 ? "/slots/0" : "/layers/0/slots/0",
+        "template `" + templateName + "` reads none of this material's slots (" + listed(offered, false) +
+            "), so its picture would show nothing of the material: a template reads a slot by its name "
+            "(`hexc_<name>`), and this one reads " +
+            (declared.empty() ? "no slot it declares" : listed(declared, true)),
+        rename + "pass --template with a template that reads `" + first.name + "`, or show it alone with `hexc render --output " +
+            (kindRow(first.kind).derivative ? "normal" : "albedo") + " --slot " + first.name + "`");
 }
 
 }  // namespace hexc

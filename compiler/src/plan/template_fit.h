@@ -24,4 +24,8 @@ std::vector<TemplateSlot> readTemplateSlots(const std::string& source, const std
 // the material lacks.
 Diagnostics checkTemplateFit(const std::vector<TemplateSlot>& declared, const Material& material, const std::string& templateName);
 
+// The error (HX208, at the material's first slot) of a template that reads none of the material's slots, for a caller
+// that shows what the template draws: what the template reads, and how to show the material.
+Diagnostic readsNoSlot(const std::vector<TemplateSlot>& declared, const Material& material, const std::string& templateName);
+
 }  // namespace hexc
