@@ -150,7 +150,7 @@ echo "$good" > "$src/materials/moss.json"
 step="moss.json broken and fixed" expect moss yard
 
 # The library component, in a project of its own (it needs a C++ compiler), with docs/c-api.md's C program as written.
-sed -n '/^```c$/,/^```$/p' docs/c-api.md | sed '1d;$d' > "$work/hexc_example.c"
+sed -n '/^```c file=hexc_example.c$/,/^```$/p' docs/c-api.md | sed '1d;$d' > "$work/hexc_example.c"
 cmake -S tests/consumer/library -B "$work/library" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" \
   -DC_EXAMPLE="$work/hexc_example.c" > "$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; fail "configuring the library consumer failed"; }
