@@ -959,19 +959,22 @@ TEST_F(Hostile, AWgslTranslatorThatMisbehavesIsKilledAndReported) {
     fs::create_directories(dir_ / "bin");
     const std::string greeting = R"(printf 'o\000\000\000\000'; )";
     // The time bound is 2 s where the case waits for it, and 15 s where the answer comes at once: a loaded machine
-    // does not turn the reason into a timeout, and the 20 s of runBounded only guards against a hang.
+    // does not turn the reason into a timeout; runBounded's bounds only guard against a hang.
+    // `raced`: what may be said instead at the translation, where the process may be gone before hexc has written
+    // its request (a write to a closed pipe, "it stopped reading"), as on a loaded machine or under ASan.
     struct Case {
         std::string body, why;
         int seconds;
+        std::string raced = "";
     };
     const std::vector<Case> cases = {
         {"exec sleep 600", "no answer within 2 s", 2},                                     // never answers
         {R"(printf 'o\377\377\377\377'; exec sleep 600)", "claims 4294967295 bytes", 15},  // 4 GiB claimed, before any allocation
-        {R"(printf 'o\020\000\000\000abc'; exit 0)", "it stopped mid-answer", 15},         // dies after 3 of 16 bytes
-        {R"(echo 'Segmentation fault'; exec sleep 600)", "not a translator's frame", 15},  // garbage
+        {R"(printf 'o\020\000\000\000abc'; exit 0)", "it stopped mid-answer", 15, "it stopped reading"},  // dies after 3 of 16 bytes
+        {R"(echo 'Segmentation fault'; exec sleep 600)", "not a translator's frame", 15},                 // garbage
     };
     for (const bool greeted : {false, true})
-        for (const auto& [body, why, seconds] : cases) {
+        for (const auto& [body, why, seconds, raced] : cases) {
             const std::string script = "#!/bin/sh\necho $$ > " + (dir_ / "pid").string() + "\n" + (greeted ? greeting : "") + body + "\n";
             write("bin/node", script);
             fs::permissions(dir_ / "bin/node", fs::perms::owner_all);
@@ -981,7 +984,8 @@ TEST_F(Hostile, AWgslTranslatorThatMisbehavesIsKilledAndReported) {
             const std::string context = (greeted ? "at the translation: " : "at the greeting: ") + body;
             EXPECT_EQ(o.exit, 1) << context << "\n" << o.err;
             EXPECT_NE(o.err.find("error[HX300]"), std::string::npos) << context << "\n" << o.err;
-            EXPECT_NE(o.err.find(why), std::string::npos) << context << "\n" << o.err;
+            const bool said = o.err.find(why) != std::string::npos || (greeted && !raced.empty() && o.err.find(raced) != std::string::npos);
+            EXPECT_TRUE(said) << context << "\n" << o.err;
             expectNothingWritten();
             const pid_t pid = pid_t(std::stol(hexc::test::readFile(dir_ / "pid")));
             const bool gone = kill(pid, 0) != 0 && errno == ESRCH;
