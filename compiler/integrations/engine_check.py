@@ -122,6 +122,9 @@ def compare(engine_png, ref, normal, relative, amplify, encode=srgb, errors=None
             if x < marker and y < marker:
                 continue
             v = ref_rows[y][x]
+            # A non-finite reference is a defect of what the engine is judged against: NaN would compare as in bound.
+            if not all(math.isfinite(c) for c in v[:3]):
+                raise ValueError(f"the reference is not finite at ({x}, {y}): {tuple(v[:3])}")
             nz = max(2 * v[2] - 1, 0.05) if normal else 1.0
             err = errors[y][x] if errors else amplify * (2 * FILTER_ERROR / (nz * nz) if normal else FILTER_ERROR)
             for c in range(3):
