@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A build cache shared between machines: two Bazel builds of tests/bazel/workspace, in two workspace paths with
-# their own hexc install and output base (two "machines"), connected only through an HTTP remote cache that Debian's
-# nginx serves with WebDAV PUT on a loopback port. The first build runs every hexc action and uploads the results;
+# their own hexc install and output base (two "machines": a's hexc is the one in $HEXC_INSTALLED_PREFIX when it is set,
+# tests/package/prefix.sh, b's always BUILD installed into a prefix of its own), connected only through an HTTP remote
+# cache that Debian's nginx serves with WebDAV PUT on a loopback port. The first build runs every hexc action and uploads the results;
 # the second must run none (every one a remote cache hit) and write byte-identical files:
 #   tests/bazel/remote_cache.sh BUILD
 # Exits 77 (ctest's SKIP_RETURN_CODE) when bazel or nginx is not installed (Debian: bazel-bootstrap, nginx-light).
@@ -47,15 +48,20 @@ CONF
 "$nginx" -p "$ngx" -c "$ngx/nginx.conf" -e "$ngx/error.log" &
 server=$!
 a=$work/machine_a/src/game b=$work/machine_b/home/ci/checkout
-trap 'in_bazel "$a" "$work/machine_a/root" shutdown; in_bazel "$b" "$work/machine_b/root" shutdown; kill $server; wait $server' EXIT
+# A Bazel server that has already gone (idle for a minute while the other machine built) fails its shutdown: the
+# cache server is stopped all the same, or it would keep the test's output open and ctest waiting.
+trap 'in_bazel "$a" "$work/machine_a/root" shutdown || true; in_bazel "$b" "$work/machine_b/root" shutdown || true
+  kill $server; wait $server' EXIT
 for _ in $(seq 50); do (: < /dev/tcp/127.0.0.1/$port) 2> /dev/null && break || sleep 0.1; done
 (: < /dev/tcp/127.0.0.1/$port) 2> /dev/null || { cat "$ngx/error.log"; fail "nginx did not start"; }
 
 for m in a b; do
   mkdir -p "$work/machine_$m" "$(dirname "${!m}")"
-  cmake --install "$build" --prefix "$work/machine_$m/hexc" > /dev/null
-  workspace "${!m}" "$work/machine_$m/hexc"
 done
+hexc_a=$(tests/package/prefix.sh "$build" "$work/machine_a/hexc")
+hexc_b=$(HEXC_INSTALLED_PREFIX= tests/package/prefix.sh "$build" "$work/machine_b/hexc")
+workspace "$a" "$hexc_a"
+workspace "$b" "$hexc_b"
 cache=--remote_cache=http://127.0.0.1:$port
 build_all "$a" "$work/machine_a/root" "$work/a.json" "$cache" > "$work/log" 2>&1 || { cat "$work/log"; fail "machine a's build failed"; }
 ran=$(python3 tests/bazel/hexc_actions.py "$work/a.json" ran)

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The Bazel test: installs hexc from BUILD into a fresh prefix, builds tests/bazel/workspace (the rules
+# The Bazel test: installs hexc from BUILD into a fresh prefix (or takes the one in $HEXC_INSTALLED_PREFIX,
+# tests/package/prefix.sh), builds tests/bazel/workspace (the rules
 # hexc_outputs and hexc_material, loaded from the installed share/hexc/bazel/) in Bazel's linux-sandbox: a plain
 # material with its vertex stage, a histogram one, a packing one, a MaterialX document and a scene. Checks that
 # each target's files are exactly, and byte for byte, those the command line writes (an output Bazel was not told
@@ -14,11 +15,11 @@ build=$(realpath "$1")
 work=$build/bazel
 [ ! -e "$work" ] || chmod -R u+w "$work"  # Bazel leaves its outputs read-only
 rm -rf "$work" && mkdir -p "$work"
-cmake --install "$build" --prefix "$work/prefix" > /dev/null
+prefix=$(tests/package/prefix.sh "$build" "$work/prefix")
 
 ws=$work/workspace
 source tests/bazel/common.sh
-workspace "$ws" "$work/prefix"
+workspace "$ws" "$prefix"
 trap 'in_bazel "$ws" "$work/root" shutdown' EXIT
 fail() { echo "bazel: $*" >&2; exit 1; }
 bazel_build() { build_all "$ws" "$work/root" "$work/exec.json" > "$work/log" 2>&1; }
@@ -36,7 +37,7 @@ expect() {
 same_as_cli() {  # TARGET MATERIAL OPTION...
   local target=$1 material=$2 cli=$work/cli/$1
   shift 2
-  (cd "$ws" && "$work/prefix/bin/hexc" "$material" -o "$cli" -q --no-cache "$@") || fail "the command line failed for $material"
+  (cd "$ws" && "$prefix/bin/hexc" "$material" -o "$cli" -q --no-cache "$@") || fail "the command line failed for $material"
   for f in "$cli"/*; do cmp "$f" "$ws/bazel-bin/${f##*/}" || fail "$target: bazel-bin/${f##*/} differs from the command line's"; done
   listed=$(sed -n "s/^$target: //p" "$work/files")
   [ "$listed" = "$(ls "$cli" | sort | xargs)" ] || fail "$target's files [$listed] are not the command line's [$(ls "$cli" | xargs)]"

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The consumer test: installs hexc from BUILD into a fresh prefix, builds tests/consumer/project (an asset-only
+# The consumer test: installs hexc from BUILD into a fresh prefix (or takes the one in $HEXC_INSTALLED_PREFIX,
+# tests/package/prefix.sh), builds tests/consumer/project (an asset-only
 # project, LANGUAGES NONE) against the installed package with GENERATOR, and checks what each edit rebuilds
 # (counted from the rules' "hexc: compiling" lines) and that every build is clean; then builds
 # tests/consumer/library, which asks for the library component:
@@ -9,7 +10,7 @@ cd "$(dirname "$0")/../.."
 build=$(realpath "$1") generator=$2
 work=$build/consumer/${generator// /_}
 rm -rf "$work" && mkdir -p "$work"
-cmake --install "$build" --prefix "$work/prefix" > /dev/null
+prefix=$(tests/package/prefix.sh "$build" "$work/prefix")
 
 src=$work/src
 cp -r tests/consumer/project "$src"
@@ -71,9 +72,16 @@ expect() {
 # A file's hash, to tell rewritten bytes from refreshed times.
 sum() { sha256sum "$out/$1" | cut -d' ' -f1; }
 
-cmake -S "$src" -B "$out" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" 2>&1 ||
+cmake -S "$src" -B "$out" -G "$generator" -DCMAKE_PREFIX_PATH="$prefix" > "$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; fail "configure failed"; }
 ! grep -i "warning" "$work/configure.log" || fail "the configure step printed warnings"
+# The package under test, not another hexc CMake finds (a Debian package's /usr/lib/cmake/hexc).
+found_in_prefix() {  # BUILD_FOLDER
+  local found
+  found=$(realpath "$(sed -n 's/^hexc_DIR:PATH=//p' "$1/CMakeCache.txt")")
+  [[ $found == "$(realpath "$prefix")"/* ]] || fail "CMake found hexc in $found, not in $prefix"
+}
+found_in_prefix "$out"
 step="first build" expect crate gravel moss pebble slate stone yard
 for f in shaders/{moss.manifest.json,moss.frag.spv,moss.frag.hlsl,moss.frag.metal,stone.frag.spv,slate.frag.spv} \
   shaders/gravel.{albedo,roughness}.{gaussian,lut}.pfm shaders/crate.albedo.packed.png vertex/pebble.{frag,vert}.glsl \
@@ -151,9 +159,10 @@ step="moss.json broken and fixed" expect moss yard
 
 # The library component, in a project of its own (it needs a C++ compiler), with docs/c-api.md's C program as written.
 sed -n '/^```c file=hexc_example.c$/,/^```$/p' docs/c-api.md | sed '1d;$d' > "$work/hexc_example.c"
-cmake -S tests/consumer/library -B "$work/library" -G "$generator" -DCMAKE_PREFIX_PATH="$work/prefix" \
+cmake -S tests/consumer/library -B "$work/library" -G "$generator" -DCMAKE_PREFIX_PATH="$prefix" \
   -DC_EXAMPLE="$work/hexc_example.c" > "$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; fail "configuring the library consumer failed"; }
+found_in_prefix "$work/library"
 cmake --build "$work/library" > "$work/log" 2>&1 || { cat "$work/log"; fail "building compile_one failed"; }
 "$work/library/compile_one" "$src/materials/stone.json" > "$work/compiled" || fail "compile_one failed"
 grep -qx stone.frag.spv "$work/compiled" || fail "compile_one (hexc::compiler) did not compile stone: $(cat "$work/compiled")"

@@ -3,11 +3,12 @@
 
     tests/docs/docs_test.py BUILD [DOC.md ...]     (from the source root; default: README.md and docs/*.md)
 
-hexc is installed from BUILD into a fresh prefix (`cmake --install`), whose bin/ is first on PATH, as the docs'
-`hexc` is. Each document runs in a fresh folder of its own holding what a reader's checkout has that the docs use
+hexc is installed from BUILD into a fresh prefix (`cmake --install`), or is the one installed in
+$HEXC_INSTALLED_PREFIX (CI: /usr, the Debian package; tests/package/prefix.sh), whose bin/ is first on PATH, as the
+docs' `hexc` is. Each document runs in a fresh folder of its own holding what a reader's checkout has that the docs use
 (`materials/`, `tests/material/`), with HOME a fresh folder too (no shader cache, no Bazel server from before), in
 which `~/Pictures/bricks.png` is the reader's own texture quick-start.md asks for (a copy of an example texture).
-The one thing changed in what the docs say: `/opt/hexc`, the install prefix they use, is the test's prefix.
+The one thing changed in what the docs say: `/opt/hexc`, the install prefix they use, is that prefix.
 blocks.py says how each block is classified from its info string. A block that fails is reported with its document,
 line and why; the test fails on it, and on a block it cannot classify. Before the docs, a fixture
 (tests/docs/fixture.md) with a failing command, a stale listing, a stale excerpt, a wrong file, a `hexc edit` whose

@@ -45,13 +45,14 @@ class Context:
             subprocess.run(["chmod", "-R", "u+w", work])  # Bazel leaves its outputs read-only
             shutil.rmtree(work)
         os.makedirs(work)
-        self.prefix = os.path.join(work, "prefix")
-        subprocess.run(["cmake", "--install", build, "--prefix", self.prefix], check=True, stdout=subprocess.DEVNULL)
+        # BUILD installed into a fresh prefix, or the hexc in $HEXC_INSTALLED_PREFIX (CI: the Debian package's /usr).
+        self.prefix = subprocess.run(["tests/package/prefix.sh", build, os.path.join(work, "prefix")], check=True,
+                                     stdout=subprocess.PIPE, text=True).stdout.strip()
         home = os.path.join(work, "home")
         os.makedirs(os.path.join(home, "Pictures"))
         shutil.copy("materials/textures/tiles_albedo.png", os.path.join(home, "Pictures", "bricks.png"))
         self.env = dict(os.environ, HOME=home, PATH=os.path.join(self.prefix, "bin") + os.pathsep + os.environ["PATH"])
-        for variable in ("XDG_CACHE_HOME", "CMAKE_PREFIX_PATH", "hexc_DIR", "MAKEFLAGS"):
+        for variable in ("XDG_CACHE_HOME", "CMAKE_PREFIX_PATH", "hexc_DIR", "MAKEFLAGS", "HEXC_INSTALLED_PREFIX"):
             self.env.pop(variable, None)
         # The npm package the wgsl target needs, where a reader who set it up as docs/cli.md ("WGSL") says has it.
         self.env["HEXC_NODE_PATH"] = os.path.abspath("tests/node/node_modules")
