@@ -16,7 +16,7 @@ import unittest
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from edit_support import Server, read_pfm, rock_copy, run_with_browser, wait_for, wait_idle, page_state  # noqa: E402
+from edit_support import SMALL_WINDOW, Server, read_pfm, rock_copy, run_with_browser, wait_for, wait_idle, page_state  # noqa: E402
 
 HEXC = None
 DRIVER = None
@@ -383,4 +383,4 @@ class Page(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    run_with_browser(sys.modules[__name__])
+    run_with_browser(sys.modules[__name__], window=SMALL_WINDOW)

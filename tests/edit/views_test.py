@@ -27,7 +27,7 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import page_test  # noqa: E402
-from edit_support import Server, read_pfm, run_with_browser, wait_idle  # noqa: E402
+from edit_support import SMALL_WINDOW, Server, read_pfm, run_with_browser, wait_idle  # noqa: E402
 from page_test import E_S, blend_tolerance, read_view, texture_bounds as page_texture_bounds  # noqa: E402
 
 HEXC = None
@@ -428,4 +428,4 @@ class Views(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    run_with_browser(sys.modules[__name__], page_test)
+    run_with_browser(sys.modules[__name__], page_test, window=SMALL_WINDOW)

@@ -6,7 +6,8 @@ tiling, scale, rotation, offset, falloff (0.75 and 0.875 among them), falloffcon
 normal maps, each texture slot alone (a copy of the document with only that shader input connected):
 
 - MaterialX's ESSL of the node that feeds it, from npm @needle-tools/materialx 1.4.6 (MaterialX 1.39.4 in WebAssembly,
-  pinned in tests/node's lock file; `npm ci --prefix tests/node` installs it), through tests/materialx/mx_generate.mjs;
+  pinned in tests/node's lock file; `npm ci --prefix tests/node` installs it), through tests/materialx/mx_generate.mjs
+  (one Node.js process for every document);
 - hexc's GLSL ES 3.00 of the same document with the `value` template (`hexc DOC --template value.glsl
   --glsl-version 300es`),
 
@@ -181,11 +182,17 @@ def hexc_program(hexc, doc, out_dir):
                           for t in glsl["textures"].values()]}, slot)
 
 
-def materialx_program(doc, target):
-    r = subprocess.run(["node", os.path.join(HERE, "mx_generate.mjs"), doc, target], capture_output=True, text=True)
-    if r.returncode != 0:
-        raise RuntimeError("mx_generate.mjs %s %s: %s" % (doc, target, r.stderr[-2000:]))
-    g = json.loads(r.stdout)
+def materialx_program(generator, doc, target):
+    """MaterialX's program of `target` in `doc`, from the mx_generate.mjs process `generator` (one for every document)."""
+    generator.stdin.write(json.dumps([doc, target]) + "\n")
+    generator.stdin.flush()
+    answer = generator.stdout.readline()
+    if not answer:
+        generator.log.seek(0)
+        raise RuntimeError("mx_generate.mjs stopped (exit %s): %s" % (generator.wait(), generator.log.read()[-2000:]))
+    g = json.loads(answer)
+    if "error" in g:
+        raise RuntimeError("mx_generate.mjs %s %s: %s" % (doc, target, g["error"][-2000:]))
     files = [u for u in g["uniforms"] if u["type"] == "filename"]
     return {"vertex": g["vertex"], "fragment": g["pixel"], "block": None,
             "uniforms": [u for u in g["uniforms"] if u["type"] != "filename"],
@@ -274,6 +281,11 @@ def main(argv):
 
     driver = edit_support.browser_or_skip()
     server = serve(ROOT)
+    # Its stderr to a file, which no amount of Node's warnings fills as it would a pipe no one reads.
+    log = tempfile.TemporaryFile("w+")
+    generator = subprocess.Popen(["node", os.path.join(HERE, "mx_generate.mjs")], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                 stderr=log, text=True)
+    generator.log = log
     failures, rows, skipped = [], [], []
     try:
         driver.get("http://127.0.0.1:%d/tests/materialx/parity.html" % server.server_address[1])
@@ -284,7 +296,7 @@ def main(argv):
             if hexc_side is None:
                 skipped.append("%s (%s)" % (name, slot))
                 continue
-            mx_side = materialx_program(doc, target)
+            mx_side = materialx_program(generator, doc, target)
             kind = slot["kind"]
             bound = NORMAL_BOUND if kind == "normal" else COLOR_BOUND
             for view in ("magnified", "minified"):
@@ -302,6 +314,10 @@ def main(argv):
                 if not worst <= bound:
                     failures.append("%s %s: %.2f/255 over the bound %.2f/255" % (name, view, worst * 255, bound * 255))
     finally:
+        generator.stdin.close()
+        generator.wait()
+        generator.stdout.close()
+        log.close()
         edit_support.quit_browser(driver)
         server.shutdown()
 

@@ -140,13 +140,20 @@ class Views:
         return sum(self.check(material, origin, function=i) for i in range(len(self.get(material, origin)[1])))
 
 
+@functools.lru_cache(maxsize=None)  # a package drawn lit again (a negative control) is compiled once: 6 s with every variant
+def lit_filamat(pkg):
+    """The package's .mat compiled by matc as the docs say, with every variant."""
+    filamat = matc(next(pkg.glob("*.mat")))
+    if not isinstance(filamat, Path):
+        sys.exit(f"FAIL matc {pkg}:\n{filamat}")
+    return filamat
+
+
 def lit(hexc, renderer, work, material, origin, mesh=None, swap=None, lights=LIGHTS):
     """The package as the docs say to build it for `origin`, lit from each of `lights`: side -> image, on a mesh of
     `mesh`'s uv convention (`origin`'s unless given)."""
     pkg = package(hexc, material, work, origin)
-    filamat = matc(next(pkg.glob("*.mat")))
-    if not isinstance(filamat, Path):
-        sys.exit(f"FAIL matc {pkg}:\n{filamat}")
+    filamat = lit_filamat(pkg)
     return {side: render(renderer, filamat, work / f"{material.stem}_{origin}_{mesh or origin}_{side}{'_swap' if swap else ''}.png",
                          texture_args(pkg, swap), mesh_uv([0, 0, 1, 1], mesh or origin), "--light", light)
             for side, light in lights.items()}
