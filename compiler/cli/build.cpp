@@ -5,6 +5,8 @@
 #include <cstring>
 #include <iostream>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <set>
 #include <sys/stat.h>
 #include <thread>
@@ -63,7 +65,7 @@ bool printDiagnostics(const Diagnostics& diags, const Arguments& a, bool passRea
         const bool expected = passReadsFewer && d.code == Code::SlotNotRead && !a.verbose;
         if (d.severity == Diagnostic::Severity::Error || (a.warnings && !expected)) shown.push_back(d);
     }
-    std::cerr << formatAll(shown);
+    a.messages.report(shown);
     return !hasErrors(diags);
 }
 
@@ -111,6 +113,7 @@ struct Inputs {
     std::vector<Job> jobs;
     std::vector<SceneSummary> scenes;
     bool failed = false;
+    bool stopped = false;           // by the progress callback (Arguments::progress)
     ShaderCache::Stats cache = {};  // of the jobs compiled
 };
 
@@ -180,45 +183,54 @@ bool inputsFit(const Arguments& a, const Inputs& in) {
     for (const SceneSummary& s : in.scenes) used.insert(s.variants.begin(), s.variants.end());
     for (const std::string& v : std::set<std::string>(a.variants.begin(), a.variants.end())) {
         if (used.contains(v)) continue;
-        std::cerr << "hexc: error: --variant " << v << ": " << whyNotInScene(v, in.scenes) << "\n";
+        *a.messages.text << "hexc: error: --variant " << v << ": " << whyNotInScene(v, in.scenes) << "\n";
         ok = false;
     }
     // An engine package replaces the template with the engine's own, so a scene's passes (each a template of its own)
     // have no package: the engine is given the scene's material files instead.
     if (!a.options.engines.empty() && !in.scenes.empty()) {
-        std::cerr << "hexc: error: --engine packages materials, not a scene's passes: pass " << in.scenes.front().scene.name
-                  << "'s material files instead\n";
+        *a.messages.text << "hexc: error: --engine packages materials, not a scene's passes: pass " << in.scenes.front().scene.name
+                         << "'s material files instead\n";
         ok = false;
     }
     std::set<std::string> sceneNames;
     for (const SceneSummary& s : in.scenes)
         if (!sceneNames.insert(s.scene.name).second) {
-            std::cerr << "hexc: error: two scenes are named `" << s.scene.name << "`; their indexes (" << s.scene.name
-                      << ".scene.json) would overwrite each other\n";
+            *a.messages.text << "hexc: error: two scenes are named `" << s.scene.name << "`; their indexes (" << s.scene.name
+                             << ".scene.json) would overwrite each other\n";
             ok = false;
         }
     std::set<std::string> names;
     for (const Job& j : in.jobs)
         if (!names.insert(j.material.name).second) {
-            std::cerr << "hexc: error: two inputs produce outputs named `" << j.material.name << "`; they would overwrite each other\n";
+            *a.messages.text << "hexc: error: two inputs produce outputs named `" << j.material.name
+                             << "`; they would overwrite each other\n";
             ok = false;
         }
     return ok;
 }
 
-// Compiles the jobs on every core, with a progress line on a terminal (cleared before diagnostics are printed):
-// jobs are independent, and each keeps its own results, so the outputs do not depend on the order they finish in.
-ShaderCache::Stats compileInParallel(const Arguments& a, const std::vector<Job*>& pending) {
+// Compiles the jobs on every core, with a progress line on a terminal (cleared before diagnostics are printed) or
+// a.progress's calls: jobs are independent, and each keeps its own results, so the outputs do not depend on the
+// order they finish in. A progress callback that says stop leaves the jobs not yet started (`stopped` set).
+ShaderCache::Stats compileInParallel(const Arguments& a, const std::vector<Job*>& pending, bool& stopped) {
     if (pending.empty()) return {};
-    ShaderCache cache(a.cacheDir);
+    std::optional<ShaderCache> own;
+    ShaderCache& cache = a.cache ? *a.cache : own.emplace(a.cacheDir);
     CompileOptions options = a.options;
     options.cache = &cache;
     std::atomic<size_t> next = 0;
-    Progress progress(pending.size(), a.quiet);
+    std::atomic<bool> stop = false;
+    std::mutex calls;  // one progress call at a time, `done` counted in the order they are made
+    size_t done = 0;
+    Progress progress(pending.size(), a.quiet || a.progress);
     auto worker = [&] {
-        for (size_t i; (i = next++) < pending.size();) {
+        for (size_t i; !stop && (i = next++) < pending.size();) {
             progress.step("compiling " + pending[i]->material.name);
             pending[i]->result = compile(pending[i]->material, options);
+            if (!a.progress) continue;
+            std::lock_guard lock(calls);
+            if (!stop && !a.progress(++done, pending.size(), pending[i]->material.name)) stop = true;
         }
     };
     const unsigned cores = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
@@ -227,22 +239,24 @@ ShaderCache::Stats compileInParallel(const Arguments& a, const std::vector<Job*>
     options.concurrentTargets = threads.size() == 1 && cores > 1;
     for (auto& t : threads) t = std::thread(worker);
     for (auto& t : threads) t.join();
-    if (cache.stats().misses) cache.trim();  // only what was stored can take the folder past its bound
+    stopped = stop;
+    if (!a.cache && cache.stats().misses) cache.trim();  // only what was stored can take the folder past its bound
     return cache.stats();
 }
 
-// Compiles the jobs that are not up to date. False if any failed.
-bool compileJobs(const Arguments& a, std::vector<Job>& jobs, ShaderCache::Stats& stats) {
+// Compiles the jobs that are not up to date. False if any failed or the progress callback stopped the build.
+bool compileJobs(const Arguments& a, std::vector<Job>& jobs, ShaderCache::Stats& stats, bool& stopped) {
     std::vector<Job*> pending;
     for (Job& j : jobs) {
         j.hash = inputHash(j.material, a.options, j.extraInputs);
         j.upToDate = !a.force && upToDate(a.outDir, j.material.name, j.hash);
         if (!j.upToDate) pending.push_back(&j);
     }
-    stats = compileInParallel(a, pending);
+    stats = compileInParallel(a, pending, stopped);
+    if (stopped) return false;
     if (!stats.unwritable.empty() && a.warnings)
-        std::cerr << "hexc: warning: the shader cache keeps nothing for later runs (" << stats.unwritable
-                  << "); --cache-dir DIR names another folder, --no-cache turns it off\n";
+        *a.messages.text << "hexc: warning: the shader cache keeps nothing for later runs (" << stats.unwritable
+                         << "); --cache-dir DIR names another folder, --no-cache turns it off\n";
     bool ok = true;
     for (Job* j : pending) ok &= printDiagnostics(j->result.diagnostics, a, j->passReadsFewer);
     return ok;
@@ -344,7 +358,7 @@ std::optional<FileId> fileId(const std::filesystem::path& p) {
 bool outputsFit(const Arguments& a, const Inputs& in, const Planned& planned) {
     bool ok = true;
     auto refuse = [&](const std::string& why) {
-        std::cerr << "hexc: error: " << why << "\n";
+        *a.messages.text << "hexc: error: " << why << "\n";
         ok = false;
     };
     std::map<FileId, std::filesystem::path> read;  // the first input path naming each file
@@ -428,35 +442,35 @@ size_t writeOutputs(const Arguments& a, const Outputs& out, const std::string& d
 }
 
 // -v: each job's fate and why.
-void printJobs(const Inputs& in, const Outputs& out) {
+void printJobs(const Arguments& a, const Inputs& in, const Outputs& out) {
     for (const Job& j : in.jobs) {
-        std::cerr << "hexc: " << j.material.name << ": ";
+        *a.messages.text << "hexc: " << j.material.name << ": ";
         if (j.upToDate) {
-            std::cerr << "up to date (its inputs, options and hexc match the last build's stamp); not compiled\n";
+            *a.messages.text << "up to date (its inputs, options and hexc match the last build's stamp); not compiled\n";
             continue;
         }
-        std::cerr << "compiled (no stamp from an earlier build matches its inputs, options and hexc)";
+        *a.messages.text << "compiled (no stamp from an earlier build matches its inputs, options and hexc)";
         if (auto s = out.shares.find(j.material.name); s != out.shares.end())
-            std::cerr << "; its shader code is identical to " << s->second << "'s (one `shader` hash in the scene index)";
-        std::cerr << "\n";
+            *a.messages.text << "; its shader code is identical to " << s->second << "'s (one `shader` hash in the scene index)";
+        *a.messages.text << "\n";
     }
 }
 
 void printSummary(const Arguments& a, const Inputs& in, const Outputs& out, size_t bytes) {
-    if (a.verbose) printJobs(in, out);
+    if (a.verbose) printJobs(a, in, out);
     if (a.verbose && (in.cache.hits || in.cache.misses))
-        std::cerr << "hexc: shader code: " << in.cache.misses << " compiled, " << in.cache.hits << " from the cache ("
-                  << (a.cacheDir.empty() ? "this run only" : a.cacheDir.string()) << ")"
-                  << (in.cache.corrupt ? ", " + std::to_string(in.cache.corrupt) + " damaged entries replaced" : "") << "\n";
+        *a.messages.text << "hexc: shader code: " << in.cache.misses << " compiled, " << in.cache.hits << " from the cache ("
+                         << (a.cacheDir.empty() ? "this run only" : a.cacheDir.string()) << ")"
+                         << (in.cache.corrupt ? ", " + std::to_string(in.cache.corrupt) + " damaged entries replaced" : "") << "\n";
     size_t upToDate = 0;
     for (const Job& j : in.jobs) upToDate += j.upToDate;
     for (const SceneSummary& s : in.scenes)
-        std::cerr << "hexc: scene " << s.scene.name << ": " << s.scene.materials.size() * s.scene.passes.size() << " variants possible, "
-                  << s.variants.size() << " used\n";
-    std::cerr << "hexc: " << in.jobs.size() - upToDate << " compiled, " << upToDate << " up to date";
-    if (!in.scenes.empty()) std::cerr << ", " << out.deduplicated << " scene variants share another's code";
-    std::cerr << "; wrote " << out.files.size() << (out.files.size() == 1 ? " file (" : " files (") << bytes << " bytes) to "
-              << a.outDir.string() << "\n";
+        *a.messages.text << "hexc: scene " << s.scene.name << ": " << s.scene.materials.size() * s.scene.passes.size()
+                         << " variants possible, " << s.variants.size() << " used\n";
+    *a.messages.text << "hexc: " << in.jobs.size() - upToDate << " compiled, " << upToDate << " up to date";
+    if (!in.scenes.empty()) *a.messages.text << ", " << out.deduplicated << " scene variants share another's code";
+    *a.messages.text << "; wrote " << out.files.size() << (out.files.size() == 1 ? " file (" : " files (") << bytes << " bytes) to "
+                     << a.outDir.string() << "\n";
 }
 
 }  // namespace
@@ -465,7 +479,7 @@ int buildCommand(const Arguments& a) {
     try {  // before compiling anything
         if (std::error_code ec; std::filesystem::exists(a.outDir, ec)) makeOutputFolder(a.outDir);
     } catch (const std::exception& e) {
-        std::cerr << "hexc: " << e.what() << "\nhexc: nothing written\n";
+        *a.messages.text << "hexc: " << e.what() << "\nhexc: nothing written\n";
         return kWriteFailed;
     }
     Inputs in = readInputs(a);
@@ -473,23 +487,23 @@ int buildCommand(const Arguments& a) {
     const Planned planned = ok ? plannedOutputs(a, in) : Planned{};
     ok = ok && outputsFit(a, in, planned);
     if (ok && a.listOutputs) return listOutputs(a, in, planned);
-    if (!ok || !compileJobs(a, in.jobs, in.cache)) {
-        std::cerr << "hexc: nothing written\n";
-        return kInvalidInput;
+    if (!ok || !compileJobs(a, in.jobs, in.cache, in.stopped)) {
+        *a.messages.text << (in.stopped ? "hexc: stopped by the progress callback; nothing written\n" : "hexc: nothing written\n");
+        return in.stopped ? kStopped : kInvalidInput;
     }
     Outputs out = collectOutputs(a, in);
     std::string depfile;
     try {
         if (!a.depfile.empty()) depfile = depfileText(planned.outputs, readFiles(a, in));
     } catch (const std::invalid_argument& e) {
-        std::cerr << "hexc: error: " << e.what() << "\nhexc: nothing written\n";
+        *a.messages.text << "hexc: error: " << e.what() << "\nhexc: nothing written\n";
         return kInvalidInput;
     }
     size_t bytes = 0;
     try {
         bytes = writeOutputs(a, out, depfile);
     } catch (const std::exception& e) {
-        std::cerr << "hexc: " << e.what() << "\n";
+        *a.messages.text << "hexc: " << e.what() << "\n";
         return kWriteFailed;
     }
     if (!a.quiet) printSummary(a, in, out, bytes);

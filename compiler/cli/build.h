@@ -5,6 +5,9 @@
 
 namespace hexc::cli {
 
+// A build's exit code when Arguments::progress stopped it (the C API's hexc_build; the command line never stops one).
+constexpr int kStopped = 5;
+
 int buildCommand(const Arguments& arguments);
 
 }  // namespace hexc::cli

@@ -77,10 +77,15 @@ void LayoutOptions::add(CLI::App& app) {
         app.add_option(f.name, f.value, f.field->help)->type_name("N")->check(CLI::Range(0u, f.field->max).description(""))->group(group);
 }
 
-bool LayoutOptions::resolve(ResourceLayout& out) const {
+void Messages::report(const Diagnostics& diagnostics) const {
+    *text << formatAll(diagnostics);
+    if (located) located->insert(located->end(), diagnostics.begin(), diagnostics.end());
+}
+
+bool LayoutOptions::resolve(ResourceLayout& out, const Messages& m) const {
     if (!file.empty()) {
         LayoutParseResult parsed = parseLayoutFile(file);
-        std::cerr << formatAll(parsed.diagnostics);
+        m.report(parsed.diagnostics);
         if (!parsed.layout) return false;
         out = *parsed.layout;
     }
@@ -231,8 +236,8 @@ void addCacheOptions(CLI::App& app, Arguments& a) {
 // The checks CLI11 cannot make, then the names and the layout applied to `a`.
 std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     if (u.materials.empty() || a.outDir.empty()) {
-        std::cerr << "hexc: " << (u.materials.empty() ? "no material or scene given" : "no output folder given: use -o DIR")
-                  << " (see hexc --help)\n";
+        *a.messages.text << "hexc: " << (u.materials.empty() ? "no material or scene given" : "no output folder given: use -o DIR")
+                         << " (see hexc --help)\n";
         return kUsage;
     }
     a.materials.assign(u.materials.begin(), u.materials.end());
@@ -241,9 +246,9 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     if (u.manifestPaths || !a.options.engines.empty()) a.options.manifestPathsFrom = a.outDir;
     applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
     if (a.options.functions && u.targets.empty()) a.options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};  // no SPIR-V form
-    if (!u.layout.resolve(a.options.layout)) return kInvalidInput;
+    if (!u.layout.resolve(a.options.layout, a.messages)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {
-        std::cerr << "hexc: HLSL register space " << space << " needs --hlsl-sm 51 or later (shader model 5.0 has no spaces)\n";
+        *a.messages.text << "hexc: HLSL register space " << space << " needs --hlsl-sm 51 or later (shader model 5.0 has no spaces)\n";
         return kUsage;
     }
     return std::nullopt;
@@ -262,7 +267,7 @@ std::optional<int> parseArguments(const std::vector<std::string>& args, Argument
     addCacheOptions(app, a);
     app.set_version_flag("--version",
                          [] { return std::string("hexc ") + version() + " (build " + buildId() + ")\n" + toolchainVersions(); });
-    if (std::optional<int> done = parseWith(app, args)) return done;
+    if (std::optional<int> done = parseWith(app, args, *a.messages.text)) return done;
     return resolveArguments(u, a);
 }
 

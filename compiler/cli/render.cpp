@@ -11,6 +11,7 @@
 #include <new>
 #include <sstream>
 #include <tuple>
+#include <variant>
 
 #include "options.h"
 #include "hexc/budgets.h"
@@ -68,48 +69,46 @@ std::vector<double> numbers(const std::string& text, char sep, size_t count, con
 }
 
 // Parses the material, reporting diagnostics; nullopt on error.
-std::optional<Material> loadMaterial(const std::string& path) {
+std::optional<Material> loadMaterial(const std::string& path, const Messages& m) {
     ParseResult r = parseMaterialFile(path);
-    std::cerr << formatAll(byPosition(r.diagnostics));
+    m.report(byPosition(r.diagnostics));
     return r.material;
 }
 
-std::unique_ptr<vk::Runner> makeRunner() {
+std::unique_ptr<vk::Runner> makeRunner(const Messages& m) {
     std::string why;
     auto runner = vk::Runner::create(&why);
-    if (!runner) std::cerr << "hexc: no Vulkan device: " << why << " (install mesa-vulkan-drivers for lavapipe)\n";
+    if (!runner) *m.text << "hexc: no Vulkan device: " << why << " (install mesa-vulkan-drivers for lavapipe)\n";
     return runner;
 }
 
 // Runs a command body, mapping failures to the documented exit codes. `material` names the input an out-of-memory
 // condition is reported against (the body fills it in once it knows it).
 template <typename Body>
-int guarded(const std::string& material, Body body) {
+int guarded(const std::string& material, const Messages& m, Body body) {
     try {
         return body();
     } catch (const UsageError& e) {
-        std::cerr << "hexc: " << e.message << "\n";
+        *m.text << "hexc: " << e.message << "\n";
         return kUsage;
     } catch (const CompileError& e) {
-        std::cerr << formatAll(byPosition(e.diagnostics));
+        m.report(byPosition(e.diagnostics));
         return kInvalidInput;
     } catch (const std::invalid_argument& e) {
-        std::cerr << "hexc: " << e.what() << "\n";
+        *m.text << "hexc: " << e.what() << "\n";
         return kInvalidInput;
     } catch (const TextureError& e) {  // a texture that passed validation (its header) but does not decode
-        std::cerr << "hexc: " << e.what() << "\n";
+        *m.text << "hexc: " << e.what() << "\n";
         return kInvalidInput;
     } catch (const std::bad_alloc&) {  // an input larger than this machine holds, within the budgets: not an output's fault
-        std::cerr << Diagnostic::make(Code::OutOfMemory, {material}, "",
-                                      "out of memory: its textures or the image need more than this machine has")
-                         .format()
-                  << "\n";
+        m.report({Diagnostic::make(Code::OutOfMemory, {material}, "",
+                                   "out of memory: its textures or the image need more than this machine has")});
         return kInvalidInput;
     } catch (const vk::VulkanError& e) {
-        std::cerr << "hexc: Vulkan: " << e.what() << "\n";
+        *m.text << "hexc: Vulkan: " << e.what() << "\n";
         return kNoVulkan;
     } catch (const std::exception& e) {
-        std::cerr << "hexc: " << e.what() << "\n";
+        *m.text << "hexc: " << e.what() << "\n";
         return kWriteFailed;
     }
 }
@@ -168,8 +167,8 @@ struct ShowOptions {
             ->check(CLI::IsMember({"linear", "srgb"}));
         layout.add(app);
     }
-    // The compile options they give; false after printing a layout file's errors.
-    bool resolve(CompileOptions& options) const { return layout.resolve(options.layout); }
+    // The compile options they give; false after reporting a layout file's errors.
+    bool resolve(CompileOptions& options, const Messages& m) const { return layout.resolve(options.layout, m); }
 };
 
 }  // namespace
@@ -186,8 +185,9 @@ struct RenderArguments {
     ShowOptions show;
 };
 
-// `hexc render`'s command line; nullopt with `r` filled when it should run, else the exit code.
-std::optional<int> parseRender(const std::vector<std::string>& args, RenderArguments& r) {
+// `hexc render`'s command line; nullopt with `r` filled when it should run, else the exit code. -o is needed when
+// `toFile`.
+std::optional<int> parseRender(const std::vector<std::string>& args, RenderArguments& r, bool toFile, const Messages& m) {
     static const std::map<std::string, vk::RenderOutput> outputs = {{"shaded", vk::RenderOutput::Shaded},
                                                                     {"albedo", vk::RenderOutput::Albedo},
                                                                     {"normal", vk::RenderOutput::Normal},
@@ -215,7 +215,7 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
                  "GPU image should be, up to texture filtering precision");
     app.add_flag("-q,--quiet", r.quiet, "no progress line on a terminal");
     r.show.add(app, "linear");
-    if (std::optional<int> done = parseWith(app, args)) return done;
+    if (std::optional<int> done = parseWith(app, args, *m.text)) return done;
     r.output = outputs.at(output);
     r.target = targets.at(target);
     if (!size.empty()) {
@@ -228,8 +228,8 @@ std::optional<int> parseRender(const std::vector<std::string>& args, RenderArgum
         r.view.uvRect = {u[0], u[1], u[2], u[3]};
     }
     if (r.material.empty()) throw UsageError{"no material given (see hexc render --help)"};
-    if (r.out.empty()) throw UsageError{"no output image given: use -o IMAGE.pfm or IMAGE.png"};
-    if (!isImageExtension(r.out)) throw UsageError{"-o " + r.out + ": hexc render writes .pfm or .png"};
+    if (r.out.empty() && toFile) throw UsageError{"no output image given: use -o IMAGE.pfm or IMAGE.png"};
+    if (!r.out.empty() && !isImageExtension(r.out)) throw UsageError{"-o " + r.out + ": hexc render writes .pfm or .png"};
     if (!r.slot.empty() && r.output == vk::RenderOutput::Shaded)
         throw UsageError{"--slot picks the slot of --output albedo, normal, derivative or weights; shaded shows the whole material"};
     if (r.reference && r.output == vk::RenderOutput::Shaded)
@@ -276,44 +276,56 @@ namespace {
 
 // shownMaterial, its note printed as the command line says it, with what picks another template.
 // Refuses (HX208) a template that reads none of the material's slots: its picture would show nothing of them.
-Material shownWithNote(const Material& material, const std::string& templateName, const CompileOptions& options) {
+Material shownWithNote(const Material& material, const std::string& templateName, const CompileOptions& options, const Messages& m) {
     std::string note;
     Material shown = vk::shownMaterial(material, templateName, options, &note);
-    if (!note.empty()) std::cerr << "hexc: note: " << note << " (--template picks another)\n";
+    if (!note.empty()) *m.text << "hexc: note: " << note << " (--template picks another)\n";
     if (Diagnostics none = checkTemplateReadsSlots(shown, options); !none.empty()) throw CompileError{none};
     return shown;
 }
 
 }  // namespace
 
-int renderCommand(const std::vector<std::string>& args) {
+// The image of `hexc render`'s arguments `r`, or the exit code when there is none.
+std::variant<Image, int> renderedImage(RenderArguments& r, const Messages& m) {
+    auto material = loadMaterial(r.material, m);
+    if (!material) return int(kInvalidInput);
+    Progress progress(2, r.quiet);
+    const std::string size = std::to_string(r.view.width) + "x" + std::to_string(r.view.height);
+    CompileOptions options;
+    if (!r.show.resolve(options, m)) return int(kInvalidInput);
+    Image image;
+    if (r.reference) {
+        progress.step("computing the fp64 reference, " + size + " pixels");
+        image = referenceImage(*material, r);
+    } else {
+        if (r.output == vk::RenderOutput::Shaded) *material = shownWithNote(*material, r.show.templateFile, options, m);
+        checkTexelBudget(*material, vk::kRenderBudget);
+        auto runner = makeRunner(m);
+        if (!runner) return int(kNoVulkan);
+        progress.step("rendering " + size + " pixels on " + runner->deviceName());
+        image = vk::render(*runner, *material, r.output, r.slot, r.view, r.target, 0, nullptr, {}, options);
+    }
+    if (r.show.encoding == "srgb") encodeSrgb(image);
+    return image;
+}
+
+int render(const std::vector<std::string>& args, const Messages& m, Image* into) {
     RenderArguments r;
-    return guarded(r.material, [&] {
-        if (std::optional<int> done = parseRender(args, r)) return *done;
-        auto material = loadMaterial(r.material);
-        if (!material) return int(kInvalidInput);
-        Progress progress(2, r.quiet);
-        const std::string size = std::to_string(r.view.width) + "x" + std::to_string(r.view.height);
-        CompileOptions options;
-        if (!r.show.resolve(options)) return int(kInvalidInput);
-        Image image;
-        if (r.reference) {
-            progress.step("computing the fp64 reference, " + size + " pixels");
-            image = referenceImage(*material, r);
-        } else {
-            if (r.output == vk::RenderOutput::Shaded) *material = shownWithNote(*material, r.show.templateFile, options);
-            checkTexelBudget(*material, vk::kRenderBudget);
-            auto runner = makeRunner();
-            if (!runner) return int(kNoVulkan);
-            progress.step("rendering " + size + " pixels on " + runner->deviceName());
-            image = vk::render(*runner, *material, r.output, r.slot, r.view, r.target, 0, nullptr, {}, options);
+    return guarded(r.material, m, [&] {
+        if (std::optional<int> done = parseRender(args, r, !into, m)) return *done;
+        std::variant<Image, int> image = renderedImage(r, m);
+        if (const int* code = std::get_if<int>(&image)) return *code;
+        if (into) {
+            *into = std::move(std::get<Image>(image));
+            return int(kOk);
         }
-        if (r.show.encoding == "srgb") encodeSrgb(image);
-        progress.step("writing " + r.out);
-        writeImage(image, r.out);
+        writeImage(std::get<Image>(image), r.out);
         return int(kOk);
     });
 }
+
+int renderCommand(const std::vector<std::string>& args) { return render(args, {}, nullptr); }
 
 // Whether a slot can take a blend other than its own: hex-tiled colour and scalar slots blending every tap without
 // height blending (the parser's rules).
@@ -373,9 +385,9 @@ Image previewSheet(vk::Runner& runner, const Material& material, int cell, const
     return sheet;
 }
 
-int previewCommand(const std::vector<std::string>& args) {
+int preview(const std::vector<std::string>& args, const Messages& m, Image* into) {
     std::string materialPath;
-    return guarded(materialPath, [&] {
+    return guarded(materialPath, m, [&] {
         std::string out;
         int cell = 256;
         bool quiet = false;
@@ -386,26 +398,32 @@ int previewCommand(const std::vector<std::string>& args) {
         app.add_option("--cell", cell, "each cell's size in pixels (default 256)")->check(CLI::Range(32, 2048))->type_name("N");
         app.add_flag("-q,--quiet", quiet, "no progress line on a terminal");
         show.add(app, "srgb");
-        if (std::optional<int> done = parseWith(app, args)) return *done;
+        if (std::optional<int> done = parseWith(app, args, *m.text)) return *done;
         if (materialPath.empty()) throw UsageError{"no material given (see hexc preview --help)"};
-        if (out.empty()) throw UsageError{"no output image given: use -o PREVIEW.png"};
-        if (!isImageExtension(out)) throw UsageError{"-o " + out + ": hexc preview writes .png or .pfm"};
-        auto material = loadMaterial(materialPath);
+        if (out.empty() && !into) throw UsageError{"no output image given: use -o PREVIEW.png"};
+        if (!out.empty() && !isImageExtension(out)) throw UsageError{"-o " + out + ": hexc preview writes .png or .pfm"};
+        auto material = loadMaterial(materialPath, m);
         if (!material) return int(kInvalidInput);
         CompileOptions options;
-        if (!show.resolve(options)) return int(kInvalidInput);
-        const Material shown = shownWithNote(*material, show.templateFile, options);
+        if (!show.resolve(options, m)) return int(kInvalidInput);
+        const Material shown = shownWithNote(*material, show.templateFile, options, m);
         checkTexelBudget(shown, vk::kRenderBudget);
         checkTexelBudget(withBlend(shown, Blend::Histogram), kHistogramBudget);  // its histogram column
-        auto runner = makeRunner();
+        auto runner = makeRunner(m);
         if (!runner) return int(kNoVulkan);
 
         Progress progress(9, quiet);
         Image sheet = previewSheet(*runner, shown, cell, options, show.encoding == "srgb", progress);
+        if (into) {
+            *into = std::move(sheet);
+            return int(kOk);
+        }
         progress.step("writing " + out);
         writeImage(sheet, out);
         return int(kOk);
     });
 }
+
+int previewCommand(const std::vector<std::string>& args) { return preview(args, {}, nullptr); }
 
 }  // namespace hexc::cli

@@ -3,9 +3,17 @@
 #include <string>
 #include <vector>
 
+#include "hexc/image.h"
+#include "options.h"
+
 namespace hexc::cli {
 
 int renderCommand(const std::vector<std::string>& args);
 int previewCommand(const std::vector<std::string>& args);
+
+// The commands with their messages and diagnostics reported to `m`, and the image put into `into` instead of a file
+// when it is given (-o then not needed); the exit code. `args` are the command's (the material among them).
+int render(const std::vector<std::string>& args, const Messages& m, Image* into);
+int preview(const std::vector<std::string>& args, const Messages& m, Image* into);
 
 }  // namespace hexc::cli

@@ -35,7 +35,7 @@ std::string suggestOption(const CLI::App& app) {
 
 }  // namespace
 
-std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args) {
+std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args, std::ostream& err) {
     app.footer(kExitCodes);
     app.get_formatter()->column_width(30);
     try {
@@ -48,10 +48,10 @@ std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args
         std::cout << app.help();
         return kOk;
     } catch (const CLI::ExtrasError& e) {
-        std::cerr << "hexc: " << e.what() << suggestOption(app) << " (see " << app.get_name() << " --help)\n";
+        err << "hexc: " << e.what() << suggestOption(app) << " (see " << app.get_name() << " --help)\n";
         return kUsage;
     } catch (const CLI::ParseError& e) {
-        std::cerr << "hexc: " << e.what() << " (see " << app.get_name() << " --help)\n";
+        err << "hexc: " << e.what() << " (see " << app.get_name() << " --help)\n";
         return kUsage;
     }
     return std::nullopt;

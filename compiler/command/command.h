@@ -2,6 +2,7 @@
 // What every `hexc` command shares, the command line's (compiler/cli) and `hexc edit`'s (compiler/edit): the exit
 // codes, parsing a command's arguments and writing a file atomically.
 #include <filesystem>
+#include <iostream>
 #include <optional>
 #include <string>
 #include <utility>
@@ -20,8 +21,8 @@ enum Exit { kOk = 0, kInvalidInput = 1, kUsage = 2, kWriteFailed = 3, kNoVulkan 
 
 // Parses `args` (without the program and command names) with CLI11 into what `app`'s options are bound to.
 // Returns the exit code when the command is done: kOk after printing --help or --version, kUsage after printing
-// "hexc: <what is wrong>"; nullopt when the command should run.
-std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args);
+// "hexc: <what is wrong>" to `err`; nullopt when the command should run.
+std::optional<int> parseWith(CLI::App& app, const std::vector<std::string>& args, std::ostream& err = std::cerr);
 
 // A `--size WxH`: two whole numbers from `least` to `most`, as (width, height); nullopt when `text` is not that.
 std::optional<std::pair<int, int>> parseSize(const std::string& text, int least, int most);

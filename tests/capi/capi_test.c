@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "hexc/hexc.h"
+#include "same_outputs.h"
 
 static int failures = 0;
 
@@ -44,17 +45,6 @@ static const hexc_output* outputNamed(const hexc_result* r, const char* name) {
     for (i = 0; i < hexc_result_output_count(r); ++i)
         if (strcmp(hexc_result_output(r, i)->name, name) == 0) return hexc_result_output(r, i);
     return NULL;
-}
-
-static int sameOutputs(const hexc_result* a, const hexc_result* b) {
-    size_t i;
-    if (hexc_result_output_count(a) != hexc_result_output_count(b)) return 0;
-    for (i = 0; i < hexc_result_output_count(a); ++i) {
-        const hexc_output* x = hexc_result_output(a, i);
-        const hexc_output* y = hexc_result_output(b, i);
-        if (strcmp(x->name, y->name) != 0 || x->size != y->size || memcmp(x->data, y->data, x->size) != 0) return 0;
-    }
-    return 1;
 }
 
 static void compilesRock(hexc_context* context) {

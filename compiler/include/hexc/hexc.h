@@ -20,7 +20,7 @@ extern "C" {
 #endif
 
 #define HEXC_API_VERSION_MAJOR 1
-#define HEXC_API_VERSION_MINOR 0
+#define HEXC_API_VERSION_MINOR 1
 #define HEXC_API_VERSION ((HEXC_API_VERSION_MAJOR << 16) | HEXC_API_VERSION_MINOR)
 
 typedef enum hexc_status {
@@ -28,7 +28,11 @@ typedef enum hexc_status {
     HEXC_INVALID_INPUT = 1,    /* the material has errors: the result holds them as diagnostics */
     HEXC_BAD_ARGUMENT = 2,     /* a null pointer, an unknown option or value: nothing was compiled */
     HEXC_VERSION_MISMATCH = 3, /* the header's HEXC_API_VERSION cannot be served by this library */
-    HEXC_OUT_OF_MEMORY = 4
+    HEXC_OUT_OF_MEMORY = 4,
+    /* since 1.1, from hexc_render, hexc_preview and hexc_build: */
+    HEXC_NO_VULKAN = 5,    /* no Vulkan device, or the device failed: the result's text says why */
+    HEXC_WRITE_FAILED = 6, /* an output could not be written: the result's text says which */
+    HEXC_CANCELLED = 7     /* the progress callback asked to stop: nothing was written */
 } hexc_status;
 
 /* A short English name of a status, "ok", "invalid input"...; never null. */
@@ -106,6 +110,43 @@ const hexc_diagnostic* hexc_result_diagnostic(const hexc_result* result, size_t 
 /* Every diagnostic formatted as the command line prints it, one per line; "" when there is none. */
 const char* hexc_result_diagnostics_text(const hexc_result* result);
 void hexc_result_free(hexc_result* result);
+
+/* Since 1.1: the command line's `hexc render`, `hexc preview` and compile mode (builds of materials and scenes), in
+ * process. They run shaders on Vulkan (Mesa lavapipe, loaded at run time) and the fp64 CPU reference, which libhexc
+ * does not carry: they are in the command line's library, which the Python module and hexc's tests link (CMake target
+ * hexc_cli); an installed libhexc lacks them.
+ *
+ * `args` are the command's arguments as its command line spells them (docs/cli.md), `count` of them, e.g.
+ * {"materials/rock.json", "--output", "albedo", "--size", "64x48", "--reference"}. Every status but
+ * HEXC_BAD_ARGUMENT for a null context, args or result, HEXC_VERSION_MISMATCH and HEXC_OUT_OF_MEMORY sets *result:
+ * its diagnostics are those the command prints located, its diagnostics text everything it prints (diagnostics,
+ * notes, usage errors, a build's summary). HEXC_BAD_ARGUMENT with a result: the arguments do not parse. */
+
+/* A float RGBA image, row 0 at the top, 4 floats a pixel, `width` * `height` * 4 of them. */
+typedef struct hexc_image {
+    int width;
+    int height;
+    const float* rgba;
+} hexc_image;
+
+/* The image `hexc render ARGS` writes (without -o): linear values, or sRGB-encoded with "--encoding", "srgb";
+ * "--reference" for the fp64 reference, else lavapipe. hexc_preview: `hexc preview ARGS`'s sheet (sRGB by default).
+ * On HEXC_OK, hexc_result_image gives it. */
+hexc_status hexc_render(hexc_context* context, const char* const* args, size_t count, hexc_result** result);
+hexc_status hexc_preview(hexc_context* context, const char* const* args, size_t count, hexc_result** result);
+/* A result's image; null for a result without one (a compile's). Valid until the result is freed. */
+const hexc_image* hexc_result_image(const hexc_result* result);
+
+/* Called as each compile of a build finishes: `done` of `total` materials or scene variants compiled (those up to
+ * date are not counted), `name` the one just compiled. One call at a time, from the build's threads. Return 0 to go
+ * on; anything else stops the build: compiles under way finish, nothing is written (outputs are written only once
+ * every compile has succeeded) and hexc_build returns HEXC_CANCELLED. */
+typedef int (*hexc_progress)(void* user, size_t done, size_t total, const char* name);
+/* `hexc ARGS`: material and scene files, -o DIR and the compile mode's options, compiled with the context's cache
+ * (its --cache-dir and --no-cache are ignored) and written to DIR as the command line writes them. `progress` may
+ * be null. */
+hexc_status hexc_build(hexc_context* context, const char* const* args, size_t count, hexc_progress progress, void* user,
+                       hexc_result** result);
 
 #ifdef __cplusplus
 }

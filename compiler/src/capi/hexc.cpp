@@ -8,28 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "hexc/cache.h"
 #include "hexc/compiler.h"
 #include "hexc/engines.h"
 #include "hexc/material.h"
-#include "hexc/report.h"
-
-struct hexc_context {
-    hexc::ShaderCache cache;
-};
+#include "capi/handles.h"
 
 struct hexc_options {
     hexc::CompileOptions options;
     std::string error;
-};
-
-struct hexc_result {
-    hexc::Diagnostics diagnostics;
-    std::vector<hexc::OutputFile> files;
-    std::vector<std::string> codes;  // each diagnostic's code, zero-terminated for C
-    std::vector<hexc_output> outputs;
-    std::vector<hexc_diagnostic> views;
-    std::string text;
 };
 
 namespace hexc {
@@ -113,9 +99,12 @@ std::string setOption(CompileOptions& o, const std::string& key, const std::stri
     return "unknown option `" + key + "`";
 }
 
-// The result's C views of its C++ values, made once they no longer move.
+}  // namespace
+
+namespace capi {
+
 void makeViews(hexc_result& r) {
-    r.text = formatAll(r.diagnostics);
+    if (r.text.empty()) r.text = formatAll(r.diagnostics);
     for (const OutputFile& f : r.files)
         r.outputs.push_back({f.name.c_str(), reinterpret_cast<const unsigned char*>(f.contents.data()), f.contents.size()});
     for (const Diagnostic& d : r.diagnostics) r.codes.emplace_back(toString(d.code));
@@ -125,7 +114,12 @@ void makeViews(hexc_result& r) {
         r.views.push_back(
             {r.codes[i].c_str(), severity, d.loc.file.c_str(), d.loc.line, d.loc.col, d.path.c_str(), d.message.c_str(), d.hint.c_str()});
     }
+    if (!r.pixels.empty()) r.image.rgba = r.pixels.data();
 }
+
+}  // namespace capi
+
+namespace {
 
 // A parsed material compiled, with the diagnostics of both steps in the order the command line prints them: the
 // parse's (with the template's problems when the material has errors, as the command line reports them), then the
@@ -144,7 +138,7 @@ hexc_status finish(ParseResult parsed, hexc_context& context, const hexc_options
         for (Diagnostic& d : byPosition(std::move(compiled.diagnostics))) r->diagnostics.push_back(std::move(d));
         r->files = std::move(compiled.files);
     }
-    makeViews(*r);
+    capi::makeViews(*r);
     const bool ok = !hasErrors(r->diagnostics);
     *result = r.release();
     return ok ? HEXC_OK : HEXC_INVALID_INPUT;
@@ -178,6 +172,12 @@ const char* hexc_status_string(hexc_status status) {
             return "API version mismatch";
         case HEXC_OUT_OF_MEMORY:
             return "out of memory";
+        case HEXC_NO_VULKAN:
+            return "no Vulkan device";
+        case HEXC_WRITE_FAILED:
+            return "an output could not be written";
+        case HEXC_CANCELLED:
+            return "cancelled";
     }
     return "unknown status";
 }
@@ -259,6 +259,8 @@ const hexc_diagnostic* hexc_result_diagnostic(const hexc_result* result, size_t 
 }
 
 const char* hexc_result_diagnostics_text(const hexc_result* result) { return result ? result->text.c_str() : ""; }
+
+const hexc_image* hexc_result_image(const hexc_result* result) { return result && result->image.rgba ? &result->image : nullptr; }
 
 void hexc_result_free(hexc_result* result) { delete result; }
 

@@ -8,8 +8,11 @@
         hexc.compile({"name": "x"})
     except hexc.CompileError as e:
         for d in e.diagnostics: print(d.code, d.line, d.column, d.path, d.message)
+    hexc.render("materials/rock.json", output="albedo", size=(64, 64), reference=True)   # numpy (64, 64, 4) float32
+    hexc.preview("materials/rock.json", cell=64)                                         # the preview sheet
+    hexc.build(["materials/rock.json"], "out", progress=lambda done, total, name: print(done, total, name))
 
-Compiles release the interpreter lock: threads compile at once, sharing a context's shader cache.
+Compiles, renders and builds release the interpreter lock: threads compile at once, sharing a context's shader cache.
 """
 from __future__ import annotations
 
@@ -17,11 +20,12 @@ import json
 import os
 import threading
 from dataclasses import dataclass
-from typing import Any, Iterable, Mapping, Optional, Union
+from typing import Any, Callable, Iterable, Mapping, Optional, Union
 
 from . import _hexc
 
-__all__ = ["compile", "material_text", "Context", "Result", "Diagnostic", "CompileError", "__version__", "API_VERSION"]
+__all__ = ["compile", "render", "preview", "build", "material_text", "Context", "Result", "Build", "Diagnostic", "CompileError",
+           "__version__", "API_VERSION"]
 __version__: str = _hexc.version
 API_VERSION: int = _hexc.api_version
 
@@ -70,6 +74,13 @@ class Result:
         return self.manifests[top[0]] if len(top) == 1 else None
 
 
+@dataclass(frozen=True)
+class Build:
+    """What a build reported: its warnings, and everything the command line would have printed (the summary)."""
+    diagnostics: list[Diagnostic]
+    log: str
+
+
 def material_text(material: Mapping[str, Any]) -> str:
     """The JSON text a material given as a dict is compiled from: diagnostics' lines and columns count in it. Python's
     json module writes it, so a non-finite float becomes `NaN` or `Infinity`, which hexc reports as JSON does not
@@ -92,6 +103,36 @@ def _options(targets, engines, uv_origin, hlsl_sm, glsl_version, entry, bake, de
     for key, value in (("bake", bake), ("debug", debug), ("vertex", vertex), ("no-specialise", not specialise)):
         options.append((key, "1" if value else "0"))
     return options
+
+
+def _raise(status: int, diagnostics: list[Diagnostic], text: str):
+    """The exception of a render's, preview's or build's status, as the command line's exit code tells them apart."""
+    if status == _hexc.INVALID_INPUT:
+        raise CompileError(diagnostics, text)
+    if status == _hexc.BAD_ARGUMENT:
+        raise ValueError(text.rstrip("\n"))
+    if status == _hexc.NO_VULKAN:
+        raise RuntimeError(text.rstrip("\n"))
+    raise OSError(text.rstrip("\n"))  # an output could not be written
+
+
+def _compile_arguments(targets, engines, uv_origin, hlsl_sm, glsl_version, entry, bake, debug, vertex, specialise):
+    """The command line's arguments of the compile options (Context.compile's)."""
+    arguments = []
+    for key, value in _options(targets, engines, uv_origin, hlsl_sm, glsl_version, entry, bake, debug, vertex, specialise):
+        if key == "uv-origin":
+            arguments += ["--uv-bottom-left"] if value == "bottom-left" else [] if value == "top-left" else ["--uv-origin", value]
+        elif key in ("bake", "debug", "vertex", "no-specialise"):
+            arguments += ["--" + key] if value == "1" else []
+        else:
+            arguments += ["--" + key, value]
+    return arguments
+
+
+def _show_arguments(template, encoding, layout):
+    arguments = [] if template is None else ["--template", os.fspath(template)]
+    arguments += [] if encoding is None else ["--encoding", encoding]
+    return arguments + ([] if layout is None else ["--layout", os.fspath(layout)])
 
 
 def _result(ok: bool, outputs, diagnostics, text: str) -> Result:
@@ -131,6 +172,62 @@ class Context:
         base = "" if base_dir is None else os.fspath(base_dir)
         return _result(*self._context.compile(source, in_memory, name or "material.json", base, options))
 
+    def render(self, material: Union[str, os.PathLike], *, output: str = "shaded", slot: Optional[str] = None,
+               size: tuple[int, int] = (512, 512), uv_rect: tuple[float, float, float, float] = (0.0, 0.0, 1.0, 1.0),
+               reference: bool = False, target: str = "spirv", encoding: str = "linear",
+               template: Optional[Union[str, os.PathLike]] = None, layout: Optional[Union[str, os.PathLike]] = None):
+        """`hexc render` (docs/cli.md) of the material file `material`, returned instead of written: a numpy array of
+        shape (height, width, 4), float32 RGBA, row 0 the top row (v = V0), as `-o IMAGE.pfm` holds it. `output`:
+        shaded, albedo, normal, derivative or weights; `size`: (width, height) in pixels; `uv_rect`: (U0, V0, U1, V1);
+        `reference`: the fp64 CPU reference (no Vulkan needed), else lavapipe runs the `target` shader. `encoding`
+        "linear" (the default) gives the values the shader returns, "srgb" what an sRGB swapchain shows (the sRGB
+        transfer function on RGB, alpha linear). Raises CompileError for a bad material, ValueError for a bad option,
+        RuntimeError without a Vulkan device."""
+        arguments = [os.fspath(material), "--output", output, "--size", "%dx%d" % tuple(size),
+                     "--uv-rect", ",".join(repr(float(x)) for x in uv_rect), "--target", target]
+        arguments += (["--slot", slot] if slot else []) + (["--reference"] if reference else [])
+        return self._picture(False, arguments + _show_arguments(template, encoding, layout))
+
+    def preview(self, material: Union[str, os.PathLike], *, cell: int = 256, encoding: str = "srgb",
+                template: Optional[Union[str, os.PathLike]] = None, layout: Optional[Union[str, os.PathLike]] = None):
+        """`hexc preview`'s labelled sheet of the material file `material` (plain tiling, the falloff and histogram
+        blends, the weights; magnified and minified), rendered on lavapipe: a numpy array of shape
+        (2 * (cell + 28), 4 * cell, 4), float32 RGBA, row 0 the top row. sRGB-encoded for display by default
+        (`encoding="linear"`: the shader's values), as matplotlib's imshow expects. Raises as render does."""
+        arguments = [os.fspath(material), "--cell", str(int(cell))]
+        return self._picture(True, arguments + _show_arguments(template, encoding, layout))
+
+    def _picture(self, preview: bool, arguments: list[str]):
+        status, image, diagnostics, text = self._context.picture(preview, arguments)
+        if status != _hexc.OK:
+            _raise(status, [Diagnostic(*d) for d in diagnostics], text)
+        return image
+
+    def build(self, inputs: Union[str, os.PathLike, Iterable[Union[str, os.PathLike]]], out_dir: Union[str, os.PathLike], *,
+              progress: Optional[Callable[[int, int, str], Any]] = None, variants: Iterable[str] = (), force: bool = False,
+              jobs: int = 0, targets: Optional[Union[str, Iterable[str]]] = None,
+              engines: Optional[Union[str, Iterable[str]]] = None, uv_origin: Optional[str] = None,
+              hlsl_sm: Optional[Union[int, str]] = None, glsl_version: Optional[Union[int, str]] = None,
+              entry: Optional[str] = None, bake: bool = False, debug: bool = False, vertex: bool = False,
+              specialise: bool = True) -> Build:
+        """`hexc INPUTS -o OUT_DIR` (docs/cli.md, docs/scenes.md): material and scene files compiled and written to
+        `out_dir` as the command line writes them (atomically, all or nothing, skipping what is up to date), through
+        this context's shader cache. `progress(done, total, name)` is called as each material or scene variant is
+        compiled (from the build's threads, one call at a time); an exception it raises stops the build before
+        anything is written and is raised here. Raises CompileError for bad inputs, ValueError for bad options,
+        OSError when an output cannot be written."""
+        paths = [inputs] if isinstance(inputs, (str, os.PathLike)) else list(inputs)
+        arguments = [os.fspath(p) for p in paths] + ["-o", os.fspath(out_dir)]
+        arguments += [a for v in variants for a in ("--variant", v)] + (["--force"] if force else [])
+        arguments += ["--jobs", str(jobs)] if jobs else []
+        arguments += _compile_arguments(targets, engines, uv_origin, hlsl_sm, glsl_version, entry, bake, debug, vertex,
+                                        specialise)
+        status, diagnostics, text = self._context.build(arguments, progress)
+        found = [Diagnostic(*d) for d in diagnostics]
+        if status != _hexc.OK:
+            _raise(status, found, text)
+        return Build(found, text)
+
     def cache_stats(self) -> tuple[int, int]:
         """(hits, misses): shader code taken from the cache and compiled, over the context's life."""
         return self._context.cache_stats()
@@ -140,10 +237,30 @@ _default: Optional[Context] = None
 _default_lock = threading.Lock()
 
 
-def compile(material: Union[str, os.PathLike, Mapping[str, Any]], **options: Any) -> Result:
-    """Context.compile through one context per process, with the command line's default cache folder."""
+def _default_context() -> Context:
     global _default
     with _default_lock:
         if _default is None:
             _default = Context()
-    return _default.compile(material, **options)
+    return _default
+
+
+def compile(material: Union[str, os.PathLike, Mapping[str, Any]], **options: Any) -> Result:
+    """Context.compile through one context per process, with the command line's default cache folder."""
+    return _default_context().compile(material, **options)
+
+
+def render(material: Union[str, os.PathLike], **options: Any):
+    """Context.render (a numpy float32 array (height, width, 4), row 0 at the top) through the process's context."""
+    return _default_context().render(material, **options)
+
+
+def preview(material: Union[str, os.PathLike], **options: Any):
+    """Context.preview (a numpy float32 array, sRGB by default) through the process's context."""
+    return _default_context().preview(material, **options)
+
+
+def build(inputs: Union[str, os.PathLike, Iterable[Union[str, os.PathLike]]], out_dir: Union[str, os.PathLike],
+          **options: Any) -> Build:
+    """Context.build (materials and scenes to a folder, with a progress callback) through the process's context."""
+    return _default_context().build(inputs, out_dir, **options)
