@@ -54,7 +54,12 @@ std::string histogramKey(const Slot& s) {
 bool wholePfm(const std::vector<uint8_t>& bytes, int width = 0) {
     const std::string text(bytes.begin(), bytes.begin() + std::ptrdiff_t(std::min<size_t>(bytes.size(), 64)));
     int w = 0, h = 0, read = 0;
-    if (std::sscanf(text.c_str(), "PF\n%d %d\n-1.0\n%n", &w, &h, &read) != 2 || read == 0 || w <= 0 || h <= 0) return false;
+    // The header's last newline is matched by hand: a "\n" in the format takes any whitespace, so the first float's
+    // bytes would go with it when they begin with one (0x09-0x0d, 0x20).
+    if (std::sscanf(text.c_str(), "PF\n%d %d\n-1.0%n", &w, &h, &read) != 2 || read == 0 || size_t(read) >= text.size() ||
+        text[size_t(read)] != '\n' || w <= 0 || h <= 0)
+        return false;
+    ++read;
     return (width == 0 || w == width) && bytes.size() == size_t(read) + size_t(w) * size_t(h) * 12;
 }
 
