@@ -186,7 +186,8 @@ void internalError(const httplib::Request& req, httplib::Response& res, std::exc
 // Server-sent events: `data: VERSION` at once and whenever the material file or a texture changes (Session::version,
 // which only stats files unless the material changed). At most kEventStreams at once (503 beyond: the page falls back to
 // asking), each ends after kEventStreamLife; the page's EventSource reconnects after the `retry` it is given. A stream
-// ends when its client goes (a write fails) or the server stops (httplib stops calling the provider).
+// ends when its client goes (seen at its next look, kEventLook, as a closed connection) or the server stops (httplib
+// stops calling the provider), and its slot with it.
 void Server::Impl::events(httplib::Response& res) {
     if (++streams > kEventStreams) {
         --streams;
@@ -197,6 +198,7 @@ void Server::Impl::events(httplib::Response& res) {
     res.set_chunked_content_provider(
         "text/event-stream",
         [this, end, sent](size_t, httplib::DataSink& sink) {
+            if (!sink.is_writable()) return false;
             if (const std::string v = session.version(); v != *sent) {
                 *sent = v;
                 const std::string event = "retry: 200\ndata: " + v + "\n\n";

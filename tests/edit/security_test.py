@@ -4,6 +4,7 @@ Usage: security_test.py HEXC  (from the source root; materials/rock.json is copi
 """
 import http.client
 import itertools
+import select
 import json
 import os
 import random
@@ -342,6 +343,42 @@ class Security(unittest.TestCase):
             for c, _ in streams:
                 c.close()
         self.assertEqual(self.server.request("GET", "/api/version")[0], 200)  # still serving
+
+    def open_stream(self):
+        """A change notification stream: (connection, response), its first event read; or (None, status) when refused."""
+        c = http.client.HTTPConnection("127.0.0.1", self.server.port, timeout=TIMEOUT)
+        c.request("GET", "/api/events?token=" + self.server.token, headers={"Host": "127.0.0.1:%d" % self.server.port})
+        r = c.getresponse()
+        if r.status != 200:
+            c.close()
+            return None, r.status
+        self.assertEqual((r.readline(), r.readline()[:6], r.readline()), (b"retry: 200\n", b"data: ", b"\n"))
+        return c, r
+
+    def test_a_stream_whose_client_goes_frees_its_place(self):
+        # Four streams take every place; the last three clients go. Their places are free again before the streams would
+        # have ended by themselves (15 s): the first stream, opened before them and so ending before them, is still open
+        # when three new ones are let in (before, places were held until the streams' end, and the new ones got 503).
+        streams = [self.open_stream() for _ in range(4)]
+        first = streams[0][0]
+        try:
+            self.assertEqual(self.open_stream(), (None, 503))
+            for c, _ in streams[1:]:
+                c.close()
+            reopened = []
+            while len(reopened) < 3:
+                c, r = self.open_stream()
+                if c is None:
+                    self.assertEqual(r, 503)
+                    time.sleep(0.05)
+                else:
+                    reopened.append(c)
+            self.assertEqual(select.select([first.sock], [], [], 0)[0], [], "the first stream ended before the places were free")
+            self.assertEqual(self.open_stream(), (None, 503))
+            for c in reopened:
+                c.close()
+        finally:
+            first.close()
 
     def test_deeply_nested_requests_are_refused_before_parsing(self):
         # 25,000 levels in 50 KB, within the size limit: the save path's rewrite recursed per level and overflowed.
