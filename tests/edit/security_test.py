@@ -134,6 +134,7 @@ class Security(unittest.TestCase):
             self.assertIn(b"%s is %dx%d" % (name.encode(), side, side), body, texture)
             self.assertLess(self.server.cpu_seconds() - before, 0.1, texture)
 
+    @unittest.skipIf(os.environ.get("HEXC_SANITIZED") == "1", "ASan holds freed memory in its quarantine: resident memory measures that")
     def test_memory_is_flat_over_compiles_of_a_changing_texture(self):
         # 50 compiles of a material whose albedo, a 2048 x 2048 texture with a histogram blend, changes before each (an
         # artist repainting it), each followed by the page's requests of its cost and its texels. A compile keeps its
