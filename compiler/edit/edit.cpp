@@ -1,6 +1,7 @@
 #include "edit.h"
 
 #include <CLI/CLI.hpp>
+#include <malloc.h>
 
 #include <iostream>
 #include <tuple>
@@ -83,6 +84,11 @@ int editCommand(const std::vector<std::string>& args) {
         std::cerr << formatAll(byPosition(outside));
         if (!outside.empty()) return command::kInvalidInput;
     }
+    // A texture's texels and tables (tens of MB each, freed after each answer) go back to the system when freed: by
+    // default glibc raises its threshold for mapping a block of its own to the largest block freed so far, and the
+    // server's 32 threads keep such blocks in arenas of their own, so a session that reloads a large texture grew by
+    // hundreds of MB. A fixed threshold keeps every block of 1 MiB or more out of the arenas.
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
     Capture capturing(capture);
     try {
         Server server(session, port, capture.out.empty() ? Server::CaptureHandler{} : capturing.handler());

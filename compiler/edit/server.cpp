@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "connection.h"
 #include "hexc/suggest.h"
 #include "page_files.h"
 
@@ -64,7 +65,7 @@ struct Server::Impl {
     Impl(Session& s, CaptureHandler c) : session(s), capture(std::move(c)) {}
     Session& session;
     CaptureHandler capture;
-    httplib::Server http;
+    BoundedServer http{kMaxRequestBytes};
     std::string token = randomToken();
     int port = 0;
     std::string url;
@@ -121,6 +122,10 @@ struct Server::Impl {
             refuse(res, 415, "compressed or chunked request bodies are refused: send the body as it is, with its length");
             return httplib::Server::HandlerResponse::Handled;
         }
+        if (const std::string why = overBodyLimit(req); !why.empty()) {
+            refuse(res, why.starts_with("no ") ? 411 : 413, why);
+            return httplib::Server::HandlerResponse::Handled;
+        }
         const std::string target = lowerCase(req.target);
         for (const char* bad : {"..", "%2e", "%2f", "%5c", "\\", "//"})
             if (target.find(bad) != std::string::npos || req.path.find(bad) != std::string::npos) {
@@ -130,16 +135,33 @@ struct Server::Impl {
         return httplib::Server::HandlerResponse::Unhandled;
     }
 
+    // The most a route reads of a request's body: a material's size for the routes that take one, a frame's for a
+    // capture, none for the rest.
+    size_t bodyLimit(const httplib::Request& req) const {
+        if (req.method != "POST") return 0;
+        if (req.path == "/api/compile" || req.path == "/api/cost" || req.path == "/api/save") return kMaxDocumentBytes;
+        return req.path == "/api/capture" && capture ? kMaxRequestBytes : 0;
+    }
+
+    // Why a request's body is refused from its stated length, before a byte of it is read, or empty. httplib reads a body
+    // whose length is not stated until the connection closes, whatever the route.
+    std::string overBodyLimit(const httplib::Request& req) const {
+        const std::string length = req.get_header_value("Content-Length");
+        const bool bodiless = req.method == "GET" || req.method == "HEAD" || req.method == "OPTIONS";
+        if (length.empty()) return bodiless ? "" : "no Content-Length: send the body with its length";
+        const size_t limit = bodyLimit(req);
+        if (length.size() > 12 || length.find_first_not_of("0123456789") != std::string::npos || std::stoull(length) > limit)
+            return "request too large: " + req.method + " " + req.path + " takes at most " + std::to_string(limit) + " bytes";
+        return {};
+    }
+
     void routes();
     void events(httplib::Response& res);
     void bodyRoute(const std::string& path, std::function<Reply(const std::string&)> handle);
 };
 
 void Server::Impl::bodyRoute(const std::string& path, std::function<Reply(const std::string&)> handle) {
-    http.Post(path, [handle](const httplib::Request& req, httplib::Response& res) {
-        if (req.body.size() > kMaxDocumentBytes) return refuse(res, 413, "request too large");
-        answer(res, handle(req.body));
-    });
+    http.Post(path, [handle](const httplib::Request& req, httplib::Response& res) { answer(res, handle(req.body)); });
 }
 
 namespace {
@@ -164,7 +186,8 @@ void internalError(const httplib::Request& req, httplib::Response& res, std::exc
 // Server-sent events: `data: VERSION` at once and whenever the material file or a texture changes (Session::version,
 // which only stats files unless the material changed). At most kEventStreams at once (503 beyond: the page falls back to
 // asking), each ends after kEventStreamLife; the page's EventSource reconnects after the `retry` it is given. A stream
-// ends when its client goes (a write fails) or the server stops (httplib stops calling the provider).
+// ends when its client goes (seen at its next look, kEventLook, as a closed connection) or the server stops (httplib
+// stops calling the provider), and its slot with it.
 void Server::Impl::events(httplib::Response& res) {
     if (++streams > kEventStreams) {
         --streams;
@@ -175,6 +198,7 @@ void Server::Impl::events(httplib::Response& res) {
     res.set_chunked_content_provider(
         "text/event-stream",
         [this, end, sent](size_t, httplib::DataSink& sink) {
+            if (!sink.is_writable()) return false;
             if (const std::string v = session.version(); v != *sent) {
                 *sent = v;
                 const std::string event = "retry: 200\ndata: " + v + "\n\n";
@@ -235,8 +259,8 @@ Server::Server(Session& session, int port, CaptureHandler capture) : impl_(std::
     Impl& s = *impl_;
     s.http.set_payload_max_length(kMaxRequestBytes);
     // A client that opens a connection and sends slowly holds a worker until a read times out: more workers than a page
-    // uses (it sends a few requests at once), and short timeouts, so that a few such clients block nothing. Debian's
-    // cpp-httplib 0.11.4 is compiled with its own caps on a header line (8 KB) and has no cap on their count.
+    // uses (it sends a few requests at once), and short timeouts, so that a few such clients block nothing; a request's
+    // head is bounded in size and time (connection.h), its body by its route before it is read (guard()).
     s.http.new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
     s.http.set_read_timeout(2);
     s.http.set_write_timeout(5);
@@ -253,7 +277,9 @@ Server::Server(Session& session, int port, CaptureHandler capture) : impl_(std::
         // request's Accept-Encoding when it writes the answer, and the request is its own non-const object (only the
         // handler sees it const).
         const_cast<httplib::Request&>(req).headers.erase("Accept-Encoding");
-        return s.guard(req, res);
+        const httplib::Server::HandlerResponse handled = s.guard(req, res);
+        if (handled == httplib::Server::HandlerResponse::Handled) closeAfterAnswer();  // its body, if any, is left unread
+        return handled;
     });
     s.port = port == 0 ? s.http.bind_to_any_port("127.0.0.1") : (s.http.bind_to_port("127.0.0.1", port) ? port : -1);
     if (s.port <= 0) throw std::runtime_error("cannot listen on 127.0.0.1:" + std::to_string(port) + " (in use?)");

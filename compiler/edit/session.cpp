@@ -74,6 +74,7 @@ CompileOptions pageOptions() {
     o.shareLattice = false;
     o.slotTexturesDecoded = true;  // the page uploads each slot's texture, a KTX2 array's layer decoded (texels())
     o.concurrentTargets = false;
+    o.derivedTextures = false;  // served apart (texture()), from the texture as it is when the page asks
     return o;
 }
 
@@ -111,6 +112,7 @@ Material shownWithoutGlsl(const Material& m, ShaderCache& cache, std::string* no
 Json shippedCost(const Material& m, ShaderCache& cache, std::map<size_t, double>& times) {
     CompileOptions options;
     options.targets = {Target::Spirv};
+    options.derivedTextures = false;  // what they cost is the shader's
     options.cache = &cache;
     const auto start = std::chrono::steady_clock::now();
     CompileResult r = compile(m, options);

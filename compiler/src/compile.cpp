@@ -144,7 +144,8 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
     if (!options.manifestPathsFrom.empty()) manifest["source"] = sourcePaths(material, plan, options.manifestPathsFrom);
     if (options.emitGenerated) result.files.push_back({material.name + ".generated.frag", result.glsl});
     addBanners(result.files, material, plan, options);
-    for (OutputFile& f : derivedTextureFiles(material, plan, options.cache)) result.files.push_back(std::move(f));  // images: no banner
+    if (options.derivedTextures)
+        for (OutputFile& f : derivedTextureFiles(material, plan, options.cache)) result.files.push_back(std::move(f));  // images: no banner
     result.files.push_back({material.name + ".manifest.json", manifest.dump(2) + "\n"});
     std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
 }

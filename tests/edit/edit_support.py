@@ -62,6 +62,13 @@ class Server:
         fields = open("/proc/%d/stat" % self.process.pid).read().rsplit(")", 1)[1].split()
         return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
+    def memory_mib(self, field):
+        """The server's resident memory now (`VmRSS`) or at its peak so far (`VmHWM`), in MiB, from /proc."""
+        for line in open("/proc/%d/status" % self.process.pid):
+            if line.startswith(field + ":"):
+                return int(line.split()[1]) / 1024
+        raise AssertionError("no %s in /proc/%d/status" % (field, self.process.pid))
+
     def json(self, method, path, body=None):
         status, _, data = self.request(method, path, body)
         return status, json.loads(data)

@@ -236,3 +236,27 @@ TEST(Layers, TheFunctionsOutputRefusesVertexWeights) {
 }
 
 }  // namespace
+
+// The expected fetches count layer 0 where a splat texel is unpainted (every layer's weight below skip_below, so layer 0
+// shows), as where its own weight is kept: over a 4 x 4 splat map with 5 texels unpainted, 3 of layer 0 and 8 of the
+// others, layer 0 covers 8 of 16 texels (3 of its own, 5 unpainted; before, 3), the others theirs.
+TEST(Layers, TheExpectedFetchesCountLayerZeroWhereNothingIsPainted) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hexc_unpainted_" + test::testLogName());
+    std::filesystem::create_directories(dir);
+    Texture splat{4, 4, false, std::vector<uint8_t>(64, 0), {}};
+    const int layerOf[16] = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, -1, -1, -1, -1, -1};  // -1: unpainted
+    for (int i = 0; i < 16; ++i)
+        if (layerOf[i] >= 0) splat.rgba8[size_t(4 * i + layerOf[i])] = 255;
+    std::ofstream(dir / "splat.png", std::ios::binary) << pngBytes(splat);
+    std::ofstream(dir / "grey.png", std::ios::binary) << pngBytes(Texture{1, 1, false, {128, 128, 128, 255}, {}});
+    std::string layers;
+    for (const char* name : {"a", "b", "c", "d"})
+        layers += std::string(layers.empty() ? "" : ",") + R"({"name": ")" + name +
+                  R"(", "slots": [{"name": "albedo", "kind": "color", "texture": "grey.png"}]})";
+    std::ofstream(dir / "m.json") << R"({"name": "unpainted", "layers": [)" << layers << R"(], "layer_blend": {"splat": ["splat.png"]}})";
+    const nlohmann::json manifest = manifestOf(compiled(loadMaterial(dir / "m.json")))["layers"];
+    EXPECT_EQ(manifest["coverage"], nlohmann::json({8 / 16.0, 3 / 16.0, 3 / 16.0, 2 / 16.0}));
+    // One splat fetch, and per kept layer its albedo's 3 taps.
+    EXPECT_NEAR(manifest["fetches_per_pixel"]["expected"].get<double>(), 1 + 3 * (8 + 3 + 3 + 2) / 16.0, 1e-12);
+    std::filesystem::remove_all(dir);
+}

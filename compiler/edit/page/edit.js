@@ -1,5 +1,6 @@
 // hexc edit's page: loads the material, has the server compile it into WebGL programs, draws it, applies the panel's
 // edits (uniforms at once, structural ones by compiling again), saves, and follows the file on disk.
+import { History } from './history.js';
 import { View } from './view.js';
 import { Panel, effective, slotEntries } from './panel.js';
 
@@ -40,26 +41,17 @@ function status(doing) {
   $('redo').disabled = !history.future.length;
 }
 
-// Undo and redo over every change of the document in this session: panel edits (a slider's drag is one step), a
-// reload from disk, taking the file's version. Each step is the document before it, as JSON text.
-const history = { past: [], future: [], pointer: null, at: 0 };
+const history = new History();
+const remember = (pointer = null) => history.remember(state.doc, pointer, performance.now());
 
-function remember(pointer = null) {
-  const now = performance.now();
-  if (!(pointer !== null && pointer === history.pointer && now - history.at < 1000)) history.past.push(JSON.stringify(state.doc));
-  Object.assign(history, { future: [], pointer, at: now });
-}
-
-function travel(from, to) {
-  if (!from.length) return;
-  to.push(JSON.stringify(state.doc));
-  state.doc = JSON.parse(from.pop());
-  history.pointer = null;
+function travel(doc) {
+  if (doc === null) return;
+  state.doc = doc;
   panel.render(state.doc);
   compile();
 }
-const undo = () => travel(history.past, history.future);
-const redo = () => travel(history.future, history.past);
+const undo = () => travel(history.undo(state.doc));
+const redo = () => travel(history.redo(state.doc));
 
 // Diagnostics over the view, never instead of it: the last program that compiled keeps drawing.
 function showDiagnostics(list, kind) {

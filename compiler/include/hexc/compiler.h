@@ -59,6 +59,10 @@ struct CompileOptions {
     // read from a KTX2 array that the shader cannot read as one array takes a texture per slot, where an engine,
     // which loads the file as it is, gets HX128 (docs/material-format.md#ktx2-arrays).
     bool slotTexturesDecoded = false;
+    // Write the textures hexc derives from the slots' (the histogram blend's Gaussian texture and look-up table, packed
+    // scalar maps). Off: the shaders and the manifest only, which still names them (hexc edit's page, which is served
+    // those textures apart, and its cost: computing them for a 2048 x 2048 texture takes seconds and 48 MB).
+    bool derivedTextures = true;
     ResourceLayout layout;  // where hexc's own resources go on each target
     // The fragment entry point on every target but OpenGL GLSL (always `main`); empty: defaultEntryPoint(material).
     std::string entryPoint;

@@ -232,7 +232,9 @@ private:
         if (v.contains("mode")) {
             if (int i = choice(v["mode"], pointer + "/mode", kLayerBlends); i >= 0) layers.blend = LayerBlend(i);
         }
-        if (v.contains("width")) layers.width = number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, layers.width);
+        if (v.contains("width"))
+            layers.width =
+                std::max(number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, layers.width), kMinHeightWidth);
         // A quarter: beyond, a layer painted at a quarter's weight would vanish.
         if (v.contains("skip_below"))
             layers.skipBelow = number(v["skip_below"], pointer + "/skip_below", {0, 0.25, false, false, "in [0, 0.25]"}, layers.skipBelow);

@@ -470,7 +470,8 @@ private:
         checkKeys(v, pointer, kHeightKeys);
         HeightBlend h;
         if (requireKey(v, pointer, "slot", "the name of a scalar slot holding heights")) h.slot = string(v["slot"], pointer + "/slot");
-        if (v.contains("width")) h.width = number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, h.width);
+        if (v.contains("width"))
+            h.width = std::max(number(v["width"], pointer + "/width", {0, 1, true, false, "in (0, 1]"}, h.width), kMinHeightWidth);
         if (s.hex.taps == 1 || s.hex.adaptive())
             report(Code::ConflictingSettings, pointer,
                    std::string("`height_blend` needs every tile's height; it cannot be combined with `taps` ") +

@@ -36,26 +36,40 @@ double fetches(const SlotPlan& sp) {
     return sp.taps;
 }
 
-// Per layer, the fraction of the splat maps' texels where its weight is at least `skip` (hexcLayerKeep keeps it). A
-// splat map over its budget is an error in `diagnostics`, refused from its header before it is decoded.
+// Per layer, the fraction of the splat maps' texels where its weight is at least `skip` (hexcLayerKeep keeps it), and
+// for layer 0 also where every layer's is below it (an unpainted texel: layer 0 shows), counted over the first map's
+// texels (another map's read at the same place). A splat map over its budget is an error in `diagnostics`, refused from
+// its header before it is decoded.
 std::vector<double> coverage(const Material& material, const Layers& layers, Diagnostics& diagnostics) {
     std::vector<double> out(layers.layers.size(), 1.0);
-    for (size_t k = 0; k < layers.splats.size(); ++k) {
-        const Slot& splat = material.slots[layers.splats[k]];
-        if (std::optional<Diagnostic> over = overTexelBudget(material, splat, kSplatBudget)) {
+    bool countable = !layers.splats.empty();
+    for (size_t s : layers.splats)
+        if (std::optional<Diagnostic> over = overTexelBudget(material, material.slots[s], kSplatBudget)) {
             diagnostics.push_back(*over);
-            continue;
+            countable = false;
         }
-        if (!splat.eightBit) continue;  // float weights: counted as covering everything, the worst case, undecoded
-        const Texture t = decodeTexture(*splat.file, false);
-        if (t.rgba8.empty()) continue;  // block-compressed: as float ones
-        const size_t texels = size_t(t.width) * size_t(t.height);
-        for (size_t c = 0; c < 4 && 4 * k + c < out.size(); ++c) {
-            size_t kept = 0;
-            for (size_t i = 0; i < texels; ++i) kept += t.rgba8[4 * i + c] / 255.0 >= layers.skipBelow;
-            out[4 * k + c] = double(kept) / double(texels);
-        }
+    std::vector<Texture> maps;
+    for (size_t k = 0; countable && k < layers.splats.size(); ++k) {
+        const Slot& splat = material.slots[layers.splats[k]];
+        maps.push_back(splat.eightBit ? decodeTexture(*splat.file, false) : Texture{});
+        countable = !maps.back().rgba8.empty();  // float or block-compressed weights: every layer everywhere, undecoded
     }
+    if (!countable) return out;
+    const Texture& first = maps[0];
+    std::vector<size_t> kept(out.size(), 0);
+    for (int y = 0; y < first.height; ++y)
+        for (int x = 0; x < first.width; ++x) {
+            bool painted = false;
+            for (size_t l = 0; l < out.size(); ++l) {
+                const Texture& t = maps[l / 4];
+                const size_t at = size_t(y * t.height / first.height) * size_t(t.width) + size_t(x * t.width / first.width);
+                const bool keeps = t.rgba8[4 * at + l % 4] / 255.0 >= layers.skipBelow;
+                kept[l] += keeps;
+                painted = painted || keeps;
+            }
+            kept[0] += !painted;
+        }
+    for (size_t l = 0; l < out.size(); ++l) out[l] = double(kept[l]) / (double(first.width) * double(first.height));
     return out;
 }
 
