@@ -157,6 +157,7 @@ void planLayers(const Material& material, bool shareTiles, ShaderPlan& plan) {
     if (!plan.functions && !anyRoleRead(layers, plan.templateSource, readsFirst)) return;
     LayersPlan lp;
     lp.count = layers.layers.size();
+    lp.blend = layers.blend;
     lp.width = layers.width;
     lp.skipBelow = layers.skipBelow;
     lp.coverage = coverage(material, layers, plan.diagnostics);
