@@ -207,7 +207,7 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
     app.add_flag("--functions", a.options.functions,
                  "write the material's functions for an engine's own material instead of a\n"
                  "shader: hexc_<slot>(uv), hexc_<slot>_normal(uv); no main (docs/engines.md)");
-    app.add_option("--engine,--engines", a.options.engines,
+    app.add_option("--engine,--engines", a.engines,
                    "write a package for each engine instead of shaders: " + joined(engineList(), ", ") +
                        "\n(DIR/<engine>/...; functions with every setting baked; docs/engines.md)")
         ->delimiter(',')
@@ -258,7 +258,7 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     a.materials.assign(u.materials.begin(), u.materials.end());
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
     // An engine package's manifest gives the textures the package does not hold from its own folder in the output folder.
-    if (u.manifestPaths || !a.options.engines.empty()) a.options.manifestPathsFrom = a.outDir;
+    if (u.manifestPaths || !a.engines.empty()) a.options.manifestPathsFrom = a.outDir;
     applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
     if (a.options.functions && u.targets.empty()) a.options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};  // no SPIR-V form
     if (!u.layout.resolve(a.options.layout)) return kInvalidInput;
