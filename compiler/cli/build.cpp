@@ -19,6 +19,7 @@
 #include "incremental.h"
 #include "progress.h"
 #include "hexc/cache.h"
+#include "hexc/engines.h"
 #include "hexc/files.h"
 #include "hexc/materialx.h"
 #include "hexc/suggest.h"
@@ -188,7 +189,7 @@ bool inputsFit(const Arguments& a, const Inputs& in) {
     }
     // An engine package replaces the template with the engine's own, so a scene's passes (each a template of its own)
     // have no package: the engine is given the scene's material files instead.
-    if (!a.options.engines.empty() && !in.scenes.empty()) {
+    if (!a.engines.empty() && !in.scenes.empty()) {
         *a.messages.text << "hexc: error: --engine packages materials, not a scene's passes: pass " << in.scenes.front().scene.name
                          << "'s material files instead\n";
         ok = false;
@@ -227,7 +228,8 @@ ShaderCache::Stats compileInParallel(const Arguments& a, const std::vector<Job*>
     auto worker = [&] {
         for (size_t i; !stop && (i = next++) < pending.size();) {
             progress.step("compiling " + pending[i]->material.name);
-            pending[i]->result = compile(pending[i]->material, options);
+            pending[i]->result =
+                a.engines.empty() ? compile(pending[i]->material, options) : compilePackages(pending[i]->material, a.engines, options);
             if (!a.progress) continue;
             std::lock_guard lock(calls);
             if (!stop && !a.progress(++done, pending.size(), pending[i]->material.name)) stop = true;
@@ -248,7 +250,7 @@ ShaderCache::Stats compileInParallel(const Arguments& a, const std::vector<Job*>
 bool compileJobs(const Arguments& a, std::vector<Job>& jobs, ShaderCache::Stats& stats, bool& stopped) {
     std::vector<Job*> pending;
     for (Job& j : jobs) {
-        j.hash = inputHash(j.material, a.options, j.extraInputs);
+        j.hash = inputHash(j.material, a.options, a.engines, j.extraInputs);
         j.upToDate = !a.force && upToDate(a.outDir, j.material.name, j.hash);
         if (!j.upToDate) pending.push_back(&j);
     }
@@ -315,7 +317,7 @@ Planned plannedOutputs(const Arguments& a, const Inputs& in) {
     Planned p;
     for (const SceneSummary& s : in.scenes) p.outputs.push_back(a.outDir / (s.scene.name + ".scene.json"));
     for (const Job& j : in.jobs) {
-        OutputNames names = outputNames(j.material, a.options);
+        OutputNames names = a.engines.empty() ? outputNames(j.material, a.options) : packageOutputNames(j.material, a.engines, a.options);
         p.diagnostics.insert(p.diagnostics.end(), names.diagnostics.begin(), names.diagnostics.end());
         for (const std::string& name : names.names) p.outputs.push_back(a.outDir / name);
     }

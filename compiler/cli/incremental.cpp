@@ -42,7 +42,8 @@ std::vector<std::filesystem::path> inputFiles(const Material& material, const Co
     return files;
 }
 
-std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::filesystem::path>& extra) {
+std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::string>& engines,
+                      const std::vector<std::filesystem::path>& extra) {
     ContentHash h;
     h.add(version());
     h.add(buildId());
@@ -51,6 +52,7 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     h.add(codeOptionsKey(options) + "," + std::to_string(options.specialise) + std::to_string(options.shareLattice) + "," +
           toString(options.layout) + "," + options.entryPoint + (options.vertex ? ",vertex" : "") +
           (options.emitGenerated ? ",generated" : "") + (options.manifestPathsFrom.empty() ? "" : ",paths"));
+    for (const std::string& e : engines) h.add("engine " + e);
     // The variant's own name and slots (a scene pass restricts them; the material file alone does not say).
     h.add(material.name + "|" + material.templ.path());
     // The banner names the material file; --manifest-paths gives where every input was (the stamp's folder is the
@@ -62,7 +64,7 @@ std::string inputHash(const Material& material, const CompileOptions& options, c
     // Of most textures the compile reads only what the header says (size, channels, format, colour space, a KTX2
     // array's layers: the manifest and whether a role's textures make one array follow them): new pixels leave the
     // outputs as they are. Where it reads the texels (texelsRead), their bytes count.
-    const bool copied = std::any_of(options.engines.begin(), options.engines.end(), [](const std::string& e) {
+    const bool copied = std::any_of(engines.begin(), engines.end(), [](const std::string& e) {
         const std::optional<Engine> engine = engineNamed(e);
         return engine && isWebEngine(*engine);
     });

@@ -18,7 +18,8 @@ namespace hexc::cli {
 std::vector<std::filesystem::path> inputFiles(const Material& material, const CompileOptions& options);
 
 // XXH3 (128 bit) of everything a compile depends on, as 32 hex digits; `extra` adds e.g. a scene file.
-std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::filesystem::path>& extra);
+std::string inputHash(const Material& material, const CompileOptions& options, const std::vector<std::string>& engines,
+                      const std::vector<std::filesystem::path>& extra);
 
 // The stamp `dir/.<name>.hexc-stamp` records the hash and the outputs of the last successful compile; the outputs are
 // up to date when the hash matches and each still holds what the stamp says it held.

@@ -2,6 +2,7 @@
 
 #include "hexc/cache.h"
 #include "hexc/engines.h"
+#include "hexc/library.h"
 
 #include <CLI/CLI.hpp>
 
@@ -20,20 +21,39 @@ std::vector<std::string> engineList() {
     return out;
 }
 
-const char* const kDescription = R"(hexc - compile hex-tiled materials to SPIR-V, HLSL, GLSL and MSL
+std::string joined(const std::vector<std::string>& names, const char* separator) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : separator) + n;
+    return out;
+}
+
+// The description on top of --help; its lists of targets, their files and the library's targets from the target
+// table.
+std::string description() {
+    const std::vector<Target> defaults = defaultTargets();
+    std::vector<std::string> files, also;
+    for (Target t : defaults) files.push_back(shaderFileName("", t));
+    for (const std::string& name : targetNames())
+        if (const Target t = *targetNamed(name); std::find(defaults.begin(), defaults.end(), t) == defaults.end())
+            also.push_back("with --targets " + name + " also DIR/<name>" + shaderFileName("", t));
+    also.push_back("with --vertex also DIR/<name>.vert.*, a pass-through vertex stage feeding the fragment shader");
+    also.push_back("with --emit-generated also DIR/<name>.generated.frag, the Vulkan GLSL hexc generated and compiled");
+    return "hexc - compile hex-tiled materials to shaders: " + joined(targetNames(), ", ") + R"(
 
   hexc MATERIAL.json|MATERIAL.mtlx|SCENE.json [MORE ...] -o DIR [options]
   hexc render MATERIAL.json -o IMAGE.{pfm,png} [options]   (hexc render --help)
   hexc preview MATERIAL.json -o PREVIEW.png [--cell N]     (hexc preview --help)
-  hexc library --target hlsl|glsl|msl|spirv-asm -o DIR   (hexc library --help)
+  hexc library --target )" +
+           joined(libraryTargetNames(), "|") + R"( -o DIR   (hexc library --help)
   hexc export-mtlx MATERIAL.json -o MATERIAL.mtlx          (hexc export-mtlx --help)
   hexc edit MATERIAL.json [--port N]                       (hexc edit --help: tune it live in a browser)
 
 Reads each material (JSON, docs/material-format.md, or MaterialX, docs/materialx.md), injects hex-tiling
-into every texture slot of its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross:
-  DIR/<name>.frag.spv  .frag.hlsl  .frag.glsl  .frag.metal  and  DIR/<name>.manifest.json
-  (with --vertex also DIR/<name>.vert.*, a pass-through vertex stage feeding the fragment shader;
-   with --emit-generated also DIR/<name>.generated.frag, the Vulkan GLSL hexc generated and compiled)
+into every texture slot of its template, compiles with glslang, optimises with spirv-opt and emits through SPIRV-Cross (wgsl: naga):
+  DIR/<name>)" +
+           joined(files, "  ") + R"(  and  DIR/<name>.manifest.json
+  ()" + joined(also, ";\n   ") +
+           R"()
 A scene (a JSON file with a "scene" key, see docs/scenes.md) compiles each (material, pass) variant it
 uses into DIR/<material>.<pass>.*, with an index (DIR/<scene>.scene.json) that marks variants whose code is
 identical. Inputs unchanged since the last run (material, textures' headers, template, options, hexc build)
@@ -41,6 +61,7 @@ are not compiled again (--force compiles them anyway); shader code compiled befo
 earlier run, comes from the cache (--cache-dir). Nothing is written unless everything compiles; each file is
 written atomically.
 )";
+}
 
 // Fills the compile options from the checked names of --target, --glsl-version, --msl-version and --line-directives.
 void applyNames(const std::vector<std::string>& targets, const std::string& glsl, const std::string& msl, const std::string& lines,
@@ -191,10 +212,9 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
     app.add_flag("--functions", a.options.functions,
                  "write the material's functions for an engine's own material instead of a\n"
                  "shader: hexc_<slot>(uv), hexc_<slot>_normal(uv); no main (docs/engines.md)");
-    app.add_option("--engine,--engines", a.options.engines,
-                   "write a package for each engine instead of shaders: godot3, godot4, filament,\n"
-                   "threejs, babylon, unity, unreal (DIR/<engine>/...; functions with every\n"
-                   "setting baked; docs/engines.md)")
+    app.add_option("--engine,--engines", a.engines,
+                   "write a package for each engine instead of shaders: " + joined(engineList(), ", ") +
+                       "\n(DIR/<engine>/...; functions with every setting baked; docs/engines.md)")
         ->delimiter(',')
         ->check(CLI::IsMember(engineList()));
     app.add_flag_callback(
@@ -243,7 +263,7 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     a.materials.assign(u.materials.begin(), u.materials.end());
     a.warnings &= !a.listOutputs;  // a build system lists at configure time; the build itself prints the warnings
     // An engine package's manifest gives the textures the package does not hold from its own folder in the output folder.
-    if (u.manifestPaths || !a.options.engines.empty()) a.options.manifestPathsFrom = a.outDir;
+    if (u.manifestPaths || !a.engines.empty()) a.options.manifestPathsFrom = a.outDir;
     applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
     if (a.options.functions && u.targets.empty()) a.options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};  // no SPIR-V form
     if (!u.layout.resolve(a.options.layout, a.messages)) return kInvalidInput;
@@ -257,7 +277,7 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
 }  // namespace
 
 std::optional<int> parseArguments(const std::vector<std::string>& args, Arguments& a) {
-    CLI::App app(kDescription, "hexc");
+    CLI::App app(description(), "hexc");
     Unresolved u;
     addInputOptions(app, a, u);
     addVersionOptions(app, a, u);

@@ -48,6 +48,7 @@ struct Arguments {
     std::vector<std::filesystem::path> materials;
     std::filesystem::path outDir;
     CompileOptions options;
+    std::vector<std::string> engines;   // --engine: a package per engine instead of shaders (hexc/engines.h)
     std::filesystem::path depfile;      // --depfile
     std::vector<std::string> variants;  // --variant: only these scene variants
     bool quiet = false;                 // -q: no summary; warnings stay

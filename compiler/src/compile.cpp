@@ -8,9 +8,9 @@
 #include "backends/backends.h"
 #include "backends/shader_code.h"
 #include "codegen/codegen.h"
+#include "compile.h"
 #include "hexc/cache.h"
 #include "hexc/compiler.h"
-#include "hexc/engines.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
 #include "precompute/derived.h"
@@ -109,8 +109,10 @@ nlohmann::json vertexStage(const Material& material, const ShaderPlan& plan, con
     return emitVertexStage(optimized.words, inputs, entry, material.name, options, targets, files);
 }
 
-void run(const Material& material, const CompileOptions& options, CompileResult& result) {
-    ShaderPlan plan = planShader(material, options);
+void run(const Material& material, const CompileOptions& options, CompiledMaterial& out) {
+    CompileResult& result = out.result;
+    out.plan = planShader(material, options);
+    const ShaderPlan& plan = out.plan;
     append(result.diagnostics, plan.diagnostics);
     if (hasErrors(plan.diagnostics)) return;
     if (options.debug && plan.layout.vulkan.combined)
@@ -118,7 +120,8 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
                                              "--debug keeps hexc's functions, which take a texture and a sampler apart; combined image "
                                              "samplers (layout vulkan.combined) need the optimised, inlined shader")}};
     const std::vector<Target> targets = sortedTargets(options);
-    if (plan.functions && targets.front() == Target::Spirv)
+    // The functions output is source to include: no binary module.
+    if (plan.functions && std::any_of(targets.begin(), targets.end(), [](Target t) { return targetRow(t).binary; }))
         throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {"--functions"}, "",
                                              "the functions output is source to include in an engine's material: HLSL, GLSL, MSL or WGSL, "
                                              "not SPIR-V")}};
@@ -129,53 +132,33 @@ void run(const Material& material, const CompileOptions& options, CompileResult&
 
     nlohmann::json described = nlohmann::json::object();
     const char* stage = plan.functions ? "functions" : "frag";
-    for (auto& [t, out] : code.targets) {
-        out.target["file"] = shaderFileName(material.name, t, stage);
+    for (auto& [t, target] : code.targets) {
+        target.target["file"] = shaderFileName(material.name, t, stage);
         if (plan.functions) {
-            out.source = functionsOnly(out.source, t, plan.entryPoint);
-            for (const char* key : {"entry_point", "stage", "inputs", "outputs"}) out.target.erase(key);
+            target.source = functionsOnly(target.source, t, plan.entryPoint);
+            for (const char* key : {"entry_point", "stage", "inputs", "outputs"}) target.target.erase(key);
         }
-        described[std::string(toString(t))] = std::move(out.target);
-        result.files.push_back({shaderFileName(material.name, t, stage), std::move(out.source)});
+        described[std::string(toString(t))] = std::move(target.target);
+        out.sources[t] = std::move(target.source);
     }
-    nlohmann::json manifest = buildManifest(material, plan, described);
-    if (plan.functions) manifest["functions"] = functionsEntry(plan);
-    if (options.vertex) manifest["vertex"] = vertexStage(material, plan, options, targets, result.spirv, result.files);
-    if (!options.manifestPathsFrom.empty()) manifest["source"] = sourcePaths(material, plan, options.manifestPathsFrom);
-    if (options.emitGenerated) result.files.push_back({material.name + ".generated.frag", result.glsl});
-    addBanners(result.files, material, plan, options);
+    out.manifest = buildManifest(material, plan, described);
+    if (plan.functions) out.manifest["functions"] = functionsEntry(plan);
+    if (options.vertex) out.manifest["vertex"] = vertexStage(material, plan, options, targets, result.spirv, out.files);
+    if (!options.manifestPathsFrom.empty()) out.manifest["source"] = sourcePaths(material, plan, options.manifestPathsFrom);
+    if (options.emitGenerated) out.files.push_back({material.name + ".generated.frag", result.glsl});
+    out.banner = banner(material, plan, options);
+    addBanners(out.files, out.banner);
     if (options.derivedTextures)
-        for (OutputFile& f : derivedTextureFiles(material, plan, options.cache)) result.files.push_back(std::move(f));  // images: no banner
-    result.files.push_back({material.name + ".manifest.json", manifest.dump(2) + "\n"});
-    std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
-}
-
-// Each engine's package (hexc/engines.h), every file under its engine's folder.
-CompileResult compileEngines(const Material& material, const CompileOptions& options) {
-    CompileOptions each = options;
-    each.engines.clear();
-    CompileResult all;
-    for (const std::string& name : options.engines) {
-        std::optional<Engine> engine = engineNamed(name);
-        CompileResult r = engine ? compileForEngine(material, *engine, each) : CompileResult{};
-        if (!engine)
-            r.diagnostics.push_back(
-                Diagnostic::make(Code::TargetUnsupported, {"--engine"}, "", "hexc has no package for engine `" + name + "`"));
-        append(all.diagnostics, r.diagnostics);
-        for (OutputFile& f : r.files) all.files.push_back(std::move(f));
-    }
-    if (!all.ok()) all.files.clear();
-    std::sort(all.files.begin(), all.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
-    return all;
+        for (OutputFile& f : derivedTextureFiles(material, plan, options.cache)) out.files.push_back(std::move(f));  // images: no banner
 }
 
 }  // namespace
 
-CompileResult compile(const Material& material, const CompileOptions& options) {
-    if (!options.engines.empty()) return compileEngines(material, options);
-    CompileResult result;
+CompiledMaterial compileMaterial(const Material& material, const CompileOptions& options) {
+    CompiledMaterial out;
+    CompileResult& result = out.result;
     try {
-        run(material, options, result);
+        run(material, options, out);
     } catch (const CompileError& e) {
         append(result.diagnostics, e.diagnostics);
     } catch (const spirv_cross::CompilerError& e) {
@@ -185,11 +168,27 @@ CompileResult compile(const Material& material, const CompileOptions& options) {
         result.diagnostics.push_back(Diagnostic::make(Code::OutOfMemory, {material.sourceFile.string()}, "",
                                                       "out of memory compiling this material (docs/cli.md#budgets)"));
     } catch (const std::exception& e) {
-        // compile() never throws: anything else is hexc's own fault, reported as such.
+        // compileMaterial() never throws: anything else is hexc's own fault, reported as such.
         result.diagnostics.push_back(
             Diagnostic::make(Code::Internal, {material.sourceFile.string()}, "", std::string("internal error: ") + e.what()));
     }
-    if (!result.ok()) result.files.clear();
+    if (!result.ok()) {
+        out.sources.clear();
+        out.files.clear();
+    }
+    return out;
+}
+
+CompileResult compile(const Material& material, const CompileOptions& options) {
+    CompiledMaterial c = compileMaterial(material, options);
+    CompileResult result = std::move(c.result);
+    if (!result.ok()) return result;
+    const char* stage = c.plan.functions ? "functions" : "frag";
+    for (auto& [t, source] : c.sources) result.files.push_back({shaderFileName(material.name, t, stage), std::move(source)});
+    addBanners(result.files, c.banner);
+    for (OutputFile& f : c.files) result.files.push_back(std::move(f));
+    result.files.push_back({material.name + ".manifest.json", c.manifest.dump(2) + "\n"});
+    std::sort(result.files.begin(), result.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
     return result;
 }
 

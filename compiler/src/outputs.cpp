@@ -4,33 +4,12 @@
 #include <set>
 
 #include "hexc/compiler.h"
-#include "hexc/engines.h"
 #include "hexc/histogram.h"
 #include "plan/plan.h"
 
 namespace hexc {
-namespace {
-
-// Each engine's package's (compile() writes them instead of shaders with --engine).
-OutputNames engineNames(const Material& material, const CompileOptions& options) {
-    OutputNames out;
-    for (const std::string& name : options.engines) {
-        const std::optional<Engine> engine = engineNamed(name);
-        if (!engine) continue;  // the compile reports it
-        OutputNames each = engineOutputNames(material, *engine, options);
-        out.names.insert(out.names.end(), each.names.begin(), each.names.end());
-        for (const Diagnostic& d : each.diagnostics)  // the same plan's for every engine: once
-            if (std::none_of(out.diagnostics.begin(), out.diagnostics.end(), [&](const Diagnostic& o) { return o.format() == d.format(); }))
-                out.diagnostics.push_back(d);
-    }
-    std::sort(out.names.begin(), out.names.end());
-    return out;
-}
-
-}  // namespace
 
 OutputNames outputNames(const Material& material, const CompileOptions& options) {
-    if (!options.engines.empty()) return engineNames(material, options);
     OutputNames out;
     const ShaderPlan plan = planShader(material, options);
     out.diagnostics = plan.diagnostics;

@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "hexc/compiler.h"
+#include "hexc/engines.h"
+#include "hexc/library.h"
 #include "support.h"
 
 using namespace hexc;
@@ -87,6 +89,51 @@ TEST(Cli, OptionSpellings) {
                                "--no-specialise", "--no-shared-lattice", "--depfile", "--variant", "--quiet", "--verbose", "--no-warnings",
                                "--force", "--jobs", "--version", "Exit codes"})
         EXPECT_NE(help.find(option), std::string::npos) << option;
+}
+
+// The names of `names` that `help` leaves out (each must appear as a word: `msl` is not found in `mslx`).
+std::vector<std::string> leftOut(const std::string& help, const std::vector<std::string>& names) {
+    std::vector<std::string> out;
+    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
+    for (const std::string& n : names) {
+        bool found = false;
+        for (size_t at = help.find(n); !found && at != std::string::npos; at = help.find(n, at + 1))
+            found = (at == 0 || !word(help[at - 1])) && (at + n.size() == help.size() || !word(help[at + n.size()]));
+        if (!found) out.push_back(n);
+    }
+    return out;
+}
+
+// --help lists every target, its file, every `hexc library` target and every engine from their tables.
+TEST(Cli, HelpListsEveryTargetAndEngineOfTheTables) {
+    const std::string help = hexc::test::runHexcStdout("--help");
+    std::vector<std::string> names = targetNames();
+    for (const std::string& n : targetNames()) names.push_back(shaderFileName("", *targetNamed(n)));
+    for (const std::string& n : libraryTargetNames()) names.push_back(n);
+    for (std::string_view n : engineNames()) names.emplace_back(n);
+    EXPECT_EQ(leftOut(help, names), std::vector<std::string>{}) << help;
+    // The check fails on a help that leaves a target out.
+    std::string without = help;
+    for (size_t at; (at = without.find("wgsl")) != std::string::npos;) without.replace(at, 4, "w-g-s-l");
+    EXPECT_EQ(leftOut(without, {"wgsl"}), std::vector<std::string>{"wgsl"});
+}
+
+// The docs' rows that list the engines (the command line's, the C API's, the Python module's) name every engine of
+// the table, in backticks.
+TEST(Cli, DocsListEveryEngineOfTheTable) {
+    std::vector<std::string> quoted;
+    for (std::string_view n : engineNames()) quoted.push_back("`" + std::string(n) + "`");
+    for (const auto& [file, start] : {std::pair<const char*, const char*>{"docs/cli.md", "| `--engine LIST` |"},
+                                      {"docs/c-api.md", "| `engines` |"},
+                                      {"docs/python.md", "| `engines` |"}}) {
+        std::ifstream in(file);
+        std::string row;
+        while (std::getline(in, row) && !row.starts_with(start)) {
+        }
+        ASSERT_TRUE(row.starts_with(start)) << file;
+        EXPECT_EQ(leftOut(row, quoted), std::vector<std::string>{}) << file << ": " << row;
+        EXPECT_EQ(leftOut(row, {"`godot5`"}), std::vector<std::string>{"`godot5`"});  // the check fails on an engine the row lacks
+    }
 }
 
 // --version names the build (the hash the stamps use) and the shader tool chain.

@@ -75,9 +75,6 @@ struct CompileOptions {
     // Every loop unrolled and the arrays it indexes made scalars (spirv/unroll.h): for an engine language with no array
     // copies, no array parameters and only `for` loops of its own form (Godot 3's; hexc/engines.h sets it).
     bool unrollLoops = false;
-    // Engine packages (hexc/engines.h, --engine): when set, compile() writes each one's files under "<engine>/"
-    // instead of the targets' shaders.
-    std::vector<std::string> engines;
     // Also emit the pass-through vertex stage that feeds the fragment shader's inputs ("<material>.vert.*").
     bool vertex = false;
     // Readable outputs (like glslc/dxc -O0): no optimisation, so hexc's functions keep their names, and #line

@@ -155,7 +155,9 @@ nlohmann::json functionsEntry(const ShaderPlan& plan);
 // `entry`, its stage input and output, and GLSL's #version line.
 std::string functionsOnly(const std::string& source, Target target, const std::string& entry);
 
-// The banner (banner.cpp) on top of every shader source in `files`, after GLSL's `#version` line.
-void addBanners(std::vector<OutputFile>& files, const Material& material, const ShaderPlan& plan, const CompileOptions& options);
+// The banner (banner.cpp): two comment lines naming hexc, the material, the template and the settings.
+std::string banner(const Material& material, const ShaderPlan& plan, const CompileOptions& options);
+// `top` (a banner) on top of every shader source in `files`, after GLSL's `#version` line.
+void addBanners(std::vector<OutputFile>& files, const std::string& top);
 
 }  // namespace hexc

@@ -5,9 +5,10 @@
 #include <spirv_glsl.hpp>
 
 #include <map>
-#include <regex>
+#include <string_view>
 
 #include "backends/backends.h"
+#include "common/text.h"
 
 namespace hexc {
 namespace {
@@ -133,9 +134,23 @@ std::string libraryGlsl(const std::vector<uint32_t>& spirv) {
     // their texture, hexcLib*, they are cut with the entry's other resources (GLSL compilers refuse orphans).
     for (const spirv_cross::CombinedImageSampler& s : c.get_combined_image_samplers())
         if (c.get_name(s.image_id).starts_with("hexcLib")) c.set_name(s.combined_id, c.get_name(s.image_id));
-    // A function's combined parameter (SPIRV_Cross_Combined<texture><sampler>) takes its texture's name.
-    static const std::regex combined("SPIRV_Cross_Combined(\\w+?)samp\\b");
-    return std::regex_replace(c.compile(), combined, "$1");
+    // A function's combined parameter (SPIRV_Cross_Combined<texture><sampler>, the sampler hexc's `samp`) takes its
+    // texture's name.
+    const std::string text = c.compile(), prefix = "SPIRV_Cross_Combined", sampler = "samp";
+    std::string out;
+    size_t at = 0;
+    for (size_t found; (found = text.find(prefix, at)) != std::string::npos;) {
+        size_t end = found + prefix.size();
+        while (end < text.size() && isIdentifierChar(text[end])) ++end;
+        const std::string_view name(text.data() + found + prefix.size(), end - found - prefix.size());
+        out.append(text, at, found - at);
+        if (name.size() > sampler.size() && name.ends_with(sampler))
+            out.append(name.substr(0, name.size() - sampler.size()));
+        else
+            out.append(text, found, end - found);
+        at = end;
+    }
+    return out.append(text, at);
 }
 
 std::string settingsGlsl(const CompileOptions& options) {

@@ -181,7 +181,7 @@ nlohmann::json layersEntry(const ShaderPlan& plan) {
     nlohmann::json roles = nlohmann::json::array();
     for (const LayerRolePlan& r : lp.roles) roles.push_back({{"name", r.name}, {"slots", names(r.slots)}});
     nlohmann::json entry = {{"count", lp.count},
-                            {"mode", lp.heights.empty() ? "linear" : "height"},
+                            {"mode", toString(lp.blend)},
                             {"roles", roles},
                             {"splat_maps", names(lp.splats)},
                             {"skip_below", lp.skipBelow},

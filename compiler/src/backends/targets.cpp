@@ -122,16 +122,6 @@ bool isEntryPointName(std::string_view name) {
     return std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
-namespace {
-
-std::string joined(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : " ") + n;
-    return out;
-}
-
-}  // namespace
-
 std::string codeOptionsKey(const CompileOptions& options) {
     const bool wgsl = std::find(options.targets.begin(), options.targets.end(), Target::Wgsl) != options.targets.end();
     std::string key;
@@ -139,7 +129,7 @@ std::string codeOptionsKey(const CompileOptions& options) {
     return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
            std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
            (options.debug ? ",debug," + std::string(toString(options.lineDirectives)) : "") + (options.functions ? ",functions" : "") +
-           (options.unrollLoops ? ",unroll" : "") + (options.engines.empty() ? "" : ",engines " + joined(options.engines)) +
+           (options.unrollLoops ? ",unroll" : "") +
            (options.uvOrigin == UvOrigin::TopLeft ? "" : ",uv " + std::string(toString(options.uvOrigin))) +
            (wgsl ? "," + nagaIdentity() : "");  // another naga writes other WGSL
 }

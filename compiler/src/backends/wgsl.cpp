@@ -4,25 +4,29 @@
 // elsewhere). What naga cannot take, a template's combined sampler or push constants, is refused with its location.
 #include <spirv_cross.hpp>
 
-#include <fstream>
-#include <regex>
 #include <sstream>
+#include <string_view>
 
 #include "backends/backends.h"
 #include "backends/naga.h"
+#include "common/text.h"
 #include "spirv/lines.h"
 #include "spirv/strings.h"
 
 namespace hexc {
 namespace {
 
-// The template line that declares `name`: the first `uniform` line naming it as a word, for a located diagnostic.
+// The template line that declares `name`: the first line naming it as a word after the word `uniform`, for a located
+// diagnostic (at `uniform`). The plan holds the template as read.
 SourceLoc declaredAt(const ShaderPlan& plan, const std::string& name) {
-    const std::regex declaration("\\buniform\\b.*\\b" + name + "\\b");
-    std::ifstream in(plan.templateFile);
+    std::istringstream in(plan.templateSource);
     std::string line;
-    for (int n = 1; !plan.templateFile.empty() && std::getline(in, line); ++n)
-        if (std::smatch m; std::regex_search(line, m, declaration)) return {plan.templateShown, n, int(m.position(0)) + 1};
+    for (int n = 1; std::getline(in, line); ++n)
+        for (size_t at = line.find("uniform"); at != std::string::npos; at = line.find("uniform", at + 1)) {
+            const size_t end = at + 7;
+            const bool word = (at == 0 || !isIdentifierChar(line[at - 1])) && (end == line.size() || !isIdentifierChar(line[end]));
+            if (word && containsWord(std::string_view(line).substr(end), name)) return {plan.templateShown, n, int(at) + 1};
+        }
     return {plan.templateShown, 0, 0};
 }
 

@@ -15,6 +15,7 @@
 
 struct hexc_options {
     hexc::CompileOptions options;
+    std::vector<std::string> engines;  // a package per engine instead of shaders (hexc/engines.h)
     std::string error;
 };
 
@@ -43,11 +44,11 @@ std::string setTargets(CompileOptions& o, std::string_view value) {
     return "";
 }
 
-std::string setEngines(CompileOptions& o, std::string_view value) {
+std::string setEngines(std::vector<std::string>& out, std::string_view value) {
     std::vector<std::string> engines = value.empty() ? std::vector<std::string>{} : commaSeparated(value);
     for (const std::string& name : engines)
         if (!engineNamed(name)) return "hexc has no package for engine `" + name + "`";
-    o.engines = engines;
+    out = engines;
     return "";
 }
 
@@ -72,9 +73,9 @@ std::string setGlslVersion(CompileOptions& o, const std::string& value) {
     return "";
 }
 
-std::string setOption(CompileOptions& o, const std::string& key, const std::string& value) {
+std::string setOption(CompileOptions& o, std::vector<std::string>& engines, const std::string& key, const std::string& value) {
     if (key == "targets") return setTargets(o, value);
-    if (key == "engines") return setEngines(o, value);
+    if (key == "engines") return setEngines(engines, value);
     if (key == "hlsl-sm") return setShaderModel(o, value);
     if (key == "glsl-version") return setGlslVersion(o, value);
     if (key == "bake") return setFlag(o.bake, value);
@@ -126,6 +127,7 @@ namespace {
 // compile's.
 hexc_status finish(ParseResult parsed, hexc_context& context, const hexc_options* options, hexc_result** result) {
     CompileOptions o = options ? options->options : CompileOptions{};
+    const std::vector<std::string> engines = options ? options->engines : std::vector<std::string>{};
     o.cache = &context.cache;
     if (parsed.partial) {
         const Diagnostics t = checkTemplate(*parsed.partial, o);
@@ -134,7 +136,7 @@ hexc_status finish(ParseResult parsed, hexc_context& context, const hexc_options
     auto r = std::make_unique<hexc_result>();
     r->diagnostics = byPosition(std::move(parsed.diagnostics));
     if (parsed.material) {
-        CompileResult compiled = compile(*parsed.material, o);
+        CompileResult compiled = engines.empty() ? compile(*parsed.material, o) : compilePackages(*parsed.material, engines, o);
         for (Diagnostic& d : byPosition(std::move(compiled.diagnostics))) r->diagnostics.push_back(std::move(d));
         r->files = std::move(compiled.files);
     }
@@ -216,7 +218,8 @@ hexc_options* hexc_options_create(void) { return new (std::nothrow) hexc_options
 hexc_status hexc_options_set(hexc_options* options, const char* key, const char* value) {
     if (!options) return HEXC_BAD_ARGUMENT;
     try {
-        options->error = !key || !value ? "an option's key and value must not be null" : hexc::setOption(options->options, key, value);
+        options->error =
+            !key || !value ? "an option's key and value must not be null" : hexc::setOption(options->options, options->engines, key, value);
         if (!options->error.empty() && key) options->error = std::string(key) + ": " + options->error;
         return options->error.empty() ? HEXC_OK : HEXC_BAD_ARGUMENT;
     } catch (const std::bad_alloc&) {

@@ -2,6 +2,7 @@
 #include "codegen/layers.h"
 
 #include "codegen/codegen.h"
+#include "common/by_enum.h"
 #include "common/templates.h"
 
 namespace hexc {
@@ -61,7 +62,7 @@ public:
 
     // Layer i's weight before keeping: its splat channel, its vertex colour channel, or their product.
     std::string layerWeight(size_t i) const {
-        static const char* const kSections[] = {"weights.layer", "weights.layer.vertex", "weights.layer.both"};
+        static constexpr auto kSections = byEnum<LayerWeights::Both>({"weights.layer", "weights.layer.vertex", "weights.layer.both"});
         return expand(kSections[size_t(plan_.layers->weights)],
                       {{"index", std::to_string(i)}, {"splat", std::to_string(i / 4)}, {"channel", std::to_string(i % 4)}});
     }

@@ -1,6 +1,7 @@
 #pragma once
-// Plain searches in source text. hexc uses no std::regex: it is slow to build, and building one on several
-// threads races on libstdc++'s shared ctype cache (ThreadSanitizer reports it when a scene compiles in parallel).
+// Plain searches in source text. hexc uses no regular expressions (the standard library's <regex>): they are slow to
+// build, and building one on several threads races on libstdc++'s shared ctype cache (ThreadSanitizer reports it
+// when a scene compiles in parallel).
 #include <string_view>
 
 namespace hexc {
@@ -16,13 +17,10 @@ inline bool containsWord(std::string_view text, std::string_view word) {
     return false;
 }
 
-// True when an identifier starts with `prefix` followed by an upper-case letter (regex \bprefix[A-Z]).
-inline bool containsNameStarting(std::string_view text, std::string_view prefix) {
-    for (size_t at = text.find(prefix); at != std::string_view::npos; at = text.find(prefix, at + 1)) {
-        const size_t next = at + prefix.size();
-        if ((at == 0 || !isIdentifierChar(text[at - 1])) && next < text.size() && text[next] >= 'A' && text[next] <= 'Z') return true;
-    }
-    return false;
+// `text` without its leading blanks.
+inline std::string_view trimmedStart(std::string_view text) {
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+    return text;
 }
 
 // The number of lines of `text` that read `line`, ignoring trailing blanks and a CR.

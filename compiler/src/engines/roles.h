@@ -1,13 +1,15 @@
 #pragma once
-// What every engine package shares: which engine input a slot fills (its role, from its name and kind: docs/engines.md,
-// "Slots and engine inputs"), and the warning for a slot no input takes.
-#include <set>
-#include <nlohmann/json_fwd.hpp>
+// The role table: which engine input a slot fills (its role, from its name and kind: docs/engines.md, "Slots and engine
+// inputs"), per engine, and the wiring every package shares: each engine function with the input it fills, a slot no
+// input takes reported.
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "engines/table.h"
 #include "hexc/diagnostics.h"
 #include "hexc/material.h"
+#include "plan/plan.h"
 
 namespace hexc {
 
@@ -15,20 +17,21 @@ namespace hexc {
 // `role` if the material gives one, else its name's.
 std::string slotRole(const Slot& slot);
 
-// The slot an entry of the manifest's `functions` is of: its `slot`, or for a layered material's role function, the
-// role's slot in the first layer (where a warning about it points).
-const Slot& functionSlot(const Material& material, const nlohmann::json& function);
+// An engine function with the input of the engine it fills: the role table's entry for the engine (a statement with
+// `%` for the value, a pin or, for the web engines, the role the module wires), or null: it fills none. A normal
+// slot's derivative function fills none and is no warning: the engines take its tangent-space normal.
+struct WiredFunction {
+    EngineFunction function;
+    std::string role;
+    const char* input = nullptr;
+};
 
-// The engine input an entry of the manifest's `functions` fills: its slot's role, or a role function's role by its
-// name and kind, as a slot's.
-std::string functionRole(const Material& material, const nlohmann::json& function);
+// Each of `functions` wired for `engine`: each input takes the first function of its role; a slot whose function no
+// input takes is a warning in `diagnostics`, located at the slot.
+std::vector<WiredFunction> wire(const Material& material, const std::vector<EngineFunction>& functions, const EngineRow& engine,
+                                Diagnostics& diagnostics);
 
-// The textures of the manifest (a slot's or a packed texture's name) whose sampler decodes them from sRGB: an sRGB slot
-// the shader does not decode itself (no `"decode": "shader"`), or an sRGB packed texture (docs/bind-a-manifest.md,
-// step 3). Every other texture is linear.
-std::set<std::string> samplerDecodesSrgb(const nlohmann::json& manifest);
-
-// The warning for a slot no input of `engine` takes, located at the slot.
-Diagnostic unusedSlot(const Material& material, const Slot& slot, std::string_view engine, const std::string& function);
+// `pattern` with its `%` as `value`.
+std::string filled(std::string pattern, const std::string& value);
 
 }  // namespace hexc

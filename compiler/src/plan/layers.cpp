@@ -2,8 +2,9 @@
 #include "plan/layers.h"
 
 #include <algorithm>
-#include <regex>
+#include <cctype>
 #include <set>
+#include <string_view>
 
 #include "common/text.h"
 #include "hexc/budgets.h"
@@ -73,13 +74,41 @@ std::vector<double> coverage(const Material& material, const Layers& layers, Dia
     return out;
 }
 
+// The location of a stage input declared at `at` (`layout(location = N) [flat|smooth|noperspective|centroid ...]in`),
+// or -1.
+int inputLocation(std::string_view text, size_t at) {
+    const auto skip = [&](std::string_view token) {
+        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+        if (!text.substr(at).starts_with(token)) return false;
+        at += token.size();
+        return true;
+    };
+    if (!skip("layout") || !skip("(") || !skip("location") || !skip("=")) return -1;
+    while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+    const size_t digits = at;
+    while (at < text.size() && std::isdigit(static_cast<unsigned char>(text[at]))) ++at;
+    if (at == digits || at - digits > 4 || !skip(")")) return -1;
+    const int location = std::stoi(std::string(text.substr(digits, at - digits)));
+    for (bool qualifier = true; qualifier;) {
+        qualifier = false;
+        for (std::string_view q : {"flat", "smooth", "noperspective", "centroid"}) {
+            const size_t before = at;
+            if (skip(q) && at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) {
+                qualifier = true;
+                break;
+            }
+            at = before;
+        }
+    }
+    return skip("in") && (at == text.size() || !isIdentifierChar(text[at])) ? location : -1;
+}
+
 // The vertex colour's stage input: the lowest location from 4 up that none of the template's own inputs takes
 // (hexc's built-in templates and the harness's full-screen draw use 0-3: uv, normal, tangent, position).
 int vertexColorLocation(const std::string& templateSource) {
-    static const std::regex input(R"(layout\s*\(\s*location\s*=\s*(\d{1,4})\s*\)\s*((flat|smooth|noperspective|centroid)\s+)*in\b)");
     std::set<int> used;
-    for (auto it = std::sregex_iterator(templateSource.begin(), templateSource.end(), input); it != std::sregex_iterator(); ++it)
-        used.insert(std::stoi((*it)[1].str()));
+    for (size_t at = templateSource.find("layout"); at != std::string::npos; at = templateSource.find("layout", at + 1))
+        if (const int location = inputLocation(templateSource, at); location >= 0) used.insert(location);
     int location = 4;
     while (used.count(location)) ++location;
     return location;
@@ -142,6 +171,7 @@ void planLayers(const Material& material, bool shareTiles, ShaderPlan& plan) {
     if (!plan.functions && !anyRoleRead(layers, plan.templateSource, readsFirst)) return;
     LayersPlan lp;
     lp.count = layers.layers.size();
+    lp.blend = layers.blend;
     lp.width = layers.width;
     lp.skipBelow = layers.skipBelow;
     lp.coverage = coverage(material, layers, plan.diagnostics);

@@ -137,10 +137,11 @@ struct LayerLatticePlan {
     std::vector<size_t> layers;  // the layers with a slot reading it, in order
 };
 struct LayersPlan {
-    std::vector<LayerRolePlan> roles;   // those the template reads, in the layers' role order
-    std::vector<size_t> splats;         // indexes into ShaderPlan::slots; layer i weighs channel i % 4 of splat i / 4
-    std::vector<size_t> heights;        // height blend: per layer, the slot holding its height (else empty)
-    size_t count = 0;                   // layers
+    std::vector<LayerRolePlan> roles;  // those the template reads, in the layers' role order
+    std::vector<size_t> splats;        // indexes into ShaderPlan::slots; layer i weighs channel i % 4 of splat i / 4
+    std::vector<size_t> heights;       // height blend: per layer, the slot holding its height (else empty)
+    size_t count = 0;                  // layers
+    LayerBlend blend = LayerBlend::Linear;
     double width = 0.2, skipBelow = 0;  // fixed in the code
     bool skip = true;                   // a layer of weight 0 at a pixel is not fetched (CompileOptions::skipLayers)
     LayerWeights weights = LayerWeights::Splat;
