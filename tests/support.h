@@ -79,14 +79,22 @@ inline std::string runHexcStdout(const std::string& args) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-// The wgsl target's translator for runHexc, as its `prefix`: HEXC_NODE_PATH at tests/node's npm packages (`npm ci
-// --prefix tests/node`, which .ci/test runs); "" with the reason in `why` when they or Node.js are missing.
-inline std::string nagaPrefix(std::string* why) {
+// The wgsl target's translator for runHexc, as its `prefix`: naga built into hexc (a build with HEXC_NAGA_IN_PROCESS)
+// needs nothing, unless `node` asks for Node's (HEXC_NAGA=node), which needs Node.js and tests/node's npm packages
+// (`npm ci --prefix tests/node`, which .ci/test runs): HEXC_NODE_PATH at them; "" with the reason in `why` when they or
+// Node.js are missing.
+inline std::string nagaPrefix(std::string* why, bool node) {
     const std::filesystem::path modules = std::filesystem::absolute("tests/node/node_modules");
+#ifdef HEXC_NAGA_BUILT_IN
+    constexpr bool builtIn = true;
+#else
+    constexpr bool builtIn = false;
+#endif
+    if (builtIn && !node) return "HEXC_NODE_PATH=" + modules.string();  // set, but not read
     if (std::system("node --version > /dev/null 2>&1") != 0) return *why = "no Node.js (`node`) on PATH", "";
     if (!std::filesystem::exists(modules / "naga-wasm" / "package.json"))
         return *why = "no naga-wasm in " + modules.string() + " (npm ci --prefix tests/node)", "";
-    return "HEXC_NODE_PATH=" + modules.string();
+    return "HEXC_NAGA=node HEXC_NODE_PATH=" + modules.string();
 }
 
 }  // namespace hexc::test
@@ -99,11 +107,13 @@ inline std::string nagaPrefix(std::string* why) {
         GTEST_SKIP() << "no Vulkan device: " << whyNoVulkan;                                   \
     }
 
-// Declares `naga`, the runHexc prefix for the wgsl target; without the npm packages a test skips, unless
-// HEXC_REQUIRE_BROWSER=1 (.ci/test, as for the other npm-backed tests), where it fails.
-#define REQUIRE_NAGA()                                                                                  \
+// Declares `naga`, the runHexc prefix for the wgsl target by the route hexc takes (REQUIRE_NAGA) or by Node.js
+// (REQUIRE_NAGA_BY(true)); without what it needs a test skips, unless HEXC_REQUIRE_BROWSER=1 (.ci/test, as for the
+// other npm-backed tests), where it fails.
+#define REQUIRE_NAGA() REQUIRE_NAGA_BY(false)
+#define REQUIRE_NAGA_BY(node)                                                                           \
     std::string whyNoNaga;                                                                              \
-    const std::string naga = hexc::test::nagaPrefix(&whyNoNaga);                                        \
+    const std::string naga = hexc::test::nagaPrefix(&whyNoNaga, node);                                  \
     if (naga.empty()) {                                                                                 \
         if (std::getenv("HEXC_REQUIRE_BROWSER")) FAIL() << "the wgsl target cannot run: " << whyNoNaga; \
         GTEST_SKIP() << "the wgsl target cannot run: " << whyNoNaga;                                    \

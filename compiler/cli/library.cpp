@@ -20,7 +20,7 @@ Writes DIR/hexc_hextiling.{hlsl,glsl,metal,wgsl,spvasm}: the colour path (hexcCo
 (hexcDeriv), their 1-tap variants (hexcColor1, hexcDeriv1), the lattices of each mode and mask (hexcTilesStable,
 hexcTilesPaper, hexcTilesChecker, hexcTilesNoise), shared by every texture that uses the same coordinates, and
 the settings as structs (hexcLattice(), hexcBlend()). Made from the GLSL hexc injects into materials, through
-glslang and SPIRV-Cross (WGSL: naga, which needs Node.js and npm naga-wasm as the wgsl target does). docs/library.md
+glslang and SPIRV-Cross (WGSL: naga, built in or in Node.js as for the wgsl target). docs/library.md
 documents each function and shows a whole shader per target.
 )";
 

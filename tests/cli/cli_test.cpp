@@ -402,12 +402,13 @@ TEST(Cli, TheLibraryDocumentsItsSettings) {
 
 }  // namespace
 
-// Without Node.js on PATH the wgsl target fails with what to install and writes nothing; every other target works.
+// Running naga in Node.js (HEXC_NAGA=node, or a build without naga built in) without Node.js on PATH, the wgsl target
+// fails with what to install and writes nothing; every other target works.
 TEST(Cli, WgslWithoutNodeSaysWhatToInstall) {
     const auto out = std::filesystem::temp_directory_path() / "hexc_wgsl_without_node";
     std::filesystem::remove_all(out);
     std::string err;
-    const std::string noNode = "PATH=/nonexistent";
+    const std::string noNode = "HEXC_NAGA=node PATH=/nonexistent";
     EXPECT_EQ(runHexc("materials/rock.json -o " + out.string() + " --targets wgsl,spirv", &err, noNode), 1);
     EXPECT_NE(err.find("error[HX300]: cannot run `node`"), std::string::npos) << err;
     EXPECT_NE(err.find("npm install naga-wasm@30.1.0"), std::string::npos) << err;

@@ -952,7 +952,7 @@ TEST_F(Hostile, LibraryIntoAFileSaysSo) {
 
 // --- The wgsl target's translator is bounded in time and in frame size. ---
 
-// A `node` on PATH that is not Node: a shell script in `bin` that records its pid in `pid`, then runs `body`, at the
+// Naga in Node.js (HEXC_NAGA=node) with a `node` on PATH that is not Node: a shell script in `bin` that records its pid in `pid`, then runs `body`, at the
 // first answer (the driver's greeting) or, after a valid greeting ("o" and an empty text), at the translation's.
 TEST_F(Hostile, AWgslTranslatorThatMisbehavesIsKilledAndReported) {
     const fs::path m = write("m.json", material());
@@ -979,8 +979,9 @@ TEST_F(Hostile, AWgslTranslatorThatMisbehavesIsKilledAndReported) {
             write("bin/node", script);
             fs::permissions(dir_ / "bin/node", fs::perms::owner_all);
             fs::remove(dir_ / "pid");
-            const Outcome o = runBounded(m.string() + " --targets wgsl --no-cache" + out(),
-                                         "PATH=" + (dir_ / "bin").string() + ":$PATH HEXC_NODE_TIMEOUT=" + std::to_string(seconds));
+            const Outcome o =
+                runBounded(m.string() + " --targets wgsl --no-cache" + out(),
+                           "HEXC_NAGA=node PATH=" + (dir_ / "bin").string() + ":$PATH HEXC_NODE_TIMEOUT=" + std::to_string(seconds));
             const std::string context = (greeted ? "at the translation: " : "at the greeting: ") + body;
             EXPECT_EQ(o.exit, 1) << context << "\n" << o.err;
             EXPECT_NE(o.err.find("error[HX300]"), std::string::npos) << context << "\n" << o.err;

@@ -338,7 +338,7 @@ TEST(ShaderCache, CommandLineHitsAndAnotherBuildMisses) {
 // another stamp: the entry of the old one is not used, the outputs are not up to date, and the banner names it.
 // Through the command line with tests/node's naga-wasm, under a package.json whose version the test changes.
 TEST(ShaderCache, AnotherNagaVersionMisses) {
-    REQUIRE_NAGA();
+    REQUIRE_NAGA_BY(true);
     const fs::path dir = freshFolder("hexc_cache_naga");
     const fs::path modules = fs::absolute("tests/node/node_modules");
     fs::create_directories(dir / "node_modules" / "naga-wasm");
@@ -350,7 +350,7 @@ TEST(ShaderCache, AnotherNagaVersionMisses) {
     };
     const std::string args =
         "materials/rock.json -v --targets wgsl --cache-dir " + (dir / "cache").string() + " -o " + (dir / "out").string();
-    const std::string env = "HEXC_NODE_PATH=" + (dir / "node_modules").string();
+    const std::string env = "HEXC_NAGA=node HEXC_NODE_PATH=" + (dir / "node_modules").string();  // Node's package
     std::string err;
     setVersion("30.1.0");
     ASSERT_EQ(runHexc(args, &err, env), 0) << err;

@@ -66,8 +66,8 @@ def slot_inputs():
     return inputs + ["%s:%s" % (f, slot) for f in DOCUMENTS for slot in ("albedo", "normal", "roughness")]
 
 
-def hexc(*args):
-    result = subprocess.run([HEXC, *args, "-q"], capture_output=True, text=True)
+def hexc(*args, env=None):
+    result = subprocess.run([HEXC, *args, "-q"], capture_output=True, text=True, env=env)
     if result.returncode != 0:
         raise AssertionError("hexc %s failed: %s" % (" ".join(args), result.stderr))
 
@@ -80,6 +80,18 @@ def case_material(folder, name):
     with open(path, "w") as f:
         json.dump(material, f)
     return path
+
+
+def differing(first, second):
+    """The files under `first` (but the stamps, .NAME.hexc-stamp) whose bytes differ from the same path under `second`."""
+    found = []
+    for folder, _, names in os.walk(first):
+        for name in sorted(n for n in names if not n.startswith(".")):
+            path = os.path.join(folder, name)
+            with open(path, "rb") as f, open(os.path.join(second, os.path.relpath(path, first)), "rb") as g:
+                if f.read() != g.read():
+                    found.append(os.path.relpath(path, first))
+    return found
 
 
 class Wgsl(unittest.TestCase):
@@ -95,6 +107,25 @@ class Wgsl(unittest.TestCase):
         cls.driver = browser_or_skip(WEBGPU_FLAGS)
         cls.driver.get("http://127.0.0.1:%d/wgsl/webgpu.html" % cls.httpd.server_address[1])
         wait_for(lambda: cls.driver.execute_script("return window.hexcReady;"), "the WebGPU page to load")
+        cls.files = cls.compile_all(os.path.join(cls.folder, "tint"))
+
+    @classmethod
+    def compile_all(cls, folder, env=None):
+        """The WGSL of every example, golden material, case, MaterialX document and scene, in both modes, with a vertex
+        stage where asked (scenes: fragments only), written under `folder` by naga as `env` has hexc run it: their paths."""
+        examples = sorted(p for p in glob.glob("materials/*.json") if not p.endswith("schema.json") and "engine_rock" not in p)
+        examples += sorted(glob.glob("tests/golden/materials/*.json"))
+        cases = [case_material(cls.cases, os.path.basename(p)[:-5]) for p in sorted(glob.glob(os.path.join(CASES, "*.json")))]
+        cls.inputs = len(examples) + len(cases)
+        files = []
+        for mode in ([], ["--debug"]):
+            for group, inputs, extra in (("examples", examples, ["--vertex"]), ("cases", cases, ["--vertex"]),
+                                         ("mtlx", sorted(glob.glob("materials/mtlx/*.mtlx")), ["--vertex"]),
+                                         ("scenes", sorted(glob.glob("materials/scenes/*.json")), [])):
+                out = os.path.join(folder, group + "".join(mode))
+                hexc(*inputs, "--targets", "wgsl", *extra, *mode, "-o", out, env=env)
+                files += sorted(glob.glob(os.path.join(out, "*.wgsl")))
+        return files
 
     @classmethod
     def tearDownClass(cls):
@@ -112,17 +143,7 @@ class Wgsl(unittest.TestCase):
         return result
 
     def test_tint_accepts_every_wgsl_file_hexc_writes(self):
-        examples = sorted(p for p in glob.glob("materials/*.json") if not p.endswith("schema.json") and "engine_rock" not in p)
-        examples += sorted(glob.glob("tests/golden/materials/*.json"))
-        cases = [case_material(self.cases, os.path.basename(p)[:-5]) for p in sorted(glob.glob(os.path.join(CASES, "*.json")))]
-        files = []
-        for mode in ([], ["--debug"]):
-            for group, inputs, extra in (("examples", examples, ["--vertex"]), ("cases", cases, ["--vertex"]),
-                                         ("mtlx", sorted(glob.glob("materials/mtlx/*.mtlx")), ["--vertex"]),
-                                         ("scenes", sorted(glob.glob("materials/scenes/*.json")), [])):
-                out = os.path.join(self.folder, "tint", group + "".join(mode))
-                hexc(*inputs, "--targets", "wgsl", *extra, *mode, "-o", out)
-                files += sorted(glob.glob(os.path.join(out, "*.wgsl")))
+        files = self.files
         # The control: a sample in a branch on a stage input, which Tint's uniformity analysis must refuse.
         control = os.path.join(os.path.dirname(__file__), "nonuniform.wgsl")
         codes = []
@@ -137,8 +158,24 @@ class Wgsl(unittest.TestCase):
         self.maxDiff = None
         self.assertEqual(rejected, {})
         # Every example, golden material and case, in both modes, with a vertex stage where asked (scenes: fragments only).
-        self.assertGreater(len(files), 2 * 2 * (len(examples) + len(cases)))
+        self.assertGreater(len(files), 2 * 2 * self.inputs)
         print("Tint accepted all %d" % len(files))
+
+    def test_naga_built_in_writes_what_naga_in_node_writes(self):
+        """With naga built into hexc, the files Tint validates are, byte for byte, those naga in Node.js writes
+        (HEXC_NAGA=node): every WGSL file and manifest (the stamps differ: they key the route)."""
+        if "built in" not in subprocess.run([HEXC, "--version"], capture_output=True, text=True).stdout:
+            self.skipTest("naga is not built into this hexc")
+        started = time.monotonic()
+        node = self.compile_all(os.path.join(self.folder, "node"), env={**os.environ, "HEXC_NAGA": "node"})
+        print("naga in Node.js wrote %d WGSL files in %.1f s" % (len(node), time.monotonic() - started))
+        built_in, by_node = os.path.join(self.folder, "tint"), os.path.join(self.folder, "node")
+        self.assertEqual([os.path.relpath(p, by_node) for p in node], [os.path.relpath(p, built_in) for p in self.files])
+        self.assertEqual(differing(built_in, by_node), [])
+        # The control: one byte more in one file, and the comparison names that file.
+        with open(node[0], "a") as f:
+            f.write("\n")
+        self.assertEqual(differing(built_in, by_node), [os.path.relpath(node[0], by_node)])
 
     def test_dawn_draws_every_case_within_its_bounds(self):
         """Every execution case (tests/execution/cases/, and the feature variants' tables: VARIANTS, LAYERS) and the

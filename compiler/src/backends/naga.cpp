@@ -1,4 +1,5 @@
-// One Node.js process runs naga.mjs (embedded) for the whole run, over a socket pair: a socket, unlike a pipe, can be
+// naga in Node.js, where hexc has no naga built in (naga_wasm.cpp) or HEXC_NAGA=node asks for it. One Node.js
+// process runs naga.mjs (embedded) for the whole run, over a socket pair: a socket, unlike a pipe, can be
 // written with MSG_NOSIGNAL, so a Node that has gone away is an error here, not a SIGPIPE that ends hexc. Whatever runs
 // as `node` is not trusted to answer: each answer has a time bound and its frame a size bound, and a process that
 // breaks either is killed and reaped, so hexc neither hangs nor allocates what a frame merely claims.
@@ -30,8 +31,9 @@ namespace hexc {
 namespace {
 
 constexpr const char* kInstall =
-    "the wgsl target needs Node.js (`node` on PATH; Debian: apt-get install nodejs) and the npm package naga-wasm 30.1.0 "
-    "(npm install naga-wasm@30.1.0 in a folder, then HEXC_NODE_PATH=<that folder>/node_modules; docs/cli.md, \"WGSL\")";
+    "the wgsl target needs naga built into hexc, or Node.js (`node` on PATH; Debian: apt-get install nodejs) and the npm "
+    "package naga-wasm 30.1.0 (npm install naga-wasm@30.1.0 in a folder, then HEXC_NODE_PATH=<that folder>/node_modules; "
+    "docs/cli.md, \"WGSL\")";
 
 // The longest answer naga.mjs writes: WGSL of a shader is tens of kilobytes, naga's messages shorter.
 constexpr uint32_t kMaxFrame = 64u << 20;
@@ -154,7 +156,24 @@ private:
 
 }  // namespace
 
+namespace {
+
+// Built in, unless HEXC_NAGA=node asks for Node's (docs/cli.md, "WGSL").
+bool inProcess() {
+#ifdef HEXC_NAGA_BUILT_IN
+    const char* route = std::getenv("HEXC_NAGA");
+    return !route || std::string(route) != "node";
+#else
+    return false;
+#endif
+}
+
+}  // namespace
+
 std::string nagaVersion() {
+#ifdef HEXC_NAGA_BUILT_IN
+    if (inProcess()) return "naga-wasm " HEXC_NAGA_BUILT_IN;
+#endif
     // Where naga.mjs imports it from: HEXC_NODE_PATH, or the working folder when that is unset.
     const char* folder = std::getenv("HEXC_NODE_PATH");
     std::ifstream in(std::filesystem::path(folder ? folder : "") / "naga-wasm" / "package.json");
@@ -163,13 +182,25 @@ std::string nagaVersion() {
     return "naga-wasm " + (found ? package["version"].get<std::string>() : std::string("(not found)"));
 }
 
+std::string nagaBuild() {
+#ifdef HEXC_NAGA_BUILT_IN
+    return "naga-wasm " HEXC_NAGA_BUILT_IN " built in (HEXC_NAGA=node: Node.js's)";
+#else
+    return "naga in Node.js (npm naga-wasm at HEXC_NODE_PATH)";
+#endif
+}
+
 std::string nagaIdentity() {
+#ifdef HEXC_NAGA_BUILT_IN
+    if (inProcess()) return nagaVersion() + ", built in " HEXC_NAGA_HASH;
+#endif
     ContentHash driver;
     driver.add(*embeddedText("naga.mjs"));
     return nagaVersion() + ", driver " + driver.hex();
 }
 
 NagaResult nagaWgsl(const std::vector<uint32_t>& spirv) {
+    if (inProcess()) return nagaWasmWgsl(spirv);
     static std::mutex mutex;
     std::lock_guard lock(mutex);
     static NagaProcess process;  // started on the first translation, ended with hexc

@@ -49,7 +49,7 @@ constexpr std::array<TargetRow, kTargetCount> kRows = {{
     {Target::Msl, "msl", "metal", "metal", "msl", false, true, "fragment ",
      [](const auto&, const auto& text, const auto& plan, const auto& options) { return emitMsl(text, plan, options); }, vertexMsl,
      mslEntryName, settingsMsl, "msl", "metal", libraryMsl},
-    // naga reads no OpLine, so --debug's lines do not reach WGSL; not a default target: it needs Node.js (naga.h).
+    // naga reads no OpLine, so --debug's lines do not reach WGSL; not a default target: a build may lack naga (naga.h).
     {Target::Wgsl, "wgsl", "", "wgsl", "vulkan", false, false, "@fragment",
      [](const auto& spirv, const auto&, const auto& plan, const auto& options) { return emitWgsl(spirv, plan, options); }, vertexWgsl,
      sameName, settingsWgsl, "wgsl", "wgsl", libraryWgsl},

@@ -2,6 +2,7 @@
 #include <glslang/build_info.h>
 #include <spirv-tools/libspirv.h>
 
+#include "backends/naga.h"
 #include "hexc/compiler.h"
 
 namespace hexc {
@@ -11,7 +12,7 @@ const char* version() { return HEXC_VERSION; }
 std::string toolchainVersions() {
     return "glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." + std::to_string(GLSLANG_VERSION_MINOR) + "." +
            std::to_string(GLSLANG_VERSION_PATCH) + GLSLANG_VERSION_FLAVOR + "\nSPIRV-Tools " + spvSoftwareVersionString() +
-           "\nSPIRV-Cross " + HEXC_SPIRV_CROSS_VERSION;
+           "\nSPIRV-Cross " + HEXC_SPIRV_CROSS_VERSION + "\nWGSL: " + nagaBuild();
 }
 
 }  // namespace hexc
