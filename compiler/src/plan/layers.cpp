@@ -63,7 +63,10 @@ std::vector<double> coverage(const Material& material, const Layers& layers, Dia
             bool painted = false;
             for (size_t l = 0; l < out.size(); ++l) {
                 const Texture& t = maps[l / 4];
-                const size_t at = size_t(y * t.height / first.height) * size_t(t.width) + size_t(x * t.width / first.width);
+                // In 64 bits: a side is up to 65536 texels (a 1 x 50000 splat map is within its budget), so y * height
+                // overflows an int.
+                const size_t at =
+                    size_t(int64_t(y) * t.height / first.height) * size_t(t.width) + size_t(int64_t(x) * t.width / first.width);
                 const bool keeps = t.rgba8[4 * at + l % 4] / 255.0 >= layers.skipBelow;
                 kept[l] += keeps;
                 painted = painted || keeps;
