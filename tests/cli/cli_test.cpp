@@ -164,6 +164,24 @@ TEST(Cli, MessagesSayWhatHappened) {
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "mine");
 }
 
+// A template whose bytes are not UTF-8 is refused at the byte, before anything is written: its comments go into the
+// manifest, which is JSON (a byte 0x84 in the stage inputs' comment once stopped the compile with an exception).
+TEST(Cli, ATemplateThatIsNotUtf8IsLocated) {
+    const std::filesystem::path dir = freshDir("hexc_cli_utf8"), glsl = dir / "t.glsl";
+    std::filesystem::create_directories(dir);
+    std::string text = readFile("templates/builtin/weights.glsl");
+    const size_t at = text.find("// Stage inputs:");
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at + 3, "\x84");
+    std::ofstream(glsl, std::ios::binary) << text;
+    const std::string before = text.substr(0, at);
+    const std::string line = std::to_string(std::count(before.begin(), before.end(), '\n') + 1);
+    std::string err;
+    EXPECT_EQ(runHexc("materials/rock.json --template " + glsl.string() + " -o " + (dir / "out").string(), &err), 1);
+    EXPECT_NE(err.find(glsl.string() + ":" + line + ":4: error[HX201]: the template is not UTF-8 (byte 0x84)"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
 // -q drops the summary but keeps warnings, --no-warnings drops them, -v says what happened to each job; a scene
 // pass with its own template and no slot list leaves slots out by design, which only -v reports.
 TEST(Cli, WarningsAndVerbosity) {

@@ -2,6 +2,8 @@
 // Plain searches in source text. hexc uses no regular expressions (the standard library's <regex>): they are slow to
 // build, and building one on several threads races on libstdc++'s shared ctype cache (ThreadSanitizer reports it
 // when a scene compiles in parallel).
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace hexc {
@@ -35,6 +37,29 @@ inline int countLines(std::string_view text, std::string_view line) {
         begin = end + 1;
     }
     return count;
+}
+
+// A byte as two hexadecimal digits, for messages.
+inline std::string hexByte(char c) {
+    const char* digits = "0123456789ABCDEF";
+    return {digits[static_cast<unsigned char>(c) >> 4], digits[static_cast<unsigned char>(c) & 15]};
+}
+
+// The offset of the first byte that does not begin or continue a well-formed UTF-8 character, if any: text hexc
+// carries into JSON (a MaterialX document, a template's comments in the manifest) must be UTF-8.
+inline std::optional<size_t> invalidUtf8(std::string_view s) {
+    for (size_t i = 0; i < s.size();) {
+        const auto c = static_cast<unsigned char>(s[i]);
+        const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 && c >= 0xC2 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E && c <= 0xF4 ? 4 : 0;
+        if (n == 0 || i + n > s.size()) return i;
+        for (size_t k = 1; k < n; ++k)
+            if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return i;
+        const unsigned c1 = static_cast<unsigned char>(s[i + 1 < s.size() ? i + 1 : i]);
+        if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 >= 0xA0) || (c == 0xF0 && c1 < 0x90) || (c == 0xF4 && c1 >= 0x90))
+            return i;  // overlong, a surrogate, or beyond U+10FFFF
+        i += n;
+    }
+    return std::nullopt;
 }
 
 }  // namespace hexc

@@ -12,6 +12,7 @@
 #include <pugixml.hpp>
 
 #include "common/suggest.h"
+#include "common/text.h"
 #include "hexc/materialx.h"
 #include "material/json_locator.h"
 #include "material/materialx_names.h"
@@ -536,8 +537,8 @@ std::vector<ParseResult> readDocument(std::string_view text, const std::filesyst
         return std::vector<ParseResult>{
             {std::nullopt, {Diagnostic::make(code, {file.string(), p.line, p.col}, "", std::move(message))}, std::nullopt}};
     };
-    if (std::optional<size_t> at = mtlx::invalidUtf8(text))
-        return failed(Code::XmlSyntax, *at, "invalid UTF-8 (byte 0x" + mtlx::hexByte(text[*at]) + "); MaterialX documents are UTF-8");
+    if (std::optional<size_t> at = invalidUtf8(text))
+        return failed(Code::XmlSyntax, *at, "invalid UTF-8 (byte 0x" + hexByte(text[*at]) + "); MaterialX documents are UTF-8");
     pugi::xml_document doc;
     pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!parsed)

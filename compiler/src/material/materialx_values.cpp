@@ -140,24 +140,4 @@ bool isNumbers(const json& v, size_t count) {
 
 Folded fold(xml_node input) { return Folder().input(input, 0); }
 
-std::string hexByte(char c) {
-    const char* digits = "0123456789ABCDEF";
-    return {digits[static_cast<unsigned char>(c) >> 4], digits[static_cast<unsigned char>(c) & 15]};
-}
-
-std::optional<size_t> invalidUtf8(std::string_view s) {
-    for (size_t i = 0; i < s.size();) {
-        const auto c = static_cast<unsigned char>(s[i]);
-        const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 && c >= 0xC2 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E && c <= 0xF4 ? 4 : 0;
-        if (n == 0 || i + n > s.size()) return i;
-        for (size_t k = 1; k < n; ++k)
-            if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return i;
-        const unsigned c1 = static_cast<unsigned char>(s[i + 1 < s.size() ? i + 1 : i]);
-        if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 >= 0xA0) || (c == 0xF0 && c1 < 0x90) || (c == 0xF4 && c1 >= 0x90))
-            return i;  // overlong, a surrogate, or beyond U+10FFFF
-        i += n;
-    }
-    return std::nullopt;
-}
-
 }  // namespace hexc::mtlx

@@ -28,11 +28,4 @@ struct Folded {
 };
 Folded fold(pugi::xml_node input);
 
-// A byte as two hexadecimal digits, for messages.
-std::string hexByte(char c);
-
-// The offset of the first byte that does not begin or continue a well-formed UTF-8 character (pugixml passes
-// any bytes through; the JSON the document becomes must be UTF-8), if any.
-std::optional<size_t> invalidUtf8(std::string_view s);
-
 }  // namespace hexc::mtlx

@@ -47,6 +47,14 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
     // The manifest names a material's own template as the material wrote it, so it does not depend on where hexc
     // was run from; a --template file as given.
     plan.templateShown = ref.file ? ref.asWritten : plan.templateName;
+    if (std::optional<size_t> at = invalidUtf8(plan.templateSource)) {  // its comments go into the manifest, JSON
+        const std::string before = plan.templateSource.substr(0, *at);
+        const int line = int(std::count(before.begin(), before.end(), '\n')) + 1;
+        const int col = int(*at - (before.rfind('\n') == std::string::npos ? 0 : before.rfind('\n') + 1)) + 1;
+        plan.diagnostics.push_back(Diagnostic::make(Code::TemplateUnreadable, {plan.templateName, line, col}, "",
+                                                    "the template is not UTF-8 (byte 0x" + hexByte(plan.templateSource[*at]) + ")"));
+        return false;
+    }
     if (!plan.templateSource.starts_with("#version") || plan.templateSource.find('\n') == std::string::npos)
         error(Code::TemplateNoVersion, "a template must start with a `#version` line");
     if (countLines(plan.templateSource, "#include <hexc>") != 1)
