@@ -9,6 +9,7 @@
 #include "common/by_enum.h"
 #include "common/templates.h"
 #include "common/text.h"
+#include "material/json_locator.h"
 #include "plan/layer_arrays.h"
 #include "plan/layers.h"
 #include "plan/macros.h"
@@ -48,10 +49,8 @@ bool loadTemplate(const Material& material, const CompileOptions& options, Shade
     // was run from; a --template file as given.
     plan.templateShown = ref.file ? ref.asWritten : plan.templateName;
     if (std::optional<size_t> at = invalidUtf8(plan.templateSource)) {  // its comments go into the manifest, JSON
-        const std::string before = plan.templateSource.substr(0, *at);
-        const int line = int(std::count(before.begin(), before.end(), '\n')) + 1;
-        const int col = int(*at - (before.rfind('\n') == std::string::npos ? 0 : before.rfind('\n') + 1)) + 1;
-        plan.diagnostics.push_back(Diagnostic::make(Code::TemplateUnreadable, {plan.templateName, line, col}, "",
+        const TextPos p = textPosition(plan.templateSource, *at);
+        plan.diagnostics.push_back(Diagnostic::make(Code::TemplateUnreadable, {plan.templateName, p.line, p.col}, "",
                                                     "the template is not UTF-8 (byte 0x" + hexByte(plan.templateSource[*at]) + ")"));
         return false;
     }
