@@ -257,6 +257,15 @@ def layered_errors(hexc, material, manifest, role, normal, size, rect, work):
     return rows
 
 
+def rect_for(manifest, size):
+    """A uv rectangle from (0, 0) whose side puts about 0.7 texels on a pixel of a `size`-pixel view of the package
+    `manifest` describes: every fetch is from the full-resolution level (lod < 0), so the comparison does not depend on
+    how the engine makes mip levels."""
+    texels = max(s["hextiling"]["tiling"][i] * s["size"][i] for s in manifest["slots"] for i in (0, 1))
+    side = min(1.0, 0.7 * size / texels)
+    return [0.0, 0.0, side, side]
+
+
 def check_function(hexc, material, manifest, function, size, rect, out, relative, encode=srgb, marker=0):
     """The engine's image `out` of a package's `function` against hexc's fp64 reference: compare()'s figures (`marker`
     as there). For a layered material's role, the bound is layered_errors', and `flip_caught` says whether the same

@@ -141,9 +141,16 @@ std::string package(const std::string& name, Engine engine, Diagnostics* diagnos
     return "";
 }
 
+// The data of a web package's module, as hexc wrote it.
+nlohmann::json moduleData(const std::filesystem::path& module) {
+    const std::string text = hexc::test::readFile(module);
+    const size_t start = text.find("const hexc = ") + 13;
+    return nlohmann::json::parse(text.substr(start, text.find(";\n", start) - start));
+}
+
 // --targets wgsl gives Babylon.js's package its WGSL form (naga's functions in the module's data, beside the GLSL);
-// every other engine has none and refuses it, saying which engine takes it.
-TEST(EnginePackages, OnlyBabylonTakesWgsl) {
+// the engines without one (all but three.js WebGPU's, which is WGSL) refuse it, saying which engines take it.
+TEST(EnginePackages, OnlyBabylonAndWebgpuTakeWgsl) {
     ParseResult p = parseMaterialFile("materials/rock.json");
     CompileOptions options;
     options.targets = {Target::Wgsl};
@@ -160,12 +167,35 @@ TEST(EnginePackages, OnlyBabylonTakesWgsl) {
     std::filesystem::remove_all(dir);
     std::string err;
     ASSERT_EQ(hexc::test::runHexc("materials/rock.json --engine babylon --targets wgsl -o " + dir.string(), &err, naga), 0) << err;
-    const std::string module = hexc::test::readFile(dir / "babylon" / "rock.babylon.js");
-    const size_t start = module.find("const hexc = ") + 13;
-    const nlohmann::json data = nlohmann::json::parse(module.substr(start, module.find(";\n", start) - start));
+    const nlohmann::json data = moduleData(dir / "babylon" / "rock.babylon.js");
     EXPECT_NE(data["wgsl"].get<std::string>().find("fn hexc_albedo("), std::string::npos);
     EXPECT_NE(data["glsl"].get<std::string>().find("vec4 hexc_albedo(highp vec2 uv)"), std::string::npos);
     EXPECT_FALSE(std::filesystem::exists(dir / "babylon" / "rock.functions.wgsl"));  // the module holds it
+}
+
+// three.js WebGPU's package holds the functions in WGSL only (naga's, without --targets), with the textures and each
+// slot's input as three.js's WebGL 2 package has them, and carries a layered material: its roles' functions and the
+// splat map's texture.
+TEST(EnginePackages, ThreejsWebgpuHoldsWgslAndCarriesLayers) {
+    REQUIRE_NAGA();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_threejs_webgpu";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(
+        hexc::test::runHexc("materials/rock.json materials/terrain/terrain.json --engine threejs-webgpu -o " + dir.string(), &err, naga), 0)
+        << err;
+    const nlohmann::json rock = moduleData(dir / "threejs-webgpu" / "rock.three-webgpu.js");
+    EXPECT_NE(rock["wgsl"].get<std::string>().find("fn hexc_albedo(uv"), std::string::npos);
+    EXPECT_FALSE(rock.contains("glsl"));
+    EXPECT_EQ(rock["uv_origin"], "top-left");
+    EXPECT_EQ(rock["slots"][0], nlohmann::json::parse(R"j({"name": "albedo", "role": "albedo", "call": "hexc_albedo(UV)",
+                                                            "uniform": "hexcTex_albedo"})j"));
+    EXPECT_EQ(rock["textures"][0],
+              nlohmann::json::parse(R"j({"file": "rock.albedo.png", "uniform": "hexcTex_albedo", "colorspace": "srgb"})j"));
+    const nlohmann::json terrain = moduleData(dir / "threejs-webgpu" / "terrain.three-webgpu.js");
+    EXPECT_EQ(terrain["slots"][0]["call"], "hexc_albedo(UV)");
+    EXPECT_NE(terrain["wgsl"].get<std::string>().find("var hexcTex_splat0_: texture_2d<f32>;"), std::string::npos);  // naga's name
+    EXPECT_TRUE(std::filesystem::exists(dir / "threejs-webgpu" / "terrain.splat0.png"));
 }
 
 TEST(EnginePackages, GodotGetsItsDialectAndItsInputs) {

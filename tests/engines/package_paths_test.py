@@ -15,7 +15,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-ENGINES = ["godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal"]
+ENGINES = ["godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal", "threejs-webgpu"]
 
 
 def named_paths(manifest):

@@ -12,19 +12,21 @@
 namespace hexc {
 
 // One row each in the engine table (engines/engines.cpp), in this order.
-enum class Engine { Godot3, Godot4, Filament, Threejs, Babylon, Unity, Unreal };
-inline constexpr Engine kLastEngine = Engine::Unreal;
+enum class Engine { Godot3, Godot4, Filament, Threejs, Babylon, Unity, Unreal, ThreejsWebgpu };
+inline constexpr Engine kLastEngine = Engine::ThreejsWebgpu;
 
-std::string_view toString(Engine engine);                  // "godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal"
+// "godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal", "threejs-webgpu"
+std::string_view toString(Engine engine);
 std::optional<Engine> engineNamed(std::string_view name);  // nullopt for a name hexc has no package for
 std::vector<std::string_view> engineNames();
-// three.js and Babylon.js: their packages (ES modules) copy the slots' textures beside them.
+// three.js (WebGL 2 and WebGPU) and Babylon.js: their packages (ES modules) copy the slots' textures beside them.
 bool isWebEngine(Engine engine);
 
 // The package of `material` for `engine`: the files under "<engine>/" (its shader or material source, the manifest of
 // the functions it holds, the textures hexc derives), compiled with `options` as the functions output in the engine's
-// GLSL dialect (GLSL ES 3.00 in the web engines' ES module, engines/web.cpp) or HLSL (Unity's Shader Graph Custom
-// Function file and URP shader, Unreal's Custom node include: engines/hlsl.cpp), every setting baked. A slot no engine input
+// GLSL dialect (GLSL ES 3.00 in the web engines' ES module, engines/web.cpp), WGSL (three.js WebGPU's module, the same
+// writer) or HLSL (Unity's Shader Graph Custom Function file and URP shader, Unreal's Custom node include:
+// engines/hlsl.cpp), every setting baked. A slot no engine input
 // takes is a warning, its function kept but not called. The manifest names only files in the package, or a file outside
 // it from the package's folder: with options.manifestPathsFrom (the folder the caller writes into), a texture the
 // package does not hold from manifestPathsFrom/<engine>; without it, as the material names it.

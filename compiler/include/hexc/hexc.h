@@ -54,7 +54,8 @@ void hexc_context_cache_stats(const hexc_context* context, size_t* hits, size_t*
 
 /* Compile options, by the command line's names (docs/c-api.md lists them):
  *   "targets"     comma-separated: spirv, hlsl, glsl, msl, wgsl (default: spirv,hlsl,glsl,msl)
- *   "engines"     comma-separated engine packages: godot3, godot4, filament, threejs, babylon, unity, unreal
+ *   "engines"     comma-separated engine packages: godot3, godot4, filament, threejs, babylon, unity, unreal,
+ *                 threejs-webgpu
  *   "uv-origin"   top-left (default) or bottom-left
  *   "hlsl-sm"     50, 51, 60 ... 66          "glsl-version"  460, 450, 330, 310es, 300es
  *   "entry"       the fragment entry point    "bake", "debug", "vertex", "no-specialise": "1" or "0"

@@ -102,11 +102,6 @@ def value_material(pkg, functions):
     return view
 
 
-def rect_for(manifest):
-    """A uv rectangle the size of which puts about 0.7 texels on a pixel (every fetch from the full-resolution level)."""
-    return [0.0, 0.0] + [min(1.0, 0.7 * SIZE / max(s["hextiling"]["tiling"][i] * s["size"][i] for s in manifest["slots"] for i in (0, 1)))] * 2
-
-
 class Views:
     """Each drawn material's value view at each uv origin, compiled once."""
 
@@ -121,7 +116,7 @@ class Views:
             filamat = matc(value_material(pkg, functions), *FILTER)
             if not isinstance(filamat, Path):
                 sys.exit(f"FAIL matc {pkg}/values.mat:\n{filamat}")
-            self.compiled[key] = (pkg, functions, filamat, rect_for(ec.manifest(pkg)))
+            self.compiled[key] = (pkg, functions, filamat, ec.rect_for(ec.manifest(pkg), SIZE))
         return self.compiled[key]
 
     def check(self, material, origin, mesh=None, control=None, function=0, swap=None, mirror=False):

@@ -68,14 +68,6 @@ def value_shader(pkg, function, nan=False):
     return str(path)
 
 
-def rect_for(manifest):
-    """A uv rectangle the size of which puts about 0.7 texels on a pixel: every fetch is from the full-resolution level
-    (lod < 0), so the comparison does not depend on how the engine makes mip levels."""
-    texels = max(s["hextiling"]["tiling"][i] * s["size"][i] for s in manifest["slots"] for i in (0, 1))
-    side = min(1.0, 0.7 * SIZE / texels)
-    return [0.0, 0.0, side, side]
-
-
 def render(project, jobs):
     """Godot's run of the jobs, and each job's shader errors (Godot prints them after the job's HEXC-JOB line)."""
     (project / "job.json").write_text(json.dumps({"jobs": jobs}))
@@ -125,7 +117,7 @@ def draw(hexc, jobs, work):
     """The drawn materials' value views and the probe lit, as the docs say a user builds them."""
     for material in ec.drawn_materials(ROOT, work):
         pkg = package(hexc, material, work)
-        rect = rect_for(ec.manifest(pkg))
+        rect = ec.rect_for(ec.manifest(pkg), SIZE)
         for f in ec.manifest(pkg)["functions"]:
             if f["returns"] != "vec2":  # the derivative: its normal function is checked
                 jobs.add(value_shader(pkg, f), textures(pkg), value_check(hexc, material, pkg, f, rect),
@@ -147,7 +139,7 @@ def controls(hexc, jobs, work):
     probe, bumps = work / "probe" / "probe_gl.json", work / "probe" / "probe_gl_bumps.json"
     pkg, bl = package(hexc, probe, work), package(hexc, probe, work, bottom_left=True)
     albedo = next(f for f in ec.manifest(pkg)["functions"] if f.get("slot") == "albedo")
-    rect = rect_for(ec.manifest(pkg))
+    rect = ec.rect_for(ec.manifest(pkg), SIZE)
     mirrored = [rect[2], rect[1], rect[0], rect[3]]
     decoded = ec.srgb_decoded_copy(work / "probe" / "probe_albedo.png", work / "probe" / "probe_albedo_decoded.png")
     for what, shader, tex, uv in (

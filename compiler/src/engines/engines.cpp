@@ -66,6 +66,17 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          false,
          hlslPackage},
         {Engine::Unreal, "unreal", "unreal", L::Hlsl, {{"hexc.ush", ".ush"}}, false, false, false, false, false, hlslPackage},
+        {Engine::ThreejsWebgpu,
+         "threejs-webgpu",
+         "three.js WebGPU",
+         L::Wgsl,
+         {{"package.webgpu.js", ".three-webgpu.js"}},
+         true,
+         true,
+         false,
+         true,
+         true,
+         webPackage},
     });
     return rows;
 }
@@ -74,29 +85,49 @@ bool asksForWgsl(const CompileOptions& options) {
     return std::find(options.targets.begin(), options.targets.end(), Target::Wgsl) != options.targets.end();
 }
 
+// The names of the engines whose row has `what`, as messages list them: "a, b and c".
+std::string enginesWith(bool EngineRow::*what) {
+    std::vector<std::string> names;
+    for (const EngineRow& e : engineRows())
+        if (e.*what) names.push_back(e.name);
+    std::string out;
+    for (size_t i = 0; i < names.size(); ++i) out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return out;
+}
+
 // What the engine refuses of this compile, and why (HX300), or nothing.
 std::optional<Diagnostic> refused(const Material& material, const EngineRow& e, const CompileOptions& options) {
     if (!e.wgsl && asksForWgsl(options))
         return Diagnostic::make(Code::TargetUnsupported, {"--targets"}, "",
-                                "the " + std::string(e.name) +
-                                    " package has no WGSL form: --targets wgsl with --engine adds WGSL functions to "
-                                    "Babylon.js's package only (docs/engines.md); leave wgsl out for this engine");
+                                "the " + std::string(e.name) + " package has no WGSL form: --targets wgsl with --engine is for " +
+                                    enginesWith(&EngineRow::wgsl) + " (docs/engines.md); leave wgsl out for this engine");
     if (material.layers && !e.layers)
         return Diagnostic::make(Code::TargetUnsupported, {"--engine"}, "",
-                                "the " + std::string(e.name) +
-                                    " package does not carry a layered material yet: the Filament and Godot 3 packages "
-                                    "do (docs/engines.md#layered-materials)");
+                                "the " + std::string(e.name) + " package does not carry a layered material yet: the " +
+                                    enginesWith(&EngineRow::layers) + " packages do (docs/engines.md#layered-materials)");
     return std::nullopt;
+}
+
+// The target of an engine language's functions.
+Target targetOf(EngineLanguage language) {
+    switch (language) {
+        case EngineLanguage::Hlsl:
+            return Target::Hlsl;
+        case EngineLanguage::Wgsl:
+            return Target::Wgsl;
+        default:
+            return Target::Glsl;
+    }
 }
 
 // The functions output a package holds, in the engine's language (and Babylon's WGSL too when --targets names wgsl),
 // every setting baked.
 CompileOptions packageOptions(const EngineRow& e, CompileOptions options) {
-    const bool wgsl = e.wgsl && asksForWgsl(options);
+    const bool wgsl = e.wgsl && asksForWgsl(options) && e.language != EngineLanguage::Wgsl;
     options.functions = true;
     options.unrollLoops = e.unrollLoops;
     options.bake = true;  // the engine's material has no block for hexc's parameters
-    options.targets = {e.language == EngineLanguage::Hlsl ? Target::Hlsl : Target::Glsl};
+    options.targets = {targetOf(e.language)};
     if (wgsl) options.targets.push_back(Target::Wgsl);
     options.glslEs = e.language == EngineLanguage::GlslEs300;
     options.glslVersion = options.glslEs ? 300 : 330;

@@ -10,8 +10,8 @@ namespace hexc {
 namespace {
 
 // One row per role: the slot names that take it without a `role`, and each engine's input (null: the engine has
-// none). GLSL engines and Unity: the statement that sets the input from `%`; Unreal: the material pin; three.js and
-// Babylon.js: the role, which their module's template wires.
+// none). GLSL engines and Unity: the statement that sets the input from `%`; Unreal: the material pin; three.js (both
+// renderers) and Babylon.js: the role, which their module's template wires.
 struct RoleRow {
     const char* role;
     std::vector<std::string> names;
@@ -29,25 +29,26 @@ const std::vector<RoleRow>& roleRows() {
         {"albedo",
          {"albedo", "basecolor", "base_color", "diffuse"},
          I({"ALBEDO = (%).rgb;", "ALBEDO = (%).rgb;", "material.baseColor = %;", "albedo", "albedo", "surface.albedo = (%).rgb;",
-            "Base Color"})},
+            "Base Color", "albedo"})},
         {"normal",
          {},
          I({"NORMALMAP = % * 0.5 + 0.5;", "NORMAL_MAP = % * 0.5 + 0.5;", "material.normal = %;", "normal", "normal",
-            "surface.normalTS = %;", "Normal"})},
+            "surface.normalTS = %;", "Normal", "normal"})},
         {"roughness",
          {"roughness"},
          I({"ROUGHNESS = %;", "ROUGHNESS = %;", "material.roughness = %;", "roughness", "roughness", "surface.smoothness = 1.0 - %;",
-            "Roughness"})},
+            "Roughness", "roughness"})},
         {"metallic",
          {"metallic", "metalness"},
-         I({"METALLIC = %;", "METALLIC = %;", "material.metallic = %;", "metallic", nullptr, "surface.metallic = %;", "Metallic"})},
+         I({"METALLIC = %;", "METALLIC = %;", "material.metallic = %;", "metallic", nullptr, "surface.metallic = %;", "Metallic",
+            "metallic"})},
         {"ao",
          {"ao", "occlusion"},
-         I({"AO = %;", "AO = %;", "material.ambientOcclusion = %;", "ao", nullptr, "surface.occlusion = %;", "Ambient Occlusion"})},
+         I({"AO = %;", "AO = %;", "material.ambientOcclusion = %;", "ao", nullptr, "surface.occlusion = %;", "Ambient Occlusion", "ao"})},
         {"emission",
          {"emission", "emissive"},
          I({"EMISSION = (%).rgb;", "EMISSION = (%).rgb;", "material.emissive = vec4((%).rgb, 0.0);", "emission", nullptr,
-            "surface.emission = (%).rgb;", "Emissive Color"})},
+            "surface.emission = (%).rgb;", "Emissive Color", "emission"})},
     };
     return rows;
 }

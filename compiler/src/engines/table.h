@@ -18,6 +18,7 @@ enum class EngineLanguage {
     Glsl330,    // Godot's shading language and Filament's .mat take GLSL 330's functions, in their dialect
     GlslEs300,  // WebGL 2's
     Hlsl,       // Shader Graph's and Unreal's Custom nodes
+    Wgsl,       // three.js's WebGPURenderer (its node system's wgslFn)
 };
 
 // A texture the functions read, as every package binds it: the manifest's name ("<slot>", "<slot>.packed",
@@ -56,7 +57,7 @@ struct EngineRow {
     bool copiesTextures;  // the package holds copies of the slots' textures (a browser loads them beside the module)
     bool unrollLoops;     // its language has no arrays to copy or pass and only its own form of `for` (Godot 3)
     bool layers;          // carries a layered material; else refused (HX300)
-    bool wgsl;            // --targets wgsl adds WGSL functions (Babylon.js on WebGPU); else refused (HX300)
+    bool wgsl;            // --targets wgsl is taken (Babylon.js adds WGSL functions for WebGPU); else refused (HX300)
     // The package's own files, named without the "<engine>/" folder; a slot no input takes is a warning in
     // `diagnostics`, a texture the engine cannot load an error.
     std::vector<OutputFile> (*write)(const PackageInput& input, Diagnostics& diagnostics);

@@ -1,6 +1,7 @@
 // The web engines' packages (three.js, Babylon.js; docs/engines.md): the engine's ES module
-// (compiler/integrations/<engine>/package.<engine>.js) filled with the material's functions in GLSL ES 3.00, the
-// textures they read and the engine input each slot fills; beside it, the slots' textures it loads.
+// (compiler/integrations/<engine>/package.<engine>.js) filled with the material's functions in GLSL ES 3.00 (or WGSL:
+// three.js's WebGPURenderer, package.webgpu.js), the textures they read and the engine input each slot fills; beside it,
+// the slots' textures it loads.
 #include <nlohmann/json.hpp>
 
 #include <sstream>
@@ -70,8 +71,8 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
     const CompiledMaterial& c = in.compiled;
     nlohmann::json data = {{"material", in.material.name},
                            {"uv_origin", toString(in.uvBottomLeft ? UvOrigin::BottomLeft : UvOrigin::TopLeft)},
-                           {"glsl", withoutPrecision(c.banner + c.sources.at(Target::Glsl))},
                            {"textures", textures(in, diagnostics)}};
+    if (c.sources.count(Target::Glsl)) data["glsl"] = withoutPrecision(c.banner + c.sources.at(Target::Glsl));  // WebGPU's has none
     if (c.sources.count(Target::Wgsl)) data["wgsl"] = c.banner + c.sources.at(Target::Wgsl);
     // The slots the engine fills (name, role, the call of their function with UV for the uv, their texture's uniform),
     // and those it has no input for.

@@ -21,6 +21,7 @@ import { CreateSphere } from '@babylonjs/core/Meshes/Builders/sphereBuilder.js';
 import { Mesh } from '@babylonjs/core/Meshes/mesh.js';
 import { VertexData } from '@babylonjs/core/Meshes/mesh.vertexData.js';
 import { Scene } from '@babylonjs/core/scene.js';
+import { keepWebGpuOffTheSwapChain } from '../../webgpu_canvas.js';
 
 // Babylon's world is left-handed: the camera at z = -3 looks along +z, x right and y up on screen; the square faces -z.
 const kProbes = {
@@ -85,26 +86,6 @@ async function invertedMaterial(pkg, module, scene) {
   Object.assign(material, { metallic: 0, roughness: 1 });
   new pkg.HexcPlugin(material, textures);
   return material;
-}
-
-// A workaround for the test environment only, not for a package's users: headless Chromium on SwiftShader has no
-// shared image for a WebGPU canvas's swap chain (its GPU process logs "Could not find SharedImageBackingFactory with
-// params: usage: ...|WebgpuSwapChainTexture|..." and "SharedImageStub: Unable to create shared image") and loses the
-// device after a few presented frames (docs/engines.md). The canvas context hands Babylon an ordinary texture of the
-// configured format and usage instead, which it draws into and reads back; nothing is presented.
-function keepWebGpuOffTheSwapChain() {
-  const configured = new WeakMap();
-  GPUCanvasContext.prototype.configure = function (configuration) { configured.set(this, { configuration, texture: null }); };
-  GPUCanvasContext.prototype.getCurrentTexture = function () {
-    const entry = configured.get(this);
-    const { device, format, usage } = entry.configuration;
-    const { width, height } = this.canvas;
-    if (!entry.texture || entry.texture.width !== width || entry.texture.height !== height) {
-      entry.texture?.destroy();
-      entry.texture = device.createTexture({ size: [width, height], format, usage: usage | GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
-    }
-    return entry.texture;
-  };
 }
 
 // One WebGPU engine for the page: Chromium here gives no adapter again once an engine's device is destroyed.

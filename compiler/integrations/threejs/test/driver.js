@@ -6,6 +6,7 @@
 // package's textures uploaded with three.js's default flipY = true; `materialType`: applyHexc on a new material of
 // that type instead of createMaterial (the console's warnings are returned).
 import * as THREE from 'three';
+import { stage } from './scene.js';
 
 const kProbes = {
   albedo: 'diffuseColor.rgb',
@@ -23,13 +24,6 @@ function probe(material, input, nan) {
   };
   const key = material.customProgramCacheKey.bind(material);
   material.customProgramCacheKey = () => `${key()}|probe:${input}:${!!nan}`;
-}
-
-// A red square of `size` pixels at the top-left of a `width` x `height` canvas, in front of the material.
-function marker(size, width, height) {
-  const geometry = new THREE.PlaneGeometry(2 * size / width, 2 * size / height);
-  geometry.translate(-1 + size / width, 1 - size / height, 1);
-  return new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ color: 0xff0000 }));
 }
 
 // The package's material as the test asks for it, and the console's warnings while it is made.
@@ -54,15 +48,6 @@ async function material(pkg, { input, nan, flipY, materialType }) {
   }
 }
 
-// A 2x2 square in front of an orthographic camera; its corners' uv span `uv` = [u0, vTop, u1, vBottom].
-function square(uv) {
-  const geometry = new THREE.PlaneGeometry(2, 2);
-  const [u0, vTop, u1, vBottom] = uv;
-  const corners = [[u0, vTop], [u1, vTop], [u0, vBottom], [u1, vBottom]]; // PlaneGeometry's vertex order
-  geometry.setAttribute('uv', new THREE.Float32BufferAttribute(corners.flat(), 2));
-  return geometry;
-}
-
 window.hexcDriver = {
   // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light.
   async render({ module, width, height, uv, input, light, encoding, sphere, nan, flipY, materialType, png, ...options }) {
@@ -74,17 +59,7 @@ window.hexcDriver = {
     const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
     renderer.outputColorSpace = encoding === 'srgb' ? THREE.SRGBColorSpace : THREE.LinearSRGBColorSpace;
     const [made, warnings] = await material(pkg, { input, nan, flipY, materialType });
-    const scene = new THREE.Scene();
-    scene.add(new THREE.Mesh(sphere ? new THREE.SphereGeometry(0.95, 96, 48) : square(uv), made));
-    if (options.marker) scene.add(marker(options.marker, width, height));
-    if (sphere) scene.add(new THREE.AmbientLight(0xffffff, 0.4));
-    if (light) {
-      const sun = new THREE.DirectionalLight(0xffffff, 2.5);
-      sun.position.set(...light);
-      scene.add(sun);
-    }
-    const camera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0.1, 10);
-    camera.position.z = 3; // orthographic: only keeps the sphere (radius 0.95) beyond the near plane
+    const { scene, camera } = stage(made, { uv, sphere, light, size: options.marker, width, height });
     renderer.render(scene, camera);
     const errors = renderer.info.programs.map((p) => p.diagnostics).filter((d) => d);
     if (png) {
