@@ -43,9 +43,11 @@ std::string composedText(const std::string& templateText, const std::string& out
     std::string slots;
     for (size_t i = 0; i < m.slots.size(); ++i)
         slots += replaced(replaced(section("slot"), "${index}", std::to_string(i)), "${name}", m.slots[i].name);
+    // Layers are uv only (no triplanar projection), and every layer has the first layer's roles.
+    const std::string layer = m.layers && !m.layers->roles.empty() ? replaced(section("layer"), "${role}", m.layers->roles[0].name) : "";
     const size_t firstLine = templateText.find('\n') + 1;  // the #version line, which a template starts with
     return templateText.substr(0, firstLine) + section("rename") + templateText.substr(firstLine) + "\n" +
-           replaced(replaced(section("views"), "${output}", output), "${slots}", slots);
+           replaced(replaced(replaced(section("views"), "${layer}", layer), "${output}", output), "${slots}", slots);
 }
 
 }  // namespace

@@ -3,8 +3,9 @@
 // SPIRV-Cross's GLSL ES leaves as macros (SPIRV_CROSS_CONSTANT_ID_<id>) that the page defines when it links each view
 // (compiler/edit/page/view.js), so that showing another view or slot links again and compiles nothing on the server.
 // hexcEditView: 0 the template's own shading, 1 a slot's values as the built-in `value` template shows them, 2 its
-// weights as `weights` does; hexcEditSlot: the slot, by its index in the material. Tokens: ${output}, the template's
-// colour output; ${slots}, one `slot` section per slot of the material (${index}, ${name}).
+// weights as `weights` does, 3 a layered material's weight of one layer; hexcEditSlot: the slot, by its index in the
+// material (view 3: the layer). Tokens: ${output}, the template's colour output; ${slots}, one `slot` section per slot
+// of the material (${index}, ${name}); ${layer}, the `layer` section for a layered material (${role}: its first role).
 
 //@ rename
 // Inserted after the template's #version line.
@@ -28,6 +29,7 @@ void main() {
         hexcEditShaded();
         return;
     }
+${layer}
 #if defined(HEXC_PROJECTION_triplanar)
     // A triplanar material on the unit sphere, as the `value` and `weights` templates show it.
     vec3 position, normal;
@@ -45,3 +47,13 @@ ${slots}
 
 //@ slot
     if (hexcEditSlot == ${index}) value = hexcEditValue(hexc_${name}(HEXC_EDIT_AT, weights));
+
+//@ layer
+    // The layers' weights at the pixel, as the roles blend by them (templates/library/layers.glsl): a role's read fills
+    // them; what it fetches besides is not used and the optimiser drops it.
+    if (hexcEditView == 3) {
+        hexc_${role}(hexcEditUv);
+        // The index is a constant in every view's program: in range in those that do not show a layer (0) too.
+        ${output} = vec4(vec3(hexcLayersW[hexcEditView == 3 ? hexcEditSlot : 0]), 1.0);
+        return;
+    }

@@ -1,8 +1,8 @@
 // hexc layered materials (docs/material-format.md#layers). Each role the template reads, hexc_<role>, blends the
 // layers' slots (hexcAt_<layer>_<role>, templates/library/slots.glsl) by the layers' weights at the pixel. The
 // gradients are taken once, before the layers' branches, and every layer's slot is sampled with them: a derivative
-// inside a branch that not every pixel of a quad takes is undefined (and WGSL refuses it). codegen
-// (codegen/layers.cpp) fills the tokens: ${skip}, ${width}: literals; ${splats}, ${keep}, ${heights}, ${layers}: the
+// inside a branch that not every pixel of a quad takes is undefined (and WGSL refuses it). codegen (codegen/layers.cpp)
+// fills the tokens: ${skip}, ${width}: literals (parameters in general code); ${splats}, ${keep}, ${heights}, ${layers}: the
 // per-splat and per-layer lines below; ${index}, ${splat}, ${channel}, ${slot}, ${tiling}; ${role}, ${type}, ${uv};
 // ${location}: the vertex colour input's; ${fetched}: when layer ${index}'s slot is fetched (layer.kept, or layer.every when CompileOptions::skipLayers is off).
 // Weights are arrays of 8, hexc's most layers; those past the material's stay 0.

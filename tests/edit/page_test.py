@@ -25,6 +25,8 @@ DRIVER = None
 # pixel: magnified, every fetch reads mip level 0 only, so the mip chain WebGL builds plays no part.
 SIZE = 96
 RECT = [0.3, 0.45, 0.3 + SIZE * 0.75 / 1024, 0.45 + SIZE * 0.75 / 1024]
+# The terrain's layer views read back at W x W pixels, its whole splat map in texture space.
+W = 24
 
 
 def write_png(path, width, height, rows):
@@ -265,6 +267,71 @@ class Page(unittest.TestCase):
             self.assertTrue(all(v is not None and math.isfinite(v) for v in values), "NaN in the sand albedo's values")  # null: NaN
             self.assertGreater(max(values) - min(values), 0.05, "the sand albedo's values are flat")
         self.assertNotEqual(after, before)
+        self.layer_blend_controls(after_edit["compiles"])
+
+    def layer_blend_controls(self, compiles):
+        """The terrain's layer blend in the panel (its page still open, to start no other): the width a uniform, set
+        without a compile as a compile with that width draws it; a width outside (0, 1] refused with a message; the mode
+        a compile that changes the layer weight view, which in linear mode is the splat map as the splat map view reads
+        it, kept and renormalised; and every one of these edits a step of the undo history."""
+        original = DRIVER.execute_script("return window.hexcEdit.document().layer_blend;")
+        DRIVER.execute_script("window.hexcEdit.selectLayer(0);"
+                              "window.hexcEdit.setView({shape: 'flat', output: 'layer', rect: [0, 0, 1, 1]});")
+        state = wait_idle(DRIVER, compiles)
+        self.assertEqual(sorted(state["programs"]), ["hex", "layer", "plain", "splat", "values", "weights"])
+        height_02 = read_view(W, W)
+        number = '[data-pointer="/layer_blend/width"] input[type=number]'
+        edit_control("/layer_blend/width", "0.5", "input[type=number]")
+        moved = wait_idle(DRIVER)
+        self.assertEqual((moved["compiles"], moved["liveEdits"]), (state["compiles"], state["liveEdits"] + 1), "the width is a uniform")
+        height_05 = read_view(W, W)
+        self.assertNotEqual(height_05, height_02, "the width must change the layer weights")
+        DRIVER.execute_script("window.hexcEdit.setView({output: 'splat'}); window.hexcEdit.setView({output: 'layer'});")
+        wait_idle(DRIVER)
+        self.assertEqual(read_view(W, W), height_05, "a view linked again keeps the width set live")
+        for typed, shown in (("1.5", "1.5"), ("0", "0"), ("-0.1", "-0.1")):
+            edit_control("/layer_blend/width", typed, "input[type=number]")
+            self.assertEqual(DRIVER.find_element("id", "status").text,
+                             "/layer_blend/width: %s is outside (0, 1], the range the material format allows; width stays 0.5; "
+                             "edited (not saved)" % shown)
+            self.assertEqual(DRIVER.find_element("css selector", number).get_attribute("value"), "0.5")
+        refused = page_state(DRIVER)
+        self.assertEqual((refused["compiles"], refused["liveEdits"]), (moved["compiles"], moved["liveEdits"]))
+        self.assertEqual(DRIVER.execute_script("return window.hexcEdit.document().layer_blend.width;"), 0.5)
+        edit_control("/layer_blend/mode", '"linear"')
+        linear = wait_idle(DRIVER, moved["compiles"] + 1, "the mode's compile")
+        self.assertEqual(linear["status"], "ready", linear["shown"])
+        blend = DRIVER.execute_script("return window.hexcEdit.document().layer_blend;")
+        self.assertEqual((blend["mode"], "height" in blend), ("linear", False))  # `height` is refused in linear mode
+        weights = [read_view(W, W)]
+        self.assertNotEqual(weights[0], height_05, "the mode must change the layer weights")
+        DRIVER.execute_script("window.hexcEdit.setView({output: 'splat'});")
+        wait_idle(DRIVER)
+        splat = read_view(W, W)
+        DRIVER.execute_script("window.hexcEdit.selectLayer(1); window.hexcEdit.setView({output: 'layer'});")
+        wait_idle(DRIVER)
+        weights.append(read_view(W, W))
+        self.assertNotEqual(weights[1], weights[0], "layer 1's weights must differ from layer 0's")
+        # Linear mode: w_i = s_i / sum_j s_j over the s_j >= skip_below (half an 8-bit step), the splat map's texels as the
+        # splat map view reads them, at the same uv with the same gradients: the same filtered sample, so what differs is
+        # fp32 rounding of a sum of four and a division (a few ulps of 1: 1e-5 is 80 of them). Wrong layer: must fail.
+        def worst(layer, image):
+            kept = [[[c if c >= 0.5 / 255 else 0.0 for c in p] for p in row] for row in splat]
+            return max(abs(image[y][x][0] - (k[layer] / sum(k) if sum(k) > 0 else float(layer == 0)))
+                       for y, row in enumerate(kept) for x, k in enumerate(row))
+        for layer in (0, 1):
+            print("  layer %d's weight against the splat map: max error %.2e" % (layer, worst(layer, weights[layer])))
+            self.assertLess(worst(layer, weights[layer]), 1e-5)
+            self.assertGreater(worst(1 - layer, weights[layer]), 0.1, "the check must fail on the other layer's weights")
+        DRIVER.execute_script("window.hexcEdit.selectLayer(0);")
+        DRIVER.find_element("id", "undo").click()  # the mode: height again, its `height` back, with width 0.5 compiled in
+        undone = wait_idle(DRIVER, linear["compiles"] + 1, "the undo's compile")
+        self.assertEqual(DRIVER.execute_script("return window.hexcEdit.document().layer_blend;"), dict(original, width=0.5))
+        self.assertEqual(read_view(W, W), height_05, "the width compiled in must draw as the width set live")
+        DRIVER.find_element("id", "undo").click()  # the width
+        wait_idle(DRIVER, undone["compiles"] + 1, "the second undo's compile")
+        self.assertEqual(DRIVER.execute_script("return window.hexcEdit.document().layer_blend;"), original)
+        self.assertEqual(read_view(W, W), height_02)
 
     def test_vertex_colours_weigh_the_layers(self):
         """A layered material weighed by vertex colours alone, which the page paints (templates/edit/view.vert.glsl):

@@ -14,6 +14,7 @@ const state = {
   saved: null,     // the document as the file holds it (JSON text): the edits are what differs from it
   conflict: null,  // {version, text}: the file changed on disk while edits were not saved
   problem: null,   // why the view is not the document (it does not compile, the server is gone), or null
+  refused: null,   // a value the panel refused (outside its range), shown until the next edit
   view: { shape: 'plane', output: 'split', camera: { azimuth: -70, elevation: 25, distance: 2.5 }, light: { azimuth: 45, elevation: 55 },
           split: [1 / 3, 2 / 3], rect: [0, 0, 1, 1] },
 };
@@ -31,11 +32,11 @@ const dirty = () => state.doc !== null && JSON.stringify(state.doc) !== state.sa
 
 // The status line, always from the state: whether the edits are saved, a conflict with the file, what went wrong.
 function status(doing) {
-  const parts = [doing || (state.problem ?? '')].filter(Boolean);
+  const parts = [doing || (state.refused ?? state.problem ?? '')].filter(Boolean);
   if (state.conflict) parts.push('the file changed on disk: your edits are not saved (keep yours, take the file\'s or see both)');
   else parts.push(dirty() ? 'edited (not saved)' : 'saved');
   $('status').textContent = parts.join('; ');
-  $('status').className = state.problem || state.conflict ? 'error' : '';
+  $('status').className = state.problem || state.refused || state.conflict ? 'error' : '';
   $('save').disabled = !dirty();
   $('undo').disabled = !history.past.length;
   $('redo').disabled = !history.future.length;
@@ -113,8 +114,11 @@ async function costLine(seq) {
 // superseded this one; the frames drawn meanwhile show the programs before.
 let compiled = null;
 const shownSlot = () => (state.doc ? slotEntries(state.doc)[panel.slot] : undefined);
+// The splat map and layer weight views are linked only while shown (two more programs of a layered material).
+const layerViews = () => ['splat', 'layer'].includes(state.view.output);
 async function linkPrograms() {
-  if (!await renderer.setPrograms(compiled.programs, compiled.slots, shownSlot()?.name)) return false;
+  const shown = { slot: shownSlot()?.name, layer: layerViews() && state.doc?.layers ? panel.layer : undefined };
+  if (!await renderer.setPrograms(compiled.programs, compiled.slots, shown)) return false;
   hexc.programs = Object.keys(renderer.programs);
   return true;
 }
@@ -138,6 +142,7 @@ async function compile(freshTextures = false) {
       return draw();
     }
     compiled = r;
+    renderer.live.clear();  // its manifests hold the document's values
     timing.server = r.server;  // the server's own milliseconds and compiles: the rest of the answer's time is the transfer
     await linkPrograms();  // false: a slot selected meanwhile linked this answer's programs for its slot
     if (seq !== compileSeq) return;
@@ -178,11 +183,16 @@ function scheduleCompile(drag) {
 // anything else compiles again. `drag`: the edit is a step of a slider's drag.
 function onEdit(pointer, value, target, drag = false) {
   hexc.editAt = performance.now();
+  state.refused = null;
   remember(value === undefined ? null : pointer);  // a reset is a step of its own
   setPointer(state.doc, pointer, value);
   status();
   const entries = slotEntries(state.doc), names = target.slots.map(i => `${entries[i].name}_${target.key}`);
-  if (names.every(n => renderer.member(n))) {
+  if (target.param && renderer.member(target.param)) {  // the layers' blend: one parameter of its own
+    renderer.setParam(target.param, value ?? state.schema.properties.layer_blend.properties[target.key].default);
+    hexc.liveEdits++;
+    draw();
+  } else if (!target.param && names.every(n => renderer.member(n))) {
     const p = state.schema.$defs.hextiling.properties[target.key];
     target.slots.forEach((i, k) => {
       const v = target.key === 'heightwidth' ? entries[i].slot.height_blend.width : effective(state.doc, i, target.key, p.default);
@@ -196,7 +206,8 @@ function onEdit(pointer, value, target, drag = false) {
   if (value === undefined) panel.render(state.doc);  // a reset shows the default again
 }
 
-// Another slot selected: its views linked again (nothing compiled) and drawn, the distance in its repeats.
+// Another slot, layer or view selected: its views linked again (nothing compiled; nothing at all for programs linked
+// before) and drawn, the distance in its repeats.
 function selectSlot() {
   if (compiled)
     linkPrograms().then(linked => linked && loadTextures(compiled.programs)).then(draw, e => showDiagnostics([{ text: String(e.message || e) }], 'error'));
@@ -210,7 +221,11 @@ function regions() {
 
 function labels() {
   const names = { plain: 'plain tiling', hex: 'hex-tiling', weights: 'weights', values: 'slot values' };
-  const slot = shownSlot()?.name;
+  const slot = shownSlot()?.name, layers = state.doc?.layers || [], map = Math.floor(panel.layer / 4);
+  // The splat map's channels r, g, b, a weigh layers 4k to 4k + 3; the display shows r, g, b (the layer weight view
+  // shows the fourth).
+  const splatLayers = layers.slice(4 * map, 4 * map + 4).map((l, i) => `${'rgba'[i]} ${l.name}${i === 3 ? ' not shown' : ''}`).join(', ');
+  Object.assign(names, { splat: `splat map ${map} (${splatLayers})`, layer: `layer weight (${layers[panel.layer]?.name})` });
   $('labels').replaceChildren(...regions().map(([name, left]) => {
     const span = document.createElement('span');
     span.style.left = `calc(${left * 100}% + 8px)`;
@@ -270,6 +285,7 @@ async function load() {
   disk.latest = r.version;  // newer than any change notified before it was asked for
   conflictBar();
   panel.render(state.doc);
+  document.querySelectorAll('#output .layered').forEach(o => { o.hidden = !Array.isArray(doc.layers); });
   await compile(true);
 }
 
@@ -427,7 +443,7 @@ function controls() {
   bind('light-elevation', () => state.view.light.elevation, v => { state.view.light.elevation = v; });
   for (const id of ['shape', 'output']) {
     $(id).value = state.view[id];
-    $(id).addEventListener('change', () => { state.view[id] = $(id).value; draw(); });
+    $(id).addEventListener('change', () => { state.view[id] = $(id).value; selectSlot(); });
   }
   $('save').addEventListener('click', () => save());
   keys();
@@ -475,7 +491,8 @@ function interaction() {
 hexc.drawPending = () => drawRequested;
 hexc.view = () => state.view;
 hexc.document = () => state.doc;
-hexc.setView = v => { Object.assign(state.view, v); draw(); };
+hexc.setView = v => { Object.assign(state.view, v); if (v.output) selectSlot(); else draw(); };
+hexc.selectLayer = i => { panel.layer = i; panel.render(state.doc); selectSlot(); };
 hexc.readFloat = (w, h) => Array.from(renderer.readFloat(state.view, regions(), w, h));
 hexc.selectSlot = name => { panel.slot = slotEntries(state.doc).findIndex(s => s.name === name); panel.render(state.doc); selectSlot(); };
 
@@ -492,6 +509,8 @@ async function start() {
     renderer = new View($('canvas'), Object.fromEntries(names.map((n, i) => [n, sources[i]])));
     panel = new Panel($('panel'), schema, onEdit);
     panel.onSlot = selectSlot;
+    panel.onLayer = selectSlot;
+    panel.onRefuse = message => { state.refused = message; status(); };
     panel.textureSize = i => state.sizes[slotEntries(state.doc)[i]?.name];
     controls();
     await load();

@@ -5,7 +5,7 @@
 // Slider spans for settings the schema leaves unbounded (or bounds far beyond what is useful to drag through); the
 // number box beside each slider takes any value the schema allows.
 const kSpans = { tiling: [0.1, 64, 'log'], rotation: [0, 2], rotationrange: [-360, 360], scalerange: [0.1, 10, 'log'],
-                 rotationsteps: [0, 24], offsetsteps: [0, 64] };
+                 rotationsteps: [0, 24], offsetsteps: [0, 64], width: [0.005, 1] };  // width: the layers', above 0
 
 // The document's slots as the panel and the server name them: the material's own, then each layer's, named
 // `<layer>_<slot>` (docs/material-format.md#layers), with their JSON pointers and the layer whose settings they inherit.
@@ -54,9 +54,12 @@ export class Panel {
   constructor(root, schema, onEdit) {
     this.root = root;
     this.schema = schema;
-    this.onEdit = onEdit;  // (pointer, value or undefined to remove, {slots, key}, a step of a slider's drag) => void
+    // (pointer, value or undefined to remove, {slots, key, param: the layer blend's parameter}, a step of a slider's
+    // drag) => void
+    this.onEdit = onEdit;
     this.slot = 0;
-    this.open = { material: true, overrides: false };  // which collapsible sections are open, kept across renders
+    this.layer = 0;          // the layer the "layer weight" view shows
+    this.open = { material: true, layers: true, overrides: false };  // which collapsible sections are open, kept across renders
     this.lock = false;       // tiling locked to square texels
     this.textureSize = () => null;  // (slot index) => [width, height] of its texture once loaded, set by the page
   }
@@ -68,7 +71,43 @@ export class Panel {
     this.slots = slotEntries(doc);
     const slots = this.slots.length;
     this.slot = Math.max(0, Math.min(this.slot, slots - 1));
-    this.root.replaceChildren(this.section('Material', null, 'material'), ...(slots ? [this.slotSection()] : []));
+    const layered = doc.layer_blend && typeof doc.layer_blend === 'object' && Array.isArray(doc.layers);
+    this.layer = Math.max(0, Math.min(this.layer, (layered ? doc.layers.length : 1) - 1));
+    this.root.replaceChildren(this.section('Material', null, 'material'), ...(layered ? [this.layerSection()] : []),
+                              ...(slots ? [this.slotSection()] : []));
+  }
+
+  // Every edit of a control goes here: a change of the layers' mode writes the whole `layer_blend`, since `height`
+  // (the role heights come from) is required in height mode and refused in linear mode.
+  edit(pointer, value, target, drag) {
+    if (pointer !== '/layer_blend/mode') return this.onEdit(pointer, value, target, drag);
+    const blend = { ...this.doc.layer_blend };
+    if (value === undefined) delete blend.mode; else blend.mode = value;
+    if (blend.mode === 'height') {
+      const first = (this.doc.layers[0]?.slots || []).find(s => s.kind === 'scalar')?.name;  // a role of one channel
+      blend.height ??= this.heightRole ?? first;
+    } else if (blend.height !== undefined) {
+      this.heightRole = blend.height;  // back in height mode, the role it had
+      delete blend.height;
+    }
+    this.onEdit('/layer_blend', blend, target);
+    this.render(this.doc);  // the width control shows in height mode only
+  }
+
+  // The layers' blend (docs/material-format.md#layers): its mode and, by mode, width, and what it keeps; and the layer
+  // whose weight the page's "layer weight" view shows.
+  layerSection() {
+    const box = this.collapsible('Layer blend', 'layers');
+    const blend = this.doc.layer_blend, defs = this.schema.properties.layer_blend.properties;
+    const keys = ['mode', ...(blend.mode === 'height' ? ['width'] : []), 'skip_below', 'arrays'];
+    for (const key of keys)
+      box.append(this.control(key, defs[key], `/layer_blend/${key}`, blend[key], defs[key].default, { slots: [], key, param: `layer_blend_${key}` }));
+    const picker = element('select', { id: 'layer-select', 'aria-label': 'layer' });
+    this.doc.layers.forEach((l, i) => picker.append(element('option', { value: i }, `${i}: ${l.name}`)));
+    picker.value = String(this.layer);
+    picker.addEventListener('change', () => { this.layer = Number(picker.value); this.onLayer?.(this.layer); });
+    box.append(element('div', { class: 'control' }, element('label', { title: 'the layer the "layer weight" view shows' }, 'weight view'), picker));
+    return box;
   }
 
   // A section that folds away (its summary stays), open as it was left.
@@ -130,7 +169,7 @@ export class Panel {
     const defaultText = required ? 'required' : `default ${shown ?? JSON.stringify(inherited)}`;
     const reset = element('button', { class: 'reset', title: 'remove this key: back to the default' }, '↺');
     reset.disabled = own === undefined;
-    reset.addEventListener('click', () => this.onEdit(pointer, undefined, target));
+    reset.addEventListener('click', () => this.edit(pointer, undefined, target));
     row.append(element('label', { title: p.description || '' }, label), this.editor(label, p, pointer, value, target), required ? '' : reset,
                element('span', { class: 'default' }, `${unit ? unit.trim() + ', ' : ''}${defaultText}`));
     if (label === 'tiling') row.append(this.tilingLock(pointer, value, target));
@@ -163,7 +202,7 @@ export class Panel {
     if (p.type === 'boolean') {
       const box = element('input', { type: 'checkbox' });
       box.checked = !!value;
-      box.addEventListener('change', () => this.onEdit(pointer, box.checked, target));
+      box.addEventListener('change', () => this.edit(pointer, box.checked, target));
       return box;
     }
     if (choices) {
@@ -171,7 +210,7 @@ export class Panel {
       if (value === undefined) select.append(element('option', { value: '' }, '(default)'));
       for (const c of choices) select.append(element('option', { value: JSON.stringify(c) }, String(c)));
       select.value = value === undefined ? '' : JSON.stringify(value);
-      select.addEventListener('change', () => this.onEdit(pointer, JSON.parse(select.value), target));
+      select.addEventListener('change', () => this.edit(pointer, JSON.parse(select.value), target));
       return select;
     }
     return this.sliders(label, p, pointer, value, target);
@@ -194,7 +233,7 @@ export class Panel {
         sliders[1].value = String(toSlider(values[1]));
       }
       const out = !d.either || Array.isArray(value) || values[0] !== values[1] ? values.slice(0, count) : values[0];
-      this.onEdit(pointer, count === 1 ? values[0] : out, target, drag);
+      this.edit(pointer, count === 1 ? values[0] : out, target, drag);
     };
     for (let k = 0; k < count; ++k) {
       const slider = element('input', { type: 'range', min: 0, max: 1, step: d.integer ? 1 / Math.max(1, max - min) : 0.001 });
@@ -208,7 +247,16 @@ export class Panel {
       });
       number.addEventListener('change', () => {
         if (number.value === '' || !Number.isFinite(Number(number.value))) return;
-        values[k] = d.integer ? Math.round(Number(number.value)) : Number(number.value);
+        const typed = d.integer ? Math.round(Number(number.value)) : Number(number.value);
+        // Refused here, not by a compile: a setting that is a uniform would draw it without one.
+        const below = d.exclusiveMin ? typed <= d.min : typed < d.min;
+        if (below || typed > d.max) {
+          const range = `${d.exclusiveMin ? '(' : '['}${d.min ?? '-∞'}, ${d.max ?? '∞'}]`;
+          this.onRefuse?.(`${pointer}: ${typed} is outside ${range}, the range the material format allows; ${label} stays ${values[k]}`);
+          number.value = String(values[k]);
+          return;
+        }
+        values[k] = typed;
         slider.value = String(toSlider(values[k]));
         write();
       });

@@ -6,7 +6,7 @@ import * as geometry from './geometry.js';
 
 // The views' specialisation constants (templates/edit/views.glsl), as SPIRV-Cross's GLSL ES leaves them: macros.
 const kViewMacro = 'SPIRV_CROSS_CONSTANT_ID_1000', kSlotMacro = 'SPIRV_CROSS_CONSTANT_ID_1001';
-const kViews = { hex: 0, values: 1, weights: 2 };
+const kViews = { hex: 0, values: 1, weights: 2, layer: 3 };
 
 // Linked programs kept by their sources: a structure seen before in the session (an undo, a setting switched back, a
 // slot selected again) links nothing, and the driver keeps the shaders it compiled for them. A structure is four
@@ -29,6 +29,7 @@ export class View {
     this.linked = new Map();  // linked programs by their sources (linkedProgram)
     this.generation = 0;      // setPrograms' calls: a later one supersedes an earlier one still linking
     this.parallel = this.gl.getExtension('KHR_parallel_shader_compile');
+    this.live = new Map();  // parameters set since the programs' compile (setParam), which a program linked again keeps
     this.textures = {};  // by URL name: "albedo", "albedo.gaussian", "albedo.lut"
     this.meshes = {};
     this.display = this.compileProgram('display', shaders['display.vert.glsl'], shaders['display.frag.glsl']);
@@ -72,19 +73,27 @@ export class View {
                                 : `WebGL could not link the ${name} program: ${gl.getProgramInfoLog(program)}`);
   }
 
-  // Links each program, the views for the slot at `slot` in the server's `slots`, and makes them the ones drawn; a
-  // program linked before in this session (the same sources) is taken from this.linked, linking nothing. Resolves
-  // false if a later call superseded this one, and throws an Error with WebGL's log if a program does not link (the
-  // programs drawn stay as they were).
-  async setPrograms(programs, slots, slot) {
+  // Links each program, the views for `shown.slot` (a name in the server's `slots`) and, when `shown.layer` is a
+  // layer's index, its weight and the splat map that holds it, and makes them the ones drawn; a program linked before
+  // in this session (the same sources) is taken from this.linked, linking nothing. Resolves false if a later call
+  // superseded this one, and throws an Error with WebGL's log if a program does not link (the programs drawn stay as
+  // they were).
+  async setPrograms(programs, slots, shown) {
     const generation = ++this.generation;
     const wanted = [];
     if (programs.plain.fragment) wanted.push(['plain', programs.plain, '']);
     if (programs.views.fragment) {
-      const index = Math.max(0, slots.indexOf(slot));
-      // The template's own shading shows no slot: its program stays linked whichever slot is selected.
-      for (const [name, view] of Object.entries(kViews))
-        wanted.push([name, programs.views, `#define ${kViewMacro} ${view}\n#define ${kSlotMacro} ${view === kViews.hex ? 0 : index}\n`]);
+      const view = (name, kind, index) => wanted.push([name, programs.views, `#define ${kViewMacro} ${kind}\n#define ${kSlotMacro} ${index}\n`]);
+      const index = Math.max(0, slots.indexOf(shown.slot));
+      view('hex', kViews.hex, 0);  // the template's own shading shows no slot: one program whichever is selected
+      view('values', kViews.values, index);
+      view('weights', kViews.weights, index);
+      if (shown.layer !== undefined) {
+        view('layer', kViews.layer, shown.layer);
+        // The splat map as the layers read it: its slot's values (hexc names the maps' slots splat0, splat1).
+        const splat = slots.indexOf(`splat${Math.floor(shown.layer / 4)}`);
+        if (splat >= 0) view('splat', kViews.values, splat);
+      }
     }
     const linked = wanted.map(([name, p, defines]) => this.linkedProgram(p, defines));
     while (!linked.every(l => l.ready || (l.ready = this.ready(l.program)))) await new Promise(requestAnimationFrame);
@@ -145,6 +154,10 @@ export class View {
     const params = manifest.parameters;
     const block = { data: new DataView(new ArrayBuffer(Math.max(16, params.size))), buffer: this.gl.createBuffer(), members: params.members };
     for (const m of params.members) this.write(block, m, m.value);
+    for (const [name, value] of this.live) {
+      const m = params.members.find(m => m.name === name || (m.aliases || []).includes(name));
+      if (m) this.write(block, m, value);
+    }
     return block;
   }
 
@@ -176,8 +189,9 @@ export class View {
     return hex && hex.block.members.find(m => m.name === name || (m.aliases || []).includes(name));
   }
 
-  // Sets a parameter in every program that has it.
+  // Sets a parameter in every program that has it, and in those linked before the next compile.
   setParam(name, value) {
+    this.live.set(name, value);
     for (const p of Object.values(this.programs)) {
       const m = p.block.members.find(m => m.name === name || (m.aliases || []).includes(name));
       if (m) this.write(p.block, m, value);

@@ -73,19 +73,24 @@ public:
         return location < 0 ? "" : expand("vertex.input", {{"location", std::to_string(location)}}) + "\n\n";
     }
 
+    // A setting of the blend: its parameter in general code, else its value as a literal.
+    std::string setting(const ParamRef& ref, double value) const { return ref ? read_(*ref) : floatLiteral(value); }
+
     std::string weights() const {
         const LayersPlan& lp = *plan_.layers;
         std::string splats, keep;
         for (size_t k = 0; k < lp.splats.size(); ++k)
             splats += (k ? "\n" : "") + expand("weights.splat", {{"index", std::to_string(k)}, {"tiling", tiling(lp.splats[k])}});
         for (size_t i = 0; i < lp.count; ++i) keep += (i ? "\n" : "") + layerWeight(i);
-        const std::string heights =
-            lp.heights.empty()
-                ? ""
-                : expand("weights.heights", {{"layers", perLayer("weights.height", lp.heights)}, {"width", floatLiteral(lp.width)}});
+        const std::string heights = lp.heights.empty() ? ""
+                                                       : expand("weights.heights", {{"layers", perLayer("weights.height", lp.heights)},
+                                                                                    {"width", setting(lp.widthParam, lp.width)}});
         return withoutEmptyLines(expand(  // no lattices, no heights
-            "weights",
-            {{"splats", splats}, {"keep", keep}, {"skip", floatLiteral(lp.skipBelow)}, {"lattices", lattices()}, {"heights", heights}}));
+            "weights", {{"splats", splats},
+                        {"keep", keep},
+                        {"skip", setting(lp.skipBelowParam, lp.skipBelow)},
+                        {"lattices", lattices()},
+                        {"heights", heights}}));
     }
 
     std::string role(const LayerRolePlan& r, const std::string& uv) const {

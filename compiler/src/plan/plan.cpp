@@ -232,6 +232,23 @@ public:
         m.value = std::move(value);
         m.slots = slots;
         m.perFrame = std::move(perFrame);
+        place(ref, std::move(m));
+    }
+
+    // A float setting of no one slot (the layers' blend), named `name`, read by `slots`.
+    void addNamed(ParamRef& ref, const std::string& name, double value, const std::vector<std::string>& slots) {
+        place(ref, {name, {}, "float", {value}, slots});
+    }
+
+    // Block members first, in block order, then the baked constants.
+    void finish() {
+        plan_.paramBlockSize = (plan_.paramBlockSize + 15) / 16 * 16;
+        for (ParamRef* ref : constantRefs_) **ref += plan_.params.size();
+        plan_.params.insert(plan_.params.end(), constants_.begin(), constants_.end());
+    }
+
+private:
+    void place(ParamRef& ref, ParamMember m) {
         if (bake_ && m.perFrame.empty()) {
             m.constantId = nextConstant_;
             nextConstant_ += uint32_t(m.value.size());
@@ -248,14 +265,6 @@ public:
         plan_.params.push_back(std::move(m));
     }
 
-    // Block members first, in block order, then the baked constants.
-    void finish() {
-        plan_.paramBlockSize = (plan_.paramBlockSize + 15) / 16 * 16;
-        for (ParamRef* ref : constantRefs_) **ref += plan_.params.size();
-        plan_.params.insert(plan_.params.end(), constants_.begin(), constants_.end());
-    }
-
-private:
     ShaderPlan& plan_;
     bool bake_;
     uint32_t nextConstant_ = 0;
@@ -321,6 +330,13 @@ void planParams(bool bake, ShaderPlan& plan) {
     }
     for (SlotPlan& sp : plan.slots)
         if (sp.slot->hex.enabled && !sp.heightOnly) addSlotParams(params, sp, plan.specialised);
+    if (plan.layers && plan.general) {  // read where the weights are filled: with the splat maps
+        LayersPlan& lp = *plan.layers;
+        std::vector<std::string> splats;
+        for (size_t s : lp.splats) splats.push_back(plan.slots[s].name);
+        params.addNamed(lp.skipBelowParam, "layer_blend_skip_below", lp.skipBelow, splats);
+        if (!lp.heights.empty()) params.addNamed(lp.widthParam, "layer_blend_width", lp.width, splats);
+    }
     params.finish();
 }
 

@@ -142,8 +142,11 @@ struct LayersPlan {
     std::vector<size_t> heights;       // height blend: per layer, the slot holding its height (else empty)
     size_t count = 0;                  // layers
     LayerBlend blend = LayerBlend::Linear;
-    double width = 0.2, skipBelow = 0;  // fixed in the code
-    bool skip = true;                   // a layer of weight 0 at a pixel is not fetched (CompileOptions::skipLayers)
+    double width = 0.2, skipBelow = 0;  // fixed in the code, unless general (below)
+    // General code (--no-specialise): width and skipBelow are parameters, as a slot's settings are, so that hexc edit
+    // sets them without compiling; else none, and the code holds the values above.
+    ParamRef widthParam, skipBelowParam;
+    bool skip = true;  // a layer of weight 0 at a pixel is not fetched (CompileOptions::skipLayers)
     LayerWeights weights = LayerWeights::Splat;
     int vertexColorLocation = -1;  // weights from the vertex colour: the location of its stage input, hexcVertexColor
     // Texture fetches per pixel of the whole material: when every layer is fetched, and averaged over the splat maps'
