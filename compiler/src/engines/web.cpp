@@ -44,9 +44,11 @@ nlohmann::json textures(const PackageInput& in, Diagnostics& diagnostics) {
                 unloadable(in, "the histogram blend's tables are float (slot `" + t.table->name + "`; blend it by falloff)"));
             continue;
         }
-        if (t.array && !t.array->ktx2.empty())
+        if (t.array && !t.array->ktx2.empty()) {  // said once for the role, not per layer's slot
             diagnostics.push_back(unloadable(in, "role `" + t.array->role + "` reads the KTX2 array " + t.array->ktx2 +
                                                      " (give each layer's `" + t.array->role + "` a PNG, JPEG or WebP file)"));
+            continue;
+        }
         nlohmann::json files = nlohmann::json::array();
         for (const SlotPlan* slot : loadedSlots(in, t)) {
             if (!browserImage(slot->slot->texturePath))
