@@ -1,6 +1,7 @@
 """What the engine tests share (compiler/integrations/<engine>/check.py): PNG and PFM reading, hexc's fp64 reference,
 the derived bound of an engine's 8-bit sRGB output against it, the materials they draw (the probe among them), the
 screen marker and the verdicts of their checks. Python's standard library only."""
+import functools
 import json
 import math
 import struct
@@ -58,9 +59,16 @@ def read_pfm(path):
 
 
 def reference(hexc, material, output, slot, size, rect, out):
-    """hexc's fp64 CPU reference of `slot` (`output`: albedo or normal) over uv `rect`, linear, as a PFM."""
-    subprocess.run([hexc, "render", str(material), "--reference", "-q", "--output", output, "--slot", slot, "--size",
-                    f"{size}x{size}", "--uv-rect", ",".join(map(str, rect)), "-o", str(out)], check=True)
+    """hexc's fp64 CPU reference of `slot` (`output`: albedo or normal) over uv `rect`, linear, as a PFM (rendered once
+    for the same arguments and material text: a test that checks several views of one material asks for its layers'
+    references again)."""
+    return _reference(hexc, str(material), Path(material).read_text(), output, slot, size, tuple(rect), str(out))
+
+
+@functools.lru_cache(maxsize=None)
+def _reference(hexc, material, text, output, slot, size, rect, out):  # `text`: a rewritten material is another key
+    subprocess.run([hexc, "render", material, "--reference", "-q", "--output", output, "--slot", slot, "--size",
+                    f"{size}x{size}", "--uv-rect", ",".join(map(str, rect)), "-o", out], check=True)
     return read_pfm(out)
 
 
@@ -414,7 +422,7 @@ def refused(material, engine):
     """Why the docs say `engine`'s package refuses `material`, or None: a test asserts hexc refuses it and prints why."""
     if Path(material).stem == "rock_triplanar":
         return "a triplanar material has no functions output (docs/engines.md#slots-and-engine-inputs)"
-    if Path(material).suffix == ".json" and "layers" in json.loads(Path(material).read_text()) and engine not in ("godot3", "filament"):
+    if Path(material).suffix == ".json" and "layers" in json.loads(Path(material).read_text()) and engine not in ("godot3", "filament", "threejs", "babylon"):
         return f"a layered material: the {engine} package does not carry layers yet (docs/engines.md#layered-materials)"
     return None
 

@@ -270,7 +270,8 @@ TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {
 }
 
 // A layered material's package (Filament's) feeds the engine its roles' blends, reports the role without an input at
-// its first layer's slot, and the engines whose packages do not carry layers refuse it (Godot 3's does: below).
+// its first layer's slot, and the engines whose packages do not carry layers refuse it (Godot 3's and the web
+// engines' do: below).
 TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
     ParseResult p = parseMaterialFile("materials/terrain/terrain.json");
     ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
@@ -290,7 +291,7 @@ TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
                                                 })->contents);
     EXPECT_EQ(manifest["functions"][0], nlohmann::json::parse(R"({"name": "hexc_albedo", "role": "albedo", "parameters": "vec2 uv",
                                                                    "returns": "vec4", "value": "RGBA, linear"})"));
-    for (Engine refused : {Engine::Godot4, Engine::Threejs, Engine::Babylon, Engine::Unity, Engine::Unreal}) {
+    for (Engine refused : {Engine::Godot4, Engine::Unity, Engine::Unreal}) {
         CompileResult web = compileForEngine(*p.material, refused, {});
         EXPECT_NE(formatAll(web.diagnostics).find("error[HX300]"), std::string::npos) << formatAll(web.diagnostics);
         EXPECT_TRUE(web.files.empty());
@@ -309,6 +310,25 @@ TEST(EnginePackages, Godot3GetsALayeredMaterialWithoutLoopsOrArrays) {
     EXPECT_NE(godot.find("ALBEDO = (hexc_albedo(UV)).rgb;"), std::string::npos);
     EXPECT_NE(godot.find("NORMALMAP = hexc_normal_normal(UV) * 0.5 + 0.5;"), std::string::npos);
     EXPECT_NE(godot.find("uniform sampler2D hexcTex_splat0;"), std::string::npos);  // weights: linear, no hint_albedo
+}
+
+// The web packages read a layered role's textures as one array where a shader would (the manifest's `layers.arrays`
+// says so): three.js every role (sRGB ones too), Babylon.js the linear ones only (its 2D arrays have no sRGB format),
+// its sRGB albedo a texture per layer. Each array lists its layers' files, copied beside the module, in layer order.
+TEST(EnginePackages, WebPackagesReadLayeredRolesAsArrays) {
+    const std::string three = package("terrain/terrain", Engine::Threejs), babylon = package("terrain/terrain", Engine::Babylon);
+    for (const char* array : {"sampler2DArray hexcArr_albedo;", "sampler2DArray hexcArr_normal;", "sampler2DArray hexcArr_height;"})
+        EXPECT_NE(three.find(array), std::string::npos) << array;
+    EXPECT_NE(three.find(R"("layers": [
+        "terrain.grass_albedo.png",
+        "terrain.sand_albedo.png",
+        "terrain.pebbles_albedo.png",
+        "terrain.snow_albedo.png"
+      ],)"),
+              std::string::npos);
+    EXPECT_NE(babylon.find("sampler2DArray hexcArr_normal;"), std::string::npos);
+    EXPECT_EQ(babylon.find("hexcArr_albedo"), std::string::npos);
+    EXPECT_NE(babylon.find("sampler2D hexcTex_grass_albedo;"), std::string::npos);
 }
 
 }  // namespace

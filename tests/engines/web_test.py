@@ -2,7 +2,9 @@
 probe (engine_check.py) drawn upright and lit from the light's side as the canvas's own PNG shows it, with an engine-drawn
 marker at the screen's top-left, and each wrong variant a user can make failing that check; each slot's value through
 the engine's own material input matches hexc's fp64 reference, and a dome normal map under a known light is lit from
-the light's side, with the package written for either uv origin; every example compiles in the engine; Babylon's
+the light's side, with the package written for either uv origin; a layered material's roles within engine_check.py's
+layered bound per pixel, lit by the engine, its layers or splat channels swapped failing; every example compiles in the
+engine; Babylon's
 package on its WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2.
 
 Usage: web_test.py HEXC ENGINE [--screenshot PNG] [TEST ...]   (from the source root; ENGINE is threejs or babylon)
@@ -19,6 +21,7 @@ import sys
 import tempfile
 import time
 import unittest
+from pathlib import Path
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -235,6 +238,44 @@ def correlation(a, b):
     return cov / spread if spread else 0.0  # a flat image follows nothing
 
 
+# The layered material (engine_check.layered_material: three layers of 64 x 64 textures hex-tiled twice, 128 texels per
+# uv unit, and a 32 x 32 splat map) over the uv rectangle from hexc's uv (0, 0) where a pixel covers 0.7 texel: every
+# fetch is from mip level 0, as the Godot 3 and Filament checks draw it.
+LAYERED_RECT = [0.0, 0.0, 0.7 * SIZE / 128, 0.7 * SIZE / 128]
+
+
+def layered_view(material, origin, function, control=None, files=None):
+    """engine_check's layered check (value_verdict: per pixel, within the bound layered_errors derives from the layers
+    and the splat map, a flip of u or of v caught, the marker at the top-left) of the engine's unlit value of a layered
+    package's role `function` (engine_check.py's manifest entry) as the canvas's PNG shows it. `files`: the package's
+    textures loaded from other files (a negative control, named `control`, which must fail). True if the verdict is a
+    failure of the test."""
+    tag = "%s_%s_%s" % (origin, function["name"], "".join(c for c in control or "" if c.isalnum())[:24])
+    png = os.path.join(PACKAGES, "layered_%s.png" % tag)
+    view = {"package": os.path.join(PACKAGES, "layered-" + origin, ENGINE), "origin": origin, "size": SIZE,
+            "rect": LAYERED_RECT, "relative": 0.0, "encode": ec.linear}  # the value written out linear to an 8-bit canvas
+    PAGE.screenshot(png, module=package(material, origin), width=SIZE, height=SIZE, uv=engine_uv(LAYERED_RECT, origin),
+                    input=function["role"], encoding="linear", marker=int(SIZE * ec.MARKER_FRACTION), files=files)
+    return ec.value_verdict(HEXC, material, function, Path(png), view, control)
+
+
+def lit_by_the_normal(material, origin):
+    """The layered package lit by the engine from +x and from -x (diffuse): per pixel, (out(+x) - out(-x)) / (out(+x) +
+    out(-x)), which for out = albedo I (n . L) is n_x / n_z whatever the albedo (a single image over the unlit albedo
+    would not do: Babylon's PBR adds terms the albedo does not scale). Its correlation with the reference's n_x / n_z,
+    with -n_x / n_z (the normal mirrored in x, as a tangent frame or a normal map read the wrong way round lights it:
+    the check must fail on it), and the pixels it is taken over (clipped at 255 or too dark to divide left out)."""
+    config = dict(module=package(material, origin), width=SIZE, height=SIZE, uv=engine_uv(LAYERED_RECT, origin),
+                  encoding="linear", diffuse=True)
+    plus, minus = (PAGE.render(**config, light=light) for light in ([1.0, 0.0, 1.0], [-1.0, 0.0, 1.0]))
+    normals = [n for row in reference(material, "normal", "normal", LAYERED_RECT) for n in row]
+    pixels = [(p[:3], m[:3]) for rp, rm in zip(plus, minus) for p, m in zip(rp, rm)]
+    kept = [i for i, (p, m) in enumerate(pixels) if sum(p) + sum(m) > 60 and max(p + m) < 255]
+    ratio = [(sum(pixels[i][0]) - sum(pixels[i][1])) / (sum(pixels[i][0]) + sum(pixels[i][1])) for i in kept]
+    slope = [(2 * normals[i][0] - 1) / (2 * normals[i][2] - 1) for i in kept]
+    return correlation(ratio, slope), correlation(ratio, [-x for x in slope]), len(kept)
+
+
 class Engine(unittest.TestCase):
     def setUp(self):
         self.started = time.monotonic()
@@ -293,6 +334,35 @@ class Engine(unittest.TestCase):
                     # follows the tilt closely; a normal lit upside down follows it with the opposite sign.
                     self.assertGreater(r, 0.9)
                     self.assertGreater(sum(towards) / len(towards), sum(away) / len(away) + 0.1)
+
+    def test_layered_material(self):
+        """A layered material (engine_check.layered_material: glyph-like asymmetric layers, a painted splat map) through
+        the engine's inputs, at both uv origins: each role's value within engine_check's layered bound per pixel, the
+        same images against the reference flipped in u and in v over it, and the material lit by the engine from +x and
+        -x: their ratio follows the reference's slope. Negative controls, which must fail the layered check: two layers'
+        normal maps exchanged in the engine, the splat map's red and green channels swapped."""
+        material = str(ec.layered_material(os.path.join(PACKAGES, "layered")))
+        failed = 0
+        for origin in ORIGINS:
+            package(material, origin)
+            failed += sum(layered_view(material, origin, f)
+                          for f in ec.manifest(os.path.join(PACKAGES, "layered-" + origin, ENGINE))["functions"]
+                          if f["returns"] != "vec2")  # the derivative: its normal function is checked
+            r, mirrored, pixels = lit_by_the_normal(material, origin)
+            failed += ec.row("layered, %s, lit from +x and -x" % origin, "correlation of the lights' ratio with the "
+                             "reference's n_x / n_z %.3f (%d pixels; > 0.9 required), with the normal mirrored in x %.3f "
+                             "(must be below 0.9)" % (r, pixels, mirrored), r > 0.9 and mirrored < 0.9)
+        functions = {f["name"]: f for f in ec.manifest(os.path.join(PACKAGES, "layered-top-left", ENGINE))["functions"]}
+        swapped = os.path.join(PACKAGES, "layered-top-left", ENGINE, "layered.splat0.swapped.png")
+        w, h, n, rows = ec.read_png(os.path.join(PACKAGES, "layered", "splat.png"))
+        ec.write_png(swapped, w, h, lambda x, y: (rows[y][x * n + 1], rows[y][x * n], rows[y][x * n + 2]))
+        controls = (("two layers' normal maps exchanged in the engine (clay's and moss's)", "hexc_normal_normal",
+                     {"layered.clay_normal.png": "layered.moss_normal.png", "layered.moss_normal.png": "layered.clay_normal.png"}),
+                    ("the splat map's red and green channels swapped", "hexc_albedo",
+                     {"layered.splat0.png": os.path.basename(swapped)}))
+        for control, name, files in controls:
+            failed += layered_view(material, "top-left", functions[name], control, files)
+        self.assertEqual(failed, 0)
 
     def test_package_files_and_a_slot_without_input(self):
         """The package's files; a slot the engine has no input for is reported (HX204) and listed in the module's
@@ -420,8 +490,8 @@ class Engine(unittest.TestCase):
 
     def test_every_example_compiles_in_the_engine(self):
         """Every example material under materials/ through the package (top-left, then bottom-left, alternately),
-        compiled by the engine and drawn lit once: no shader error, not a flat image. Only what docs/engines.md says the
-        package refuses is left out (layered and triplanar materials: HX300), and it is listed."""
+        compiled by the engine and drawn lit once: no shader error, not a flat image (the terrain, layered, among them).
+        Only what docs/engines.md says the package refuses is left out (triplanar materials: HX300), and it is listed."""
         examples = sorted(glob.glob("materials/*.json") + glob.glob("materials/terrain/*.json") + glob.glob("materials/mtlx/*.mtlx"))
         drawn, skipped = [], []
         for i, material in enumerate(examples):
@@ -434,8 +504,7 @@ class Engine(unittest.TestCase):
             origin = ORIGINS[i % 2]
             run = subprocess.run([HEXC, material, "--engine", ENGINE, "-q", "-o", os.path.join(PACKAGES, "matrix", str(i))]
                                  + (["--uv-bottom-left"] if origin == "bottom-left" else []), capture_output=True, text=True)
-            refused = {"layers": "layered: HX300, docs/engines.md#layered-materials",
-                       "projection": "triplanar, no functions output: HX300, docs/engines.md"}
+            refused = {"projection": "triplanar, no functions output: HX300, docs/engines.md"}
             why = [refused[k] for k in refused if k in doc or k in doc.get("hextiling", {})]
             if run.returncode and "error[HX300]" in run.stderr and why:
                 skipped.append("%s (%s)" % (material, why[0]))
@@ -454,13 +523,15 @@ class Engine(unittest.TestCase):
               "(the MaterialX importer's cases), materials/scenes and materials/layouts (a scene, a layout)" % ENGINE)
 
     def test_lit_screenshot(self):
-        """The rock on a sphere, lit by the engine from the upper right, sRGB as a canvas shows it: for docs/engines.md."""
+        """The rock, and the terrain beside it (<PNG>-terrain.png), on a sphere, lit by the engine from the upper right,
+        sRGB as a canvas shows it: for docs/engines.md."""
         if not SCREENSHOT:
             self.skipTest("no --screenshot")
         size = 192
-        got = PAGE.render(module=package("materials/rock.json", "bottom-left"), width=size, height=size, uv=[0, 1, 1, 0],
-                          light=[1.0, 1.0, 1.5], encoding="srgb", sphere=True)
-        write_png(SCREENSHOT, size, size, [[c for p in row for c in p[:3]] for row in got])
+        for material, path in (("materials/rock.json", SCREENSHOT), ("materials/terrain/terrain.json", SCREENSHOT[:-4] + "-terrain.png")):
+            got = PAGE.render(module=package(material, "bottom-left"), width=size, height=size, uv=[0, 1, 1, 0],
+                              light=[1.0, 1.0, 1.5], encoding="srgb", sphere=True)
+            write_png(path, size, size, [[c for p in row for c in p[:3]] for row in got])
 
 
 def main():

@@ -37,6 +37,9 @@ enum class LineDirectives { None, Functions, Statements };
 
 std::string_view toString(LineDirectives mode);  // "none", "functions", "statements"
 
+// Which layered roles the functions output reads as one array texture (CompileOptions::functionArrays).
+enum class FunctionArrays { None, Linear, All };
+
 struct CompileOptions {
     std::vector<Target> targets = defaultTargets();
     std::filesystem::path templateFile;  // overrides the material's template when set (--template)
@@ -75,6 +78,11 @@ struct CompileOptions {
     // Every loop unrolled and the arrays it indexes made scalars (spirv/unroll.h): for an engine language with no array
     // copies, no array parameters and only `for` loops of its own form (Godot 3's; hexc/engines.h sets it).
     bool unrollLoops = false;
+    // Which layered roles the functions output reads as one 2D array texture where a shader would
+    // (docs/material-format.md#texture-arrays), for an engine package that assembles the array from the slots' files
+    // (hexc/engines.h sets it): none (a texture per slot, as every engine can bind), the roles bound linear only (an
+    // engine without sRGB array textures: Babylon.js), or all (three.js).
+    FunctionArrays functionArrays = FunctionArrays::None;
     // Also emit the pass-through vertex stage that feeds the fragment shader's inputs ("<material>.vert.*").
     bool vertex = false;
     // Readable outputs (like glslc/dxc -O0): no optimisation, so hexc's functions keep their names, and #line

@@ -14,6 +14,8 @@
 import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
 import { PBRMaterial } from '@babylonjs/core/Materials/PBR/pbrMaterial.js';
 import { ShaderLanguage } from '@babylonjs/core/Materials/shaderLanguage.js';
+import { Constants } from '@babylonjs/core/Engines/constants.js';
+import { RawTexture2DArray } from '@babylonjs/core/Materials/Textures/rawTexture2DArray.js';
 import { Texture } from '@babylonjs/core/Materials/Textures/texture.js';
 
 // The material's data, written by hexc: its slots, which Babylon input each fills, and their GLSL ES 3.00 code (and
@@ -79,19 +81,44 @@ function babylonWgsl(wgsl) {
     .replace(new RegExp(`(\\w+), ${sampler}\\b`, 'g'), '$1, $1Sampler');
 }
 
-// Loads the slots' textures as hexc samples them: repeat, trilinear and isotropic (Babylon's default anisotropy of 4
-// moves hex-tiling's rotated gradients off hexc's reference by up to 8/255 on a non-square texture), the image's first
-// row at t = 0 (invertY off, whatever the uv origin: hexc flips v itself for bottom-left), sRGB ones decoded by the
-// sampler before filtering.
+// A texture of `url`, once loaded: repeat, trilinear and isotropic (Babylon's default anisotropy of 4 moves
+// hex-tiling's rotated gradients off hexc's reference by up to 8/255 on a non-square texture), the image's first row at
+// t = 0 (invertY off), sRGB ones (`srgb`) decoded by the sampler before filtering.
+function loadTexture(scene, url, srgb) {
+  return new Promise((resolve, reject) => {
+    const texture = new Texture(url, scene, {
+      noMipmap: false, invertY: false, samplingMode: Texture.TRILINEAR_SAMPLINGMODE, useSRGBBuffer: srgb,
+      onLoad: () => resolve(texture), onError: (message) => reject(new Error(`hexc: ${url}: ${message}`)),
+    });
+    texture.anisotropicFilteringLevel = 1;
+  });
+}
+
+// A layered role's textures as one RawTexture2DArray, layer i the i-th file (the manifest's `layers.arrays`), sampled
+// as loadTexture's. Babylon's 2D arrays have no sRGB format, so hexc gives this package arrays of linear roles only.
+async function arrayTexture(scene, files, base) {
+  const layers = await Promise.all(files.map((file) => loadTexture(scene, new URL(file, base).href, false)));
+  const { width, height } = layers[0].getSize();
+  const data = new Uint8Array(width * height * 4 * layers.length);
+  for (const [i, layer] of layers.entries()) { // each read back as loaded, its first row first
+    data.set(await layer.readPixels(), i * width * height * 4);
+    layer.dispose();
+  }
+  const texture = new RawTexture2DArray(data, width, height, layers.length, Constants.TEXTUREFORMAT_RGBA, scene, true, false,
+    Texture.TRILINEAR_SAMPLINGMODE);
+  texture.anisotropicFilteringLevel = 1;
+  return texture;
+}
+
+// Loads the slots' textures as hexc samples them (loadTexture; invertY off whatever the uv origin: hexc flips v itself
+// for bottom-left). A layered role that hexc reads as an array (an entry with `layers`) is one RawTexture2DArray.
 export async function loadTextures(scene, base = import.meta.url) {
   const textures = {};
-  await Promise.all(hexc.textures.map((t) => new Promise((resolve, reject) => {
-    textures[t.uniform] = new Texture(new URL(t.file, base).href, scene, {
-      noMipmap: false, invertY: false, samplingMode: Texture.TRILINEAR_SAMPLINGMODE, useSRGBBuffer: t.colorspace === 'srgb',
-      onLoad: resolve, onError: (message) => reject(new Error(`hexc: ${t.file}: ${message}`)),
-    });
-    textures[t.uniform].anisotropicFilteringLevel = 1;
-  })));
+  await Promise.all(hexc.textures.map(async (t) => {
+    if (t.layers && t.colorspace === 'srgb') throw new Error(`hexc: ${t.uniform}: Babylon.js has no sRGB array texture`);
+    textures[t.uniform] = t.layers ? await arrayTexture(scene, t.layers, base)
+      : await loadTexture(scene, new URL(t.file, base).href, t.colorspace === 'srgb');
+  }));
   return textures;
 }
 

@@ -47,12 +47,43 @@ function hexcUv() {
   return hexc.uv_origin === 'bottom-left' ? 'vUv' : 'vec2(vUv.x, 1.0 - vUv.y)';
 }
 
+// The RGBA bytes of `images` (one size), stacked first to last, each with its first row first, as the files store
+// them: read back from a WebGL 2 texture (no premultiplied alpha, no colour conversion), as a 2D canvas, which keeps
+// premultiplied pixels, would not give them where alpha is below 1.
+function stacked(images) {
+  const { width, height } = images[0];
+  const gl = new OffscreenCanvas(width, height).getContext('webgl2');
+  const data = new Uint8Array(width * height * 4 * images.length);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, gl.createFramebuffer());
+  gl.pixelStorei(gl.UNPACK_COLORSPACE_CONVERSION_WEBGL, gl.NONE);
+  images.forEach((image, layer) => {
+    const texture = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, image);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, data, layer * width * height * 4);
+  });
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return data;
+}
+
+// A layered role's textures as one DataArrayTexture, layer i the i-th file (the manifest's `layers.arrays`).
+async function arrayTexture(files, base) {
+  const loader = new THREE.ImageLoader();
+  const images = await Promise.all(files.map((file) => loader.loadAsync(new URL(file, base).href)));
+  const texture = new THREE.DataArrayTexture(stacked(images), images[0].width, images[0].height, images.length);
+  texture.generateMipmaps = true;
+  texture.needsUpdate = true;
+  return texture;
+}
+
 // Loads the slots' textures, as hexc samples them: repeat, trilinear, sRGB decoded by the sampler where the slot is
 // sRGB, and the image's first row at t = 0 (flipY off, whatever the uv origin: hexc flips v itself for bottom-left).
+// A layered role that hexc reads as an array (an entry with `layers`) is one DataArrayTexture of its layers' files.
 export async function loadTextures(base = import.meta.url, loader = new THREE.TextureLoader()) {
   const textures = {};
   await Promise.all(hexc.textures.map(async (t) => {
-    const texture = await loader.loadAsync(new URL(t.file, base).href);
+    const texture = t.layers ? await arrayTexture(t.layers, base) : await loader.loadAsync(new URL(t.file, base).href);
     texture.flipY = false;
     texture.wrapS = texture.wrapT = THREE.RepeatWrapping;
     texture.magFilter = THREE.LinearFilter;

@@ -129,6 +129,7 @@ std::string codeOptionsKey(const CompileOptions& options) {
     return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
            std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
            (options.debug ? ",debug," + std::string(toString(options.lineDirectives)) : "") + (options.functions ? ",functions" : "") +
+           (options.functionArrays == FunctionArrays::None ? "" : ",arrays " + std::to_string(int(options.functionArrays))) +
            (options.unrollLoops ? ",unroll" : "") +
            (options.uvOrigin == UvOrigin::TopLeft ? "" : ",uv " + std::string(toString(options.uvOrigin))) +
            (wgsl ? "," + nagaIdentity() : "");  // another naga writes other WGSL

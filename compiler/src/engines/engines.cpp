@@ -17,7 +17,7 @@ namespace {
 // In Engine order; a missing row does not compile.
 const std::array<EngineRow, kEngineCount>& engineRows() {
     using L = EngineLanguage;
-    // engine, name, shown, language, files, uv bottom-left, copies textures, unroll loops, layers, wgsl, writer
+    // engine, name, shown, language, files, uv bottom-left, copies textures, unroll loops, layers, wgsl, writer, arrays
     static const std::array<EngineRow, kEngineCount> rows = byEnum<kLastEngine, EngineRow>({
         {Engine::Godot3, "godot3", "godot3", L::Glsl330, {{"godot3.shader", ".shader"}}, false, false, true, true, false, glslPackage},
         {Engine::Godot4,
@@ -40,9 +40,10 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          true,
          true,
          false,
+         true,
          false,
-         false,
-         webPackage},
+         webPackage,
+         FunctionArrays::All},
         {Engine::Babylon,
          "babylon",
          "Babylon.js",
@@ -51,9 +52,10 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          true,
          true,
          false,
-         false,
          true,
-         webPackage},
+         true,
+         webPackage,
+         FunctionArrays::Linear},
         {Engine::Unity,
          "unity",
          "unity",
@@ -126,6 +128,7 @@ CompileOptions packageOptions(const EngineRow& e, CompileOptions options) {
     const bool wgsl = e.wgsl && asksForWgsl(options) && e.language != EngineLanguage::Wgsl;
     options.functions = true;
     options.unrollLoops = e.unrollLoops;
+    options.functionArrays = e.arrays;
     options.bake = true;  // the engine's material has no block for hexc's parameters
     options.targets = {targetOf(e.language)};
     if (wgsl) options.targets.push_back(Target::Wgsl);
@@ -146,7 +149,11 @@ std::vector<EngineTexture> textures(const ShaderPlan& plan) {
         if (own && plan.slots[i].pack) t.pack = &plan.packs[*plan.slots[i].pack];
         if (own && !plan.slots[i].pack) t.slot = &plan.slots[i];
         if (i >= plan.slots.size()) t.table = &plan.slots[plan.luts[i - plan.slots.size()]];
-        t.srgb = t.pack ? t.pack->srgb : t.slot && t.slot->slot->colorSpace == ColorSpace::Srgb && !t.slot->srgb;
+        if (i < plan.slots.size() && !own)  // an array, bound at its layer 0 slot: as that slot's texture is
+            t.array = &*std::find_if(plan.layers->arrays.begin(), plan.layers->arrays.end(),
+                                     [&](const LayerArrayPlan& a) { return a.slots.front() == i; });
+        const SlotPlan* sampled = t.array ? &plan.slots[i] : t.slot;
+        t.srgb = t.pack ? t.pack->srgb : sampled && sampled->slot->colorSpace == ColorSpace::Srgb && !sampled->srgb;
         out.push_back(std::move(t));
     }
     std::sort(out.begin(), out.end(), [](const EngineTexture& a, const EngineTexture& b) { return a.name < b.name; });
@@ -158,8 +165,11 @@ std::vector<std::string> packageNames(const Material& material, const EngineRow&
     std::vector<std::string> names;
     for (const auto& [templ, suffix] : e.files) names.push_back(material.name + suffix);
     if (e.copiesTextures)
-        for (const EngineTexture& t : textures(plan))
+        for (const EngineTexture& t : textures(plan)) {
             if (t.slot) names.push_back(textureCopyName(material, *t.slot->slot));
+            for (size_t layer : t.array ? t.array->slots : std::vector<size_t>{})
+                names.push_back(textureCopyName(material, *plan.slots[layer].slot));
+        }
     return names;
 }
 

@@ -22,15 +22,15 @@ enum class EngineLanguage {
 };
 
 // A texture the functions read, as every package binds it: the manifest's name ("<slot>", "<slot>.packed",
-// "<slot>.lut", "<role>.array"), its GLSL uniform, whether its sampler decodes sRGB (docs/bind-a-manifest.md, step 3;
-// an array's never), and the slot or pack whose texture it is, or the slot whose histogram table it is (none of them
-// for an array).
+// "<slot>.lut", "<role>.array"), its GLSL uniform, whether its sampler decodes sRGB (docs/bind-a-manifest.md, step 3),
+// and the slot, pack or layered role's array whose texture it is, or the slot whose histogram table it is.
 struct EngineTexture {
     std::string name, uniform;
     bool srgb = false;
     const SlotPlan* slot = nullptr;
     const PackPlan* pack = nullptr;
     const SlotPlan* table = nullptr;
+    const LayerArrayPlan* array = nullptr;
 };
 
 struct EngineRow;
@@ -61,6 +61,9 @@ struct EngineRow {
     // The package's own files, named without the "<engine>/" folder; a slot no input takes is a warning in
     // `diagnostics`, a texture the engine cannot load an error.
     std::vector<OutputFile> (*write)(const PackageInput& input, Diagnostics& diagnostics);
+    // The layered roles whose textures its package assembles into one 2D array texture where a shader would read one
+    // (CompileOptions::functionArrays); the others it binds a texture per slot.
+    FunctionArrays arrays = FunctionArrays::None;
 };
 
 const EngineRow& engineRow(Engine engine);

@@ -27,8 +27,16 @@ Diagnostic unloadable(const PackageInput& in, const std::string& what) {
         std::string(in.engine.shown) + " packages load textures with the browser's image decoder (PNG, JPEG or WebP): " + what);
 }
 
-// Each texture the functions read, as the module loads it: its file beside the module, its sampler uniform, its
-// colour space as the sampler decodes it.
+// The slots whose files a texture is loaded from: its slot's, or a layered role's array's layers' in layer order.
+std::vector<const SlotPlan*> loadedSlots(const PackageInput& in, const EngineTexture& t) {
+    if (t.slot) return {t.slot};
+    std::vector<const SlotPlan*> out;
+    for (size_t i : t.array ? t.array->slots : std::vector<size_t>{}) out.push_back(&in.compiled.plan.slots[i]);
+    return out;
+}
+
+// Each texture the functions read, as the module loads it: its file beside the module (an array: its layers' files,
+// which the module stacks), its sampler uniform, its colour space as the sampler decodes it.
 nlohmann::json textures(const PackageInput& in, Diagnostics& diagnostics) {
     nlohmann::json out = nlohmann::json::array();
     for (const EngineTexture& t : in.textures) {
@@ -37,21 +45,34 @@ nlohmann::json textures(const PackageInput& in, Diagnostics& diagnostics) {
                 unloadable(in, "the histogram blend's tables are float (slot `" + t.table->name + "`; blend it by falloff)"));
             continue;
         }
-        if (t.slot && !browserImage(t.slot->slot->texturePath))
-            diagnostics.push_back(
-                unloadable(in, "slot `" + t.slot->name + "` reads `" + t.slot->slot->texturePath.filename().string() + "`"));
-        const std::string file = t.pack ? packedFileName(in.material.name, in.compiled.plan.slots[t.pack->slots.front()].name)
-                                        : textureCopyName(in.material, *t.slot->slot);
-        out.push_back({{"file", file}, {"uniform", t.uniform}, {"colorspace", t.srgb ? "srgb" : "linear"}});
+        if (t.array && !t.array->ktx2.empty()) {  // said once for the role, not per layer's slot
+            diagnostics.push_back(unloadable(in, "role `" + t.array->role + "` reads the KTX2 array " + t.array->ktx2 +
+                                                     " (give each layer's `" + t.array->role + "` a PNG, JPEG or WebP file)"));
+            continue;
+        }
+        nlohmann::json files = nlohmann::json::array();
+        for (const SlotPlan* slot : loadedSlots(in, t)) {
+            if (!browserImage(slot->slot->texturePath))
+                diagnostics.push_back(
+                    unloadable(in, "slot `" + slot->name + "` reads `" + slot->slot->texturePath.filename().string() + "`"));
+            files.push_back(textureCopyName(in.material, *slot->slot));
+        }
+        if (t.pack) files.push_back(packedFileName(in.material.name, in.compiled.plan.slots[t.pack->slots.front()].name));
+        nlohmann::json entry = {{"uniform", t.uniform}, {"colorspace", t.srgb ? "srgb" : "linear"}};
+        if (t.array)
+            entry["layers"] = files;
+        else
+            entry["file"] = files.front();
+        out.push_back(std::move(entry));
     }
     return out;
 }
 
-// The uniform of the texture a slot reads: its own, or the packed texture that holds it.
+// The uniform of the texture a slot reads: its own, the packed texture or the layered role's array that holds it.
 std::string uniformOf(const SlotPlan& slot, const PackageInput& in) {
     const PackPlan* pack = slot.pack ? &in.compiled.plan.packs[*slot.pack] : nullptr;
     for (const EngineTexture& t : in.textures)
-        if (t.slot == &slot || (pack && t.pack == pack)) return t.uniform;
+        if (t.slot == &slot || (pack && t.pack == pack) || (t.array && !slot.array.empty() && t.uniform == slot.array)) return t.uniform;
     return "";  // a slot that reads no texture of its own (none does today)
 }
 
@@ -93,7 +114,8 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
     module.replace(module.find(marker), marker.size(), data.dump(2));
     std::vector<OutputFile> files = {{in.material.name + suffix, std::move(module)}};
     for (const EngineTexture& t : in.textures)
-        if (t.slot) files.push_back({textureCopyName(in.material, *t.slot->slot), t.slot->slot->file->bytes});  // the bytes the parser read
+        for (const SlotPlan* slot : loadedSlots(in, t))  // the bytes the parser read
+            files.push_back({textureCopyName(in.material, *slot->slot), slot->slot->file->bytes});
     return files;
 }
 

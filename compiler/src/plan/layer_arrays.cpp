@@ -57,10 +57,14 @@ void refuse(const Layers& layers, const ShaderPlan& plan, LayerArrayPlan& a) {
         a.refused = "one layer: there is nothing to share";
     else if (plan.general)
         a.refused = "--no-specialise: the library's general functions read 2D textures";
-    else if (plan.functions)
+    else if (plan.functions && plan.functionArrays == FunctionArrays::None)
         a.refused = "the functions output (engine packages) binds one texture per slot (docs/engines.md)";
     if (!a.refused.empty()) return;
     const Slot& first = *plan.slots[slots.front()].slot;
+    if (plan.functions && plan.functionArrays == FunctionArrays::Linear && first.samplerDecodes()) {
+        a.refused = "the engine package has no sRGB array texture: an sRGB role binds one texture per slot (docs/engines.md)";
+        return;
+    }
     for (size_t i : slots) {
         Unlike u{unreadable(plan.slots[i]), plan.slots[i].pack ? "leave `pack` off" : ""};
         if (u.why.empty()) u = unlike(first, *plan.slots[i].slot);

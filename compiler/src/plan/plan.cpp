@@ -384,6 +384,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     if (!loadTemplate(material, options, plan)) return plan;
     // The built-in `functions` named by a material is the functions output, as with --functions.
     plan.functions = options.functions || plan.templateName == TemplateRef::builtin("functions").path();
+    plan.functionArrays = options.functionArrays;
     planSlots(material, options, plan);
     planLayers(material, options.shareLattice, plan);
     if (plan.layers && !options.skipLayers) {  // every layer fetched at every pixel: the worst case is the expected one

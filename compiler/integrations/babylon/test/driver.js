@@ -4,7 +4,8 @@
 // as PBRMaterial's shader holds it after the package filled it (linear values, after lighting and image processing;
 // `nan`: times a NaN). `marker`: a red square of that many pixels that Babylon draws at the screen's top-left in the same
 // frame; `png`: the canvas as a user's screenshot gets it (toDataURL, top row first) instead of readPixels' rows;
-// `invertY`: the package's textures loaded with Babylon's default invertY = true, the plugin put on a PBRMaterial.
+// `invertY`: the package's textures loaded with Babylon's default invertY = true, the plugin put on a PBRMaterial;
+// `files`: the package's textures loaded from other files of it (withFiles).
 import { Camera } from '@babylonjs/core/Cameras/camera.js';
 import { FreeCamera } from '@babylonjs/core/Cameras/freeCamera.js';
 import { Engine } from '@babylonjs/core/Engines/engine.js';
@@ -21,6 +22,7 @@ import { CreateSphere } from '@babylonjs/core/Meshes/Builders/sphereBuilder.js';
 import { Mesh } from '@babylonjs/core/Meshes/mesh.js';
 import { VertexData } from '@babylonjs/core/Meshes/mesh.vertexData.js';
 import { Scene } from '@babylonjs/core/scene.js';
+import { withFiles } from '../../test_files.js';
 import { keepWebGpuOffTheSwapChain } from '../../webgpu_canvas.js';
 
 // Babylon's world is left-handed: the camera at z = -3 looks along +z, x right and y up on screen; the square faces -z.
@@ -121,7 +123,7 @@ async function readPixels(engine, width, height) {
 window.hexcDriver = {
   // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light;
   // `diffuse`: no specular highlight from the light (PBRMaterial's specularIntensity 0).
-  async render({ module, width, height, uv, input, light, encoding, sphere, diffuse, webgpu, nan, invertY, png, ...options }) {
+  async render({ module, width, height, uv, input, light, encoding, sphere, diffuse, webgpu, nan, invertY, files, png, ...options }) {
     const errors = [];
     const consoleError = console.error;
     console.error = (...args) => { errors.push(args.join(' ')); consoleError(...args); };
@@ -137,7 +139,7 @@ window.hexcDriver = {
       camera.setTarget(Vector3.Zero());
       camera.mode = Camera.ORTHOGRAPHIC_CAMERA;
       Object.assign(camera, { orthoLeft: -1, orthoRight: 1, orthoTop: 1, orthoBottom: -1, minZ: 0.1, maxZ: 10 });
-      const material = invertY ? await invertedMaterial(pkg, module, scene) : await pkg.createMaterial('hexc', scene);
+      const material = invertY ? await invertedMaterial(pkg, module, scene) : await withFiles(pkg, files, () => pkg.createMaterial('hexc', scene));
       material.backFaceCulling = false;
       if (diffuse) material.specularIntensity = 0;
       if (input) new Probe(material, input, nan);

@@ -4,9 +4,11 @@
 // `marker`: a red square of that many pixels that three.js draws at the screen's top-left in the same frame; `png`:
 // the canvas as a user's screenshot gets it (toDataURL, top row first) instead of readPixels' rows; `flipY`: the
 // package's textures uploaded with three.js's default flipY = true; `materialType`: applyHexc on a new material of
-// that type instead of createMaterial (the console's warnings are returned).
+// that type instead of createMaterial (the console's warnings are returned); `files`: the package's textures loaded
+// from other files of it (withFiles).
 import * as THREE from 'three';
 import { stage } from './scene.js';
+import { withFiles } from '../../test_files.js';
 
 const kProbes = {
   albedo: 'diffuseColor.rgb',
@@ -27,7 +29,7 @@ function probe(material, input, nan) {
 }
 
 // The package's material as the test asks for it, and the console's warnings while it is made.
-async function material(pkg, { input, nan, flipY, materialType }) {
+async function material(pkg, { input, nan, flipY, materialType, files }) {
   const warnings = [];
   const consoleWarn = console.warn;
   console.warn = (...args) => { warnings.push(args.join(' ')); consoleWarn(...args); };
@@ -39,7 +41,7 @@ async function material(pkg, { input, nan, flipY, materialType }) {
       for (const texture of flipY ? Object.values(textures) : []) texture.flipY = true;
       made = pkg.applyHexc(new THREE[materialType ?? 'MeshStandardMaterial'](materialType ? {} : parameters), textures);
     } else {
-      made = await pkg.createMaterial(parameters);
+      made = await withFiles(pkg, files, () => pkg.createMaterial(parameters));
     }
     if (input) probe(made, input, nan);
     return [made, warnings];
@@ -50,7 +52,7 @@ async function material(pkg, { input, nan, flipY, materialType }) {
 
 window.hexcDriver = {
   // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light.
-  async render({ module, width, height, uv, input, light, encoding, sphere, nan, flipY, materialType, png, ...options }) {
+  async render({ module, width, height, uv, input, light, encoding, sphere, nan, flipY, materialType, files, png, ...options }) {
     const pkg = await import(module);
     const canvas = document.createElement('canvas');
     canvas.width = width;
@@ -58,7 +60,7 @@ window.hexcDriver = {
     document.body.appendChild(canvas);
     const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
     renderer.outputColorSpace = encoding === 'srgb' ? THREE.SRGBColorSpace : THREE.LinearSRGBColorSpace;
-    const [made, warnings] = await material(pkg, { input, nan, flipY, materialType });
+    const [made, warnings] = await material(pkg, { input, nan, flipY, materialType, files });
     const { scene, camera } = stage(made, { uv, sphere, light, size: options.marker, width, height });
     renderer.render(scene, camera);
     const errors = renderer.info.programs.map((p) => p.diagnostics).filter((d) => d);
