@@ -109,9 +109,9 @@ nlohmann::json vertexStage(const Material& material, const ShaderPlan& plan, con
     return emitVertexStage(optimized.words, inputs, entry, material.name, options, targets, files);
 }
 
-void run(const Material& material, const CompileOptions& options, CompiledMaterial& out) {
+void run(const Material& material, const CompileOptions& options, bool functionArrays, CompiledMaterial& out) {
     CompileResult& result = out.result;
-    out.plan = planShader(material, options);
+    out.plan = planShader(material, options, functionArrays);
     const ShaderPlan& plan = out.plan;
     append(result.diagnostics, plan.diagnostics);
     if (hasErrors(plan.diagnostics)) return;
@@ -154,11 +154,11 @@ void run(const Material& material, const CompileOptions& options, CompiledMateri
 
 }  // namespace
 
-CompiledMaterial compileMaterial(const Material& material, const CompileOptions& options) {
+CompiledMaterial compileMaterial(const Material& material, const CompileOptions& options, bool functionArrays) {
     CompiledMaterial out;
     CompileResult& result = out.result;
     try {
-        run(material, options, out);
+        run(material, options, functionArrays, out);
     } catch (const CompileError& e) {
         append(result.diagnostics, e.diagnostics);
     } catch (const spirv_cross::CompilerError& e) {

@@ -22,7 +22,7 @@ struct CompiledMaterial {
     CompileResult result;  // the diagnostics, the generated GLSL and the SPIR-V; no files
 };
 
-// Never throws: problems come back in result.diagnostics (and nothing else is set).
-CompiledMaterial compileMaterial(const Material& material, const CompileOptions& options);
+// Never throws: problems come back in result.diagnostics (and nothing else is set). functionArrays: planShader's.
+CompiledMaterial compileMaterial(const Material& material, const CompileOptions& options, bool functionArrays = false);
 
 }  // namespace hexc

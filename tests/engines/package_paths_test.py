@@ -2,7 +2,7 @@
 """Every engine package's manifest names only files that are there: each path it names (every `file`, each slot's
 `texture`, the `source` paths) resolves from the package's folder to an existing file, for every engine package of
 every example material, built as docs/engines.md says (`hexc M --engine ... -o out/`). An engine that refuses a
-material (HX300, as docs/engines.md says: layers, triplanar, the web engines' float tables) writes no package for it.
+material (HX300, as docs/engines.md says: layers in the web packages, triplanar, the web engines' float tables) writes no package for it.
 
 Negative control: a package whose manifest names its functions' source as the functions output (`.functions.glsl`,
 not in the package) and a texture relative to the material, not to the package, must be found wrong.

@@ -83,7 +83,9 @@ TEST(LayerArrays, OffOneLayerGeneralCodeAndTheFunctionsOutputKeepSeparateTexture
     CompileOptions functions;
     functions.functions = true;
     EXPECT_EQ(arrayOf(planShader(terrain(), functions), "albedo").refused,
-              "the functions output (engine packages) binds one texture per slot (docs/engines.md)");
+              "the functions output binds one texture per slot (docs/engines.md#layered-materials)");
+    // An engine package that binds arrays: as a whole shader.
+    EXPECT_EQ(arrayOf(planShader(terrain(), functions, true), "albedo").refused, "");
     const Material one = loadMaterial("tests/execution/layers/one.json");
     const ShaderPlan plan = planShader(one, {});
     ASSERT_FALSE(plan.layers->arrays.empty());

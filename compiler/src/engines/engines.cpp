@@ -17,7 +17,8 @@ namespace {
 // In Engine order; a missing row does not compile.
 const std::array<EngineRow, kEngineCount>& engineRows() {
     using L = EngineLanguage;
-    // engine, name, shown, language, files, uv bottom-left, copies textures, unroll loops, layers, wgsl, writer
+    // engine, name, shown, language, files, uv bottom-left, copies textures, unroll loops, layers, wgsl, writer,
+    // texture arrays
     static const std::array<EngineRow, kEngineCount> rows = byEnum<kLastEngine, EngineRow>({
         {Engine::Godot3, "godot3", "godot3", L::Glsl330, {{"godot3.shader", ".shader"}}, false, false, true, true, false, glslPackage},
         {Engine::Godot4,
@@ -28,9 +29,10 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          false,
          false,
          false,
+         true,
          false,
-         false,
-         glslPackage},
+         glslPackage,
+         true},
         {Engine::Filament, "filament", "filament", L::Glsl330, {{"filament.mat", ".mat"}}, false, false, false, true, false, glslPackage},
         {Engine::Threejs,
          "threejs",
@@ -62,10 +64,11 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          true,
          false,
          false,
+         true,
          false,
-         false,
-         hlslPackage},
-        {Engine::Unreal, "unreal", "unreal", L::Hlsl, {{"hexc.ush", ".ush"}}, false, false, false, false, false, hlslPackage},
+         hlslPackage,
+         true},
+        {Engine::Unreal, "unreal", "unreal", L::Hlsl, {{"hexc.ush", ".ush"}}, false, false, false, true, false, hlslPackage, true},
     });
     return rows;
 }
@@ -84,8 +87,8 @@ std::optional<Diagnostic> refused(const Material& material, const EngineRow& e, 
     if (material.layers && !e.layers)
         return Diagnostic::make(Code::TargetUnsupported, {"--engine"}, "",
                                 "the " + std::string(e.name) +
-                                    " package does not carry a layered material yet: the Filament and Godot 3 packages "
-                                    "do (docs/engines.md#layered-materials)");
+                                    " package does not carry a layered material yet: the Godot, Filament, Unity and "
+                                    "Unreal packages do (docs/engines.md#layered-materials)");
     return std::nullopt;
 }
 
@@ -111,11 +114,13 @@ std::vector<EngineTexture> textures(const ShaderPlan& plan) {
     for (size_t i = 0; i < plan.textureCount(); ++i) {
         if (!plan.textureBound(i)) continue;
         EngineTexture t{plan.textureName(i), plan.textureVariable(i)};
-        const bool own = i < plan.slots.size() && plan.slots[i].array.empty();
-        if (own && plan.slots[i].pack) t.pack = &plan.packs[*plan.slots[i].pack];
-        if (own && !plan.slots[i].pack) t.slot = &plan.slots[i];
-        if (i >= plan.slots.size()) t.table = &plan.slots[plan.luts[i - plan.slots.size()]];
-        t.srgb = t.pack ? t.pack->srgb : t.slot && t.slot->slot->colorSpace == ColorSpace::Srgb && !t.slot->srgb;
+        const SlotPlan* sp = i < plan.slots.size() ? &plan.slots[i] : nullptr;
+        t.array = sp && !sp->array.empty();
+        if (sp && !t.array && sp->pack) t.pack = &plan.packs[*sp->pack];
+        if (sp && !t.array && !sp->pack) t.slot = sp;
+        if (!sp) t.table = &plan.slots[plan.luts[i - plan.slots.size()]];
+        // An array holds its layers' slots alike, colour space too (docs/material-format.md#texture-arrays).
+        t.srgb = t.pack ? t.pack->srgb : sp && !sp->pack && sp->slot->colorSpace == ColorSpace::Srgb && !sp->srgb;
         out.push_back(std::move(t));
     }
     std::sort(out.begin(), out.end(), [](const EngineTexture& a, const EngineTexture& b) { return a.name < b.name; });
@@ -135,7 +140,8 @@ std::vector<std::string> packageNames(const Material& material, const EngineRow&
 // The package's manifest names only files the package holds, or a file outside it from the package's folder: each
 // target's `file` is the package file that holds the functions, a slot's `texture` its copy in the package (the web
 // packages') or, where the caller says where the package goes (`source`, from CompileOptions::manifestPathsFrom), the
-// material's texture from the package's folder. Histogram tables and packed textures are files of the package already.
+// material's texture from the package's folder, as is a role's KTX2 array file. Histogram tables and packed textures
+// are files of the package already.
 std::string packageManifest(const Material& material, nlohmann::json manifest, const std::vector<OutputFile>& package) {
     for (auto& [target, entry] : manifest["targets"].items()) entry["file"] = package.front().name;
     for (nlohmann::json& s : manifest["slots"]) {
@@ -146,6 +152,10 @@ std::string packageManifest(const Material& material, nlohmann::json manifest, c
         else if (manifest.contains("source"))
             s["texture"] = manifest["source"]["textures"][slot.name];
     }
+    // A KTX2 array a role reads (a package that binds arrays) is its layers' slots' file, named from the package too.
+    if (manifest.contains("source") && manifest.contains("layers") && manifest["layers"].contains("arrays"))
+        for (nlohmann::json& a : manifest["layers"]["arrays"])
+            if (a.contains("file")) a["file"] = manifest["source"]["textures"][a["slots"][0].get<std::string>()];
     return manifest.dump(2) + "\n";
 }
 
@@ -177,7 +187,7 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
     const EngineRow& e = engineRow(engine);
     if (std::optional<Diagnostic> d = refused(material, e, options)) return {{}, {*d}, {}, {}};
     options = packageOptions(e, options);
-    CompiledMaterial compiled = compileMaterial(material, options);
+    CompiledMaterial compiled = compileMaterial(material, options, e.textureArrays);
     CompileResult r = std::move(compiled.result);
     if (!r.ok()) return r;
     const PackageInput input{

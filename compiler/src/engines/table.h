@@ -22,11 +22,12 @@ enum class EngineLanguage {
 
 // A texture the functions read, as every package binds it: the manifest's name ("<slot>", "<slot>.packed",
 // "<slot>.lut", "<role>.array"), its GLSL uniform, whether its sampler decodes sRGB (docs/bind-a-manifest.md, step 3;
-// an array's never), and the slot or pack whose texture it is, or the slot whose histogram table it is (none of them
-// for an array).
+// an array's as its layers' slots'), whether it is a layered role's 2D array texture, and the slot or pack whose texture
+// it is, or the slot whose histogram table it is (none of them for an array).
 struct EngineTexture {
     std::string name, uniform;
     bool srgb = false;
+    bool array = false;
     const SlotPlan* slot = nullptr;
     const PackPlan* pack = nullptr;
     const SlotPlan* table = nullptr;
@@ -60,6 +61,9 @@ struct EngineRow {
     // The package's own files, named without the "<engine>/" folder; a slot no input takes is a warning in
     // `diagnostics`, a texture the engine cannot load an error.
     std::vector<OutputFile> (*write)(const PackageInput& input, Diagnostics& diagnostics);
+    // Binds a layered role's textures as one 2D array texture where the plan can (planShader's functionArrays;
+    // docs/engines.md#layered-materials); else one texture per slot.
+    bool textureArrays = false;
 };
 
 const EngineRow& engineRow(Engine engine);

@@ -48,7 +48,7 @@ std::string unreadable(const SlotPlan& sp) {
 
 // a.refused: why the role's slots stay separate textures, or empty when they make one array (a KTX2 array's role: one
 // array even with one layer, as the file is). Where the settings expect an array (`arrays` "auto", specialised shader
-// code, not the functions output), also a.fix and a.unlike: how to get one, and the slot that refuses it.
+// code, not the functions output but an engine package's that binds arrays), also a.fix and a.unlike: how to get one, and the slot that refuses it.
 void refuse(const Layers& layers, const ShaderPlan& plan, LayerArrayPlan& a) {
     const std::vector<size_t>& slots = a.slots;
     if (!layers.arrays)
@@ -57,8 +57,8 @@ void refuse(const Layers& layers, const ShaderPlan& plan, LayerArrayPlan& a) {
         a.refused = "one layer: there is nothing to share";
     else if (plan.general)
         a.refused = "--no-specialise: the library's general functions read 2D textures";
-    else if (plan.functions)
-        a.refused = "the functions output (engine packages) binds one texture per slot (docs/engines.md)";
+    else if (plan.functions && !plan.functionArrays)
+        a.refused = "the functions output binds one texture per slot (docs/engines.md#layered-materials)";
     if (!a.refused.empty()) return;
     const Slot& first = *plan.slots[slots.front()].slot;
     for (size_t i : slots) {

@@ -356,7 +356,7 @@ Diagnostics checkTemplateReadsSlots(const Material& material, const CompileOptio
     return {readsNoSlot(readTemplateSlots(plan.templateSource, plan.templateName, ignored), material, plan.templateName)};
 }
 
-ShaderPlan planShader(const Material& material, const CompileOptions& options) {
+ShaderPlan planShader(const Material& material, const CompileOptions& options, bool functionArrays) {
     ShaderPlan plan;
     plan.materialName = material.name;
     plan.layout = options.layout;
@@ -368,6 +368,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     if (!loadTemplate(material, options, plan)) return plan;
     // The built-in `functions` named by a material is the functions output, as with --functions.
     plan.functions = options.functions || plan.templateName == TemplateRef::builtin("functions").path();
+    plan.functionArrays = functionArrays;
     planSlots(material, options, plan);
     planLayers(material, options.shareLattice, plan);
     if (plan.layers && !options.skipLayers) {  // every layer fetched at every pixel: the worst case is the expected one

@@ -179,6 +179,7 @@ struct ShaderPlan {
     bool slotTexturesDecoded = false;  // CompileOptions::slotTexturesDecoded: a KTX2 array role may take a texture per slot
     bool uvBottomLeft = false;         // CompileOptions::uvOrigin: the slots' functions take OpenGL's uv (v up)
     bool functions = false;            // CompileOptions::functions: the `functions` template, every slot read
+    bool functionArrays = false;       // planShader's functionArrays: the functions output reads a role's array
     std::optional<LayersPlan> layers;  // a layered material's, when the template reads a role
     Diagnostics diagnostics;           // warnings (e.g. a slot the template never reads) or errors
 
@@ -204,7 +205,10 @@ struct ShaderPlan {
     }
 };
 
-ShaderPlan planShader(const Material& material, const CompileOptions& options);
+// functionArrays: with CompileOptions::functions, a layered role's textures across layers are read as one 2D array texture
+// where they can be (docs/material-format.md#texture-arrays), as a whole shader reads them; off, one texture per slot.
+// For an engine package that binds texture arrays (engines/table.h); not an option of compile().
+ShaderPlan planShader(const Material& material, const CompileOptions& options, bool functionArrays = false);
 
 // The functions output's functions (CompileOptions::functions), in slot order: hexc_<slot>, and hexc_<slot>_normal
 // after a normal slot's; for a layered material, in role order: hexc_<role>, the blend, and hexc_<role>_normal after a
