@@ -395,6 +395,19 @@ def srgb_decoded_copy(png, out):
     return Path(out)
 
 
+def layered_controls(folder):
+    """The layered material's (layered_material, in `folder`) wrong bindings, slot -> file, each of which its check must
+    fail: two layers' textures exchanged (clay's and moss's albedo), and a splat channel swapped (a copy of the splat
+    map with green and blue exchanged: moss shows at the bottom, slate at the top). Not the same pair: a splat map with
+    red and green exchanged draws what clay's and moss's textures exchanged draw."""
+    folder = Path(folder)
+    w, h, n, rows = read_png(folder / "splat.png")
+    write_png(folder / "splat_swapped.png", w, h, lambda x, y: (rows[y][x * n], rows[y][x * n + 2], rows[y][x * n + 1]))
+    return {"a layer swapped: clay's and moss's albedo textures exchanged":
+            {"clay_albedo": folder / "moss_albedo.png", "moss_albedo": folder / "clay_albedo.png"},
+            "a splat channel swapped: the splat map's green and blue exchanged": {"splat0": folder / "splat_swapped.png"}}
+
+
 def drawn_materials(root, work):
     """The materials every executed engine draws against the fp64 reference: the examples rock (sRGB albedo, normal
     and roughness, hex-tiled with rotation) and tiles (rotation 0), the mixed material (non-square, packed, a DirectX
