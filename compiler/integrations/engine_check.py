@@ -186,12 +186,13 @@ def manifest(package_dir):
 LAYERS = ["clay", "moss", "slate"]
 
 
-def layered_material(folder):
+def layered_material(folder, arrays=True):
     """The engine tests' layered material, written into `folder`: three layers (albedo, sRGB, and a green-up normal map
     each, 64 x 64, hex-tiled twice across uv) blended linearly by a painted 32 x 32 splat map (RGB: one layer a
     channel, linear). The splat map is asymmetric both ways, so that a flipped u or v shows: clay (red) fills a block
     at the top-left with a hard border, the rest goes from moss (green) at the top to slate (blue) at the bottom
-    through a soft border."""
+    through a soft border. Without `arrays`, the same as `layered_separate`, its roles a texture per slot
+    (`"arrays": "off"`): a package's fallback where it binds arrays."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     size = 64
@@ -224,10 +225,11 @@ def layered_material(folder):
         layers.append({"name": name, "slots": [
             {"name": "albedo", "kind": "color", "texture": f"{name}_albedo.png", "colorspace": "srgb"},
             {"name": "normal", "kind": "normal", "texture": f"{name}_normal.png"}]})
-    material = {"name": "layered", "hextiling": {"tiling": 2, "rotation": 1.0}, "layers": layers,
-                "layer_blend": {"splat": ["splat.png"], "mode": "linear"}}
-    (folder / "layered.json").write_text(json.dumps(material, indent=2))
-    return folder / "layered.json"
+    name = "layered" if arrays else "layered_separate"
+    material = {"name": name, "hextiling": {"tiling": 2, "rotation": 1.0}, "layers": layers,
+                "layer_blend": {"splat": ["splat.png"], "mode": "linear", **({} if arrays else {"arrays": "off"})}}
+    (folder / f"{name}.json").write_text(json.dumps(material, indent=2))
+    return folder / f"{name}.json"
 
 
 def layered_errors(hexc, material, manifest, role, normal, size, rect, work):
@@ -410,6 +412,19 @@ def srgb_decoded_copy(png, out):
     return Path(out)
 
 
+def layered_controls(folder):
+    """The layered material's (layered_material, in `folder`) wrong bindings, slot -> file, each of which its check must
+    fail: two layers' textures exchanged (clay's and moss's albedo), and a splat channel swapped (a copy of the splat
+    map with green and blue exchanged: moss shows at the bottom, slate at the top). Not the same pair: a splat map with
+    red and green exchanged draws what clay's and moss's textures exchanged draw."""
+    folder = Path(folder)
+    w, h, n, rows = read_png(folder / "splat.png")
+    write_png(folder / "splat_swapped.png", w, h, lambda x, y: (rows[y][x * n], rows[y][x * n + 2], rows[y][x * n + 1]))
+    return {"a layer swapped: clay's and moss's albedo textures exchanged":
+            {"clay_albedo": folder / "moss_albedo.png", "moss_albedo": folder / "clay_albedo.png"},
+            "a splat channel swapped: the splat map's green and blue exchanged": {"splat0": folder / "splat_swapped.png"}}
+
+
 def drawn_materials(root, work):
     """The materials every executed engine draws against the fp64 reference: the examples rock (sRGB albedo, normal
     and roughness, hex-tiled with rotation) and tiles (rotation 0), the mixed material (non-square, packed, a DirectX
@@ -422,8 +437,6 @@ def refused(material, engine):
     """Why the docs say `engine`'s package refuses `material`, or None: a test asserts hexc refuses it and prints why."""
     if Path(material).stem == "rock_triplanar":
         return "a triplanar material has no functions output (docs/engines.md#slots-and-engine-inputs)"
-    if Path(material).suffix == ".json" and "layers" in json.loads(Path(material).read_text()) and engine not in ("godot3", "filament", "threejs", "babylon"):
-        return f"a layered material: the {engine} package does not carry layers yet (docs/engines.md#layered-materials)"
     return None
 
 

@@ -127,18 +127,22 @@ TEST(Functions, SpirvIsRefused) {
 
 namespace {
 
-std::string package(const std::string& name, Engine engine, Diagnostics* diagnostics = nullptr) {
-    ParseResult p = parseMaterialFile("materials/" + name + ".json");
-    CompileResult r = compileForEngine(*p.material, engine, {});
+// The first source file of `material`'s package for `engine` (its functions').
+std::string package(const Material& material, Engine engine, Diagnostics* diagnostics = nullptr) {
+    CompileResult r = compileForEngine(material, engine, {});
     EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
     if (diagnostics) *diagnostics = r.diagnostics;
     const std::string dir(toString(engine));
     for (const OutputFile& f : r.files)
-        if (f.name.starts_with(dir + "/" + std::filesystem::path(name).filename().string() + ".") && !f.name.ends_with(".json") &&
-            !f.name.ends_with(".png"))
+        if (f.name.starts_with(dir + "/" + material.name + ".") && !f.name.ends_with(".json") && !f.name.ends_with(".png"))
             return f.contents;
     ADD_FAILURE() << "no package source";
     return "";
+}
+
+std::string package(const std::string& name, Engine engine, Diagnostics* diagnostics = nullptr) {
+    ParseResult p = parseMaterialFile("materials/" + name + ".json");
+    return package(*p.material, engine, diagnostics);
 }
 
 // The data of a web package's module, as hexc wrote it.
@@ -270,8 +274,7 @@ TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {
 }
 
 // A layered material's package (Filament's) feeds the engine its roles' blends, reports the role without an input at
-// its first layer's slot, and the engines whose packages do not carry layers refuse it (Godot 3's and the web
-// engines' do: below).
+// its first layer's slot; every engine's package carries it.
 TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
     ParseResult p = parseMaterialFile("materials/terrain/terrain.json");
     ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
@@ -291,10 +294,36 @@ TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
                                                 })->contents);
     EXPECT_EQ(manifest["functions"][0], nlohmann::json::parse(R"({"name": "hexc_albedo", "role": "albedo", "parameters": "vec2 uv",
                                                                    "returns": "vec4", "value": "RGBA, linear"})"));
-    for (Engine refused : {Engine::Godot4, Engine::Unity, Engine::Unreal}) {
-        CompileResult web = compileForEngine(*p.material, refused, {});
-        EXPECT_NE(formatAll(web.diagnostics).find("error[HX300]"), std::string::npos) << formatAll(web.diagnostics);
-        EXPECT_TRUE(web.files.empty());
+    for (size_t e = 0; e <= size_t(hexc::kLastEngine); ++e) {
+        CompileResult each = compileForEngine(*p.material, Engine(e), {});
+        EXPECT_TRUE(each.ok()) << toString(Engine(e)) << formatAll(each.diagnostics);
+        EXPECT_FALSE(each.files.empty()) << toString(Engine(e));
+    }
+}
+
+// Godot 4, Unity and Unreal bind a layered role's textures as one texture array where the plan can, and a texture per
+// slot where it cannot (here: `arrays` "off"); Godot 3 and Filament a texture per slot (docs/engines.md#layered-materials).
+TEST(EnginePackages, ALayeredRoleIsATextureArrayWhereTheEngineBindsThem) {
+    ParseResult p = parseMaterialFile("materials/terrain/terrain.json");
+    ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
+    Material off = *p.material;
+    off.layers->arrays = false;
+    const std::map<Engine, std::pair<std::string, std::string>> declared = {
+        {Engine::Godot4,
+         {"uniform sampler2DArray hexcArr_albedo : source_color, filter_linear_mipmap, repeat_enable;",
+          "uniform sampler2D hexcTex_grass_albedo : source_color, filter_linear_mipmap, repeat_enable;"}},
+        {Engine::Unity, {"hexc_albedo: UV (Vector 2), hexcArr_albedo (Texture 2D Array)", "hexcTex_grass_albedo (Texture 2D)"}},
+        {Engine::Unreal, {"hexcArr_albedo (Texture2DArray)", ", hexcTex_grass_albedo, "}},
+        {Engine::Godot3,
+         {"uniform sampler2D hexcTex_grass_albedo : hint_albedo;", "uniform sampler2D hexcTex_grass_albedo : hint_albedo;"}},
+        {Engine::Filament, {"name : hexcTex_grass_albedo }", "name : hexcTex_grass_albedo }"}}};
+    for (const auto& [engine, texts] : declared) {
+        const std::string arrays = package(*p.material, engine), separate = package(off, engine);
+        const bool binds = texts.first != texts.second;
+        EXPECT_NE(arrays.find(texts.first), std::string::npos) << toString(engine) << arrays;
+        EXPECT_EQ(arrays.find("hexcTex_grass_albedo") == std::string::npos, binds) << toString(engine);
+        EXPECT_NE(separate.find(texts.second), std::string::npos) << toString(engine) << separate;
+        EXPECT_EQ(separate.find("hexcArr_"), std::string::npos) << toString(engine);
     }
 }
 

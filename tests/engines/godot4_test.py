@@ -3,7 +3,8 @@
 usage: godot4_test.py HEXC GLSLANGVALIDATOR
 
 No Godot 4 runs here (Debian has Godot 3 only), so its shader is checked mechanically: the file must be
-`shader_type spatial;`, one `uniform sampler2D NAME : HINTS;` line per texture with only Godot 4's hints
+`shader_type spatial;`, one `uniform sampler2D NAME : HINTS;` line per texture (`sampler2DArray` for a layered role's
+array) with only Godot 4's hints
 (source_color, filter_linear_mipmap, repeat_enable; source_color exactly on the sRGB textures the manifest names),
 hexc's functions and one `void fragment()`. Then the functions and the fragment body, wrapped as a GLSL 4.50 fragment
 shader (each uniform as a plain `uniform sampler2D`, Godot's built-ins UV, ALBEDO, NORMAL_MAP, ... as variables), must
@@ -11,8 +12,8 @@ compile with glslang: Godot 4's shading language is GLSL-like, and what it share
 one rule of its own that GLSL lacks: a global is a constant with its value (`const uint x = uint(0);`), never a bare
 `uint x;` ("Expected initialization of constant", as Godot 3 says). Its other rules beyond GLSL (and rendering) are not
 checked: a limit, since no Godot 4 runs here. For every material under materials/ (engine_check.matrix_materials; the
-ones the docs say the package refuses must be refused, and are listed) and the engine tests' mixed material, at both
-uv origins.
+ones the docs say the package refuses must be refused, and are listed), the engine tests' mixed material and their
+layered one, its roles as texture arrays and as a texture per slot, at both uv origins.
 """
 import json
 import re
@@ -23,7 +24,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "compiler" / "integrations"))
-from engine_check import matrix_materials, mixed_material, refused  # noqa: E402
+from engine_check import layered_material, matrix_materials, mixed_material, refused  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from hlsl_test import report  # noqa: E402
@@ -48,14 +49,14 @@ def wrap(shader, srgb, problems):
         if line[:1].isalpha() and line.endswith(";") and not line.startswith(("uniform ", "const ")):
             problems.append(f"a global without `const` and its value, which Godot refuses: {line}")
         if line.startswith("uniform "):
-            m = re.fullmatch(r"uniform sampler2D (\w+) : ([\w, ]+);", line)
-            hints = set(m.group(2).split(", ")) if m else set()
+            m = re.fullmatch(r"uniform (sampler2D|sampler2DArray) (\w+) : ([\w, ]+);", line)
+            hints = set(m.group(3).split(", ")) if m else set()
             if not m or not hints <= HINTS or not {"filter_linear_mipmap", "repeat_enable"} <= hints:
                 problems.append(f"not a Godot 4 texture uniform with its sampler hints: {line}")
                 continue
-            if ("source_color" in hints) != (m.group(1) in srgb):
+            if ("source_color" in hints) != (m.group(2) in srgb):
                 problems.append(f"source_color should be on the sRGB textures {sorted(srgb)} only: {line}")
-            uniforms.append(f"uniform sampler2D {m.group(1)};")
+            uniforms.append(f"uniform {m.group(1)} {m.group(2)};")
         else:
             body.append(line)
     text = "\n".join(body)
@@ -70,13 +71,16 @@ def wrap(shader, srgb, problems):
 
 def srgb_textures(manifest):
     """The texture uniforms the sampler decodes from sRGB: a slot's own (hexcTex_<slot>; not a slot the shader decodes,
-    `"decode": "shader"`) or a packed texture holding one."""
+    `"decode": "shader"`), a packed texture holding one, or a layered role's array of them."""
     srgb = {f"hexcTex_{s['name']}" for s in manifest["slots"] if s.get("colorspace") == "srgb" and "decode" not in s}
     for p in manifest.get("packed_textures", []):
         names = {f"hexcTex_{n}" for n in p.get("slots", [])}
         srgb -= names
         if p["colorspace"] == "srgb":
             srgb.add(manifest["targets"]["glsl"]["textures"][p["name"]]["uniform"])
+    for a in manifest.get("layers", {}).get("arrays", []):
+        if a["array"] and a["colorspace"] == "srgb":
+            srgb.add(manifest["targets"]["glsl"]["textures"][a["binding"]["texture"]]["uniform"])
     return srgb
 
 
@@ -85,7 +89,8 @@ def main():
     failures, count = [], 0
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        for material in matrix_materials(ROOT) + [mixed_material(tmp / "mixed")]:
+        layered = [layered_material(tmp / "layered"), layered_material(tmp / "layered", arrays=False)]
+        for material in matrix_materials(ROOT) + [mixed_material(tmp / "mixed")] + layered:
             for bottom_left in (False, True):
                 out = tmp / f"{material.stem}_{int(bottom_left)}"
                 args = [hexc, str(material), "--engine", "godot4", "-q", "-o", str(out)] + (["--uv-bottom-left"] if bottom_left else [])

@@ -6,14 +6,16 @@ Neither engine runs here, so each package is compiled as the engine would compil
 the engine's shader library (tests/engines/stubs/, from the engines' documented declarations):
 
 - Unity: every Shader Graph Custom Function entry point (`hexc_<slot>_float`, with the ports the file's header lists)
-  called from a fragment shader as Shader Graph's generated code calls it (`UnityTexture2D` ports); the URP shader's
-  HLSLPROGRAM block, vertex and fragment stage.
+  called from a fragment shader as Shader Graph's generated code calls it (`UnityTexture2D` ports, `UnityTexture2DArray`
+  for a Texture 2D Array port); the URP shader's HLSLPROGRAM block, vertex and fragment stage.
 - Unreal: every Custom node the `.ush` header lists, as the function Unreal generates for it (its inputs as parameters,
-  a Texture Object input as `Texture2D X, SamplerState XSampler`), called from a fragment shader.
+  a Texture Object input as `Texture2D X, SamplerState XSampler`, `Texture2DArray X, ...` for a texture array's), called
+  from a fragment shader.
 
-For every example under materials/ (a layered or triplanar one must be refused with HX300, as docs/engines.md says)
-and the engine tests' mixed material (packed slots, 300 x 170 textures, a DirectX-convention normal map): rock and
-mixed at both uv origins, the others at one, alternately. Then a package with a mistyped function must be refused by the same compile.
+For every example under materials/ (a triplanar one must be refused with HX300, as docs/engines.md says; the terrain,
+layered, with its roles as texture arrays), the engine tests' mixed material (packed slots, 300 x 170 textures, a DirectX-convention normal map) and their
+layered one (its roles as texture arrays, and as a texture per slot with `"arrays": "off"`): rock and mixed at both uv
+origins, the others at one, alternately. Then a package with a mistyped function must be refused by the same compile.
 """
 import json
 import os
@@ -25,7 +27,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "compiler" / "integrations"))
-from engine_check import mixed_material  # noqa: E402
+from engine_check import layered_material, mixed_material  # noqa: E402
 
 STUBS = ROOT / "tests" / "engines" / "stubs"
 TYPES = {"1": "float", "2": "float2", "3": "float3", "4": "float4"}
@@ -46,21 +48,24 @@ def header_lines(text):
 
 def unity_consumer(hlsl_name, hlsl_text):
     """A fragment shader calling every Custom Function entry point as Shader Graph's generated code does."""
-    node = re.compile(r"^(\w+): UV \(Vector 2\)((?:, \w+ \(Texture 2D\))*) -> Out \(Vector (\d)\)$")
-    textures, calls = [], []
+    node = re.compile(r"^(\w+): UV \(Vector 2\)((?:, \w+ \(Texture 2D(?: Array)?\))*) -> Out \(Vector (\d)\)$")
+    textures, arrays, calls = [], set(), []
     for line in header_lines(hlsl_text):
         m = node.match(line)
         assert m, f"unexpected node line: {line}"
-        ports = re.findall(r", (\w+) \(Texture 2D\)", m.group(2))
-        textures += [t for t in ports if t not in textures]
-        args = "".join(f", UnityBuildTexture2DStructNoScale({t})" for t in ports)
+        ports = re.findall(r", (\w+) \(Texture 2D( Array)?\)", m.group(2))
+        textures += [t for t, _ in ports if t not in textures]
+        arrays |= {t for t, array in ports if array}
+        args = "".join(f", UnityBuildTexture2DArrayStruct({t})" if array else f", UnityBuildTexture2DStructNoScale({t})"
+                       for t, array in ports)
         calls.append(f"    {{ {TYPES[m.group(3)]} Out; {m.group(1)}_float(uv{args}, Out); sum{SWIZZLE[m.group(3)]} += Out; }}")
     assert calls, "no Custom Function node listed"
     return "\n".join([
         '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"',
         '#include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Texture.hlsl"',
         f'#include "{hlsl_name}"',
-        *[f"TEXTURE2D({t});\nSAMPLER(sampler{t});\nfloat4 {t}_TexelSize;" for t in textures],
+        *[f"TEXTURE2D_ARRAY({t});\nSAMPLER(sampler{t});" if t in arrays else
+          f"TEXTURE2D({t});\nSAMPLER(sampler{t});\nfloat4 {t}_TexelSize;" for t in textures],
         "float4 main(float2 uv : TEXCOORD0) : SV_Target",
         "{",
         "    float4 sum = 0.0;",
@@ -71,14 +76,16 @@ def unity_consumer(hlsl_name, hlsl_text):
 
 def unreal_consumer(ush_name, ush_text):
     """A fragment shader calling every Custom node of the header as the function Unreal generates for it."""
-    node = re.compile(r"^(.+) <- CMOT Float (\d) \(UV((?:, \w+)*)\): (.*)$")
-    textures, functions, calls = [], [], []
+    node = re.compile(r"^(.+) <- CMOT Float (\d) \(UV((?:, \w+(?: \(Texture2DArray\))?)*)\): (.*)$")
+    textures, types, functions, calls = [], {}, [], []
     for i, line in enumerate(header_lines(ush_text)):
         m = node.match(line)
         assert m, f"unexpected node line: {line}"
-        inputs = re.findall(r", (\w+)", m.group(3))
+        found = re.findall(r", (\w+)( \(Texture2DArray\))?", m.group(3))  # a Texture Object input of a texture array
+        inputs = [t for t, _ in found]
+        types |= {t: "Texture2DArray" if array else "Texture2D" for t, array in found}
         textures += [t for t in inputs if t not in textures]
-        params = "".join(f", Texture2D {t}, SamplerState {t}Sampler" for t in inputs)
+        params = "".join(f", {types[t]} {t}, SamplerState {t}Sampler" for t in inputs)
         functions.append(f"MaterialFloat{'' if m.group(2) == '1' else m.group(2)} CustomExpression{i}(FMaterialPixelParameters Parameters, MaterialFloat2 UV{params})\n"
                          f"{{\n    {m.group(4)}\n}}\n")
         args = "".join(f", {t}, {t}Sampler" for t in inputs)
@@ -87,7 +94,7 @@ def unreal_consumer(ush_name, ush_text):
     return "\n".join([
         '#include "/Engine/Private/Common.ush"',
         f'#include "{ush_name}"',
-        *[f"Texture2D {t};\nSamplerState {t}Sampler;" for t in textures],
+        *[f"{types[t]} {t};\nSamplerState {t}Sampler;" for t in textures],
         *functions,
         "float4 main(float2 uv : TEXCOORD0) : SV_Target",
         "{",
@@ -116,7 +123,7 @@ def check(glslang, source, path, stage, entry, stubs, failures, what):
 
 # What the docs say these packages refuse (docs/engines.md), by the key that makes a material so: compiled, it must
 # be refused with HX300, and is listed as left out.
-REFUSED = {"layers": "layered: HX300, docs/engines.md#layered-materials", "projection": "triplanar, no functions output: HX300, docs/engines.md"}
+REFUSED = {"projection": "triplanar, no functions output: HX300, docs/engines.md"}
 
 
 def refused_why(material):
@@ -196,8 +203,10 @@ def main():
         # explicit level).
         examples = sorted([*ROOT.glob("materials/*.json"), *ROOT.glob("materials/terrain/*.json"), *ROOT.glob("materials/mtlx/*.mtlx")])
         examples = [m for m in examples if m.suffix == ".mtlx" or {"slots", "layers"} & json.loads(m.read_text()).keys()]
-        materials = examples + [mixed_material(tmp / "mixed"), ROOT / "tests" / "golden" / "materials" / "histogram.json"]
-        both = {ROOT / "materials" / "rock.json", materials[-2]}  # rock and mixed at both uv origins, the rest alternately
+        mixed = mixed_material(tmp / "mixed")
+        layered = [layered_material(tmp / "layered"), layered_material(tmp / "layered", arrays=False)]  # arrays, and not
+        materials = examples + [mixed, *layered, ROOT / "tests" / "golden" / "materials" / "histogram.json"]
+        both = {ROOT / "materials" / "rock.json", mixed}  # rock and mixed at both uv origins, the rest alternately
         packages = [(m, bl) for i, m in enumerate(materials) for bl in ((False, True) if m in both else (i % 2 == 1,))]
         for material, bottom_left in packages:
             out = tmp / f"{material.stem}_{'bl' if bottom_left else 'tl'}"

@@ -2,9 +2,8 @@
 """Every engine package's manifest names only files that are there: each path it names (every `file`, each slot's
 `texture`, the `source` paths) resolves from the package's folder to an existing file, for every engine package of
 every example material, built as docs/engines.md says (`hexc M --engine ... -o out/`). An engine that refuses a
-material (HX300, as docs/engines.md says: layers for the engines that do not carry them, triplanar, the web engines'
-float tables) writes no package for it; the terrain's three.js and Babylon.js packages (layered, their roles' textures
-assembled into arrays) are written and checked.
+material (HX300, as docs/engines.md says: triplanar, the web engines' float tables) writes no package for it; every
+engine's package of a layered example (the terrain) is written and checked.
 
 Negative control: a package whose manifest names its functions' source as the functions output (`.functions.glsl`,
 not in the package) and a texture relative to the material, not to the package, must be found wrong.
@@ -18,9 +17,9 @@ import sys
 from pathlib import Path
 
 ENGINES = ["godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal", "threejs-webgpu"]
-# The engines whose packages carry a layered material (docs/engines.md#layered-materials): a layered example's package
+# Every engine's package carries a layered material (docs/engines.md#layered-materials): a layered example's package
 # for each must be written, not refused.
-LAYERED = ["godot3", "filament", "threejs", "babylon", "threejs-webgpu"]
+LAYERED = ENGINES
 
 
 def named_paths(manifest):

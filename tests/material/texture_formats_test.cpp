@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "hexc/compiler.h"
+#include "hexc/engines.h"
 #include "hexc/image.h"
 #include "hexc/material.h"
 #include "support.h"
@@ -319,6 +320,15 @@ TEST(TextureFormats, Ktx2ArrayRolesBindTheFileOrAreRefused) {
     const CompileResult page = compile(*r.material, general);
     EXPECT_TRUE(page.ok()) << formatAll(page.diagnostics);
     EXPECT_EQ(page.glsl.find("texture2DArray"), std::string::npos);
+    // An engine package that binds arrays binds the file too, and its manifest names it from the package's folder.
+    CompileOptions package;
+    package.manifestPathsFrom = dir() / "out";
+    const CompileResult godot4 = compileForEngine(*r.material, Engine::Godot4, package);
+    ASSERT_TRUE(godot4.ok()) << formatAll(godot4.diagnostics);
+    for (const OutputFile& f : godot4.files)
+        if (f.name.ends_with(".manifest.json")) manifest = nlohmann::json::parse(f.contents);
+    EXPECT_EQ(manifest["layers"]["arrays"][0]["file"], manifest["source"]["textures"]["grass_albedo"]);
+    EXPECT_NE(manifest["layers"]["arrays"][0]["file"], array.string());
 }
 
 // A two-channel BC5 map has r and g: a scalar slot may read g, not b.

@@ -84,6 +84,9 @@ TEST(LayerArrays, OffOneLayerGeneralCodeAndTheFunctionsOutputKeepSeparateTexture
     functions.functions = true;
     EXPECT_EQ(arrayOf(planShader(terrain(), functions), "albedo").refused,
               "the functions output (engine packages) binds one texture per slot (docs/engines.md)");
+    // An engine package that binds arrays: as a whole shader.
+    functions.functionArrays = FunctionArrays::All;
+    EXPECT_EQ(arrayOf(planShader(terrain(), functions), "albedo").refused, "");
     const Material one = loadMaterial("tests/execution/layers/one.json");
     const ShaderPlan plan = planShader(one, {});
     ASSERT_FALSE(plan.layers->arrays.empty());

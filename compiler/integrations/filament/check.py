@@ -12,7 +12,8 @@ red marker Filament draws over the screen's top-left corner (marker.mat, a secon
   the function's value, one matc run per package), within the bound derived in engine_check.py; the probe's bumps
   lit by a Filament directional light from the right and from the top: 15 of 15 lit from the light's side;
 - negative controls, which must fail: the package built for the other uv origin, a mesh mirrored in u, the normal
-  map of the other green convention, the albedo decoded twice, a NaN value.
+  map of the other green convention, the albedo decoded twice, a NaN value; the layered material with two layers'
+  textures exchanged and with a splat channel swapped.
 
 Post-processing is off: Filament then writes the linear value straight into the 8-bit swap chain (with it on, its
 read-back under llvmpipe is not the frame). The frame is used as readPixels returns it (top row first, Renderer.h),
@@ -181,13 +182,16 @@ def check(hexc, renderer, work):
     for material, origin in ((bumps, "bottom-left"), (bumps, "top-left"), (ec.probe_material(work / "probe", "dx", albedo=False), "bottom-left")):
         for side, out in lit(hexc, renderer, work, material, origin).items():
             failed += ec.lit_verdict(out, f"{material.stem}, {origin}", side)
-    lit(hexc, renderer, work, probe, "bottom-left", lights={"upper-right": "0.4,0.4,0.8"})  # docs/engines.md's screenshot
+    for material in (probe, drawn[3]):  # docs/engines.md's screenshots: the probe, the layered material
+        lit(hexc, renderer, work, material, "bottom-left", lights={"upper-right": "0.4,0.4,0.8"})
     decoded = ec.srgb_decoded_copy(work / "probe" / "probe_albedo.png", work / "probe" / "probe_albedo_decoded.png")
     failed += views.check(probe, "top-left", "bottom-left", "v flipped: the package built without --uv-bottom-left")
     failed += views.check(probe, "bottom-left", control="u mirrored: a mesh whose u runs right to left", mirror=True)
     failed += views.check(probe, "bottom-left", control="sRGB decoded twice: a linearised copy of the albedo bound as sRGB",
                               swap={"albedo": decoded})
     failed += views.check(probe, "bottom-left", control="a NaN value: the albedo function times NaN", function=2)
+    for what, swap in ec.layered_controls(drawn[3].parent).items():  # the layered view's albedo role, function 0
+        failed += views.check(drawn[3], "top-left", control=what, swap=swap)
     flipped = lit(hexc, renderer, work, bumps, "top-left", mesh="bottom-left")["top"]
     failed += ec.lit_verdict(flipped, "v flipped: the bumps package built without --uv-bottom-left, on a GL mesh", "top", True)
     green = lit(hexc, renderer, work, bumps, "bottom-left", swap={"normal": work / "probe" / "probe_normal_dx.png"})["top"]

@@ -10,7 +10,8 @@ xvfb-run) of the project in project/, every frame with a red marker Godot draws 
   engine_check.py; the probe's bumps lit by a Godot light on Godot's own QuadMesh, from the right and from the top:
   15 of 15 lit from the light's side, for a green-up and a DirectX map;
 - negative controls, which must fail: the package built for the other uv origin, a mesh mirrored in u, the normal
-  map of the other green convention, the albedo decoded twice, a NaN value.
+  map of the other green convention, the albedo decoded twice, a NaN value; the layered material with two layers'
+  textures exchanged and with a splat channel swapped.
 
 The frame is read back as Godot's docs say (get_data() then flip_y), and every image must show the marker at its
 top-left.
@@ -149,6 +150,12 @@ def controls(hexc, jobs, work):
              textures(pkg, {"albedo": decoded}), rect),
             ("a NaN value: the albedo function times NaN", value_shader(pkg, albedo, nan=True), textures(pkg), rect)):
         jobs.add(shader, tex, value_check(hexc, probe, pkg, albedo, rect, what), f"control_{len(jobs.jobs)}", uv=uv)
+    layered = work / "layered" / "layered.json"
+    lpkg = package(hexc, layered, work)
+    role = next(f for f in ec.manifest(lpkg)["functions"] if f.get("role") == "albedo")
+    for what, swap in ec.layered_controls(layered.parent).items():
+        jobs.add(value_shader(lpkg, role), textures(lpkg, swap), value_check(hexc, layered, lpkg, role, rect_for(ec.manifest(lpkg)), what),
+                 f"control_{len(jobs.jobs)}", uv=rect_for(ec.manifest(lpkg)))
     bumps_bl, bumps_pkg = package(hexc, bumps, work, bottom_left=True), package(hexc, bumps, work)
     jobs.add(str(next(bumps_bl.glob("*.shader"))), textures(bumps_bl),
              lit_check("v flipped: the bumps package built with --uv-bottom-left", "top", True), "control_bumps_v", light=TOP)

@@ -14,6 +14,11 @@ ${nodes}
 // An explicit level (a histogram table, one level per slot) and a plain-tiled slot's implicit one.
 #define HEXC_SAMPLE_LEVEL(tex, smp, st, lod) SAMPLE_TEXTURE2D_LOD(tex, smp, (st) * float2(1.0, -1.0), lod)
 #define HEXC_SAMPLE(tex, smp, st) SAMPLE_TEXTURE2D(tex, smp, (st) * float2(1.0, -1.0))
+// The same on a layered role's 2D array texture: (s, t, layer), the layer a whole number.
+#define HEXC_SAMPLE_ARRAY_GRAD(tex, smp, stl, dx, dy) \
+    SAMPLE_TEXTURE2D_ARRAY_GRAD(tex, smp, (stl).xy * float2(1.0, -1.0), (stl).z, (dx) * float2(1.0, -1.0), (dy) * float2(1.0, -1.0))
+#define HEXC_SAMPLE_ARRAY_LEVEL(tex, smp, stl, lod) SAMPLE_TEXTURE2D_ARRAY_LOD(tex, smp, (stl).xy * float2(1.0, -1.0), (stl).z, lod)
+#define HEXC_SAMPLE_ARRAY(tex, smp, stl) SAMPLE_TEXTURE2D_ARRAY(tex, smp, (stl).xy * float2(1.0, -1.0), (stl).z)
 
 // hexc's functions for this material (hexc --functions, HLSL), each taking the textures it reads.
 ${functions}

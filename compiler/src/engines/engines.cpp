@@ -17,9 +17,9 @@ namespace {
 // In Engine order; a missing row does not compile.
 const std::array<EngineRow, kEngineCount>& engineRows() {
     using L = EngineLanguage;
-    // engine, name, shown, language, files, uv bottom-left, copies textures, unroll loops, layers, wgsl, writer, arrays
+    // engine, name, shown, language, files, uv bottom-left, copies textures, unroll loops, wgsl, writer, arrays
     static const std::array<EngineRow, kEngineCount> rows = byEnum<kLastEngine, EngineRow>({
-        {Engine::Godot3, "godot3", "godot3", L::Glsl330, {{"godot3.shader", ".shader"}}, false, false, true, true, false, glslPackage},
+        {Engine::Godot3, "godot3", "godot3", L::Glsl330, {{"godot3.shader", ".shader"}}, false, false, true, false, glslPackage},
         {Engine::Godot4,
          "godot4",
          "godot4",
@@ -29,9 +29,9 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          false,
          false,
          false,
-         false,
-         glslPackage},
-        {Engine::Filament, "filament", "filament", L::Glsl330, {{"filament.mat", ".mat"}}, false, false, false, true, false, glslPackage},
+         glslPackage,
+         FunctionArrays::All},
+        {Engine::Filament, "filament", "filament", L::Glsl330, {{"filament.mat", ".mat"}}, false, false, false, false, glslPackage},
         {Engine::Threejs,
          "threejs",
          "three.js",
@@ -40,7 +40,6 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          true,
          true,
          false,
-         true,
          false,
          webPackage,
          FunctionArrays::All},
@@ -53,7 +52,6 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          true,
          false,
          true,
-         true,
          webPackage,
          FunctionArrays::Linear},
         {Engine::Unity,
@@ -65,9 +63,9 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          false,
          false,
          false,
-         false,
-         hlslPackage},
-        {Engine::Unreal, "unreal", "unreal", L::Hlsl, {{"hexc.ush", ".ush"}}, false, false, false, false, false, hlslPackage},
+         hlslPackage,
+         FunctionArrays::All},
+        {Engine::Unreal, "unreal", "unreal", L::Hlsl, {{"hexc.ush", ".ush"}}, false, false, false, false, hlslPackage, FunctionArrays::All},
         {Engine::ThreejsWebgpu,
          "threejs-webgpu",
          "three.js WebGPU",
@@ -76,7 +74,6 @@ const std::array<EngineRow, kEngineCount>& engineRows() {
          true,
          true,
          false,
-         true,
          true,
          webPackage},
     });
@@ -98,15 +95,11 @@ std::string enginesWith(bool EngineRow::*what) {
 }
 
 // What the engine refuses of this compile, and why (HX300), or nothing.
-std::optional<Diagnostic> refused(const Material& material, const EngineRow& e, const CompileOptions& options) {
+std::optional<Diagnostic> refused(const EngineRow& e, const CompileOptions& options) {
     if (!e.wgsl && asksForWgsl(options))
         return Diagnostic::make(Code::TargetUnsupported, {"--targets"}, "",
                                 "the " + std::string(e.name) + " package has no WGSL form: --targets wgsl with --engine is for " +
                                     enginesWith(&EngineRow::wgsl) + " (docs/engines.md); leave wgsl out for this engine");
-    if (material.layers && !e.layers)
-        return Diagnostic::make(Code::TargetUnsupported, {"--engine"}, "",
-                                "the " + std::string(e.name) + " package does not carry a layered material yet: the " +
-                                    enginesWith(&EngineRow::layers) + " packages do (docs/engines.md#layered-materials)");
     return std::nullopt;
 }
 
@@ -176,7 +169,8 @@ std::vector<std::string> packageNames(const Material& material, const EngineRow&
 // The package's manifest names only files the package holds, or a file outside it from the package's folder: each
 // target's `file` is the package file that holds the functions, a slot's `texture` its copy in the package (the web
 // packages') or, where the caller says where the package goes (`source`, from CompileOptions::manifestPathsFrom), the
-// material's texture from the package's folder. Histogram tables and packed textures are files of the package already.
+// material's texture from the package's folder, as is a role's KTX2 array file. Histogram tables and packed textures
+// are files of the package already.
 std::string packageManifest(const Material& material, nlohmann::json manifest, const std::vector<OutputFile>& package) {
     for (auto& [target, entry] : manifest["targets"].items()) entry["file"] = package.front().name;
     for (nlohmann::json& s : manifest["slots"]) {
@@ -187,6 +181,10 @@ std::string packageManifest(const Material& material, nlohmann::json manifest, c
         else if (manifest.contains("source"))
             s["texture"] = manifest["source"]["textures"][slot.name];
     }
+    // A KTX2 array a role reads (a package that binds arrays) is its layers' slots' file, named from the package too.
+    if (manifest.contains("source") && manifest.contains("layers") && manifest["layers"].contains("arrays"))
+        for (nlohmann::json& a : manifest["layers"]["arrays"])
+            if (a.contains("file")) a["file"] = manifest["source"]["textures"][a["slots"][0].get<std::string>()];
     return manifest.dump(2) + "\n";
 }
 
@@ -216,7 +214,7 @@ std::optional<Engine> engineNamed(std::string_view name) {
 
 CompileResult compileForEngine(const Material& material, Engine engine, CompileOptions options) {
     const EngineRow& e = engineRow(engine);
-    if (std::optional<Diagnostic> d = refused(material, e, options)) return {{}, {*d}, {}, {}};
+    if (std::optional<Diagnostic> d = refused(e, options)) return {{}, {*d}, {}, {}};
     options = packageOptions(e, options);
     CompiledMaterial compiled = compileMaterial(material, options);
     CompileResult r = std::move(compiled.result);

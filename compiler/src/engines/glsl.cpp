@@ -132,7 +132,8 @@ std::string declarations(const std::vector<EngineTexture>& used, Engine engine) 
         else if (engine == Engine::Godot3)
             out += "uniform sampler2D " + t.uniform + (t.srgb ? " : hint_albedo" : "") + ";\n";
         else
-            out += "uniform sampler2D " + t.uniform + " : " + (t.srgb ? "source_color, " : "") + "filter_linear_mipmap, repeat_enable;\n";
+            out += std::string("uniform ") + (t.array ? "sampler2DArray " : "sampler2D ") + t.uniform + " : " +
+                   (t.srgb ? "source_color, " : "") + "filter_linear_mipmap, repeat_enable;\n";
     }
     if (engine == Engine::Filament && out.ends_with(",\n")) out.erase(out.size() - 2);  // the template ends the line
     return out;

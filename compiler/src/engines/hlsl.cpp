@@ -2,10 +2,13 @@
 // textures it reads as parameters (Shader Graph's and Unreal's Custom nodes pass textures in; neither lets an include
 // file declare global ones), inside the engine's templates (compiler/integrations/unity/, unreal/). The parameters are
 // added to SPIRV-Cross's HLSL of the functions, compiled in the same step: text of a known grammar (a global
-// `Texture2D<T> name : register(tN);` or `SamplerState name : register(sN);` per line, a function's head on one line,
-// texture reads `name.Method(sampler, `), which the plain searches below rely on.
+// `Texture2D<T> name : register(tN);` (`Texture2DArray<T>` for a layered role's array) or `SamplerState name :
+// register(sN);` per line, a function's head on one line, texture reads `name.Method(sampler, `), which the plain
+// searches below rely on. Which textures are arrays comes from the plan (PackageInput::textures), not from the text.
 #include <algorithm>
+#include <array>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "codegen/codegen.h"
@@ -19,16 +22,23 @@ namespace {
 
 // How an engine passes a texture into a function and reads it: Unity through its Core RP macros (with the row flip of
 // its storage, HEXC_SAMPLE_GRAD in unity/hexc.hlsl), Unreal as HLSL's own objects, the sampler named as its Custom
-// node names a Texture Object input's: <input>Sampler.
+// node names a Texture Object input's: <input>Sampler. {T}: the texture's name; {M}: the method; param and args per
+// kind of texture: [0] a 2D texture, [1] a layered role's 2D array texture.
 struct Style {
     Engine engine;
-    std::string param, args, sample;  // {T}: the texture's name; {M}: the method
+    std::array<std::string, 2> param, args;
+    std::string sample;
 };
 
 const Style& style(Engine engine) {
-    static const Style unity = {Engine::Unity, "TEXTURE2D_PARAM({T}, sampler_{T})", "TEXTURE2D_ARGS({T}, sampler_{T})",
+    static const Style unity = {Engine::Unity,
+                                {"TEXTURE2D_PARAM({T}, sampler_{T})", "TEXTURE2D_ARRAY_PARAM({T}, sampler_{T})"},
+                                {"TEXTURE2D_ARGS({T}, sampler_{T})", "TEXTURE2D_ARRAY_ARGS({T}, sampler_{T})"},
                                 "HEXC_{M}({T}, sampler_{T}, "};
-    static const Style unreal = {Engine::Unreal, "Texture2D {T}, SamplerState {T}Sampler", "{T}, {T}Sampler", "{T}.{M}({T}Sampler, "};
+    static const Style unreal = {Engine::Unreal,
+                                 {"Texture2D {T}, SamplerState {T}Sampler", "Texture2DArray {T}, SamplerState {T}Sampler"},
+                                 {"{T}, {T}Sampler", "{T}, {T}Sampler"},
+                                 "{T}.{M}({T}Sampler, "};
     return engine == Engine::Unity ? unity : unreal;
 }
 
@@ -38,19 +48,12 @@ std::string named(std::string pattern, const std::string& texture, const std::st
     return pattern;
 }
 
-// The unity/hexc.hlsl macro (after HEXC_) for an HLSL texture method SPIRV-Cross writes.
-std::string unityMacro(const std::string& method) {
-    static const std::map<std::string, std::string> macros = {
-        {"SampleGrad", "SAMPLE_GRAD"}, {"SampleLevel", "SAMPLE_LEVEL"}, {"Sample", "SAMPLE"}};
+// The unity/hexc.hlsl macro (after HEXC_) for an HLSL texture method SPIRV-Cross writes, on a 2D or an array texture.
+std::string unityMacro(const std::string& method, bool array) {
+    static const std::map<std::string, std::string> macros = {{"SampleGrad", "_GRAD"}, {"SampleLevel", "_LEVEL"}, {"Sample", ""}};
     const auto m = macros.find(method);
     if (m == macros.end()) throw std::runtime_error("no Unity macro for " + method);  // a hexc bug
-    return m->second;
-}
-
-std::string joined(const std::vector<std::string>& texts, const std::string& pattern) {
-    std::string out;
-    for (const std::string& t : texts) out += (out.empty() ? "" : ", ") + named(pattern, t);
-    return out;
+    return std::string(array ? "SAMPLE_ARRAY" : "SAMPLE") + m->second;
 }
 
 // SPIRV-Cross's HLSL of the functions output: its global textures (in declaration order), what precedes the first
@@ -62,6 +65,7 @@ struct Function {
 
 struct Functions {
     std::vector<std::string> textures;
+    std::set<std::string> arrays;  // those of `textures` that are 2D array textures
     std::string constants;
     std::vector<Function> functions;
 };
@@ -75,10 +79,13 @@ size_t findIdentifier(const std::string& text, const std::string& word, size_t a
 
 bool isIdentifier(std::string_view s) { return !s.empty() && std::all_of(s.begin(), s.end(), isIdentifierChar); }
 
-// The global texture a line declares (`Texture2D<float4> name : register(t1);`), or "" (a sampler's too).
+// The global texture a line declares (`Texture2D<float4> name : register(t1);`, `Texture2DArray<float4> ...`), or ""
+// (a sampler's too).
 std::string declaredTexture(const std::string& line) {
     const size_t close = line.find("> "), colon = line.find(" : register(");
-    if (!line.starts_with("Texture2D<") || close == std::string::npos || colon == std::string::npos || !line.ends_with(");")) return "";
+    if (!(line.starts_with("Texture2D<") || line.starts_with("Texture2DArray<")) || close == std::string::npos ||
+        colon == std::string::npos || !line.ends_with(");"))
+        return "";
     const std::string name = line.substr(close + 2, colon - close - 2);
     return isIdentifier(name) ? name : "";
 }
@@ -91,8 +98,10 @@ std::string functionHead(const std::string& line) {
     return isIdentifier(line.substr(0, space)) && isIdentifier(name) ? name : "";
 }
 
-Functions parse(const std::string& hlsl) {
+Functions parse(const std::string& hlsl, const std::vector<EngineTexture>& textures) {
     Functions out;
+    for (const EngineTexture& t : textures)
+        if (t.array) out.arrays.insert(t.uniform);
     std::istringstream in(hlsl);
     for (std::string line; std::getline(in, line);) {
         if (const std::string texture = declaredTexture(line); !texture.empty()) {
@@ -110,6 +119,13 @@ Functions parse(const std::string& hlsl) {
     return out;
 }
 
+// `texts` each as `patterns` says for its kind (2D or array), joined by commas.
+std::string joined(const std::vector<std::string>& texts, const std::array<std::string, 2>& patterns, const Functions& f) {
+    std::string out;
+    for (const std::string& t : texts) out += (out.empty() ? "" : ", ") + named(patterns[f.arrays.count(t)], t);
+    return out;
+}
+
 // `text` with `extra` added to the arguments of every call of `name` (whose arguments hold balanced parentheses).
 std::string withArguments(const std::string& text, const std::string& name, const std::string& extra) {
     std::string out;
@@ -124,7 +140,7 @@ std::string withArguments(const std::string& text, const std::string& name, cons
 }
 
 // `text` with each read of texture `t` (`t.Method(sampler, `) in the engine's style; false when it reads none.
-bool readInStyle(std::string& text, const std::string& t, const Style& s) {
+bool readInStyle(std::string& text, const std::string& t, const Style& s, bool array) {
     std::string out;
     size_t at = 0;
     for (size_t read = findIdentifier(text, t + ".", 0); read != std::string::npos; read = findIdentifier(text, t + ".", read + 1)) {
@@ -134,7 +150,7 @@ bool readInStyle(std::string& text, const std::string& t, const Style& s) {
             !isIdentifier(std::string_view(text).substr(open + 1, comma - open - 1)))
             continue;
         const std::string name = text.substr(method, open - method);
-        out.append(text, at, read - at).append(named(s.sample, t, s.engine == Engine::Unity ? unityMacro(name) : name));
+        out.append(text, at, read - at).append(named(s.sample, t, s.engine == Engine::Unity ? unityMacro(name, array) : name));
         at = comma + 2;
     }
     if (at == 0) return false;
@@ -147,11 +163,11 @@ void passTextures(Functions& f, const Style& s) {
     for (size_t i = 0; i < f.functions.size(); ++i) {
         Function& fn = f.functions[i];
         for (const std::string& t : f.textures)
-            if (readInStyle(fn.text, t, s)) fn.textures.push_back(t);
+            if (readInStyle(fn.text, t, s, f.arrays.count(t))) fn.textures.push_back(t);
         for (size_t j = 0; j < i; ++j) {
             const Function& callee = f.functions[j];
             if (callee.textures.empty() || findIdentifier(fn.text, callee.name + "(", 0) == std::string::npos) continue;
-            fn.text = withArguments(fn.text, callee.name, joined(callee.textures, s.args));
+            fn.text = withArguments(fn.text, callee.name, joined(callee.textures, s.args, f));
             for (const std::string& t : callee.textures)
                 if (std::find(fn.textures.begin(), fn.textures.end(), t) == fn.textures.end()) fn.textures.push_back(t);
         }
@@ -159,7 +175,7 @@ void passTextures(Functions& f, const Style& s) {
             return std::find(f.textures.begin(), f.textures.end(), a) < std::find(f.textures.begin(), f.textures.end(), b);
         });
         const size_t headEnd = fn.text.find(")\n");
-        if (!fn.textures.empty()) fn.text.insert(headEnd, ", " + joined(fn.textures, s.param));
+        if (!fn.textures.empty()) fn.text.insert(headEnd, ", " + joined(fn.textures, s.param, f));
     }
 }
 
@@ -176,25 +192,39 @@ struct Lines {
     std::string nodes, wrappers, properties, textures, surface;
 };
 
+// A texture in Unity's Shader Graph and URP shader, per kind ([0] 2D, [1] array): the Custom Function port, the entry
+// point's parameter type and argument, the Properties entry's type and default, the declaration macro; and in Unreal's
+// Custom node header, what follows the input's name.
+struct Kind {
+    const char *port, *param, *arg, *property, *declare, *unrealInput;
+};
+constexpr std::array<Kind, 2> kKinds = {{
+    {"Texture 2D", "UnityTexture2D", "TEXTURE2D_ARGS({T}.tex, {T}.samplerstate)", "2D) = \"white\" {}", "TEXTURE2D", ""},
+    {"Texture 2D Array", "UnityTexture2DArray", "TEXTURE2D_ARRAY_ARGS({T}.tex, {T}.samplerstate)", "2DArray) = \"\" {}", "TEXTURE2D_ARRAY",
+     " (Texture2DArray)"},
+}};
+
 // One function's lines: its Custom node (Unity: the ports; Unreal: the pin, output type, inputs and code), Unity's
 // node entry point, and the URP statement of the input its role fills ("" when it fills none).
-void addFunction(Lines& l, const Style& s, const Function& fn, const std::string& returns, const WiredFunction& w, const std::string& uv) {
+void addFunction(Lines& l, const Style& s, const Functions& f, const Function& fn, const std::string& returns, const WiredFunction& w,
+                 const std::string& uv) {
     const std::string type = hlslType(returns), width = returns == "float" ? "1" : returns.substr(3);
     std::string ports = "UV (Vector 2)", params = "float2 UV", args = uv, inputs = "UV";
     for (const std::string& t : fn.textures) {
-        ports += ", " + t + " (Texture 2D)";
-        params += ", UnityTexture2D " + t;
-        args += ", " + named("TEXTURE2D_ARGS({T}.tex, {T}.samplerstate)", t);
-        inputs += ", " + t;
+        const Kind& k = kKinds[f.arrays.count(t)];
+        ports += ", " + t + " (" + k.port + ")";
+        params += ", " + std::string(k.param) + " " + t;
+        args += ", " + named(k.arg, t);
+        inputs += ", " + t + k.unrealInput;
     }
     if (s.engine == Engine::Unity) {
         l.nodes += "//   " + fn.name + ": " + ports + " -> Out (Vector " + (width == "1" ? "1" : width) + ")\n";
         l.wrappers +=
             "void " + fn.name + "_float(" + params + ", out " + type + " Out)\n{\n    Out = " + fn.name + "(" + args + ");\n}\n\n";
-        if (w.input) l.surface += "                " + filled(w.input, fn.name + "(uv, " + joined(fn.textures, s.args) + ")") + "\n";
+        if (w.input) l.surface += "                " + filled(w.input, fn.name + "(uv, " + joined(fn.textures, s.args, f) + ")") + "\n";
         return;
     }
-    std::string code = "return " + fn.name + "(" + uv + (fn.textures.empty() ? "" : ", " + joined(fn.textures, s.args)) + ")";
+    std::string code = "return " + fn.name + "(" + uv + (fn.textures.empty() ? "" : ", " + joined(fn.textures, s.args, f)) + ")";
     if (w.input && w.role == "normal") code += " * float3(1.0, -1.0, 1.0)";  // Unreal's tangent-space y runs down the image
     l.nodes += "//   " + std::string(w.input ? w.input : "(no pin)") + " <- CMOT Float " + width + " (" + inputs + "): " + code + ";\n";
 }
@@ -206,11 +236,12 @@ Lines lines(const PackageInput& in, const Style& s, const Functions& f, Diagnost
     for (const WiredFunction& w : wire(in.material, in.functions, in.engine, diagnostics)) {
         const Function& fn =
             *std::find_if(f.functions.begin(), f.functions.end(), [&](const Function& x) { return x.name == w.function.name; });
-        addFunction(l, s, fn, w.function.tangentNormal ? "vec3" : w.function.slot->type, w, uv);
+        addFunction(l, s, f, fn, w.function.tangentNormal ? "vec3" : w.function.slot->type, w, uv);
     }
     for (const std::string& t : f.textures) {
-        l.properties += "        " + t + " (\"" + t.substr(t.find('_') + 1) + "\", 2D) = \"white\" {}\n";
-        l.textures += "            TEXTURE2D(" + t + ");\n            SAMPLER(sampler_" + t + ");\n";
+        const Kind& k = kKinds[f.arrays.count(t)];
+        l.properties += "        " + t + " (\"" + t.substr(t.find('_') + 1) + "\", " + k.property + "\n";
+        l.textures += "            " + std::string(k.declare) + "(" + t + ");\n            SAMPLER(sampler_" + t + ");\n";
     }
     return l;
 }
@@ -224,7 +255,7 @@ std::string trimmed(std::string text) {
 
 std::vector<OutputFile> hlslPackage(const PackageInput& in, Diagnostics& diagnostics) {
     const Style& s = style(in.engine.engine);
-    Functions f = parse(in.compiled.sources.at(Target::Hlsl));
+    Functions f = parse(in.compiled.sources.at(Target::Hlsl), in.textures);
     passTextures(f, s);
     std::string functions = f.constants;
     for (const Function& fn : f.functions) functions += "\n" + fn.text;

@@ -56,7 +56,6 @@ struct EngineRow {
     bool uvBottomLeft;    // the engine's own uv origin is the image's bottom-left (OpenGL's)
     bool copiesTextures;  // the package holds copies of the slots' textures (a browser loads them beside the module)
     bool unrollLoops;     // its language has no arrays to copy or pass and only its own form of `for` (Godot 3)
-    bool layers;          // carries a layered material; else refused (HX300)
     bool wgsl;            // --targets wgsl is taken (Babylon.js adds WGSL functions for WebGPU); else refused (HX300)
     // The package's own files, named without the "<engine>/" folder; a slot no input takes is a warning in
     // `diagnostics`, a texture the engine cannot load an error.

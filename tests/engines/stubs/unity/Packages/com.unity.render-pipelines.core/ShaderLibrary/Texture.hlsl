@@ -1,4 +1,5 @@
-// Stub of Core RP's Texture.hlsl: the texture struct a Shader Graph Custom Function node's Texture 2D port passes.
+// Stub of Core RP's Texture.hlsl: the texture structs a Shader Graph Custom Function node's Texture 2D and Texture 2D
+// Array ports pass.
 #ifndef HEXC_STUB_CORE_TEXTURE
 #define HEXC_STUB_CORE_TEXTURE
 
@@ -21,5 +22,21 @@ UnityTexture2D UnityBuildTexture2DStructInternal(TEXTURE2D_PARAM(tex, samplersta
 }
 
 #define UnityBuildTexture2DStructNoScale(n) UnityBuildTexture2DStructInternal(TEXTURE2D_ARGS(n, sampler##n), n##_TexelSize, float4(1, 1, 0, 0))
+
+struct UnityTexture2DArray
+{
+    TEXTURE2D_ARRAY(tex);
+    SAMPLER(samplerstate);
+};
+
+UnityTexture2DArray UnityBuildTexture2DArrayStructInternal(TEXTURE2D_ARRAY_PARAM(tex, samplerstate))
+{
+    UnityTexture2DArray result;
+    result.tex = tex;
+    result.samplerstate = samplerstate;
+    return result;
+}
+
+#define UnityBuildTexture2DArrayStruct(n) UnityBuildTexture2DArrayStructInternal(TEXTURE2D_ARRAY_ARGS(n, sampler##n))
 
 #endif
