@@ -79,13 +79,19 @@ public:
         for (size_t k = 0; k < lp.splats.size(); ++k)
             splats += (k ? "\n" : "") + expand("weights.splat", {{"index", std::to_string(k)}, {"tiling", tiling(lp.splats[k])}});
         for (size_t i = 0; i < lp.count; ++i) keep += (i ? "\n" : "") + layerWeight(i);
-        const std::string heights =
-            lp.heights.empty()
-                ? ""
-                : expand("weights.heights", {{"layers", perLayer("weights.height", lp.heights)}, {"width", floatLiteral(lp.width)}});
+        const std::string heights = lp.heights.empty() ? ""
+                                                       : expand("weights.heights", {{"layers", perLayer("weights.height", lp.heights)},
+                                                                                    {"width", floatLiteral(lp.width)},
+                                                                                    {"skip", floatLiteral(lp.skipBelow)}});
+        // In height mode skipping acts on the height blend's shares (hexcLayerHeights), so every weight above 0 is kept.
+        const std::string keepBelow = floatLiteral(lp.heights.empty() ? lp.skipBelow : 0.0);
         return withoutEmptyLines(expand(  // no lattices, no heights
-            "weights",
-            {{"splats", splats}, {"keep", keep}, {"skip", floatLiteral(lp.skipBelow)}, {"lattices", lattices()}, {"heights", heights}}));
+            "weights", {{"splats", splats},
+                        {"keep", keep},
+                        {"keep_below", keepBelow},
+                        {"skip", floatLiteral(lp.skipBelow)},
+                        {"lattices", lattices()},
+                        {"heights", heights}}));
     }
 
     std::string role(const LayerRolePlan& r, const std::string& uv) const {
