@@ -2,7 +2,8 @@
 // layers' slots (hexcAt_<layer>_<role>, templates/library/slots.glsl) by the layers' weights at the pixel. The
 // gradients are taken once, before the layers' branches, and every layer's slot is sampled with them: a derivative
 // inside a branch that not every pixel of a quad takes is undefined (and WGSL refuses it). codegen (codegen/layers.cpp)
-// fills the tokens: ${skip}, ${width}: literals (parameters in general code); ${splats}, ${keep}, ${heights}, ${layers}: the
+// fills the tokens: ${skip}, ${width}: literals (parameters in general code); ${keep_below}: ${skip}, or 0 in height
+// mode, where the height blend drops its shares below ${skip} instead; ${splats}, ${keep}, ${heights}, ${layers}: the
 // per-splat and per-layer lines below; ${index}, ${splat}, ${channel}, ${slot}, ${tiling}; ${role}, ${type}, ${uv};
 // ${location}: the vertex colour input's; ${fetched}: when layer ${index}'s slot is fetched (layer.kept, or layer.every when CompileOptions::skipLayers is off).
 // Weights are arrays of 8, hexc's most layers; those past the material's stay 0.
@@ -33,8 +34,11 @@ void hexcLayerKeep(inout float w[8], float skip) {
 }
 
 // The height blend: a kept layer shows where its height plus its weight comes within `width` of the highest such sum,
-// in proportion to how far within; the layer on top always shows, so the sum is positive.
-void hexcLayerHeights(inout float w[8], float h[8], float width) {
+// in proportion to how far within; the layer on top always shows, so the sum is positive. Then the shares below
+// `skip` are dropped (their layers' roles are not fetched) and the others renormalised: skipping acts on the shares the
+// heights leave, so it moves the blend by at most the dropped shares (docs/material-format.md#layers). The top's share
+// is kept whatever `skip` is: the threshold is at most its b.
+void hexcLayerHeights(inout float w[8], float h[8], float width, float skip) {
     float top = -2.0;  // below any height (in [0, 1]) plus weight (in [0, 1])
     for (int i = 0; i < 8; ++i)
         if (w[i] > 0.0) top = max(top, h[i] + w[i]);
@@ -43,7 +47,7 @@ void hexcLayerHeights(inout float w[8], float h[8], float width) {
         w[i] = w[i] > 0.0 ? max(h[i] + w[i] - top + width, 0.0) : 0.0;
         sum += w[i];
     }
-    for (int i = 0; i < 8; ++i) w[i] /= sum;
+    hexcLayerKeep(w, min(skip * sum, width));  // b_i / sum >= skip; the top's b is width
 }
 
 //@ weights
@@ -54,7 +58,7 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
     for (int i = 0; i < 8; ++i) w[i] = 0.0;
 ${splats}
 ${keep}
-    hexcLayerKeep(w, ${skip});
+    hexcLayerKeep(w, ${keep_below});
 ${lattices}
 ${heights}
 }
@@ -117,11 +121,11 @@ hexcLayerTiles${index}(st, dx, dy, cell)
 layout(location = ${location}) in vec4 hexcVertexColor;
 
 //@ weights.heights
-    // Each kept layer's height, for the height blend.
+    // Each layer's height where its weight is above 0, for the height blend (which then drops the shares below skip).
     float h[8];
     for (int i = 0; i < 8; ++i) h[i] = 0.0;
 ${layers}
-    hexcLayerHeights(w, h, ${width});
+    hexcLayerHeights(w, h, ${width}, ${skip});
 
 //@ weights.height
     if (${fetched}) h[${index}] = hexcAt_${slot}(st * ${tiling}, dx * ${tiling}, dy * ${tiling}, ivec2(0), t);

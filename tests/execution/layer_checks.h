@@ -35,15 +35,20 @@ namespace hexc::exec {
 //     a_i - top + width <= -(e_i + E) on both sides, and for an ambiguous one by <= its largest b. With D the sum of
 //     those over the layers that may move (A), the weights b_i / B move by sum |d(b_i / B)| <= (sum |db_i| + |dB|) / B
 //     <= 2 D / B (B >= width on both: the top layer's b is width), and the blend by D spread_A / B. One active layer
-//     keeps weight 1: e_x alone, inside a layer's top.
+//     keeps weight 1: e_x alone, inside a layer's top. In height mode the splat weights are kept above 0 (skip 0 in
+//     the above), and then the b_i below skip_below * B drop (their share of the blend below skip_below): the result is
+//     the blend of the kept b_i, so the bound above holds with the kept b_i (their sum B_K >= width: the top is kept),
+//     and a layer kept on one side and dropped on the other (crossing: b_i - skip B moves by at most m_i + skip D, so
+//     within that of 0) moves by at most b_i + m_i: D grows by its b_i.
 inline double layerTolerance(const reference::LayerResult& r, const Layers& layers, const std::vector<bool>& zero, double ex, double eh,
                              double ew) {
     const size_t n = r.splat.size();
+    const double skip = layers.heightRole ? 0.0 : layers.skipBelow;
     std::vector<bool> sure(n), ambiguous(n);
     double sureSum = 0, k = 0, a = 0;
     for (size_t i = 0; i < n; ++i) {
-        ambiguous[i] = !zero[i] && std::fabs(r.splat[i] - layers.skipBelow) <= ew;
-        sure[i] = !ambiguous[i] && r.splat[i] >= layers.skipBelow;
+        ambiguous[i] = !zero[i] && std::fabs(r.splat[i] - skip) <= ew;
+        sure[i] = !ambiguous[i] && r.splat[i] >= skip;
         if (sure[i]) sureSum += r.splat[i], ++k;
         a += ambiguous[i];
     }
@@ -60,11 +65,10 @@ inline double layerTolerance(const reference::LayerResult& r, const Layers& laye
     };
     const double whole = ex + spread([](size_t) { return true; });
     if (k == 0 && a == 0) return ex;
-    const double Slo = sureSum - k * ew, dS = k * ew + a * (layers.skipBelow + 2 * ew), ambiguousW = (layers.skipBelow + 2 * ew) / Slo;
+    const double Slo = sureSum - k * ew, dS = k * ew + a * (skip + 2 * ew), ambiguousW = (skip + 2 * ew) / Slo;
     if (Slo <= 0) return whole;
     if (!layers.heightRole) return ex + dS / Slo * spread([&](size_t i) { return sure[i] || ambiguous[i]; });
-    const double S =
-        std::accumulate(r.splat.begin(), r.splat.end(), 0.0, [&](double x, double s) { return s >= layers.skipBelow ? x + s : x; });
+    const double S = std::accumulate(r.splat.begin(), r.splat.end(), 0.0);
     std::vector<double> e(n), moves(n, 0.0);
     double top = -INFINITY, E = 0;
     for (size_t i = 0; i < n; ++i)
@@ -79,8 +83,18 @@ inline double layerTolerance(const reference::LayerResult& r, const Layers& laye
         if (aMax >= top - E) return whole;
         moves[i] = std::max(aMax - (top - E) + layers.width, 0.0);
     }
-    const double D = std::accumulate(moves.begin(), moves.end(), 0.0);
-    return ex + D / r.heightSum * spread([&](size_t i) { return moves[i] > 0; });
+    // The shares below skip_below drop after the blend: b_i is kept where b_i >= min(skip B, width) (B = heightSum).
+    const double D0 = std::accumulate(moves.begin(), moves.end(), 0.0), B = r.heightSum;
+    const double skipB = std::min(layers.skipBelow * B, layers.width);  // the threshold, at most the top's b
+    double D = D0, kept = 0;
+    std::vector<bool> crossing(n, false);
+    for (size_t i = 0; i < n; ++i) {
+        const double b = r.shares[i] * B;
+        crossing[i] = (b > 0 || moves[i] > 0) && std::fabs(b - skipB) <= moves[i] + layers.skipBelow * D0;
+        if (crossing[i]) D += b;
+        if (r.weights[i] > 0) kept += b;
+    }
+    return ex + D / kept * spread([&](size_t i) { return moves[i] > 0 || crossing[i]; });
 }
 
 struct LayerCase {

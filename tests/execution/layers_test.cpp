@@ -107,6 +107,41 @@ TEST(LayerArraysOnTheGpu, AnArrayGivesTheImageOfSeparateTextures) {
     EXPECT_EQ(arrays[1]["array"], true) << arrays[1];
 }
 
+// A folder of the textures the height-mode tests draw: a splat map that ramps layer 1's weight from 0 to 1 across 256
+// texels (r = 255 - i, g = i), 4 rows, and constant textures c0, c102, c153 and c255 (8 x 4 texels of that grey).
+std::filesystem::path rampTextures(const std::string& prefix) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / (prefix + test::testLogName());
+    std::filesystem::create_directories(dir);
+    auto write = [&](const std::string& name, int width, const std::function<std::array<uint8_t, 4>(int)>& texel) {
+        Texture t{width, 4, false, std::vector<uint8_t>(size_t(width) * 16), {}};
+        for (int i = 0; i < width * 4; ++i) std::copy_n(texel(i % width).begin(), 4, &t.rgba8[size_t(i) * 4]);
+        std::ofstream(dir / name, std::ios::binary) << pngBytes(t);
+    };
+    write("splat.png", 256, [](int i) { return std::array<uint8_t, 4>{uint8_t(255 - i), uint8_t(i), 0, 0}; });
+    for (int v : {0, 102, 153, 255})
+        write("c" + std::to_string(v) + ".png", 8, [&](int) { return std::array<uint8_t, 4>{uint8_t(v), uint8_t(v), uint8_t(v), 255}; });
+    return dir;
+}
+
+// Two layers blended by height over rampTextures' splat map, whose scalar value is 0 (layer a) and 1 (layer b), so
+// that the value template shows layer b's final weight; their heights the constant textures c<h0> and c<h1>; `blend`
+// the layer_blend's further keys.
+Material twoLayers(const std::filesystem::path& dir, int h0, int h1, const std::string& blend) {
+    const std::string layer = R"({"name": "%s", "slots": [{"name": "value", "kind": "scalar", "texture": "c%d.png"},
+        {"name": "height", "kind": "scalar", "texture": "c%d.png"}]})";
+    char a[256], b[256];
+    std::snprintf(a, sizeof a, layer.c_str(), "a", 0, h0);
+    std::snprintf(b, sizeof b, layer.c_str(), "b", 255, h1);
+    std::ofstream(dir / "m.json") << R"({"name": "height_layers", "hextiling": {"tiling": 4}, "layers": [)" << a << "," << b
+                                  << R"(], "layer_blend": {"splat": ["splat.png"], "mode": "height", "height": "height", )" << blend
+                                  << "}}";
+    ParseResult parsed = parseMaterialFile(dir / "m.json");
+    if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
+    Material m = *parsed.material;
+    m.templ = TemplateRef::builtin("value");
+    return m;
+}
+
 // The height blend's width at its edges: two layers whose scalar value is 0 and 1 (so the output is layer 1's final
 // weight), with constant heights h0 = 153/255 and h1 = 102/255, and a splat map that ramps layer 1's weight from 0 to 1
 // across 256 texels (r = 255 - i, g = i), read at its texel centres (one pixel per texel): at pixel i, s1 = x = i / 255
@@ -123,34 +158,12 @@ TEST(LayerHeightWidth, TheWeightsReachZeroAndOneAtTheWidthsEdges) {
         if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << why;
         GTEST_SKIP() << why;
     }
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("hexc_height_width_" + test::testLogName());
-    std::filesystem::create_directories(dir);
-    auto write = [&](const char* name, int width, const std::function<std::array<uint8_t, 4>(int)>& texel) {
-        Texture t{width, 4, false, std::vector<uint8_t>(size_t(width) * 16), {}};
-        for (int i = 0; i < width * 4; ++i) std::copy_n(texel(i % width).begin(), 4, &t.rgba8[size_t(i) * 4]);
-        std::ofstream(dir / name, std::ios::binary) << pngBytes(t);
-    };
-    write("splat.png", 256, [](int i) { return std::array<uint8_t, 4>{uint8_t(255 - i), uint8_t(i), 0, 0}; });
-    for (int v : {0, 102, 153, 255})
-        write(("c" + std::to_string(v) + ".png").c_str(), 8, [&](int) {
-            return std::array<uint8_t, 4>{uint8_t(v), uint8_t(v), uint8_t(v), 255};
-        });
+    const std::filesystem::path dir = rampTextures("hexc_height_width_");
     const double h0 = 153 / 255.0, h1 = 102 / 255.0;
     for (double asked : {1 / 255.0, 0.2, 1.0, 1e-8, std::numeric_limits<double>::denorm_min()}) {
-        const std::string layer = R"({"name": "%s", "slots": [{"name": "value", "kind": "scalar", "texture": "c%d.png"},
-            {"name": "height", "kind": "scalar", "texture": "c%d.png"}]})";
-        char a[256], b[256];
-        std::snprintf(a, sizeof a, layer.c_str(), "a", 0, 153);
-        std::snprintf(b, sizeof b, layer.c_str(), "b", 255, 102);
         char w[32];
         std::snprintf(w, sizeof w, "%.17g", asked);
-        std::ofstream(dir / "m.json") << R"({"name": "height_width", "hextiling": {"tiling": 4}, "layers": [)" << a << "," << b
-                                      << R"(], "layer_blend": {"splat": ["splat.png"], "mode": "height", "height": "height", "width": )"
-                                      << w << "}}";
-        ParseResult parsed = parseMaterialFile(dir / "m.json");
-        ASSERT_TRUE(parsed.material) << formatAll(parsed.diagnostics);
-        Material m = *parsed.material;
-        m.templ = TemplateRef::builtin("value");
+        Material m = twoLayers(dir, 153, 102, std::string(R"("width": )") + w);
         const double width = m.layers->width;  // the width asked for, 2^-22 below it (docs/material-format.md#layers)
         EXPECT_EQ(width, std::max(asked, 0x1p-22));
         const View view{256, 1, {0, 0, 1, 0.25}};  // pixel i at the splat's texel i's centre
@@ -188,6 +201,53 @@ TEST(LayerHeightWidth, TheWeightsReachZeroAndOneAtTheWidthsEdges) {
         // The edges, from the definition: x = (1 + h0 - h1 -+ width) / 2, at pixels x * 255.
         EXPECT_EQ(zeros, int(std::floor((1 + h0 - h1 - width) / 2 * 255 + 1e-9)) + 1) << width;
         EXPECT_EQ(ones, std::max(1, 255 - int(std::ceil((1 + h0 - h1 + width) / 2 * 255 - 1e-9)) + 1)) << width;
+    }
+}
+
+// skip_below in height mode acts on the height blend's shares: a result in [0, 1] moves by at most the shares it drops
+// (docs/material-format.md#layers). Layer a of height 0 and value 0, layer b of height 1 and value 1, over the ramp
+// (pixel i at texel i's centre: s_b = x = i / 255): a_a = 1 - x, a_b = 1 + x, so layer b is on top (b_b = width) and
+// layer a's share is f_a = max(width - 2x, 0) / (width + max(width - 2x, 0)), from about 1/2 down to 0 at x = width / 2.
+// Exact (nothing skipped) the value shown is 1 - f_a; where f_a < skip_below, layer a drops and it is 1: off by f_a,
+// just under skip_below at the pixels nearest the threshold, the bound's edge. Inputs are exact but for float rounding,
+// so (as in the width test) a share moves by at most 12 delta / width: the tolerance, and the band around skip_below
+// where either side of the threshold is right. The negative control: skipping on the splat weights before the heights
+// (as before) drops layer b where x < skip_below although it is on top (about half the value), which the bound refuses.
+TEST(LayerSkipBelow, InHeightModeTheValueMovesByAtMostTheDroppedShares) {
+    std::string why;
+    vk::Runner* runner = test::runner(&why);
+    if (!runner) {
+        if (std::getenv("HEXC_REQUIRE_VULKAN")) FAIL() << why;
+        GTEST_SKIP() << why;
+    }
+    const std::filesystem::path dir = rampTextures("hexc_skip_height_");
+    const double width = 0.2, delta = 1e-5, tolerance = 12 * delta / width;
+    for (double skip : {0.25, 0.1}) {
+        char blend[64];
+        std::snprintf(blend, sizeof blend, R"("width": 0.2, "skip_below": %.17g)", skip);
+        const Material m = twoLayers(dir, 0, 255, blend);
+        const Image gpu = vk::render(*runner, m, vk::RenderOutput::Shaded, "", View{256, 1, {0, 0, 1, 0.25}}, vk::ExecutedTarget::Spirv);
+        double worst = 0, worstOld = 0;  // the largest error over its bound, the new and the old way
+        int dropped = 0;
+        for (int i = 1; i < 256; ++i) {  // pixel 0: s_b = 0, layer a alone either way
+            const double x = i / 255.0, ba = std::max(width - 2 * x, 0.0), fa = ba / (width + ba), exact = 1 - fa;
+            const double bound = (fa < skip + tolerance ? fa : 0) + tolerance, got = gpu.at(i, 0)[0];
+            EXPECT_LE(std::fabs(got - exact), bound) << "skip_below " << skip << " x " << x;
+            if (std::fabs(fa - skip) > tolerance) {  // not at the threshold: dropped or kept as the reference is
+                EXPECT_NEAR(got, fa < skip ? 1.0 : exact, tolerance) << "skip_below " << skip << " x " << x;
+            }
+            dropped += fa > 0 && fa < skip;
+            worst = std::max(worst, std::fabs(got - exact) / skip);
+            const double old = x < skip ? 0.0 : exact;  // layer b dropped for its splat weight
+            worstOld = std::max(worstOld, std::fabs(old - exact) / bound);
+        }
+        std::printf(
+            "  skip_below %.3g: %d pixels drop layer a's share; largest change %.4f = %.2f x skip_below (bound 1); "
+            "skipping before the heights: %.1f x its bound\n",
+            skip, dropped, worst * skip, worst, worstOld);
+        EXPECT_GT(dropped, 0);
+        EXPECT_GT(worst, 0.85) << "the bound is reached within the ramp's step";
+        EXPECT_GT(worstOld, 1.0) << "the negative control passes the bound";
     }
 }
 

@@ -339,6 +339,67 @@ Texture flatGrey() {
     });
 }
 
+// Noise of a power spectrum: value noise octaves of cells 2 to 64 texels, each of amplitude cell^slope (0: white-ish,
+// every octave alike; 1: pink, 1/f; 2: brown, the large scales dominating), scaled to [0.1, 0.9] from its own extremes.
+Texture spectrum(int w, int h, double slope, uint32_t salt) {
+    std::vector<double> v(size_t(w) * size_t(h), 0.0);
+    for (int cell = 2; cell <= 64; cell *= 2)
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                v[size_t(y) * size_t(w) + size_t(x)] += std::pow(cell, slope) * valueNoise(x, y, cell, salt + uint32_t(cell));
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    const double low = *lo, range = *hi - *lo;
+    return texture(w, h, [&](int x, int y) {
+        const double g = 0.1 + 0.8 * (v[size_t(y) * size_t(w) + size_t(x)] - low) / range;
+        return std::array<double, 3>{g, 0.95 * g, 0.9 * g};
+    });
+}
+
+// White noise: each texel its own uniform value (no spatial correlation at all).
+Texture whiteNoise() {
+    return texture(507, 399, [](int x, int y) {
+        const double v = 0.1 + 0.8 * unit(uint32_t(x), uint32_t(y), 14);
+        return std::array<double, 3>{v, v, v};
+    });
+}
+
+// Sparse granite: a dark ground of fine noise with 1.5 % of isolated pale specks (feldspar in a dark granite): rare
+// extremes, one texel each, far from the mean.
+Texture sparseGranite() {
+    return texture(513, 405, [](int x, int y) {
+        if (unit(uint32_t(x), uint32_t(y), 15) < 0.015) return std::array<double, 3>{0.92, 0.86, 0.84};
+        const double v = 0.18 + 0.08 * valueNoise(x, y, 3, 16);
+        return std::array<double, 3>{v, v, 1.05 * v};
+    });
+}
+
+// Coarse granite: heavy (Cauchy) tails as granite(), wider (0.10 instead of 0.04), without its smooth term: specks
+// everywhere at every size of deviation. Of four seeds (41-44) the one whose far variance kept is the largest, 1.77 (the
+// others 1.16-1.20 at 29.3 texels per pixel): the set's edge.
+Texture coarseGranite() {
+    return texture(501, 407, [](int x, int y) {
+        const double c = std::tan(std::numbers::pi * (unit(uint32_t(x), uint32_t(y), 44) - 0.5));
+        const double v = 0.5 + 0.10 * c;
+        return std::array<double, 3>{v, 0.97 * v, 0.94 * v};
+    });
+}
+
+// Glyphs: dark strokes on pale paper, a character per 8 x 12 cell: per cell a few of eight strokes (the sides, the
+// middles and the diagonals of a 6 x 10 box), one texel wide. Thin high-contrast lines on a flat ground.
+Texture glyphs() {
+    return texture(504, 408, [](int x, int y) {
+        const int cx = x / 8, cy = y / 12, u = x % 8 - 1, v = y % 12 - 1;
+        const uint32_t strokes = hash(uint32_t(cx), uint32_t(cy), 18);
+        const bool inBox = u >= 0 && u < 6 && v >= 0 && v < 10;
+        const bool on =
+            inBox && (((strokes & 1) && u == 0) || ((strokes & 2) && u == 5) || ((strokes & 4) && v == 0) || ((strokes & 8) && v == 9) ||
+                      ((strokes & 16) && v == 4) || ((strokes & 32) && u == 2) || ((strokes & 64) && std::abs(v - u * 9 / 5) == 0) ||
+                      ((strokes & 128) && std::abs(v - (5 - u) * 9 / 5) == 0));
+        const double ink = 0.06, paper = 0.88 + 0.03 * (unit(uint32_t(x), uint32_t(y), 19) - 0.5);
+        return std::array<double, 3>{on ? ink : paper, on ? ink : 0.97 * paper, on ? 1.5 * ink : 0.9 * paper};
+    });
+}
+
 struct Stats {
     double variance = 0;  // summed over r, g, b
     std::array<double, 3> lowest{INFINITY, INFINITY, INFINITY}, highest{-INFINITY, -INFINITY, -INFINITY};
@@ -405,8 +466,9 @@ double largestGap(const std::vector<std::array<uint8_t, 3>>& texels) {
 }  // namespace
 
 // The histogram blend at its edges, on a named set of textures unlike the repository's (edge:: above): few-valued
-// (slate, slate in bands, flat grey), heavy-tailed (granite), clustered colours in far-pixel-sized grains (crystal
-// granite), high contrast (blotches: two values), saturated with rare highlights (leaf). Close (0.75 texel per pixel)
+// (slate, slate in bands, flat grey), heavy-tailed (granite, sparse and coarse granite), clustered colours in
+// far-pixel-sized grains (crystal granite), high contrast (blotches: two values; glyphs: thin strokes), saturated with
+// rare highlights (leaf), and noise of three spectra (white, pink 1/f, brown). Close (0.75 texel per pixel)
 // and far (7.37 and 29.3 texels per pixel, about levels 3 and 5), the share of the plain texture's variance each
 // blend keeps, rendered the same way, the range the result stays in, and the table's round trip. The textures are
 // large enough (about 500 x 400) that level 5 still holds some 200 texels, and the far distances are not whole
@@ -419,9 +481,20 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
         const char* name;
         Texture texture;
     };
-    const Case cases[] = {{"slate", edge::slate()},     {"slate-bands", edge::slateBands()}, {"flat-grey", edge::flatGrey()},
-                          {"granite", edge::granite()}, {"crystal", edge::crystalGranite()}, {"blotches", edge::blotches()},
-                          {"leaf", edge::leaf()}};
+    const Case cases[] = {{"slate", edge::slate()},
+                          {"slate-bands", edge::slateBands()},
+                          {"flat-grey", edge::flatGrey()},
+                          {"granite", edge::granite()},
+                          {"crystal", edge::crystalGranite()},
+                          {"blotches", edge::blotches()},
+                          {"leaf", edge::leaf()},
+                          {"white-noise", edge::whiteNoise()},
+                          {"pink-noise", edge::spectrum(509, 401, 1, 20)},
+                          {"brown-noise", edge::spectrum(503, 397, 2, 30)},
+                          {"sparse-granite", edge::sparseGranite()},
+                          {"coarse-granite", edge::coarseGranite()},
+                          {"glyphs", edge::glyphs()}};
+    double lowest = INFINITY, highest = 0;  // far away, the variance kept over the set
     for (const Case& c : cases) {
         Slot falloff;
         falloff.name = c.name, falloff.kind = SlotKind::Color, falloff.colorSpace = ColorSpace::Linear;
@@ -449,8 +522,9 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
             EXPECT_LE(trip.worst, edge::largestGap(distinct) + 1e-3) << c.name;  // 1e-3: float32 table entries
         } else {
             // The rest of the set: docs/material-format.md#blend's bound over it (the computation is deterministic, in
-            // fp64 but for the float32 tables: the figures reproduce to far below the bound's rounding).
-            EXPECT_LE(trip.shareOff, 0.12) << c.name;
+            // fp64 but for the float32 tables: the figures reproduce to far below the bound's rounding). White noise is
+            // the edge (19.2 %: 204 values spread evenly, each within a step of an interval's end).
+            EXPECT_LE(trip.shareOff, 0.20) << c.name;
         }
         for (double texelsPerPixel : {0.75, 7.37, 29.3}) {
             const int pixels = texelsPerPixel < 1 ? 96 : texelsPerPixel < 10 ? 48 : 32;
@@ -467,11 +541,12 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
                 EXPECT_LE(g.highest[k], texels.highest[k] + 1e-6) << c.name;
             }
             // Far away, docs/material-format.md#blend's bounds over the set (the measured extremes rounded outwards to
-            // 0.05; deterministic, as above): 0.35 to 1.50 of the plain texture's variance, 0.36 to 1.65 of the falloff
-            // blend's, at least as much as it on the few-valued slates (measured 1.00 to 1.05).
+            // 0.05; deterministic, as above): 0.35 (blotches) to 1.77 (coarse granite) of the plain texture's variance,
+            // 0.36 to 1.65 of the falloff blend's, at least as much as it on the few-valued slates (measured 1.00 to 1.05).
             if (texelsPerPixel > 1) {
+                lowest = std::min(lowest, kept), highest = std::max(highest, kept);
                 EXPECT_GE(kept, 0.30) << c.name << " at " << texelsPerPixel;
-                EXPECT_LE(kept, 1.55) << c.name << " at " << texelsPerPixel;
+                EXPECT_LE(kept, 1.80) << c.name << " at " << texelsPerPixel;
                 EXPECT_GE(kept / keptFalloff, 0.35) << c.name << " at " << texelsPerPixel;
                 EXPECT_LE(kept / keptFalloff, 1.70) << c.name << " at " << texelsPerPixel;
                 if (std::string(c.name).starts_with("slate")) {
@@ -482,4 +557,9 @@ TEST(HistogramEdges, KeepContrastAndStayInTheTexturesRange) {
             }
         }
     }
+    // The bounds are the set's edges: its extremes lie within 0.05 of them, and past the band the docs stated before the
+    // heavy-tailed and thin-stroked textures joined the set (0.30 to 1.55), which these would not have held.
+    std::printf("  far away, the variance kept over the set: %.3f to %.3f\n", lowest, highest);
+    EXPECT_LE(lowest, 0.35);
+    EXPECT_GE(highest, 1.75);
 }

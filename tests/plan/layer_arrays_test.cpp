@@ -3,6 +3,8 @@
 // shader reads each layer through the array at a constant layer; the manifest says which.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -94,12 +96,15 @@ TEST(LayerArrays, OffOneLayerGeneralCodeAndTheFunctionsOutputKeepSeparateTexture
 }
 
 // The plan's HX129 warnings, formatted.
-std::vector<std::string> notArrayed(const ShaderPlan& plan) {
+// The plan's diagnostics of one code, formatted.
+std::vector<std::string> withCode(const ShaderPlan& plan, Code code) {
     std::vector<std::string> out;
     for (const Diagnostic& d : plan.diagnostics)
-        if (d.code == Code::NotArrayed) out.push_back(d.format());
+        if (d.code == code) out.push_back(d.format());
     return out;
 }
+
+std::vector<std::string> notArrayed(const ShaderPlan& plan) { return withCode(plan, Code::NotArrayed); }
 
 TEST(LayerArrays, ARoleKeptApartByItsTexturesIsAWarningNamingTheLayersAndHowToGetOneArray) {
     Material sizes = terrain();
@@ -135,6 +140,67 @@ TEST(LayerArrays, ARoleKeptApartByItsTexturesIsAWarningNamingTheLayersAndHowToGe
     EXPECT_TRUE(notArrayed(planShader(sizes, functions)).empty());
     EXPECT_TRUE(notArrayed(planShader(terrain(), {})).empty());
     EXPECT_TRUE(notArrayed(planShader(loadMaterial("tests/execution/layers/one.json"), {})).empty());
+}
+
+// tests/execution/layers/eight.json (8 layers of albedo, two splat maps) with a second role, roughness, in every layer:
+// 18 slots, which bind 4 textures with arrays (one per role, and the splat maps). Texture paths made absolute, so
+// that the material is written anywhere.
+Material eightWithTwoRoles(const std::string& arrays, const std::filesystem::path& file) {
+    const std::filesystem::path source = std::filesystem::absolute("tests/execution/layers/eight.json");
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(source));
+    auto absolute = [&](nlohmann::json& path) { path = (source.parent_path() / path.get<std::string>()).lexically_normal().string(); };
+    for (nlohmann::json& layer : doc["layers"]) {
+        absolute(layer["slots"][0]["texture"]);
+        layer["slots"].push_back(
+            {{"name", "roughness"}, {"kind", "scalar"}, {"channel", "a"}, {"texture", "../../../materials/textures/terrain_grass_rh.png"}});
+        absolute(layer["slots"][1]["texture"]);
+    }
+    for (nlohmann::json& splat : doc["layer_blend"]["splat"]) absolute(splat);
+    doc["layer_blend"]["arrays"] = arrays;
+    std::ofstream(file) << doc.dump(2);
+    return loadMaterial(file);
+}
+
+std::vector<std::string> tooMany(const ShaderPlan& plan) { return withCode(plan, Code::WrongCount); }
+
+// The 16 textures a shader may bind are counted as they are bound: 8 layers of two roles are 18 slots but 4 textures
+// with arrays, and compile; with arrays off, or where the roles' textures refuse an array, 18 are refused (HX110) with
+// the hint that helps: the arrays, and what keeps each role's apart.
+TEST(LayerArrays, TheTextureLimitCountsAnArrayOnce) {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / ("hexc_eight_roles_" + test::testLogName() + ".json");
+    const Material arrayed = eightWithTwoRoles("auto", file);
+    ASSERT_EQ(arrayed.slots.size(), 18u);
+    const ShaderPlan plan = planShader(arrayed, {});
+    EXPECT_TRUE(tooMany(plan).empty()) << tooMany(plan)[0];
+    size_t bound = 0;
+    for (size_t i = 0; i < plan.slots.size(); ++i) bound += plan.textureBound(i);
+    EXPECT_EQ(bound, 4u);
+    const CompileResult r = compile(arrayed);
+    EXPECT_TRUE(r.ok()) << formatAll(r.diagnostics);
+
+    const std::vector<std::string> off = tooMany(planShader(eightWithTwoRoles("off", file), {}));
+    ASSERT_EQ(off.size(), 1u);
+    EXPECT_NE(off[0].find(": error[HX110]: /layers/0/slots/0: the shader binds 18 textures (a texture array or a packed texture "
+                          "counted once); expected at most 16 (bind each role's layers as one texture array, one texture instead "
+                          "of one per layer: role `albedo` (layer_blend.arrays is \"off\"); role `roughness` (layer_blend.arrays "
+                          "is \"off\"))"),
+              std::string::npos)
+        << off[0];
+    // Sizes that differ in both roles: the hint names the fix, located at the slot that differs.
+    Material sizes = arrayed;
+    for (size_t role : {0, 1}) slotOf(sizes, 5, role).width = 128;
+    const std::vector<std::string> apart = tooMany(planShader(sizes, {}));
+    ASSERT_EQ(apart.size(), 1u);
+    EXPECT_NE(apart[0].find("error[HX110]: /layers/5/slots/1: the shader binds 18 textures"), std::string::npos) << apart[0];
+    EXPECT_NE(apart[0].find("role `roughness` (sizes differ: `grass_roughness` and `tiles_roughness` are 256x256 and 128x256 "
+                            "texels: resize them to one size)"),
+              std::string::npos)
+        << apart[0];
+    // One role apart binds 8 + 1 + 2 = 11: within the limit.
+    Material one = arrayed;
+    slotOf(one, 5, 0).width = 128;
+    EXPECT_TRUE(tooMany(planShader(one, {})).empty());
+    std::filesystem::remove(file);
 }
 
 TEST(LayerArrays, TheShaderReadsEachLayerThroughTheArrayAtAConstantLayer) {

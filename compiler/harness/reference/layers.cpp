@@ -58,7 +58,7 @@ LayerResult evaluateLayers(const Material& material, size_t role, const LayerTex
     LayerResult r;
     r.splat = rawWeights(layers, vertexColor, [&](size_t k) { return at(layers.splats[k]).value; });
     r.weights = r.splat;
-    keep(r.weights, layers.skipBelow);
+    keep(r.weights, layers.heightRole ? 0.0 : layers.skipBelow);  // height mode skips on the blend's shares, below
     if (layers.heightRole) {
         r.heights.assign(n, 0.0);
         double top = -2;
@@ -73,6 +73,8 @@ LayerResult evaluateLayers(const Material& material, size_t role, const LayerTex
             r.heightSum += r.weights[i];
         }
         for (double& w : r.weights) w /= r.heightSum;
+        r.shares = r.weights;
+        keep(r.weights, std::min(layers.skipBelow, *std::max_element(r.shares.begin(), r.shares.end())));
     }
     r.layers.resize(n);
     for (size_t i = 0; i < n; ++i) {

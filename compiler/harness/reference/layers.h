@@ -28,6 +28,7 @@ struct LayerResult {
     std::vector<SlotResult> layers;  // per layer: its slot of the role, evaluated for every layer (for error bounds)
     std::vector<double> heights;     // height mode: per layer its height (a dropped layer's too, for error bounds)
     double heightSum = 1;            // height mode: the sum of b_i before normalising (for error bounds)
+    std::vector<double> shares;      // height mode: per layer b_i / heightSum, before the shares below skip_below drop
 };
 
 // The role `role` (an index into Material::layers->roles) of `material` at uv with uv gradients, and the interpolated

@@ -84,10 +84,14 @@ public:
         for (size_t i = 0; i < lp.count; ++i) keep += (i ? "\n" : "") + layerWeight(i);
         const std::string heights = lp.heights.empty() ? ""
                                                        : expand("weights.heights", {{"layers", perLayer("weights.height", lp.heights)},
-                                                                                    {"width", setting(lp.widthParam, lp.width)}});
+                                                                                    {"width", setting(lp.widthParam, lp.width)},
+                                                                                    {"skip", setting(lp.skipBelowParam, lp.skipBelow)}});
+        // In height mode skipping acts on the height blend's shares (hexcLayerHeights), so every weight above 0 is kept.
+        const std::string keepBelow = lp.heights.empty() ? setting(lp.skipBelowParam, lp.skipBelow) : floatLiteral(0.0);
         return withoutEmptyLines(expand(  // no lattices, no heights
             "weights", {{"splats", splats},
                         {"keep", keep},
+                        {"keep_below", keepBelow},
                         {"skip", setting(lp.skipBelowParam, lp.skipBelow)},
                         {"lattices", lattices()},
                         {"heights", heights}}));

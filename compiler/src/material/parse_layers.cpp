@@ -14,7 +14,8 @@ namespace {
 const std::vector<std::string> kLayerKeys = {"name", "hextiling", "slots"};
 const std::vector<std::string> kLayerBlendKeys = {"weights", "splat", "mode", "height", "width", "skip_below", "arrays"};
 const std::vector<std::string> kLayerArrays = {"auto", "off"};
-// 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages, as for the material's own slots.
+// A layer's slots, as a material's: 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages. The textures
+// the shader binds, counted as bound (a role's texture array once), are held to it too, by the plan (plan/layer_arrays.cpp).
 constexpr size_t kMaxSlots = 16;
 
 // [a-z][a-z0-9]{0,15}: no `_`, so that <layer>_<role> splits at its first `_` and two layers' slots never collide.
@@ -33,16 +34,10 @@ public:
             return;
         }
         Layers layers;
-        const size_t ownSlots = m.slots.size();
         readLayers(doc["layers"], m, layers);
         for (size_t r = 0; r < layers.roles.size(); ++r) ktx2Array(m, layers, r);
         if (requireKey(doc, "", "layer_blend", "how the layers blend: splat maps and mode")) layerBlend(doc["layer_blend"], m, layers);
         for (const auto& [pointer, role] : heightRefs_) heightBlendRole(pointer, role, layers);
-        if (m.slots.size() > kMaxSlots)
-            report(Code::WrongCount, "/layers",
-                   "the material has " + std::to_string(m.slots.size()) + " textures (" + std::to_string(ownSlots) +
-                       " of its own slots, the layers' slots and the splat maps); expected at most " + std::to_string(kMaxSlots),
-                   "pack a layer's scalar maps into one texture's channels (`channel`) or drop a role");
         m.layers = std::move(layers);
     }
 
@@ -92,6 +87,10 @@ private:
     void layerSlots(const json& v, const std::string& pointer, const HexTiling& hex, Material& m, Layers& layers, Layers::Layer& l) {
         if (!v.is_array() || v.empty()) {
             report(Code::WrongType, pointer, "expected a non-empty array of slots, got " + typeName(v));
+            return;
+        }
+        if (v.size() > kMaxSlots) {
+            report(Code::WrongCount, pointer, "expected 1 to " + std::to_string(kMaxSlots) + " slots, got " + std::to_string(v.size()));
             return;
         }
         const bool first = layers.layers.empty();

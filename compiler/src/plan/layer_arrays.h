@@ -6,6 +6,7 @@
 namespace hexc {
 
 // plan.layers->arrays, and each arrayed slot's SlotPlan::array and arrayLayer; after the slots' sections and packing.
+// Refuses a shader binding more than 16 textures so (HX110).
 void planLayerArrays(const Material& material, ShaderPlan& plan);
 
 }  // namespace hexc

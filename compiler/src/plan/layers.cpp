@@ -37,7 +37,8 @@ double fetches(const SlotPlan& sp) {
     return sp.taps;
 }
 
-// Per layer, the fraction of the splat maps' texels where its weight is at least `skip` (hexcLayerKeep keeps it), and
+// Per layer, the fraction of the splat maps' texels where its weight is at least `skip_below` (hexcLayerKeep keeps it;
+// in height mode above 0, where the layer's height is fetched, its shares dropping after the height blend), and
 // for layer 0 also where every layer's is below it (an unpainted texel: layer 0 shows), counted over the first map's
 // texels (another map's read at the same place). A splat map over its budget is an error in `diagnostics`, refused from
 // its header before it is decoded.
@@ -67,7 +68,8 @@ std::vector<double> coverage(const Material& material, const Layers& layers, Dia
                 // overflows an int.
                 const size_t at =
                     size_t(int64_t(y) * t.height / first.height) * size_t(t.width) + size_t(int64_t(x) * t.width / first.width);
-                const bool keeps = t.rgba8[4 * at + l % 4] / 255.0 >= layers.skipBelow;
+                const uint8_t weight = t.rgba8[4 * at + l % 4];
+                const bool keeps = layers.heightRole ? weight > 0 : weight / 255.0 >= layers.skipBelow;
                 kept[l] += keeps;
                 painted = painted || keeps;
             }

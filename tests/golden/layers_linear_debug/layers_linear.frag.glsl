@@ -522,10 +522,10 @@ HexcTiles hexcLayerTiles1(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
     return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
 }
 
-#line 130 "hexc/generated"
+#line 133 "hexc/generated"
 void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
 {
-#line 130 "hexc/generated"
+#line 133 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0;
@@ -562,10 +562,10 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
     }
 }
 
-#line 144 "hexc/generated"
+#line 147 "hexc/generated"
 void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8])
 {
-#line 144 "hexc/generated"
+#line 147 "hexc/generated"
     if ((!hexcLayersFilled) || any(notEqual(st, hexcLayersSt)))
     {
         vec2 param = st;
@@ -811,10 +811,10 @@ vec4 hexcAt_tiles_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights
     return vec4(_1904.xyz, 1.0);
 }
 
-#line 154 "hexc/generated"
+#line 157 "hexc/generated"
 vec4 hexc_albedo(vec2 uv, inout vec3 weights)
 {
-#line 154 "hexc/generated"
+#line 157 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -854,10 +854,10 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
     return value;
 }
 
-#line 171 "hexc/generated"
+#line 174 "hexc/generated"
 vec4 hexc_albedo(vec2 uv)
 {
-#line 171 "hexc/generated"
+#line 174 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
     vec4 _2204 = hexc_albedo(param, param_1);
@@ -974,10 +974,10 @@ float hexcAt_tiles_roughness(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 wei
     return _1919.w;
 }
 
-#line 176 "hexc/generated"
+#line 179 "hexc/generated"
 float hexc_roughness(vec2 uv, inout vec3 weights)
 {
-#line 176 "hexc/generated"
+#line 179 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -1017,10 +1017,10 @@ float hexc_roughness(vec2 uv, inout vec3 weights)
     return value;
 }
 
-#line 193 "hexc/generated"
+#line 196 "hexc/generated"
 float hexc_roughness(vec2 uv)
 {
-#line 193 "hexc/generated"
+#line 196 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
     float _2305 = hexc_roughness(param, param_1);
@@ -1028,10 +1028,10 @@ float hexc_roughness(vec2 uv)
     return _2305;
 }
 
-#line 140 "hexc/generated"
+#line 143 "hexc/generated"
 void main()
 {
-#line 140 "hexc/generated"
+#line 143 "hexc/generated"
     hexcLayersFilled = false;
     vec2 param = v_uv;
     vec4 _2314 = hexc_albedo(param);

@@ -545,10 +545,10 @@ HexcTiles hexcLayerTiles1(float2 st, float2 dx, float2 dy, int2 cell)
     return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
 }
 
-#line 130 "hexc/generated"
+#line 133 "hexc/generated"
 void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
 {
-#line 130 "hexc/generated"
+#line 133 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0f;
@@ -585,10 +585,10 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
     }
 }
 
-#line 144 "hexc/generated"
+#line 147 "hexc/generated"
 void hexcLayerWeights(float2 st, float2 dx, float2 dy, out float w[8])
 {
-#line 144 "hexc/generated"
+#line 147 "hexc/generated"
     if ((!hexcLayersFilled) || any(bool2(st.x != hexcLayersSt.x, st.y != hexcLayersSt.y)))
     {
         float2 param = st;
@@ -838,10 +838,10 @@ float4 hexcAt_tiles_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float
     return float4(_1904.xyz, 1.0f);
 }
 
-#line 154 "hexc/generated"
+#line 157 "hexc/generated"
 float4 hexc_albedo(float2 uv, inout float3 weights)
 {
-#line 154 "hexc/generated"
+#line 157 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -881,10 +881,10 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
     return value;
 }
 
-#line 171 "hexc/generated"
+#line 174 "hexc/generated"
 float4 hexc_albedo(float2 uv)
 {
-#line 171 "hexc/generated"
+#line 174 "hexc/generated"
     float2 param = uv;
     float3 param_1;
     float4 _2204 = hexc_albedo(param, param_1);
@@ -1002,10 +1002,10 @@ float hexcAt_tiles_roughness(float2 st, float2 dx, float2 dy, int2 cell, out flo
     return _1919.w;
 }
 
-#line 176 "hexc/generated"
+#line 179 "hexc/generated"
 float hexc_roughness(float2 uv, inout float3 weights)
 {
-#line 176 "hexc/generated"
+#line 179 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -1045,10 +1045,10 @@ float hexc_roughness(float2 uv, inout float3 weights)
     return value;
 }
 
-#line 193 "hexc/generated"
+#line 196 "hexc/generated"
 float hexc_roughness(float2 uv)
 {
-#line 193 "hexc/generated"
+#line 196 "hexc/generated"
     float2 param = uv;
     float3 param_1;
     float _2305 = hexc_roughness(param, param_1);
@@ -1056,10 +1056,10 @@ float hexc_roughness(float2 uv)
     return _2305;
 }
 
-#line 140 "hexc/generated"
+#line 143 "hexc/generated"
 void frag_main()
 {
-#line 140 "hexc/generated"
+#line 143 "hexc/generated"
     hexcLayersFilled = false;
     float2 param = v_uv;
     float4 _2314 = hexc_albedo(param);

@@ -589,11 +589,11 @@ HexcTiles hexcLayerTiles1(thread const float2& st, thread const float2& dx, thre
     return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3, hexcParams);
 }
 
-#line 130 "hexc/generated"
+#line 133 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0)
 {
-#line 130 "hexc/generated"
+#line 133 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0;
@@ -631,11 +631,11 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
     }
 }
 
-#line 144 "hexc/generated"
+#line 147 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 144 "hexc/generated"
+#line 147 "hexc/generated"
     if ((!hexcLayersFilled) || any(st != hexcLayersSt))
     {
         float2 param = st;
@@ -899,11 +899,11 @@ float4 hexcAt_tiles_albedo(thread const float2& st, thread const float2& dx, thr
     return float4(_1904.xyz, 1.0);
 }
 
-#line 154 "hexc/generated"
+#line 157 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 154 "hexc/generated"
+#line 157 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -944,11 +944,11 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
     return value;
 }
 
-#line 171 "hexc/generated"
+#line 174 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 171 "hexc/generated"
+#line 174 "hexc/generated"
     float2 param = uv;
     float3 param_1;
     float4 _2204 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcLatticeTiles0, hexcTex_tiles_albedo, hexcLatticeTiles1, hexcTex_splat0, hexcLayersSt, hexcLayersW);
@@ -1074,11 +1074,11 @@ float hexcAt_tiles_roughness(thread const float2& st, thread const float2& dx, t
     return _1919.w;
 }
 
-#line 176 "hexc/generated"
+#line 179 "hexc/generated"
 static inline __attribute__((always_inline))
 float hexc_roughness(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 176 "hexc/generated"
+#line 179 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -1119,11 +1119,11 @@ float hexc_roughness(thread const float2& uv, thread float3& weights, thread boo
     return value;
 }
 
-#line 193 "hexc/generated"
+#line 196 "hexc/generated"
 static inline __attribute__((always_inline))
 float hexc_roughness(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d<float> hexcTex_rock_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d<float> hexcTex_tiles_albedo, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 193 "hexc/generated"
+#line 196 "hexc/generated"
     float2 param = uv;
     float3 param_1;
     float _2305 = hexc_roughness(param, param_1, hexcLayersFilled, hexcParams, hexcTex_rock_albedo, hexcSampler, hexcLatticeTiles0, hexcTex_tiles_albedo, hexcLatticeTiles1, hexcTex_splat0, hexcLayersSt, hexcLayersW);
@@ -1131,11 +1131,11 @@ float hexc_roughness(thread const float2& uv, thread bool& hexcLayersFilled, con
     return _2305;
 }
 
-#line 140 "hexc/generated"
+#line 143 "hexc/generated"
 fragment layers_linear_frag_out layers_linear_frag(layers_linear_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d<float> hexcTex_rock_albedo [[texture(0)]], texture2d<float> hexcTex_tiles_albedo [[texture(2)]], texture2d<float> hexcTex_splat0 [[texture(4)]], sampler hexcSampler [[sampler(0)]])
 {
     layers_linear_frag_out out = {};
-#line 140 "hexc/generated"
+#line 143 "hexc/generated"
     bool hexcLayersFilled = false;
     float2 param = in.v_uv;
     HexcTiles hexcLatticeTiles0;

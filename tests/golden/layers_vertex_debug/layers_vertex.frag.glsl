@@ -520,10 +520,10 @@ HexcTiles hexcLayerTiles1(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
     return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
 }
 
-#line 102 "hexc/generated"
+#line 105 "hexc/generated"
 void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
 {
-#line 102 "hexc/generated"
+#line 105 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0;
@@ -560,10 +560,10 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
     }
 }
 
-#line 116 "hexc/generated"
+#line 119 "hexc/generated"
 void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8])
 {
-#line 116 "hexc/generated"
+#line 119 "hexc/generated"
     if ((!hexcLayersFilled) || any(notEqual(st, hexcLayersSt)))
     {
         vec2 param = st;
@@ -787,10 +787,10 @@ vec4 hexcAt_tiles_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights
     return _1622;
 }
 
-#line 126 "hexc/generated"
+#line 129 "hexc/generated"
 vec4 hexc_albedo(vec2 uv, inout vec3 weights)
 {
-#line 126 "hexc/generated"
+#line 129 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -830,10 +830,10 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
     return value;
 }
 
-#line 143 "hexc/generated"
+#line 146 "hexc/generated"
 vec4 hexc_albedo(vec2 uv)
 {
-#line 143 "hexc/generated"
+#line 146 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
     vec4 _1917 = hexc_albedo(param, param_1);
@@ -841,10 +841,10 @@ vec4 hexc_albedo(vec2 uv)
     return _1917;
 }
 
-#line 112 "hexc/generated"
+#line 115 "hexc/generated"
 void main()
 {
-#line 112 "hexc/generated"
+#line 115 "hexc/generated"
     hexcLayersFilled = false;
     vec2 param = v_uv;
     vec4 _1926 = hexc_albedo(param);

@@ -537,10 +537,10 @@ HexcTiles hexcLayerTiles1(float2 st, float2 dx, float2 dy, int2 cell)
     return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3);
 }
 
-#line 102 "hexc/generated"
+#line 105 "hexc/generated"
 void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
 {
-#line 102 "hexc/generated"
+#line 105 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0f;
@@ -577,10 +577,10 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
     }
 }
 
-#line 116 "hexc/generated"
+#line 119 "hexc/generated"
 void hexcLayerWeights(float2 st, float2 dx, float2 dy, out float w[8])
 {
-#line 116 "hexc/generated"
+#line 119 "hexc/generated"
     if ((!hexcLayersFilled) || any(bool2(st.x != hexcLayersSt.x, st.y != hexcLayersSt.y)))
     {
         float2 param = st;
@@ -807,10 +807,10 @@ float4 hexcAt_tiles_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float
     return _1622;
 }
 
-#line 126 "hexc/generated"
+#line 129 "hexc/generated"
 float4 hexc_albedo(float2 uv, inout float3 weights)
 {
-#line 126 "hexc/generated"
+#line 129 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -850,10 +850,10 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
     return value;
 }
 
-#line 143 "hexc/generated"
+#line 146 "hexc/generated"
 float4 hexc_albedo(float2 uv)
 {
-#line 143 "hexc/generated"
+#line 146 "hexc/generated"
     float2 param = uv;
     float3 param_1;
     float4 _1917 = hexc_albedo(param, param_1);
@@ -861,10 +861,10 @@ float4 hexc_albedo(float2 uv)
     return _1917;
 }
 
-#line 112 "hexc/generated"
+#line 115 "hexc/generated"
 void frag_main()
 {
-#line 112 "hexc/generated"
+#line 115 "hexc/generated"
     hexcLayersFilled = false;
     float2 param = v_uv;
     float4 _1926 = hexc_albedo(param);

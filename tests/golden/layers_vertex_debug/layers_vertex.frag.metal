@@ -588,11 +588,11 @@ HexcTiles hexcLayerTiles1(thread const float2& st, thread const float2& dx, thre
     return hexcTilesStable_tiles_albedo(param, param_1, param_2, param_3, hexcParams);
 }
 
-#line 102 "hexc/generated"
+#line 105 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor)
 {
-#line 102 "hexc/generated"
+#line 105 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0;
@@ -630,11 +630,11 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
     }
 }
 
-#line 116 "hexc/generated"
+#line 119 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 116 "hexc/generated"
+#line 119 "hexc/generated"
     if ((!hexcLayersFilled) || any(st != hexcLayersSt))
     {
         float2 param = st;
@@ -877,11 +877,11 @@ float4 hexcAt_tiles_albedo(thread const float2& st, thread const float2& dx, thr
     return _1622;
 }
 
-#line 126 "hexc/generated"
+#line 129 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 126 "hexc/generated"
+#line 129 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -922,11 +922,11 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
     return value;
 }
 
-#line 143 "hexc/generated"
+#line 146 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, thread HexcTiles& hexcLatticeTiles1, texture2d<float> hexcTex_splat0, thread float4& hexcVertexColor, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 143 "hexc/generated"
+#line 146 "hexc/generated"
     float2 param = uv;
     float3 param_1;
     float4 _1917 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcLatticeTiles1, hexcTex_splat0, hexcVertexColor, hexcLayersSt, hexcLayersW);
@@ -934,11 +934,11 @@ float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, const
     return _1917;
 }
 
-#line 112 "hexc/generated"
+#line 115 "hexc/generated"
 fragment layers_vertex_frag_out layers_vertex_frag(layers_vertex_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d_array<float> hexcArr_albedo [[texture(0)]], texture2d<float> hexcTex_splat0 [[texture(2)]], sampler hexcSampler [[sampler(0)]])
 {
     layers_vertex_frag_out out = {};
-#line 112 "hexc/generated"
+#line 115 "hexc/generated"
     bool hexcLayersFilled = false;
     float2 param = in.v_uv;
     HexcTiles hexcLatticeTiles0;

@@ -80,18 +80,18 @@ vec3 hexcMxDecode(vec3 c)
 #line 77 "hexc/materialx.glsl"
 vec4 hexcMxDecoded(vec4 c, bool srgb)
 {
-    vec4 _3188;
+    vec4 _3189;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         vec3 param = c.xyz;
-        _3188 = vec4(hexcMxDecode(param), c.w);
+        _3189 = vec4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _3188 = c;
+        _3189 = c;
     }
-    return _3188;
+    return _3189;
 }
 
 #line 194 "hexc/generated"
@@ -102,9 +102,9 @@ vec4 hexcAt_splat0(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     vec2 param_1 = dx;
     vec2 param_2 = dy;
     vec3 param_3;
-    vec4 _3367 = hexcPlainColorGrad(param, param_1, param_2, param_3, hexcTex_splat0);
+    vec4 _3368 = hexcPlainColorGrad(param, param_1, param_2, param_3, hexcTex_splat0);
     weights = param_3;
-    vec4 param_4 = _3367;
+    vec4 param_4 = _3368;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
@@ -114,18 +114,18 @@ void hexcLayerKeep(inout float w[8], float skip)
 {
 #line 205 "hexc/generated"
     float sum = 0.0;
-    float _3389;
+    float _3390;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _3389 = w[i];
+            _3390 = w[i];
         }
         else
         {
-            _3389 = 0.0;
+            _3390 = 0.0;
         }
-        w[i] = _3389;
+        w[i] = _3390;
         sum += w[i];
     }
     if (sum <= 0.0)
@@ -194,26 +194,26 @@ vec2 hexcCosSin(float angle)
     float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
     float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
     int q = int(k) & 3;
-    vec2 _728;
+    vec2 _729;
     if ((q & 1) != 0)
     {
-        _728 = vec2(-s, c);
+        _729 = vec2(-s, c);
     }
     else
     {
-        _728 = vec2(c, s);
+        _729 = vec2(c, s);
     }
-    vec2 cs = _728;
-    vec2 _743;
+    vec2 cs = _729;
+    vec2 _744;
     if ((q & 2) != 0)
     {
-        _743 = -cs;
+        _744 = -cs;
     }
     else
     {
-        _743 = cs;
+        _744 = cs;
     }
-    return _743;
+    return _744;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -221,22 +221,22 @@ void hexcStableTile_grass_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, ou
 {
 #line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _984 = hexcPcg3d(param);
-    vec3 u = vec3(_984 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _985 = hexcPcg3d(param);
+    vec3 u = vec3(_985 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.grass_albedo_rotation;
     invScale = 1.0;
-    vec2 _1007;
+    vec2 _1008;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1007 = hexcCosSin(param_1);
+        _1008 = hexcCosSin(param_1);
     }
     else
     {
-        _1007 = vec2(cos(angle), sin(angle));
+        _1008 = vec2(cos(angle), sin(angle));
     }
-    rot = _1007;
+    rot = _1008;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -272,16 +272,16 @@ HexcTap hexcPlaceTile_grass_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dS
     p.invScale = param_4;
     vec2 param_5 = d;
     HexcTap param_6 = p;
-    vec2 _1167 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1167 + c) + offset;
+    vec2 _1168 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1168 + c) + offset;
     vec2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    vec2 _1177 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1177;
+    vec2 _1178 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1178;
     vec2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    vec2 _1183 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1183;
+    vec2 _1184 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1184;
     return p;
 }
 
@@ -307,36 +307,36 @@ ivec3 hexcHexChannels(ivec2 v1, ivec2 v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _769;
+    int _770;
     if ((d < 0) && (a != 0))
     {
-        _769 = 3 - a;
+        _770 = 3 - a;
     }
     else
     {
-        _769 = a;
+        _770 = a;
     }
-    int i1 = _769;
-    int _780;
+    int i1 = _770;
+    int _781;
     if (i1 < 2)
     {
-        _780 = i1 + 1;
+        _781 = i1 + 1;
     }
     else
     {
-        _780 = 0;
+        _781 = 0;
     }
-    int vh = _780;
-    int _790;
+    int vh = _781;
+    int _791;
     if (i1 > 0)
     {
-        _790 = i1 - 1;
+        _791 = i1 - 1;
     }
     else
     {
-        _790 = 2;
+        _791 = 2;
     }
-    int vl = _790;
+    int vl = _791;
     return ivec3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -365,27 +365,27 @@ HexcTiles hexcTilesStable_grass_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 ce
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _1426 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1427 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1426;
+    t.tap[0] = _1427;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _1442 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1443 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1442;
+    t.tap[1] = _1443;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _1458 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1459 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1458;
+    t.tap[2] = _1459;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -408,22 +408,22 @@ void hexcStableTile_sand_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out
 {
 #line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _1027 = hexcPcg3d(param);
-    vec3 u = vec3(_1027 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _1028 = hexcPcg3d(param);
+    vec3 u = vec3(_1028 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.sand_albedo_rotation;
     invScale = 1.0;
-    vec2 _1044;
+    vec2 _1045;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1044 = hexcCosSin(param_1);
+        _1045 = hexcCosSin(param_1);
     }
     else
     {
-        _1044 = vec2(cos(angle), sin(angle));
+        _1045 = vec2(cos(angle), sin(angle));
     }
-    rot = _1044;
+    rot = _1045;
 }
 
 #line 276 "hexc/hextiling.glsl"
@@ -442,16 +442,16 @@ HexcTap hexcPlaceTile_sand_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dST
     p.invScale = param_4;
     vec2 param_5 = d;
     HexcTap param_6 = p;
-    vec2 _1207 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1207 + c) + offset;
+    vec2 _1208 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1208 + c) + offset;
     vec2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    vec2 _1217 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1217;
+    vec2 _1218 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1218;
     vec2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    vec2 _1223 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1223;
+    vec2 _1224 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1224;
     return p;
 }
 
@@ -496,27 +496,27 @@ HexcTiles hexcTilesStable_sand_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cel
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _1553 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1554 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1553;
+    t.tap[0] = _1554;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _1569 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1570 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1569;
+    t.tap[1] = _1570;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _1585 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1586 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1585;
+    t.tap[2] = _1586;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -539,22 +539,22 @@ void hexcStableTile_snow_albedo(ivec2 id, bool aboutOrigin, out vec2 offset, out
 {
 #line 229 "hexc/hextiling.glsl"
     uvec3 param = uvec3(uvec2(id), 0u);
-    uvec3 _1064 = hexcPcg3d(param);
-    vec3 u = vec3(_1064 >> uvec3(8u)) * 5.9604644775390625e-08;
+    uvec3 _1065 = hexcPcg3d(param);
+    vec3 u = vec3(_1065 >> uvec3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.snow_albedo_rotation;
     invScale = 1.0;
-    vec2 _1082;
+    vec2 _1083;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1082 = hexcCosSin(param_1);
+        _1083 = hexcCosSin(param_1);
     }
     else
     {
-        _1082 = vec2(cos(angle), sin(angle));
+        _1083 = vec2(cos(angle), sin(angle));
     }
-    rot = _1082;
+    rot = _1083;
 }
 
 #line 276 "hexc/hextiling.glsl"
@@ -573,16 +573,16 @@ HexcTap hexcPlaceTile_snow_albedo(ivec2 id, vec2 d, vec2 c, vec2 dSTdx, vec2 dST
     p.invScale = param_4;
     vec2 param_5 = d;
     HexcTap param_6 = p;
-    vec2 _1247 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1247 + c) + offset;
+    vec2 _1248 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1248 + c) + offset;
     vec2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    vec2 _1257 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1257;
+    vec2 _1258 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1258;
     vec2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    vec2 _1263 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1263;
+    vec2 _1264 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1264;
     return p;
 }
 
@@ -627,27 +627,27 @@ HexcTiles hexcTilesStable_snow_albedo(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec2 cel
     vec2 param_6 = dSTdx;
     vec2 param_7 = dSTdy;
     ivec2 param_8;
-    HexcTap _1679 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1680 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1679;
+    t.tap[0] = _1680;
     ivec2 param_9 = local[1];
     uvec2 param_10 = shift;
     vec2 param_11 = r;
     vec2 param_12 = dSTdx;
     vec2 param_13 = dSTdy;
     ivec2 param_14;
-    HexcTap _1695 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1696 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1695;
+    t.tap[1] = _1696;
     ivec2 param_15 = local[2];
     uvec2 param_16 = shift;
     vec2 param_17 = r;
     vec2 param_18 = dSTdx;
     vec2 param_19 = dSTdy;
     ivec2 param_20;
-    HexcTap _1711 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1712 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1711;
+    t.tap[2] = _1712;
     ivec2 param_21 = t.id[0];
     ivec2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -669,25 +669,25 @@ HexcTiles hexcLayerTiles2(vec2 st, vec2 dx, vec2 dy, ivec2 cell)
 vec4 hexcChannel(int c)
 {
 #line 132 "hexc/hextiling.glsl"
-    vec4 _850;
+    vec4 _851;
     if (c == 0)
     {
-        _850 = vec4(1.0, 0.0, 0.0, 0.0);
+        _851 = vec4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        vec4 _857;
+        vec4 _858;
         if (c == 1)
         {
-            _857 = vec4(0.0, 1.0, 0.0, 0.0);
+            _858 = vec4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _857 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
+            _858 = mix(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0, 0.0, 1.0, 0.0), bvec4(c == 2));
         }
-        _850 = _857;
+        _851 = _858;
     }
-    return _850;
+    return _851;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -775,20 +775,20 @@ vec3 hexcBlendWeights_grass_albedo(vec3 w, vec3 M)
 #line 454 "hexc/hextiling.glsl"
     vec3 param = w;
     int param_1 = 7;
-    vec3 _1893 = hexcPowInt(param, param_1);
-    vec3 wg = _1893;
+    vec3 _1894 = hexcPowInt(param, param_1);
+    vec3 wg = _1894;
     vec3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    vec3 _1909;
+    vec3 _1910;
     if (sum > 0.0)
     {
-        _1909 = W / vec3(sum);
+        _1910 = W / vec3(sum);
     }
     else
     {
-        _1909 = wg / vec3((wg.x + wg.y) + wg.z);
+        _1910 = wg / vec3((wg.x + wg.y) + wg.z);
     }
-    W = _1909;
+    W = _1910;
     return W;
 }
 
@@ -829,9 +829,9 @@ float hexcAt_grass_height(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weight
     HexcTiles param_1 = hexcLatticeTiles0;
     vec4 param_2 = hexcChannel(param);
     vec3 param_3;
-    vec4 _3271 = hexcColor_grass_height(param_1, param_2, param_3, hexcArr_height);
+    vec4 _3272 = hexcColor_grass_height(param_1, param_2, param_3, hexcArr_height);
     weights = param_3;
-    return _3271.w;
+    return _3272.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -896,9 +896,9 @@ float hexcAt_sand_height(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights
     HexcTiles param_1 = hexcLatticeTiles1;
     vec4 param_2 = hexcChannel(param);
     vec3 param_3;
-    vec4 _3299 = hexcColor_sand_height(param_1, param_2, param_3, hexcArr_height);
+    vec4 _3300 = hexcColor_sand_height(param_1, param_2, param_3, hexcArr_height);
     weights = param_3;
-    return _3299.w;
+    return _3300.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -963,9 +963,9 @@ float hexcAt_pebbles_height(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weig
     HexcTiles param_1 = hexcLatticeTiles0;
     vec4 param_2 = hexcChannel(param);
     vec3 param_3;
-    vec4 _3326 = hexcColor_pebbles_height(param_1, param_2, param_3, hexcArr_height);
+    vec4 _3327 = hexcColor_pebbles_height(param_1, param_2, param_3, hexcArr_height);
     weights = param_3;
-    return _3326.w;
+    return _3327.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -1030,15 +1030,15 @@ float hexcAt_snow_height(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights
     HexcTiles param_1 = hexcLatticeTiles2;
     vec4 param_2 = hexcChannel(param);
     vec3 param_3;
-    vec4 _3354 = hexcColor_snow_height(param_1, param_2, param_3, hexcArr_height);
+    vec4 _3355 = hexcColor_snow_height(param_1, param_2, param_3, hexcArr_height);
     weights = param_3;
-    return _3354.w;
+    return _3355.w;
 }
 
-#line 220 "hexc/generated"
-void hexcLayerHeights(inout float w[8], float h[8], float width)
+#line 223 "hexc/generated"
+void hexcLayerHeights(inout float w[8], float h[8], float width, float skip)
 {
-#line 220 "hexc/generated"
+#line 223 "hexc/generated"
     float top = -2.0;
     for (int i = 0; i < 8; i++)
     {
@@ -1048,30 +1048,30 @@ void hexcLayerHeights(inout float w[8], float h[8], float width)
         }
     }
     float sum = 0.0;
-    float _3467;
+    float _3468;
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
         if (w[i_1] > 0.0)
         {
-            _3467 = max(((h[i_1] + w[i_1]) - top) + width, 0.0);
+            _3468 = max(((h[i_1] + w[i_1]) - top) + width, 0.0);
         }
         else
         {
-            _3467 = 0.0;
+            _3468 = 0.0;
         }
-        w[i_1] = _3467;
+        w[i_1] = _3468;
         sum += w[i_1];
     }
-    for (int i_2 = 0; i_2 < 8; i_2++)
-    {
-        w[i_2] /= sum;
-    }
+    float param[8] = w;
+    float param_1 = min(skip * sum, width);
+    hexcLayerKeep(param, param_1);
+    w = param;
 }
 
-#line 235 "hexc/generated"
+#line 238 "hexc/generated"
 void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
 {
-#line 235 "hexc/generated"
+#line 238 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0;
@@ -1081,28 +1081,28 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
     vec2 param_2 = dy * hexcParams.splat0_tiling;
     ivec2 param_3 = ivec2(0);
     vec3 param_4;
-    vec4 _3541 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
+    vec4 _3536 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
     vec3 t = param_4;
-    vec4 splat0 = _3541;
+    vec4 splat0 = _3536;
     w[0] = splat0.x;
     w[1] = splat0.y;
     w[2] = splat0.z;
     w[3] = splat0.w;
     float param_5[8] = w;
-    float param_6 = 0.0019607841968536376953125;
+    float param_6 = 0.0;
     hexcLayerKeep(param_5, param_6);
     w = param_5;
-    bool _3563 = w[0] > 0.0;
-    bool _3570;
-    if (!_3563)
+    bool _3557 = w[0] > 0.0;
+    bool _3564;
+    if (!_3557)
     {
-        _3570 = w[2] > 0.0;
+        _3564 = w[2] > 0.0;
     }
     else
     {
-        _3570 = _3563;
+        _3564 = _3557;
     }
-    if (_3570)
+    if (_3564)
     {
         vec2 param_7 = st * hexcParams.grass_albedo_tiling;
         vec2 param_8 = dx * hexcParams.grass_albedo_tiling;
@@ -1138,9 +1138,9 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
         vec2 param_21 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_22 = ivec2(0);
         vec3 param_23;
-        float _3669 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23);
+        float _3663 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        h[0] = _3669;
+        h[0] = _3663;
     }
     if (w[1] > 0.0)
     {
@@ -1149,9 +1149,9 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
         vec2 param_26 = dy * hexcParams.sand_albedo_tiling;
         ivec2 param_27 = ivec2(0);
         vec3 param_28;
-        float _3694 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28);
+        float _3688 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28);
         t = param_28;
-        h[1] = _3694;
+        h[1] = _3688;
     }
     if (w[2] > 0.0)
     {
@@ -1160,9 +1160,9 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
         vec2 param_31 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_32 = ivec2(0);
         vec3 param_33;
-        float _3719 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33);
+        float _3713 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33);
         t = param_33;
-        h[2] = _3719;
+        h[2] = _3713;
     }
     if (w[3] > 0.0)
     {
@@ -1171,21 +1171,22 @@ void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, inout float w[8])
         vec2 param_36 = dy * hexcParams.snow_albedo_tiling;
         ivec2 param_37 = ivec2(0);
         vec3 param_38;
-        float _3744 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38);
+        float _3738 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38);
         t = param_38;
-        h[3] = _3744;
+        h[3] = _3738;
     }
     float param_39[8] = w;
     float param_40[8] = h;
     float param_41 = 0.20000000298023223876953125;
-    hexcLayerHeights(param_39, param_40, param_41);
+    float param_42 = 0.0019607841968536376953125;
+    hexcLayerHeights(param_39, param_40, param_41, param_42);
     w = param_39;
 }
 
-#line 260 "hexc/generated"
+#line 263 "hexc/generated"
 void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8])
 {
-#line 260 "hexc/generated"
+#line 263 "hexc/generated"
     if ((!hexcLayersFilled) || any(notEqual(st, hexcLayersSt)))
     {
         vec2 param = st;
@@ -1236,9 +1237,9 @@ vec4 hexcAt_grass_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights
     HexcTiles param = hexcLatticeTiles0;
     vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_2;
-    vec4 _3251 = hexcColor_grass_albedo(param, param_1, param_2, hexcArr_albedo);
+    vec4 _3252 = hexcColor_grass_albedo(param, param_1, param_2, hexcArr_albedo);
     weights = param_2;
-    return _3251;
+    return _3252;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1277,9 +1278,9 @@ vec4 hexcAt_sand_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param = hexcLatticeTiles1;
     vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_2;
-    vec4 _3281 = hexcColor_sand_albedo(param, param_1, param_2, hexcArr_albedo);
+    vec4 _3282 = hexcColor_sand_albedo(param, param_1, param_2, hexcArr_albedo);
     weights = param_2;
-    return _3281;
+    return _3282;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1318,9 +1319,9 @@ vec4 hexcAt_pebbles_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weigh
     HexcTiles param = hexcLatticeTiles0;
     vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_2;
-    vec4 _3308 = hexcColor_pebbles_albedo(param, param_1, param_2, hexcArr_albedo);
+    vec4 _3309 = hexcColor_pebbles_albedo(param, param_1, param_2, hexcArr_albedo);
     weights = param_2;
-    return _3308;
+    return _3309;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1359,15 +1360,15 @@ vec4 hexcAt_snow_albedo(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param = hexcLatticeTiles2;
     vec4 param_1 = vec4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     vec3 param_2;
-    vec4 _3336 = hexcColor_snow_albedo(param, param_1, param_2, hexcArr_albedo);
+    vec4 _3337 = hexcColor_snow_albedo(param, param_1, param_2, hexcArr_albedo);
     weights = param_2;
-    return _3336;
+    return _3337;
 }
 
-#line 270 "hexc/generated"
+#line 273 "hexc/generated"
 vec4 hexc_albedo(vec2 uv, inout vec3 weights)
 {
-#line 270 "hexc/generated"
+#line 273 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -1387,9 +1388,9 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_6 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        vec4 _3824 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8);
+        vec4 _3820 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_3824 * w[0]);
+        value += (_3820 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1399,9 +1400,9 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_11 = dy * hexcParams.sand_albedo_tiling;
         ivec2 param_12 = ivec2(0);
         vec3 param_13;
-        vec4 _3859 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13);
+        vec4 _3855 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_3859 * w[1]);
+        value += (_3855 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0)
@@ -1411,9 +1412,9 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_16 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_17 = ivec2(0);
         vec3 param_18;
-        vec4 _3894 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18);
+        vec4 _3890 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18);
         t = param_18;
-        value += (_3894 * w[2]);
+        value += (_3890 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0)
@@ -1423,23 +1424,23 @@ vec4 hexc_albedo(vec2 uv, inout vec3 weights)
         vec2 param_21 = dy * hexcParams.snow_albedo_tiling;
         ivec2 param_22 = ivec2(0);
         vec3 param_23;
-        vec4 _3929 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23);
+        vec4 _3925 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        value += (_3929 * w[3]);
+        value += (_3925 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 295 "hexc/generated"
+#line 298 "hexc/generated"
 vec4 hexc_albedo(vec2 uv)
 {
-#line 295 "hexc/generated"
+#line 298 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec4 _3947 = hexc_albedo(param, param_1);
+    vec4 _3943 = hexc_albedo(param, param_1);
     vec3 weights = param_1;
-    return _3947;
+    return _3943;
 }
 
 #line 621 "hexc/hextiling.glsl"
@@ -1448,16 +1449,16 @@ vec2 hexcNormalToDeriv(vec3 vM, bool flipY)
 #line 621 "hexc/hextiling.glsl"
     vec3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125 * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _2647;
+    float _2648;
     if (flipY)
     {
-        _2647 = -vM.y;
+        _2648 = -vM.y;
     }
     else
     {
-        _2647 = vM.y;
+        _2648 = vM.y;
     }
-    return (-vec2(vM.x, _2647)) / vec2(zMa);
+    return (-vec2(vM.x, _2648)) / vec2(zMa);
 }
 
 #line 145 "hexc/hextiling.glsl"
@@ -1478,16 +1479,16 @@ vec2 hexcTapDeriv(vec4 texel, HexcTap p, bool scaled, bool flipY)
     vec2 param_2 = hexcNormalToDeriv(param, param_1);
     vec2 param_3 = p.rot;
     vec2 d = hexcRotateFromTile(param_2, param_3);
-    vec2 _2680;
+    vec2 _2681;
     if (scaled)
     {
-        _2680 = d * p.invScale;
+        _2681 = d * p.invScale;
     }
     else
     {
-        _2680 = d;
+        _2681 = d;
     }
-    return _2680;
+    return _2681;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1547,9 +1548,9 @@ vec2 hexcAt_grass_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights
     HexcTiles param = hexcLatticeTiles0;
     bool param_1 = false;
     vec3 param_2;
-    vec2 _3260 = hexcDeriv_grass_normal(param, param_1, param_2, hexcArr_normal);
+    vec2 _3261 = hexcDeriv_grass_normal(param, param_1, param_2, hexcArr_normal);
     weights = param_2;
-    return _3260;
+    return _3261;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1609,9 +1610,9 @@ vec2 hexcAt_sand_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param = hexcLatticeTiles1;
     bool param_1 = false;
     vec3 param_2;
-    vec2 _3289 = hexcDeriv_sand_normal(param, param_1, param_2, hexcArr_normal);
+    vec2 _3290 = hexcDeriv_sand_normal(param, param_1, param_2, hexcArr_normal);
     weights = param_2;
-    return _3289;
+    return _3290;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1671,9 +1672,9 @@ vec2 hexcAt_pebbles_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weigh
     HexcTiles param = hexcLatticeTiles0;
     bool param_1 = false;
     vec3 param_2;
-    vec2 _3316 = hexcDeriv_pebbles_normal(param, param_1, param_2, hexcArr_normal);
+    vec2 _3317 = hexcDeriv_pebbles_normal(param, param_1, param_2, hexcArr_normal);
     weights = param_2;
-    return _3316;
+    return _3317;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1733,15 +1734,15 @@ vec2 hexcAt_snow_normal(vec2 st, vec2 dx, vec2 dy, ivec2 cell, out vec3 weights)
     HexcTiles param = hexcLatticeTiles2;
     bool param_1 = false;
     vec3 param_2;
-    vec2 _3344 = hexcDeriv_snow_normal(param, param_1, param_2, hexcArr_normal);
+    vec2 _3345 = hexcDeriv_snow_normal(param, param_1, param_2, hexcArr_normal);
     weights = param_2;
-    return _3344;
+    return _3345;
 }
 
-#line 300 "hexc/generated"
+#line 303 "hexc/generated"
 vec2 hexc_normal(vec2 uv, inout vec3 weights)
 {
-#line 300 "hexc/generated"
+#line 303 "hexc/generated"
     vec2 st = uv;
     vec2 dx = dFdx(st);
     vec2 dy = dFdy(st);
@@ -1761,9 +1762,9 @@ vec2 hexc_normal(vec2 uv, inout vec3 weights)
         vec2 param_6 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_7 = ivec2(0);
         vec3 param_8;
-        vec2 _3995 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8);
+        vec2 _3991 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_3995 * w[0]);
+        value += (_3991 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1773,9 +1774,9 @@ vec2 hexc_normal(vec2 uv, inout vec3 weights)
         vec2 param_11 = dy * hexcParams.sand_albedo_tiling;
         ivec2 param_12 = ivec2(0);
         vec3 param_13;
-        vec2 _4030 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13);
+        vec2 _4026 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_4030 * w[1]);
+        value += (_4026 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0)
@@ -1785,9 +1786,9 @@ vec2 hexc_normal(vec2 uv, inout vec3 weights)
         vec2 param_16 = dy * hexcParams.grass_albedo_tiling;
         ivec2 param_17 = ivec2(0);
         vec3 param_18;
-        vec2 _4065 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18);
+        vec2 _4061 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18);
         t = param_18;
-        value += (_4065 * w[2]);
+        value += (_4061 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0)
@@ -1797,23 +1798,23 @@ vec2 hexc_normal(vec2 uv, inout vec3 weights)
         vec2 param_21 = dy * hexcParams.snow_albedo_tiling;
         ivec2 param_22 = ivec2(0);
         vec3 param_23;
-        vec2 _4100 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23);
+        vec2 _4096 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        value += (_4100 * w[3]);
+        value += (_4096 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 325 "hexc/generated"
+#line 328 "hexc/generated"
 vec2 hexc_normal(vec2 uv)
 {
-#line 325 "hexc/generated"
+#line 328 "hexc/generated"
     vec2 param = uv;
     vec3 param_1;
-    vec2 _4118 = hexc_normal(param, param_1);
+    vec2 _4114 = hexc_normal(param, param_1);
     vec3 weights = param_1;
-    return _4118;
+    return _4114;
 }
 
 #line 701 "hexc/hextiling.glsl"
@@ -1823,21 +1824,21 @@ vec3 hexcDerivToNormal(vec2 deriv)
     return normalize(vec3(-deriv, 1.0));
 }
 
-#line 256 "hexc/generated"
+#line 259 "hexc/generated"
 void main()
 {
-#line 256 "hexc/generated"
+#line 259 "hexc/generated"
     hexcLayersFilled = false;
     vec2 param = v_uv;
-    vec4 _4127 = hexc_albedo(param);
-    vec3 albedo = _4127.xyz;
+    vec4 _4123 = hexc_albedo(param);
+    vec3 albedo = _4123.xyz;
     float roughness = 0.5;
     vec3 N = normalize(v_normal);
     vec3 T = normalize(v_tangent.xyz - (N * dot(N, v_tangent.xyz)));
     vec3 B = cross(N, T) * v_tangent.w;
     vec2 param_1 = v_uv;
-    vec2 _4159 = hexc_normal(param_1);
-    vec2 param_2 = _4159;
+    vec2 _4155 = hexc_normal(param_1);
+    vec2 param_2 = _4155;
     vec3 n = hexcDerivToNormal(param_2);
     N = normalize(((T * n.x) - (B * n.y)) + (N * n.z));
     float diffuse = max(dot(N, vec3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);

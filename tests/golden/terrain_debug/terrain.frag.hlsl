@@ -20,7 +20,7 @@ struct HexcTiles
     int3 channel;
 };
 
-static const float4 _2007[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
+static const float4 _2008[3] = { 0.0f.xxxx, 0.0f.xxxx, 0.0f.xxxx };
 
 cbuffer HexcParams : register(b0)
 {
@@ -87,27 +87,27 @@ float4 hexcPlainColorGrad(Texture2D<float4> tex, SamplerState samp, float2 st, f
 float3 hexcMxDecode(float3 c)
 {
 #line 72 "hexc/materialx.glsl"
-    float3 _3168 = c / 12.9200000762939453125f.xxx;
-    float3 _3179 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
-    bool3 _3183 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
-    return float3(_3183.x ? _3179.x : _3168.x, _3183.y ? _3179.y : _3168.y, _3183.z ? _3179.z : _3168.z);
+    float3 _3169 = c / 12.9200000762939453125f.xxx;
+    float3 _3180 = pow(max(c + 0.054999999701976776123046875f.xxx, 0.0f.xxx) / 1.05499994754791259765625f.xxx, 2.400000095367431640625f.xxx);
+    bool3 _3184 = bool3(c.x > 0.040449999272823333740234375f.xxx.x, c.y > 0.040449999272823333740234375f.xxx.y, c.z > 0.040449999272823333740234375f.xxx.z);
+    return float3(_3184.x ? _3180.x : _3169.x, _3184.y ? _3180.y : _3169.y, _3184.z ? _3180.z : _3169.z);
 }
 
 #line 77 "hexc/materialx.glsl"
 float4 hexcMxDecoded(float4 c, bool srgb)
 {
-    float4 _3188;
+    float4 _3189;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _3188 = float4(hexcMxDecode(param), c.w);
+        _3189 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _3188 = c;
+        _3189 = c;
     }
-    return _3188;
+    return _3189;
 }
 
 #line 194 "hexc/generated"
@@ -118,9 +118,9 @@ float4 hexcAt_splat0(float2 st, float2 dx, float2 dy, int2 cell, out float3 weig
     float2 param_1 = dx;
     float2 param_2 = dy;
     float3 param_3;
-    float4 _3367 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
+    float4 _3368 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
     weights = param_3;
-    float4 param_4 = _3367;
+    float4 param_4 = _3368;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
@@ -130,18 +130,18 @@ void hexcLayerKeep(inout float w[8], float skip)
 {
 #line 205 "hexc/generated"
     float sum = 0.0f;
-    float _3389;
+    float _3390;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _3389 = w[i];
+            _3390 = w[i];
         }
         else
         {
-            _3389 = 0.0f;
+            _3390 = 0.0f;
         }
-        w[i] = _3389;
+        w[i] = _3390;
         sum += w[i];
     }
     if (sum <= 0.0f)
@@ -210,26 +210,26 @@ float2 hexcCosSin(float angle)
     float s = r * (1.0f + (r2 * ((-0.16666667163372039794921875f) + (r2 * (0.008333333767950534820556640625f + (r2 * ((-0.00019841270113829523324966430664062f) + (r2 * 2.7557318844628753140568733215332e-06f))))))));
     float c = 1.0f + (r2 * ((-0.5f) + (r2 * (0.0416666679084300994873046875f + (r2 * ((-0.001388888922519981861114501953125f) + (r2 * 2.4801587642286904156208038330078e-05f)))))));
     int q = int(k) & 3;
-    float2 _728;
+    float2 _729;
     if ((q & 1) != 0)
     {
-        _728 = float2(-s, c);
+        _729 = float2(-s, c);
     }
     else
     {
-        _728 = float2(c, s);
+        _729 = float2(c, s);
     }
-    float2 cs = _728;
-    float2 _743;
+    float2 cs = _729;
+    float2 _744;
     if ((q & 2) != 0)
     {
-        _743 = -cs;
+        _744 = -cs;
     }
     else
     {
-        _743 = cs;
+        _744 = cs;
     }
-    return _743;
+    return _744;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -237,22 +237,22 @@ void hexcStableTile_grass_albedo(int2 id, bool aboutOrigin, out float2 offset, o
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _984 = hexcPcg3d(param);
-    float3 u = float3(_984 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _985 = hexcPcg3d(param);
+    float3 u = float3(_985 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_grass_albedo_rotation;
     invScale = 1.0f;
-    float2 _1007;
+    float2 _1008;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1007 = hexcCosSin(param_1);
+        _1008 = hexcCosSin(param_1);
     }
     else
     {
-        _1007 = float2(cos(angle), sin(angle));
+        _1008 = float2(cos(angle), sin(angle));
     }
-    rot = _1007;
+    rot = _1008;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -288,16 +288,16 @@ HexcTap hexcPlaceTile_grass_albedo(int2 id, float2 d, float2 c, float2 dSTdx, fl
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _1167 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1167 + c) + offset;
+    float2 _1168 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1168 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _1177 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1177;
+    float2 _1178 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1178;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _1183 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1183;
+    float2 _1184 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1184;
     return p;
 }
 
@@ -323,36 +323,36 @@ int3 hexcHexChannels(int2 v1, int2 v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _769;
+    int _770;
     if ((d < 0) && (a != 0))
     {
-        _769 = 3 - a;
+        _770 = 3 - a;
     }
     else
     {
-        _769 = a;
+        _770 = a;
     }
-    int i1 = _769;
-    int _780;
+    int i1 = _770;
+    int _781;
     if (i1 < 2)
     {
-        _780 = i1 + 1;
+        _781 = i1 + 1;
     }
     else
     {
-        _780 = 0;
+        _781 = 0;
     }
-    int vh = _780;
-    int _790;
+    int vh = _781;
+    int _791;
     if (i1 > 0)
     {
-        _790 = i1 - 1;
+        _791 = i1 - 1;
     }
     else
     {
-        _790 = 2;
+        _791 = 2;
     }
-    int vl = _790;
+    int vl = _791;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -381,27 +381,27 @@ HexcTiles hexcTilesStable_grass_albedo(float2 st, float2 dSTdx, float2 dSTdy, in
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1426 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1427 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1426;
+    t.tap[0] = _1427;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1442 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1443 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1442;
+    t.tap[1] = _1443;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1458 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1459 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1458;
+    t.tap[2] = _1459;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -424,22 +424,22 @@ void hexcStableTile_sand_albedo(int2 id, bool aboutOrigin, out float2 offset, ou
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _1027 = hexcPcg3d(param);
-    float3 u = float3(_1027 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _1028 = hexcPcg3d(param);
+    float3 u = float3(_1028 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_sand_albedo_rotation;
     invScale = 1.0f;
-    float2 _1044;
+    float2 _1045;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1044 = hexcCosSin(param_1);
+        _1045 = hexcCosSin(param_1);
     }
     else
     {
-        _1044 = float2(cos(angle), sin(angle));
+        _1045 = float2(cos(angle), sin(angle));
     }
-    rot = _1044;
+    rot = _1045;
 }
 
 #line 276 "hexc/hextiling.glsl"
@@ -458,16 +458,16 @@ HexcTap hexcPlaceTile_sand_albedo(int2 id, float2 d, float2 c, float2 dSTdx, flo
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _1207 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1207 + c) + offset;
+    float2 _1208 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1208 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _1217 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1217;
+    float2 _1218 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1218;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _1223 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1223;
+    float2 _1224 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1224;
     return p;
 }
 
@@ -512,27 +512,27 @@ HexcTiles hexcTilesStable_sand_albedo(float2 st, float2 dSTdx, float2 dSTdy, int
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1553 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1554 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1553;
+    t.tap[0] = _1554;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1569 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1570 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1569;
+    t.tap[1] = _1570;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1585 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1586 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1585;
+    t.tap[2] = _1586;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -555,22 +555,22 @@ void hexcStableTile_snow_albedo(int2 id, bool aboutOrigin, out float2 offset, ou
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _1064 = hexcPcg3d(param);
-    float3 u = float3(_1064 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
+    uint3 _1065 = hexcPcg3d(param);
+    float3 u = float3(_1065 >> uint3(8u, 8u, 8u)) * 5.9604644775390625e-08f;
     offset = u.xy;
     float angle = (((u.z * 2.0f) - 1.0f) * 3.1415927410125732421875f) * hexcParams_snow_albedo_rotation;
     invScale = 1.0f;
-    float2 _1082;
+    float2 _1083;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1082 = hexcCosSin(param_1);
+        _1083 = hexcCosSin(param_1);
     }
     else
     {
-        _1082 = float2(cos(angle), sin(angle));
+        _1083 = float2(cos(angle), sin(angle));
     }
-    rot = _1082;
+    rot = _1083;
 }
 
 #line 276 "hexc/hextiling.glsl"
@@ -589,16 +589,16 @@ HexcTap hexcPlaceTile_snow_albedo(int2 id, float2 d, float2 c, float2 dSTdx, flo
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _1247 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1247 + c) + offset;
+    float2 _1248 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1248 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _1257 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1257;
+    float2 _1258 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1258;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _1263 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1263;
+    float2 _1264 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1264;
     return p;
 }
 
@@ -643,27 +643,27 @@ HexcTiles hexcTilesStable_snow_albedo(float2 st, float2 dSTdx, float2 dSTdy, int
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1679 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
+    HexcTap _1680 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8);
     t.id[0] = param_8;
-    t.tap[0] = _1679;
+    t.tap[0] = _1680;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1695 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
+    HexcTap _1696 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14);
     t.id[1] = param_14;
-    t.tap[1] = _1695;
+    t.tap[1] = _1696;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1711 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
+    HexcTap _1712 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20);
     t.id[2] = param_20;
-    t.tap[2] = _1711;
+    t.tap[2] = _1712;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -685,26 +685,26 @@ HexcTiles hexcLayerTiles2(float2 st, float2 dx, float2 dy, int2 cell)
 float4 hexcChannel(int c)
 {
 #line 132 "hexc/hextiling.glsl"
-    float4 _850;
+    float4 _851;
     if (c == 0)
     {
-        _850 = float4(1.0f, 0.0f, 0.0f, 0.0f);
+        _851 = float4(1.0f, 0.0f, 0.0f, 0.0f);
     }
     else
     {
-        float4 _857;
+        float4 _858;
         if (c == 1)
         {
-            _857 = float4(0.0f, 1.0f, 0.0f, 0.0f);
+            _858 = float4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         else
         {
-            bool4 _867 = (c == 2).xxxx;
-            _857 = float4(_867.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _867.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _867.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _867.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
+            bool4 _868 = (c == 2).xxxx;
+            _858 = float4(_868.x ? float4(0.0f, 0.0f, 1.0f, 0.0f).x : float4(0.0f, 0.0f, 0.0f, 1.0f).x, _868.y ? float4(0.0f, 0.0f, 1.0f, 0.0f).y : float4(0.0f, 0.0f, 0.0f, 1.0f).y, _868.z ? float4(0.0f, 0.0f, 1.0f, 0.0f).z : float4(0.0f, 0.0f, 0.0f, 1.0f).z, _868.w ? float4(0.0f, 0.0f, 1.0f, 0.0f).w : float4(0.0f, 0.0f, 0.0f, 1.0f).w);
         }
-        _850 = _857;
+        _851 = _858;
     }
-    return _850;
+    return _851;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -735,7 +735,7 @@ void hexcFetchTaps_grass_albedo(Texture2DArray<float4> tex, SamplerState samp, H
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _2007;
+    c = _2008;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_grass_albedo(tex, samp, param_1, param_2);
@@ -792,20 +792,20 @@ float3 hexcBlendWeights_grass_albedo(float3 w, float3 M)
 #line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1893 = hexcPowInt(param, param_1);
-    float3 wg = _1893;
+    float3 _1894 = hexcPowInt(param, param_1);
+    float3 wg = _1894;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1909;
+    float3 _1910;
     if (sum > 0.0f)
     {
-        _1909 = W / sum.xxx;
+        _1910 = W / sum.xxx;
     }
     else
     {
-        _1909 = wg / ((wg.x + wg.y) + wg.z).xxx;
+        _1910 = wg / ((wg.x + wg.y) + wg.z).xxx;
     }
-    W = _1909;
+    W = _1910;
     return W;
 }
 
@@ -813,10 +813,10 @@ float3 hexcBlendWeights_grass_albedo(float3 w, float3 M)
 float3 hexcShowWeights(float3 W, int3 channel)
 {
 #line 125 "hexc/hextiling.glsl"
-    int3 _822 = channel.x.xxx;
-    int3 _832 = channel.y.xxx;
-    int3 _841 = channel.z.xxx;
-    return ((float3(bool3(int3(0, 1, 2).x == _822.x, int3(0, 1, 2).y == _822.y, int3(0, 1, 2).z == _822.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _832.x, int3(0, 1, 2).y == _832.y, int3(0, 1, 2).z == _832.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _841.x, int3(0, 1, 2).y == _841.y, int3(0, 1, 2).z == _841.z)) * W.z);
+    int3 _823 = channel.x.xxx;
+    int3 _833 = channel.y.xxx;
+    int3 _842 = channel.z.xxx;
+    return ((float3(bool3(int3(0, 1, 2).x == _823.x, int3(0, 1, 2).y == _823.y, int3(0, 1, 2).z == _823.z)) * W.x) + (float3(bool3(int3(0, 1, 2).x == _833.x, int3(0, 1, 2).y == _833.y, int3(0, 1, 2).z == _833.z)) * W.y)) + (float3(bool3(int3(0, 1, 2).x == _842.x, int3(0, 1, 2).y == _842.y, int3(0, 1, 2).z == _842.z)) * W.z);
 }
 
 #line 577 "hexc/hextiling.glsl"
@@ -849,9 +849,9 @@ float hexcAt_grass_height(float2 st, float2 dx, float2 dy, int2 cell, out float3
     HexcTiles param_1 = hexcLatticeTiles0;
     float4 param_2 = hexcChannel(param);
     float3 param_3;
-    float4 _3271 = hexcColor_grass_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
+    float4 _3272 = hexcColor_grass_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
     weights = param_3;
-    return _3271.w;
+    return _3272.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -867,7 +867,7 @@ void hexcFetchTaps_sand_albedo(Texture2DArray<float4> tex, SamplerState samp, He
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _2007;
+    c = _2008;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_sand_albedo(tex, samp, param_1, param_2);
@@ -916,9 +916,9 @@ float hexcAt_sand_height(float2 st, float2 dx, float2 dy, int2 cell, out float3 
     HexcTiles param_1 = hexcLatticeTiles1;
     float4 param_2 = hexcChannel(param);
     float3 param_3;
-    float4 _3299 = hexcColor_sand_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
+    float4 _3300 = hexcColor_sand_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
     weights = param_3;
-    return _3299.w;
+    return _3300.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -934,7 +934,7 @@ void hexcFetchTaps_pebbles_albedo(Texture2DArray<float4> tex, SamplerState samp,
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _2007;
+    c = _2008;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_pebbles_albedo(tex, samp, param_1, param_2);
@@ -983,9 +983,9 @@ float hexcAt_pebbles_height(float2 st, float2 dx, float2 dy, int2 cell, out floa
     HexcTiles param_1 = hexcLatticeTiles0;
     float4 param_2 = hexcChannel(param);
     float3 param_3;
-    float4 _3326 = hexcColor_pebbles_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
+    float4 _3327 = hexcColor_pebbles_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
     weights = param_3;
-    return _3326.w;
+    return _3327.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -1001,7 +1001,7 @@ void hexcFetchTaps_snow_albedo(Texture2DArray<float4> tex, SamplerState samp, He
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _2007;
+    c = _2008;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_snow_albedo(tex, samp, param_1, param_2);
@@ -1050,15 +1050,15 @@ float hexcAt_snow_height(float2 st, float2 dx, float2 dy, int2 cell, out float3 
     HexcTiles param_1 = hexcLatticeTiles2;
     float4 param_2 = hexcChannel(param);
     float3 param_3;
-    float4 _3354 = hexcColor_snow_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
+    float4 _3355 = hexcColor_snow_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3);
     weights = param_3;
-    return _3354.w;
+    return _3355.w;
 }
 
-#line 220 "hexc/generated"
-void hexcLayerHeights(inout float w[8], float h[8], float width)
+#line 223 "hexc/generated"
+void hexcLayerHeights(inout float w[8], float h[8], float width, float skip)
 {
-#line 220 "hexc/generated"
+#line 223 "hexc/generated"
     float top = -2.0f;
     for (int i = 0; i < 8; i++)
     {
@@ -1068,30 +1068,30 @@ void hexcLayerHeights(inout float w[8], float h[8], float width)
         }
     }
     float sum = 0.0f;
-    float _3467;
+    float _3468;
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
         if (w[i_1] > 0.0f)
         {
-            _3467 = max(((h[i_1] + w[i_1]) - top) + width, 0.0f);
+            _3468 = max(((h[i_1] + w[i_1]) - top) + width, 0.0f);
         }
         else
         {
-            _3467 = 0.0f;
+            _3468 = 0.0f;
         }
-        w[i_1] = _3467;
+        w[i_1] = _3468;
         sum += w[i_1];
     }
-    for (int i_2 = 0; i_2 < 8; i_2++)
-    {
-        w[i_2] /= sum;
-    }
+    float param[8] = w;
+    float param_1 = min(skip * sum, width);
+    hexcLayerKeep(param, param_1);
+    w = param;
 }
 
-#line 235 "hexc/generated"
+#line 238 "hexc/generated"
 void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
 {
-#line 235 "hexc/generated"
+#line 238 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0f;
@@ -1101,28 +1101,28 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
     float2 param_2 = dy * hexcParams_splat0_tiling;
     int2 param_3 = int2(0, 0);
     float3 param_4;
-    float4 _3541 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
+    float4 _3536 = hexcAt_splat0(param, param_1, param_2, param_3, param_4);
     float3 t = param_4;
-    float4 splat0 = _3541;
+    float4 splat0 = _3536;
     w[0] = splat0.x;
     w[1] = splat0.y;
     w[2] = splat0.z;
     w[3] = splat0.w;
     float param_5[8] = w;
-    float param_6 = 0.0019607841968536376953125f;
+    float param_6 = 0.0f;
     hexcLayerKeep(param_5, param_6);
     w = param_5;
-    bool _3563 = w[0] > 0.0f;
-    bool _3570;
-    if (!_3563)
+    bool _3557 = w[0] > 0.0f;
+    bool _3564;
+    if (!_3557)
     {
-        _3570 = w[2] > 0.0f;
+        _3564 = w[2] > 0.0f;
     }
     else
     {
-        _3570 = _3563;
+        _3564 = _3557;
     }
-    if (_3570)
+    if (_3564)
     {
         float2 param_7 = st * hexcParams_grass_albedo_tiling;
         float2 param_8 = dx * hexcParams_grass_albedo_tiling;
@@ -1158,9 +1158,9 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
         float2 param_21 = dy * hexcParams_grass_albedo_tiling;
         int2 param_22 = int2(0, 0);
         float3 param_23;
-        float _3669 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23);
+        float _3663 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        h[0] = _3669;
+        h[0] = _3663;
     }
     if (w[1] > 0.0f)
     {
@@ -1169,9 +1169,9 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
         float2 param_26 = dy * hexcParams_sand_albedo_tiling;
         int2 param_27 = int2(0, 0);
         float3 param_28;
-        float _3694 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28);
+        float _3688 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28);
         t = param_28;
-        h[1] = _3694;
+        h[1] = _3688;
     }
     if (w[2] > 0.0f)
     {
@@ -1180,9 +1180,9 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
         float2 param_31 = dy * hexcParams_grass_albedo_tiling;
         int2 param_32 = int2(0, 0);
         float3 param_33;
-        float _3719 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33);
+        float _3713 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33);
         t = param_33;
-        h[2] = _3719;
+        h[2] = _3713;
     }
     if (w[3] > 0.0f)
     {
@@ -1191,21 +1191,22 @@ void hexcLayerFill(float2 st, float2 dx, float2 dy, inout float w[8])
         float2 param_36 = dy * hexcParams_snow_albedo_tiling;
         int2 param_37 = int2(0, 0);
         float3 param_38;
-        float _3744 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38);
+        float _3738 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38);
         t = param_38;
-        h[3] = _3744;
+        h[3] = _3738;
     }
     float param_39[8] = w;
     float param_40[8] = h;
     float param_41 = 0.20000000298023223876953125f;
-    hexcLayerHeights(param_39, param_40, param_41);
+    float param_42 = 0.0019607841968536376953125f;
+    hexcLayerHeights(param_39, param_40, param_41, param_42);
     w = param_39;
 }
 
-#line 260 "hexc/generated"
+#line 263 "hexc/generated"
 void hexcLayerWeights(float2 st, float2 dx, float2 dy, out float w[8])
 {
-#line 260 "hexc/generated"
+#line 263 "hexc/generated"
     if ((!hexcLayersFilled) || any(bool2(st.x != hexcLayersSt.x, st.y != hexcLayersSt.y)))
     {
         float2 param = st;
@@ -1256,9 +1257,9 @@ float4 hexcAt_grass_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float
     HexcTiles param = hexcLatticeTiles0;
     float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_2;
-    float4 _3251 = hexcColor_grass_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    float4 _3252 = hexcColor_grass_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
     weights = param_2;
-    return _3251;
+    return _3252;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1297,9 +1298,9 @@ float4 hexcAt_sand_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3
     HexcTiles param = hexcLatticeTiles1;
     float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_2;
-    float4 _3281 = hexcColor_sand_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    float4 _3282 = hexcColor_sand_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
     weights = param_2;
-    return _3281;
+    return _3282;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1338,9 +1339,9 @@ float4 hexcAt_pebbles_albedo(float2 st, float2 dx, float2 dy, int2 cell, out flo
     HexcTiles param = hexcLatticeTiles0;
     float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_2;
-    float4 _3308 = hexcColor_pebbles_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    float4 _3309 = hexcColor_pebbles_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
     weights = param_2;
-    return _3308;
+    return _3309;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1379,15 +1380,15 @@ float4 hexcAt_snow_albedo(float2 st, float2 dx, float2 dy, int2 cell, out float3
     HexcTiles param = hexcLatticeTiles2;
     float4 param_1 = float4(0.2989999949932098388671875f, 0.58700001239776611328125f, 0.114000000059604644775390625f, 0.0f);
     float3 param_2;
-    float4 _3336 = hexcColor_snow_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
+    float4 _3337 = hexcColor_snow_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2);
     weights = param_2;
-    return _3336;
+    return _3337;
 }
 
-#line 270 "hexc/generated"
+#line 273 "hexc/generated"
 float4 hexc_albedo(float2 uv, inout float3 weights)
 {
-#line 270 "hexc/generated"
+#line 273 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -1407,9 +1408,9 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_6 = dy * hexcParams_grass_albedo_tiling;
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float4 _3824 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8);
+        float4 _3820 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_3824 * w[0]);
+        value += (_3820 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0f)
@@ -1419,9 +1420,9 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_11 = dy * hexcParams_sand_albedo_tiling;
         int2 param_12 = int2(0, 0);
         float3 param_13;
-        float4 _3859 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13);
+        float4 _3855 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_3859 * w[1]);
+        value += (_3855 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0f)
@@ -1431,9 +1432,9 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_16 = dy * hexcParams_grass_albedo_tiling;
         int2 param_17 = int2(0, 0);
         float3 param_18;
-        float4 _3894 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18);
+        float4 _3890 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18);
         t = param_18;
-        value += (_3894 * w[2]);
+        value += (_3890 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0f)
@@ -1443,23 +1444,23 @@ float4 hexc_albedo(float2 uv, inout float3 weights)
         float2 param_21 = dy * hexcParams_snow_albedo_tiling;
         int2 param_22 = int2(0, 0);
         float3 param_23;
-        float4 _3929 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23);
+        float4 _3925 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        value += (_3929 * w[3]);
+        value += (_3925 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 295 "hexc/generated"
+#line 298 "hexc/generated"
 float4 hexc_albedo(float2 uv)
 {
-#line 295 "hexc/generated"
+#line 298 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _3947 = hexc_albedo(param, param_1);
+    float4 _3943 = hexc_albedo(param, param_1);
     float3 weights = param_1;
-    return _3947;
+    return _3943;
 }
 
 #line 621 "hexc/hextiling.glsl"
@@ -1468,16 +1469,16 @@ float2 hexcNormalToDeriv(float3 vM, bool flipY)
 #line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = max(max(vMa.z, 0.0078125f * max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21f);
-    float _2647;
+    float _2648;
     if (flipY)
     {
-        _2647 = -vM.y;
+        _2648 = -vM.y;
     }
     else
     {
-        _2647 = vM.y;
+        _2648 = vM.y;
     }
-    return (-float2(vM.x, _2647)) / zMa.xx;
+    return (-float2(vM.x, _2648)) / zMa.xx;
 }
 
 #line 145 "hexc/hextiling.glsl"
@@ -1498,16 +1499,16 @@ float2 hexcTapDeriv(float4 texel, HexcTap p, bool scaled, bool flipY)
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _2680;
+    float2 _2681;
     if (scaled)
     {
-        _2680 = d * p.invScale;
+        _2681 = d * p.invScale;
     }
     else
     {
-        _2680 = d;
+        _2681 = d;
     }
-    return _2680;
+    return _2681;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1567,9 +1568,9 @@ float2 hexcAt_grass_normal(float2 st, float2 dx, float2 dy, int2 cell, out float
     HexcTiles param = hexcLatticeTiles0;
     bool param_1 = false;
     float3 param_2;
-    float2 _3260 = hexcDeriv_grass_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
+    float2 _3261 = hexcDeriv_grass_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
     weights = param_2;
-    return _3260;
+    return _3261;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1629,9 +1630,9 @@ float2 hexcAt_sand_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3
     HexcTiles param = hexcLatticeTiles1;
     bool param_1 = false;
     float3 param_2;
-    float2 _3289 = hexcDeriv_sand_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
+    float2 _3290 = hexcDeriv_sand_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
     weights = param_2;
-    return _3289;
+    return _3290;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1691,9 +1692,9 @@ float2 hexcAt_pebbles_normal(float2 st, float2 dx, float2 dy, int2 cell, out flo
     HexcTiles param = hexcLatticeTiles0;
     bool param_1 = false;
     float3 param_2;
-    float2 _3316 = hexcDeriv_pebbles_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
+    float2 _3317 = hexcDeriv_pebbles_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
     weights = param_2;
-    return _3316;
+    return _3317;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1753,15 +1754,15 @@ float2 hexcAt_snow_normal(float2 st, float2 dx, float2 dy, int2 cell, out float3
     HexcTiles param = hexcLatticeTiles2;
     bool param_1 = false;
     float3 param_2;
-    float2 _3344 = hexcDeriv_snow_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
+    float2 _3345 = hexcDeriv_snow_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2);
     weights = param_2;
-    return _3344;
+    return _3345;
 }
 
-#line 300 "hexc/generated"
+#line 303 "hexc/generated"
 float2 hexc_normal(float2 uv, inout float3 weights)
 {
-#line 300 "hexc/generated"
+#line 303 "hexc/generated"
     float2 st = uv;
     float2 dx = ddx(st);
     float2 dy = ddy(st);
@@ -1781,9 +1782,9 @@ float2 hexc_normal(float2 uv, inout float3 weights)
         float2 param_6 = dy * hexcParams_grass_albedo_tiling;
         int2 param_7 = int2(0, 0);
         float3 param_8;
-        float2 _3995 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8);
+        float2 _3991 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8);
         t = param_8;
-        value += (_3995 * w[0]);
+        value += (_3991 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0f)
@@ -1793,9 +1794,9 @@ float2 hexc_normal(float2 uv, inout float3 weights)
         float2 param_11 = dy * hexcParams_sand_albedo_tiling;
         int2 param_12 = int2(0, 0);
         float3 param_13;
-        float2 _4030 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13);
+        float2 _4026 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13);
         t = param_13;
-        value += (_4030 * w[1]);
+        value += (_4026 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0f)
@@ -1805,9 +1806,9 @@ float2 hexc_normal(float2 uv, inout float3 weights)
         float2 param_16 = dy * hexcParams_grass_albedo_tiling;
         int2 param_17 = int2(0, 0);
         float3 param_18;
-        float2 _4065 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18);
+        float2 _4061 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18);
         t = param_18;
-        value += (_4065 * w[2]);
+        value += (_4061 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0f)
@@ -1817,23 +1818,23 @@ float2 hexc_normal(float2 uv, inout float3 weights)
         float2 param_21 = dy * hexcParams_snow_albedo_tiling;
         int2 param_22 = int2(0, 0);
         float3 param_23;
-        float2 _4100 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23);
+        float2 _4096 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23);
         t = param_23;
-        value += (_4100 * w[3]);
+        value += (_4096 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 325 "hexc/generated"
+#line 328 "hexc/generated"
 float2 hexc_normal(float2 uv)
 {
-#line 325 "hexc/generated"
+#line 328 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _4118 = hexc_normal(param, param_1);
+    float2 _4114 = hexc_normal(param, param_1);
     float3 weights = param_1;
-    return _4118;
+    return _4114;
 }
 
 #line 701 "hexc/hextiling.glsl"
@@ -1843,21 +1844,21 @@ float3 hexcDerivToNormal(float2 deriv)
     return normalize(float3(-deriv, 1.0f));
 }
 
-#line 256 "hexc/generated"
+#line 259 "hexc/generated"
 void frag_main()
 {
-#line 256 "hexc/generated"
+#line 259 "hexc/generated"
     hexcLayersFilled = false;
     float2 param = v_uv;
-    float4 _4127 = hexc_albedo(param);
-    float3 albedo = _4127.xyz;
+    float4 _4123 = hexc_albedo(param);
+    float3 albedo = _4123.xyz;
     float roughness = 0.5f;
     float3 N = normalize(v_normal);
     float3 T = normalize(v_tangent.xyz - (N * dot(N, v_tangent.xyz)));
     float3 B = cross(N, T) * v_tangent.w;
     float2 param_1 = v_uv;
-    float2 _4159 = hexc_normal(param_1);
-    float2 param_2 = _4159;
+    float2 _4155 = hexc_normal(param_1);
+    float2 param_2 = _4155;
     float3 n = hexcDerivToNormal(param_2);
     N = normalize(((T * n.x) - (B * n.y)) + (N * n.z));
     float diffuse = max(dot(N, float3(0.408248007297515869140625f, 0.408248007297515869140625f, 0.816497027873992919921875f)), 0.0f);

@@ -89,7 +89,7 @@ struct HexcParams
     float snow_height_falloffcontrast;
 };
 
-constant spvUnsafeArray<float4, 3> _2007 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
+constant spvUnsafeArray<float4, 3> _2008 = spvUnsafeArray<float4, 3>({ float4(0.0), float4(0.0), float4(0.0) });
 
 struct terrain_frag_out
 {
@@ -124,18 +124,18 @@ float3 hexcMxDecode(thread const float3& c)
 static inline __attribute__((always_inline))
 float4 hexcMxDecoded(thread const float4& c, thread const bool& srgb)
 {
-    float4 _3188;
+    float4 _3189;
     if (srgb)
     {
 #line 77 "hexc/materialx.glsl"
         float3 param = c.xyz;
-        _3188 = float4(hexcMxDecode(param), c.w);
+        _3189 = float4(hexcMxDecode(param), c.w);
     }
     else
     {
-        _3188 = c;
+        _3189 = c;
     }
-    return _3188;
+    return _3189;
 }
 
 #line 194 "hexc/generated"
@@ -147,9 +147,9 @@ float4 hexcAt_splat0(thread const float2& st, thread const float2& dx, thread co
     float2 param_1 = dx;
     float2 param_2 = dy;
     float3 param_3;
-    float4 _3367 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
+    float4 _3368 = hexcPlainColorGrad(hexcTex_splat0, hexcSampler, param, param_1, param_2, param_3);
     weights = param_3;
-    float4 param_4 = _3367;
+    float4 param_4 = _3368;
     bool param_5 = false;
     return hexcMxDecoded(param_4, param_5);
 }
@@ -160,18 +160,18 @@ void hexcLayerKeep(thread spvUnsafeArray<float, 8>& w, thread const float& skip)
 {
 #line 205 "hexc/generated"
     float sum = 0.0;
-    float _3389;
+    float _3390;
     for (int i = 0; i < 8; i++)
     {
         if (w[i] >= skip)
         {
-            _3389 = w[i];
+            _3390 = w[i];
         }
         else
         {
-            _3389 = 0.0;
+            _3390 = 0.0;
         }
-        w[i] = _3389;
+        w[i] = _3390;
         sum += w[i];
     }
     if (sum <= 0.0)
@@ -245,26 +245,26 @@ float2 hexcCosSin(thread const float& angle)
     float s = r * (1.0 + (r2 * ((-0.16666667163372039794921875) + (r2 * (0.008333333767950534820556640625 + (r2 * ((-0.00019841270113829523324966430664062) + (r2 * 2.7557318844628753140568733215332e-06))))))));
     float c = 1.0 + (r2 * ((-0.5) + (r2 * (0.0416666679084300994873046875 + (r2 * ((-0.001388888922519981861114501953125) + (r2 * 2.4801587642286904156208038330078e-05)))))));
     int q = int(k) & 3;
-    float2 _728;
+    float2 _729;
     if ((q & 1) != 0)
     {
-        _728 = float2(-s, c);
+        _729 = float2(-s, c);
     }
     else
     {
-        _728 = float2(c, s);
+        _729 = float2(c, s);
     }
-    float2 cs = _728;
-    float2 _743;
+    float2 cs = _729;
+    float2 _744;
     if ((q & 2) != 0)
     {
-        _743 = -cs;
+        _744 = -cs;
     }
     else
     {
-        _743 = cs;
+        _744 = cs;
     }
-    return _743;
+    return _744;
 }
 
 #line 229 "hexc/hextiling.glsl"
@@ -273,22 +273,22 @@ void hexcStableTile_grass_albedo(thread const int2& id, thread const bool& about
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _984 = hexcPcg3d(param);
-    float3 u = float3(_984 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _985 = hexcPcg3d(param);
+    float3 u = float3(_985 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.grass_albedo_rotation;
     invScale = 1.0;
-    float2 _1007;
+    float2 _1008;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1007 = hexcCosSin(param_1);
+        _1008 = hexcCosSin(param_1);
     }
     else
     {
-        _1007 = float2(cos(angle), sin(angle));
+        _1008 = float2(cos(angle), sin(angle));
     }
-    rot = _1007;
+    rot = _1008;
 }
 
 #line 137 "hexc/hextiling.glsl"
@@ -327,16 +327,16 @@ HexcTap hexcPlaceTile_grass_albedo(thread const int2& id, thread const float2& d
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _1167 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1167 + c) + offset;
+    float2 _1168 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1168 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _1177 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1177;
+    float2 _1178 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1178;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _1183 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1183;
+    float2 _1184 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1184;
     return p;
 }
 
@@ -364,36 +364,36 @@ int3 hexcHexChannels(thread const int2& v1, thread const int2& v3)
 #line 115 "hexc/hextiling.glsl"
     int d = v1.x - v1.y;
     int a = abs(d) % 3;
-    int _769;
+    int _770;
     if ((d < 0) && (a != 0))
     {
-        _769 = 3 - a;
+        _770 = 3 - a;
     }
     else
     {
-        _769 = a;
+        _770 = a;
     }
-    int i1 = _769;
-    int _780;
+    int i1 = _770;
+    int _781;
     if (i1 < 2)
     {
-        _780 = i1 + 1;
+        _781 = i1 + 1;
     }
     else
     {
-        _780 = 0;
+        _781 = 0;
     }
-    int vh = _780;
-    int _790;
+    int vh = _781;
+    int _791;
     if (i1 > 0)
     {
-        _790 = i1 - 1;
+        _791 = i1 - 1;
     }
     else
     {
-        _790 = 2;
+        _791 = 2;
     }
-    int vl = _790;
+    int vl = _791;
     return int3(i1, (v1.x < v3.x) ? vl : vh, (v1.x < v3.x) ? vh : vl);
 }
 
@@ -424,27 +424,27 @@ HexcTiles hexcTilesStable_grass_albedo(thread const float2& st, thread const flo
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1426 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _1427 = hexcStableTap_grass_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _1426;
+    t.tap[0] = _1427;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1442 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _1443 = hexcStableTap_grass_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _1442;
+    t.tap[1] = _1443;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1458 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _1459 = hexcStableTap_grass_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _1458;
+    t.tap[2] = _1459;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -469,22 +469,22 @@ void hexcStableTile_sand_albedo(thread const int2& id, thread const bool& aboutO
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _1027 = hexcPcg3d(param);
-    float3 u = float3(_1027 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _1028 = hexcPcg3d(param);
+    float3 u = float3(_1028 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.sand_albedo_rotation;
     invScale = 1.0;
-    float2 _1044;
+    float2 _1045;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1044 = hexcCosSin(param_1);
+        _1045 = hexcCosSin(param_1);
     }
     else
     {
-        _1044 = float2(cos(angle), sin(angle));
+        _1045 = float2(cos(angle), sin(angle));
     }
-    rot = _1044;
+    rot = _1045;
 }
 
 #line 276 "hexc/hextiling.glsl"
@@ -504,16 +504,16 @@ HexcTap hexcPlaceTile_sand_albedo(thread const int2& id, thread const float2& d,
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _1207 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1207 + c) + offset;
+    float2 _1208 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1208 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _1217 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1217;
+    float2 _1218 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1218;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _1223 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1223;
+    float2 _1224 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1224;
     return p;
 }
 
@@ -561,27 +561,27 @@ HexcTiles hexcTilesStable_sand_albedo(thread const float2& st, thread const floa
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1553 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _1554 = hexcStableTap_sand_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _1553;
+    t.tap[0] = _1554;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1569 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _1570 = hexcStableTap_sand_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _1569;
+    t.tap[1] = _1570;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1585 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _1586 = hexcStableTap_sand_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _1585;
+    t.tap[2] = _1586;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -606,22 +606,22 @@ void hexcStableTile_snow_albedo(thread const int2& id, thread const bool& aboutO
 {
 #line 229 "hexc/hextiling.glsl"
     uint3 param = uint3(uint2(id), 0u);
-    uint3 _1064 = hexcPcg3d(param);
-    float3 u = float3(_1064 >> uint3(8u)) * 5.9604644775390625e-08;
+    uint3 _1065 = hexcPcg3d(param);
+    float3 u = float3(_1065 >> uint3(8u)) * 5.9604644775390625e-08;
     offset = u.xy;
     float angle = (((u.z * 2.0) - 1.0) * 3.1415927410125732421875) * hexcParams.snow_albedo_rotation;
     invScale = 1.0;
-    float2 _1082;
+    float2 _1083;
     if (aboutOrigin)
     {
         float param_1 = angle;
-        _1082 = hexcCosSin(param_1);
+        _1083 = hexcCosSin(param_1);
     }
     else
     {
-        _1082 = float2(cos(angle), sin(angle));
+        _1083 = float2(cos(angle), sin(angle));
     }
-    rot = _1082;
+    rot = _1083;
 }
 
 #line 276 "hexc/hextiling.glsl"
@@ -641,16 +641,16 @@ HexcTap hexcPlaceTile_snow_albedo(thread const int2& id, thread const float2& d,
     p.invScale = param_4;
     float2 param_5 = d;
     HexcTap param_6 = p;
-    float2 _1247 = hexcToTile_grass_albedo(param_5, param_6);
-    p.st = (_1247 + c) + offset;
+    float2 _1248 = hexcToTile_grass_albedo(param_5, param_6);
+    p.st = (_1248 + c) + offset;
     float2 param_7 = dSTdx;
     HexcTap param_8 = p;
-    float2 _1257 = hexcToTile_grass_albedo(param_7, param_8);
-    p.dx = _1257;
+    float2 _1258 = hexcToTile_grass_albedo(param_7, param_8);
+    p.dx = _1258;
     float2 param_9 = dSTdy;
     HexcTap param_10 = p;
-    float2 _1263 = hexcToTile_grass_albedo(param_9, param_10);
-    p.dy = _1263;
+    float2 _1264 = hexcToTile_grass_albedo(param_9, param_10);
+    p.dy = _1264;
     return p;
 }
 
@@ -698,27 +698,27 @@ HexcTiles hexcTilesStable_snow_albedo(thread const float2& st, thread const floa
     float2 param_6 = dSTdx;
     float2 param_7 = dSTdy;
     int2 param_8;
-    HexcTap _1679 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
+    HexcTap _1680 = hexcStableTap_snow_albedo(param_3, param_4, param_5, param_6, param_7, param_8, hexcParams);
     t.id[0] = param_8;
-    t.tap[0] = _1679;
+    t.tap[0] = _1680;
     int2 param_9 = local[1];
     uint2 param_10 = shift;
     float2 param_11 = r;
     float2 param_12 = dSTdx;
     float2 param_13 = dSTdy;
     int2 param_14;
-    HexcTap _1695 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
+    HexcTap _1696 = hexcStableTap_snow_albedo(param_9, param_10, param_11, param_12, param_13, param_14, hexcParams);
     t.id[1] = param_14;
-    t.tap[1] = _1695;
+    t.tap[1] = _1696;
     int2 param_15 = local[2];
     uint2 param_16 = shift;
     float2 param_17 = r;
     float2 param_18 = dSTdx;
     float2 param_19 = dSTdy;
     int2 param_20;
-    HexcTap _1711 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
+    HexcTap _1712 = hexcStableTap_snow_albedo(param_15, param_16, param_17, param_18, param_19, param_20, hexcParams);
     t.id[2] = param_20;
-    t.tap[2] = _1711;
+    t.tap[2] = _1712;
     int2 param_21 = t.id[0];
     int2 param_22 = t.id[2];
     t.channel = hexcHexChannels(param_21, param_22);
@@ -742,25 +742,25 @@ static inline __attribute__((always_inline))
 float4 hexcChannel(thread const int& c)
 {
 #line 132 "hexc/hextiling.glsl"
-    float4 _850;
+    float4 _851;
     if (c == 0)
     {
-        _850 = float4(1.0, 0.0, 0.0, 0.0);
+        _851 = float4(1.0, 0.0, 0.0, 0.0);
     }
     else
     {
-        float4 _857;
+        float4 _858;
         if (c == 1)
         {
-            _857 = float4(0.0, 1.0, 0.0, 0.0);
+            _858 = float4(0.0, 1.0, 0.0, 0.0);
         }
         else
         {
-            _857 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
+            _858 = select(float4(0.0, 0.0, 0.0, 1.0), float4(0.0, 0.0, 1.0, 0.0), bool4(c == 2));
         }
-        _850 = _857;
+        _851 = _858;
     }
-    return _850;
+    return _851;
 }
 
 #line 552 "hexc/hextiling.glsl"
@@ -785,8 +785,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_grass_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1944 = float3(p.st, 0.0);
-    return tex.sample(samp, _1944.xy, uint(round(_1944.z)), gradient2d(p.dx, p.dy));
+    float3 _1945 = float3(p.st, 0.0);
+    return tex.sample(samp, _1945.xy, uint(round(_1945.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -796,7 +796,7 @@ void hexcFetchTaps_grass_albedo(texture2d_array<float> tex, sampler samp, thread
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _2007;
+    c = _2008;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_grass_albedo(tex, samp, param_1, param_2);
@@ -856,20 +856,20 @@ float3 hexcBlendWeights_grass_albedo(thread const float3& w, thread const float3
 #line 454 "hexc/hextiling.glsl"
     float3 param = w;
     int param_1 = 7;
-    float3 _1893 = hexcPowInt(param, param_1);
-    float3 wg = _1893;
+    float3 _1894 = hexcPowInt(param, param_1);
+    float3 wg = _1894;
     float3 W = M * wg;
     float sum = (W.x + W.y) + W.z;
-    float3 _1909;
+    float3 _1910;
     if (sum > 0.0)
     {
-        _1909 = W / float3(sum);
+        _1910 = W / float3(sum);
     }
     else
     {
-        _1909 = wg / float3((wg.x + wg.y) + wg.z);
+        _1910 = wg / float3((wg.x + wg.y) + wg.z);
     }
-    W = _1909;
+    W = _1910;
     return W;
 }
 
@@ -914,9 +914,9 @@ float hexcAt_grass_height(thread const float2& st, thread const float2& dx, thre
     HexcTiles param_1 = hexcLatticeTiles0;
     float4 param_2 = hexcChannel(param);
     float3 param_3;
-    float4 _3271 = hexcColor_grass_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
+    float4 _3272 = hexcColor_grass_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
     weights = param_3;
-    return _3271.w;
+    return _3272.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -924,8 +924,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_sand_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1959 = float3(p.st, 1.0);
-    return tex.sample(samp, _1959.xy, uint(round(_1959.z)), gradient2d(p.dx, p.dy));
+    float3 _1960 = float3(p.st, 1.0);
+    return tex.sample(samp, _1960.xy, uint(round(_1960.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -935,7 +935,7 @@ void hexcFetchTaps_sand_albedo(texture2d_array<float> tex, sampler samp, thread 
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _2007;
+    c = _2008;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_sand_albedo(tex, samp, param_1, param_2);
@@ -988,9 +988,9 @@ float hexcAt_sand_height(thread const float2& st, thread const float2& dx, threa
     HexcTiles param_1 = hexcLatticeTiles1;
     float4 param_2 = hexcChannel(param);
     float3 param_3;
-    float4 _3299 = hexcColor_sand_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
+    float4 _3300 = hexcColor_sand_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
     weights = param_3;
-    return _3299.w;
+    return _3300.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -998,8 +998,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_pebbles_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1974 = float3(p.st, 2.0);
-    return tex.sample(samp, _1974.xy, uint(round(_1974.z)), gradient2d(p.dx, p.dy));
+    float3 _1975 = float3(p.st, 2.0);
+    return tex.sample(samp, _1975.xy, uint(round(_1975.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -1009,7 +1009,7 @@ void hexcFetchTaps_pebbles_albedo(texture2d_array<float> tex, sampler samp, thre
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _2007;
+    c = _2008;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_pebbles_albedo(tex, samp, param_1, param_2);
@@ -1062,9 +1062,9 @@ float hexcAt_pebbles_height(thread const float2& st, thread const float2& dx, th
     HexcTiles param_1 = hexcLatticeTiles0;
     float4 param_2 = hexcChannel(param);
     float3 param_3;
-    float4 _3326 = hexcColor_pebbles_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
+    float4 _3327 = hexcColor_pebbles_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
     weights = param_3;
-    return _3326.w;
+    return _3327.w;
 }
 
 #line 546 "hexc/hextiling.glsl"
@@ -1072,8 +1072,8 @@ static inline __attribute__((always_inline))
 float4 hexcFetch_snow_albedo(texture2d_array<float> tex, sampler samp, thread const HexcTap& p, thread const float& lod)
 {
 #line 546 "hexc/hextiling.glsl"
-    float3 _1990 = float3(p.st, 3.0);
-    return tex.sample(samp, _1990.xy, uint(round(_1990.z)), gradient2d(p.dx, p.dy));
+    float3 _1991 = float3(p.st, 3.0);
+    return tex.sample(samp, _1991.xy, uint(round(_1991.z)), gradient2d(p.dx, p.dy));
 }
 
 #line 560 "hexc/hextiling.glsl"
@@ -1083,7 +1083,7 @@ void hexcFetchTaps_snow_albedo(texture2d_array<float> tex, sampler samp, thread 
 #line 560 "hexc/hextiling.glsl"
     HexcTiles param = t;
     float3 lod = hexcTileLods_grass_albedo(tex, samp, param);
-    c = _2007;
+    c = _2008;
     HexcTap param_1 = t.tap[0];
     float param_2 = lod.x;
     c[0] = hexcFetch_snow_albedo(tex, samp, param_1, param_2);
@@ -1136,16 +1136,16 @@ float hexcAt_snow_height(thread const float2& st, thread const float2& dx, threa
     HexcTiles param_1 = hexcLatticeTiles2;
     float4 param_2 = hexcChannel(param);
     float3 param_3;
-    float4 _3354 = hexcColor_snow_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
+    float4 _3355 = hexcColor_snow_height(hexcArr_height, hexcSampler, param_1, param_2, hexcArr_height, param_3, hexcParams);
     weights = param_3;
-    return _3354.w;
+    return _3355.w;
 }
 
-#line 220 "hexc/generated"
+#line 223 "hexc/generated"
 static inline __attribute__((always_inline))
-void hexcLayerHeights(thread spvUnsafeArray<float, 8>& w, thread const spvUnsafeArray<float, 8>& h, thread const float& width)
+void hexcLayerHeights(thread spvUnsafeArray<float, 8>& w, thread const spvUnsafeArray<float, 8>& h, thread const float& width, thread const float& skip)
 {
-#line 220 "hexc/generated"
+#line 223 "hexc/generated"
     float top = -2.0;
     for (int i = 0; i < 8; i++)
     {
@@ -1155,31 +1155,32 @@ void hexcLayerHeights(thread spvUnsafeArray<float, 8>& w, thread const spvUnsafe
         }
     }
     float sum = 0.0;
-    float _3467;
+    float _3468;
     for (int i_1 = 0; i_1 < 8; i_1++)
     {
         if (w[i_1] > 0.0)
         {
-            _3467 = fast::max(((h[i_1] + w[i_1]) - top) + width, 0.0);
+            _3468 = fast::max(((h[i_1] + w[i_1]) - top) + width, 0.0);
         }
         else
         {
-            _3467 = 0.0;
+            _3468 = 0.0;
         }
-        w[i_1] = _3467;
+        w[i_1] = _3468;
         sum += w[i_1];
     }
-    for (int i_2 = 0; i_2 < 8; i_2++)
-    {
-        w[i_2] /= sum;
-    }
+    spvUnsafeArray<float, 8> param;
+    param = w;
+    float param_1 = fast::min(skip * sum, width);
+    hexcLayerKeep(param, param_1);
+    w = param;
 }
 
-#line 235 "hexc/generated"
+#line 238 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerFill(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0)
 {
-#line 235 "hexc/generated"
+#line 238 "hexc/generated"
     for (int i = 0; i < 8; i++)
     {
         w[i] = 0.0;
@@ -1189,29 +1190,29 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
     float2 param_2 = dy * hexcParams.splat0_tiling;
     int2 param_3 = int2(0);
     float3 param_4;
-    float4 _3541 = hexcAt_splat0(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_splat0);
+    float4 _3536 = hexcAt_splat0(param, param_1, param_2, param_3, param_4, hexcSampler, hexcTex_splat0);
     float3 t = param_4;
-    float4 splat0 = _3541;
+    float4 splat0 = _3536;
     w[0] = splat0.x;
     w[1] = splat0.y;
     w[2] = splat0.z;
     w[3] = splat0.w;
     spvUnsafeArray<float, 8> param_5;
     param_5 = w;
-    float param_6 = 0.0019607841968536376953125;
+    float param_6 = 0.0;
     hexcLayerKeep(param_5, param_6);
     w = param_5;
-    bool _3563 = w[0] > 0.0;
-    bool _3570;
-    if (!_3563)
+    bool _3557 = w[0] > 0.0;
+    bool _3564;
+    if (!_3557)
     {
-        _3570 = w[2] > 0.0;
+        _3564 = w[2] > 0.0;
     }
     else
     {
-        _3570 = _3563;
+        _3564 = _3557;
     }
-    if (_3570)
+    if (_3564)
     {
         float2 param_7 = st * hexcParams.grass_albedo_tiling;
         float2 param_8 = dx * hexcParams.grass_albedo_tiling;
@@ -1247,9 +1248,9 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
         float2 param_21 = dy * hexcParams.grass_albedo_tiling;
         int2 param_22 = int2(0);
         float3 param_23;
-        float _3669 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height);
+        float _3663 = hexcAt_grass_height(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height);
         t = param_23;
-        h[0] = _3669;
+        h[0] = _3663;
     }
     if (w[1] > 0.0)
     {
@@ -1258,9 +1259,9 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
         float2 param_26 = dy * hexcParams.sand_albedo_tiling;
         int2 param_27 = int2(0);
         float3 param_28;
-        float _3694 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28, hexcParams, hexcSampler, hexcArr_height, hexcLatticeTiles1);
+        float _3688 = hexcAt_sand_height(param_24, param_25, param_26, param_27, param_28, hexcParams, hexcSampler, hexcArr_height, hexcLatticeTiles1);
         t = param_28;
-        h[1] = _3694;
+        h[1] = _3688;
     }
     if (w[2] > 0.0)
     {
@@ -1269,9 +1270,9 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
         float2 param_31 = dy * hexcParams.grass_albedo_tiling;
         int2 param_32 = int2(0);
         float3 param_33;
-        float _3719 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height);
+        float _3713 = hexcAt_pebbles_height(param_29, param_30, param_31, param_32, param_33, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_height);
         t = param_33;
-        h[2] = _3719;
+        h[2] = _3713;
     }
     if (w[3] > 0.0)
     {
@@ -1280,24 +1281,25 @@ void hexcLayerFill(thread const float2& st, thread const float2& dx, thread cons
         float2 param_36 = dy * hexcParams.snow_albedo_tiling;
         int2 param_37 = int2(0);
         float3 param_38;
-        float _3744 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38, hexcParams, hexcSampler, hexcArr_height, hexcLatticeTiles2);
+        float _3738 = hexcAt_snow_height(param_34, param_35, param_36, param_37, param_38, hexcParams, hexcSampler, hexcArr_height, hexcLatticeTiles2);
         t = param_38;
-        h[3] = _3744;
+        h[3] = _3738;
     }
     spvUnsafeArray<float, 8> param_39;
     param_39 = w;
     spvUnsafeArray<float, 8> param_40;
     param_40 = h;
     float param_41 = 0.20000000298023223876953125;
-    hexcLayerHeights(param_39, param_40, param_41);
+    float param_42 = 0.0019607841968536376953125;
+    hexcLayerHeights(param_39, param_40, param_41, param_42);
     w = param_39;
 }
 
-#line 260 "hexc/generated"
+#line 263 "hexc/generated"
 static inline __attribute__((always_inline))
 void hexcLayerWeights(thread const float2& st, thread const float2& dx, thread const float2& dy, thread spvUnsafeArray<float, 8>& w, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 260 "hexc/generated"
+#line 263 "hexc/generated"
     if ((!hexcLayersFilled) || any(st != hexcLayersSt))
     {
         float2 param = st;
@@ -1352,9 +1354,9 @@ float4 hexcAt_grass_albedo(thread const float2& st, thread const float2& dx, thr
     HexcTiles param = hexcLatticeTiles0;
     float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_2;
-    float4 _3251 = hexcColor_grass_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    float4 _3252 = hexcColor_grass_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
     weights = param_2;
-    return _3251;
+    return _3252;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1397,9 +1399,9 @@ float4 hexcAt_sand_albedo(thread const float2& st, thread const float2& dx, thre
     HexcTiles param = hexcLatticeTiles1;
     float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_2;
-    float4 _3281 = hexcColor_sand_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    float4 _3282 = hexcColor_sand_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
     weights = param_2;
-    return _3281;
+    return _3282;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1442,9 +1444,9 @@ float4 hexcAt_pebbles_albedo(thread const float2& st, thread const float2& dx, t
     HexcTiles param = hexcLatticeTiles0;
     float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_2;
-    float4 _3308 = hexcColor_pebbles_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    float4 _3309 = hexcColor_pebbles_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
     weights = param_2;
-    return _3308;
+    return _3309;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1487,16 +1489,16 @@ float4 hexcAt_snow_albedo(thread const float2& st, thread const float2& dx, thre
     HexcTiles param = hexcLatticeTiles2;
     float4 param_1 = float4(0.2989999949932098388671875, 0.58700001239776611328125, 0.114000000059604644775390625, 0.0);
     float3 param_2;
-    float4 _3336 = hexcColor_snow_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
+    float4 _3337 = hexcColor_snow_albedo(hexcArr_albedo, hexcSampler, param, param_1, hexcArr_albedo, param_2, hexcParams);
     weights = param_2;
-    return _3336;
+    return _3337;
 }
 
-#line 270 "hexc/generated"
+#line 273 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 270 "hexc/generated"
+#line 273 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -1517,9 +1519,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_6 = dy * hexcParams.grass_albedo_tiling;
         int2 param_7 = int2(0);
         float3 param_8;
-        float4 _3824 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0);
+        float4 _3820 = hexcAt_grass_albedo(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0);
         t = param_8;
-        value += (_3824 * w[0]);
+        value += (_3820 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1529,9 +1531,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_11 = dy * hexcParams.sand_albedo_tiling;
         int2 param_12 = int2(0);
         float3 param_13;
-        float4 _3859 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles1);
+        float4 _3855 = hexcAt_sand_albedo(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles1);
         t = param_13;
-        value += (_3859 * w[1]);
+        value += (_3855 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0)
@@ -1541,9 +1543,9 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_16 = dy * hexcParams.grass_albedo_tiling;
         int2 param_17 = int2(0);
         float3 param_18;
-        float4 _3894 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0);
+        float4 _3890 = hexcAt_pebbles_albedo(param_14, param_15, param_16, param_17, param_18, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0);
         t = param_18;
-        value += (_3894 * w[2]);
+        value += (_3890 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0)
@@ -1553,24 +1555,24 @@ float4 hexc_albedo(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_21 = dy * hexcParams.snow_albedo_tiling;
         int2 param_22 = int2(0);
         float3 param_23;
-        float4 _3929 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles2);
+        float4 _3925 = hexcAt_snow_albedo(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles2);
         t = param_23;
-        value += (_3929 * w[3]);
+        value += (_3925 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 295 "hexc/generated"
+#line 298 "hexc/generated"
 static inline __attribute__((always_inline))
 float4 hexc_albedo(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, texture2d_array<float> hexcArr_albedo, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 295 "hexc/generated"
+#line 298 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float4 _3947 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float4 _3943 = hexc_albedo(param, param_1, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     float3 weights = param_1;
-    return _3947;
+    return _3943;
 }
 
 #line 621 "hexc/hextiling.glsl"
@@ -1580,16 +1582,16 @@ float2 hexcNormalToDeriv(thread const float3& vM, thread const bool& flipY)
 #line 621 "hexc/hextiling.glsl"
     float3 vMa = abs(vM);
     float zMa = fast::max(fast::max(vMa.z, 0.0078125 * fast::max(vMa.x, vMa.y)), 9.9999996826552253889678874634872e-21);
-    float _2647;
+    float _2648;
     if (flipY)
     {
-        _2647 = -vM.y;
+        _2648 = -vM.y;
     }
     else
     {
-        _2647 = vM.y;
+        _2648 = vM.y;
     }
-    return (-float2(vM.x, _2647)) / float2(zMa);
+    return (-float2(vM.x, _2648)) / float2(zMa);
 }
 
 #line 145 "hexc/hextiling.glsl"
@@ -1612,16 +1614,16 @@ float2 hexcTapDeriv(thread const float4& texel, thread const HexcTap& p, thread 
     float2 param_2 = hexcNormalToDeriv(param, param_1);
     float2 param_3 = p.rot;
     float2 d = hexcRotateFromTile(param_2, param_3);
-    float2 _2680;
+    float2 _2681;
     if (scaled)
     {
-        _2680 = d * p.invScale;
+        _2681 = d * p.invScale;
     }
     else
     {
-        _2680 = d;
+        _2681 = d;
     }
-    return _2680;
+    return _2681;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1684,9 +1686,9 @@ float2 hexcAt_grass_normal(thread const float2& st, thread const float2& dx, thr
     HexcTiles param = hexcLatticeTiles0;
     bool param_1 = false;
     float3 param_2;
-    float2 _3260 = hexcDeriv_grass_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
+    float2 _3261 = hexcDeriv_grass_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
     weights = param_2;
-    return _3260;
+    return _3261;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1749,9 +1751,9 @@ float2 hexcAt_sand_normal(thread const float2& st, thread const float2& dx, thre
     HexcTiles param = hexcLatticeTiles1;
     bool param_1 = false;
     float3 param_2;
-    float2 _3289 = hexcDeriv_sand_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
+    float2 _3290 = hexcDeriv_sand_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
     weights = param_2;
-    return _3289;
+    return _3290;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1814,9 +1816,9 @@ float2 hexcAt_pebbles_normal(thread const float2& st, thread const float2& dx, t
     HexcTiles param = hexcLatticeTiles0;
     bool param_1 = false;
     float3 param_2;
-    float2 _3316 = hexcDeriv_pebbles_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
+    float2 _3317 = hexcDeriv_pebbles_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
     weights = param_2;
-    return _3316;
+    return _3317;
 }
 
 #line 447 "hexc/hextiling.glsl"
@@ -1879,16 +1881,16 @@ float2 hexcAt_snow_normal(thread const float2& st, thread const float2& dx, thre
     HexcTiles param = hexcLatticeTiles2;
     bool param_1 = false;
     float3 param_2;
-    float2 _3344 = hexcDeriv_snow_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
+    float2 _3345 = hexcDeriv_snow_normal(hexcArr_normal, hexcSampler, param, param_1, hexcArr_normal, param_2, hexcParams);
     weights = param_2;
-    return _3344;
+    return _3345;
 }
 
-#line 300 "hexc/generated"
+#line 303 "hexc/generated"
 static inline __attribute__((always_inline))
 float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_normal, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 300 "hexc/generated"
+#line 303 "hexc/generated"
     float2 st = uv;
     float2 dx = dfdx(st);
     float2 dy = dfdy(st);
@@ -1909,9 +1911,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_6 = dy * hexcParams.grass_albedo_tiling;
         int2 param_7 = int2(0);
         float3 param_8;
-        float2 _3995 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal);
+        float2 _3991 = hexcAt_grass_normal(param_4, param_5, param_6, param_7, param_8, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal);
         t = param_8;
-        value += (_3995 * w[0]);
+        value += (_3991 * w[0]);
         weights += (t * w[0]);
     }
     if (w[1] > 0.0)
@@ -1921,9 +1923,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_11 = dy * hexcParams.sand_albedo_tiling;
         int2 param_12 = int2(0);
         float3 param_13;
-        float2 _4030 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcSampler, hexcArr_normal, hexcLatticeTiles1);
+        float2 _4026 = hexcAt_sand_normal(param_9, param_10, param_11, param_12, param_13, hexcParams, hexcSampler, hexcArr_normal, hexcLatticeTiles1);
         t = param_13;
-        value += (_4030 * w[1]);
+        value += (_4026 * w[1]);
         weights += (t * w[1]);
     }
     if (w[2] > 0.0)
@@ -1933,9 +1935,9 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_16 = dy * hexcParams.grass_albedo_tiling;
         int2 param_17 = int2(0);
         float3 param_18;
-        float2 _4065 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal);
+        float2 _4061 = hexcAt_pebbles_normal(param_14, param_15, param_16, param_17, param_18, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal);
         t = param_18;
-        value += (_4065 * w[2]);
+        value += (_4061 * w[2]);
         weights += (t * w[2]);
     }
     if (w[3] > 0.0)
@@ -1945,24 +1947,24 @@ float2 hexc_normal(thread const float2& uv, thread float3& weights, thread bool&
         float2 param_21 = dy * hexcParams.snow_albedo_tiling;
         int2 param_22 = int2(0);
         float3 param_23;
-        float2 _4100 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcSampler, hexcArr_normal, hexcLatticeTiles2);
+        float2 _4096 = hexcAt_snow_normal(param_19, param_20, param_21, param_22, param_23, hexcParams, hexcSampler, hexcArr_normal, hexcLatticeTiles2);
         t = param_23;
-        value += (_4100 * w[3]);
+        value += (_4096 * w[3]);
         weights += (t * w[3]);
     }
     return value;
 }
 
-#line 325 "hexc/generated"
+#line 328 "hexc/generated"
 static inline __attribute__((always_inline))
 float2 hexc_normal(thread const float2& uv, thread bool& hexcLayersFilled, constant HexcParams& hexcParams, sampler hexcSampler, thread HexcTiles& hexcLatticeTiles0, texture2d_array<float> hexcArr_normal, texture2d_array<float> hexcArr_height, thread HexcTiles& hexcLatticeTiles1, thread HexcTiles& hexcLatticeTiles2, texture2d<float> hexcTex_splat0, thread float2& hexcLayersSt, thread spvUnsafeArray<float, 8>& hexcLayersW)
 {
-#line 325 "hexc/generated"
+#line 328 "hexc/generated"
     float2 param = uv;
     float3 param_1;
-    float2 _4118 = hexc_normal(param, param_1, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float2 _4114 = hexc_normal(param, param_1, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
     float3 weights = param_1;
-    return _4118;
+    return _4114;
 }
 
 #line 701 "hexc/hextiling.glsl"
@@ -1973,11 +1975,11 @@ float3 hexcDerivToNormal(thread const float2& deriv)
     return fast::normalize(float3(-deriv, 1.0));
 }
 
-#line 256 "hexc/generated"
+#line 259 "hexc/generated"
 fragment terrain_frag_out terrain_frag(terrain_frag_in in [[stage_in]], constant HexcParams& hexcParams [[buffer(0)]], texture2d_array<float> hexcArr_albedo [[texture(0)]], texture2d_array<float> hexcArr_normal [[texture(1)]], texture2d_array<float> hexcArr_height [[texture(2)]], texture2d<float> hexcTex_splat0 [[texture(12)]], sampler hexcSampler [[sampler(0)]])
 {
     terrain_frag_out out = {};
-#line 256 "hexc/generated"
+#line 259 "hexc/generated"
     bool hexcLayersFilled = false;
     float2 param = in.v_uv;
     HexcTiles hexcLatticeTiles0;
@@ -1985,15 +1987,15 @@ fragment terrain_frag_out terrain_frag(terrain_frag_in in [[stage_in]], constant
     HexcTiles hexcLatticeTiles2;
     float2 hexcLayersSt;
     spvUnsafeArray<float, 8> hexcLayersW;
-    float4 _4127 = hexc_albedo(param, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
-    float3 albedo = _4127.xyz;
+    float4 _4123 = hexc_albedo(param, hexcLayersFilled, hexcParams, hexcArr_albedo, hexcSampler, hexcLatticeTiles0, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float3 albedo = _4123.xyz;
     float roughness = 0.5;
     float3 N = fast::normalize(in.v_normal);
     float3 T = fast::normalize(in.v_tangent.xyz - (N * dot(N, in.v_tangent.xyz)));
     float3 B = cross(N, T) * in.v_tangent.w;
     float2 param_1 = in.v_uv;
-    float2 _4159 = hexc_normal(param_1, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
-    float2 param_2 = _4159;
+    float2 _4155 = hexc_normal(param_1, hexcLayersFilled, hexcParams, hexcSampler, hexcLatticeTiles0, hexcArr_normal, hexcArr_height, hexcLatticeTiles1, hexcLatticeTiles2, hexcTex_splat0, hexcLayersSt, hexcLayersW);
+    float2 param_2 = _4155;
     float3 n = hexcDerivToNormal(param_2);
     N = fast::normalize(((T * n.x) - (B * n.y)) + (N * n.z));
     float diffuse = fast::max(dot(N, float3(0.408248007297515869140625, 0.408248007297515869140625, 0.816497027873992919921875)), 0.0);
