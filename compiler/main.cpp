@@ -1,4 +1,4 @@
-// hexc: dispatches to the command line's commands (cli/: compile, render, preview, library, export-mtlx) and to
+// hexc: dispatches to the command line's commands (cli/: compile, render, preview, library, lint, export-mtlx) and to
 // `hexc edit` (edit/). It stands above both wings, which need nothing of each other.
 #include <csignal>
 
@@ -7,6 +7,7 @@
 #include "export.h"
 #include "hexc/files.h"
 #include "library.h"
+#include "lint.h"
 #include "options.h"
 #include "render.h"
 
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
     if (!args.empty() && args[0] == "preview") return cli::previewCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "library") return cli::libraryCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "edit") return edit::editCommand({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "lint") return cli::lintCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "export-mtlx") return cli::exportCommand({args.begin() + 1, args.end()});
     cli::Arguments a;
     if (std::optional<int> done = cli::parseArguments(args, a)) return *done;

@@ -46,6 +46,7 @@ std::string description() {
   hexc library --target )" +
            joined(libraryTargetNames(), "|") + R"( -o DIR   (hexc library --help)
   hexc export-mtlx MATERIAL.json -o MATERIAL.mtlx          (hexc export-mtlx --help)
+  hexc lint MATERIAL.json|TEXTURE                          (hexc lint --help: check its textures' content)
   hexc edit MATERIAL.json [--port N]                       (hexc edit --help: tune it live in a browser)
 
 Reads each material (JSON, docs/material-format.md, or MaterialX, docs/materialx.md), injects hex-tiling

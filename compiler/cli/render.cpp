@@ -125,25 +125,6 @@ void checkTexelBudget(const Material& material, const TexelBudget& budget, const
     if (!over.empty()) throw CompileError{over};
 }
 
-// Draws text with stb_easy_font's quads, scaled, in white on whatever is there.
-void drawLabel(Image& image, int x0, int y0, const std::string& text, int scale) {
-    std::vector<char> buffer(text.size() * 300);
-    std::string copy = text;
-    int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size()));
-    const float* v = reinterpret_cast<const float*>(buffer.data());
-    for (int q = 0; q < quads; ++q) {
-        const float* a = v + q * 4 * 4;  // 4 vertices of x, y, z, colour (4 bytes as one float slot)
-        const float* c = a + 2 * 4;
-        for (int y = int(a[1]) * scale; y < int(c[1]) * scale; ++y)
-            for (int x = int(a[0]) * scale; x < int(c[0]) * scale; ++x) {
-                int px = x0 + x, py = y0 + y;
-                if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
-                float* p = image.at(px, py);
-                p[0] = p[1] = p[2] = p[3] = 1.0f;
-            }
-    }
-}
-
 // The sRGB transfer function (IEC 61966-2-1) on RGB, as an sRGB swapchain encodes what a shader writes; alpha
 // stays linear. Negative values (no colour) become 0.
 void encodeSrgb(Image& image) {
@@ -425,5 +406,23 @@ int preview(const std::vector<std::string>& args, const Messages& m, Image* into
 }
 
 int previewCommand(const std::vector<std::string>& args) { return preview(args, {}, nullptr); }
+
+void drawLabel(Image& image, int x0, int y0, const std::string& text, int scale) {
+    std::vector<char> buffer(text.size() * 300);
+    std::string copy = text;
+    int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size()));
+    const float* v = reinterpret_cast<const float*>(buffer.data());
+    for (int q = 0; q < quads; ++q) {
+        const float* a = v + q * 4 * 4;  // 4 vertices of x, y, z, colour (4 bytes as one float slot)
+        const float* c = a + 2 * 4;
+        for (int y = int(a[1]) * scale; y < int(c[1]) * scale; ++y)
+            for (int x = int(a[0]) * scale; x < int(c[0]) * scale; ++x) {
+                int px = x0 + x, py = y0 + y;
+                if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+                float* p = image.at(px, py);
+                p[0] = p[1] = p[2] = p[3] = 1.0f;
+            }
+    }
+}
 
 }  // namespace hexc::cli

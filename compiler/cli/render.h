@@ -16,4 +16,7 @@ int previewCommand(const std::vector<std::string>& args);
 int render(const std::vector<std::string>& args, const Messages& m, Image* into);
 int preview(const std::vector<std::string>& args, const Messages& m, Image* into);
 
+// Draws text (lines apart at `\n`) with stb_easy_font's quads, scaled, in white on whatever is there.
+void drawLabel(Image& image, int x0, int y0, const std::string& text, int scale);
+
 }  // namespace hexc::cli

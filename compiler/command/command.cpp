@@ -14,7 +14,7 @@ namespace {
 
 const char* const kExitCodes = R"(Exit codes:
   0  success (warnings may have been printed)
-  1  a material, template or texture is invalid, or compilation failed (diagnostics on stderr)
+  1  a material, template or texture is invalid, or compilation failed (diagnostics on stderr); lint: a check warned
   2  bad command line
   3  an output could not be written
   4  render, preview: no Vulkan device, or the device failed)";

@@ -75,6 +75,7 @@ CompileOptions pageOptions() {
     o.slotTexturesDecoded = true;  // the page uploads each slot's texture, a KTX2 array's layer decoded (texels())
     o.concurrentTargets = false;
     o.derivedTextures = false;  // served apart (texture()), from the texture as it is when the page asks
+    o.lintTextures = false;     // it compiles at every change; `hexc lint` checks the textures
     return o;
 }
 
@@ -113,6 +114,7 @@ Json shippedCost(const Material& m, ShaderCache& cache, std::map<size_t, double>
     CompileOptions options;
     options.targets = {Target::Spirv};
     options.derivedTextures = false;  // what they cost is the shader's
+    options.lintTextures = false;
     options.cache = &cache;
     const auto start = std::chrono::steady_clock::now();
     CompileResult r = compile(m, options);

@@ -11,6 +11,7 @@
 #include "compile.h"
 #include "hexc/cache.h"
 #include "hexc/compiler.h"
+#include "hexc/lint.h"
 #include "hexc/spirv.h"
 #include "plan/plan.h"
 #include "precompute/derived.h"
@@ -115,6 +116,7 @@ void run(const Material& material, const CompileOptions& options, CompiledMateri
     const ShaderPlan& plan = out.plan;
     append(result.diagnostics, plan.diagnostics);
     if (hasErrors(plan.diagnostics)) return;
+    if (options.lintTextures) append(result.diagnostics, lintMaterial(material));
     if (options.debug && plan.layout.vulkan.combined)
         throw CompileError{{Diagnostic::make(Code::TargetUnsupported, {"--debug"}, "",
                                              "--debug keeps hexc's functions, which take a texture and a sampler apart; combined image "

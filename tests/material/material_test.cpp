@@ -165,17 +165,17 @@ TEST(Validation, WrongTypes) {
 TEST(Validation, AllProblemsInAFileAreReported) {
     auto d = diagnose(R"({"name": "m", "hextiling": {"falloff": 2, "exponent": 0},
   "slots": [{"name": "A", "kind": "colour", "texture": "textures/rock_albedo.png", "chanel": "r"}]})");
-    EXPECT_EQ(d,
-              (std::vector<std::string>{
-                  "materials/t.json:1:40: error[HX106]: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 2",
-                  "materials/t.json:1:55: error[HX106]: /hextiling/exponent: expected a number in [1, 64], got 0",
-                  "materials/t.json:2:84: error[HX103]: /slots/0/chanel: unknown key `chanel`; expected `name`, `texture`, `kind`, "
-                  "`channel`, `colorspace`, `flip_y`, `role`, `hextiling`, `height_blend` or `layer` (did you mean `channel`?)",
-                  "materials/t.json:2:22: error[HX108]: /slots/0/name: expected a lower-case identifier of 1-32 characters "
-                  "([a-z][a-z0-9_]*, no `__`, not starting with `gl_`), got \"A\" (it becomes the GLSL function hexc_<name>)",
-                  "materials/t.json:2:35: error[HX107]: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got "
-                  "\"colour\" (did you mean `color`?)",
-              }));
+    EXPECT_EQ(
+        d, (std::vector<std::string>{
+               "materials/t.json:1:40: error[HX106]: /hextiling/falloff: expected a number in [0.000001, 0.999999] (0.5 = off), got 2",
+               "materials/t.json:1:55: error[HX106]: /hextiling/exponent: expected a number in [1, 64], got 0",
+               "materials/t.json:2:84: error[HX103]: /slots/0/chanel: unknown key `chanel`; expected `name`, `texture`, `kind`, "
+               "`channel`, `colorspace`, `flip_y`, `role`, `hextiling`, `height_blend`, `layer` or `lint_skip` (did you mean `channel`?)",
+               "materials/t.json:2:22: error[HX108]: /slots/0/name: expected a lower-case identifier of 1-32 characters "
+               "([a-z][a-z0-9_]*, no `__`, not starting with `gl_`), got \"A\" (it becomes the GLSL function hexc_<name>)",
+               "materials/t.json:2:35: error[HX107]: /slots/0/kind: expected one of `color`, `scalar` or `normal`, got "
+               "\"colour\" (did you mean `color`?)",
+           }));
 }
 
 TEST(Validation, SplitCoordinatesNeedStableMode) {

@@ -33,6 +33,10 @@ inline constexpr TexelBudget kPackingBudget{8192, "packing", "it decodes each sl
 inline constexpr TexelBudget kSplatBudget{8192, "the splat maps' coverage (the manifest's expected fetches)",
                                           "it decodes the splat map at 4 bytes a texel"};
 
+// The JSON pointer of a slot's texture (`/slots/2/texture`, a splat map's `/layer_blend/splat/0`), where diagnostics
+// about its texture point.
+std::string texturePointer(const Material& material, const Slot& slot);
+
 // An error located at the slot (HX125, naming the texture, its size and the budget) when its texture has more
 // texels than `budget` holds; nullopt when it fits.
 std::optional<Diagnostic> overTexelBudget(const Material& material, const Slot& slot, const TexelBudget& budget);

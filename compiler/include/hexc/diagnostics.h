@@ -49,6 +49,10 @@ enum class Code {
     LayerWeights,
     TextureArray,
     NotArrayed,
+    NormalGreen,
+    NormalTilt,
+    TextureSeam,
+    TextureNotFinite,
     // templates and shader code
     UnknownTemplate,
     TemplateUnreadable,

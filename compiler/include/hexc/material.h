@@ -136,7 +136,9 @@ struct Slot {
     int width = 0, height = 0;  // of the texture file
     std::string channelNames;   // the texture file's channels, from its header (TextureInfo::channelNames)
     bool eightBit = false;      // the file decodes to 8-bit texels (TextureInfo::eightBit)
-    int textureLayer = 0;       // `layer`: the layer of a KTX2 array file this slot reads (a layered material's); 0 otherwise
+    // `lint_skip`: the texture checks ("green", "tilt", "seam") whose warnings this slot does not report (docs/lint.md).
+    std::vector<std::string> lintSkip;
+    int textureLayer = 0;  // `layer`: the layer of a KTX2 array file this slot reads (a layered material's); 0 otherwise
     // The texture file as the parser read it, the compile's one read of it (its bytes, its header); null when the
     // slot is built in code or its texture could not be read.
     std::shared_ptr<const TextureFile> file;

@@ -6,6 +6,7 @@
 
 #include "common/suggest.h"
 #include "hexc/image.h"
+#include "hexc/lint.h"
 #include "hexc/materialx.h"
 #include "material/layers.h"
 #include "material/names.h"
@@ -16,8 +17,8 @@ namespace hexc {
 namespace {
 
 const std::vector<std::string> kMaterialKeys = {"$schema", "name", "template", "hextiling", "pack", "slots", "layers", "layer_blend"};
-const std::vector<std::string> kSlotKeys = {"name",   "texture", "kind",      "channel",      "colorspace",
-                                            "flip_y", "role",    "hextiling", "height_blend", "layer"};
+const std::vector<std::string> kSlotKeys = {"name", "texture",   "kind",         "channel", "colorspace", "flip_y",
+                                            "role", "hextiling", "height_blend", "layer",   "lint_skip"};
 const std::vector<std::string> kHexKeys = {
     "enabled",           "tiling",        "rotation",      "falloff",        "falloffcontrast", "exponent",    "mode",
     "split_coordinates", "rotationrange", "rotationsteps", "scalerange",     "offset",          "offsetsteps", "mask",
@@ -315,6 +316,7 @@ private:
                 inheritedRangeWarned_ = rangeWarning(s.hex, "/hextiling");
         }
         if (v.contains("height_blend")) heightBlend(v["height_blend"], pointer + "/height_blend", s);
+        if (v.contains("lint_skip")) lintSkip(v["lint_skip"], pointer + "/lint_skip", s);
         if (v.contains("layer")) s.textureLayer = int(whole(v["layer"], pointer + "/layer", {0, 2047, false, false, "in [0, 2047]"}, 0));
         if (requireKey(v, pointer, "texture", "a path to an image file")) {
             s.texture = string(v["texture"], pointer + "/texture");
@@ -460,6 +462,13 @@ private:
                "for larger uv set \"split_coordinates\": true and pass uv relative to a per-frame origin "
                "(docs/precision.md#stable-modes-range)");
         return true;
+    }
+
+    // The texture checks whose warnings the slot does not report, by name (docs/lint.md).
+    void lintSkip(const json& v, const std::string& pointer, Slot& s) {
+        if (!v.is_array()) return report(Code::WrongType, pointer, "expected an array of check names, got " + typeName(v));
+        for (size_t i = 0; i < v.size(); ++i)
+            if (int c = choice(v[i], pointer + "/" + std::to_string(i), kLintChecks); c >= 0) s.lintSkip.push_back(kLintChecks[size_t(c)]);
     }
 
     void heightBlend(const json& v, const std::string& pointer, Slot& s) {
