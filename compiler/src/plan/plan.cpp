@@ -237,7 +237,12 @@ public:
 
     // A float setting of no one slot (the layers' blend), named `name`, read by `slots`.
     void addNamed(ParamRef& ref, const std::string& name, double value, const std::vector<std::string>& slots) {
-        place(ref, {name, {}, "float", {value}, slots});
+        ParamMember m;
+        m.name = name;
+        m.type = "float";
+        m.value = {value};
+        m.slots = slots;
+        place(ref, std::move(m));
     }
 
     // Block members first, in block order, then the baked constants.
