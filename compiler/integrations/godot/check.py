@@ -153,9 +153,10 @@ def controls(hexc, jobs, work):
     layered = work / "layered" / "layered.json"
     lpkg = package(hexc, layered, work)
     role = next(f for f in ec.manifest(lpkg)["functions"] if f.get("role") == "albedo")
+    lrect = ec.rect_for(ec.manifest(lpkg), SIZE)
     for what, swap in ec.layered_controls(layered.parent).items():
-        jobs.add(value_shader(lpkg, role), textures(lpkg, swap), value_check(hexc, layered, lpkg, role, rect_for(ec.manifest(lpkg)), what),
-                 f"control_{len(jobs.jobs)}", uv=rect_for(ec.manifest(lpkg)))
+        jobs.add(value_shader(lpkg, role), textures(lpkg, swap), value_check(hexc, layered, lpkg, role, lrect, what),
+                 f"control_{len(jobs.jobs)}", uv=lrect)
     bumps_bl, bumps_pkg = package(hexc, bumps, work, bottom_left=True), package(hexc, bumps, work)
     jobs.add(str(next(bumps_bl.glob("*.shader"))), textures(bumps_bl),
              lit_check("v flipped: the bumps package built with --uv-bottom-left", "top", True), "control_bumps_v", light=TOP)
