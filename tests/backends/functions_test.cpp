@@ -274,7 +274,7 @@ TEST(EnginePackages, ASlotWithoutAnEngineInputIsReported) {
 }
 
 // A layered material's package (Filament's) feeds the engine its roles' blends, reports the role without an input at
-// its first layer's slot; every engine's package carries it.
+// its first layer's slot. Every engine's package carries it: engine_package_paths writes the terrain's for each.
 TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
     ParseResult p = parseMaterialFile("materials/terrain/terrain.json");
     ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
@@ -294,11 +294,6 @@ TEST(EnginePackages, ALayeredMaterialFeedsTheBlendOfEachRole) {
                                                 })->contents);
     EXPECT_EQ(manifest["functions"][0], nlohmann::json::parse(R"({"name": "hexc_albedo", "role": "albedo", "parameters": "vec2 uv",
                                                                    "returns": "vec4", "value": "RGBA, linear"})"));
-    for (size_t e = 0; e <= size_t(hexc::kLastEngine); ++e) {
-        CompileResult each = compileForEngine(*p.material, Engine(e), {});
-        EXPECT_TRUE(each.ok()) << toString(Engine(e)) << formatAll(each.diagnostics);
-        EXPECT_FALSE(each.files.empty()) << toString(Engine(e));
-    }
 }
 
 // Godot 4, Unity and Unreal bind a layered role's textures as one texture array where the plan can, and a texture per
