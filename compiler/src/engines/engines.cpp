@@ -158,11 +158,8 @@ std::vector<std::string> packageNames(const Material& material, const EngineRow&
     std::vector<std::string> names;
     for (const auto& [templ, suffix] : e.files) names.push_back(material.name + suffix);
     if (e.copiesTextures)
-        for (const EngineTexture& t : textures(plan)) {
-            if (t.slot) names.push_back(textureCopyName(material, *t.slot->slot));
-            for (size_t layer : t.array ? t.array->slots : std::vector<size_t>{})
-                names.push_back(textureCopyName(material, *plan.slots[layer].slot));
-        }
+        for (const EngineTexture& t : textures(plan))
+            for (const SlotPlan* slot : loadedSlots(plan, t)) names.push_back(textureCopyName(material, *slot->slot));
     return names;
 }
 
@@ -191,6 +188,13 @@ std::string packageManifest(const Material& material, nlohmann::json manifest, c
 }  // namespace
 
 const EngineRow& engineRow(Engine engine) { return engineRows()[size_t(engine)]; }
+
+std::vector<const SlotPlan*> loadedSlots(const ShaderPlan& plan, const EngineTexture& t) {
+    if (t.slot) return {t.slot};
+    std::vector<const SlotPlan*> out;
+    for (size_t i : t.array ? t.array->slots : std::vector<size_t>{}) out.push_back(&plan.slots[i]);
+    return out;
+}
 
 std::string textureCopyName(const Material& material, const Slot& slot) {
     return material.name + "." + slot.name + slot.texturePath.extension().string();

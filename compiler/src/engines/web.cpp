@@ -27,14 +27,6 @@ Diagnostic unloadable(const PackageInput& in, const std::string& what) {
         std::string(in.engine.shown) + " packages load textures with the browser's image decoder (PNG, JPEG or WebP): " + what);
 }
 
-// The slots whose files a texture is loaded from: its slot's, or a layered role's array's layers' in layer order.
-std::vector<const SlotPlan*> loadedSlots(const PackageInput& in, const EngineTexture& t) {
-    if (t.slot) return {t.slot};
-    std::vector<const SlotPlan*> out;
-    for (size_t i : t.array ? t.array->slots : std::vector<size_t>{}) out.push_back(&in.compiled.plan.slots[i]);
-    return out;
-}
-
 // Each texture the functions read, as the module loads it: its file beside the module (an array: its layers' files,
 // which the module stacks), its sampler uniform, its colour space as the sampler decodes it.
 nlohmann::json textures(const PackageInput& in, Diagnostics& diagnostics) {
@@ -51,7 +43,7 @@ nlohmann::json textures(const PackageInput& in, Diagnostics& diagnostics) {
             continue;
         }
         nlohmann::json files = nlohmann::json::array();
-        for (const SlotPlan* slot : loadedSlots(in, t)) {
+        for (const SlotPlan* slot : loadedSlots(in.compiled.plan, t)) {
             if (!browserImage(slot->slot->texturePath))
                 diagnostics.push_back(
                     unloadable(in, "slot `" + slot->name + "` reads `" + slot->slot->texturePath.filename().string() + "`"));
@@ -114,7 +106,7 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
     module.replace(module.find(marker), marker.size(), data.dump(2));
     std::vector<OutputFile> files = {{in.material.name + suffix, std::move(module)}};
     for (const EngineTexture& t : in.textures)
-        for (const SlotPlan* slot : loadedSlots(in, t))  // the bytes the parser read
+        for (const SlotPlan* slot : loadedSlots(in.compiled.plan, t))  // the bytes the parser read
             files.push_back({textureCopyName(in.material, *slot->slot), slot->slot->file->bytes});
     return files;
 }
