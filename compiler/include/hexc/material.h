@@ -204,6 +204,10 @@ struct Layers {
     static constexpr size_t kMaxVertexLayers = 4;  // one vec4 of vertex colour
 };
 
+// 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages: a material's slots, a layer's slots and the
+// textures a shader binds (a role's texture array once) are each held to it.
+inline constexpr size_t kMaxTextures = 16;
+
 struct Material {
     std::string name;   // output file stem
     TemplateRef templ;  // the built-in `lit` unless the material names another

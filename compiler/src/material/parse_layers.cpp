@@ -14,9 +14,6 @@ namespace {
 const std::vector<std::string> kLayerKeys = {"name", "hextiling", "slots"};
 const std::vector<std::string> kLayerBlendKeys = {"weights", "splat", "mode", "height", "width", "skip_below", "arrays"};
 const std::vector<std::string> kLayerArrays = {"auto", "off"};
-// A layer's slots, as a material's: 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages. The textures
-// the shader binds, counted as bound (a role's texture array once), are held to it too, by the plan (plan/layer_arrays.cpp).
-constexpr size_t kMaxSlots = 16;
 
 // [a-z][a-z0-9]{0,15}: no `_`, so that <layer>_<role> splits at its first `_` and two layers' slots never collide.
 bool isLayerName(const std::string& name) {
@@ -89,8 +86,8 @@ private:
             report(Code::WrongType, pointer, "expected a non-empty array of slots, got " + typeName(v));
             return;
         }
-        if (v.size() > kMaxSlots) {
-            report(Code::WrongCount, pointer, "expected 1 to " + std::to_string(kMaxSlots) + " slots, got " + std::to_string(v.size()));
+        if (v.size() > kMaxTextures) {
+            report(Code::WrongCount, pointer, "expected 1 to " + std::to_string(kMaxTextures) + " slots, got " + std::to_string(v.size()));
             return;
         }
         const bool first = layers.layers.empty();

@@ -28,8 +28,6 @@ const std::vector<std::string> kHeightKeys = {"slot", "width"};
 const std::vector<std::string> kSlotOnlyKeys = {"texture", "layer", "kind", "channel", "colorspace", "flip_y", "role", "height_blend"};
 const std::vector<std::string> kMaterialOnlyKeys = {"template", "pack", "slots"};
 const std::vector<std::string> kTaps = {"adaptive"};  // besides a count
-// 16 = Vulkan's minimum guaranteed maxPerStageDescriptorSampledImages.
-constexpr size_t kMaxSlots = 16;
 
 // [a-z][a-z0-9_]{0,31} without `__` (reserved in GLSL): a slot name becomes the GLSL function hexc_<name>.
 bool isSlotName(const std::string& name) {
@@ -194,8 +192,8 @@ private:
             report(Code::WrongType, pointer, "expected an array of slots, got " + typeName(v));
             return;
         }
-        if (v.empty() || v.size() > kMaxSlots) {
-            report(Code::WrongCount, pointer, "expected 1 to " + std::to_string(kMaxSlots) + " slots, got " + std::to_string(v.size()));
+        if (v.empty() || v.size() > kMaxTextures) {
+            report(Code::WrongCount, pointer, "expected 1 to " + std::to_string(kMaxTextures) + " slots, got " + std::to_string(v.size()));
             if (v.empty()) return;
         }
         std::map<std::string, std::string> seen;  // name -> pointer of first use

@@ -160,7 +160,6 @@ void notArrayed(const Material& material, ShaderPlan& plan, const LayerArrayPlan
 // own. At most 16, Vulkan's guaranteed minimum of sampled images per stage (a material's own slots are held to it when
 // parsed); over it, HX110 at a layer's slot with what binds fewer: one array per role where a role's layers are apart.
 void refuseTooManyTextures(const Material& material, ShaderPlan& plan) {
-    constexpr size_t kMaxTextures = 16;
     size_t bound = 0;
     for (size_t i = 0; i < plan.slots.size(); ++i) bound += plan.textureBound(i);
     if (bound <= kMaxTextures) return;
