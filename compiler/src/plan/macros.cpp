@@ -10,7 +10,7 @@
 namespace hexc {
 namespace {
 
-using Tokens = std::vector<std::string>;
+using TokenList = std::vector<std::string>;
 
 // A size as a function of the sizes of the parameters of the macro being measured: c + sum k[i] * size(param i).
 struct Affine {
@@ -27,7 +27,7 @@ struct Affine {
 
 struct Macro {
     bool function = false;
-    Tokens params, body;
+    TokenList params, body;
     std::optional<Affine> size;  // memoised while the definitions stay the same
 };
 
@@ -37,8 +37,8 @@ constexpr int kMaxDepth = 1000;
 bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Identifiers, numbers (`1.5e3`, `.5`) and single punctuation characters: enough to find macro names.
-Tokens tokenize(const std::string& text, size_t from = 0) {
-    Tokens out;
+TokenList tokenize(const std::string& text, size_t from = 0) {
+    TokenList out;
     for (size_t i = from; i < text.size();) {
         char ch = text[i];
         bool number = std::isdigit(static_cast<unsigned char>(ch)) ||
@@ -62,7 +62,7 @@ public:
     std::map<std::string, Macro> macros;
 
     // The size of tokens [begin, end) as a function of `params` (the parameters of the macro they belong to).
-    Affine size(const Tokens& t, size_t begin, size_t end, const Tokens& params, int depth) {
+    Affine size(const TokenList& t, size_t begin, size_t end, const TokenList& params, int depth) {
         Affine out{0, std::vector<double>(params.size())};
         if (depth > kMaxDepth) {
             out.c = INFINITY;
@@ -92,7 +92,7 @@ public:
 private:
     std::set<std::string> active_;  // macros being measured: inside their own body they do not expand (C rules)
 
-    static size_t indexOf(const Tokens& list, const std::string& token) {
+    static size_t indexOf(const TokenList& list, const std::string& token) {
         size_t i = 0;
         while (i < list.size() && list[i] != token) ++i;
         return i;
@@ -109,7 +109,7 @@ private:
 
     // Adds, for the invocation whose `(` is at `open`, each argument's size times its uses; returns the index of
     // the closing `)` (or the last token when it is missing).
-    size_t addArguments(const Tokens& t, size_t open, size_t end, const Tokens& params, const Affine& m, int depth, Affine& out) {
+    size_t addArguments(const TokenList& t, size_t open, size_t end, const TokenList& params, const Affine& m, int depth, Affine& out) {
         size_t argument = 0, start = open + 1, i = open + 1;
         for (int nesting = 0; i < end; ++i) {
             bool last = t[i] == ")" && nesting == 0;
@@ -191,7 +191,7 @@ bool builtinType(const std::string& name) {
 }
 
 // Whether tokens[i] `(` is a call: a name, not a keyword, type constructor or the name a declaration defines.
-bool isCall(const Tokens& tokens, size_t i) {
+bool isCall(const TokenList& tokens, size_t i) {
     const std::string& name = tokens[i];
     if (tokens[i + 1] != "(" || !identifierChar(name[0]) || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
     if (kNotCalls.contains(name) || builtinType(name)) return false;
@@ -206,7 +206,7 @@ MacroExpansion boundMacroExpansion(const std::string& source) {
     for (const auto& [line, number] : logicalLines(source)) {
         size_t at = line.find_first_not_of(" \t\r\f\v");
         if (at != std::string::npos && line[at] == '#') {
-            Tokens directive = tokenize(line, at + 1);
+            TokenList directive = tokenize(line, at + 1);
             if (!directive.empty() && directive[0] == "define") define(measure, line, line.find("define", at) + 6);
             if (directive.size() > 1 && directive[0] == "undef") {
                 measure.macros.erase(directive[1]);
@@ -214,7 +214,7 @@ MacroExpansion boundMacroExpansion(const std::string& source) {
             }
             continue;
         }
-        Tokens tokens = tokenize(line);
+        TokenList tokens = tokenize(line);
         out.tokens += measure.size(tokens, 0, tokens.size(), {}, 0).c;
         if (out.line == 0 && !(out.tokens <= kMaxExpandedTokens)) out.line = number;
         for (size_t i = 0; i + 1 < tokens.size(); ++i) out.calls += isCall(tokens, i);
