@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "hexc/compiler.h"
 #include "hexc/material.h"
 #include "vk/runner.h"
 
@@ -28,6 +29,16 @@ inline Material loadMaterial(const std::filesystem::path& file) {
     ParseResult r = parseMaterialFile(file);
     if (!r.material) throw std::runtime_error(file.string() + "\n" + formatAll(r.diagnostics));
     return *r.material;
+}
+
+// The example terrain (materials/terrain/), parsed.
+inline Material exampleTerrain() { return loadMaterial("materials/terrain/terrain.json"); }
+
+// The compile's output whose name ends in `suffix`; an exception naming the suffix when there is none.
+inline const OutputFile& outputFile(const CompileResult& r, const std::string& suffix) {
+    for (const OutputFile& f : r.files)
+        if (f.name.ends_with(suffix)) return f;
+    throw std::runtime_error("no output ending in " + suffix);
 }
 
 // A file's bytes ("" when it cannot be read).

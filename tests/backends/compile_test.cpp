@@ -19,6 +19,7 @@
 
 using namespace hexc;
 using hexc::test::loadMaterial;
+using hexc::test::outputFile;
 using hexc::test::readFile;
 using hexc::test::runHexc;
 
@@ -32,12 +33,6 @@ CompileResult compileExample(const std::string& name, const CompileOptions& opti
     return r;
 }
 
-const OutputFile& file(const CompileResult& r, const std::string& suffix) {
-    for (const OutputFile& f : r.files)
-        if (f.name.ends_with(suffix)) return f;
-    throw std::runtime_error("no output ending in " + suffix);
-}
-
 class Example : public testing::TestWithParam<const char*> {};
 
 TEST_P(Example, WritesEveryTargetAndAManifest) {
@@ -48,7 +43,7 @@ TEST_P(Example, WritesEveryTargetAndAManifest) {
     EXPECT_EQ(names,
               (std::vector<std::string>{n + ".frag.glsl", n + ".frag.hlsl", n + ".frag.metal", n + ".frag.spv", n + ".manifest.json"}));
     for (const OutputFile& f : r.files) EXPECT_GT(f.contents.size(), 500u) << f.name;
-    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    auto manifest = nlohmann::json::parse(outputFile(r, ".manifest.json").contents);
     EXPECT_EQ(manifest["material"], n);
     for (const char* t : {"spirv", "hlsl", "glsl", "msl"}) EXPECT_TRUE(manifest["targets"].contains(t)) << t;
     // Named after the material on every target OpenGL allows, so materials can share one metallib or HLSL library.
@@ -65,12 +60,13 @@ TEST(EntryPoint, EveryTargetDefinesTheNameTheManifestGives) {
         ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
         const std::string name = entry.empty() ? "rock_frag" : entry;
         EXPECT_NE(disassemble(r.spirv).find("OpEntryPoint Fragment %" + name + " \"" + name + "\""), std::string::npos) << name;
-        EXPECT_NE(file(r, ".hlsl").contents.find("SPIRV_Cross_Output " + name + "(SPIRV_Cross_Input stage_input)"), std::string::npos);
-        EXPECT_NE(file(r, ".metal").contents.find("fragment " + name + "_out " + name + "("), std::string::npos);
-        EXPECT_NE(file(r, ".glsl").contents.find("void main()"), std::string::npos);
-        auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+        EXPECT_NE(outputFile(r, ".hlsl").contents.find("SPIRV_Cross_Output " + name + "(SPIRV_Cross_Input stage_input)"),
+                  std::string::npos);
+        EXPECT_NE(outputFile(r, ".metal").contents.find("fragment " + name + "_out " + name + "("), std::string::npos);
+        EXPECT_NE(outputFile(r, ".glsl").contents.find("void main()"), std::string::npos);
+        auto manifest = nlohmann::json::parse(outputFile(r, ".manifest.json").contents);
         // The HLSL compiles again from the entry point the manifest names.
-        SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "rock.frag.hlsl", SourceLanguage::Hlsl,
+        SpirvResult back = compileToSpirv(outputFile(r, ".hlsl").contents, ShaderStage::Fragment, "rock.frag.hlsl", SourceLanguage::Hlsl,
                                           manifest["targets"]["hlsl"]["entry_point"]);
         EXPECT_FALSE(back.words.empty()) << formatAll(back.diagnostics);
     }
@@ -99,7 +95,7 @@ TEST_P(Example, EmittedHlslCompilesWithGlslangHlslFrontEnd) {
         CompileOptions options;
         options.hlslShaderModel = sm;
         CompileResult r = compileExample(GetParam(), options);
-        SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl,
+        SpirvResult back = compileToSpirv(outputFile(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl,
                                           std::string(GetParam()) + "_frag");
         ASSERT_FALSE(back.words.empty()) << "SM " << sm << "\n" << formatAll(back.diagnostics);
         EXPECT_FALSE(optimizeSpirv(back.words, false, true).words.empty());
@@ -116,7 +112,7 @@ TEST_P(Example, EmittedGlslCompilesWithGlslang) {
         options.glslVersion = v.number;
         options.glslEs = v.es;
         CompileResult r = compileExample(GetParam(), options);
-        const std::string& source = file(r, ".glsl").contents;
+        const std::string& source = outputFile(r, ".glsl").contents;
         EXPECT_EQ(source.substr(0, source.find('\n')), "#version " + std::to_string(v.number) + (v.es ? " es" : ""));  // then the banner
         SpirvResult back = compileToSpirv(source, ShaderStage::Fragment, "emitted.glsl", SourceLanguage::OpenGlGlsl);
         EXPECT_FALSE(back.words.empty()) << v.number << "\n" << formatAll(back.diagnostics) << source;
@@ -128,8 +124,9 @@ INSTANTIATE_TEST_SUITE_P(Materials, Example, testing::ValuesIn(kExamples));
 TEST(Compile, HlslPackOffsetsMatchTheManifest) {
     // An engine fills the block by the manifest's offsets; the HLSL cbuffer must agree byte for byte.
     CompileResult r = compileExample("rock");
-    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
-    SpirvResult back = compileToSpirv(file(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl, "rock_frag");
+    auto manifest = nlohmann::json::parse(outputFile(r, ".manifest.json").contents);
+    SpirvResult back =
+        compileToSpirv(outputFile(r, ".hlsl").contents, ShaderStage::Fragment, "emitted.hlsl", SourceLanguage::Hlsl, "rock_frag");
     ASSERT_FALSE(back.words.empty());
     spirv_cross::Compiler c(back.words);
     auto ubos = c.get_shader_resources().uniform_buffers;
@@ -204,7 +201,7 @@ TEST(Compile, SlotsTheTemplateDoesNotReadAreLeftOutWithAWarning) {
     EXPECT_EQ(r.diagnostics[0].format(),
               "materials/rock.json:20:15: warning[HX204]: /slots/1: slot `normal` is not read by template templates/builtin/unlit.glsl; it "
               "is left out");
-    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    auto manifest = nlohmann::json::parse(outputFile(r, ".manifest.json").contents);
     EXPECT_EQ(manifest["slots"].size(), 1u);
     EXPECT_EQ(manifest["targets"]["spirv"]["textures"].size(), 1u);
 }
@@ -214,7 +211,7 @@ TEST(Compile, WeightsTemplateUsesTheFirstSlot) {
     m.templ = TemplateRef::builtin("weights");
     CompileResult r = compile(m);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    auto manifest = nlohmann::json::parse(outputFile(r, ".manifest.json").contents);
     ASSERT_EQ(manifest["slots"].size(), 1u);
     EXPECT_EQ(manifest["slots"][0]["name"], "albedo");
 }
@@ -224,7 +221,7 @@ TEST(Compile, TargetSubset) {
     options.targets = {Target::Msl, Target::Spirv};
     CompileResult r = compileExample("tiles", options);
     ASSERT_EQ(r.files.size(), 3u);
-    auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    auto manifest = nlohmann::json::parse(outputFile(r, ".manifest.json").contents);
     EXPECT_EQ(manifest["targets"].size(), 2u);
 }
 
@@ -276,22 +273,22 @@ TEST(Vertex, FeedsEveryFragmentInputOnEveryTarget) {
         options.vertex = true;
         CompileResult r = compileExample(name, options);
         ASSERT_EQ(r.files.size(), 9u);
-        const std::vector<uint32_t> vert = spirvWords(file(r, ".vert.spv").contents);
+        const std::vector<uint32_t> vert = spirvWords(outputFile(r, ".vert.spv").contents);
         EXPECT_EQ(interface(vert, false), interface(r.spirv, true));
         const std::string entry = std::string(name) + "_vert";
         EXPECT_NE(disassemble(vert).find("OpEntryPoint Vertex %" + entry), std::string::npos);
         // HLSL and OpenGL GLSL compile again; each fragment input's semantic / MSL user location is written.
-        SpirvResult hlsl = compileToSpirv(file(r, ".vert.hlsl").contents, ShaderStage::Vertex, "v.hlsl", SourceLanguage::Hlsl, entry);
+        SpirvResult hlsl = compileToSpirv(outputFile(r, ".vert.hlsl").contents, ShaderStage::Vertex, "v.hlsl", SourceLanguage::Hlsl, entry);
         EXPECT_FALSE(hlsl.words.empty()) << formatAll(hlsl.diagnostics);
-        SpirvResult glsl = compileToSpirv(file(r, ".vert.glsl").contents, ShaderStage::Vertex, "v.glsl", SourceLanguage::OpenGlGlsl);
+        SpirvResult glsl = compileToSpirv(outputFile(r, ".vert.glsl").contents, ShaderStage::Vertex, "v.glsl", SourceLanguage::OpenGlGlsl);
         EXPECT_FALSE(glsl.words.empty()) << formatAll(glsl.diagnostics);
-        auto manifest = nlohmann::json::parse(file(r, ".manifest.json").contents);
+        auto manifest = nlohmann::json::parse(outputFile(r, ".manifest.json").contents);
         const auto& inputs = manifest["targets"]["hlsl"]["inputs"];
         ASSERT_EQ(manifest["vertex"]["attributes"].size(), inputs.size() + 1);
         for (const auto& in : inputs) {
             const std::string loc = std::to_string(in["location"].get<int>());
-            EXPECT_NE(file(r, ".vert.hlsl").contents.find(in["name"].get<std::string>() + " : TEXCOORD" + loc), std::string::npos);
-            EXPECT_NE(file(r, ".vert.metal").contents.find("[[user(locn" + loc + ")]]"), std::string::npos);
+            EXPECT_NE(outputFile(r, ".vert.hlsl").contents.find(in["name"].get<std::string>() + " : TEXCOORD" + loc), std::string::npos);
+            EXPECT_NE(outputFile(r, ".vert.metal").contents.find("[[user(locn" + loc + ")]]"), std::string::npos);
         }
         EXPECT_EQ(manifest["vertex"]["msl"]["entry_point"], entry);
         EXPECT_EQ(manifest["vertex"]["glsl"]["file"], std::string(name) + ".vert.glsl");
@@ -337,7 +334,8 @@ TEST(Readable, DebugOutputsKeepHexcsFunctionsAndLines) {
     debug.debug = true;
     debug.emitGenerated = true;
     CompileResult r = compileExample("rock", debug), release = compileExample("rock");
-    const std::string hlsl = file(r, ".frag.hlsl").contents, glsl = file(r, ".frag.glsl").contents, msl = file(r, ".frag.metal").contents;
+    const std::string hlsl = outputFile(r, ".frag.hlsl").contents, glsl = outputFile(r, ".frag.glsl").contents,
+                      msl = outputFile(r, ".frag.metal").contents;
     for (const std::string* text : {&hlsl, &glsl, &msl}) {
         EXPECT_NE(text->find("hexc_albedo("), std::string::npos);
         EXPECT_NE(text->find("hexcAt_normal("), std::string::npos);
@@ -348,12 +346,12 @@ TEST(Readable, DebugOutputsKeepHexcsFunctionsAndLines) {
         EXPECT_NE(text->find("debug (unoptimised, line directives: functions)"), std::string::npos);
     }
     EXPECT_NE(hlsl.find("float4 hexcColor_albedo(Texture2D<float4> tex, SamplerState samp"), std::string::npos);
-    for (const std::string& text : {file(release, ".frag.hlsl").contents, file(release, ".frag.glsl").contents}) {
+    for (const std::string& text : {outputFile(release, ".frag.hlsl").contents, outputFile(release, ".frag.glsl").contents}) {
         EXPECT_EQ(text.find("#line"), std::string::npos);
         EXPECT_EQ(text.find("hexcColor_albedo("), std::string::npos);
     }
     // The generated Vulkan GLSL, beside them, is what glslang compiled: it compiles again to the same SPIR-V.
-    const std::string generated = file(r, ".generated.frag").contents;
+    const std::string generated = outputFile(r, ".generated.frag").contents;
     EXPECT_EQ(withoutBanner(generated), r.glsl);
     SpirvResult again = compileToSpirv(generated, ShaderStage::Fragment, "rock.generated.frag", SourceLanguage::Glsl, "rock_frag", {},
                                        "rock.generated.frag");

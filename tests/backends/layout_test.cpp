@@ -17,6 +17,7 @@
 
 using namespace hexc;
 using hexc::test::loadMaterial;
+using hexc::test::outputFile;
 using hexc::test::runner;
 using json = nlohmann::json;
 
@@ -44,13 +45,6 @@ std::vector<NamedLayout> layouts() {
     return {{"default", {}, 50}, {"shifted", shifted, 50}, {"spaces", spaces, 51}};
 }
 
-std::string file(const CompileResult& r, const std::string& suffix) {
-    for (const OutputFile& f : r.files)
-        if (f.name.ends_with(suffix)) return f.contents;
-    ADD_FAILURE() << "no output " << suffix;
-    return {};
-}
-
 CompileResult compileWith(const NamedLayout& l) {
     CompileOptions options;
     options.layout = l.layout;
@@ -67,7 +61,7 @@ TEST(Layout, EveryTargetAndTheManifestPutHexcsResourcesWhereItSays) {
         SCOPED_TRACE(l.name);
         CompileResult r = compileWith(l);
         const ResourceLayout& L = l.layout;
-        json targets = json::parse(file(r, ".manifest.json"))["targets"];
+        json targets = json::parse(outputFile(r, ".manifest.json").contents)["targets"];
         // rock's slots in order: albedo, normal, roughness.
         EXPECT_EQ(targets["spirv"]["params"],
                   (json{{"set", L.vulkan.set}, {"binding", L.vulkan.binding}, {"descriptor_type", "UNIFORM_BUFFER"}}));
@@ -76,22 +70,22 @@ TEST(Layout, EveryTargetAndTheManifestPutHexcsResourcesWhereItSays) {
                   L.vulkan.combined ? "COMBINED_IMAGE_SAMPLER" : "SAMPLED_IMAGE");
         EXPECT_EQ(targets["spirv"]["sampler"].contains("combined_into_textures"), L.vulkan.combined == 1);
         // Combined: no sampler variable is left in the module, and each texture is a sampler2D.
-        const std::string spirv = disassemble(spirvWords(file(r, ".spv")));
+        const std::string spirv = disassemble(spirvWords(outputFile(r, ".spv").contents));
         EXPECT_EQ(spirv.find("%hexcSampler = OpVariable"), L.vulkan.combined ? std::string::npos : spirv.find("%hexcSampler = OpVariable"));
         EXPECT_EQ(spirv.find("OpSampledImage") == std::string::npos, L.vulkan.combined == 1);
         const std::string space = L.hlsl.space ? ", space" + std::to_string(L.hlsl.space) : "";
-        const std::string hlsl = file(r, ".hlsl");
+        const std::string hlsl = outputFile(r, ".hlsl").contents;
         EXPECT_NE(hlsl.find("hexcTex_roughness : register(t" + std::to_string(L.hlsl.t + 2) + space + ")"), std::string::npos);
         EXPECT_NE(hlsl.find("hexcSampler : register(s" + std::to_string(L.hlsl.s) + space + ")"), std::string::npos);
         EXPECT_NE(hlsl.find("HexcParams : register(b" + std::to_string(L.hlsl.b) + space + ")"), std::string::npos);
         EXPECT_EQ(targets["hlsl"]["textures"]["roughness"],
                   (json{{"register", "t" + std::to_string(L.hlsl.t + 2)}, {"space", L.hlsl.space}}));
-        const std::string msl = file(r, ".metal");
+        const std::string msl = outputFile(r, ".metal").contents;
         EXPECT_NE(msl.find("hexcTex_roughness [[texture(" + std::to_string(L.msl.texture + 2) + ")]]"), std::string::npos);
         EXPECT_NE(msl.find("hexcSampler [[sampler(" + std::to_string(L.msl.sampler) + ")]]"), std::string::npos);
         EXPECT_NE(msl.find("hexcParams [[buffer(" + std::to_string(L.msl.buffer) + ")]]"), std::string::npos);
         EXPECT_EQ(targets["msl"]["textures"]["roughness"]["texture"], L.msl.texture + 2);
-        const std::string glsl = file(r, ".frag.glsl");
+        const std::string glsl = outputFile(r, ".frag.glsl").contents;
         EXPECT_NE(glsl.find("layout(binding = " + std::to_string(L.glsl.binding + 2) + ") uniform sampler2D hexcTex_roughness"),
                   std::string::npos);
         EXPECT_EQ(targets["glsl"]["params"]["binding"], L.glsl.binding);

@@ -15,8 +15,10 @@
 #include "hexc/layout.h"
 #include "hexc/material.h"
 #include "hexc/spirv.h"
+#include "support.h"
 
 using namespace hexc;
+using hexc::test::outputFile;
 using json = nlohmann::json;
 
 namespace {
@@ -31,13 +33,6 @@ CompileResult compileEngine(const std::string& templ = "materials/templates/engi
     ParseResult parsed = parseMaterial(text, "materials/engine_rock.json");
     if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
     return compile(*parsed.material, options);
-}
-
-std::string file(const CompileResult& r, const std::string& name) {
-    for (const OutputFile& f : r.files)
-        if (f.name == name) return f.contents;
-    ADD_FAILURE() << "no output " << name;
-    return {};
 }
 
 // Every match of `pattern` (its first group) in `text`, which must all differ.
@@ -82,21 +77,21 @@ TEST(TemplateResources, EveryTargetPlacesThemWithoutCollisions) {
         CompileResult r = compileEngine("materials/templates/engine.glsl", "", options);
         ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
         // HLSL: 4 cbuffers (hexc's, Frame, Object, Push), 5 textures, 4 samplers, all in hexc's space.
-        std::string hlsl = file(r, "engine_rock.frag.hlsl");
+        std::string hlsl = outputFile(r, "engine_rock.frag.hlsl").contents;
         const std::string space = options.layout.hlsl.space ? ", space" + std::to_string(options.layout.hlsl.space) : "";
         expectDistinct(matches(hlsl, R"(register\((b\d+))" + space + R"(\))"), 4, "HLSL b registers");
         expectDistinct(matches(hlsl, R"(register\((t\d+))" + space + R"(\))"), 5, "HLSL t registers");
         expectDistinct(matches(hlsl, R"(register\((s\d+))" + space + R"(\))"), 4, "HLSL s registers");
-        std::string msl = file(r, "engine_rock.frag.metal");
+        std::string msl = outputFile(r, "engine_rock.frag.metal").contents;
         expectDistinct(matches(msl, R"(\[\[buffer\((\d+)\)\]\])"), 4, "MSL buffers");
         expectDistinct(matches(msl, R"(\[\[texture\((\d+)\)\]\])"), 5, "MSL textures");
         expectDistinct(matches(msl, R"(\[\[sampler\((\d+)\)\]\])"), 4, "MSL samplers");
         // GLSL: 3 uniform blocks, 5 combined samplers on texture units (push constants become a plain uniform).
-        std::string glsl = file(r, "engine_rock.frag.glsl");
+        std::string glsl = outputFile(r, "engine_rock.frag.glsl").contents;
         expectDistinct(matches(glsl, R"(binding = (\d+), std140)"), 3, "GLSL uniform block bindings");
         expectDistinct(matches(glsl, R"(binding = (\d+)\) uniform sampler)"), 5, "GLSL texture units");
         // SPIR-V: the template's declarations as written, hexc's after them in set 1.
-        json spirv = json::parse(file(r, "engine_rock.manifest.json"))["targets"]["spirv"];
+        json spirv = json::parse(outputFile(r, "engine_rock.manifest.json").contents)["targets"]["spirv"];
         EXPECT_EQ(spirv["textures"]["roughness"]["set"], options.layout.vulkan.set);
         EXPECT_EQ(spirv["textures"]["roughness"]["binding"], options.layout.vulkan.binding + 3);
     }
@@ -105,8 +100,9 @@ TEST(TemplateResources, EveryTargetPlacesThemWithoutCollisions) {
 TEST(TemplateResources, TheManifestSaysWhereEachTargetPutThem) {
     CompileResult r = compileEngine();
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    json m = json::parse(file(r, "engine_rock.manifest.json"));
-    std::string hlsl = file(r, "engine_rock.frag.hlsl"), msl = file(r, "engine_rock.frag.metal"), glsl = file(r, "engine_rock.frag.glsl");
+    json m = json::parse(outputFile(r, "engine_rock.manifest.json").contents);
+    std::string hlsl = outputFile(r, "engine_rock.frag.hlsl").contents, msl = outputFile(r, "engine_rock.frag.metal").contents,
+                glsl = outputFile(r, "engine_rock.frag.glsl").contents;
     for (const std::string target : {"spirv", "hlsl", "glsl", "msl"})
         ASSERT_EQ(m["targets"][target]["template_resources"].size(), 7u) << target;
     for (const json& res : m["targets"]["hlsl"]["template_resources"]) {
@@ -163,8 +159,8 @@ TEST(TemplateResources, TheManifestSaysWhereEachTargetPutThem) {
 TEST(TemplateResources, TheHlslOutputCompilesAgain) {
     CompileResult r = compileEngine();
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    json m = json::parse(file(r, "engine_rock.manifest.json"));
-    SpirvResult again = compileToSpirv(file(r, "engine_rock.frag.hlsl"), ShaderStage::Fragment, "engine_rock.frag.hlsl",
+    json m = json::parse(outputFile(r, "engine_rock.manifest.json").contents);
+    SpirvResult again = compileToSpirv(outputFile(r, "engine_rock.frag.hlsl").contents, ShaderStage::Fragment, "engine_rock.frag.hlsl",
                                        SourceLanguage::Hlsl, m["targets"]["hlsl"]["entry_point"]);
     EXPECT_FALSE(again.words.empty()) << formatAll(again.diagnostics);
 }
@@ -193,7 +189,7 @@ TEST(TemplateResources, OneInHexcsSetPastItsBindingsIsTheTemplates) {
                            "layout(set = 0, binding = 4) uniform sampler2D shadowMap;", "hexc_set0_free_template.glsl", text);
     CompileResult r = compileEngine(templ.string());
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    json placed = json::parse(file(r, "engine_rock.manifest.json"))["targets"]["spirv"]["template_resources"];
+    json placed = json::parse(outputFile(r, "engine_rock.manifest.json").contents)["targets"]["spirv"]["template_resources"];
     bool found = false;
     for (const json& res : placed)
         found |= res["name"] == "shadowMap" && res["kind"] == "combined_image_sampler" &&
@@ -227,7 +223,7 @@ TEST(TemplateResources, TheLayoutPlacesTheTemplatesOwn) {
     l.msl.buffer = 4, l.msl.texture = 4, l.msl.sampler = 3, l.msl.templateBuffer = l.msl.templateTexture = l.msl.templateSampler = 0;
     CompileResult r = compileEngine("materials/templates/engine.glsl", "", options);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    const std::string hlsl = file(r, "engine_rock.frag.hlsl"), msl = file(r, "engine_rock.frag.metal");
+    const std::string hlsl = outputFile(r, "engine_rock.frag.hlsl").contents, msl = outputFile(r, "engine_rock.frag.metal").contents;
     auto has = [](const std::string& text, const std::string& pattern) { return std::regex_search(text, std::regex(pattern)); };
     EXPECT_TRUE(has(hlsl, R"(cbuffer Frame : register\(b0\))")) << hlsl;
     EXPECT_TRUE(has(hlsl, R"(cbuffer Object : register\(b1\))"));
@@ -237,7 +233,7 @@ TEST(TemplateResources, TheLayoutPlacesTheTemplatesOwn) {
     EXPECT_TRUE(has(msl, R"(constant Frame& frame \[\[buffer\(0\)\]\])")) << msl;
     EXPECT_TRUE(has(msl, R"(constant HexcParams& hexcParams \[\[buffer\(4\)\]\])"));
     EXPECT_TRUE(has(msl, R"(texture2d<float> shadowMap \[\[texture\(0\)\]\])"));
-    const json m = json::parse(file(r, "engine_rock.manifest.json"));
+    const json m = json::parse(outputFile(r, "engine_rock.manifest.json").contents);
     EXPECT_EQ(m["targets"]["hlsl"]["template_resources"][0]["register"], "b0");
     EXPECT_EQ(m["targets"]["msl"]["template_resources"][0]["buffer"], 0);
 
@@ -246,7 +242,7 @@ TEST(TemplateResources, TheLayoutPlacesTheTemplatesOwn) {
     spaces.layout.hlsl.templateSpaces = 1;
     r = compileEngine("materials/templates/engine.glsl", "", spaces);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    const std::string spaced = file(r, "engine_rock.frag.hlsl");
+    const std::string spaced = outputFile(r, "engine_rock.frag.hlsl").contents;
     EXPECT_TRUE(has(spaced, R"(cbuffer Frame : register\(b0, space1\))")) << spaced;
     EXPECT_TRUE(has(spaced, R"(cbuffer Object : register\(b0, space2\))"));
     EXPECT_TRUE(has(spaced, R"(\bshadowMap : register\(t0, space1\))"));
@@ -276,8 +272,8 @@ TEST(TemplateResources, MslArgumentBuffersHoldWhatTheManifestSays) {
     options.layout.msl.argumentBuffers = 1;
     CompileResult r = compileEngine("materials/templates/engine.glsl", "", options);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    const std::string msl = file(r, "engine_rock.frag.metal");
-    const json target = json::parse(file(r, "engine_rock.manifest.json"))["targets"]["msl"];
+    const std::string msl = outputFile(r, "engine_rock.frag.metal").contents;
+    const json target = json::parse(outputFile(r, "engine_rock.manifest.json").contents)["targets"]["msl"];
     EXPECT_EQ(target["argument_buffers"], true);
     // Each struct's members and their ids.
     std::map<int, std::string> structs;

@@ -14,11 +14,10 @@
 #include "support.h"
 
 using namespace hexc;
+using hexc::test::exampleTerrain;
 using hexc::test::loadMaterial;
 
 namespace {
-
-Material terrain() { return loadMaterial("materials/terrain/terrain.json"); }
 
 const LayerArrayPlan& arrayOf(const ShaderPlan& plan, const std::string& role) {
     for (const LayerArrayPlan& a : plan.layers->arrays)
@@ -30,7 +29,7 @@ const LayerArrayPlan& arrayOf(const ShaderPlan& plan, const std::string& role) {
 Slot& slotOf(Material& m, size_t layer, size_t role) { return m.slots[m.layers->layers[layer].slots[role]]; }
 
 TEST(LayerArrays, RolesWhoseTexturesMatchAreOneArrayWithALayerPerLayer) {
-    const ShaderPlan plan = planShader(terrain(), {});
+    const ShaderPlan plan = planShader(exampleTerrain(), {});
     ASSERT_TRUE(plan.layers);
     ASSERT_EQ(plan.layers->arrays.size(), 3u);  // lit reads albedo and normal; the height blend reads the heights
     for (const char* role : {"albedo", "normal", "height"}) {
@@ -61,7 +60,7 @@ TEST(LayerArrays, ASizeFormatChannelsOrColourSpaceThatDiffersKeepsTheRolesTextur
          "colour spaces differ: `grass_albedo` and `pebbles_albedo` are bound as sRGB and linear"},
     };
     for (const Change& c : changes) {
-        Material m = terrain();
+        Material m = exampleTerrain();
         c.apply(slotOf(m, 2, 0));
         const ShaderPlan plan = planShader(m, {});
         const LayerArrayPlan& albedo = arrayOf(plan, "albedo");
@@ -75,20 +74,20 @@ TEST(LayerArrays, ASizeFormatChannelsOrColourSpaceThatDiffersKeepsTheRolesTextur
 }
 
 TEST(LayerArrays, OffOneLayerGeneralCodeAndTheFunctionsOutputKeepSeparateTextures) {
-    Material off = terrain();
+    Material off = exampleTerrain();
     off.layers->arrays = false;
     EXPECT_EQ(arrayOf(planShader(off, {}), "albedo").refused, "layer_blend.arrays is \"off\"");
     CompileOptions general;
     general.specialise = false;
-    EXPECT_EQ(arrayOf(planShader(terrain(), general), "albedo").refused,
+    EXPECT_EQ(arrayOf(planShader(exampleTerrain(), general), "albedo").refused,
               "--no-specialise: the library's general functions read 2D textures");
     CompileOptions functions;
     functions.functions = true;
-    EXPECT_EQ(arrayOf(planShader(terrain(), functions), "albedo").refused,
+    EXPECT_EQ(arrayOf(planShader(exampleTerrain(), functions), "albedo").refused,
               "the functions output (engine packages) binds one texture per slot (docs/engines.md)");
     // An engine package that binds arrays: as a whole shader.
     functions.functionArrays = FunctionArrays::All;
-    EXPECT_EQ(arrayOf(planShader(terrain(), functions), "albedo").refused, "");
+    EXPECT_EQ(arrayOf(planShader(exampleTerrain(), functions), "albedo").refused, "");
     const Material one = loadMaterial("tests/execution/layers/one.json");
     const ShaderPlan plan = planShader(one, {});
     ASSERT_FALSE(plan.layers->arrays.empty());
@@ -107,7 +106,7 @@ std::vector<std::string> withCode(const ShaderPlan& plan, Code code) {
 std::vector<std::string> notArrayed(const ShaderPlan& plan) { return withCode(plan, Code::NotArrayed); }
 
 TEST(LayerArrays, ARoleKeptApartByItsTexturesIsAWarningNamingTheLayersAndHowToGetOneArray) {
-    Material sizes = terrain();
+    Material sizes = exampleTerrain();
     slotOf(sizes, 2, 0).width = slotOf(sizes, 2, 0).height = 128;
     EXPECT_EQ(notArrayed(planShader(sizes, {})),
               std::vector<std::string>{
@@ -122,7 +121,7 @@ TEST(LayerArrays, ARoleKeptApartByItsTexturesIsAWarningNamingTheLayersAndHowToGe
          "channels differ: `grass_normal` and `sand_normal` have rgb and rgba (give them the same"},
     };
     for (const auto& [apply, says] : others) {
-        Material m = terrain();
+        Material m = exampleTerrain();
         apply(slotOf(m, 1, 1));
         const std::vector<std::string> warnings = notArrayed(planShader(m, {}));
         ASSERT_EQ(warnings.size(), 1u) << says;
@@ -138,7 +137,7 @@ TEST(LayerArrays, ARoleKeptApartByItsTexturesIsAWarningNamingTheLayersAndHowToGe
     EXPECT_TRUE(notArrayed(planShader(off, {})).empty());
     EXPECT_TRUE(notArrayed(planShader(sizes, general)).empty());
     EXPECT_TRUE(notArrayed(planShader(sizes, functions)).empty());
-    EXPECT_TRUE(notArrayed(planShader(terrain(), {})).empty());
+    EXPECT_TRUE(notArrayed(planShader(exampleTerrain(), {})).empty());
     EXPECT_TRUE(notArrayed(planShader(loadMaterial("tests/execution/layers/one.json"), {})).empty());
 }
 
@@ -204,7 +203,7 @@ TEST(LayerArrays, TheTextureLimitCountsAnArrayOnce) {
 }
 
 TEST(LayerArrays, TheShaderReadsEachLayerThroughTheArrayAtAConstantLayer) {
-    Material m = terrain();
+    Material m = exampleTerrain();
     m.templ = TemplateRef::builtin("lit");
     const CompileResult r = compile(m);
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
@@ -216,7 +215,7 @@ TEST(LayerArrays, TheShaderReadsEachLayerThroughTheArrayAtAConstantLayer) {
 }
 
 TEST(LayerArrays, TheManifestSaysWhichSlotsAreWhichArrayAndWhyNot) {
-    Material m = terrain();
+    Material m = exampleTerrain();
     slotOf(m, 1, 1).width = 64;  // the normal role falls back
     CompileOptions options;
     options.targets = {Target::Spirv, Target::Hlsl};

@@ -14,11 +14,10 @@
 #include "support.h"
 
 using namespace hexc;
+using hexc::test::exampleTerrain;
 using hexc::test::loadMaterial;
 
 namespace {
-
-Material terrain() { return loadMaterial("materials/terrain/terrain.json"); }
 
 CompileResult compiled(Material m, const std::string& templ = "lit") {
     m.templ = TemplateRef::builtin(templ);
@@ -34,7 +33,7 @@ nlohmann::json manifestOf(const CompileResult& r) {
 }
 
 TEST(Layers, EachLayersSlotIsASlotNamedAfterItsLayerAndRole) {
-    const Material m = terrain();
+    const Material m = exampleTerrain();
     ASSERT_TRUE(m.layers);
     ASSERT_EQ(m.layers->layers.size(), 4u);
     ASSERT_EQ(m.layers->roles.size(), 3u);
@@ -54,7 +53,7 @@ TEST(Layers, EachLayersSlotIsASlotNamedAfterItsLayerAndRole) {
 }
 
 TEST(Layers, TheTemplateReadsTheBlendPerRoleAndEachLayerIsBehindABranch) {
-    const CompileResult r = compiled(terrain());
+    const CompileResult r = compiled(exampleTerrain());
     EXPECT_NE(r.glsl.find("vec4 hexc_albedo(vec2 uv, out vec3 weights)"), std::string::npos);
     EXPECT_NE(r.glsl.find("vec2 hexc_normal(vec2 uv, out vec3 weights)"), std::string::npos);
     EXPECT_NE(r.glsl.find("#define HEXC_HAS_albedo 1"), std::string::npos);
@@ -66,7 +65,7 @@ TEST(Layers, TheTemplateReadsTheBlendPerRoleAndEachLayerIsBehindABranch) {
 }
 
 TEST(Layers, TheManifestCountsWorstAndExpectedFetchesPerPixel) {
-    const nlohmann::json layers = manifestOf(compiled(terrain()))["layers"];
+    const nlohmann::json layers = manifestOf(compiled(exampleTerrain()))["layers"];
     ASSERT_TRUE(layers.is_object());
     EXPECT_EQ(layers["mode"], "height");
     EXPECT_EQ(layers["roles"].size(), 2u);  // lit reads albedo and normal
@@ -82,7 +81,7 @@ TEST(Layers, TheManifestCountsWorstAndExpectedFetchesPerPixel) {
 // CompileOptions::skipLayers off (the bench's naive per-layer baseline): no layer's fetches sit behind its weight, and
 // the manifest's expected fetches are the worst case.
 TEST(Layers, WithoutSkippingEveryLayerIsFetchedEverywhere) {
-    Material m = terrain();
+    Material m = exampleTerrain();
     CompileOptions options;
     options.skipLayers = false;
     const CompileResult r = compile(m, options);
@@ -94,7 +93,7 @@ TEST(Layers, WithoutSkippingEveryLayerIsFetchedEverywhere) {
     EXPECT_NE(r.glsl.find("if (true) h[3]"), std::string::npos);
     const nlohmann::json fetches = manifestOf(r)["layers"]["fetches_per_pixel"];
     EXPECT_EQ(fetches["expected"], fetches["worst"]);
-    EXPECT_EQ(fetches["worst"], manifestOf(compiled(terrain()))["layers"]["fetches_per_pixel"]["worst"]);
+    EXPECT_EQ(fetches["worst"], manifestOf(compiled(exampleTerrain()))["layers"]["fetches_per_pixel"]["worst"]);
 }
 
 // The manifest's worst case counts what the code does. Each fetch of the optimised shader sits in straight code or in
@@ -163,7 +162,7 @@ TEST(Layers, EachDistinctLatticesTilesAreComputedOncePerPixel) {
     const std::regex computed(R"(hexcTilesStable_(\w+)\(st, dx, dy, cell\))");
     const char* const kept[] = {"w[0] > 0.0 || w[2] > 0.0", "w[1] > 0.0", "w[3] > 0.0"};
     for (const char* templ : {"lit", "value"}) {
-        const CompileResult r = compiled(terrain(), templ);
+        const CompileResult r = compiled(exampleTerrain(), templ);
         std::vector<std::string> lattices;
         for (auto it = std::sregex_iterator(r.glsl.begin(), r.glsl.end(), computed); it != std::sregex_iterator(); ++it)
             lattices.push_back((*it)[1].str());
@@ -184,7 +183,7 @@ TEST(Layers, EachDistinctLatticesTilesAreComputedOncePerPixel) {
 }
 
 TEST(Layers, TheValueTemplateShowsTheFirstRole) {
-    const CompileResult r = compiled(terrain(), "value");
+    const CompileResult r = compiled(exampleTerrain(), "value");
     EXPECT_NE(r.glsl.find("#define HEXC_FIRST_SLOT hexc_albedo"), std::string::npos);
     EXPECT_NE(r.glsl.find("#define HEXC_FIRST_KIND_color 1"), std::string::npos);
 }

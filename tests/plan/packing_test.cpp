@@ -15,13 +15,14 @@
 #include "support.h"
 
 using namespace hexc;
+using hexc::test::outputFile;
 
 namespace {
 
-const std::string kAlbedo = R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"})";
-const std::string kRoughness = R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"})";
+const std::string kAlbedoSlot = R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png"})";
+const std::string kRoughnessSlot = R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png"})";
 const std::string kHeight = R"({"name": "height", "kind": "scalar", "texture": "textures/rock_height.png"})";
-const std::string kNormal = R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png"})";
+const std::string kNormalSlot = R"({"name": "normal", "kind": "normal", "texture": "textures/rock_normal.png"})";
 
 // A packing material of the given slots under a template that reads them all (tests/templates/packed.glsl reads slots
 // named color and s0..s3; `lit` reads albedo, normal and roughness).
@@ -52,18 +53,12 @@ bool warnsNotPacked(const ShaderPlan& p, const std::string& slot) {
     });
 }
 
-const OutputFile& file(const CompileResult& r, const std::string& suffix) {
-    for (const OutputFile& f : r.files)
-        if (f.name.ends_with(suffix)) return f;
-    throw std::runtime_error("no output " + suffix);
-}
-
 int samples(const std::vector<uint32_t>& spirv) { return countOps(disassemble(spirv)).textureSamples; }
 
 }  // namespace
 
 TEST(Packing, AColourSlotTakesTheScalarInItsAlpha) {
-    const Material m = packed(kAlbedo + "," + kNormal + "," + kRoughness);
+    const Material m = packed(kAlbedoSlot + "," + kNormalSlot + "," + kRoughnessSlot);
     const ShaderPlan p = plan(m);
     EXPECT_EQ(packsOf(p), (std::vector<std::vector<std::string>>{{"albedo:rgb", "roughness:a"}}));
     ASSERT_EQ(p.packs.size(), 1u);
@@ -92,29 +87,29 @@ TEST(Packing, WhatDoesNotPack) {
     // Another lattice (tiling): not packed, no warning (the slots share nothing).
     const std::string ownTiling =
         R"({"name": "roughness", "kind": "scalar", "texture": "textures/rock_roughness.png", "hextiling": {"tiling": 2}})";
-    EXPECT_TRUE(plan(packed(kAlbedo + "," + ownTiling)).packs.empty());
+    EXPECT_TRUE(plan(packed(kAlbedoSlot + "," + ownTiling)).packs.empty());
     // Packing is opt-in.
-    Material off = packed(kAlbedo + "," + kRoughness);
+    Material off = packed(kAlbedoSlot + "," + kRoughnessSlot);
     off.pack = false;
     EXPECT_TRUE(plan(off).packs.empty());
     // Another texture size: warning HX124 with the sizes.
-    Material sizes = packed(kAlbedo + "," + kRoughness);
+    Material sizes = packed(kAlbedoSlot + "," + kRoughnessSlot);
     sizes.slots[1].width = 128;
     const ShaderPlan p = plan(sizes);
     EXPECT_TRUE(p.packs.empty());
     EXPECT_TRUE(warnsNotPacked(p, "roughness"));
     // An sRGB scalar would not be decoded in a packed texture: warning.
     const std::string srgb = R"({"name": "roughness", "kind": "scalar", "colorspace": "srgb", "texture": "textures/rock_roughness.png"})";
-    const Material srgbMaterial = packed(kAlbedo + "," + srgb);
+    const Material srgbMaterial = packed(kAlbedoSlot + "," + srgb);
     const ShaderPlan q = plan(srgbMaterial);
     EXPECT_TRUE(q.packs.empty());
     EXPECT_TRUE(warnsNotPacked(q, "roughness"));
     // One tap and the histogram blend fetch on their own paths; height blending reads the height map at every tap.
     for (const char* hex : {R"({"tiling": 4, "taps": 1})", R"({"tiling": 4, "blend": "histogram"})"})
-        EXPECT_TRUE(plan(packed(kAlbedo + "," + kRoughness, "lit", hex)).packs.empty()) << hex;
+        EXPECT_TRUE(plan(packed(kAlbedoSlot + "," + kRoughnessSlot, "lit", hex)).packs.empty()) << hex;
     const std::string heightBlended =
         R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "height_blend": {"slot": "roughness"}})";
-    EXPECT_TRUE(plan(packed(heightBlended + "," + kRoughness)).packs.empty());
+    EXPECT_TRUE(plan(packed(heightBlended + "," + kRoughnessSlot)).packs.empty());
     // A colour texture with alpha: the slot returns it, so alpha is not free (materials/textures has none with alpha: a
     // crop of rock's albedo with a translucent texel).
     Texture rock = loadTexture("materials/textures/rock_albedo.png", false);
@@ -124,7 +119,7 @@ TEST(Packing, WhatDoesNotPack) {
     const std::filesystem::path translucent = std::filesystem::temp_directory_path() / "hexc_packing_translucent.png";
     writeImage(withAlpha, translucent);
     const std::string alphaSlot = R"({"name": "albedo", "kind": "color", "texture": ")" + translucent.string() + R"("})";
-    EXPECT_TRUE(plan(packed(alphaSlot + "," + kRoughness)).packs.empty());
+    EXPECT_TRUE(plan(packed(alphaSlot + "," + kRoughnessSlot)).packs.empty());
 }
 
 TEST(Packing, ALinearColourSlotPacksIntoALinearTexture) {
@@ -162,12 +157,12 @@ TEST(Packing, TheHeaderDecidesWithoutDecodingAndTheCompileChecksTheTexels) {
 }
 
 TEST(Packing, ThePackedTextureHoldsTheSlotsTexelsAndIsDeterministic) {
-    const Material m = packed(kAlbedo + "," + kNormal + "," + kRoughness);
+    const Material m = packed(kAlbedoSlot + "," + kNormalSlot + "," + kRoughnessSlot);
     const CompileResult a = compile(m), b = compile(m);
     ASSERT_TRUE(a.ok()) << formatAll(a.diagnostics);
-    const OutputFile& png = file(a, ".packed.png");
+    const OutputFile& png = outputFile(a, ".packed.png");
     EXPECT_EQ(png.name, "p.albedo.packed.png");
-    EXPECT_EQ(png.contents, file(b, ".packed.png").contents);
+    EXPECT_EQ(png.contents, outputFile(b, ".packed.png").contents);
     const Texture t = decodeTexture(png.contents, true);
     const Texture albedo = loadTexture("materials/textures/rock_albedo.png", true);
     const Texture roughness = loadTexture("materials/textures/rock_roughness.png", false);
@@ -179,9 +174,9 @@ TEST(Packing, ThePackedTextureHoldsTheSlotsTexelsAndIsDeterministic) {
 }
 
 TEST(Packing, TheManifestListsThePackedTextureAndWhatEachSlotReads) {
-    const CompileResult r = compile(packed(kAlbedo + "," + kNormal + "," + kRoughness));
+    const CompileResult r = compile(packed(kAlbedoSlot + "," + kNormalSlot + "," + kRoughnessSlot));
     ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
-    const nlohmann::json m = nlohmann::json::parse(file(r, ".manifest.json").contents);
+    const nlohmann::json m = nlohmann::json::parse(outputFile(r, ".manifest.json").contents);
     ASSERT_EQ(m["packed_textures"].size(), 1u);
     const nlohmann::json& p = m["packed_textures"][0];
     EXPECT_EQ(p["name"], "albedo.packed");
@@ -207,7 +202,7 @@ TEST(Packing, TheManifestListsThePackedTextureAndWhatEachSlotReads) {
 // With lod "shared" too, whose level the slots compute from the same texture's size.
 TEST(Packing, ThePackedSlotsFetchOnce) {
     for (const char* hex : {R"({"tiling": 4})", R"({"tiling": 4, "lod": "shared"})"}) {
-        Material m = packed(kAlbedo + "," + kNormal + "," + kRoughness, "lit", hex);
+        Material m = packed(kAlbedoSlot + "," + kNormalSlot + "," + kRoughnessSlot, "lit", hex);
         CompileOptions spirv;
         spirv.targets = {Target::Spirv};
         const CompileResult on = compile(m, spirv);
@@ -222,7 +217,7 @@ TEST(Packing, ThePackedSlotsFetchOnce) {
 // An engine's template that samples its own combined samplers (texture, textureLod on a sampler2D) beside the packed
 // slots: those samples are left as they are, the packed slots' three taps are shared.
 TEST(Packing, AnEngineTemplatesOwnSamplesStayBesidePackedOnes) {
-    Material m = packed(kAlbedo + "," + kRoughness, "templates/engine.glsl");
+    Material m = packed(kAlbedoSlot + "," + kRoughnessSlot, "templates/engine.glsl");
     CompileOptions spirv;
     spirv.targets = {Target::Spirv};
     const CompileResult on = compile(m, spirv);
@@ -241,7 +236,7 @@ TEST(Packing, TheCommandLineWritesAndDeclaresThePackedTexture) {
     fs::remove_all(dir);
     fs::create_directories(dir / "textures");
     for (const char* t : {"rock_albedo.png", "rock_roughness.png"}) fs::copy_file(fs::path("materials/textures") / t, dir / "textures" / t);
-    std::ofstream(dir / "m.json") << R"({"name": "m", "pack": true, "slots": [)" << kAlbedo << "," << kRoughness << "]}";
+    std::ofstream(dir / "m.json") << R"({"name": "m", "pack": true, "slots": [)" << kAlbedoSlot << "," << kRoughnessSlot << "]}";
     const std::string args =
         (dir / "m.json").string() + " -o " + (dir / "out").string() + " --no-cache --depfile " + (dir / "m.d").string();
     ASSERT_EQ(hexc::test::runHexc(args), 0);

@@ -20,6 +20,7 @@
 #include "support.h"
 
 using namespace hexc;
+using hexc::test::outputFile;
 using hexc::test::runHexc;
 
 namespace {
@@ -66,14 +67,6 @@ std::vector<fs::path> entries(const fs::path& dir) {
     return out;
 }
 
-const std::string& file(const CompileResult& r, const std::string& suffix) {
-    for (const OutputFile& f : r.files)
-        if (f.name.ends_with(suffix)) return f.contents;
-    static const std::string none;
-    ADD_FAILURE() << "no " << suffix;
-    return none;
-}
-
 }  // namespace
 
 // Code is compiled with a stand-in entry point and named afterwards, so that materials share it: the result must be
@@ -104,10 +97,10 @@ TEST(ShaderCache, NamingTheEntryPointAfterwardsGivesWhatCompilingWithItGives) {
                                            plan.entryPoint, {}, c.debug ? plan.templateShown : "");
         SpirvResult direct = optimizeSpirv(front.words, false, false, !c.debug);
         EXPECT_EQ(direct.words, r.spirv);
-        EXPECT_EQ(spirvWords(file(r, ".frag.spv")), direct.words);
-        EXPECT_EQ(emitMsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.metal")));
-        EXPECT_EQ(emitHlsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.hlsl")));
-        EXPECT_EQ(emitGlsl(direct.words, plan, options).source, withoutBanner(file(r, ".frag.glsl")));
+        EXPECT_EQ(spirvWords(outputFile(r, ".frag.spv").contents), direct.words);
+        EXPECT_EQ(emitMsl(direct.words, plan, options).source, withoutBanner(outputFile(r, ".frag.metal").contents));
+        EXPECT_EQ(emitHlsl(direct.words, plan, options).source, withoutBanner(outputFile(r, ".frag.hlsl").contents));
+        EXPECT_EQ(emitGlsl(direct.words, plan, options).source, withoutBanner(outputFile(r, ".frag.glsl").contents));
     }
     EXPECT_EQ(mslEntryName("main"), "main0");
     EXPECT_EQ(mslEntryName("rock_frag"), "rock_frag");
@@ -125,7 +118,7 @@ TEST(ShaderCache, MaterialsWithTheSameCodeAreCompiledOnce) {
         EXPECT_EQ(cache.stats().misses, 1u);
         EXPECT_EQ(cache.stats().hits, 1u);
         expectSameFiles(hit, compileWith(stone, nullptr));
-        EXPECT_NE(file(hit, ".frag.metal").find("fragment stone_frag_out stone_frag("), std::string::npos);
+        EXPECT_NE(outputFile(hit, ".frag.metal").contents.find("fragment stone_frag_out stone_frag("), std::string::npos);
         // Other options are other code: a miss.
         options.hlslShaderModel = 60;
         compileWith(stone, &cache, options);
