@@ -7,6 +7,9 @@
 // Conventions (docs/engines.md#threejs): the mesh's uv as three.js has it, (0, 0) at the bottom-left of the image and
 // v up; hexc's textures are loaded here, as hexc samples them; the tangent frame is three.js's own (its getTangentFrame
 // or the geometry's tangents), its bitangent along +v; the values are linear and three.js encodes the canvas output.
+// Layers weighed by the vertex colour read the geometry's `color` attribute (linear, as three.js keeps vertex colours;
+// channel i weighs layer i; RGB alone: alpha 1): the material's vertexColors is turned on, and the colour weighs the
+// layers instead of tinting the albedo.
 import * as THREE from 'three';
 
 // The material's data, written by hexc: its slots, which three.js input each fills, and their GLSL ES 3.00 code.
@@ -97,6 +100,7 @@ export async function loadTextures(base = import.meta.url, loader = new THREE.Te
 // Gives `material` the hex-tiled slots: its shader chunks for each slot's role read hexc's functions instead.
 export function applyHexc(material, textures) {
   material.defines = { ...material.defines, USE_UV: '' };
+  if (hexc.vertex_color) material.vertexColors = true;  // vColor, a vec4 in r187's chunks
   const slots = slotsTaken(material);
   // three.js builds the tangent frame and the normal uniforms only for a material with a normal map: the hexc
   // texture stands in for it (its texels are never read through it).
@@ -107,9 +111,10 @@ export function applyHexc(material, textures) {
     previous.call(material, shader, renderer);
     for (const [uniform, texture] of Object.entries(textures)) shader.uniforms[uniform] = { value: texture };
     let fragment = replaced(shader.fragmentShader, 'void main() {', `${hexc.glsl}\nvoid main() {`);
+    if (hexc.vertex_color) fragment = replaced(fragment, '#include <color_fragment>', '');
     for (const slot of slots) {
       const [, chunk, code] = roles[slot.role];
-      fragment = replaced(fragment, `#include <${chunk}>`, code(slot.call.replace('UV', hexcUv())));
+      fragment = replaced(fragment, `#include <${chunk}>`, code(slot.call.replace('UV', hexcUv()).replace('COLOR', 'vColor')));
     }
     shader.fragmentShader = fragment;
   };

@@ -87,8 +87,9 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
                            {"textures", textures(in, diagnostics)}};
     if (c.sources.count(Target::Glsl)) data["glsl"] = withoutPrecision(c.banner + c.sources.at(Target::Glsl));  // WebGPU's has none
     if (c.sources.count(Target::Wgsl)) data["wgsl"] = c.banner + c.sources.at(Target::Wgsl);
-    // The slots the engine fills (name, role, the call of their function with UV for the uv, their texture's uniform),
-    // and those it has no input for.
+    // The slots the engine fills (name, role, the call of their function with UV for the uv and COLOR for the vertex
+    // colour, their texture's uniform), and those it has no input for; vertex_color: some call takes the colour.
+    data["vertex_color"] = takesVertexColor(in);
     data["slots"] = data["unmapped"] = nlohmann::json::array();
     for (const WiredFunction& w : wire(in.material, in.functions, in.engine, diagnostics)) {
         const SlotPlan& slot = *w.function.slot;
@@ -97,8 +98,10 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
             data["unmapped"].push_back(slot.name);
             continue;
         }
-        data["slots"].push_back(
-            {{"name", slot.name}, {"role", w.role}, {"call", w.function.name + "(UV)"}, {"uniform", uniformOf(slot, in)}});
+        data["slots"].push_back({{"name", slot.name},
+                                 {"role", w.role},
+                                 {"call", w.function.name + (w.function.vertexColor ? "(UV, COLOR)" : "(UV)")},
+                                 {"uniform", uniformOf(slot, in)}});
     }
     const auto& [templ, suffix] = in.engine.files.front();
     const std::string marker = "/* hexc:data */ null";
