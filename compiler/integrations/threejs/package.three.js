@@ -80,21 +80,11 @@ async function arrayTexture(files, base) {
   return texture;
 }
 
-// Loads the slots' textures, as hexc samples them: repeat, trilinear, sRGB decoded by the sampler where the slot is
-// sRGB, and the image's first row at t = 0 (flipY off, whatever the uv origin: hexc flips v itself for bottom-left).
-// A layered role that hexc reads as an array (an entry with `layers`) is one DataArrayTexture of its layers' files.
+/* hexc:textures */
+
+// The slots' textures, loaded as hexc samples them (loadSampled); a layered role's array is a DataArrayTexture.
 export async function loadTextures(base = import.meta.url, loader = new THREE.TextureLoader()) {
-  const textures = {};
-  await Promise.all(hexc.textures.map(async (t) => {
-    const texture = t.layers ? await arrayTexture(t.layers, base) : await loader.loadAsync(new URL(t.file, base).href);
-    texture.flipY = false;
-    texture.wrapS = texture.wrapT = THREE.RepeatWrapping;
-    texture.magFilter = THREE.LinearFilter;
-    texture.minFilter = THREE.LinearMipmapLinearFilter;
-    texture.colorSpace = t.colorspace === 'srgb' ? THREE.SRGBColorSpace : THREE.NoColorSpace;
-    textures[t.uniform] = texture;
-  }));
-  return textures;
+  return loadSampled(base, loader, arrayTexture);
 }
 
 // Gives `material` the hex-tiled slots: its shader chunks for each slot's role read hexc's functions instead.

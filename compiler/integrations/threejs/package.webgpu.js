@@ -49,21 +49,11 @@ function hexcUv() {
   return hexc.uv_origin === 'bottom-left' ? uv() : vec2(uv().x, uv().y.oneMinus());
 }
 
-// Loads the slots' textures, as hexc samples them: repeat, trilinear, sRGB decoded by the sampler where the slot is
-// sRGB (three.js's WebGPU backend gives those an -srgb format), and the image's first row at t = 0 (flipY off, whatever
-// the uv origin: hexc flips v itself for bottom-left).
+/* hexc:textures */
+
+// The slots' textures, loaded as hexc samples them (loadSampled): a texture per slot, no arrays.
 export async function loadTextures(base = import.meta.url, loader = new THREE.TextureLoader()) {
-  const textures = {};
-  await Promise.all(hexc.textures.map(async (t) => {
-    const loaded = await loader.loadAsync(new URL(t.file, base).href);
-    loaded.flipY = false;
-    loaded.wrapS = loaded.wrapT = THREE.RepeatWrapping;
-    loaded.magFilter = THREE.LinearFilter;
-    loaded.minFilter = THREE.LinearMipmapLinearFilter;
-    loaded.colorSpace = t.colorspace === 'srgb' ? THREE.SRGBColorSpace : THREE.NoColorSpace;
-    textures[t.uniform] = loaded;
-  }));
-  return textures;
+  return loadSampled(base, loader, null);
 }
 
 // Each slot's value as a node: a wgslFn that calls the slot's function (naga's functions take the uv, and the vertex

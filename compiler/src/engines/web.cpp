@@ -104,9 +104,12 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
                                  {"uniform", uniformOf(slot, in)}});
     }
     const auto& [templ, suffix] = in.engine.files.front();
-    const std::string marker = "/* hexc:data */ null";
+    const std::string marker = "/* hexc:data */ null", shared = "/* hexc:textures */";
     std::string module = *embeddedText(templ);
     module.replace(module.find(marker), marker.size(), data.dump(2));
+    // The three.js packages' one copy of their texture loading (threejs/textures.three.js).
+    if (const size_t at = module.find(shared); at != std::string::npos)
+        module.replace(at, shared.size(), *embeddedText("textures.three.js"));
     std::vector<OutputFile> files = {{in.material.name + suffix, std::move(module)}};
     for (const EngineTexture& t : in.textures)
         for (const SlotPlan* slot : loadedSlots(in.compiled.plan, t))  // the bytes the parser read
