@@ -186,13 +186,14 @@ def manifest(package_dir):
 LAYERS = ["clay", "moss", "slate"]
 
 
-def layered_material(folder, arrays=True):
+def layered_material(folder, arrays=True, vertex=False):
     """The engine tests' layered material, written into `folder`: three layers (albedo, sRGB, and a green-up normal map
     each, 64 x 64, hex-tiled twice across uv) blended linearly by a painted 32 x 32 splat map (RGB: one layer a
     channel, linear). The splat map is asymmetric both ways, so that a flipped u or v shows: clay (red) fills a block
     at the top-left with a hard border, the rest goes from moss (green) at the top to slate (blue) at the bottom
     through a soft border. Without `arrays`, the same as `layered_separate`, its roles a texture per slot
-    (`"arrays": "off"`): a package's fallback where it binds arrays."""
+    (`"arrays": "off"`): a package's fallback where it binds arrays. With `vertex`, `layered_vertex`: the same layers
+    weighed by the vertex colour instead (channel i weighs layer i; drawn with VERTEX_COLORS)."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     size = 64
@@ -225,16 +226,37 @@ def layered_material(folder, arrays=True):
         layers.append({"name": name, "slots": [
             {"name": "albedo", "kind": "color", "texture": f"{name}_albedo.png", "colorspace": "srgb"},
             {"name": "normal", "kind": "normal", "texture": f"{name}_normal.png"}]})
-    name = "layered" if arrays else "layered_separate"
+    name = "layered_vertex" if vertex else "layered" if arrays else "layered_separate"
+    weights = {"weights": "vertex"} if vertex else {"splat": ["splat.png"]}
     material = {"name": name, "hextiling": {"tiling": 2, "rotation": 1.0}, "layers": layers,
-                "layer_blend": {"splat": ["splat.png"], "mode": "linear", **({} if arrays else {"arrays": "off"})}}
+                "layer_blend": {**weights, "mode": "linear", **({} if arrays else {"arrays": "off"})}}
     (folder / f"{name}.json").write_text(json.dumps(material, indent=2))
     return folder / f"{name}.json"
 
 
+# The vertex colours of a quad that fills the view, at its top-left, top-right, bottom-left and bottom-right corners:
+# hexc's harness's colour (1 - x, x, y, 1 - y) at (x, y) across and down the view (docs/material-format.md#layers),
+# which the fp64 reference interpolates as the rasteriser does (each channel is affine in x and y, so a quad of two
+# triangles carries it exactly). VERTEX_COLORS_SWAPPED: red and green exchanged, clay's and moss's weights with them
+# (a negative control: the check must fail on it).
+VERTEX_COLORS = [(1, 0, 0, 1), (0, 1, 0, 1), (1, 0, 1, 0), (0, 1, 1, 0)]
+VERTEX_COLORS_SWAPPED = [(c[1], c[0], c[2], c[3]) for c in VERTEX_COLORS]
+# The error of an engine's interpolated vertex colour at a pixel centre: the corners are 0 or 1, held exactly (float
+# attributes, or 8-bit unorm), and the rasteriser evaluates the plane a + b x + c y in float32, a few ulp of 1 (2^-23
+# each) off; 2^-16 is above any such sum.
+VERTEX_COLOR_ERROR = 2 ** -16
+
+
+def vertex_color(x, y, size):
+    """VERTEX_COLORS interpolated at pixel (x, y) of a `size`-pixel view, at the pixel's centre."""
+    u, v = (x + 0.5) / size, (y + 0.5) / size
+    return (1 - u, u, v, 1 - v)
+
+
 def layered_errors(hexc, material, manifest, role, normal, size, rect, work):
     """Per pixel, the bound on the error of a layered role's value before the engine's output (linear; for a normal role
-    in n * 0.5 + 0.5), from the fp64 references of its layers' slots and of the splat map (`hexc render --reference`).
+    in n * 0.5 + 0.5), from the fp64 references of its layers' slots and of the splat map (`hexc render --reference`),
+    or of the vertex colour (VERTEX_COLORS, each weight off by VERTEX_COLOR_ERROR instead of e).
     As in tests/execution/layers_test.cpp, with the engines' filtering error e = FILTER_ERROR on every fetch:
       - each layer's value errs by its slot's error (as for a slot: amplification(slot) e; a normal's slope by
         4 e / n_z^2 times that, n_z the layer's own), and the blend, whose weights sum to 1, by the largest of them;
@@ -248,20 +270,22 @@ def layered_errors(hexc, material, manifest, role, normal, size, rect, work):
     slots = {s["name"]: s for s in manifest["slots"]}
     output = "derivative" if normal else "albedo"
     values = [reference(hexc, material, output, f"{l}_{role}", size, rect, work / f"{l}_{role}.ref.pfm")[2] for l in LAYERS]
-    splat = reference(hexc, material, "albedo", "splat0", size, rect, work / "splat0.ref.pfm")[2]
+    vertex = manifest["layers"]["weights"] == "vertex"
+    splat = None if vertex else reference(hexc, material, "albedo", "splat0", size, rect, work / "splat0.ref.pfm")[2]
     amplify = max(amplification(slots[f"{l}_{role}"]) for l in LAYERS)
     e, n = FILTER_ERROR, len(LAYERS)
+    ew = VERTEX_COLOR_ERROR if vertex else e  # a weight's error
     rows = []
     for y in range(size):
         row = []
         for x in range(size):
-            s = [splat[y][x][i] for i in range(n)]
+            s = [(vertex_color(x, y, size) if vertex else splat[y][x])[i] for i in range(n)]
             S = max(sum(v for v in s if v >= skip), 1e-3)
             layer = [values[i][y][x] for i in range(n)]
             channels = 2 if normal else 3
             spread = max(max(v[c] for v in layer) - min(v[c] for v in layer) for c in range(channels))
             own = amplify * (max(4 * e * (1 + v[0] ** 2 + v[1] ** 2) for v in layer) if normal else e)  # 1 / n_z^2 = 1 + |d|^2
-            weights = n * e * spread / S + sum((skip + e) / S * spread for v in s if abs(v - skip) <= e)
+            weights = n * ew * spread / S + sum((skip + ew) / S * spread for v in s if abs(v - skip) <= ew)
             row.append(0.5 * (own + weights) if normal else own + weights)
         rows.append(row)
     return rows

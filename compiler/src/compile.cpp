@@ -25,10 +25,11 @@ namespace {
 
 void append(Diagnostics& to, const Diagnostics& from) { to.insert(to.end(), from.begin(), from.end()); }
 
-// The engine functions as glslang names them: each takes the texture coordinate.
+// The engine functions as glslang names them: each takes the texture coordinate, and a layered role's the vertex colour
+// when it weighs the layers.
 std::vector<std::string> engineSignatures(const ShaderPlan& plan) {
     std::vector<std::string> names;
-    for (const EngineFunction& f : engineFunctions(plan)) names.push_back(f.name + "(vf2;");
+    for (const EngineFunction& f : engineFunctions(plan)) names.push_back(f.name + (f.vertexColor ? "(vf2;vf4;" : "(vf2;"));
     return names;
 }
 

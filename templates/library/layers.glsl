@@ -6,6 +6,9 @@
 // mode, where the height blend drops its shares below ${skip} instead; ${splats}, ${keep}, ${heights}, ${layers}: the
 // per-splat and per-layer lines below; ${index}, ${splat}, ${channel}, ${slot}, ${tiling}; ${role}, ${type}, ${uv};
 // ${location}: the vertex colour input's; ${fetched}: when layer ${index}'s slot is fetched (layer.kept, or layer.every when CompileOptions::skipLayers is off).
+// The vertex colour (weights "vertex" or "both"): ${color}, what the weights read (the stage input hexcVertexColor in a
+// shader, the parameter `color` in the functions output, whose functions take it after uv: ${color_param} declares it
+// and ${color_arg} passes it on; both empty otherwise).
 // Weights are arrays of 8, hexc's most layers; those past the material's stay 0.
 // What the roles share is read once per pixel: the first role read at a coordinate fills the weights (the splat maps,
 // and in height mode each kept layer's height) into private variables, and every later role read at that coordinate
@@ -53,7 +56,7 @@ void hexcLayerHeights(inout float w[8], float h[8], float width, float skip) {
 //@ weights
 // The layers' weights at st (hexc's uv), with its gradients dx, dy: layer i's splat channel, vertex colour channel or
 // their product, kept and renormalised.
-void hexcLayerFill(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
+void hexcLayerFill(vec2 st, vec2 dx, vec2 dy${color_param}, out float w[8]) {
     vec3 t;
     for (int i = 0; i < 8; ++i) w[i] = 0.0;
 ${splats}
@@ -80,8 +83,8 @@ void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
 //@ shared.functions
 // The functions output has no main of its own, and a global's initialiser is a store in main (glslang), so shared
 // state would start undefined in an engine's shader: each role fills its own weights there.
-void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy, out float w[8]) {
-    hexcLayerFill(st, dx, dy, w);
+void hexcLayerWeights(vec2 st, vec2 dx, vec2 dy${color_param}, out float w[8]) {
+    hexcLayerFill(st, dx, dy${color_arg}, w);
 }
 
 //@ lattice
@@ -111,11 +114,15 @@ hexcLayerTiles${index}(st, dx, dy, cell)
     w[${index}] = splat${splat}[${channel}];
 
 //@ weights.layer.vertex
-    w[${index}] = clamp(hexcVertexColor[${index}], 0.0, 1.0);
+    w[${index}] = clamp(${color}[${index}], 0.0, 1.0);
 
 //@ weights.layer.both
-    w[${index}] = splat${splat}[${channel}] * clamp(hexcVertexColor[${index}], 0.0, 1.0);
+    w[${index}] = splat${splat}[${channel}] * clamp(${color}[${index}], 0.0, 1.0);
 
+//@ color.parameter
+, vec4 color
+//@ color.argument
+, color
 //@ vertex.input
 // The vertex colour, interpolated: channel i weighs layer i (`weights` "vertex" or "both"); clamped to [0, 1].
 layout(location = ${location}) in vec4 hexcVertexColor;
@@ -132,18 +139,18 @@ ${layers}
 
 //@ role
 // The layers' `${role}` slots blended by the layers' weights; a layer of weight 0 is not fetched.
-${type} hexc_${role}(vec2 uv, out vec3 weights) {
+${type} hexc_${role}(vec2 uv${color_param}, out vec3 weights) {
     vec2 st = ${uv};
     vec2 dx = dFdx(st), dy = dFdy(st);
     float w[8];
-    hexcLayerWeights(st, dx, dy, w);
+    hexcLayerWeights(st, dx, dy${color_arg}, w);
     ${type} value = ${type}(0.0);
     vec3 t;
     weights = vec3(0.0);
 ${layers}
     return value;
 }
-${type} hexc_${role}(vec2 uv) { vec3 weights; return hexc_${role}(uv, weights); }
+${type} hexc_${role}(vec2 uv${color_param}) { vec3 weights; return hexc_${role}(uv${color_arg}, weights); }
 #define HEXC_HAS_${role} 1
 
 //@ role.layer

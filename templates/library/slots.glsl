@@ -12,7 +12,7 @@
 // texture variable of the slot holding its heights (its own when it blends by none); ${channel}: a scalar slot's channel
 // (0 = r ... 3 = a); ${flipy}, ${explicit}, ${srgb} (MaterialX mode's shader decodes sRGB): literal switches; ${type}: the slot's result type; ${kind},
 // ${projection}; ${tex}: the slot's texture variable (hexcTex_<slot>, or a layered role's
-// array hexcArr_<role>, which the slot's library functions read at its layer); ${uv}: the uv in hexc's convention (origin top-left, v down), from the engine's (CompileOptions::uvOrigin); ${calls}: the `engine.call.*` lines; ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
+// array hexcArr_<role>, which the slot's library functions read at its layer); ${uv}: the uv in hexc's convention (origin top-left, v down), from the engine's (CompileOptions::uvOrigin); ${calls}: the `engine.call.*` lines (after `engine.color` when the functions take the vertex colour, which ${color_param} declares and ${color_arg} passes: templates/library/layers.glsl); ${texture}: a packed slot's texture; ${members}; ${struct}, ${field}, ${value}; ${id}, ${idy}, ${x}, ${y}.
 // Each slot gets `hexc_${name}(...)` and an overload with `out vec3 weights` (the weights output).
 
 //@ params
@@ -219,8 +219,8 @@ vec2(uv.x, 1.0 - uv.y)
 //@ engine.normal
 // A normal slot's tangent-space normal, as a green-up (OpenGL convention) normal map texel holds it: x along +u, y up
 // the image, z out of the surface; what an engine's normal input takes.
-vec3 hexc_${name}_normal(vec2 uv) {
-    return hexcDerivToNormal(hexc_${name}(uv));
+vec3 hexc_${name}_normal(vec2 uv${color_param}) {
+    return hexcDerivToNormal(hexc_${name}(uv${color_arg}));
 }
 
 //@ engine.calls
@@ -232,12 +232,15 @@ ${calls}
     return sum;
 }
 
+//@ engine.color
+    vec4 color = vec4(uv, uv);  // the vertex colour the calls pass, when they take one: any value, as main is cut
+
 //@ engine.call.color
-    sum += hexc_${name}(uv);
+    sum += hexc_${name}(uv${color_arg});
 
 //@ engine.call.scalar
-    sum.x += hexc_${name}(uv);
+    sum.x += hexc_${name}(uv${color_arg});
 
 //@ engine.call.normal
-    sum.xy += hexc_${name}(uv);
-    sum.xyz += hexc_${name}_normal(uv);
+    sum.xy += hexc_${name}(uv${color_arg});
+    sum.xyz += hexc_${name}_normal(uv${color_arg});

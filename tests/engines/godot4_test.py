@@ -7,7 +7,7 @@ No Godot 4 runs here (Debian has Godot 3 only), so its shader is checked mechani
 array) with only Godot 4's hints
 (source_color, filter_linear_mipmap, repeat_enable; source_color exactly on the sRGB textures the manifest names),
 hexc's functions and one `void fragment()`. Then the functions and the fragment body, wrapped as a GLSL 4.50 fragment
-shader (each uniform as a plain `uniform sampler2D`, Godot's built-ins UV, ALBEDO, NORMAL_MAP, ... as variables), must
+shader (each uniform as a plain `uniform sampler2D`, Godot's built-ins UV, COLOR, ALBEDO, NORMAL_MAP, ... as variables), must
 compile with glslang: Godot 4's shading language is GLSL-like, and what it shares with GLSL is checked, and so is
 one rule of its own that GLSL lacks: a global is a constant with its value (`const uint x = uint(0);`), never a bare
 `uint x;` ("Expected initialization of constant", as Godot 3 says). Its other rules beyond GLSL (and rendering) are not
@@ -32,9 +32,10 @@ from hlsl_test import report  # noqa: E402
 HINTS = {"source_color", "filter_linear_mipmap", "repeat_enable"}
 # Godot 4's spatial fragment built-ins the package reads or writes, as GLSL variables.
 BUILTINS = """in vec2 UV_IN;
+in vec4 COLOR_IN;
 layout(location = 0) out vec4 hexcCheck;
 """
-LOCALS = ("    vec2 UV = UV_IN;\n    vec3 ALBEDO = vec3(0.0), NORMAL_MAP = vec3(0.5, 0.5, 1.0), EMISSION = vec3(0.0);\n"
+LOCALS = ("    vec2 UV = UV_IN;\n    vec4 COLOR = COLOR_IN;\n    vec3 ALBEDO = vec3(0.0), NORMAL_MAP = vec3(0.5, 0.5, 1.0), EMISSION = vec3(0.0);\n"
           "    float ROUGHNESS = 1.0, METALLIC = 0.0, AO = 1.0;\n")
 USE = "    hexcCheck = vec4(ALBEDO + NORMAL_MAP + EMISSION, ROUGHNESS + METALLIC + AO);\n"
 

@@ -47,18 +47,20 @@ def header_lines(text):
 
 
 def unity_consumer(hlsl_name, hlsl_text):
-    """A fragment shader calling every Custom Function entry point as Shader Graph's generated code does."""
-    node = re.compile(r"^(\w+): UV \(Vector 2\)((?:, \w+ \(Texture 2D(?: Array)?\))*) -> Out \(Vector (\d)\)$")
+    """A fragment shader calling every Custom Function entry point as Shader Graph's generated code does (a Color port
+    given the vertex colour, as a Vertex Color node gives it)."""
+    node = re.compile(r"^(\w+): UV \(Vector 2\)(, Color \(Vector 4\))?((?:, \w+ \(Texture 2D(?: Array)?\))*) -> Out \(Vector (\d)\)$")
     textures, arrays, calls = [], set(), []
     for line in header_lines(hlsl_text):
         m = node.match(line)
         assert m, f"unexpected node line: {line}"
-        ports = re.findall(r", (\w+) \(Texture 2D( Array)?\)", m.group(2))
+        ports = re.findall(r", (\w+) \(Texture 2D( Array)?\)", m.group(3))
         textures += [t for t, _ in ports if t not in textures]
         arrays |= {t for t, array in ports if array}
         args = "".join(f", UnityBuildTexture2DArrayStruct({t})" if array else f", UnityBuildTexture2DStructNoScale({t})"
                        for t, array in ports)
-        calls.append(f"    {{ {TYPES[m.group(3)]} Out; {m.group(1)}_float(uv{args}, Out); sum{SWIZZLE[m.group(3)]} += Out; }}")
+        color = ", color" if m.group(2) else ""
+        calls.append(f"    {{ {TYPES[m.group(4)]} Out; {m.group(1)}_float(uv{color}{args}, Out); sum{SWIZZLE[m.group(4)]} += Out; }}")
     assert calls, "no Custom Function node listed"
     return "\n".join([
         '#include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Core.hlsl"',
@@ -66,7 +68,7 @@ def unity_consumer(hlsl_name, hlsl_text):
         f'#include "{hlsl_name}"',
         *[f"TEXTURE2D_ARRAY({t});\nSAMPLER(sampler{t});" if t in arrays else
           f"TEXTURE2D({t});\nSAMPLER(sampler{t});\nfloat4 {t}_TexelSize;" for t in textures],
-        "float4 main(float2 uv : TEXCOORD0) : SV_Target",
+        "float4 main(float2 uv : TEXCOORD0, float4 color : COLOR) : SV_Target",
         "{",
         "    float4 sum = 0.0;",
         *calls,
@@ -75,20 +77,21 @@ def unity_consumer(hlsl_name, hlsl_text):
 
 
 def unreal_consumer(ush_name, ush_text):
-    """A fragment shader calling every Custom node of the header as the function Unreal generates for it."""
-    node = re.compile(r"^(.+) <- CMOT Float (\d) \(UV((?:, \w+(?: \(Texture2DArray\))?)*)\): (.*)$")
+    """A fragment shader calling every Custom node of the header as the function Unreal generates for it (a Color
+    input given the vertex colour, as a VertexColor node gives it)."""
+    node = re.compile(r"^(.+) <- CMOT Float (\d) \(UV(, Color)?((?:, \w+(?: \(Texture2DArray\))?)*)\): (.*)$")
     textures, types, functions, calls = [], {}, [], []
     for i, line in enumerate(header_lines(ush_text)):
         m = node.match(line)
         assert m, f"unexpected node line: {line}"
-        found = re.findall(r", (\w+)( \(Texture2DArray\))?", m.group(3))  # a Texture Object input of a texture array
+        found = re.findall(r", (\w+)( \(Texture2DArray\))?", m.group(4))  # a Texture Object input of a texture array
         inputs = [t for t, _ in found]
         types |= {t: "Texture2DArray" if array else "Texture2D" for t, array in found}
         textures += [t for t in inputs if t not in textures]
-        params = "".join(f", {types[t]} {t}, SamplerState {t}Sampler" for t in inputs)
+        params = (", MaterialFloat4 Color" if m.group(3) else "") + "".join(f", {types[t]} {t}, SamplerState {t}Sampler" for t in inputs)
         functions.append(f"MaterialFloat{'' if m.group(2) == '1' else m.group(2)} CustomExpression{i}(FMaterialPixelParameters Parameters, MaterialFloat2 UV{params})\n"
-                         f"{{\n    {m.group(4)}\n}}\n")
-        args = "".join(f", {t}, {t}Sampler" for t in inputs)
+                         f"{{\n    {m.group(5)}\n}}\n")
+        args = (", Parameters.VertexColor" if m.group(3) else "") + "".join(f", {t}, {t}Sampler" for t in inputs)
         calls.append(f"    sum{SWIZZLE[m.group(2)]} += CustomExpression{i}(Parameters, Parameters.TexCoords[0]{args});")
     assert calls, "no Custom node listed"
     return "\n".join([

@@ -3,9 +3,10 @@ probe (engine_check.py) drawn upright and lit from the light's side as the canva
 marker at the screen's top-left, and each wrong variant a user can make failing that check; each slot's value through
 the engine's own material input matches hexc's fp64 reference, and a dome normal map under a known light is lit from
 the light's side, with the package written for either uv origin; a layered material's roles within engine_check.py's
-layered bound per pixel, lit by the engine, its layers or splat channels swapped failing; every example compiles in the
-engine; Babylon's
-package on its WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2.
+layered bound per pixel, lit by the engine, its layers or splat channels swapped failing, and weighed by the vertex
+colour (the engine's own, from the square's), its red and green channels swapped failing; every example compiles in the
+engine; Babylon's package on its WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2,
+and its vertex-weighed albedo within the same bound.
 
 Usage: web_test.py HEXC ENGINE [--screenshot PNG] [TEST ...]   (from the source root; ENGINE is threejs or babylon)
 """
@@ -50,6 +51,17 @@ def package(material, origin):
         origin_flag = ["--uv-bottom-left"] if origin == "bottom-left" else []
         subprocess.run([HEXC, material, "--engine", ENGINE, *origin_flag, "-o", folder, "-q"], check=True)
     return "/pkg/%s-%s/%s/%s.%s.js" % (name, origin, ENGINE, name, MODULE_SUFFIX[ENGINE])
+
+
+def wgsl_package(material):
+    """Babylon's top-left package of `material` with its WGSL form (`--targets wgsl`), for Babylon's WebGPU engine; its
+    module's URL."""
+    name = Path(material).stem
+    folder = os.path.join(PACKAGES, "%s-top-left-wgsl" % name)
+    if not os.path.isdir(folder):
+        env = {**os.environ, "HEXC_NODE_PATH": os.environ.get("HEXC_NODE_PATH") or os.path.abspath(NODE_MODULES)}
+        subprocess.run([HEXC, material, "--engine", ENGINE, "--targets", "wgsl", "-o", folder, "-q"], check=True, env=env)
+    return "/pkg/%s-top-left-wgsl/%s/%s.%s.js" % (name, ENGINE, name, MODULE_SUFFIX[ENGINE])
 
 
 def engine_uv(rect, origin):
@@ -244,18 +256,27 @@ def correlation(a, b):
 LAYERED_RECT = [0.0, 0.0, 0.7 * SIZE / 128, 0.7 * SIZE / 128]
 
 
-def layered_view(material, origin, function, control=None, files=None):
+def layered_view(material, origin, function, control=None, files=None, colors=None, webgpu_page=None):
     """engine_check's layered check (value_verdict: per pixel, within the bound layered_errors derives from the layers
-    and the splat map, a flip of u or of v caught, the marker at the top-left) of the engine's unlit value of a layered
-    package's role `function` (engine_check.py's manifest entry) as the canvas's PNG shows it. `files`: the package's
-    textures loaded from other files (a negative control, named `control`, which must fail). True if the verdict is a
-    failure of the test."""
-    tag = "%s_%s_%s" % (origin, function["name"], "".join(c for c in control or "" if c.isalnum())[:24])
-    png = os.path.join(PACKAGES, "layered_%s.png" % tag)
-    view = {"package": os.path.join(PACKAGES, "layered-" + origin, ENGINE), "origin": origin, "size": SIZE,
+    and the splat map or the vertex colour, a flip of u or of v caught, the marker at the top-left) of the engine's
+    unlit value of a layered package's role `function` (engine_check.py's manifest entry) as the canvas's PNG shows it.
+    `files`: the package's textures loaded from other files; `colors`: the square's vertex colours (a negative control,
+    named `control`, must fail). `webgpu_page`: drawn there by Babylon's WebGPU engine from the package's WGSL
+    (wgsl_package). True if the verdict is a failure of the test."""
+    name = Path(material).stem
+    tag = "%s_%s_%s%s" % (origin, function["name"], "".join(c for c in control or "" if c.isalnum())[:24], "_wgsl" if webgpu_page else "")
+    png = os.path.join(PACKAGES, "%s_%s.png" % (name, tag))
+    folder = "%s-%s%s" % (name, origin, "-wgsl" if webgpu_page else "")
+    view = {"package": os.path.join(PACKAGES, folder, ENGINE), "origin": origin, "size": SIZE,
             "rect": LAYERED_RECT, "relative": 0.0, "encode": ec.linear}  # the value written out linear to an 8-bit canvas
-    PAGE.screenshot(png, module=package(material, origin), width=SIZE, height=SIZE, uv=engine_uv(LAYERED_RECT, origin),
-                    input=function["role"], encoding="linear", marker=int(SIZE * ec.MARKER_FRACTION), files=files)
+    config = dict(module=wgsl_package(material) if webgpu_page else package(material, origin), width=SIZE, height=SIZE,
+                  uv=engine_uv(LAYERED_RECT, origin), input=function["role"], encoding="linear",
+                  marker=int(SIZE * ec.MARKER_FRACTION), files=files, colors=colors)
+    if webgpu_page:  # no 2D canvas to take a PNG of: the frame as the driver reads it back, top row first
+        rows = webgpu_page.render(**config, webgpu=True)
+        ec.write_png(png, SIZE, SIZE, lambda x, y: rows[y][x][:3])
+    else:
+        PAGE.screenshot(png, **config)
     return ec.value_verdict(HEXC, material, function, Path(png), view, control)
 
 
@@ -339,8 +360,10 @@ class Engine(unittest.TestCase):
         """A layered material (engine_check.layered_material: glyph-like asymmetric layers, a painted splat map) through
         the engine's inputs, at both uv origins: each role's value within engine_check's layered bound per pixel, the
         same images against the reference flipped in u and in v over it, and the material lit by the engine from +x and
-        -x: their ratio follows the reference's slope. Negative controls, which must fail the layered check: two layers'
-        normal maps exchanged in the engine, the splat map's red and green channels swapped."""
+        -x: their ratio follows the reference's slope; the same layers weighed by the vertex colour (layered_vertex) on a
+        square whose corners carry engine_check.VERTEX_COLORS, which the package reads from the engine's own vertex
+        colour. Negative controls, which must fail the layered check: two layers' normal maps exchanged in the engine,
+        the splat map's red and green channels swapped, the square's red and green vertex colour channels swapped."""
         material = str(ec.layered_material(os.path.join(PACKAGES, "layered")))
         failed = 0
         for origin in ORIGINS:
@@ -362,6 +385,12 @@ class Engine(unittest.TestCase):
                      {"layered.splat0.png": os.path.basename(swapped)}))
         for control, name, files in controls:
             failed += layered_view(material, "top-left", functions[name], control, files)
+        vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), vertex=True))
+        package(vertex, "top-left")  # the colour does not depend on the uv origin, which the splat map's views check
+        roles = [f for f in ec.manifest(os.path.join(PACKAGES, "layered_vertex-top-left", ENGINE))["functions"] if f["returns"] != "vec2"]
+        failed += sum(layered_view(vertex, "top-left", f, colors=ec.VERTEX_COLORS) for f in roles)
+        failed += layered_view(vertex, "top-left", next(f for f in roles if f["role"] == "albedo"),
+                               "the square's red and green vertex colour channels swapped", colors=ec.VERTEX_COLORS_SWAPPED)
         self.assertEqual(failed, 0)
 
     def test_package_files_and_a_slot_without_input(self):
@@ -391,7 +420,9 @@ class Engine(unittest.TestCase):
 
     def test_webgpu_matches_webgl2(self):
         """Babylon only: the package's WGSL form on Babylon's WebGPU engine draws what its GLSL form draws on WebGL 2, rock's
-        albedo under a dome normal map lit from +x and from -x; both renders show the albedo and the normal map."""
+        albedo under a dome normal map lit from +x and from -x; both renders show the albedo and the normal map. And
+        the layers weighed by the vertex colour (layered_vertex), its albedo within engine_check's layered bound as on
+        WebGL 2, and failing it with the square's red and green vertex colour channels swapped."""
         if ENGINE != "babylon":
             self.skipTest("the WGSL form is Babylon's")
         material = lit_material(os.path.join(PACKAGES, "lit"))
@@ -406,8 +437,16 @@ class Engine(unittest.TestCase):
         webgpu_page = Page(SERVER, ENGINE, WEBGPU_FLAGS)
         try:
             webgpu = [webgpu_page.render(**config, light=light, webgpu=True) for light in lights]
+            vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), vertex=True))
+            wgsl_package(vertex)
+            albedo = next(f for f in ec.manifest(os.path.join(PACKAGES, "layered_vertex-top-left-wgsl", ENGINE))["functions"]
+                          if f["role"] == "albedo")
+            failed = layered_view(vertex, "top-left", albedo, colors=ec.VERTEX_COLORS, webgpu_page=webgpu_page)
+            failed += layered_view(vertex, "top-left", albedo, "the square's red and green vertex colour channels swapped",
+                                   colors=ec.VERTEX_COLORS_SWAPPED, webgpu_page=webgpu_page)
         finally:
             webgpu_page.quit()
+        self.assertEqual(failed, 0)
         # Each render is out = albedo * I * (n . L) per channel (PBRMaterial's diffuse with specularIntensity 0, no ambient;
         # its energy-conservation factor is <= 1), I = 2.5 the driver's light, |L| = 1. Each engine's albedo and normal
         # are within test_values_match_the_reference's bounds of the exact ones (ea; en for the normal as a vector, before

@@ -6,12 +6,13 @@ Godot and Filament tests judge theirs:
 - value views: each function of the probe (plain-tiled: the F upright; and hex-tiled with a DirectX map), of rock and
   of the layered material (three layers under a splat map) shown unlit on a square with three.js's own uv ((0, 0) at the
   bottom-left), against `hexc render`'s fp64 reference within engine_check's bound (a layered role's: layered_errors,
-  which also holds the image against the reference flipped in u and in v: both must be over it);
+  which also holds the image against the reference flipped in u and in v: both must be over it), and of the same
+  layers weighed by the vertex colour on a square whose corners carry engine_check.VERTEX_COLORS;
 - lit: the probe's bumps under a three.js DirectionalLight from the right and from the top, 15 of 15 lit from the
   light's side, for a green-up and a DirectX map;
 - negative controls, which must fail: the textures uploaded with three.js's default flipY (v flipped), a mesh whose u
-  runs right to left (u mirrored), a mesh with glTF's uv (v down), a layer's texture swapped for another's, and the
-  bumps lit with the textures flipped.
+  runs right to left (u mirrored), a mesh with glTF's uv (v down), a layer's texture swapped for another's, the
+  vertex colours' red and green exchanged, and the bumps lit with the textures flipped.
 
 Usage: webgpu_test.py HEXC [--screenshot PNG]   (from the source root, after `npm ci --prefix tests/node`)
 """
@@ -100,6 +101,9 @@ def draw(run):
     for material in (probe_gl, probe_dx, ROOT / "materials" / "rock.json", ec.layered_material(run.work / "layered")):
         for f in shown_functions(run.package(material)):
             failed += value(run, material, f)
+    vertex = ec.layered_material(run.work / "layered", vertex=True)
+    for f in shown_functions(run.package(vertex)):
+        failed += value(run, vertex, f, colors=ec.VERTEX_COLORS)
     for convention in ("gl", "dx"):
         bumps = ec.probe_material(run.work / "probe", convention, albedo=False)
         for side, light in LIGHTS.items():
@@ -123,6 +127,10 @@ def controls(run):
     role = next(f for f in ec.manifest(pkg)["functions"] if f.get("role") == "albedo")
     failed += value(run, layered, role, "a layer swapped: moss's albedo bound in clay's place", "control_layer",
                     swap={"hexcTex_clay_albedo": "hexcTex_moss_albedo"})
+    vertex = run.work / "layered" / "layered_vertex.json"
+    failed += value(run, vertex, next(f for f in shown_functions(run.package(vertex)) if f["role"] == "albedo"),
+                    "a vertex colour channel swapped: the square's red and green exchanged", "control_vertex",
+                    colors=ec.VERTEX_COLORS_SWAPPED)
     bumps = run.work / "probe" / "probe_gl_bumps.json"
     out, _ = run.draw("control_bumps", run.package(bumps), uv=[0, 1, 1, 0], light=LIGHTS["top"], flipY=True)
     failed += ec.lit_verdict(out, "v flipped: the bumps uploaded with three.js's default flipY", "top", control=True)

@@ -224,14 +224,22 @@ TEST(Layers, TheVertexColourTakesALocationTheTemplateLeavesFree) {
     EXPECT_LT(layers["fetches_per_pixel"]["expected"].get<double>(), layers["fetches_per_pixel"]["worst"].get<double>());
 }
 
-// An engine's functions take uv alone: vertex weights are refused there, located at the key.
-TEST(Layers, TheFunctionsOutputRefusesVertexWeights) {
+// The functions output's role functions take the vertex colour after uv (no stage input), and the manifest says so: in
+// each function's parameters and as the layers' vertex_color, so that an engine layer passes its own.
+TEST(Layers, TheFunctionsOutputTakesTheVertexColourAsAParameter) {
     CompileOptions options;
     options.functions = true;
+    options.targets = {Target::Glsl, Target::Hlsl};
     const CompileResult r = compile(loadMaterial("tests/execution/layers/two_vertex.json"), options);
-    ASSERT_FALSE(r.ok());
-    EXPECT_NE(formatAll(r.diagnostics).find("error[HX300]: /layer_blend/weights: the functions output"), std::string::npos)
-        << formatAll(r.diagnostics);
+    ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+    EXPECT_EQ(r.glsl.find("hexcVertexColor"), std::string::npos);
+    std::map<std::string, std::string> files;
+    for (const OutputFile& f : r.files) files[f.name] = f.contents;
+    EXPECT_NE(files["layers_two_vertex.functions.glsl"].find("vec4 hexc_albedo(vec2 uv, vec4 color)"), std::string::npos);
+    EXPECT_NE(files["layers_two_vertex.functions.hlsl"].find("float4 hexc_albedo(float2 uv, float4 color)"), std::string::npos);
+    const nlohmann::json manifest = manifestOf(r);
+    EXPECT_EQ(manifest["functions"][0]["parameters"], "vec2 uv, vec4 color");
+    EXPECT_EQ(manifest["layers"]["vertex_color"], (nlohmann::json{{"parameter", "color"}, {"type", "vec4"}}));
 }
 
 }  // namespace

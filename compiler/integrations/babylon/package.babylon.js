@@ -11,6 +11,9 @@
 // v up; hexc's textures are loaded here, as hexc samples them (invertY off; sRGB ones with useSRGBBuffer, so that they
 // are filtered in linear as hexc filters them); the tangent frame is built from the screen-space derivatives of the
 // world position and uv (T along +u, B along +v); the values are linear, and Babylon's image processing encodes them.
+// Layers weighed by the vertex colour read the mesh's `color` vertex buffer (linear, as Babylon keeps vertex colours;
+// channel i weighs layer i) through a varying of the plugin's, and Babylon's own use of it (VERTEXCOLOR: tinting the
+// albedo) is turned off, so that the colour weighs the layers only.
 import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
 import { PBRMaterial } from '@babylonjs/core/Materials/PBR/pbrMaterial.js';
 import { ShaderLanguage } from '@babylonjs/core/Materials/shaderLanguage.js';
@@ -136,9 +139,14 @@ export class HexcPlugin extends MaterialPluginBase {
   // WGSL (Babylon's WebGPU engine) when hexc wrote it: `hexc --engine babylon --targets wgsl`.
   isCompatible(shaderLanguage) { return shaderLanguage === ShaderLanguage.GLSL || (shaderLanguage === ShaderLanguage.WGSL && !!hexc.wgsl); }
 
-  prepareDefines(defines) { defines.HEXC = true; }
+  prepareDefines(defines) {
+    defines.HEXC = true;
+    if (hexc.vertex_color) defines.VERTEXCOLOR = defines.VERTEXALPHA = false;  // after Babylon's own attribute defines
+  }
 
-  getAttributes(attributes) { if (!attributes.includes('uv')) attributes.push('uv'); }
+  getAttributes(attributes) {
+    for (const name of hexc.vertex_color ? ['uv', 'color'] : ['uv']) if (!attributes.includes(name)) attributes.push(name);
+  }
 
   getSamplers(samplers) { samplers.push(...Object.keys(this.textures)); }
 
@@ -152,28 +160,32 @@ export class HexcPlugin extends MaterialPluginBase {
 
   getCustomCode(shaderType, shaderLanguage) {
     if (shaderLanguage === ShaderLanguage.WGSL) return this.customCodeWgsl(shaderType);
+    const color = hexc.vertex_color ? 'varying vec4 vHexcColor;' : '';
     if (shaderType === 'vertex') {
-      return { CUSTOM_VERTEX_DEFINITIONS: '#ifndef UV1\nattribute vec2 uv;\n#endif\nvarying vec2 vHexcUv;', CUSTOM_VERTEX_MAIN_END: 'vHexcUv = uv;' };
+      return { CUSTOM_VERTEX_DEFINITIONS: `#ifndef UV1\nattribute vec2 uv;\n#endif\nvarying vec2 vHexcUv;\n${color && `attribute vec4 color;\n${color}`}`,
+        CUSTOM_VERTEX_MAIN_END: `vHexcUv = uv;${color && 'vHexcColor = color;'}` };
     }
-    const code = { CUSTOM_FRAGMENT_DEFINITIONS: `varying vec2 vHexcUv;\n${hexc.glsl}\n${kTangentFrame}` };
+    const code = { CUSTOM_FRAGMENT_DEFINITIONS: `varying vec2 vHexcUv;\n${color}\n${hexc.glsl}\n${kTangentFrame}` };
     for (const slot of hexc.slots) {
       const [point, replace] = roles[slot.role];
-      code[`!${point}`] = replace(slot.call.replace('UV', kUv));
+      code[`!${point}`] = replace(slot.call.replace('UV', kUv).replace('COLOR', 'vHexcColor'));
     }
     return code;
   }
 
-  // naga's functions take their uv by pointer: each call gets a function-scope copy.
+  // naga's functions take their uv (and vertex colour) by pointer: each call gets a function-scope copy.
   customCodeWgsl(shaderType) {
+    const color = hexc.vertex_color ? 'varying vHexcColor: vec4f;' : '';
     if (shaderType === 'vertex') {
-      return { CUSTOM_VERTEX_DEFINITIONS: '#ifndef UV1\nattribute uv: vec2f;\n#endif\nvarying vHexcUv: vec2f;',
-        CUSTOM_VERTEX_MAIN_END: 'vertexOutputs.vHexcUv = vertexInputs.uv;' };
+      return { CUSTOM_VERTEX_DEFINITIONS: `#ifndef UV1\nattribute uv: vec2f;\n#endif\nvarying vHexcUv: vec2f;\n${color && `attribute color: vec4f;\n${color}`}`,
+        CUSTOM_VERTEX_MAIN_END: `vertexOutputs.vHexcUv = vertexInputs.uv;${color && 'vertexOutputs.vHexcColor = vertexInputs.color;'}` };
     }
-    const code = { CUSTOM_FRAGMENT_DEFINITIONS: `varying vHexcUv: vec2f;\n${babylonWgsl(hexc.wgsl)}\n${kTangentFrameWgsl}` };
+    const code = { CUSTOM_FRAGMENT_DEFINITIONS: `varying vHexcUv: vec2f;\n${color}\n${babylonWgsl(hexc.wgsl)}\n${kTangentFrameWgsl}` };
     for (const slot of hexc.slots) {
       const [point, replace] = rolesWgsl[slot.role];
-      const uv = `hexcUv_${slot.name}`;
-      code[`!${point}`] = `var ${uv}: vec2f = ${kUvWgsl};` + replace(slot.call.replace('UV', `&${uv}`));
+      const uv = `hexcUv_${slot.name}`, weights = `hexcColor_${slot.name}`;
+      const colorCopy = color && `var ${weights}: vec4f = fragmentInputs.vHexcColor;`;
+      code[`!${point}`] = `var ${uv}: vec2f = ${kUvWgsl};${colorCopy}` + replace(slot.call.replace('UV', `&${uv}`).replace('COLOR', `&${weights}`));
     }
     return code;
   }

@@ -10,10 +10,13 @@ red marker Filament draws over the screen's top-left corner (marker.mat, a secon
   package built with --uv-bottom-left, and a mesh with uv (0, 0) at the top-left (glTF's) with the package built
   without it. Each function is shown unlit (a value view: the package's .mat with shadingModel unlit and baseColor
   the function's value, one matc run per package), within the bound derived in engine_check.py; the probe's bumps
-  lit by a Filament directional light from the right and from the top: 15 of 15 lit from the light's side;
+  lit by a Filament directional light from the right and from the top: 15 of 15 lit from the light's side; the
+  layered material weighed by the vertex colour (engine_check.layered_material(vertex=True)) on a mesh whose corners
+  carry engine_check.VERTEX_COLORS, which its functions read with getColor();
 - negative controls, which must fail: the package built for the other uv origin, a mesh mirrored in u, the normal
   map of the other green convention, the albedo decoded twice, a NaN value; the layered material with two layers'
-  textures exchanged and with a splat channel swapped.
+  textures exchanged and with a splat channel swapped; the vertex-weighed one with the mesh's red and green vertex
+  colour channels exchanged.
 
 Post-processing is off: Filament then writes the linear value straight into the 8-bit swap chain (with it on, its
 read-back under llvmpipe is not the frame). The frame is used as readPixels returns it (top row first, Renderer.h),
@@ -91,7 +94,8 @@ def value_material(pkg, functions):
     text = mat.read_text()
     shows = ""
     for i, f in enumerate(functions + functions[:1]):
-        value = {"vec4": "{}.rgb", "float": "vec3({})", "vec3": "{} * 0.5 + 0.5"}[f["returns"]].format(f"{f['name']}(uv)")
+        args = "uv, getColor()" if f["parameters"] == "vec2 uv, vec4 color" else "uv"  # as the package's material() passes it
+        value = {"vec4": "{}.rgb", "float": "vec3({})", "vec3": "{} * 0.5 + 0.5"}[f["returns"]].format(f"{f['name']}({args})")
         if i == len(functions):
             value = f"({value}) * intBitsToFloat(0x7fc00000)"  # a quiet NaN
         shows += f"        if (materialParams.hexcShow == {i}) material.baseColor = vec4({value}, 1.0);\n"
@@ -120,14 +124,16 @@ class Views:
             self.compiled[key] = (pkg, functions, filamat, ec.rect_for(ec.manifest(pkg), SIZE))
         return self.compiled[key]
 
-    def check(self, material, origin, mesh=None, control=None, function=0, swap=None, mirror=False):
-        """Renders function number `function` of the view of (material, origin) on a mesh of uv convention `mesh`."""
+    def check(self, material, origin, mesh=None, control=None, function=0, swap=None, mirror=False, colors=None):
+        """Renders function number `function` of the view of (material, origin) on a mesh of uv convention `mesh` (with
+        the vertex `colors`, engine_check.VERTEX_COLORS' order)."""
         pkg, functions, filamat, rect = self.get(material, origin)
         f = functions[function % len(functions)]  # number len(functions): the first, times NaN
         self.controls += bool(control)
         name = f"{Path(material).stem}_{origin}_{mesh or origin}_{function}" + (f"_control{self.controls}" if control else "")
+        colored = ["--colors", ",".join(str(c) for corner in colors for c in corner)] if colors else []
         out = render(self.renderer, filamat, self.work / f"{name}.png", texture_args(pkg, swap),
-                     mesh_uv(rect, mesh or origin, mirror), "--int", f"hexcShow={function}")
+                     mesh_uv(rect, mesh or origin, mirror), "--int", f"hexcShow={function}", *colored)
         view = {"package": pkg, "origin": origin if not mesh else f"{origin} package on a {mesh} mesh", "size": SIZE, "rect": rect,
                 "relative": 0.0, "encode": ec.linear}
         return ec.value_verdict(self.hexc, material, f, out, view, control)
@@ -192,6 +198,10 @@ def check(hexc, renderer, work):
     failed += views.check(probe, "bottom-left", control="a NaN value: the albedo function times NaN", function=2)
     for what, swap in ec.layered_controls(drawn[3].parent).items():  # the layered view's albedo role, function 0
         failed += views.check(drawn[3], "top-left", control=what, swap=swap)
+    vertex = ec.layered_material(drawn[3].parent, vertex=True)  # its roles on a mesh of VERTEX_COLORS (getColor())
+    failed += sum(views.check(vertex, "top-left", function=i, colors=ec.VERTEX_COLORS) for i in range(len(views.get(vertex, "top-left")[1])))
+    failed += views.check(vertex, "top-left", control="a vertex colour channel swapped: the mesh's red and green exchanged",
+                          colors=ec.VERTEX_COLORS_SWAPPED)
     flipped = lit(hexc, renderer, work, bumps, "top-left", mesh="bottom-left")["top"]
     failed += ec.lit_verdict(flipped, "v flipped: the bumps package built without --uv-bottom-left, on a GL mesh", "top", True)
     green = lit(hexc, renderer, work, bumps, "bottom-left", swap={"normal": work / "probe" / "probe_normal_dx.png"})["top"]

@@ -1,9 +1,10 @@
 // Renders a compiled hexc Filament package (.filamat) on a quad filling a W x H headless swap chain with Filament's
 // OpenGL backend, and writes the frame as PNG (compiler/integrations/filament/check.py runs it under Xvfb):
-//   hexc-filament-render MATERIAL.filamat OUT.png SIZE [--uv U0,V0,U1,V1] [--marker MARKER.filamat] [--light X,Y,Z]
-//                        [--no-post] [--int NAME=VALUE] [UNIFORM=FILE[:srgb] ...]
+//   hexc-filament-render MATERIAL.filamat OUT.png SIZE [--uv U0,V0,U1,V1] [--colors R,G,B,A,...] [--marker MARKER.filamat]
+//                        [--light X,Y,Z] [--no-post] [--int NAME=VALUE] [UNIFORM=FILE[:srgb] ...]
 // The quad's uv is (U0, V0) at its top-left corner and (U1, V1) at its bottom-right (default 0,0,1,1: uv (0, 0) at the
-// top-left, v down; 0,1,1,0 is a GL-convention mesh, (0, 0) at the bottom-left, v up); its tangent frame is the
+// top-left, v down; 0,1,1,0 is a GL-convention mesh, (0, 0) at the bottom-left, v up); --colors gives its vertex
+// colours (COLOR: 16 numbers, RGBA at the top-left, top-right, bottom-left and bottom-right; default white); its tangent frame is the
 // identity: tangent +x (+u), bitangent +y (up the screen), normal +z towards the camera. --marker draws a second
 // renderable with that material over the screen's top-left corner (a sixteenth of the side), so that the image's
 // orientation can be checked. The frame is written as Filament's readPixels returns it: top row first (Renderer.h).
@@ -46,19 +47,21 @@ struct Vertex {
     float position[3];
     float uv[2];
     int16_t tangents[4];  // the tangent frame as a quaternion, snorm16: identity
+    float color[4];
 };
 
 const uint16_t kIndices[6] = {0, 2, 1, 1, 2, 3};
 
 // A quad from (x0, y0) at its top-left to (x1, y1) at its bottom-right in clip space, at depth z, with uv (u0, v0) at
-// the top-left and (u1, v1) at the bottom-right.
+// the top-left and (u1, v1) at the bottom-right, and the colours `c` at its corners (RGBA: top-left, top-right,
+// bottom-left, bottom-right).
 struct Quad {
     Vertex vertices[4];
-    Quad(float x0, float y0, float x1, float y1, float z, const float uv[4])
-        : vertices{{{x0, y0, z}, {uv[0], uv[1]}, {0, 0, 0, 32767}},
-                   {{x1, y0, z}, {uv[2], uv[1]}, {0, 0, 0, 32767}},
-                   {{x0, y1, z}, {uv[0], uv[3]}, {0, 0, 0, 32767}},
-                   {{x1, y1, z}, {uv[2], uv[3]}, {0, 0, 0, 32767}}} {}
+    Quad(float x0, float y0, float x1, float y1, float z, const float uv[4], const float c[16])
+        : vertices{{{x0, y0, z}, {uv[0], uv[1]}, {0, 0, 0, 32767}, {c[0], c[1], c[2], c[3]}},
+                   {{x1, y0, z}, {uv[2], uv[1]}, {0, 0, 0, 32767}, {c[4], c[5], c[6], c[7]}},
+                   {{x0, y1, z}, {uv[0], uv[3]}, {0, 0, 0, 32767}, {c[8], c[9], c[10], c[11]}},
+                   {{x1, y1, z}, {uv[2], uv[3]}, {0, 0, 0, 32767}, {c[12], c[13], c[14], c[15]}}} {}
 };
 
 // Adds `quad` to `scene` with `instance`; the quad must outlive the engine's use of it (the upload does not copy).
@@ -70,6 +73,7 @@ Entity addQuad(Engine& engine, Scene& scene, const Quad& quad, MaterialInstance*
                                  .attribute(VertexAttribute::UV0, 0, VertexBuffer::AttributeType::FLOAT2, 12, sizeof(Vertex))
                                  .attribute(VertexAttribute::TANGENTS, 0, VertexBuffer::AttributeType::SHORT4, 20, sizeof(Vertex))
                                  .normalized(VertexAttribute::TANGENTS)
+                                 .attribute(VertexAttribute::COLOR, 0, VertexBuffer::AttributeType::FLOAT4, 28, sizeof(Vertex))
                                  .build(engine);
     vertices->setBufferAt(engine, 0, VertexBuffer::BufferDescriptor(quad.vertices, sizeof(quad.vertices), nullptr));
     IndexBuffer* indices = IndexBuffer::Builder().indexCount(6).bufferType(IndexBuffer::IndexType::USHORT).build(engine);
@@ -132,6 +136,7 @@ bool renderAndRead(Engine& engine, Renderer& renderer, SwapChain& swapChain, Vie
 // The options after SIZE: the mesh's uv, the marker, the light, post-processing, int parameters and textures.
 struct Options {
     float uv[4] = {0, 0, 1, 1};
+    std::vector<float> colors = std::vector<float>(16, 1.0f);  // white
     std::vector<char> marker;
 };
 
@@ -147,6 +152,13 @@ Options applyOptions(int argc, char** argv, Engine& engine, Scene& scene, View& 
             instance.setParameter(v.substr(0, v.find('=')).c_str(), std::stoi(v.substr(v.find('=') + 1)));
         } else if (arg == "--uv" && i + 1 < argc) {
             std::sscanf(argv[++i], "%f,%f,%f,%f", &o.uv[0], &o.uv[1], &o.uv[2], &o.uv[3]);
+        } else if (arg == "--colors" && i + 1 < argc) {
+            const std::string v = argv[++i];
+            size_t at = 0;
+            for (float& c : o.colors) {
+                c = std::stof(v.substr(at));
+                at = v.find(',', at) + 1;
+            }
         } else if (arg == "--marker" && i + 1 < argc) {
             o.marker = readFile(argv[++i]);
         } else if (arg == "--no-post") {
@@ -174,8 +186,8 @@ Options applyOptions(int argc, char** argv, Engine& engine, Scene& scene, View& 
 int main(int argc, char** argv) {
     if (argc < 4) {
         std::fprintf(stderr,
-                     "usage: %s MATERIAL.filamat OUT.png SIZE [--uv U0,V0,U1,V1] [--marker MARKER.filamat] [--light X,Y,Z] "
-                     "[--no-post] [--int NAME=VALUE] [UNIFORM=FILE[:srgb] ...]\n",
+                     "usage: %s MATERIAL.filamat OUT.png SIZE [--uv U0,V0,U1,V1] [--colors R,G,B,A,...] [--marker MARKER.filamat] "
+                     "[--light X,Y,Z] [--no-post] [--int NAME=VALUE] [UNIFORM=FILE[:srgb] ...]\n",
                      argv[0]);
         return 2;
     }
@@ -199,9 +211,9 @@ int main(int argc, char** argv) {
     MaterialInstance* instance = material->createInstance();
     std::vector<Texture*> textures;
     const Options o = applyOptions(argc, argv, *engine, *scene, *view, *instance, textures);
-    const Quad quad(-1, 1, 1, -1, 0, o.uv);
+    const Quad quad(-1, 1, 1, -1, 0, o.uv, o.colors.data());
     addQuad(*engine, *scene, quad, instance);
-    const Quad marker(-1, 1, -1 + 2.0f / 16, 1 - 2.0f / 16, 0.5f, o.uv);  // nearer the camera than the quad
+    const Quad marker(-1, 1, -1 + 2.0f / 16, 1 - 2.0f / 16, 0.5f, o.uv, Options().colors.data());  // nearer the camera than the quad
     if (!o.marker.empty()) {
         Material* m = Material::Builder().package(o.marker.data(), o.marker.size()).build(*engine);
         addQuad(*engine, *scene, marker, m->createInstance());

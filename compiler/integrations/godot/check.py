@@ -7,11 +7,13 @@ xvfb-run) of the project in project/, every frame with a red marker Godot draws 
 - drawn against hexc's fp64 reference (engine_check.drawn_materials: rock, tiles, the mixed, layered and probe
   materials), each function of the package shown unshaded on a mesh with Godot's uv convention ((0, 0) at the
   top-left, the package built without --uv-bottom-left, as docs/conventions.md says), within the bound derived in
-  engine_check.py; the probe's bumps lit by a Godot light on Godot's own QuadMesh, from the right and from the top:
+  engine_check.py; the layered material weighed by the vertex colour (engine_check.layered_material(vertex=True)) on a
+  mesh whose corners carry engine_check.VERTEX_COLORS, which its functions read from Godot's COLOR; the probe's bumps lit by a Godot light on Godot's own QuadMesh, from the right and from the top:
   15 of 15 lit from the light's side, for a green-up and a DirectX map;
 - negative controls, which must fail: the package built for the other uv origin, a mesh mirrored in u, the normal
   map of the other green convention, the albedo decoded twice, a NaN value; the layered material with two layers'
-  textures exchanged and with a splat channel swapped.
+  textures exchanged and with a splat channel swapped; the vertex-weighed one with the mesh's red and green vertex
+  colour channels exchanged.
 
 The frame is read back as Godot's docs say (get_data() then flip_y), and every image must show the marker at its
 top-left.
@@ -57,10 +59,12 @@ def textures(pkg, swap=None):
 
 
 def value_shader(pkg, function, nan=False):
-    """The package's shader, unshaded, showing `function`'s value at the mesh's uv (times NaN if `nan`)."""
+    """The package's shader, unshaded, showing `function`'s value at the mesh's uv and vertex colour, where it takes
+    one (the manifest's parameters, as the package's fragment passes COLOR) (times NaN if `nan`)."""
     shader = next(pkg.glob("*.shader")).read_text()
     head = shader[:shader.index("void fragment()")].replace("shader_type spatial;", "shader_type spatial;\nrender_mode unshaded;", 1)
-    show = {"vec4": "{}.rgb", "float": "vec3({})", "vec3": "{} * 0.5 + 0.5"}[function["returns"]].format(f"{function['name']}(UV)")
+    args = "UV, COLOR" if function["parameters"] == "vec2 uv, vec4 color" else "UV"
+    show = {"vec4": "{}.rgb", "float": "vec3({})", "vec3": "{} * 0.5 + 0.5"}[function["returns"]].format(f"{function['name']}({args})")
     if nan:
         show = f"({show}) * intBitsToFloat(2143289344)"  # 0x7fc00000, a quiet NaN
     path = pkg.parent / "views" / (function["name"] + ("_nan" if nan else "") + ".shader")  # beside the package, not in it
@@ -97,6 +101,22 @@ class Jobs:
             job["out"] = str(self.work / f"{name}.png")
         self.jobs.append(job)
         self.checks.append(check)
+
+
+def vertex_weighed(hexc, jobs, work):
+    """The layered material weighed by the vertex colour: each role on a mesh with engine_check.VERTEX_COLORS; and the
+    albedo with the colours' red and green exchanged, which must fail."""
+    material = ec.layered_material(work / "layered", vertex=True)
+    pkg = package(hexc, material, work)
+    rect = ec.rect_for(ec.manifest(pkg), SIZE)
+    functions = [f for f in ec.manifest(pkg)["functions"] if f["returns"] != "vec2"]
+    for f in functions:
+        jobs.add(value_shader(pkg, f), textures(pkg), value_check(hexc, material, pkg, f, rect), f"{material.stem}_{f['name']}", uv=rect,
+                 colors=ec.VERTEX_COLORS)
+    albedo = next(f for f in functions if f["role"] == "albedo")
+    jobs.add(value_shader(pkg, albedo), textures(pkg),
+             value_check(hexc, material, pkg, albedo, rect, "a vertex colour channel swapped: the mesh's red and green exchanged"),
+             f"control_{len(jobs.jobs)}", uv=rect, colors=ec.VERTEX_COLORS_SWAPPED)
 
 
 def value_check(hexc, material, pkg, f, rect, control=None):
@@ -188,6 +208,7 @@ def main(argv):
     print("| check | figure | result |\n|---|---|---|")
     failed = matrix(hexc, jobs, work)
     draw(hexc, jobs, work)
+    vertex_weighed(hexc, jobs, work)
     controls(hexc, jobs, work)
     errors = render(project, jobs.jobs)
     for job, check, job_errors in zip(jobs.jobs, jobs.checks, errors):

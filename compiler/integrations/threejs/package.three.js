@@ -7,6 +7,9 @@
 // Conventions (docs/engines.md#threejs): the mesh's uv as three.js has it, (0, 0) at the bottom-left of the image and
 // v up; hexc's textures are loaded here, as hexc samples them; the tangent frame is three.js's own (its getTangentFrame
 // or the geometry's tangents), its bitangent along +v; the values are linear and three.js encodes the canvas output.
+// Layers weighed by the vertex colour read the geometry's `color` attribute (linear, as three.js keeps vertex colours;
+// channel i weighs layer i; RGB alone: alpha 1): the material's vertexColors is turned on, and the colour weighs the
+// layers instead of tinting the albedo.
 import * as THREE from 'three';
 
 // The material's data, written by hexc: its slots, which three.js input each fills, and their GLSL ES 3.00 code.
@@ -77,26 +80,17 @@ async function arrayTexture(files, base) {
   return texture;
 }
 
-// Loads the slots' textures, as hexc samples them: repeat, trilinear, sRGB decoded by the sampler where the slot is
-// sRGB, and the image's first row at t = 0 (flipY off, whatever the uv origin: hexc flips v itself for bottom-left).
-// A layered role that hexc reads as an array (an entry with `layers`) is one DataArrayTexture of its layers' files.
+/* hexc:textures */
+
+// The slots' textures, loaded as hexc samples them (loadSampled); a layered role's array is a DataArrayTexture.
 export async function loadTextures(base = import.meta.url, loader = new THREE.TextureLoader()) {
-  const textures = {};
-  await Promise.all(hexc.textures.map(async (t) => {
-    const texture = t.layers ? await arrayTexture(t.layers, base) : await loader.loadAsync(new URL(t.file, base).href);
-    texture.flipY = false;
-    texture.wrapS = texture.wrapT = THREE.RepeatWrapping;
-    texture.magFilter = THREE.LinearFilter;
-    texture.minFilter = THREE.LinearMipmapLinearFilter;
-    texture.colorSpace = t.colorspace === 'srgb' ? THREE.SRGBColorSpace : THREE.NoColorSpace;
-    textures[t.uniform] = texture;
-  }));
-  return textures;
+  return loadSampled(base, loader, arrayTexture);
 }
 
 // Gives `material` the hex-tiled slots: its shader chunks for each slot's role read hexc's functions instead.
 export function applyHexc(material, textures) {
   material.defines = { ...material.defines, USE_UV: '' };
+  if (hexc.vertex_color) material.vertexColors = true;  // vColor, a vec4 in r187's chunks
   const slots = slotsTaken(material);
   // three.js builds the tangent frame and the normal uniforms only for a material with a normal map: the hexc
   // texture stands in for it (its texels are never read through it).
@@ -107,9 +101,10 @@ export function applyHexc(material, textures) {
     previous.call(material, shader, renderer);
     for (const [uniform, texture] of Object.entries(textures)) shader.uniforms[uniform] = { value: texture };
     let fragment = replaced(shader.fragmentShader, 'void main() {', `${hexc.glsl}\nvoid main() {`);
+    if (hexc.vertex_color) fragment = replaced(fragment, '#include <color_fragment>', '');
     for (const slot of slots) {
       const [, chunk, code] = roles[slot.role];
-      fragment = replaced(fragment, `#include <${chunk}>`, code(slot.call.replace('UV', hexcUv())));
+      fragment = replaced(fragment, `#include <${chunk}>`, code(slot.call.replace('UV', hexcUv()).replace('COLOR', 'vColor')));
     }
     shader.fragmentShader = fragment;
   };

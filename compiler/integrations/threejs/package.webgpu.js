@@ -7,10 +7,12 @@
 // Conventions (docs/engines.md#threejs-webgpu), those of the WebGL 2 package: the mesh's uv as three.js has it, (0, 0)
 // at the bottom-left of the image and v up; hexc's textures are loaded here, as hexc samples them (the image's first row
 // at t = 0, sRGB decoded by the sampler); the tangent frame is three.js's own (the geometry's tangents, or its frame from
-// the uv's derivatives), its bitangent along +v; the values are linear and three.js encodes the canvas output.
+// the uv's derivatives), its bitangent along +v; the values are linear and three.js encodes the canvas output. Layers
+// weighed by the vertex colour read the geometry's `color` attribute (vertexColor(): linear, channel i weighs layer i;
+// RGB alone: alpha 1; none: white), which does not tint the albedo.
 import * as THREE from 'three/webgpu';
 import { code, materialColor, materialEmissive, materialMetalness, materialReference, materialRoughness, normalMap, texture, uv, vec2, vec4,
-  wgslFn } from 'three/tsl';
+  vertexColor, wgslFn } from 'three/tsl';
 
 // The material's data, written by hexc: its slots, which input each fills, and their WGSL code.
 const hexc = /* hexc:data */ null;
@@ -47,39 +49,30 @@ function hexcUv() {
   return hexc.uv_origin === 'bottom-left' ? uv() : vec2(uv().x, uv().y.oneMinus());
 }
 
-// Loads the slots' textures, as hexc samples them: repeat, trilinear, sRGB decoded by the sampler where the slot is
-// sRGB (three.js's WebGPU backend gives those an -srgb format), and the image's first row at t = 0 (flipY off, whatever
-// the uv origin: hexc flips v itself for bottom-left).
+/* hexc:textures */
+
+// The slots' textures, loaded as hexc samples them (loadSampled): a texture per slot, no arrays.
 export async function loadTextures(base = import.meta.url, loader = new THREE.TextureLoader()) {
-  const textures = {};
-  await Promise.all(hexc.textures.map(async (t) => {
-    const loaded = await loader.loadAsync(new URL(t.file, base).href);
-    loaded.flipY = false;
-    loaded.wrapS = loaded.wrapT = THREE.RepeatWrapping;
-    loaded.magFilter = THREE.LinearFilter;
-    loaded.minFilter = THREE.LinearMipmapLinearFilter;
-    loaded.colorSpace = t.colorspace === 'srgb' ? THREE.SRGBColorSpace : THREE.NoColorSpace;
-    textures[t.uniform] = loaded;
-  }));
-  return textures;
+  return loadSampled(base, loader, null);
 }
 
-// Each slot's value as a node: a wgslFn that calls the slot's function (naga's functions take the uv by pointer) and
-// takes every texture hexc's functions read as a parameter, so that three.js binds them, under hexc's names, for the
-// whole module (the include); the parameters themselves are not read.
+// Each slot's value as a node: a wgslFn that calls the slot's function (naga's functions take the uv, and the vertex
+// colour, by pointer) and takes every texture hexc's functions read as a parameter, so that three.js binds them, under
+// hexc's names, for the whole module (the include); the parameters themselves are not read.
 export function slotNodes(textures) {
   const module = code(threeWgsl(hexc.wgsl));
   const nodes = Object.fromEntries(hexc.textures.map((t) => [t.uniform, texture(textures[t.uniform]).setName(wgslName(t.uniform))]));
-  const parameters = hexc.textures.map((t) => `, bound_${t.uniform}: texture_2d<f32>`).join('');
+  const parameters = (hexc.vertex_color ? ', color: vec4<f32>' : '') + hexc.textures.map((t) => `, bound_${t.uniform}: texture_2d<f32>`).join('');
+  const color = hexc.vertex_color ? { color: vertexColor() } : {};
   const values = {};
   for (const slot of hexc.slots) {
     const name = slot.call.slice(0, slot.call.indexOf('('));
     const returns = new RegExp(`fn ${name}\\([^)]*\\) -> ([\\w<>]+)`).exec(hexc.wgsl)[1];
     const call = wgslFn(`fn ${name}_node(uv: vec2<f32>${parameters}) -> ${returns} {
-  var at = uv;
-  return ${slot.call.replace('UV', '&at')};
+  var at = uv;${hexc.vertex_color ? '\n  var weights = color;' : ''}
+  return ${slot.call.replace('UV', '&at').replace('COLOR', '&weights')};
 }`, [module]);
-    values[slot.name] = call({ uv: hexcUv(), ...Object.fromEntries(hexc.textures.map((t) => [`bound_${t.uniform}`, nodes[t.uniform]])) });
+    values[slot.name] = call({ uv: hexcUv(), ...color, ...Object.fromEntries(hexc.textures.map((t) => [`bound_${t.uniform}`, nodes[t.uniform]])) });
   }
   return values;
 }

@@ -3,7 +3,8 @@
 // below samples at (s, -t) (exact with repeat wrapping). Textures: import each as a Default texture with mipmaps,
 // repeat and trilinear filtering, sRGB on for an sRGB slot only (a normal map too as Default, sRGB off: hexc decodes it).
 //
-// Custom Function node (Type File, Source this file, Precision Single): Name, then the ports in order.
+// Custom Function node (Type File, Source this file, Precision Single): Name, then the ports in order (Color: a Vertex
+// Color node, the layers' weights, linear).
 ${nodes}
 #ifndef HEXC_${guard}_INCLUDED
 #define HEXC_${guard}_INCLUDED

@@ -29,6 +29,7 @@ ${textures}
                 float3 normalOS : NORMAL;
                 float4 tangentOS : TANGENT;
                 float2 uv : TEXCOORD0;
+                float4 color : COLOR;  // the mesh's vertex colour, linear: what layers weighed by it read
             };
 
             struct Varyings
@@ -38,6 +39,7 @@ ${textures}
                 float3 normalWS : TEXCOORD1;
                 float4 tangentWS : TEXCOORD2;  // w: the bitangent's sign
                 float2 uv : TEXCOORD3;
+                float4 color : COLOR;
             };
 
             Varyings vert(Attributes input)
@@ -50,6 +52,7 @@ ${textures}
                 output.normalWS = normal.normalWS;
                 output.tangentWS = float4(normal.tangentWS, input.tangentOS.w * GetOddNegativeScale());
                 output.uv = input.uv;
+                output.color = input.color;
                 return output;
             }
 

@@ -163,10 +163,13 @@ nlohmann::json arraysEntry(const ShaderPlan& plan) {
 // Where the weights come from; the vertex colour's input. The plan cannot know the mesh: with vertex weights alone the
 // expected fetches are unknown (null); with both, they are counted over the splat maps (an upper bound: the vertex
 // colour is clamped to [0, 1], so a product at least skip_below needs a splat weight at least skip_below).
+// In a shader the colour is a stage input; the functions output's functions take it as their parameter `color`.
 void addVertexWeights(const LayersPlan& lp, nlohmann::json& entry) {
     entry["weights"] = toString(lp.weights);
-    if (lp.vertexColorLocation < 0) return;
-    entry["vertex_color"] = {{"input", "hexcVertexColor"}, {"location", lp.vertexColorLocation}, {"type", "vec4"}};
+    if (lp.weights == LayerWeights::Splat) return;
+    entry["vertex_color"] = lp.vertexColorLocation < 0
+                                ? nlohmann::json{{"parameter", "color"}, {"type", "vec4"}}
+                                : nlohmann::json{{"input", "hexcVertexColor"}, {"location", lp.vertexColorLocation}, {"type", "vec4"}};
     if (lp.weights == LayerWeights::Vertex) entry["fetches_per_pixel"]["expected"] = nullptr;
 }
 
@@ -259,7 +262,7 @@ nlohmann::json functionsEntry(const ShaderPlan& plan) {
                                               : "RGBA, linear";
         functions.push_back({{"name", f.name},
                              {f.role.empty() ? "slot" : "role", f.role.empty() ? f.slot->name : f.role},
-                             {"parameters", "vec2 uv"},
+                             {"parameters", f.vertexColor ? "vec2 uv, vec4 color" : "vec2 uv"},
                              {"returns", f.tangentNormal ? "vec3" : f.slot->type},
                              {"value", value}});
     }

@@ -127,7 +127,9 @@ public:
         std::string normals, calls;
         for (const EngineFunction& f : hexc::engineFunctions(plan_)) {
             if (f.tangentNormal) continue;  // engine.normal, after its derivative's
-            const Tokens name = {{"name", f.name.substr(std::string_view("hexc_").size())}};
+            Tokens name = vertexColorTokens(plan_);
+            name["name"] = f.name.substr(std::string_view("hexc_").size());
+            if (calls.empty() && f.vertexColor) calls = expand("engine.color", {}) + "\n";
             if (kindRow(f.slot->kind).derivative) normals += expand("engine.normal", name) + "\n\n";
             calls += expand("engine.call." + std::string(toString(kindRow(f.slot->kind).like)), name) + "\n";
         }

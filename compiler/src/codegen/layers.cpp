@@ -22,9 +22,14 @@ std::string withoutEmptyLines(std::string text) {
 
 class LayerEmitter {
 public:
-    LayerEmitter(const ShaderPlan& plan, const std::function<std::string(size_t)>& read) : plan_(plan), read_(read) {}
+    LayerEmitter(const ShaderPlan& plan, const std::function<std::string(size_t)>& read)
+        : plan_(plan), read_(read), color_(vertexColorTokens(plan)) {}
 
-    std::string expand(const std::string& section, const Tokens& values) const { return expandLayers(section, values); }
+    // Every section with the vertex colour's tokens.
+    std::string expand(const std::string& section, Tokens values) const {
+        values.insert(color_.begin(), color_.end());
+        return expandLayers(section, values);
+    }
 
     // The slot's tiling as the code reads it (the parameter its own coordinates function reads).
     std::string tiling(size_t slot) const {
@@ -104,9 +109,16 @@ public:
 private:
     const ShaderPlan& plan_;
     const std::function<std::string(size_t)>& read_;
+    const Tokens color_;
 };
 
 }  // namespace
+
+Tokens vertexColorTokens(const ShaderPlan& plan) {
+    const bool parameter = plan.functions && plan.layers && plan.layers->weights != LayerWeights::Splat;
+    if (!parameter) return {{"color", "hexcVertexColor"}, {"color_param", ""}, {"color_arg", ""}};
+    return {{"color", "color"}, {"color_param", expandLayers("color.parameter", {})}, {"color_arg", expandLayers("color.argument", {})}};
+}
 
 std::string layerLattice(const ShaderPlan& plan, size_t index, const std::string& tiles, const std::string& settings) {
     const std::string i = std::to_string(index);

@@ -3,6 +3,7 @@
 #include <functional>
 #include <string>
 
+#include "codegen/codegen.h"
 #include "plan/plan.h"
 
 namespace hexc {
@@ -15,6 +16,10 @@ std::string layerFunctions(const ShaderPlan& plan, const std::function<std::stri
 // section of slots.glsl) after `settings` (its HexcLattice in general code, else empty), and the tiles the fill of the
 // weights keeps for its slots (not in the functions output).
 std::string layerLattice(const ShaderPlan& plan, size_t index, const std::string& tiles, const std::string& settings);
+
+// The vertex colour's tokens (templates/library/layers.glsl): ${color}, what the weights read, and ${color_param} and
+// ${color_arg}, the parameter the functions output's functions take it by and its argument (else empty).
+Tokens vertexColorTokens(const ShaderPlan& plan);
 
 // A layered slot's tiles (its ${tiles}): those the fill kept, or in the functions output its own.
 std::string layerLatticeCall(const ShaderPlan& plan, size_t index);

@@ -196,6 +196,10 @@ std::vector<const SlotPlan*> loadedSlots(const ShaderPlan& plan, const EngineTex
     return out;
 }
 
+bool takesVertexColor(const PackageInput& input) {
+    return std::any_of(input.functions.begin(), input.functions.end(), [](const EngineFunction& f) { return f.vertexColor; });
+}
+
 std::string textureCopyName(const Material& material, const Slot& slot) {
     return material.name + "." + slot.name + slot.texturePath.extension().string();
 }

@@ -145,13 +145,16 @@ struct Inputs {
     std::string inputs, normal;
 };
 
+// A layered role's function weighed by the vertex colour takes the engine's own after uv: Godot's COLOR, Filament's
+// getColor() (its material requires the attribute: vertexColorRequired).
 Inputs inputs(const PackageInput& in, Diagnostics& diagnostics) {
     const bool filament = in.engine.engine == Engine::Filament;
-    const std::string indent = filament ? "        " : "    ", uv = filament ? "uv" : "UV";
+    const std::string indent = filament ? "        " : "    ", uv = filament ? "uv" : "UV", color = filament ? "getColor()" : "COLOR";
     Inputs out;
     for (const WiredFunction& w : wire(in.material, in.functions, in.engine, diagnostics)) {
         if (!w.input) continue;
-        const std::string statement = indent + filled(w.input, w.function.name + "(" + uv + ")");
+        const std::string args = uv + (w.function.vertexColor ? ", " + color : "");
+        const std::string statement = indent + filled(w.input, w.function.name + "(" + args + ")");
         if (filament && w.role == "normal")
             out.normal = statement;
         else
@@ -176,6 +179,7 @@ std::vector<OutputFile> glslPackage(const PackageInput& in, Diagnostics& diagnos
         {"functions", dialect(functionsBody(in.compiled.sources.at(Target::Glsl)), engine)},
         {"inputs", wired.inputs},
         {"normal", wired.normal},
+        {"requires", takesVertexColor(in) ? "uv0, color" : "uv0"},
     };
     const auto& [templ, suffix] = in.engine.files.front();
     return {{in.material.name + suffix, expandTokens(*embeddedText(templ), tokens, templ)}};

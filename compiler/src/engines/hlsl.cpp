@@ -205,11 +205,15 @@ constexpr std::array<Kind, 2> kKinds = {{
 }};
 
 // One function's lines: its Custom node (Unity: the ports; Unreal: the pin, output type, inputs and code), Unity's
-// node entry point, and the URP statement of the input its role fills ("" when it fills none).
+// node entry point, and the URP statement of the input its role fills ("" when it fills none). A function that takes the
+// vertex colour has a Color input after UV (a Vertex Color node in Shader Graph, a VertexColor node in Unreal; the URP
+// shader's own: input.color).
 void addFunction(Lines& l, const Style& s, const Functions& f, const Function& fn, const std::string& returns, const WiredFunction& w,
                  const std::string& uv) {
     const std::string type = hlslType(returns), width = returns == "float" ? "1" : returns.substr(3);
+    const bool color = w.function.vertexColor;
     std::string ports = "UV (Vector 2)", params = "float2 UV", args = uv, inputs = "UV";
+    if (color) ports += ", Color (Vector 4)", params += ", float4 Color", args += ", Color", inputs += ", Color";
     for (const std::string& t : fn.textures) {
         const Kind& k = kKinds[f.arrays.count(t)];
         ports += ", " + t + " (" + k.port + ")";
@@ -221,10 +225,13 @@ void addFunction(Lines& l, const Style& s, const Functions& f, const Function& f
         l.nodes += "//   " + fn.name + ": " + ports + " -> Out (Vector " + (width == "1" ? "1" : width) + ")\n";
         l.wrappers +=
             "void " + fn.name + "_float(" + params + ", out " + type + " Out)\n{\n    Out = " + fn.name + "(" + args + ");\n}\n\n";
-        if (w.input) l.surface += "                " + filled(w.input, fn.name + "(uv, " + joined(fn.textures, s.args, f) + ")") + "\n";
+        if (w.input)
+            l.surface += "                " +
+                         filled(w.input, fn.name + "(uv, " + (color ? "input.color, " : "") + joined(fn.textures, s.args, f) + ")") + "\n";
         return;
     }
-    std::string code = "return " + fn.name + "(" + uv + (fn.textures.empty() ? "" : ", " + joined(fn.textures, s.args, f)) + ")";
+    std::string code = "return " + fn.name + "(" + uv + (color ? ", Color" : "") +
+                       (fn.textures.empty() ? "" : ", " + joined(fn.textures, s.args, f)) + ")";
     if (w.input && w.role == "normal") code += " * float3(1.0, -1.0, 1.0)";  // Unreal's tangent-space y runs down the image
     l.nodes += "//   " + std::string(w.input ? w.input : "(no pin)") + " <- CMOT Float " + width + " (" + inputs + "): " + code + ";\n";
 }

@@ -75,6 +75,9 @@ std::vector<OutputFile> hlslPackage(const PackageInput& input, Diagnostics& diag
 // A slot's texture as a web package holds it: <material>.<slot>.<the file's extension>, beside the module.
 std::string textureCopyName(const Material& material, const Slot& slot);
 
+// Whether the package's functions take the vertex colour (a layered material's roles weighed by it).
+bool takesVertexColor(const PackageInput& input);
+
 // The slots whose files a texture is loaded from: its slot's, or a layered role's array's layers' in layer order.
 std::vector<const SlotPlan*> loadedSlots(const ShaderPlan& plan, const EngineTexture& t);
 

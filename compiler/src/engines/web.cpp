@@ -87,8 +87,9 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
                            {"textures", textures(in, diagnostics)}};
     if (c.sources.count(Target::Glsl)) data["glsl"] = withoutPrecision(c.banner + c.sources.at(Target::Glsl));  // WebGPU's has none
     if (c.sources.count(Target::Wgsl)) data["wgsl"] = c.banner + c.sources.at(Target::Wgsl);
-    // The slots the engine fills (name, role, the call of their function with UV for the uv, their texture's uniform),
-    // and those it has no input for.
+    // The slots the engine fills (name, role, the call of their function with UV for the uv and COLOR for the vertex
+    // colour, their texture's uniform), and those it has no input for; vertex_color: some call takes the colour.
+    data["vertex_color"] = takesVertexColor(in);
     data["slots"] = data["unmapped"] = nlohmann::json::array();
     for (const WiredFunction& w : wire(in.material, in.functions, in.engine, diagnostics)) {
         const SlotPlan& slot = *w.function.slot;
@@ -97,13 +98,18 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
             data["unmapped"].push_back(slot.name);
             continue;
         }
-        data["slots"].push_back(
-            {{"name", slot.name}, {"role", w.role}, {"call", w.function.name + "(UV)"}, {"uniform", uniformOf(slot, in)}});
+        data["slots"].push_back({{"name", slot.name},
+                                 {"role", w.role},
+                                 {"call", w.function.name + (w.function.vertexColor ? "(UV, COLOR)" : "(UV)")},
+                                 {"uniform", uniformOf(slot, in)}});
     }
     const auto& [templ, suffix] = in.engine.files.front();
-    const std::string marker = "/* hexc:data */ null";
+    const std::string marker = "/* hexc:data */ null", shared = "/* hexc:textures */";
     std::string module = *embeddedText(templ);
     module.replace(module.find(marker), marker.size(), data.dump(2));
+    // The three.js packages' one copy of their texture loading (threejs/textures.three.js).
+    if (const size_t at = module.find(shared); at != std::string::npos)
+        module.replace(at, shared.size(), *embeddedText("textures.three.js"));
     std::vector<OutputFile> files = {{in.material.name + suffix, std::move(module)}};
     for (const EngineTexture& t : in.textures)
         for (const SlotPlan* slot : loadedSlots(in.compiled.plan, t))  // the bytes the parser read

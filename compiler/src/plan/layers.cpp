@@ -119,16 +119,11 @@ int vertexColorLocation(const std::string& templateSource) {
     return location;
 }
 
-// Where the weights come from (without splat maps every layer covers everything: coverage() gives 1); the functions output takes uv alone, so it refuses vertex weights.
+// Where the weights come from (without splat maps every layer covers everything: coverage() gives 1). A shader reads the
+// vertex colour as a stage input; the functions output's functions take it as a parameter (codegen/layers.cpp).
 void planWeights(const Material& material, LayersPlan& lp, ShaderPlan& plan) {
     lp.weights = material.layers->weights;
-    if (lp.weights == LayerWeights::Splat) return;
-    lp.vertexColorLocation = vertexColorLocation(plan.templateSource);
-    if (plan.functions)
-        plan.diagnostics.push_back(Diagnostic::make(Code::TargetUnsupported, {material.sourceFile.string()}, "/layer_blend/weights",
-                                                    "the functions output (--functions, --engine) takes texture coordinates alone; "
-                                                    "this material's layers are weighed by the vertex colour",
-                                                    "compile it as a shader, or weigh the layers by splat maps (`weights` \"splat\")"));
+    if (lp.weights != LayerWeights::Splat && !plan.functions) lp.vertexColorLocation = vertexColorLocation(plan.templateSource);
 }
 
 // Each hex-tiled slot the layers read takes the tiles of its lattice (LayersPlan::lattices), shared by every slot of

@@ -406,10 +406,11 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
 std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan) {
     std::vector<EngineFunction> functions;
     if (plan.layers) {  // an engine calls the roles' blends, not the layers' slots
+        const bool color = plan.layers->weights != LayerWeights::Splat;
         for (const LayerRolePlan& r : plan.layers->roles) {
             const SlotPlan* first = &plan.slots[r.slots.front()];
-            functions.push_back({"hexc_" + r.name, first, false, r.name});
-            if (kindRow(r.kind).derivative) functions.push_back({"hexc_" + r.name + "_normal", first, true, r.name});
+            functions.push_back({"hexc_" + r.name, first, false, r.name, color});
+            if (kindRow(r.kind).derivative) functions.push_back({"hexc_" + r.name + "_normal", first, true, r.name, color});
         }
         return functions;
     }

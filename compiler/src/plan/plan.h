@@ -148,7 +148,9 @@ struct LayersPlan {
     ParamRef widthParam, skipBelowParam;
     bool skip = true;  // a layer of weight 0 at a pixel is not fetched (CompileOptions::skipLayers)
     LayerWeights weights = LayerWeights::Splat;
-    int vertexColorLocation = -1;  // weights from the vertex colour: the location of its stage input, hexcVertexColor
+    // Weights from the vertex colour in a shader: the location of its stage input, hexcVertexColor (the functions output
+    // takes the colour as its functions' parameter instead: -1 there).
+    int vertexColorLocation = -1;
     // Texture fetches per pixel of the whole material: when every layer is fetched, and averaged over the splat maps'
     // texels (a layer counts where its weight is at least skipBelow); per layer that fraction of texels. With vertex
     // weights alone the plan cannot know the mesh: every layer counts (the manifest's expected is null).
@@ -216,8 +218,9 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options);
 struct EngineFunction {
     std::string name;
     const SlotPlan* slot;
-    bool tangentNormal;  // hexc_<slot>_normal: a normal slot's tangent-space normal, not its derivative
-    std::string role;    // a layered material's function of a role, the layers' blend (`slot`: its first layer's slot)
+    bool tangentNormal;        // hexc_<slot>_normal: a normal slot's tangent-space normal, not its derivative
+    std::string role;          // a layered material's function of a role, the layers' blend (`slot`: its first layer's slot)
+    bool vertexColor = false;  // it takes the vertex colour after uv (its role's layers are weighed by it)
 };
 std::vector<EngineFunction> engineFunctions(const ShaderPlan& plan);
 

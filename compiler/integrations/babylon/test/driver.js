@@ -5,7 +5,8 @@
 // `nan`: times a NaN). `marker`: a red square of that many pixels that Babylon draws at the screen's top-left in the same
 // frame; `png`: the canvas as a user's screenshot gets it (toDataURL, top row first) instead of readPixels' rows;
 // `invertY`: the package's textures loaded with Babylon's default invertY = true, the plugin put on a PBRMaterial;
-// `files`: the package's textures loaded from other files of it (withFiles).
+// `files`: the package's textures loaded from other files of it (withFiles); `colors`: the square's vertex colours
+// (RGBA at its top-left, top-right, bottom-left and bottom-right corners).
 import { Camera } from '@babylonjs/core/Cameras/camera.js';
 import { FreeCamera } from '@babylonjs/core/Cameras/freeCamera.js';
 import { Engine } from '@babylonjs/core/Engines/engine.js';
@@ -41,6 +42,9 @@ class Probe extends MaterialPluginBase {
 
   getClassName() { return 'HexcProbe'; }
 
+  // Its code reads the same in WGSL (Babylon's WebGPU engine), but for `nan`'s uintBitsToFloat, which only WebGL 2 views use.
+  isCompatible() { return true; }
+
   prepareDefines(defines) { defines.HEXC_PROBE = true; }
 
   getCustomCode(shaderType) {
@@ -48,14 +52,15 @@ class Probe extends MaterialPluginBase {
   }
 }
 
-// A 2x2 square at z = 0; its corners' uv span `uv` = [u0, vTop, u1, vBottom].
-function square(scene, uv) {
+// A 2x2 square at z = 0; its corners' uv span `uv` = [u0, vTop, u1, vBottom], their vertex colours `colors` if given.
+function square(scene, uv, colors) {
   const [u0, vTop, u1, vBottom] = uv;
   const data = new VertexData();
   data.positions = [-1, 1, 0, 1, 1, 0, -1, -1, 0, 1, -1, 0];
   data.normals = [0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1];
   data.uvs = [u0, vTop, u1, vTop, u0, vBottom, u1, vBottom];
   data.indices = [0, 1, 2, 1, 3, 2];
+  if (colors) data.colors = colors.flat();
   const mesh = new Mesh('square', scene);
   data.applyToMesh(mesh);
   return mesh;
@@ -123,7 +128,7 @@ async function readPixels(engine, width, height) {
 window.hexcDriver = {
   // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light;
   // `diffuse`: no specular highlight from the light (PBRMaterial's specularIntensity 0).
-  async render({ module, width, height, uv, input, light, encoding, sphere, diffuse, webgpu, nan, invertY, files, png, ...options }) {
+  async render({ module, width, height, uv, input, light, encoding, sphere, diffuse, webgpu, nan, invertY, files, png, colors, ...options }) {
     const errors = [];
     const consoleError = console.error;
     console.error = (...args) => { errors.push(args.join(' ')); consoleError(...args); };
@@ -145,7 +150,7 @@ window.hexcDriver = {
       if (input) new Probe(material, input, nan);
       if (options.marker) marker(scene, options.marker, width, height);
       if (light) new DirectionalLight('sun', new Vector3(-light[0], -light[1], light[2]), scene).intensity = 2.5; // towards the light: (x, y, -z)
-      (sphere ? CreateSphere('sphere', { diameter: 1.9, segments: 48 }, scene) : square(scene, uv)).material = material;
+      (sphere ? CreateSphere('sphere', { diameter: 1.9, segments: 48 }, scene) : square(scene, uv, colors)).material = material;
       if (sphere) new HemisphericLight('sky', new Vector3(0, 1, 0), scene).intensity = 0.4;
       await Promise.race([scene.whenReadyAsync(), new Promise((_, reject) => setTimeout(() => reject(new Error('not ready: ' + errors.join('\n'))), 60000))]);
       scene.render();

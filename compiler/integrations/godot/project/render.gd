@@ -3,7 +3,8 @@
 # Godot draws over the screen's top-left corner (a ColorRect: the image's orientation is checked by it); saves each
 # frame as PNG (a job without "out" is only drawn: its shader compiled), then quits. The quad is Godot's own QuadMesh
 # (uv (0, 0) at its top-left, v down) unless the job gives "uv": then a mesh with uv [u0, v0] at its top-left corner
-# and [u1, v1] at its bottom-right, the tangent frame of QuadMesh (tangent +x, binormal up the screen). Each job's
+# and [u1, v1] at its bottom-right, the tangent frame of QuadMesh (tangent +x, binormal up the screen), and with the
+# job's "colors" its vertex colours (top-left, top-right, bottom-left, bottom-right; linear, as stored). Each job's
 # start is printed to stderr ("HEXC-JOB n"), so that a shader error, which Godot prints there, names its job.
 extends Spatial
 
@@ -39,13 +40,17 @@ func texture(t):
     result.create_from_image(image, flags)
     return result
 
-func mesh(uv):
+func mesh(uv, colors):
     var arrays = []
     arrays.resize(Mesh.ARRAY_MAX)
     arrays[Mesh.ARRAY_VERTEX] = PoolVector3Array([Vector3(-1, 1, 0), Vector3(1, 1, 0), Vector3(-1, -1, 0), Vector3(1, -1, 0)])
     arrays[Mesh.ARRAY_NORMAL] = PoolVector3Array([Vector3(0, 0, 1), Vector3(0, 0, 1), Vector3(0, 0, 1), Vector3(0, 0, 1)])
     arrays[Mesh.ARRAY_TANGENT] = PoolRealArray([1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1])
     arrays[Mesh.ARRAY_TEX_UV] = PoolVector2Array([Vector2(uv[0], uv[1]), Vector2(uv[2], uv[1]), Vector2(uv[0], uv[3]), Vector2(uv[2], uv[3])])
+    if colors != null:
+        arrays[Mesh.ARRAY_COLOR] = PoolColorArray([Color(colors[0][0], colors[0][1], colors[0][2], colors[0][3]),
+            Color(colors[1][0], colors[1][1], colors[1][2], colors[1][3]), Color(colors[2][0], colors[2][1], colors[2][2], colors[2][3]),
+            Color(colors[3][0], colors[3][1], colors[3][2], colors[3][3])])
     arrays[Mesh.ARRAY_INDEX] = PoolIntArray([0, 1, 3, 0, 3, 2])  # clockwise seen from the camera: Godot's front faces
     var result = ArrayMesh.new()
     result.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays, [], 0)  # uncompressed: the default stores uv as half floats
@@ -66,7 +71,7 @@ func start(job):
         material.set_shader_param(uniform, texture(job["textures"][uniform]))
     var quad = MeshInstance.new()
     if job.has("uv"):
-        quad.mesh = mesh(job["uv"])
+        quad.mesh = mesh(job["uv"], job.get("colors"))
     else:
         quad.mesh = QuadMesh.new()
         quad.mesh.size = Vector2(2, 2)

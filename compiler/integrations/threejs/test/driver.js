@@ -5,7 +5,7 @@
 // the canvas as a user's screenshot gets it (toDataURL, top row first) instead of readPixels' rows; `flipY`: the
 // package's textures uploaded with three.js's default flipY = true; `materialType`: applyHexc on a new material of
 // that type instead of createMaterial (the console's warnings are returned); `files`: the package's textures loaded
-// from other files of it (withFiles).
+// from other files of it (withFiles); `colors`: the square's vertex colours (scene.js).
 import * as THREE from 'three';
 import { stage } from './scene.js';
 import { withFiles } from '../../test_files.js';
@@ -52,7 +52,7 @@ async function material(pkg, { input, nan, flipY, materialType, files }) {
 
 window.hexcDriver = {
   // `sphere`: a lit sphere (the screenshot in docs/engines.md) instead of the square, with some ambient light.
-  async render({ module, width, height, uv, input, light, encoding, sphere, nan, flipY, materialType, files, png, ...options }) {
+  async render({ module, width, height, uv, input, light, encoding, sphere, nan, flipY, materialType, files, png, colors, ...options }) {
     const pkg = await import(module);
     const canvas = document.createElement('canvas');
     canvas.width = width;
@@ -61,7 +61,7 @@ window.hexcDriver = {
     const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
     renderer.outputColorSpace = encoding === 'srgb' ? THREE.SRGBColorSpace : THREE.LinearSRGBColorSpace;
     const [made, warnings] = await material(pkg, { input, nan, flipY, materialType, files });
-    const { scene, camera } = stage(made, { uv, sphere, light, size: options.marker, width, height });
+    const { scene, camera } = stage(made, { uv, colors, sphere, light, size: options.marker, width, height });
     renderer.render(scene, camera);
     const errors = renderer.info.programs.map((p) => p.diagnostics).filter((d) => d);
     if (png) {

@@ -10,21 +10,23 @@ function marker(size, width, height) {
   return new Mesh(geometry, new MeshBasicMaterial({ color: 0xff0000 }));
 }
 
-// A 2x2 square in front of an orthographic camera; its corners' uv span `uv` = [u0, vTop, u1, vBottom].
-function square(uv) {
+// A 2x2 square in front of an orthographic camera; its corners' uv span `uv` = [u0, vTop, u1, vBottom], their vertex
+// colours `colors` (RGBA) if given.
+function square(uv, colors) {
   const geometry = new PlaneGeometry(2, 2);
   const [u0, vTop, u1, vBottom] = uv;
   const corners = [[u0, vTop], [u1, vTop], [u0, vBottom], [u1, vBottom]]; // PlaneGeometry's vertex order
   geometry.setAttribute('uv', new Float32BufferAttribute(corners.flat(), 2));
+  if (colors) geometry.setAttribute('color', new Float32BufferAttribute(colors.flat(), 4));
   return geometry;
 }
 
 // `material` on the square whose uv span `uv` (or on a sphere, with some ambient light: the screenshots in
 // docs/engines.md), in front of an orthographic camera; `light`: a directional light from that direction; `size`: the
-// marker's, on a `width` x `height` canvas (none if 0).
-export function stage(material, { uv, sphere, light, size, width, height }) {
+// marker's, on a `width` x `height` canvas (none if 0); `colors`: the square's vertex colours.
+export function stage(material, { uv, colors, sphere, light, size, width, height }) {
   const scene = new Scene();
-  scene.add(new Mesh(sphere ? new SphereGeometry(0.95, 96, 48) : square(uv), material));
+  scene.add(new Mesh(sphere ? new SphereGeometry(0.95, 96, 48) : square(uv, colors), material));
   if (size) scene.add(marker(size, width, height));
   if (sphere) scene.add(new AmbientLight(0xffffff, 0.4));
   if (light) {

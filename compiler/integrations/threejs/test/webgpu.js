@@ -69,7 +69,7 @@ async function readCanvas(canvas, device) {
 }
 
 window.hexcDriver = {
-  async render({ module, width, height, uv, light, sphere, ...options }) {
+  async render({ module, width, height, uv, light, sphere, colors, ...options }) {
     const errors = [], warnings = [];
     const [consoleError, consoleWarn] = [console.error, console.warn];
     console.error = (...args) => { errors.push(args.join(' ')); consoleError(...args); };
@@ -78,7 +78,7 @@ window.hexcDriver = {
       const r = await webGpuRenderer(width, height);
       const device = r.backend.device;
       const made = await material(await import(module), options);
-      const { scene, camera } = stage(made, { uv, sphere, light, size: options.marker, width, height });
+      const { scene, camera } = stage(made, { uv, colors, sphere, light, size: options.marker, width, height });
       device.pushErrorScope('validation');
       await r.renderAsync(scene, camera);
       const error = await device.popErrorScope();
