@@ -143,11 +143,34 @@ Taps noiseTaps(Vec2 st, const HexTiling& hex) {
     return taps;
 }
 
+// `hexc bake`'s periodic lattice (docs/cli.md#hexc-bake): stable mode's skew A0 = (97/28, -2; 0, 4) replaced by
+// A = P / K, P = round(K A0), so that st + K e maps to skewed + P e. The triangle and centres come from the unwrapped
+// ids (the texture repeats with period 1 and K is whole, so a tile K units away samples the same); the transform from
+// the id reduced modulo P's lattice: id - P floor(P^-1 id), in exact integers.
+Taps periodicTaps(Vec2 st, int repeats) {
+    const int64_t k = repeats, a = std::llround(kStableScale * double(k)), b = -2 * k, d = 4 * k;  // P = (a, b; 0, d)
+    const Triangle tri = triangleInSkewed((double(a) * st[0] + double(b) * st[1]) / double(k), double(d) * st[1] / double(k));
+    const auto floorDiv = [](int64_t x, int64_t m) { return x / m - (x % m != 0 && x < 0); };  // m > 0
+    Taps taps{{}, {}, {}, tri.weight};
+    for (size_t i = 0; i < 3; ++i) {
+        const TileId id = tri.id[i];
+        // P^-1 id = (d x - b y, a y) / (a d): q = its floor, the lattice vector P q taken off.
+        const int64_t det = a * d, fx = d * id[0] - b * id[1], fy = a * id[1];
+        const int64_t qx = floorDiv(fx, det), qy = floorDiv(fy, det);
+        taps.id[i] = {id[0] - (a * qx + b * qy), id[1] - d * qy};
+        const Vec2 c{double(k * fx) / double(det), double(k * fy) / double(det)};  // A^-1 id = K P^-1 id
+        taps.local[i] = {st[0] - c[0], st[1] - c[1]};
+        taps.shift[i] = c;
+    }
+    return taps;
+}
+
 }  // namespace
 
-Taps maskTaps(Vec2 st, const HexTiling& hex) {
+Taps maskTaps(Vec2 st, const HexTiling& hex, int repeats) {
     switch (hex.mask) {
         case Mask::Hex:
+            if (repeats > 0) return periodicTaps(st, repeats);
             return hexTaps(st, hex.mode);
         case Mask::Checker:
             return checkerTaps(st, hex.maskScale);
