@@ -1,11 +1,15 @@
-// hexc bake's periodic lattice (CompileOptions::periodicRepeats) on lavapipe against the fp64 reference of the same
-// lattice.
+// hexc bake (docs/cli.md#hexc-bake): the periodic lattice on lavapipe against the fp64 reference of the same lattice, the
+// baked textures' wrap edges against their interior, the baked material, and what the command refuses.
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 #include "checks.h"
 
 namespace hexc::exec {
 namespace {
+
+using hexc::test::runHexc;
 
 constexpr int kRepeats = 4;
 
@@ -44,6 +48,89 @@ TEST(BakeCommand, PlainLatticeFailsThePeriodicReference) {
     const Check c = bakeCheck(slotOf("albedo"), on(vk::ExecutedTarget::Spirv));
     report("albedo, plain lattice", c);
     EXPECT_GT(c.worstRatio, 1.0);
+}
+
+// How far an image is from repeating: each wrap edge's mean difference across it (last column to first, last row to
+// first) over the largest mean difference between neighbouring interior columns or rows. <= 1: the seam is no
+// different from a step inside the texture.
+double seamRatio(const Texture& t) {
+    const auto diff = [&](int x0, int y0, int x1, int y1) {
+        double d = 0;
+        for (size_t c = 0; c < 4; ++c)
+            d += std::abs(int(t.rgba8[(size_t(y0) * t.width + x0) * 4 + c]) - int(t.rgba8[(size_t(y1) * t.width + x1) * 4 + c]));
+        return d;
+    };
+    double worst = 0;
+    for (bool columns : {true, false}) {
+        const int n = columns ? t.width : t.height, m = columns ? t.height : t.width;
+        const auto across = [&](int a, int b) {  // mean over the line pair (a, b)
+            double sum = 0;
+            for (int k = 0; k < m; ++k) sum += columns ? diff(a, k, b, k) : diff(k, a, k, b);
+            return sum / m;
+        };
+        double interior = 0;
+        for (int a = 0; a + 1 < n; ++a) interior = std::max(interior, across(a, a + 1));
+        worst = std::max(worst, across(n - 1, 0) / interior);
+    }
+    return worst;
+}
+
+// The baked textures repeat: every wrap edge of every slot's PNG (colour sRGB, scalar, normal) is within the texture's
+// own neighbour steps. 512 pixels for K = 4: 2 texels a pixel, so neighbouring pixels are alike and a cut is not.
+TEST(BakeCommand, BakedTexturesRepeatSeamlessly) {
+    REQUIRE_VULKAN();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_rock";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    ASSERT_EQ(runHexc("bake materials/rock.json -q --size 512 -o " + dir.string(), &err), 0) << err;
+    for (const char* slot : {"albedo", "roughness", "normal"}) {
+        const Texture baked = loadTexture(dir / ("rock." + std::string(slot) + ".png"), false);
+        ASSERT_EQ(baked.width, 512);
+        const double ratio = seamRatio(baked);
+        std::printf("  %-10s seam / largest interior step %.3f\n", slot, ratio);
+        EXPECT_LE(ratio, 1.0) << slot;
+    }
+    // The baked material tiles them plainly, at 1/K of the tiling: the same texel density.
+    const Material baked = test::loadMaterial(dir / "rock_baked.json");
+    ASSERT_EQ(baked.slots.size(), 3u);
+    for (const Slot& s : baked.slots) {
+        EXPECT_FALSE(s.hex.enabled) << s.name;
+        EXPECT_EQ(s.hex.tiling, (std::array<double, 2>{1, 1})) << s.name;
+        EXPECT_EQ(s.width, 512) << s.name;
+    }
+}
+
+// Negative control: the same window rendered with the plain lattice (hexc render) has seams.
+TEST(BakeCommand, APlainRenderOfTheWindowHasSeams) {
+    REQUIRE_VULKAN();
+    for (const char* slot : {"albedo", "normal"}) {
+        const std::filesystem::path out = std::filesystem::temp_directory_path() / ("hexc_bake_plain_" + std::string(slot) + ".png");
+        std::string err;
+        ASSERT_EQ(runHexc(std::string("render materials/rock.json -q --output ") + (slot[0] == 'n' ? "normal" : "albedo") + " --slot " +
+                              slot + " --size 512x512 --uv-rect 0,0,1,1 -o " + out.string(),
+                          &err),
+                  0)
+            << err;
+        const double ratio = seamRatio(loadTexture(out, false));
+        std::printf("  %-10s plain render: seam / largest interior step %.3f\n", slot, ratio);
+        EXPECT_GT(ratio, 1.0) << slot;
+    }
+}
+
+// What bake refuses, located, and writes nothing for: a mask with no periodic form, a bad size or repeat count.
+TEST(BakeCommand, RefusalsAreLocatedAndWriteNothing) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_refused";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    EXPECT_EQ(runHexc("bake tests/execution/bake/checker.json -q --size 64 -o " + dir.string(), &err), 1);
+    EXPECT_NE(err.find("checker.json:8:15: error[HX134]: /slots/0: slot `albedo`: hexc bake cannot make the `checker` mask periodic"),
+              std::string::npos)
+        << err;
+    EXPECT_EQ(runHexc("bake materials/rock.json -q --size 0 -o " + dir.string(), &err), 2);
+    EXPECT_EQ(err, "hexc: --size expects a whole number from 1 to 8192, got `0`\n");
+    EXPECT_EQ(runHexc("bake materials/rock.json -q --size 64 --repeats 2.5 -o " + dir.string(), &err), 2);
+    EXPECT_EQ(err, "hexc: --repeats expects a whole number from 1 to 64, got `2.5`\n");
+    EXPECT_FALSE(std::filesystem::exists(dir));
 }
 
 }  // namespace
