@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 
+#include "hexc/image_files.h"
 #include "options.h"
 #include "progress.h"
 #include "render.h"
@@ -22,8 +23,10 @@ For engines and pipelines that cannot run the hex-tiling shader: each slot of MA
 N x N result repeats seamlessly (its right edge continues its left, its bottom its top). The lattice is stable
 mode's, its skew rounded so that it repeats over K (tiles stretched along u by at most 1 / (7 K): 1.0% at K = 4);
 tile ids are wrapped before they are hashed. Written into DIR:
-  DIR/<name>.<slot>.png       8-bit; colour and scalar slots sRGB-encoded when the slot is sRGB, normal slots
-                              in the slot's convention (green down with flip_y); a scalar slot as grey
+  DIR/<name>.<slot>.png       in its texture's format: PNG 8 or 16 bits (.png), OpenEXR (.exr) or PFM (.pfm),
+  (.exr, .pfm)                others (JPEG, KTX2, DDS, ...) as 8-bit PNG; PNG sRGB-encoded when the slot is sRGB,
+                              float files linear; normal slots in the slot's convention (green down with
+                              flip_y); a scalar slot as grey
   DIR/<name>_baked.json       a material that tiles them plainly ("enabled": false), each slot's tiling
                               divided by K, so a surface shows the same texel density as before
 Not the compile flag --bake, which folds a material's settings into its shader's code.
@@ -72,17 +75,28 @@ Diagnostic refusal(const Material& material, size_t index, const std::string& wh
                             "hexc bake takes stable mode with the hex mask on the uv projection, or plain tiling");
 }
 
+// The format a slot's bake is written in: its texture's (PNG 8 or 16 bits, OpenEXR, PFM), else 8-bit PNG.
+ImageFormat bakedFormat(const Slot& slot) {
+    const ImageFormat format = slot.file ? imageFormat(slot.file->bytes) : ImageFormat::Other;
+    return format == ImageFormat::Other ? ImageFormat::Png8 : format;
+}
+
+// Float files hold linear values, as hexc reads them.
+bool floatFormat(ImageFormat format) { return format == ImageFormat::Exr || format == ImageFormat::Pfm; }
+
+std::string bakedFile(const Material& material, const Slot& s) { return material.name + "." + s.name + imageExtension(bakedFormat(s)); }
+
 // The baked material's slot `s`: its baked texture, tiled plainly at 1/K of its tiling.
 nlohmann::ordered_json bakedSlot(const Material& material, const Slot& s, int repeats) {
     nlohmann::ordered_json j;
     j["name"] = s.name;
     j["kind"] = std::string(toString(s.kind));
-    j["texture"] = material.name + "." + s.name + ".png";
+    j["texture"] = bakedFile(material, s);
     if (!s.role.empty()) j["role"] = s.role;
     if (kindRow(s.kind).derivative)
         j["flip_y"] = s.flipY;
     else
-        j["colorspace"] = std::string(toString(s.colorSpace));
+        j["colorspace"] = std::string(toString(floatFormat(bakedFormat(s)) ? ColorSpace::Linear : s.colorSpace));
     if (kindRow(s.kind).oneChannel) j["channel"] = "r";  // written as grey
     j["hextiling"] = {{"enabled", false}, {"tiling", {s.hex.tiling[0] / repeats, s.hex.tiling[1] / repeats}}};
     return j;
@@ -131,7 +145,7 @@ Image bakeSlot(vk::Runner& runner, const Material& material, const Slot& slot, i
                              bakeView(slot, size, repeats), vk::ExecutedTarget::Spirv, 0, nullptr, {}, options);
     if (normal && slot.flipY)
         for (size_t i = 1; i < image.rgba.size(); i += 4) image.rgba[i] = 1.0f - image.rgba[i];  // green down
-    if (!normal && slot.colorSpace == ColorSpace::Srgb) encodeSrgb(image);
+    if (!normal && slot.colorSpace == ColorSpace::Srgb && !floatFormat(bakedFormat(slot))) encodeSrgb(image);
     return image;
 }
 
@@ -157,7 +171,8 @@ int bakeCommand(const std::vector<std::string>& args) {
         progress.step("writing " + b.out);
         std::filesystem::create_directories(b.out);
         for (size_t i = 0; i < images.size(); ++i)
-            writeImage(images[i], std::filesystem::path(b.out) / (material->name + "." + material->slots[i].name + ".png"));
+            writeImageAs(images[i], bakedFormat(material->slots[i]),
+                         std::filesystem::path(b.out) / bakedFile(*material, material->slots[i]));
         writeAtomically(b.out, material->name + "_baked.json", bakedMaterial(*material, repeats, b.out));
         return int(kOk);
     });

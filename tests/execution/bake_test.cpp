@@ -1,10 +1,12 @@
-// hexc bake (docs/cli.md#hexc-bake): the periodic lattice on lavapipe against the fp64 reference of the same lattice, the
-// baked textures' wrap edges against their interior, the baked material, and what the command refuses.
+// hexc bake (docs/cli.md#hexc-bake): the periodic lattice on lavapipe against the fp64 reference of the same lattice,
+// the baked textures' wrap edges against their interior, the baked material, the files' formats, and what the
+// command refuses.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "checks.h"
+#include "hexc/image_files.h"
 
 namespace hexc::exec {
 namespace {
@@ -115,6 +117,56 @@ TEST(BakeCommand, APlainRenderOfTheWindowHasSeams) {
         std::printf("  %-10s plain render: seam / largest interior step %.3f\n", slot, ratio);
         EXPECT_GT(ratio, 1.0) << slot;
     }
+}
+
+// A bake is written in its texture's format: a 16-bit PNG as 16-bit PNG, an OpenEXR file as OpenEXR (linear floats,
+// the baked material then linear), an 8-bit PNG as 8-bit PNG. The same texels in an EXR and an 8-bit PNG (both
+// linear) bake alike: each bake is within blendTolerance of the reference (checks.h) with e_x = e_m = e_s, the gain's
+// slope k = 1 (falloff 0.5), beta = 0.6 and sum_j W_j |x_j - R| <= 1 (values in [0, 1]): e_s (1 + 1.5); so the two
+// differ by at most twice that plus the 8-bit file's rounding, 0.5/255. e_s = sampleError(3): mip level 3, as in
+// BakeCommand.PeriodicLatticeMatchesTheReference. Negative control: against the PNG bake mirrored, the same bound fails.
+TEST(BakeCommand, WritesTheTexturesFormat) {
+    REQUIRE_VULKAN();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_formats";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const Texture rock = loadTexture("materials/textures/rock_albedo.png", false);
+    Image texels{rock.width, rock.height, std::vector<float>(rock.rgba8.size())};
+    for (size_t i = 0; i < texels.rgba.size(); ++i) texels.rgba[i] = float(rock.rgba8[i]) / 255.0f;
+    writeImageAs(texels, ImageFormat::Png16, dir / "rock16.png");
+    writeImageAs(texels, ImageFormat::Exr, dir / "rock.exr");
+    std::filesystem::copy_file("materials/textures/rock_albedo.png", dir / "rock8.png");
+    std::ofstream(dir / "m.json") << R"({"name": "m", "template": "unlit", "hextiling": {"tiling": 4}, "slots": [
+        {"name": "albedo", "kind": "color", "texture": "rock16.png"},
+        {"name": "exr", "kind": "color", "colorspace": "linear", "texture": "rock.exr"},
+        {"name": "png", "kind": "color", "colorspace": "linear", "texture": "rock8.png"}]})";
+    std::string err;
+    ASSERT_EQ(runHexc("bake " + (dir / "m.json").string() + " -q --size 128 -o " + (dir / "out").string(), &err), 0) << err;
+    EXPECT_EQ(imageFormat(test::readFile(dir / "out/m.albedo.png")), ImageFormat::Png16);
+    EXPECT_EQ(imageFormat(test::readFile(dir / "out/m.exr.exr")), ImageFormat::Exr);
+    EXPECT_EQ(imageFormat(test::readFile(dir / "out/m.png.png")), ImageFormat::Png8);
+    const Material baked = test::loadMaterial(dir / "out/m_baked.json");
+    EXPECT_EQ(baked.slots[0].colorSpace, ColorSpace::Srgb);
+    EXPECT_EQ(baked.slots[1].colorSpace, ColorSpace::Linear);
+    const Texture exr = loadTexture(dir / "out/m.exr.exr", false), png = loadTexture(dir / "out/m.png.png", false);
+    ASSERT_TRUE(exr.isFloat());
+    EXPECT_EQ(loadTexture(dir / "out/m.albedo.png", false).width, 128);  // the 16-bit PNG reads back (stb)
+    const auto worst = [&](bool mirrored) {
+        double e = 0;
+        for (int y = 0; y < png.height; ++y)
+            for (int x = 0; x < png.width; ++x)
+                for (size_t c = 0; c < 4; ++c) {
+                    const size_t at = (size_t(y) * png.width + x) * 4 + c,
+                                 from = (size_t(y) * png.width + (mirrored ? png.width - 1 - x : x)) * 4 + c;
+                    e = std::max(e, std::fabs(exr.rgba32f[at] - png.rgba8[from] / 255.0));
+                }
+        return e;
+    };
+    const double bound = 2 * 2.5 * sampleError(3, false) + 0.5 / 255;
+    std::printf("  EXR bake against the 8-bit PNG bake of the same texels: max %.2f/255, bound %.2f/255, mirrored %.2f/255\n",
+                worst(false) * 255, bound * 255, worst(true) * 255);
+    EXPECT_LE(worst(false), bound);
+    EXPECT_GT(worst(true), bound);
 }
 
 // What bake refuses, located, and writes nothing for: a mask with no periodic form, a bad size or repeat count.
