@@ -169,6 +169,45 @@ TEST(BakeCommand, WritesTheTexturesFormat) {
     EXPECT_GT(worst(true), bound);
 }
 
+// A green-down (flip_y) normal map's bake, read back through its baked material (plain tiling at 1/K, so pixel i reads
+// texel i at its centre, level 0), gives the normals hexc's runtime shader gives with the periodic lattice: the slot's
+// convention survives the round trip, and relighting either lights the same normals. The bake's 8-bit rounding puts
+// each encoded component within 0.5/255, so n = 2 texel - 1 within e = 1/255; Listing 9's d = -n_xy / z then moves by
+// at most e (1 + max|d|) / min z a component (the baked texture's bounds), sqrt(2) times that in length, and the
+// encoded normal (n * 0.5 + 0.5, normalize(-d, 1) having slope <= 1 in d) by half the length. Negative control: the
+// baked material read as green-up fails.
+TEST(BakeCommand, ANormalMapsBakeRelightsAsTheRuntimeShader) {
+    REQUIRE_VULKAN();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_normal";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "n.json") << R"({"name": "n", "hextiling": {"tiling": 4}, "slots": [{"name": "normal", "kind": "normal",
+        "flip_y": true, "texture": ")" + std::filesystem::absolute("materials/textures/rock_normal.png").string() +
+                                         R"("}]})";
+    std::string err;
+    ASSERT_EQ(runHexc("bake " + (dir / "n.json").string() + " -q --size 128 -o " + (dir / "out").string(), &err), 0) << err;
+    const Material source = test::loadMaterial(dir / "n.json");
+    Material baked = test::loadMaterial(dir / "out/n_baked.json");
+    CompileOptions options;
+    options.periodicRepeats = kRepeats;
+    vk::Runner& gpu = *test::runner(&err);
+    const Image runtime = vk::render(gpu, source, vk::RenderOutput::Normal, "", bakeWindow(source.slots[0], 128), vk::ExecutedTarget::Spirv,
+                                     0, nullptr, {}, options);
+    const TextureBounds b = bounds(sampled(baked.slots[0]));
+    const double bound = 0.5 * std::sqrt(2.0) * (1.0 / 255) * (1 + b.maxDeriv) / b.minZ;
+    const auto worst = [&](const Material& m) {
+        const Image read = vk::render(gpu, m, vk::RenderOutput::Normal, "", {128, 128, {0, 0, 1, 1}});
+        return compare(read, runtime, 3).max;
+    };
+    const double same = worst(baked);
+    baked.slots[0].flipY = false;
+    const double upsideDown = worst(baked);
+    std::printf("  baked normals read back: max %.2f/255 (bound %.2f/255); read green-up: %.2f/255\n", same * 255, bound * 255,
+                upsideDown * 255);
+    EXPECT_LE(same, bound);
+    EXPECT_GT(upsideDown, bound);
+}
+
 // What bake refuses, located, and writes nothing for: a mask with no periodic form, a bad size or repeat count.
 TEST(BakeCommand, RefusalsAreLocatedAndWriteNothing) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_refused";
