@@ -21,7 +21,7 @@ const char* const kBakeHelp = R"(hexc bake - bake each slot into a texture that 
 For engines and pipelines that cannot run the hex-tiling shader: each slot of MATERIAL is rendered on Vulkan
 (Mesa lavapipe) by hexc's own shader with a periodic lattice over K = --repeats repeats of its texture, so the
 N x N result repeats seamlessly (its right edge continues its left, its bottom its top). The lattice is stable
-mode's, its skew rounded so that it repeats over K (tiles stretched along u by at most 1 / (7 K): 1.0% at K = 4);
+mode's, its skew rounded so that it repeats over K (tiles stretched along u by at most 1 / (6.9 K): 1.0% at K = 4);
 tile ids are wrapped before they are hashed. Written into DIR:
   DIR/<name>.<slot>.png       in its texture's format: PNG 8 or 16 bits (.png), OpenEXR (.exr) or PFM (.pfm),
   (.exr, .pfm)                others (JPEG, KTX2, DDS, ...) as 8-bit PNG; PNG sRGB-encoded when the slot is sRGB,
@@ -30,7 +30,7 @@ tile ids are wrapped before they are hashed. Written into DIR:
   DIR/<name>_baked.json       a material that tiles them plainly ("enabled": false), each slot's tiling
                               divided by K, so a surface shows the same texel density as before
 Not the compile flag --bake, which folds a material's settings into its shader's code.
-Refused (HX134): layered materials, triplanar projection, paper and materialx modes, checker and noise masks.
+Refused (HX134): layered materials, triplanar projection, paper and materialx modes, the noise masks.
 )";
 
 struct BakeArguments {
@@ -72,7 +72,7 @@ Diagnostic refusal(const Material& material, size_t index, const std::string& wh
     const Slot& s = material.slots[index];
     return Diagnostic::make(Code::BakeUnsupported, {material.sourceFile.string(), s.line, s.col}, "/slots/" + std::to_string(index),
                             "slot `" + s.name + "`: hexc bake cannot make " + what + " periodic",
-                            "hexc bake takes stable mode with the hex mask on the uv projection, or plain tiling");
+                            "hexc bake takes stable mode with the hex or checker mask on the uv projection, or plain tiling");
 }
 
 // The format a slot's bake is written in: its texture's (PNG 8 or 16 bits, OpenEXR, PFM), else 8-bit PNG.
@@ -127,7 +127,7 @@ Diagnostics bakeRefusals(const Material& material) {
             out.push_back(refusal(material, i, "the triplanar projection"));
         else if (h.mode != HashMode::Stable)
             out.push_back(refusal(material, i, "mode `" + std::string(toString(h.mode)) + "`"));
-        else if (h.mask != Mask::Hex)
+        else if (h.mask == Mask::Noise || h.mask == Mask::Noise3)  // copies turned about the st origin: no period
             out.push_back(refusal(material, i, "the `" + std::string(toString(h.mask)) + "` mask"));
     }
     return out;

@@ -15,7 +15,7 @@ namespace hexc::cli {
 int bakeCommand(const std::vector<std::string>& args);
 
 // What `hexc bake` refuses (HX134, at the slot): a layered material, and slots whose hex-tiling has no periodic form
-// (triplanar projection, paper or materialx mode, the checker and noise masks).
+// (triplanar projection, paper or materialx mode, the noise masks).
 Diagnostics bakeRefusals(const Material& material);
 
 // The view a slot is baked over: size x size pixels covering st in [0, repeats]^2 (uv = st / tiling), one pixel's

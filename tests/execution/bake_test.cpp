@@ -34,7 +34,8 @@ Draw periodic() {
 }
 
 // hexc's shader with the periodic lattice against the reference's periodic lattice, written apart from it
-// (reference/lattice.cpp, periodicTaps), within the execution tests' derived bounds: colour, scalar and normal slots.
+// (reference/lattice.cpp, periodicTaps), within the execution tests' derived bounds: colour, scalar and normal slots;
+// and the checker mask's wrapped cells (checkerTaps).
 TEST(BakeCommand, PeriodicLatticeMatchesTheReference) {
     REQUIRE_VULKAN();
     for (const char* name : {"albedo", "roughness", "normal"}) {
@@ -42,14 +43,20 @@ TEST(BakeCommand, PeriodicLatticeMatchesTheReference) {
         report(name, c);
         EXPECT_LE(c.worstRatio, 1.0) << name;
     }
+    const Check checker = bakeCheck(slotOf("albedo", "tests/execution/bake/checker.json"), periodic());
+    report("albedo, checker mask", checker);
+    EXPECT_LE(checker.worstRatio, 1.0);
 }
 
-// Negative control: the plain (non-periodic) lattice drawn against the periodic reference fails the same check.
+// Negative controls: the plain (non-periodic) lattices drawn against the periodic reference fail the same check.
 TEST(BakeCommand, PlainLatticeFailsThePeriodicReference) {
     REQUIRE_VULKAN();
     const Check c = bakeCheck(slotOf("albedo"), on(vk::ExecutedTarget::Spirv));
     report("albedo, plain lattice", c);
     EXPECT_GT(c.worstRatio, 1.0);
+    const Check checker = bakeCheck(slotOf("albedo", "tests/execution/bake/checker.json"), on(vk::ExecutedTarget::Spirv));
+    report("albedo, checker, plain", checker);
+    EXPECT_GT(checker.worstRatio, 1.0);
 }
 
 // How far an image is from repeating: each wrap edge's mean difference across it (last column to first, last row to
@@ -100,22 +107,29 @@ TEST(BakeCommand, BakedTexturesRepeatSeamlessly) {
         EXPECT_EQ(s.hex.tiling, (std::array<double, 2>{1, 1})) << s.name;
         EXPECT_EQ(s.width, 512) << s.name;
     }
+    // The checker mask's bake too.
+    ASSERT_EQ(runHexc("bake tests/execution/bake/checker.json -q --size 512 -o " + dir.string(), &err), 0) << err;
+    const double checker = seamRatio(loadTexture(dir / "checker.albedo.png", false));
+    std::printf("  checker    seam / largest interior step %.3f\n", checker);
+    EXPECT_LE(checker, 1.0);
 }
 
 // Negative control: the same window rendered with the plain lattice (hexc render) has seams.
 TEST(BakeCommand, APlainRenderOfTheWindowHasSeams) {
     REQUIRE_VULKAN();
-    for (const char* slot : {"albedo", "normal"}) {
-        const std::filesystem::path out = std::filesystem::temp_directory_path() / ("hexc_bake_plain_" + std::string(slot) + ".png");
+    const std::pair<const char*, const char*> renders[] = {
+        {"materials/rock.json", "albedo"}, {"materials/rock.json", "normal"}, {"tests/execution/bake/checker.json", "albedo"}};
+    for (const auto& [material, slot] : renders) {
+        const std::filesystem::path out = std::filesystem::temp_directory_path() / "hexc_bake_plain.png";
         std::string err;
-        ASSERT_EQ(runHexc(std::string("render materials/rock.json -q --output ") + (slot[0] == 'n' ? "normal" : "albedo") + " --slot " +
-                              slot + " --size 512x512 --uv-rect 0,0,1,1 -o " + out.string(),
+        ASSERT_EQ(runHexc(std::string("render ") + material + " -q --output " + (slot[0] == 'n' ? "normal" : "albedo") + " --slot " + slot +
+                              " --size 512x512 --uv-rect 0,0,1,1 -o " + out.string(),
                           &err),
                   0)
             << err;
         const double ratio = seamRatio(loadTexture(out, false));
-        std::printf("  %-10s plain render: seam / largest interior step %.3f\n", slot, ratio);
-        EXPECT_GT(ratio, 1.0) << slot;
+        std::printf("  %s %-10s plain render: seam / largest interior step %.3f\n", material, slot, ratio);
+        EXPECT_GT(ratio, 1.0) << material << " " << slot;
     }
 }
 
@@ -213,8 +227,8 @@ TEST(BakeCommand, RefusalsAreLocatedAndWriteNothing) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_refused";
     std::filesystem::remove_all(dir);
     std::string err;
-    EXPECT_EQ(runHexc("bake tests/execution/bake/checker.json -q --size 64 -o " + dir.string(), &err), 1);
-    EXPECT_NE(err.find("checker.json:8:15: error[HX134]: /slots/0: slot `albedo`: hexc bake cannot make the `checker` mask periodic"),
+    EXPECT_EQ(runHexc("bake tests/execution/bake/noise.json -q --size 64 -o " + dir.string(), &err), 1);
+    EXPECT_NE(err.find("noise.json:8:15: error[HX134]: /slots/0: slot `albedo`: hexc bake cannot make the `noise` mask periodic"),
               std::string::npos)
         << err;
     EXPECT_EQ(runHexc("bake materials/rock.json -q --size 0 -o " + dir.string(), &err), 2);

@@ -26,7 +26,7 @@ struct Taps {
 };
 
 // The taps of hex.mask at st: the hex lattice's triangle, the checker's two grids, or the noise masks' three copies;
-// `repeats` > 0: the hex mask's periodic lattice over that many units of st (stable mode).
+// `repeats` > 0: the hex and checker masks' periodic lattices over that many units of st (stable mode).
 Taps maskTaps(Vec2 st, const HexTiling& hex, int repeats = 0);
 
 }  // namespace hexc::reference

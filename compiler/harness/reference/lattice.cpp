@@ -101,7 +101,9 @@ MaskFrame maskFrame(Vec2 st, int scale) {
 }
 
 // Two square grids, B shifted by half a cell; each cell is a tile with its own transform, sampled about its centre.
-Taps checkerTaps(Vec2 st, int scale) {
+// `repeats` > 0 (hexc bake): a cell's index is taken modulo K scale before it makes the id, so that cells K units of st
+// apart share their transform.
+Taps checkerTaps(Vec2 st, int scale, int repeats) {
     const MaskFrame frame = maskFrame(st, scale);
     Taps taps{};
     for (int64_t grid = 0; grid < 2; ++grid) {
@@ -110,7 +112,10 @@ Taps checkerTaps(Vec2 st, int scale) {
         const Vec2 f{frame.q[0] + shift - corner[0], frame.q[1] + shift - corner[1]};
         // 2A and 2B + (1, 1): the grids never share an id. TileId is wider than the shader's 32 bits; the hash
         // reads its low 32 bits, which is the shader's wrap-around.
-        taps.id[size_t(grid)] = {2 * (frame.base[0] + int64_t(corner[0])) + grid, 2 * (frame.base[1] + int64_t(corner[1])) + grid};
+        std::array<int64_t, 2> cell{frame.base[0] + int64_t(corner[0]), frame.base[1] + int64_t(corner[1])};
+        if (repeats > 0)
+            for (int64_t& c : cell) c = ((c % (repeats * scale)) + repeats * scale) % (repeats * scale);
+        taps.id[size_t(grid)] = {2 * cell[0] + grid, 2 * cell[1] + grid};
         taps.local[size_t(grid)] = {(f[0] - 0.5) / scale, (f[1] - 0.5) / scale};
         // The cell's centre, corner + 1/2 - shift in q, modulo 1 in st (the frame's base is whole st units).
         const Vec2 centre{(corner[0] + 0.5 - shift) / scale, (corner[1] + 0.5 - shift) / scale};
@@ -173,7 +178,7 @@ Taps maskTaps(Vec2 st, const HexTiling& hex, int repeats) {
             if (repeats > 0) return periodicTaps(st, repeats);
             return hexTaps(st, hex.mode);
         case Mask::Checker:
-            return checkerTaps(st, hex.maskScale);
+            return checkerTaps(st, hex.maskScale, repeats);
         case Mask::Noise:
         case Mask::Noise3:
             return noiseTaps(st, hex);

@@ -182,7 +182,7 @@ private:
 // interpolated linearly in lod and entries in G; the channels return to RGB with the table's row 0.
 //
 // `repeats` > 0: the periodic lattice of `hexc bake` (docs/cli.md#hexc-bake) over that many units of st, for a
-// stable-mode slot with the hex mask (others are refused).
+// stable-mode slot with the hex or checker mask (others are refused).
 SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel = {0, 0},
                       const HeightSource* height = nullptr, const SampledTexture* lut = nullptr, int repeats = 0);
 

@@ -111,12 +111,13 @@ public:
         return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, sp.name) + "\n";
     }
 
-    // The call computing a lattice's tiles; the periodic lattice's matrix and repeats are literals.
+    // The call computing a lattice's tiles; the periodic lattices' matrix, repeats and cells a row are literals.
     std::string tiles(const LatticePlan& l) const {
         const std::array<int, 4>& p = l.period;
         return expand(l.section,
                       {{"period", "ivec4(" + literal(p[0]) + ", " + literal(p[1]) + ", " + literal(p[2]) + ", " + literal(p[3]) + ")"},
-                       {"repeats", literal(l.repeats)}});
+                       {"repeats", literal(l.repeats)},
+                       {"cells", literal(l.repeats * l.maskScale)}});
     }
 
     // The function computing the tiles of the layers' lattice `index` (LayersPlan::lattices) and the variable sharing

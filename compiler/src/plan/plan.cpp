@@ -142,6 +142,9 @@ LatticePlan planLattice(const HexTiling& h, bool all, int repeats) {
         l.section = "lattice.periodic";
         l.repeats = repeats;
         l.period = {int(std::lround(97.0 * repeats / 28.0)), 0, -2 * repeats, 4 * repeats};
+    } else if (repeats > 0 && l.section == "lattice.checker") {
+        l.section = "lattice.checker.periodic";  // its cells wrapped modulo K maskScale
+        l.repeats = repeats;
     }
     l.rotate = all || h.rotation != 0;
     l.transform = h.hasTransforms();

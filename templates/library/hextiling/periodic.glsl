@@ -32,3 +32,21 @@ HexcTiles hexcTilesPeriodic(vec2 st, vec2 dSTdx, vec2 dSTdy, ivec4 period, int r
     t.channel = hexcHexChannels(t.id[0], t.id[2]);
     return t;
 }
+
+// The checker mask on the periodic lattice: the cells' ids wrapped modulo `cells` = K maskScale a row (st >= 0), and
+// each tap placed again with its wrapped id (the optimiser drops the first placing). A cell's centre within its unit
+// of st, and so its sample point, is the same K units away.
+HexcTiles hexcTilesCheckerPeriodic(vec2 st, vec2 dSTdx, vec2 dSTdy, int cells, HexcLattice l) {
+    HexcTiles t = hexcTilesChecker(st, dSTdx, dSTdy, ivec2(0), l);
+    uvec2 n = uint(cells) * uvec2(1u);
+    t.id[0] = ivec2(2u * ((uvec2(t.id[0]) >> 1u) % n));
+    t.id[1] = ivec2(2u * ((uvec2(t.id[1]) >> 1u) % n) + 1u);
+    t.id[2] = t.id[1];
+    float s = 1.0 / float(l.maskScale);
+    vec2 q = fract(st) * float(l.maskScale);
+    vec2 a = floor(q), b = floor(q + 0.5);
+    t.tap[0] = hexcPlaceTile(t.id[0], (q - a - 0.5) * s, (a + 0.5) * s, dSTdx, dSTdy, l, false);
+    t.tap[1] = hexcPlaceTile(t.id[1], (q + 0.5 - b - 0.5) * s, b * s, dSTdx, dSTdy, l, false);
+    t.tap[2] = t.tap[1];
+    return t;
+}
