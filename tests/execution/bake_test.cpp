@@ -35,7 +35,7 @@ Draw periodic() {
 
 // hexc's shader with the periodic lattice against the reference's periodic lattice, written apart from it
 // (reference/lattice.cpp, periodicTaps), within the execution tests' derived bounds: colour, scalar and normal slots;
-// and the checker mask's wrapped cells (checkerTaps).
+// the checker mask's wrapped cells (checkerTaps) and the histogram blend on the periodic tiles.
 TEST(BakeCommand, PeriodicLatticeMatchesTheReference) {
     REQUIRE_VULKAN();
     for (const char* name : {"albedo", "roughness", "normal"}) {
@@ -46,6 +46,12 @@ TEST(BakeCommand, PeriodicLatticeMatchesTheReference) {
     const Check checker = bakeCheck(slotOf("albedo", "tests/execution/bake/checker.json"), periodic());
     report("albedo, checker mask", checker);
     EXPECT_LE(checker.worstRatio, 1.0);
+    Material histogram = slotOf("albedo");
+    histogram.slots[0].hex.blend = Blend::Histogram;
+    const View view = bakeWindow(histogram.slots[0], 128);
+    const Check h = checkHistogram(histogram, view, deepestLevel(histogram.slots[0], view), periodic(), kRepeats);
+    report("albedo, histogram blend", h);
+    EXPECT_LE(h.worstRatio, 1.0);
 }
 
 // Negative controls: the plain (non-periodic) lattices drawn against the periodic reference fail the same check.
@@ -57,6 +63,12 @@ TEST(BakeCommand, PlainLatticeFailsThePeriodicReference) {
     const Check checker = bakeCheck(slotOf("albedo", "tests/execution/bake/checker.json"), on(vk::ExecutedTarget::Spirv));
     report("albedo, checker, plain", checker);
     EXPECT_GT(checker.worstRatio, 1.0);
+    Material histogram = slotOf("albedo");
+    histogram.slots[0].hex.blend = Blend::Histogram;
+    const View view = bakeWindow(histogram.slots[0], 128);
+    const Check h = checkHistogram(histogram, view, deepestLevel(histogram.slots[0], view), on(vk::ExecutedTarget::Spirv), kRepeats);
+    report("albedo, histogram, plain", h);
+    EXPECT_GT(h.worstRatio, 1.0);
 }
 
 // How far an image is from repeating: each wrap edge's mean difference across it (last column to first, last row to

@@ -373,12 +373,12 @@ inline PixelTolerance histogramTolerance(const Slot& slot, const reference::Slot
 }
 
 // A histogram-blended colour or scalar slot (the material's first) against the reference, in a view whose deepest
-// mip level is `level`.
-inline Check checkHistogram(const Material& m, const View& view, int level, const Draw& draw) {
+// mip level is `level` (`repeats`: checkAgainstReference's).
+inline Check checkHistogram(const Material& m, const View& view, int level, const Draw& draw, int repeats = 0) {
     const Slot& slot = m.slots[0];
     const reference::SlotTextures textures(slot);
     return checkAgainstReference(m, vk::RenderOutput::Albedo, view, draw, kindRow(slot.kind).oneChannel ? 1 : 4,
-                                 histogramTolerance(slot, textures, level));
+                                 histogramTolerance(slot, textures, level), repeats);
 }
 
 // ---- Normal path --------------------------------------------------------------------------------------------
