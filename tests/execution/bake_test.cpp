@@ -35,7 +35,7 @@ Draw periodic() {
 
 // hexc's shader with the periodic lattice against the reference's periodic lattice, written apart from it
 // (reference/lattice.cpp, periodicTaps), within the execution tests' derived bounds: colour, scalar and normal slots;
-// the checker mask's wrapped cells (checkerTaps) and the histogram blend on the periodic tiles.
+// the checker mask, height blending, per-tile transforms and the histogram blend on the periodic tiles.
 TEST(BakeCommand, PeriodicLatticeMatchesTheReference) {
     REQUIRE_VULKAN();
     for (const char* name : {"albedo", "roughness", "normal"}) {
@@ -43,9 +43,16 @@ TEST(BakeCommand, PeriodicLatticeMatchesTheReference) {
         report(name, c);
         EXPECT_LE(c.worstRatio, 1.0) << name;
     }
-    const Check checker = bakeCheck(slotOf("albedo", "tests/execution/bake/checker.json"), periodic());
-    report("albedo, checker mask", checker);
-    EXPECT_LE(checker.worstRatio, 1.0);
+    // The checker mask's wrapped cells (checkerTaps), height blending (rock_blend) and stepped per-tile transforms
+    // (tiles_stepped) on the periodic tiles.
+    const std::pair<const char*, const char*> variants[] = {{"checker mask", "tests/execution/bake/checker.json"},
+                                                            {"height blend", "materials/rock_blend.json"},
+                                                            {"tile transforms", "materials/tiles_stepped.json"}};
+    for (const auto& [what, file] : variants) {
+        const Check c = bakeCheck(slotOf("albedo", file), periodic());
+        report(what, c);
+        EXPECT_LE(c.worstRatio, 1.0) << what;
+    }
     Material histogram = slotOf("albedo");
     histogram.slots[0].hex.blend = Blend::Histogram;
     const View view = bakeWindow(histogram.slots[0], 128);
@@ -150,7 +157,7 @@ TEST(BakeCommand, APlainRenderOfTheWindowHasSeams) {
 // linear) bake alike: each bake is within blendTolerance of the reference (checks.h) with e_x = e_m = e_s, the gain's
 // slope k = 1 (falloff 0.5), beta = 0.6 and sum_j W_j |x_j - R| <= 1 (values in [0, 1]): e_s (1 + 1.5); so the two
 // differ by at most twice that plus the 8-bit file's rounding, 0.5/255. e_s = sampleError(3): mip level 3, as in
-// BakeCommand.PeriodicLatticeMatchesTheReference. Negative control: against the PNG bake mirrored, the same bound fails.
+// BakeCommand.PeriodicLatticeMatchesTheReference. Negative control: against the PNG bake mirrored, the bound fails.
 TEST(BakeCommand, WritesTheTexturesFormat) {
     REQUIRE_VULKAN();
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_formats";
