@@ -3,6 +3,7 @@
 // command refuses.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 
 #include "checks.h"
@@ -200,6 +201,48 @@ TEST(BakeCommand, WritesTheTexturesFormat) {
                 worst(false) * 255, bound * 255, worst(true) * 255);
     EXPECT_LE(worst(false), bound);
     EXPECT_GT(worst(true), bound);
+}
+
+// A little-endian field of a KTX2 file.
+uint64_t ktx2Word(const std::string& b, size_t at, int bytes) {
+    uint64_t v = 0;
+    for (int i = bytes - 1; i >= 0; --i) v = v << 8 | uint8_t(b[at + size_t(i)]);
+    return v;
+}
+
+// hexc's KTX2 reader refuses what a broken writer would write: a descriptor of another transfer function or format,
+// and a level that does not fit in the file; the file as written reads.
+TEST(BakeCommand, TheKtx2ReaderRefusesABrokenDescriptorOrLevel) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_ktx2_broken";
+    std::filesystem::create_directories(dir);
+    Image image{16, 16, std::vector<float>(16 * 16 * 4, 0.5f)};
+    writeImageAs(image, ImageFormat::Ktx2Srgb8, dir / "good.ktx2");
+    const std::string good = test::readFile(dir / "good.ktx2");
+    const size_t dfd = ktx2Word(good, 48, 4), level1 = 80 + 24;
+    const auto refused = [&](const std::string& name, std::string bytes, const std::string& why) {
+        std::ofstream(dir / name, std::ios::binary) << bytes;
+        try {
+            loadTexture(dir / name, true);
+        } catch (const TextureError& e) {
+            EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+            return;
+        }
+        ADD_FAILURE() << name << " was read";
+    };
+    EXPECT_EQ(loadTexture(dir / "good.ktx2", true).width, 16);
+    std::string linear = good;
+    linear[dfd + 4 + 8 + 2] = 1;  // transfer: linear
+    refused("linear_dfd.ktx2", linear, "Data Format Descriptor does not describe its vkFormat (R8G8B8A8 sRGB)");
+    std::string unorm = good;
+    unorm[12] = 37;  // vkFormat R8G8B8A8 UNORM under the sRGB descriptor
+    refused("unorm_format.ktx2", unorm, "Data Format Descriptor does not describe its vkFormat (R8G8B8A8)");
+    std::string shortLevel = good;
+    shortLevel.replace(level1 + 8, 2, std::string("\xFC\x00", 2));  // level 1: 252 bytes, a texel short of 8 x 8
+    refused("short_level.ktx2", shortLevel, "the file is truncated (level 1 does not fit)");
+    std::string past = good;
+    past[level1 + 1] = char(0x7f);  // level 1 starting past the end
+    refused("past_level.ktx2", past, "the file is truncated (level 1 does not fit)");
+    refused("cut.ktx2", good.substr(0, good.size() - 1), "the file is truncated");
 }
 
 // A green-down (flip_y) normal map's bake, read back through its baked material (plain tiling at 1/K, so pixel i reads

@@ -11,8 +11,10 @@
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "hexc/files.h"
+#include "textures/containers.h"
 
 namespace hexc {
 namespace {
@@ -85,6 +87,92 @@ bool writeExr(const Image& image, const std::filesystem::path& file) {
     return true;
 }
 
+double srgbDecoded(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+double srgbEncoded(double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055; }
+
+// As writeImage rounds an 8-bit PNG (in float), so a KTX2 level 0 holds the bytes the PNG of the same image does.
+uint8_t quantised8(float v) { return std::isnan(v) ? 0 : uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+// A KTX2 level's texels, RGBA: bytes for the 8-bit formats, floats for SFLOAT.
+struct Level {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgba8;
+    std::vector<float> rgba32f;
+};
+
+// The level below `above`: each texel the 2x2 box average of the four above it (an odd last row or column left out,
+// a side of one averaged with itself). sRGB colour is averaged in linear light and encoded again, alpha and UNORM as
+// stored; 8-bit results rounded. Averaging the stored level, not the float one, makes each level exactly the rounded
+// average of the one a reader sees above it.
+Level halved(const Level& above, bool srgb) {
+    Level l;
+    l.width = std::max(1, above.width / 2), l.height = std::max(1, above.height / 2);
+    const bool isFloat = !above.rgba32f.empty();
+    (isFloat ? l.rgba32f.resize(size_t(l.width) * l.height * 4) : l.rgba8.resize(size_t(l.width) * l.height * 4));
+    for (int y = 0; y < l.height; ++y)
+        for (int x = 0; x < l.width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                double sum = 0;
+                for (int k = 0; k < 4; ++k) {
+                    const size_t at = (size_t(std::min(2 * y + k / 2, above.height - 1)) * above.width +
+                                       size_t(std::min(2 * x + k % 2, above.width - 1))) *
+                                          4 +
+                                      size_t(c);
+                    sum += isFloat         ? double(above.rgba32f[at])
+                           : srgb && c < 3 ? srgbDecoded(above.rgba8[at] / 255.0)
+                                           : above.rgba8[at] / 255.0;
+                }
+                const size_t to = (size_t(y) * l.width + x) * 4 + size_t(c);
+                if (isFloat)
+                    l.rgba32f[to] = float(sum / 4);
+                else
+                    l.rgba8[to] = quantised8(float(srgb && c < 3 ? srgbEncoded(sum / 4) : sum / 4));
+            }
+    return l;
+}
+
+// Level 0 as stored: the image's values, rounded to 8 bits (clamped to [0, 1], NaN as 0) or as floats.
+Level levelZero(const Image& image, bool isFloat) {
+    Level l;
+    l.width = image.width, l.height = image.height;
+    if (isFloat) l.rgba32f = image.rgba;
+    for (size_t i = 0; !isFloat && i < image.rgba.size(); ++i) l.rgba8.push_back(quantised8(image.rgba[i]));
+    return l;
+}
+
+void put(std::string& out, size_t at, uint64_t v, int bytes) {
+    for (int i = 0; i < bytes; ++i) out[at + size_t(i)] = char((v >> (8 * i)) & 0xff);
+}
+
+// KTX2 bytes (KTX 2.0): the header, the level index, the descriptor (containers::ktx2Dfd), no key/value data, no
+// supercompression; the levels stored smallest first, each at a multiple of its texel's size and of 4.
+std::string ktx2Bytes(const Image& image, uint32_t vkFormat) {
+    const bool isFloat = vkFormat == 109;
+    std::vector<Level> levels{levelZero(image, isFloat)};
+    while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(halved(levels.back(), vkFormat == 43));
+    const std::string dfd = containers::ktx2Dfd(vkFormat);
+    const size_t index = 80, align = isFloat ? 16 : 4;
+    std::string out(index + 24 * levels.size(), '\0');
+    out.replace(0, 12, "\xABKTX 20\xBB\r\n\x1A\n");
+    const uint64_t header[] = {vkFormat,   isFloat ? 4u : 1u, uint32_t(image.width), uint32_t(image.height), 0, 0, 1, levels.size(), 0,
+                               out.size(), dfd.size()};  // ..., faceCount, levelCount, scheme, dfd offset and length
+    for (size_t i = 0; i < std::size(header); ++i) put(out, 12 + 4 * i, header[i], 4);
+    out += dfd;
+    for (size_t i = levels.size(); i-- > 0;) {
+        out.resize((out.size() + align - 1) / align * align, '\0');
+        const Level& l = levels[i];
+        const std::string_view data = isFloat ? std::string_view(reinterpret_cast<const char*>(l.rgba32f.data()), l.rgba32f.size() * 4)
+                                              : std::string_view(reinterpret_cast<const char*>(l.rgba8.data()), l.rgba8.size());
+        put(out, index + 24 * i, out.size(), 8);
+        put(out, index + 24 * i + 8, data.size(), 8);
+        put(out, index + 24 * i + 16, data.size(), 8);
+        out += data;
+    }
+    return out;
+}
+
+uint32_t vkFormatOf(ImageFormat format) { return format == ImageFormat::Ktx2Float ? 109 : format == ImageFormat::Ktx2Srgb8 ? 43 : 37; }
+
 }  // namespace
 
 ImageFormat imageFormat(std::string_view bytes) {
@@ -94,11 +182,18 @@ ImageFormat imageFormat(std::string_view bytes) {
     return ImageFormat::Other;
 }
 
+bool isKtx2(ImageFormat format) {
+    return format == ImageFormat::Ktx2Unorm8 || format == ImageFormat::Ktx2Srgb8 || format == ImageFormat::Ktx2Float;
+}
+
 const char* imageExtension(ImageFormat format) {
-    return format == ImageFormat::Exr ? ".exr" : format == ImageFormat::Pfm ? ".pfm" : ".png";
+    return format == ImageFormat::Exr ? ".exr" : format == ImageFormat::Pfm ? ".pfm" : isKtx2(format) ? ".ktx2" : ".png";
 }
 
 void writeImageAs(const Image& image, ImageFormat format, const std::filesystem::path& file) {
+    if (isKtx2(format))
+        return writeFileAtomically(file,
+                                   [&](const std::filesystem::path& tmp) { return writeBytes(tmp, ktx2Bytes(image, vkFormatOf(format))); });
     if (format == ImageFormat::Png16)
         return writeFileAtomically(file, [&](const std::filesystem::path& tmp) { return writeBytes(tmp, png16Bytes(image)); });
     if (format == ImageFormat::Exr) {
