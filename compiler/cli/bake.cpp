@@ -23,10 +23,12 @@ For engines and pipelines that cannot run the hex-tiling shader: each slot of MA
 N x N result repeats seamlessly (its right edge continues its left, its bottom its top). The lattice is stable
 mode's, its skew rounded so that it repeats over K (tiles stretched along u by at most 1 / (6.9 K): 1.0% at K = 4);
 tile ids are wrapped before they are hashed. Written into DIR:
-  DIR/<name>.<slot>.png       in its texture's format: PNG 8 or 16 bits (.png), OpenEXR (.exr) or PFM (.pfm),
-  (.exr, .pfm)                others (JPEG, KTX2, DDS, ...) as 8-bit PNG; PNG sRGB-encoded when the slot is sRGB,
-                              float files linear; normal slots in the slot's convention (green down with
-                              flip_y); a scalar slot as grey
+  DIR/<name>.<slot>.png       in its texture's format: PNG 8 or 16 bits (.png), OpenEXR (.exr), PFM (.pfm) or
+  (.exr, .pfm, .ktx2)         KTX2 (.ktx2: RGBA8 UNORM or sRGB, RGBA32 float, with a full mip chain of 2x2 box
+                              averages, sRGB ones in linear light); others (JPEG, DDS, compressed KTX2, ...) as
+                              8-bit PNG; 8-bit files sRGB-encoded when the slot is sRGB, float files linear;
+                              normal slots in the slot's convention (green down with flip_y); a scalar slot as
+                              grey
   DIR/<name>_baked.json       a material that tiles them plainly ("enabled": false), each slot's tiling
                               divided by K, so a surface shows the same texel density as before
 Not the compile flag --bake, which folds a material's settings into its shader's code.
@@ -75,14 +77,17 @@ Diagnostic refusal(const Material& material, size_t index, const std::string& wh
                             "hexc bake takes stable mode with the hex or checker mask on the uv projection, or plain tiling");
 }
 
-// The format a slot's bake is written in: its texture's (PNG 8 or 16 bits, OpenEXR, PFM), else 8-bit PNG.
+// The format a slot's bake is written in: its texture's (PNG 8 or 16 bits, OpenEXR, PFM, KTX2 8-bit or float RGBA),
+// else 8-bit PNG.
 ImageFormat bakedFormat(const Slot& slot) {
     const ImageFormat format = slot.file ? imageFormat(slot.file->bytes) : ImageFormat::Other;
     return format == ImageFormat::Other ? ImageFormat::Png8 : format;
 }
 
 // Float files hold linear values, as hexc reads them.
-bool floatFormat(ImageFormat format) { return format == ImageFormat::Exr || format == ImageFormat::Pfm; }
+bool floatFormat(ImageFormat format) {
+    return format == ImageFormat::Exr || format == ImageFormat::Pfm || format == ImageFormat::Ktx2Float;
+}
 
 std::string bakedFile(const Material& material, const Slot& s) { return material.name + "." + s.name + imageExtension(bakedFormat(s)); }
 

@@ -153,6 +153,17 @@ TEST(BakeCommand, APlainRenderOfTheWindowHasSeams) {
     }
 }
 
+// A fresh folder holding the rock's albedo as rock8.png, and its texels as floats (value / 255) to write in other formats.
+Image rockTexels(const std::filesystem::path& dir) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::filesystem::copy_file("materials/textures/rock_albedo.png", dir / "rock8.png");
+    const Texture rock = loadTexture(dir / "rock8.png", false);
+    Image texels{rock.width, rock.height, std::vector<float>(rock.rgba8.size())};
+    for (size_t i = 0; i < texels.rgba.size(); ++i) texels.rgba[i] = float(rock.rgba8[i]) / 255.0f;
+    return texels;
+}
+
 // A bake is written in its texture's format: a 16-bit PNG as 16-bit PNG, an OpenEXR file as OpenEXR (linear floats,
 // the baked material then linear), an 8-bit PNG as 8-bit PNG. The same texels in an EXR and an 8-bit PNG (both
 // linear) bake alike: each bake is within blendTolerance of the reference (checks.h) with e_x = e_m = e_s, the gain's
@@ -162,14 +173,9 @@ TEST(BakeCommand, APlainRenderOfTheWindowHasSeams) {
 TEST(BakeCommand, WritesTheTexturesFormat) {
     REQUIRE_VULKAN();
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_formats";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    const Texture rock = loadTexture("materials/textures/rock_albedo.png", false);
-    Image texels{rock.width, rock.height, std::vector<float>(rock.rgba8.size())};
-    for (size_t i = 0; i < texels.rgba.size(); ++i) texels.rgba[i] = float(rock.rgba8[i]) / 255.0f;
+    const Image texels = rockTexels(dir);
     writeImageAs(texels, ImageFormat::Png16, dir / "rock16.png");
     writeImageAs(texels, ImageFormat::Exr, dir / "rock.exr");
-    std::filesystem::copy_file("materials/textures/rock_albedo.png", dir / "rock8.png");
     std::ofstream(dir / "m.json") << R"({"name": "m", "template": "unlit", "hextiling": {"tiling": 4}, "slots": [
         {"name": "albedo", "kind": "color", "texture": "rock16.png"},
         {"name": "exr", "kind": "color", "colorspace": "linear", "texture": "rock.exr"},
@@ -203,11 +209,109 @@ TEST(BakeCommand, WritesTheTexturesFormat) {
     EXPECT_GT(worst(true), bound);
 }
 
+// A KTX2 file's levels as its level index gives them (read here apart from the writer): level i is max(1, N >> i) a
+// side, `texel` bytes a texel.
+struct Ktx2Level {
+    int size = 0;
+    std::string bytes;
+};
+
 // A little-endian field of a KTX2 file.
 uint64_t ktx2Word(const std::string& b, size_t at, int bytes) {
     uint64_t v = 0;
     for (int i = bytes - 1; i >= 0; --i) v = v << 8 | uint8_t(b[at + size_t(i)]);
     return v;
+}
+
+std::vector<Ktx2Level> ktx2Levels(const std::string& b) {
+    std::vector<Ktx2Level> levels;
+    const int size = int(ktx2Word(b, 20, 4));
+    for (size_t i = 0; i < ktx2Word(b, 40, 4); ++i)
+        levels.push_back({std::max(1, size >> i), b.substr(ktx2Word(b, 80 + 24 * i, 8), ktx2Word(b, 88 + 24 * i, 8))});
+    return levels;
+}
+
+// The largest distance of a level's texels from the 2x2 box average of the level above (`shift`ed by a texel, for the
+// negative control), in units of the stored value: 8-bit sRGB colour averaged in linear light (`linearLight`), else
+// as stored; floats as stored.
+double worstBoxAverage(const std::vector<Ktx2Level>& levels, bool isFloat, bool linearLight, int shift = 0) {
+    const auto value = [&](const Ktx2Level& l, int x, int y, int c) {
+        const size_t at = (size_t(y % l.size) * l.size + size_t(x % l.size)) * 4 + size_t(c);
+        float f = 0;
+        if (isFloat) std::memcpy(&f, &l.bytes[at * 4], 4);
+        return isFloat ? double(f) : uint8_t(l.bytes[at]) / 255.0;
+    };
+    double worst = 0;
+    for (size_t i = 1; i < levels.size(); ++i)
+        for (int y = 0; y < levels[i].size; ++y)
+            for (int x = 0; x < levels[i].size; ++x)
+                for (int c = 0; c < 4; ++c) {
+                    const bool decode = linearLight && c < 3;
+                    double sum = 0;
+                    for (int k = 0; k < 4; ++k) {
+                        const double v = value(levels[i - 1], 2 * x + k % 2 + shift, 2 * y + k / 2, c);
+                        sum += decode ? reference::decodeSrgb(v) : v;
+                    }
+                    const double mean = decode ? std::pow(sum / 4, 1 / 2.4) : sum / 4;  // encoded below
+                    const double expected = decode ? (sum / 4 <= 0.0031308 ? 12.92 * sum / 4 : 1.055 * mean - 0.055) : sum / 4;
+                    worst = std::max(worst, std::fabs(value(levels[i], x, y, c) - expected));
+                }
+    return worst;
+}
+
+// A KTX2 texture bakes to KTX2 of its format (R8G8B8A8 sRGB and UNORM, R32G32B32A32 float), level 0 read back by hexc's
+// reader equal to the PNG bake of the same texels: the same 8-bit texels sampled by the same shader on the same
+// device give the same floats, rounded alike, so the 8-bit bakes are equal to the bit; the float bake is within the
+// EXR-against-PNG bound of BakeCommand.WritesTheTexturesFormat. Every level below 0 is the 2x2 box average of the level
+// above, rounded: within half a step of 8 bits (1e-6 for floats, the float average of four values); sRGB averaged in
+// linear light. Negative controls: the sRGB chain checked as averaged in encoded values, and every chain checked against
+// the level above shifted by a texel, exceed those bounds.
+TEST(BakeCommand, WritesKtx2WithItsMipChain) {
+    REQUIRE_VULKAN();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_ktx2";
+    const Image texels = rockTexels(dir);
+    writeImageAs(texels, ImageFormat::Ktx2Srgb8, dir / "srgb.ktx2");
+    writeImageAs(texels, ImageFormat::Ktx2Unorm8, dir / "unorm.ktx2");
+    writeImageAs(texels, ImageFormat::Ktx2Float, dir / "float.ktx2");
+    std::ofstream(dir / "m.json") << R"({"name": "m", "template": "unlit", "hextiling": {"tiling": 4}, "slots": [
+        {"name": "srgb", "kind": "color", "texture": "srgb.ktx2"},
+        {"name": "unorm", "kind": "color", "colorspace": "linear", "texture": "unorm.ktx2"},
+        {"name": "float", "kind": "color", "colorspace": "linear", "texture": "float.ktx2"},
+        {"name": "png", "kind": "color", "texture": "rock8.png"},
+        {"name": "linear", "kind": "color", "colorspace": "linear", "texture": "rock8.png"}]})";
+    std::string err;
+    ASSERT_EQ(runHexc("bake " + (dir / "m.json").string() + " -q --size 128 -o " + (dir / "out").string(), &err), 0) << err;
+    const std::pair<const char*, const char*> against[] = {{"srgb", "png"}, {"unorm", "linear"}, {"float", "linear"}};
+    const double floatBound = 2 * 2.5 * sampleError(3, false) + 0.5 / 255;
+    for (const auto& [slot, png] : against) {
+        const std::string bytes = test::readFile(dir / "out" / ("m." + std::string(slot) + ".ktx2"));
+        const ImageFormat format = imageFormat(bytes);
+        EXPECT_TRUE(isKtx2(format)) << slot;
+        const Texture baked = loadTexture(dir / "out" / ("m." + std::string(slot) + ".ktx2"), false);
+        const Texture other = loadTexture(dir / "out" / ("m." + std::string(png) + ".png"), false);
+        ASSERT_EQ(baked.width, 128);
+        double level0 = 0;
+        for (size_t i = 0; i < other.rgba8.size(); ++i)
+            level0 = std::max(level0, std::fabs((baked.isFloat() ? baked.rgba32f[i] : baked.rgba8[i] / 255.0) - other.rgba8[i] / 255.0));
+        const std::vector<Ktx2Level> levels = ktx2Levels(bytes);
+        const bool isFloat = format == ImageFormat::Ktx2Float, srgb = format == ImageFormat::Ktx2Srgb8;
+        const double step = isFloat ? 1e-6 : 0.5 / 255 + 1e-9, chain = worstBoxAverage(levels, isFloat, srgb),
+                     shifted = worstBoxAverage(levels, isFloat, srgb, 1);
+        std::printf("  %-5s level 0 against the PNG bake: max %.2f/255; %zu levels, worst off the box average %.3g, shifted %.3g\n", slot,
+                    level0 * 255, levels.size(), chain, shifted);
+        EXPECT_LE(level0, isFloat ? floatBound : 0.0) << slot;
+        EXPECT_EQ(levels.size(), 8u) << slot;  // 128 down to 1
+        EXPECT_LE(chain, step) << slot;
+        EXPECT_GT(shifted, step) << slot;
+        if (srgb) {
+            const double encoded = worstBoxAverage(levels, false, false);  // averaged as encoded values: not this chain
+            std::printf("  srgb  checked as averaged in encoded values: worst %.3g\n", encoded);
+            EXPECT_GT(encoded, step);
+        }
+    }
+    const Material baked = test::loadMaterial(dir / "out/m_baked.json");
+    EXPECT_EQ(baked.slots[0].colorSpace, ColorSpace::Srgb);
+    EXPECT_EQ(baked.slots[2].colorSpace, ColorSpace::Linear);
 }
 
 // hexc's KTX2 reader refuses what a broken writer would write: a descriptor of another transfer function or format,

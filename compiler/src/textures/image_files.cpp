@@ -179,6 +179,13 @@ ImageFormat imageFormat(std::string_view bytes) {
     if (bytes.starts_with("\x89PNG\r\n\x1a\n") && bytes.size() > 24) return bytes[24] == 16 ? ImageFormat::Png16 : ImageFormat::Png8;
     if (bytes.starts_with("\x76\x2f\x31\x01")) return ImageFormat::Exr;
     if (bytes.starts_with("PF") || bytes.starts_with("Pf")) return ImageFormat::Pfm;
+    if (containers::kindOf(bytes) == containers::Kind::Ktx2 && bytes.size() >= 16) {
+        const uint32_t vk = uint8_t(bytes[12]) | uint32_t(uint8_t(bytes[13])) << 8 | uint32_t(uint8_t(bytes[14])) << 16 |
+                            uint32_t(uint8_t(bytes[15])) << 24;
+        if (vk == 37 || vk == 44) return ImageFormat::Ktx2Unorm8;  // BGRA as RGBA: the same family, the order hexc writes
+        if (vk == 43 || vk == 50) return ImageFormat::Ktx2Srgb8;
+        if (vk == 109) return ImageFormat::Ktx2Float;
+    }
     return ImageFormat::Other;
 }
 
