@@ -334,6 +334,23 @@ TEST(BakeCommand, TheKtx2ReaderRefusesABrokenDescriptorOrLevel) {
         ADD_FAILURE() << name << " was read";
     };
     EXPECT_EQ(loadTexture(dir / "good.ktx2", true).width, 16);
+    // The descriptors as the Khronos Data Format 1.3 spells R8G8B8A8 sRGB and R32G32B32A32 SFLOAT (KTX-Software's
+    // createDFDUnpacked writes the same): dfdTotalSize; vendor and type 0; version 2, block size 88; RGBSDA, BT.709,
+    // sRGB or linear, straight alpha; 1x1 block; bytes in plane 0; then per sample offset | (bits - 1) << 16 |
+    // channel << 24 (A = 15; qualifiers linear 0x10, signed 0x40, float 0x80), position 0, lower, upper.
+    // clang-format off
+    const std::vector<uint32_t> srgbDfd = {92, 0, 0x00580002, 0x00020101, 0, 4, 0,
+        0x00070000, 0, 0, 255, 0x01070008, 0, 0, 255, 0x02070010, 0, 0, 255, 0x1F070018, 0, 0, 255};
+    const std::vector<uint32_t> floatDfd = {92, 0, 0x00580002, 0x00010101, 0, 16, 0,
+        0xC01F0000, 0, 0xBF800000, 0x3F800000, 0xC11F0020, 0, 0xBF800000, 0x3F800000,
+        0xC21F0040, 0, 0xBF800000, 0x3F800000, 0xCF1F0060, 0, 0xBF800000, 0x3F800000};
+    // clang-format on
+    writeImageAs(image, ImageFormat::Ktx2Float, dir / "float.ktx2");
+    for (const auto& [bytes, words] : {std::pair{good, srgbDfd}, std::pair{test::readFile(dir / "float.ktx2"), floatDfd}}) {
+        ASSERT_EQ(ktx2Word(bytes, 52, 4), words.size() * 4);
+        for (size_t i = 0; i < words.size(); ++i)
+            EXPECT_EQ(ktx2Word(bytes, ktx2Word(bytes, 48, 4) + 4 * i, 4), words[i]) << "DFD word " << i;
+    }
     std::string linear = good;
     linear[dfd + 4 + 8 + 2] = 1;  // transfer: linear
     refused("linear_dfd.ktx2", linear, "Data Format Descriptor does not describe its vkFormat (R8G8B8A8 sRGB)");
