@@ -264,8 +264,8 @@ double worstBoxAverage(const std::vector<Ktx2Level>& levels, bool isFloat, bool 
 // device give the same floats, rounded alike, so the 8-bit bakes are equal to the bit; the float bake is within the
 // EXR-against-PNG bound of BakeCommand.WritesTheTexturesFormat. Every level below 0 is the 2x2 box average of the level
 // above, rounded: within half a step of 8 bits (1e-6 for floats, the float average of four values); sRGB averaged in
-// linear light. Negative controls: the sRGB chain checked as averaged in encoded values, and every chain checked against
-// the level above shifted by a texel, exceed those bounds.
+// linear light. Negative controls: level 0 against the PNG bake a texel off, the sRGB chain checked as averaged in
+// encoded values, and every chain checked against the level above shifted by a texel, exceed those bounds.
 TEST(BakeCommand, WritesKtx2WithItsMipChain) {
     REQUIRE_VULKAN();
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_ktx2";
@@ -290,16 +290,25 @@ TEST(BakeCommand, WritesKtx2WithItsMipChain) {
         const Texture baked = loadTexture(dir / "out" / ("m." + std::string(slot) + ".ktx2"), false);
         const Texture other = loadTexture(dir / "out" / ("m." + std::string(png) + ".png"), false);
         ASSERT_EQ(baked.width, 128);
-        double level0 = 0;
-        for (size_t i = 0; i < other.rgba8.size(); ++i)
-            level0 = std::max(level0, std::fabs((baked.isFloat() ? baked.rgba32f[i] : baked.rgba8[i] / 255.0) - other.rgba8[i] / 255.0));
+        const auto level0Against = [&](size_t shift) {  // the PNG bake `shift` values on (a texel: 4), for the control
+            double worst = 0;
+            for (size_t i = 0; i < other.rgba8.size(); ++i) {
+                const double v = baked.isFloat() ? baked.rgba32f[i] : baked.rgba8[i] / 255.0;
+                worst = std::max(worst, std::fabs(v - other.rgba8[(i + shift) % other.rgba8.size()] / 255.0));
+            }
+            return worst;
+        };
+        const double level0 = level0Against(0), level0Shifted = level0Against(4);
         const std::vector<Ktx2Level> levels = ktx2Levels(bytes);
         const bool isFloat = format == ImageFormat::Ktx2Float, srgb = format == ImageFormat::Ktx2Srgb8;
         const double step = isFloat ? 1e-6 : 0.5 / 255 + 1e-9, chain = worstBoxAverage(levels, isFloat, srgb),
                      shifted = worstBoxAverage(levels, isFloat, srgb, 1);
-        std::printf("  %-5s level 0 against the PNG bake: max %.2f/255; %zu levels, worst off the box average %.3g, shifted %.3g\n", slot,
-                    level0 * 255, levels.size(), chain, shifted);
+        std::printf(
+            "  %-5s level 0 against the PNG bake: max %.2f/255 (a texel off: %.2f/255); %zu levels, worst off the box average "
+            "%.3g, shifted %.3g\n",
+            slot, level0 * 255, level0Shifted * 255, levels.size(), chain, shifted);
         EXPECT_LE(level0, isFloat ? floatBound : 0.0) << slot;
+        EXPECT_GT(level0Shifted, isFloat ? floatBound : 0.0) << slot;
         EXPECT_EQ(levels.size(), 8u) << slot;  // 128 down to 1
         EXPECT_LE(chain, step) << slot;
         EXPECT_GT(shifted, step) << slot;
