@@ -1,7 +1,8 @@
-// hexc: dispatches to the command line's commands (cli/: compile, render, preview, library, lint, export-mtlx) and to
+// hexc: dispatches to the command line's commands (cli/: compile, render, preview, bake, library, lint, export-mtlx) and to
 // `hexc edit` (edit/). It stands above both wings, which need nothing of each other.
 #include <csignal>
 
+#include "bake.h"
 #include "build.h"
 #include "edit.h"
 #include "export.h"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     for (int s : {SIGINT, SIGTERM, SIGHUP}) std::signal(s, interrupted);
     std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && args[0] == "render") return cli::renderCommand({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "bake") return cli::bakeCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "preview") return cli::previewCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "library") return cli::libraryCommand({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "edit") return edit::editCommand({args.begin() + 1, args.end()});

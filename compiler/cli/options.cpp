@@ -43,6 +43,7 @@ std::string description() {
   hexc MATERIAL.json|MATERIAL.mtlx|SCENE.json [MORE ...] -o DIR [options]
   hexc render MATERIAL.json -o IMAGE.{pfm,png} [options]   (hexc render --help)
   hexc preview MATERIAL.json -o PREVIEW.png [--cell N]     (hexc preview --help)
+  hexc bake MATERIAL.json -o DIR --size N [--repeats K]    (hexc bake --help: seamless textures, no shader)
   hexc library --target )" +
            joined(libraryTargetNames(), "|") + R"( -o DIR   (hexc library --help)
   hexc export-mtlx MATERIAL.json -o MATERIAL.mtlx          (hexc export-mtlx --help)
@@ -204,7 +205,8 @@ void addShaderOptions(CLI::App& app, Arguments& a, Unresolved& u) {
                  "the manifest also gives where the material, its textures, template and\nlayout file are, relative to the output folder "
                  "(always with --engine:\nrelative to each package's folder)");
     app.add_flag("--bake", a.options.bake,
-                 "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms");
+                 "numeric settings become constants folded into the code (one shader\nper material) instead of uniforms (not `hexc bake`, "
+                 "which bakes textures)");
     app.add_flag_callback(
         "--no-specialise", [&] { a.options.specialise = false; },
         "emit every feature even when a setting turns it off; the uniforms decide");

@@ -68,7 +68,8 @@ std::vector<double> numbers(const std::string& text, char sep, size_t count, con
     return out;
 }
 
-// Parses the material, reporting diagnostics; nullopt on error.
+}  // namespace
+
 std::optional<Material> loadMaterial(const std::string& path, const Messages& m) {
     ParseResult r = parseMaterialFile(path);
     m.report(byPosition(r.diagnostics));
@@ -82,40 +83,7 @@ std::unique_ptr<vk::Runner> makeRunner(const Messages& m) {
     return runner;
 }
 
-// Runs a command body, mapping failures to the documented exit codes. `material` names the input an out-of-memory
-// condition is reported against (the body fills it in once it knows it).
-template <typename Body>
-int guarded(const std::string& material, const Messages& m, Body body) {
-    try {
-        return body();
-    } catch (const UsageError& e) {
-        *m.text << "hexc: " << e.message << "\n";
-        return kUsage;
-    } catch (const CompileError& e) {
-        m.report(byPosition(e.diagnostics));
-        return kInvalidInput;
-    } catch (const std::invalid_argument& e) {
-        *m.text << "hexc: " << e.what() << "\n";
-        return kInvalidInput;
-    } catch (const TextureError& e) {  // a texture that passed validation (its header) but does not decode
-        *m.text << "hexc: " << e.what() << "\n";
-        return kInvalidInput;
-    } catch (const std::bad_alloc&) {  // an input larger than this machine holds, within the budgets: not an output's fault
-        m.report({Diagnostic::make(Code::OutOfMemory, {material}, "",
-                                   "out of memory: its textures or the image need more than this machine has")});
-        return kInvalidInput;
-    } catch (const vk::VulkanError& e) {
-        *m.text << "hexc: Vulkan: " << e.what() << "\n";
-        return kNoVulkan;
-    } catch (const std::exception& e) {
-        *m.text << "hexc: " << e.what() << "\n";
-        return kWriteFailed;
-    }
-}
-
-// Refuses, before any texture is decoded, one over the budget of `stage` among the material's slots (or `only` and its
-// height slot).
-void checkTexelBudget(const Material& material, const TexelBudget& budget, const Slot* only = nullptr) {
+void checkTexelBudget(const Material& material, const TexelBudget& budget, const Slot* only) {
     Diagnostics over;
     for (const Slot& s : material.slots) {
         if (only && s.name != only->name && !(only->heightBlend && s.name == only->heightBlend->slot)) continue;
@@ -125,8 +93,6 @@ void checkTexelBudget(const Material& material, const TexelBudget& budget, const
     if (!over.empty()) throw CompileError{over};
 }
 
-// The sRGB transfer function (IEC 61966-2-1) on RGB, as an sRGB swapchain encodes what a shader writes; alpha
-// stays linear. Negative values (no colour) become 0.
 void encodeSrgb(Image& image) {
     for (size_t i = 0; i < image.rgba.size(); ++i) {
         if (i % 4 == 3) continue;
@@ -134,6 +100,8 @@ void encodeSrgb(Image& image) {
         image.rgba[i] = float(v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
     }
 }
+
+namespace {
 
 // What render and preview share beyond the image: the resource layout, a template and the encoding.
 struct ShowOptions {

@@ -17,7 +17,7 @@ const char* const kExitCodes = R"(Exit codes:
   1  a material, template or texture is invalid, or compilation failed (diagnostics on stderr); lint: a check warned
   2  bad command line
   3  an output could not be written
-  4  render, preview: no Vulkan device, or the device failed)";
+  4  render, preview, bake: no Vulkan device, or the device failed)";
 
 // "; did you mean `--vertex`?" for the first unexpected argument that looks like a misspelt option, else "".
 std::string suggestOption(const CLI::App& app) {

@@ -69,6 +69,12 @@ hexcTilesPaper(st, dx, dy, lattice)
 //@ lattice.stable
 hexcTilesStable(st, dx, dy, cell, lattice)
 
+//@ lattice.periodic
+hexcTilesPeriodic(st, dx, dy, ${period}, ${repeats}, lattice)
+
+//@ lattice.checker.periodic
+hexcTilesCheckerPeriodic(st, dx, dy, ${cells}, lattice)
+
 //@ lattice.checker
 hexcTilesChecker(st, dx, dy, cell, lattice)
 

@@ -226,14 +226,15 @@ inline Image drawn(const Draw& draw, const Material& m, vk::RenderOutput output,
 using PixelTolerance = std::function<double(const reference::SlotResult&, size_t pixel)>;
 
 // Runs a one-slot material on the GPU and compares `channels` channels of every pixel with the reference, each pixel
-// against its own tolerance.
+// against its own tolerance. `repeats` > 0: the reference's periodic lattice over that many units of st (hexc bake).
 inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, const Draw& draw, int channels,
-                                   const PixelTolerance& tolerance) {
+                                   const PixelTolerance& tolerance, int repeats = 0) {
     const Slot& slot = m.slots[0];
     Image gpu = drawn(draw, m, output, view);
     const reference::Heights heights(m, slot);
     const reference::SlotTextures textures(slot);
-    std::vector<reference::SlotResult> ref = reference::evaluateView(slot, *textures.texture, view, heights.source(), textures.lut.get());
+    std::vector<reference::SlotResult> ref =
+        reference::evaluateView(slot, *textures.texture, view, heights.source(), textures.lut.get(), repeats);
     Check check;
     check.output = output;
     check.channels = channels;
@@ -263,7 +264,7 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
 // plane's bound; a normal slot's plane gradient, both components within that, by sqrt(2) times it in length, which the
 // projection onto the surface does not lengthen. `level`: the deepest mip level the view reads.
 inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, const View& view, int level, const Draw& draw, double ex,
-                                   double em, int channels) {
+                                   double em, int channels, int repeats = 0) {
     const Slot& slot = m.slots[0];
     // The height map is 8-bit linear data, sampled at the view's levels like the slot, as is a normal map.
     const double eh = sampleError(level, false);
@@ -274,12 +275,15 @@ inline Check checkAgainstReference(const Material& m, vk::RenderOutput output, c
     const auto blend = [&](const reference::SlotResult& r) {
         return slot.heightBlend ? ex + heightTolerance(r, eh, metric, slot, blended) : pixelTolerance(r, ex, em, slot.hex, blended);
     };
-    return checkAgainstReference(m, output, view, draw, channels, [&](const reference::SlotResult& r, size_t) {
-        if (r.planes.empty()) return blend(r);
-        double t = 0;
-        for (size_t k = 0; k < r.planes.size(); ++k) t += r.planeWeights[k] * blend(r.planes[k]);
-        return (normal ? std::sqrt(2.0) : 1.0) * t;
-    });
+    return checkAgainstReference(
+        m, output, view, draw, channels,
+        [&](const reference::SlotResult& r, size_t) {
+            if (r.planes.empty()) return blend(r);
+            double t = 0;
+            for (size_t k = 0; k < r.planes.size(); ++k) t += r.planeWeights[k] * blend(r.planes[k]);
+            return (normal ? std::sqrt(2.0) : 1.0) * t;
+        },
+        repeats);
 }
 
 inline void report(const char* name, const Check& c) {
@@ -287,14 +291,15 @@ inline void report(const char* name, const Check& c) {
                 c.errors.max, c.errors.max * 255, c.errors.mean, c.errors.overOne255, c.toleranceAtMax, c.worstRatio);
 }
 
-// A colour or scalar slot (the material's first) against the reference, in a view whose deepest mip level is `level`.
-inline Check checkColor(const Material& m, const View& view, int level, const Draw& draw) {
+// A colour or scalar slot (the material's first) against the reference, in a view whose deepest mip level is `level`
+// (`repeats`: checkAgainstReference's).
+inline Check checkColor(const Material& m, const View& view, int level, const Draw& draw, int repeats = 0) {
     const Slot& slot = m.slots[0];
     // MaterialX mode decodes after filtering the stored texels: their 8-bit linear error, times the sRGB curve's steepest
     // slope (2.4 / 1.055 at 1).
     double es = slot.shaderDecodes() ? 2.4 / 1.055 * sampleError(level, false) : sampleError(level, slot.colorSpace == ColorSpace::Srgb);
     // Colour: the luminance metric errs by at most e_s (its weights sum to 1); scalar: the channel itself.
-    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, draw, es, es, kindRow(slot.kind).oneChannel ? 1 : 4);
+    return checkAgainstReference(m, vk::RenderOutput::Albedo, view, level, draw, es, es, kindRow(slot.kind).oneChannel ? 1 : 4, repeats);
 }
 
 inline Check checkColor(const Material& m, bool minified, const Draw& draw) {
@@ -368,17 +373,17 @@ inline PixelTolerance histogramTolerance(const Slot& slot, const reference::Slot
 }
 
 // A histogram-blended colour or scalar slot (the material's first) against the reference, in a view whose deepest
-// mip level is `level`.
-inline Check checkHistogram(const Material& m, const View& view, int level, const Draw& draw) {
+// mip level is `level` (`repeats`: checkAgainstReference's).
+inline Check checkHistogram(const Material& m, const View& view, int level, const Draw& draw, int repeats = 0) {
     const Slot& slot = m.slots[0];
     const reference::SlotTextures textures(slot);
     return checkAgainstReference(m, vk::RenderOutput::Albedo, view, draw, kindRow(slot.kind).oneChannel ? 1 : 4,
-                                 histogramTolerance(slot, textures, level));
+                                 histogramTolerance(slot, textures, level), repeats);
 }
 
 // ---- Normal path --------------------------------------------------------------------------------------------
-// A normal slot (the material's first) against the reference, as derivatives.
-inline Check checkNormal(const Material& m, const View& view, int level, const Draw& draw) {
+// A normal slot (the material's first) against the reference, as derivatives (`repeats`: checkAgainstReference's).
+inline Check checkNormal(const Material& m, const View& view, int level, const Draw& draw, int repeats = 0) {
     const Slot& slot = m.slots[0];
     const bool triplanar = slot.hex.projection == Projection::Triplanar;
     TextureBounds b = bounds(sampled(slot));
@@ -388,7 +393,7 @@ inline Check checkNormal(const Material& m, const View& view, int level, const D
     double ed = 2 * sampleError(level, false) * (1 + b.maxDeriv) / b.minZ;
     // Triplanar: the surface gradient (x, y, z) from the planes' (checkAgainstReference; the plane weights' own float32
     // error, ~1e-7, is negligible).
-    return checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, ed, std::sqrt(2.0) * ed, triplanar ? 3 : 2);
+    return checkAgainstReference(m, vk::RenderOutput::Derivative, view, level, draw, ed, std::sqrt(2.0) * ed, triplanar ? 3 : 2, repeats);
 }
 
 inline Check checkNormal(const Material& m, bool minified, const Draw& draw) {

@@ -25,7 +25,8 @@ struct Taps {
     std::array<double, 3> weight;  // the mask's weights
 };
 
-// The taps of hex.mask at st: the hex lattice's triangle, the checker's two grids, or the noise masks' three copies.
-Taps maskTaps(Vec2 st, const HexTiling& hex);
+// The taps of hex.mask at st: the hex lattice's triangle, the checker's two grids, or the noise masks' three copies;
+// `repeats` > 0: the hex and checker masks' periodic lattices over that many units of st (stable mode).
+Taps maskTaps(Vec2 st, const HexTiling& hex, int repeats = 0);
 
 }  // namespace hexc::reference

@@ -101,7 +101,9 @@ MaskFrame maskFrame(Vec2 st, int scale) {
 }
 
 // Two square grids, B shifted by half a cell; each cell is a tile with its own transform, sampled about its centre.
-Taps checkerTaps(Vec2 st, int scale) {
+// `repeats` > 0 (hexc bake): a cell's index is taken modulo K scale before it makes the id, so that cells K units of st
+// apart share their transform.
+Taps checkerTaps(Vec2 st, int scale, int repeats) {
     const MaskFrame frame = maskFrame(st, scale);
     Taps taps{};
     for (int64_t grid = 0; grid < 2; ++grid) {
@@ -110,7 +112,10 @@ Taps checkerTaps(Vec2 st, int scale) {
         const Vec2 f{frame.q[0] + shift - corner[0], frame.q[1] + shift - corner[1]};
         // 2A and 2B + (1, 1): the grids never share an id. TileId is wider than the shader's 32 bits; the hash
         // reads its low 32 bits, which is the shader's wrap-around.
-        taps.id[size_t(grid)] = {2 * (frame.base[0] + int64_t(corner[0])) + grid, 2 * (frame.base[1] + int64_t(corner[1])) + grid};
+        std::array<int64_t, 2> cell{frame.base[0] + int64_t(corner[0]), frame.base[1] + int64_t(corner[1])};
+        if (repeats > 0)
+            for (int64_t& c : cell) c = ((c % (repeats * scale)) + repeats * scale) % (repeats * scale);
+        taps.id[size_t(grid)] = {2 * cell[0] + grid, 2 * cell[1] + grid};
         taps.local[size_t(grid)] = {(f[0] - 0.5) / scale, (f[1] - 0.5) / scale};
         // The cell's centre, corner + 1/2 - shift in q, modulo 1 in st (the frame's base is whole st units).
         const Vec2 centre{(corner[0] + 0.5 - shift) / scale, (corner[1] + 0.5 - shift) / scale};
@@ -143,14 +148,37 @@ Taps noiseTaps(Vec2 st, const HexTiling& hex) {
     return taps;
 }
 
+// `hexc bake`'s periodic lattice (docs/cli.md#hexc-bake): stable mode's skew A0 = (97/28, -2; 0, 4) replaced by
+// A = P / K, P = round(K A0), so that st + K e maps to skewed + P e. The triangle and centres come from the unwrapped
+// ids (the texture repeats with period 1 and K is whole, so a tile K units away samples the same); the transform from
+// the id reduced modulo P's lattice: id - P floor(P^-1 id), in exact integers.
+Taps periodicTaps(Vec2 st, int repeats) {
+    const int64_t k = repeats, a = std::llround(kStableScale * double(k)), b = -2 * k, d = 4 * k;  // P = (a, b; 0, d)
+    const Triangle tri = triangleInSkewed((double(a) * st[0] + double(b) * st[1]) / double(k), double(d) * st[1] / double(k));
+    const auto floorDiv = [](int64_t x, int64_t m) { return x / m - (x % m != 0 && x < 0); };  // m > 0
+    Taps taps{{}, {}, {}, tri.weight};
+    for (size_t i = 0; i < 3; ++i) {
+        const TileId id = tri.id[i];
+        // P^-1 id = (d x - b y, a y) / (a d): q = its floor, the lattice vector P q taken off.
+        const int64_t det = a * d, fx = d * id[0] - b * id[1], fy = a * id[1];
+        const int64_t qx = floorDiv(fx, det), qy = floorDiv(fy, det);
+        taps.id[i] = {id[0] - (a * qx + b * qy), id[1] - d * qy};
+        const Vec2 c{double(k * fx) / double(det), double(k * fy) / double(det)};  // A^-1 id = K P^-1 id
+        taps.local[i] = {st[0] - c[0], st[1] - c[1]};
+        taps.shift[i] = c;
+    }
+    return taps;
+}
+
 }  // namespace
 
-Taps maskTaps(Vec2 st, const HexTiling& hex) {
+Taps maskTaps(Vec2 st, const HexTiling& hex, int repeats) {
     switch (hex.mask) {
         case Mask::Hex:
+            if (repeats > 0) return periodicTaps(st, repeats);
             return hexTaps(st, hex.mode);
         case Mask::Checker:
-            return checkerTaps(st, hex.maskScale);
+            return checkerTaps(st, hex.maskScale, repeats);
         case Mask::Noise:
         case Mask::Noise3:
             return noiseTaps(st, hex);

@@ -280,7 +280,7 @@ SlotResult blendTiles(const Slot& slot, const Taps& taps, const Tiles& tiles, Ve
 }  // namespace
 
 SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel,
-                      const HeightSource* height, const SampledTexture* lut) {
+                      const HeightSource* height, const SampledTexture* lut, int repeats) {
     const HexTiling& hex = slot.hex;
     if (!hex.enabled) return untiled(slot, texture, st, dx, dy);
     if (hex.mode == HashMode::MaterialX) return evaluateMaterialX(slot, texture, st, dx, dy);
@@ -290,7 +290,7 @@ SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, 
     if (histogram && !lut)
         throw std::invalid_argument("reference: slot " + slot.name + " blends histograms but no look-up table was given");
 
-    Taps taps = maskTaps(st, hex);
+    Taps taps = maskTaps(st, hex, repeats);
     std::array<bool, 3> fetched{true, true, true};
     if (hex.adaptive()) {
         fetched = adaptiveTaps(taps.weight, hex);
@@ -329,9 +329,9 @@ Heights::Heights(const Material& material, const Slot& slot) {
 }
 
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx, double dudy, double dvdy,
-                    std::array<uint32_t, 2> pixel, const HeightSource* height, const SampledTexture* lut) {
+                    std::array<uint32_t, 2> pixel, const HeightSource* height, const SampledTexture* lut, int repeats) {
     const auto [a, b] = slot.hex.tiling;
-    return evaluateAt(slot, texture, {u * a, v * b}, {dudx * a, dvdx * b}, {dudy * a, dvdy * b}, pixel, height, lut);
+    return evaluateAt(slot, texture, {u * a, v * b}, {dudx * a, dvdx * b}, {dudy * a, dvdy * b}, pixel, height, lut, repeats);
 }
 
 SlotResult evaluateTriplanar(const Slot& slot, const SampledTexture& texture, const SurfacePoint& point, std::array<uint32_t, 2> pixel,
@@ -388,7 +388,7 @@ SurfacePoint previewSphere(double u, double v, double dudx, double dvdx, double 
 }
 
 std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view, const HeightSource* height,
-                                     const SampledTexture* lut) {
+                                     const SampledTexture* lut, int repeats) {
     std::vector<SlotResult> out;
     out.reserve(size_t(view.width) * size_t(view.height));
     const auto [u0, v0, u1, v1] = view.uvRect;
@@ -399,18 +399,18 @@ std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& tex
             const double u = u0 + (i + 0.5) / view.width * (u1 - u0), v = v0 + (j + 0.5) / view.height * (v1 - v0);
             const std::array<uint32_t, 2> pixel{uint32_t(i), uint32_t(j)};
             out.push_back(triplanar ? evaluateTriplanar(slot, texture, previewSphere(u, v, dudx, 0, 0, dvdy), pixel, height, lut)
-                                    : evaluate(slot, texture, u, v, dudx, 0, 0, dvdy, pixel, height, lut));
+                                    : evaluate(slot, texture, u, v, dudx, 0, 0, dvdy, pixel, height, lut, repeats));
         }
     return out;
 }
 
 Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output, const HeightSource* height,
-             const SampledTexture* lut) {
+             const SampledTexture* lut, int repeats) {
     Image image;
     image.width = view.width;
     image.height = view.height;
     image.rgba.resize(size_t(view.width) * size_t(view.height) * 4);
-    const std::vector<SlotResult> results = evaluateView(slot, texture, view, height, lut);
+    const std::vector<SlotResult> results = evaluateView(slot, texture, view, height, lut, repeats);
     for (size_t p = 0; p < results.size(); ++p) {
         const SlotResult& r = results[p];
         const Rgba out = output == Output::Value ? r.value : Rgba{r.weights[0], r.weights[1], r.weights[2], 1};

@@ -180,8 +180,11 @@ private:
 // weights W_i / sqrt(sum W_j^2) (Heitz and Neyret 2018, Eq. 12) about the mean 0.5; each channel's G is mapped back by
 // the table's row for the level of detail lod = log2 rho of the st gradients (as the sampler defines rho), rows
 // interpolated linearly in lod and entries in G; the channels return to RGB with the table's row 0.
+//
+// `repeats` > 0: the periodic lattice of `hexc bake` (docs/cli.md#hexc-bake) over that many units of st, for a
+// stable-mode slot with the hex or checker mask (others are refused).
 SlotResult evaluateAt(const Slot& slot, const SampledTexture& texture, Vec2 st, Vec2 dx, Vec2 dy, std::array<uint32_t, 2> pixel = {0, 0},
-                      const HeightSource* height = nullptr, const SampledTexture* lut = nullptr);
+                      const HeightSource* height = nullptr, const SampledTexture* lut = nullptr, int repeats = 0);
 
 // HashMode::MaterialX (reference/materialx.cpp, docs/materialx.md#materialx-mode): MaterialX 1.39's hextiledimage
 // (colour and scalar slots: the colour blended by luma, then the channel) or hextilednormalmap (normal slots: the
@@ -195,7 +198,8 @@ double decodeSrgb(double c);
 
 // evaluateAt at st = uv * slot.hex.tiling, with uv gradients.
 SlotResult evaluate(const Slot& slot, const SampledTexture& texture, double u, double v, double dudx, double dvdx, double dudy, double dvdy,
-                    std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr, const SampledTexture* lut = nullptr);
+                    std::array<uint32_t, 2> pixel = {0, 0}, const HeightSource* height = nullptr, const SampledTexture* lut = nullptr,
+                    int repeats = 0);
 
 // A surface point for the triplanar projection: world position, normal (any length) and the position's
 // screen-space gradients.
@@ -222,11 +226,12 @@ enum class Output { Value, Weights };  // Weights: (w.x, w.y, w.z, 1) per pixel
 
 // Every pixel of a view, row by row (row 0 at the top), with its details: the slot at the pixel centre's uv, or
 // for the triplanar projection at previewSphere of it.
+// `repeats`: as evaluateAt's (uv planes only).
 std::vector<SlotResult> evaluateView(const Slot& slot, const SampledTexture& texture, const View& view,
-                                     const HeightSource* height = nullptr, const SampledTexture* lut = nullptr);
+                                     const HeightSource* height = nullptr, const SampledTexture* lut = nullptr, int repeats = 0);
 
 Image render(const Slot& slot, const SampledTexture& texture, const View& view, Output output, const HeightSource* height = nullptr,
-             const SampledTexture* lut = nullptr);
+             const SampledTexture* lut = nullptr, int repeats = 0);
 
 // A slot's textures as the reference samples them: its own, or for the histogram blend its Gaussian texture and
 // inverse look-up table, derived by hexc's precomputation (what the compiler writes) from the slot's texture file.

@@ -55,6 +55,10 @@ struct CompileOptions {
     // Numeric settings become specialisation constants, frozen by spirv-opt so it can fold them, instead of
     // uniforms (one shader then serves one material only). Per-frame values stay uniforms.
     bool bake = false;
+    // > 0: the lattice of stable-mode slots with the hex or checker mask is periodic over K = periodicRepeats units of
+    // st (`hexc bake`, docs/cli.md#hexc-bake): the hex skew rounded to an integer matrix over K, tile ids wrapped. Not
+    // `bake` above, which folds settings into code. Other slots are left as they are; `hexc bake` refuses them.
+    int periodicRepeats = 0;
     // A layered material's layer of weight 0 at a pixel is not fetched (its slots' taps sit in a branch). Off: every
     // layer is fetched at every pixel, as naive per-layer hex-tiling does (the same image; the bench's baseline).
     bool skipLayers = true;

@@ -53,6 +53,7 @@ enum class Code {
     NormalTilt,
     TextureSeam,
     TextureNotFinite,
+    BakeUnsupported,
     // templates and shader code
     UnknownTemplate,
     TemplateUnreadable,

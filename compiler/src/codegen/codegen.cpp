@@ -95,7 +95,7 @@ public:
             {"texture", sp.texture},
             {"tex", textureOf(sp)},
             {"heighttex", textureOf(sp.heightMap ? plan_.slots[*sp.heightMap] : sp)},
-            {"tiles", sp.layerLattice ? layerLatticeCall(plan_, *sp.layerLattice) : expand(l.section, {})},
+            {"tiles", sp.layerLattice ? layerLatticeCall(plan_, *sp.layerLattice) : tiles(l)},
             {"settings", settings(l, sp, fixed, !sp.layerLattice, true)},
             {"luma", "vec3(" + literal(sp.luma[0]) + ", " + literal(sp.luma[1]) + ", " + literal(sp.luma[2]) + ")"},
             {"srgb", literal(sp.srgb)},
@@ -111,13 +111,22 @@ public:
         return assembly.use(sampling + "\n\n" + expand(sp.coordinates, t), plan_.general ? nullptr : &fixed, sp.name) + "\n";
     }
 
+    // The call computing a lattice's tiles; the periodic lattices' matrix, repeats and cells a row are literals.
+    std::string tiles(const LatticePlan& l) const {
+        const std::array<int, 4>& p = l.period;
+        return expand(l.section,
+                      {{"period", "ivec4(" + literal(p[0]) + ", " + literal(p[1]) + ", " + literal(p[2]) + ", " + literal(p[3]) + ")"},
+                       {"repeats", literal(l.repeats)},
+                       {"cells", literal(l.repeats * l.maskScale)}});
+    }
+
     // The function computing the tiles of the layers' lattice `index` (LayersPlan::lattices) and the variable sharing
     // them, with the settings of the lattice's first slot (which names its specialised library functions).
     std::string layerLattice(size_t index, Assembly& assembly) const {
         const SlotPlan& sp = plan_.slots[plan_.layers->lattices[index].slot];
         const LatticePlan& l = plan_.lattices[sp.lattice];
         Settings fixed;
-        const std::string text = hexc::layerLattice(plan_, index, expand(l.section, {}), settings(l, sp, fixed, true, false));
+        const std::string text = hexc::layerLattice(plan_, index, tiles(l), settings(l, sp, fixed, true, false));
         return assembly.use(text, plan_.general ? nullptr : &fixed, sp.name) + "\n\n";
     }
 

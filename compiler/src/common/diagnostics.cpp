@@ -51,6 +51,7 @@ constexpr CodeInfo kCatalogue[] = {
     {Code::NormalTilt, "HX131", Warning},
     {Code::TextureSeam, "HX132", Warning},
     {Code::TextureNotFinite, "HX133", Warning},
+    {Code::BakeUnsupported, "HX134", Error},
     {Code::UnknownTemplate, "HX200", Error},
     {Code::TemplateUnreadable, "HX201", Error},
     {Code::TemplateNoVersion, "HX202", Error},

@@ -131,12 +131,21 @@ SlotPlan planSlot(const Slot& slot, bool all) {
     return sp;
 }
 
-LatticePlan planLattice(const HexTiling& h, bool all) {
+LatticePlan planLattice(const HexTiling& h, bool all, int repeats) {
     static constexpr auto kMaskLattices = byEnum<Mask::Noise3>({"lattice.stable", "lattice.checker", "lattice.noise", "lattice.noise"});
     LatticePlan l;
     l.section = h.mode == HashMode::Paper       ? "lattice.paper"
                 : h.mode == HashMode::MaterialX ? "lattice.materialx"
                                                 : kMaskLattices[size_t(h.mask)];
+    if (repeats > 0 && l.section == "lattice.stable") {
+        // P = round(K A0), A0 = (97/28, -2; 0, 4) stable mode's skew (templates/library/hextiling/lattice.glsl).
+        l.section = "lattice.periodic";
+        l.repeats = repeats;
+        l.period = {int(std::lround(97.0 * repeats / 28.0)), 0, -2 * repeats, 4 * repeats};
+    } else if (repeats > 0 && l.section == "lattice.checker") {
+        l.section = "lattice.checker.periodic";  // its cells wrapped modulo K maskScale
+        l.repeats = repeats;
+    }
     l.rotate = all || h.rotation != 0;
     l.transform = h.hasTransforms();
     l.rotationSteps = h.rotationSteps;
@@ -191,7 +200,7 @@ void planSlots(const Material& material, const CompileOptions& options, ShaderPl
             while (l < latticeKeys.size() && !(options.shareLattice && *latticeKeys[l] == slot.hex.lattice())) ++l;
             if (l == latticeKeys.size()) {
                 latticeKeys.push_back(&slot.hex.lattice());
-                plan.lattices.push_back(planLattice(slot.hex, !options.specialise));
+                plan.lattices.push_back(planLattice(slot.hex, !options.specialise, options.periodicRepeats));
             }
         }
         sp.name = sp.heightMapName = slot.name;

@@ -57,6 +57,10 @@ struct LatticePlan {
     std::array<int, 2> offsetSteps{0, 0};
     int maskScale = 1;    // cells per st unit of the checker and noise masks
     bool triple = false;  // the noise mask draws three noises
+    // The periodic lattices (CompileOptions::periodicRepeats): K, and for the hex mask ("lattice.periodic") the integer
+    // matrix P nearest K times stable mode's skew, by columns ("lattice.checker.periodic" wraps its cells instead).
+    int repeats = 0;
+    std::array<int, 4> period{};
     ParamRef tiling, planeSharpness, rotation, rotationRange, scaleRange, offset, originCell, originOffset;
 };
 

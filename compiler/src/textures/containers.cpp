@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstring>
 #include <iterator>
 #include <memory>
@@ -198,6 +199,41 @@ uint64_t layerBytes(const Header& h) {
     return uint64_t((h.width + f.block - 1) / f.block) * uint64_t((h.height + f.block - 1) / f.block) * f.blockBytes;
 }
 
+// Level `level` of every layer: its texels, at least one a side, in whole blocks.
+uint64_t levelBytes(const Header& h, int level) {
+    Header at = h;
+    at.width = std::max(1, h.width >> level), at.height = std::max(1, h.height >> level);
+    return layerBytes(at) * uint64_t(std::max(1, h.layers));
+}
+
+uint32_t word(std::string_view bytes, uint64_t at) {
+    uint32_t v = 0;
+    std::memcpy(&v, bytes.data() + at, 4);
+    return v;
+}
+
+// Why a KTX2 file's level index or descriptor cannot be trusted, or empty: each level whole within the file, no more
+// levels than halving the larger side gives, and for the formats hexc writes the descriptor of the vkFormat (a
+// descriptor saying other channels, bits or transfer would be read as something it is not).
+std::string ktx2Problem(const Header& h, std::string_view bytes) {
+    if (h.mips > int(std::bit_width(uint32_t(std::max(h.width, h.height)))))
+        return "KTX2 levelCount " + std::to_string(h.mips) + " exceeds the size's";
+    if (80 + uint64_t(h.mips) * 24 > bytes.size()) return "the file is truncated (the level index does not fit)";
+    for (int i = 0; i < h.mips; ++i) {
+        const uint64_t offset = word(bytes, 80 + 24 * i) | uint64_t(word(bytes, 84 + 24 * i)) << 32;
+        const uint64_t length = word(bytes, 88 + 24 * i) | uint64_t(word(bytes, 92 + 24 * i)) << 32;
+        if (length < levelBytes(h, i) || offset > bytes.size() || length > bytes.size() - offset)
+            return "the file is truncated (level " + std::to_string(i) + " does not fit)";
+    }
+    const std::string dfd = ktx2Dfd(h.format->code);
+    const uint32_t at = word(bytes, 48), length = word(bytes, 52);
+    if (dfd.empty() || length == 0) return {};
+    std::string found = length == dfd.size() && at <= bytes.size() - length ? std::string(bytes.substr(at, length)) : std::string();
+    if (found.size() == dfd.size()) found[13] = dfd[13];  // colour primaries: any
+    if (found != dfd) return std::string("the KTX2 Data Format Descriptor does not describe its vkFormat (") + h.format->name + ")";
+    return {};
+}
+
 Header header(Kind kind, std::string_view bytes) {
     std::vector<unsigned char> b = prefix(bytes, 148);
     Header h = kind == Kind::Ktx2 ? ktx2Header(b) : ddsHeader(b);
@@ -206,6 +242,7 @@ Header header(Kind kind, std::string_view bytes) {
     // Level 0 must be in the file, every layer of it: a truncated texture would fail in the engine, not here.
     const uint64_t level0 = layerBytes(h) * uint64_t(std::max(1, h.layers));
     if (h.dataOffset > bytes.size() || level0 > bytes.size() - h.dataOffset) h.problem = "the file is truncated (level 0 does not fit)";
+    if (kind == Kind::Ktx2 && h.problem.empty()) h.problem = ktx2Problem(h, bytes);
     return h;
 }
 
@@ -422,6 +459,27 @@ Texture decode(const Header& h, std::string_view bytes, const std::filesystem::p
 }
 
 }  // namespace
+
+std::string ktx2Dfd(uint32_t vkFormat) {
+    if (vkFormat != 37 && vkFormat != 43 && vkFormat != 109) return {};
+    const bool srgb = vkFormat == 43, isFloat = vkFormat == 109;
+    const uint32_t bits = isFloat ? 32 : 8;
+    // Words of the basic block: vendor 0 and type 0; version 2 (Data Format 1.3) and the block's size; colour model
+    // RGBSDA, primaries BT.709, transfer sRGB or linear, straight alpha; a 1x1 texel block; bytes in plane 0.
+    std::vector<uint32_t> w = {0, 2u | uint32_t(24 + 16 * 4) << 16, 1u | 1u << 8 | (srgb ? 2u : 1u) << 16, 0, bits / 2, 0};
+    const uint32_t channels[] = {0, 1, 2, 15};  // R, G, B, A
+    for (uint32_t c = 0; c < 4; ++c) {
+        // Qualifiers: float and signed for SFLOAT; alpha linear where the transfer is sRGB.
+        const uint32_t qualifiers = (isFloat ? 0xC0u : 0u) | (srgb && c == 3 ? 0x10u : 0u);
+        w.insert(w.end(), {c * bits | (bits - 1) << 16 | (channels[c] | qualifiers) << 24, 0,  // offset, length, channel; position 0
+                           isFloat ? 0xBF800000u : 0u, isFloat ? 0x3F800000u : 255u});         // lower, upper: -1..1 or 0..255
+    }
+    std::string out(4 + w.size() * 4, '\0');
+    const uint32_t total = uint32_t(out.size());
+    std::memcpy(out.data(), &total, 4);
+    std::memcpy(out.data() + 4, w.data(), w.size() * 4);
+    return out;
+}
 
 Kind kindOf(std::string_view bytes) {
     std::vector<unsigned char> b = prefix(bytes, 12);

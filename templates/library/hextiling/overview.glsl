@@ -3,7 +3,7 @@
 // by an upper-case letter, so it never collides with the generated per-slot functions `hexc_<slot>`.
 // One file per concern in templates/library/hextiling/, assembled in this order into hexc/hextiling.glsl
 // (compiler/src/CMakeLists.txt): overview (this file: shared constants and structs), lattice, masks, blends, taps,
-// histogram, derivatives, dither, helpers; each uses only what comes before it.
+// histogram, derivatives, dither, helpers, periodic (hexc bake's lattice); each uses only what comes before it.
 //
 // Folding rules. hexc injects the library piece by piece (compiler/src/codegen/pieces.h): the constants, structs and
 // functions a shader reaches. A function that takes `HexcLattice l` or `HexcBlend b` is emitted per slot as
