@@ -1046,11 +1046,11 @@ TEST_F(Hostile, TheSplatMapBudgetRefusesAHugeSplatMapBeforeDecoding) {
     };
     int exit = -1;
     // The control: a small map from the same writer compiles, so the refusal below is the budget's, not the file's.
-    double peak = peakResidentMiB(layered(write("small.png", zeroPng(300))), dir_ / "out", dir_ / "err.txt", &exit);
+    peakResidentMiB(layered(write("small.png", zeroPng(300))), dir_ / "out", dir_ / "err.txt", &exit);
     ASSERT_EQ(exit, 0) << hexc::test::readFile(dir_ / "err.txt");
     fs::remove_all(dir_ / "out");
     fs::create_directories(dir_ / "out");
-    peak = peakResidentMiB(layered(write("huge.png", zeroPng(16384))), dir_ / "out", dir_ / "err.txt", &exit);
+    [[maybe_unused]] const double peak = peakResidentMiB(layered(write("huge.png", zeroPng(16384))), dir_ / "out", dir_ / "err.txt", &exit);
     const std::string err = hexc::test::readFile(dir_ / "err.txt");
     EXPECT_EQ(exit, 1) << err;
     EXPECT_NE(err.find("m.json:1:"), std::string::npos) << err;
