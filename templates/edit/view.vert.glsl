@@ -11,10 +11,12 @@
 //
 // A layered material weighed by vertex colours (`layer_blend.weights` "vertex" or "both") reads them at the location
 // its manifest gives (`layers.vertex_color`); the page defines HEXC_VERTEX_COLOR as its name. No mesh here is painted,
-// so the page paints them: t = 0.5 + 0.5 (x, y) in the mesh's own units, colour (1 - t.x, t.x, t.y, 1 - t.y), so
-// layer 0 gives way to layer 1 along +x and layer 3 to layer 2 along +y, across the sphere and the cube (radius 1),
-// across the plane's two units about the origin (the shader clamps beyond) and across the texture-space view's
-// u, v from -1 to 1. Affine in the position, so it interpolates exactly even across the plane's four vertices.
+// so the page paints them: colour (1 - t.x, t.x, t.y, 1 - t.y), so layer 0 gives way to layer 1 along t.x and layer 3
+// to layer 2 along t.y. On the sphere, the cube (radius 1) and the plane, t = 0.5 + 0.5 (x, y) in the mesh's own units
+// (across the plane's two units about the origin; the shader clamps beyond). In the texture-space view, t is the
+// pixel's place in the window, (0, 0) at its top left and (1, 1) at its bottom right, as `hexc render` paints them
+// (templates/harness/fullscreen.vert.glsl), so that view shows what `hexc render` draws of any uv window. Both are
+// affine in the position, so they interpolate exactly even across the plane's four vertices.
 precision highp float;
 
 layout(location = 0) in vec3 a_position;
@@ -25,6 +27,7 @@ layout(location = 3) in vec2 a_uv;
 uniform mat4 u_viewProjection;
 uniform mat3 u_light;
 uniform float u_uvScale;  // texture coordinate units per unit of the mesh's own
+uniform bool u_flat;      // the texture-space view: vertex colours follow the window
 
 #ifdef HEXC_INPUT_0
 out vec2 HEXC_INPUT_0;
@@ -65,7 +68,8 @@ void main() {
     HEXC_INPUT_2 = vec4(u_light * a_tangent.xyz, a_tangent.w);
 #endif
 #ifdef HEXC_VERTEX_COLOR
-    vec2 t = 0.5 + 0.5 * a_position.xy;
+    // The texture-space view's projection is orthographic (w = 1): NDC y = +1 is the window's top row.
+    vec2 t = u_flat ? vec2(0.5 + 0.5 * gl_Position.x, 0.5 - 0.5 * gl_Position.y) : 0.5 + 0.5 * a_position.xy;
     HEXC_VERTEX_COLOR = vec4(1.0 - t.x, t.x, t.y, 1.0 - t.y);
 #endif
 }

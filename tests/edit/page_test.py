@@ -335,8 +335,9 @@ class Page(unittest.TestCase):
 
     def test_vertex_colours_weigh_the_layers(self):
         """A layered material weighed by vertex colours alone, which the page paints (templates/edit/view.vert.glsl):
-        in the texture-space view of u, v from -1 to 1, layer 0 (flat red) gives way to layer 1 (flat blue) along u,
-        linearly: weights 1 - t and t with t = (u + 1) / 2."""
+        in the texture-space view, layer 0 (flat red) gives way to layer 1 (flat blue) across the window, linearly:
+        weights 1 - t and t with t the pixel's place across it, as `hexc render` paints them, on a window that is not
+        the one from -1 to 1 (where painting by u, as on the meshes, gives the same)."""
         for name, rgb in (("red", [255, 0, 0]), ("blue", [0, 0, 255])):
             write_png(os.path.join(self.folder, "textures", name + ".png"), 4, 4, [rgb * 4] * 4)
         material = os.path.join(self.folder, "painted.json")
@@ -346,7 +347,7 @@ class Page(unittest.TestCase):
                                   for n in ("red", "blue")]}, f)
         state = load(self.serve(material))
         self.assertEqual(state["status"], "ready", state["shown"])
-        DRIVER.execute_script("window.hexcEdit.setView({shape: 'flat', output: 'hex', rect: [-1, -1, 1, 1]});")
+        DRIVER.execute_script("window.hexcEdit.setView({shape: 'flat', output: 'hex', rect: [0.2, 0.3, 0.7, 0.8]});")
         wait_idle(DRIVER, state["compiles"])
         width = 16
         # Flat textures filter to their texel exactly (0 and 1 decode exactly from sRGB), so what is left is fp32: the

@@ -144,7 +144,7 @@ export class View {
     const index = gl.getUniformBlockIndex(l.program, manifest.parameters.block);
     if (index !== gl.INVALID_INDEX) gl.uniformBlockBinding(l.program, index, 0);
     l.uniforms = {};
-    for (const u of ['u_viewProjection', 'u_light', 'u_uvScale']) l.uniforms[u] = gl.getUniformLocation(l.program, u);
+    for (const u of ['u_viewProjection', 'u_light', 'u_uvScale', 'u_flat']) l.uniforms[u] = gl.getUniformLocation(l.program, u);
     l.textures = Object.entries(glsl.textures).map(([key, t]) => ({ source: this.textureSource(manifest, key), unit: t.texture_unit,
                                                                     location: gl.getUniformLocation(l.program, t.uniform) }));
   }
@@ -328,6 +328,7 @@ export class View {
       gl.uniformMatrix4fv(p.uniforms.u_viewProjection, false, sc.matrix);
       gl.uniformMatrix3fv(p.uniforms.u_light, false, light);
       gl.uniform1f(p.uniforms.u_uvScale, sc.uvScale);
+      gl.uniform1i(p.uniforms.u_flat, sc.flat ? 1 : 0);
       gl.bindBuffer(gl.UNIFORM_BUFFER, p.block.buffer);
       if (p.block.dirty) gl.bufferData(gl.UNIFORM_BUFFER, p.block.data, gl.DYNAMIC_DRAW);
       p.block.dirty = false;
