@@ -164,6 +164,21 @@ Image rockTexels(const std::filesystem::path& dir) {
     return texels;
 }
 
+// The rock's albedo (rockTexels) written into `dir` as each of `inputs`, the material `slots` reading them (and
+// rock8.png) baked at 128 x 128 into dir/out.
+void bakeRockAs(const std::filesystem::path& dir, const std::vector<std::pair<ImageFormat, std::string>>& inputs,
+                const std::string& slots) {
+    const Image texels = rockTexels(dir);
+    for (const auto& [format, file] : inputs) writeImageAs(texels, format, dir / file);
+    std::ofstream(dir / "m.json") << R"({"name": "m", "template": "unlit", "hextiling": {"tiling": 4}, "slots": [)" + slots + "]}";
+    std::string err;
+    ASSERT_EQ(runHexc("bake " + (dir / "m.json").string() + " -q --size 128 -o " + (dir / "out").string(), &err), 0) << err;
+}
+
+// How far a float bake and the 8-bit PNG bake of the same texels may differ (the derivation is at
+// BakeCommand.WritesTheTexturesFormat): twice e_s (1 + 1.5) at mip level 3, plus the 8-bit file's rounding.
+double floatAgainstPngBound() { return 2 * 2.5 * sampleError(3, false) + 0.5 / 255; }
+
 // A bake is written in its texture's format: a 16-bit PNG as 16-bit PNG, an OpenEXR file as OpenEXR (linear floats,
 // the baked material then linear), an 8-bit PNG as 8-bit PNG. The same texels in an EXR and an 8-bit PNG (both
 // linear) bake alike: each bake is within blendTolerance of the reference (checks.h) with e_x = e_m = e_s, the gain's
@@ -173,15 +188,11 @@ Image rockTexels(const std::filesystem::path& dir) {
 TEST(BakeCommand, WritesTheTexturesFormat) {
     REQUIRE_VULKAN();
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_formats";
-    const Image texels = rockTexels(dir);
-    writeImageAs(texels, ImageFormat::Png16, dir / "rock16.png");
-    writeImageAs(texels, ImageFormat::Exr, dir / "rock.exr");
-    std::ofstream(dir / "m.json") << R"({"name": "m", "template": "unlit", "hextiling": {"tiling": 4}, "slots": [
-        {"name": "albedo", "kind": "color", "texture": "rock16.png"},
+    bakeRockAs(dir, {{ImageFormat::Png16, "rock16.png"}, {ImageFormat::Exr, "rock.exr"}},
+               R"({"name": "albedo", "kind": "color", "texture": "rock16.png"},
         {"name": "exr", "kind": "color", "colorspace": "linear", "texture": "rock.exr"},
-        {"name": "png", "kind": "color", "colorspace": "linear", "texture": "rock8.png"}]})";
-    std::string err;
-    ASSERT_EQ(runHexc("bake " + (dir / "m.json").string() + " -q --size 128 -o " + (dir / "out").string(), &err), 0) << err;
+        {"name": "png", "kind": "color", "colorspace": "linear", "texture": "rock8.png"})");
+    if (HasFatalFailure()) return;
     EXPECT_EQ(imageFormat(test::readFile(dir / "out/m.albedo.png")), ImageFormat::Png16);
     EXPECT_EQ(imageFormat(test::readFile(dir / "out/m.exr.exr")), ImageFormat::Exr);
     EXPECT_EQ(imageFormat(test::readFile(dir / "out/m.png.png")), ImageFormat::Png8);
@@ -202,7 +213,7 @@ TEST(BakeCommand, WritesTheTexturesFormat) {
                 }
         return e;
     };
-    const double bound = 2 * 2.5 * sampleError(3, false) + 0.5 / 255;
+    const double bound = floatAgainstPngBound();
     std::printf("  EXR bake against the 8-bit PNG bake of the same texels: max %.2f/255, bound %.2f/255, mirrored %.2f/255\n",
                 worst(false) * 255, bound * 255, worst(true) * 255);
     EXPECT_LE(worst(false), bound);
@@ -269,20 +280,16 @@ double worstBoxAverage(const std::vector<Ktx2Level>& levels, bool isFloat, bool 
 TEST(BakeCommand, WritesKtx2WithItsMipChain) {
     REQUIRE_VULKAN();
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_bake_ktx2";
-    const Image texels = rockTexels(dir);
-    writeImageAs(texels, ImageFormat::Ktx2Srgb8, dir / "srgb.ktx2");
-    writeImageAs(texels, ImageFormat::Ktx2Unorm8, dir / "unorm.ktx2");
-    writeImageAs(texels, ImageFormat::Ktx2Float, dir / "float.ktx2");
-    std::ofstream(dir / "m.json") << R"({"name": "m", "template": "unlit", "hextiling": {"tiling": 4}, "slots": [
-        {"name": "srgb", "kind": "color", "texture": "srgb.ktx2"},
+    bakeRockAs(dir,
+               {{ImageFormat::Ktx2Srgb8, "srgb.ktx2"}, {ImageFormat::Ktx2Unorm8, "unorm.ktx2"}, {ImageFormat::Ktx2Float, "float.ktx2"}},
+               R"({"name": "srgb", "kind": "color", "texture": "srgb.ktx2"},
         {"name": "unorm", "kind": "color", "colorspace": "linear", "texture": "unorm.ktx2"},
         {"name": "float", "kind": "color", "colorspace": "linear", "texture": "float.ktx2"},
         {"name": "png", "kind": "color", "texture": "rock8.png"},
-        {"name": "linear", "kind": "color", "colorspace": "linear", "texture": "rock8.png"}]})";
-    std::string err;
-    ASSERT_EQ(runHexc("bake " + (dir / "m.json").string() + " -q --size 128 -o " + (dir / "out").string(), &err), 0) << err;
+        {"name": "linear", "kind": "color", "colorspace": "linear", "texture": "rock8.png"})");
+    if (HasFatalFailure()) return;
     const std::pair<const char*, const char*> against[] = {{"srgb", "png"}, {"unorm", "linear"}, {"float", "linear"}};
-    const double floatBound = 2 * 2.5 * sampleError(3, false) + 0.5 / 255;
+    const double floatBound = floatAgainstPngBound();
     for (const auto& [slot, png] : against) {
         const std::string bytes = test::readFile(dir / "out" / ("m." + std::string(slot) + ".ktx2"));
         const ImageFormat format = imageFormat(bytes);
