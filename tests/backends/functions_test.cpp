@@ -217,6 +217,21 @@ TEST(EnginePackages, GodotGetsItsDialectAndItsInputs) {
     }
 }
 
+// --debug's #line directives stay out of the GLSL engines' packages: Godot 3's language has no preprocessor.
+TEST(EnginePackages, GlslPackagesHoldNoLineDirectivesUnderDebug) {
+    ParseResult p = parseMaterialFile("materials/rock.json");
+    CompileOptions debug;
+    debug.debug = true;
+    for (Engine engine : {Engine::Godot3, Engine::Godot4, Engine::Filament}) {
+        CompileResult r = compileForEngine(*p.material, engine, debug);
+        ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
+        const auto source = std::find_if(r.files.begin(), r.files.end(), [](const OutputFile& f) { return !f.name.ends_with(".json"); });
+        ASSERT_NE(source, r.files.end());
+        EXPECT_EQ(source->contents.find("#line"), std::string::npos) << source->name;
+        EXPECT_NE(source->contents.find("hexc_albedo("), std::string::npos) << source->name;
+    }
+}
+
 // SPIRV-Cross writes an undefined value (tiles.json's, with rotation 0) as a global without an initialiser, which
 // Godot's language refuses ("Expected initialization of constant"): Godot's packages make it a constant.
 TEST(EnginePackages, GodotDeclaresEveryGlobalAsAConstant) {

@@ -54,6 +54,9 @@ struct TargetOutput {
 
 TargetOutput emitHlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
+// The same through `c`, a compiler of `spirv`: the GLSL engines' dialects are its subclasses (engines/glsl.cpp).
+TargetOutput emitGlsl(spirv_cross::CompilerGLSL& c, const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
+                      const CompileOptions& options);
 TargetOutput emitMsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);
 // WGSL (wgsl.cpp): the module translated by naga, resources at their Vulkan set and binding as @group and @binding.
 TargetOutput emitWgsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options);

@@ -69,6 +69,11 @@ void configureGlsl(spirv_cross::CompilerGLSL& c, const CompileOptions& options) 
 
 TargetOutput emitGlsl(const std::vector<uint32_t>& spirv, const ShaderPlan& plan, const CompileOptions& options) {
     spirv_cross::CompilerGLSL c(spirv);
+    return emitGlsl(c, spirv, plan, options);
+}
+
+TargetOutput emitGlsl(spirv_cross::CompilerGLSL& c, const std::vector<uint32_t>& spirv, const ShaderPlan& plan,
+                      const CompileOptions& options) {
     configureGlsl(c, options);
 
     std::vector<TemplateResource> own = templateResources(c, plan);

@@ -225,18 +225,18 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
     if (std::optional<Diagnostic> d = refused(e, options)) return {{}, {*d}, {}, {}};
     options = packageOptions(e, options);
     CompiledMaterial compiled = compileMaterial(material, options);
-    CompileResult r = std::move(compiled.result);
-    if (!r.ok()) return r;
+    CompileResult& r = compiled.result;  // the writer reads its SPIR-V
+    if (!r.ok()) return std::move(r);
     const PackageInput input{
-        material, e, compiled, engineFunctions(compiled.plan), textures(compiled.plan), options.uvOrigin == UvOrigin::BottomLeft};
+        material, e, compiled, options, engineFunctions(compiled.plan), textures(compiled.plan), options.uvOrigin == UvOrigin::BottomLeft};
     std::vector<OutputFile> package = e.write(input, r.diagnostics);
-    if (!r.ok()) return r;
+    if (!r.ok()) return std::move(r);
     const std::string dir = std::string(e.name) + "/";
     compiled.files.push_back({material.name + ".manifest.json", packageManifest(material, compiled.manifest, package)});
     std::sort(compiled.files.begin(), compiled.files.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
     for (OutputFile& f : compiled.files) r.files.push_back({dir + f.name, std::move(f.contents)});
     for (OutputFile& f : package) r.files.push_back({dir + f.name, std::move(f.contents)});
-    return r;
+    return std::move(r);
 }
 
 OutputNames engineOutputNames(const Material& material, Engine engine, const CompileOptions& options) {

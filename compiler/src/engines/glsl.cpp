@@ -1,127 +1,81 @@
 // The GLSL engines' packages (Godot 3, Godot 4, Filament; docs/engines.md): the functions in GLSL 330 in the engine's
 // dialect, inside the engine's material template (compiler/integrations/<engine>/), with each slot fed to the engine
-// input its role gives. The dialect is made from SPIRV-Cross's GLSL 330 of the functions, compiled in the same step:
-// text of a known grammar (its declarations one to a line, calls with balanced parentheses, literals as it prints
-// them), which the plain transforms below rely on.
-#include <map>
-#include <sstream>
+// input its role gives. The dialect is SPIRV-Cross's GLSL of the compile's SPIR-V, printed by a subclass of its
+// compiler that writes what the engine takes (EngineGlsl): no text hexc wrote is read back.
+#include <spirv_glsl.hpp>
 
+#include <GLSL.std.450.h>
+
+#include "backends/backends.h"
 #include "codegen/codegen.h"
 #include "common/templates.h"
-#include "common/text.h"
 #include "engines/roles.h"
 #include "engines/table.h"
 
 namespace hexc {
 namespace {
 
-// `text` with every `fma(a, b, c)` as `((a) * (b) + (c))`: Godot's shading language has no fma. SPIRV-Cross writes
-// the arguments with balanced parentheses, so a count of them finds each argument's end.
-std::string withoutFma(const std::string& text) {
-    std::string out;
-    size_t at = 0;
-    for (size_t call; (call = text.find("fma(", at)) != std::string::npos;) {
-        if (call > 0 && isIdentifierChar(text[call - 1])) {
-            out.append(text, at, call + 4 - at);
-            at = call + 4;
-            continue;
-        }
-        std::vector<std::string> args(1);
-        size_t i = call + 4;
-        for (int depth = 0; i < text.size() && !(depth == 0 && text[i] == ')'); ++i) {
-            depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
-            if (depth == 0 && text[i] == ',')
-                args.emplace_back();
-            else
-                args.back() += text[i];
-        }
-        if (args.size() != 3) throw std::runtime_error("fma with " + std::to_string(args.size()) + " arguments");  // a hexc bug
-        for (std::string& a : args) a = withoutFma(a.substr(a.find_first_not_of(' ')));
-        out.append(text, at, call - at).append("((" + args[0] + ") * (" + args[1] + ") + (" + args[2] + "))");
-        at = i + 1;
-    }
-    return out.append(text, at);
-}
+// SPIRV-Cross's GLSL of the functions as the engine's material takes them: no header and no uniforms (the engine's
+// template declares the textures), in the engine's dialect. Godot's language has no fma, no `97u` literals and global
+// variables only as constants: SPIRV-Cross's global for an undefined value (OpUndef) is a constant of value zero, as
+// good as any. Filament names a sampler parameter materialParams_<name>.
+class EngineGlsl : public spirv_cross::CompilerGLSL {
+public:
+    EngineGlsl(const std::vector<uint32_t>& spirv, Engine engine) : CompilerGLSL(spirv), godot_(engine != Engine::Filament) {}
 
-// `text` with every unsigned literal (`97u`) as `uint(97)`: Godot 3.2 rejects the suffix.
-std::string withoutUnsignedLiterals(const std::string& text) {
-    std::string out;
-    for (size_t i = 0; i < text.size();) {
-        size_t end = i;
-        while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
-        const bool literal = end > i && (i == 0 || !isIdentifierChar(text[i - 1])) && end < text.size() && text[end] == 'u' &&
-                             (end + 1 == text.size() || !isIdentifierChar(text[end + 1]));
-        if (literal) {
-            out += "uint(" + text.substr(i, end - i) + ")";
-            i = end + 1;
-        } else if (end > i) {
-            out.append(text, i, end - i);
-            i = end;
-        } else {
-            out += text[i++];
-        }
+    std::string compile() override {
+        options.emit_line_directives = false;  // no #line for --debug: Godot 3's language has no preprocessor
+        if (!godot_)
+            ir.for_each_typed_id<spirv_cross::SPIRVariable>([&](uint32_t id, const spirv_cross::SPIRVariable&) {
+                const std::string name = get_name(id);
+                if (name.starts_with("hexcTex_") || name.starts_with("hexcLut_")) set_name(id, "materialParams_" + name);
+            });
+        return CompilerGLSL::compile();
     }
-    return out;
-}
 
-// `text` with each of hexc's textures (hexcTex_*, hexcLut_*) read as Filament names a sampler parameter:
-// materialParams_<name>.
-std::string asMaterialParams(const std::string& text) {
-    std::string out;
-    size_t at = 0;
-    for (size_t found; (found = text.find("hexc", at)) != std::string::npos;) {
-        const bool texture = (text.compare(found, 8, "hexcTex_") == 0 || text.compare(found, 8, "hexcLut_") == 0) &&
-                             (found == 0 || !isIdentifierChar(text[found - 1]));
-        out.append(text, at, found - at).append(texture ? "materialParams_hexc" : "hexc");
-        at = found + 4;
+protected:
+    void emit_header() override {}
+    void emit_uniform(const spirv_cross::SPIRVariable&) override {}
+
+    void emit_glsl_op(uint32_t type, uint32_t id, uint32_t op, const uint32_t* args, uint32_t count) override {
+        if (!godot_ || op != GLSLstd450Fma) return CompilerGLSL::emit_glsl_op(type, id, op, args, count);
+        const bool forward = should_forward(args[0]) && should_forward(args[1]) && should_forward(args[2]);
+        emit_op(type, id,
+                to_enclosed_unpacked_expression(args[0]) + " * " + to_enclosed_unpacked_expression(args[1]) + " + " +
+                    to_enclosed_unpacked_expression(args[2]),
+                forward);
+        for (uint32_t i = 0; i < 3; ++i) inherit_expression_dependencies(id, args[i]);
     }
-    return out.append(text, at);
-}
 
-// The functions without what the engine declares itself: #version and #extension lines and the texture uniforms (the
-// engine template declares them); layout qualifiers dropped.
-std::string functionsBody(const std::string& glsl) {
-    std::istringstream in(glsl);
-    std::string out;
-    for (std::string line; std::getline(in, line);) {
-        if (line.starts_with("uniform ") || line.starts_with("#")) continue;
-        for (size_t at; (at = line.find("layout(")) != std::string::npos;) {
-            size_t end = line.find(')', at);
-            if (end++ == std::string::npos) break;
-            while (end < line.size() && std::isspace(static_cast<unsigned char>(line[end]))) ++end;
-            line.erase(at, end - at);
-        }
-        out += line + "\n";
+    // An unsigned constant as uint(97); a vector of them as uvec3(uint(1), uint(2), uint(3)), or uvec3(uint(1)) when
+    // its components are equal.
+    std::string constant_expression_vector(const spirv_cross::SPIRConstant& c, uint32_t vector) override {
+        const spirv_cross::SPIRType& type = get<spirv_cross::SPIRType>(c.constant_type);
+        if (!godot_ || type.basetype != spirv_cross::SPIRType::UInt) return CompilerGLSL::constant_expression_vector(c, vector);
+        const auto literal = [&](uint32_t i) { return "uint(" + std::to_string(c.scalar(vector, i)) + ")"; };
+        bool splat = true;
+        for (uint32_t i = 1; i < c.vector_size(); ++i) splat = splat && c.scalar(vector, i) == c.scalar(vector, 0);
+        std::string out = literal(0);
+        for (uint32_t i = 1; i < c.vector_size() && !splat; ++i) out += ", " + literal(i);
+        return c.vector_size() == 1 ? out : type_to_glsl(type) + "(" + out + ")";
     }
-    for (size_t at; (at = out.find("\n\n\n")) != std::string::npos;) out.erase(at, 1);  // where declarations were
-    while (out.starts_with("\n")) out.erase(0, 1);
-    return out;
-}
 
-// `body` with each global SPIRV-Cross declares for an undefined value (OpUndef: `uint _3163;`, no initialiser) as a
-// constant of value zero (`const uint _3163 = uint(0);`): Godot's language takes a global only as a constant with
-// its value ("Expected initialization of constant"). The value is undefined, so zero is as good as any.
-std::string withConstantUndefs(const std::string& body) {
-    static const std::map<std::string, std::string> zeros = {{"float", "0.0"}, {"int", "0"},    {"uint", "uint(0)"},   {"bool", "false"},
-                                                             {"vec", "(0.0)"}, {"ivec", "(0)"}, {"uvec", "(uint(0))"}, {"bvec", "(false)"}};
-    std::istringstream in(body);
-    std::string out, line;
-    while (std::getline(in, line)) {
-        const size_t space = line.find(' ');
-        const std::string type = line.substr(0, space), base = type.substr(0, type.find_first_of("234"));
-        const bool undef = space != std::string::npos && zeros.count(base) && line.compare(space, 2, " _") == 0 && line.ends_with(";") &&
-                           line.find_first_of("=(", space) == std::string::npos;
-        if (undef) line = "const " + line.substr(0, line.size() - 1) + " = " + (base == type ? "" : type) + zeros.at(base) + ";";
-        out += line + "\n";
+    // An undefined value's global as a constant of value zero.
+    std::string variable_decl(const spirv_cross::SPIRType& type, const std::string& name, uint32_t id) override {
+        const std::string decl = CompilerGLSL::variable_decl(type, name, id);
+        if (!godot_ || !id || ir.ids[id].get_type() != spirv_cross::TypeUndef) return decl;
+        return "const " + decl + " = " + to_zero_initialized_expression(get<spirv_cross::SPIRUndef>(id).basetype);
     }
-    return out;
-}
 
-// The engine's dialect of the functions: Godot has no `97u` literals, no fma and no global variables; Filament reads
-// its textures as materialParams_<name>.
-std::string dialect(const std::string& body, Engine engine) {
-    if (engine == Engine::Filament) return asMaterialParams(body);
-    return withConstantUndefs(withoutFma(withoutUnsignedLiterals(body)));
+private:
+    bool godot_;
+};
+
+// The functions in the engine's dialect, as compile() cuts its functions output from the whole module.
+std::string dialect(const PackageInput& in) {
+    EngineGlsl c(in.compiled.result.spirv, in.engine.engine);
+    const ShaderPlan& plan = in.compiled.plan;
+    return functionsOnly(emitGlsl(c, in.compiled.result.spirv, plan, in.options).source, Target::Glsl, plan.entryPoint);
 }
 
 std::string declarations(const std::vector<EngineTexture>& used, Engine engine) {
@@ -176,7 +130,7 @@ std::vector<OutputFile> glslPackage(const PackageInput& in, Diagnostics& diagnos
          in.uvBottomLeft ? "(0, 0) at the image's bottom-left, v up (hexc --uv-bottom-left)" : "(0, 0) at the image's top-left, v down"},
         {"uniforms", declared},
         {"parameters", declared},
-        {"functions", dialect(functionsBody(in.compiled.sources.at(Target::Glsl)), engine)},
+        {"functions", dialect(in)},
         {"inputs", wired.inputs},
         {"normal", wired.normal},
         {"requires", takesVertexColor(in) ? "uv0, color" : "uv0"},

@@ -40,6 +40,7 @@ struct PackageInput {
     const Material& material;
     const EngineRow& engine;
     const CompiledMaterial& compiled;
+    const CompileOptions& options;          // the compile's: the engine's language (packageOptions)
     std::vector<EngineFunction> functions;  // in the manifest's order
     std::vector<EngineTexture> textures;    // bound, in name order
     bool uvBottomLeft;                      // hexc --uv-bottom-left: the mesh's uv (0, 0) is the image's bottom-left
