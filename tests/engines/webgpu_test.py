@@ -14,7 +14,8 @@ Godot and Filament tests judge theirs:
   runs right to left (u mirrored), a mesh with glTF's uv (v down), a layer's texture swapped for another's, the
   vertex colours' red and green exchanged, and the bumps lit with the textures flipped.
 
-Usage: webgpu_test.py HEXC [--screenshot PNG]   (from the source root, after `npm ci --prefix tests/node`)
+Usage: webgpu_test.py HEXC [--screenshot PNG]   (from the source root, after `npm ci --prefix tests/node`; the terrain's
+screenshot goes beside PNG, <PNG without .png>-terrain.png)
 """
 import base64
 import functools
@@ -138,11 +139,15 @@ def controls(run):
 
 
 def screenshot(run, path):
-    """The rock on a sphere, lit by three.js from the upper right, as the canvas shows it: for docs/engines.md."""
-    out, errors = run.draw("screenshot", run.package(ROOT / "materials" / "rock.json", bottom_left=True), 192, sphere=True,
-                           light=[1, 1, 1.5], marker=0)
-    shutil.copyfile(out, path)
-    return ec.row("screenshot: rock on a lit sphere", "; ".join(errors) or "no error", not errors)
+    """The rock, and the terrain beside it (<PNG>-terrain.png), on a sphere, lit by three.js from the upper right, as the
+    canvas shows it: for docs/engines.md."""
+    failed = 0
+    for name, material, png in (("rock", "rock.json", path), ("terrain", "terrain/terrain.json", path[:-4] + "-terrain.png")):
+        out, errors = run.draw("screenshot_" + name, run.package(ROOT / "materials" / material, bottom_left=True), 192, sphere=True,
+                               light=[1, 1, 1.5], marker=0)
+        shutil.copyfile(out, png)
+        failed += ec.row(f"screenshot: {name} on a lit sphere", "; ".join(errors) or "no error", not errors)
+    return failed
 
 
 def main(argv):
