@@ -6,10 +6,12 @@
 #include <nlohmann/json.hpp>
 
 #include <cctype>
+#include <fstream>
 #include <sstream>
 
 #include "hexc/compiler.h"
 #include "hexc/engines.h"
+#include "hexc/image.h"
 #include "hexc/spirv.h"
 #include "support.h"
 
@@ -230,6 +232,43 @@ TEST(EnginePackages, GlslPackagesHoldNoLineDirectivesUnderDebug) {
         EXPECT_EQ(source->contents.find("#line"), std::string::npos) << source->name;
         EXPECT_NE(source->contents.find("hexc_albedo("), std::string::npos) << source->name;
     }
+}
+
+// A histogram slot's Gaussian texture and table come into an engine package as OpenEXR, which the engines import
+// (none reads PFM), holding the floats of the PFM files a shader compile writes, alpha 1; Unity's package refuses
+// them (HX300): it stores the table's rows bottom first.
+TEST(EnginePackages, HistogramTablesAreExrAndUnityRefusesThem) {
+    ParseResult p = parseMaterialFile("tests/golden/materials/histogram.json");
+    ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
+    const CompileResult shader = compile(*p.material, {});
+    const CompileResult godot = compileForEngine(*p.material, Engine::Godot3, {});
+    ASSERT_TRUE(shader.ok() && godot.ok()) << formatAll(godot.diagnostics);
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hexc_histogram_exr";
+    std::filesystem::create_directories(dir);
+    auto texels = [&](const CompileResult& r, const std::string& name) {
+        const auto f = std::find_if(r.files.begin(), r.files.end(), [&](const OutputFile& o) { return o.name == name; });
+        if (f == r.files.end()) return std::vector<float>{};
+        const std::filesystem::path file = dir / std::filesystem::path(name).filename();
+        std::ofstream(file, std::ios::binary) << f->contents;
+        return loadTexture(file, false).rgba32f;
+    };
+    for (const char* which : {"gaussian", "lut"}) {
+        const std::vector<float> pfm = texels(shader, std::string("histogram.albedo.") + which + ".pfm");
+        const std::vector<float> exr = texels(godot, std::string("godot3/histogram.albedo.") + which + ".exr");
+        ASSERT_FALSE(pfm.empty()) << which;
+        ASSERT_EQ(exr.size(), pfm.size()) << which << ": no EXR file, or another size";
+        EXPECT_EQ(exr, pfm) << which;  // PFM's alpha reads as 1, as EXR's holds
+    }
+    const auto manifest =
+        std::find_if(godot.files.begin(), godot.files.end(), [](const OutputFile& f) { return f.name.ends_with(".json"); });
+    const nlohmann::json lut = nlohmann::json::parse(manifest->contents)["slots"][0]["histogram"]["lut"];
+    EXPECT_EQ(lut["file"], "histogram.albedo.lut.exr");
+    EXPECT_EQ(lut["format"]["container"], "exr");
+    const CompileResult unity = compileForEngine(*p.material, Engine::Unity, {});
+    EXPECT_FALSE(unity.ok());
+    EXPECT_NE(formatAll(unity.diagnostics).find("error[HX300]: unity stores a texture's bottom row first"), std::string::npos)
+        << formatAll(unity.diagnostics);
+    std::filesystem::remove_all(dir);
 }
 
 // SPIRV-Cross writes an undefined value (tiles.json's, with rotation 0) as a global without an initialiser, which

@@ -70,6 +70,9 @@ struct CompileOptions {
     // scalar maps). Off: the shaders and the manifest only, which still names them (hexc edit's page, which is served
     // those textures apart, and its cost: computing them for a 2048 x 2048 texture takes seconds and 48 MB).
     bool derivedTextures = true;
+    // The histogram blend's derived float textures as OpenEXR files (RGBA) instead of PFM (RGB): what engines import
+    // (Godot, Unity and Unreal read EXR, none reads PFM); engine packages set it (hexc/engines.h).
+    bool exrTables = false;
     // Check each slot's texture's content (hexc/lint.h) and report what fails as warnings (HX130-HX133). Off: hexc edit,
     // which compiles at every change, and whose textures `hexc lint` checks.
     bool lintTextures = true;

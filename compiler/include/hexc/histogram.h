@@ -43,7 +43,8 @@ HistogramTransform histogramTransform(const Texture& source, const Slot& slot);
 // The Gaussian value of a table row's entry i: 0.5 + (2 i / (kHistogramLutWidth - 1) - 1) kHistogramLutSigmas / 6.
 double histogramLutGaussian(int entry);
 
-// The output files hexc writes for a histogram slot: "<material>.<slot>.gaussian.pfm" and "<material>.<slot>.lut.pfm".
-std::string histogramFileName(const std::string& material, const std::string& slot, const char* which);
+// The output files hexc writes for a histogram slot: "<material>.<slot>.gaussian.pfm" and "<material>.<slot>.lut.pfm",
+// ".exr" for `exr` (CompileOptions::exrTables).
+std::string histogramFileName(const std::string& material, const std::string& slot, const char* which, bool exr = false);
 
 }  // namespace hexc

@@ -24,4 +24,8 @@ const char* imageExtension(ImageFormat format);
 // last row or column left out), no supercompression. Throws std::runtime_error.
 void writeImageAs(const Image& image, ImageFormat format, const std::filesystem::path& file);
 
+// An image as an OpenEXR file's bytes as writeImageAs writes one: float RGBA, ZIP-compressed, the same bytes every time.
+// Throws OpenEXR's exceptions (std::exception) on failure.
+std::string exrBytes(const Image& image);
+
 }  // namespace hexc

@@ -9,17 +9,20 @@ namespace {
 
 // A histogram slot's derived textures (hexc/histogram.h): the files hexc writes and how an engine binds them, in
 // structured fields (docs/manifest.schema.json).
-nlohmann::json histogramEntry(const std::string& material, const std::string& slot, const std::string& texture) {
-    // PFM holds RGB float32; upload as RGBA float with alpha 1. Linear values: no sRGB format.
-    const nlohmann::json format = {
-        {"container", "pfm"}, {"channels", "rgb"}, {"type", "float32"}, {"upload", "rgba32f"}, {"colorspace", "linear"}};
+nlohmann::json histogramEntry(const std::string& material, const std::string& slot, const std::string& texture, bool exr) {
+    // PFM holds RGB float32, EXR RGBA; upload as RGBA float (PFM's alpha 1). Linear values: no sRGB format.
+    const nlohmann::json format = {{"container", exr ? "exr" : "pfm"},
+                                   {"channels", exr ? "rgba" : "rgb"},
+                                   {"type", "float32"},
+                                   {"upload", "rgba32f"},
+                                   {"colorspace", "linear"}};
     return {{"gaussian",
-             {{"file", histogramFileName(material, slot, "gaussian")},
+             {{"file", histogramFileName(material, slot, "gaussian", exr)},
               {"format", format},
               // In place of the slot's own texture, at its binding: hexc's sampler over a full mip chain.
               {"binding", {{"texture", slot}, {"replaces", texture}, {"sampler", "hexcSampler"}, {"mip_chain", "full"}}}}},
             {"lut",
-             {{"file", histogramFileName(material, slot, "lut")},
+             {{"file", histogramFileName(material, slot, "lut", exr)},
               {"format", format},
               // Its own texture in each target's `textures`; only level 0 is read.
               {"binding", {{"texture", slot + ".lut"}, {"sampler", "hexcSampler"}, {"mip_chain", "level0"}}}}}};
@@ -69,7 +72,7 @@ nlohmann::json hextilingEntry(const HexTiling& h, const SlotPlan& sp) {
 // The slot's entry. What the shader does with the slot (its kind, taps, flip, sRGB decoding, luma weights, height
 // map) is the plan's; the texture's file, size, colour space and channel and the settings' values are the material's
 // (a packed slot's plan reads another channel, of the packed texture: its entry in packed_textures).
-nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
+nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp, bool exrTables) {
     const Slot& s = *sp.slot;
     const HexTiling& h = s.hex;
     const SlotKindRow& kind = kindRow(sp.kind);
@@ -88,7 +91,7 @@ nlohmann::json slotEntry(const std::string& material, const SlotPlan& sp) {
     if (s.heightBlend) slot["height_blend"] = {{"slot", sp.heightMapName}, {"width", s.heightBlend->width}};
     // Bound for another slot's height blending only: the shader has no function for it.
     if (sp.heightOnly) slot["height_map_only"] = true;
-    if (sp.histogram) slot["histogram"] = histogramEntry(material, sp.name, s.texture);
+    if (sp.histogram) slot["histogram"] = histogramEntry(material, sp.name, s.texture, exrTables);
     if (kind.oneChannel) slot["channel"] = channel;
     if (kind.derivative) slot["flip_y"] = sp.flipY;
     if (kind.derivative) slot["normal_green"] = sp.flipY ? "down (DirectX)" : "up (OpenGL)";
@@ -199,7 +202,7 @@ nlohmann::json layersEntry(const ShaderPlan& plan) {
 nlohmann::json buildManifest(const Material& material, const ShaderPlan& plan, const nlohmann::json& targets) {
     nlohmann::json slots = nlohmann::json::array(), packed = nlohmann::json::array();
     for (const SlotPlan& sp : plan.slots) {
-        slots.push_back(slotEntry(material.name, sp));
+        slots.push_back(slotEntry(material.name, sp, plan.exrTables));
         if (!sp.array.empty())
             slots.back()["array"] = {{"texture", plan.textureName(size_t(&sp - plan.slots.data()))}, {"layer", sp.arrayLayer}};
     }

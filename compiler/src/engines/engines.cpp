@@ -122,7 +122,8 @@ CompileOptions packageOptions(const EngineRow& e, CompileOptions options) {
     options.functions = true;
     options.unrollLoops = e.unrollLoops;
     options.functionArrays = e.arrays;
-    options.bake = true;  // the engine's material has no block for hexc's parameters
+    options.bake = true;       // the engine's material has no block for hexc's parameters
+    options.exrTables = true;  // engines import EXR, not PFM
     options.targets = {targetOf(e.language)};
     if (wgsl) options.targets.push_back(Target::Wgsl);
     options.glslEs = e.language == EngineLanguage::GlslEs300;

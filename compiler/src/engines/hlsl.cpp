@@ -28,17 +28,20 @@ struct Style {
     Engine engine;
     std::array<std::string, 2> param, args;
     std::string sample;
+    bool rowsBottomFirst;  // the engine stores a texture's bottom row first (Unity): the reads flip t, a texel fetch cannot
 };
 
 const Style& style(Engine engine) {
     static const Style unity = {Engine::Unity,
                                 {"TEXTURE2D_PARAM({T}, sampler_{T})", "TEXTURE2D_ARRAY_PARAM({T}, sampler_{T})"},
                                 {"TEXTURE2D_ARGS({T}, sampler_{T})", "TEXTURE2D_ARRAY_ARGS({T}, sampler_{T})"},
-                                "HEXC_{M}({T}, sampler_{T}, "};
+                                "HEXC_{M}({T}, sampler_{T}, ",
+                                true};
     static const Style unreal = {Engine::Unreal,
                                  {"Texture2D {T}, SamplerState {T}Sampler", "Texture2DArray {T}, SamplerState {T}Sampler"},
                                  {"{T}, {T}Sampler", "{T}, {T}Sampler"},
-                                 "{T}.{M}({T}Sampler, "};
+                                 "{T}.{M}({T}Sampler, ",
+                                 false};
     return engine == Engine::Unity ? unity : unreal;
 }
 
@@ -258,10 +261,25 @@ std::string trimmed(std::string text) {
     return text;
 }
 
+// A histogram slot's table is read texel by texel by row (its look-up rows), which an engine storing the bottom row
+// first puts elsewhere: refused (HX300) there.
+bool refusesTables(const PackageInput& in, const Style& s, Diagnostics& diagnostics) {
+    for (const EngineTexture& t : in.textures)
+        if (t.table && s.rowsBottomFirst) {
+            diagnostics.push_back(Diagnostic::make(Code::TargetUnsupported, {in.material.sourceFile.string()}, "",
+                                                   std::string(in.engine.shown) + " stores a texture's bottom row first, and the " +
+                                                       "histogram blend reads its table's rows texel by texel (slot `" + t.table->name +
+                                                       "`; blend it by falloff)"));
+            return true;
+        }
+    return false;
+}
+
 }  // namespace
 
 std::vector<OutputFile> hlslPackage(const PackageInput& in, Diagnostics& diagnostics) {
     const Style& s = style(in.engine.engine);
+    if (refusesTables(in, s, diagnostics)) return {};
     Functions f = parse(in.compiled.sources.at(Target::Hlsl), in.textures);
     passTextures(f, s);
     std::string functions = f.constants;

@@ -395,6 +395,7 @@ ShaderPlan planShader(const Material& material, const CompileOptions& options) {
     plan.general = !options.specialise;
     plan.slotTexturesDecoded = options.slotTexturesDecoded;
     plan.uvBottomLeft = options.uvOrigin == UvOrigin::BottomLeft;
+    plan.exrTables = options.exrTables;
     if (!loadTemplate(material, options, plan)) return plan;
     // The built-in `functions` named by a material is the functions output, as with --functions.
     plan.functions = options.functions || plan.templateName == TemplateRef::builtin("functions").path();

@@ -188,6 +188,7 @@ struct ShaderPlan {
     bool slotTexturesDecoded = false;  // CompileOptions::slotTexturesDecoded: a KTX2 array role may take a texture per slot
     bool uvBottomLeft = false;         // CompileOptions::uvOrigin: the slots' functions take OpenGL's uv (v up)
     bool functions = false;            // CompileOptions::functions: the `functions` template, every slot read
+    bool exrTables = false;            // CompileOptions::exrTables: the histogram tables' files are EXR, not PFM
     FunctionArrays functionArrays = FunctionArrays::None;  // CompileOptions::functionArrays
     std::optional<LayersPlan> layers;                      // a layered material's, when the template reads a role
     Diagnostics diagnostics;                               // warnings (e.g. a slot the template never reads) or errors

@@ -1,4 +1,4 @@
-// Histogram tables as PFM and packed textures as PNG, each through the shader cache.
+// Histogram tables as PFM (or EXR) and packed textures as PNG, each through the shader cache.
 #include "precompute/derived.h"
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include "hexc/hash.h"
 #include "hexc/histogram.h"
 #include "hexc/image.h"
+#include "hexc/image_files.h"
 
 namespace hexc {
 namespace {
@@ -29,22 +30,24 @@ HistogramTransform transformOf(const Material& material, const Slot& s) {
 }
 
 // The source texture is gone once the transform exists, and each texture's floats move into the image written (a
-// large texture's intermediate copies are what its memory goes to).
-nlohmann::json histogramFiles(const Material& material, const Slot& s) {
+// large texture's intermediate copies are what its memory goes to). `exr`: OpenEXR's bytes (CompileOptions::exrTables).
+nlohmann::json histogramFiles(const Material& material, const Slot& s, bool exr) {
     HistogramTransform t = transformOf(material, s);
     nlohmann::json files;
-    for (auto& [which, texture] : {std::pair{"gaussian", &t.gaussian}, std::pair{"lut", &t.lut}})
-        files[which] = binary(pfmBytes({texture->width, texture->height, std::move(texture->rgba32f)}));
+    for (auto& [which, texture] : {std::pair{"gaussian", &t.gaussian}, std::pair{"lut", &t.lut}}) {
+        const Image image{texture->width, texture->height, std::move(texture->rgba32f)};
+        files[which] = binary(exr ? exrBytes(image) : pfmBytes(image));
+    }
     return files;
 }
 
 // Everything a slot's derived textures depend on: the texture's bytes, how they are decoded (the file's extension, the
-// colour space) and which channels are transformed (kind, channel), and hexc's build.
-std::string histogramKey(const Slot& s) {
+// colour space) and which channels are transformed (kind, channel), the files' format, and hexc's build.
+std::string histogramKey(const Slot& s, bool exr) {
     ContentHash h;
     for (const std::string& part :
          {std::string("hexc histogram 1"), std::string(version()), buildId(), s.file->bytes, s.texturePath.extension().string(),
-          std::string(toString(s.colorSpace)), std::string(toString(s.kind)), std::to_string(s.channel)})
+          std::string(toString(s.colorSpace)), std::string(toString(s.kind)), std::to_string(s.channel), std::string(exr ? "exr" : "pfm")})
         h.add(part);
     return h.hex();
 }
@@ -64,11 +67,14 @@ bool wholePfm(const std::vector<uint8_t>& bytes, int width = 0) {
 }
 
 // A cache entry's two tables, or nothing when its payload is not two whole PFM files (another format, or damage that
-// kept its checksum): the table kHistogramLutWidth entries wide.
-std::optional<nlohmann::json> histogramEntry(const std::string& payload) {
+// kept its checksum): the table kHistogramLutWidth entries wide. EXR tables are taken by their signature.
+std::optional<nlohmann::json> histogramEntry(const std::string& payload, bool exr) {
     nlohmann::json files = nlohmann::json::from_cbor(payload, true, false);
     const auto holds = [&](const char* which, int width) {
-        return files.is_object() && files.contains(which) && files[which].is_binary() && wholePfm(files[which].get_binary(), width);
+        if (!files.is_object() || !files.contains(which) || !files[which].is_binary()) return false;
+        const std::vector<uint8_t>& bytes = files[which].get_binary();
+        return exr ? imageFormat(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())) == ImageFormat::Exr
+                   : wholePfm(bytes, width);
     };
     if (!holds("gaussian", 0) || !holds("lut", kHistogramLutWidth)) return std::nullopt;
     return files;
@@ -77,16 +83,17 @@ std::optional<nlohmann::json> histogramEntry(const std::string& payload) {
 void addHistogramFiles(const Material& material, const ShaderPlan& plan, ShaderCache* cache, std::vector<OutputFile>& out) {
     for (size_t i : plan.luts) {
         const Slot& s = *plan.slots[i].slot;
+        const bool exr = plan.exrTables;
         auto compute = [&]() -> std::optional<std::string> {
-            const std::vector<uint8_t> cbor = nlohmann::json::to_cbor(histogramFiles(material, s));
+            const std::vector<uint8_t> cbor = nlohmann::json::to_cbor(histogramFiles(material, s, exr));
             return std::string(cbor.begin(), cbor.end());
         };
-        const auto usable = [](const std::string& payload) { return histogramEntry(payload).has_value(); };
-        const std::optional<std::string> cached = cache ? cache->getOrCompute(histogramKey(s), compute, usable) : compute();
-        nlohmann::json files = histogramEntry(*cached).value();  // computed here, or a folder entry `usable` accepted
+        const auto usable = [exr](const std::string& payload) { return histogramEntry(payload, exr).has_value(); };
+        const std::optional<std::string> cached = cache ? cache->getOrCompute(histogramKey(s, exr), compute, usable) : compute();
+        nlohmann::json files = histogramEntry(*cached, exr).value();  // computed here, or a folder entry `usable` accepted
         for (const char* which : {"gaussian", "lut"}) {
             const auto& bytes = files[which].get_binary();
-            out.push_back({histogramFileName(material.name, s.name, which), std::string(bytes.begin(), bytes.end())});
+            out.push_back({histogramFileName(material.name, s.name, which, exr), std::string(bytes.begin(), bytes.end())});
         }
     }
 }

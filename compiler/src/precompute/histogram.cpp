@@ -295,8 +295,8 @@ HistogramTransform histogramTransform(const Texture& source, const Slot& slot) {
     return out;
 }
 
-std::string histogramFileName(const std::string& material, const std::string& slot, const char* which) {
-    return material + "." + slot + "." + which + ".pfm";
+std::string histogramFileName(const std::string& material, const std::string& slot, const char* which, bool exr) {
+    return material + "." + slot + "." + which + (exr ? ".exr" : ".pfm");
 }
 
 }  // namespace hexc

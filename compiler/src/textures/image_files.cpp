@@ -4,6 +4,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -71,7 +72,9 @@ bool writeBytes(const std::filesystem::path& file, const std::string& bytes) {
     return bool(out);
 }
 
-bool writeExr(const Image& image, const std::filesystem::path& file) {
+}  // namespace
+
+std::string exrBytes(const Image& image) {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
     Imf::FrameBuffer fb;
@@ -81,11 +84,16 @@ bool writeExr(const Image& image, const std::filesystem::path& file) {
         fb.insert(names[c],
                   Imf::Slice(Imf::FLOAT, (char*)(image.rgba.data() + c), 4 * sizeof(float), size_t(image.width) * 4 * sizeof(float)));
     }
-    Imf::OutputFile out(file.c_str(), header);
-    out.setFrameBuffer(fb);
-    out.writePixels(image.height);
-    return true;
+    Imf::StdOSStream stream;
+    {
+        Imf::OutputFile out(stream, header);  // written out when it goes
+        out.setFrameBuffer(fb);
+        out.writePixels(image.height);
+    }
+    return stream.str();
 }
+
+namespace {
 
 double srgbDecoded(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 double srgbEncoded(double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055; }
@@ -206,7 +214,7 @@ void writeImageAs(const Image& image, ImageFormat format, const std::filesystem:
     if (format == ImageFormat::Exr) {
         return writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
             try {
-                return writeExr(image, tmp);
+                return writeBytes(tmp, exrBytes(image));
             } catch (const std::exception&) {  // OpenEXR's Iex exceptions: a write that failed
                 return false;
             }
