@@ -207,11 +207,11 @@ Image referenceImage(const Material& material, const RenderArguments& r) {
     }
     const Slot& s = vk::slotForOutput(material, r.output, r.slot);
     checkTexelBudget(material, reference::kReferenceBudget, &s);
-    reference::SampledTexture texture(loadTexture(s.texturePath, s.samplerDecodes(), s.textureLayer));
+    const reference::SlotTextures textures(s);  // a histogram slot's: its Gaussian texture and table, as hexc derives them
     const reference::Heights heights(material, s);
-    Image image =
-        reference::render(s, texture, r.view, r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
-                          heights.source());
+    Image image = reference::render(s, *textures.texture, r.view,
+                                    r.output == vk::RenderOutput::Weights ? reference::Output::Weights : reference::Output::Value,
+                                    heights.source(), textures.lut.get());
     if (kindRow(s.kind).oneChannel && r.output != vk::RenderOutput::Weights)  // as the GPU shows a value: (s, s, s, 1)
         for (size_t i = 0; i < image.rgba.size(); i += 4)
             image.rgba[i] = image.rgba[i + 1] = image.rgba[i + 2] = image.rgba[i + size_t(s.channel)];

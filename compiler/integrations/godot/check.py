@@ -5,15 +5,17 @@ xvfb-run) of the project in project/, every frame with a red marker Godot draws 
 - the matrix: the Godot 3 package of every material under materials/ (engine_check.matrix_materials) compiled by
   Godot itself (drawn once; a SHADER ERROR fails), but the ones the docs say a package refuses (hexc must refuse them);
 - drawn against hexc's fp64 reference (engine_check.drawn_materials: rock, tiles, the mixed, layered and probe
-  materials), each function of the package shown unshaded on a mesh with Godot's uv convention ((0, 0) at the
-  top-left, the package built without --uv-bottom-left, as docs/conventions.md says), within the bound derived in
-  engine_check.py; the layered material weighed by the vertex colour (engine_check.layered_material(vertex=True)) on a
-  mesh whose corners carry engine_check.VERTEX_COLORS, which its functions read from Godot's COLOR; the probe's bumps lit by a Godot light on Godot's own QuadMesh, from the right and from the top:
-  15 of 15 lit from the light's side, for a green-up and a DirectX map;
+  materials; and the golden histogram material, its Gaussian textures and tables the package's OpenEXR files), each
+  function of the package shown unshaded on a mesh with Godot's uv convention ((0, 0) at the top-left, the package
+  built without --uv-bottom-left, as docs/conventions.md says), within the bound derived in engine_check.py; the
+  layered material weighed by the vertex colour (engine_check.layered_material(vertex=True)) on a mesh whose corners
+  carry engine_check.VERTEX_COLORS, which its functions read from Godot's COLOR; the probe's bumps lit by a Godot
+  light on Godot's own QuadMesh, from the right and from the top: 15 of 15 lit from the light's side, for a green-up
+  and a DirectX map;
 - negative controls, which must fail: the package built for the other uv origin, a mesh mirrored in u, the normal
   map of the other green convention, the albedo decoded twice, a NaN value; the layered material with two layers'
-  textures exchanged and with a splat channel swapped; the vertex-weighed one with the mesh's red and green vertex
-  colour channels exchanged.
+  textures exchanged and with a splat channel swapped; the histogram slot's own texture bound in place of its
+  Gaussian texture; the vertex-weighed one with the mesh's red and green vertex colour channels exchanged.
 
 The frame is read back as Godot's docs say (get_data() then flip_y), and every image must show the marker at its
 top-left.
@@ -36,6 +38,8 @@ SIZE = 256
 HDR_BUFFER = 2 ** -11
 TOP = [0, 1, 0.5]  # towards a light at the top of the screen
 LIGHTS = {"right": [1, 0, 0.5], "top": TOP}
+# The histogram blend: its Gaussian texture and table, float, as the package's OpenEXR files Godot loads.
+HISTOGRAM = ROOT / "tests" / "golden" / "materials" / "histogram.json"
 
 
 @functools.lru_cache(maxsize=None)  # a package is written once, for the matrix and the checks that draw it
@@ -52,6 +56,10 @@ def textures(pkg, swap=None):
     files = {s["name"]: (pkg / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
     for p in manifest.get("packed_textures", []):
         files[p["name"]] = (pkg / p["file"], p["colorspace"] == "srgb")
+    for s in manifest["slots"]:  # a histogram slot: its Gaussian texture in place of its own, its table beside (linear)
+        if "histogram" in s:
+            files[s["name"]] = (pkg / s["histogram"]["gaussian"]["file"], False)
+            files[s["name"] + ".lut"] = (pkg / s["histogram"]["lut"]["file"], False)
     for name, path in (swap or {}).items():
         files[name] = (path, files[name][1])
     return {where["uniform"]: {"path": str(Path(files[name][0]).resolve()), "srgb": files[name][1]}
@@ -136,7 +144,7 @@ def compile_check(material):
 
 def draw(hexc, jobs, work):
     """The drawn materials' value views and the probe lit, as the docs say a user builds them."""
-    for material in ec.drawn_materials(ROOT, work):
+    for material in ec.drawn_materials(ROOT, work) + [HISTOGRAM]:
         pkg = package(hexc, material, work)
         rect = ec.rect_for(ec.manifest(pkg), SIZE)
         for f in ec.manifest(pkg)["functions"]:
@@ -177,6 +185,12 @@ def controls(hexc, jobs, work):
     for what, swap in ec.layered_controls(layered.parent).items():
         jobs.add(value_shader(lpkg, role), textures(lpkg, swap), value_check(hexc, layered, lpkg, role, lrect, what),
                  f"control_{len(jobs.jobs)}", uv=lrect)
+    hpkg = package(hexc, HISTOGRAM, work)
+    halbedo = next(f for f in ec.manifest(hpkg)["functions"] if f.get("slot") == "albedo")
+    hrect = ec.rect_for(ec.manifest(hpkg), SIZE)
+    jobs.add(value_shader(hpkg, halbedo), textures(hpkg, {"albedo": ROOT / "materials" / "textures" / "rock_albedo.png"}),
+             value_check(hexc, HISTOGRAM, hpkg, halbedo, hrect, "the histogram slot's own texture bound in place of its Gaussian texture"),
+             f"control_{len(jobs.jobs)}", uv=hrect)
     bumps_bl, bumps_pkg = package(hexc, bumps, work, bottom_left=True), package(hexc, bumps, work)
     jobs.add(str(next(bumps_bl.glob("*.shader"))), textures(bumps_bl),
              lit_check("v flipped: the bumps package built with --uv-bottom-left", "top", True), "control_bumps_v", light=TOP)
