@@ -180,7 +180,8 @@ TEST(LayerArrays, TheTextureLimitCountsAnArrayOnce) {
     const std::vector<std::string> off = tooMany(planShader(eightWithTwoRoles("off", file), {}));
     ASSERT_EQ(off.size(), 1u);
     EXPECT_NE(off[0].find(": error[HX110]: /layers/0/slots/0: the shader binds 18 textures (a texture array or a packed texture "
-                          "counted once); expected at most 16 (bind each role's layers as one texture array, one texture instead "
+                          "counted once, a histogram slot's table too); expected at most 16 (bind each role's layers as one texture array, "
+                          "one texture instead "
                           "of one per layer: role `albedo` (layer_blend.arrays is \"off\"); role `roughness` (layer_blend.arrays "
                           "is \"off\"))"),
               std::string::npos)
@@ -199,6 +200,30 @@ TEST(LayerArrays, TheTextureLimitCountsAnArrayOnce) {
     Material one = arrayed;
     slotOf(one, 5, 0).width = 128;
     EXPECT_TRUE(tooMany(planShader(one, {})).empty());
+    std::filesystem::remove(file);
+}
+
+// A histogram slot's table is a texture the shader binds too: 16 slots, one of them blended by histogram, bind 17 in the
+// functions output (which reads every slot) and are refused (HX110) at that slot; 15 slots bind 16.
+TEST(LayerArrays, TheTextureLimitCountsAHistogramSlotsTable) {
+    nlohmann::json doc = {{"name", "sixteen"}, {"slots", nlohmann::json::array()}};
+    for (int i = 0; i < 16; ++i)
+        doc["slots"].push_back({{"name", "s" + std::to_string(i)},
+                                {"kind", "scalar"},
+                                {"texture", std::filesystem::absolute("materials/textures/rock_roughness.png").string()}});
+    doc["slots"][3]["hextiling"] = {{"blend", "histogram"}};
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / ("hexc_sixteen_" + test::testLogName() + ".json");
+    std::ofstream(file) << doc.dump(2);
+    CompileOptions functions;
+    functions.functions = true;
+    const std::vector<std::string> over = tooMany(planShader(loadMaterial(file), functions));
+    ASSERT_EQ(over.size(), 1u);
+    EXPECT_NE(over[0].find("error[HX110]: /slots/3: the shader binds 17 textures"), std::string::npos) << over[0];
+    EXPECT_NE(over[0].find("(blend a slot by falloff: a histogram slot binds its table besides its texture)"), std::string::npos)
+        << over[0];
+    doc["slots"].erase(15);
+    std::ofstream(file) << doc.dump(2);
+    EXPECT_TRUE(tooMany(planShader(loadMaterial(file), functions)).empty());
     std::filesystem::remove(file);
 }
 

@@ -156,34 +156,40 @@ void notArrayed(const Material& material, ShaderPlan& plan, const LayerArrayPlan
         a.fix + " for one array, or set layer_blend.arrays to \"off\" for separate textures"));
 }
 
-// The textures the shader binds, as they are bound: a role's array once, a packed texture once, every other slot its
-// own. At most 16, Vulkan's guaranteed minimum of sampled images per stage (a material's own slots are held to it when
-// parsed); over it, HX110 at a layer's slot with what binds fewer: one array per role where a role's layers are apart.
+// The textures the shader binds, as they are bound: a role's array once, a packed texture once, a histogram slot's
+// table besides its texture, every other slot its own. At most 16, Vulkan's guaranteed minimum of sampled images per
+// stage (a material's own slots are held to it when parsed, its tables are not); over it, HX110, at a layer's slot with
+// what binds fewer (one array per role where a role's layers are apart), or at a histogram slot.
 void refuseTooManyTextures(const Material& material, ShaderPlan& plan) {
     size_t bound = 0;
-    for (size_t i = 0; i < plan.slots.size(); ++i) bound += plan.textureBound(i);
+    for (size_t i = 0; i < plan.textureCount(); ++i) bound += plan.textureBound(i);
     if (bound <= kMaxTextures) return;
     std::string apart;
-    size_t at = plan.layers->roles.front().slots.front();  // located at the first layer slot, or at one that refuses its array
-    for (const LayerArrayPlan& a : plan.layers->arrays) {
+    size_t at = plan.layers ? plan.layers->roles.front().slots.front() : plan.luts.front();  // without layers, only tables add
+    for (const LayerArrayPlan& a : plan.layers ? plan.layers->arrays : std::vector<LayerArrayPlan>{}) {
         if (a.refused.empty()) continue;
         apart += (apart.empty() ? "" : "; ") + ("role `" + a.role + "` (" + a.refused + (a.fix.empty() ? "" : ": " + a.fix) + ")");
         if (!a.fix.empty()) at = a.unlike;
     }
-    const std::string hint = apart.empty() ? "pack a layer's scalar maps into one texture's channels (`channel`) or drop a role"
-                                           : "bind each role's layers as one texture array, one texture instead of one per layer: " + apart;
+    const std::string hint = !plan.layers ? "blend a slot by falloff: a histogram slot binds its table besides its texture"
+                             : apart.empty()
+                                 ? "pack a layer's scalar maps into one texture's channels (`channel`) or drop a role"
+                                 : "bind each role's layers as one texture array, one texture instead of one per layer: " + apart;
     const Slot& slot = *plan.slots[at].slot;
-    plan.diagnostics.push_back(Diagnostic::make(
-        Code::WrongCount, {material.sourceFile.string(), slot.line, slot.col}, layerSlotPointer(material, plan, at),
-        "the shader binds " + std::to_string(bound) + " textures (a texture array or a packed texture counted once); expected at most " +
-            std::to_string(kMaxTextures),
-        hint));
+    const std::string pointer =
+        plan.layers ? layerSlotPointer(material, plan, at) : "/slots/" + std::to_string(&slot - material.slots.data());
+    plan.diagnostics.push_back(Diagnostic::make(Code::WrongCount, {material.sourceFile.string(), slot.line, slot.col}, pointer,
+                                                "the shader binds " + std::to_string(bound) +
+                                                    " textures (a texture array or a packed texture counted once, a histogram "
+                                                    "slot's table too); expected at most " +
+                                                    std::to_string(kMaxTextures),
+                                                hint));
 }
 
 }  // namespace
 
 void planLayerArrays(const Material& material, ShaderPlan& plan) {
-    if (!plan.layers) return;
+    if (!plan.layers) return refuseTooManyTextures(material, plan);
     const Layers& layers = *material.layers;
     std::vector<LayerArrayPlan> arrays;
     for (size_t r = 0; r < layers.roles.size(); ++r) {
