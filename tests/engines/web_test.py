@@ -280,6 +280,16 @@ def layered_view(material, origin, function, control=None, files=None, colors=No
     return ec.value_verdict(HEXC, material, function, Path(png), view, control)
 
 
+def swapped_splat(material):
+    """`material`'s splat map with its red and green channels swapped, written into its top-left package: the `files`
+    (layered_view) that load it in place of the package's own."""
+    name = Path(material).stem
+    swapped = os.path.join(PACKAGES, "%s-top-left" % name, ENGINE, "%s.splat0.swapped.png" % name)
+    w, h, n, rows = ec.read_png(os.path.join(os.path.dirname(material), "splat.png"))
+    ec.write_png(swapped, w, h, lambda x, y: (rows[y][x * n + 1], rows[y][x * n], rows[y][x * n + 2]))
+    return {"%s.splat0.png" % name: os.path.basename(swapped)}
+
+
 def lit_by_the_normal(material, origin):
     """The layered package lit by the engine from +x and from -x (diffuse): per pixel, (out(+x) - out(-x)) / (out(+x) +
     out(-x)), which for out = albedo I (n . L) is n_x / n_z whatever the albedo (a single image over the unlit albedo
@@ -362,8 +372,9 @@ class Engine(unittest.TestCase):
         same images against the reference flipped in u and in v over it, and the material lit by the engine from +x and
         -x: their ratio follows the reference's slope; the same layers weighed by the vertex colour (layered_vertex) on a
         square whose corners carry engine_check.VERTEX_COLORS, which the package reads from the engine's own vertex
-        colour. Negative controls, which must fail the layered check: two layers' normal maps exchanged in the engine,
-        the splat map's red and green channels swapped, the square's red and green vertex colour channels swapped."""
+        colour, and (three.js) by the splat map times that colour (layered_both). Negative controls, which must fail the
+        layered check: two layers' normal maps exchanged in the engine, the splat map's red and green channels swapped
+        (for layered and layered_both), the square's red and green vertex colour channels swapped."""
         material = str(ec.layered_material(os.path.join(PACKAGES, "layered")))
         failed = 0
         for origin in ORIGINS:
@@ -376,21 +387,25 @@ class Engine(unittest.TestCase):
                              "reference's n_x / n_z %.3f (%d pixels; > 0.9 required), with the normal mirrored in x %.3f "
                              "(must be below 0.9)" % (r, pixels, mirrored), r > 0.9 and mirrored < 0.9)
         functions = {f["name"]: f for f in ec.manifest(os.path.join(PACKAGES, "layered-top-left", ENGINE))["functions"]}
-        swapped = os.path.join(PACKAGES, "layered-top-left", ENGINE, "layered.splat0.swapped.png")
-        w, h, n, rows = ec.read_png(os.path.join(PACKAGES, "layered", "splat.png"))
-        ec.write_png(swapped, w, h, lambda x, y: (rows[y][x * n + 1], rows[y][x * n], rows[y][x * n + 2]))
         controls = (("two layers' normal maps exchanged in the engine (clay's and moss's)", "hexc_normal_normal",
                      {"layered.clay_normal.png": "layered.moss_normal.png", "layered.moss_normal.png": "layered.clay_normal.png"}),
-                    ("the splat map's red and green channels swapped", "hexc_albedo",
-                     {"layered.splat0.png": os.path.basename(swapped)}))
+                    ("the splat map's red and green channels swapped", "hexc_albedo", swapped_splat(material)))
         for control, name, files in controls:
             failed += layered_view(material, "top-left", functions[name], control, files)
-        vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), vertex=True))
-        package(vertex, "top-left")  # the colour does not depend on the uv origin, which the splat map's views check
-        roles = [f for f in ec.manifest(os.path.join(PACKAGES, "layered_vertex-top-left", ENGINE))["functions"] if f["returns"] != "vec2"]
-        failed += sum(layered_view(vertex, "top-left", f, colors=ec.VERTEX_COLORS) for f in roles)
-        failed += layered_view(vertex, "top-left", next(f for f in roles if f["role"] == "albedo"),
-                               "the square's red and green vertex colour channels swapped", colors=ec.VERTEX_COLORS_SWAPPED)
+        # Weighed by the vertex colour, and (three.js only) by the splat map times it: the product is hexc's code, the
+        # same GLSL in both web packages, and the colour reaches it as in the vertex case, which both engines draw.
+        for weights in ("vertex", "both") if ENGINE == "threejs" else ("vertex",):
+            coloured = str(ec.layered_material(os.path.join(PACKAGES, "layered"), weights=weights))
+            package(coloured, "top-left")  # the colour does not depend on the uv origin, which the splat map's views check
+            roles = [f for f in ec.manifest(os.path.join(PACKAGES, "layered_%s-top-left" % weights, ENGINE))["functions"]
+                     if f["returns"] != "vec2"]
+            albedo = next(f for f in roles if f["role"] == "albedo")
+            failed += sum(layered_view(coloured, "top-left", f, colors=ec.VERTEX_COLORS) for f in roles)
+            failed += layered_view(coloured, "top-left", albedo, "the square's red and green vertex colour channels swapped",
+                                   colors=ec.VERTEX_COLORS_SWAPPED)
+            if weights == "both":
+                failed += layered_view(coloured, "top-left", albedo, "the splat map's red and green channels swapped",
+                                       swapped_splat(coloured), colors=ec.VERTEX_COLORS)
         self.assertEqual(failed, 0)
 
     def test_package_files_and_a_slot_without_input(self):
@@ -437,7 +452,7 @@ class Engine(unittest.TestCase):
         webgpu_page = Page(SERVER, ENGINE, WEBGPU_FLAGS)
         try:
             webgpu = [webgpu_page.render(**config, light=light, webgpu=True) for light in lights]
-            vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), vertex=True))
+            vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), weights="vertex"))
             wgsl_package(vertex)
             albedo = next(f for f in ec.manifest(os.path.join(PACKAGES, "layered_vertex-top-left-wgsl", ENGINE))["functions"]
                           if f["role"] == "albedo")
