@@ -4,8 +4,9 @@ marker at the screen's top-left, and each wrong variant a user can make failing 
 the engine's own material input matches hexc's fp64 reference, and a dome normal map under a known light is lit from
 the light's side, with the package written for either uv origin; a layered material's roles within engine_check.py's
 layered bound per pixel, lit by the engine, its layers or splat channels swapped failing, and weighed by the vertex
-colour (the engine's own, from the square's), its red and green channels swapped failing; every example compiles in the
-engine; Babylon's package on its WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2,
+colour (the engine's own, from the square's), its red and green channels swapped failing, and on a square without
+vertex colours refused (three.js) or said to be drawn with WebGL's default colour (Babylon.js); every example compiles
+in the engine; Babylon's package on its WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2,
 and its vertex-weighed albedo within the same bound.
 
 Usage: web_test.py HEXC ENGINE [--screenshot PNG] [TEST ...]   (from the source root; ENGINE is threejs or babylon)
@@ -408,6 +409,24 @@ class Engine(unittest.TestCase):
                                        swapped_splat(coloured), colors=ec.VERTEX_COLORS)
         self.assertEqual(failed, 0)
 
+    def test_vertex_weighed_without_a_vertex_colour(self):
+        """Layers weighed by the vertex colour on a square without one (docs/engines.md#vertex-colours-as-weights), where
+        WebGL's default colour, (0, 0, 0, 1), draws the first layer over the whole square: three.js's package refuses
+        to draw it, throwing an Error that names the mesh and its missing attribute; Babylon.js's draws it and says so
+        with console.error (which the driver reports as a failure). The same square with its vertex colours draws with
+        neither (what is refused is the missing attribute)."""
+        vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), weights="vertex"))
+        config = dict(module=package(vertex, "top-left"), width=SIZE, height=SIZE, uv=engine_uv(LAYERED_RECT, "top-left"),
+                      input="albedo", encoding="linear")
+        said = {"threejs": r'the driver failed: Error: hexc: layered_vertex weighs its layers by the vertex colour, and the '
+                           r'geometry of mesh "[^"]+" has no `color` attribute: give it one',
+                "babylon": r'hexc: layered_vertex weighs its layers by the vertex colour, and mesh \\?"[^"\\]+\\?" has no `color` '
+                           r'vertex buffer: it is drawn with the colour \(0, 0, 0, 1\); give it one'}
+        with self.assertRaisesRegex(AssertionError, said[ENGINE]) as refused:
+            PAGE.render(**config)
+        print("  %s, no vertex colour: %s" % (ENGINE, str(refused.exception).splitlines()[0]))
+        PAGE.render(**config, colors=ec.VERTEX_COLORS)
+
     def test_package_files_and_a_slot_without_input(self):
         """The package's files; a slot the engine has no input for is reported (HX204) and listed in the module's
         data, not dropped silently."""
@@ -544,7 +563,8 @@ class Engine(unittest.TestCase):
 
     def test_every_example_compiles_in_the_engine(self):
         """Every example material under materials/ through the package (top-left, then bottom-left, alternately),
-        compiled by the engine and drawn lit once: no shader error, not a flat image (the terrain, layered, among them).
+        compiled by the engine and drawn lit once: no shader error, not a flat image (the terrain, layered, among them;
+        those weighed by the vertex colour on a square with engine_check.py's corner colours).
         Only what docs/engines.md says the package refuses is left out (triplanar materials: HX300), and it is listed."""
         examples = sorted(glob.glob("materials/*.json") + glob.glob("materials/terrain/*.json") + glob.glob("materials/mtlx/*.mtlx"))
         drawn, skipped = [], []
@@ -566,8 +586,10 @@ class Engine(unittest.TestCase):
             with self.subTest(material):
                 self.assertEqual(run.returncode, 0, run.stderr)
                 name = next(n for n in os.listdir(os.path.join(PACKAGES, "matrix", str(i), ENGINE)) if n.endswith(".%s.js" % MODULE_SUFFIX[ENGINE]))
+                coloured = doc.get("layer_blend", {}).get("weights", "splat") != "splat"  # a mesh without colours is refused
                 got = PAGE.render(module="/pkg/matrix/%d/%s/%s" % (i, ENGINE, name), width=32, height=32, uv=GL_UV,
-                                  light=[1.0, 1.0, 0.3], encoding="srgb")  # grazing: a normal map alone shows
+                                  light=[1.0, 1.0, 0.3], encoding="srgb",  # grazing: a normal map alone shows
+                                  colors=ec.VERTEX_COLORS if coloured else None)
                 values = [p[c] for row in got for p in row for c in range(3)]
                 self.assertGreater(max(values) - min(values), 10, "a flat image")
                 drawn.append("%s (%s)" % (material, origin))
