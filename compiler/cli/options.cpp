@@ -268,7 +268,7 @@ std::optional<int> resolveArguments(const Unresolved& u, Arguments& a) {
     // An engine package's manifest gives the textures the package does not hold from its own folder in the output folder.
     if (u.manifestPaths || !a.engines.empty()) a.options.manifestPathsFrom = a.outDir;
     applyNames(u.targets, u.glsl, u.msl, u.lines, a.options);
-    if (a.options.functions && u.targets.empty()) a.options.targets = {Target::Hlsl, Target::Glsl, Target::Msl};  // no SPIR-V form
+    if (a.options.functions && u.targets.empty()) a.options.targets = defaultFunctionsTargets();
     if (!u.layout.resolve(a.options.layout, a.messages)) return kInvalidInput;
     if (uint32_t space = a.options.layout.hlsl.space; space != 0 && a.options.hlslShaderModel < 51) {
         *a.messages.text << "hexc: HLSL register space " << space << " needs --hlsl-sm 51 or later (shader model 5.0 has no spaces)\n";

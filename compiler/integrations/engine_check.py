@@ -186,14 +186,15 @@ def manifest(package_dir):
 LAYERS = ["clay", "moss", "slate"]
 
 
-def layered_material(folder, arrays=True, vertex=False):
+def layered_material(folder, arrays=True, weights="splat"):
     """The engine tests' layered material, written into `folder`: three layers (albedo, sRGB, and a green-up normal map
     each, 64 x 64, hex-tiled twice across uv) blended linearly by a painted 32 x 32 splat map (RGB: one layer a
     channel, linear). The splat map is asymmetric both ways, so that a flipped u or v shows: clay (red) fills a block
     at the top-left with a hard border, the rest goes from moss (green) at the top to slate (blue) at the bottom
     through a soft border. Without `arrays`, the same as `layered_separate`, its roles a texture per slot
-    (`"arrays": "off"`): a package's fallback where it binds arrays. With `vertex`, `layered_vertex`: the same layers
-    weighed by the vertex colour instead (channel i weighs layer i; drawn with VERTEX_COLORS)."""
+    (`"arrays": "off"`): a package's fallback where it binds arrays. With `weights` "vertex", `layered_vertex`: the same
+    layers weighed by the vertex colour instead (channel i weighs layer i; drawn with VERTEX_COLORS); "both",
+    `layered_both`: by the splat map's channel times the vertex colour's."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     size = 64
@@ -226,10 +227,10 @@ def layered_material(folder, arrays=True, vertex=False):
         layers.append({"name": name, "slots": [
             {"name": "albedo", "kind": "color", "texture": f"{name}_albedo.png", "colorspace": "srgb"},
             {"name": "normal", "kind": "normal", "texture": f"{name}_normal.png"}]})
-    name = "layered_vertex" if vertex else "layered" if arrays else "layered_separate"
-    weights = {"weights": "vertex"} if vertex else {"splat": ["splat.png"]}
+    name = f"layered_{weights}" if weights != "splat" else "layered" if arrays else "layered_separate"
+    source = {"weights": weights, **({"splat": ["splat.png"]} if weights != "vertex" else {})}
     material = {"name": name, "hextiling": {"tiling": 2, "rotation": 1.0}, "layers": layers,
-                "layer_blend": {**weights, "mode": "linear", **({} if arrays else {"arrays": "off"})}}
+                "layer_blend": {**source, "mode": "linear", **({} if arrays else {"arrays": "off"})}}
     (folder / f"{name}.json").write_text(json.dumps(material, indent=2))
     return folder / f"{name}.json"
 
@@ -256,7 +257,9 @@ def vertex_color(x, y, size):
 def layered_errors(hexc, material, manifest, role, normal, size, rect, work):
     """Per pixel, the bound on the error of a layered role's value before the engine's output (linear; for a normal role
     in n * 0.5 + 0.5), from the fp64 references of its layers' slots and of the splat map (`hexc render --reference`),
-    or of the vertex colour (VERTEX_COLORS, each weight off by VERTEX_COLOR_ERROR instead of e).
+    or of the vertex colour (VERTEX_COLORS, each weight off by VERTEX_COLOR_ERROR instead of e), or of their product
+    (weights "both": p c - p' c' = (p - p') c + p' (c - c'), each weight off by e + VERTEX_COLOR_ERROR (1 + e), as
+    p, c <= 1 and p' <= 1 + e).
     As in tests/execution/layers_test.cpp, with the engines' filtering error e = FILTER_ERROR on every fetch:
       - each layer's value errs by its slot's error (as for a slot: amplification(slot) e; a normal's slope by
         4 e / n_z^2 times that, n_z the layer's own), and the blend, whose weights sum to 1, by the largest of them;
@@ -270,16 +273,17 @@ def layered_errors(hexc, material, manifest, role, normal, size, rect, work):
     slots = {s["name"]: s for s in manifest["slots"]}
     output = "derivative" if normal else "albedo"
     values = [reference(hexc, material, output, f"{l}_{role}", size, rect, work / f"{l}_{role}.ref.pfm")[2] for l in LAYERS]
-    vertex = manifest["layers"]["weights"] == "vertex"
-    splat = None if vertex else reference(hexc, material, "albedo", "splat0", size, rect, work / "splat0.ref.pfm")[2]
+    weighed = manifest["layers"]["weights"]
+    colour = weighed != "splat"
+    splat = None if weighed == "vertex" else reference(hexc, material, "albedo", "splat0", size, rect, work / "splat0.ref.pfm")[2]
     amplify = max(amplification(slots[f"{l}_{role}"]) for l in LAYERS)
     e, n = FILTER_ERROR, len(LAYERS)
-    ew = VERTEX_COLOR_ERROR if vertex else e  # a weight's error
+    ew = {"splat": e, "vertex": VERTEX_COLOR_ERROR, "both": e + VERTEX_COLOR_ERROR * (1 + e)}[weighed]  # a weight's error
     rows = []
     for y in range(size):
         row = []
         for x in range(size):
-            s = [(vertex_color(x, y, size) if vertex else splat[y][x])[i] for i in range(n)]
+            s = [(splat[y][x][i] if splat else 1.0) * (vertex_color(x, y, size)[i] if colour else 1.0) for i in range(n)]
             S = max(sum(v for v in s if v >= skip), 1e-3)
             layer = [values[i][y][x] for i in range(n)]
             channels = 2 if normal else 3

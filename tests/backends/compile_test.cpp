@@ -413,11 +413,17 @@ TEST(Library, WritesAnIncludeFilePerTarget) {
         EXPECT_EQ(text->find("#version"), std::string::npos);
     }
     EXPECT_NE(spvasm.find("OpFunction"), std::string::npos);
-    // The banner names the library's source, the folder of its parts (each file's own banner, its first two lines).
+    // The banner names the library's source, the folder of its parts (each file's own banner, its first two lines),
+    // and what wrote the file from SPIR-V.
     for (const std::string* text : {&hlsl, &glsl, &msl})
-        EXPECT_NE(text->substr(0, text->find("Do not edit")).find("\n// templates/library/hextiling/ (its parts, joined in order)"),
+        EXPECT_NE(text->substr(0, text->find("Do not edit"))
+                      .find("\n// templates/library/hextiling/ (its parts, joined in order) through "
+                            "glslang and SPIRV-Cross."),
                   std::string::npos)
             << text->substr(0, 200);
+    EXPECT_NE(spvasm.find("\n; templates/library/hextiling/ (its parts, joined in order) through glslang and SPIRV-Tools' disassembler."),
+              std::string::npos)
+        << spvasm.substr(0, 200);
     ASSERT_EQ(runHexc("library --target hlsl -o " + (dir / "again").string(), &err), 0) << err;
     EXPECT_EQ(readFile(dir / "again" / "hexc_hextiling.hlsl"), hlsl);
 }

@@ -38,10 +38,26 @@ std::vector<std::string> starlarkStrings(const std::string& text, const std::str
     return out;
 }
 
-std::vector<std::string> defaultNames() {
+std::vector<std::string> namesOf(const std::vector<Target>& targets) {
     std::vector<std::string> names;
-    for (Target t : defaultTargets()) names.push_back(std::string(toString(t)));
+    for (Target t : targets) names.push_back(std::string(toString(t)));
     return names;
+}
+
+std::vector<std::string> defaultNames() { return namesOf(defaultTargets()); }
+
+// The first list of targets, `a,b,c` in backquotes, after `pattern` in docs/cli.md.
+std::string docsList(const std::string& pattern) {
+    const std::string docs = readFile("docs/cli.md");
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(docs, m, std::regex(pattern + "`([^`]*)`"))) << pattern;
+    return m[1].str();
+}
+
+std::string commaSeparated(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& name : names) out += (out.empty() ? "" : ",") + name;
+    return out;
 }
 
 }  // namespace
@@ -64,12 +80,12 @@ TEST(TargetTable, BazelPackageListsTheTable) {
 }
 
 TEST(TargetTable, CommandLineDocsListTheTable) {
-    const std::string docs = readFile("docs/cli.md");
-    std::smatch m;
-    ASSERT_TRUE(std::regex_search(docs, m, std::regex("`--target LIST` [^\\n]*comma-separated subset of `([^`]*)`")));
-    std::string names;
-    for (const std::string& name : targetNames()) names += (names.empty() ? "" : ",") + name;
-    EXPECT_EQ(m[1].str(), names);
+    EXPECT_EQ(docsList("`--target LIST` [^\\n]*comma-separated subset of "), commaSeparated(targetNames()));
+}
+
+// `--functions` without `--targets`: the default targets that are source (defaultFunctionsTargets), as the docs say.
+TEST(TargetTable, CommandLineDocsStateTheFunctionsDefault) {
+    EXPECT_EQ(docsList("`--functions` [^\\n]*the default targets become "), commaSeparated(namesOf(defaultFunctionsTargets())));
 }
 
 TEST(TargetTable, ManifestSchemaDescribesEveryTarget) {

@@ -4,8 +4,9 @@ marker at the screen's top-left, and each wrong variant a user can make failing 
 the engine's own material input matches hexc's fp64 reference, and a dome normal map under a known light is lit from
 the light's side, with the package written for either uv origin; a layered material's roles within engine_check.py's
 layered bound per pixel, lit by the engine, its layers or splat channels swapped failing, and weighed by the vertex
-colour (the engine's own, from the square's), its red and green channels swapped failing; every example compiles in the
-engine; Babylon's package on its WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2,
+colour (the engine's own, from the square's), its red and green channels swapped failing, and on a square without
+vertex colours refused (three.js) or said to be drawn with WebGL's default colour (Babylon.js); every example compiles
+in the engine; Babylon's package on its WebGPU engine (WGSL, Chromium's WebGPU on SwiftShader) draws what it draws on WebGL 2,
 and its vertex-weighed albedo within the same bound.
 
 Usage: web_test.py HEXC ENGINE [--screenshot PNG] [TEST ...]   (from the source root; ENGINE is threejs or babylon)
@@ -280,6 +281,16 @@ def layered_view(material, origin, function, control=None, files=None, colors=No
     return ec.value_verdict(HEXC, material, function, Path(png), view, control)
 
 
+def swapped_splat(material):
+    """`material`'s splat map with its red and green channels swapped, written into its top-left package: the `files`
+    (layered_view) that load it in place of the package's own."""
+    name = Path(material).stem
+    swapped = os.path.join(PACKAGES, "%s-top-left" % name, ENGINE, "%s.splat0.swapped.png" % name)
+    w, h, n, rows = ec.read_png(os.path.join(os.path.dirname(material), "splat.png"))
+    ec.write_png(swapped, w, h, lambda x, y: (rows[y][x * n + 1], rows[y][x * n], rows[y][x * n + 2]))
+    return {"%s.splat0.png" % name: os.path.basename(swapped)}
+
+
 def lit_by_the_normal(material, origin):
     """The layered package lit by the engine from +x and from -x (diffuse): per pixel, (out(+x) - out(-x)) / (out(+x) +
     out(-x)), which for out = albedo I (n . L) is n_x / n_z whatever the albedo (a single image over the unlit albedo
@@ -362,8 +373,9 @@ class Engine(unittest.TestCase):
         same images against the reference flipped in u and in v over it, and the material lit by the engine from +x and
         -x: their ratio follows the reference's slope; the same layers weighed by the vertex colour (layered_vertex) on a
         square whose corners carry engine_check.VERTEX_COLORS, which the package reads from the engine's own vertex
-        colour. Negative controls, which must fail the layered check: two layers' normal maps exchanged in the engine,
-        the splat map's red and green channels swapped, the square's red and green vertex colour channels swapped."""
+        colour, and (three.js) by the splat map times that colour (layered_both). Negative controls, which must fail the
+        layered check: two layers' normal maps exchanged in the engine, the splat map's red and green channels swapped
+        (for layered and layered_both), the square's red and green vertex colour channels swapped."""
         material = str(ec.layered_material(os.path.join(PACKAGES, "layered")))
         failed = 0
         for origin in ORIGINS:
@@ -376,22 +388,44 @@ class Engine(unittest.TestCase):
                              "reference's n_x / n_z %.3f (%d pixels; > 0.9 required), with the normal mirrored in x %.3f "
                              "(must be below 0.9)" % (r, pixels, mirrored), r > 0.9 and mirrored < 0.9)
         functions = {f["name"]: f for f in ec.manifest(os.path.join(PACKAGES, "layered-top-left", ENGINE))["functions"]}
-        swapped = os.path.join(PACKAGES, "layered-top-left", ENGINE, "layered.splat0.swapped.png")
-        w, h, n, rows = ec.read_png(os.path.join(PACKAGES, "layered", "splat.png"))
-        ec.write_png(swapped, w, h, lambda x, y: (rows[y][x * n + 1], rows[y][x * n], rows[y][x * n + 2]))
         controls = (("two layers' normal maps exchanged in the engine (clay's and moss's)", "hexc_normal_normal",
                      {"layered.clay_normal.png": "layered.moss_normal.png", "layered.moss_normal.png": "layered.clay_normal.png"}),
-                    ("the splat map's red and green channels swapped", "hexc_albedo",
-                     {"layered.splat0.png": os.path.basename(swapped)}))
+                    ("the splat map's red and green channels swapped", "hexc_albedo", swapped_splat(material)))
         for control, name, files in controls:
             failed += layered_view(material, "top-left", functions[name], control, files)
-        vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), vertex=True))
-        package(vertex, "top-left")  # the colour does not depend on the uv origin, which the splat map's views check
-        roles = [f for f in ec.manifest(os.path.join(PACKAGES, "layered_vertex-top-left", ENGINE))["functions"] if f["returns"] != "vec2"]
-        failed += sum(layered_view(vertex, "top-left", f, colors=ec.VERTEX_COLORS) for f in roles)
-        failed += layered_view(vertex, "top-left", next(f for f in roles if f["role"] == "albedo"),
-                               "the square's red and green vertex colour channels swapped", colors=ec.VERTEX_COLORS_SWAPPED)
+        # Weighed by the vertex colour, and (three.js only) by the splat map times it: the product is hexc's code, the
+        # same GLSL in both web packages, and the colour reaches it as in the vertex case, which both engines draw.
+        for weights in ("vertex", "both") if ENGINE == "threejs" else ("vertex",):
+            coloured = str(ec.layered_material(os.path.join(PACKAGES, "layered"), weights=weights))
+            package(coloured, "top-left")  # the colour does not depend on the uv origin, which the splat map's views check
+            roles = [f for f in ec.manifest(os.path.join(PACKAGES, "layered_%s-top-left" % weights, ENGINE))["functions"]
+                     if f["returns"] != "vec2"]
+            albedo = next(f for f in roles if f["role"] == "albedo")
+            failed += sum(layered_view(coloured, "top-left", f, colors=ec.VERTEX_COLORS) for f in roles)
+            failed += layered_view(coloured, "top-left", albedo, "the square's red and green vertex colour channels swapped",
+                                   colors=ec.VERTEX_COLORS_SWAPPED)
+            if weights == "both":
+                failed += layered_view(coloured, "top-left", albedo, "the splat map's red and green channels swapped",
+                                       swapped_splat(coloured), colors=ec.VERTEX_COLORS)
         self.assertEqual(failed, 0)
+
+    def test_vertex_weighed_without_a_vertex_colour(self):
+        """Layers weighed by the vertex colour on a square without one (docs/engines.md#vertex-colours-as-weights), where
+        WebGL's default colour, (0, 0, 0, 1), draws the first layer over the whole square: three.js's package refuses
+        to draw it, throwing an Error that names the mesh and its missing attribute; Babylon.js's draws it and says so
+        with console.error (which the driver reports as a failure). The same square with its vertex colours draws with
+        neither (what is refused is the missing attribute)."""
+        vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), weights="vertex"))
+        config = dict(module=package(vertex, "top-left"), width=SIZE, height=SIZE, uv=engine_uv(LAYERED_RECT, "top-left"),
+                      input="albedo", encoding="linear")
+        said = {"threejs": r'the driver failed: Error: hexc: layered_vertex weighs its layers by the vertex colour, and the '
+                           r'geometry of mesh "[^"]+" has no `color` attribute: give it one',
+                "babylon": r'hexc: layered_vertex weighs its layers by the vertex colour, and mesh \\?"[^"\\]+\\?" has no `color` '
+                           r'vertex buffer: it is drawn with the colour \(0, 0, 0, 1\); give it one'}
+        with self.assertRaisesRegex(AssertionError, said[ENGINE]) as refused:
+            PAGE.render(**config)
+        print("  %s, no vertex colour: %s" % (ENGINE, str(refused.exception).splitlines()[0]))
+        PAGE.render(**config, colors=ec.VERTEX_COLORS)
 
     def test_package_files_and_a_slot_without_input(self):
         """The package's files; a slot the engine has no input for is reported (HX204) and listed in the module's
@@ -437,7 +471,7 @@ class Engine(unittest.TestCase):
         webgpu_page = Page(SERVER, ENGINE, WEBGPU_FLAGS)
         try:
             webgpu = [webgpu_page.render(**config, light=light, webgpu=True) for light in lights]
-            vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), vertex=True))
+            vertex = str(ec.layered_material(os.path.join(PACKAGES, "layered"), weights="vertex"))
             wgsl_package(vertex)
             albedo = next(f for f in ec.manifest(os.path.join(PACKAGES, "layered_vertex-top-left-wgsl", ENGINE))["functions"]
                           if f["role"] == "albedo")
@@ -529,7 +563,8 @@ class Engine(unittest.TestCase):
 
     def test_every_example_compiles_in_the_engine(self):
         """Every example material under materials/ through the package (top-left, then bottom-left, alternately),
-        compiled by the engine and drawn lit once: no shader error, not a flat image (the terrain, layered, among them).
+        compiled by the engine and drawn lit once: no shader error, not a flat image (the terrain, layered, among them;
+        those weighed by the vertex colour on a square with engine_check.py's corner colours).
         Only what docs/engines.md says the package refuses is left out (triplanar materials: HX300), and it is listed."""
         examples = sorted(glob.glob("materials/*.json") + glob.glob("materials/terrain/*.json") + glob.glob("materials/mtlx/*.mtlx"))
         drawn, skipped = [], []
@@ -551,8 +586,10 @@ class Engine(unittest.TestCase):
             with self.subTest(material):
                 self.assertEqual(run.returncode, 0, run.stderr)
                 name = next(n for n in os.listdir(os.path.join(PACKAGES, "matrix", str(i), ENGINE)) if n.endswith(".%s.js" % MODULE_SUFFIX[ENGINE]))
+                coloured = doc.get("layer_blend", {}).get("weights", "splat") != "splat"  # a mesh without colours is refused
                 got = PAGE.render(module="/pkg/matrix/%d/%s/%s" % (i, ENGINE, name), width=32, height=32, uv=GL_UV,
-                                  light=[1.0, 1.0, 0.3], encoding="srgb")  # grazing: a normal map alone shows
+                                  light=[1.0, 1.0, 0.3], encoding="srgb",  # grazing: a normal map alone shows
+                                  colors=ec.VERTEX_COLORS if coloured else None)
                 values = [p[c] for row in got for p in row for c in range(3)]
                 self.assertGreater(max(values) - min(values), 10, "a flat image")
                 drawn.append("%s (%s)" % (material, origin))

@@ -102,7 +102,7 @@ def draw(run):
     for material in (probe_gl, probe_dx, ROOT / "materials" / "rock.json", ec.layered_material(run.work / "layered")):
         for f in shown_functions(run.package(material)):
             failed += value(run, material, f)
-    vertex = ec.layered_material(run.work / "layered", vertex=True)
+    vertex = ec.layered_material(run.work / "layered", weights="vertex")
     for f in shown_functions(run.package(vertex)):
         failed += value(run, vertex, f, colors=ec.VERTEX_COLORS)
     for convention in ("gl", "dx"):

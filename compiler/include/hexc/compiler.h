@@ -19,10 +19,11 @@ class ShaderCache;
 enum class Target { Spirv, Hlsl, Glsl, Msl, Wgsl };
 inline constexpr size_t kTargetCount = 5;
 std::string_view toString(Target target);
-// The --targets names in target order, those a compile writes when it names none, and the target a name or an
-// alias (`metal`) names.
+// The --targets names in target order, those a compile writes when it names none (and a functions compile, which has
+// no binary form: those of them that are source), and the target a name or an alias (`metal`) names.
 std::vector<std::string> targetNames();
 std::vector<Target> defaultTargets();
+std::vector<Target> defaultFunctionsTargets();
 std::optional<Target> targetNamed(std::string_view name);
 std::string_view targetAlias(Target target);  // "" for none
 

@@ -13,7 +13,8 @@
 // world position and uv (T along +u, B along +v); the values are linear, and Babylon's image processing encodes them.
 // Layers weighed by the vertex colour read the mesh's `color` vertex buffer (linear, as Babylon keeps vertex colours;
 // channel i weighs layer i) through a varying of the plugin's, and Babylon's own use of it (VERTEXCOLOR: tinting the
-// albedo) is turned off, so that the colour weighs the layers only.
+// albedo) is turned off, so that the colour weighs the layers only. A mesh without one is drawn with WebGL's default
+// colour, (0, 0, 0, 1), and console.error says so, naming it.
 import { MaterialPluginBase } from '@babylonjs/core/Materials/materialPluginBase.js';
 import { PBRMaterial } from '@babylonjs/core/Materials/PBR/pbrMaterial.js';
 import { ShaderLanguage } from '@babylonjs/core/Materials/shaderLanguage.js';
@@ -24,6 +25,8 @@ import { Texture } from '@babylonjs/core/Materials/Textures/texture.js';
 // The material's data, written by hexc: its slots, which Babylon input each fills, and their GLSL ES 3.00 code (and
 // their WGSL with `--targets wgsl`, for Babylon's WebGPU engine).
 const hexc = /* hexc:data */ null;
+// The meshes without vertex colours this material has said it draws (HexcPlugin.prepareDefines).
+const uncoloured = new WeakSet();
 
 // The uv hexc's functions take, from Babylon's (v up the image, origin at the bottom-left).
 const kUv = hexc.uv_origin === 'bottom-left' ? 'vHexcUv' : 'vec2(vHexcUv.x, 1.0 - vHexcUv.y)';
@@ -139,9 +142,18 @@ export class HexcPlugin extends MaterialPluginBase {
   // WGSL (Babylon's WebGPU engine) when hexc wrote it: `hexc --engine babylon --targets wgsl`.
   isCompatible(shaderLanguage) { return shaderLanguage === ShaderLanguage.GLSL || (shaderLanguage === ShaderLanguage.WGSL && !!hexc.wgsl); }
 
-  prepareDefines(defines) {
+  // Without the mesh's `color` vertex buffer WebGL reads its default colour, (0, 0, 0, 1): one layer over the whole mesh
+  // (the first; the fourth where there are four). Said once per mesh; not thrown: Babylon checks readiness in timers
+  // (whenReadyAsync), where an Error would leave the scene waiting instead of reaching the application.
+  prepareDefines(defines, scene, mesh) {
     defines.HEXC = true;
-    if (hexc.vertex_color) defines.VERTEXCOLOR = defines.VERTEXALPHA = false;  // after Babylon's own attribute defines
+    if (!hexc.vertex_color) return;
+    defines.VERTEXCOLOR = defines.VERTEXALPHA = false;  // after Babylon's own attribute defines
+    if (!mesh.isVerticesDataPresent('color') && !uncoloured.has(mesh)) {
+      uncoloured.add(mesh);
+      console.error(`hexc: ${hexc.material} weighs its layers by the vertex colour, and mesh "${mesh.name}" has no \`color\` `
+        + 'vertex buffer: it is drawn with the colour (0, 0, 0, 1); give it one (channel i weighs layer i)');
+    }
   }
 
   getAttributes(attributes) {

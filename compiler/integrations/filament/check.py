@@ -11,7 +11,7 @@ red marker Filament draws over the screen's top-left corner (marker.mat, a secon
   without it. Each function is shown unlit (a value view: the package's .mat with shadingModel unlit and baseColor
   the function's value, one matc run per package), within the bound derived in engine_check.py; the probe's bumps
   lit by a Filament directional light from the right and from the top: 15 of 15 lit from the light's side; the
-  layered material weighed by the vertex colour (engine_check.layered_material(vertex=True)) on a mesh whose corners
+  layered material weighed by the vertex colour (engine_check.layered_material(weights="vertex")) on a mesh whose corners
   carry engine_check.VERTEX_COLORS, which its functions read with getColor();
 - negative controls, which must fail: the package built for the other uv origin, a mesh mirrored in u, the normal
   map of the other green convention, the albedo decoded twice, a NaN value; the layered material with two layers'
@@ -198,7 +198,7 @@ def check(hexc, renderer, work):
     failed += views.check(probe, "bottom-left", control="a NaN value: the albedo function times NaN", function=2)
     for what, swap in ec.layered_controls(drawn[3].parent).items():  # the layered view's albedo role, function 0
         failed += views.check(drawn[3], "top-left", control=what, swap=swap)
-    vertex = ec.layered_material(drawn[3].parent, vertex=True)  # its roles on a mesh of VERTEX_COLORS (getColor())
+    vertex = ec.layered_material(drawn[3].parent, weights="vertex")  # its roles on a mesh of VERTEX_COLORS (getColor())
     failed += sum(views.check(vertex, "top-left", function=i, colors=ec.VERTEX_COLORS) for i in range(len(views.get(vertex, "top-left")[1])))
     failed += views.check(vertex, "top-left", control="a vertex colour channel swapped: the mesh's red and green exchanged",
                           colors=ec.VERTEX_COLORS_SWAPPED)

@@ -8,10 +8,10 @@ xvfb-run) of the project in project/, every frame with a red marker Godot draws 
   materials; and the golden histogram material, its Gaussian textures and tables the package's OpenEXR files), each
   function of the package shown unshaded on a mesh with Godot's uv convention ((0, 0) at the top-left, the package
   built without --uv-bottom-left, as docs/conventions.md says), within the bound derived in engine_check.py; the
-  layered material weighed by the vertex colour (engine_check.layered_material(vertex=True)) on a mesh whose corners
-  carry engine_check.VERTEX_COLORS, which its functions read from Godot's COLOR; the probe's bumps lit by a Godot
-  light on Godot's own QuadMesh, from the right and from the top: 15 of 15 lit from the light's side, for a green-up
-  and a DirectX map;
+  layered material weighed by the vertex colour (engine_check.layered_material(weights="vertex")) on a mesh whose
+  corners carry engine_check.VERTEX_COLORS, which its functions read from Godot's COLOR; the probe's bumps lit by a
+  Godot light on Godot's own QuadMesh, from the right and from the top: 15 of 15 lit from the light's side, for a
+  green-up and a DirectX map;
 - negative controls, which must fail: the package built for the other uv origin, a mesh mirrored in u, the normal
   map of the other green convention, the albedo decoded twice, a NaN value; the layered material with two layers'
   textures exchanged and with a splat channel swapped; the histogram slot's own texture bound in place of its
@@ -114,7 +114,7 @@ class Jobs:
 def vertex_weighed(hexc, jobs, work):
     """The layered material weighed by the vertex colour: each role on a mesh with engine_check.VERTEX_COLORS; and the
     albedo with the colours' red and green exchanged, which must fail."""
-    material = ec.layered_material(work / "layered", vertex=True)
+    material = ec.layered_material(work / "layered", weights="vertex")
     pkg = package(hexc, material, work)
     rect = ec.rect_for(ec.manifest(pkg), SIZE)
     functions = [f for f in ec.manifest(pkg)["functions"] if f["returns"] != "vec2"]

@@ -9,7 +9,7 @@
 // or the geometry's tangents), its bitangent along +v; the values are linear and three.js encodes the canvas output.
 // Layers weighed by the vertex colour read the geometry's `color` attribute (linear, as three.js keeps vertex colours;
 // channel i weighs layer i; RGB alone: alpha 1): the material's vertexColors is turned on, and the colour weighs the
-// layers instead of tinting the albedo.
+// layers instead of tinting the albedo. A geometry without one is refused when it is drawn (an Error naming it).
 import * as THREE from 'three';
 
 // The material's data, written by hexc: its slots, which three.js input each fills, and their GLSL ES 3.00 code.
@@ -87,10 +87,25 @@ export async function loadTextures(base = import.meta.url, loader = new THREE.Te
   return loadSampled(base, loader, arrayTexture);
 }
 
+// Layers weighed by the vertex colour: three.js's vColor (a vec4 in r187's chunks) from the geometry's `color`. Without
+// that attribute WebGL reads its default, (0, 0, 0, 1): one layer over the whole mesh (the first; the fourth where there
+// are four) and no sign why. So a draw of such a geometry throws instead, before three.js draws it.
+function requireColor(material) {
+  material.vertexColors = true;
+  const previous = material.onBeforeRender;
+  material.onBeforeRender = (renderer, scene, camera, geometry, object, group) => {
+    if (!geometry.attributes.color) {
+      throw new Error(`hexc: ${hexc.material} weighs its layers by the vertex colour, and the geometry of mesh `
+        + `"${object.name || object.uuid}" has no \`color\` attribute: give it one (channel i weighs layer i)`);
+    }
+    previous.call(material, renderer, scene, camera, geometry, object, group);
+  };
+}
+
 // Gives `material` the hex-tiled slots: its shader chunks for each slot's role read hexc's functions instead.
 export function applyHexc(material, textures) {
   material.defines = { ...material.defines, USE_UV: '' };
-  if (hexc.vertex_color) material.vertexColors = true;  // vColor, a vec4 in r187's chunks
+  if (hexc.vertex_color) requireColor(material);
   const slots = slotsTaken(material);
   // three.js builds the tangent frame and the normal uniforms only for a material with a normal map: the hexc
   // texture stands in for it (its texels are never read through it).

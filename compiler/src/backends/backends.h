@@ -128,6 +128,9 @@ struct TargetRow {
     bool byDefault;         // in CompileOptions::targets by default
     // The start of the entry point's code in the emitted text, from which the functions output and `hexc library` cut.
     const char* entryLine;
+    // The functions output's source before that cut (functions.cpp), for entry point `entry`: without what the
+    // translator writes for the stage beyond the cut's reach (the lines from `entryLine` on, SPIRV-Cross's stage structs).
+    std::string (*withoutStage)(const std::string& source, const std::string& entry);
     // The fragment stage from the optimised module; `text`: the same module with the source lines --debug shows.
     TargetOutput (*emit)(const std::vector<uint32_t>& spirv, const std::vector<uint32_t>& text, const ShaderPlan& plan,
                          const CompileOptions& options);
@@ -135,7 +138,10 @@ struct TargetRow {
     TargetOutput (*vertex)(const std::vector<uint32_t>& spirv, const CompileOptions& options, const std::string& entry);
     std::string (*entryName)(const std::string& entry);      // what the target's code calls a fragment entry point `entry`
     std::string (*settings)(const CompileOptions& options);  // its settings on the banner, "" for none
-    const char* libraryName;                                 // `hexc library --target` name, its file's extension
+    const char* translator;                                  // what writes its code from SPIR-V, as `hexc library`'s banner says
+    // What can change the translator's output that hexc's build id does not hold (the shader cache's key), or "".
+    std::string (*translatorIdentity)();
+    const char* libraryName;  // `hexc library --target` name, its file's extension
     const char* libraryExtension;
     std::string (*library)(const std::vector<uint32_t>& spirv);  // `hexc library`'s unoptimised module in its language
 };

@@ -18,10 +18,11 @@ bool stageStruct(const std::string& line, const std::string& entry) {
 }  // namespace
 
 std::string functionsOnly(const std::string& source, Target target, const std::string& entry) {
-    std::istringstream in(target == Target::Wgsl ? wgslWithoutStage(source, entry) : source);
+    const TargetRow& row = targetRow(target);
+    std::istringstream in(row.withoutStage(source, entry));
     std::string out, line;
     bool inStruct = false;
-    while (std::getline(in, line) && !line.starts_with(targetRow(target).entryLine)) {
+    while (std::getline(in, line) && !line.starts_with(row.entryLine)) {
         if (stageStruct(line, entry)) inStruct = true;
         const bool drop = inStruct || line.starts_with("#version") || line.find("hexcEngine") != std::string::npos;
         if (inStruct && line == "};") inStruct = false;

@@ -35,24 +35,28 @@ TargetOutput vertexSpirv(const std::vector<uint32_t>& spirv, const CompileOption
 std::string sameName(const std::string& entry) { return entry; }
 std::string noSettings(const CompileOptions&) { return ""; }
 std::string settingsWgsl(const CompileOptions&) { return nagaVersion(); }
+// SPIRV-Cross's stage is in the lines the functions output cuts (functions.cpp).
+std::string stageInCut(const std::string& source, const std::string&) { return source; }
+// SPIRV-Tools and SPIRV-Cross are linked into hexc: its build id holds them.
+std::string inBuild() { return ""; }
 
 // The text targets are written from `text`, the module with the source lines they are to show.
 constexpr std::array<TargetRow, kTargetCount> kRows = {{
-    {Target::Spirv, "spirv", "", "spv", "vulkan", true, true, "", emitSpirv, vertexSpirv, sameName, noSettings, "spirv-asm", "spvasm",
-     disassemble},
-    {Target::Hlsl, "hlsl", "", "hlsl", "hlsl", false, true, "void frag_main()",
+    {Target::Spirv, "spirv", "", "spv", "vulkan", true, true, "", stageInCut, emitSpirv, vertexSpirv, sameName, noSettings,
+     "SPIRV-Tools' disassembler", inBuild, "spirv-asm", "spvasm", disassemble},
+    {Target::Hlsl, "hlsl", "", "hlsl", "hlsl", false, true, "void frag_main()", stageInCut,
      [](const auto&, const auto& text, const auto& plan, const auto& options) { return emitHlsl(text, plan, options); }, vertexHlsl,
-     sameName, settingsHlsl, "hlsl", "hlsl", libraryHlsl},
-    {Target::Glsl, "glsl", "", "glsl", "glsl", false, true, "void main()",
+     sameName, settingsHlsl, "SPIRV-Cross", inBuild, "hlsl", "hlsl", libraryHlsl},
+    {Target::Glsl, "glsl", "", "glsl", "glsl", false, true, "void main()", stageInCut,
      [](const auto&, const auto& text, const auto& plan, const auto& options) { return emitGlsl(text, plan, options); }, vertexGlsl,
-     sameName, settingsGlsl, "glsl", "glsl", libraryGlsl},
-    {Target::Msl, "msl", "metal", "metal", "msl", false, true, "fragment ",
+     sameName, settingsGlsl, "SPIRV-Cross", inBuild, "glsl", "glsl", libraryGlsl},
+    {Target::Msl, "msl", "metal", "metal", "msl", false, true, "fragment ", stageInCut,
      [](const auto&, const auto& text, const auto& plan, const auto& options) { return emitMsl(text, plan, options); }, vertexMsl,
-     mslEntryName, settingsMsl, "msl", "metal", libraryMsl},
+     mslEntryName, settingsMsl, "SPIRV-Cross", inBuild, "msl", "metal", libraryMsl},
     // naga reads no OpLine, so --debug's lines do not reach WGSL; not a default target: a build may lack naga (naga.h).
-    {Target::Wgsl, "wgsl", "", "wgsl", "vulkan", false, false, "@fragment",
+    {Target::Wgsl, "wgsl", "", "wgsl", "vulkan", false, false, "@fragment", wgslWithoutStage,
      [](const auto& spirv, const auto&, const auto& plan, const auto& options) { return emitWgsl(spirv, plan, options); }, vertexWgsl,
-     sameName, settingsWgsl, "wgsl", "wgsl", libraryWgsl},
+     sameName, settingsWgsl, "naga", nagaIdentity, "wgsl", "wgsl", libraryWgsl},
 }};
 
 // A row per Target, in its order (a missing row is zero: the Spirv target without a name).
@@ -81,6 +85,13 @@ std::vector<Target> defaultTargets() {
     std::vector<Target> targets;
     for (const TargetRow& row : kRows)
         if (row.byDefault) targets.push_back(row.target);
+    return targets;
+}
+
+std::vector<Target> defaultFunctionsTargets() {
+    std::vector<Target> targets;
+    for (Target t : defaultTargets())
+        if (!targetRow(t).binary) targets.push_back(t);
     return targets;
 }
 
@@ -123,16 +134,17 @@ bool isEntryPointName(std::string_view name) {
 }
 
 std::string codeOptionsKey(const CompileOptions& options) {
-    const bool wgsl = std::find(options.targets.begin(), options.targets.end(), Target::Wgsl) != options.targets.end();
-    std::string key;
-    for (Target t : std::set<Target>(options.targets.begin(), options.targets.end())) key += std::string(toString(t)) + ",";
+    std::string key, translators;  // another naga writes other WGSL
+    for (Target t : std::set<Target>(options.targets.begin(), options.targets.end())) {
+        key += std::string(toString(t)) + ",";
+        if (std::string identity = targetRow(t).translatorIdentity(); !identity.empty()) translators += "," + identity;
+    }
     return key + std::to_string(options.hlslShaderModel) + "," + std::to_string(options.glslVersion) + (options.glslEs ? "es," : ",") +
            std::to_string(options.mslMajor) + "." + std::to_string(options.mslMinor) + (options.bake ? ",bake" : "") +
            (options.debug ? ",debug," + std::string(toString(options.lineDirectives)) : "") + (options.functions ? ",functions" : "") +
            (options.functionArrays == FunctionArrays::None ? "" : ",arrays " + std::to_string(int(options.functionArrays))) +
            (options.unrollLoops ? ",unroll" : "") +
-           (options.uvOrigin == UvOrigin::TopLeft ? "" : ",uv " + std::string(toString(options.uvOrigin))) +
-           (wgsl ? "," + nagaIdentity() : "");  // another naga writes other WGSL
+           (options.uvOrigin == UvOrigin::TopLeft ? "" : ",uv " + std::string(toString(options.uvOrigin))) + translators;
 }
 
 std::vector<Target> sortedTargets(const CompileOptions& options) {

@@ -59,24 +59,25 @@ window.hexcDriver = {
     canvas.height = height;
     document.body.appendChild(canvas);
     const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
-    renderer.outputColorSpace = encoding === 'srgb' ? THREE.SRGBColorSpace : THREE.LinearSRGBColorSpace;
-    const [made, warnings] = await material(pkg, { input, nan, flipY, materialType, files });
-    const { scene, camera } = stage(made, { uv, colors, sphere, light, size: options.marker, width, height });
-    renderer.render(scene, camera);
-    const errors = renderer.info.programs.map((p) => p.diagnostics).filter((d) => d);
-    if (png) {
-      const url = canvas.toDataURL('image/png');
+    try { // a draw the package refuses throws: the page's next draws still get a WebGL context
+      renderer.outputColorSpace = encoding === 'srgb' ? THREE.SRGBColorSpace : THREE.LinearSRGBColorSpace;
+      const [made, warnings] = await material(pkg, { input, nan, flipY, materialType, files });
+      const { scene, camera } = stage(made, { uv, colors, sphere, light, size: options.marker, width, height });
+      renderer.render(scene, camera);
+      const errors = renderer.info.programs.map((p) => p.diagnostics).filter((d) => d);
+      if (png) {
+        const url = canvas.toDataURL('image/png');
+        return { png: url.slice(url.indexOf(',') + 1), errors: JSON.stringify(errors), warnings };
+      }
+      const gl = renderer.getContext();
+      const pixels = new Uint8Array(width * height * 4);
+      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      let text = '';
+      for (let i = 0; i < pixels.length; i += 0x8000) text += String.fromCharCode(...pixels.subarray(i, i + 0x8000));
+      return { pixels: btoa(text), errors: JSON.stringify(errors), warnings };
+    } finally {
       renderer.dispose();
       canvas.remove();
-      return { png: url.slice(url.indexOf(',') + 1), errors: JSON.stringify(errors), warnings };
     }
-    const gl = renderer.getContext();
-    const pixels = new Uint8Array(width * height * 4);
-    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-    renderer.dispose();
-    canvas.remove();
-    let text = '';
-    for (let i = 0; i < pixels.length; i += 0x8000) text += String.fromCharCode(...pixels.subarray(i, i + 0x8000));
-    return { pixels: btoa(text), errors: JSON.stringify(errors), warnings };
   },
 };
