@@ -2,8 +2,9 @@
 """Debian policy's parts of the hexc package (compiler/cmake/debian/package.cmake), checked in a package's files:
 the control fields (Section, Priority, Maintainer, a description with a long part, lines under 80 columns), the
 copyright file in DEP-5's format, changelog.Debian.gz (gzip -9n: no name, no time, the same bytes from the same text;
-its version the package's), the ELF files stripped, the static libraries without debugging sections, and Depends
-naming the Debian package of every shared library an ELF file of the package loads (what dpkg-shlibdeps computes).
+its version the package's), the ELF files stripped, the static libraries without debugging sections, neither with a
+.comment section (as Debian's dh_strip leaves them, which lintian checks), and Depends naming the Debian package of
+every shared library an ELF file of the package loads (what dpkg-shlibdeps computes).
 
     dpkg -L hexc | tests/package/policy.py / <(dpkg -s hexc)                   # the installed package
     dpkg-deb -x X.deb d; dpkg-deb -c X.deb | awk '{print substr($6, 2)}' |
@@ -13,7 +14,7 @@ ROOT is the folder the package's paths (stdin, one a line) are under; CONTROL ho
 failure and exits 1, or an "ok" line per check. With --controls BUILD (tests/package/installed.sh) it also runs
 each check on a wrong variant of what it was given and fails if a check takes one: the copyright file without its
 Format field, a Files paragraph without License, a changelog compressed with a name and time, or for another version,
-BUILD's hexc (not stripped), and Depends without one of its libraries' packages.
+BUILD's hexc (not stripped) and libhexc.a (with .comment), and Depends without one of its libraries' packages.
 """
 import argparse
 import gzip
@@ -104,15 +105,17 @@ def magic(path):
 
 
 def elf_problems(path):
-    """A stripped ELF file, or a static library without debugging sections; nothing for other files."""
+    """A stripped ELF file, or a static library without debugging sections, and neither with the compiler's .comment
+    section, as Debian's dh_strip leaves them; nothing for other files."""
     head = magic(path)
+    if not head.startswith(b"\x7fELF") and head != b"!<arch>\n":
+        return []
+    sections = subprocess.run(["readelf", "-S", "-W", path], capture_output=True, text=True, check=True).stdout
+    problems = [f"{path}: has a .comment section"] if " .comment " in sections else []
     if head.startswith(b"\x7fELF"):
         said = subprocess.run(["file", "-b", path], capture_output=True, text=True, check=True).stdout.strip()
-        return [] if said.endswith(", stripped") else [f"{path}: file says {said.rsplit(', ', 1)[-1]!r}"]
-    if head == b"!<arch>\n":
-        sections = subprocess.run(["readelf", "-S", "-W", path], capture_output=True, text=True, check=True).stdout
-        return [f"{path}: has debugging sections"] if " .debug_" in sections else []
-    return []
+        return problems + ([] if said.endswith(", stripped") else [f"{path}: file says {said.rsplit(', ', 1)[-1]!r}"])
+    return problems + ([f"{path}: has debugging sections"] if " .debug_" in sections else [])
 
 
 def needed(path):
@@ -183,6 +186,7 @@ def controls(root, control, build, packages):
         "a changelog with a name and time": check_changelog(gzip.compress(text, 9, mtime=1), version),
         "a changelog for another version": check_changelog(changelog, version + "1"),
         f"{build}/hexc, not stripped": elf_problems(build / "hexc"),
+        f"{build}/compiler/src/libhexc.a, with .comment": elf_problems(build / "compiler/src/libhexc.a"),
         f"Depends without {dropped}": check_depends(fewer, packages),
     }
     taken = [name for name, problems in wrong.items() if not problems]
