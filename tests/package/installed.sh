@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# The Debian package, installed from BUILD (`apt-get install ./BUILD/hexc_<version>_amd64.deb`, .ci/test's stage
-# "Debian package: build, install"): what `dpkg -L hexc` lists, and hexc, `import hexc` and docs/c-api.md's C
-# program used from /usr as a reader does, in a fresh folder with an empty environment (no build tree on PATH or
-# anywhere in it). Negative controls: a listing without any one required file is refused, `import hexc` without the
-# site folders (python3 -S) fails, so the module comes from dist-packages, and tests/package/prefix.sh refuses a hexc
-# of another build.
+# The Debian package, installed from BUILD (`apt-get install ./BUILD/hexc_<version>-1_amd64.deb`, .ci/test's stage
+# "Debian package: build, install"): what `dpkg -L hexc` lists, Debian policy's parts (tests/package/policy.py: the
+# control fields, the copyright file, changelog.Debian.gz, stripped files, Depends), and hexc, `import hexc` and
+# docs/c-api.md's C program used from /usr as a reader does, in a fresh folder with an empty environment (no build
+# tree on PATH or anywhere in it), and libhexc.a without wasm2c's runtime names. Negative controls: a listing without
+# any one required file is refused, each policy check refuses a wrong variant (BUILD's hexc is the unstripped one),
+# wabt's libwasm-rt-impl.a has wasm2c's runtime names, `import hexc` without the site folders (python3 -S) fails, so
+# the module comes from dist-packages, and tests/package/prefix.sh refuses a hexc of another build.
 #   tests/package/installed.sh BUILD
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -27,6 +29,7 @@ required=(
   /usr/lib/python3/dist-packages/hexc/__init__.py '/usr/lib/python3/dist-packages/hexc/_hexc.cpython-.*.so'
   /usr/share/hexc/bazel/hexc.bzl /usr/share/hexc/material.schema.json
   /usr/share/doc/hexc/README.md /usr/share/doc/hexc/docs/build-integration.md
+  /usr/share/doc/hexc/copyright /usr/share/doc/hexc/changelog.Debian.gz
 )
 lacks() {
   local listing
@@ -40,6 +43,17 @@ for pattern in "${required[@]}"; do  # the negative control: each file taken out
   [ "$(grep -vxE "$pattern" <<< "$listing" | lacks)" = "$pattern" ] || fail "a listing without $pattern passes"
 done
 echo "ok: dpkg -L hexc lists its ${#required[@]} required files; a listing without any one of them is refused"
+
+python3 tests/package/policy.py / <(dpkg -s hexc) --controls "$build" <<< "$listing" || fail "Debian policy (above)"
+
+# libhexc.a's wasm2c runtime (naga's) is under names of its own: a program that links libhexc.a and a wasm2c runtime
+# of its own would otherwise define wasm_rt_* twice. Negative control: wabt's runtime, libwasm-rt-impl.a, is found out.
+wasm_rt() { nm -g --defined-only "$1" 2> /dev/null | grep -E ' [[:alpha:]] wasm_rt_' || true; }
+library=$(grep -xE '/usr/lib/(.*/)?libhexc.a' <<< "$listing")
+[ -z "$(wasm_rt "$library")" ] || fail "$library defines wasm2c's runtime names: $(wasm_rt "$library" | head -3 | xargs)"
+wabt=$(dpkg -L wabt 2> /dev/null | grep '/libwasm-rt-impl\.a$') || fail "no libwasm-rt-impl.a (Debian's wabt) to check the check"
+[ -n "$(wasm_rt "$wabt")" ] || fail "the check finds no wasm_rt_* name in $wabt"
+echo "ok: $library defines no wasm_rt_* name (the check finds $(wasm_rt "$wabt" | wc -l) in $wabt)"
 
 # hexc from /usr/bin, this build's and the project's version.
 [ "$(clean sh -c 'command -v hexc')" = /usr/bin/hexc ] || fail "hexc is not /usr/bin/hexc on Debian's PATH"

@@ -5,7 +5,8 @@
 // with its name. wasm2c's runtime keeps its trap target and call depth in globals, so translations take turns; each
 // gets an instance of its own, with its memory bounded, so no translation sees another's state, a trap (a Rust
 // panic, an out-of-bounds access, the call depth or the memory bound reached) loses only that instance, and it
-// becomes naga's error, not a crash.
+// becomes naga's error, not a crash. The runtime's names are hexc's own (hexc_wasm_rt_*, by a header the build
+// includes first: compiler/src/CMakeLists.txt), so a program may link a wasm2c runtime of its own beside libhexc.
 #include <wasm-rt-impl.h>
 
 #include <cmath>
