@@ -21,7 +21,8 @@ OutputNames outputNames(const Material& material, const CompileOptions& options)
     }
     if (options.emitGenerated) names.push_back(material.name + ".generated.frag");
     for (size_t i : plan.luts)
-        for (const char* which : {"gaussian", "lut"}) names.push_back(histogramFileName(material.name, plan.slots[i].slot->name, which, plan.exrTables));
+        for (const char* which : {"gaussian", "lut"})
+            names.push_back(histogramFileName(material.name, plan.slots[i].slot->name, which, plan.exrTables));
     for (const PackPlan& p : plan.packs) names.push_back(packedFileName(material.name, plan.slots[p.slots.front()].slot->name));
     names.push_back(material.name + ".manifest.json");
     std::sort(names.begin(), names.end());
