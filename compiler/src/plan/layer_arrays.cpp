@@ -125,10 +125,11 @@ void unsplittable(const Material& material, ShaderPlan& plan, const LayerArrayPl
                                                 "give each layer's `" + a.role + "` a 2D texture file of its own"));
 }
 
-// The JSON pointer of plan slot `i`, a layer's slot: a layer's slots follow each other in Material::slots in the
-// order its `slots` lists them.
-std::string layerSlotPointer(const Material& material, const ShaderPlan& plan, size_t i) {
+// The JSON pointer of plan slot `i`: /slots/<n> in a material without layers; a layer's slot's under /layers (a layer's
+// slots follow each other in Material::slots in the order its `slots` lists them).
+std::string slotPointer(const Material& material, const ShaderPlan& plan, size_t i) {
     const size_t index = size_t(plan.slots[i].slot - material.slots.data());
+    if (!material.layers) return "/slots/" + std::to_string(index);
     const std::vector<Layers::Layer>& layers = material.layers->layers;
     for (size_t l = 0; l < layers.size(); ++l) {
         const std::vector<size_t>& slots = layers[l].slots;
@@ -150,35 +151,41 @@ void notArrayed(const Material& material, ShaderPlan& plan, const LayerArrayPlan
     }
     const Slot& at = *plan.slots[a.unlike].slot;
     plan.diagnostics.push_back(Diagnostic::make(
-        Code::NotArrayed, {material.sourceFile.string(), at.line, at.col}, layerSlotPointer(material, plan, a.unlike),
+        Code::NotArrayed, {material.sourceFile.string(), at.line, at.col}, slotPointer(material, plan, a.unlike),
         "role `" + a.role + "` is " + std::to_string(a.slots.size()) + " textures, one per layer, not one texture array (" +
             std::to_string(a.slots.size()) + " texture units instead of 1): " + why,
         a.fix + " for one array, or set layer_blend.arrays to \"off\" for separate textures"));
 }
 
-// The textures the shader binds, as they are bound: a role's array once, a packed texture once, a histogram slot's
-// table besides its texture, every other slot its own. At most 16, Vulkan's guaranteed minimum of sampled images per
-// stage (a material's own slots are held to it when parsed, its tables are not); over it, HX110, at a layer's slot with
-// what binds fewer (one array per role where a role's layers are apart), or at a histogram slot.
-void refuseTooManyTextures(const Material& material, ShaderPlan& plan) {
-    size_t bound = 0;
-    for (size_t i = 0; i < plan.textureCount(); ++i) bound += plan.textureBound(i);
-    if (bound <= kMaxTextures) return;
+// Where a layered material's textures over the limit are reported, and what binds fewer: one array per role where a
+// role's layers are apart (at the first slot that keeps them apart), else packing or fewer roles (at the first layer slot).
+std::pair<size_t, std::string> layeredFewer(const ShaderPlan& plan) {
     std::string apart;
-    size_t at = plan.layers ? plan.layers->roles.front().slots.front() : plan.luts.front();  // without layers, only tables add
-    for (const LayerArrayPlan& a : plan.layers ? plan.layers->arrays : std::vector<LayerArrayPlan>{}) {
+    size_t at = plan.layers->roles.front().slots.front();
+    for (const LayerArrayPlan& a : plan.layers->arrays) {
         if (a.refused.empty()) continue;
         apart += (apart.empty() ? "" : "; ") + ("role `" + a.role + "` (" + a.refused + (a.fix.empty() ? "" : ": " + a.fix) + ")");
         if (!a.fix.empty()) at = a.unlike;
     }
-    const std::string hint = !plan.layers ? "blend a slot by falloff: a histogram slot binds its table besides its texture"
-                             : apart.empty()
-                                 ? "pack a layer's scalar maps into one texture's channels (`channel`) or drop a role"
-                                 : "bind each role's layers as one texture array, one texture instead of one per layer: " + apart;
+    if (apart.empty()) return {at, "pack a layer's scalar maps into one texture's channels (`channel`) or drop a role"};
+    return {at, "bind each role's layers as one texture array, one texture instead of one per layer: " + apart};
+}
+
+// The textures the shader binds, as they are bound: a role's array once, a packed texture once, a histogram slot's
+// table besides its texture, every other slot its own. At most 16, Vulkan's guaranteed minimum of sampled images per
+// stage (a material's own slots are held to it when parsed, its tables are not); over it, HX110 with what binds fewer:
+// in a material without layers only the tables can take it over, so at its first histogram slot.
+void refuseTooManyTextures(const Material& material, ShaderPlan& plan) {
+    size_t bound = 0;
+    for (size_t i = 0; i < plan.textureCount(); ++i) bound += plan.textureBound(i);
+    if (bound <= kMaxTextures) return;
+    const auto [at, hint] = plan.layers
+                                ? layeredFewer(plan)
+                                : std::pair<size_t, std::string>{
+                                      plan.luts.front(), "blend a slot by falloff: a histogram slot binds its table besides its texture"};
     const Slot& slot = *plan.slots[at].slot;
-    const std::string pointer =
-        plan.layers ? layerSlotPointer(material, plan, at) : "/slots/" + std::to_string(&slot - material.slots.data());
-    plan.diagnostics.push_back(Diagnostic::make(Code::WrongCount, {material.sourceFile.string(), slot.line, slot.col}, pointer,
+    plan.diagnostics.push_back(Diagnostic::make(Code::WrongCount, {material.sourceFile.string(), slot.line, slot.col},
+                                                slotPointer(material, plan, at),
                                                 "the shader binds " + std::to_string(bound) +
                                                     " textures (a texture array or a packed texture counted once, a histogram "
                                                     "slot's table too); expected at most " +
