@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
+fs::path emptyDir(const std::string& name) {
     fs::path d = fs::temp_directory_path() / name;
     fs::remove_all(d);
     fs::create_directories(d);
@@ -54,7 +54,7 @@ std::map<fs::path, int> opens(const std::string& args, const std::set<fs::path>&
 void expectOneReadEach(const fs::path& material, const std::string& options, const std::string& name) {
     const std::set<fs::path> textures = texturesOf(material);
     ASSERT_FALSE(textures.empty()) << material;
-    const fs::path dir = freshDir("hexc_texture_reads_" + name), log = dir / "opens.log";
+    const fs::path dir = emptyDir("hexc_texture_reads_" + name), log = dir / "opens.log";
     const std::string args = material.string() + " -o " + (dir / "out").string() + " --cache-dir " + (dir / "cache").string() + options;
     const std::map<fs::path, int> once = [&] {
         std::map<fs::path, int> m;
@@ -80,7 +80,7 @@ TEST(TextureReads, EnginePackagesOncePerCompile) { expectOneReadEach("materials/
 
 // An OpenEXR file named by two slots, one of them blended by histogram (decoded from the bytes read): read once.
 TEST(TextureReads, ExrNamedTwiceOncePerCompile) {
-    const fs::path dir = freshDir("hexc_texture_reads_exr_material");
+    const fs::path dir = emptyDir("hexc_texture_reads_exr_material");
     std::vector<float> rgba(size_t(16) * 16 * 4);
     for (size_t i = 0; i < rgba.size(); ++i) rgba[i] = float(i % 97) / 96.0f;
     ASSERT_EQ(SaveEXR(rgba.data(), 16, 16, 4, 0, (dir / "t.exr").c_str(), nullptr), TINYEXR_SUCCESS);
