@@ -75,7 +75,9 @@ Module parse(const std::vector<uint32_t>& words, const std::string& what) {
                 type == SPV_OPERAND_TYPE_SCOPE_ID)
                 i.ids.push_back(parsed->operands[k].offset);
         }
-        static_cast<Module*>(user)->code.push_back(std::move(i));
+        Module& m = *static_cast<Module*>(user);
+        if (parsed->type_id) m.types[parsed->result_id] = parsed->type_id;
+        m.code.push_back(std::move(i));
         return SPV_SUCCESS;
     };
     const spv_result_t result = spvBinaryParse(context, &m, words.data(), words.size(), nullptr, onInstruction, nullptr);

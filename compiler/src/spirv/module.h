@@ -24,6 +24,7 @@ struct Instruction {
 struct Module {
     std::vector<uint32_t> header;
     std::vector<Instruction> code;
+    std::map<uint32_t, uint32_t> types = {};  // each result id's type, as parsed (rewrites do not keep it)
     // The module's words: the header, then each instruction's.
     std::vector<uint32_t> words() const;
 };
