@@ -219,6 +219,29 @@ TEST(EnginePackages, GodotGetsItsDialectAndItsInputs) {
     }
 }
 
+// Unity's and Unreal's functions take each texture they read, with a sampler of its own, as parameters and declare no
+// global resource (a Custom node's include file cannot); Unity's read every texture at (s, -t) (spirv/textures.h),
+// Unreal's as they are.
+TEST(EnginePackages, HlslPackagesPassTexturesInAndUnityFlipsEveryRead) {
+    for (Engine engine : {Engine::Unity, Engine::Unreal}) {
+        const std::string text = package(hexc::test::exampleTerrain(), engine);
+        EXPECT_EQ(text.find("register("), std::string::npos) << toString(engine);
+        EXPECT_NE(text.find("float hexc_height(float2 uv, Texture2DArray<float4> hexcArr_height, SamplerState _hexcArr_height_sampler, "
+                            "Texture2D<float4> hexcTex_splat0, SamplerState _hexcTex_splat0_sampler)"),
+                  std::string::npos)
+            << toString(engine);
+        size_t reads = 0, flipped = 0;
+        for (size_t at = text.find(".SampleGrad("); at != std::string::npos; at = text.find(".SampleGrad(", at + 1)) {
+            ++reads;
+            const std::string call = text.substr(at, text.find(";\n", at) - at);
+            flipped +=
+                call.find("* float2(1.0f, -1.0f)") != std::string::npos || call.find("* float3(1.0f, -1.0f, 1.0f)") != std::string::npos;
+        }
+        EXPECT_GT(reads, 10u) << toString(engine);
+        EXPECT_EQ(flipped, engine == Engine::Unity ? reads : 0) << toString(engine);
+    }
+}
+
 // --debug's #line directives stay out of the GLSL engines' packages: Godot 3's language has no preprocessor.
 TEST(EnginePackages, GlslPackagesHoldNoLineDirectivesUnderDebug) {
     ParseResult p = parseMaterialFile("materials/rock.json");
