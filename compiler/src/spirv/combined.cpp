@@ -6,8 +6,6 @@
 #include "spirv/combined.h"
 #include "spirv/module.h"
 
-#include "hexc/spirv.h"
-
 #include <algorithm>
 #include <map>
 #include <set>
@@ -39,8 +37,7 @@ uint32_t uniformPointer(Module& m, uint32_t pointee) {
     const uint32_t id = m.header[3]++;
     auto defined =
         std::find_if(m.code.begin(), m.code.end(), [&](const Instruction& i) { return i.words.size() > 1 && i.words[1] == pointee; });
-    m.code.insert(defined + 1,
-                  Instruction{{(4u << spv::WordCountShift) | spv::OpTypePointer, id, spv::StorageClassUniformConstant, pointee}, {3}});
+    m.code.insert(defined + 1, spirv::instruction(spv::OpTypePointer, {id, spv::StorageClassUniformConstant, pointee}, {2}));
     return id;
 }
 
@@ -74,12 +71,8 @@ std::vector<uint32_t> assemble(const std::vector<uint32_t>& header, std::vector<
                                       [&](const Instruction& i) { return !(i.opcode() == spv::OpVariable && moved.count(i.words[2])); });
     std::vector<Instruction> variables(std::make_move_iterator(last), std::make_move_iterator(code.end()));
     code.erase(last, code.end());
-    auto functions = std::find_if(code.begin(), code.end(), [](const Instruction& i) { return i.opcode() == spv::OpFunction; });
-    code.insert(functions, std::make_move_iterator(variables.begin()), std::make_move_iterator(variables.end()));
-    const std::vector<uint32_t> out = Module{header, std::move(code)}.words();
-    if (std::string errors = validationErrors(out); !errors.empty())
-        throw std::runtime_error("combined samplers: the rewritten module is invalid:\n" + errors);
-    return out;
+    spirv::insertBeforeFunctions(code, std::move(variables));
+    return spirv::validWords(Module{header, std::move(code)}, "combined samplers");
 }
 
 }  // namespace

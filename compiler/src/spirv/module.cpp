@@ -2,9 +2,12 @@
 
 #include <spirv-tools/libspirv.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <stdexcept>
+
+#include "hexc/spirv.h"
 
 namespace hexc::spirv {
 
@@ -60,6 +63,24 @@ void Instruction::replaceIds(const std::map<uint32_t, uint32_t>& replaced) {
 std::vector<uint32_t> Module::words() const {
     std::vector<uint32_t> out = header;
     for (const Instruction& i : code) out.insert(out.end(), i.words.begin(), i.words.end());
+    return out;
+}
+
+Instruction instruction(spv::Op op, std::vector<uint32_t> operands, std::vector<uint16_t> ids) {
+    operands.insert(operands.begin(), uint32_t((operands.size() + 1) << spv::WordCountShift) | op);
+    for (uint16_t& at : ids) ++at;
+    return {std::move(operands), std::move(ids)};
+}
+
+void insertBeforeFunctions(std::vector<Instruction>& code, std::vector<Instruction> added) {
+    auto first = std::find_if(code.begin(), code.end(), [](const Instruction& i) { return i.opcode() == spv::OpFunction; });
+    code.insert(first, std::make_move_iterator(added.begin()), std::make_move_iterator(added.end()));
+}
+
+std::vector<uint32_t> validWords(const Module& m, const std::string& what) {
+    std::vector<uint32_t> out = m.words();
+    if (std::string errors = validationErrors(out); !errors.empty())
+        throw std::runtime_error(what + ": the rewritten module is invalid:\n" + errors);
     return out;
 }
 

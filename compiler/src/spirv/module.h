@@ -38,4 +38,13 @@ std::optional<Diagnostic> beyondOptimiserBound(const std::vector<uint32_t>& word
 // std::runtime_error naming `what` (the rewrite) when the module does not parse: a hexc bug.
 Module parse(const std::vector<uint32_t>& words, const std::string& what);
 
+// An instruction of `op` from its operands; `ids`: which of them (counted from 0) are ids.
+Instruction instruction(spv::Op op, std::vector<uint32_t> operands, std::vector<uint16_t> ids);
+
+// `code` with `added` before its first function, where types, constants and global variables end.
+void insertBeforeFunctions(std::vector<Instruction>& code, std::vector<Instruction> added);
+
+// The rewritten module's words; std::runtime_error naming `what` (the rewrite) when they do not validate: a hexc bug.
+std::vector<uint32_t> validWords(const Module& m, const std::string& what);
+
 }  // namespace hexc::spirv

@@ -5,7 +5,6 @@
 #include <set>
 #include <stdexcept>
 
-#include "hexc/spirv.h"
 #include "spirv/module.h"
 #include "spirv/strings.h"
 
@@ -13,32 +12,13 @@ namespace hexc {
 namespace {
 
 using spirv::Instruction;
+using spirv::instruction;
 using spirv::Module;
-
-// An instruction from its operands; `ids`: which of them (counted from 0) are ids.
-Instruction instruction(spv::Op op, std::vector<uint32_t> operands, std::vector<uint16_t> ids) {
-    operands.insert(operands.begin(), uint32_t((operands.size() + 1) << spv::WordCountShift) | op);
-    for (uint16_t& at : ids) ++at;
-    return {std::move(operands), std::move(ids)};
-}
 
 void appendId(Instruction& i, uint32_t id) {
     i.words.push_back(id);
     i.ids.push_back(uint16_t(i.words.size() - 1));
     i.words[0] += 1u << spv::WordCountShift;
-}
-
-// `code` with `added` before its first function (where types, constants and global variables end).
-void insertBeforeFunctions(std::vector<Instruction>& code, std::vector<Instruction> added) {
-    auto first = std::find_if(code.begin(), code.end(), [](const Instruction& i) { return i.opcode() == spv::OpFunction; });
-    code.insert(first, std::make_move_iterator(added.begin()), std::make_move_iterator(added.end()));
-}
-
-std::vector<uint32_t> validated(const Module& m, const std::string& what) {
-    std::vector<uint32_t> out = m.words();
-    if (std::string errors = validationErrors(out); !errors.empty())
-        throw std::runtime_error(what + ": the rewritten module is invalid:\n" + errors);
-    return out;
 }
 
 // What texturesAsParameters reads of a module: its UniformConstant variables, names, entry points, and each
@@ -153,9 +133,9 @@ TextureParameters texturesAsParameters(const std::vector<uint32_t>& words) {
     }
     auto lastName = std::find_if(code.rbegin(), code.rend(), [](const Instruction& i) { return i.opcode() == spv::OpName; });
     code.insert(lastName.base(), std::make_move_iterator(names.begin()), std::make_move_iterator(names.end()));
-    insertBeforeFunctions(code, std::move(addedTypes));
+    spirv::insertBeforeFunctions(code, std::move(addedTypes));
     m.code = std::move(code);
-    result.words = validated(m, "textures as parameters");
+    result.words = spirv::validWords(m, "textures as parameters");
     return result;
 }
 
@@ -206,9 +186,9 @@ std::vector<uint32_t> flipRows(const std::vector<uint32_t>& words) {
         }
         code.push_back(std::move(i));
     }
-    insertBeforeFunctions(code, std::move(constants));
+    spirv::insertBeforeFunctions(code, std::move(constants));
     m.code = std::move(code);
-    return validated(m, "flip rows");
+    return spirv::validWords(m, "flip rows");
 }
 
 }  // namespace hexc
