@@ -330,6 +330,20 @@ TEST(EnginePackages, ASlotTheShaderDecodesIsBoundLinear) {
     for (const nlohmann::json& t : data["textures"]) EXPECT_EQ(t["colorspace"], "linear") << t["uniform"];
 }
 
+// The web packages' GLSL goes inside the engine's own shader: no #version, no default precision statement (it would
+// change the engine's code after it), each declaration with its own precision.
+TEST(EnginePackages, WebGlslHasNoHeaderAndEachDeclarationItsPrecision) {
+    for (Engine engine : {Engine::Threejs, Engine::Babylon}) {
+        const std::string module = package("terrain/terrain", engine);
+        const size_t start = module.find("const hexc = ") + 13;
+        const std::string glsl = nlohmann::json::parse(module.substr(start, module.find(";\n", start) - start))["glsl"];
+        EXPECT_EQ(glsl.find("#version"), std::string::npos) << toString(engine);
+        EXPECT_EQ(glsl.find("precision "), std::string::npos) << toString(engine);
+        EXPECT_NE(glsl.find("uniform highp sampler2DArray hexcArr_normal;"), std::string::npos) << toString(engine);
+        EXPECT_NE(glsl.find("highp vec4 hexc_albedo(highp vec2 uv"), std::string::npos) << toString(engine);
+    }
+}
+
 TEST(EnginePackages, FilamentReadsMaterialParamsAndSetsTheNormalFirst) {
     const std::string text = package("rock", Engine::Filament);
     EXPECT_NE(text.find("{ type : sampler2d, name : hexcTex_albedo }"), std::string::npos);

@@ -71,13 +71,6 @@ private:
     bool godot_;
 };
 
-// The functions in the engine's dialect, as compile() cuts its functions output from the whole module.
-std::string dialect(const PackageInput& in) {
-    EngineGlsl c(in.compiled.result.spirv, in.engine.engine);
-    const ShaderPlan& plan = in.compiled.plan;
-    return functionsOnly(emitGlsl(c, in.compiled.result.spirv, plan, in.options).source, Target::Glsl, plan.entryPoint);
-}
-
 std::string declarations(const std::vector<EngineTexture>& used, Engine engine) {
     std::string out;
     for (const EngineTexture& t : used) {
@@ -120,17 +113,23 @@ Inputs inputs(const PackageInput& in, Diagnostics& diagnostics) {
 
 }  // namespace
 
+std::string glslFunctions(spirv_cross::CompilerGLSL& c, const PackageInput& in) {
+    const ShaderPlan& plan = in.compiled.plan;
+    return functionsOnly(emitGlsl(c, in.compiled.result.spirv, plan, in.options).source, Target::Glsl, plan.entryPoint);
+}
+
 std::vector<OutputFile> glslPackage(const PackageInput& in, Diagnostics& diagnostics) {
     const Engine engine = in.engine.engine;
     const Inputs wired = inputs(in, diagnostics);
     const std::string declared = declarations(in.textures, engine);
+    EngineGlsl dialect(in.compiled.result.spirv, engine);
     Tokens tokens = {
         {"material", in.material.name},
         {"uvorigin",
          in.uvBottomLeft ? "(0, 0) at the image's bottom-left, v up (hexc --uv-bottom-left)" : "(0, 0) at the image's top-left, v down"},
         {"uniforms", declared},
         {"parameters", declared},
-        {"functions", dialect(in)},
+        {"functions", glslFunctions(dialect, in)},
         {"inputs", wired.inputs},
         {"normal", wired.normal},
         {"requires", takesVertexColor(in) ? "uv0, color" : "uv0"},

@@ -9,6 +9,10 @@
 #include "hexc/engines.h"
 #include "plan/plan.h"
 
+namespace spirv_cross {
+class CompilerGLSL;
+}  // namespace spirv_cross
+
 namespace hexc {
 
 inline constexpr size_t kEngineCount = size_t(kLastEngine) + 1;
@@ -72,6 +76,10 @@ const EngineRow& engineRow(Engine engine);
 std::vector<OutputFile> glslPackage(const PackageInput& input, Diagnostics& diagnostics);  // engines/glsl.cpp
 std::vector<OutputFile> webPackage(const PackageInput& input, Diagnostics& diagnostics);   // engines/web.cpp
 std::vector<OutputFile> hlslPackage(const PackageInput& input, Diagnostics& diagnostics);  // engines/hlsl.cpp
+
+// The functions as compile() cuts them from the whole module, printed by `c` (a compiler of the compile's SPIR-V whose
+// subclass writes the engine's dialect) in the compile's GLSL version (engines/glsl.cpp).
+std::string glslFunctions(spirv_cross::CompilerGLSL& c, const PackageInput& input);
 
 // A slot's texture as a web package holds it: <material>.<slot>.<the file's extension>, beside the module.
 std::string textureCopyName(const Material& material, const Slot& slot);

@@ -3,8 +3,7 @@
 // three.js's WebGPURenderer, package.webgpu.js), the textures they read and the engine input each slot fills; beside it,
 // the slots' textures it loads.
 #include <nlohmann/json.hpp>
-
-#include <sstream>
+#include <spirv_glsl.hpp>
 
 #include "common/templates.h"
 #include "engines/roles.h"
@@ -68,15 +67,15 @@ std::string uniformOf(const SlotPlan& slot, const PackageInput& in) {
     return "";  // a slot that reads no texture of its own (none does today)
 }
 
-// The functions without their precision statements: each declaration carries its own, and a default precision
-// statement would change the engine's own code after it.
-std::string withoutPrecision(const std::string& glsl) {
-    std::istringstream in(glsl);
-    std::string out, line;
-    while (std::getline(in, line))
-        if (!line.starts_with("precision ")) out += line + "\n";
-    return out;
-}
+// SPIRV-Cross's GLSL ES without its header: the engine writes its own #version, and a default precision statement
+// would change the engine's own code after the functions (each declaration carries its precision).
+class WebGlsl : public spirv_cross::CompilerGLSL {
+public:
+    using CompilerGLSL::CompilerGLSL;
+
+protected:
+    void emit_header() override {}
+};
 
 }  // namespace
 
@@ -85,7 +84,10 @@ std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnost
     nlohmann::json data = {{"material", in.material.name},
                            {"uv_origin", toString(in.uvBottomLeft ? UvOrigin::BottomLeft : UvOrigin::TopLeft)},
                            {"textures", textures(in, diagnostics)}};
-    if (c.sources.count(Target::Glsl)) data["glsl"] = withoutPrecision(c.banner + c.sources.at(Target::Glsl));  // WebGPU's has none
+    if (c.sources.count(Target::Glsl)) {  // WebGPU's package has none
+        WebGlsl glsl(c.result.spirv);
+        data["glsl"] = c.banner + "\n" + glslFunctions(glsl, in);
+    }
     if (c.sources.count(Target::Wgsl)) data["wgsl"] = c.banner + c.sources.at(Target::Wgsl);
     // The slots the engine fills (name, role, the call of their function with UV for the uv and COLOR for the vertex
     // colour, their texture's uniform), and those it has no input for; vertex_color: some call takes the colour.
