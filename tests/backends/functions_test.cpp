@@ -258,9 +258,8 @@ TEST(EnginePackages, GlslPackagesHoldNoLineDirectivesUnderDebug) {
 }
 
 // A histogram slot's Gaussian texture and table come into an engine package as OpenEXR, which the engines import
-// (none reads PFM), holding the floats of the PFM files a shader compile writes, alpha 1; Unity's package refuses
-// them (HX300): it stores the table's rows bottom first.
-TEST(EnginePackages, HistogramTablesAreExrAndUnityRefusesThem) {
+// (none reads PFM), holding the floats of the PFM files a shader compile writes, alpha 1.
+TEST(EnginePackages, HistogramTablesAreExrAndUnityFetchesTheirRowsFlipped) {
     ParseResult p = parseMaterialFile("tests/golden/materials/histogram.json");
     ASSERT_TRUE(p.material) << formatAll(p.diagnostics);
     const CompileResult shader = compile(*p.material, {});
@@ -287,10 +286,14 @@ TEST(EnginePackages, HistogramTablesAreExrAndUnityRefusesThem) {
     const nlohmann::json lut = nlohmann::json::parse(manifest->contents)["slots"][0]["histogram"]["lut"];
     EXPECT_EQ(lut["file"], "histogram.albedo.lut.exr");
     EXPECT_EQ(lut["format"]["container"], "exr");
+    // Unity's too: its functions fetch the table's row h - 1 - y (it stores the bottom row first), asking its height.
     const CompileResult unity = compileForEngine(*p.material, Engine::Unity, {});
-    EXPECT_FALSE(unity.ok());
-    EXPECT_NE(formatAll(unity.diagnostics).find("error[HX300]: unity stores a texture's bottom row first"), std::string::npos)
-        << formatAll(unity.diagnostics);
+    ASSERT_TRUE(unity.ok()) << formatAll(unity.diagnostics);
+    EXPECT_EQ(texels(unity, "unity/histogram.albedo.lut.exr"), texels(godot, "godot3/histogram.albedo.lut.exr"));
+    const auto hlsl =
+        std::find_if(unity.files.begin(), unity.files.end(), [](const OutputFile& f) { return f.name.ends_with(".hexc.hlsl"); });
+    ASSERT_NE(hlsl, unity.files.end());
+    EXPECT_NE(hlsl->contents.find("spvTextureSize(hexcLut_albedo"), std::string::npos);
     std::filesystem::remove_all(dir);
 }
 

@@ -127,28 +127,24 @@ def check(glslang, source, path, stage, entry, stubs, failures, what):
 # What the docs say these packages refuse (docs/engines.md), by the key that makes a material so: compiled, it must
 # be refused with HX300, and is listed as left out.
 REFUSED = {"projection": "triplanar, no functions output: HX300, docs/engines.md"}
-# Unity stores a texture's bottom row first; the histogram blend reads its table's rows texel by texel.
-UNITY_REFUSED = {"blend": "the histogram blend's table, read by rows that Unity stores bottom first: HX300, docs/engines.md"}
 
 
-def refused_why(material, engine):
-    """Why the docs say the engine's package refuses `material`, or None."""
+def refused_why(material):
+    """Why the docs say the packages refuse `material`, or None."""
     if material.suffix != ".json":
         return None
     doc = json.loads(material.read_text())
     settings = [doc, doc.get("hextiling", {})] + [s.get("hextiling", {}) for s in doc.get("slots", [])]
-    refused = {**REFUSED, **(UNITY_REFUSED if engine == "unity" else {})}
-    return next((why for key, why in refused.items() for where in settings
-                 if key in where and (key != "blend" or where[key] == "histogram")), None)
+    return next((why for key, why in REFUSED.items() for where in settings if key in where), None)
 
 
 def check_package(hexc, engine, glslang, material, out, bottom_left, failures):
     """Writes the package and compiles it (a material the docs say is refused must be refused with HX300)."""
     args = [hexc, str(material), "--engine", engine, "-o", str(out)] + (["--uv-bottom-left"] if bottom_left else [])
     r = subprocess.run(args, capture_output=True, text=True)
-    if refused_why(material, engine):
+    if refused_why(material):
         if r.returncode == 0 or "error[HX300]" not in r.stderr:
-            failures.append(f"{' '.join(args)}: expected HX300 ({refused_why(material, engine)}), got exit {r.returncode}: {r.stderr}")
+            failures.append(f"{' '.join(args)}: expected HX300 ({refused_why(material)}), got exit {r.returncode}: {r.stderr}")
         return
     if r.returncode != 0:
         failures.append(f"{' '.join(args)}: {r.stderr}")
@@ -220,8 +216,8 @@ def main():
             out = tmp / f"{material.stem}_{'bl' if bottom_left else 'tl'}"
             check_package(hexc, engine, glslang, material, out, bottom_left, failures)
         check_refused(engine, glslang, tmp / "rock_tl" / engine, failures)
-        left_out = [f"{m.relative_to(ROOT)} ({refused_why(m, engine)})" for m in materials if refused_why(m, engine)]
-        compiled = [(m, bl) for m, bl in packages if not refused_why(m, engine)]
+        left_out = [f"{m.relative_to(ROOT)} ({refused_why(m)})" for m in materials if refused_why(m)]
+        compiled = [(m, bl) for m, bl in packages if not refused_why(m)]
     print(f"{engine}: left out as the docs say (refused with HX300, checked): {', '.join(left_out) or 'none'}")
     return report(failures, f"{engine}: {len(compiled)} packages of {len({m for m, _ in compiled})} materials compiled with glslang's HLSL front end")
 

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 
 #include "compile.h"
+#include "hexc/histogram.h"
 #include "hexc/spirv.h"
 #include "spirv/combined.h"
 #include "spirv/textures.h"
@@ -101,6 +103,64 @@ TEST(FlipRowsOnTheGpu, AFlippedShaderReadsABottomFirstTextureAsTheShaderReadsThe
         EXPECT_GT(maxDifference(drawn(view, asIs, true), expected), 0.25);
         EXPECT_GT(maxDifference(drawn(view, bottomFirst, false), expected), 0.25);
         std::printf("flip rows, %d px: max difference %.2f/255\n", view.width, flipped * 255);
+    }
+}
+
+// `t` stored bottom row first: its rows in reverse order.
+Texture bottomRowFirst(Texture t) {
+    const size_t row = size_t(t.width) * 4;
+    for (int y = 0; y < t.height / 2; ++y)
+        for (size_t k = 0; k < row; ++k) {
+            const size_t a = size_t(y) * row + k, b = size_t(t.height - 1 - y) * row + k;
+            if (t.isFloat())
+                std::swap(t.rgba32f[a], t.rgba32f[b]);
+            else
+                std::swap(t.rgba8[a], t.rgba8[b]);
+        }
+    return t;
+}
+
+// A histogram-blended slot of the asymmetric texture: its Gaussian texture and look-up table, derived from it and bound
+// as they are or stored bottom row first; the shader's reads flipped with `flip`. The table is read by texel fetches
+// (row 0: the axes, the mean, the range) and by samples at level 0 (a row per mip level).
+Image drawnHistogram(const View& view, bool bottomFirst, bool flip) {
+    const std::filesystem::path png = std::filesystem::temp_directory_path() / "hexc_flip_rows_histogram.png";
+    std::ofstream(png, std::ios::binary) << pngBytes(asymmetric(false));
+    ParseResult parsed =
+        parseMaterial(R"({"name": "rows", "slots": [{"name": "albedo", "kind": "color", "texture": ")" + png.string() +
+                          R"(", "colorspace": "linear", "hextiling": {"tiling": 4, "rotation": 1, "blend": "histogram"}}]})",
+                      "materials/rows.json");
+    if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
+    const Material m = vk::renderedMaterial(*parsed.material, vk::RenderOutput::Albedo, "");
+    CompileOptions options;
+    options.targets = {Target::Spirv};
+    const CompiledMaterial c = compileMaterial(m, options);
+    if (!c.result.ok()) throw std::runtime_error(formatAll(c.result.diagnostics));
+    HistogramTransform h = histogramTransform(loadTexture(png, false), m.slots.front());
+    const Texture gaussian = bottomFirst ? bottomRowFirst(h.gaussian) : h.gaussian, lut = bottomFirst ? bottomRowFirst(h.lut) : h.lut;
+    vk::RenderRequest request;
+    request.fragmentSpirv = flip ? flipRows(c.result.spirv) : c.result.spirv;
+    request.fragmentEntry = c.manifest["targets"]["spirv"]["entry_point"];
+    request.uniformData = vk::packParameters(c.manifest);
+    request.textures = {&gaussian, &lut};  // the manifest's order: the slot's, then its table
+    std::string why;
+    return vk::renderFragment(*test::runner(&why), request, view);
+}
+
+// The same for texel fetches: the histogram blend's shader, its reads flipped, from its Gaussian texture and table
+// stored bottom row first, draws what it draws from them as they are. Bound as above: the fetches read the mirrored
+// texel exactly, the samples the mirrored position (2/255). Negative controls as above.
+TEST(FlipRowsOnTheGpu, FlippedFetchesReadATableStoredBottomFirstAsTheShaderReadsTheTable) {
+    REQUIRE_VULKAN();
+    const View magnified{128, 128, {0.3, 0.45, 0.3 + 128 * 0.75 / 1024, 0.45 + 128 * 0.75 / 1024}};
+    const View minified{64, 64, {0.3, 0.45, 0.3 + 64.0 * 4 / 1024, 0.45 + 64.0 * 4 / 1024}};
+    for (const View& view : {magnified, minified}) {
+        const Image expected = drawnHistogram(view, false, false);
+        const double flipped = maxDifference(drawnHistogram(view, true, true), expected);
+        EXPECT_LE(flipped, 2.0 / 255) << "flipped reads of the bottom-first textures, " << view.width << " px";
+        EXPECT_GT(maxDifference(drawnHistogram(view, false, true), expected), 0.25);
+        EXPECT_GT(maxDifference(drawnHistogram(view, true, false), expected), 0.25);
+        std::printf("flip rows of a histogram slot, %d px: max difference %.2f/255\n", view.width, flipped * 255);
     }
 }
 

@@ -26,7 +26,7 @@ namespace {
 struct Style {
     Engine engine;
     std::string args;
-    bool rowsBottomFirst;  // the engine stores a texture's bottom row first (Unity): the reads flip t, a texel fetch cannot
+    bool rowsBottomFirst;  // the engine stores a texture's bottom row first (Unity): every read flips its row
 };
 
 const Style& style(Engine engine) {
@@ -157,25 +157,10 @@ std::string trimmed(std::string text) {
     return text;
 }
 
-// A histogram slot's table is read texel by texel by row (its look-up rows), which an engine storing the bottom row
-// first puts elsewhere: refused (HX300) there.
-bool refusesTables(const PackageInput& in, const Style& s, Diagnostics& diagnostics) {
-    for (const EngineTexture& t : in.textures)
-        if (t.table && s.rowsBottomFirst) {
-            diagnostics.push_back(Diagnostic::make(Code::TargetUnsupported, {in.material.sourceFile.string()}, "",
-                                                   std::string(in.engine.shown) + " stores a texture's bottom row first, and the " +
-                                                       "histogram blend reads its table's rows texel by texel (slot `" + t.table->name +
-                                                       "`; blend it by falloff)"));
-            return true;
-        }
-    return false;
-}
-
 }  // namespace
 
 std::vector<OutputFile> hlslPackage(const PackageInput& in, Diagnostics& diagnostics) {
     const Style& s = style(in.engine.engine);
-    if (refusesTables(in, s, diagnostics)) return {};
     const Functions f = functions(in, s);
     Lines l = lines(in, s, f, diagnostics);
     const bool same = in.uvBottomLeft == in.engine.uvBottomLeft;

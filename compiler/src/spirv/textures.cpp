@@ -94,6 +94,80 @@ std::map<uint32_t, uint32_t> functionTypes(Module& m, Reads& r, std::vector<Inst
     return out;
 }
 
+// flipRows' rewrite of one module: each read's new operands computed just before it (`code`), the constants they use
+// (`constants`, put before the first function).
+struct RowFlip {
+    explicit RowFlip(Module& module) : m(module) {
+        for (const Instruction& i : m.code)
+            if (i.opcode() == spv::OpTypeVector) vectors[i.words[1]] = {i.words[2], i.words[3]};
+    }
+
+    // A sample at (s, -t), its gradients' t negated.
+    void sample(Instruction& i) {
+        const uint32_t mask = i.words.size() > 5 ? i.words[5] : 0;
+        flipOperand(i, 4);
+        if (mask & spv::ImageOperandsGradMask) {
+            const size_t dx = 6 + !!(mask & spv::ImageOperandsBiasMask) + !!(mask & spv::ImageOperandsLodMask);
+            flipOperand(i, dx);
+            flipOperand(i, dx + 1);
+        }
+    }
+
+    // A texel fetch of row y at row h - 1 - y, h the height of the level it reads.
+    void fetch(Instruction& i) {
+        const uint32_t coordinate = i.words[4], type = m.types.at(coordinate), component = vectors.at(type).first;
+        const uint32_t mask = i.words.size() > 5 ? i.words[5] : 0;
+        const uint32_t one = constant(component, 1u), lod = mask & spv::ImageOperandsLodMask ? i.words[6] : constant(component, 0u);
+        const uint32_t size = m.header[3]++, h = m.header[3]++, y = m.header[3]++, last = m.header[3]++, row = m.header[3]++;
+        code.push_back(instruction(spv::OpImageQuerySizeLod, {type, size, i.words[3], lod}, {0, 2, 3}));
+        code.push_back(instruction(spv::OpCompositeExtract, {component, h, size, 1}, {0, 2}));
+        code.push_back(instruction(spv::OpCompositeExtract, {component, y, coordinate, 1}, {0, 2}));
+        code.push_back(instruction(spv::OpISub, {component, last, h, one}, {0, 2, 3}));
+        code.push_back(instruction(spv::OpISub, {component, row, last, y}, {0, 2, 3}));
+        i.words[4] = m.header[3]++;
+        code.push_back(instruction(spv::OpCompositeInsert, {type, i.words[4], row, coordinate, 1}, {0, 2, 3}));
+    }
+
+    Module& m;
+    std::vector<Instruction> constants, code;
+
+private:
+    // The scalar constant `bits` of `type`, declared once.
+    uint32_t constant(uint32_t type, uint32_t bits) {
+        const auto key = std::make_pair(type, bits);
+        if (auto known = scalars.find(key); known != scalars.end()) return known->second;
+        constants.push_back(instruction(spv::OpConstant, {type, scalars[key] = m.header[3]++, bits}, {0}));
+        return scalars[key];
+    }
+
+    // The constant (1, -1, 1...) of a float vector type.
+    uint32_t flipOf(uint32_t type) {
+        if (auto known = flips.find(type); known != flips.end()) return known->second;
+        const auto [component, size] = vectors.at(type);
+        const uint32_t one = constant(component, std::bit_cast<uint32_t>(1.0f));
+        const uint32_t minusOne = constant(component, std::bit_cast<uint32_t>(-1.0f));
+        std::vector<uint32_t> operands = {type, flips[type] = m.header[3]++};
+        std::vector<uint16_t> ids = {0};
+        for (uint32_t k = 0; k < size; ++k) {
+            ids.push_back(uint16_t(operands.size()));
+            operands.push_back(k == 1 ? minusOne : one);  // t is component 1
+        }
+        constants.push_back(instruction(spv::OpConstantComposite, operands, ids));
+        return flips[type];
+    }
+
+    // Operand `at` of `i` times the flip, computed just before `i`.
+    void flipOperand(Instruction& i, size_t at) {
+        const uint32_t type = m.types.at(i.words[at]), flipped = m.header[3]++;
+        code.push_back(instruction(spv::OpFMul, {type, flipped, i.words[at], flipOf(type)}, {0, 2, 3}));
+        i.words[at] = flipped;
+    }
+
+    std::map<uint32_t, std::pair<uint32_t, uint32_t>> vectors;  // vector type -> its component type and size
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> scalars;  // (type, bits) -> constant
+    std::map<uint32_t, uint32_t> flips;                         // float vector type -> its flip constant
+};
+
 }  // namespace
 
 TextureParameters texturesAsParameters(const std::vector<uint32_t>& words) {
@@ -141,53 +215,31 @@ TextureParameters texturesAsParameters(const std::vector<uint32_t>& words) {
 
 std::vector<uint32_t> flipRows(const std::vector<uint32_t>& words) {
     Module m = spirv::parse(words, "flip rows");
-    std::map<uint32_t, std::pair<uint32_t, uint32_t>> vectors;  // vector type -> its component type and size
-    for (const Instruction& i : m.code)
-        if (i.opcode() == spv::OpTypeVector) vectors[i.words[1]] = {i.words[2], i.words[3]};
-    std::vector<Instruction> constants, code;
-    std::map<uint32_t, uint32_t> flip;  // float vector type -> the constant (1, -1, 1...) of that type
-    const auto flipOf = [&](uint32_t type) {
-        if (auto known = flip.find(type); known != flip.end()) return known->second;
-        const auto [component, size] = vectors.at(type);
-        const uint32_t one = m.header[3]++, minusOne = m.header[3]++;
-        constants.push_back(instruction(spv::OpConstant, {component, one, std::bit_cast<uint32_t>(1.0f)}, {0}));
-        constants.push_back(instruction(spv::OpConstant, {component, minusOne, std::bit_cast<uint32_t>(-1.0f)}, {0}));
-        std::vector<uint32_t> operands = {type, flip[type] = m.header[3]++};
-        std::vector<uint16_t> ids = {0};
-        for (uint32_t k = 0; k < size; ++k) {
-            ids.push_back(uint16_t(operands.size()));
-            operands.push_back(k == 1 ? minusOne : one);  // t is component 1
-        }
-        constants.push_back(instruction(spv::OpConstantComposite, operands, ids));
-        return flip[type];
-    };
-    // Operand `at` of `i` times the flip, computed just before `i`.
-    const auto flipOperand = [&](Instruction& i, size_t at) {
-        const uint32_t type = m.types.at(i.words[at]), flipped = m.header[3]++;
-        code.push_back(instruction(spv::OpFMul, {type, flipped, i.words[at], flipOf(type)}, {0, 2, 3}));
-        i.words[at] = flipped;
-    };
+    RowFlip flip(m);
     const uint32_t kOffsets =
         uint32_t(spv::ImageOperandsConstOffsetMask) | spv::ImageOperandsOffsetMask | spv::ImageOperandsConstOffsetsMask;
+    bool fetches = false;
     for (Instruction& i : m.code) {
         const spv::Op op = i.opcode();
-        if (op == spv::OpImageSampleImplicitLod || op == spv::OpImageSampleExplicitLod) {
-            const uint32_t mask = i.words.size() > 5 ? i.words[5] : 0;
-            if (mask & kOffsets) throw std::runtime_error("flip rows: a sample with an offset");
-            flipOperand(i, 4);
-            if (mask & spv::ImageOperandsGradMask) {
-                const size_t dx = 6 + !!(mask & spv::ImageOperandsBiasMask) + !!(mask & spv::ImageOperandsLodMask);
-                flipOperand(i, dx);
-                flipOperand(i, dx + 1);
-            }
-        } else if ((op >= spv::OpImageSampleDrefImplicitLod && op <= spv::OpImageRead) ||
-                   (op >= spv::OpImageSparseSampleImplicitLod && op <= spv::OpImageSparseRead)) {
-            throw std::runtime_error("flip rows: a texture read other than a sample (SPIR-V opcode " + std::to_string(op) + ")");
-        }
-        code.push_back(std::move(i));
+        const uint32_t mask = i.words.size() > 5 ? i.words[5] : 0;
+        const bool sample = op == spv::OpImageSampleImplicitLod || op == spv::OpImageSampleExplicitLod;
+        if ((sample || op == spv::OpImageFetch) && (mask & kOffsets)) throw std::runtime_error("flip rows: a read with an offset");
+        if (sample)
+            flip.sample(i);
+        else if (op == spv::OpImageFetch)
+            fetches = true, flip.fetch(i);
+        else if ((op >= spv::OpImageSampleDrefImplicitLod && op <= spv::OpImageRead) ||
+                 (op >= spv::OpImageSparseSampleImplicitLod && op <= spv::OpImageSparseRead))
+            throw std::runtime_error("flip rows: a texture read other than a sample or fetch (SPIR-V opcode " + std::to_string(op) + ")");
+        flip.code.push_back(std::move(i));
     }
-    spirv::insertBeforeFunctions(code, std::move(constants));
-    m.code = std::move(code);
+    spirv::insertBeforeFunctions(flip.code, std::move(flip.constants));
+    // A fetch's flip asks the image's size (OpImageQuerySizeLod): a capability of its own.
+    if (fetches && std::none_of(flip.code.begin(), flip.code.end(), [](const Instruction& i) {
+            return i.opcode() == spv::OpCapability && i.words[1] == spv::CapabilityImageQuery;
+        }))
+        flip.code.insert(flip.code.begin(), instruction(spv::OpCapability, {spv::CapabilityImageQuery}, {}));
+    m.code = std::move(flip.code);
     return spirv::validWords(m, "flip rows");
 }
 

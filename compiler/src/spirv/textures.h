@@ -22,10 +22,10 @@ struct TextureParameters {
 // hexc bug (a module that does not parse, or an invalid result).
 TextureParameters texturesAsParameters(const std::vector<uint32_t>& words);
 
-// The module with every texture sample at (s, -t), its gradients' t negated: what a shader written for textures whose
-// top row is at t = 0 reads from an engine that stores the bottom row first (exact with repeat wrapping: row r of the
-// image is row h - 1 - r of the storage, and -t wraps to 1 - t). A read it cannot flip so (a texel fetch, a gather, an
-// offset, a projective or depth-compare sample) is a std::runtime_error: the engine refuses such materials first.
+// The module with every texture sample at (s, -t), its gradients' t negated, and every texel fetch of row y at row
+// h - 1 - y: what a shader written for textures whose top row is at t = 0 reads from an engine that stores the bottom
+// row first (exact with repeat wrapping: row r of the image is row h - 1 - r of the storage, and -t wraps to 1 - t). A
+// read it cannot flip so (a gather, an offset, a projective or depth-compare sample) is a std::runtime_error.
 std::vector<uint32_t> flipRows(const std::vector<uint32_t>& words);
 
 }  // namespace hexc
