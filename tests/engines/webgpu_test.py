@@ -7,7 +7,9 @@ Godot and Filament tests judge theirs:
   of the layered material (three layers under a splat map) shown unlit on a square with three.js's own uv ((0, 0) at the
   bottom-left), against `hexc render`'s fp64 reference within engine_check's bound (a layered role's: layered_errors,
   which also holds the image against the reference flipped in u and in v: both must be over it), and of the same
-  layers weighed by the vertex colour on a square whose corners carry engine_check.VERTEX_COLORS;
+  layers weighed by the vertex colour on a square whose corners carry engine_check.VERTEX_COLORS; on a square without
+  colours, the same layers draw what white corners draw (three.js's vertexColor() is white there), and not what
+  black ones do;
 - lit: the probe's bumps under a three.js DirectionalLight from the right and from the top, 15 of 15 lit from the
   light's side, for a green-up and a DirectX map;
 - negative controls, which must fail: the textures uploaded with three.js's default flipY (v flipped), a mesh whose u
@@ -113,6 +115,34 @@ def draw(run):
     return failed
 
 
+def largest_difference(a, b):
+    """The largest difference of two PNGs' colour channels, in 8-bit steps."""
+    (_, _, n, rows_a), (_, _, _, rows_b) = ec.read_png(a), ec.read_png(b)
+    return max(abs(p - q) for ra, rb in zip(rows_a, rows_b) for i, (p, q) in enumerate(zip(ra, rb)) if i % n < 3)
+
+
+def uncoloured(run):
+    """The vertex-weighed layers' albedo on a square without colours: three.js's vertexColor() reads white where the
+    geometry has no `color` (docs/engines.md, "A mesh without vertex colours"), so it draws what white corners draw,
+    within one 8-bit step (the same shader on the same texels, the colour exactly 1 either way but for the
+    interpolation's rounding, which can move a value across an 8-bit rounding boundary). Black corners (layer 0 alone)
+    must not pass the same check: the control."""
+    vertex = ec.layered_material(run.work / "layered", weights="vertex")
+    pkg = run.package(vertex)
+    albedo = next(f for f in shown_functions(pkg) if f["role"] == "albedo")
+    uv = three_uv(ec.rect_for(ec.manifest(pkg), SIZE))
+    drawn = {}
+    for name, colors in (("none", None), ("white", [(1, 1, 1, 1)] * 4), ("black", [(0, 0, 0, 0)] * 4)):
+        drawn[name], errors = run.draw(f"uncoloured_{name}", pkg, view=albedo["name"], uv=uv, **({"colors": colors} if colors else {}))
+        if errors:
+            return ec.row(f"layers weighed by the vertex colour, corners {name}", "; ".join(errors), False)
+    same, control = largest_difference(drawn["none"], drawn["white"]), largest_difference(drawn["none"], drawn["black"])
+    return (ec.row("layers weighed by the vertex colour on a square without colours, against white corners",
+                   f"largest difference {same}/255, bound 1/255", same <= 1) +
+            ec.row("control: the same against black corners (layer 0 alone)", f"largest difference {control}/255: "
+                   + ("the check fails as it must" if control > 1 else "within the bound"), control > 1))
+
+
 def controls(run):
     """Wrong variants a user could make, each of which the checks must fail; the checks that did not."""
     probe, layered = run.work / "probe" / "probe_gl.json", run.work / "layered" / "layered.json"
@@ -158,7 +188,7 @@ def main(argv):
     run = Run(hexc, work)
     try:
         print("| check | figure | result |\n|---|---|---|")
-        failed = draw(run) + controls(run) + (screenshot(run, shot) if shot else 0)
+        failed = draw(run) + uncoloured(run) + controls(run) + (screenshot(run, shot) if shot else 0)
     finally:
         run.close()
         shutil.rmtree(work, ignore_errors=True)
