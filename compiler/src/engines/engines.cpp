@@ -228,8 +228,7 @@ CompileResult compileForEngine(const Material& material, Engine engine, CompileO
     CompiledMaterial compiled = compileMaterial(material, options);
     CompileResult& r = compiled.result;  // the writer reads its SPIR-V
     if (!r.ok()) return std::move(r);
-    const PackageInput input{
-        material, e, compiled, options, engineFunctions(compiled.plan), textures(compiled.plan), options.uvOrigin == UvOrigin::BottomLeft};
+    const PackageInput input{material, e, compiled, options, engineFunctions(compiled.plan), textures(compiled.plan)};
     std::vector<OutputFile> package = e.write(input, r.diagnostics);
     if (!r.ok()) return std::move(r);
     const std::string dir = std::string(e.name) + "/";

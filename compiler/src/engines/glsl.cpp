@@ -126,7 +126,7 @@ std::vector<OutputFile> glslPackage(const PackageInput& in, Diagnostics& diagnos
     Tokens tokens = {
         {"material", in.material.name},
         {"uvorigin",
-         in.uvBottomLeft ? "(0, 0) at the image's bottom-left, v up (hexc --uv-bottom-left)" : "(0, 0) at the image's top-left, v down"},
+         bottomLeft(in) ? "(0, 0) at the image's bottom-left, v up (hexc --uv-bottom-left)" : "(0, 0) at the image's top-left, v down"},
         {"uniforms", declared},
         {"parameters", declared},
         {"functions", glslFunctions(dialect, in)},

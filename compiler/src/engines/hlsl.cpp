@@ -141,7 +141,7 @@ void addFunction(Lines& l, const Style& s, const Functions& f, const WiredFuncti
 // Each function's lines; a slot no input takes (a role the engine lacks, a second slot of one role) is reported.
 Lines lines(const PackageInput& in, const Style& s, const Functions& f, Diagnostics& diagnostics) {
     Lines l;
-    const std::string uv = in.uvBottomLeft == in.engine.uvBottomLeft ? "UV" : "float2(UV.x, 1.0 - UV.y)";
+    const std::string uv = bottomLeft(in) == in.engine.uvBottomLeft ? "UV" : "float2(UV.x, 1.0 - UV.y)";
     for (const WiredFunction& w : wire(in.material, in.functions, in.engine, diagnostics))
         addFunction(l, s, f, w, w.function.tangentNormal ? "vec3" : w.function.slot->type, uv);
     for (const std::string& t : f.all) {
@@ -163,11 +163,11 @@ std::vector<OutputFile> hlslPackage(const PackageInput& in, Diagnostics& diagnos
     const Style& s = style(in.engine.engine);
     const Functions f = functions(in, s);
     Lines l = lines(in, s, f, diagnostics);
-    const bool same = in.uvBottomLeft == in.engine.uvBottomLeft;
+    const bool same = bottomLeft(in) == in.engine.uvBottomLeft;
     const std::string uvNote = same ? "hexc's functions take it as it is (compiled for that origin)"
                                     : "hexc's functions were compiled for (0, 0) at the top-left: v flipped";
     Tokens tokens = {{"material", in.material.name},
-                     {"uvorigin", in.uvBottomLeft ? "(0, 0) at the image's bottom-left, v up" : "(0, 0) at the image's top-left, v down"},
+                     {"uvorigin", bottomLeft(in) ? "(0, 0) at the image's bottom-left, v up" : "(0, 0) at the image's top-left, v down"},
                      {"guard", guard(in.material.name)},
                      {"nodes", trimmed(l.nodes)},
                      {"functions", trimmed(f.text)},

@@ -47,8 +47,10 @@ struct PackageInput {
     const CompileOptions& options;          // the compile's: the engine's language (packageOptions)
     std::vector<EngineFunction> functions;  // in the manifest's order
     std::vector<EngineTexture> textures;    // bound, in name order
-    bool uvBottomLeft;                      // hexc --uv-bottom-left: the mesh's uv (0, 0) is the image's bottom-left
 };
+
+// hexc --uv-bottom-left: the mesh's uv (0, 0) is the image's bottom-left.
+inline bool bottomLeft(const PackageInput& input) { return input.options.uvOrigin == UvOrigin::BottomLeft; }
 
 struct EngineRow {
     Engine engine;

@@ -81,9 +81,8 @@ protected:
 
 std::vector<OutputFile> webPackage(const PackageInput& in, Diagnostics& diagnostics) {
     const CompiledMaterial& c = in.compiled;
-    nlohmann::json data = {{"material", in.material.name},
-                           {"uv_origin", toString(in.uvBottomLeft ? UvOrigin::BottomLeft : UvOrigin::TopLeft)},
-                           {"textures", textures(in, diagnostics)}};
+    nlohmann::json data = {
+        {"material", in.material.name}, {"uv_origin", toString(in.options.uvOrigin)}, {"textures", textures(in, diagnostics)}};
     if (c.sources.count(Target::Glsl)) {  // WebGPU's package has none
         WebGlsl glsl(c.result.spirv);
         data["glsl"] = c.banner + "\n" + glslFunctions(glsl, in);
