@@ -1,8 +1,10 @@
-// The GLSL engines' packages (Godot 3, Godot 4, Filament; docs/engines.md): the functions in GLSL 330 in the engine's
+// The GLSL family's packages (each engine's Dialect below; docs/engines.md): the functions in GLSL 330 in the engine's
 // dialect, inside the engine's material template (compiler/integrations/<engine>/), with each slot fed to the engine
 // input its role gives. The dialect is SPIRV-Cross's GLSL of the compile's SPIR-V, printed by a subclass of its
 // compiler that writes what the engine takes (EngineGlsl): no text hexc wrote is read back.
 #include <spirv_glsl.hpp>
+
+#include <stdexcept>
 
 #include <GLSL.std.450.h>
 
@@ -15,17 +17,58 @@
 namespace hexc {
 namespace {
 
+// How a GLSL engine spells what hexc writes. Each engine of the family has one (a case of `dialect`): a row of the
+// table that writes with glslPackage and has none is a std::logic_error, and -Wswitch names the missing case.
+struct Dialect {
+    bool godot;              // Godot's shading language: no fma, no `97u` literals, globals only as constants
+    bool materialParams;     // Filament: a texture read as materialParams_<name>, the normal set before prepareMaterial
+    const char *uv, *color;  // the engine's uv and vertex colour, as a statement of its fragment reads them
+    const char* indent;      // of the template's statements
+    std::string (*declare)(const EngineTexture& t);  // a texture's declaration, a line
+};
+
+std::string godot3Texture(const EngineTexture& t) { return "uniform sampler2D " + t.uniform + (t.srgb ? " : hint_albedo" : "") + ";\n"; }
+
+std::string godot4Texture(const EngineTexture& t) {
+    return std::string("uniform ") + (t.array ? "sampler2DArray " : "sampler2D ") + t.uniform + " : " + (t.srgb ? "source_color, " : "") +
+           "filter_linear_mipmap, repeat_enable;\n";
+}
+
+std::string filamentTexture(const EngineTexture& t) { return "        { type : sampler2d, name : " + t.uniform + " },\n"; }
+
+const Dialect& dialect(Engine engine) {
+    static const Dialect godot3{true, false, "UV", "COLOR", "    ", godot3Texture};
+    static const Dialect godot4{true, false, "UV", "COLOR", "    ", godot4Texture};
+    static const Dialect filament{false, true, "uv", "getColor()", "        ", filamentTexture};
+    switch (engine) {
+        case Engine::Godot3:
+            return godot3;
+        case Engine::Godot4:
+            return godot4;
+        case Engine::Filament:
+            return filament;
+        case Engine::Threejs:
+        case Engine::Babylon:
+        case Engine::Unity:
+        case Engine::Unreal:
+        case Engine::ThreejsWebgpu:
+            break;
+    }
+    throw std::logic_error("the " + std::string(toString(engine)) + " package has no GLSL dialect (engines/glsl.cpp)");
+}
+
 // SPIRV-Cross's GLSL of the functions as the engine's material takes them: no header and no uniforms (the engine's
 // template declares the textures), in the engine's dialect. Godot's language has no fma, no `97u` literals and global
 // variables only as constants: SPIRV-Cross's global for an undefined value (OpUndef) is a constant of value zero, as
 // good as any. Filament names a sampler parameter materialParams_<name>.
 class EngineGlsl : public spirv_cross::CompilerGLSL {
 public:
-    EngineGlsl(const std::vector<uint32_t>& spirv, Engine engine) : CompilerGLSL(spirv), godot_(engine != Engine::Filament) {}
+    EngineGlsl(const std::vector<uint32_t>& spirv, const Dialect& d)
+        : CompilerGLSL(spirv), godot_(d.godot), materialParams_(d.materialParams) {}
 
     std::string compile() override {
         options.emit_line_directives = false;  // no #line for --debug: Godot 3's language has no preprocessor
-        if (!godot_)
+        if (materialParams_)
             ir.for_each_typed_id<spirv_cross::SPIRVariable>([&](uint32_t id, const spirv_cross::SPIRVariable&) {
                 const std::string name = get_name(id);
                 if (name.starts_with("hexcTex_") || name.starts_with("hexcLut_")) set_name(id, "materialParams_" + name);
@@ -68,21 +111,13 @@ protected:
     }
 
 private:
-    bool godot_;
+    bool godot_, materialParams_;
 };
 
-std::string declarations(const std::vector<EngineTexture>& used, Engine engine) {
+std::string declarations(const std::vector<EngineTexture>& used, const Dialect& d) {
     std::string out;
-    for (const EngineTexture& t : used) {
-        if (engine == Engine::Filament)
-            out += "        { type : sampler2d, name : " + t.uniform + " },\n";
-        else if (engine == Engine::Godot3)
-            out += "uniform sampler2D " + t.uniform + (t.srgb ? " : hint_albedo" : "") + ";\n";
-        else
-            out += std::string("uniform ") + (t.array ? "sampler2DArray " : "sampler2D ") + t.uniform + " : " +
-                   (t.srgb ? "source_color, " : "") + "filter_linear_mipmap, repeat_enable;\n";
-    }
-    if (engine == Engine::Filament && out.ends_with(",\n")) out.erase(out.size() - 2);  // the template ends the line
+    for (const EngineTexture& t : used) out += d.declare(t);
+    if (d.materialParams && out.ends_with(",\n")) out.erase(out.size() - 2);  // Filament's template ends the line
     return out;
 }
 
@@ -94,15 +129,13 @@ struct Inputs {
 
 // A layered role's function weighed by the vertex colour takes the engine's own after uv: Godot's COLOR, Filament's
 // getColor() (its material requires the attribute: vertexColorRequired).
-Inputs inputs(const PackageInput& in, Diagnostics& diagnostics) {
-    const bool filament = in.engine.engine == Engine::Filament;
-    const std::string indent = filament ? "        " : "    ", uv = filament ? "uv" : "UV", color = filament ? "getColor()" : "COLOR";
+Inputs inputs(const PackageInput& in, const Dialect& d, Diagnostics& diagnostics) {
     Inputs out;
     for (const WiredFunction& w : wire(in.material, in.functions, in.engine, diagnostics)) {
         if (!w.input) continue;
-        const std::string args = uv + (w.function.vertexColor ? ", " + color : "");
-        const std::string statement = indent + filled(w.input, w.function.name + "(" + args + ")");
-        if (filament && w.role == "normal")
+        const std::string args = d.uv + (w.function.vertexColor ? std::string(", ") + d.color : "");
+        const std::string statement = d.indent + filled(w.input, w.function.name + "(" + args + ")");
+        if (d.materialParams && w.role == "normal")
             out.normal = statement;
         else
             out.inputs += statement + "\n";
@@ -119,17 +152,17 @@ std::string glslFunctions(spirv_cross::CompilerGLSL& c, const PackageInput& in) 
 }
 
 std::vector<OutputFile> glslPackage(const PackageInput& in, Diagnostics& diagnostics) {
-    const Engine engine = in.engine.engine;
-    const Inputs wired = inputs(in, diagnostics);
-    const std::string declared = declarations(in.textures, engine);
-    EngineGlsl dialect(in.compiled.result.spirv, engine);
+    const Dialect& d = dialect(in.engine.engine);
+    const Inputs wired = inputs(in, d, diagnostics);
+    const std::string declared = declarations(in.textures, d);
+    EngineGlsl printer(in.compiled.result.spirv, d);
     Tokens tokens = {
         {"material", in.material.name},
         {"uvorigin",
          bottomLeft(in) ? "(0, 0) at the image's bottom-left, v up (hexc --uv-bottom-left)" : "(0, 0) at the image's top-left, v down"},
         {"uniforms", declared},
         {"parameters", declared},
-        {"functions", glslFunctions(dialect, in)},
+        {"functions", glslFunctions(printer, in)},
         {"inputs", wired.inputs},
         {"normal", wired.normal},
         {"requires", takesVertexColor(in) ? "uv0, color" : "uv0"},

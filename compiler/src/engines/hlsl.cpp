@@ -9,6 +9,7 @@
 #include <array>
 #include <map>
 #include <set>
+#include <stdexcept>
 
 #include "backends/backends.h"
 #include "codegen/codegen.h"
@@ -32,7 +33,20 @@ struct Style {
 const Style& style(Engine engine) {
     static const Style unity = {Engine::Unity, "{T}, sampler_{T}", true};
     static const Style unreal = {Engine::Unreal, "{T}, {T}Sampler", false};
-    return engine == Engine::Unity ? unity : unreal;
+    switch (engine) {  // an engine of the family without its case: -Wswitch, and a std::logic_error
+        case Engine::Unity:
+            return unity;
+        case Engine::Unreal:
+            return unreal;
+        case Engine::Godot3:
+        case Engine::Godot4:
+        case Engine::Filament:
+        case Engine::Threejs:
+        case Engine::Babylon:
+        case Engine::ThreejsWebgpu:
+            break;
+    }
+    throw std::logic_error("the " + std::string(toString(engine)) + " package has no HLSL style (engines/hlsl.cpp)");
 }
 
 std::string named(std::string pattern, const std::string& texture) {
