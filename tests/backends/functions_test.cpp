@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "engines/table.h"
 #include "hexc/compiler.h"
 #include "hexc/engines.h"
 #include "hexc/image.h"
@@ -160,7 +161,10 @@ TEST(EnginePackages, OnlyBabylonAndWebgpuTakeWgsl) {
     ParseResult p = parseMaterialFile("materials/rock.json");
     CompileOptions options;
     options.targets = {Target::Wgsl};
-    for (Engine engine : {Engine::Godot3, Engine::Godot4, Engine::Filament, Engine::Threejs, Engine::Unity, Engine::Unreal}) {
+    EXPECT_TRUE(engineRow(Engine::Babylon).wgsl && engineRow(Engine::ThreejsWebgpu).wgsl);
+    for (size_t i = 0; i < kEngineCount; ++i) {  // every other engine of the table, one added included
+        const Engine engine = Engine(i);
+        if (engine == Engine::Babylon || engine == Engine::ThreejsWebgpu) continue;
         CompileResult r = compileForEngine(*p.material, engine, options);
         EXPECT_FALSE(r.ok());
         EXPECT_TRUE(r.files.empty());
@@ -247,7 +251,9 @@ TEST(EnginePackages, GlslPackagesHoldNoLineDirectivesUnderDebug) {
     ParseResult p = parseMaterialFile("materials/rock.json");
     CompileOptions debug;
     debug.debug = true;
-    for (Engine engine : {Engine::Godot3, Engine::Godot4, Engine::Filament}) {
+    for (size_t i = 0; i < kEngineCount; ++i) {  // every engine of the GLSL family, one added included
+        const Engine engine = Engine(i);
+        if (engineRow(engine).write != glslPackage) continue;
         CompileResult r = compileForEngine(*p.material, engine, debug);
         ASSERT_TRUE(r.ok()) << formatAll(r.diagnostics);
         const auto source = std::find_if(r.files.begin(), r.files.end(), [](const OutputFile& f) { return !f.name.ends_with(".json"); });

@@ -11,15 +11,18 @@ not in the package) and a texture relative to the material, not to the package, 
   package_paths_test.py HEXC WORK_DIR MATERIAL...
 """
 import json
+import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
-ENGINES = ["godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal", "threejs-webgpu"]
-# Every engine's package carries a layered material (docs/engines.md#layered-materials): a layered example's package
-# for each must be written, not refused.
-LAYERED = ENGINES
+
+
+def engine_names(hexc):
+    """Every engine of hexc's table, as `hexc --help` lists --engine's choices: an engine added is checked here too."""
+    text = subprocess.run([hexc, "--help"], capture_output=True, text=True, check=True).stdout
+    return re.search(r"--engines TEXT:\{([^}]*)\}", text).group(1).split(",")
 
 
 def named_paths(manifest):
@@ -67,12 +70,12 @@ def build(hexc, material, engines, out):
     return [out / engine for engine in engines]
 
 
-def packages(hexc, material, out):
+def packages(hexc, engines, material, out):
     """Every package hexc writes for the material (all engines at once, else engine by engine), and the count refused."""
-    every = build(hexc, material, ENGINES, out)
+    every = build(hexc, material, engines, out)
     if every is not None:
         return every, 0
-    each = [build(hexc, material, [engine], out / engine) for engine in ENGINES]
+    each = [build(hexc, material, [engine], out / engine) for engine in engines]
     return [p[0] for p in each if p is not None], sum(p is None for p in each)
 
 
@@ -94,19 +97,20 @@ def negative_control(package, work):
 def main():
     hexc, work, materials = sys.argv[1], Path(sys.argv[2]), [Path(m) for m in sys.argv[3:]]
     shutil.rmtree(work, ignore_errors=True)
-    checked, refused, problems = 0, 0, []
+    checked, refused, problems, engines = 0, 0, [], engine_names(hexc)
     for material in materials:
-        built, no = packages(hexc, material, work / material.name)  # rock.json and rock.mtlx apart
+        built, no = packages(hexc, engines, material, work / material.name)  # rock.json and rock.mtlx apart
         checked, refused = checked + len(built), refused + no
         layered = material.suffix == ".json" and "layers" in json.loads(material.read_text())
-        problems += [f"{material}: the {e} package, which carries layers, was refused" for e in LAYERED
+        # Every engine's package carries a layered material (docs/engines.md#layered-materials): written, not refused.
+        problems += [f"{material}: the {e} package, which carries layers, was refused" for e in engines
                      if layered and e not in [p.name for p in built]]
         for package in built:
             problems += problems_of(package)
     negative_control(work / "rock.json" / "godot3", work)
     for problem in problems:
         print(problem)
-    print(f"{checked} packages checked, {refused} refused (HX300), {len(problems)} paths that do not resolve")
+    print(f"{checked} packages checked ({len(engines)} engines), {refused} refused (HX300), {len(problems)} paths that do not resolve")
     sys.exit(1 if problems or checked == 0 else 0)
 
 
