@@ -15,7 +15,7 @@ namespace hexc {
 enum class Engine { Godot3, Godot4, Filament, Threejs, Babylon, Unity, Unreal, ThreejsWebgpu };
 inline constexpr Engine kLastEngine = Engine::ThreejsWebgpu;
 
-// "godot3", "godot4", "filament", "threejs", "babylon", "unity", "unreal", "threejs-webgpu"
+// The --engine name of the engine's row ("godot3", "threejs-webgpu" ...)
 std::string_view toString(Engine engine);
 std::optional<Engine> engineNamed(std::string_view name);  // nullopt for a name hexc has no package for
 std::vector<std::string_view> engineNames();
