@@ -3,7 +3,8 @@
 the control fields (Section, Priority, Maintainer, a description with a long part, lines under 80 columns), the
 copyright file in DEP-5's format, changelog.Debian.gz (gzip -9n: no name, no time, the same bytes from the same text;
 its version the package's), the ELF files stripped, the static libraries without debugging sections, neither with a
-.comment section (as Debian's dh_strip leaves them, which lintian checks), and Depends naming the Debian package of
+.comment section (as Debian's dh_strip leaves them, which lintian checks), the ELF programs and modules hardened
+(PIE, RELRO, BIND_NOW: lintian's hardening tags), and Depends naming the Debian package of
 every shared library an ELF file of the package loads (what dpkg-shlibdeps computes).
 
     dpkg -L hexc | tests/package/policy.py / <(dpkg -s hexc)                   # the installed package
@@ -14,7 +15,8 @@ ROOT is the folder the package's paths (stdin, one a line) are under; CONTROL ho
 failure and exits 1, or an "ok" line per check. With --controls BUILD (tests/package/installed.sh) it also runs
 each check on a wrong variant of what it was given and fails if a check takes one: the copyright file without its
 Format field, a Files paragraph without License, a changelog compressed with a name and time, or for another version,
-BUILD's hexc (not stripped) and libhexc.a (with .comment), and Depends without one of its libraries' packages.
+BUILD's hexc (not stripped) and libhexc.a (with .comment), a program linked lazily without PIE or RELRO, and Depends
+without one of its libraries' packages.
 """
 import argparse
 import gzip
@@ -22,6 +24,7 @@ import pathlib
 import re
 import subprocess
 import sys
+import tempfile
 
 DEP5 = re.compile(r"https?://www\.debian\.org/doc/packaging-manuals/copyright-format/1\.0/?")
 
@@ -118,6 +121,26 @@ def elf_problems(path):
     return problems + ([f"{path}: has debugging sections"] if " .debug_" in sections else [])
 
 
+def hardening_problems(path):
+    """An ELF program or shared object as Debian's hardening builds it (lintian's hardening-no-pie, -no-relro and
+    -no-bindnow): position-independent, a GNU_RELRO segment, and BIND_NOW; nothing for other files."""
+    if not magic(path).startswith(b"\x7fELF"):
+        return []
+    headers = subprocess.run(["readelf", "-h", "-l", "-d", "-W", path], capture_output=True, text=True, check=True).stdout
+    problems = [] if re.search(r"Type:\s+DYN", headers) else [f"{path}: not position-independent"]
+    problems += [] if "GNU_RELRO" in headers else [f"{path}: no GNU_RELRO segment"]
+    bindnow = re.search(r"\(FLAGS\)\s.*\bBIND_NOW\b", headers) or re.search(r"\(FLAGS_1\)\s.*\bNOW\b", headers)
+    return problems + ([] if bindnow else [f"{path}: not linked with -z now (BIND_NOW)"])
+
+
+def lazy_program(folder):
+    """A program linked as Debian's hardening does not: no PIE, no RELRO, lazy binding (a control of the check)."""
+    source, program = folder / "lazy.c", folder / "lazy"
+    source.write_text("int main(void) { return 0; }\n")
+    subprocess.run(["cc", "-no-pie", "-Wl,-z,norelro,-z,lazy", str(source), "-o", str(program)], check=True)
+    return program
+
+
 def needed(path):
     dynamic = subprocess.run(["readelf", "-d", "-W", path], capture_output=True, text=True).stdout
     return re.findall(r"\(NEEDED\)\s+Shared library: \[(.*)\]", dynamic)
@@ -158,6 +181,7 @@ def run(root, listing, control):
         "copyright (DEP-5)": lambda: check_copyright((doc / "copyright").read_text()),
         "changelog.Debian.gz": lambda: check_changelog((doc / "changelog.Debian.gz").read_bytes(), version),
         "stripped": lambda: [q for p in files for q in elf_problems(p)],
+        "hardened": lambda: [q for p in files for q in hardening_problems(p)],
         "Depends": lambda: check_depends(control, packages),
     }
     problems = []
@@ -168,7 +192,7 @@ def run(root, listing, control):
             found = [f"{name}: no {e.filename}"]
         problems += found
         if not found:
-            print(f"ok: {name}" + (f" ({len(elves)} ELF files)" if name in ("stripped", "Depends") else ""))
+            print(f"ok: {name}" + (f" ({len(elves)} ELF files)" if name in ("stripped", "hardened", "Depends") else ""))
     return problems, packages
 
 
@@ -189,6 +213,8 @@ def controls(root, control, build, packages):
         f"{build}/compiler/src/libhexc.a, with .comment": elf_problems(build / "compiler/src/libhexc.a"),
         f"Depends without {dropped}": check_depends(fewer, packages),
     }
+    with tempfile.TemporaryDirectory() as folder:
+        wrong["a program without PIE, RELRO and BIND_NOW"] = hardening_problems(lazy_program(pathlib.Path(folder)))
     taken = [name for name, problems in wrong.items() if not problems]
     print(f"controls: {len(wrong) - len(taken)} of {len(wrong)} wrong variants refused")
     return [f"a check takes {name}" for name in taken]
