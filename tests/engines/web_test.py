@@ -456,7 +456,8 @@ class Engine(unittest.TestCase):
         """Babylon only: the package's WGSL form on Babylon's WebGPU engine draws what its GLSL form draws on WebGL 2, rock's
         albedo under a dome normal map lit from +x and from -x; both renders show the albedo and the normal map. And
         the layers weighed by the vertex colour (layered_vertex), its albedo within engine_check's layered bound as on
-        WebGL 2, and failing it with the square's red and green vertex colour channels swapped."""
+        WebGL 2, and failing it with the square's red and green vertex colour channels swapped; the layers under the
+        splat map (layered), each role within its bound, failing it with two layers' normal maps exchanged."""
         if ENGINE != "babylon":
             self.skipTest("the WGSL form is Babylon's")
         material = lit_material(os.path.join(PACKAGES, "lit"))
@@ -478,6 +479,16 @@ class Engine(unittest.TestCase):
             failed = layered_view(vertex, "top-left", albedo, colors=ec.VERTEX_COLORS, webgpu_page=webgpu_page)
             failed += layered_view(vertex, "top-left", albedo, "the square's red and green vertex colour channels swapped",
                                    colors=ec.VERTEX_COLORS_SWAPPED, webgpu_page=webgpu_page)
+            # The layers under the splat map (the normal role a 2D array texture, the albedo a texture per layer), each
+            # role within its bound, and two layers' normal maps exchanged failing it, as on WebGL 2.
+            layered = str(ec.layered_material(os.path.join(PACKAGES, "layered")))
+            wgsl_package(layered)
+            roles = [f for f in ec.manifest(os.path.join(PACKAGES, "layered-top-left-wgsl", ENGINE))["functions"] if f["returns"] != "vec2"]
+            failed += sum(layered_view(layered, "top-left", f, webgpu_page=webgpu_page) for f in roles)
+            failed += layered_view(layered, "top-left", next(f for f in roles if f["name"] == "hexc_normal_normal"),
+                                   "two layers' normal maps exchanged in the engine (clay's and moss's)",
+                                   {"layered.clay_normal.png": "layered.moss_normal.png", "layered.moss_normal.png": "layered.clay_normal.png"},
+                                   webgpu_page=webgpu_page)
         finally:
             webgpu_page.quit()
         self.assertEqual(failed, 0)

@@ -78,12 +78,16 @@ const rolesWgsl = {
     (call) => `normalW=hexcPerturb(normalW,fragmentInputs.vPositionW,fragmentInputs.vHexcUv,${call});var albedoOpacityOut: albedoOpacityOutParams;`],
 };
 
-// hexc's WGSL as Babylon's WGSL processor takes it: resources without @group and @binding (Babylon numbers them), and
-// a sampler per texture named <texture>Sampler, which Babylon binds with that texture, in place of hexc's one sampler.
+// hexc's WGSL as Babylon's WGSL processor takes it: resources without @group and @binding (Babylon numbers them),
+// each texture named as its uniform, which Babylon binds it by (naga appends `_` to a name that ends in a digit:
+// `hexcTex_splat0_`), and a sampler per texture named <texture>Sampler, which Babylon binds with that texture, in place
+// of hexc's one sampler.
 function babylonWgsl(wgsl) {
   const sampler = /var (\w+): sampler;/.exec(wgsl)[1];
   const samplers = hexc.textures.map((t) => `var ${t.uniform}Sampler: sampler;`).join('\n');
-  return wgsl.replace(/@group\(\d+\) @binding\(\d+\) /g, '').replace(`var ${sampler}: sampler;`, samplers)
+  const named = hexc.textures.filter((t) => /\d$/.test(t.uniform))
+    .reduce((text, t) => text.replace(new RegExp(`\\b${t.uniform}_\\b`, 'g'), t.uniform), wgsl);
+  return named.replace(/@group\(\d+\) @binding\(\d+\) /g, '').replace(`var ${sampler}: sampler;`, samplers)
     .replace(new RegExp(`(\\w+), ${sampler}\\b`, 'g'), '$1, $1Sampler');
 }
 
