@@ -188,7 +188,7 @@ def check(hexc, renderer, work):
     for material, origin in ((bumps, "bottom-left"), (bumps, "top-left"), (ec.probe_material(work / "probe", "dx", albedo=False), "bottom-left")):
         for side, out in lit(hexc, renderer, work, material, origin).items():
             failed += ec.lit_verdict(out, f"{material.stem}, {origin}", side)
-    for material in (probe, drawn[3]):  # docs/engines.md's screenshots: the probe, the layered material
+    for material in (probe, drawn[3], ROOT / "materials" / "terrain" / "terrain.json"):  # docs/engines.md's screenshots
         lit(hexc, renderer, work, material, "bottom-left", lights={"upper-right": "0.4,0.4,0.8"})
     decoded = ec.srgb_decoded_copy(work / "probe" / "probe_albedo.png", work / "probe" / "probe_albedo_decoded.png")
     failed += views.check(probe, "top-left", "bottom-left", "v flipped: the package built without --uv-bottom-left")

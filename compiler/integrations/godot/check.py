@@ -157,7 +157,8 @@ def draw(hexc, jobs, work):
         for side, light in LIGHTS.items():
             jobs.add(str(next(pkg.glob("*.shader"))), textures(pkg),
                      lit_check(f"probe bumps ({convention} map) on Godot's QuadMesh", side), f"{material.stem}_{side}", light=light)
-    for material in (ROOT / "materials" / "rock.json", work / "layered" / "layered.json", work / "probe" / "probe_gl.json"):
+    for material in (ROOT / "materials" / "rock.json", work / "layered" / "layered.json", work / "probe" / "probe_gl.json",
+                     ROOT / "materials" / "terrain" / "terrain.json"):
         pkg = package(hexc, material, work)  # docs/engines.md's screenshots: lit by Godot, not checked
         jobs.add(str(next(pkg.glob("*.shader"))), textures(pkg), lambda out, errors: False, f"{material.stem}_lit",
                  light=[0.4, 0.4, 0.8])
