@@ -183,6 +183,23 @@ def manifest(package_dir):
     return json.loads(next(Path(package_dir).glob("*.manifest.json")).read_text())
 
 
+def package_textures(pkg, swap=None):
+    """uniform -> (the file an engine loads for it, whether it is sRGB), from the package's manifest: a slot's texture,
+    a packed texture, a histogram slot's Gaussian texture in place of its own and its table beside (linear); `swap`
+    gives a slot another file."""
+    m = manifest(pkg)
+    files = {s["name"]: (pkg / s["texture"], s.get("colorspace") == "srgb") for s in m["slots"]}
+    for p in m.get("packed_textures", []):
+        files[p["name"]] = (pkg / p["file"], p["colorspace"] == "srgb")
+    for s in m["slots"]:
+        if "histogram" in s:
+            files[s["name"]] = (pkg / s["histogram"]["gaussian"]["file"], False)
+            files[s["name"] + ".lut"] = (pkg / s["histogram"]["lut"]["file"], False)
+    for name, path in (swap or {}).items():
+        files[name] = (path, files[name][1])
+    return {where["uniform"]: (Path(files[name][0]).resolve(), files[name][1]) for name, where in m["targets"]["glsl"]["textures"].items()}
+
+
 LAYERS = ["clay", "moss", "slate"]
 
 
@@ -459,6 +476,12 @@ def drawn_materials(root, work):
     normal map), the layered one, the probe plain-tiled (the F upright) and the probe hex-tiled with a DirectX map."""
     return [Path(root) / "materials" / "rock.json", Path(root) / "materials" / "tiles.json", mixed_material(work / "mixed"),
             layered_material(work / "layered"), probe_material(work / "probe"), probe_material(work / "probe", "dx", True)]
+
+
+def histogram_material(root):
+    """The golden histogram material: every slot blended by histogram, its Gaussian textures and tables the package's
+    OpenEXR files, which the engines load as float textures."""
+    return Path(root) / "tests" / "golden" / "materials" / "histogram.json"
 
 
 def refused(material, engine):

@@ -5,7 +5,8 @@ red marker Filament draws over the screen's top-left corner (marker.mat, a secon
 
 - the matrix: the Filament package of every material under materials/ (engine_check.matrix_materials) compiled by
   matc, but the ones the docs say a package refuses (hexc must refuse them);
-- drawn against hexc's fp64 reference (engine_check.drawn_materials), at each uv origin docs/conventions.md gives
+- drawn against hexc's fp64 reference (engine_check.drawn_materials, and at one origin the golden histogram material:
+  its Gaussian textures and tables the package's OpenEXR files, loaded as float textures), at each uv origin docs/conventions.md gives
   for Filament, on a mesh with that convention: a GL-convention mesh (uv (0, 0) at the bottom-left, v up) with the
   package built with --uv-bottom-left, and a mesh with uv (0, 0) at the top-left (glTF's) with the package built
   without it. Each function is shown unlit (a value view: the package's .mat with shadingModel unlit and baseColor
@@ -15,7 +16,8 @@ red marker Filament draws over the screen's top-left corner (marker.mat, a secon
   carry engine_check.VERTEX_COLORS, which its functions read with getColor();
 - negative controls, which must fail: the package built for the other uv origin, a mesh mirrored in u, the normal
   map of the other green convention, the albedo decoded twice, a NaN value; the layered material with two layers'
-  textures exchanged and with a splat channel swapped; the vertex-weighed one with the mesh's red and green vertex
+  textures exchanged and with a splat channel swapped; the histogram slot's own texture bound in place of its
+  Gaussian texture; the vertex-weighed one with the mesh's red and green vertex
   colour channels exchanged.
 
 Post-processing is off: Filament then writes the linear value straight into the 8-bit swap chain (with it on, its
@@ -61,15 +63,8 @@ def matc(mat, *options):
 
 
 def texture_args(pkg, swap=None):
-    """UNIFORM=FILE[:srgb] of each texture the manifest names; `swap` gives a slot another file."""
-    manifest = ec.manifest(pkg)
-    files = {s["name"]: (pkg / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
-    for p in manifest.get("packed_textures", []):
-        files[p["name"]] = (pkg / p["file"], p["colorspace"] == "srgb")
-    for name, path in (swap or {}).items():
-        files[name] = (path, files[name][1])
-    return [f"{w['uniform']}={Path(files[n][0]).resolve()}{':srgb' if files[n][1] else ''}"
-            for n, w in manifest["targets"]["glsl"]["textures"].items()]
+    """UNIFORM=FILE[:srgb] of each texture the manifest names (engine_check.package_textures)."""
+    return [f"{u}={path}{':srgb' if srgb else ''}" for u, (path, srgb) in ec.package_textures(pkg, swap).items()]
 
 
 def mesh_uv(rect, origin, mirror=False):
@@ -181,7 +176,8 @@ def check(hexc, renderer, work):
     failed = matrix(hexc, work)
     views, drawn = Views(hexc, renderer, work), ec.drawn_materials(ROOT, work)
     probe, bumps = drawn[4], ec.probe_material(work / "probe", "gl", albedo=False)
-    for material in drawn:
+    histogram = ec.histogram_material(ROOT)
+    for material in drawn + [histogram]:
         failed += views.all(material, "bottom-left")
     for material in (probe, drawn[5], drawn[3]):  # the probe, plain and hex-tiled with a DirectX map; the layered one
         failed += views.all(material, "top-left")
@@ -198,6 +194,8 @@ def check(hexc, renderer, work):
     failed += views.check(probe, "bottom-left", control="a NaN value: the albedo function times NaN", function=2)
     for what, swap in ec.layered_controls(drawn[3].parent).items():  # the layered view's albedo role, function 0
         failed += views.check(drawn[3], "top-left", control=what, swap=swap)
+    failed += views.check(histogram, "bottom-left", control="the histogram slot's own texture bound in place of its Gaussian texture",
+                          swap={"albedo": ROOT / "materials" / "textures" / "rock_albedo.png"})
     vertex = ec.layered_material(drawn[3].parent, weights="vertex")  # its roles on a mesh of VERTEX_COLORS (getColor())
     failed += sum(views.check(vertex, "top-left", function=i, colors=ec.VERTEX_COLORS) for i in range(len(views.get(vertex, "top-left")[1])))
     failed += views.check(vertex, "top-left", control="a vertex colour channel swapped: the mesh's red and green exchanged",

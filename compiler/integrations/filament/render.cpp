@@ -8,6 +8,8 @@
 // identity: tangent +x (+u), bitangent +y (up the screen), normal +z towards the camera. --marker draws a second
 // renderable with that material over the screen's top-left corner (a sixteenth of the side), so that the image's
 // orientation can be checked. The frame is written as Filament's readPixels returns it: top row first (Renderer.h).
+// A texture FILE is 8-bit (PNG, by stb) or, named .exr, float RGBA (OpenEXR, by tinyexr: a histogram slot's Gaussian
+// texture and table), uploaded as RGBA32F; every texture gets its full mip chain.
 #include <backend/PixelBufferDescriptor.h>
 #include <filament/Camera.h>
 #include <filament/Engine.h>
@@ -30,9 +32,11 @@
 #include <stb/stb_image.h>
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
+#include <tinyexr.h>
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -94,23 +98,42 @@ std::vector<char> readFile(const char* path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-Texture* loadTexture(Engine& engine, const std::string& file, bool srgb) {
-    int w = 0, h = 0, n = 0;
+// The texels of `file`, 8-bit (stb) or float (an .exr, tinyexr), as Filament uploads them; exits on a file it cannot read.
+backend::PixelBufferDescriptor texels(const std::string& file, int& w, int& h) {
+    if (file.ends_with(".exr")) {
+        float* rgba = nullptr;
+        const char* error = nullptr;
+        if (LoadEXR(&rgba, &w, &h, file.c_str(), &error) != TINYEXR_SUCCESS) {
+            std::fprintf(stderr, "cannot read %s: %s\n", file.c_str(), error ? error : "");
+            std::exit(1);
+        }
+        return {rgba, size_t(w) * h * 16, backend::PixelDataFormat::RGBA, backend::PixelDataType::FLOAT,
+                [](void* buffer, size_t, void*) { std::free(buffer); }};
+    }
+    int n = 0;
     stbi_uc* pixels = stbi_load(file.c_str(), &w, &h, &n, 4);
     if (!pixels) {
         std::fprintf(stderr, "cannot read %s\n", file.c_str());
         std::exit(1);
     }
+    return {pixels, size_t(w) * h * 4, backend::PixelDataFormat::RGBA, backend::PixelDataType::UBYTE,
+            [](void* buffer, size_t, void*) { stbi_image_free(buffer); }};
+}
+
+Texture* loadTexture(Engine& engine, const std::string& file, bool srgb) {
+    int w = 0, h = 0;
+    backend::PixelBufferDescriptor data = texels(file, w, h);
+    const bool exr = file.ends_with(".exr");
     Texture* t = Texture::Builder()
                      .width(uint32_t(w))
                      .height(uint32_t(h))
                      .levels(0xff)
-                     .format(srgb ? Texture::InternalFormat::SRGB8_A8 : Texture::InternalFormat::RGBA8)
+                     .format(exr    ? Texture::InternalFormat::RGBA32F
+                             : srgb ? Texture::InternalFormat::SRGB8_A8
+                                    : Texture::InternalFormat::RGBA8)
                      .sampler(Texture::Sampler::SAMPLER_2D)
                      .build(engine);
-    t->setImage(engine, 0,
-                backend::PixelBufferDescriptor(pixels, size_t(w) * h * 4, backend::PixelDataFormat::RGBA, backend::PixelDataType::UBYTE,
-                                               [](void* buffer, size_t, void*) { stbi_image_free(buffer); }));
+    t->setImage(engine, 0, std::move(data));
     t->generateMipmaps(engine);
     return t;
 }

@@ -38,8 +38,7 @@ SIZE = 256
 HDR_BUFFER = 2 ** -11
 TOP = [0, 1, 0.5]  # towards a light at the top of the screen
 LIGHTS = {"right": [1, 0, 0.5], "top": TOP}
-# The histogram blend: its Gaussian texture and table, float, as the package's OpenEXR files Godot loads.
-HISTOGRAM = ROOT / "tests" / "golden" / "materials" / "histogram.json"
+HISTOGRAM = ec.histogram_material(ROOT)
 
 
 @functools.lru_cache(maxsize=None)  # a package is written once, for the matrix and the checks that draw it
@@ -51,19 +50,8 @@ def package(hexc, material, work, bottom_left=False):
 
 
 def textures(pkg, swap=None):
-    """uniform -> the file Godot loads and whether it is sRGB, from the manifest; `swap` gives a slot another file."""
-    manifest = ec.manifest(pkg)
-    files = {s["name"]: (pkg / s["texture"], s.get("colorspace") == "srgb") for s in manifest["slots"]}
-    for p in manifest.get("packed_textures", []):
-        files[p["name"]] = (pkg / p["file"], p["colorspace"] == "srgb")
-    for s in manifest["slots"]:  # a histogram slot: its Gaussian texture in place of its own, its table beside (linear)
-        if "histogram" in s:
-            files[s["name"]] = (pkg / s["histogram"]["gaussian"]["file"], False)
-            files[s["name"] + ".lut"] = (pkg / s["histogram"]["lut"]["file"], False)
-    for name, path in (swap or {}).items():
-        files[name] = (path, files[name][1])
-    return {where["uniform"]: {"path": str(Path(files[name][0]).resolve()), "srgb": files[name][1]}
-            for name, where in manifest["targets"]["glsl"]["textures"].items()}
+    """uniform -> the file Godot loads and whether it is sRGB (engine_check.package_textures)."""
+    return {u: {"path": str(path), "srgb": srgb} for u, (path, srgb) in ec.package_textures(pkg, swap).items()}
 
 
 def value_shader(pkg, function, nan=False):
