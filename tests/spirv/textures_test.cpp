@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 
 #include "compile.h"
 #include "hexc/histogram.h"
@@ -58,12 +59,10 @@ Texture asymmetric(bool bottomRowFirst) {
     return t;
 }
 
-// One slot of that texture, hex-tiled, its value drawn with `texture` bound; its reads flipped with `flip`.
-Image drawn(const View& view, const Texture& texture, bool flip) {
-    ParseResult parsed =
-        parseMaterial(R"({"name": "rows", "slots": [{"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png",
-        "colorspace": "linear", "hextiling": {"tiling": 4, "rotation": 1, "falloff": 0.75}}]})",
-                      "materials/rows.json");
+// The value of a material of one albedo slot (`slot`: its JSON) drawn with `textures` bound in the manifest's order; its
+// reads flipped with `flip`.
+Image drawnSlot(const View& view, const std::string& slot, const std::vector<const Texture*>& textures, bool flip) {
+    ParseResult parsed = parseMaterial(R"({"name": "rows", "slots": [)" + slot + "]}", "materials/rows.json");
     if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
     const Material m = vk::renderedMaterial(*parsed.material, vk::RenderOutput::Albedo, "");
     CompileOptions options;
@@ -74,9 +73,16 @@ Image drawn(const View& view, const Texture& texture, bool flip) {
     request.fragmentSpirv = flip ? flipRows(c.result.spirv) : c.result.spirv;
     request.fragmentEntry = c.manifest["targets"]["spirv"]["entry_point"];
     request.uniformData = vk::packParameters(c.manifest);
-    request.textures = {&texture};
+    request.textures = textures;
     std::string why;
     return vk::renderFragment(*test::runner(&why), request, view);
+}
+
+// One slot of that texture, hex-tiled, its value drawn with `texture` bound; its reads flipped with `flip`.
+Image drawn(const View& view, const Texture& texture, bool flip) {
+    return drawnSlot(view, R"({"name": "albedo", "kind": "color", "texture": "textures/rock_albedo.png", "colorspace": "linear",
+        "hextiling": {"tiling": 4, "rotation": 1, "falloff": 0.75}})",
+                     {&texture}, flip);
 }
 
 double maxDifference(const Image& a, const Image& b) {
@@ -85,25 +91,33 @@ double maxDifference(const Image& a, const Image& b) {
     return worst;
 }
 
-// Unity's reads: the shader with its reads flipped, drawn from the texture stored bottom row first, draws what the
-// shader draws from the texture as it is, magnified (level 0) and minified (level 2, gradients and level choice). Bound:
-// the flipped read is the mirror image of the read (row r at t, row h - 1 - r at -t), so the same texels at the same
-// weights, but for the 8-bit bilinear weight, which lavapipe rounds from the mirrored fraction and may round the
+// `draw(view, bottomFirst, flip)`: a shader drawn from its textures as they are or stored bottom row first, its reads
+// flipped or not. The flipped shader on the bottom-first textures must draw what the shader draws from the textures as
+// they are, magnified (level 0) and minified (level 2, gradients and level choice); the negative controls, the flipped
+// shader on the textures as they are and the shader on the bottom-first ones, must not. Bound: the flipped read is the
+// mirror image of the read (row r at t, row h - 1 - r at -t; a fetch row h - 1 - r exactly), so the same texels at the
+// same weights, but for the 8-bit bilinear weight, which lavapipe rounds from the mirrored fraction and may round the
 // other way: one weight step (1/256) of a full-range texel step, per axis, 2/256 < 2/255 in all.
-TEST(FlipRowsOnTheGpu, AFlippedShaderReadsABottomFirstTextureAsTheShaderReadsTheTexture) {
-    REQUIRE_VULKAN();
-    const Texture asIs = asymmetric(false), bottomFirst = asymmetric(true);
+void expectFlippedReadsMatch(const std::function<Image(const View&, bool, bool)>& draw, const char* what) {
     const View magnified{128, 128, {0.3, 0.45, 0.3 + 128 * 0.75 / 1024, 0.45 + 128 * 0.75 / 1024}};
     const View minified{64, 64, {0.3, 0.45, 0.3 + 64.0 * 4 / 1024, 0.45 + 64.0 * 4 / 1024}};
     for (const View& view : {magnified, minified}) {
-        const Image expected = drawn(view, asIs, false);
-        const double flipped = maxDifference(drawn(view, bottomFirst, true), expected);
-        EXPECT_LE(flipped, 2.0 / 255) << "flipped reads of the bottom-first texture, " << view.width << " px";
-        // Negative controls: the flipped shader on the texture as it is, the shader on the bottom-first texture.
-        EXPECT_GT(maxDifference(drawn(view, asIs, true), expected), 0.25);
-        EXPECT_GT(maxDifference(drawn(view, bottomFirst, false), expected), 0.25);
-        std::printf("flip rows, %d px: max difference %.2f/255\n", view.width, flipped * 255);
+        const Image expected = draw(view, false, false);
+        const double flipped = maxDifference(draw(view, true, true), expected);
+        EXPECT_LE(flipped, 2.0 / 255) << what << ", " << view.width << " px";
+        EXPECT_GT(maxDifference(draw(view, false, true), expected), 0.25) << what;
+        EXPECT_GT(maxDifference(draw(view, true, false), expected), 0.25) << what;
+        std::printf("flip rows of %s, %d px: max difference %.2f/255\n", what, view.width, flipped * 255);
     }
+}
+
+// Unity's reads of a hex-tiled slot's texture.
+TEST(FlipRowsOnTheGpu, AFlippedShaderReadsABottomFirstTextureAsTheShaderReadsTheTexture) {
+    REQUIRE_VULKAN();
+    const Texture asIs = asymmetric(false), bottomFirst = asymmetric(true);
+    expectFlippedReadsMatch(
+        [&](const View& view, bool flipTexture, bool flipReads) { return drawn(view, flipTexture ? bottomFirst : asIs, flipReads); },
+        "a hex-tiled slot");
 }
 
 // `t` stored bottom row first: its rows in reverse order.
@@ -126,42 +140,18 @@ Texture bottomRowFirst(Texture t) {
 Image drawnHistogram(const View& view, bool bottomFirst, bool flip) {
     const std::filesystem::path png = std::filesystem::temp_directory_path() / "hexc_flip_rows_histogram.png";
     std::ofstream(png, std::ios::binary) << pngBytes(asymmetric(false));
-    ParseResult parsed =
-        parseMaterial(R"({"name": "rows", "slots": [{"name": "albedo", "kind": "color", "texture": ")" + png.string() +
-                          R"(", "colorspace": "linear", "hextiling": {"tiling": 4, "rotation": 1, "blend": "histogram"}}]})",
-                      "materials/rows.json");
-    if (!parsed.material) throw std::runtime_error(formatAll(parsed.diagnostics));
-    const Material m = vk::renderedMaterial(*parsed.material, vk::RenderOutput::Albedo, "");
-    CompileOptions options;
-    options.targets = {Target::Spirv};
-    const CompiledMaterial c = compileMaterial(m, options);
-    if (!c.result.ok()) throw std::runtime_error(formatAll(c.result.diagnostics));
-    HistogramTransform h = histogramTransform(loadTexture(png, false), m.slots.front());
+    const std::string slot = R"({"name": "albedo", "kind": "color", "texture": ")" + png.string() +
+                             R"(", "colorspace": "linear", "hextiling": {"tiling": 4, "rotation": 1, "blend": "histogram"}})";
+    const ParseResult parsed = parseMaterial(R"({"name": "rows", "slots": [)" + slot + "]}", "materials/rows.json");
+    HistogramTransform h = histogramTransform(loadTexture(png, false), parsed.material->slots.front());
     const Texture gaussian = bottomFirst ? bottomRowFirst(h.gaussian) : h.gaussian, lut = bottomFirst ? bottomRowFirst(h.lut) : h.lut;
-    vk::RenderRequest request;
-    request.fragmentSpirv = flip ? flipRows(c.result.spirv) : c.result.spirv;
-    request.fragmentEntry = c.manifest["targets"]["spirv"]["entry_point"];
-    request.uniformData = vk::packParameters(c.manifest);
-    request.textures = {&gaussian, &lut};  // the manifest's order: the slot's, then its table
-    std::string why;
-    return vk::renderFragment(*test::runner(&why), request, view);
+    return drawnSlot(view, slot, {&gaussian, &lut}, flip);  // the manifest's order: the slot's texture, then its table
 }
 
-// The same for texel fetches: the histogram blend's shader, its reads flipped, from its Gaussian texture and table
-// stored bottom row first, draws what it draws from them as they are. Bound as above: the fetches read the mirrored
-// texel exactly, the samples the mirrored position (2/255). Negative controls as above.
+// The same for texel fetches: the histogram blend's shader reads its table by texel fetches and level-0 samples.
 TEST(FlipRowsOnTheGpu, FlippedFetchesReadATableStoredBottomFirstAsTheShaderReadsTheTable) {
     REQUIRE_VULKAN();
-    const View magnified{128, 128, {0.3, 0.45, 0.3 + 128 * 0.75 / 1024, 0.45 + 128 * 0.75 / 1024}};
-    const View minified{64, 64, {0.3, 0.45, 0.3 + 64.0 * 4 / 1024, 0.45 + 64.0 * 4 / 1024}};
-    for (const View& view : {magnified, minified}) {
-        const Image expected = drawnHistogram(view, false, false);
-        const double flipped = maxDifference(drawnHistogram(view, true, true), expected);
-        EXPECT_LE(flipped, 2.0 / 255) << "flipped reads of the bottom-first textures, " << view.width << " px";
-        EXPECT_GT(maxDifference(drawnHistogram(view, false, true), expected), 0.25);
-        EXPECT_GT(maxDifference(drawnHistogram(view, true, false), expected), 0.25);
-        std::printf("flip rows of a histogram slot, %d px: max difference %.2f/255\n", view.width, flipped * 255);
-    }
+    expectFlippedReadsMatch(drawnHistogram, "a histogram slot");
 }
 
 }  // namespace
