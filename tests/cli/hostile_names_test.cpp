@@ -52,7 +52,9 @@ std::string readAll(const fs::path& p) {
 class HostileNames : public testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / "hexc_hostile_names";
+        // A folder of each test's own: CTest runs the tests of this fixture side by side.
+        dir_ = fs::temp_directory_path() /
+               ("hexc_hostile_names_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir_);
         // LF and CR (each would end a `//` comment), a quote, a backslash, `#` and `--` (which XML refuses in a
         // comment); the template's folder ends in `*`, so its path holds `*/`.
