@@ -63,12 +63,11 @@ const Dialect& dialect(Engine engine) {
 // good as any. Filament names a sampler parameter materialParams_<name>.
 class EngineGlsl : public spirv_cross::CompilerGLSL {
 public:
-    EngineGlsl(const std::vector<uint32_t>& spirv, const Dialect& d)
-        : CompilerGLSL(spirv), godot_(d.godot), materialParams_(d.materialParams) {}
+    EngineGlsl(const std::vector<uint32_t>& spirv, const Dialect& d) : CompilerGLSL(spirv), d_(d) {}
 
     std::string compile() override {
         options.emit_line_directives = false;  // no #line for --debug: Godot 3's language has no preprocessor
-        if (materialParams_)
+        if (d_.materialParams)
             ir.for_each_typed_id<spirv_cross::SPIRVariable>([&](uint32_t id, const spirv_cross::SPIRVariable&) {
                 const std::string name = get_name(id);
                 if (name.starts_with("hexcTex_") || name.starts_with("hexcLut_")) set_name(id, "materialParams_" + name);
@@ -81,7 +80,7 @@ protected:
     void emit_uniform(const spirv_cross::SPIRVariable&) override {}
 
     void emit_glsl_op(uint32_t type, uint32_t id, uint32_t op, const uint32_t* args, uint32_t count) override {
-        if (!godot_ || op != GLSLstd450Fma) return CompilerGLSL::emit_glsl_op(type, id, op, args, count);
+        if (!d_.godot || op != GLSLstd450Fma) return CompilerGLSL::emit_glsl_op(type, id, op, args, count);
         const bool forward = should_forward(args[0]) && should_forward(args[1]) && should_forward(args[2]);
         emit_op(type, id,
                 to_enclosed_unpacked_expression(args[0]) + " * " + to_enclosed_unpacked_expression(args[1]) + " + " +
@@ -94,7 +93,7 @@ protected:
     // its components are equal.
     std::string constant_expression_vector(const spirv_cross::SPIRConstant& c, uint32_t vector) override {
         const spirv_cross::SPIRType& type = get<spirv_cross::SPIRType>(c.constant_type);
-        if (!godot_ || type.basetype != spirv_cross::SPIRType::UInt) return CompilerGLSL::constant_expression_vector(c, vector);
+        if (!d_.godot || type.basetype != spirv_cross::SPIRType::UInt) return CompilerGLSL::constant_expression_vector(c, vector);
         const auto literal = [&](uint32_t i) { return "uint(" + std::to_string(c.scalar(vector, i)) + ")"; };
         bool splat = true;
         for (uint32_t i = 1; i < c.vector_size(); ++i) splat = splat && c.scalar(vector, i) == c.scalar(vector, 0);
@@ -106,12 +105,12 @@ protected:
     // An undefined value's global as a constant of value zero.
     std::string variable_decl(const spirv_cross::SPIRType& type, const std::string& name, uint32_t id) override {
         const std::string decl = CompilerGLSL::variable_decl(type, name, id);
-        if (!godot_ || !id || ir.ids[id].get_type() != spirv_cross::TypeUndef) return decl;
+        if (!d_.godot || !id || ir.ids[id].get_type() != spirv_cross::TypeUndef) return decl;
         return "const " + decl + " = " + to_zero_initialized_expression(get<spirv_cross::SPIRUndef>(id).basetype);
     }
 
 private:
-    bool godot_, materialParams_;
+    const Dialect& d_;
 };
 
 std::string declarations(const std::vector<EngineTexture>& used, const Dialect& d) {
